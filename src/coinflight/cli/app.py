@@ -1,0 +1,50 @@
+"""The ``coinflight`` application: commands are registered here, defined in their own modules."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from coinflight import __version__
+from coinflight.cli import toss as _toss
+from coinflight.cli.errors import OneLineErrors
+
+app = typer.Typer(
+    cls=OneLineErrors,
+    name="coinflight",
+    help="The physics of coin tossing: torque-free flight, probabilities, bias, bounces.",
+    invoke_without_command=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"coinflight {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    ctx: typer.Context,
+    version: Annotated[
+        bool,
+        typer.Option(
+            "--version", callback=_version, is_eager=True, help="Show the version and exit."
+        ),
+    ] = False,
+) -> None:
+    """The physics of coin tossing: torque-free flight, probabilities, bias, bounces."""
+    if ctx.invoked_subcommand is None:
+        typer.echo(ctx.get_help())
+
+
+app.command("toss")(_toss.toss)
+
+
+def main() -> None:
+    """Console-script entry point."""
+    app()

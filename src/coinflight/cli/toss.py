@@ -1,0 +1,137 @@
+"""``coinflight toss``: one toss, caught in the hand at launch height."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+
+from coinflight.cli.options import (
+    TOSS_PANEL,
+    CoinName,
+    Gravity,
+    JsonFlag,
+    Mass,
+    Radius,
+    StartFace,
+    Thickness,
+    number,
+    print_json,
+    resolve_coin,
+)
+
+if TYPE_CHECKING:
+    from coinflight.toss import Toss
+
+Omega = Annotated[
+    tuple[float, float, float],
+    typer.Option(
+        "--omega",
+        parser=number,
+        metavar="WX WY WZ",
+        rich_help_panel=TOSS_PANEL,
+        help="Body-frame angular velocity at launch, rad/s: x and y about diameters, "
+        "z about the normal.",
+    ),
+]
+FlightTime = Annotated[
+    float | None,
+    typer.Option(
+        "--flight-time",
+        "-T",
+        parser=number,
+        metavar="T",
+        rich_help_panel=TOSS_PANEL,
+        help="Flight time to catch at launch height, s.",
+    ),
+]
+LaunchSpeed = Annotated[
+    float | None,
+    typer.Option(
+        "--launch-speed",
+        parser=number,
+        metavar="V0",
+        rich_help_panel=TOSS_PANEL,
+        help="Upward launch speed, m/s (T = 2 V0 / g).",
+    ),
+]
+
+
+def build_toss(
+    omega: tuple[float, float, float],
+    flight_time: float | None,
+    launch_speed: float | None,
+    start: str,
+    g: float,
+) -> Toss:
+    """The :class:`~coinflight.toss.Toss` for the toss options (one of T and V0 required)."""
+    from coinflight.toss import Toss
+
+    if (flight_time is None) == (launch_speed is None):
+        raise ValueError("give exactly one of --flight-time and --launch-speed")
+    if flight_time is not None:
+        return Toss(omega=omega, flight_time=flight_time, start=start, g=g)  # type: ignore[arg-type]
+    return Toss.from_launch_speed(omega, launch_speed, start=start, g=g)  # type: ignore[arg-type]
+
+
+def toss(
+    omega: Omega = (80.0, 0.0, 0.0),
+    flight_time: FlightTime = None,
+    launch_speed: LaunchSpeed = None,
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    json_output: JsonFlag = False,
+) -> None:
+    """Toss one coin and tell which face it shows when caught at launch height.
+
+    Example: coinflight toss --omega 80 0 0 --flight-time 0.7
+    """
+    from coinflight.toss import Flight
+
+    the_coin = resolve_coin(coin, radius, thickness, mass)
+    flight = Flight(the_coin, build_toss(omega, flight_time, launch_speed, start, g))
+    out = flight.outcome
+    catch = flight.catch
+    t = flight.toss
+    if json_output:
+        print_json(
+            {
+                "outcome": out.face_name,
+                "same_side": bool(out.same_side),
+                "rotations": float(out.rotations),
+                "psi": float(out.psi),
+                "psi_deg": math.degrees(float(out.psi)),
+                "normal": catch.normal,
+                "angular_momentum": catch.angular_momentum,
+                "omega_at_catch": catch.omega,
+                "cos_theta": float(out.alignment),
+                "flight_time": float(t.flight_time),
+                "launch_speed": float(t.launch_speed),
+                "apex": float(t.apex),
+                "omega": list(omega),
+                "start": start,
+                "g": t.g,
+                "coin": {
+                    "name": the_coin.name,
+                    "radius": the_coin.radius,
+                    "thickness": the_coin.thickness,
+                    "mass": the_coin.mass,
+                },
+            }
+        )
+        return
+    wx, wy, wz = omega
+    typer.echo(f"{the_coin.describe()}, started {start} up")
+    typer.echo(
+        f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, flight time T = {float(t.flight_time):.4g} s "
+        f"(launch speed {float(t.launch_speed):.3g} m/s, apex {float(t.apex):.3g} m)"
+    )
+    typer.echo(
+        f"lands {out.face_name.upper()} up after {float(out.rotations):.4f} rotations; "
+        f"ψ = {math.degrees(float(out.psi)):.1f}° between normal and angular momentum"
+    )
