@@ -8,6 +8,7 @@ import typer
 
 from coinflight import __version__
 from coinflight.cli import toss as _toss
+from coinflight.cli.plot import plot_app
 from coinflight.cli.errors import OneLineErrors
 
 app = typer.Typer(
@@ -43,6 +44,7 @@ def _root(
 
 
 app.command("toss")(_toss.toss)
+app.add_typer(plot_app, name="plot")
 
 
 def main() -> None:
