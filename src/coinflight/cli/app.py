@@ -8,8 +8,8 @@ import typer
 
 from coinflight import __version__
 from coinflight.cli import toss as _toss
-from coinflight.cli.plot import plot_app
 from coinflight.cli.errors import OneLineErrors
+from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
     cls=OneLineErrors,

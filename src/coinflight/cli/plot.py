@@ -5,6 +5,13 @@ from __future__ import annotations
 import typer
 
 plot_app = typer.Typer(
-    help="Draw figures (PNG, SVG, PDF by the --out suffix).",
-    no_args_is_help=True,
+    help="Draw figures (PNG, SVG or PDF, by the suffix of --out).",
+    invoke_without_command=True,
 )
+
+
+@plot_app.callback()
+def _plot(ctx: typer.Context) -> None:
+    """Draw figures (PNG, SVG or PDF, by the suffix of --out)."""
+    if ctx.invoked_subcommand is None:
+        typer.echo(ctx.get_help())
