@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import typer
 
+from coinflight.cli import figures as _figures
+
 plot_app = typer.Typer(
     help="Draw figures (PNG, SVG or PDF, by the suffix of --out).",
     invoke_without_command=True,
@@ -15,3 +17,6 @@ def _plot(ctx: typer.Context) -> None:
     """Draw figures (PNG, SVG or PDF, by the suffix of --out)."""
     if ctx.invoked_subcommand is None:
         typer.echo(ctx.get_help())
+
+
+plot_app.command("toss")(_figures.plot_toss)

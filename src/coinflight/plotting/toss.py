@@ -1,0 +1,204 @@
+"""The coin at launch and at catch, drawn as in Stefan & Cheche's Figs 2c-d and 3c-f.
+
+Each panel shows the coin's rim at launch (red) and at catch (blue) about its centre of mass,
+with the heads normal n and the angular momentum S as arrows; a last panel shows the path of n
+on the unit sphere, the precession cone about S (Diaconis, Holmes & Montgomery 2007).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from coinflight.core.outcome import FACE_NAMES
+from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR, new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+    from scipy.spatial.transform import Rotation
+
+    from coinflight.coin import Coin
+    from coinflight.toss import Toss
+
+FloatArray = NDArray[np.float64]
+S_COLOR = "#000000"
+ARROW_SCALE = 1.5
+"""Unit vectors n and Ŝ are drawn ARROW_SCALE coin radii long."""
+
+
+def coin_rim(attitude: Rotation, radius: float, n_points: int = 121) -> FloatArray:
+    """Points of the coin's rim about its centre of mass, lab frame, shape (..., n_points, 3).
+
+    Parameters
+    ----------
+    attitude : scipy.spatial.transform.Rotation
+        Body → lab rotation (one or a stack).
+    radius : float
+        Coin radius R, in the length unit wanted for the points.
+    n_points : int
+        Points along the rim (the first and last coincide, closing the curve).
+
+    Notes
+    -----
+    Stefan & Cheche section 3: C(s) = R cos s u + R sin s (n × u), n the heads normal and u a
+    unit vector in the coin's plane, here the body x axis in the lab frame.
+    """
+    u = np.asarray(attitude.apply([1.0, 0.0, 0.0]))
+    n = np.asarray(attitude.apply([0.0, 0.0, 1.0]))
+    w = np.cross(n, u)
+    s = np.linspace(0.0, 2.0 * np.pi, n_points)
+    c, sn = np.cos(s)[:, None], np.sin(s)[:, None]
+    return radius * (c * u[..., None, :] + sn * w[..., None, :])
+
+
+def normal_path(coin: Coin, toss: Toss, t: ArrayLike) -> FloatArray:
+    """Heads normal n(t) in the lab frame for one toss, shape (len(t), 3): the precession cone."""
+    from coinflight.toss import Flight, Toss
+
+    single = Toss(
+        omega=toss.omega.reshape(-1, 3)[0], flight_time=np.ones(()), start=toss.start, g=toss.g
+    )
+    return np.asarray(Flight(coin, single).at(np.asarray(t, dtype=float)).normal)
+
+
+def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 2) -> Figure:
+    """Coin at launch (red) and at catch (blue), one panel per toss, plus the precession cone.
+
+    Parameters
+    ----------
+    coin : Coin
+        The coin.
+    toss : Toss
+        One toss, or a one-dimensional batch (for instance one spin and several flight times,
+        Stefan & Cheche Figs 3c-f); each toss gets a panel showing its catch at t = T.
+    title : str, optional
+        Figure title; by default it says which coin, spin and start.
+    ncols : int
+        Panels per row for the coin drawings.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Coin panels in mm about the centre of mass (arrows n and Ŝ drawn 1.5 R long), and a
+        unit-sphere panel with the path of n from launch to the last catch.
+    """
+    from matplotlib.gridspec import GridSpec
+    from matplotlib.lines import Line2D
+
+    from coinflight.toss import Flight
+
+    if len(toss.shape) > 1:
+        raise ValueError(
+            f"plot_toss draws one toss or a one-dimensional batch, got shape {toss.shape}"
+        )
+    flight = Flight(coin, toss)
+    catch = flight.catch
+    outcome = flight.outcome
+    k = int(np.prod(toss.shape)) if toss.shape else 1
+    times = np.atleast_1d(np.broadcast_to(toss.flight_time, toss.shape))
+    normals = np.asarray(catch.normal).reshape(k, 3)
+    s_lab = np.asarray(catch.angular_momentum).reshape(k, 3)
+    faces = np.atleast_1d(outcome.face)
+    turns = np.atleast_1d(outcome.rotations)
+    psi = np.atleast_1d(outcome.psi)
+    launch = Flight(coin, toss).at(0.0 * toss.flight_time)
+    r_mm = coin.radius * 1e3
+    rim0 = coin_rim(launch.attitude, r_mm).reshape(k, -1, 3)
+    rim1 = coin_rim(catch.attitude, r_mm).reshape(k, -1, 3)
+    n0 = np.asarray(launch.normal).reshape(k, 3)
+
+    ncols = max(1, min(ncols, k))
+    nrows = math.ceil(k / ncols)
+    fig = new_figure(figsize=(3.6 * ncols + 4.2, max(3.9 * nrows, 4.6)))
+    grid = GridSpec(nrows, ncols + 1, figure=fig, width_ratios=[1.0] * ncols + [1.15])
+    lim = ARROW_SCALE * r_mm
+    for i in range(k):
+        ax: Any = fig.add_subplot(grid[i // ncols, i % ncols], projection="3d")
+        _draw_coin(ax, rim0[i], LAUNCH_COLOR)
+        _draw_coin(ax, rim1[i], CATCH_COLOR)
+        _arrow(ax, n0[i] * lim, LAUNCH_COLOR, label="n(0)")
+        _arrow(ax, normals[i] * lim, CATCH_COLOR, label="n(T)")
+        s_norm = float(np.linalg.norm(s_lab[i]))
+        if s_norm > 0:
+            _arrow(ax, s_lab[i] / s_norm * lim, S_COLOR, style="--", label="S")
+        ax.set_xlim(-lim, lim)
+        ax.set_ylim(-lim, lim)
+        ax.set_zlim(-lim, lim)
+        ax.set_box_aspect((1, 1, 1))
+        ax.set_xlabel("X (mm)")
+        ax.set_ylabel("Y (mm)")
+        ax.set_zlabel("Z, up (mm)")
+        ax.set_title(
+            f"T = {times[i]:g} s: {turns[i]:.4g} turns,\n"
+            f"lands {FACE_NAMES[int(faces[i])].upper()} up",
+            fontsize=10,
+        )
+
+    sphere: Any = fig.add_subplot(grid[:, ncols], projection="3d")
+    _draw_sphere(sphere)
+    t_max = float(times.max())
+    path = normal_path(coin, toss, np.linspace(0.0, t_max, max(400, int(60 * turns.max()))))
+    sphere.plot(*path.T, color="#555555", lw=0.8)
+    sphere.scatter(*n0[0], color=LAUNCH_COLOR, s=40, depthshade=False)
+    sphere.scatter(*normals.T, color=CATCH_COLOR, s=40, depthshade=False)
+    for end in (n0[0], *normals):
+        sphere.plot(*np.stack([np.zeros(3), end]).T, color="#999999", lw=0.6, ls=":")
+    s_hat = s_lab[0] / max(float(np.linalg.norm(s_lab[0])), 1e-300)
+    _arrow(sphere, 1.3 * s_hat, S_COLOR, style="--", label="S")
+    sphere.set_title(
+        "path of n on the unit sphere\n"
+        f"(cone of half-angle ψ = {math.degrees(psi[0]):.1f}° about S)",
+        fontsize=10,
+    )
+    for setter in (sphere.set_xlim, sphere.set_ylim, sphere.set_zlim):
+        setter(-1.1, 1.1)
+    sphere.set_box_aspect((1, 1, 1))
+    for set_ticks in (sphere.set_xticks, sphere.set_yticks, sphere.set_zticks):
+        set_ticks([-1.0, 0.0, 1.0])
+    sphere.set_xlabel("nX")
+    sphere.set_ylabel("nY")
+    sphere.set_zlabel("nZ")
+
+    handles = [
+        Line2D([], [], color=LAUNCH_COLOR, lw=2, marker="o", label="coin and n at launch, t = 0"),
+        Line2D([], [], color=CATCH_COLOR, lw=2, marker="o", label="coin and n at catch, t = T"),
+        Line2D([], [], color="#555555", lw=1, label="path of the heads normal n(t)"),
+        Line2D([], [], color=S_COLOR, lw=1.5, ls="--", label="angular momentum S (direction)"),
+    ]
+    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9)
+    wx, wy, wz = (float(x) for x in toss.omega.reshape(-1, 3)[0])
+    fig.suptitle(
+        title
+        or f"{coin.name} tossed {toss.start} up with ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, "
+        f"caught at launch height",
+        fontsize=11,
+    )
+    return fig
+
+
+def _draw_coin(ax: Any, rim: FloatArray, color: str) -> None:
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    ax.add_collection3d(Poly3DCollection([rim], facecolor=color, alpha=0.25, edgecolor="none"))
+    ax.plot(*rim.T, color=color, lw=2)
+
+
+def _arrow(ax: Any, vec: FloatArray, color: str, style: str = "-", label: str = "") -> None:
+    ax.quiver(0, 0, 0, *vec, color=color, arrow_length_ratio=0.15, linestyle=style, lw=1.5)
+    if label:
+        ax.text(*(1.12 * vec), label, color=color, fontsize=9, ha="center", va="center")
+
+
+def _draw_sphere(ax: Any) -> None:
+    u = np.linspace(0.0, 2.0 * np.pi, 37)
+    v = np.linspace(0.0, np.pi, 19)
+    x = np.outer(np.cos(u), np.sin(v))
+    y = np.outer(np.sin(u), np.sin(v))
+    z = np.outer(np.ones_like(u), np.cos(v))
+    ax.plot_wireframe(x, y, z, color="#cccccc", lw=0.4, rstride=3, cstride=3)
+
+
+__all__ = ["coin_rim", "normal_path", "plot_toss"]

@@ -1,0 +1,97 @@
+"""`coinflight plot toss` and :func:`coinflight.plotting.toss.plot_toss`."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from _images import assert_nontrivial, colour_fraction
+from coinflight import Coin, Flight, Toss
+from coinflight.cli import app
+from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR
+from coinflight.plotting.toss import coin_rim, normal_path, plot_toss
+
+QUARTER = Coin.preset("us-quarter")
+
+
+def test_rim_lies_in_the_coin_plane_at_radius_r():
+    # Stefan & Cheche §3: C(s) = R cos s u + R sin s (n × u) is a circle of radius R ⟂ n.
+    flight = Flight(QUARTER, Toss(omega=(90.0, 30.0, 5.0), flight_time=0.6))
+    state = flight.catch
+    rim = coin_rim(state.attitude, radius=2.5)
+    assert rim.shape == (121, 3)
+    np.testing.assert_allclose(np.linalg.norm(rim, axis=-1), 2.5, rtol=1e-12)
+    np.testing.assert_allclose(rim @ state.normal, 0.0, atol=1e-12)
+    # Heads up at launch: the rim is the horizontal circle z = 0.
+    start = flight.at(0.0)
+    np.testing.assert_allclose(coin_rim(start.attitude, 1.0)[:, 2], 0.0, atol=1e-15)
+
+
+def test_normal_path_is_a_cone_about_s():
+    # Diaconis, Holmes & Montgomery 2007: n·Ŝ = cos ψ stays constant along the path.
+    toss = Toss(omega=(30.0, 0.0, 200.0), flight_time=0.5)
+    path = normal_path(QUARTER, toss, np.linspace(0.0, 0.5, 50))
+    flight = Flight(QUARTER, toss)
+    s = np.asarray(flight.catch.angular_momentum)
+    cos_psi = path @ (s / np.linalg.norm(s))
+    np.testing.assert_allclose(cos_psi, math.cos(float(flight.outcome.psi)), atol=1e-12)
+
+
+def test_panels_say_the_face_given_by_the_papers_eq14():
+    # Fig 3c-f: ωx0 = 90, ωy0 = 30 rad/s; heads iff cos(Ω T) > 0 (Stefan & Cheche eq 14).
+    times = np.array([0.6, 0.65, 0.7, 0.75])
+    fig = plot_toss(QUARTER, Toss(omega=(90.0, 30.0, 0.0), flight_time=times))
+    titles = [ax.get_title() for ax in fig.axes][:4]
+    big_omega = math.hypot(90.0, 30.0)
+    for title, t in zip(titles, times, strict=True):
+        face = "HEADS" if math.cos(big_omega * t) > 0 else "TAILS"
+        assert f"lands {face} up" in title
+        assert f"{big_omega * t / (2 * math.pi):.4g} turns" in title
+    assert "US quarter" in fig._suptitle.get_text()
+    assert len(fig.axes) == 5  # four coin panels and the sphere
+
+
+def test_rejects_a_two_dimensional_batch():
+    toss = Toss(omega=np.zeros((2, 2, 3)) + 80.0, flight_time=0.7)
+    with pytest.raises(ValueError, match="one-dimensional batch"):
+        plot_toss(QUARTER, toss)
+
+
+def test_cli_writes_a_readable_png(tmp_path):
+    out = tmp_path / "fig3.png"
+    args = ["plot", "toss", "--omega", "90", "30", "0", "--times", "0.6,0.65", "--out", str(out)]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    assert str(out) in result.stdout
+    rgb = assert_nontrivial(out)
+    assert colour_fraction(rgb, LAUNCH_COLOR) > 1e-3
+    assert colour_fraction(rgb, CATCH_COLOR) > 1e-3
+
+
+def test_cli_svg_by_suffix(tmp_path):
+    out = tmp_path / "toss.svg"
+    args = ["plot", "toss", "--omega", "80", "0", "0", "-T", "0.7", "--out", str(out)]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    assert out.read_text().lstrip().startswith("<?xml")
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--times", "0.6,x"], "--times must be comma-separated numbers"),
+        (["--times", "0.6", "-T", "0.7"], "give --times or one of"),
+        (["--times", "0.6,-1"], "flight time must be positive"),
+        ([], "give exactly one of --flight-time and --launch-speed"),
+    ],
+)
+def test_cli_bad_input_is_one_line(tmp_path, extra, message):
+    out = tmp_path / "x.png"
+    result = CliRunner().invoke(app, ["plot", "toss", "--out", str(out), *extra])
+    assert result.exit_code == 2
+    assert message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not out.exists()
