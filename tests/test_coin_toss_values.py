@@ -1,0 +1,104 @@
+"""Coin and Toss value objects: moments, presets, validation with errors that name the value."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from coinflight import PRESETS, Coin, Flight, Toss
+from coinflight.core.rigid_body import principal_moments
+
+
+def test_principal_moments_formula():
+    # Stefan & Cheche §2: I1 = I2 = (m/4)(r² + h²/3), I3 = m r²/2.
+    i1, i3 = principal_moments(0.01213, 0.00175, 0.00567)
+    assert float(i1) == pytest.approx(0.00567 / 4 * (0.01213**2 + 0.00175**2 / 3), rel=1e-15)
+    assert float(i3) == pytest.approx(0.00567 * 0.01213**2 / 2, rel=1e-15)
+    # Thin-disc limit: I3 = 2 I1.
+    i1, i3 = principal_moments(1.0, 0.0, 1.0)
+    assert float(i3) == pytest.approx(2 * float(i1), rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("name", "mass_g", "diameter_mm", "thickness_mm"),
+    [  # REFERENCES §7
+        ("us-cent", 2.500, 19.05, 1.52),
+        ("us-nickel", 5.000, 21.21, 1.95),
+        ("us-dime", 2.268, 17.91, 1.35),
+        ("us-quarter", 5.670, 24.26, 1.75),
+        ("us-half-dollar", 11.340, 30.61, 2.15),
+        ("eur-1", 7.50, 23.25, 2.33),
+        ("eur-2", 8.50, 25.75, 2.20),
+        ("eur-50c", 7.80, 24.25, 2.38),
+        ("gbp-1", 8.75, 23.43, 2.80),
+    ],
+)
+def test_presets_match_references(name, mass_g, diameter_mm, thickness_mm):
+    coin = Coin.preset(name)
+    assert coin.mass == pytest.approx(mass_g / 1000, rel=1e-12)
+    assert coin.diameter == pytest.approx(diameter_mm / 1000, rel=1e-12)
+    assert coin.thickness == pytest.approx(thickness_mm / 1000, rel=1e-12)
+
+
+def test_presets_are_all_listed():
+    assert len(PRESETS) == 9
+
+
+@pytest.mark.parametrize("field", ["radius", "thickness", "mass"])
+@pytest.mark.parametrize("bad", [0.0, -0.01, math.inf, math.nan])
+def test_coin_rejects_bad_dimensions(field, bad):
+    kwargs = {"radius": 0.012, "thickness": 0.0015, "mass": 0.005, field: bad}
+    with pytest.raises(ValueError, match=rf"^{field} must be positive and finite"):
+        Coin(**kwargs)
+
+
+def test_coin_rejects_non_numbers():
+    with pytest.raises(TypeError, match="radius must be a number"):
+        Coin(radius="big", thickness=0.001, mass=0.005)  # type: ignore[arg-type]
+
+
+def test_unknown_coin_suggests_a_name():
+    with pytest.raises(ValueError, match=r"unknown coin 'us-quater' \(did you mean us-quarter\?\)"):
+        Coin.preset("us-quater")
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, math.inf, math.nan])
+def test_toss_rejects_bad_flight_time(bad):
+    with pytest.raises(ValueError, match="flight time must be positive and finite"):
+        Toss(omega=(1.0, 0.0, 0.0), flight_time=bad)
+
+
+@pytest.mark.parametrize("bad", [0.0, -3.0, math.inf, math.nan])
+def test_toss_rejects_bad_launch_speed(bad):
+    with pytest.raises(ValueError, match="launch speed must be positive and finite"):
+        Toss.from_launch_speed((1.0, 0.0, 0.0), bad)
+
+
+@pytest.mark.parametrize("bad", [0.0, -9.81, math.inf])
+def test_toss_rejects_bad_gravity(bad):
+    with pytest.raises(ValueError, match="g must be positive and finite"):
+        Toss(omega=(1.0, 0.0, 0.0), flight_time=0.5, g=bad)
+
+
+def test_toss_rejects_non_finite_spin_and_bad_shapes():
+    with pytest.raises(ValueError, match="omega must be finite"):
+        Toss(omega=(np.inf, 0.0, 0.0), flight_time=0.5)
+    with pytest.raises(ValueError, match="omega must have 3 components"):
+        Toss(omega=(1.0, 0.0), flight_time=0.5)
+    with pytest.raises(ValueError, match="do not broadcast"):
+        Toss(omega=np.zeros((4, 3)), flight_time=np.ones(5))
+    with pytest.raises(ValueError, match="start must be one of heads, tails"):
+        Toss(omega=(1.0, 0.0, 0.0), flight_time=0.5, start="edge")  # type: ignore[arg-type]
+
+
+def test_flight_rejects_wrong_types():
+    with pytest.raises(TypeError, match="coin must be a Coin"):
+        Flight("us-quarter", Toss(omega=(1, 0, 0), flight_time=1))  # type: ignore[arg-type]
+
+
+def test_values_are_frozen():
+    coin = Coin.preset("eur-2")
+    with pytest.raises(AttributeError):
+        coin.radius = 1.0  # type: ignore[misc]
