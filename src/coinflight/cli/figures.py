@@ -16,6 +16,7 @@ from coinflight.cli.options import (
     Radius,
     StartFace,
     Thickness,
+    number,
     resolve_coin,
 )
 from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
@@ -58,6 +59,33 @@ def parse_numbers(text: str, name: str) -> list[float]:
     return values
 
 
+def parse_range(text: str, name: str) -> tuple[float, float]:
+    """ "LO:HI" as two numbers, or a ValueError naming the option and the text."""
+    parts = text.split(":")
+    try:
+        if len(parts) != 2:
+            raise ValueError
+        lo, hi = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise ValueError(f"{name} must be a range LO:HI such as 60:90; got {text!r}") from None
+    return lo, hi
+
+
+def parse_resolution(text: str) -> tuple[int, int]:
+    """ "N" (N×N cells) or "NTxNW" (cells along T, along the spin)."""
+    parts = text.lower().split("x")
+    try:
+        if len(parts) not in (1, 2):
+            raise ValueError
+        sizes = [int(p) for p in parts]
+    except ValueError:
+        raise ValueError(
+            f"--resolution must be N or NTxNW with whole numbers, such as 500 or 600x400; "
+            f"got {text!r}"
+        ) from None
+    return (sizes[0], sizes[-1])
+
+
 def _written(paths: list[Path]) -> None:
     for p in paths:
         typer.echo(f"wrote {p}")
@@ -98,4 +126,142 @@ def plot_toss(
     _written(save_figure(draw(the_coin, the_toss), out, dpi=dpi))
 
 
-__all__ = ["parse_numbers", "plot_toss"]
+FlightTimeRange = Annotated[
+    str,
+    typer.Option(
+        "--flight-time",
+        "-T",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of flight times T, s (Stefan & Cheche: 0.6:0.9).",
+    ),
+]
+OmegaXRange = Annotated[
+    str | None,
+    typer.Option(
+        "--omega-x",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of the spin about a diameter ωx0, rad/s [default: 60:90].",
+    ),
+]
+OmegaY = Annotated[
+    float,
+    typer.Option(
+        "--omega-y",
+        parser=number,
+        metavar="WY",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed spin about the other diameter ωy0, rad/s.",
+    ),
+]
+OmegaZ = Annotated[
+    float,
+    typer.Option(
+        "--omega-z",
+        parser=number,
+        metavar="WZ",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed spin about the normal ωz0, rad/s (a precessing toss).",
+    ),
+]
+PsiDeg = Annotated[
+    float | None,
+    typer.Option(
+        "--psi",
+        parser=number,
+        metavar="DEG",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed angle between the normal and S, degrees; the vertical axis is then the "
+        "precession rate (see --precession-rate).",
+    ),
+]
+PrecessionRange = Annotated[
+    str | None,
+    typer.Option(
+        "--precession-rate",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of the precession rate ωp = |S|/I1, rad/s, with --psi [default: 60:90].",
+    ),
+]
+Resolution = Annotated[
+    str,
+    typer.Option(
+        "--resolution",
+        metavar="N|NTxNW",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Grid cells (pixels): N×N, or NT along T by NW along the spin.",
+    ),
+]
+Boundaries = Annotated[
+    bool,
+    typer.Option(
+        "--boundaries/--no-boundaries",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Overlay the analytic heads/tails boundaries (Keller's hyperbolas when planar).",
+    ),
+]
+
+
+def plot_basin(
+    out: OutFile,
+    flight_time: FlightTimeRange = "0.6:0.9",
+    omega_x: OmegaXRange = None,
+    omega_y: OmegaY = 0.0,
+    omega_z: OmegaZ = 0.0,
+    psi: PsiDeg = None,
+    precession_rate: PrecessionRange = None,
+    resolution: Resolution = "500",
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    boundaries: Boundaries = True,
+    dpi: Dpi = 150,
+) -> None:
+    """Map heads and tails over a box of flight times and spins, with Keller's hyperbolas.
+
+    Example: coinflight plot basin --omega-x 60:90 --flight-time 0.6:0.9 --out basin.png
+    """
+    import math
+
+    from coinflight.plotting.basin import basin_map
+    from coinflight.plotting.basin import plot_basin as draw
+    from coinflight.plotting.style import save_figure
+
+    the_coin = resolve_coin(coin, radius, thickness, mass)
+    if psi is None:
+        if precession_rate is not None:
+            raise ValueError("--precession-rate goes with --psi; use --omega-x without --psi")
+        spin = parse_range(omega_x or "60:90", "--omega-x")
+        psi_rad = None
+    else:
+        if omega_x is not None or omega_y != 0.0 or omega_z != 0.0:
+            raise ValueError(
+                "with --psi the spin is set by --precession-rate; "
+                "drop --omega-x/--omega-y/--omega-z"
+            )
+        if not 0.0 < psi < 180.0:
+            raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
+        spin = parse_range(precession_rate or "60:90", "--precession-rate")
+        psi_rad = math.radians(psi)
+    basin = basin_map(
+        the_coin,
+        parse_range(flight_time, "--flight-time"),
+        spin,
+        omega_y=omega_y,
+        omega_z=omega_z,
+        psi=psi_rad,
+        resolution=parse_resolution(resolution),
+        start=start,
+        g=g,
+    )
+    n_w, n_t = basin.face.shape
+    typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
+    _written(save_figure(draw(basin, boundaries=boundaries), out, dpi=dpi))
+
+
+__all__ = ["parse_numbers", "parse_range", "parse_resolution", "plot_basin", "plot_toss"]

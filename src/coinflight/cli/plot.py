@@ -20,3 +20,4 @@ def _plot(ctx: typer.Context) -> None:
 
 
 plot_app.command("toss")(_figures.plot_toss)
+plot_app.command("basin")(_figures.plot_basin)
