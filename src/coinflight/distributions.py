@@ -1,0 +1,258 @@
+"""Distributions of one initial condition (a spin component, the flight time, the launch speed).
+
+A person's tosses spread over a range of launch speeds and spins (Stefan & Cheche §3). Each
+parameter of a :class:`~coinflight.ensemble.TossDistribution` is one of these frozen value
+objects. The probability methods use only the small protocol of :class:`Distribution`
+(``sample``, ``ppf``, ``cdf``, ``is_fixed``, ``mean``, ``bounds``, ``affine``), so a new kind
+of distribution needs no change to the methods.
+
+>>> parse_distribution("60:90", "--omega-x", "rad/s")
+Uniform(low=60.0, high=90.0)
+>>> parse_distribution("normal:3.5,0.2", "--launch-speed", "m/s")
+Normal(mean=3.5, sd=0.2)
+"""
+
+from __future__ import annotations
+
+import math
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from coinflight import _validation as v
+
+FloatArray = NDArray[np.float64]
+
+
+class Distribution(ABC):
+    """What every distribution of one initial condition provides (SI units).
+
+    ``ppf`` (inverse CDF) maps the unit interval onto the parameter: Monte Carlo, quasi-Monte
+    Carlo, the paper's method B and the grid (midpoints of N equal-probability cells,
+    u_i = (i + ½)/N) all draw points in [0, 1) and map them through it.
+    """
+
+    @abstractmethod
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        """``size`` independent draws, shape (size,)."""
+
+    @abstractmethod
+    def ppf(self, u: ArrayLike) -> FloatArray:
+        """Inverse CDF at probabilities ``u`` in (0, 1); broadcasts."""
+
+    @abstractmethod
+    def cdf(self, x: ArrayLike) -> FloatArray:
+        """P(X ≤ x); broadcasts."""
+
+    mean: float
+    """Mean value (a field or a property of each kind)."""
+
+    @property
+    def is_fixed(self) -> bool:
+        """True for a single value (no spread)."""
+        return False
+
+    @property
+    def bounds(self) -> tuple[float, float]:
+        """(smallest, largest) possible value; ±inf where unbounded."""
+        return (-math.inf, math.inf)
+
+    @property
+    def affine(self) -> tuple[float, float] | None:
+        """(a, b) when ppf(u) = a + b u exactly (fast paths), else None."""
+        return None
+
+    @abstractmethod
+    def scaled(self, factor: float) -> Distribution:
+        """The distribution of ``factor · X`` for ``factor`` > 0 (e.g. v0 → T = 2 v0 / g)."""
+
+    @abstractmethod
+    def describe(self, unit: str = "") -> str:
+        """Short text for reports, e.g. ``60–90 rad/s``."""
+
+
+def _u(u: ArrayLike) -> FloatArray:
+    return np.asarray(u, dtype=float)
+
+
+@dataclass(frozen=True)
+class Fixed(Distribution):
+    """A single value: the parameter does not vary."""
+
+    value: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "value", float(v.finite("value", self.value)))
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return np.full(size, self.value)
+
+    def ppf(self, u: ArrayLike) -> FloatArray:
+        return np.full_like(_u(u), self.value)
+
+    def cdf(self, x: ArrayLike) -> FloatArray:
+        return np.where(_u(x) >= self.value, 1.0, 0.0)
+
+    @property
+    def mean(self) -> float:  # type: ignore[override]
+        return self.value
+
+    @property
+    def is_fixed(self) -> bool:
+        return True
+
+    @property
+    def bounds(self) -> tuple[float, float]:
+        return (self.value, self.value)
+
+    @property
+    def affine(self) -> tuple[float, float]:
+        return (self.value, 0.0)
+
+    def scaled(self, factor: float) -> Fixed:
+        return Fixed(self.value * factor)
+
+    def describe(self, unit: str = "") -> str:
+        return f"{self.value:g}{_space(unit)}"
+
+
+@dataclass(frozen=True)
+class Uniform(Distribution):
+    """Uniform over [low, high], low < high (the paper's ranges, Stefan & Cheche §3)."""
+
+    low: float
+    high: float
+
+    def __post_init__(self) -> None:
+        lo = float(v.finite("low", self.low))
+        hi = float(v.finite("high", self.high))
+        if not lo < hi:
+            what = "empty" if lo == hi else "reversed"
+            raise ValueError(f"range {lo:g}:{hi:g} is {what}: the low end must be below the high")
+        object.__setattr__(self, "low", lo)
+        object.__setattr__(self, "high", hi)
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return rng.uniform(self.low, self.high, size)
+
+    def ppf(self, u: ArrayLike) -> FloatArray:
+        return self.low + (self.high - self.low) * _u(u)
+
+    def cdf(self, x: ArrayLike) -> FloatArray:
+        return np.clip((_u(x) - self.low) / (self.high - self.low), 0.0, 1.0)
+
+    @property
+    def mean(self) -> float:  # type: ignore[override]
+        return 0.5 * (self.low + self.high)
+
+    @property
+    def bounds(self) -> tuple[float, float]:
+        return (self.low, self.high)
+
+    @property
+    def affine(self) -> tuple[float, float]:
+        return (self.low, self.high - self.low)
+
+    def scaled(self, factor: float) -> Uniform:
+        return Uniform(self.low * factor, self.high * factor)
+
+    def describe(self, unit: str = "") -> str:
+        return f"{self.low:g}–{self.high:g}{_space(unit)}"
+
+
+@dataclass(frozen=True)
+class Normal(Distribution):
+    """Normal (Gaussian) with mean and standard deviation sd > 0."""
+
+    mean: float
+    sd: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mean", float(v.finite("mean", self.mean)))
+        object.__setattr__(self, "sd", float(v.positive("standard deviation", self.sd)))
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return rng.normal(self.mean, self.sd, size)
+
+    def ppf(self, u: ArrayLike) -> FloatArray:
+        from scipy.special import ndtri
+
+        return self.mean + self.sd * np.asarray(ndtri(_u(u)), dtype=float)
+
+    def cdf(self, x: ArrayLike) -> FloatArray:
+        from scipy.special import ndtr
+
+        return np.asarray(ndtr((_u(x) - self.mean) / self.sd), dtype=float)
+
+    def scaled(self, factor: float) -> Normal:
+        return Normal(self.mean * factor, self.sd * factor)
+
+    def describe(self, unit: str = "") -> str:
+        return f"normal({self.mean:g}, sd {self.sd:g}){_space(unit)}"
+
+
+def _space(unit: str) -> str:
+    return f" {unit}" if unit else ""
+
+
+def as_distribution(value: Distribution | float | int) -> Distribution:
+    """A distribution as is; a plain number as :class:`Fixed`."""
+    if isinstance(value, Distribution):
+        return value
+    if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
+        raise TypeError(
+            f"expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
+        )
+    return Fixed(float(value))
+
+
+def parse_distribution(text: str, name: str, unit: str = "") -> Distribution:
+    """Parse the command-line syntax of a distribution.
+
+    ``"10"`` → :class:`Fixed`, ``"60:90"`` → :class:`Uniform`, ``"normal:MEAN,SD"`` →
+    :class:`Normal`. Errors are ValueError naming the option ``name`` and the text.
+    """
+    raw = str(text).strip()
+    where = f"{name} {raw!r}"
+    try:
+        if raw.lower().startswith("normal:"):
+            parts = raw.split(":", 1)[1].split(",")
+            if len(parts) != 2:
+                raise ValueError("expected normal:MEAN,SD")
+            return Normal(_num(parts[0]), _num(parts[1]))
+        if ":" in raw:
+            parts = raw.split(":")
+            if len(parts) != 2:
+                raise ValueError("expected LOW:HIGH")
+            return Uniform(_num(parts[0]), _num(parts[1]))
+        return Fixed(_num(raw))
+    except (ValueError, TypeError) as exc:
+        raise ValueError(
+            f"{where}: {exc} (use a number, LOW:HIGH or normal:MEAN,SD{_in(unit)})"
+        ) from None
+
+
+def _num(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        raise ValueError(f"{text.strip()!r} is not a number") from None
+    if not math.isfinite(x):
+        raise ValueError(f"{text.strip()!r} is not finite")
+    return x
+
+
+def _in(unit: str) -> str:
+    return f", in {unit}" if unit else ""
+
+
+__all__ = [
+    "Distribution",
+    "Fixed",
+    "Normal",
+    "Uniform",
+    "as_distribution",
+    "parse_distribution",
+]

@@ -1,0 +1,176 @@
+"""A distribution of tosses: each initial condition fixed, ranged or random.
+
+>>> from coinflight.distributions import Uniform
+>>> d = TossDistribution(omega_x=Uniform(60, 90), omega_y=0, omega_z=0,
+...                      flight_time=Uniform(0.6, 0.9))
+>>> d.ranged
+('omega_x', 'flight_time')
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from coinflight import _validation as v
+from coinflight.coin import DEFAULT_COIN, Coin
+from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.toss import STANDARD_GRAVITY, Start
+
+FloatArray = NDArray[np.float64]
+
+PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
+"""Initial conditions in the order used by every estimator (rad/s, rad/s, rad/s, s)."""
+UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
+
+# A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
+# below anything an estimate can resolve, so such draws can never occur in practice.
+_NORMAL_T_SIGMAS = 8.0
+
+
+@dataclass(frozen=True)
+class TossDistribution:
+    """Initial conditions of a population of tosses, caught at launch height.
+
+    Parameters
+    ----------
+    omega_x, omega_y, omega_z : Distribution or float
+        Body-frame spin components at launch, rad/s (x, y diameters; z the normal). A number
+        means a fixed value.
+    flight_time : Distribution or float
+        Flight time T = 2 v0 / g, s; must be positive with certainty.
+    coin : Coin
+        The coin (default the US quarter).
+    start : {"heads", "tails"}
+        Face up at launch.
+    g : float
+        Gravitational acceleration, m/s².
+
+    Notes
+    -----
+    Stefan & Cheche §3: the outcome is deterministic in (ω, T); the probability of heads is
+    the probability mass of the initial conditions that give heads.
+    """
+
+    omega_x: Distribution
+    omega_y: Distribution
+    omega_z: Distribution
+    flight_time: Distribution
+    coin: Coin = field(default_factory=lambda: Coin.preset(DEFAULT_COIN))
+    start: Start = "heads"
+    g: float = STANDARD_GRAVITY
+
+    def __post_init__(self) -> None:
+        for name in PARAMETERS:
+            object.__setattr__(self, name, as_distribution(getattr(self, name)))
+        v.choice("start", self.start, ("heads", "tails"))
+        g = v.positive("g", self.g, "m/s²")
+        if g.ndim:
+            raise TypeError("g must be a single number")
+        object.__setattr__(self, "g", float(g))
+        if not isinstance(self.coin, Coin):
+            raise TypeError(f"coin must be a Coin, got {self.coin!r}")
+        t = self.flight_time
+        low = t.bounds[0]
+        if isinstance(t, Normal):
+            low = t.mean - _NORMAL_T_SIGMAS * t.sd
+        if not low > 0.0:
+            raise ValueError(
+                f"flight time {t.describe('s')} reaches times ≤ 0 s; the flight time must be "
+                f"positive (a normal one needs mean > {_NORMAL_T_SIGMAS:g} sd)"
+            )
+
+    @classmethod
+    def from_launch_speed(
+        cls,
+        omega_x: Distribution | float,
+        omega_y: Distribution | float,
+        omega_z: Distribution | float,
+        launch_speed: Distribution | float,
+        coin: Coin | None = None,
+        start: Start = "heads",
+        g: float = STANDARD_GRAVITY,
+    ) -> TossDistribution:
+        """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11)."""
+        gg = float(v.positive("g", g, "m/s²"))
+        speed = as_distribution(launch_speed)
+        if speed.bounds[0] <= 0.0 and not isinstance(speed, Normal):
+            raise ValueError(f"launch speed {speed.describe('m/s')} must be positive")
+        return cls(
+            omega_x,  # type: ignore[arg-type]
+            omega_y,  # type: ignore[arg-type]
+            omega_z,  # type: ignore[arg-type]
+            speed.scaled(2.0 / gg),
+            coin=coin if coin is not None else Coin.preset(DEFAULT_COIN),
+            start=start,
+            g=gg,
+        )
+
+    @property
+    def parameters(self) -> dict[str, Distribution]:
+        """The four initial conditions by name, in :data:`PARAMETERS` order."""
+        return {name: getattr(self, name) for name in PARAMETERS}
+
+    @property
+    def ranged(self) -> tuple[str, ...]:
+        """Names of the parameters that vary (not :class:`Fixed`), in :data:`PARAMETERS` order."""
+        return tuple(name for name in PARAMETERS if not getattr(self, name).is_fixed)
+
+    @property
+    def start_sign(self) -> float:
+        """+1 started heads up, −1 tails up."""
+        return 1.0 if self.start == "heads" else -1.0
+
+    @property
+    def moments(self) -> tuple[float, float]:
+        """The coin's principal moments (I1, I3), kg m²."""
+        return self.coin.moments
+
+    @property
+    def spin_about_diameter(self) -> bool:
+        """True when ω_z = 0 for every toss (the paper's cases a and b, ψ = 90°)."""
+        return isinstance(self.omega_z, Fixed) and self.omega_z.value == 0.0
+
+    def values(self, u: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+        """Initial conditions for points of the unit cube.
+
+        Parameters
+        ----------
+        u : ndarray, shape (len(ranged), n)
+            One row per ranged parameter (in :attr:`ranged` order), values in (0, 1).
+
+        Returns
+        -------
+        (wx, wy, wz, t) : four arrays of shape (n,), rad/s and s.
+        """
+        u = np.asarray(u, dtype=float)
+        ranged = self.ranged
+        if u.ndim != 2 or u.shape[0] != len(ranged):
+            raise ValueError(f"u must have shape ({len(ranged)}, n), got {u.shape}")
+        n = u.shape[1]
+        out = []
+        for name in PARAMETERS:
+            dist: Distribution = getattr(self, name)
+            if name in ranged:
+                out.append(np.asarray(dist.ppf(u[ranged.index(name)]), dtype=float))
+            else:
+                out.append(np.full(n, dist.mean))
+        return out[0], out[1], out[2], out[3]
+
+    def sample(
+        self, rng: np.random.Generator, n: int
+    ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+        """``n`` random tosses: (wx, wy, wz, t), each of shape (n,)."""
+        return self.values(rng.random((len(self.ranged), int(n))))
+
+    def describe(self) -> str:
+        """One line per parameter, for reports."""
+        lines = [f"{self.coin.describe()}, started {self.start} up"]
+        for name in PARAMETERS:
+            lines.append(f"{name} = {getattr(self, name).describe(UNITS[name])}")
+        return "\n".join(lines)
+
+
+__all__ = ["PARAMETERS", "TossDistribution"]
