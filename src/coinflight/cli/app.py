@@ -7,6 +7,8 @@ from typing import Annotated
 import typer
 
 from coinflight import __version__
+from coinflight.cli import bias as _bias
+from coinflight.cli import data as _data
 from coinflight.cli import toss as _toss
 from coinflight.cli.errors import OneLineErrors
 from coinflight.cli.plot import plot_app
@@ -44,6 +46,8 @@ def _root(
 
 
 app.command("toss")(_toss.toss)
+app.command("bias")(_bias.bias)
+app.command("data")(_data.data)
 app.add_typer(plot_app, name="plot")
 
 

@@ -1,0 +1,213 @@
+"""``coinflight bias`` and ``coinflight plot bias``: same-side bias from precession."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from coinflight.cli.figures import Dpi, OutFile
+from coinflight.cli.options import (
+    CoinName,
+    JsonFlag,
+    Mass,
+    Radius,
+    Thickness,
+    number,
+    print_json,
+    resolve_coin,
+)
+
+if TYPE_CHECKING:
+    from coinflight.bias import QuantileDistribution
+
+PSI_PANEL = "Precession angle"
+SIM_PANEL = "Monte Carlo check"
+
+Psi = Annotated[
+    float | None,
+    typer.Option(
+        "--psi",
+        parser=number,
+        metavar="DEG",
+        rich_help_panel=PSI_PANEL,
+        help="Fixed angle ψ between the coin's normal and its angular momentum, degrees, "
+        "0-180 (90 = spin about a diameter, no bias).",
+    ),
+]
+PsiDist = Annotated[
+    str | None,
+    typer.Option(
+        "--psi-dist",
+        metavar="SPEC",
+        rich_help_panel=PSI_PANEL,
+        help="A distribution of ψ in degrees: normal:MEAN,SD (or LOW:HIGH, uniform; or a "
+        "number, fixed). p(ψ) is averaged over it.",
+    ),
+]
+MonteCarlo = Annotated[
+    int | None,
+    typer.Option(
+        "--monte-carlo",
+        min=1,
+        metavar="N",
+        rich_help_panel=SIM_PANEL,
+        help="Also simulate N tosses of the full torque-free flight (random flight time and "
+        "spin at the given ψ) and report their same-side fraction with its standard error.",
+    ),
+]
+Seed = Annotated[
+    int,
+    typer.Option(
+        "--seed", min=0, metavar="S", rich_help_panel=SIM_PANEL, help="Seed of the simulation."
+    ),
+]
+
+
+def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDistribution:
+    """The fixed ψ (degrees) or the ψ distribution the options ask for (exactly one)."""
+    if (psi is None) == (psi_dist is None):
+        raise ValueError("give exactly one of --psi DEG and --psi-dist SPEC")
+    if psi is not None:
+        return psi
+    from coinflight.distributions import parse_distribution
+
+    assert psi_dist is not None
+    return parse_distribution(psi_dist, "--psi-dist", "degrees")
+
+
+def bias(
+    psi: Psi = None,
+    psi_dist: PsiDist = None,
+    monte_carlo: MonteCarlo = None,
+    seed: Seed = 0,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    json_output: JsonFlag = False,
+) -> None:
+    """Probability that a precessing coin lands on the side it started (Diaconis et al. 2007).
+
+    Example: coinflight bias --psi 80 --monte-carlo 200000
+    """
+    from coinflight import bias as b
+
+    spec = resolve_psi(psi, psi_dist)
+    if isinstance(spec, float):
+        p = float(b.same_side_probability(spec, degrees=True))
+        what = f"ψ = {spec:g}° (fixed)"
+        psi_payload: dict[str, Any] = {"psi_deg": spec, "psi_model": "fixed"}
+    else:
+        p = b.mean_same_side_probability(spec, degrees=True)
+        what = f"ψ ~ {spec.describe('degrees')}"  # type: ignore[attr-defined]
+        psi_payload = {"psi_dist": psi_dist, "psi_model": "distribution"}
+        mean = getattr(spec, "mean", None)
+        if mean is not None:
+            psi_payload["psi_deg"] = float(mean)
+    sim = None
+    the_coin = None
+    if monte_carlo is not None:
+        the_coin = resolve_coin(coin, radius, thickness, mass)
+        sim = b.simulate_same_side(spec, monte_carlo, seed, coin=the_coin, degrees=True)
+    if json_output:
+        payload: dict[str, Any] = {"p_same_side": p, **psi_payload, "source": SOURCE}
+        if sim is not None and the_coin is not None:
+            payload["monte_carlo"] = {
+                "p_same_side": sim.p_same_side,
+                "stderr": sim.stderr,
+                "same": sim.same,
+                "n": sim.n,
+                "seed": sim.seed,
+                "z": _z(sim, p),
+                "flight_time": list(b.DEFAULT_FLIGHT_TIME),
+                "precession_rate": list(b.DEFAULT_PRECESSION_RATE),
+                "coin": the_coin.name,
+            }
+        print_json(payload)
+        return
+    typer.echo(f"{what}: P(same side) = {p:.6f}  (closed form, {SOURCE})")
+    if sim is not None and the_coin is not None:
+        t_lo, t_hi = b.DEFAULT_FLIGHT_TIME
+        w_lo, w_hi = b.DEFAULT_PRECESSION_RATE
+        typer.echo(
+            f"Monte Carlo: {sim.same:,} of {sim.n:,} tosses on the same side = "
+            f"{sim.p_same_side:.6f} ± {sim.stderr:.6f} (s.e.), {_z(sim, p):+.2f} s.e. from the "
+            f"closed form; seed {sim.seed}"
+        )
+        typer.echo(
+            f"  full torque-free flight of a {the_coin.name}: T ~ uniform {t_lo:g}-{t_hi:g} s, "
+            f"ωp ~ uniform {w_lo:g}-{w_hi:g} rad/s, random spin azimuth"
+        )
+
+
+SOURCE = "Diaconis, Holmes & Montgomery 2007"
+
+
+def _z(sim: Any, p: float) -> float:
+    return (sim.p_same_side - p) / sim.stderr if sim.stderr > 0 else 0.0
+
+
+Measured = Annotated[
+    float | None,
+    typer.Option(
+        "--measured",
+        parser=number,
+        metavar="P",
+        rich_help_panel=PSI_PANEL,
+        help="Mark a measured same-side rate (e.g. 0.5077, Bartoš et al.) and the ψ that gives it.",
+    ),
+]
+PsiPoints = Annotated[
+    str,
+    typer.Option(
+        "--psi-points",
+        metavar="DEG,DEG,...",
+        rich_help_panel=SIM_PANEL,
+        help="Angles (degrees) at which to simulate with --monte-carlo.",
+    ),
+]
+
+
+def plot_bias(
+    out: OutFile,
+    monte_carlo: MonteCarlo = None,
+    seed: Seed = 0,
+    psi_points: PsiPoints = "45,50,55,60,70,80,90,100,110,120,130,135",
+    measured: Measured = None,
+    dpi: Dpi = 150,
+) -> None:
+    """Plot p(ψ), optionally with Monte Carlo points of the full flight.
+
+    Example: coinflight plot bias --out bias.png --monte-carlo 20000 --measured 0.5077
+    """
+    from coinflight import bias as b
+    from coinflight.cli.figures import parse_numbers
+    from coinflight.plotting.bias import bias_figure
+    from coinflight.plotting.style import save_figure
+
+    simulated = []
+    if monte_carlo is not None:
+        angles = parse_numbers(psi_points, "--psi-points")
+        b.check_psi(angles, degrees=True)
+        # One seed per point, spawned from --seed, so the points are independent.
+        seeds = [int(s.generate_state(1)[0]) for s in _spawn(seed, len(angles))]
+        simulated = [
+            (a, b.simulate_same_side(a, monte_carlo, s, degrees=True))
+            for a, s in zip(angles, seeds, strict=True)
+        ]
+    psi_measured = None
+    if measured is not None:
+        psi_measured = float(b.psi_for_probability(measured, degrees=True))
+    for p in save_figure(bias_figure(simulated, measured, psi_measured), out, dpi=dpi):
+        typer.echo(f"wrote {p}")
+    if measured is not None and psi_measured is not None:
+        typer.echo(f"measured P(same side) = {measured:g} needs a fixed ψ = {psi_measured:.2f}°")
+    if simulated:
+        typer.echo(f"Monte Carlo: {monte_carlo:,} tosses per point, seed {seed}")
+
+
+def _spawn(seed: int, n: int) -> list[Any]:
+    import numpy as np
+
+    return list(np.random.SeedSequence(seed).spawn(n))

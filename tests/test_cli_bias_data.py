@@ -1,0 +1,209 @@
+"""``coinflight bias``, ``coinflight plot bias`` and ``coinflight data`` through the CLI."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from coinflight import bias as b
+from coinflight.cli import app
+
+BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+
+
+def run(*args):
+    return CliRunner().invoke(app, [str(a) for a in args])
+
+
+def test_bias_fixed_psi_json():
+    result = run("bias", "--psi", 60, "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    # REFERENCES §2: ψ = 60° → 0.608 (3 decimals).
+    assert payload["p_same_side"] == pytest.approx(0.608, abs=5e-4)
+    assert payload["psi_deg"] == 60.0
+    assert payload["psi_model"] == "fixed"
+    assert "monte_carlo" not in payload
+
+
+def test_bias_text():
+    result = run("bias", "--psi", 90)
+    assert result.exit_code == 0, result.output
+    assert "P(same side) = 0.500000" in result.stdout
+    assert "Diaconis, Holmes & Montgomery 2007" in result.stdout
+
+
+def test_bias_monte_carlo_json():
+    result = run("bias", "--psi", 70, "--monte-carlo", 100_000, "--seed", 7, "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    mc = payload["monte_carlo"]
+    assert (mc["n"], mc["seed"]) == (100_000, 7)
+    assert mc["same"] / mc["n"] == pytest.approx(mc["p_same_side"], abs=1e-15)
+    # 4 standard errors plus the finite-phase bound of tests/test_bias.py.
+    assert abs(mc["p_same_side"] - payload["p_same_side"]) < 4 * mc["stderr"] + 5e-4
+    assert mc["z"] == pytest.approx((mc["p_same_side"] - payload["p_same_side"]) / mc["stderr"])
+
+
+def test_bias_psi_distribution():
+    result = run("bias", "--psi-dist", "normal:81,5", "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    assert payload["psi_model"] == "distribution"
+    assert payload["psi_dist"] == "normal:81,5"
+    expected = b.mean_same_side_probability(b.NormalAngle(81.0, 5.0), degrees=True)
+    assert payload["p_same_side"] == pytest.approx(expected, abs=1e-12)
+    # The spread adds bias: more than a fixed 81°.
+    assert payload["p_same_side"] > float(b.same_side_probability(81.0, degrees=True))
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--psi", "200"], "psi must be between 0 and 180 (in degrees), got 200.0"),
+        (["--psi", "-5"], "psi must be between 0 and 180 (in degrees), got -5.0"),
+        ([], "give exactly one of --psi DEG and --psi-dist SPEC"),
+        (["--psi", "80", "--psi-dist", "normal:80,2"], "give exactly one of --psi"),
+        (["--psi-dist", "normal:170,5"], "must lie within [0, 180] degrees"),
+        (["--psi-dist", "normal:80"], "--psi-dist 'normal:80'"),
+        (["--psi", "abc"], "'abc' is not a number"),
+        (["--psi", "80", "--monte-carlo", "0"], "--monte-carlo"),
+    ],
+)
+def test_bias_bad_input_is_one_line_exit_2(args, message):
+    result = run("bias", *args)
+    assert result.exit_code == 2
+    assert result.stdout == ""
+    assert result.stderr.startswith("coinflight: error: ")
+    assert result.stderr.count("\n") == 1
+    assert message in result.stderr
+
+
+def test_plot_bias(tmp_path):
+    out = tmp_path / "bias.png"
+    result = run(
+        "plot",
+        "bias",
+        "--out",
+        out,
+        "--monte-carlo",
+        2000,
+        "--psi-points",
+        "60,90",
+        "--measured",
+        0.5077,
+    )
+    assert result.exit_code == 0, result.output
+    assert out.is_file() and out.stat().st_size > 10_000
+    assert f"wrote {out}" in result.stdout
+    assert "needs a fixed ψ = 81.16°" in result.stdout
+
+
+def test_plot_bias_bad_point(tmp_path):
+    result = run(
+        "plot", "bias", "--out", tmp_path / "x.png", "--monte-carlo", 10, "--psi-points", "60,190"
+    )
+    assert result.exit_code == 2
+    assert "between 0 and 180" in result.stderr
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_data_json_on_the_shared_file():
+    result = run("data", "--counts", BARTOS, "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    # REFERENCES §6 / the issue: 178,078 same-side of 350,757; 0.508 [0.506, 0.509] and
+    # heads 0.500 [0.498, 0.502], printed to 3 decimals.
+    assert (payload["same"], payload["flips"], payload["people"]) == (178_078, 350_757, 48)
+    assert round(payload["p_same_side"], 3) == pytest.approx(0.508, abs=1e-12)
+    assert [round(x, 3) for x in payload["ci95"]] == pytest.approx([0.506, 0.509], abs=1e-12)
+    assert round(payload["p_heads"], 3) == pytest.approx(0.500, abs=1e-12)
+    assert [round(x, 3) for x in payload["ci95_heads"]] == pytest.approx([0.498, 0.502], abs=1e-12)
+    assert payload["interval"] == "Clopper-Pearson"
+    assert payload["psi_model"] == "fixed"
+    psi = payload["psi_deg"]
+    assert float(b.same_side_probability(psi, degrees=True)) == pytest.approx(
+        payload["p_same_side"], abs=1e-12
+    )
+    assert payload["psi_ci95_deg"][0] < psi < payload["psi_ci95_deg"][1]
+    assert len(payload["per_person"]) == 48
+    assert payload["p_value"] < 1e-15
+
+
+def test_data_text_and_forest_plot(tmp_path):
+    out = tmp_path / "forest.svg"
+    result = run("data", "--counts", BARTOS, "--plot", out, "--interval", "wilson")
+    assert result.exit_code == 0, result.output
+    assert "same side: 178,078 of 350,757 = 0.50770" in result.stdout
+    assert "95% Wilson interval [0.50604, 0.50935]" in result.stdout
+    assert "heads:     175,420 of 350,757 = 0.50012" in result.stdout
+    assert "a fixed ψ for every flip): ψ = 81.16°" in result.stdout
+    assert "TianqiP" in result.stdout
+    assert out.is_file()
+    assert "TianqiP" in out.read_text(encoding="utf-8")
+
+
+def test_data_psi_sd():
+    result = run("data", "--counts", BARTOS, "--psi-sd", 3, "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    assert payload["psi_model"] == "normal"
+    assert payload["psi_sd_deg"] == 3.0
+    p = b.mean_same_side_probability(b.NormalAngle(payload["psi_deg"], 3.0), degrees=True)
+    assert p == pytest.approx(payload["p_same_side"], abs=1e-9)
+
+
+def test_data_malformed_file_names_the_line(tmp_path):
+    bad = tmp_path / "bad.txt"
+    bad.write_text(
+        "person hsame hdiff tsame tdiff same flips\nA 1 2 3 4 4 10\nB 1 2 3 4\n", encoding="utf-8"
+    )
+    result = run("data", "--counts", bad)
+    assert result.exit_code == 2
+    assert result.stdout == ""
+    assert result.stderr.count("\n") == 1
+    assert f"coinflight: error: {bad}, line 3: expected 7 columns" in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--interval", "bayes"], "interval method must be one of exact, wilson"),
+        (["--psi-sd", "-1"], "--psi-sd must be a non-negative number"),
+        (["--psi-sd", "20"], "too wide"),
+    ],
+)
+def test_data_bad_options(args, message):
+    result = run("data", "--counts", BARTOS, *args)
+    assert result.exit_code == 2
+    assert message in result.stderr
+
+
+def test_data_spread_too_large_for_the_rate():
+    # sd 12°: even a mean of 90° gives more than the measured 0.5077, so no ψ; said, exit 0.
+    result = run("data", "--counts", BARTOS, "--psi-sd", 12, "--json")
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    assert payload["psi_deg"] is None
+    assert payload["p_same_side_floor"] > payload["p_same_side"]
+
+
+def test_data_missing_file(tmp_path):
+    result = run("data", "--counts", tmp_path / "none.txt")
+    assert result.exit_code == 2
+    assert "cannot read counts file" in result.stderr
+
+
+def test_psi_sd_default_is_fixed_angle():
+    # The reported ψ is documented as a fixed angle unless --psi-sd is given.
+    result = run("data", "--counts", BARTOS, "--json")
+    payload = json.loads(result.stdout)
+    assert payload["psi_sd_deg"] == 0.0
+    assert payload["psi_deg"] == pytest.approx(
+        float(b.psi_for_probability(178_078 / 350_757, degrees=True)), abs=1e-9
+    )
+    assert math.isfinite(payload["psi_deg"])

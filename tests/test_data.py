@@ -1,0 +1,185 @@
+"""Real flips (Bartoš et al.): reading counts, pooled rates, intervals, tests, and the ψ fit."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from coinflight import bias as b
+from coinflight import data as d
+from coinflight.distributions import Normal
+
+# The shared data file sits beside the repository (../shared/data); the project ships no copy.
+BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+
+HEADER = "person hsame hdiff tsame tdiff same flips"
+
+
+@pytest.fixture(scope="module")
+def table():
+    assert BARTOS.is_file(), f"shared data file missing: {BARTOS} (clone ../shared beside repo)"
+    return d.read_counts(BARTOS)
+
+
+def test_pooled_counts(table):
+    # REFERENCES §6 / the issue: 178,078 same-side of 350,757 flips by 48 people.
+    assert len(table.rows) == 48
+    assert table.flips == 350_757
+    assert table.same == 178_078
+    # Heads = hsame + hdiff, summed over the file's columns.
+    assert table.heads == sum(r.hsame + r.hdiff for r in table.rows)
+
+
+@pytest.mark.parametrize("method", ["exact", "wilson"])
+def test_published_intervals_to_the_printed_digits(table, method):
+    # Bartoš et al.: P(same side) = 0.508 [0.506, 0.509], P(heads) = 0.500 [0.498, 0.502]
+    # (REFERENCES §6), printed to 3 decimals. Both frequentist intervals give these digits.
+    s = d.summarize(table, method)
+    assert round(s.same_side.estimate, 3) == pytest.approx(0.508, abs=1e-12)
+    assert [round(x, 3) for x in s.same_side.ci95] == pytest.approx([0.506, 0.509], abs=1e-12)
+    assert round(s.heads.estimate, 3) == pytest.approx(0.500, abs=1e-12)
+    assert [round(x, 3) for x in s.heads.ci95] == pytest.approx([0.498, 0.502], abs=1e-12)
+
+
+def test_clopper_pearson_against_beta_quantiles(table):
+    # Clopper & Pearson (1934): [B(α/2; k, n−k+1), B(1−α/2; k+1, n−k)], independent of binomtest.
+    from scipy.stats import beta
+
+    k, n = table.same, table.flips
+    p = d.proportion(k, n, "exact")
+    assert p.ci95[0] == pytest.approx(beta.ppf(0.025, k, n - k + 1), rel=1e-9)
+    assert p.ci95[1] == pytest.approx(beta.ppf(0.975, k + 1, n - k), rel=1e-9)
+
+
+def test_wilson_against_its_formula():
+    # Wilson (1927): (p̂ + z²/2n ± z sqrt(p̂(1−p̂)/n + z²/4n²)) / (1 + z²/n).
+    from scipy.stats import norm
+
+    k, n = 37, 120
+    z = norm.ppf(0.975)
+    ph = k / n
+    centre = (ph + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(ph * (1 - ph) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    ci = d.proportion(k, n, "wilson").ci95
+    assert ci == pytest.approx((centre - half, centre + half), rel=1e-12)
+
+
+def test_tests_against_one_half(table):
+    s = d.summarize(table)
+    # 9 standard errors above 1/2: a two-sided p-value far below 1e-15 ...
+    assert s.same_side.z == pytest.approx(
+        2 * math.sqrt(350_757) * (178_078 / 350_757 - 0.5), rel=1e-12
+    )
+    assert s.same_side.p_value < 1e-15
+    # ... while heads vs tails is consistent with 1/2 (negative case).
+    assert s.heads.p_value > 0.5
+
+
+def test_per_person_rates(table):
+    s = d.summarize(table)
+    assert len(s.people) == 48
+    for (name, p), row in zip(s.people, table.rows, strict=True):
+        assert name == row.person
+        assert p.estimate == row.same / row.flips
+        assert p.ci95[0] < p.estimate < p.ci95[1]
+    # Rates "vary widely between people" (REFERENCES §6): some below, some well above 1/2.
+    rates = [p.estimate for _, p in s.people]
+    assert min(rates) < 0.5 < 0.55 < max(rates)
+
+
+def test_fixed_psi_reproduces_the_pooled_rate(table):
+    s = d.summarize(table)
+    fit = s.psi
+    assert fit.model == "fixed"
+    assert fit.psi is not None
+    # The model at the fitted angle gives back the measured rate and the interval ends.
+    assert float(b.same_side_probability(fit.psi)) == pytest.approx(s.same_side.estimate, abs=1e-12)
+    assert float(b.same_side_probability(fit.ci95[0])) == pytest.approx(
+        s.same_side.ci95[1], abs=1e-12
+    )
+    assert float(b.same_side_probability(fit.ci95[1])) == pytest.approx(
+        s.same_side.ci95[0], abs=1e-12
+    )
+    # REFERENCES §2: p = 0.508 needs ψ ≈ 81°.
+    assert math.degrees(fit.psi) == pytest.approx(81.0, abs=0.5)
+    assert fit.ci95[0] < fit.psi < fit.ci95[1]
+    assert not fit.limited
+
+
+def test_mean_of_a_normal_psi_reproduces_the_pooled_rate(table):
+    sd = math.radians(4.0)
+    s = d.summarize(table, psi_sd=sd)
+    fit = s.psi
+    assert fit.model == "normal"
+    assert fit.psi is not None
+    assert b.mean_same_side_probability(Normal(fit.psi, sd)) == pytest.approx(
+        s.same_side.estimate, abs=1e-9
+    )
+    # A spread adds bias by itself, so the mean sits closer to 90° than the fixed angle.
+    assert d.summarize(table).psi.psi < fit.psi < math.pi / 2
+
+
+def test_rate_at_or_below_half_has_no_psi():
+    fit = d.fit_psi(d.proportion(480, 1000))
+    assert fit.psi is None
+    assert fit.limited
+    assert fit.ci95[1] == pytest.approx(math.pi / 2)
+
+
+def _write(tmp_path, text):
+    path = tmp_path / "counts.txt"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_reads_a_small_file_with_comments_and_blank_lines(tmp_path):
+    path = _write(tmp_path, f"# a comment\n{HEADER}\n\nA 1 2 3 4 4 10\nB 5 0 5 0 10 10\n")
+    t = d.read_counts(path)
+    assert [r.person for r in t.rows] == ["A", "B"]
+    assert (t.same, t.flips, t.heads) == (14, 20, 8)
+    assert t.rows[1].line == 5
+
+
+@pytest.mark.parametrize(
+    ("body", "line", "message"),
+    [
+        ("A 1 2 3 4 4\n", 2, "expected 7 columns"),
+        ("A 1 2 3 4 4 10 9\n", 2, "expected 7 columns"),
+        ("A 1 2 x 4 4 10\n", 2, "tsame must be a non-negative integer, got 'x'"),
+        ("A 1 2 3.0 4 4 10\n", 2, "tsame must be a non-negative integer, got '3.0'"),
+        ("A -1 2 3 4 2 8\n", 2, "hsame must be a non-negative integer, got -1"),
+        ("A 1 2 3 4 4 10\nB 1 2 3 4 5 10\n", 3, r"same = 5 but hsame \+ tsame = 1 \+ 3 = 4"),
+        ("A 1 2 3 4 4 11\n", 2, r"flips = 11 but hsame \+ hdiff \+ tsame \+ tdiff = 10"),
+        ("A 0 0 0 0 0 0\n", 2, "has no flips"),
+        ("A 1 2 3 4 4 10\nA 1 2 3 4 4 10\n", 3, "already appears on line 2"),
+    ],
+)
+def test_malformed_counts_name_the_line(tmp_path, body, line, message):
+    path = _write(tmp_path, f"{HEADER}\n{body}")
+    with pytest.raises(ValueError, match=rf"counts\.txt, line {line}: .*{message}"):
+        d.read_counts(path)
+
+
+def test_wrong_header_is_an_error(tmp_path):
+    path = _write(tmp_path, "name a b c d e f\nA 1 2 3 4 4 10\n")
+    with pytest.raises(ValueError, match="line 1: expected the header 'person hsame"):
+        d.read_counts(path)
+
+
+def test_empty_and_header_only_files(tmp_path):
+    with pytest.raises(ValueError, match="empty"):
+        d.read_counts(_write(tmp_path, "\n"))
+    with pytest.raises(ValueError, match="no data lines"):
+        d.read_counts(_write(tmp_path, HEADER + "\n"))
+
+
+def test_missing_file_is_a_value_error(tmp_path):
+    with pytest.raises(ValueError, match="cannot read counts file"):
+        d.read_counts(tmp_path / "nope.txt")
+
+
+def test_unknown_interval_method(table):
+    with pytest.raises(ValueError, match="interval method must be one of exact, wilson"):
+        d.summarize(table, "bayes")
