@@ -189,7 +189,7 @@ def test_average_over_normal_psi_matches_psi_space_quadrature(mean, sd):
     assert b.mean_same_side_probability(Normal(mean, sd), degrees=True) == pytest.approx(
         expected, abs=1e-8
     )
-    assert b.mean_same_side_probability(b.NormalAngle(mean, sd), degrees=True) == pytest.approx(
+    assert b.mean_same_side_probability(Normal(mean, sd), degrees=True) == pytest.approx(
         expected, abs=1e-8
     )
 

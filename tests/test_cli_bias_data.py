@@ -11,6 +11,7 @@ from typer.testing import CliRunner
 
 from coinflight import bias as b
 from coinflight.cli import app
+from coinflight.distributions import Normal
 
 BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
 
@@ -55,7 +56,7 @@ def test_bias_psi_distribution():
     payload = json.loads(result.stdout)
     assert payload["psi_model"] == "distribution"
     assert payload["psi_dist"] == "normal:81,5"
-    expected = b.mean_same_side_probability(b.NormalAngle(81.0, 5.0), degrees=True)
+    expected = b.mean_same_side_probability(Normal(81.0, 5.0), degrees=True)
     assert payload["p_same_side"] == pytest.approx(expected, abs=1e-12)
     # The spread adds bias: more than a fixed 81°.
     assert payload["p_same_side"] > float(b.same_side_probability(81.0, degrees=True))
@@ -153,7 +154,7 @@ def test_data_psi_sd():
     payload = json.loads(result.stdout)
     assert payload["psi_model"] == "normal"
     assert payload["psi_sd_deg"] == 3.0
-    p = b.mean_same_side_probability(b.NormalAngle(payload["psi_deg"], 3.0), degrees=True)
+    p = b.mean_same_side_probability(Normal(payload["psi_deg"], 3.0), degrees=True)
     assert p == pytest.approx(payload["p_same_side"], abs=1e-9)
 
 

@@ -31,6 +31,7 @@ from coinflight import _validation as v
 from coinflight.coin import DEFAULT_COIN, Coin
 from coinflight.core import precession
 from coinflight.core.torque_free import normal_alignment
+from coinflight.distributions import Normal
 
 FloatArray = NDArray[np.float64]
 
@@ -208,27 +209,6 @@ def mean_same_side_probability(dist: QuantileDistribution, *, degrees: bool = Fa
     return float(value)
 
 
-@dataclass(frozen=True)
-class NormalAngle:
-    """A normal distribution of ψ (mean, standard deviation in the same unit), by its ppf.
-
-    Used by :func:`psi_mean_for_probability`; any object with ``ppf`` serves the other functions.
-    """
-
-    mean: float
-    sd: float
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "mean", float(v.finite("mean of psi", self.mean)))
-        object.__setattr__(self, "sd", float(v.non_negative("spread of psi", self.sd)))
-
-    def ppf(self, u: ArrayLike) -> FloatArray:
-        """Quantile function mean + sd Φ⁻¹(u)."""
-        from scipy.special import ndtri
-
-        return np.asarray(self.mean + self.sd * ndtri(np.asarray(u, dtype=float)))
-
-
 def psi_mean_for_probability(p: float, sd: float = 0.0, *, degrees: bool = False) -> float:
     """Mean of a normal ψ distribution of spread ``sd`` whose average p(ψ) equals ``p``.
 
@@ -277,7 +257,7 @@ def psi_mean_for_probability(p: float, sd: float = 0.0, *, degrees: bool = False
         )
 
     def excess(mean: float) -> float:
-        return mean_same_side_probability(NormalAngle(mean, spread), degrees=degrees) - target
+        return mean_same_side_probability(Normal(mean, spread), degrees=degrees) - target
 
     at_right = excess(right)
     if at_right > 0.0:
@@ -412,7 +392,6 @@ def simulate_same_side(
 __all__ = [
     "DEFAULT_FLIGHT_TIME",
     "DEFAULT_PRECESSION_RATE",
-    "NormalAngle",
     "QuantileDistribution",
     "SameSideEstimate",
     "check_psi",

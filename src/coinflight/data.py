@@ -275,10 +275,10 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
 
     from coinflight.bias import (
         TAIL_MASS,
-        NormalAngle,
         mean_same_side_probability,
         psi_mean_for_probability,
     )
+    from coinflight.distributions import Normal
 
     spread = float(v.non_negative("spread of psi", sd, "rad"))
     widest = 0.5 * math.pi / -float(ndtri(TAIL_MASS))
@@ -290,7 +290,7 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
         )
     least = 0.5
     if spread > 0.0:
-        least = mean_same_side_probability(NormalAngle(0.5 * math.pi, spread))
+        least = mean_same_side_probability(Normal(0.5 * math.pi, spread))
 
     def solve(p: float) -> float | None:
         if p <= least:
