@@ -1,0 +1,123 @@
+"""Probability of heads over a distribution of tosses: one entry point, four methods.
+
+>>> from coinflight.distributions import Uniform
+>>> from coinflight.ensemble import TossDistribution
+>>> d = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
+>>> round(estimate(d, "exact").p_heads, 6)
+0.497471
+
+Methods (one module each):
+
+``exact``
+    Integrates the measure of the heads bands (Keller 1986; REFERENCES §3).
+``grid``
+    Method A of Stefan & Cheche: ``n`` cells per ranged parameter, an exact count.
+``monte-carlo``
+    ``n`` random tosses; with ``grid_cells=100`` the paper's method B (random draws from a coarse
+    grid of 100 cells per parameter).
+``qmc``
+    Scrambled Sobol points with a randomised error estimate.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from coinflight.ensemble import TossDistribution
+from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
+from coinflight.probability.result import ProbabilityResult, wilson_interval
+
+METHODS = ("exact", "grid", "monte-carlo", "qmc")
+PAPER_B_CELLS = 100
+"""Cells per parameter of the paper's method B (Stefan & Cheche §3)."""
+
+
+def estimate(
+    dist: TossDistribution,
+    method: str = "exact",
+    n: int | None = None,
+    seed: int | None = None,
+    *,
+    model: OutcomeModel = HAND_CATCH,
+    executor: Any = None,
+    threads: int | None = None,
+    progress: Any = None,
+    **options: Any,
+) -> ProbabilityResult:
+    """P(heads) for the tosses ``dist`` by ``method``; see the module notes.
+
+    Parameters
+    ----------
+    dist : TossDistribution
+        The tosses.
+    method : {"exact", "grid", "monte-carlo", "qmc"}
+    n : int
+        Size: cells per ranged parameter (grid, default 5000), tosses (monte-carlo, default
+        10⁶), points (qmc, default 2²⁰). Not used by exact.
+    seed : int, optional
+        For monte-carlo and qmc; reported in the result.
+    model : OutcomeModel
+        How a toss ends (default: caught in the hand).
+    executor : object with ``map``, optional
+        Runs the independent tasks (default: a thread pool).
+    progress : callable, optional
+        Called with the amount of work done as tasks finish.
+    **options
+        ``grid_cells`` (monte-carlo), ``replicates`` (qmc), ``chunk_size`` (monte-carlo).
+    """
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    if method == "exact":
+        if n is not None:
+            raise ValueError("the exact method takes no n")
+        _no_options(method, options)
+        from coinflight.probability import exact
+
+        return exact.estimate(dist, model=model)
+    common: dict[str, Any] = {
+        "model": model,
+        "executor": executor,
+        "threads": threads,
+        "progress": progress,
+    }
+    if method == "grid":
+        _no_options(method, options)
+        from coinflight.probability import grid
+
+        return grid.estimate(dist, 5000 if n is None else n, **common)
+    if method == "monte-carlo":
+        _no_options(method, options, ("grid_cells", "chunk_size"))
+        from coinflight.probability import monte_carlo
+
+        return monte_carlo.estimate(dist, 10**6 if n is None else n, seed, **common, **options)
+    _no_options(method, options, ("replicates",))
+    from coinflight.probability import qmc
+
+    return qmc.estimate(dist, 1 << 20 if n is None else n, seed, **common, **options)
+
+
+def _no_options(method: str, options: dict[str, Any], allowed: tuple[str, ...] = ()) -> None:
+    extra = [k for k in options if k not in allowed]
+    if extra:
+        raise TypeError(f"method {method!r} takes no option {', '.join(extra)}")
+
+
+def __getattr__(name: str) -> Any:
+    if name == "convergence":
+        from coinflight.probability.convergence import convergence
+
+        return convergence
+    raise AttributeError(name)
+
+
+__all__ = [
+    "METHODS",
+    "PAPER_B_CELLS",
+    "HandCatch",
+    "OutcomeModel",
+    "ProbabilityResult",
+    "TossDistribution",
+    "convergence",
+    "estimate",
+    "wilson_interval",
+]

@@ -1,0 +1,111 @@
+"""Where a batch of initial conditions becomes counts of faces: the one function boundary.
+
+Every estimator asks an :class:`OutcomeModel` to count the faces of a batch of tosses given as
+points of the unit cube (mapped to initial conditions by the distribution's ``ppf``). The hand
+catch of the founding paper is :class:`HandCatch`; a landing on a table (bounces, edge) plugs in
+by subclassing :class:`OutcomeModel` and overriding :meth:`OutcomeModel.count`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from coinflight.ensemble import PARAMETERS, TossDistribution
+
+Counts = NDArray[np.int64]
+"""(tails, heads, edge) counts, shape (3,)."""
+
+
+def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
+    """(tails, heads, edge) from the number of tosses that show the starting face."""
+    heads = same if start_sign > 0 else n - same
+    return np.array([n - heads, heads, 0], dtype=np.int64)
+
+
+class OutcomeModel:
+    """Counts faces for batches of tosses. Subclasses override :meth:`count`.
+
+    :meth:`count_random` (Monte Carlo) has a generic implementation on top of :meth:`count`;
+    models with a faster path override it too.
+    """
+
+    name = "outcome model"
+
+    def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
+        """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n)."""
+        raise NotImplementedError
+
+    def count_random(
+        self, dist: TossDistribution, key: np.uint64, start: int, n: int, cells: int = 0
+    ) -> Counts:
+        """Face counts for tosses ``start … start + n − 1`` of the random stream ``key``.
+
+        The uniforms are :func:`coinflight.core.sampling.uniforms` (row p drives parameter p of
+        :data:`~coinflight.ensemble.PARAMETERS`); ``cells`` > 0 snaps each to the midpoint of
+        one of ``cells`` equal cells (the paper's method B).
+        """
+        from coinflight.core import sampling
+
+        u = sampling.uniforms(np.uint64(key), int(start), int(n))
+        rows = [PARAMETERS.index(name) for name in dist.ranged]
+        u = u[rows]
+        if cells > 0:
+            u = (np.floor(u * cells) + 0.5) / cells
+        return self.count(dist, u)
+
+
+class HandCatch(OutcomeModel):
+    """Caught in the hand at launch height: the face is the sign of n(T)·n0 (Stefan & Cheche)."""
+
+    name = "hand catch"
+
+    def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
+        from coinflight.core import sampling
+
+        u = np.ascontiguousarray(u, dtype=float)
+        n = u.shape[1]
+        i1, i3 = dist.moments
+        maps = _affine_maps(dist)
+        if maps is not None:
+            offset, scale = maps
+            rows = np.full(4, -1, dtype=np.int64)
+            for r, name in enumerate(dist.ranged):
+                rows[PARAMETERS.index(name)] = r
+            same = sampling.count_same_side_affine(u, rows, offset, scale, i1, i3)
+        else:
+            wx, wy, wz, t = dist.values(u)
+            same = sampling.count_same_side(wx, wy, wz, t, i1, i3)
+        return faces_from_same_side(int(same), n, dist.start_sign)
+
+    def count_random(
+        self, dist: TossDistribution, key: np.uint64, start: int, n: int, cells: int = 0
+    ) -> Counts:
+        maps = _affine_maps(dist)
+        if maps is None:
+            return super().count_random(dist, key, start, n, cells)
+        from coinflight.core import sampling
+
+        offset, scale = maps
+        i1, i3 = dist.moments
+        same = sampling.count_same_side_random(
+            np.uint64(key), int(start), int(n), offset, scale, int(cells), i1, i3
+        )
+        return faces_from_same_side(int(same), n, dist.start_sign)
+
+
+def _affine_maps(
+    dist: TossDistribution,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+    """(offset, scale) per parameter when every parameter maps affinely from [0, 1]."""
+    offset = np.empty(4)
+    scale = np.empty(4)
+    for p, name in enumerate(PARAMETERS):
+        affine = getattr(dist, name).affine
+        if affine is None:
+            return None
+        offset[p], scale[p] = affine
+    return offset, scale
+
+
+HAND_CATCH = HandCatch()

@@ -1,0 +1,119 @@
+"""The one result type of every probability method."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+# z such that Φ(z) = 0.975: two-sided 95 % intervals.
+Z95 = 1.959963984540054
+
+
+@dataclass(frozen=True)
+class ProbabilityResult:
+    """P(heads), P(tails) (and P(edge), 0 for a hand catch) for a distribution of tosses.
+
+    Attributes
+    ----------
+    p_heads, p_tails, p_edge : float
+        Probabilities of each face up at catch; they sum to 1.
+    p_same_side : float
+        Probability that the coin shows the face it started with.
+    method : str
+        ``exact``, ``grid``, ``monte-carlo`` or ``qmc``.
+    n : int or None
+        The method's size parameter: grid cells per ranged parameter (``grid``), tosses
+        (``monte-carlo``), points (``qmc``); None for ``exact``.
+    samples : int or None
+        Configurations or events actually evaluated (N^k for the grid).
+    stderr : float or None
+        Standard error of ``p_heads`` (sampling methods); None where there is none.
+    ci95 : (float, float) or None
+        95 % interval for ``p_heads``: Wilson score interval (Monte Carlo), Student t over the
+        randomisations (QMC), ``p ± error_estimate`` (exact quadrature).
+    error_estimate : float or None
+        Bound on the numerical error of ``exact`` (0 for closed forms) .
+    counts : (int, int, int) or None
+        (tails, heads, edge) counts for the counting methods.
+    seed : int or None
+        The seed that reproduces the result (random methods).
+    elapsed : float
+        Wall time, s.
+    details : dict
+        Method options (``grid_cells``, ``replicates``, how ``exact`` integrated, …).
+    """
+
+    p_heads: float
+    p_tails: float
+    p_edge: float
+    p_same_side: float
+    method: str
+    n: int | None = None
+    samples: int | None = None
+    stderr: float | None = None
+    ci95: tuple[float, float] | None = None
+    error_estimate: float | None = None
+    counts: tuple[int, int, int] | None = None
+    seed: int | None = None
+    elapsed: float = 0.0
+    details: dict[str, Any] = field(default_factory=dict, compare=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain JSON-ready dictionary (the CLI's ``--json``)."""
+        out = asdict(self)
+        if self.ci95 is not None:
+            out["ci95"] = list(self.ci95)
+        if self.counts is not None:
+            out["counts"] = {
+                "tails": self.counts[0],
+                "heads": self.counts[1],
+                "edge": self.counts[2],
+            }
+        return out
+
+    def describe(self) -> str:
+        """The probability with its uncertainty, readable at a glance."""
+        p = self.p_heads
+        if self.stderr is not None and self.ci95 is not None:
+            unc = f" ± {self.stderr:.2g} (95 % CI {self.ci95[0]:.4f} – {self.ci95[1]:.4f})"
+        elif self.error_estimate is not None and self.error_estimate > 0:
+            unc = f" ± {self.error_estimate:.1g} (quadrature error bound)"
+        elif self.method == "exact":
+            unc = " (closed form)"
+        else:
+            unc = ""
+        return f"P(heads) = {p:.6f}{unc}"
+
+
+def wilson_interval(successes: int, n: int, z: float = Z95) -> tuple[float, float]:
+    """Wilson score interval for a binomial proportion (Wilson 1927)."""
+    if n <= 0:
+        raise ValueError(f"n must be positive, got {n}")
+    p = successes / n
+    z2 = z * z
+    denom = 1.0 + z2 / n
+    centre = (p + z2 / (2 * n)) / denom
+    half = z * math.sqrt(p * (1 - p) / n + z2 / (4 * n * n)) / denom
+    return (max(0.0, centre - half), min(1.0, centre + half))
+
+
+def from_counts(
+    counts: tuple[int, int, int],
+    start_sign: float,
+    method: str,
+    **kwargs: Any,
+) -> ProbabilityResult:
+    """A result from (tails, heads, edge) counts, with Wilson interval and binomial stderr."""
+    tails, heads, edge = (int(c) for c in counts)
+    n = tails + heads + edge
+    same = heads if start_sign > 0 else tails
+    return ProbabilityResult(
+        p_heads=heads / n,
+        p_tails=tails / n,
+        p_edge=edge / n,
+        p_same_side=same / n,
+        method=method,
+        counts=(tails, heads, edge),
+        **kwargs,
+    )
