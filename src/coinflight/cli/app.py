@@ -7,6 +7,7 @@ from typing import Annotated
 import typer
 
 from coinflight import __version__
+from coinflight.cli import animate as _animate
 from coinflight.cli import bias as _bias
 from coinflight.cli import data as _data
 from coinflight.cli import toss as _toss
@@ -49,6 +50,7 @@ app.command("toss")(_toss.toss)
 app.command("bias")(_bias.bias)
 app.command("data")(_data.data)
 app.add_typer(plot_app, name="plot")
+app.command("animate")(_animate.animate)
 
 
 def main() -> None:

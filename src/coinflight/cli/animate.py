@@ -1,0 +1,98 @@
+"""``coinflight animate``: one toss in slow motion, as a GIF (or MP4 where ffmpeg is present)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.options import (
+    OUTPUT_PANEL,
+    CoinName,
+    Gravity,
+    Mass,
+    Radius,
+    StartFace,
+    Thickness,
+    number,
+    resolve_coin,
+)
+from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
+
+MovieFile = Annotated[
+    Path,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Animation to write: .gif (always) or .mp4 (needs ffmpeg).",
+    ),
+]
+Frames = Annotated[
+    int | None,
+    typer.Option(
+        "--frames",
+        min=2,
+        max=2000,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Frames from launch to catch [default: 16 per turn, 60 to 400].",
+    ),
+]
+Fps = Annotated[
+    int,
+    typer.Option("--fps", min=1, max=120, rich_help_panel=OUTPUT_PANEL, help="Frames per second."),
+]
+Enlarge = Annotated[
+    float | None,
+    typer.Option(
+        "--enlarge",
+        parser=number,
+        metavar="X",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Draw the coin X times larger than life [default: a sixth of the apex height].",
+    ),
+]
+MovieDpi = Annotated[
+    int, typer.Option("--dpi", min=20, max=600, rich_help_panel=OUTPUT_PANEL, help="Resolution.")
+]
+
+
+def animate(
+    out: MovieFile,
+    omega: Omega = (80.0, 0.0, 0.0),
+    flight_time: FlightTime = None,
+    launch_speed: LaunchSpeed = None,
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    frames: Frames = None,
+    fps: Fps = 24,
+    enlarge: Enlarge = None,
+    dpi: MovieDpi = 80,
+) -> None:
+    """Animate one toss: the coin rising, turning and falling, the face up and a clock.
+
+    Example: coinflight animate --omega 80 0 0 --flight-time 0.7 --out toss.gif
+    """
+    from coinflight.plotting.animation import animate_toss, save_animation
+
+    if out.suffix.lower() not in (".gif", ".mp4"):
+        raise ValueError(f"--out must end in .gif or .mp4, got {str(out)!r}")
+    the_coin = resolve_coin(coin, radius, thickness, mass)
+    movie = animate_toss(
+        the_coin,
+        build_toss(omega, flight_time, launch_speed, start, g),
+        frames=frames,
+        fps=fps,
+        enlarge=enlarge,
+    )
+    path = save_animation(movie, out, dpi=dpi)
+    typer.echo(f"wrote {path} ({len(movie.times)} frames at {fps} fps)")
+
+
+__all__ = ["animate"]
