@@ -31,6 +31,30 @@ def test_heads_fraction_is_the_papers_rule_on_the_midpoint_grid():
     np.testing.assert_allclose(basin.flight_time, t, rtol=0, atol=1e-14)
 
 
+@pytest.mark.parametrize(
+    ("wx", "wy", "wz"),
+    [
+        ((60.0, 90.0), 0.0, 0.0),
+        ((90.0, 120.0), 0.0, 0.0),
+        ((60.0, 90.0), 60.0, 0.0),
+        ((60.0, 90.0), 5.0, 30.0),
+    ],
+)
+def test_heads_pixels_are_the_grid_method_count(wx, wy, wz):
+    # The requirement: fraction of heads pixels == grid probability on the same grid
+    # (estimate(method="grid") counts bands along T; the map evaluates every pixel).
+    from coinflight.distributions import Uniform
+    from coinflight.ensemble import TossDistribution
+    from coinflight.probability import estimate
+
+    n = 333
+    dist = TossDistribution(Uniform(*wx), wy, wz, Uniform(0.6, 0.9), coin=QUARTER)
+    grid = estimate(dist, "grid", n=n, threads=1)
+    basin = basin_map(QUARTER, (0.6, 0.9), wx, omega_y=wy, omega_z=wz, resolution=(n, n))
+    assert int(np.sum(basin.face == HEADS)) == grid.counts[1]
+    assert basin.heads_fraction == grid.p_heads
+
+
 def test_midpoints_are_cell_centres():
     np.testing.assert_allclose(midpoints(0.0, 1.0, 4), [0.125, 0.375, 0.625, 0.875])
 
@@ -145,11 +169,12 @@ def test_cli_psi(tmp_path):
     ("extra", "message"),
     [
         (["--omega-x", "90"], "--omega-x must be a range LO:HI"),
+        (["--omega-x", "90:x"], "--omega-x '90:x'"),
         (["--resolution", "10by10"], "--resolution must be N or NTxNW"),
         (["--psi", "60", "--omega-z", "4"], "with --psi the spin is set by --precession-rate"),
         (["--precession-rate", "1:2"], "--precession-rate goes with --psi"),
         (["--psi", "190"], "--psi must be between 0 and 180"),
-        (["--flight-time", "0.9:0.6"], "low < high"),
+        (["--flight-time", "0.9:0.6"], "range 0.9:0.6 is reversed"),
     ],
 )
 def test_cli_bad_input(tmp_path, extra, message):

@@ -59,16 +59,21 @@ def parse_numbers(text: str, name: str) -> list[float]:
     return values
 
 
-def parse_range(text: str, name: str) -> tuple[float, float]:
-    """ "LO:HI" as two numbers, or a ValueError naming the option and the text."""
-    parts = text.split(":")
-    try:
-        if len(parts) != 2:
-            raise ValueError
-        lo, hi = float(parts[0]), float(parts[1])
-    except ValueError:
-        raise ValueError(f"{name} must be a range LO:HI such as 60:90; got {text!r}") from None
-    return lo, hi
+def parse_range(text: str, name: str, unit: str = "") -> tuple[float, float]:
+    """ "LO:HI" as two numbers (the range syntax of :func:`parse_distribution`).
+
+    A map needs a box, so a fixed value or a normal distribution is refused with a ValueError
+    naming the option and the text.
+    """
+    from coinflight.distributions import Uniform, parse_distribution
+
+    dist = parse_distribution(text, name, unit)
+    if not isinstance(dist, Uniform):
+        raise ValueError(
+            f"{name} must be a range LO:HI such as 60:90 for a map; got {text!r} "
+            f"({dist.describe(unit)})"
+        )
+    return dist.low, dist.high
 
 
 def parse_resolution(text: str) -> tuple[int, int]:
@@ -236,7 +241,7 @@ def plot_basin(
     if psi is None:
         if precession_rate is not None:
             raise ValueError("--precession-rate goes with --psi; use --omega-x without --psi")
-        spin = parse_range(omega_x or "60:90", "--omega-x")
+        spin = parse_range(omega_x or "60:90", "--omega-x", "rad/s")
         psi_rad = None
     else:
         if omega_x is not None or omega_y != 0.0 or omega_z != 0.0:
@@ -246,11 +251,11 @@ def plot_basin(
             )
         if not 0.0 < psi < 180.0:
             raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
-        spin = parse_range(precession_rate or "60:90", "--precession-rate")
+        spin = parse_range(precession_rate or "60:90", "--precession-rate", "rad/s")
         psi_rad = math.radians(psi)
     basin = basin_map(
         the_coin,
-        parse_range(flight_time, "--flight-time"),
+        parse_range(flight_time, "--flight-time", "s"),
         spin,
         omega_y=omega_y,
         omega_z=omega_z,

@@ -71,7 +71,7 @@ def caught_faces(
 
 def midpoints(low: float, high: float, n: int) -> FloatArray:
     """Centres of n equal cells of [low, high]: low + (k + ½)(high − low)/n, k = 0…n−1."""
-    return np.asarray(low + (np.arange(n) + 0.5) * ((high - low) / n), dtype=np.float64)
+    return np.asarray(low + (high - low) * ((np.arange(n) + 0.5) / n), dtype=np.float64)
 
 
 @dataclass(frozen=True, eq=False)
