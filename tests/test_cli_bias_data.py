@@ -67,7 +67,7 @@ def test_bias_psi_distribution():
     [
         (["--psi", "200"], "psi must be between 0 and 180 (in degrees), got 200.0"),
         (["--psi", "-5"], "psi must be between 0 and 180 (in degrees), got -5.0"),
-        ([], "give exactly one of --psi DEG and --psi-dist SPEC"),
+        ([], "give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME"),
         (["--psi", "80", "--psi-dist", "normal:80,2"], "give exactly one of --psi"),
         (["--psi-dist", "normal:170,5"], "must lie within [0, 180] degrees"),
         (["--psi-dist", "normal:80"], "--psi-dist 'normal:80'"),

@@ -20,6 +20,7 @@ from coinflight.cli.options import (
 
 if TYPE_CHECKING:
     from coinflight.bias import QuantileDistribution
+    from coinflight.coin import Coin
 
 PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
@@ -64,10 +65,22 @@ Seed = Annotated[
 ]
 
 
+PresetName = Annotated[
+    str | None,
+    typer.Option(
+        "--preset",
+        metavar="NAME",
+        rich_help_panel=PSI_PANEL,
+        help="A named distribution of tosses: human (a person's natural toss: v0 ≈ 2.4 m/s, "
+        "38 rev/s, ψ near but below 90°; DHM 2007 via Keller). See coinflight.presets.",
+    ),
+]
+
+
 def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDistribution:
     """The fixed ψ (degrees) or the ψ distribution the options ask for (exactly one)."""
     if (psi is None) == (psi_dist is None):
-        raise ValueError("give exactly one of --psi DEG and --psi-dist SPEC")
+        raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
     if psi is not None:
         return psi
     from coinflight.distributions import parse_distribution
@@ -79,6 +92,7 @@ def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDist
 def bias(
     psi: Psi = None,
     psi_dist: PsiDist = None,
+    preset: PresetName = None,
     monte_carlo: MonteCarlo = None,
     seed: Seed = 0,
     coin: CoinName = None,
@@ -93,6 +107,13 @@ def bias(
     """
     from coinflight import bias as b
 
+    if preset is not None:
+        if psi is not None or psi_dist is not None:
+            raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
+        _bias_preset(
+            preset, monte_carlo, seed, resolve_coin(coin, radius, thickness, mass), json_output
+        )
+        return
     spec = resolve_psi(psi, psi_dist)
     if isinstance(spec, float):
         p = float(b.same_side_probability(spec, degrees=True))
@@ -142,6 +163,63 @@ def bias(
 
 
 SOURCE = "Diaconis, Holmes & Montgomery 2007"
+
+
+def _bias_preset(
+    name: str, monte_carlo: int | None, seed: int, coin: Coin, json_output: bool
+) -> None:
+    """``coinflight bias --preset NAME``: the closed-form average over the preset's spins, and
+    optionally a Monte Carlo run of the full flight through :func:`coinflight.probability.
+    estimate` (started heads up, so P(heads) is the same-side probability)."""
+    import numpy as np
+
+    from coinflight import bias as b
+    from coinflight.core.torque_free import cone_angle
+    from coinflight.presets import preset
+
+    dist = preset(name, coin=coin)
+    p = b.expected_same_side(dist)
+    # Median and 95 % range of ψ over the spins, for the report.
+    u = np.array([0.025, 0.5, 0.975])
+    omega = np.stack([dist.omega_x.ppf(0.5 + 0 * u), 0 * u, dist.omega_z.ppf(u)], axis=-1)
+    psi_q = np.degrees(cone_angle(omega, *dist.moments))[::-1]
+    result = None
+    if monte_carlo is not None:
+        from coinflight.probability import estimate
+
+        result = estimate(dist, "monte-carlo", monte_carlo, seed)
+    if json_output:
+        payload: dict[str, Any] = {
+            "p_same_side": p,
+            "preset": name,
+            "psi_model": "preset",
+            "psi_deg": float(psi_q[1]),
+            "psi_range95_deg": [float(psi_q[0]), float(psi_q[2])],
+            "distribution": dist.describe(),
+            "source": SOURCE,
+        }
+        if result is not None:
+            payload["monte_carlo"] = {
+                "p_same_side": result.p_same_side,
+                "stderr": result.stderr,
+                "n": result.n,
+                "seed": result.seed,
+                "z": (result.p_same_side - p) / result.stderr if result.stderr else 0.0,
+            }
+        print_json(payload)
+        return
+    typer.echo(f"preset {name}: {dist.describe()}".replace("\n", "; "))
+    typer.echo(
+        f"ψ median {psi_q[1]:.1f}° (95 % of spins {psi_q[0]:.1f}°-{psi_q[2]:.1f}° at the mean "
+        f"ωx): P(same side) = {p:.6f}  (closed form averaged over the spins, {SOURCE})"
+    )
+    if result is not None and result.stderr is not None:
+        typer.echo(
+            f"Monte Carlo (coinflight.probability, full flight): {result.p_same_side:.6f} ± "
+            f"{result.stderr:.6f} (s.e.) over {result.n:,} tosses, "
+            f"{(result.p_same_side - p) / result.stderr:+.2f} s.e. from the closed form; "
+            f"seed {result.seed}"
+        )
 
 
 def _z(sim: Any, p: float) -> float:
