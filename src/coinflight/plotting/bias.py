@@ -83,5 +83,5 @@ def bias_figure(
         "Same-side bias of a precessing coin (Diaconis, Holmes & Montgomery 2007)",
         fontsize="medium",
     )
-    ax.legend(loc="center", fontsize="small")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.9), fontsize="x-small")
     return fig
