@@ -226,82 +226,91 @@ def count_same_side_time_bands(
     wx: np.ndarray,
     wy: np.ndarray,
     wz: np.ndarray,
-    weights: np.ndarray,
-    t_low: float,
-    t_step: float,
-    n_t: int,
+    t_nodes: np.ndarray,
     i1: float,
     i3: float,
 ) -> int:
     """Exact count of same-side configurations on a grid, with no loop over the time nodes.
 
-    For each spin (wx[j], wy[j], wz[j]) (weighted by ``weights[j]`` configurations), the time
-    nodes are t_i = t_low + (i + ½) t_step, i = 0 … n_t − 1. The coin shows its starting face
-    iff cos(ωp t) > −cot²ψ (Diaconis, Holmes & Montgomery 2007; Stefan & Cheche eq 14 when
-    ψ = 90°), i.e. for ωp t in bands (2πm − a, 2πm + a), a = arccos(−cot²ψ); the nodes inside
-    each band are counted with floor/ceil, O(bands) per spin instead of O(n_t). Nodes within
-    rounding distance of a band edge are settled by evaluating :func:`normal_alignment`, so
-    the count equals the brute-force count exactly.
+    Parameters
+    ----------
+    wx, wy, wz : ndarray, shape (m,)
+        Spin nodes, rad/s (one configuration of spins per entry).
+    t_nodes : ndarray, shape (n_t,)
+        Increasing flight-time nodes, s.
+    i1, i3 : float
+        Principal moments, kg m².
+
+    Notes
+    -----
+    For each spin the coin shows its starting face iff cos(ωp t) > −cot²ψ (Diaconis, Holmes &
+    Montgomery 2007; Stefan & Cheche eq 14 when ψ = 90°), i.e. for ωp t in bands
+    (2πm − a, 2πm + a), a = arccos(−cot²ψ). The nodes inside each band are found by binary
+    search, O(bands · log n_t) per spin instead of O(n_t). Nodes within rounding distance of a
+    band edge are settled by evaluating :func:`normal_alignment` itself, so that the count
+    equals the brute-force count exactly.
     """
     total = 0
+    n_t = t_nodes.shape[0]
+    t_first = t_nodes[0]
+    t_last = t_nodes[n_t - 1]
     for j in range(wx.shape[0]):
         perp2 = wx[j] * wx[j] + wy[j] * wy[j]
         axial = i3 / i1 * wz[j]
         ax2 = axial * axial
         if perp2 == 0.0 or ax2 >= perp2:
-            # ψ ≤ 45°: the normal never reaches the horizontal (cos²ψ ≥ sin²ψ); equality only
-            # touches it. Settle by brute force over the nodes (rare, and only for wobbles).
-            c = 0
+            # ψ ≤ 45°: the normal never passes the horizontal (only touches it when ψ = 45°);
+            # settled node by node (rare: wobbling coins only).
             for i in range(n_t):
-                t = t_low + (i + 0.5) * t_step
-                c += normal_alignment(wx[j], wy[j], wz[j], t, i1, i3) > 0.0
-            total += c * weights[j]
+                total += normal_alignment(wx[j], wy[j], wz[j], t_nodes[i], i1, i3) > 0.0
             continue
         wp = np.sqrt(perp2 + ax2)
         a = np.arccos(-ax2 / perp2)
-        t_high = t_low + n_t * t_step
-        m_first = int(np.floor((wp * t_low - a) / (2.0 * np.pi)))
-        m_last = int(np.ceil((wp * t_high + a) / (2.0 * np.pi)))
-        c = 0
+        m_first = int(np.floor((wp * t_first - a) / (2.0 * np.pi)))
+        m_last = int(np.ceil((wp * t_last + a) / (2.0 * np.pi)))
         for m in range(m_first, m_last + 1):
             lo = (2.0 * np.pi * m - a) / wp
             hi = (2.0 * np.pi * m + a) / wp
-            i_lo = _first_node_at_or_above(lo, t_low, t_step, n_t)
-            i_hi = _first_node_at_or_above(hi, t_low, t_step, n_t)
-            # Settle nodes at a band edge by the predicate itself.
-            tol = 1e-9 * (abs(lo) + t_step)
-            if i_lo < n_t and abs(t_low + (i_lo + 0.5) * t_step - lo) <= tol:
-                t = t_low + (i_lo + 0.5) * t_step
-                if not normal_alignment(wx[j], wy[j], wz[j], t, i1, i3) > 0.0:
-                    i_lo += 1
-            if i_lo > 0 and abs(t_low + (i_lo - 0.5) * t_step - lo) <= tol:
-                t = t_low + (i_lo - 0.5) * t_step
-                if normal_alignment(wx[j], wy[j], wz[j], t, i1, i3) > 0.0:
-                    i_lo -= 1
-            tol = 1e-9 * (abs(hi) + t_step)
-            if i_hi < n_t and abs(t_low + (i_hi + 0.5) * t_step - hi) <= tol:
-                t = t_low + (i_hi + 0.5) * t_step
-                if normal_alignment(wx[j], wy[j], wz[j], t, i1, i3) > 0.0:
-                    i_hi += 1
-            if i_hi > 0 and abs(t_low + (i_hi - 0.5) * t_step - hi) <= tol:
-                t = t_low + (i_hi - 0.5) * t_step
-                if not normal_alignment(wx[j], wy[j], wz[j], t, i1, i3) > 0.0:
-                    i_hi -= 1
+            i_lo = _settle(
+                np.searchsorted(t_nodes, lo), lo, True, wx[j], wy[j], wz[j], t_nodes, i1, i3
+            )
+            i_hi = _settle(
+                np.searchsorted(t_nodes, hi), hi, False, wx[j], wy[j], wz[j], t_nodes, i1, i3
+            )
             if i_hi > i_lo:
-                c += i_hi - i_lo
-        total += c * weights[j]
+                total += i_hi - i_lo
     return total
 
 
 @numba.njit(inline="always", cache=True, error_model="numpy")
-def _first_node_at_or_above(x: float, t_low: float, t_step: float, n_t: int) -> int:
-    """Smallest i in [0, n_t] with t_low + (i + ½) t_step ≥ x (n_t if none)."""
-    z = np.ceil((x - t_low) / t_step - 0.5)
-    if z < 0.0:
-        return 0
-    if z > n_t:
-        return n_t
-    return int(z)
+def _settle(
+    i: int,
+    edge: float,
+    entering: bool,
+    wx: float,
+    wy: float,
+    wz: float,
+    t_nodes: np.ndarray,
+    i1: float,
+    i3: float,
+) -> int:
+    """First node index on the far side of a band edge, as the predicate itself decides.
+
+    ``i`` is the first node with t ≥ ``edge``. Nodes within 1e-9 (relative) of the edge are
+    tested with :func:`normal_alignment`: at an entering edge the first node inside the band is
+    wanted, at a leaving edge the first node outside.
+    """
+    n_t = t_nodes.shape[0]
+    tol = 1e-9 * abs(edge)
+    if i < n_t and abs(t_nodes[i] - edge) <= tol:
+        inside = normal_alignment(wx, wy, wz, t_nodes[i], i1, i3) > 0.0
+        if inside != entering:
+            i += 1
+    if i > 0 and abs(t_nodes[i - 1] - edge) <= tol:
+        inside = normal_alignment(wx, wy, wz, t_nodes[i - 1], i1, i3) > 0.0
+        if inside == entering:
+            i -= 1
+    return i
 
 
 def warm_up() -> None:
@@ -313,4 +322,4 @@ def warm_up() -> None:
     z = np.zeros(2)
     count_same_side(z, z, z, z + 1.0, 1.0, 1.0)
     count_same_side_affine(np.zeros((1, 2)), np.array([0, -1, -1, -1]), off, sc, 1.0, 1.0)
-    count_same_side_time_bands(z, z, z, np.ones(2, dtype=np.int64), 0.5, 0.1, 3, 1.0, 1.0)
+    count_same_side_time_bands(z, z, z, np.array([0.5, 0.6]), 1.0, 1.0)

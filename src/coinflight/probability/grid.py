@@ -4,7 +4,7 @@ The configurations are the midpoints of N equal-probability cells per ranged par
 u_i = (i + ½)/N mapped through the parameter's ppf (for a uniform range: the paper's midpoints).
 The result is an exact count for that grid, not a sample.
 
-Speed: when the flight time is a uniform range, the time nodes are never visited one by one.
+Speed: when the flight time is ranged, the time nodes are never visited one by one.
 For each spin node the starting face shows iff ωp T falls in bands (2πm − a, 2πm + a)
 (:func:`coinflight.core.sampling.count_same_side_time_bands`), so the nodes in each band are
 counted with floor/ceil: O(N^(k−1) × bands) work instead of N^k. Otherwise, every
@@ -18,7 +18,6 @@ from typing import Any
 
 import numpy as np
 
-from coinflight.distributions import Uniform
 from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import (
     Executor,
@@ -53,28 +52,21 @@ def _band_task(args: tuple[Any, ...]) -> int:
             spins[name] = np.ascontiguousarray(spin_nodes[k][idx[k]])
         else:
             spins[name] = np.full(last - first, getattr(dist, name).mean)
-    t: Uniform = dist.flight_time
     i1, i3 = dist.moments
+    t_nodes = np.ascontiguousarray(dist.flight_time.ppf(midpoints(n)), dtype=float)
     return int(
         sampling.count_same_side_time_bands(
-            spins["omega_x"],
-            spins["omega_y"],
-            spins["omega_z"],
-            np.ones(last - first, dtype=np.int64),
-            t.low,
-            (t.high - t.low) / n,
-            n,
-            i1,
-            i3,
+            spins["omega_x"], spins["omega_y"], spins["omega_z"], t_nodes, i1, i3
         )
     )
 
 
 def _brute_task(args: tuple[Any, ...]) -> np.ndarray:
     model, dist, k, n, first, last = args
+    if k == 0:
+        return model.count(dist, np.zeros((0, last - first)))
     idx = np.unravel_index(np.arange(first, last), (n,) * k)
-    u = np.stack([(i + 0.5) / n for i in idx]) if k else np.zeros((0, last - first))
-    return model.count(dist, u)
+    return model.count(dist, np.stack([(i + 0.5) / n for i in idx]))
 
 
 def estimate(
@@ -106,11 +98,7 @@ def estimate(
     k = len(ranged)
     total = n**k
     spin_names = tuple(name for name in ranged if name != "flight_time")
-    fast = (
-        isinstance(model, HandCatch)
-        and "flight_time" in ranged
-        and isinstance(dist.flight_time, Uniform)
-    )
+    fast = isinstance(model, HandCatch) and "flight_time" in ranged
     if fast:
         spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]
         combos = n ** len(spin_names)
@@ -128,7 +116,7 @@ def estimate(
         if total > MAX_BRUTE_FORCE:
             raise ValueError(
                 f"a grid of {n}^{k} = {total:.3g} configurations is too large to evaluate one by "
-                "one (fast counting needs a uniform flight-time range); use a smaller n, or "
+                "one (fast counting needs a ranged flight time); use a smaller n, or "
                 "--method monte-carlo or qmc"
             )
         tasks2 = [

@@ -1,0 +1,133 @@
+"""Distributions of initial conditions and the TossDistribution built from them."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from coinflight import Coin
+from coinflight.distributions import Fixed, Normal, Uniform, as_distribution, parse_distribution
+from coinflight.ensemble import PARAMETERS, TossDistribution
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("10", Fixed(10.0)),
+        ("-3.5", Fixed(-3.5)),
+        ("60:90", Uniform(60.0, 90.0)),
+        (" -10:1e1 ", Uniform(-10.0, 10.0)),
+        ("normal:3.5,0.2", Normal(3.5, 0.2)),
+        ("NORMAL:0,1", Normal(0.0, 1.0)),
+    ],
+)
+def test_parse(text, expected):
+    assert parse_distribution(text, "--omega-x", "rad/s") == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("90:60", "reversed"),
+        ("5:5", "empty"),
+        ("normal:1,0", "standard deviation"),
+        ("normal:1,-2", "standard deviation"),
+        ("normal:1", "normal:MEAN,SD"),
+        ("a:b", "'a' is not a number"),
+        ("1:2:3", "LOW:HIGH"),
+        ("", "not a number"),
+        ("nan", "not finite"),
+        ("1:inf", "not finite"),
+    ],
+)
+def test_parse_errors_name_option_and_text(text, words):
+    with pytest.raises(ValueError) as info:
+        parse_distribution(text, "--omega-x", "rad/s")
+    message = str(info.value)
+    assert "--omega-x" in message
+    assert repr(text.strip()) in message
+    assert words in message
+
+
+def test_constructor_errors():
+    with pytest.raises(ValueError, match="reversed"):
+        Uniform(2.0, 1.0)
+    with pytest.raises(ValueError, match="standard deviation"):
+        Normal(1.0, 0.0)
+    with pytest.raises(TypeError):
+        as_distribution("60:90")  # type: ignore[arg-type]
+
+
+@settings(deadline=None)  # the first call imports SciPy
+@given(
+    st.floats(-100.0, 100.0),
+    st.floats(0.1, 100.0),
+    st.floats(1e-6, 1 - 1e-6),
+)
+def test_ppf_inverts_cdf(low, width, u):
+    # Round-off of x − low relative to the width: ≤ 1e-16 × 200 / 0.1 ≈ 2e-13.
+    for dist in (Uniform(low, low + width), Normal(low, width)):
+        x = dist.ppf(u)
+        assert dist.cdf(x) == pytest.approx(u, rel=1e-9, abs=1e-11)
+
+
+def test_protocol_values():
+    u = Uniform(60.0, 90.0)
+    assert (u.mean, u.bounds, u.affine, u.is_fixed) == (75.0, (60.0, 90.0), (60.0, 30.0), False)
+    f = Fixed(10.0)
+    assert (f.mean, f.bounds, f.affine, f.is_fixed) == (10.0, (10.0, 10.0), (10.0, 0.0), True)
+    n = Normal(3.0, 0.5)
+    assert n.affine is None and n.bounds == (-np.inf, np.inf) and not n.is_fixed
+    # Midpoints of equal-probability cells: for a uniform range, the paper's midpoints.
+    np.testing.assert_allclose(u.ppf([0.25, 0.75]), [67.5, 82.5])
+    assert n.ppf(0.5) == pytest.approx(3.0)
+    assert u.scaled(2.0) == Uniform(120.0, 180.0)
+    assert n.scaled(2.0) == Normal(6.0, 1.0)
+
+
+def test_sampling_respects_the_distribution():
+    rng = np.random.default_rng(0)
+    x = Uniform(1.0, 2.0).sample(rng, 10_000)
+    assert x.min() >= 1.0 and x.max() <= 2.0
+    # Mean of 10⁴ draws: standard error 0.5 / 100; 5 standard errors.
+    assert abs(Normal(3.0, 0.5).sample(rng, 10_000).mean() - 3.0) < 5 * 0.005
+
+
+def test_toss_distribution():
+    d = TossDistribution(Uniform(60, 90), 0, 10.0, Uniform(0.6, 0.9), start="tails")
+    assert d.ranged == ("omega_x", "flight_time")
+    assert d.omega_y == Fixed(0.0) and d.omega_z == Fixed(10.0)
+    assert d.start_sign == -1.0
+    assert d.coin == Coin.preset("us-quarter")
+    wx, _wy, wz, t = d.values(np.array([[0.5, 0.0], [0.5, 1.0]]))
+    np.testing.assert_allclose(wx, [75.0, 60.0])
+    np.testing.assert_allclose(t, [0.75, 0.9])
+    np.testing.assert_allclose(wz, [10.0, 10.0])
+    assert list(d.parameters) == list(PARAMETERS)
+    with pytest.raises(ValueError, match="shape"):
+        d.values(np.zeros((3, 2)))
+
+
+def test_from_launch_speed_uses_eq_11():
+    # Stefan & Cheche eq 11: T = 2 v0 / g.
+    d = TossDistribution.from_launch_speed(80.0, 0, 0, Uniform(3.0, 5.0), g=10.0)
+    assert isinstance(d.flight_time, Uniform)
+    assert (d.flight_time.low, d.flight_time.high) == pytest.approx((0.6, 1.0), rel=1e-15)
+    d = TossDistribution.from_launch_speed(80.0, 0, 0, Normal(4.0, 0.1), g=10.0)
+    assert isinstance(d.flight_time, Normal)
+    assert (d.flight_time.mean, d.flight_time.sd) == pytest.approx((0.8, 0.02), rel=1e-15)
+
+
+@pytest.mark.parametrize("flight_time", [Uniform(-0.1, 0.5), Fixed(0.0), Normal(0.5, 0.1)], ids=str)
+def test_flight_time_must_be_positive(flight_time):
+    with pytest.raises(ValueError, match="flight time"):
+        TossDistribution(80.0, 0, 0, flight_time)
+
+
+def test_bad_start_and_g():
+    with pytest.raises(ValueError, match="start"):
+        TossDistribution(80.0, 0, 0, 0.7, start="edge")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="g"):
+        TossDistribution(80.0, 0, 0, 0.7, g=-1.0)

@@ -1,0 +1,267 @@
+"""P(heads) over ranges of tosses: exact, grid (method A), Monte Carlo (B) and QMC agree.
+
+Reference values: the founding paper prints no probabilities for its Figs 2a-b and 3a-b, only
+that both methods "tend to the unbiased value of 50 %". The paper-reproduction tests therefore
+compare every method with coinflight's exact band integral and check |p − ½| < 0.005 (the
+estimates round to 50 % at the whole-percent resolution the figures are read at).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from coinflight.core import bands, sampling
+from coinflight.distributions import Fixed, Normal, Uniform
+from coinflight.ensemble import TossDistribution
+from coinflight.probability import PAPER_B_CELLS, ProbabilityResult, estimate, wilson_interval
+from coinflight.probability.outcome import HAND_CATCH, OutcomeModel
+
+T_RANGE = Uniform(0.6, 0.9)  # Stefan & Cheche §3: T ∈ [0.6, 0.9] s in Figs 2-3
+PAPER = {
+    # Stefan & Cheche §3 / REFERENCES §1
+    "fig2a": TossDistribution(Uniform(60, 90), 0, 0, T_RANGE),
+    "fig2b": TossDistribution(Uniform(90, 120), 0, 0, T_RANGE),
+    "fig3a": TossDistribution(Uniform(60, 90), 10, 0, T_RANGE),
+    "fig3b": TossDistribution(Uniform(60, 90), 60, 0, T_RANGE),
+}
+OTHER = {
+    "negative-spins": TossDistribution(Uniform(-30, 90), 10, 0, T_RANGE),
+    "two-spins": TossDistribution(Uniform(60, 90), Uniform(-10, 20), 0, T_RANGE),
+    "precessing": TossDistribution(Uniform(60, 90), 10, 40, T_RANGE),
+    "normal-time": TossDistribution(Uniform(60, 90), 0, 0, Normal(0.75, 0.05)),
+    "tails-up": TossDistribution(Uniform(30, 50), 0, 0, Uniform(0.3, 0.4), start="tails"),
+}
+BOXES = {**PAPER, **OTHER}
+
+
+class Generic(OutcomeModel):
+    """The hand catch through the generic code path (no fast paths): a brute-force reference."""
+
+    def count(self, dist, u):
+        return HAND_CATCH.count(dist, u)
+
+
+@pytest.mark.parametrize("name", list(PAPER))
+def test_paper_figures_approach_one_half(name):
+    dist = PAPER[name]
+    exact = estimate(dist, "exact")
+    assert exact.details["how"] == "closed form"
+    assert abs(exact.p_heads - 0.5) < 0.005
+    # Method A at the paper's 5000 × 5000; its count differs from the integral by O(1e-5).
+    a = estimate(dist, "grid", n=5000)
+    assert a.samples == 5000**2
+    assert abs(a.p_heads - exact.p_heads) < 1e-4
+    # Method B: 100 cells per parameter, 2²⁰ events: within 4 standard errors of that grid.
+    coarse = estimate(dist, "grid", n=PAPER_B_CELLS)
+    b = estimate(dist, "monte-carlo", n=1 << 20, seed=2, grid_cells=PAPER_B_CELLS)
+    assert abs(b.p_heads - coarse.p_heads) < 4 * b.stderr
+    assert abs(b.p_heads - 0.5) < 0.005
+
+
+@pytest.mark.parametrize("name", [*PAPER, "negative-spins", "tails-up"])
+def test_exact_agrees_with_fine_grid(name):
+    # Grid error measured at ~3e-7 for N = 20000 on these boxes; the issue asks for 1e-6.
+    dist = BOXES[name]
+    assert estimate(dist, "grid", n=20000).p_heads == pytest.approx(
+        estimate(dist, "exact").p_heads, abs=1e-6
+    )
+
+
+@pytest.mark.parametrize("name", list(BOXES))
+def test_grid_converges_to_exact(name):
+    dist = BOXES[name]
+    exact = estimate(dist, "exact").p_heads
+    # Band counting needs a uniform flight time; otherwise every configuration is evaluated.
+    big = 400 if len(dist.ranged) > 2 else 8000
+    errors = [abs(estimate(dist, "grid", n=n).p_heads - exact) for n in (big // 20, big)]
+    assert errors[1] < 2e-5 if len(dist.ranged) <= 2 else errors[1] < 5e-4
+    assert errors[1] < errors[0] or errors[0] < 1e-6
+
+
+@pytest.mark.parametrize("name", list(BOXES))
+def test_monte_carlo_and_qmc_agree_with_exact(name):
+    dist = BOXES[name]
+    exact = estimate(dist, "exact")
+    for result in (
+        estimate(dist, "monte-carlo", n=1 << 20, seed=11),
+        estimate(dist, "qmc", n=16 << 12, seed=11),
+    ):
+        assert result.stderr is not None and result.stderr > 0
+        assert abs(result.p_heads - exact.p_heads) < 4 * result.stderr, result.method
+        lo, hi = result.ci95
+        assert lo < result.p_heads < hi
+
+
+def test_grid_band_counting_equals_brute_force():
+    cases = [
+        *BOXES.values(),
+        TossDistribution(Uniform(5, 20), 0, Uniform(-400, 400), Uniform(0.3, 0.9), start="tails"),
+        TossDistribution(0.0, 0.0, 30.0, Uniform(0.3, 0.9)),  # no transverse spin
+    ]
+    for dist in cases:
+        for n in (7, 60):
+            fast = estimate(dist, "grid", n=n)
+            slow = estimate(dist, "grid", n=n, model=Generic())
+            assert fast.counts == slow.counts
+            assert fast.details["how"] == "band counting along the flight time"
+            assert slow.details["how"] == "every configuration evaluated"
+
+
+def test_exact_precession_matches_diaconis_formula():
+    # REFERENCES §2: over many turns, P(same side) = 1/2 + arcsin(cot²ψ)/π; ψ = 60° → 0.608.
+    coin = TossDistribution(0, 0, 0, 1.0).coin
+    i1, i3 = coin.moments
+    w_perp = 100.0
+    wz = i1 * w_perp / (i3 * math.tan(math.radians(60.0)))
+    dist = TossDistribution(w_perp, 0, wz, Uniform(1.0, 50.0))
+    p = estimate(dist, "exact").p_same_side
+    expected = 0.5 + math.asin(1.0 / math.tan(math.radians(60.0)) ** 2) / math.pi
+    assert p == pytest.approx(expected, abs=1e-3)  # averaging over ~900 turns: error < 1e-3
+    assert round(p, 3) == 0.608
+
+
+def test_small_psi_is_detected_as_biased():
+    # The negative test: spin mostly about the normal (ψ < 45°): the coin only wobbles.
+    dist = TossDistribution(Uniform(5, 10), 0, Uniform(300, 400), Uniform(0.5, 0.7))
+    for result in (
+        estimate(dist, "monte-carlo", n=100_000, seed=5),
+        estimate(dist, "qmc", n=16 << 10, seed=5),
+        estimate(dist, "grid", n=200),
+    ):
+        assert result.p_same_side == 1.0
+    mc = estimate(dist, "monte-carlo", n=100_000, seed=5)
+    assert abs(mc.p_heads - 0.5) > 4 * max(mc.stderr, 1 / math.sqrt(mc.n))
+    assert mc.ci95[0] > 0.5
+    # And a box partly in the wobble regime: clearly above ½, by every method.
+    mixed = TossDistribution(Uniform(20, 80), 0, Uniform(100, 200), T_RANGE)
+    mc = estimate(mixed, "monte-carlo", n=1 << 18, seed=5)
+    assert mc.p_same_side - 0.5 > 10 * mc.stderr
+
+
+def test_seed_reproducible_whatever_chunks_and_threads():
+    dist = TossDistribution(Uniform(60, 90), Uniform(-10, 10), Uniform(-5, 5), T_RANGE)
+    n = 3 * (1 << 20) + 12345
+    results = [
+        estimate(dist, "monte-carlo", n=n, seed=42, threads=1, chunk_size=1 << 30),
+        estimate(dist, "monte-carlo", n=n, seed=42, threads=2, chunk_size=1),
+        estimate(dist, "monte-carlo", n=n, seed=42, executor=_MapExecutor(), chunk_size=2 << 20),
+    ]
+    assert len({r.counts for r in results}) == 1
+    assert results[0].seed == 42
+    other = estimate(dist, "monte-carlo", n=n, seed=43)
+    assert other.counts != results[0].counts
+    q = [estimate(dist, "qmc", n=16 << 10, seed=3, threads=t) for t in (1, 2)]
+    assert q[0].counts == q[1].counts
+    q.append(estimate(dist, "qmc", n=16 << 10, seed=3, executor=_MapExecutor()))
+    assert q[2].counts == q[0].counts
+
+
+def test_generic_path_draws_the_same_tosses():
+    # The fast kernel and the generic outcome-model path use the same uniforms.
+    dist = TossDistribution(Uniform(60, 90), 10, 0, T_RANGE)
+    fast = estimate(dist, "monte-carlo", n=50_000, seed=9)
+    slow = estimate(dist, "monte-carlo", n=50_000, seed=9, model=Generic())
+    assert fast.counts == slow.counts
+    b_fast = estimate(dist, "monte-carlo", n=50_000, seed=9, grid_cells=100)
+    b_slow = estimate(dist, "monte-carlo", n=50_000, seed=9, grid_cells=100, model=Generic())
+    assert b_fast.counts == b_slow.counts
+
+
+def test_progress_reports_all_work():
+    dist = PAPER["fig2a"]
+    done = []
+    estimate(dist, "monte-carlo", n=(1 << 20) + 7, seed=1, chunk_size=1, progress=done.append)
+    assert sum(done) == (1 << 20) + 7 and len(done) == 2
+    done.clear()
+    estimate(dist, "grid", n=300, progress=done.append)
+    assert sum(done) == 300**2
+
+
+class _MapExecutor:
+    """The smallest executor: anything with ``map``."""
+
+    def map(self, fn, *iterables):
+        return map(fn, *iterables)
+
+
+def test_result_is_consistent():
+    for method, n in (("exact", None), ("grid", 50), ("monte-carlo", 1000), ("qmc", 16 << 4)):
+        r = estimate(PAPER["fig3a"], method, n=n, seed=1)
+        assert isinstance(r, ProbabilityResult)
+        assert r.p_heads + r.p_tails + r.p_edge == pytest.approx(1.0, abs=1e-15)
+        assert r.p_same_side == r.p_heads  # started heads up
+        assert r.method == method and r.n == n
+        d = r.to_dict()
+        assert {"p_heads", "p_tails", "method", "n", "stderr", "ci95"} <= set(d)
+
+
+def test_wilson_interval():
+    # Wilson (1927): 0 of 10 → [0, z²/(n + z²)] = [0, 0.2775]; 5 of 10 → 0.5 ± 0.2634.
+    assert wilson_interval(0, 10) == pytest.approx((0.0, 0.27754), abs=1e-5)
+    lo, hi = wilson_interval(5, 10)
+    assert (lo, hi) == pytest.approx((0.23659, 0.76341), abs=1e-5)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "words"),
+    [
+        ({"method": "magic"}, ValueError, "unknown method 'magic'"),
+        ({"method": "grid", "n": 0}, ValueError, "n must be at least 1"),
+        ({"method": "monte-carlo", "n": -5}, ValueError, "n must be at least 1"),
+        ({"method": "qmc", "n": 1000}, ValueError, "power of two"),
+        ({"method": "exact", "n": 10}, ValueError, "takes no n"),
+        ({"method": "grid", "n": 2.5}, TypeError, "n must be an integer"),
+        ({"method": "grid", "grid_cells": 5}, TypeError, "no option grid_cells"),
+        ({"method": "monte-carlo", "seed": -1}, ValueError, "seed"),
+    ],
+)
+def test_bad_requests(kwargs, error, words):
+    with pytest.raises(error, match=words):
+        estimate(PAPER["fig2a"], **kwargs)
+
+
+@pytest.mark.parametrize(
+    ("dist", "words"),
+    [
+        (TossDistribution(Uniform(60, 90), 0, Uniform(1, 2), 0.7), "fixed flight time"),
+        (
+            TossDistribution(Uniform(60, 90), Uniform(0, 1), Uniform(1, 2), T_RANGE),
+            "at most two",
+        ),
+    ],
+)
+def test_exact_refuses_what_it_cannot_integrate(dist, words):
+    with pytest.raises(ValueError, match=words) as info:
+        estimate(dist, "exact")
+    assert "grid, monte-carlo or qmc" in str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("t", "face"),
+    # Stefan & Cheche Figs 3c-f (ωx0 = 90, ωy0 = 30 rad/s): faces by their eq 14, as in
+    # tests/test_paper_rotations.py.
+    [(0.6, "heads"), (0.65, "heads"), (0.7, "tails"), (0.75, "tails")],
+)
+def test_exact_single_toss_is_its_face(t, face):
+    d = TossDistribution(90.0, 30.0, 0, Fixed(t))
+    for method in ("exact", "grid"):
+        assert estimate(d, method).p_heads == (1.0 if face == "heads" else 0.0)
+
+
+def test_band_measure_kernel():
+    u = np.linspace(0.0, 60.0, 200_001)
+    for a in (np.pi / 2, 2.0, 3.0):
+        inside = bands.in_band(u, a).astype(float)
+        # Cumulative trapezoid of the indicator ≈ F(u) to the grid spacing.
+        numeric = np.concatenate([[0.0], np.cumsum(0.5 * (inside[1:] + inside[:-1]) * np.diff(u))])
+        assert np.max(np.abs(numeric - bands.phase_measure(u, a))) < 1e-3
+
+
+def test_fast_sin_is_accurate():
+    x = np.concatenate([np.linspace(-1e3, 1e3, 20_001), np.array([0.0, 1e-300, np.pi, 3e6])])
+    got = np.array([sampling.sin(v) for v in x[::7]])
+    assert np.max(np.abs(got - np.sin(x[::7]))) < 5e-16
+    assert sampling.sinc(0.0) == 1.0
