@@ -1,0 +1,490 @@
+"""Event-driven simulation of a coin that falls onto a table, bounces and settles (numba).
+
+Between impacts the flight is exact: the centre of mass is ballistic and the coin is a
+torque-free symmetric top whose normal precesses about the fixed angular momentum L,
+
+    n(τ) = (n0·L̂) L̂ + cos(ωp τ) [n0 − (n0·L̂) L̂] + sin(ωp τ) (L̂ × n0),   ωp = |L| / I1
+
+(Diaconis, Holmes & Montgomery 2007, section 2; REFERENCES §2 — the same motion as
+:mod:`coinflight.core.torque_free`, written in the lab frame from any state, which is what a
+flight that starts at an impact needs). The heads normal, the velocity and the angular
+momentum are the whole state: a cylinder's contact with a plane does not depend on the spin
+angle about its own axis.
+
+Contacts are located exactly, not by a time step: conservative advancement (Mirtich,
+*Impulse-based dynamic simulation of rigid body systems*, PhD thesis, Berkeley 1996, §3.4)
+steps by a time that provably cannot close the gap between the coin's lowest point and the
+surface, then a safeguarded Newton iteration on the gap polishes the contact time to machine
+precision. The impact is :func:`coinflight.core.impact.impact`.
+
+The coin has settled when it can no longer cross the potential barrier between a face and its
+edge: total mechanical energy below m g sqrt(r² + h²/4), the height of its centre of mass when
+balanced on the corner of rim and face (Vulović & Prange 1986; Yong & Mahadevan 2011; REFERENCES
+§4-5). Its outcome is then the well it is in (:func:`coinflight.core.impact.resting_face`).
+When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
+one rim point while it tips), the end is the planar rocking of :func:`rock`. With e = 0 the
+surface absorbs the coin at its first contact and the well it touches in is the outcome, as
+in Yong & Mahadevan's model of a landing without bounce.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from numpy.typing import NDArray
+
+from coinflight.core.impact import (
+    angular_velocity,
+    contact_point,
+    cross,
+    dot,
+    impact,
+    lowest_depth,
+    resting_face,
+)
+
+# Why a toss ended (the ``status`` array).
+SETTLED_ENERGY = 0
+"""Energy below the face/edge barrier: the outcome is certain."""
+SETTLED_DEAD = 1
+"""e = 0: the surface absorbs the coin at its first contact, which decides (Yong & Mahadevan)."""
+BOUNCE_LIMIT = 2
+"""Stopped at the contact after ``max_bounces`` bounces, as asked (basin maps)."""
+UNSETTLED = 3
+"""Still bouncing after the safety limit of impacts; the outcome is the well it is in."""
+SETTLED_ROCKING = 4
+"""The bounces died out (rebound below the rest speed); the coin rocked on its corners until
+it was trapped in a well (:func:`rock`)."""
+
+MAX_IMPACTS = 10_000
+MAX_STEPS = 100_000
+CA_TOLERANCE = 1e-9
+"""Conservative advancement hands over to Newton within this gap, m."""
+GAP_TOLERANCE = 1e-13
+"""Newton stops within this distance of the surface, m."""
+REST_SPEED = 0.01
+"""Default rebound speed of the contact point below which the bounces have died out, m/s."""
+GRAZE_SKIP = 1e-6
+"""After a graze (closest approach within CA_TOLERANCE, no impact), fly on from this time, s."""
+
+
+@njit(cache=True)
+def precess(n0: tuple, lhat: tuple, rate: float, tau: float) -> tuple:
+    """Normal after time tau of torque-free precession about lhat at ``rate`` (DHM 2007 §2)."""
+    c = dot(n0, lhat)
+    ca = math.cos(rate * tau)
+    sa = math.sin(rate * tau)
+    w = cross(lhat, n0)
+    return (
+        c * lhat[0] + ca * (n0[0] - c * lhat[0]) + sa * w[0],
+        c * lhat[1] + ca * (n0[1] - c * lhat[1]) + sa * w[1],
+        c * lhat[2] + ca * (n0[2] - c * lhat[2]) + sa * w[2],
+    )
+
+
+@njit(cache=True)
+def tumbling_energy(v, angular_momentum, n, mass, i1, g, z):
+    """Energy that can turn the coin over: ½ m v_z² + |L⊥|²/2I1 + m g z, J.
+
+    The horizontal motion of the centre of mass and the spin about the coin's own axis leave
+    the height of its centre of mass and the tilt of its normal unchanged; only the vertical
+    motion, the tumbling (L⊥ = L − (L·n) n) and the height can lift the centre of mass over
+    the corner, at height sqrt(r² + h²/4).
+    """
+    ln = dot(angular_momentum, n)
+    l_perp2 = dot(angular_momentum, angular_momentum) - ln * ln
+    return 0.5 * mass * v[2] * v[2] + 0.5 * l_perp2 / i1 + mass * g * z
+
+
+@njit(cache=True)
+def rock(n, omega, radius, hh, mass, i1, g):
+    """Face the coin ends on when it rocks on its corners in the plane in which it tips.
+
+    Parameters
+    ----------
+    n, omega : tuple of 3 floats
+        Heads normal and angular velocity (lab) when the bounces have died out.
+    radius, hh, mass, i1, g : float
+        The coin (r, h/2, m, I1) and gravity.
+
+    Notes
+    -----
+    The rocking block of Housner (1963, *Bull. Seismol. Soc. Am.* 53:403): the coin's section
+    in the vertical plane through its normal is a 2r × h rectangle that pivots, without
+    slipping or bouncing, about one corner at a time. Its tilt φ (n = sin φ ê + cos φ Z) sees
+    the potential m g (r |sin φ| + h/2 |cos φ|): wells at heads (φ = 0), edge (±π/2) and tails
+    (π), separated by the corners at height ρ = sqrt(r² + h²/4). Between wells the energy
+    ½ (I1 + m ρ²) φ̇² + U is conserved; at the bottom of a well the next corner lands and the
+    angular velocity is multiplied by (I1 + m ρ² cos γ)/(I1 + m ρ²), γ the angle between the
+    two corners seen from the centre of mass (angular momentum about the new corner is
+    conserved). When that ratio is ≤ 0 (a thin coin slapping flat) the coin stops there.
+    The coin ends in the first well whose barrier its energy cannot pass.
+    """
+    rho2 = radius * radius + hh * hh
+    rho = math.sqrt(rho2)
+    corner = math.atan2(radius, hh)  # the face/edge barriers at |φ| = corner, π − corner
+    inertia = i1 + mass * rho2
+    barrier = mass * g * rho
+    horizontal = math.hypot(n[0], n[1])
+    ndot = cross(omega, n)
+    if horizontal > 1e-12:
+        ex, ey = n[0] / horizontal, n[1] / horizontal
+    else:
+        h2 = math.hypot(ndot[0], ndot[1])
+        if h2 == 0.0:
+            return 1 if n[2] > 0.0 else 0
+        ex, ey = ndot[0] / h2, ndot[1] / h2
+    phi = math.atan2(horizontal, n[2])  # in [0, π]
+    # dφ/dt = ṅ · ∂n/∂φ with ∂n/∂φ = cos φ ê − sin φ Z.
+    phidot = (ndot[0] * ex + ndot[1] * ey) * math.cos(phi) - ndot[2] * math.sin(phi)
+    energy = 0.5 * inertia * phidot * phidot + mass * g * (
+        radius * abs(math.sin(phi)) + hh * abs(math.cos(phi))
+    )
+    # Wells k = 0 heads (φ = 0), 1 edge (π/2), 2 tails (π), 3 edge (−π/2), in order of φ.
+    if phi < corner:
+        k = 0
+    elif phi > math.pi - corner:
+        k = 2
+    else:
+        k = 1
+    direction = 1 if phidot >= 0.0 else -1
+    towards_centre = (phi - 0.5 * math.pi * k) * phidot < 0.0
+    if not towards_centre:
+        if energy < barrier:
+            return _well_face(k)
+        k = (k + direction) % 4
+    cos_face = (hh * hh - radius * radius) / rho2
+    cos_edge = -cos_face
+    for _ in range(10_000):
+        bottom = mass * g * (hh if k % 2 == 0 else radius)
+        ratio = (i1 + mass * rho2 * (cos_face if k % 2 == 0 else cos_edge)) / inertia
+        if ratio <= 0.0:
+            return _well_face(k)
+        energy = bottom + (energy - bottom) * ratio * ratio
+        if energy < barrier:
+            return _well_face(k)
+        k = (k + direction) % 4
+    return _well_face(k)
+
+
+@njit(cache=True)
+def _well_face(k):
+    if k == 0:
+        return 1
+    if k == 2:
+        return 0
+    return 2
+
+
+@njit(cache=True)
+def _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh):
+    n = precess(n0, lhat, rate, tau)
+    z = z0 + vz0 * tau - 0.5 * g * tau * tau
+    return z - lowest_depth(n[2], radius, hh), n
+
+
+@njit(cache=True)
+def _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh):
+    """d(gap)/dt: vertical velocity of the lowest material point (envelope theorem)."""
+    omega = angular_velocity(angular_momentum, n, i1, i3)
+    rc = contact_point(n, radius, hh)
+    return vz0 - g * tau + cross(omega, rc)[2]
+
+
+@njit(cache=True)
+def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
+    """First time ≥ tau at which the coin's lowest point reaches the surface z = 0.
+
+    The state (height z0 of the centre of mass above the surface, vertical velocity vz0,
+    normal n0, angular momentum L) is given at time 0. Returns (time, normal then, vertical
+    velocity of the lowest point then); time is −1 if no contact was found within the step
+    limit.
+
+    Notes
+    -----
+    Each step is at least the conservative-advancement step, which provably cannot close the
+    gap (the centre of mass falls at most at |v_z| + g dt, and no point of the coin turns
+    faster than |ω| ρ; Mirtich 1996, §3.4), and at most 1/8 of a turn; within that it goes as
+    far as the gap's Taylor bound gap + gap'·τ − (g + 2|ω|²ρ) τ²/2 stays positive. A step
+    that ends below the surface brackets the contact, which a safeguarded Newton iteration
+    (Newton inside the bracket, else bisection) then finds to GAP_TOLERANCE.
+    """
+    lmag = math.sqrt(dot(angular_momentum, angular_momentum))
+    if lmag > 0.0:
+        lhat = (angular_momentum[0] / lmag, angular_momentum[1] / lmag, angular_momentum[2] / lmag)
+    else:
+        lhat = (0.0, 0.0, 1.0)
+    rate = lmag / i1
+    omega = angular_velocity(angular_momentum, n0, i1, i3)
+    w2 = dot(omega, omega)
+    rho = math.sqrt(radius * radius + hh * hh)
+    spin_bound = math.sqrt(w2) * rho
+    accel = g + 2.0 * w2 * rho
+    max_step = 0.25 * math.pi / (math.sqrt(w2) + 1e-300)
+    gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
+    speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+    lo = tau
+    hi = -1.0
+    for _ in range(MAX_STEPS):
+        if gap <= CA_TOLERANCE:
+            break
+        lo = tau
+        vz = vz0 - g * tau
+        a = (-vz if vz < 0.0 else 0.0) + spin_bound
+        safe = 2.0 * gap / (a + math.sqrt(a * a + 2.0 * g * gap))
+        # Positive root of gap + speed τ − accel τ²/2 = 0.
+        taylor = (speed + math.sqrt(speed * speed + 2.0 * accel * gap)) / accel
+        step = taylor if taylor < max_step else max_step
+        if step < safe:
+            step = safe
+        tau += step
+        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
+        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+        if gap < -CA_TOLERANCE:
+            hi = tau
+            break
+    else:
+        return -1.0, n, 0.0
+    # Safeguarded Newton on the gap: lo keeps gap > 0 (no earlier contact), hi once bracketed.
+    for _ in range(100):
+        if abs(gap) <= GAP_TOLERANCE or (hi < 0.0 and speed >= 0.0):
+            break
+        if gap > 0.0:
+            lo = tau
+        else:
+            hi = tau
+        trial = tau - gap / speed if speed < 0.0 else 0.5 * (lo + hi)
+        if hi > 0.0 and not (lo < trial < hi):
+            trial = 0.5 * (lo + hi)
+        if trial == tau:
+            break
+        tau = trial
+        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
+        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+    return tau, n, speed
+
+
+@njit(cache=True)
+def land_one(
+    omega_body,
+    start_sign,
+    launch_speed,
+    drop_height,
+    g,
+    radius,
+    hh,
+    mass,
+    i1,
+    i3,
+    restitution,
+    friction,
+    max_bounces,
+    rest_speed,
+):
+    """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status)."""
+    wx, wy, wz = omega_body
+    # Launch attitude: identity heads up, a half turn about lab X tails up (flips y and z).
+    s = 1.0 if start_sign > 0 else -1.0
+    n = (0.0, 0.0, s)
+    lm = (i1 * wx, s * i1 * wy, s * i3 * wz)
+    v = (0.0, 0.0, launch_speed)
+    z = drop_height  # height of the centre of mass above the surface
+    t = 0.0
+    rho = math.sqrt(radius * radius + hh * hh)
+    edge_sine = hh / rho
+    barrier = mass * g * rho
+    # The coin leaves the hand and is looked for on the way down, from the apex on.
+    tau = launch_speed / g
+    bounces = 0
+    first = -1.0
+    for _ in range(MAX_IMPACTS):
+        tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh)
+        if tc < 0.0:
+            return resting_face(n[2], edge_sine), bounces, first, t, UNSETTLED
+        norm = math.sqrt(dot(n, n))
+        n = (n[0] / norm, n[1] / norm, n[2] / norm)
+        t += tc
+        z = lowest_depth(n[2], radius, hh)
+        v = (v[0], v[1], v[2] - g * tc)
+        if approach >= 0.0:
+            # A graze within CA_TOLERANCE: no impact, fly on from a little later.
+            tau = GRAZE_SKIP
+            continue
+        if first < 0.0:
+            first = t
+        if bounces >= max_bounces:
+            return resting_face(n[2], edge_sine), bounces, first, t, BOUNCE_LIMIT
+        v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
+        omega = angular_velocity(lm, n, i1, i3)
+        if tumbling_energy(v, lm, n, mass, i1, g, z) < barrier:
+            return resting_face(n[2], edge_sine), bounces, first, t, SETTLED_ENERGY
+        if rebound < rest_speed:
+            if restitution == 0.0:
+                return resting_face(n[2], edge_sine), bounces, first, t, SETTLED_DEAD
+            face = rock(n, omega, radius, hh, mass, i1, g)
+            return face, bounces, first, t, SETTLED_ROCKING
+        bounces += 1
+        # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
+        # the downward acceleration of any point of the coin; start looking at its peak.
+        accel = g + 2.0 * dot(omega, omega) * rho
+        tau = rebound / accel
+        if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
+            tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
+    return resting_face(n[2], edge_sine), bounces, first, t, UNSETTLED
+
+
+@njit(cache=True)
+def _precess_from(n, lm, i1, tau):
+    lmag = math.sqrt(dot(lm, lm))
+    if lmag == 0.0:
+        return n
+    return precess(n, (lm[0] / lmag, lm[1] / lmag, lm[2] / lmag), lmag / i1, tau)
+
+
+@njit(cache=True)
+def _gap_after(tau, z, vz, g, n, lm, i1, radius, hh):
+    m = _precess_from(n, lm, i1, tau)
+    return z + vz * tau - 0.5 * g * tau * tau - lowest_depth(m[2], radius, hh)
+
+
+@njit(cache=True)
+def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
+    """A time in (0, tau] after an impact where the gap is positive, by halving tau."""
+    for _ in range(200):
+        tau *= 0.5
+        if _gap_after(tau, z, vz, g, n, lm, i1, radius, hh) > 0.0:
+            return tau
+    return tau
+
+
+@njit(cache=True, parallel=True)
+def _land_batch(
+    omega,
+    start_sign,
+    launch_speed,
+    drop_height,
+    g,
+    radius,
+    hh,
+    mass,
+    i1,
+    i3,
+    restitution,
+    friction,
+    max_bounces,
+    rest_speed,
+    face,
+    bounces,
+    first,
+    settle,
+    status,
+):
+    for k in prange(omega.shape[0]):
+        f, b, t1, ts, st = land_one(
+            (omega[k, 0], omega[k, 1], omega[k, 2]),
+            start_sign[k],
+            launch_speed[k],
+            drop_height,
+            g,
+            radius,
+            hh,
+            mass,
+            i1,
+            i3,
+            restitution,
+            friction,
+            max_bounces,
+            rest_speed,
+        )
+        face[k] = f
+        bounces[k] = b
+        first[k] = t1
+        settle[k] = ts
+        status[k] = st
+
+
+def land(
+    omega: NDArray[np.float64],
+    launch_speed: NDArray[np.float64],
+    start_sign: NDArray[np.float64],
+    *,
+    drop_height: float,
+    g: float,
+    radius: float,
+    thickness: float,
+    mass: float,
+    i1: float,
+    i3: float,
+    restitution: float,
+    friction: float,
+    max_bounces: int = MAX_IMPACTS,
+    rest_speed: float = REST_SPEED,
+) -> tuple[
+    NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
+]:
+    """Land a batch of tosses on a table, in parallel over the tosses.
+
+    Parameters
+    ----------
+    omega : ndarray, shape (n, 3)
+        Body-frame angular velocity at launch, rad/s.
+    launch_speed : ndarray, shape (n,)
+        Upward speed of the centre of mass at launch, m/s.
+    start_sign : ndarray, shape (n,)
+        +1 heads up at launch, −1 tails up.
+    drop_height : float
+        Launch height of the centre of mass above the surface, m (≥ 0).
+    g, radius, thickness, mass, i1, i3 : float
+        Gravity (m/s²) and the coin (m, m, kg, kg m², kg m²).
+    restitution, friction : float
+        e in [0, 1], μ ≥ 0 (see :func:`coinflight.core.impact.impact`).
+    max_bounces : int
+        Stop at the contact that follows this many bounces and report the well the coin is in
+        there (0: the first contact); by default, run until the coin settles.
+    rest_speed : float
+        Rebound speed of the contact point below which the coin is taken as landed dead, m/s.
+
+    Returns
+    -------
+    face : ndarray of int8, shape (n,)
+        TAILS 0, HEADS 1, EDGE 2.
+    bounces : ndarray of int32, shape (n,)
+        Impacts after which the coin left the surface again.
+    first_contact, settle_time : ndarray, shape (n,)
+        Time of the first and of the last contact since launch, s.
+    status : ndarray of int8, shape (n,)
+        Why the toss ended: SETTLED_ENERGY, SETTLED_DEAD, BOUNCE_LIMIT or UNSETTLED.
+    """
+    omega = np.ascontiguousarray(omega, dtype=np.float64).reshape(-1, 3)
+    n = omega.shape[0]
+    speed = np.ascontiguousarray(np.broadcast_to(launch_speed, (n,)), dtype=np.float64)
+    sign = np.ascontiguousarray(np.broadcast_to(start_sign, (n,)), dtype=np.float64)
+    face = np.empty(n, dtype=np.int8)
+    bounces = np.empty(n, dtype=np.int32)
+    first = np.empty(n)
+    settle = np.empty(n)
+    status = np.empty(n, dtype=np.int8)
+    _land_batch(
+        omega,
+        sign,
+        speed,
+        float(drop_height),
+        float(g),
+        float(radius),
+        0.5 * float(thickness),
+        float(mass),
+        float(i1),
+        float(i3),
+        float(restitution),
+        float(friction),
+        int(max_bounces),
+        float(rest_speed),
+        face,
+        bounces,
+        first,
+        settle,
+        status,
+    )
+    return face, bounces, first, settle, status

@@ -1,0 +1,259 @@
+"""A toss that ends on a table: bounces, settling, heads, tails or edge.
+
+:class:`Landing` is one toss (or a batch) landing on a :class:`~coinflight.surface.Surface`;
+:class:`TableLanding` plugs the same simulation into the probability estimators as an
+:class:`~coinflight.probability.outcome.OutcomeModel`. The physics is in
+:mod:`coinflight.core.bounce` and :mod:`coinflight.core.impact` (drag-free, exact flights
+between impacts) and, with air drag, :mod:`coinflight.core.drag`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from coinflight.coin import Coin
+from coinflight.core.outcome import FACE_NAMES
+from coinflight.probability.outcome import OutcomeModel
+from coinflight.surface import Drag, Surface
+from coinflight.toss import Toss
+
+if TYPE_CHECKING:
+    from coinflight.ensemble import TossDistribution
+
+FloatArray = NDArray[np.float64]
+
+STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
+"""Why a landing ended, by the status codes of :mod:`coinflight.core.bounce`."""
+
+
+@dataclass(frozen=True, eq=False)
+class LandingOutcome:
+    """What a table landing shows.
+
+    Attributes
+    ----------
+    face : ndarray of int8
+        TAILS 0, HEADS 1, EDGE 2 (:mod:`coinflight.core.outcome`).
+    bounces : ndarray of int32
+        Impacts after which the coin left the surface again.
+    first_contact : ndarray
+        Time of the first contact with the surface since launch, s.
+    settle_time : ndarray
+        Time of the last impact, s.
+    status : ndarray of int8
+        Why the landing ended (:data:`STATUS_NAMES`).
+    """
+
+    face: NDArray[np.int8]
+    bounces: NDArray[np.int32]
+    first_contact: FloatArray
+    settle_time: FloatArray
+    status: NDArray[np.int8]
+
+    @property
+    def face_name(self) -> str:
+        """ "heads", "tails" or "edge" for a single toss."""
+        if self.face.ndim:
+            raise TypeError("face_name is for a single toss; use face for a batch")
+        return FACE_NAMES[int(self.face)]
+
+    @property
+    def status_name(self) -> str:
+        """Why a single toss ended."""
+        if self.status.ndim:
+            raise TypeError("status_name is for a single toss; use status for a batch")
+        return STATUS_NAMES[int(self.status)]
+
+
+def check_clears(coin: Coin, apex: FloatArray, surface: Surface) -> None:
+    """ValueError unless every toss rises high enough for its lowest point to clear the surface.
+
+    The contact is looked for on the way down, from the apex on (the hand releases the coin
+    above the surface): at the apex the centre of mass must be more than sqrt(r² + h²/4),
+    the farthest reach of the coin, above the surface.
+    """
+    reach = float(np.hypot(coin.radius, 0.5 * coin.thickness))
+    clearance = np.asarray(apex) + surface.drop_height
+    if np.any(clearance <= reach):
+        worst = float(np.min(clearance))
+        raise ValueError(
+            f"the coin must clear the surface: apex + drop height = {worst:.4g} m must exceed "
+            f"the coin's reach {reach:.4g} m; raise --drop-height or the flight time"
+        )
+
+
+def land(
+    coin: Coin,
+    omega: FloatArray,
+    launch_speed: FloatArray,
+    start_sign: float | FloatArray,
+    g: float,
+    surface: Surface,
+    drag: Drag | None = None,
+    max_bounces: int | None = None,
+) -> LandingOutcome:
+    """Land tosses given as arrays (ω (n, 3), v0 (n,)) on ``surface``; flat batch of n.
+
+    Without drag this is the parallel event-driven kernel :func:`coinflight.core.bounce.land`;
+    with drag each toss is integrated by :func:`coinflight.core.drag.land` (slow).
+    """
+    if not isinstance(surface, Surface):
+        raise TypeError(f"surface must be a Surface, got {type(surface).__name__}")
+    if surface.kind != "table":
+        raise ValueError("a landing needs surface kind 'table'; a hand catch is a Flight")
+    if max_bounces is not None and (isinstance(max_bounces, bool) or int(max_bounces) < 0):
+        raise ValueError(f"max bounces must be a whole number ≥ 0, got {max_bounces!r}")
+    i1, i3 = coin.moments
+    omega = np.asarray(omega, dtype=float).reshape(-1, 3)
+    speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (omega.shape[0],))
+    sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (omega.shape[0],))
+    check_clears(coin, speed * speed / (2.0 * g), surface)
+    kwargs: dict[str, Any] = dict(
+        drop_height=surface.drop_height,
+        g=g,
+        radius=coin.radius,
+        thickness=coin.thickness,
+        mass=coin.mass,
+        i1=i1,
+        i3=i3,
+        restitution=surface.restitution,
+        friction=surface.friction,
+    )
+    if drag is not None and not drag.is_zero:
+        from coinflight.core import drag as drag_kernels
+
+        rows = [
+            drag_kernels.land(
+                omega[k],
+                float(speed[k]),
+                float(sign[k]),
+                drag_coefficient=drag.coefficient,
+                spin_damping=drag.spin_damping,
+                air_density=drag.air_density,
+                max_bounces=-1 if max_bounces is None else int(max_bounces),
+                **kwargs,
+            )
+            for k in range(omega.shape[0])
+        ]
+        face, bounces, first, settle, status = (np.array(col) for col in zip(*rows, strict=True))
+        return LandingOutcome(
+            face.astype(np.int8), bounces.astype(np.int32), first, settle, status.astype(np.int8)
+        )
+    from coinflight.core import bounce
+
+    if max_bounces is not None:
+        kwargs["max_bounces"] = int(max_bounces)
+    face, bounces, first, settle, status = bounce.land(omega, speed, sign, **kwargs)
+    return LandingOutcome(face, bounces, first, settle, status)
+
+
+@dataclass(frozen=True, eq=False)
+class Landing:
+    """A toss (or a batch of tosses) that ends on a table.
+
+    Parameters
+    ----------
+    coin : Coin
+    toss : Toss
+        Launch: ω and flight time T (the launch speed is v0 = g T / 2, as for a catch).
+    surface : Surface
+        Kind ``"table"``, with the drop height, restitution and friction.
+    drag : Drag, optional
+        Air drag on the flight (slower: numerical integration).
+    max_bounces : int, optional
+        Stop at the contact that follows this many bounces (0: the first contact) and report
+        the well the coin is in there; by default the coin bounces until it settles.
+
+    Examples
+    --------
+    >>> surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+    >>> landing = Landing(Coin.preset("us-nickel"), Toss((240.0, 5.0, 3.0), 0.49), surface)
+    >>> landing.outcome.face_name in ("heads", "tails", "edge")
+    True
+    """
+
+    coin: Coin
+    toss: Toss
+    surface: Surface
+    drag: Drag | None = None
+    max_bounces: int | None = None
+
+    def __post_init__(self) -> None:
+        for name, kind in (("coin", Coin), ("toss", Toss), ("surface", Surface)):
+            if not isinstance(getattr(self, name), kind):
+                raise TypeError(
+                    f"{name} must be a {kind.__name__}, got {type(getattr(self, name)).__name__}"
+                )
+        if self.drag is not None and not isinstance(self.drag, Drag):
+            raise TypeError(f"drag must be a Drag, got {type(self.drag).__name__}")
+
+    @cached_property
+    def outcome(self) -> LandingOutcome:
+        """Face, bounces and times, shaped like the toss batch."""
+        shape = self.toss.shape
+        omega = np.broadcast_to(self.toss.omega, (*shape, 3)).reshape(-1, 3)
+        speed = np.broadcast_to(self.toss.launch_speed, shape).reshape(-1)
+        out = land(
+            self.coin,
+            omega,
+            speed,
+            self.toss.start_sign,
+            self.toss.g,
+            self.surface,
+            self.drag,
+            self.max_bounces,
+        )
+        return LandingOutcome(
+            face=out.face.reshape(shape),
+            bounces=out.bounces.reshape(shape),
+            first_contact=out.first_contact.reshape(shape),
+            settle_time=out.settle_time.reshape(shape),
+            status=out.status.reshape(shape),
+        )
+
+
+class TableLanding(OutcomeModel):
+    """Outcome model for the probability estimators: the tosses land on ``surface``.
+
+    Plugs into :func:`coinflight.probability.estimate` (``model=TableLanding(surface)``);
+    counts (tails, heads, edge).
+    """
+
+    name = "table landing"
+
+    def __init__(
+        self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
+    ) -> None:
+        if not isinstance(surface, Surface) or surface.kind != "table":
+            raise ValueError("TableLanding needs a Surface of kind 'table'")
+        self.surface = surface
+        self.drag = drag
+        self.max_bounces = max_bounces
+
+    def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
+        """(tails, heads, edge) counts for unit-cube points ``u`` (shape (len(ranged), n))."""
+        wx, wy, wz, t = dist.values(np.asarray(u, dtype=float))
+        n = np.asarray(u).shape[1]
+        omega = np.column_stack(
+            [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
+        )
+        speed = 0.5 * dist.g * np.broadcast_to(np.asarray(t, dtype=float), (n,))
+        out = land(
+            dist.coin,
+            omega,
+            speed,
+            dist.start_sign,
+            dist.g,
+            self.surface,
+            self.drag,
+            self.max_bounces,
+        )
+        return np.bincount(out.face, minlength=3).astype(np.int64)
+
+
+__all__ = ["STATUS_NAMES", "Landing", "LandingOutcome", "TableLanding", "land"]

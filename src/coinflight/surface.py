@@ -1,0 +1,122 @@
+"""Where the coin ends and what slows it: the landing surface and the air, as value objects."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from coinflight import _validation as v
+
+SurfaceKind = Literal["hand", "table"]
+
+AIR_DENSITY = 1.2
+"""Density of air at 20 °C and sea level, kg/m³ (ISO 2533 standard atmosphere: 1.204)."""
+
+DEFAULT_RESTITUTION = 0.5
+"""Coefficient of restitution of a coin on a wooden table (Strzałko et al. 2008 use 0.2-0.8)."""
+
+DEFAULT_FRICTION = 0.3
+"""Coulomb friction coefficient of metal on wood (Strzałko et al. 2008 use 0.1-0.5)."""
+
+
+def _single(name: str, value: float, unit: str, check: str = "non_negative") -> float:
+    arr = getattr(v, check)(name, value, unit)
+    if arr.ndim:
+        raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    return float(arr)
+
+
+@dataclass(frozen=True)
+class Surface:
+    """Where the toss ends.
+
+    Parameters
+    ----------
+    kind : {"hand", "table"}
+        ``"hand"``: caught at launch height, no bounce (Stefan & Cheche). ``"table"``: the coin
+        falls onto a hard horizontal surface, bounces and settles heads, tails or on its edge.
+    drop_height : float
+        How far the surface lies below the launch height of the centre of mass, m (≥ 0; a
+        surface above the launch point is not allowed). Only for ``"table"``.
+    restitution : float
+        Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1].
+    friction : float
+        Coulomb friction coefficient μ ≥ 0 of the coin on the surface.
+
+    Examples
+    --------
+    >>> Surface("table", drop_height=0.8).restitution
+    0.5
+    >>> Surface("table", restitution=1.5)
+    Traceback (most recent call last):
+    ...
+    ValueError: restitution must be between 0 and 1, got 1.5
+    """
+
+    kind: SurfaceKind = "hand"
+    drop_height: float = 0.0
+    restitution: float = DEFAULT_RESTITUTION
+    friction: float = DEFAULT_FRICTION
+
+    def __post_init__(self) -> None:
+        v.choice("surface", self.kind, ("hand", "table"))
+        height = v.as_float_array("drop height", self.drop_height)
+        if height.ndim == 0 and float(height) < 0:
+            raise ValueError(
+                f"drop height must be ≥ 0 (the surface is below the launch point), got "
+                f"{float(height)!r}: a surface above the launch point is not allowed"
+            )
+        object.__setattr__(self, "drop_height", _single("drop height", self.drop_height, "m"))
+        e = v.in_range("restitution", self.restitution, 0.0, 1.0)
+        if e.ndim:
+            raise TypeError("restitution must be a single number")
+        object.__setattr__(self, "restitution", float(e))
+        object.__setattr__(self, "friction", _single("friction", self.friction, ""))
+
+    @property
+    def bounces(self) -> bool:
+        """True for a hard surface."""
+        return self.kind == "table"
+
+
+@dataclass(frozen=True)
+class Drag:
+    """Air resistance on the flying coin.
+
+    Parameters
+    ----------
+    coefficient : float
+        Drag coefficient C_d ≥ 0 of the quadratic drag F = −½ ρ C_d A |v| v on the centre of
+        mass, with A = π r² the area of a face. 1.17 is the value for a flat disc broadside on
+        (Hoerner, *Fluid-Dynamic Drag*, 1965, ch. 3); the coin's orientation is not followed.
+    spin_damping : float
+        k ≥ 0 of the damping torque −k ω on the spin, N m s.
+    air_density : float
+        ρ > 0, kg/m³.
+
+    Examples
+    --------
+    >>> Drag(coefficient=1.17).air_density
+    1.2
+    """
+
+    coefficient: float = 0.0
+    spin_damping: float = 0.0
+    air_density: float = AIR_DENSITY
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "coefficient", _single("drag coefficient", self.coefficient, ""))
+        object.__setattr__(
+            self, "spin_damping", _single("spin damping", self.spin_damping, "N m s")
+        )
+        object.__setattr__(
+            self, "air_density", _single("air density", self.air_density, "kg/m³", "positive")
+        )
+
+    @property
+    def is_zero(self) -> bool:
+        """True when there is no drag at all (the closed form applies)."""
+        return self.coefficient == 0.0 and self.spin_damping == 0.0
+
+
+__all__ = ["AIR_DENSITY", "Drag", "Surface"]
