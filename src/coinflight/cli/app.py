@@ -9,7 +9,10 @@ import typer
 from coinflight import __version__
 from coinflight.cli import animate as _animate
 from coinflight.cli import bias as _bias
+from coinflight.cli import convergence as _convergence
 from coinflight.cli import data as _data
+from coinflight.cli import paper as _paper
+from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
 from coinflight.cli.errors import OneLineErrors
 from coinflight.cli.plot import plot_app
@@ -49,8 +52,11 @@ def _root(
 app.command("toss")(_toss.toss)
 app.command("bias")(_bias.bias)
 app.command("data")(_data.data)
+app.command("probability")(_probability.probability)
+app.command("convergence")(_convergence.convergence)
 app.add_typer(plot_app, name="plot")
 app.command("animate")(_animate.animate)
+app.command("paper")(_paper.paper)
 
 
 def main() -> None:

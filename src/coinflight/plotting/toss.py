@@ -128,6 +128,12 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         ax.set_ylim(-lim, lim)
         ax.set_zlim(-lim, lim)
         ax.set_box_aspect((1, 1, 1))
+        # Look from near the X axis, the paper's spin axis, so that the tilt reads clearly.
+        ax.view_init(elev=20, azim=-30)
+        ticks = [-round(r_mm), 0, round(r_mm)]
+        ax.set_xticks(ticks)
+        ax.set_yticks(ticks)
+        ax.set_zticks(ticks)
         ax.set_xlabel("X (mm)")
         ax.set_ylabel("Y (mm)")
         ax.set_zlabel("Z, up (mm)")

@@ -1,0 +1,93 @@
+"""``coinflight paper``: regenerate the founding paper's figures and a reproduction report."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.options import OUTPUT_PANEL, CoinName
+
+OutDir = Annotated[
+    Path,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="DIR",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Folder for the figures (PNG and SVG), report.md and report.html.",
+    ),
+]
+Seed = Annotated[
+    int,
+    typer.Option("--seed", min=0, help="Seed of method B's random events (reported)."),
+]
+Events = Annotated[
+    int,
+    typer.Option(
+        "--events",
+        min=100,
+        max=10**9,
+        help="Method B: random events per probability figure (the paper does not say).",
+    ),
+]
+Quiet = Annotated[
+    bool, typer.Option("--quiet", "-q", rich_help_panel=OUTPUT_PANEL, help="No progress bar.")
+]
+
+
+def paper(
+    out: OutDir = Path("paper"),
+    seed: Seed = 20240601,
+    events: Events = 10**6,
+    coin: CoinName = None,
+    quiet: Quiet = False,
+) -> None:
+    """Reproduce Stefan & Cheche's figures 2a-d, 3a-f and write a report beside them.
+
+    Example: coinflight paper --out paper/
+    """
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from coinflight.cli.options import resolve_coin
+    from coinflight.report.reproduce import STEPS, reproduce_paper
+
+    the_coin = resolve_coin(coin, None, None, None)
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"--out must be a folder, but {str(out)!r} is a file")
+    with Progress(
+        TextColumn("[progress.description]{task.description:<28}"),
+        BarColumn(),
+        TextColumn("{task.completed}/{task.total}"),
+        TimeElapsedColumn(),
+        disable=quiet,
+        transient=False,
+    ) as bar:
+        task = bar.add_task("reproducing the paper", total=STEPS)
+
+        def step(message: str) -> None:
+            bar.update(task, advance=1, description=message)
+
+        report = reproduce_paper(out, coin=the_coin, seed=seed, events=events, step=step)
+    rows = report.numbers.rotations
+    typer.echo(
+        f"wrote {len(report.files)} files to {out} in {report.elapsed:.1f} s "
+        f"(method B seed {seed}); open {out / 'report.html'}"
+    )
+    agree = sum(r.rotations_agree for r in rows)
+    typer.echo(f"rotations: {agree}/{len(rows)} agree with the paper to its printed digits")
+    for r in rows:
+        if r.face_agrees is False:
+            typer.echo(
+                f"Fig {r.case.figure}: the paper's text says {r.case.paper_face} up; "
+                f"its own eq 14 gives {r.face} up (cos θ = {r.cos_theta:+.4f})"
+            )
+    for p in report.numbers.probabilities:
+        typer.echo(
+            f"Fig {p.case.figure}: P(heads) method A {p.method_a.p_heads:.6f}, "
+            f"method B {p.method_b.p_heads:.4f}, exact {p.exact.p_heads:.6f}"
+        )
+
+
+__all__ = ["paper"]

@@ -1,0 +1,1 @@
+"""Reports: the founding paper reproduced (figures, report.md, report.html)."""

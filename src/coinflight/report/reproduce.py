@@ -1,0 +1,515 @@
+"""``coinflight paper``: the founding paper's figures and a reproduction report, in one folder."""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from coinflight import __version__
+from coinflight.coin import Coin
+from coinflight.report.document import (
+    Bullets,
+    Document,
+    Heading,
+    Image,
+    Paragraph,
+    Table,
+    write_text,
+)
+from coinflight.report.paper import (
+    DEFAULT_SEED,
+    METHOD_A_INTERVALS,
+    METHOD_B_EVENTS,
+    METHOD_B_INTERVALS,
+    PaperNumbers,
+    ProbabilityRow,
+    RotationRow,
+    distribution,
+    paper_numbers,
+)
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+Step = Callable[[str], None]
+
+FIGURES = ("fig2a", "fig2b", "fig2c", "fig2d", "fig3a", "fig3b", "fig3c-f")
+"""File stems of the reproduced figures (each written as .png and .svg)."""
+STEPS = 1 + 4 + len(FIGURES) + 1
+"""Progress steps of :func:`reproduce_paper`: numbers (5), figures (7), report (1)."""
+
+
+@dataclass(frozen=True)
+class ConvergenceCurves:
+    """P(heads) of method A against configurations and of method B against events.
+
+    Attributes
+    ----------
+    configurations : ndarray
+        N² for N intervals per parameter (method A).
+    p_method_a : ndarray
+        Grid probability on the N × N grid.
+    events : ndarray
+        Number of random events (method B).
+    p_method_b : ndarray
+        Method B estimate after that many events (same seed for each size).
+    exact : float
+        Exact P(heads).
+    """
+
+    configurations: np.ndarray
+    p_method_a: np.ndarray
+    events: np.ndarray
+    p_method_b: np.ndarray
+    exact: float
+
+
+def convergence_curves(
+    row: ProbabilityRow,
+    coin: Coin,
+    seed: int,
+    max_events: int = METHOD_B_EVENTS,
+    points: int = 28,
+) -> ConvergenceCurves:
+    """Method A for N = 10 … 5000 intervals and method B for 100 … ``max_events`` events.
+
+    Notes
+    -----
+    Stefan & Cheche §3, Figs 2a-b and 3a-b: method A counts heads over N² configurations;
+    method B draws random events from a grid of 100 intervals per parameter.
+    """
+    from coinflight.probability import estimate
+
+    dist = distribution(row.case, coin)
+    sizes_a = np.unique(np.geomspace(10, METHOD_A_INTERVALS, points).round().astype(int))
+    p_a = np.array([estimate(dist, "grid", n=int(n), threads=1).p_heads for n in sizes_a])
+    sizes_b = np.unique(np.geomspace(100, max_events, points).round().astype(int))
+    p_b = np.array(
+        [
+            estimate(
+                dist, "monte-carlo", n=int(n), seed=seed, grid_cells=METHOD_B_INTERVALS, threads=1
+            ).p_heads
+            for n in sizes_b
+        ]
+    )
+    return ConvergenceCurves(
+        configurations=sizes_a.astype(float) ** 2,
+        p_method_a=p_a,
+        events=sizes_b.astype(float),
+        p_method_b=p_b,
+        exact=row.exact.p_heads,
+    )
+
+
+def plot_convergence_curves(curves: ConvergenceCurves, title: str) -> Figure:
+    """The paper's Figs 2a-b / 3a-b: method A (blue) and B (red) tending to 50 %."""
+    from coinflight.plotting.style import EXACT_COLOR, METHOD_COLORS, new_figure
+
+    fig = new_figure(figsize=(7.6, 5.4))
+    ax = fig.add_subplot()
+    ax.plot(
+        curves.configurations,
+        100 * curves.p_method_a,
+        "o-",
+        ms=3.5,
+        color=METHOD_COLORS["grid"],
+        label=f"method A: N × N grid, N up to {METHOD_A_INTERVALS} (x = configurations N²)",
+    )
+    ax.plot(
+        curves.events,
+        100 * curves.p_method_b,
+        "s-",
+        ms=3.5,
+        color=METHOD_COLORS["monte-carlo"],
+        label=f"method B: random events on a {METHOD_B_INTERVALS} × {METHOD_B_INTERVALS} grid "
+        "(x = events)",
+    )
+    ax.axhline(100 * curves.exact, color=EXACT_COLOR, lw=1, label=f"exact {curves.exact:.5f}")
+    ax.axhline(50.0, color="#888888", lw=1, ls="--", label="50 %")
+    ax.set_xscale("log")
+    ax.set_xlabel("number of configurations (method A) or events (method B)")
+    ax.set_ylabel("P(heads) (%)")
+    every = np.concatenate([curves.p_method_a, curves.p_method_b, [curves.exact, 0.5]])
+    pad = max(0.5, 5.0 * float(np.ptp(every)))
+    ax.set_ylim(100 * every.min() - pad, 100 * every.max() + pad)
+    fig.legend(fontsize=8.5, loc="outside lower center", ncols=2)
+    ax.set_title(title, fontsize=10.5)
+    return fig
+
+
+@dataclass(frozen=True)
+class PaperReport:
+    """What :func:`reproduce_paper` wrote and computed."""
+
+    numbers: PaperNumbers
+    files: tuple[Path, ...]
+    elapsed: float
+
+
+def reproduce_paper(
+    out_dir: str | Path,
+    *,
+    coin: Coin | None = None,
+    seed: int = DEFAULT_SEED,
+    events: int = METHOD_B_EVENTS,
+    formats: tuple[str, ...] = ("png", "svg"),
+    step: Step | None = None,
+) -> PaperReport:
+    """Regenerate every figure of Stefan & Cheche and write ``report.md`` and ``report.html``.
+
+    Parameters
+    ----------
+    out_dir : path
+        Folder for the figures (``fig2a.png`` … ``fig3c-f.svg``) and the report.
+    coin : Coin, optional
+        Default the US quarter (the paper names no coin; a spin about a diameter does not
+        depend on it).
+    seed : int
+        Seed of method B's random events (reported).
+    events : int
+        Method B events per probability figure.
+    formats : tuple of str
+        Image formats of each figure.
+    step : callable, optional
+        Called with a description after each of :data:`STEPS` steps (a progress bar).
+    """
+    from coinflight.plotting.style import save_figure
+    from coinflight.plotting.toss import plot_toss
+    from coinflight.toss import Toss
+
+    t_start = time.perf_counter()
+    out = Path(out_dir)
+    coin = coin if coin is not None else Coin.preset("us-quarter")
+    numbers = paper_numbers(coin, seed=seed, events=events, step=step)
+    files: list[Path] = []
+
+    def done(message: str) -> None:
+        if step:
+            step(message)
+
+    for row in numbers.probabilities:
+        c = row.case
+        curves = convergence_curves(row, coin, seed, max_events=events)
+        title = (
+            f"Fig {c.figure}: ωx0 ∈ [{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, "
+            f"ωy0 = {c.omega_y:g} rad/s, ωz0 = 0, T ∈ [{c.flight_time[0]:g}, "
+            f"{c.flight_time[1]:g}] s\n{coin.name} tossed heads up and caught"
+        )
+        files += save_figure(
+            plot_convergence_curves(curves, title), out / f"fig{c.figure}", formats
+        )
+        done(f"Fig {c.figure}")
+    by_fig = {r.case.figure: r for r in numbers.rotations}
+    for fig_id in ("2c", "2d"):
+        case = by_fig[fig_id].case
+        toss = Toss(omega=(case.omega_x, case.omega_y, 0.0), flight_time=case.flight_time)  # type: ignore[arg-type]
+        fig = plot_toss(coin, toss)
+        fig.suptitle(
+            f"Fig {fig_id}: ωx0 = {case.omega_x:g} rad/s, T = {case.flight_time:g} s — "
+            f"{coin.name} at launch (red) and at catch (blue)",
+            fontsize=11,
+        )
+        files += save_figure(fig, out / f"fig{fig_id}", formats)
+        done(f"Fig {fig_id}")
+    cases_3 = [by_fig[f].case for f in ("3c", "3d", "3e", "3f")]
+    toss3 = Toss(
+        omega=(90.0, 30.0, 0.0),  # type: ignore[arg-type]
+        flight_time=np.array([c.flight_time for c in cases_3]),
+    )
+    fig = plot_toss(coin, toss3)
+    fig.suptitle(
+        "Figs 3c-f: ωx0 = 90 rad/s, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s — "
+        f"{coin.name} at launch (red) and at catch (blue)",
+        fontsize=11,
+    )
+    files += save_figure(fig, out / "fig3c-f", formats)
+    done("Figs 3c-f")
+
+    elapsed = time.perf_counter() - t_start
+    doc = build_document(numbers, elapsed, image_suffix=formats[0])
+    files.append(write_text(out / "report.md", doc.to_markdown()))
+    files.append(write_text(out / "report.html", doc.to_html()))
+    done("report.md and report.html")
+    return PaperReport(numbers=numbers, files=tuple(files), elapsed=time.perf_counter() - t_start)
+
+
+def _captions(numbers: PaperNumbers) -> dict[str, str]:
+    rot = {r.case.figure: r for r in numbers.rotations}
+    prob = {r.case.figure: r for r in numbers.probabilities}
+
+    def p_caption(fig: str) -> str:
+        r = prob[fig]
+        c = r.case
+        return (
+            f"Fig {fig}: P(heads) by method A (blue) and method B (red) for ωx0 ∈ "
+            f"[{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, ωy0 = {c.omega_y:g} rad/s, T ∈ "
+            f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s; exact value "
+            f"{r.exact.p_heads:.6f}."
+        )
+
+    def t_caption(fig: str) -> str:
+        r = rot[fig]
+        c = r.case
+        said = (
+            f" (the paper's text says {c.paper_face} up; its eq 14 gives {r.face} up)"
+            if r.face_agrees is False
+            else ""
+        )
+        return (
+            f"Fig {fig}: the coin at launch (red) and at catch (blue), ωx0 = {c.omega_x:g} "
+            f"rad/s, T = {c.flight_time:g} s: {r.rotations:.3f} turns, {r.face} up{said}."
+        )
+
+    turns = ", ".join(f"{rot[f].rotations:.3f}" for f in ("3c", "3d", "3e", "3f"))
+    faces = ", ".join(rot[f].face for f in ("3c", "3d", "3e", "3f"))
+    return {
+        "fig2a": p_caption("2a"),
+        "fig2b": p_caption("2b"),
+        "fig2c": t_caption("2c"),
+        "fig2d": t_caption("2d"),
+        "fig3a": p_caption("3a"),
+        "fig3b": p_caption("3b"),
+        "fig3c-f": "Figs 3c-f: ωx0 = 90, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s: "
+        f"{turns} turns, {faces} up; n and S (S ⟂ n) and the path of n on the unit sphere.",
+    }
+
+
+def _face_word(face: str | None) -> str:
+    return "—" if face is None else face
+
+
+def _yes(flag: bool | None) -> str:
+    return "—" if flag is None else ("yes" if flag else "NO")
+
+
+def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "png") -> Document:
+    """The reproduction report as a :class:`~coinflight.report.document.Document`."""
+    rot = numbers.rotations
+    prob = numbers.probabilities
+    doc = Document('Reproduction of Stefan & Cheche, "Coin toss modeling"')
+    n_agree = sum(r.rotations_agree for r in rot)
+    disagreements = [r for r in rot if r.face_agrees is False]
+    worst_a = max(abs(r.method_a.p_heads - r.exact.p_heads) for r in prob)
+    doc.add(
+        Paragraph(
+            f"Generated by coinflight {__version__} in {elapsed:.1f} s. Coin: "
+            f"{numbers.coin.describe()} (the paper names no coin; for a spin about a diameter "
+            "the face does not depend on it). Every toss starts heads up and is caught at "
+            f"launch height. Method B seed: {numbers.seed}."
+        ),
+        Heading("Summary"),
+        Bullets(
+            (
+                f"Rotations: {n_agree} of {len(rot)} counts the paper prints agree with "
+                "coinflight to the digits printed.",
+                "Faces: "
+                + (
+                    "the paper's text and its own eq 14 disagree for "
+                    + ", ".join(f"Fig {r.case.figure}" for r in disagreements)
+                    + " (section 2 below)."
+                    if disagreements
+                    else "every face the paper states agrees with its eq 14."
+                ),
+                "Probabilities: the paper gives no number, only that methods A and B tend to "
+                "50 %. coinflight's exact values for its four ranges lie within "
+                f"{max(abs(r.exact.p_heads - 0.5) for r in prob):.4f} of 1/2; method A with "
+                f"{METHOD_A_INTERVALS}² configurations is within {worst_a:.1e} of exact.",
+                "The ranges the paper writes as T = v0/g ∈ [0.6, 0.9] s are flight times "
+                "T = 2 v0/g (section 2 below).",
+            )
+        ),
+    )
+    doc.add(
+        Heading("1. Rotations and faces (Figs 2c-d, 3c-f)"),
+        Paragraph(
+            "θ(T) = T·sqrt(ωx0² + ωy0²) (eqs 11, 15); rotations = θ(T)/2π. The face follows "
+            "the paper's rule (eq 14, §2.1): heads up iff cos θ(T) > 0. cos θ is computed three "
+            "ways: cos(θ(T)) from eq 14, the paper's Euler-matrix construction (eqs 12-13), and "
+            "coinflight's general closed form n(T)·n(0)."
+        ),
+        rotation_table(rot),
+        Table(
+            (
+                "Fig",
+                "cos θ, eq 14",
+                "cos θ, Euler matrix (eqs 12-13)",
+                "n(T)·n(0), closed form",
+                "Ŝ·n at catch",
+            ),
+            tuple(
+                (
+                    r.case.figure,
+                    f"{r.cos_theta:+.12f}",
+                    f"{r.cos_theta_construction:+.12f}",
+                    f"{r.cos_theta_closed_form:+.12f}",
+                    f"{r.s_dot_n:+.1e}",
+                )
+                for r in rot
+            ),
+            caption="Checks the paper states: the three cos θ agree, and S ⟂ n (\"Diaconis' "
+            'theorem", S·n = 0 in case b).',
+        ),
+    )
+    doc.add(Heading("2. Where the paper's text and its own formulas disagree"))
+    for r in disagreements:
+        c = r.case
+        frac = c.paper_rotations - math.floor(c.paper_rotations)
+        doc.add(
+            Heading(f'Fig {c.figure}: the text says "{c.quote}"', 3),
+            Paragraph(
+                f"With ωx0 = {c.omega_x:g} rad/s and T = {c.flight_time:g} s the paper counts "
+                f"{c.paper_rotations} rotations, so θ(T) = {c.paper_rotations} × 360° = "
+                f"{c.paper_rotations * 360:.1f}°, and θ(T) mod 360° = {frac * 360:.1f}° "
+                f"(coinflight: {r.theta_mod_deg:.1f}°). That angle lies in "
+                f"{_quadrant_words(r.theta_mod_deg)}, so cos θ(T) = {r.cos_theta:+.4f}. By the "
+                "paper's own rule (§2.1 i: θ ∈ (0, π/2) ∪ (3π/2, 2π) ⇔ cos θ > 0 ⇒ head up), "
+                f"the coin ends {r.face.upper()} up, not {c.paper_face} up as the text says. "
+                "A head-down ending would need the fractional part of the rotation count to lie "
+                f"between 0.25 and 0.75; it is {frac:.3f}."
+            ),
+        )
+    doc.add(
+        Heading('The ranges written "T = v0/g"', 3),
+        Paragraph(
+            "Section 3 gives the ranges as T = v0/g ∈ [0.6, 0.9] s, but eq 11 defines the "
+            "flight time as T = 2 v0/g. The paper's own numbers use T as the flight time: "
+            "80 rad/s × 0.7 s / 2π = 8.913 rotations (Fig 2c) is θ(T) = ωx0·T with T = 0.7 s, "
+            "whereas a flight of 2 v0/g with v0/g = 0.7 s would last 1.4 s and give 17.83 "
+            "rotations. Its speeds agree too: 3 to 5 m/s corresponds to 2 v0/g = 0.61 to "
+            '1.02 s ("approximately 0.6 s to 1 s"). coinflight therefore reads the ranges as '
+            "flight times (launch speeds 2.94 to 4.41 m/s for T ∈ [0.6, 0.9] s)."
+        ),
+    )
+    doc.add(
+        Heading("3. Probabilities (Figs 2a-b, 3a-b)"),
+        Paragraph(
+            f"Method A: the ranges of ωx0 and T cut into {METHOD_A_INTERVALS} intervals each, "
+            f"heads counted over the {METHOD_A_INTERVALS}² cell midpoints (an exact count). "
+            f"Method B: {numbers.method_b_events:,} random events drawn among the midpoints of "
+            f"{METHOD_B_INTERVALS} intervals per parameter (seed {numbers.seed}); it converges "
+            f"to the {METHOD_B_INTERVALS} × {METHOD_B_INTERVALS} grid value, shown beside it. "
+            "Exact: the measure of the heads bands integrated in closed form (Keller 1986). "
+            "The paper states no probability beyond 'tends to the unbiased value of 50%'."
+        ),
+        probability_table(prob, numbers.method_b_events),
+    )
+    doc.add(Heading("4. Figures"))
+    captions = _captions(numbers)
+    for stem in FIGURES:
+        doc.add(Image(f"{stem}.{image_suffix}", captions[stem]))
+    doc.add(
+        Heading("5. Timings"),
+        Table(
+            ("step", "seconds"),
+            (
+                *((k, f"{v:.2f}") for k, v in numbers.timings.items()),
+                ("whole reproduction before writing the report", f"{elapsed:.2f}"),
+            ),
+        ),
+    )
+    return doc
+
+
+def rotation_table(rows: tuple[RotationRow, ...]) -> Table:
+    """Rotations and faces: the paper's numbers beside coinflight's."""
+    return Table(
+        (
+            "Fig",
+            "ωx0 (rad/s)",
+            "ωy0 (rad/s)",
+            "T (s)",
+            "rotations, paper",
+            "rotations, coinflight",
+            "agree",
+            "θ(T) mod 360°",
+            "cos θ(T)",
+            "face by eq 14",
+            "face in the paper's text",
+            "agree",
+        ),
+        tuple(
+            (
+                r.case.figure,
+                f"{r.case.omega_x:g}",
+                f"{r.case.omega_y:g}",
+                f"{r.case.flight_time:g}",
+                f"{r.case.paper_rotations:.{r.case.decimals}f}",
+                f"{r.rotations:.6f}",
+                _yes(r.rotations_agree),
+                f"{r.theta_mod_deg:.1f}°",
+                f"{r.cos_theta:+.4f}",
+                r.face,
+                _face_word(r.case.paper_face),
+                _yes(r.face_agrees),
+            )
+            for r in rows
+        ),
+    )
+
+
+def probability_table(rows: tuple[ProbabilityRow, ...], events: int) -> Table:
+    """Probabilities by methods A and B beside the exact value."""
+    out = []
+    for r in rows:
+        c = r.case
+        limit_b = r.method_b_limit.p_heads
+        ci = r.method_b.ci95
+        out.append(
+            (
+                c.figure,
+                f"{c.omega_x[0]:g}–{c.omega_x[1]:g}",
+                f"{c.omega_y:g}",
+                f"{c.flight_time[0]:g}–{c.flight_time[1]:g}",
+                "→ 50 %",
+                f"{r.method_a.p_heads:.6f}",
+                f"{r.method_b.p_heads:.4f} [{ci[0]:.4f}, {ci[1]:.4f}]" if ci else "",
+                f"{limit_b:.4f}",
+                f"{r.exact.p_heads:.6f}",
+                f"{r.method_a.p_heads - r.exact.p_heads:+.1e}",
+            )
+        )
+    return Table(
+        (
+            "Fig",
+            "ωx0 (rad/s)",
+            "ωy0 (rad/s)",
+            "T (s)",
+            "paper",
+            f"method A ({METHOD_A_INTERVALS}²)",
+            f"method B ({events:,} events, 95 % CI)",
+            f"{METHOD_B_INTERVALS}² grid (B's limit)",
+            "exact",
+            "A − exact",
+        ),
+        tuple(out),
+    )
+
+
+def _quadrant_words(deg: float) -> str:
+    if deg < 90:
+        return "(0°, 90°)"
+    if deg < 180:
+        return "(90°, 180°)"
+    if deg < 270:
+        return "(180°, 270°)"
+    return "(270°, 360°)"
+
+
+__all__ = [
+    "FIGURES",
+    "STEPS",
+    "ConvergenceCurves",
+    "PaperReport",
+    "build_document",
+    "convergence_curves",
+    "plot_convergence_curves",
+    "probability_table",
+    "reproduce_paper",
+    "rotation_table",
+]
