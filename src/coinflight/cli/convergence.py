@@ -1,0 +1,176 @@
+"""``coinflight convergence``: estimates against configurations / events (the paper's Figs 2-3)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.options import (
+    CoinName,
+    Gravity,
+    JsonFlag,
+    Mass,
+    Radius,
+    StartFace,
+    Thickness,
+    print_json,
+    resolve_coin,
+)
+from coinflight.cli.probability import (
+    METHOD_PANEL,
+    FlightTimeDist,
+    LaunchSpeedDist,
+    OmegaX,
+    OmegaY,
+    OmegaZ,
+    Seed,
+    Threads,
+    build_distribution,
+)
+from coinflight.cli.progress import Quiet, progress_bar
+
+
+def _int_list(text: str, option: str) -> list[int]:
+    try:
+        values = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
+    if not values:
+        raise ValueError(f"{option} {text!r}: give at least one size")
+    return values
+
+
+Methods = Annotated[
+    str,
+    typer.Option(
+        "--methods",
+        metavar="LIST",
+        rich_help_panel=METHOD_PANEL,
+        help="Comma-separated: grid (method A), monte-carlo (method B with --grid-cells 100, "
+        "the default), qmc.",
+    ),
+]
+Cells = Annotated[
+    int,
+    typer.Option(
+        "--grid-cells",
+        metavar="C",
+        rich_help_panel=METHOD_PANEL,
+        help="Cells per parameter for method B (the paper: 100); 0 for plain Monte Carlo.",
+    ),
+]
+Out = Annotated[
+    Path,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="PREFIX",
+        rich_help_panel="Output",
+        help="Write PREFIX.csv, PREFIX.json, PREFIX.png and PREFIX.svg (a directory: "
+        "DIR/convergence.*).",
+    ),
+]
+
+
+def convergence(
+    omega_x: OmegaX = "60:90",
+    omega_y: OmegaY = "0",
+    omega_z: OmegaZ = "0",
+    flight_time: FlightTimeDist = None,
+    launch_speed: LaunchSpeedDist = None,
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    methods: Methods = "grid,monte-carlo",
+    grid_sizes: Annotated[
+        str | None,
+        typer.Option(
+            "--grid-sizes",
+            metavar="N1,N2,…",
+            rich_help_panel=METHOD_PANEL,
+            help="Cells per parameter for method A (default 5,10,…,5000).",
+        ),
+    ] = None,
+    event_sizes: Annotated[
+        str | None,
+        typer.Option(
+            "--event-sizes",
+            metavar="N1,N2,…",
+            rich_help_panel=METHOD_PANEL,
+            help="Events for method B / Monte Carlo (default 100,…,10000000).",
+        ),
+    ] = None,
+    qmc_sizes: Annotated[
+        str | None,
+        typer.Option(
+            "--qmc-sizes",
+            metavar="N1,N2,…",
+            rich_help_panel=METHOD_PANEL,
+            help="QMC points, each 16 × a power of two (default 64,…,1048576).",
+        ),
+    ] = None,
+    grid_cells: Cells = 100,
+    seed: Seed = None,
+    threads: Threads = None,
+    out: Out = Path("convergence"),
+    quiet: Quiet = False,
+    json_output: JsonFlag = False,
+) -> None:
+    """Estimates of P(heads) as configurations / events grow, with the exact value.
+
+    Example (the paper's Fig 2a): coinflight convergence --omega-x 60:90 --flight-time 0.6:0.9
+    --seed 1 --out fig2a
+    """
+    from coinflight.plotting.convergence import convergence_figure
+    from coinflight.plotting.style import save_figure
+    from coinflight.probability.convergence import convergence as run
+    from coinflight.probability.convergence import work_total
+
+    the_coin = resolve_coin(coin, radius, thickness, mass)
+    dist = build_distribution(
+        omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
+    )
+    method_list = [m.strip() for m in methods.split(",") if m.strip()]
+    sizes: dict[str, list[int]] = {}
+    if grid_sizes is not None:
+        sizes["grid_sizes"] = _int_list(grid_sizes, "--grid-sizes")
+    if event_sizes is not None:
+        sizes["event_sizes"] = _int_list(event_sizes, "--event-sizes")
+    if qmc_sizes is not None:
+        sizes["qmc_sizes"] = _int_list(qmc_sizes, "--qmc-sizes")
+    if grid_cells < 0:
+        raise ValueError(
+            f"--grid-cells must be 0 (plain Monte Carlo) or positive, got {grid_cells}"
+        )
+    prefix = out / "convergence" if out.is_dir() or str(out).endswith("/") else out
+    total = work_total(dist, method_list, **sizes)
+    with progress_bar(total, "convergence", quiet) as bar:
+        result = run(
+            dist,
+            method_list,
+            seed=seed,
+            grid_cells=grid_cells or None,
+            threads=threads,
+            progress=bar,
+            **sizes,  # type: ignore[arg-type]
+        )
+    written = result.write(prefix)
+    fig = convergence_figure(result)
+    written += save_figure(fig, prefix.with_name(prefix.name + ".png"))
+    written += save_figure(fig, prefix.with_name(prefix.name + ".svg"))
+    if json_output:
+        payload = result.to_dict()
+        payload["files"] = [str(p) for p in written]
+        print_json(payload)
+        return
+    exact = "not available" if result.exact is None else f"{result.exact:.6f} ({result.exact_how})"
+    typer.echo(f"exact P(heads) = {exact}")
+    for m in result.methods:
+        last = result.series(m)[-1]
+        typer.echo(f"{m}: P(heads) = {last.p_heads:.6f} at {last.samples:,} (largest size)")
+    typer.echo(f"seed {result.seed}; wrote {', '.join(str(p) for p in written)}")

@@ -1,0 +1,211 @@
+"""``coinflight probability``: the chance of heads for a range of tosses."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from coinflight.cli.options import (
+    TOSS_PANEL,
+    CoinName,
+    Gravity,
+    JsonFlag,
+    Mass,
+    Radius,
+    StartFace,
+    Thickness,
+    print_json,
+    resolve_coin,
+)
+from coinflight.cli.progress import Quiet, progress_bar
+
+if TYPE_CHECKING:
+    from coinflight.coin import Coin
+    from coinflight.ensemble import TossDistribution
+
+METHOD_PANEL = "Method"
+_DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
+
+
+def _dist_option(flag: str, what: str, unit: str) -> object:
+    return typer.Option(
+        flag, metavar="DIST", rich_help_panel=TOSS_PANEL, help=f"{what}, {unit}: {_DIST_HELP}."
+    )
+
+
+OmegaX = Annotated[str, _dist_option("--omega-x", "Spin about the x diameter", "rad/s")]
+OmegaY = Annotated[str, _dist_option("--omega-y", "Spin about the y diameter", "rad/s")]
+OmegaZ = Annotated[str, _dist_option("--omega-z", "Spin about the normal", "rad/s")]
+FlightTimeDist = Annotated[
+    str | None, _dist_option("--flight-time", "Flight time T (catch at launch height)", "s")
+]
+LaunchSpeedDist = Annotated[
+    str | None, _dist_option("--launch-speed", "Upward launch speed v0 (T = 2 v0 / g)", "m/s")
+]
+Method = Annotated[
+    str,
+    typer.Option(
+        "--method",
+        "-m",
+        metavar="exact|grid|monte-carlo|qmc",
+        rich_help_panel=METHOD_PANEL,
+        help="exact: band integral; grid: the paper's method A (N cells per ranged parameter); "
+        "monte-carlo: N random tosses (with --grid-cells 100: the paper's method B); "
+        "qmc: scrambled Sobol points.",
+    ),
+]
+Size = Annotated[
+    int | None,
+    typer.Option(
+        "--n",
+        "-n",
+        metavar="N",
+        rich_help_panel=METHOD_PANEL,
+        help="grid: cells per ranged parameter (default 5000); monte-carlo: tosses (default "
+        "1000000); qmc: points, 16 × a power of two (default 1048576).",
+    ),
+]
+Seed = Annotated[
+    int | None,
+    typer.Option(
+        "--seed",
+        metavar="S",
+        rich_help_panel=METHOD_PANEL,
+        help="Seed for monte-carlo and qmc (reported; drawn at random if not given).",
+    ),
+]
+GridCells = Annotated[
+    int | None,
+    typer.Option(
+        "--grid-cells",
+        metavar="C",
+        rich_help_panel=METHOD_PANEL,
+        help="monte-carlo only: draw from the midpoints of C cells per parameter "
+        "(the paper's method B uses 100).",
+    ),
+]
+Threads = Annotated[
+    int | None,
+    typer.Option(
+        "--threads",
+        metavar="K",
+        rich_help_panel=METHOD_PANEL,
+        help="Worker threads (default: all CPUs). The result does not depend on it.",
+    ),
+]
+
+
+def build_distribution(
+    omega_x: str,
+    omega_y: str,
+    omega_z: str,
+    flight_time: str | None,
+    launch_speed: str | None,
+    coin: Coin,
+    start: str,
+    g: float,
+) -> TossDistribution:
+    """The :class:`~coinflight.ensemble.TossDistribution` for the command-line options."""
+    from coinflight.distributions import parse_distribution
+    from coinflight.ensemble import TossDistribution
+
+    wx = parse_distribution(omega_x, "--omega-x", "rad/s")
+    wy = parse_distribution(omega_y, "--omega-y", "rad/s")
+    wz = parse_distribution(omega_z, "--omega-z", "rad/s")
+    if (flight_time is None) == (launch_speed is None):
+        raise ValueError("give exactly one of --flight-time and --launch-speed")
+    if flight_time is not None:
+        t = parse_distribution(flight_time, "--flight-time", "s")
+        return TossDistribution(wx, wy, wz, t, coin=coin, start=start, g=g)  # type: ignore[arg-type]
+    assert launch_speed is not None
+    v0 = parse_distribution(launch_speed, "--launch-speed", "m/s")
+    return TossDistribution.from_launch_speed(wx, wy, wz, v0, coin=coin, start=start, g=g)  # type: ignore[arg-type]
+
+
+def work_total(method: str, n: int | None, k: int) -> int:
+    """Units of work the library reports through ``progress`` for this request."""
+    if method == "grid":
+        return (n or 5000) ** k
+    if method == "monte-carlo":
+        return n or 10**6
+    return n or (1 << 20)
+
+
+def probability(
+    omega_x: OmegaX = "80",
+    omega_y: OmegaY = "0",
+    omega_z: OmegaZ = "0",
+    flight_time: FlightTimeDist = None,
+    launch_speed: LaunchSpeedDist = None,
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinName = None,
+    radius: Radius = None,
+    thickness: Thickness = None,
+    mass: Mass = None,
+    method: Method = "exact",
+    n: Size = None,
+    seed: Seed = None,
+    grid_cells: GridCells = None,
+    threads: Threads = None,
+    quiet: Quiet = False,
+    json_output: JsonFlag = False,
+) -> None:
+    """Chance of heads for tosses spread over ranges of spin and flight time.
+
+    Example (the paper's Fig 2a): coinflight probability --omega-x 60:90 --flight-time 0.6:0.9
+    --method grid --n 5000
+    """
+    from coinflight.probability import METHODS, estimate
+
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    the_coin = resolve_coin(coin, radius, thickness, mass)
+    dist = build_distribution(
+        omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
+    )
+    options: dict[str, Any] = {}
+    if grid_cells is not None:
+        if method != "monte-carlo":
+            raise ValueError("--grid-cells applies to --method monte-carlo only")
+        options["grid_cells"] = grid_cells
+    if seed is not None and method not in ("monte-carlo", "qmc"):
+        raise ValueError(f"--seed applies to monte-carlo and qmc, not {method}")
+    if threads is not None and method == "exact":
+        raise ValueError("--threads does not apply to the exact method")
+    total = work_total(method, n, len(dist.ranged))
+    with progress_bar(total, f"{method}", quiet) as bar:
+        result = estimate(dist, method, n=n, seed=seed, threads=threads, progress=bar, **options)
+    if json_output:
+        payload = result.to_dict()
+        payload["distribution"] = {name: d.describe() for name, d in dist.parameters.items()}
+        payload["coin"] = the_coin.name
+        payload["start"] = start
+        print_json(payload)
+        return
+    typer.echo(dist.describe())
+    typer.echo(result.describe())
+    line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
+    typer.echo(line)
+    typer.echo(_method_line(result))
+
+
+def _method_line(result: object) -> str:
+    from coinflight.probability import ProbabilityResult
+
+    assert isinstance(result, ProbabilityResult)
+    d = result.details
+    if result.method == "exact":
+        extra = f"{d['how']}"
+        if "warning" in d:
+            extra += f"; quadrature warning: {d['warning']}"
+    elif result.method == "grid":
+        extra = f"{result.n} cells per ranged parameter, {result.samples:,} configurations"
+    elif result.method == "monte-carlo":
+        b = d.get("grid_cells")
+        extra = f"{result.n:,} tosses" + (f" drawn from {b} cells (method B)" if b else "")
+        extra += f", seed {result.seed}"
+    else:
+        extra = f"{result.n:,} Sobol points in {d['replicates']} scramblings, seed {result.seed}"
+    return f"method {result.method}: {extra}; {result.elapsed:.3g} s"

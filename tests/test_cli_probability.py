@@ -1,0 +1,211 @@
+"""``coinflight probability`` and ``coinflight convergence`` through typer's CliRunner."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from coinflight.cli import app
+from coinflight.distributions import Uniform
+from coinflight.ensemble import TossDistribution
+from coinflight.probability import estimate
+
+runner = CliRunner()
+FIG2A = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # Stefan & Cheche Fig 2a
+
+
+def run(*args: str):
+    return runner.invoke(app, list(args))
+
+
+def test_exact_json_matches_library():
+    result = run("probability", *FIG2A, "--json")
+    assert result.exit_code == 0, result.stderr
+    payload = json.loads(result.stdout)
+    expected = estimate(TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9)))
+    assert payload["p_heads"] == pytest.approx(expected.p_heads, abs=1e-15)
+    assert payload["p_tails"] == pytest.approx(1 - expected.p_heads, abs=1e-15)
+    assert payload["method"] == "exact" and payload["n"] is None
+    assert {"stderr", "ci95"} <= set(payload)
+
+
+@pytest.mark.parametrize(
+    ("method", "n", "extra"),
+    [
+        ("grid", "500", []),
+        ("monte-carlo", "200000", ["--seed", "7"]),
+        ("monte-carlo", "200000", ["--seed", "7", "--grid-cells", "100"]),
+        ("qmc", "16384", ["--seed", "7"]),
+    ],
+)
+def test_methods_json(method, n, extra):
+    result = run("probability", *FIG2A, "--method", method, "--n", n, *extra, "--json")
+    assert result.exit_code == 0, result.stderr
+    p = json.loads(result.stdout)
+    assert p["method"] == method and p["n"] == int(n)
+    assert p["p_heads"] + p["p_tails"] == pytest.approx(1.0)
+    if method == "grid":
+        assert p["samples"] == int(n) ** 2 and p["stderr"] is None
+    else:
+        assert p["stderr"] > 0 and p["ci95"][0] < p["p_heads"] < p["ci95"][1]
+        assert p["seed"] == 7
+        # Within 4 standard errors of the exact value (or method B's 100-cell grid).
+        target = 0.497470690 if "--grid-cells" not in extra else _coarse()
+        assert abs(p["p_heads"] - target) < 4 * p["stderr"]
+    assert result.stderr == ""  # no progress bar when stderr is not a terminal
+
+
+def _coarse() -> float:
+    return estimate(
+        TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9)), "grid", n=100
+    ).p_heads
+
+
+def test_same_seed_same_answer_any_threads():
+    a = run("probability", *FIG2A, "-m", "monte-carlo", "-n", "100000", "--seed", "3", "--json")
+    b = run(
+        "probability",
+        *FIG2A,
+        "-m",
+        "monte-carlo",
+        "-n",
+        "100000",
+        "--seed",
+        "3",
+        "--threads",
+        "1",
+        "--json",
+    )
+    assert json.loads(a.stdout)["counts"] == json.loads(b.stdout)["counts"]
+
+
+def test_plain_output_readable():
+    result = run("probability", *FIG2A, "-m", "monte-carlo", "-n", "100000", "--seed", "1")
+    assert result.exit_code == 0
+    out = result.stdout
+    assert "P(heads) = 0.49" in out and "±" in out and "95 % CI" in out
+    assert "seed 1" in out and "100,000 tosses" in out
+    exact = run("probability", *FIG2A)
+    assert "P(heads) = 0.497471 (closed form)" in exact.stdout
+
+
+def test_launch_speed_and_normal():
+    # T = 2 v0 / g (eq 11): launch speed 2.943:4.4145 m/s with g = 9.81 is T = 0.6:0.9 s.
+    a = json.loads(
+        run("probability", "--omega-x", "60:90", "--launch-speed", "2.943:4.4145", "--json").stdout
+    )
+    assert a["p_heads"] == pytest.approx(0.497470690, abs=1e-8)
+    b = run("probability", "--omega-x", "normal:75,5", "--flight-time", "0.6:0.9", "--json")
+    assert b.exit_code == 0 and 0.45 < json.loads(b.stdout)["p_heads"] < 0.55
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--omega-x", "90:60", "--flight-time", "0.6:0.9"], "reversed"),
+        (["--omega-x", "60:60", "--flight-time", "0.6:0.9"], "empty"),
+        (["--omega-x", "60:90", "--flight-time", "0.9:0.6"], "--flight-time"),
+        (["--omega-x", "normal:75,0", "--flight-time", "0.7"], "standard deviation"),
+        ([*FIG2A, "--method", "magic"], "unknown method 'magic'"),
+        ([*FIG2A, "--method", "grid", "--n", "0"], "n must be at least 1"),
+        ([*FIG2A, "--method", "monte-carlo", "--n", "-3"], "n must be at least 1"),
+        ([*FIG2A, "--method", "qmc", "--n", "1000"], "power of two"),
+        ([*FIG2A, "--grid-cells", "100"], "--grid-cells applies to --method monte-carlo"),
+        (["--omega-x", "60:90", "--omega-z", "1:2", "--flight-time", "0.7"], "fixed flight time"),
+        (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
+        ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
+        ([*FIG2A, "--n", "abc"], "--n"),
+    ],
+)
+def test_bad_input_is_one_line_exit_2(args, words):
+    result = run("probability", *args)
+    assert result.exit_code == 2
+    assert result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("coinflight: error:")
+    assert words in lines[0]
+
+
+def test_convergence_writes_all_outputs(tmp_path):
+    prefix = tmp_path / "fig2a"
+    result = run(
+        "convergence",
+        *FIG2A,
+        "--methods",
+        "grid,monte-carlo,qmc",
+        "--grid-sizes",
+        "10,100,1000",
+        "--event-sizes",
+        "1000,100000",
+        "--qmc-sizes",
+        "256,4096",
+        "--seed",
+        "4",
+        "--out",
+        str(prefix),
+        "--json",
+    )
+    assert result.exit_code == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert payload["exact"] == pytest.approx(0.497470690, abs=1e-8)
+    for suffix in (".csv", ".json", ".png", ".svg"):
+        assert (tmp_path / f"fig2a{suffix}").stat().st_size > 0
+    with (tmp_path / "fig2a.csv").open() as fh:
+        rows = list(csv.DictReader(fh))
+    assert [r["method"] for r in rows] == ["grid"] * 3 + ["monte-carlo"] * 2 + ["qmc"] * 2
+    assert [int(r["samples"]) for r in rows[:3]] == [100, 10_000, 1_000_000]
+    # Method A converges: the finest grid is closest to the exact value.
+    errs = [abs(float(r["p_heads"]) - payload["exact"]) for r in rows[:3]]
+    assert errs[2] == min(errs) and errs[2] < 1e-4
+    saved = json.loads((tmp_path / "fig2a.json").read_text())
+    assert saved["points"] == payload["points"] and saved["seed"] == 4
+    assert (tmp_path / "fig2a.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_convergence_into_directory_and_errors(tmp_path):
+    result = run(
+        "convergence",
+        *FIG2A,
+        "--methods",
+        "grid",
+        "--grid-sizes",
+        "10,20",
+        "--out",
+        str(tmp_path),
+    )
+    assert result.exit_code == 0, result.stderr
+    assert (tmp_path / "convergence.csv").exists() and (tmp_path / "convergence.svg").exists()
+    assert "exact P(heads) = 0.497471" in result.stdout
+    bad = run("convergence", *FIG2A, "--methods", "grid,exact", "--out", str(tmp_path / "x"))
+    assert bad.exit_code == 2 and "unknown method 'exact'" in bad.stderr
+    bad = run("convergence", *FIG2A, "--grid-sizes", "10,x", "--out", str(tmp_path / "y"))
+    assert bad.exit_code == 2 and "--grid-sizes" in bad.stderr
+    assert not list(tmp_path.glob("x*")) and not list(tmp_path.glob("y*"))
+
+
+def test_progress_bar_only_on_a_terminal(monkeypatch):
+    from coinflight.cli import progress
+
+    monkeypatch.setattr(progress, "DELAY", 0.0)
+    with progress.progress_bar(10, "x", quiet=True) as bar:
+        assert bar is None
+
+    class Tty:
+        def isatty(self):
+            return True
+
+        def write(self, s):
+            return len(s)
+
+        def flush(self):
+            pass
+
+    monkeypatch.setattr(progress.sys, "stderr", Tty())
+    with progress.progress_bar(10, "x", quiet=False) as bar:
+        assert bar is not None
+        bar(4)
+        bar(6)
+        assert bar.done == 10
