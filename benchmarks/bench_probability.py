@@ -1,0 +1,168 @@
+"""Speed and memory of the probability methods (issue 3), ratios measured in one run.
+
+    python benchmarks/bench_probability.py            # everything (about a minute)
+    python benchmarks/bench_probability.py --quick    # skip the billion-toss memory run
+
+Monte Carlo of fully general tosses (ωx, ωy, ωz and T all random, precession included), side
+by side with a plain NumPy vectorised baseline (Generator draws + the NumPy closed form) and
+per-toss numerical integration (``coinflight.core.numerical.integrate``, SciPy DOP853); the
+grid method at 5000² and 100000² configurations; the exact method; peak resident memory of
+a billion Monte Carlo tosses. Medians of repeats.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import resource
+import statistics
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+from coinflight.core import sampling
+from coinflight.core.numerical import integrate
+from coinflight.core.torque_free import normal_alignment
+from coinflight.distributions import Uniform
+from coinflight.ensemble import TossDistribution
+from coinflight.probability import estimate
+
+GENERAL = TossDistribution(
+    Uniform(60.0, 90.0), Uniform(-10.0, 10.0), Uniform(-20.0, 20.0), Uniform(0.6, 0.9)
+)
+FIG2A = TossDistribution(Uniform(60.0, 90.0), 0, 0, Uniform(0.6, 0.9))
+FIG3B = TossDistribution(Uniform(60.0, 90.0), 60.0, 0, Uniform(0.6, 0.9))
+
+
+def median_time(fn: Callable[[], object], repeats: int) -> float:
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def machine() -> str:
+    cpu = platform.processor() or "?"
+    try:
+        with open("/proc/cpuinfo") as fh:
+            cpu = next(line.split(":", 1)[1].strip() for line in fh if "model name" in line)
+    except (OSError, StopIteration):
+        pass
+    import numba
+    import scipy
+
+    return (
+        f"{cpu}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}, "
+        f"Python {platform.python_version()}, NumPy {np.__version__}, numba {numba.__version__}, "
+        f"SciPy {scipy.__version__}; load average {os.getloadavg()[0]:.2f}"
+    )
+
+
+def numpy_baseline(n: int, seed: int = 0, chunk: int = 1 << 20) -> int:
+    """Plain NumPy: Generator draws and the closed form on arrays, chunk by chunk."""
+    rng = np.random.default_rng(seed)
+    i1, i3 = GENERAL.moments
+    same = 0
+    for start in range(0, n, chunk):
+        m = min(chunk, n - start)
+        wx, wy, wz, t = GENERAL.sample(rng, m)
+        same += int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0.0))
+    return same
+
+
+def per_toss_ivp(n: int, seed: int = 0) -> int:
+    """One SciPy integration of Euler's equations per toss (the numerical reference)."""
+    rng = np.random.default_rng(seed)
+    i1, i3 = GENERAL.moments
+    wx, wy, wz, t = GENERAL.sample(rng, n)
+    same = 0
+    for j in range(n):
+        traj = integrate((wx[j], wy[j], wz[j]), (i1, i1, i3), [t[j]], rtol=1e-10, atol=1e-10)
+        same += int(traj.normal()[-1, 2] > 0.0)
+    return same
+
+
+def billion_rss(n: int) -> None:
+    """Child process: n Monte Carlo tosses, then print elapsed time and peak RSS."""
+    sampling.warm_up()
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    t0 = time.perf_counter()
+    r = estimate(GENERAL, "monte-carlo", n=n, seed=1)
+    dt = time.perf_counter() - t0
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
+    print(f"{dt:.3f} {peak / 1024:.1f} {before / 1024:.1f} {r.p_heads:.6f}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--quick", action="store_true", help="skip the billion-toss run")
+    parser.add_argument("--_rss", type=int, default=0, help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args._rss:
+        billion_rss(args._rss)
+        return
+
+    print(f"machine: {machine()}")
+    t0 = time.perf_counter()
+    sampling.warm_up()
+    print(f"numba kernels ready (loaded from the on-disk cache): {time.perf_counter() - t0:.2f} s")
+
+    print("\nMonte Carlo, fully general tosses (ωx, ωy, ωz, T all uniform; precession):")
+    n_fast = 1 << 27
+    estimate(GENERAL, "monte-carlo", n=1 << 20, seed=1)
+    rates = {}
+    for threads in (1, 2):
+        dt = median_time(
+            lambda th=threads: estimate(GENERAL, "monte-carlo", n=n_fast, seed=1, threads=th), 3
+        )
+        rates[f"coinflight kernel, {threads} thread{'s' * (threads > 1)}"] = n_fast / dt
+    n_np = 1 << 23
+    numpy_baseline(1 << 16)
+    rates["plain NumPy vectorised (1 thread)"] = n_np / median_time(lambda: numpy_baseline(n_np), 3)
+    n_ivp = 30
+    rates["per-toss solve_ivp (1 thread)"] = n_ivp / median_time(lambda: per_toss_ivp(n_ivp), 3)
+    best = rates["coinflight kernel, 2 threads"]
+    for name, rate in rates.items():
+        ratio = best / rate
+        print(f"  {name:38s} {rate:14,.0f} tosses/s   kernel (2 threads) is {ratio:,.3g}x faster")
+    print(
+        f"  target ≥ 50 M tosses/s: {'met' if best >= 50e6 else 'NOT met'} ({best / 1e6:.1f} M/s)"
+    )
+
+    print("\nGrid (method A), Fig 2a box (ωx 60-90 rad/s, T 0.6-0.9 s), exact counts:")
+    for n, target in ((5000, 0.1), (100_000, 10.0)):
+        estimate(FIG2A, "grid", n=n)
+        dt = median_time(lambda n=n: estimate(FIG2A, "grid", n=n), 5)
+        p = estimate(FIG2A, "grid", n=n).p_heads
+        print(f"  {n}² = {n * n:.3g} configurations: {dt * 1e3:9.2f} ms (target < {target:g} s)")
+        print(f"    p = {p:.9f}")
+
+    print("\nExact (closed form band integral):")
+    for name, d in (("Fig 2a", FIG2A), ("Fig 3b", FIG3B)):
+        estimate(d, "exact")
+        dt = median_time(lambda d=d: estimate(d, "exact"), 50)
+        print(
+            f"  {name}: {dt * 1e3:.3f} ms (target < 10 ms) p = {estimate(d, 'exact').p_heads:.12f}"
+        )
+
+    if not args.quick:
+        n = 10**9
+        print(f"\nMemory: {n:.0e} Monte Carlo tosses in a fresh process (peak resident set):")
+        out = subprocess.run(
+            [sys.executable, __file__, "--_rss", str(n)], capture_output=True, text=True, check=True
+        ).stdout.split()
+        dt, peak, before, p = float(out[0]), float(out[1]), float(out[2]), float(out[3])
+        print(
+            f"  {dt:.1f} s ({n / dt / 1e6:.1f} M tosses/s), peak RSS {peak:.0f} MB "
+            f"(before the run {before:.0f} MB; target < 300 MB), p = {p:.6f}"
+        )
+
+
+if __name__ == "__main__":
+    main()
