@@ -1,0 +1,142 @@
+"""Landing on a table: exact first contact, settling, heads↔tails symmetry, edge statistics."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from coinflight import Coin, Flight, Toss
+from coinflight.core import bounce
+from coinflight.landing import Landing, TableLanding, land
+from coinflight.surface import Drag, Surface
+
+G = 9.81
+NICKEL = Coin.preset("us-nickel")
+THICK = Coin(radius=0.012, thickness=0.024 / math.sqrt(3), mass=0.005)  # h/d = 1/√3
+
+
+def _tosses(n, seed, planar=False):
+    rng = np.random.default_rng(seed)
+    omega = np.column_stack(
+        [
+            rng.uniform(150.0, 300.0, n),
+            np.zeros(n) if planar else rng.uniform(-30.0, 30.0, n),
+            np.zeros(n) if planar else rng.uniform(-30.0, 30.0, n),
+        ]
+    )
+    return omega, rng.uniform(1.5, 3.0, n)
+
+
+def _first_contact_by_scipy(coin, omega, v0, drop):
+    """First time after the apex at which the closed-form flight's lowest point meets the table."""
+    toss = Toss.from_launch_speed(omega, v0)
+    flight = Flight(coin, toss)
+    r, hh = coin.radius, 0.5 * coin.thickness
+
+    def gap(t):
+        state = flight.at(t)
+        nz = state.normal[..., 2]
+        return state.height + drop - r * np.sqrt(1 - nz * nz) - hh * np.abs(nz)
+
+    # 400 samples per turn at 300 rad/s: no dip of the gap below zero falls between two.
+    t = np.linspace(v0 / G, 2 * v0 / G + 0.5, 20_001)
+    values = gap(t)
+    k = int(np.argmax(values <= 0))
+    tc = brentq(lambda s: float(gap(s)), t[k - 1], t[k], xtol=1e-15)
+    nz = float(flight.at(tc).normal[2])
+    edge_sine = hh / math.hypot(r, hh)
+    face = 2 if abs(nz) < edge_sine else (1 if nz > 0 else 0)
+    return tc, face
+
+
+@pytest.mark.parametrize("coin", [NICKEL, THICK], ids=["nickel", "thick"])
+def test_restitution_zero_no_friction_is_first_contact_outcome(coin):
+    omega, v0 = _tosses(8, 7)
+    surface = Surface("table", drop_height=0.3, restitution=0.0, friction=0.0)
+    out = land(coin, omega, v0, 1.0, G, surface)
+    for k in range(len(v0)):
+        tc, face = _first_contact_by_scipy(coin, omega[k], v0[k], 0.3)
+        assert out.first_contact[k] == pytest.approx(tc, abs=1e-9)
+        assert out.face[k] == face
+        assert out.bounces[k] == 0
+    # Stopping at the first contact (a basin map after 0 bounces) sees the same wells.
+    first = land(coin, omega, v0, 1.0, G, Surface("table", 0.3, 0.7, 0.4), max_bounces=0)
+    np.testing.assert_array_equal(first.face, out.face)
+    np.testing.assert_allclose(first.first_contact, out.first_contact, rtol=0, atol=1e-12)
+
+
+def test_bouncing_coin_settles():
+    omega, v0 = _tosses(20_000, 11)
+    out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.5, 0.3))
+    settled = np.isin(out.status, [bounce.SETTLED_ENERGY, bounce.SETTLED_ROCKING])
+    assert settled.all()
+    assert (out.bounces >= 1).mean() > 0.9
+    assert np.all(out.settle_time >= out.first_contact)
+    assert set(np.unique(out.face)) <= {0, 1, 2}
+
+
+def test_heads_tails_symmetry():
+    # A half turn about a diameter swaps the faces and leaves the cylinder as it was: started
+    # tails with ω = (ωx, −ωy, −ωz) is the mirror toss of started heads with (ωx, ωy, ωz).
+    omega, v0 = _tosses(5_000, 13)
+    surface = Surface("table", 0.5, 0.6, 0.3)
+    heads = land(THICK, omega, v0, 1.0, G, surface)
+    tails = land(THICK, omega * [1.0, -1.0, -1.0], v0, -1.0, G, surface)
+    swap = np.array([1, 0, 2], dtype=np.int8)
+    np.testing.assert_array_equal(tails.face, swap[heads.face])
+    np.testing.assert_array_equal(tails.bounces, heads.bounces)
+    np.testing.assert_allclose(tails.settle_time, heads.settle_time, rtol=1e-12)
+
+
+def test_planar_tosses_reproduce_yong_mahadevan_dynamic_edge_probability():
+    # Yong & Mahadevan 2011 (REFERENCES §5): vigorous planar tosses landing without bounce
+    # give P(edge) = 2 arctan(h/d)/π = 1/3 at h/d = 1/√3. Tolerance: 4 binomial sd.
+    n = 100_000
+    omega, v0 = _tosses(n, 17, planar=True)
+    out = land(THICK, omega, v0, 1.0, G, Surface("table", 0.5, 0.0, 0.0))
+    p = float(np.mean(out.face == 2))
+    assert abs(p - 1 / 3) < 4 * math.sqrt(p * (1 - p) / n)
+
+
+def test_drag_path_agrees_with_kernel_without_drag():
+    # The SciPy path (event location on the integrated flight) with a negligible drag against
+    # the exact event-driven kernel: the same bounces and outcome, first contact to 1e-8 s.
+    omega, v0 = _tosses(3, 19)
+    surface = Surface("table", 0.4, 0.5, 0.3)
+    exact = land(NICKEL, omega, v0, 1.0, G, surface)
+    slow = land(NICKEL, omega, v0, 1.0, G, surface, drag=Drag(coefficient=1e-12))
+    np.testing.assert_array_equal(slow.face, exact.face)
+    np.testing.assert_allclose(slow.first_contact, exact.first_contact, atol=1e-8)
+
+
+def test_landing_value_object_and_table_model():
+    toss = Toss(omega=[[240.0, 5.0, 3.0], [200.0, 0.0, 0.0]], flight_time=0.49)
+    landing = Landing(NICKEL, toss, Surface("table", 0.8))
+    assert landing.outcome.face.shape == (2,)
+    single = Landing(NICKEL, Toss((240.0, 5.0, 3.0), 0.49), Surface("table", 0.8)).outcome
+    assert single.face_name == ("heads", "tails", "edge")[[1, 0, 2].index(int(single.face))]
+    assert single.face == landing.outcome.face[0]
+    model = TableLanding(Surface("table", 0.8))
+    assert model.name == "table landing"
+
+
+@pytest.mark.parametrize(
+    ("call", "match"),
+    [
+        (lambda: Surface("table", restitution=1.2), "restitution must be between 0 and 1"),
+        (lambda: Surface("table", restitution=-0.1), "restitution must be between 0 and 1"),
+        (lambda: Surface("table", friction=-0.1), "friction must be non-negative"),
+        (lambda: Surface("table", drop_height=-0.2), "surface above the launch point"),
+        (lambda: Surface("floor"), "surface must be one of hand, table"),
+        (
+            lambda: Landing(NICKEL, Toss((200.0, 0, 0), 0.05), Surface("table", 0.0)).outcome,
+            "the coin must clear the surface",
+        ),
+    ],
+)
+def test_bad_input(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
