@@ -74,6 +74,33 @@ def test_probabilities_a_b_and_exact(numbers):
         )
 
 
+def test_convergence_series_reach_the_papers_sizes(numbers):
+    for row in numbers.probabilities:
+        conv = row.convergence
+        grid = conv.series("grid")
+        events = conv.series("monte-carlo")
+        # Method A up to 5000 intervals (5000² configurations), method B up to the events asked.
+        assert grid[-1].samples == 5000**2
+        assert grid[-1].p_heads == row.method_a.p_heads
+        assert events[-1].samples == 20_000
+        assert events[-1].p_heads == row.method_b.p_heads
+        assert conv.exact == row.exact.p_heads
+        assert conv.coarse_limit == row.method_b_limit.p_heads
+        n, err = row.error_at("grid", 10**4)
+        assert n == 10**4
+        (at_1e4,) = [p for p in grid if p.samples == 10**4]
+        assert err == abs(at_1e4.p_heads - conv.exact)
+
+
+def test_speed_and_other_checks_in_the_report():
+    from coinflight.report.reproduce import _other_checks
+
+    checks = " ".join(_other_checks())
+    # 3 and 5 m/s → T = 2 v0/g = 0.612 and 1.019 s; apex at T = 0.9 s: g T²/8 = 0.993 m.
+    assert "0.612 to 1.019 s" in checks
+    assert "0.993 m" in checks
+
+
 def test_document_renders_tables_in_both_formats():
     doc = Document("t")
     doc.add(Table(("a", "b|c"), (("1", "2"),)))
@@ -137,6 +164,7 @@ def test_report_table_is_right_against_the_paper_and_coinflight(paper_dir, numbe
     for stem in FIGURES:
         assert f'src="{stem}.png"' in html
     assert "head down" in html and "T = 2 v0/g" in html
+    assert "faster convergent" in md
 
 
 def test_cli_refuses_a_file_as_folder(tmp_path):

@@ -24,6 +24,7 @@ from coinflight.toss import Flight, Toss
 if TYPE_CHECKING:
     from coinflight.ensemble import TossDistribution
     from coinflight.probability import ProbabilityResult
+    from coinflight.probability.convergence import Convergence
 
 Step = Callable[[str], None]
 """Called with a short description each time a step of the reproduction finishes."""
@@ -142,7 +143,8 @@ class ProbabilityRow:
     """Method A, method B and the exact value for one :class:`ProbabilityCase`.
 
     ``method_b_limit`` is the grid value on method B's 100 × 100 grid: what method B tends to
-    as its number of events grows.
+    as its number of events grows. ``convergence`` holds both methods' series for growing
+    sizes (the curves of the paper's figure).
     """
 
     case: ProbabilityCase
@@ -150,6 +152,13 @@ class ProbabilityRow:
     method_a: ProbabilityResult
     method_b: ProbabilityResult
     method_b_limit: ProbabilityResult
+    convergence: Convergence
+
+    def error_at(self, method: str, samples: int) -> tuple[int, float]:
+        """(size, |p − exact|) of the ``method`` estimate whose sample count is nearest."""
+        series = self.convergence.series(method)
+        best = min(series, key=lambda p: abs(math.log(p.samples / samples)))
+        return best.samples, abs(best.p_heads - self.exact.p_heads)
 
 
 @dataclass(frozen=True)
@@ -204,11 +213,25 @@ def distribution(case: ProbabilityCase, coin: Coin) -> TossDistribution:
 def probability_row(
     case: ProbabilityCase, coin: Coin, seed: int, events: int = METHOD_B_EVENTS
 ) -> ProbabilityRow:
-    """Exact, method A (5000 intervals) and method B (100 intervals, ``events`` draws)."""
+    """Exact, method A (5000 intervals), method B (100 intervals, ``events`` draws), series."""
     from coinflight.probability import estimate
+    from coinflight.probability.convergence import (
+        DEFAULT_EVENT_SIZES,
+        DEFAULT_GRID_SIZES,
+        convergence,
+    )
 
     dist = distribution(case, coin)
+    event_sizes = (*(n for n in DEFAULT_EVENT_SIZES if n < events), events)
     return ProbabilityRow(
+        convergence=convergence(
+            dist,
+            ("grid", "monte-carlo"),
+            grid_sizes=DEFAULT_GRID_SIZES,
+            event_sizes=event_sizes,
+            seed=seed,
+            grid_cells=METHOD_B_INTERVALS,
+        ),
         case=case,
         exact=estimate(dist, "exact"),
         method_a=estimate(dist, "grid", n=METHOD_A_INTERVALS),
