@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.options import OUTPUT_PANEL, CoinName
+from coinflight.cli.progress import Quiet
 
 OutDir = Annotated[
     Path,
@@ -32,9 +33,6 @@ Events = Annotated[
         help="Method B: random events per probability figure (the paper does not say).",
     ),
 ]
-Quiet = Annotated[
-    bool, typer.Option("--quiet", "-q", rich_help_panel=OUTPUT_PANEL, help="No progress bar.")
-]
 
 
 def paper(
@@ -48,26 +46,18 @@ def paper(
 
     Example: coinflight paper --out paper/
     """
-    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-
     from coinflight.cli.options import resolve_coin
+    from coinflight.cli.progress import progress_bar
     from coinflight.report.reproduce import STEPS, reproduce_paper
 
     the_coin = resolve_coin(coin, None, None, None)
     if out.exists() and not out.is_dir():
         raise ValueError(f"--out must be a folder, but {str(out)!r} is a file")
-    with Progress(
-        TextColumn("[progress.description]{task.description:<28}"),
-        BarColumn(),
-        TextColumn("{task.completed}/{task.total}"),
-        TimeElapsedColumn(),
-        disable=quiet,
-        transient=False,
-    ) as bar:
-        task = bar.add_task("reproducing the paper", total=STEPS)
+    with progress_bar(STEPS, "reproducing the paper", quiet) as advance:
 
-        def step(message: str) -> None:
-            bar.update(task, advance=1, description=message)
+        def step(_message: str) -> None:
+            if advance is not None:
+                advance(1)
 
         report = reproduce_paper(out, coin=the_coin, seed=seed, events=events, step=step)
     rows = report.numbers.rotations
