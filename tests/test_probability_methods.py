@@ -12,6 +12,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from coinflight.core import bands, sampling
 from coinflight.distributions import Fixed, Normal, Uniform
@@ -265,3 +267,46 @@ def test_fast_sin_is_accurate():
     got = np.array([sampling.sin(v) for v in x[::7]])
     assert np.max(np.abs(got - np.sin(x[::7]))) < 5e-16
     assert sampling.sinc(0.0) == 1.0
+
+
+def test_compiled_kernels_match_numpy_closed_form():
+    # Guards the numba cache too: a kernel compiled from an older normal_alignment would differ.
+    from coinflight.core.torque_free import normal_alignment
+
+    rng = np.random.default_rng(8)
+    n = 200_000
+    wx, wy = rng.uniform(-100, 100, n), rng.uniform(-30, 30, n)
+    wz, t = rng.uniform(-200, 200, n), rng.uniform(0.2, 1.5, n)
+    i1, i3 = TossDistribution(0, 0, 0, 1.0).moments
+    expected = int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0))
+    assert sampling.count_same_side(wx, wy, wz, t, i1, i3) == expected
+    u = np.stack([(wx + 100) / 200, (wy + 30) / 60, (wz + 200) / 400, (t - 0.2) / 1.3])
+    rows = np.arange(4)
+    offset = np.array([-100.0, -30.0, -200.0, 0.2])
+    scale = np.array([200.0, 60.0, 400.0, 1.3])
+    values = offset[:, None] + scale[:, None] * u
+    expected = int(np.count_nonzero(normal_alignment(*values, i1, i3) > 0))
+    assert sampling.count_same_side_affine(u, rows, offset, scale, i1, i3) == expected
+
+
+@settings(deadline=None, max_examples=25)
+@given(
+    lo=st.floats(-50.0, 150.0),
+    width=st.floats(1.0, 60.0),
+    wy=st.floats(-40.0, 40.0),
+    t_lo=st.floats(0.2, 1.0),
+    t_width=st.one_of(st.just(0.0), st.floats(0.01, 0.5)),
+)
+def test_heads_tails_symmetry_and_sum(lo, width, wy, t_lo, t_width):
+    t = Uniform(t_lo, t_lo + t_width) if t_width > 0 else Fixed(t_lo)
+    heads_up = TossDistribution(Uniform(lo, lo + width), wy, 0, t)
+    tails_up = TossDistribution(Uniform(lo, lo + width), wy, 0, t, start="tails")
+    for method, n in (("exact", None), ("grid", 64)):
+        a, b = estimate(heads_up, method, n=n), estimate(tails_up, method, n=n)
+        assert a.p_heads + a.p_tails + a.p_edge == pytest.approx(1.0, abs=1e-12)
+        # Started tails up, the coin shows heads exactly when, started heads up, it shows tails.
+        assert b.p_heads == pytest.approx(a.p_tails, abs=1e-12)
+        assert b.p_same_side == pytest.approx(a.p_same_side, abs=1e-12)
+    # The closed form agrees with a fine grid for any such box.
+    fine = estimate(heads_up, "grid", n=4000).p_heads
+    assert estimate(heads_up, "exact").p_heads == pytest.approx(fine, abs=2e-3)
