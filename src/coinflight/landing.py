@@ -152,6 +152,48 @@ def land(
     return LandingOutcome(face, bounces, first, settle, status)
 
 
+def catch_with_drag(
+    coin: Coin,
+    omega: FloatArray,
+    launch_speed: FloatArray,
+    start_sign: float | FloatArray,
+    g: float,
+    drag: Drag,
+) -> tuple[NDArray[np.int8], FloatArray]:
+    """Caught in the hand at launch height after a flight through air: (face, catch time).
+
+    The face is the sign of the heads normal's vertical component when the centre of mass
+    comes back down to launch height (:func:`coinflight.core.drag.catch`); without drag this
+    is the closed form's heads iff n(T)·Z > 0. One SciPy integration per toss.
+    """
+    from coinflight.core import drag as drag_kernels
+    from coinflight.core.outcome import HEADS, TAILS
+
+    if not isinstance(drag, Drag):
+        raise TypeError(f"drag must be a Drag, got {type(drag).__name__}")
+    i1, i3 = coin.moments
+    model = drag_kernels.DragModel(
+        coin.mass,
+        coin.radius,
+        (i1, i1, i3),
+        g,
+        drag.coefficient,
+        drag.spin_damping,
+        drag.air_density,
+    )
+    omega = np.asarray(omega, dtype=float).reshape(-1, 3)
+    n = omega.shape[0]
+    speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (n,))
+    sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (n,))
+    face = np.empty(n, dtype=np.int8)
+    when = np.empty(n)
+    for k in range(n):
+        when[k], state = drag_kernels.catch(model, omega[k], float(speed[k]), float(sign[k]))
+        nz = float(drag_kernels.normal(state[9:13])[2])
+        face[k] = HEADS if nz > 0.0 else TAILS
+    return face, when
+
+
 @dataclass(frozen=True, eq=False)
 class Landing:
     """A toss (or a batch of tosses) that ends on a table.
@@ -237,12 +279,7 @@ class TableLanding(OutcomeModel):
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
         """(tails, heads, edge) counts for unit-cube points ``u`` (shape (len(ranged), n))."""
-        wx, wy, wz, t = dist.values(np.asarray(u, dtype=float))
-        n = np.asarray(u).shape[1]
-        omega = np.column_stack(
-            [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
-        )
-        speed = 0.5 * dist.g * np.broadcast_to(np.asarray(t, dtype=float), (n,))
+        omega, speed = _initial_conditions(dist, u)
         out = land(
             dist.coin,
             omega,
@@ -256,4 +293,40 @@ class TableLanding(OutcomeModel):
         return np.bincount(out.face, minlength=3).astype(np.int64)
 
 
-__all__ = ["STATUS_NAMES", "Landing", "LandingOutcome", "TableLanding", "land"]
+class DragCatch(OutcomeModel):
+    """Outcome model: caught in the hand at launch height after a flight through air."""
+
+    name = "hand catch with drag"
+
+    def __init__(self, drag: Drag) -> None:
+        if not isinstance(drag, Drag):
+            raise TypeError(f"drag must be a Drag, got {type(drag).__name__}")
+        self.drag = drag
+
+    def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
+        """(tails, heads, edge) counts for unit-cube points ``u`` (shape (len(ranged), n))."""
+        omega, speed = _initial_conditions(dist, u)
+        face, _ = catch_with_drag(dist.coin, omega, speed, dist.start_sign, dist.g, self.drag)
+        return np.bincount(face, minlength=3).astype(np.int64)
+
+
+def _initial_conditions(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """(ω (n, 3), v0 (n,)) for unit-cube points u of the distribution."""
+    wx, wy, wz, t = dist.values(np.asarray(u, dtype=float))
+    n = np.asarray(u).shape[1]
+    omega = np.column_stack(
+        [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
+    )
+    speed = 0.5 * dist.g * np.broadcast_to(np.asarray(t, dtype=float), (n,))
+    return omega, speed
+
+
+__all__ = [
+    "STATUS_NAMES",
+    "DragCatch",
+    "Landing",
+    "LandingOutcome",
+    "TableLanding",
+    "catch_with_drag",
+    "land",
+]

@@ -20,6 +20,19 @@ from coinflight.cli.options import (
     print_json,
     resolve_coin,
 )
+from coinflight.cli.surface import (
+    Bounces,
+    DragCoefficient,
+    DropHeight,
+    Friction,
+    Restitution,
+    SpinDamping,
+    SurfaceKindOption,
+    build_drag,
+    build_surface,
+    check_bounces,
+    report_landing,
+)
 
 if TYPE_CHECKING:
     from coinflight.toss import Toss
@@ -85,16 +98,31 @@ def toss(
     radius: Radius = None,
     thickness: Thickness = None,
     mass: Mass = None,
+    surface: SurfaceKindOption = "hand",
+    drop_height: DropHeight = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
+    drag: DragCoefficient = None,
+    spin_damping: SpinDamping = None,
+    bounces: Bounces = None,
     json_output: JsonFlag = False,
 ) -> None:
-    """Toss one coin and tell which face it shows when caught at launch height.
+    """Toss one coin and tell which face it shows: caught at launch height, or on a table.
 
     Example: coinflight toss --omega 80 0 0 --flight-time 0.7
+    (on a table: add --surface table --drop-height 0.8)
     """
     from coinflight.toss import Flight
 
     the_coin = resolve_coin(coin, radius, thickness, mass)
-    flight = Flight(the_coin, build_toss(omega, flight_time, launch_speed, start, g))
+    the_surface = build_surface(surface, drop_height, restitution, friction)
+    the_drag = build_drag(drag, spin_damping)
+    check_bounces(the_surface, bounces)
+    the_toss = build_toss(omega, flight_time, launch_speed, start, g)
+    if the_surface.bounces or the_drag is not None:
+        report_landing(the_coin, the_toss, the_surface, the_drag, json_output, bounces)
+        return
+    flight = Flight(the_coin, the_toss)
     out = flight.outcome
     catch = flight.catch
     t = flight.toss

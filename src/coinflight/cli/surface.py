@@ -1,0 +1,227 @@
+"""Options for where the toss ends (hand or table) and the air, shared by several commands."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+
+from coinflight.cli.options import number
+
+if TYPE_CHECKING:
+    from coinflight.coin import Coin
+    from coinflight.surface import Drag, Surface
+    from coinflight.toss import Toss
+
+SURFACE_PANEL = "Landing"
+
+SurfaceKindOption = Annotated[
+    str,
+    typer.Option(
+        "--surface",
+        metavar="hand|table",
+        rich_help_panel=SURFACE_PANEL,
+        help="hand: caught at launch height (no bounce); table: falls onto a hard surface, "
+        "bounces and settles heads, tails or on edge.",
+    ),
+]
+DropHeight = Annotated[
+    float | None,
+    typer.Option(
+        "--drop-height",
+        parser=number,
+        metavar="D",
+        rich_help_panel=SURFACE_PANEL,
+        help="table: how far the surface lies below the launch height, m (default 0).",
+    ),
+]
+Restitution = Annotated[
+    float | None,
+    typer.Option(
+        "--restitution",
+        parser=number,
+        metavar="E",
+        rich_help_panel=SURFACE_PANEL,
+        help="table: coefficient of restitution in [0, 1] (default 0.5; 0 lands dead).",
+    ),
+]
+Friction = Annotated[
+    float | None,
+    typer.Option(
+        "--friction",
+        parser=number,
+        metavar="MU",
+        rich_help_panel=SURFACE_PANEL,
+        help="table: Coulomb friction coefficient ≥ 0 (default 0.3).",
+    ),
+]
+DragCoefficient = Annotated[
+    float | None,
+    typer.Option(
+        "--drag",
+        parser=number,
+        metavar="CD",
+        rich_help_panel=SURFACE_PANEL,
+        help="Air drag coefficient C_d ≥ 0 on the face area (1.17: a flat disc); "
+        "integrated numerically, slower. Default 0 (no air).",
+    ),
+]
+SpinDamping = Annotated[
+    float | None,
+    typer.Option(
+        "--spin-damping",
+        parser=number,
+        metavar="K",
+        rich_help_panel=SURFACE_PANEL,
+        help="Damping torque −K ω on the spin, N m s ≥ 0 (default 0).",
+    ),
+]
+Bounces = Annotated[
+    int | None,
+    typer.Option(
+        "--bounces",
+        metavar="K",
+        rich_help_panel=SURFACE_PANEL,
+        help="table: stop at the contact after K bounces (0: the first contact) and report "
+        "the well the coin is in; default: bounce until it settles.",
+    ),
+]
+
+
+def build_surface(
+    kind: str, drop_height: float | None, restitution: float | None, friction: float | None
+) -> Surface:
+    """The :class:`~coinflight.surface.Surface` for the options; table options need a table."""
+    from coinflight.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
+
+    given = {
+        "--drop-height": drop_height,
+        "--restitution": restitution,
+        "--friction": friction,
+    }
+    if kind == "hand":
+        extra = [flag for flag, value in given.items() if value is not None]
+        if extra:
+            raise ValueError(f"{', '.join(extra)} applies to --surface table only")
+    return Surface(
+        kind,  # type: ignore[arg-type]
+        drop_height=0.0 if drop_height is None else drop_height,
+        restitution=DEFAULT_RESTITUTION if restitution is None else restitution,
+        friction=DEFAULT_FRICTION if friction is None else friction,
+    )
+
+
+def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | None:
+    """The :class:`~coinflight.surface.Drag` for the options, None when there is no air."""
+    from coinflight.surface import Drag
+
+    if coefficient is None and spin_damping is None:
+        return None
+    drag = Drag(
+        coefficient=0.0 if coefficient is None else coefficient,
+        spin_damping=0.0 if spin_damping is None else spin_damping,
+    )
+    return None if drag.is_zero else drag
+
+
+def check_bounces(surface: Surface, bounces: int | None) -> None:
+    """--bounces needs a table and a count ≥ 0."""
+    if bounces is None:
+        return
+    if surface.kind != "table":
+        raise ValueError("--bounces applies to --surface table only")
+    if bounces < 0:
+        raise ValueError(f"--bounces must be ≥ 0, got {bounces}")
+
+
+def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
+    """JSON description of the landing surface and the air."""
+    out: dict[str, object] = {"surface": surface.kind}
+    if surface.bounces:
+        out.update(
+            drop_height=surface.drop_height,
+            restitution=surface.restitution,
+            friction=surface.friction,
+        )
+    out["drag"] = (
+        None
+        if drag is None
+        else {
+            "coefficient": drag.coefficient,
+            "spin_damping": drag.spin_damping,
+            "air_density": drag.air_density,
+        }
+    )
+    return out
+
+
+def report_landing(
+    coin: Coin,
+    toss: Toss,
+    surface: Surface,
+    drag: Drag | None,
+    json_output: bool,
+    bounces: int | None = None,
+) -> None:
+    """``coinflight toss`` for a table landing or a flight through air: text or JSON."""
+    from coinflight.cli.options import print_json
+    from coinflight.core.outcome import FACE_NAMES
+
+    wx, wy, wz = (float(w) for w in toss.omega)
+    head = {
+        "omega": [wx, wy, wz],
+        "start": toss.start,
+        "g": toss.g,
+        "flight_time": float(toss.flight_time),
+        "launch_speed": float(toss.launch_speed),
+        "apex": float(toss.apex),
+        "coin": {
+            "name": coin.name,
+            "radius": coin.radius,
+            "thickness": coin.thickness,
+            "mass": coin.mass,
+        },
+    }
+    if surface.bounces:
+        from coinflight.landing import STATUS_NAMES, Landing
+
+        out = Landing(coin, toss, surface, drag, bounces).outcome
+        payload: dict[str, object] = {
+            "outcome": out.face_name,
+            "bounces": int(out.bounces),
+            "first_contact": float(out.first_contact),
+            "settle_time": float(out.settle_time),
+            "status": STATUS_NAMES[int(out.status)],
+        }
+        line = (
+            f"lands on the table at t = {float(out.first_contact):.4f} s, bounces "
+            f"{int(out.bounces)} times and ends {out.face_name.upper()} "
+            f"(at t = {float(out.settle_time):.4f} s; {out.status_name})"
+        )
+        where = (
+            f"table {surface.drop_height:g} m below launch, restitution "
+            f"{surface.restitution:g}, friction {surface.friction:g}"
+        )
+    else:
+        from coinflight.landing import catch_with_drag
+
+        assert drag is not None
+        face, when = catch_with_drag(
+            coin, toss.omega.reshape(1, 3), toss.launch_speed, toss.start_sign, toss.g, drag
+        )
+        name = FACE_NAMES[int(face[0])]
+        payload = {"outcome": name, "catch_time": float(when[0])}
+        line = f"caught at launch height at t = {float(when[0]):.4f} s, {name.upper()} up"
+        where = "caught in the hand"
+    payload.update(surface_payload(surface, drag))
+    payload.update(head)
+    if json_output:
+        print_json(payload)
+        return
+    air = "no air drag" if drag is None else f"air drag C_d = {drag.coefficient:g}"
+    typer.echo(f"{coin.describe()}, started {toss.start} up")
+    typer.echo(
+        f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, launch speed "
+        f"{float(toss.launch_speed):.3g} m/s (apex {float(toss.apex):.3g} m); {where}; {air}"
+    )
+    typer.echo(line)

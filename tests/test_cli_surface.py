@@ -1,0 +1,103 @@
+"""The --surface / --drop-height / --restitution / --friction / --drag options of the CLI."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from coinflight import Coin, Toss
+from coinflight.cli import app
+from coinflight.landing import Landing
+from coinflight.surface import Surface
+
+TOSS = ["toss", "--omega", "240", "5", "3", "--flight-time", "0.49"]
+
+
+def _run(*args):
+    return CliRunner().invoke(app, list(args))
+
+
+def test_toss_on_a_table_matches_the_library():
+    result = _run(
+        *TOSS,
+        "--surface",
+        "table",
+        "--drop-height",
+        "0.8",
+        "--coin",
+        "us-nickel",
+        "--restitution",
+        "0.6",
+        "--friction",
+        "0.2",
+        "--json",
+    )
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.stdout)
+    landing = Landing(
+        Coin.preset("us-nickel"),
+        Toss((240.0, 5.0, 3.0), 0.49),
+        Surface("table", drop_height=0.8, restitution=0.6, friction=0.2),
+    ).outcome
+    assert out["outcome"] == landing.face_name
+    assert out["bounces"] == int(landing.bounces)
+    assert out["settle_time"] == pytest.approx(float(landing.settle_time), rel=1e-12)
+    assert out["surface"] == "table"
+    assert (out["restitution"], out["friction"], out["drop_height"]) == (0.6, 0.2, 0.8)
+
+
+def test_toss_text_and_first_contact():
+    result = _run(*TOSS, "--surface", "table", "--bounces", "0")
+    assert result.exit_code == 0, result.output
+    assert "bounces 0 times" in result.stdout
+    assert "bounce limit" in result.stdout
+
+
+def test_toss_with_drag_in_the_hand():
+    result = _run(*TOSS, "--drag", "1.17", "--json")
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.stdout)
+    # Drag shortens the flight below T = 0.49 s.
+    assert 0.4 < out["catch_time"] < 0.49
+    assert out["outcome"] in ("heads", "tails")
+    assert out["drag"]["coefficient"] == 1.17
+
+
+def test_hand_without_drag_is_unchanged():
+    plain = _run(*TOSS, "--json")
+    zero = _run(*TOSS, "--drag", "0", "--json")
+    assert plain.exit_code == zero.exit_code == 0
+    assert json.loads(plain.stdout) == json.loads(zero.stdout)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--surface", "table", "--restitution", "1.5"], "restitution must be between 0 and 1"),
+        (["--surface", "table", "--restitution", "-0.5"], "restitution must be between 0 and 1"),
+        (["--surface", "table", "--friction", "-0.1"], "friction must be non-negative"),
+        (["--drag", "-1"], "drag coefficient must be non-negative"),
+        (["--spin-damping", "-1"], "spin damping must be non-negative"),
+        (["--surface", "table", "--drop-height", "-0.3"], "surface above the launch point"),
+        (["--surface", "sand"], "surface must be one of hand, table"),
+        (["--restitution", "0.5"], "--restitution applies to --surface table only"),
+        (["--bounces", "2"], "--bounces applies to --surface table only"),
+        (["--surface", "table", "--restitution", "abc"], "is not a number"),
+    ],
+)
+def test_bad_input_one_line_exit_2(args, message):
+    result = _run(*TOSS, *args)
+    assert result.exit_code == 2
+    assert result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("coinflight: error: ")
+    assert message in lines[0]
+
+
+def test_surface_above_launch_point_cannot_be_built():
+    with pytest.raises(ValueError, match="above the launch point"):
+        Surface("table", drop_height=-np.float64(0.1))
