@@ -157,6 +157,15 @@ def test_cli_writes_the_map_and_prints_the_grid_probability(tmp_path):
     assert colour_fraction(rgb, TAILS_COLOR, 2) > 0.05
 
 
+def test_cli_launch_speed_range_is_the_flight_time_range(tmp_path):
+    # T = 2 v0 / g (Stefan & Cheche eq 11): 2.943:4.4145 m/s at g = 9.81 is T ∈ [0.6, 0.9] s.
+    args = ["plot", "basin", "--resolution", "90x60", "--out", str(tmp_path / "v.png")]
+    by_speed = CliRunner().invoke(app, [*args, "--launch-speed", "2.943:4.4145"])
+    by_time = CliRunner().invoke(app, [*args, "--flight-time", "0.6:0.9"])
+    assert by_speed.exit_code == 0 and by_time.exit_code == 0
+    assert by_speed.stdout.splitlines()[0] == by_time.stdout.splitlines()[0]
+
+
 def test_cli_psi(tmp_path):
     out = tmp_path / "psi.svg"
     args = ["plot", "basin", "--psi", "60", "--precession-rate", "100:200", "--resolution", "50"]
@@ -175,6 +184,8 @@ def test_cli_psi(tmp_path):
         (["--precession-rate", "1:2"], "--precession-rate goes with --psi"),
         (["--psi", "190"], "--psi must be between 0 and 180"),
         (["--flight-time", "0.9:0.6"], "range 0.9:0.6 is reversed"),
+        (["--flight-time", "0.6:0.9", "--launch-speed", "3:4"], "not both"),
+        (["--launch-speed", "0:4"], "--launch-speed range must be positive"),
     ],
 )
 def test_cli_bad_input(tmp_path, extra, message):

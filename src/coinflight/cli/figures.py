@@ -132,13 +132,22 @@ def plot_toss(
 
 
 FlightTimeRange = Annotated[
-    str,
+    str | None,
     typer.Option(
         "--flight-time",
         "-T",
         metavar="LO:HI",
         rich_help_panel=TOSS_PANEL,
-        help="Range of flight times T, s (Stefan & Cheche: 0.6:0.9).",
+        help="Range of flight times T, s [default: 0.6:0.9, Stefan & Cheche].",
+    ),
+]
+LaunchSpeedRange = Annotated[
+    str | None,
+    typer.Option(
+        "--launch-speed",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of upward launch speeds v0, m/s, instead of --flight-time (T = 2 v0 / g).",
     ),
 ]
 OmegaXRange = Annotated[
@@ -211,7 +220,8 @@ Boundaries = Annotated[
 
 def plot_basin(
     out: OutFile,
-    flight_time: FlightTimeRange = "0.6:0.9",
+    flight_time: FlightTimeRange = None,
+    launch_speed: LaunchSpeedRange = None,
     omega_x: OmegaXRange = None,
     omega_y: OmegaY = 0.0,
     omega_z: OmegaZ = 0.0,
@@ -253,9 +263,18 @@ def plot_basin(
             raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
         spin = parse_range(precession_rate or "60:90", "--precession-rate", "rad/s")
         psi_rad = math.radians(psi)
+    if flight_time is not None and launch_speed is not None:
+        raise ValueError("give --flight-time or --launch-speed, not both")
+    if launch_speed is not None:
+        v_lo, v_hi = parse_range(launch_speed, "--launch-speed", "m/s")
+        if v_lo <= 0:
+            raise ValueError(f"--launch-speed range must be positive, got {launch_speed!r} m/s")
+        t_range = (2.0 * v_lo / g, 2.0 * v_hi / g)
+    else:
+        t_range = parse_range(flight_time or "0.6:0.9", "--flight-time", "s")
     basin = basin_map(
         the_coin,
-        parse_range(flight_time, "--flight-time", "s"),
+        t_range,
         spin,
         omega_y=omega_y,
         omega_z=omega_z,
