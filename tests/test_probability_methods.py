@@ -310,3 +310,15 @@ def test_heads_tails_symmetry_and_sum(lo, width, wy, t_lo, t_width):
     # The closed form agrees with a fine grid for any such box.
     fine = estimate(heads_up, "grid", n=4000).p_heads
     assert estimate(heads_up, "exact").p_heads == pytest.approx(fine, abs=2e-3)
+
+
+def test_exact_fixed_time_two_spins():
+    # Closed form in ωx, quadrature over ωy (the inner measure is continuous in ωy).
+    dist = TossDistribution(Uniform(60, 90), Uniform(0, 20), 0, Fixed(0.7))
+    exact = estimate(dist, "exact")
+    assert exact.details["how"] == "closed form in one spin, quadrature in the other"
+    assert exact.error_estimate < 1e-9
+    # A 2000² grid over (ωx, ωy) evaluated configuration by configuration.
+    assert estimate(dist, "grid", n=2000).p_heads == pytest.approx(exact.p_heads, abs=1e-4)
+    mc = estimate(dist, "monte-carlo", n=1 << 20, seed=4)
+    assert abs(mc.p_heads - exact.p_heads) < 4 * mc.stderr

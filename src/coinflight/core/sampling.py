@@ -92,8 +92,9 @@ def sinc(x: float) -> float:
 def _with_fast_sinc(func: Callable[..., Any], name: str) -> types.FunctionType:
     """``func`` itself (same bytecode), with its ``np`` resolving ``sinc`` to :func:`sinc`."""
     fast_np = types.ModuleType(f"coinflight_fast_np_{name}")
-    fast_np.sqrt = np.sqrt  # type: ignore[attr-defined]
-    fast_np.pi = np.pi  # type: ignore[attr-defined]
+    # Everything else resolves to NumPy itself (PEP 562 module __getattr__), so the swap keeps
+    # working if the closed form starts using other NumPy functions.
+    fast_np.__getattr__ = lambda attr: getattr(np, attr)  # type: ignore[method-assign]
     fast_np.sinc = sinc  # type: ignore[attr-defined]
     namespace = dict(func.__globals__)
     namespace["np"] = fast_np

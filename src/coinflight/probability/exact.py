@@ -141,19 +141,10 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
             dist.omega_x.mean, dist.omega_y.mean, dist.omega_z.mean, t, i1, i3
         )
         how = "closed form in T"
-    elif isinstance(t, Fixed):
-        raise ValueError(
-            "the exact method cannot integrate over ranged spins with a fixed flight time unless "
-            f"ω_z = 0 and one spin component is a uniform range; {_USE_INSTEAD}"
-        )
-    elif len(ranged_spins) > 2:
-        raise ValueError(
-            f"the exact method integrates over at most two ranged spin components, got "
-            f"{len(ranged_spins)} ({', '.join(ranged_spins)}); {_USE_INSTEAD}"
-        )
     elif (
         dist.spin_about_diameter
-        and isinstance(t, Uniform)
+        and isinstance(t, Uniform | Fixed)
+        and len(ranged_spins) == 2
         and any(isinstance(getattr(dist, n), Uniform) for n in ranged_spins)
     ):
         # One uniform spin in closed form, the other by quadrature over its quantiles.
@@ -166,6 +157,16 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
 
         p_same, error = _quad(inner, 1, details)
         how = "closed form in one spin, quadrature in the other"
+    elif isinstance(t, Fixed):
+        raise ValueError(
+            "the exact method cannot integrate over ranged spins with a fixed flight time unless "
+            f"ω_z = 0 and one spin component is a uniform range; {_USE_INSTEAD}"
+        )
+    elif len(ranged_spins) > 2:
+        raise ValueError(
+            f"the exact method integrates over at most two ranged spin components, got "
+            f"{len(ranged_spins)} ({', '.join(ranged_spins)}); {_USE_INSTEAD}"
+        )
     else:
         spins = {name: getattr(dist, name) for name in _SPINS}
 
