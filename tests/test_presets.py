@@ -137,3 +137,49 @@ def test_cli_bias_preset_errors(args, message):
     result = CliRunner().invoke(app, ["bias", *args])
     assert result.exit_code == 2
     assert message in result.stderr
+
+
+def test_preset_overrides():
+    assert preset("human", omega_z=0.0).spin_about_diameter
+    d = preset("human", launch_speed=Uniform(2.0, 3.0))
+    assert d.flight_time == Uniform(2 * 2.0 / 9.81, 2 * 3.0 / 9.81)
+    assert d.omega_z == human().omega_z  # untouched conditions stay the preset's
+    assert preset("human", flight_time=0.5).flight_time == Fixed(0.5)
+    with pytest.raises(ValueError, match="at most one of flight_time and launch_speed"):
+        preset("human", flight_time=0.5, launch_speed=2.0)
+    with pytest.raises(ValueError, match="cannot override coin_size of a preset"):
+        preset("human", coin_size=3.0)
+
+
+def _probability(*args):
+    result = CliRunner().invoke(app, ["probability", *map(str, args), "--quiet", "--json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_cli_probability_preset_human():
+    payload = _probability(
+        "--preset", "human", "--method", "monte-carlo", "--n", 200_000, "--seed", 12
+    )
+    assert payload["seed"] == 12
+    assert payload["distribution"]["omega_z"] == human().omega_z.describe()
+    p = b.expected_same_side(human())
+    assert abs(payload["p_same_side"] - p) < 4 * payload["stderr"] + PHASE_BIAS
+
+
+def test_cli_probability_preset_with_an_explicit_override():
+    # --omega-z 0 typed by the user replaces the preset's precession: no bias left (ψ = 90°).
+    payload = _probability(
+        "--preset", "human", "--omega-z", 0, "--method", "monte-carlo", "--n", 200_000, "--seed", 12
+    )
+    assert payload["distribution"]["omega_z"] == Fixed(0.0).describe()
+    assert payload["distribution"]["omega_x"] == human().omega_x.describe()
+    assert abs(payload["p_same_side"] - 0.5) < 4 * payload["stderr"] + PHASE_BIAS
+
+
+def test_cli_probability_preset_conflicting_times():
+    result = CliRunner().invoke(
+        app, ["probability", "--preset", "human", "--flight-time", "0.5", "--launch-speed", "3"]
+    )
+    assert result.exit_code == 2
+    assert "give at most one of --flight-time and --launch-speed" in result.stderr

@@ -29,13 +29,15 @@ spread values themselves are not published and barely matter (the bias depends o
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 from collections.abc import Callable
 from types import MappingProxyType
+from typing import Any
 
 from coinflight.coin import DEFAULT_COIN, Coin
-from coinflight.distributions import Fixed, Normal
+from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
 from coinflight.ensemble import TossDistribution
 from coinflight.toss import STANDARD_GRAVITY, Start
 
@@ -93,10 +95,40 @@ PRESETS: MappingProxyType[str, Callable[..., TossDistribution]] = MappingProxyTy
 """Toss presets by name: each a factory ``(coin=None, start="heads", g=9.81)``."""
 
 
+OVERRIDABLE = ("omega_x", "omega_y", "omega_z", "flight_time", "launch_speed")
+"""Initial conditions a caller may set on top of a preset (see :func:`preset`)."""
+
+
 def preset(
-    name: str, coin: Coin | None = None, start: Start = "heads", g: float = STANDARD_GRAVITY
+    name: str,
+    coin: Coin | None = None,
+    start: Start = "heads",
+    g: float = STANDARD_GRAVITY,
+    **overrides: Distribution | float,
 ) -> TossDistribution:
-    """The preset ``name`` for ``coin``; ValueError listing the presets if unknown."""
+    """The preset ``name`` for ``coin``, with any initial condition replaced by ``overrides``.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`PRESETS`.
+    coin, start, g
+        Passed to the preset's factory.
+    **overrides : Distribution or float
+        ``omega_x``, ``omega_y``, ``omega_z`` (rad/s), and one of ``flight_time`` (s) or
+        ``launch_speed`` (m/s, T = 2 v0 / g): these replace the preset's own; the others stay.
+
+    Raises
+    ------
+    ValueError
+        For an unknown preset (listing the known ones), an unknown override, or both
+        ``flight_time`` and ``launch_speed``.
+
+    Examples
+    --------
+    >>> preset("human", omega_z=0.0).spin_about_diameter  # the same toss with no precession
+    True
+    """
     try:
         factory = PRESETS[name]
     except KeyError:
@@ -105,13 +137,28 @@ def preset(
         raise ValueError(
             f"unknown preset {name!r}{maybe}; known presets: {', '.join(PRESETS)}"
         ) from None
-    return factory(coin=coin, start=start, g=g)
+    unknown = [k for k in overrides if k not in OVERRIDABLE]
+    if unknown:
+        raise ValueError(
+            f"cannot override {', '.join(unknown)} of a preset; allowed: {', '.join(OVERRIDABLE)}"
+        )
+    if "flight_time" in overrides and "launch_speed" in overrides:
+        raise ValueError("give at most one of flight_time and launch_speed")
+    dist = factory(coin=coin, start=start, g=g)
+    changes: dict[str, Any] = {k: as_distribution(val) for k, val in overrides.items()}
+    if "launch_speed" in changes:
+        spins = {k: changes.get(k, getattr(dist, k)) for k in OVERRIDABLE[:3]}
+        return TossDistribution.from_launch_speed(
+            **spins, launch_speed=changes["launch_speed"], coin=dist.coin, start=start, g=dist.g
+        )
+    return dataclasses.replace(dist, **changes) if changes else dist
 
 
 __all__ = [
     "HUMAN_COT_PSI",
     "HUMAN_LAUNCH_SPEED",
     "HUMAN_SPIN",
+    "OVERRIDABLE",
     "PRESETS",
     "human",
     "preset",

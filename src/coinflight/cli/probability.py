@@ -18,6 +18,7 @@ from coinflight.cli.options import (
     print_json,
     resolve_coin,
 )
+from coinflight.cli.presets import PresetOption, preset_distribution
 from coinflight.cli.progress import Quiet, progress_bar
 
 if TYPE_CHECKING:
@@ -133,6 +134,7 @@ def work_total(method: str, n: int | None, k: int) -> int:
 
 
 def probability(
+    ctx: typer.Context,
     omega_x: OmegaX = "80",
     omega_y: OmegaY = "0",
     omega_z: OmegaZ = "0",
@@ -140,6 +142,7 @@ def probability(
     launch_speed: LaunchSpeedDist = None,
     start: StartFace = "heads",
     g: Gravity = 9.81,
+    preset: PresetOption = None,
     coin: CoinName = None,
     radius: Radius = None,
     thickness: Thickness = None,
@@ -162,9 +165,12 @@ def probability(
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
     the_coin = resolve_coin(coin, radius, thickness, mass)
-    dist = build_distribution(
-        omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
-    )
+    if preset is not None:
+        dist = preset_distribution(ctx, preset, the_coin, start, g)
+    else:
+        dist = build_distribution(
+            omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
+        )
     options: dict[str, Any] = {}
     if grid_cells is not None:
         if method != "monte-carlo":
