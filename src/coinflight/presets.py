@@ -3,7 +3,7 @@
 ``human``: a person's natural toss, caught in the hand
 -------------------------------------------------------
 Built from the published measurements (REFERENCES §2, Diaconis, Holmes & Montgomery 2007,
-quoting Keller 1986 and their own filmed flips) and one modelling choice of ours:
+quoting Keller 1986 and their own filmed flips) and modelling choices of ours (the spreads):
 
 =====================  =====================================  ==================================
 quantity               value                                  source
@@ -13,18 +13,19 @@ launch speed v0        normal, mean 2.4 m/s, sd 10 %          mean: Diaconis via
 spin about a diameter  ωx normal, mean 38 rev/s = 238.8 rad/s, mean: Diaconis via Keller (§2);
                        sd 10 %; ωy = 0                        spread: our assumption
 cone angle ψ           set by ωz: cot ψ = I3 ωz / (I1 ωx),    "near but below 90°"; per-flip
-                       ωz normal with mean (I1/I3)·238.8·c    p(ψ) 0.500 to 0.545, mean 0.508
-                       and sd half of it, c = 0.1396          (DHM's filmed flips, §2)
+                       ωz normal with mean (I1/I3)·238.8·     p(ψ) 0.500 to 0.545, mean 0.508
+                       cot ψ0 and sd half of it, ψ0 = 82.05°  (DHM's filmed flips, §2)
 =====================  =====================================  ==================================
 
-The constant c is the one number fitted: it makes the closed-form average of p(ψ)
+The typical angle ψ0 is the one number fitted: it makes the closed-form average of p(ψ)
 (:func:`coinflight.bias.expected_same_side`) equal 0.508, the mean DHM report and the pooled
 rate Bartoš et al. measured over 350,757 flips (0.5077, REFERENCES §6). It gives ψ with median
 82.1° and 95 % of tosses between 74° and 89.8° (a few per cent just above 90°), and per-flip
 p(ψ) from 0.500 to about 0.537 (99.5th percentile), as DHM describe. ωz scales with I1/I3 so that
 the ψ distribution is the same for every coin. The 10 % spreads make ωp T vary by about 2.6
-turns (sd), enough for the phase to be uniform, which is what the closed form assumes; the
-spread values themselves are not published and barely matter (the bias depends on ψ alone).
+turns (sd), enough for the phase to be uniform, which is what the closed form assumes; their
+values are not published and barely matter (the bias depends on ψ alone). The spread of ωz
+(half its mean) sets the spread of ψ and, with ψ0, the range of per-flip p(ψ) above.
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ from types import MappingProxyType
 from typing import Any
 
 from coinflight.coin import DEFAULT_COIN, Coin
+from coinflight.core import precession
 from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
 from coinflight.ensemble import TossDistribution
 from coinflight.toss import STANDARD_GRAVITY, Start
@@ -50,11 +52,12 @@ HUMAN_SPIN = 38.0 * 2.0 * math.pi
 HUMAN_RELATIVE_SPREAD = 0.10
 """Standard deviation of launch speed and spin relative to their means (our assumption)."""
 
-HUMAN_COT_PSI = 0.1396
-"""Typical cot ψ of a natural toss (ψ ≈ 82°), fitted so that the average p(ψ) is 0.508."""
+HUMAN_PSI = math.radians(82.05)
+"""Typical cone angle ψ of a natural toss, rad: the one number fitted, so that the average
+p(ψ) over the preset is 0.508 (DHM's mean; Bartoš et al.'s pooled rate)."""
 
 HUMAN_COT_PSI_RELATIVE_SD = 0.5
-"""Spread of cot ψ relative to its typical value (keeps ψ mostly below 90°)."""
+"""Spread of cot ψ (of ωz) relative to its typical value (keeps ψ mostly below 90°)."""
 
 
 def human(
@@ -75,11 +78,11 @@ def human(
     -------
     TossDistribution
         ωx ~ Normal(238.8, 23.9) rad/s, ωy = 0, ωz ~ Normal(μ, μ/2) with
-        μ = (I1/I3)·238.8·0.1396 rad/s, T = 2 v0 / g with v0 ~ Normal(2.4, 0.24) m/s.
+        μ = (I1/I3)·238.8·cot 82.05° rad/s, T = 2 v0 / g with v0 ~ Normal(2.4, 0.24) m/s.
     """
     the_coin = coin if coin is not None else Coin.preset(DEFAULT_COIN)
     i1, i3 = the_coin.moments
-    wz = i1 / i3 * HUMAN_SPIN * HUMAN_COT_PSI
+    wz = float(precession.axial_spin(HUMAN_SPIN, HUMAN_PSI, i1, i3))
     return TossDistribution.from_launch_speed(
         omega_x=Normal(HUMAN_SPIN, HUMAN_RELATIVE_SPREAD * HUMAN_SPIN),
         omega_y=Fixed(0.0),
@@ -155,8 +158,8 @@ def preset(
 
 
 __all__ = [
-    "HUMAN_COT_PSI",
     "HUMAN_LAUNCH_SPEED",
+    "HUMAN_PSI",
     "HUMAN_SPIN",
     "OVERRIDABLE",
     "PRESETS",
