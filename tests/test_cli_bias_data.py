@@ -73,6 +73,7 @@ def test_bias_psi_distribution():
         (["--psi-dist", "normal:80"], "--psi-dist 'normal:80'"),
         (["--psi", "abc"], "'abc' is not a number"),
         (["--psi", "80", "--monte-carlo", "0"], "--monte-carlo"),
+        (["--psi", "80", "--radius", "0.01"], "a custom coin needs --radius, --thickness and"),
     ],
 )
 def test_bias_bad_input_is_one_line_exit_2(args, message):

@@ -127,13 +127,13 @@ def bias(
         if mean is not None:
             psi_payload["psi_deg"] = float(mean)
     sim = None
-    the_coin = None
+    # The coin enters only the simulation (through I1/I3), but is checked in any case.
+    the_coin = resolve_coin(coin, radius, thickness, mass)
     if monte_carlo is not None:
-        the_coin = resolve_coin(coin, radius, thickness, mass)
         sim = b.simulate_same_side(spec, monte_carlo, seed, coin=the_coin, degrees=True)
     if json_output:
         payload: dict[str, Any] = {"p_same_side": p, **psi_payload, "source": SOURCE}
-        if sim is not None and the_coin is not None:
+        if sim is not None:
             payload["monte_carlo"] = {
                 "p_same_side": sim.p_same_side,
                 "stderr": sim.stderr,
@@ -148,7 +148,7 @@ def bias(
         print_json(payload)
         return
     typer.echo(f"{what}: P(same side) = {p:.6f}  (closed form, {SOURCE})")
-    if sim is not None and the_coin is not None:
+    if sim is not None:
         t_lo, t_hi = b.DEFAULT_FLIGHT_TIME
         w_lo, w_hi = b.DEFAULT_PRECESSION_RATE
         typer.echo(
