@@ -183,3 +183,28 @@ def test_missing_file_is_a_value_error(tmp_path):
 def test_unknown_interval_method(table):
     with pytest.raises(ValueError, match="interval method must be one of exact, wilson"):
         d.summarize(table, "bayes")
+
+
+def test_heterogeneity_between_people(table):
+    # Pearson's χ² by hand: Σ (O − E)² / E over the people × (same, different) table.
+    pooled = table.same / table.flips
+    chi2 = 0.0
+    for r in table.rows:
+        for observed, expected in (
+            (r.same, r.flips * pooled),
+            (r.flips - r.same, r.flips * (1 - pooled)),
+        ):
+            chi2 += (observed - expected) ** 2 / expected
+    het = d.summarize(table).heterogeneity
+    assert het.chi2 == pytest.approx(chi2, rel=1e-10)
+    assert het.dof == 47
+    # REFERENCES §6: same-side rates "vary widely between people".
+    assert het.p_value < 1e-10
+
+
+def test_heterogeneity_of_identical_people_is_not_detected(tmp_path):
+    # Negative case: three people with the same rate give χ² = 0, p = 1.
+    body = "A 30 20 30 20 60 100\nB 60 40 60 40 120 200\nC 15 10 15 10 30 50\n"
+    het = d.heterogeneity(d.read_counts(_write(tmp_path, f"{HEADER}\n{body}")))
+    assert het.chi2 == pytest.approx(0.0, abs=1e-12)
+    assert het.p_value == pytest.approx(1.0, abs=1e-12)

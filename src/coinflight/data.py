@@ -305,6 +305,45 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
 
 
 @dataclass(frozen=True)
+class Heterogeneity:
+    """Pearson's χ² test that every person has the same same-side probability.
+
+    Attributes
+    ----------
+    chi2 : float
+        The statistic over the people × (same, different) table.
+    dof : int
+        Degrees of freedom, people − 1.
+    p_value : float
+        Upper tail of χ²(dof).
+    """
+
+    chi2: float
+    dof: int
+    p_value: float
+
+
+def heterogeneity(table: CountsTable) -> Heterogeneity:
+    """χ² test of homogeneity of the same-side rates across people (``scipy.stats``).
+
+    Notes
+    -----
+    Pearson's χ² on the k × 2 contingency table, no continuity correction
+    (``scipy.stats.chi2_contingency``). Bartoš et al. (REFERENCES §6) report that same-side
+    rates "vary widely between people"; this is the frequentist check of that statement.
+    """
+    from scipy.stats import chi2_contingency
+
+    if len(table.rows) < 2:
+        return Heterogeneity(chi2=0.0, dof=0, p_value=1.0)
+    counts = [[r.same, r.flips - r.same] for r in table.rows]
+    if sum(c[0] for c in counts) in (0, table.flips):
+        return Heterogeneity(chi2=0.0, dof=len(counts) - 1, p_value=1.0)
+    res = chi2_contingency(counts, correction=False)
+    return Heterogeneity(chi2=float(res.statistic), dof=int(res.dof), p_value=float(res.pvalue))
+
+
+@dataclass(frozen=True)
 class CountsSummary:
     """Pooled and per-person statistics of a counts table."""
 
@@ -314,10 +353,12 @@ class CountsSummary:
     heads: Proportion
     people: tuple[tuple[str, Proportion], ...]
     psi: PsiFit
+    heterogeneity: Heterogeneity
 
 
 def summarize(table: CountsTable, method: str = "exact", psi_sd: float = 0.0) -> CountsSummary:
-    """Pooled same-side and heads rates with intervals and tests, per-person rates, and ψ.
+    """Pooled same-side and heads rates with intervals and tests, per-person rates and their
+    heterogeneity, and ψ.
 
     Parameters
     ----------
@@ -336,6 +377,7 @@ def summarize(table: CountsTable, method: str = "exact", psi_sd: float = 0.0) ->
         heads=proportion(table.heads, table.flips, method),
         people=tuple((r.person, proportion(r.same, r.flips, method)) for r in table.rows),
         psi=fit_psi(same, psi_sd),
+        heterogeneity=heterogeneity(table),
     )
 
 
@@ -344,10 +386,12 @@ __all__ = [
     "INTERVAL_METHODS",
     "CountsSummary",
     "CountsTable",
+    "Heterogeneity",
     "PersonCounts",
     "Proportion",
     "PsiFit",
     "fit_psi",
+    "heterogeneity",
     "parse_counts",
     "proportion",
     "read_counts",

@@ -95,6 +95,11 @@ def data(
             "psi_model": fit.model,
             "psi_sd_deg": psi_sd,
             "psi_ci95_limited": fit.limited,
+            "heterogeneity": {
+                "chi2": summary.heterogeneity.chi2,
+                "dof": summary.heterogeneity.dof,
+                "p_value": summary.heterogeneity.p_value,
+            },
             "p_same_side_floor": fit.floor,
             "per_person": [
                 {
@@ -139,6 +144,11 @@ def data(
             f"precession (Diaconis et al. 2007, {what}): ψ = {psi_deg:.2f}°, "
             f"95% interval [{psi_ci[0]:.2f}°, {psi_ci[1]:.2f}°]{limit}"
         )
+    het = summary.heterogeneity
+    typer.echo(
+        f"between people: χ² = {het.chi2:.1f} on {het.dof} degrees of freedom, p = "
+        f"{het.p_value:.2g} (test that everyone has the same same-side rate)"
+    )
     typer.echo("per person (same side of flips, rate, 95% interval):")
     width = max(len(name) for name, _ in summary.people)
     for name, p in summary.people:
