@@ -1,0 +1,188 @@
+"""Speed of the bouncing model (issue 6), and a general rigid-body engine beside it.
+
+    python benchmarks/bench_bounce.py              # coinflight speed + MuJoCo on 200 tosses
+    python benchmarks/bench_bounce.py --quick      # fewer tosses
+    python benchmarks/bench_bounce.py --nickel     # also P(edge) of a US nickel vs (e, μ)
+
+coinflight: the event-driven numba kernel (``coinflight.landing.land``; exact flights between
+impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
+dropped onto a table 0.8 m below launch (e = 0.5, μ = 0.3): tosses per second, median of
+repeats, all threads of the machine.
+
+MuJoCo (optional: ``pip install coinflight[mujoco]``; skipped cleanly when not installed): the
+same tosses as a free cylinder over a plane, time step 1e-4 s, its default soft contact with
+friction μ; tosses per second, and the agreement of outcomes with coinflight, (a) at the first
+contact (geometry only: the well of the coin's orientation when it first touches) and (b) at
+rest after 2 s (depends on each engine's contact model).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import platform
+import statistics
+import time
+
+import numpy as np
+
+from coinflight import Coin
+from coinflight.landing import land
+from coinflight.surface import Surface
+
+COIN = Coin.preset("us-nickel")
+G = 9.81
+DROP = 0.8
+SURFACE = Surface("table", drop_height=DROP, restitution=0.5, friction=0.3)
+
+
+def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
+    """Vigorous tosses: ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s."""
+    rng = np.random.default_rng(seed)
+    omega = np.column_stack(
+        [
+            rng.uniform(150.0, 300.0, n),
+            rng.uniform(-30.0, 30.0, n),
+            rng.uniform(-30.0, 30.0, n),
+        ]
+    )
+    return omega, rng.uniform(1.5, 3.0, n)
+
+
+def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-def]
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return n / statistics.median(times)
+
+
+def bench_coinflight(n: int, repeats: int) -> None:
+    import numba
+
+    omega, v0 = tosses(n)
+    land(COIN, omega[:100], v0[:100], 1.0, G, SURFACE)  # compile (or load the cache)
+    rate = median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE), n, repeats)
+    first = median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats)
+    out = land(COIN, omega, v0, 1.0, G, SURFACE)
+    print(
+        f"coinflight bouncing, {n:,} tosses, {numba.get_num_threads()} threads: "
+        f"{rate:,.0f} tosses/s (median of {repeats}); first contact only: {first:,.0f} tosses/s"
+    )
+    print(
+        f"  mean bounces {out.bounces.mean():.2f}, max {out.bounces.max()}; "
+        f"P(heads, tails, edge) = {np.bincount(out.face, minlength=3) / n}"
+    )
+
+
+def _mujoco_model(friction: float):  # type: ignore[no-untyped-def]
+    import mujoco
+
+    xml = f"""
+    <mujoco>
+      <option timestep="1e-4" gravity="0 0 -{G}"/>
+      <worldbody>
+        <geom type="plane" size="5 5 0.1" friction="{friction} 0.005 0.0001"/>
+        <body name="coin" pos="0 0 1">
+          <freejoint/>
+          <geom type="cylinder" size="{COIN.radius} {COIN.thickness / 2}" mass="{COIN.mass}"
+                friction="{friction} 0.005 0.0001"/>
+        </body>
+      </worldbody>
+    </mujoco>"""
+    return mujoco.MjModel.from_xml_string(xml)
+
+
+def mujoco_outcomes(omega: np.ndarray, v0: np.ndarray, settle: float = 2.0) -> tuple:  # type: ignore[type-arg]
+    """(face at first contact, face at rest) for each toss: MuJoCo's multithreaded rollout."""
+    import mujoco
+    from mujoco import rollout
+
+    model = _mujoco_model(SURFACE.friction)
+    datas = [mujoco.MjData(model) for _ in range(os.cpu_count() or 1)]
+    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
+    size = mujoco.mj_stateSize(model, spec)
+    r, hh = COIN.radius, COIN.thickness / 2
+    edge_sine = hh / math.hypot(r, hh)
+    nstep = int((2 * float(v0.max()) / G + 1.0 + settle) / model.opt.timestep)
+    data = datas[0]
+    first = np.empty(len(v0), dtype=np.int8)
+    rest = np.empty(len(v0), dtype=np.int8)
+    chunk = 8
+    for a in range(0, len(v0), chunk):
+        states = []
+        for k in range(a, min(a + chunk, len(v0))):
+            mujoco.mj_resetData(model, data)
+            data.qpos[:3] = (0.0, 0.0, DROP)  # launch point DROP above the plane
+            data.qpos[3:7] = (1.0, 0.0, 0.0, 0.0)  # heads up (scalar first)
+            data.qvel[:3] = (0.0, 0.0, v0[k])
+            data.qvel[3:6] = omega[k]  # free joint: angular velocity in the body frame
+            state = np.empty(size)
+            mujoco.mj_getState(model, data, state, spec)
+            states.append(state)
+        traj, _ = rollout.rollout(model, datas, np.array(states), nstep=nstep)
+        z = traj[:, :, 3]
+        w, x, y = traj[:, :, 4], traj[:, :, 5], traj[:, :, 6]
+        nz = 1.0 - 2.0 * (x * x + y * y)  # third row of R(q): the normal's z component
+        gap = z - r * np.sqrt(np.clip(1 - nz * nz, 0, 1)) - hh * np.abs(nz)
+        del w
+        for j in range(traj.shape[0]):
+            apex = int(v0[a + j] / G / model.opt.timestep)
+            hit = apex + int(np.argmax(gap[j, apex:] <= 0.0))
+            first[a + j] = _well(nz[j, hit], edge_sine)
+            rest[a + j] = _well(nz[j, -1], edge_sine)
+    return first, rest
+
+
+def _well(nz: float, edge_sine: float) -> int:
+    return 2 if abs(nz) < edge_sine else (1 if nz > 0 else 0)
+
+
+def bench_mujoco(m: int) -> None:
+    try:
+        import mujoco
+    except ImportError:
+        print("MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
+        return
+    omega, v0 = tosses(m)
+    t0 = time.perf_counter()
+    first, rest = mujoco_outcomes(omega, v0)
+    rate = m / (time.perf_counter() - t0)
+    ours_first = land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0).face
+    ours = land(COIN, omega, v0, 1.0, G, SURFACE).face
+    print(f"MuJoCo {mujoco.__version__}, dt = 1e-4 s, {m} tosses: {rate:,.1f} tosses/s")
+    print(
+        f"  agreement with coinflight: first contact {np.mean(first == ours_first):.1%}, "
+        f"at rest {np.mean(rest == ours):.1%} (MuJoCo's soft contact is not e = "
+        f"{SURFACE.restitution}); MuJoCo P(h, t, e) at rest = {np.bincount(rest, minlength=3) / m}"
+    )
+
+
+def nickel_edge(n: int) -> None:
+    """P(edge) of a US nickel for a few (e, μ), beside Murray & Teare's 1 in 6000."""
+    omega, v0 = tosses(n, seed=6000)
+    print(f"US nickel, {n:,} tosses onto a table {DROP} m below launch (Murray & Teare: 1/6000)")
+    for e in (0.2, 0.3, 0.5, 0.7):
+        for mu in (0.1, 0.3, 0.5):
+            out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
+            k = int(np.sum(out.face == 2))
+            ratio = f"1 in {n / k:,.0f}" if k else "none"
+            print(f"  e = {e:.1f}, μ = {mu:.1f}: P(edge) = {k / n:.2e} ({ratio}; {k} edges)")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--nickel", action="store_true")
+    args = parser.parse_args()
+    print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs")
+    bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
+    bench_mujoco(16 if args.quick else 200)
+    if args.nickel:
+        nickel_edge(1_000_000)
+
+
+if __name__ == "__main__":
+    main()
