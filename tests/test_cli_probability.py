@@ -29,6 +29,8 @@ def test_exact_json_matches_library():
     assert payload["p_heads"] == pytest.approx(expected.p_heads, abs=1e-15)
     assert payload["p_tails"] == pytest.approx(1 - expected.p_heads, abs=1e-15)
     assert payload["method"] == "exact" and payload["n"] is None
+    assert payload["distribution"]["omega_x"] == {"kind": "uniform", "low": 60.0, "high": 90.0}
+    assert payload["distribution"]["omega_y"] == {"kind": "fixed", "value": 0.0}
     assert {"stderr", "ci95"} <= set(payload)
 
 

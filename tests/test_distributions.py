@@ -83,6 +83,7 @@ def test_protocol_values():
     # Midpoints of equal-probability cells: for a uniform range, the paper's midpoints.
     np.testing.assert_allclose(u.ppf([0.25, 0.75]), [67.5, 82.5])
     assert n.ppf(0.5) == pytest.approx(3.0)
+    assert n.to_dict() == {"kind": "normal", "mean": 3.0, "sd": 0.5}
     assert u.scaled(2.0) == Uniform(120.0, 180.0)
     assert n.scaled(2.0) == Normal(6.0, 1.0)
 

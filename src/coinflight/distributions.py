@@ -72,6 +72,13 @@ class Distribution(ABC):
     def describe(self, unit: str = "") -> str:
         """Short text for reports, e.g. ``60–90 rad/s``."""
 
+    def to_dict(self) -> dict[str, object]:
+        """``{"kind": "uniform", "low": 60.0, "high": 90.0}`` and the like, for JSON."""
+        from dataclasses import asdict, is_dataclass
+
+        fields: dict[str, object] = asdict(self) if is_dataclass(self) else {}
+        return {"kind": type(self).__name__.lower(), **fields}
+
 
 def _u(u: ArrayLike) -> FloatArray:
     return np.asarray(u, dtype=float)

@@ -20,6 +20,16 @@ from coinflight.cli.options import (
 )
 from coinflight.cli.presets import PresetOption, preset_distribution
 from coinflight.cli.progress import Quiet, progress_bar
+from coinflight.cli.surface import (
+    DragCoefficient,
+    DropHeight,
+    Friction,
+    Restitution,
+    SpinDamping,
+    SurfaceKindOption,
+    outcome_model,
+    surface_payload,
+)
 
 if TYPE_CHECKING:
     from coinflight.coin import Coin
@@ -147,6 +157,12 @@ def probability(
     radius: Radius = None,
     thickness: Thickness = None,
     mass: Mass = None,
+    surface: SurfaceKindOption = "hand",
+    drop_height: DropHeight = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
+    drag: DragCoefficient = None,
+    spin_damping: SpinDamping = None,
     method: Method = "exact",
     n: Size = None,
     seed: Seed = None,
@@ -180,19 +196,28 @@ def probability(
         raise ValueError(f"--seed applies to monte-carlo and qmc, not {method}")
     if threads is not None and method == "exact":
         raise ValueError("--threads does not apply to the exact method")
+    landing = outcome_model(surface, drop_height, restitution, friction, drag, spin_damping)
+    if landing is not None:
+        options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
     with progress_bar(total, f"{method}", quiet) as bar:
         result = estimate(dist, method, n=n, seed=seed, threads=threads, progress=bar, **options)
     if json_output:
         payload = result.to_dict()
-        payload["distribution"] = {name: d.describe() for name, d in dist.parameters.items()}
+        payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}
         payload["coin"] = the_coin.name
         payload["start"] = start
+        if landing is not None:
+            payload.update(surface_payload(landing.surface, landing.drag))
         print_json(payload)
         return
     typer.echo(dist.describe())
+    if landing is not None:
+        typer.echo(landing.describe())
     typer.echo(result.describe())
     line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
+    if landing is not None and landing.surface.bounces:
+        line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
     typer.echo(_method_line(result))
 
