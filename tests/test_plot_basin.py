@@ -67,7 +67,8 @@ def test_keller_hyperbolas_are_where_the_face_changes():
     # at (k + ½)π cross the box (k = 17 … 34 minus the ones cut off by the corners).
     assert len(curves) >= 10
     for t, w in curves:
-        ok = ~np.isnan(w)
+        ok = ~np.isnan(t)
+        assert np.all((t[ok] >= 0.6) & (t[ok] <= 0.9))
         angle = np.hypot(w[ok], 20.0) * t[ok]
         np.testing.assert_allclose(np.cos(angle), 0.0, atol=1e-9)
 
@@ -82,7 +83,7 @@ def test_precessing_boundaries_and_dhm_probability():
     assert basin.heads_fraction == pytest.approx(limit, abs=0.005)
     i1, i3 = QUARTER.moments
     for t, w in basin.boundaries():
-        ok = ~np.isnan(w)
+        ok = ~np.isnan(t)
         wx, wz = w[ok] * math.sin(psi), w[ok] * math.cos(psi) * i1 / i3
         align = torque_free.normal_alignment(wx, 0.0, wz, t[ok], i1, i3)
         np.testing.assert_allclose(align, 0.0, atol=1e-9)
@@ -103,6 +104,28 @@ def test_psi_grid_has_the_asked_cone_angle_and_rate_through_a_swapped_outcome():
     np.testing.assert_allclose(torque_free.cone_angle(omega, i1, i3), psi, rtol=1e-12)
     rate = torque_free.precession_rate(omega, i1, i3)
     np.testing.assert_allclose(rate, np.broadcast_to(basin.spin[:, None], (5, 4)), rtol=1e-12)
+
+
+def test_boundaries_of_a_fixed_normal_spin_separate_the_faces():
+    # ωz = 20 rad/s: cot ψ = I3 ωz / (I1 ωx) ≈ 0.66 … 0.44, ψ ≈ 57° … 66° over ωx ∈ [60, 90];
+    # boundaries where cos²ψ + sin²ψ cos(ωp T) = 0 (DHM 2007). Each must be where n(T)·n0
+    # vanishes, and the boundaries crossed along a row must match the face changes in the map.
+    basin = basin_map(QUARTER, omega_z=20.0, resolution=(400, 3))
+    i1, i3 = QUARTER.moments
+    curves = basin.boundaries()
+    assert curves
+    for t, w in curves:
+        ok = ~np.isnan(t)
+        align = torque_free.normal_alignment(w[ok], 0.0, 20.0, t[ok], i1, i3)
+        np.testing.assert_allclose(align, 0.0, atol=1e-9)
+    row = basin.face[1]
+    changes = int(np.sum(row[1:] != row[:-1]))
+    w_mid = basin.spin[1]
+    crossings = 0
+    for t, w in curves:
+        t_at = np.interp(w_mid, w, t)
+        crossings += bool(np.isfinite(t_at) and basin.flight_time[0] < t_at < basin.flight_time[-1])
+    assert changes == crossings > 5
 
 
 def test_small_cone_never_turns_over():

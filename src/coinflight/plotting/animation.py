@@ -226,7 +226,8 @@ def animate_toss(
     final = FACE_NAMES[int(flight.outcome.face)]
     fig.suptitle(
         f"{coin.name} tossed {toss.start} up, ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, "
-        f"T = {t_end:g} s\n{turns:.3f} turns, caught {final.upper()} up (slow motion)",
+        f"T = {t_end:g} s\n{turns:.3f} turns, caught {final.upper()} up "
+        f"(played {frames / fps / t_end:.0f}× slower than life)",
         fontsize=11,
     )
 

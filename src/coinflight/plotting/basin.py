@@ -128,45 +128,47 @@ class BasinMap:
             return self.psi is not None and math.isclose(self.psi, math.pi / 2)
         return self.omega_z == 0.0
 
-    def boundaries(self, n_points: int = 200) -> list[tuple[FloatArray, FloatArray]]:
+    def boundaries(self, n_points: int = 400) -> list[tuple[FloatArray, FloatArray]]:
         """Analytic heads/tails boundaries inside the box, as (T, spin) curves.
+
+        Each curve is sampled at ``n_points`` spins; T is NaN where the curve leaves the box.
 
         Notes
         -----
-        Planar spin (ωz = 0): Ω T = (2n ± ½)π with Ω = sqrt(ωx² + ωy²) (Keller 1986; Stefan &
-        Cheche eqs 14-15), so ωx = sqrt(((2n ± ½)π / T)² − ωy²). Fixed ψ: n(T)·n0 =
-        cos²ψ + sin²ψ cos(ωp T) = 0 where ωp T = 2πn ± arccos(−cot²ψ) (Diaconis, Holmes &
-        Montgomery 2007); none when ψ < 45°. Returns [] for fixed ωz ≠ 0, which has no such
-        closed-form curve in this plane.
+        The face changes where n(T)·n0 = cos²ψ + sin²ψ cos(ωp T) = 0, that is at
+        ωp T = 2πk ± arccos(−cot²ψ) (Diaconis, Holmes & Montgomery 2007), which exists only for
+        cot²ψ ≤ 1 (ψ ≥ 45°). Along the spin axis ωp and ψ are known in closed form, so each
+        boundary is T(spin) = (2πk ± arccos(−cot²ψ)) / ωp. For a spin about a diameter
+        (ωz = 0, ψ = 90°) these are Keller's hyperbolas Ω T = (2k ± ½)π with
+        Ω = sqrt(ωx² + ωy²) (Keller 1986; Stefan & Cheche eqs 14-15).
         """
-        t = np.linspace(*self.flight_time_range, n_points)
         lo, hi = self.spin_range
+        t_lo, t_hi = self.flight_time_range
+        w = np.linspace(lo, hi, n_points)
         if self.axis == "precession":
             assert self.psi is not None
-            cot2 = (math.cos(self.psi) / math.sin(self.psi)) ** 2 if self.psi > 0 else math.inf
-            if cot2 > 1.0:
-                return []
-            phases = [math.acos(-cot2), 2 * math.pi - math.acos(-cot2)]
-        elif self.planar:
-            phases = [0.5 * math.pi, 1.5 * math.pi]
+            rate = w
+            cot2 = np.full_like(w, (math.cos(self.psi) / math.sin(self.psi)) ** 2)
         else:
+            i1, i3 = self.coin.moments
+            perp2 = w * w + self.omega_y**2
+            axial = i3 / i1 * self.omega_z
+            rate = np.sqrt(perp2 + axial * axial)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                cot2 = np.where(perp2 > 0, axial * axial / perp2, np.inf)
+        valid = (cot2 <= 1.0) & (rate > 0)
+        if not np.any(valid):
             return []
+        half_width = np.arccos(-np.clip(cot2, 0.0, 1.0))
         curves: list[tuple[FloatArray, FloatArray]] = []
-        # The largest total angle in the box bounds the boundary angles 2πk + phase to list.
-        top_rate = math.hypot(hi, self.omega_y) if self.axis == "x" else hi
-        k_max = int(top_rate * self.flight_time_range[1] / (2 * math.pi)) + 1
+        k_max = int(float(np.max(rate[valid])) * t_hi / (2 * math.pi)) + 1
         for k in range(k_max + 1):
-            for phase in phases:
-                angle = 2 * math.pi * k + phase
-                rate = angle / t
-                if self.axis == "x":
-                    spin = np.sqrt(np.clip(rate * rate - self.omega_y**2, 0.0, None))
-                    spin = np.where(rate >= abs(self.omega_y), spin, np.nan)
-                else:
-                    spin = rate
-                inside = (spin >= lo) & (spin <= hi)
+            for sign in (-1.0, 1.0):
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    t = (2 * math.pi * k + sign * half_width) / rate
+                inside = valid & (t >= t_lo) & (t <= t_hi)
                 if np.any(inside):
-                    curves.append((t, np.where(inside, spin, np.nan)))
+                    curves.append((np.where(inside, t, np.nan), w))
         return curves
 
 
