@@ -112,6 +112,7 @@ def test_cli_bias_preset_json():
     assert result.exit_code == 0, result.output
     payload = json.loads(result.stdout)
     assert payload["preset"] == "human"
+    assert payload["distribution"]["omega_x"] == human().omega_x.to_dict()
     assert payload["p_same_side"] == pytest.approx(b.expected_same_side(human()), abs=1e-15)
     lo, hi = payload["psi_range95_deg"]
     assert lo < payload["psi_deg"] < hi <= 90.0
@@ -162,7 +163,7 @@ def test_cli_probability_preset_human():
         "--preset", "human", "--method", "monte-carlo", "--n", 200_000, "--seed", 12
     )
     assert payload["seed"] == 12
-    assert payload["distribution"]["omega_z"] == human().omega_z.describe()
+    assert payload["distribution"]["omega_z"] == human().omega_z.to_dict()
     p = b.expected_same_side(human())
     assert abs(payload["p_same_side"] - p) < 4 * payload["stderr"] + PHASE_BIAS
 
@@ -172,8 +173,8 @@ def test_cli_probability_preset_with_an_explicit_override():
     payload = _probability(
         "--preset", "human", "--omega-z", 0, "--method", "monte-carlo", "--n", 200_000, "--seed", 12
     )
-    assert payload["distribution"]["omega_z"] == Fixed(0.0).describe()
-    assert payload["distribution"]["omega_x"] == human().omega_x.describe()
+    assert payload["distribution"]["omega_z"] == Fixed(0.0).to_dict()
+    assert payload["distribution"]["omega_x"] == human().omega_x.to_dict()
     assert abs(payload["p_same_side"] - 0.5) < 4 * payload["stderr"] + PHASE_BIAS
 
 

@@ -195,7 +195,8 @@ def _bias_preset(
             "psi_model": "preset",
             "psi_deg": float(psi_q[1]),
             "psi_range95_deg": [float(psi_q[0]), float(psi_q[2])],
-            "distribution": dist.describe(),
+            "distribution": {k: d.to_dict() for k, d in dist.parameters.items()},
+            "coin": dist.coin.name,
             "source": SOURCE,
         }
         if result is not None:
