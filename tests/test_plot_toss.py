@@ -54,6 +54,18 @@ def test_panels_say_the_face_given_by_the_papers_eq14():
     assert len(fig.axes) == 5  # four coin panels and the sphere
 
 
+def test_different_spins_each_get_their_spin_in_the_title():
+    omega = np.array([[90.0, 30.0, 0.0], [30.0, 0.0, 60.0]])
+    fig = plot_toss(QUARTER, Toss(omega=omega, flight_time=np.array([0.6, 0.3])))
+    titles = [ax.get_title() for ax in fig.axes]
+    assert titles[0].startswith("ω0 = (90, 30, 0) rad/s, T = 0.6 s")
+    assert titles[1].startswith("ω0 = (30, 0, 60) rad/s, T = 0.3 s")
+    # Two cones: ψ = 90° for the spin about a diameter, less with a spin about the normal.
+    psi = Flight(QUARTER, Toss(omega=omega[1], flight_time=0.3)).outcome.psi
+    assert f"ψ = {math.degrees(float(psi)):.1f}° to 90.0°" in titles[2]
+    assert "2 different spins" in fig._suptitle.get_text()
+
+
 def test_rejects_a_two_dimensional_batch():
     toss = Toss(omega=np.zeros((2, 2, 3)) + 80.0, flight_time=0.7)
     with pytest.raises(ValueError, match="one-dimensional batch"):

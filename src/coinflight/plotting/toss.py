@@ -55,7 +55,10 @@ def coin_rim(attitude: Rotation, radius: float, n_points: int = 121) -> FloatArr
 
 
 def normal_path(coin: Coin, toss: Toss, t: ArrayLike) -> FloatArray:
-    """Heads normal n(t) in the lab frame for one toss, shape (len(t), 3): the precession cone."""
+    """Heads normal n(t) in the lab frame, shape (len(t), 3): the precession cone.
+
+    For a batch, the path of its first toss.
+    """
     from coinflight.toss import Flight, Toss
 
     single = Toss(
@@ -88,7 +91,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     from matplotlib.gridspec import GridSpec
     from matplotlib.lines import Line2D
 
-    from coinflight.toss import Flight
+    from coinflight.toss import Flight, Toss
 
     if len(toss.shape) > 1:
         raise ValueError(
@@ -110,6 +113,9 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     rim1 = coin_rim(catch.attitude, r_mm).reshape(k, -1, 3)
     n0 = np.asarray(launch.normal).reshape(k, 3)
 
+    omegas = np.broadcast_to(toss.omega, (*toss.shape, 3)).reshape(k, 3)
+    spins, which = np.unique(omegas, axis=0, return_inverse=True)
+    distinct_spins = len(spins)
     ncols = max(1, min(ncols, k))
     nrows = math.ceil(k / ncols)
     fig = new_figure(figsize=(3.6 * ncols + 4.2, max(3.9 * nrows, 4.6)))
@@ -137,27 +143,37 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         ax.set_xlabel("X (mm)")
         ax.set_ylabel("Y (mm)")
         ax.set_zlabel("Z, up (mm)")
+        spin = "" if distinct_spins == 1 else "ω0 = ({:g}, {:g}, {:g}) rad/s, ".format(*omegas[i])
         ax.set_title(
-            f"T = {times[i]:g} s: {turns[i]:.4g} turns,\n"
+            f"{spin}T = {times[i]:g} s: {turns[i]:.4g} turns,\n"
             f"lands {FACE_NAMES[int(faces[i])].upper()} up",
             fontsize=10,
         )
 
     sphere: Any = fig.add_subplot(grid[:, ncols], projection="3d")
     _draw_sphere(sphere)
-    t_max = float(times.max())
-    path = normal_path(coin, toss, np.linspace(0.0, t_max, max(400, int(60 * turns.max()))))
-    sphere.plot(*path.T, color="#555555", lw=0.8)
-    sphere.scatter(*n0[0], color=LAUNCH_COLOR, s=40, depthshade=False)
+    # One path per distinct spin (a batch of flight times shares one cone), up to its last catch.
+    for j, w in enumerate(spins):
+        mine = np.ravel(which) == j
+        one = Toss(omega=w, flight_time=np.ones(()), start=toss.start, g=toss.g)
+        samples = max(400, int(60 * turns[mine].max()))
+        path = normal_path(coin, one, np.linspace(0.0, float(times[mine].max()), samples))
+        sphere.plot(*path.T, color="#555555", lw=0.8)
+        s_hat = s_lab[mine][0] / max(float(np.linalg.norm(s_lab[mine][0])), 1e-300)
+        _arrow(sphere, 1.3 * s_hat, S_COLOR, style="--", label="S" if j == 0 else "")
+    for start_n in np.unique(n0, axis=0):
+        sphere.scatter(*start_n, color=LAUNCH_COLOR, s=40, depthshade=False)
     sphere.scatter(*normals.T, color=CATCH_COLOR, s=40, depthshade=False)
     for end in (n0[0], *normals):
         sphere.plot(*np.stack([np.zeros(3), end]).T, color="#999999", lw=0.6, ls=":")
-    s_hat = s_lab[0] / max(float(np.linalg.norm(s_lab[0])), 1e-300)
-    _arrow(sphere, 1.3 * s_hat, S_COLOR, style="--", label="S")
+    psi_deg = np.degrees(psi)
+    cone = (
+        f"ψ = {psi_deg.min():.1f}°"
+        if np.ptp(psi_deg) < 0.05
+        else f"ψ = {psi_deg.min():.1f}° to {psi_deg.max():.1f}°"
+    )
     sphere.set_title(
-        "path of n on the unit sphere\n"
-        f"(cone of half-angle ψ = {math.degrees(psi[0]):.1f}° about S)",
-        fontsize=10,
+        f"path of n on the unit sphere\n(cone of half-angle {cone} about S)", fontsize=10
     )
     for setter in (sphere.set_xlim, sphere.set_ylim, sphere.set_zlim):
         setter(-1.1, 1.1)
@@ -175,11 +191,13 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         Line2D([], [], color=S_COLOR, lw=1.5, ls="--", label="angular momentum S (direction)"),
     ]
     fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9)
-    wx, wy, wz = (float(x) for x in toss.omega.reshape(-1, 3)[0])
+    spin_text = (
+        "ω0 = ({:g}, {:g}, {:g}) rad/s".format(*spins[0])
+        if len(spins) == 1
+        else f"{len(spins)} different spins"
+    )
     fig.suptitle(
-        title
-        or f"{coin.name} tossed {toss.start} up with ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, "
-        f"caught at launch height",
+        title or f"{coin.name} tossed {toss.start} up with {spin_text}, caught at launch height",
         fontsize=11,
     )
     return fig
