@@ -96,6 +96,7 @@ def land(
     surface: Surface,
     drag: Drag | None = None,
     max_bounces: int | None = None,
+    parallel: bool = True,
 ) -> LandingOutcome:
     """Land tosses given as arrays (ω (n, 3), v0 (n,)) on ``surface``; flat batch of n.
 
@@ -148,7 +149,9 @@ def land(
 
     if max_bounces is not None:
         kwargs["max_bounces"] = int(max_bounces)
-    face, bounces, first, settle, status = bounce.land(omega, speed, sign, **kwargs)
+    face, bounces, first, settle, status = bounce.land(
+        omega, speed, sign, parallel=parallel, **kwargs
+    )
     return LandingOutcome(face, bounces, first, settle, status)
 
 
@@ -289,6 +292,7 @@ class TableLanding(OutcomeModel):
             self.surface,
             self.drag,
             self.max_bounces,
+            parallel=False,  # the estimators run batches in their own threads
         )
         return np.bincount(out.face, minlength=3).astype(np.int64)
 

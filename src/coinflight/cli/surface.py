@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Annotated
 
 import typer
@@ -10,6 +11,7 @@ from coinflight.cli.options import number
 
 if TYPE_CHECKING:
     from coinflight.coin import Coin
+    from coinflight.probability.outcome import OutcomeModel
     from coinflight.surface import Drag, Surface
     from coinflight.toss import Toss
 
@@ -225,3 +227,45 @@ def report_landing(
         f"{float(toss.launch_speed):.3g} m/s (apex {float(toss.apex):.3g} m); {where}; {air}"
     )
     typer.echo(line)
+
+
+@dataclass(frozen=True)
+class LandingChoice:
+    """The landing the options ask for, and the outcome model that evaluates it."""
+
+    surface: Surface
+    drag: Drag | None
+    model: OutcomeModel
+
+    def describe(self) -> str:
+        """One line for the text output."""
+        air = "no air drag" if self.drag is None else f"air drag C_d = {self.drag.coefficient:g}"
+        if self.surface.bounces:
+            s = self.surface
+            return (
+                f"landing on a table {s.drop_height:g} m below launch (restitution "
+                f"{s.restitution:g}, friction {s.friction:g}), {air}"
+            )
+        return f"caught in the hand, {air}"
+
+
+def outcome_model(
+    kind: str,
+    drop_height: float | None,
+    restitution: float | None,
+    friction: float | None,
+    drag: float | None,
+    spin_damping: float | None,
+    bounces: int | None = None,
+) -> LandingChoice | None:
+    """None for the plain hand catch; else the surface, drag and outcome model to use."""
+    from coinflight.landing import DragCatch, TableLanding
+
+    the_surface = build_surface(kind, drop_height, restitution, friction)
+    the_drag = build_drag(drag, spin_damping)
+    check_bounces(the_surface, bounces)
+    if the_surface.bounces:
+        return LandingChoice(the_surface, the_drag, TableLanding(the_surface, the_drag, bounces))
+    if the_drag is not None:
+        return LandingChoice(the_surface, the_drag, DragCatch(the_drag))
+    return None

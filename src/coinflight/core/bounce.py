@@ -405,6 +405,52 @@ def _land_batch(
         status[k] = st
 
 
+@njit(cache=True, nogil=True)
+def _land_batch_serial(
+    omega,
+    start_sign,
+    launch_speed,
+    drop_height,
+    g,
+    radius,
+    hh,
+    mass,
+    i1,
+    i3,
+    restitution,
+    friction,
+    max_bounces,
+    rest_speed,
+    face,
+    bounces,
+    first,
+    settle,
+    status,
+):
+    for k in range(omega.shape[0]):
+        f, b, t1, ts, st = land_one(
+            (omega[k, 0], omega[k, 1], omega[k, 2]),
+            start_sign[k],
+            launch_speed[k],
+            drop_height,
+            g,
+            radius,
+            hh,
+            mass,
+            i1,
+            i3,
+            restitution,
+            friction,
+            max_bounces,
+            rest_speed,
+        )
+        face[k] = f
+        bounces[k] = b
+        first[k] = t1
+        settle[k] = ts
+        status[k] = st
+
+
 def land(
     omega: NDArray[np.float64],
     launch_speed: NDArray[np.float64],
@@ -421,6 +467,7 @@ def land(
     friction: float,
     max_bounces: int = MAX_IMPACTS,
     rest_speed: float = REST_SPEED,
+    parallel: bool = True,
 ) -> tuple[
     NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
 ]:
@@ -444,7 +491,10 @@ def land(
         Stop at the contact that follows this many bounces and report the well the coin is in
         there (0: the first contact); by default, run until the coin settles.
     rest_speed : float
-        Rebound speed of the contact point below which the coin is taken as landed dead, m/s.
+        Rebound speed of the contact point below which the bounces have died out, m/s.
+    parallel : bool
+        Spread the tosses over numba's threads (True), or run them in the calling thread with
+        the GIL released (False: for callers that run several batches in their own threads).
 
     Returns
     -------
@@ -466,7 +516,8 @@ def land(
     first = np.empty(n)
     settle = np.empty(n)
     status = np.empty(n, dtype=np.int8)
-    _land_batch(
+    kernel = _land_batch if parallel else _land_batch_serial
+    kernel(
         omega,
         sign,
         speed,
