@@ -101,3 +101,38 @@ def test_bad_input_one_line_exit_2(args, message):
 def test_surface_above_launch_point_cannot_be_built():
     with pytest.raises(ValueError, match="above the launch point"):
         Surface("table", drop_height=-np.float64(0.1))
+
+
+PROB = ["probability", "--omega-x", "150:300", "--launch-speed", "1.5:3", "--quiet"]
+
+
+def test_probability_on_a_table_reports_p_edge():
+    # A thick coin (h/d = 0.575) lands on edge often; the three probabilities add up to 1.
+    coin = ["--radius", "0.012", "--thickness", "0.0138", "--mass", "0.005"]
+    table = ["--surface", "table", "--drop-height", "0.5", "--restitution", "0"]
+    args = [*PROB, *coin, *table, "--method", "qmc", "--n", "4096", "--seed", "3", "--json"]
+    result = _run(*args)
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.stdout)
+    assert out["p_heads"] + out["p_tails"] + out["p_edge"] == pytest.approx(1.0, abs=1e-12)
+    assert out["counts"]["edge"] > 0
+    # Landing dead (e = 0) in vigorous planar tosses: Yong & Mahadevan's 2 arctan(h/d)/π.
+    assert out["p_edge"] == pytest.approx(2 * np.arctan(0.0138 / 0.024) / np.pi, abs=0.03)
+    assert (out["surface"], out["restitution"]) == ("table", 0.0)
+
+
+def test_probability_table_text_and_exact_refused():
+    args = [*PROB, "--surface", "table", "--method", "monte-carlo", "--n", "2000", "--seed", "1"]
+    result = _run(*args)
+    assert result.exit_code == 0, result.output
+    assert "P(edge) = " in result.stdout
+    assert "landing on a table" in result.stdout
+    refused = _run(*PROB, "--surface", "table")
+    assert refused.exit_code == 2
+    assert "exact method handles the hand catch only" in refused.stderr
+
+
+def test_probability_bad_surface_input():
+    result = _run(*PROB, "--surface", "table", "--restitution", "7", "--method", "qmc")
+    assert result.exit_code == 2
+    assert "restitution must be between 0 and 1" in result.stderr
