@@ -136,3 +136,37 @@ def test_probability_bad_surface_input():
     result = _run(*PROB, "--surface", "table", "--restitution", "7", "--method", "qmc")
     assert result.exit_code == 2
     assert "restitution must be between 0 and 1" in result.stderr
+
+
+def test_basin_after_k_bounces(tmp_path):
+    from coinflight.landing import land, table_faces
+    from coinflight.plotting.basin import basin_map
+
+    coin = Coin.preset("us-nickel")
+    surface = Surface("table", drop_height=0.3)
+    maps = [
+        basin_map(
+            coin, (0.3, 0.4), (20.0, 40.0), resolution=(40, 30), outcome=table_faces(surface, k)
+        )
+        for k in (0, 1)
+    ]
+    # Pixel by pixel, the map after 0 bounces is the well at the first contact.
+    t, w = np.meshgrid(maps[0].flight_time, maps[0].spin)
+    omega = np.stack([w, 0 * w, 0 * w], axis=-1).reshape(-1, 3)
+    first = land(coin, omega, 0.5 * 9.81 * t.reshape(-1), 1.0, 9.81, surface, max_bounces=0)
+    np.testing.assert_array_equal(maps[0].face, first.face.reshape(w.shape))
+    # A bounce moves some pixels to another face.
+    assert np.any(maps[0].face != maps[1].face)
+    out = tmp_path / "basin.png"
+    args = ["plot", "basin", "--surface", "table", "--drop-height", "0.3", "--bounces", "1"]
+    result = _run(*args, "--resolution", "40", "--coin", "us-nickel", "--out", str(out))
+    assert result.exit_code == 0, result.output
+    assert out.stat().st_size > 0
+    assert "P(edge) on the grid" in result.stdout
+
+
+def test_basin_bounces_need_a_table(tmp_path):
+    result = _run("plot", "basin", "--bounces", "1", "--out", str(tmp_path / "b.png"))
+    assert result.exit_code == 2
+    assert "--bounces applies to --surface table only" in result.stderr
+    assert not (tmp_path / "b.png").exists()

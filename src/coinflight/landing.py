@@ -9,6 +9,7 @@ between impacts) and, with air drag, :mod:`coinflight.core.drag`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -297,6 +298,32 @@ class TableLanding(OutcomeModel):
         return np.bincount(out.face, minlength=3).astype(np.int64)
 
 
+def table_faces(
+    surface: Surface, max_bounces: int | None = None
+) -> Callable[[Coin, FloatArray, FloatArray, float, float], NDArray[np.int8]]:
+    """An outcome function ``(coin, ω (..., 3), T (...), start_sign, g) -> faces (...)``.
+
+    For maps over grids of tosses (:func:`coinflight.plotting.basin.basin_map`'s ``outcome``):
+    the tosses, launched at v0 = g T / 2, land on ``surface``; with ``max_bounces`` = K the
+    face is the well the coin is in at the contact after K bounces (K = 0: first contact).
+    """
+    if not isinstance(surface, Surface) or surface.kind != "table":
+        raise ValueError("table_faces needs a Surface of kind 'table'")
+
+    def faces(
+        coin: Coin, omega: FloatArray, flight_time: FloatArray, start_sign: float, g: float
+    ) -> NDArray[np.int8]:
+        omega = np.asarray(omega, dtype=float)
+        t = np.asarray(flight_time, dtype=float)
+        shape = np.broadcast_shapes(omega.shape[:-1], t.shape)
+        flat_omega = np.broadcast_to(omega, (*shape, 3)).reshape(-1, 3)
+        speed = 0.5 * g * np.broadcast_to(t, shape).reshape(-1)
+        out = land(coin, flat_omega, speed, start_sign, g, surface, None, max_bounces)
+        return out.face.reshape(shape)
+
+    return faces
+
+
 class DragCatch(OutcomeModel):
     """Outcome model: caught in the hand at launch height after a flight through air."""
 
@@ -333,4 +360,5 @@ __all__ = [
     "TableLanding",
     "catch_with_drag",
     "land",
+    "table_faces",
 ]

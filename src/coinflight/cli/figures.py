@@ -19,6 +19,15 @@ from coinflight.cli.options import (
     number,
     resolve_coin,
 )
+from coinflight.cli.surface import (
+    Bounces,
+    DropHeight,
+    Friction,
+    Restitution,
+    SurfaceKindOption,
+    table_outcome,
+    table_title,
+)
 from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
 
 OutFile = Annotated[
@@ -236,10 +245,17 @@ def plot_basin(
     mass: Mass = None,
     boundaries: Boundaries = True,
     dpi: Dpi = 150,
+    surface: SurfaceKindOption = "hand",
+    drop_height: DropHeight = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
+    bounces: Bounces = None,
 ) -> None:
     """Map heads and tails over a box of flight times and spins, with Keller's hyperbolas.
 
     Example: coinflight plot basin --omega-x 60:90 --flight-time 0.6:0.9 --out basin.png
+    (on a table, after K bounces: --surface table --drop-height 0.3 --bounces K; the
+    hyperbolas, which belong to the catch, are then not drawn)
     """
     import math
 
@@ -282,10 +298,17 @@ def plot_basin(
         resolution=parse_resolution(resolution),
         start=start,
         g=g,
+        **table_outcome(surface, drop_height, restitution, friction, bounces),
     )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
-    _written(save_figure(draw(basin, boundaries=boundaries), out, dpi=dpi))
+    if surface == "table":
+        typer.echo(f"P(edge) on the grid = {basin.fraction(2):.6f}")
+        title = table_title(drop_height, restitution, friction, bounces)
+        figure = draw(basin, title=title, boundaries=False)
+    else:
+        figure = draw(basin, boundaries=boundaries)
+    _written(save_figure(figure, out, dpi=dpi))
 
 
 __all__ = ["parse_numbers", "parse_range", "parse_resolution", "plot_basin", "plot_toss"]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
@@ -269,3 +269,35 @@ def outcome_model(
     if the_drag is not None:
         return LandingChoice(the_surface, the_drag, DragCatch(the_drag))
     return None
+
+
+def table_outcome(
+    kind: str,
+    drop_height: float | None,
+    restitution: float | None,
+    friction: float | None,
+    bounces: int | None,
+) -> dict[str, Any]:
+    """``outcome=`` for :func:`coinflight.plotting.basin.basin_map` (empty for the hand)."""
+    from coinflight.landing import table_faces
+
+    the_surface = build_surface(kind, drop_height, restitution, friction)
+    check_bounces(the_surface, bounces)
+    if not the_surface.bounces:
+        return {}
+    return {"outcome": table_faces(the_surface, bounces)}
+
+
+def table_title(
+    drop_height: float | None,
+    restitution: float | None,
+    friction: float | None,
+    bounces: int | None,
+) -> str:
+    """Figure title for a map of landings on a table."""
+    s = build_surface("table", drop_height, restitution, friction)
+    when = "at rest" if bounces is None else f"after {bounces} bounce{'s' * (bounces != 1)}"
+    return (
+        f"On a table {s.drop_height:g} m below launch (e = {s.restitution:g}, "
+        f"μ = {s.friction:g}): the face {when}"
+    )
