@@ -12,15 +12,17 @@ momentum are the whole state: a cylinder's contact with a plane does not depend 
 angle about its own axis.
 
 Contacts are located exactly, not by a time step: conservative advancement (Mirtich,
-*Impulse-based dynamic simulation of rigid body systems*, PhD thesis, Berkeley 1996, §3.4)
-steps by a time that provably cannot close the gap between the coin's lowest point and the
-surface, then a safeguarded Newton iteration on the gap polishes the contact time to machine
-precision. The impact is :func:`coinflight.core.impact.impact`.
+*Impulse-based dynamic simulation of rigid body systems*, PhD thesis, Berkeley 1996, §3.4),
+accelerated by a second-order bound on the gap, steps towards the contact, and a safeguarded
+Newton iteration on the gap between the coin's lowest point and the surface polishes the
+contact time to machine precision (:func:`next_contact`). The impact is
+:func:`coinflight.core.impact.impact`.
 
 The coin has settled when it can no longer cross the potential barrier between a face and its
-edge: total mechanical energy below m g sqrt(r² + h²/4), the height of its centre of mass when
-balanced on the corner of rim and face (Vulović & Prange 1986; Yong & Mahadevan 2011; REFERENCES
-§4-5). Its outcome is then the well it is in (:func:`coinflight.core.impact.resting_face`).
+edge: the energy that can turn it over (:func:`tumbling_energy`) below m g sqrt(r² + h²/4), the
+height of its centre of mass when balanced on the corner of rim and face (Vulović & Prange
+1986; Yong & Mahadevan 2011; REFERENCES §4-5). Its outcome is then the well it is in
+(:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
 one rim point while it tips), the end is the planar rocking of :func:`rock`. With e = 0 the
 surface absorbs the coin at its first contact and the well it touches in is the outcome, as
@@ -58,7 +60,7 @@ SETTLED_ROCKING = 4
 """The bounces died out (rebound below the rest speed); the coin rocked on its corners until
 it was trapped in a well (:func:`rock`)."""
 
-MAX_IMPACTS = 10_000
+MAX_IMPACTS = 2_000
 MAX_STEPS = 100_000
 CA_TOLERANCE = 1e-9
 """Conservative advancement hands over to Newton within this gap, m."""
