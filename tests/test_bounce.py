@@ -140,3 +140,28 @@ def test_landing_value_object_and_table_model():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def _rock(coin, phi, phidot):
+    n = (math.sin(phi), 0.0, math.cos(phi))
+    i1, _ = coin.moments
+    return bounce.rock(n, (0.0, phidot, 0.0), coin.radius, coin.thickness / 2, coin.mass, i1, G)
+
+
+def test_rocking_ends_in_the_well_it_cannot_leave():
+    # At rest the coin stays in the well it is in: heads, edge (standing up) or tails.
+    assert _rock(NICKEL, 0.1, 0.0) == 1
+    assert _rock(NICKEL, math.pi / 2, 0.0) == 2
+    assert _rock(NICKEL, math.pi - 0.1, 0.0) == 0
+    # Tipping slowly towards the edge: not enough energy to pass the corner.
+    assert _rock(NICKEL, 0.1, 1.0) == 1
+    # Tipping hard: over the corner, across the narrow edge well (its slap costs almost
+    # nothing), and a thin coin slapping flat on the far face stops there (Housner's ratio ≤ 0).
+    assert _rock(NICKEL, 0.1, 60.0) == 0
+    assert _rock(NICKEL, math.pi - 0.1, -60.0) == 1
+    # A thick coin rocking gently on its edge stays there; mirror images swap heads and tails.
+    assert _rock(THICK, math.pi / 2, 1.0) == 2
+    for phi, phidot in [(0.3, 25.0), (1.2, -8.0), (2.0, 14.0)]:
+        face = _rock(THICK, phi, phidot)
+        mirror = _rock(THICK, math.pi - phi, -phidot)
+        assert mirror == {0: 1, 1: 0, 2: 2}[face]
