@@ -10,10 +10,11 @@ dropped onto a table 0.8 m below launch (e = 0.5, μ = 0.3): tosses per second, 
 repeats, all threads of the machine.
 
 MuJoCo (optional: ``pip install coinflight[mujoco]``; skipped cleanly when not installed): the
-same tosses as a free cylinder over a plane, time step 1e-4 s, its default soft contact with
-friction μ; tosses per second, and the agreement of outcomes with coinflight, (a) at the first
-contact (geometry only: the well of the coin's orientation when it first touches) and (b) at
-rest after 2 s (depends on each engine's contact model).
+same tosses as a free cylinder over a plane, time step 1e-4 s, RK4 and MuJoCo's default Euler
+integrator, its default soft contact with friction μ, multithreaded rollouts; tosses per second,
+and the agreement of outcomes with coinflight, (a) at the first contact (geometry and free
+flight only: the well of the coin's orientation when it first touches) and (b) at rest after
+2 s (depends on each engine's contact model).
 """
 
 from __future__ import annotations
@@ -77,12 +78,12 @@ def bench_coinflight(n: int, repeats: int) -> None:
     )
 
 
-def _mujoco_model(friction: float):  # type: ignore[no-untyped-def]
+def _mujoco_model(friction: float, integrator: str = "RK4"):  # type: ignore[no-untyped-def]
     import mujoco
 
     xml = f"""
     <mujoco>
-      <option timestep="1e-4" gravity="0 0 -{G}"/>
+      <option timestep="1e-4" gravity="0 0 -{G}" integrator="{integrator}"/>
       <worldbody>
         <geom type="plane" size="5 5 0.1" friction="{friction} 0.005 0.0001"/>
         <body name="coin" pos="0 0 1">
@@ -95,12 +96,14 @@ def _mujoco_model(friction: float):  # type: ignore[no-untyped-def]
     return mujoco.MjModel.from_xml_string(xml)
 
 
-def mujoco_outcomes(omega: np.ndarray, v0: np.ndarray, settle: float = 2.0) -> tuple:  # type: ignore[type-arg]
+def mujoco_outcomes(
+    omega: np.ndarray, v0: np.ndarray, settle: float = 2.0, integrator: str = "RK4"
+) -> tuple:  # type: ignore[type-arg]
     """(face at first contact, face at rest) for each toss: MuJoCo's multithreaded rollout."""
     import mujoco
     from mujoco import rollout
 
-    model = _mujoco_model(SURFACE.friction)
+    model = _mujoco_model(SURFACE.friction, integrator)
     datas = [mujoco.MjData(model) for _ in range(os.cpu_count() or 1)]
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
     size = mujoco.mj_stateSize(model, spec)
@@ -147,17 +150,22 @@ def bench_mujoco(m: int) -> None:
         print("MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
         return
     omega, v0 = tosses(m)
-    t0 = time.perf_counter()
-    first, rest = mujoco_outcomes(omega, v0)
-    rate = m / (time.perf_counter() - t0)
     ours_first = land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0).face
     ours = land(COIN, omega, v0, 1.0, G, SURFACE).face
-    print(f"MuJoCo {mujoco.__version__}, dt = 1e-4 s, {m} tosses: {rate:,.1f} tosses/s")
-    print(
-        f"  agreement with coinflight: first contact {np.mean(first == ours_first):.1%}, "
-        f"at rest {np.mean(rest == ours):.1%} (MuJoCo's soft contact is not e = "
-        f"{SURFACE.restitution}); MuJoCo P(h, t, e) at rest = {np.bincount(rest, minlength=3) / m}"
-    )
+    for integrator in ("RK4", "Euler"):
+        t0 = time.perf_counter()
+        first, rest = mujoco_outcomes(omega, v0, integrator=integrator)
+        rate = m / (time.perf_counter() - t0)
+        print(
+            f"MuJoCo {mujoco.__version__} ({integrator}, dt = 1e-4 s, {os.cpu_count()} threads), "
+            f"{m} tosses: {rate:,.1f} tosses/s"
+        )
+        print(
+            f"  agreement with coinflight: first contact {np.mean(first == ours_first):.1%}, "
+            f"at rest {np.mean(rest == ours):.1%} (MuJoCo's soft contact is not e = "
+            f"{SURFACE.restitution}); MuJoCo P(h, t, e) at rest = "
+            f"{np.bincount(rest, minlength=3) / m}"
+        )
 
 
 def nickel_edge(n: int) -> None:
@@ -179,7 +187,7 @@ def main() -> None:
     args = parser.parse_args()
     print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs")
     bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
-    bench_mujoco(16 if args.quick else 200)
+    bench_mujoco(16 if args.quick else 100)
     if args.nickel:
         nickel_edge(1_000_000)
 
