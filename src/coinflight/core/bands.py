@@ -103,14 +103,11 @@ def diameter_spin_integral(x1: float, x2: float, c: float, t1: float, t2: float)
     b2 = phase_measure(mid * t2) - s2 * mid * t2
     alpha = s2 * t2 - s1 * t1
     beta = b2 - b1
-    if c > 0:
-        prim = np.arcsinh(xs / c)
-        dlog = np.diff(prim)
-    else:
-        with np.errstate(divide="ignore"):
-            logs = np.log(xs)
-        dlog = np.diff(logs)
-        # On the first piece from x = 0, F(Ω t) = Ω t for both times, so β = 0 there.
-        dlog = np.where(beta == 0.0, 0.0, dlog)
+    # ∫ dx / √(x² + c²) = ln(x + √(x² + c²)) (= asinh(x/c) + ln c), which also holds for
+    # c = 0 and does not overflow for tiny c. On the first piece from x = 0 with c = 0,
+    # F(Ω t) = Ω t for both times, so β = 0 there and the infinite logarithm is not used.
+    with np.errstate(divide="ignore"):
+        prim = np.log(xs + np.hypot(xs, c))
+    dlog = np.where(beta == 0.0, 0.0, np.diff(prim))
     total = np.sum(alpha * dx) + np.sum(np.where(beta == 0.0, 0.0, beta * dlog))
     return float(total / (t2 - t1))
