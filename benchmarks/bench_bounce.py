@@ -172,8 +172,8 @@ def nickel_edge(n: int) -> None:
     """P(edge) of a US nickel for a few (e, μ), beside Murray & Teare's 1 in 6000."""
     omega, v0 = tosses(n, seed=6000)
     print(f"US nickel, {n:,} tosses onto a table {DROP} m below launch (Murray & Teare: 1/6000)")
-    for e in (0.2, 0.3, 0.5, 0.7):
-        for mu in (0.1, 0.3, 0.5):
+    for e in (0.25, 0.35, 0.5):
+        for mu in (0.3, 0.5, 1.0):
             out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
             k = int(np.sum(out.face == 2))
             ratio = f"1 in {n / k:,.0f}" if k else "none"
