@@ -165,3 +165,19 @@ def test_rocking_ends_in_the_well_it_cannot_leave():
         face = _rock(THICK, phi, phidot)
         mirror = _rock(THICK, math.pi - phi, -phidot)
         assert mirror == {0: 1, 1: 0, 2: 2}[face]
+
+
+@pytest.mark.parametrize("spin_z", [0.0, 50.0])
+def test_flat_drop_bounces_straight_and_stays_up(spin_z):
+    # No tumbling: the coin falls flat, hits with its whole face (contact at the centre), bounces
+    # straight up with e times the speed, and ends the face it started with.
+    for start, face in ((1.0, 1), (-1.0, 0)):
+        out = land(
+            NICKEL, np.array([[0.0, 0.0, spin_z]]), 1.0, start, G, Surface("table", 0.5, 0.5, 0.3)
+        )
+        assert out.face[0] == face
+        assert out.status[0] == bounce.SETTLED_ENERGY
+        # First contact: the face, h/2 below the centre of mass, reaches the table.
+        z0, v0 = 0.5 - NICKEL.thickness / 2, 1.0
+        t_first = (v0 + math.sqrt(v0 * v0 + 2 * G * z0)) / G
+        assert out.first_contact[0] == pytest.approx(t_first, rel=1e-12)
