@@ -177,7 +177,7 @@ def nickel_edge(n: int) -> None:
             out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
             k = int(np.sum(out.face == 2))
             ratio = f"1 in {n / k:,.0f}" if k else "none"
-            print(f"  e = {e:.1f}, μ = {mu:.1f}: P(edge) = {k / n:.2e} ({ratio}; {k} edges)")
+            print(f"  e = {e:.2f}, μ = {mu:.1f}: P(edge) = {k / n:.2e} ({ratio}; {k} edges)")
 
 
 def main() -> None:
