@@ -103,13 +103,16 @@ def test_planar_tosses_reproduce_yong_mahadevan_dynamic_edge_probability():
 
 def test_drag_path_agrees_with_kernel_without_drag():
     # The SciPy path (event location on the integrated flight) with a negligible drag against
-    # the exact event-driven kernel: the same bounces and outcome, first contact to 1e-8 s.
+    # the exact event-driven kernel: the same bounces and outcome, contact times to 1e-8 s.
     omega, v0 = _tosses(3, 19)
     surface = Surface("table", 0.4, 0.5, 0.3)
     exact = land(NICKEL, omega, v0, 1.0, G, surface)
     slow = land(NICKEL, omega, v0, 1.0, G, surface, drag=Drag(coefficient=1e-12))
     np.testing.assert_array_equal(slow.face, exact.face)
+    np.testing.assert_array_equal(slow.bounces, exact.bounces)
     np.testing.assert_allclose(slow.first_contact, exact.first_contact, atol=1e-8)
+    # Every later contact too (DOP853 at rtol 1e-12 against the closed form).
+    np.testing.assert_allclose(slow.settle_time, exact.settle_time, atol=1e-8)
 
 
 def test_landing_value_object_and_table_model():
