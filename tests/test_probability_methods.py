@@ -17,10 +17,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from coinflight.core import bands, sampling
+from coinflight.core.torque_free import normal_alignment
 from coinflight.distributions import Fixed, Normal, Uniform
 from coinflight.ensemble import TossDistribution
 from coinflight.probability import PAPER_B_CELLS, ProbabilityResult, estimate, wilson_interval
-from coinflight.probability.outcome import HAND_CATCH, OutcomeModel
+from coinflight.probability.outcome import OutcomeModel
 
 T_RANGE = Uniform(0.6, 0.9)  # Stefan & Cheche §3: T ∈ [0.6, 0.9] s in Figs 2-3
 PAPER = {
@@ -41,10 +42,15 @@ BOXES = {**PAPER, **OTHER}
 
 
 class Generic(OutcomeModel):
-    """The hand catch through the generic code path (no fast paths): a brute-force reference."""
+    """The hand catch by the NumPy closed form, no compiled kernel: a brute-force reference."""
 
     def count(self, dist, u):
-        return HAND_CATCH.count(dist, u)
+        wx, wy, wz, t = dist.values(u)
+        i1, i3 = dist.moments
+        same = int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0.0))
+        n = u.shape[1]
+        heads = same if dist.start == "heads" else n - same
+        return np.array([n - heads, heads, 0], dtype=np.int64)
 
 
 @pytest.mark.parametrize("name", list(PAPER))
@@ -162,8 +168,9 @@ def test_seed_reproducible_whatever_chunks_and_threads():
     assert q[2].counts == q[0].counts
 
 
-def test_generic_path_draws_the_same_tosses():
-    # The fast kernel and the generic outcome-model path use the same uniforms.
+def test_compiled_and_numpy_outcomes_agree_on_the_same_draws():
+    # Monte Carlo hands every outcome model the same unit-cube points: the compiled kernel and
+    # the NumPy closed form must count the same faces, for plain draws and for method B.
     dist = TossDistribution(Uniform(60, 90), 10, 0, T_RANGE)
     fast = estimate(dist, "monte-carlo", n=50_000, seed=9)
     slow = estimate(dist, "monte-carlo", n=50_000, seed=9, model=Generic())
@@ -272,7 +279,6 @@ def test_fast_sin_is_accurate():
 
 def test_compiled_kernels_match_numpy_closed_form():
     # Guards the numba cache too: a kernel compiled from an older normal_alignment would differ.
-    from coinflight.core.torque_free import normal_alignment
 
     rng = np.random.default_rng(8)
     n = 200_000
@@ -282,12 +288,11 @@ def test_compiled_kernels_match_numpy_closed_form():
     expected = int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0))
     assert sampling.count_same_side(wx, wy, wz, t, i1, i3) == expected
     u = np.stack([(wx + 100) / 200, (wy + 30) / 60, (wz + 200) / 400, (t - 0.2) / 1.3])
-    rows = np.arange(4)
     offset = np.array([-100.0, -30.0, -200.0, 0.2])
     scale = np.array([200.0, 60.0, 400.0, 1.3])
     values = offset[:, None] + scale[:, None] * u
     expected = int(np.count_nonzero(normal_alignment(*values, i1, i3) > 0))
-    assert sampling.count_same_side_affine(u, rows, offset, scale, i1, i3) == expected
+    assert sampling.count_same_side_affine(u, offset, scale, i1, i3) == expected
 
 
 @settings(deadline=None, max_examples=25)
@@ -366,3 +371,17 @@ def test_exact_to_1e9_against_independent_quadrature(name):
         total += val
     reference = total / ((b - a) * (t2 - t1))
     assert estimate(dist, "exact").p_heads == pytest.approx(reference, abs=1e-9)
+
+
+def test_monte_carlo_runs_are_prefixes_of_longer_runs():
+    """Same seed: the first n tosses of a longer run are the tosses of the run of n."""
+    from coinflight.probability.monte_carlo import DRAW, block_generators, draw_block, seed_sequence
+
+    root = seed_sequence(5)
+    short = np.concatenate(list(draw_block(block_generators(root, 0, 3), DRAW + 77, 0)), axis=1)
+    long = np.concatenate(list(draw_block(block_generators(root, 0, 3), 3 * DRAW, 0)), axis=1)
+    np.testing.assert_array_equal(short, long[:, : DRAW + 77])
+    dist = PAPER["fig3a"]
+    n = 1 << 20
+    counts = [estimate(dist, "monte-carlo", n=m, seed=5).counts for m in (n - 1, n)]
+    assert counts[1][1] - counts[0][1] in (0, 1)

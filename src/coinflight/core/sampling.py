@@ -9,15 +9,12 @@ Design
   swapped for :func:`sinc`, a branch-free polynomial version accurate to 2 ulp: libm's ``sin``
   is not vectorised by LLVM and costs ~30 ns a call on the reference machine, which alone
   would exceed the Monte Carlo budget (see ``benchmarks/bench_probability.py``).
-* Random numbers for Monte Carlo come from a counter-based generator, SplitMix64 (Steele, Lea
-  & Flood, OOPSLA 2014): output i of a stream with key k is mix64(k + (i + 1) γ), exactly the
-  SplitMix64 sequence started at k. A block of tosses is therefore a pure function of its key
-  (drawn from a NumPy ``SeedSequence`` child) and of the toss index: results cannot depend on
-  chunking or threads, and the loop vectorises. Each toss uses two 64-bit outputs, split into
-  four 32-bit uniforms (i + ½)/2³².
+* Random numbers are not drawn here: the estimators fill arrays of uniforms with NumPy
+  generators (which release the GIL) and pass them in, so the kernels are pure functions of
+  their arrays and the loops vectorise.
 * Parameters are mapped from the unit interval by a per-parameter affine map
   x = offset + scale · u (Uniform and Fixed distributions); other distributions are mapped by
-  their ``ppf`` in NumPy and passed in with offset 0, scale 1.
+  their ``ppf`` in NumPy and passed in as values.
 """
 
 from __future__ import annotations
@@ -49,12 +46,6 @@ _S7 = -7.647163731819816e-13
 _S8 = 2.8114572543455206e-15
 _S9 = -8.22063524662433e-18
 _S10 = 1.9572941063391263e-20
-
-_GAMMA = np.uint64(0x9E3779B97F4A7C15)
-_MIX1 = np.uint64(0xBF58476D1CE4E5B9)
-_MIX2 = np.uint64(0x94D049BB133111EB)
-_LOW32 = np.uint64(0xFFFFFFFF)
-_TWO_M32 = 2.0**-32
 
 
 @numba.njit(inline="always", cache=True, error_model="numpy")
@@ -111,86 +102,6 @@ normal_alignment = numba.njit(inline="always", cache=True, error_model="numpy")(
 """:func:`coinflight.core.torque_free.normal_alignment`, compiled (fast sinc, see module)."""
 
 
-@numba.njit(inline="always", cache=True, error_model="numpy")
-def _mix64(z: np.uint64) -> np.uint64:
-    """SplitMix64 finaliser (Steele, Lea & Flood 2014; constants from Vigna's splitmix64.c)."""
-    z = (z ^ (z >> np.uint64(30))) * _MIX1
-    z = (z ^ (z >> np.uint64(27))) * _MIX2
-    return z ^ (z >> np.uint64(31))
-
-
-@numba.njit(nogil=True, cache=True, error_model="numpy")
-def uniforms(key: np.uint64, start: int, n: int) -> np.ndarray:
-    """The four uniforms of tosses ``start … start + n − 1`` of stream ``key``, shape (4, n).
-
-    The values :func:`count_same_side_random` uses; for tests and for non-affine distributions.
-    """
-    out = np.empty((4, n))
-    for j in range(n):
-        c = key + np.uint64(2 * (start + j) + 1) * _GAMMA
-        w1 = _mix64(c)
-        w2 = _mix64(c + _GAMMA)
-        out[0, j] = (np.float64(w1 & _LOW32) + 0.5) * _TWO_M32
-        out[1, j] = (np.float64(w1 >> np.uint64(32)) + 0.5) * _TWO_M32
-        out[2, j] = (np.float64(w2 & _LOW32) + 0.5) * _TWO_M32
-        out[3, j] = (np.float64(w2 >> np.uint64(32)) + 0.5) * _TWO_M32
-    return out
-
-
-@numba.njit(nogil=True, cache=True, error_model="numpy")
-def count_same_side_random(
-    key: np.uint64,
-    start: int,
-    n: int,
-    offset: np.ndarray,
-    scale: np.ndarray,
-    cells: int,
-    i1: float,
-    i3: float,
-) -> int:
-    """Number of same-side tosses among tosses ``start … start + n − 1`` of stream ``key``.
-
-    Parameters
-    ----------
-    key : uint64
-        Stream key (from a ``SeedSequence`` child).
-    start, n : int
-        First toss index in the stream and number of tosses.
-    offset, scale : ndarray, shape (4,)
-        Affine maps u ↦ offset + scale · u for (ωx, ωy, ωz, T); rad/s and s.
-    cells : int
-        0 for continuous draws; otherwise the paper's method B: u is replaced by the midpoint
-        of its cell among ``cells`` equal cells, (⌊u · cells⌋ + ½) / cells.
-    i1, i3 : float
-        Principal moments, kg m².
-    """
-    same = 0
-    fc = float(cells)
-    for j in range(n):
-        c = key + np.uint64(2 * (start + j) + 1) * _GAMMA
-        w1 = _mix64(c)
-        w2 = _mix64(c + _GAMMA)
-        u0 = (np.float64(w1 & _LOW32) + 0.5) * _TWO_M32
-        u1 = (np.float64(w1 >> np.uint64(32)) + 0.5) * _TWO_M32
-        u2 = (np.float64(w2 & _LOW32) + 0.5) * _TWO_M32
-        u3 = (np.float64(w2 >> np.uint64(32)) + 0.5) * _TWO_M32
-        if cells > 0:
-            u0 = (np.floor(u0 * fc) + 0.5) / fc
-            u1 = (np.floor(u1 * fc) + 0.5) / fc
-            u2 = (np.floor(u2 * fc) + 0.5) / fc
-            u3 = (np.floor(u3 * fc) + 0.5) / fc
-        a = normal_alignment(
-            offset[0] + scale[0] * u0,
-            offset[1] + scale[1] * u1,
-            offset[2] + scale[2] * u2,
-            offset[3] + scale[3] * u3,
-            i1,
-            i3,
-        )
-        same += a > 0.0
-    return same
-
-
 @numba.njit(nogil=True, cache=True, error_model="numpy")
 def count_same_side(
     wx: np.ndarray, wy: np.ndarray, wz: np.ndarray, t: np.ndarray, i1: float, i3: float
@@ -204,21 +115,32 @@ def count_same_side(
 
 @numba.njit(nogil=True, cache=True, error_model="numpy")
 def count_same_side_affine(
-    u: np.ndarray, rows: np.ndarray, offset: np.ndarray, scale: np.ndarray, i1: float, i3: float
+    u: np.ndarray, offset: np.ndarray, scale: np.ndarray, i1: float, i3: float
 ) -> int:
-    """Same-side count for unit-cube points ``u`` (k, n) mapped affinely.
+    """Same-side count for unit-cube points mapped affinely to initial conditions.
 
-    ``rows[p]`` is the row of ``u`` holding parameter p of (ωx, ωy, ωz, T), or −1 when p is
-    fixed at ``offset[p]``.
+    Parameters
+    ----------
+    u : ndarray, shape (4, n)
+        Points of the unit cube; row p drives parameter p of (ωx, ωy, ωz, T). Rows must be
+        contiguous for the loop to vectorise (a toss-major layout is about 4 times slower).
+    offset, scale : ndarray, shape (4,)
+        Parameter p is ``offset[p] + scale[p] * u[p]`` (rad/s, s); a fixed parameter has
+        scale 0, so its row does not change its value.
+    i1, i3 : float
+        Principal moments, kg m².
     """
     same = 0
-    n = u.shape[1]
-    x = np.empty(4)
-    for j in range(n):
-        for p in range(4):
-            r = rows[p]
-            x[p] = offset[p] + scale[p] * u[r, j] if r >= 0 else offset[p]
-        same += normal_alignment(x[0], x[1], x[2], x[3], i1, i3) > 0.0
+    for j in range(u.shape[1]):
+        a = normal_alignment(
+            offset[0] + scale[0] * u[0, j],
+            offset[1] + scale[1] * u[1, j],
+            offset[2] + scale[2] * u[2, j],
+            offset[3] + scale[3] * u[3, j],
+            i1,
+            i3,
+        )
+        same += a > 0.0
     return same
 
 
@@ -316,11 +238,7 @@ def _settle(
 
 def warm_up() -> None:
     """Compile (or load from the on-disk cache) every kernel once, for timing runs."""
-    off = np.zeros(4)
-    sc = np.ones(4)
-    count_same_side_random(np.uint64(1), 0, 4, off, sc, 0, 1.0, 1.0)
-    uniforms(np.uint64(1), 0, 2)
     z = np.zeros(2)
     count_same_side(z, z, z, z + 1.0, 1.0, 1.0)
-    count_same_side_affine(np.zeros((1, 2)), np.array([0, -1, -1, -1]), off, sc, 1.0, 1.0)
+    count_same_side_affine(np.zeros((4, 2)), np.zeros(4), np.ones(4), 1.0, 1.0)
     count_same_side_time_bands(z, z, z, np.array([0.5, 0.6]), 1.0, 1.0)

@@ -145,7 +145,8 @@ def convergence(
         Cells per parameter (grid), events (monte-carlo), points (qmc: 16 × powers of two).
     seed : int, optional
         One seed for all random series. Monte Carlo runs of growing size share their first
-        tosses (the streams are counter-based), so the series is a running estimate.
+        tosses (see :mod:`coinflight.probability.monte_carlo`), so the series is a running
+        estimate.
     """
     from coinflight.probability import estimate
     from coinflight.probability.monte_carlo import reported_seed, seed_sequence

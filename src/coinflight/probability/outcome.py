@@ -24,35 +24,17 @@ def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
 
 
 class OutcomeModel:
-    """Counts faces for batches of tosses. Subclasses override :meth:`count`.
-
-    :meth:`count_random` (Monte Carlo) has a generic implementation on top of :meth:`count`;
-    models with a faster path override it too.
-    """
+    """Counts faces for batches of tosses. Subclasses override :meth:`count`."""
 
     name = "outcome model"
 
     def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
-        """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n)."""
-        raise NotImplementedError
+        """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n).
 
-    def count_random(
-        self, dist: TossDistribution, key: np.uint64, start: int, n: int, cells: int = 0
-    ) -> Counts:
-        """Face counts for tosses ``start … start + n − 1`` of the random stream ``key``.
-
-        The uniforms are :func:`coinflight.core.sampling.uniforms` (row p drives parameter p of
-        :data:`~coinflight.ensemble.PARAMETERS`); ``cells`` > 0 snaps each to the midpoint of
-        one of ``cells`` equal cells (the paper's method B).
+        Row r of ``u`` drives parameter ``dist.ranged[r]`` through its distribution's ``ppf``
+        (:meth:`~coinflight.ensemble.TossDistribution.values`).
         """
-        from coinflight.core import sampling
-
-        u = sampling.uniforms(np.uint64(key), int(start), int(n))
-        rows = [PARAMETERS.index(name) for name in dist.ranged]
-        u = u[rows]
-        if cells > 0:
-            u = (np.floor(u * cells) + 0.5) / cells
-        return self.count(dist, u)
+        raise NotImplementedError
 
 
 class HandCatch(OutcomeModel):
@@ -63,34 +45,20 @@ class HandCatch(OutcomeModel):
     def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
         from coinflight.core import sampling
 
-        u = np.ascontiguousarray(u, dtype=float)
         n = u.shape[1]
         i1, i3 = dist.moments
         maps = _affine_maps(dist)
         if maps is not None:
             offset, scale = maps
-            rows = np.full(4, -1, dtype=np.int64)
-            for r, name in enumerate(dist.ranged):
-                rows[PARAMETERS.index(name)] = r
-            same = sampling.count_same_side_affine(u, rows, offset, scale, i1, i3)
+            if dist.ranged == PARAMETERS and u.flags.c_contiguous:
+                rows = u
+            else:  # parameter-major and contiguous, so that the kernel vectorises
+                rows = np.zeros((4, n))
+                rows[[PARAMETERS.index(name) for name in dist.ranged]] = u
+            same = sampling.count_same_side_affine(rows, offset, scale, i1, i3)
         else:
             wx, wy, wz, t = dist.values(u)
             same = sampling.count_same_side(wx, wy, wz, t, i1, i3)
-        return faces_from_same_side(int(same), n, dist.start_sign)
-
-    def count_random(
-        self, dist: TossDistribution, key: np.uint64, start: int, n: int, cells: int = 0
-    ) -> Counts:
-        maps = _affine_maps(dist)
-        if maps is None:
-            return super().count_random(dist, key, start, n, cells)
-        from coinflight.core import sampling
-
-        offset, scale = maps
-        i1, i3 = dist.moments
-        same = sampling.count_same_side_random(
-            np.uint64(key), int(start), int(n), offset, scale, int(cells), i1, i3
-        )
         return faces_from_same_side(int(same), n, dist.start_sign)
 
 
