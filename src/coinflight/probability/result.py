@@ -2,12 +2,8 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import asdict, dataclass, field
 from typing import Any
-
-# z such that Φ(z) = 0.975: two-sided 95 % intervals.
-Z95 = 1.959963984540054
 
 
 @dataclass(frozen=True)
@@ -86,16 +82,18 @@ class ProbabilityResult:
         return f"P(heads) = {p:.6f}{unc}"
 
 
-def wilson_interval(successes: int, n: int, z: float = Z95) -> tuple[float, float]:
-    """Wilson score interval for a binomial proportion (Wilson 1927)."""
+def wilson_interval(successes: int, n: int) -> tuple[float, float]:
+    """95 % Wilson score interval for a binomial proportion (Wilson 1927).
+
+    ``scipy.stats.binomtest(...).proportion_ci(method="wilson")``, the same call as
+    :mod:`coinflight.data` uses.
+    """
+    from scipy.stats import binomtest
+
     if n <= 0:
         raise ValueError(f"n must be positive, got {n}")
-    p = successes / n
-    z2 = z * z
-    denom = 1.0 + z2 / n
-    centre = (p + z2 / (2 * n)) / denom
-    half = z * math.sqrt(p * (1 - p) / n + z2 / (4 * n * n)) / denom
-    return (max(0.0, centre - half), min(1.0, centre + half))
+    ci = binomtest(int(successes), int(n)).proportion_ci(confidence_level=0.95, method="wilson")
+    return (float(ci.low), float(ci.high))
 
 
 def from_counts(
