@@ -361,96 +361,61 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
     return tau
 
 
-@njit(cache=True, parallel=True)
-def _land_batch(
-    omega,
-    start_sign,
-    launch_speed,
-    drop_height,
-    g,
-    radius,
-    hh,
-    mass,
-    i1,
-    i3,
-    restitution,
-    friction,
-    max_bounces,
-    rest_speed,
-    face,
-    bounces,
-    first,
-    settle,
-    status,
-):
-    for k in prange(omega.shape[0]):
-        f, b, t1, ts, st = land_one(
-            (omega[k, 0], omega[k, 1], omega[k, 2]),
-            start_sign[k],
-            launch_speed[k],
-            drop_height,
-            g,
-            radius,
-            hh,
-            mass,
-            i1,
-            i3,
-            restitution,
-            friction,
-            max_bounces,
-            rest_speed,
-        )
-        face[k] = f
-        bounces[k] = b
-        first[k] = t1
-        settle[k] = ts
-        status[k] = st
+def _batch_kernel(parallel: bool):  # type: ignore[no-untyped-def]
+    """The loop over a batch, compiled for numba's threads (parallel) or for the calling thread
+    with the GIL released. One source; the closure's ``loop`` keeps the two apart in numba's
+    on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables)."""
+    loop = prange if parallel else range
+
+    def batch(
+        omega,
+        start_sign,
+        launch_speed,
+        drop_height,
+        g,
+        radius,
+        hh,
+        mass,
+        i1,
+        i3,
+        restitution,
+        friction,
+        max_bounces,
+        rest_speed,
+        face,
+        bounces,
+        first,
+        settle,
+        status,
+    ):
+        for k in loop(omega.shape[0]):
+            f, b, t1, ts, st = land_one(
+                (omega[k, 0], omega[k, 1], omega[k, 2]),
+                start_sign[k],
+                launch_speed[k],
+                drop_height,
+                g,
+                radius,
+                hh,
+                mass,
+                i1,
+                i3,
+                restitution,
+                friction,
+                max_bounces,
+                rest_speed,
+            )
+            face[k] = f
+            bounces[k] = b
+            first[k] = t1
+            settle[k] = ts
+            status[k] = st
+
+    return njit(cache=True, parallel=parallel, nogil=True)(batch)
 
 
-@njit(cache=True, nogil=True)
-def _land_batch_serial(
-    omega,
-    start_sign,
-    launch_speed,
-    drop_height,
-    g,
-    radius,
-    hh,
-    mass,
-    i1,
-    i3,
-    restitution,
-    friction,
-    max_bounces,
-    rest_speed,
-    face,
-    bounces,
-    first,
-    settle,
-    status,
-):
-    for k in range(omega.shape[0]):
-        f, b, t1, ts, st = land_one(
-            (omega[k, 0], omega[k, 1], omega[k, 2]),
-            start_sign[k],
-            launch_speed[k],
-            drop_height,
-            g,
-            radius,
-            hh,
-            mass,
-            i1,
-            i3,
-            restitution,
-            friction,
-            max_bounces,
-            rest_speed,
-        )
-        face[k] = f
-        bounces[k] = b
-        first[k] = t1
-        settle[k] = ts
-        status[k] = st
+_land_batch = _batch_kernel(parallel=True)
+_land_batch_serial = _batch_kernel(parallel=False)
 
 
 def land(
