@@ -213,6 +213,12 @@ def test_wilson_interval():
     assert wilson_interval(0, 10) == pytest.approx((0.0, 0.27754), abs=1e-5)
     lo, hi = wilson_interval(5, 10)
     assert (lo, hi) == pytest.approx((0.23659, 0.76341), abs=1e-5)
+    # The same numbers as SciPy's implementation.
+    from scipy.stats import binomtest
+
+    for k, n in ((0, 10), (3, 10), (10, 10), (178_078, 350_757), (1, 10**9)):
+        ci = binomtest(k, n).proportion_ci(method="wilson")
+        assert wilson_interval(k, n) == pytest.approx((ci.low, ci.high), rel=1e-12, abs=1e-15)
 
 
 @pytest.mark.parametrize(
