@@ -32,6 +32,7 @@ in Yong & Mahadevan's model of a landing without bounce.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numba import njit, prange
@@ -361,7 +362,7 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
     return tau
 
 
-def _batch_kernel(parallel: bool):  # type: ignore[no-untyped-def]
+def _batch_kernel(parallel: bool) -> Any:
     """The loop over a batch, compiled for numba's threads (parallel) or for the calling thread
     with the GIL released. One source; the closure's ``loop`` keeps the two apart in numba's
     on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables)."""
