@@ -303,7 +303,7 @@ def plot_basin(basin: BasinMap, *, title: str | None = None, boundaries: bool = 
             handles.append(Line2D([], [], color="black", lw=0.7, label=label))
     ax.set_xlim(t_lo, t_hi)
     ax.set_ylim(w_lo, w_hi)
-    ax.set_xlabel("flight time T (s), caught at launch height")
+    ax.set_xlabel("flight time back to launch height, T = 2 v0 / g (s)")
     if basin.axis == "x":
         ax.set_ylabel("spin about a diameter ωx0 (rad/s)")
     else:
