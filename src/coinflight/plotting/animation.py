@@ -7,7 +7,6 @@ GIF through Pillow (always available with matplotlib); MP4 through ffmpeg, only 
 from __future__ import annotations
 
 import os
-import tempfile
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -15,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coinflight._files import replacing
 from coinflight.core.outcome import FACE_NAMES, HEADS, face_from_alignment
 from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR, new_figure
 from coinflight.plotting.toss import coin_rim
@@ -276,21 +276,13 @@ def save_animation(movie: TossAnimation, path: str | os.PathLike[str], dpi: int 
             f"cannot write {str(target)!r}: MP4 needs the ffmpeg program, which is not "
             "installed here (not found on PATH); install ffmpeg or write a .gif"
         )
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}-", suffix=suffix, dir=target.parent)
-    os.close(fd)
-    try:
+    with replacing(target) as tmp:
         if suffix == ".gif":
-            _write_gif(movie, tmp, dpi)
+            _write_gif(movie, str(tmp), dpi)
         else:
             from matplotlib.animation import FFMpegWriter
 
-            movie.to_matplotlib().save(tmp, writer=FFMpegWriter(fps=movie.fps), dpi=dpi)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+            movie.to_matplotlib().save(str(tmp), writer=FFMpegWriter(fps=movie.fps), dpi=dpi)
     return target
 
 

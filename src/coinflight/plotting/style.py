@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import os
-import tempfile
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
+
+from coinflight._files import replacing
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -56,16 +57,7 @@ def save_figure(
             raise ValueError(
                 f"cannot tell the image format of {str(p)!r}: give a suffix such as .png"
             )
-    written: list[Path] = []
     for p in paths:
-        p.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{p.stem}-", suffix=p.suffix, dir=p.parent)
-        os.close(fd)
-        try:
+        with replacing(p) as tmp:
             fig.savefig(tmp, format=p.suffix.lstrip(".").lower(), dpi=dpi)
-            os.replace(tmp, p)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        written.append(p)
-    return written
+    return paths

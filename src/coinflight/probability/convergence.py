@@ -11,12 +11,12 @@ import csv
 import io
 import json
 import os
-import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from coinflight._files import write_text
 from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import Executor, Progress, check_count
 
@@ -105,20 +105,8 @@ class Convergence:
         paths = [base.with_name(base.name + ".csv"), base.with_name(base.name + ".json")]
         texts = [self.to_csv(), json.dumps(self.to_dict(), indent=2, allow_nan=False) + "\n"]
         for path, text in zip(paths, texts, strict=True):
-            _write_atomic(path, text)
+            write_text(path, text)
         return paths
-
-
-def _write_atomic(path: Path, text: str) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=path.suffix, dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def convergence(

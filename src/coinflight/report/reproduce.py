@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from coinflight import __version__
+from coinflight._files import write_text
 from coinflight.coin import Coin
 from coinflight.report.document import (
     Bullets,
@@ -20,7 +21,6 @@ from coinflight.report.document import (
     Image,
     Paragraph,
     Table,
-    write_text,
 )
 from coinflight.report.paper import (
     DEFAULT_SEED,
