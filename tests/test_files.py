@@ -24,3 +24,22 @@ def test_failure_leaves_the_old_file_and_no_temporary(tmp_path):
         raise RuntimeError("interrupted")
     assert target.read_bytes() == b"old"
     assert [p.name for p in tmp_path.iterdir()] == ["figure.png"]
+
+
+def test_staged_folder_moves_all_files_or_none(tmp_path):
+    from coinflight._files import staged_folder
+
+    out = tmp_path / "paper"
+    with staged_folder(out) as stage:
+        write_text(stage / "a.md", "a")
+        write_text(stage / "sub" / "b.md", "b")
+        assert list(out.glob("*.md")) == []  # nothing visible before the end
+    assert (out / "a.md").read_text() == "a"
+    assert (out / "sub" / "b.md").read_text() == "b"
+    assert sorted(p.name for p in out.iterdir()) == ["a.md", "sub"]
+
+    failed = tmp_path / "failed"
+    with pytest.raises(KeyboardInterrupt), staged_folder(failed) as stage:
+        write_text(stage / "a.md", "a")
+        raise KeyboardInterrupt
+    assert list(failed.iterdir()) == []

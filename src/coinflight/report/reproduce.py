@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from coinflight import __version__
-from coinflight._files import write_text
+from coinflight._files import staged_folder, write_text
 from coinflight.coin import Coin
 from coinflight.report.document import (
     Bullets,
@@ -95,47 +95,49 @@ def reproduce_paper(
         if step:
             step(message)
 
-    for row in numbers.probabilities:
-        c = row.case
-        title = (
-            f"Fig {c.figure}: ωx0 ∈ [{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, "
-            f"ωy0 = {c.omega_y:g} rad/s, ωz0 = 0, T ∈ [{c.flight_time[0]:g}, "
-            f"{c.flight_time[1]:g}] s\n{coin.name} tossed heads up and caught"
+    with staged_folder(out) as stage:  # every file appears at the end, or none does
+        for row in numbers.probabilities:
+            c = row.case
+            title = (
+                f"Fig {c.figure}: ωx0 ∈ [{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, "
+                f"ωy0 = {c.omega_y:g} rad/s, ωz0 = 0, T ∈ [{c.flight_time[0]:g}, "
+                f"{c.flight_time[1]:g}] s\n{coin.name} tossed heads up and caught"
+            )
+            fig = convergence_figure(row.convergence, title)
+            fig.axes[0].set_title(title, fontsize=10.5)
+            files += save_figure(fig, stage / f"fig{c.figure}", formats)
+            done(f"Fig {c.figure}")
+        by_fig = {r.case.figure: r for r in numbers.rotations}
+        for fig_id in ("2c", "2d"):
+            case = by_fig[fig_id].case
+            toss = Toss(omega=(case.omega_x, case.omega_y, 0.0), flight_time=case.flight_time)  # type: ignore[arg-type]
+            fig = plot_toss(coin, toss)
+            fig.suptitle(
+                f"Fig {fig_id}: ωx0 = {case.omega_x:g} rad/s, T = {case.flight_time:g} s — "
+                f"{coin.name} at launch (red) and at catch (blue)",
+                fontsize=11,
+            )
+            files += save_figure(fig, stage / f"fig{fig_id}", formats)
+            done(f"Fig {fig_id}")
+        cases_3 = [by_fig[f].case for f in ("3c", "3d", "3e", "3f")]
+        toss3 = Toss(
+            omega=(90.0, 30.0, 0.0),  # type: ignore[arg-type]
+            flight_time=np.array([c.flight_time for c in cases_3]),
         )
-        fig = convergence_figure(row.convergence, title)
-        fig.axes[0].set_title(title, fontsize=10.5)
-        files += save_figure(fig, out / f"fig{c.figure}", formats)
-        done(f"Fig {c.figure}")
-    by_fig = {r.case.figure: r for r in numbers.rotations}
-    for fig_id in ("2c", "2d"):
-        case = by_fig[fig_id].case
-        toss = Toss(omega=(case.omega_x, case.omega_y, 0.0), flight_time=case.flight_time)  # type: ignore[arg-type]
-        fig = plot_toss(coin, toss)
+        fig = plot_toss(coin, toss3)
         fig.suptitle(
-            f"Fig {fig_id}: ωx0 = {case.omega_x:g} rad/s, T = {case.flight_time:g} s — "
+            "Figs 3c-f: ωx0 = 90 rad/s, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s — "
             f"{coin.name} at launch (red) and at catch (blue)",
             fontsize=11,
         )
-        files += save_figure(fig, out / f"fig{fig_id}", formats)
-        done(f"Fig {fig_id}")
-    cases_3 = [by_fig[f].case for f in ("3c", "3d", "3e", "3f")]
-    toss3 = Toss(
-        omega=(90.0, 30.0, 0.0),  # type: ignore[arg-type]
-        flight_time=np.array([c.flight_time for c in cases_3]),
-    )
-    fig = plot_toss(coin, toss3)
-    fig.suptitle(
-        "Figs 3c-f: ωx0 = 90 rad/s, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s — "
-        f"{coin.name} at launch (red) and at catch (blue)",
-        fontsize=11,
-    )
-    files += save_figure(fig, out / "fig3c-f", formats)
-    done("Figs 3c-f")
+        files += save_figure(fig, stage / "fig3c-f", formats)
+        done("Figs 3c-f")
 
-    elapsed = time.perf_counter() - t_start
-    doc = build_document(numbers, elapsed, image_suffix=formats[0])
-    files.append(write_text(out / "report.md", doc.to_markdown()))
-    files.append(write_text(out / "report.html", doc.to_html()))
+        elapsed = time.perf_counter() - t_start
+        doc = build_document(numbers, elapsed, image_suffix=formats[0])
+        files.append(write_text(stage / "report.md", doc.to_markdown()))
+        files.append(write_text(stage / "report.html", doc.to_html()))
+        files = [out / f.relative_to(stage) for f in files]
     done("report.md and report.html")
     return PaperReport(numbers=numbers, files=tuple(files), elapsed=time.perf_counter() - t_start)
 
