@@ -63,8 +63,8 @@ class Surface:
         height = v.as_float_array("drop height", self.drop_height)
         if height.ndim == 0 and float(height) < 0:
             raise ValueError(
-                f"drop height must be ≥ 0 (the surface is below the launch point), got "
-                f"{float(height)!r}: a surface above the launch point is not allowed"
+                f"drop height must be ≥ 0 m (how far the surface lies below the launch point), "
+                f"got {float(height)!r}: a surface above the launch point is not allowed"
             )
         object.__setattr__(self, "drop_height", _single("drop height", self.drop_height, "m"))
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)

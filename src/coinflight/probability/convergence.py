@@ -142,7 +142,9 @@ def convergence(
     allowed = ("grid", "monte-carlo", "qmc")
     for m in methods:
         if m not in allowed:
-            raise ValueError(f"unknown method {m!r} for convergence; choose from {allowed}")
+            raise ValueError(
+                f"unknown method {m!r} for convergence; choose from {', '.join(allowed)}"
+            )
     if not methods:
         raise ValueError("give at least one method")
     root = seed_sequence(seed)
