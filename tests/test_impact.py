@@ -109,3 +109,33 @@ def test_resting_face_wells():
     assert impact.resting_face(-0.99, edge_sine) == 0
     assert impact.resting_face(0.5 * edge_sine, edge_sine) == 2
     assert impact.resting_face(-1.01 * edge_sine, edge_sine) == 0
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    n=unit,
+    v=vec,
+    w=spin,
+    e=st.floats(0.0, 1.0),
+    mu=st.floats(0.0, 2.0),
+)
+def test_impulse_acts_through_the_contact_point(n, v, w, e, mu):
+    """Any contact impulse J at P leaves the angular momentum about P unchanged:
+    L_P = L_cm − r_P × m v_cm (Goldsmith, Impact, 1960, ch. 2), whatever e and μ."""
+    n, v, lm = _state(n, v, w)
+    rc = np.array(impact.contact_point(n, R, HH))
+    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu)
+    before = np.array(lm) - np.cross(rc, M * np.array(v))
+    after = np.array(lm2) - np.cross(rc, M * np.array(v2))
+    np.testing.assert_allclose(after, before, rtol=0, atol=1e-12 * (np.abs(before).max() + 1e-9))
+
+
+@settings(max_examples=300, deadline=None)
+@given(n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0))
+def test_frictionless_impact_is_vertical(n, v, w, e):
+    """μ = 0: the impulse is vertical, so the horizontal momentum and the vertical component of
+    the angular momentum about the centre of mass do not change."""
+    n, v, lm = _state(n, v, w)
+    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, 0.0)
+    assert v2[0] == v[0] and v2[1] == v[1]
+    assert lm2[2] == pytest.approx(lm[2], rel=1e-12, abs=1e-18)
