@@ -46,11 +46,18 @@ def forest_figure(summary: CountsSummary, p_model: float | None = None) -> Figur
         color=EXACT_COLOR,
         zorder=3,
     )
-    ax.axvline(0.5, color="0.5", linewidth=0.8, linestyle="--")
-    ax.axvline(pooled.estimate, color=EXACT_COLOR, linewidth=0.6, linestyle=":")
+    ax.axvline(0.5, color="0.5", linewidth=0.8, linestyle="--", label="½: no bias")
+    ax.axvline(
+        pooled.estimate,
+        color=EXACT_COLOR,
+        linewidth=0.6,
+        linestyle=":",
+        label=f"pooled {pooled.estimate:.4f} (◆: its interval)",
+    )
     if p_model is not None:
         ax.axvline(p_model, color=TAILS_COLOR, linewidth=1, label=f"model p = {p_model:.4f}")
-        ax.legend(loc="lower right", fontsize="small")
+    ax.scatter([], [], color=HEADS_COLOR, marker="s", label="one person (size ∝ flips)")
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small", frameon=False)
     method = "Clopper-Pearson" if pooled.method == "exact" else "Wilson"
     ax.set_yticks([*y, 0.0], [*(name for name, _ in people), "pooled"], fontsize="x-small")
     ax.set_ylim(-1.0, n + 1.0)
