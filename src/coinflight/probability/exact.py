@@ -30,8 +30,10 @@ from coinflight.ensemble import TossDistribution
 from coinflight.probability.outcome import HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult
 
-TOLERANCE = 1e-10
-"""Absolute tolerance asked of the quadrature (the issue asks for 1e-9)."""
+TOLERANCE = 1e-9
+"""Absolute and relative tolerance asked of the quadrature: 1e-9, the accuracy the exact method
+promises. (1e-10 is beyond what round-off in the band sums allows for normal distributions:
+QUADPACK then warns and takes twice as long.)"""
 _SPINS = ("omega_x", "omega_y", "omega_z")
 _USE_INSTEAD = "use --method grid, monte-carlo or qmc instead"
 
