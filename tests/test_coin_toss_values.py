@@ -102,3 +102,31 @@ def test_values_are_frozen():
     coin = Coin.preset("eur-2")
     with pytest.raises(AttributeError):
         coin.radius = 1.0  # type: ignore[misc]
+
+
+def test_toss_keeps_private_read_only_arrays():
+    omega = np.array([80.0, 0.0, 0.0])
+    toss = Toss(omega=omega, flight_time=0.7)
+    omega[0] = np.nan  # the caller's array changes; the validated toss does not
+    assert toss.omega.tolist() == [80.0, 0.0, 0.0]
+    with pytest.raises(ValueError, match="read-only"):
+        toss.omega[0] = 1.0
+
+
+@pytest.mark.parametrize(("omega", "flight_time"), [((1e200, 0, 0), 0.7), ((1.0, 0, 0), 1e300)])
+def test_toss_refuses_phases_rounding_would_decide(omega, flight_time):
+    with pytest.raises(
+        ValueError, match=r"spin component × flight time must be at most 1e\+09 rad"
+    ):
+        Toss(omega=omega, flight_time=flight_time)
+
+
+def test_edge_on_counts_as_the_other_face_whatever_the_start():
+    """n(T)·n0 = 0 (measure zero): not the starting face, for either start (Stefan & Cheche
+    §2.1: heads up iff cos θ > 0), so the face and the same-side flag always agree."""
+    from coinflight.core.outcome import HEADS, TAILS, face_from_alignment, same_side
+
+    alignment = np.array([0.5, 0.0, -0.5])
+    assert face_from_alignment(alignment, 1.0).tolist() == [HEADS, TAILS, TAILS]
+    assert face_from_alignment(alignment, -1.0).tolist() == [TAILS, HEADS, HEADS]
+    assert same_side(alignment).tolist() == [True, False, False]

@@ -67,6 +67,23 @@ def in_range(
     return arr
 
 
+MAX_PHASE = 1e9
+"""Largest spin × flight time, rad. The face depends on the phase ωp T modulo 2π: beyond 1e9 rad
+(1.6e8 turns) float64 keeps fewer than 7 digits of it, and overflow waits further on."""
+
+
+def phase_budget(spin: float, flight_time: float, what: str = "spin × flight time") -> None:
+    """ValueError unless |spin| × flight time ≤ :data:`MAX_PHASE` (rad/s × s)."""
+    with np.errstate(over="ignore"):
+        phase = float(np.abs(np.float64(spin)) * np.abs(np.float64(flight_time)))
+    if not phase <= MAX_PHASE:
+        raise ValueError(
+            f"{what} must be at most {MAX_PHASE:.0e} rad, got {phase:.3g} rad "
+            f"({abs(float(spin)):.3g} rad/s for {abs(float(flight_time)):.3g} s): beyond that, "
+            "rounding, not physics, would decide the face"
+        )
+
+
 def choice(name: str, value: object, allowed: Iterable[str]) -> str:
     """``value`` if it is one of ``allowed`` strings, else ValueError listing them."""
     allowed = list(allowed)

@@ -81,6 +81,8 @@ class TossDistribution:
                 f"flight time {t.describe('s')} reaches times ≤ 0 s; the flight time must be "
                 f"positive (a normal one needs mean > {_NORMAL_T_SIGMAS:g} sd)"
             )
+        spin = max(_largest(getattr(self, name)) for name in PARAMETERS[:3])
+        v.phase_budget(spin, _largest(t), "largest spin component × largest flight time")
 
     @classmethod
     def from_launch_speed(
@@ -171,6 +173,14 @@ class TossDistribution:
         for name in PARAMETERS:
             lines.append(f"{name} = {getattr(self, name).describe(UNITS[name])}")
         return "\n".join(lines)
+
+
+def _largest(dist: Distribution) -> float:
+    """Largest |value| a distribution reaches (a normal one: within ±8 sd, as for T)."""
+    if isinstance(dist, Normal):
+        return abs(dist.mean) + _NORMAL_T_SIGMAS * dist.sd
+    lo, hi = dist.bounds
+    return max(abs(lo), abs(hi))
 
 
 __all__ = ["PARAMETERS", "TossDistribution"]

@@ -12,7 +12,7 @@ from numpy.typing import ArrayLike, NDArray
 from coinflight import _validation as v
 from coinflight.coin import Coin
 from coinflight.core import ballistics, torque_free
-from coinflight.core.outcome import FACE_NAMES, face_from_alignment
+from coinflight.core.outcome import FACE_NAMES, face_from_alignment, same_side
 
 if TYPE_CHECKING:
     from scipy.spatial.transform import Rotation
@@ -67,6 +67,15 @@ class Toss:
                 f"omega (shape {omega.shape}) and flight time (shape {flight_time.shape}) "
                 "do not broadcast together"
             ) from None
+        spin, time = np.broadcast_arrays(np.max(np.abs(omega), axis=-1), flight_time)
+        if spin.size:
+            with np.errstate(over="ignore"):
+                k = int(np.argmax(spin * time))  # the toss with the largest phase
+            v.phase_budget(spin.flat[k], time.flat[k], "largest spin component × flight time")
+        # Private read-only copies: the caller's arrays can change; a validated toss cannot.
+        omega, flight_time = omega.copy(), flight_time.copy()
+        omega.flags.writeable = False
+        flight_time.flags.writeable = False
         object.__setattr__(self, "omega", omega)
         object.__setattr__(self, "flight_time", flight_time)
         object.__setattr__(self, "g", float(g))
@@ -170,7 +179,7 @@ class Outcome:
     @property
     def same_side(self) -> NDArray[np.bool_]:
         """True where the coin shows the face it started with."""
-        return np.asarray(self.alignment > 0.0)
+        return same_side(self.alignment)
 
 
 @dataclass(frozen=True, eq=False)

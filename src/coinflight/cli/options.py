@@ -114,8 +114,8 @@ def resolve_coin(
 
 def print_json(payload: dict[str, Any]) -> None:
     """One JSON object on stdout (NumPy scalars and arrays become numbers and lists)."""
-    json.dump(payload, sys.stdout, default=_jsonable, allow_nan=False)
-    sys.stdout.write("\n")
+    text = json.dumps(payload, default=_jsonable, allow_nan=False)  # whole, or an error
+    sys.stdout.write(text + "\n")
 
 
 def _jsonable(obj: Any) -> Any:

@@ -21,8 +21,3 @@ def height(launch_speed: ArrayLike, g: ArrayLike, t: ArrayLike) -> NDArray[np.fl
     v0 = np.asarray(launch_speed, dtype=float)
     t = np.asarray(t, dtype=float)
     return v0 * t - 0.5 * np.asarray(g, dtype=float) * t * t
-
-
-def vertical_velocity(launch_speed: ArrayLike, g: ArrayLike, t: ArrayLike) -> NDArray[np.float64]:
-    """Vertical velocity of the centre of mass, v_z = v0 − g t (m/s). Stefan & Cheche §2."""
-    return np.asarray(launch_speed, dtype=float) - np.asarray(g, dtype=float) * np.asarray(t)

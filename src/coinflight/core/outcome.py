@@ -11,17 +11,21 @@ EDGE = 2
 FACE_NAMES = ("tails", "heads", "edge")
 
 
+def same_side(alignment: ArrayLike) -> NDArray[np.bool_]:
+    """True where the coin shows, at catch, the face it started with: n(T)·n0 > 0.
+
+    The edge-on set n(T)·n0 = 0 has measure zero for a thin coin; the paper's rule leaves it out
+    of the starting face ("cos θ > 0", Stefan & Cheche §2.1), so it counts as the other face.
+    """
+    return np.asarray(alignment, dtype=float) > 0.0
+
+
 def face_from_alignment(alignment: ArrayLike, start_sign: ArrayLike) -> NDArray[np.int8]:
     """Face up at catch from n(T)·n0 and the starting face (+1 heads, −1 tails).
 
-    The heads normal points up at catch iff start_sign · n(T)·n0 > 0 (Stefan & Cheche §2.1:
-    started heads up, heads iff cos θ > 0). The edge-on set cos θ = 0 has measure zero for a thin
-    coin and is counted as tails, the paper's ``cos θ < 0`` side being open.
+    The starting face where :func:`same_side`, the other face elsewhere (Stefan & Cheche §2.1:
+    started heads up, heads iff cos θ > 0).
     """
-    up = np.asarray(start_sign, dtype=float) * np.asarray(alignment, dtype=float) > 0.0
-    return np.where(up, HEADS, TAILS).astype(np.int8)
-
-
-def same_side(alignment: ArrayLike) -> NDArray[np.bool_]:
-    """True where the coin shows, at catch, the face it started with."""
-    return np.asarray(alignment, dtype=float) > 0.0
+    same = same_side(alignment)
+    heads = np.where(np.asarray(start_sign, dtype=float) > 0, same, ~same)
+    return np.where(heads, HEADS, TAILS).astype(np.int8)
