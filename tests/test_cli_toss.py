@@ -28,6 +28,16 @@ def test_plain_output_is_a_short_summary():
     assert "8.9127 rotations" in lines[-1]
 
 
+def test_plain_output_says_when_the_coin_only_wobbles():
+    # Spin mostly about the normal: ψ < 45°, the coin never turns over (DHM 2007).
+    result = run("toss", "--omega", "10", "0", "300", "--flight-time", "0.7")
+    assert result.exit_code == 0
+    assert "HEADS" in result.stdout
+    assert "only wobbles and never turns over" in result.stdout
+    result = run("toss", "--omega", "80", "0", "0", "--flight-time", "0.7")
+    assert "wobbles" not in result.stdout and "rotations about a diameter" in result.stdout
+
+
 def test_json_has_the_documented_fields():
     result = run(
         "toss",

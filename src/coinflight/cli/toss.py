@@ -160,6 +160,21 @@ def toss(
         f"(launch speed {float(t.launch_speed):.3g} m/s, apex {float(t.apex):.3g} m)"
     )
     typer.echo(
-        f"lands {out.face_name.upper()} up after {float(out.rotations):.4f} rotations; "
-        f"ψ = {math.degrees(float(out.psi)):.1f}° between normal and angular momentum"
+        f"lands {out.face_name.upper()} up after {_turns(float(out.rotations), float(out.psi))}"
+    )
+
+
+def _turns(rotations: float, psi: float) -> str:
+    """What the coin did, in words: tumbling about a diameter, precessing, or only wobbling."""
+    psi_deg = math.degrees(psi)
+    if abs(psi_deg - 90.0) < 1e-9:
+        return f"{rotations:.4f} rotations about a diameter (ψ = 90°: S ⟂ n)"
+    wobble = (
+        "; it only wobbles and never turns over (ψ < 45° or > 135°)"
+        if abs(psi_deg - 90.0) > 45.0
+        else ""
+    )
+    return (
+        f"{rotations:.4f} turns of its normal about the angular momentum, on a cone of "
+        f"half-angle ψ = {psi_deg:.1f}°{wobble}"
     )
