@@ -391,3 +391,20 @@ def test_monte_carlo_runs_are_prefixes_of_longer_runs():
     n = 1 << 20
     counts = [estimate(dist, "monte-carlo", n=m, seed=5).counts for m in (n - 1, n)]
     assert counts[1][1] - counts[0][1] in (0, 1)
+
+
+def test_exact_quadrature_has_an_evaluation_budget(monkeypatch):
+    # The reviewer's case (ω_z ranged, 2-D quadrature on a kinked integrand) ran for minutes;
+    # with the budget it stops with a ValueError naming the sampling methods. A small budget
+    # keeps the test fast; the default one is sized on the human preset (~300,000 evaluations).
+    from coinflight.probability import exact
+
+    monkeypatch.setattr(exact, "MAX_EVALUATIONS", 3000)
+    slow = TossDistribution(Uniform(60, 90), 0, Uniform(0, 5), T_RANGE)
+    with pytest.raises(ValueError, match=r"did not reach .*1e-09.* 3,000") as info:
+        estimate(slow, "exact")
+    for name in ("qmc", "monte-carlo", "grid"):
+        assert name in str(info.value)
+    # A 1-D quadrature well within the budget still succeeds and reports its evaluations.
+    ok = estimate(TossDistribution(Uniform(60, 90), Uniform(0, 20), 0, Fixed(0.7)), "exact")
+    assert 0 < ok.details["evaluations"] <= 3000
