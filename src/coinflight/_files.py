@@ -19,13 +19,22 @@ def replacing(path: str | os.PathLike[str]) -> Iterator[Path]:
     half-written file, nor replaces a good one with it.
     """
     target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}-", suffix=target.suffix, dir=target.parent)
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(
+            prefix=f".{target.stem}-", suffix=target.suffix, dir=target.parent
+        )
+    except OSError as exc:
+        check_writable(target)  # names a file in the way of a folder, if that is the cause
+        raise cannot_write(target, exc) from None
     os.close(fd)
     try:
         yield Path(tmp)
         os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output file is for everyone to read
-        os.replace(tmp, target)
+        try:
+            os.replace(tmp, target)
+        except OSError as exc:
+            raise cannot_write(target, exc) from None
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
@@ -46,8 +55,12 @@ def staged_folder(path: str | os.PathLike[str]) -> Iterator[Path]:
     end, or, if the run fails or is interrupted, none of them does.
     """
     target = Path(path)
-    target.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(prefix=".partial-", dir=target))
+    try:
+        target.mkdir(parents=True, exist_ok=True)
+        stage = Path(tempfile.mkdtemp(prefix=".partial-", dir=target))
+    except OSError as exc:
+        check_writable(target, folder=True)
+        raise cannot_write(target, exc) from None
     try:
         yield stage
         for item in sorted(stage.rglob("*")):
@@ -57,3 +70,38 @@ def staged_folder(path: str | os.PathLike[str]) -> Iterator[Path]:
                 os.replace(item, dest)
     finally:
         shutil.rmtree(stage, ignore_errors=True)
+
+
+def cannot_write(path: str | os.PathLike[str], exc: OSError) -> ValueError:
+    """The one wording of an output that cannot be written: ``cannot write PATH: reason``."""
+    reason = exc.strerror or str(exc)
+    name = None if exc.filename is None else os.fspath(exc.filename)
+    if name is not None and name != os.fspath(path) and not Path(name).name.startswith("."):
+        reason = f"{reason} ({name})"  # a folder on the way, not our temporary file
+    return ValueError(f"cannot write {os.fspath(path)}: {reason}")
+
+
+def check_writable(path: str | os.PathLike[str], folder: bool = False) -> None:
+    """ValueError unless ``path`` (a file, or a folder if ``folder``) can be written.
+
+    For commands that compute for a long time before they write: they call this first, so a
+    bad output location fails at once. The check creates nothing that stays: it makes and
+    removes one temporary file in the nearest folder that already exists.
+    """
+    target = Path(path)
+    if target.exists():
+        if folder and not target.is_dir():
+            raise ValueError(f"cannot write {target}: it is a file, not a folder")
+        if not folder and target.is_dir():
+            raise ValueError(f"cannot write {target}: it is a folder")
+    base = target if folder else target.parent
+    while not base.exists() and base != base.parent:
+        base = base.parent
+    if not base.is_dir():
+        raise ValueError(f"cannot write {target}: {base} is a file, not a folder")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".coinflight-check-", dir=base)
+    except OSError as exc:
+        raise cannot_write(target, exc) from None
+    os.close(fd)
+    os.unlink(tmp)

@@ -79,10 +79,12 @@ def animate(
 
     Example: coinflight animate --omega 80 0 0 --flight-time 0.7 --out toss.gif
     """
+    from coinflight._files import check_writable
     from coinflight.plotting.animation import animate_toss, save_animation
 
     if out.suffix.lower() not in (".gif", ".mp4"):
         raise ValueError(f"--out must end in .gif or .mp4, got {str(out)!r}")
+    check_writable(out)  # before the frames are drawn, not after
     the_coin = resolve_coin(coin, radius, thickness, mass)
     movie = animate_toss(
         the_coin,

@@ -259,10 +259,12 @@ def plot_basin(
     """
     import math
 
+    from coinflight._files import check_writable
     from coinflight.plotting.basin import basin_map
     from coinflight.plotting.basin import plot_basin as draw
     from coinflight.plotting.style import save_figure
 
+    check_writable(out)  # before the map is computed, not after
     the_coin = resolve_coin(coin, radius, thickness, mass)
     if psi is None:
         if precession_rate is not None:

@@ -46,6 +46,7 @@ def paper(
 
     Example: coinflight paper --out paper/
     """
+    from coinflight._files import check_writable
     from coinflight.cli.options import resolve_coin
     from coinflight.cli.progress import progress_bar
     from coinflight.report.reproduce import STEPS, reproduce_paper
@@ -53,6 +54,7 @@ def paper(
     the_coin = resolve_coin(coin, None, None, None)
     if out.exists() and not out.is_dir():
         raise ValueError(f"--out must be a folder, but {str(out)!r} is a file")
+    check_writable(out, folder=True)  # before minutes of computing, not after
     with progress_bar(STEPS, "reproducing the paper", quiet) as advance:
 
         def step(_message: str) -> None:
