@@ -29,6 +29,8 @@ import time
 import numpy as np
 
 from coinflight import Coin
+from coinflight.core.impact import resting_face
+from coinflight.core.outcome import EDGE, HEADS, TAILS
 from coinflight.landing import land
 from coinflight.surface import Surface
 
@@ -49,6 +51,12 @@ def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
         ]
     )
     return omega, rng.uniform(1.5, 3.0, n)
+
+
+def face_fractions(face: np.ndarray) -> str:
+    """'P(heads, tails, edge) = (…)' of an array of face codes (TAILS=0, HEADS=1, EDGE=2)."""
+    share = np.bincount(face, minlength=3) / len(face)
+    return f"P(heads, tails, edge) = ({share[HEADS]:.4f}, {share[TAILS]:.4f}, {share[EDGE]:.2e})"
 
 
 def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-def]
@@ -74,7 +82,7 @@ def bench_coinflight(n: int, repeats: int) -> None:
     )
     print(
         f"  mean bounces {out.bounces.mean():.2f}, max {out.bounces.max()}; "
-        f"P(heads, tails, edge) = {np.bincount(out.face, minlength=3) / n}"
+        f"{face_fractions(out.face)}"
     )
 
 
@@ -134,13 +142,9 @@ def mujoco_outcomes(
         for j in range(traj.shape[0]):
             apex = int(v0[a + j] / G / model.opt.timestep)
             hit = apex + int(np.argmax(gap[j, apex:] <= 0.0))
-            first[a + j] = _well(nz[j, hit], edge_sine)
-            rest[a + j] = _well(nz[j, -1], edge_sine)
+            first[a + j] = resting_face(float(nz[j, hit]), edge_sine)
+            rest[a + j] = resting_face(float(nz[j, -1]), edge_sine)
     return first, rest
-
-
-def _well(nz: float, edge_sine: float) -> int:
-    return 2 if abs(nz) < edge_sine else (1 if nz > 0 else 0)
 
 
 def bench_mujoco(m: int) -> None:
@@ -163,8 +167,7 @@ def bench_mujoco(m: int) -> None:
         print(
             f"  agreement with coinflight: first contact {np.mean(first == ours_first):.1%}, "
             f"at rest {np.mean(rest == ours):.1%} (MuJoCo's soft contact is not e = "
-            f"{SURFACE.restitution}); MuJoCo P(h, t, e) at rest = "
-            f"{np.bincount(rest, minlength=3) / m}"
+            f"{SURFACE.restitution}); MuJoCo at rest: {face_fractions(rest)}"
         )
 
 
@@ -175,7 +178,7 @@ def nickel_edge(n: int) -> None:
     for e in (0.25, 0.35, 0.5):
         for mu in (0.3, 0.5, 1.0):
             out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
-            k = int(np.sum(out.face == 2))
+            k = int(np.sum(out.face == EDGE))
             ratio = f"1 in {n / k:,.0f}" if k else "none"
             print(f"  e = {e:.2f}, μ = {mu:.1f}: P(edge) = {k / n:.2e} ({ratio}; {k} edges)")
 

@@ -10,6 +10,7 @@ from scipy.optimize import brentq
 
 from coinflight import Coin, Flight, Toss
 from coinflight.core import bounce
+from coinflight.core.outcome import EDGE, HEADS, TAILS
 from coinflight.landing import Landing, TableLanding, land
 from coinflight.surface import Drag, Surface
 
@@ -184,3 +185,12 @@ def test_flat_drop_bounces_straight_and_stays_up(spin_z):
         z0, v0 = 0.5 - NICKEL.thickness / 2, 1.0
         t_first = (v0 + math.sqrt(v0 * v0 + 2 * G * z0)) / G
         assert out.first_contact[0] == pytest.approx(t_first, rel=1e-12)
+
+
+def test_benchmark_labels_heads_and_tails_by_the_face_codes():
+    # benchmarks/bench_bounce.py printed np.bincount(face) (ordered TAILS, HEADS, EDGE) as
+    # "P(heads, tails, edge)": three heads, one tails and one edge must read 0.6, 0.2, 0.2.
+    from benchmarks.bench_bounce import face_fractions
+
+    face = np.array([HEADS, HEADS, TAILS, HEADS, EDGE], dtype=np.int8)
+    assert face_fractions(face) == "P(heads, tails, edge) = (0.6000, 0.2000, 2.00e-01)"
