@@ -15,6 +15,7 @@ from coinflight.probability import estimate
 
 runner = CliRunner()
 FIG2A = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # Stefan & Cheche Fig 2a
+THREE_SPINS = ["--omega-x", "60:90", "--omega-y", "0:20", "--omega-z", "0:5"]
 
 
 def run(*args: str):
@@ -120,6 +121,10 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
+        (
+            [*THREE_SPINS, "--flight-time", "0.7", "--method", "grid", "--n", "1000"],
+            "1e+09 configurations, each evaluated one by one",
+        ),
     ],
 )
 def test_bad_input_is_one_line_exit_2(args, words):

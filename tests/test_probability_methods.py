@@ -408,3 +408,23 @@ def test_exact_quadrature_has_an_evaluation_budget(monkeypatch):
     # A 1-D quadrature well within the budget still succeeds and reports its evaluations.
     ok = estimate(TossDistribution(Uniform(60, 90), Uniform(0, 20), 0, Fixed(0.7)), "exact")
     assert 0 < ok.details["evaluations"] <= 3000
+
+
+def test_grid_default_size_and_work_limit():
+    from coinflight.probability.grid import MAX_WORK, default_cells
+
+    # Default n: 5000 up to two ranged parameters, else the largest n with n^k ≤ 1e8.
+    assert [default_cells(k) for k in range(1, 5)] == [5000, 5000, 464, 100]
+    four = TossDistribution(Uniform(60, 90), Uniform(0, 20), Uniform(0, 5), T_RANGE)
+    assert estimate(four, "grid").n == 100
+    three = TossDistribution(Uniform(60, 90), Uniform(0, 20), 0, T_RANGE)
+    assert estimate(three, "grid", n=2000).samples == 2000**3  # 4e6 nodes × ~6 bands: allowed
+    # Band counting: 1000³ spin nodes × ~5.7 bands each is over the limit (hours before).
+    with pytest.raises(ValueError, match=r"1e\+09 spin nodes × ~5\.\d+ bands") as info:
+        estimate(four, "grid", n=1000)
+    assert "monte-carlo or qmc" in str(info.value)
+    # Brute force (fixed flight time): 1000³ = 1e9 configurations one by one.
+    fixed_t = TossDistribution(Uniform(60, 90), Uniform(0, 20), Uniform(0, 5), 0.7)
+    assert MAX_WORK < 1000**3
+    with pytest.raises(ValueError, match=r"1e\+09 configurations, each evaluated one by one"):
+        estimate(fixed_t, "grid", n=1000)

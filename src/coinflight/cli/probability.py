@@ -73,7 +73,8 @@ Size = Annotated[
         "-n",
         metavar="N",
         rich_help_panel=METHOD_PANEL,
-        help="grid: cells per ranged parameter (default 5000); monte-carlo: tosses (default "
+        help="grid: cells per ranged parameter (default 5000 with up to 2 ranged parameters, "
+        "else the largest N with N^k ≤ 10^8); monte-carlo: tosses (default "
         "1000000); qmc: points, 16 × a power of two (default 1048576).",
     ),
 ]
@@ -137,7 +138,9 @@ def build_distribution(
 def work_total(method: str, n: int | None, k: int) -> int:
     """Units of work the library reports through ``progress`` for this request."""
     if method == "grid":
-        return (n or 5000) ** k
+        from coinflight.probability.grid import default_cells
+
+        return (n or default_cells(k)) ** k
     if method == "monte-carlo":
         return n or 10**6
     return n or (1 << 20)

@@ -52,7 +52,8 @@ def estimate(
         The tosses.
     method : {"exact", "grid", "monte-carlo", "qmc"}
     n : int
-        Size: cells per ranged parameter (grid, default 5000), tosses (monte-carlo, default
+        Size: cells per ranged parameter (grid, default 5000 for up to two ranged parameters,
+        else the largest n with n^k ≤ 10⁸), tosses (monte-carlo, default
         10⁶), points (qmc, default 2²⁰). Not used by exact.
     seed : int, optional
         For monte-carlo and qmc; reported in the result.
@@ -84,7 +85,9 @@ def estimate(
         _no_options(method, options)
         from coinflight.probability import grid
 
-        return grid.estimate(dist, 5000 if n is None else n, **common)
+        return grid.estimate(
+            dist, grid.default_cells(len(dist.ranged)) if n is None else n, **common
+        )
     if method == "monte-carlo":
         _no_options(method, options, ("grid_cells", "chunk_size"))
         from coinflight.probability import monte_carlo

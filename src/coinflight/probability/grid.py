@@ -29,14 +29,40 @@ from coinflight.probability._runner import (
 from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult, from_counts
 
-MAX_BRUTE_FORCE = 10**12
-"""Largest number of configurations evaluated one by one (about an hour of compute)."""
+MAX_WORK = 8 * 10**8
+"""Largest amount of work accepted, about a minute on the reference 2-core machine: the number
+of configurations evaluated one by one (brute force, ~1.5e7 a second), or spin nodes × bands
+per node (band counting, ~1.3e7 a second; measured in this module's docstring cases)."""
+DEFAULT_CELLS = 5000
+"""Cells per ranged parameter by default with at most two ranged parameters (the paper's)."""
+DEFAULT_CONFIGURATIONS = 10**8
+"""With k > 2 ranged parameters the default n is the largest with n^k ≤ this."""
 _CHUNK = 1 << 20
 
 
 def midpoints(n: int) -> np.ndarray:
     """(i + ½)/n for i = 0 … n − 1: centres of n equal cells of [0, 1]."""
     return (np.arange(n) + 0.5) / n
+
+
+def default_cells(k: int) -> int:
+    """Default cells per parameter for k ranged parameters: :data:`DEFAULT_CELLS` for k ≤ 2,
+    else the largest n with n^k ≤ :data:`DEFAULT_CONFIGURATIONS` (464 for k = 3, 100 for 4)."""
+    if k <= 2:
+        return DEFAULT_CELLS
+    n = round(DEFAULT_CONFIGURATIONS ** (1.0 / k))
+    while n**k > DEFAULT_CONFIGURATIONS:
+        n -= 1
+    while (n + 1) ** k <= DEFAULT_CONFIGURATIONS:
+        n += 1
+    return n
+
+
+def _too_much(what: str) -> ValueError:
+    return ValueError(
+        f"{what}, more than the grid's limit of {MAX_WORK:.3g} (about a minute); use a smaller "
+        "n, or --method monte-carlo or qmc (or exact where it applies)"
+    )
 
 
 def _band_task(args: tuple[Any, ...]) -> int:
@@ -69,6 +95,28 @@ def _brute_task(args: tuple[Any, ...]) -> np.ndarray:
     return model.count(dist, np.stack([(i + 0.5) / n for i in idx]))
 
 
+def _bands_per_node(
+    dist: TossDistribution, spin_nodes: list[np.ndarray], spin_names: tuple[str, ...], n: int
+) -> float:
+    """Typical number of bands a spin node's flight-time range meets (for the work limit).
+
+    ωp ≤ sqrt(ωx² + ωy² + (I3/I1 ωz)²); its root mean square over the product grid is the
+    square root of the summed mean squares. Each node meets about ωp ΔT / 2π + 2 bands.
+    """
+    i1, i3 = dist.moments
+    weight = {"omega_x": 1.0, "omega_y": 1.0, "omega_z": (i3 / i1) ** 2}
+    mean_square = 0.0
+    for name in weight:
+        if name in spin_names:
+            values = spin_nodes[spin_names.index(name)]
+            mean_square += weight[name] * float(np.mean(np.square(values)))
+        else:
+            mean_square += weight[name] * getattr(dist, name).mean ** 2
+    t_nodes = dist.flight_time.ppf(midpoints(n))
+    span = float(t_nodes[-1] - t_nodes[0])
+    return float(np.sqrt(mean_square)) * span / (2.0 * np.pi) + 2.0
+
+
 def estimate(
     dist: TossDistribution,
     n: int,
@@ -87,6 +135,11 @@ def estimate(
     n : int
         Cells per ranged parameter (the paper: 5000, so 5000² configurations).
 
+    Raises
+    ------
+    ValueError
+        When the work exceeds :data:`MAX_WORK` (about a minute).
+
     Notes
     -----
     Stefan & Cheche §3, method A. Band structure: Keller (1986); Diaconis, Holmes & Montgomery
@@ -102,6 +155,12 @@ def estimate(
     if fast:
         spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]
         combos = n ** len(spin_names)
+        bands = _bands_per_node(dist, spin_nodes, spin_names, n)
+        if combos * bands > MAX_WORK:
+            raise _too_much(
+                f"a grid of {n}^{k} = {total:.3g} configurations means {combos:.3g} spin nodes "
+                f"× ~{bands:.3g} bands each = {combos * bands:.3g} band counts"
+            )
         tasks = [
             (dist, spin_nodes, spin_names, a, min(combos, a + _CHUNK), n)
             for a in range(0, combos, _CHUNK)
@@ -113,11 +172,10 @@ def estimate(
         counts = (total - heads, heads, 0)
         how = "band counting along the flight time"
     else:
-        if total > MAX_BRUTE_FORCE:
-            raise ValueError(
-                f"a grid of {n}^{k} = {total:.3g} configurations is too large to evaluate one by "
-                "one (fast counting needs a ranged flight time); use a smaller n, or "
-                "--method monte-carlo or qmc"
+        if total > MAX_WORK:
+            raise _too_much(
+                f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one "
+                "(fast band counting needs a ranged flight time and the hand catch)"
             )
         tasks2 = [
             (model, dist, k, n, a, min(total, a + _CHUNK)) for a in range(0, max(total, 1), _CHUNK)
@@ -139,4 +197,4 @@ def estimate(
     )
 
 
-__all__ = ["estimate", "midpoints"]
+__all__ = ["default_cells", "estimate", "midpoints"]
