@@ -66,6 +66,23 @@ def test_toss_with_drag_in_the_hand():
     assert out["drag"]["coefficient"] == 1.17
 
 
+@pytest.mark.parametrize(
+    ("args", "described"),
+    [
+        (["--spin-damping", "1e-6"], "caught in the hand, no air drag, spin damping K = 1e-06"),
+        (
+            ["--surface", "table", "--drag", "1.17", "--spin-damping", "2e-7"],
+            "landing on a table 0 m below launch (restitution 0.5, friction 0.3), "
+            "air drag C_d = 1.17, spin damping K = 2e-07 N m s",
+        ),
+    ],
+)
+def test_toss_text_names_drag_and_spin_damping(args, described):
+    result = _run(*TOSS, *args)
+    assert result.exit_code == 0, result.output
+    assert described in result.stdout
+
+
 def test_hand_without_drag_is_unchanged():
     plain = _run(*TOSS, "--json")
     zero = _run(*TOSS, "--drag", "0", "--json")

@@ -157,6 +157,23 @@ def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
     return out
 
 
+def describe_landing(surface: Surface, drag: Drag | None) -> str:
+    """One line for the text output: where the toss ends, the air drag and the spin damping."""
+    if surface.bounces:
+        where = (
+            f"landing on a table {surface.drop_height:g} m below launch (restitution "
+            f"{surface.restitution:g}, friction {surface.friction:g})"
+        )
+    else:
+        where = "caught in the hand"
+    if drag is None:
+        return f"{where}, no air drag"
+    air = f"air drag C_d = {drag.coefficient:g}" if drag.coefficient > 0 else "no air drag"
+    if drag.spin_damping > 0:
+        air += f", spin damping K = {drag.spin_damping:g} N m s"
+    return f"{where}, {air}"
+
+
 def report_landing(
     coin: Coin,
     toss: Toss,
@@ -200,10 +217,6 @@ def report_landing(
             f"{int(out.bounces)} times and ends {out.face_name.upper()} "
             f"(at t = {float(out.settle_time):.4f} s; {out.status_name})"
         )
-        where = (
-            f"table {surface.drop_height:g} m below launch, restitution "
-            f"{surface.restitution:g}, friction {surface.friction:g}"
-        )
     else:
         from coinflight.landing import catch_with_drag
 
@@ -214,17 +227,16 @@ def report_landing(
         name = FACE_NAMES[int(face[0])]
         payload = {"outcome": name, "catch_time": float(when[0])}
         line = f"caught at launch height at t = {float(when[0]):.4f} s, {name.upper()} up"
-        where = "caught in the hand"
     payload.update(surface_payload(surface, drag))
     payload.update(head)
     if json_output:
         print_json(payload)
         return
-    air = "no air drag" if drag is None else f"air drag C_d = {drag.coefficient:g}"
     typer.echo(f"{coin.describe()}, started {toss.start} up")
     typer.echo(
         f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, launch speed "
-        f"{float(toss.launch_speed):.3g} m/s (apex {float(toss.apex):.3g} m); {where}; {air}"
+        f"{float(toss.launch_speed):.3g} m/s (apex {float(toss.apex):.3g} m); "
+        f"{describe_landing(surface, drag)}"
     )
     typer.echo(line)
 
@@ -238,15 +250,8 @@ class LandingChoice:
     model: OutcomeModel
 
     def describe(self) -> str:
-        """One line for the text output."""
-        air = "no air drag" if self.drag is None else f"air drag C_d = {self.drag.coefficient:g}"
-        if self.surface.bounces:
-            s = self.surface
-            return (
-                f"landing on a table {s.drop_height:g} m below launch (restitution "
-                f"{s.restitution:g}, friction {s.friction:g}), {air}"
-            )
-        return f"caught in the hand, {air}"
+        """One line for the text output (:func:`describe_landing`)."""
+        return describe_landing(self.surface, self.drag)
 
 
 def outcome_model(
