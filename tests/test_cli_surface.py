@@ -10,6 +10,7 @@ from typer.testing import CliRunner
 
 from coinflight import Coin, Toss
 from coinflight.cli import app
+from coinflight.core.bounce import MAX_IMPACTS
 from coinflight.landing import Landing
 from coinflight.surface import Surface
 
@@ -187,3 +188,16 @@ def test_basin_bounces_need_a_table(tmp_path):
     assert result.exit_code == 2
     assert "--bounces applies to --surface table only" in result.stderr
     assert not (tmp_path / "b.png").exists()
+
+
+def test_toss_that_never_settles_says_so():
+    # e = 1, μ = 0: no energy is lost, the coin bounces for ever; the kernel stops at its impact
+    # limit and the face it shows is no result.
+    table = ["--surface", "table", "--restitution", "1", "--friction", "0"]
+    plain = _run(*TOSS, *table)
+    assert plain.exit_code == 0, plain.output
+    assert f"has NOT settled after {MAX_IMPACTS} impacts" in plain.stdout
+    assert "not a resting face" in plain.stdout
+    assert " ends " not in plain.stdout
+    out = json.loads(_run(*TOSS, *table, "--json").stdout)
+    assert (out["status"], out["bounces"]) == ("unsettled", MAX_IMPACTS)

@@ -217,6 +217,13 @@ def report_landing(
             f"{int(out.bounces)} times and ends {out.face_name.upper()} "
             f"(at t = {float(out.settle_time):.4f} s; {out.status_name})"
         )
+        if out.status_name == "unsettled":
+            line = (
+                f"lands on the table at t = {float(out.first_contact):.4f} s and has NOT "
+                f"settled after {int(out.bounces)} impacts (status unsettled, stopped at "
+                f"t = {float(out.settle_time):.4f} s): the face up then was "
+                f"{out.face_name.upper()}, not a resting face"
+            )
     else:
         from coinflight.landing import catch_with_drag
 
