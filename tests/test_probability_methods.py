@@ -428,3 +428,18 @@ def test_grid_default_size_and_work_limit():
     assert MAX_WORK < 1000**3
     with pytest.raises(ValueError, match=r"1e\+09 configurations, each evaluated one by one"):
         estimate(fixed_t, "grid", n=1000)
+
+
+def test_band_counting_wobbling_and_45_degree_spins():
+    # ψ < 45° (|I3 ωz / I1| > Ω⊥) shows the starting face at every node; ψ = 45° exactly is
+    # settled node by node. With I1 = 1, I3 = 2: ωx = 2, ωz = 1 is exactly 45°.
+    wx = np.array([2.0, 2.0, 0.0, 1.0, 3.0, 2.0])
+    wz = np.array([1.0, 5.0, 0.0, 0.4, 1.0, -1.0])
+    wy = np.zeros_like(wx)
+    t_nodes = np.linspace(0.01, 40.0, 5001)
+    for j in range(len(wx)):
+        one = slice(j, j + 1)
+        fast = sampling.count_same_side_time_bands(wx[one], wy[one], wz[one], t_nodes, 1.0, 2.0)
+        full = np.full_like(t_nodes, 1.0)
+        slow = sampling.count_same_side(wx[j] * full, 0 * full, wz[j] * full, t_nodes, 1.0, 2.0)
+        assert fast == slow, j

@@ -169,7 +169,8 @@ def count_same_side_time_bands(
     For each spin the coin shows its starting face iff cos(ωp t) > −cot²ψ (Diaconis, Holmes &
     Montgomery 2007; Stefan & Cheche eq 14 when ψ = 90°), i.e. for ωp t in bands
     (2πm − a, 2πm + a), a = arccos(−cot²ψ). The nodes inside each band are found by binary
-    search, O(bands · log n_t) per spin instead of O(n_t). Nodes within rounding distance of a
+    search, O(bands · log n_t) per spin instead of O(n_t); a wobbling spin (ψ < 45°) shows the
+    starting face at every node, O(1). Nodes within rounding distance of a
     band edge are settled by evaluating :func:`normal_alignment` itself, so that the count
     equals the brute-force count exactly.
     """
@@ -181,9 +182,14 @@ def count_same_side_time_bands(
         perp2 = wx[j] * wx[j] + wy[j] * wy[j]
         axial = i3 / i1 * wz[j]
         ax2 = axial * axial
-        if perp2 == 0.0 or ax2 >= perp2:
-            # ψ ≤ 45°: the normal never passes the horizontal (only touches it when ψ = 45°);
-            # settled node by node (rare: wobbling coins only).
+        if perp2 == 0.0 or ax2 > perp2:
+            # ψ < 45° (or no tumbling at all): n(t)·n0 ≥ cos²ψ − sin²ψ > 0, every node shows
+            # the starting face.
+            total += n_t
+            continue
+        if ax2 == perp2:
+            # ψ = 45° exactly: the normal touches the horizontal at ωp t = π (2m + 1); the
+            # sign there is rounding's, so settled node by node as the brute force does.
             for i in range(n_t):
                 total += normal_alignment(wx[j], wy[j], wz[j], t_nodes[i], i1, i3) > 0.0
             continue
