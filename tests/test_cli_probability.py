@@ -93,6 +93,11 @@ def test_plain_output_readable():
     assert "seed 1" in out and "100,000 tosses" in out
     exact = run("probability", *FIG2A)
     assert "P(heads) = 0.497471 (closed form)" in exact.stdout
+    quad = ["--omega-x", "60:90", "--omega-y", "0:20", "--flight-time", "0.7"]
+    text = run("probability", *quad).stdout
+    assert "(quadrature error bound)" in text and "CI" not in text
+    payload = json.loads(run("probability", *quad, "--json").stdout)
+    assert payload["ci95"] is None and 0 < payload["error_estimate"] < 1e-9
 
 
 def test_launch_speed_and_normal():

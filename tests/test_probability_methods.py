@@ -329,7 +329,11 @@ def test_exact_fixed_time_two_spins():
     dist = TossDistribution(Uniform(60, 90), Uniform(0, 20), 0, Fixed(0.7))
     exact = estimate(dist, "exact")
     assert exact.details["how"] == "closed form in one spin, quadrature in the other"
-    assert exact.error_estimate < 1e-9
+    assert 0 < exact.error_estimate < 1e-9
+    # The error estimate is a bound on a deterministic result, not a 95 % interval.
+    assert exact.ci95 is None and exact.stderr is None
+    assert exact.to_dict()["ci95"] is None
+    assert exact.describe().endswith("(quadrature error bound)")
     # A 2000² grid over (ωx, ωy) evaluated configuration by configuration.
     assert estimate(dist, "grid", n=2000).p_heads == pytest.approx(exact.p_heads, abs=1e-4)
     mc = estimate(dist, "monte-carlo", n=1 << 20, seed=4)

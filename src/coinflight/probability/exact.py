@@ -212,14 +212,13 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
     p_same = min(1.0, max(0.0, p_same))
     p_heads = p_same if dist.start_sign > 0 else 1.0 - p_same
     details["how"] = how
-    ci = (max(0.0, p_heads - error), min(1.0, p_heads + error)) if error > 0 else None
     return ProbabilityResult(
         p_heads=p_heads,
         p_tails=1.0 - p_heads,
         p_edge=0.0,
         p_same_side=p_same,
         method="exact",
-        ci95=ci,
+        ci95=None,  # a deterministic result: error_estimate bounds it, no 95 % interval
         error_estimate=error,
         elapsed=time.perf_counter() - t0,
         details=details,

@@ -28,9 +28,10 @@ class ProbabilityResult:
         Standard error of ``p_heads`` (sampling methods); None where there is none.
     ci95 : (float, float) or None
         95 % interval for ``p_heads``: Wilson score interval (Monte Carlo), Student t over the
-        randomisations (QMC), ``p ± error_estimate`` (exact quadrature).
+        randomisations (QMC); None for ``exact`` and ``grid`` (deterministic results).
     error_estimate : float or None
-        Bound on the numerical error of ``exact`` (0 for closed forms) .
+        Estimated bound on the numerical error of ``exact`` (quadrature's estimate; 0 for
+        closed forms); not a confidence interval.
     counts : (int, int, int) or None
         (tails, heads, edge) counts for the counting methods.
     seed : int or None
