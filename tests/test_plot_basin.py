@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -217,3 +218,48 @@ def test_cli_bad_input(tmp_path, extra, message):
     assert result.exit_code == 2
     assert message in result.stderr
     assert not out.exists()
+
+
+BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+
+
+@pytest.mark.parametrize(
+    ("argv", "option"),
+    [
+        (["plot", "basin", "--out"], "--out"),
+        (["plot", "toss", "--flight-time", "0.5", "--out"], "--out"),
+        (["plot", "bias", "--monte-carlo", "10", "--out"], "--out"),
+        (["data", "--counts", str(BARTOS), "--plot"], "--plot"),
+    ],
+)
+def test_every_figure_command_checks_the_format_first(tmp_path, monkeypatch, argv, option):
+    import coinflight.plotting.basin
+
+    def refuse(*_args, **_kwargs):
+        raise AssertionError("computed before checking the format")
+
+    monkeypatch.setattr(coinflight.plotting.basin, "basin_map", refuse)
+    out = tmp_path / "figure.txt"
+    result = CliRunner().invoke(app, [*argv, str(out)])
+    assert result.exit_code == 2, result.output
+    assert result.stdout == ""  # nothing computed and printed before the error
+    (line,) = result.stderr.splitlines()
+    assert line.startswith(
+        f"coinflight: error: {option} {str(out)!r}: cannot write a figure as .txt"
+    )
+    assert ".png, .svg, .pdf" in line and "without a suffix, FILE.png and FILE.svg" in line
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_figure_without_suffix_is_png_and_svg(tmp_path):
+    from coinflight.plotting.style import figure_paths, image_formats
+
+    assert figure_paths(tmp_path / "f", "--out") == [tmp_path / "f.png", tmp_path / "f.svg"]
+    assert image_formats()[:3] == ["png", "svg", "pdf"]
+    result = CliRunner().invoke(
+        app, ["data", "--counts", str(BARTOS), "--plot", str(tmp_path / "f")]
+    )
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.png", "f.svg"]
+    assert f"wrote {tmp_path / 'f.png'}" in result.stdout
+    assert f"wrote {tmp_path / 'f.svg'}" in result.stdout

@@ -263,8 +263,9 @@ def plot_bias(
     from coinflight import bias as b
     from coinflight.cli.figures import parse_numbers
     from coinflight.plotting.bias import bias_figure
-    from coinflight.plotting.style import save_figure
+    from coinflight.plotting.style import figure_paths, save_figure
 
+    figure_paths(out, "--out")  # before the simulation, not after
     simulated = []
     if monte_carlo is not None:
         angles = parse_numbers(psi_points, "--psi-points")

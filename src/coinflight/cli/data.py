@@ -43,7 +43,8 @@ PlotFile = Annotated[
         "--plot",
         metavar="FILE",
         rich_help_panel=OUTPUT_PANEL,
-        help="Also write a forest plot of the per-person rates (.png, .svg, .pdf).",
+        help="Also write a forest plot of the per-person rates; the format follows the suffix "
+        "(.png, .svg, .pdf, …); without a suffix, FILE.png and FILE.svg.",
     ),
 ]
 INTERVAL_NAMES = {"exact": "Clopper-Pearson", "wilson": "Wilson"}
@@ -64,6 +65,10 @@ def data(
 
     if not (math.isfinite(psi_sd) and psi_sd >= 0.0):
         raise ValueError(f"--psi-sd must be a non-negative number of degrees, got {psi_sd:g}")
+    if plot is not None:
+        from coinflight.plotting.style import figure_paths
+
+        figure_paths(plot, "--plot")
     table = read_counts(counts)
     summary = summarize(table, interval, math.radians(psi_sd))
     written = []

@@ -37,7 +37,8 @@ OutFile = Annotated[
         "-o",
         metavar="FILE",
         rich_help_panel=OUTPUT_PANEL,
-        help="Image file to write; the format follows the suffix (.png, .svg, .pdf).",
+        help="Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
+        "without a suffix, FILE.png and FILE.svg.",
     ),
 ]
 Dpi = Annotated[
@@ -125,10 +126,11 @@ def plot_toss(
     """
     import numpy as np
 
-    from coinflight.plotting.style import save_figure
+    from coinflight.plotting.style import figure_paths, save_figure
     from coinflight.plotting.toss import plot_toss as draw
     from coinflight.toss import Toss
 
+    figure_paths(out, "--out")
     the_coin = resolve_coin(coin, radius, thickness, mass)
     if times is not None:
         if flight_time is not None or launch_speed is not None:
@@ -259,12 +261,11 @@ def plot_basin(
     """
     import math
 
-    from coinflight._files import check_writable
     from coinflight.plotting.basin import basin_map
     from coinflight.plotting.basin import plot_basin as draw
-    from coinflight.plotting.style import save_figure
+    from coinflight.plotting.style import figure_paths, save_figure
 
-    check_writable(out)  # before the map is computed, not after
+    figure_paths(out, "--out")  # before the map is computed, not after
     the_coin = resolve_coin(coin, radius, thickness, mass)
     if psi is None:
         if precession_rate is not None:

@@ -8,14 +8,14 @@ from coinflight.cli import bias as _bias
 from coinflight.cli import figures as _figures
 
 plot_app = typer.Typer(
-    help="Draw figures (PNG, SVG or PDF, by the suffix of --out).",
+    help="Draw figures (PNG, SVG, PDF, …, by the suffix of --out; PNG and SVG without one).",
     invoke_without_command=True,
 )
 
 
 @plot_app.callback()
 def _plot(ctx: typer.Context) -> None:
-    """Draw figures (PNG, SVG or PDF, by the suffix of --out)."""
+    """Draw figures (PNG, SVG, PDF, …, by the suffix of --out; PNG and SVG without one)."""
     if ctx.invoked_subcommand is None:
         typer.echo(ctx.get_help())
 

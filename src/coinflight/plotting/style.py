@@ -7,7 +7,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from coinflight._files import replacing
+from coinflight._files import check_writable, replacing
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -35,28 +35,57 @@ def new_figure(figsize: tuple[float, float] = FIGSIZE, **kwargs: object) -> Figu
     return Figure(figsize=figsize, layout="constrained", **kwargs)  # type: ignore[arg-type]
 
 
+FIRST_FORMATS = ("png", "svg", "pdf")
+"""The formats named first in messages and help; matplotlib writes several more."""
+NO_SUFFIX = "without a suffix, FILE.png and FILE.svg"
+"""What a figure path without a suffix gives (for the options' help)."""
+
+
+def image_formats() -> list[str]:
+    """The image formats (file suffixes without the dot) matplotlib can write, PNG first."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    known = set(FigureCanvasBase.get_supported_filetypes())
+    return [f for f in FIRST_FORMATS if f in known] + sorted(known - set(FIRST_FORMATS))
+
+
+def figure_paths(
+    path: str | os.PathLike[str], option: str = "path", formats: Iterable[str] | None = None
+) -> list[Path]:
+    """The files a figure saved to ``path`` becomes, checked before anything is computed.
+
+    ``path`` with a suffix is one file in that format; without one, one file per format in
+    ``formats`` (default PNG and SVG). ValueError, naming ``option`` (the command-line option,
+    such as ``--out``), for a suffix matplotlib cannot write or a location that cannot be
+    written.
+    """
+    target = Path(path)
+    if formats is None:
+        formats = [target.suffix] if target.suffix else ["png", "svg"]
+    paths = [target.with_suffix("." + fmt.lstrip(".")) for fmt in formats]
+    allowed = image_formats()
+    for p in paths:
+        fmt = p.suffix.lstrip(".").lower()
+        if fmt not in allowed:
+            raise ValueError(
+                f"{option} {str(target)!r}: cannot write a figure as .{fmt}; the suffix must be "
+                f"one of {', '.join('.' + f for f in allowed)} ({NO_SUFFIX})"
+            )
+    for p in paths:
+        check_writable(p)
+    return paths
+
+
 def save_figure(
     fig: Figure, path: str | os.PathLike[str], formats: Iterable[str] | None = None, dpi: int = 150
 ) -> list[Path]:
-    """Save ``fig`` whole or not at all.
+    """Save ``fig`` whole or not at all, to the files :func:`figure_paths` names.
 
     ``path`` with a suffix is written in that format; without one, it is written once per format
     in ``formats`` (default PNG and SVG). Each file is written to a temporary name in the same
     folder and renamed into place, so an interrupted run leaves no half-written figure.
     """
-    target = Path(path)
-    if formats is None:
-        paths = (
-            [target] if target.suffix else [target.with_suffix(".png"), target.with_suffix(".svg")]
-        )
-    else:
-        paths = [target.with_suffix("." + fmt.lstrip(".")) for fmt in formats]
-    for p in paths:
-        fmt = p.suffix.lstrip(".").lower()
-        if not fmt:
-            raise ValueError(
-                f"cannot tell the image format of {str(p)!r}: give a suffix such as .png"
-            )
+    paths = figure_paths(path, formats=formats)
     for p in paths:
         with replacing(p) as tmp:
             fig.savefig(tmp, format=p.suffix.lstrip(".").lower(), dpi=dpi)
