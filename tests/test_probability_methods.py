@@ -199,7 +199,9 @@ class _MapExecutor:
 
 def test_result_is_consistent():
     for method, n in (("exact", None), ("grid", 50), ("monte-carlo", 1000), ("qmc", 16 << 4)):
-        r = estimate(PAPER["fig3a"], method, n=n, seed=1)
+        seed = 1 if method in ("monte-carlo", "qmc") else None
+        r = estimate(PAPER["fig3a"], method, n=n, seed=seed)
+        assert r.seed == seed
         assert isinstance(r, ProbabilityResult)
         assert r.p_heads + r.p_tails + r.p_edge == pytest.approx(1.0, abs=1e-15)
         assert r.p_same_side == r.p_heads  # started heads up
@@ -232,6 +234,12 @@ def test_wilson_interval():
         ({"method": "grid", "n": 2.5}, TypeError, "n must be an integer"),
         ({"method": "grid", "grid_cells": 5}, TypeError, "no option grid_cells"),
         ({"method": "monte-carlo", "seed": -1}, ValueError, "seed"),
+        # Options a method cannot use are refused, not dropped.
+        ({"method": "exact", "seed": 5}, TypeError, "'exact' takes no seed"),
+        ({"method": "grid", "n": 10, "seed": 5}, TypeError, "'grid' takes no seed"),
+        ({"method": "exact", "threads": 2}, TypeError, "'exact' takes no option threads"),
+        ({"method": "exact", "executor": map}, TypeError, "'exact' takes no option executor"),
+        ({"method": "exact", "progress": print}, TypeError, "'exact' takes no option progress"),
     ],
 )
 def test_bad_requests(kwargs, error, words):

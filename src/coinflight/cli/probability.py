@@ -204,7 +204,9 @@ def probability(
         options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
     with progress_bar(total, f"{method}", quiet) as bar:
-        result = estimate(dist, method, n=n, seed=seed, threads=threads, progress=bar, **options)
+        if method != "exact":
+            options.update(threads=threads, progress=bar)
+        result = estimate(dist, method, n=n, seed=seed, **options)
     if json_output:
         payload = result.to_dict()
         payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}

@@ -56,21 +56,27 @@ def estimate(
         else the largest n with n^k ≤ 10⁸), tosses (monte-carlo, default
         10⁶), points (qmc, default 2²⁰). Not used by exact.
     seed : int, optional
-        For monte-carlo and qmc; reported in the result.
+        For monte-carlo and qmc; reported in the result. A TypeError for exact and grid.
     model : OutcomeModel
         How a toss ends (default: caught in the hand).
     executor : object with ``map``, optional
-        Runs the independent tasks (default: a thread pool).
+        Runs the independent tasks (default: a thread pool). Not for exact (TypeError).
+    threads : int, optional
+        Workers of the default thread pool. Not for exact (TypeError).
     progress : callable, optional
-        Called with the amount of work done as tasks finish.
+        Called with the amount of work done as tasks finish. Not for exact (TypeError).
     **options
         ``grid_cells`` (monte-carlo), ``replicates`` (qmc), ``chunk_size`` (monte-carlo).
     """
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    if method in ("exact", "grid") and seed is not None:
+        raise TypeError(f"method {method!r} takes no seed (it is deterministic); got seed={seed}")
     if method == "exact":
         if n is not None:
             raise ValueError("the exact method takes no n")
+        given = {"executor": executor, "threads": threads, "progress": progress}
+        _no_options(method, {k: v for k, v in given.items() if v is not None})
         _no_options(method, options)
         from coinflight.probability import exact
 
