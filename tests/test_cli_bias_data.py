@@ -114,6 +114,30 @@ def test_plot_bias_bad_point(tmp_path):
     assert not (tmp_path / "x.png").exists()
 
 
+NEEDS_MC = "needs --monte-carlo N (it sets the simulation)"
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["plot", "bias", "--psi-points", "10,20"], f"--psi-points {NEEDS_MC}"),
+        (["plot", "bias", "--seed", "5"], f"--seed {NEEDS_MC}"),
+        (["bias", "--psi", "80", "--seed", "5"], f"--seed {NEEDS_MC}"),
+        (["bias", "--preset", "human", "--seed", "5"], f"--seed {NEEDS_MC}"),
+        (
+            ["plot", "bias", "--monte-carlo", "10", "--psi-points", "60,x"],
+            "--psi-points must be comma-separated numbers such as 60,80,100; got '60,x'",
+        ),
+    ],
+)
+def test_simulation_options_need_the_simulation(tmp_path, argv, message):
+    out = tmp_path / "x.png"
+    result = run(*argv, *(["--out", out] if argv[0] == "plot" else []))
+    assert result.exit_code == 2, result.output
+    assert result.stderr == f"coinflight: error: {message}\n"
+    assert not out.exists()
+
+
 def test_data_json_on_the_shared_file():
     result = run("data", "--counts", BARTOS, "--json")
     assert result.exit_code == 0, result.output

@@ -58,11 +58,25 @@ MonteCarlo = Annotated[
     ),
 ]
 Seed = Annotated[
-    int,
+    int | None,
     typer.Option(
-        "--seed", min=0, metavar="S", rich_help_panel=SIM_PANEL, help="Seed of the simulation."
+        "--seed",
+        min=0,
+        metavar="S",
+        rich_help_panel=SIM_PANEL,
+        help="Seed of the --monte-carlo simulation \\[default: 0].",
     ),
 ]
+
+
+def simulation_seed(monte_carlo: int | None, seed: int | None, *others: tuple[str, object]) -> int:
+    """The seed to use (default 0); ValueError if --seed or another simulation option is given
+    without --monte-carlo, which alone would run the simulation they set."""
+    if monte_carlo is None:
+        for flag, value in (("--seed", seed), *others):
+            if value is not None:
+                raise ValueError(f"{flag} needs --monte-carlo N (it sets the simulation)")
+    return 0 if seed is None else seed
 
 
 PresetName = Annotated[
@@ -94,7 +108,7 @@ def bias(
     psi_dist: PsiDist = None,
     preset: PresetName = None,
     monte_carlo: MonteCarlo = None,
-    seed: Seed = 0,
+    seed: Seed = None,
     coin: CoinName = None,
     radius: Radius = None,
     thickness: Thickness = None,
@@ -107,6 +121,7 @@ def bias(
     """
     from coinflight import bias as b
 
+    seed = simulation_seed(monte_carlo, seed)
     if preset is not None:
         if psi is not None or psi_dist is not None:
             raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
@@ -227,6 +242,7 @@ def _z(sim: Any, p: float) -> float:
     return (sim.p_same_side - p) / sim.stderr if sim.stderr > 0 else 0.0
 
 
+PSI_POINTS = "45,50,55,60,70,80,90,100,110,120,130,135"
 Measured = Annotated[
     float | None,
     typer.Option(
@@ -238,12 +254,12 @@ Measured = Annotated[
     ),
 ]
 PsiPoints = Annotated[
-    str,
+    str | None,
     typer.Option(
         "--psi-points",
         metavar="DEG,DEG,...",
         rich_help_panel=SIM_PANEL,
-        help="Angles (degrees) at which to simulate with --monte-carlo.",
+        help=f"Angles (degrees) at which to simulate with --monte-carlo \\[default: {PSI_POINTS}].",
     ),
 ]
 
@@ -251,8 +267,8 @@ PsiPoints = Annotated[
 def plot_bias(
     out: OutFile,
     monte_carlo: MonteCarlo = None,
-    seed: Seed = 0,
-    psi_points: PsiPoints = "45,50,55,60,70,80,90,100,110,120,130,135",
+    seed: Seed = None,
+    psi_points: PsiPoints = None,
     measured: Measured = None,
     dpi: Dpi = 150,
 ) -> None:
@@ -266,9 +282,10 @@ def plot_bias(
     from coinflight.plotting.style import figure_paths, save_figure
 
     figure_paths(out, "--out")  # before the simulation, not after
+    seed = simulation_seed(monte_carlo, seed, ("--psi-points", psi_points))
     simulated = []
     if monte_carlo is not None:
-        angles = parse_numbers(psi_points, "--psi-points")
+        angles = parse_numbers(psi_points or PSI_POINTS, "--psi-points", "60,80,100")
         b.check_psi(angles, degrees=True)
         # One seed per point, spawned from --seed, so the points are independent.
         seeds = [int(s.generate_state(1)[0]) for s in _spawn(seed, len(angles))]

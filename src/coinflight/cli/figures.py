@@ -57,14 +57,15 @@ Times = Annotated[
 ]
 
 
-def parse_numbers(text: str, name: str) -> list[float]:
-    """Comma-separated numbers, or a ValueError naming the option and the bad text."""
+def parse_numbers(text: str, name: str, example: str = "0.6,0.65,0.7") -> list[float]:
+    """Comma-separated numbers, or a ValueError naming the option, an ``example`` of what it
+    takes and the bad text."""
     parts = [p.strip() for p in text.split(",")]
     try:
         values = [float(p) for p in parts]
     except ValueError:
         raise ValueError(
-            f"{name} must be comma-separated numbers such as 0.6,0.65,0.7; got {text!r}"
+            f"{name} must be comma-separated numbers such as {example}; got {text!r}"
         ) from None
     return values
 
@@ -149,7 +150,7 @@ FlightTimeRange = Annotated[
         "-T",
         metavar="LO:HI",
         rich_help_panel=TOSS_PANEL,
-        help="Range of flight times T, s [default: 0.6:0.9, Stefan & Cheche].",
+        help="Range of flight times T, s \\[default: 0.6:0.9, Stefan & Cheche].",
     ),
 ]
 LaunchSpeedRange = Annotated[
@@ -167,7 +168,7 @@ OmegaXRange = Annotated[
         "--omega-x",
         metavar="LO:HI",
         rich_help_panel=TOSS_PANEL,
-        help="Range of the spin about a diameter ωx0, rad/s [default: 60:90].",
+        help="Range of the spin about a diameter ωx0, rad/s \\[default: 60:90].",
     ),
 ]
 OmegaY = Annotated[
@@ -207,7 +208,7 @@ PrecessionRange = Annotated[
         "--precession-rate",
         metavar="LO:HI",
         rich_help_panel=TOSS_PANEL,
-        help="Range of the precession rate ωp = |S|/I1, rad/s, with --psi [default: 60:90].",
+        help="Range of the precession rate ωp = |S|/I1, rad/s, with --psi \\[default: 60:90].",
     ),
 ]
 Resolution = Annotated[
