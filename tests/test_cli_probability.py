@@ -191,11 +191,40 @@ def test_convergence_into_directory_and_errors(tmp_path):
     assert result.exit_code == 0, result.stderr
     assert (tmp_path / "convergence.csv").exists() and (tmp_path / "convergence.svg").exists()
     assert "exact P(heads) = 0.497471" in result.stdout
+    assert "seed" not in result.stdout  # no random method ran: no seed to report
+    grid_only = ["--methods", "grid", "--grid-sizes", "10"]
+    payload = json.loads(
+        run("convergence", *FIG2A, *grid_only, "-o", str(tmp_path), "--json").stdout
+    )
+    assert payload["seed"] is None
+    for extra, words in (
+        (["--event-sizes", "100"], "--event-sizes applies to --methods monte-carlo"),
+        (["--qmc-sizes", "64"], "--qmc-sizes applies to --methods qmc"),
+        (["--seed", "3"], "--seed applies to monte-carlo and qmc"),
+        (["--grid-cells", "50"], "--grid-cells applies to --methods monte-carlo"),
+    ):
+        bad = run("convergence", *FIG2A, *grid_only, *extra, "--out", str(tmp_path / "z"))
+        assert bad.exit_code == 2 and words in bad.stderr, bad.stderr
+    bad = run("convergence", *FIG2A, "--methods", "qmc", "--grid-sizes", "5", "-o", str(tmp_path))
+    assert bad.exit_code == 2 and "--grid-sizes applies to --methods grid" in bad.stderr
     bad = run("convergence", *FIG2A, "--methods", "grid,exact", "--out", str(tmp_path / "x"))
     assert bad.exit_code == 2 and "unknown method 'exact'" in bad.stderr
     bad = run("convergence", *FIG2A, "--grid-sizes", "10,x", "--out", str(tmp_path / "y"))
     assert bad.exit_code == 2 and "--grid-sizes" in bad.stderr
     assert not list(tmp_path.glob("x*")) and not list(tmp_path.glob("y*"))
+    assert not list(tmp_path.glob("z*"))
+
+
+def test_convergence_library_refuses_ignored_options():
+    from coinflight.probability.convergence import convergence
+
+    dist = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))
+    with pytest.raises(TypeError, match="event_sizes given but 'monte-carlo'"):
+        convergence(dist, ["grid"], grid_sizes=[5], event_sizes=[100])
+    with pytest.raises(TypeError, match="seed given but no random method"):
+        convergence(dist, ["grid"], grid_sizes=[5], seed=1)
+    assert convergence(dist, ["grid"], grid_sizes=[5]).seed is None
+    assert convergence(dist, ["qmc"], qmc_sizes=[64], seed=9).seed == 9
 
 
 def test_progress_bar_only_on_a_terminal(monkeypatch):

@@ -53,12 +53,13 @@ Methods = Annotated[
     ),
 ]
 Cells = Annotated[
-    int,
+    int | None,
     typer.Option(
         "--grid-cells",
         metavar="C",
         rich_help_panel=METHOD_PANEL,
-        help="Cells per parameter for method B (the paper: 100); 0 for plain Monte Carlo.",
+        help="Cells per parameter for method B (default 100, as the paper); 0 for plain Monte "
+        "Carlo.",
     ),
 ]
 Out = Annotated[
@@ -114,7 +115,7 @@ def convergence(
             help="QMC points, each 16 × a power of two (default 64,…,1048576).",
         ),
     ] = None,
-    grid_cells: Cells = 100,
+    grid_cells: Cells = None,
     seed: Seed = None,
     threads: Threads = None,
     out: Out = Path("convergence"),
@@ -136,6 +137,9 @@ def convergence(
         omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
     )
     method_list = [m.strip() for m in methods.split(",") if m.strip()]
+    grid_cells_given = grid_cells is not None
+    if grid_cells is None:
+        grid_cells = 100
     sizes: dict[str, list[int]] = {}
     if grid_sizes is not None:
         sizes["grid_sizes"] = _int_list(grid_sizes, "--grid-sizes")
@@ -143,6 +147,18 @@ def convergence(
         sizes["event_sizes"] = _int_list(event_sizes, "--event-sizes")
     if qmc_sizes is not None:
         sizes["qmc_sizes"] = _int_list(qmc_sizes, "--qmc-sizes")
+    for option, text, needed in (
+        ("--grid-sizes", grid_sizes, "grid"),
+        ("--event-sizes", event_sizes, "monte-carlo"),
+        ("--qmc-sizes", qmc_sizes, "qmc"),
+    ):
+        if text is not None and needed not in method_list:
+            raise ValueError(f"{option} applies to --methods {needed}, not given in {methods!r}")
+    if not {"monte-carlo", "qmc"} & set(method_list):
+        if seed is not None:
+            raise ValueError(f"--seed applies to monte-carlo and qmc, not to {methods!r}")
+        if grid_cells_given:
+            raise ValueError(f"--grid-cells applies to --methods monte-carlo, not {methods!r}")
     if grid_cells < 0:
         raise ValueError(
             f"--grid-cells must be 0 (plain Monte Carlo) or positive, got {grid_cells}"
@@ -173,4 +189,5 @@ def convergence(
     for m in result.methods:
         last = result.series(m)[-1]
         typer.echo(f"{m}: P(heads) = {last.p_heads:.6f} at {last.samples:,} (largest size)")
-    typer.echo(f"seed {result.seed}; wrote {', '.join(str(p) for p in written)}")
+    files = ", ".join(str(p) for p in written)
+    typer.echo(f"wrote {files}" if result.seed is None else f"seed {result.seed}; wrote {files}")

@@ -48,6 +48,7 @@ class Convergence:
     exact: float | None
     exact_how: str | None
     seed: int | None
+    """The seed of the random series; None when no random method ran."""
     grid_cells: int | None
     description: str = ""
     parameters: dict[str, str] = field(default_factory=dict)
@@ -113,9 +114,9 @@ def convergence(
     dist: TossDistribution,
     methods: Sequence[str] = DEFAULT_METHODS,
     *,
-    grid_sizes: Sequence[int] = DEFAULT_GRID_SIZES,
-    event_sizes: Sequence[int] = DEFAULT_EVENT_SIZES,
-    qmc_sizes: Sequence[int] = DEFAULT_QMC_SIZES,
+    grid_sizes: Sequence[int] | None = None,
+    event_sizes: Sequence[int] | None = None,
+    qmc_sizes: Sequence[int] | None = None,
     seed: int | None = None,
     grid_cells: int | None = 100,
     executor: Executor | None = None,
@@ -129,12 +130,15 @@ def convergence(
     methods : sequence of {"grid", "monte-carlo", "qmc"}
         ``grid`` is method A; ``monte-carlo`` with ``grid_cells=100`` is method B (None: plain
         Monte Carlo).
-    grid_sizes, event_sizes, qmc_sizes : sequence of int
-        Cells per parameter (grid), events (monte-carlo), points (qmc: 16 × powers of two).
+    grid_sizes, event_sizes, qmc_sizes : sequence of int, optional
+        Cells per parameter (grid), events (monte-carlo), points (qmc: 16 × powers of two);
+        default :data:`DEFAULT_GRID_SIZES` etc. Sizes for a method not in ``methods`` are a
+        TypeError (they would be ignored).
     seed : int, optional
         One seed for all random series. Monte Carlo runs of growing size share their first
         tosses (see :mod:`coinflight.probability.monte_carlo`), so the series is a running
-        estimate.
+        estimate. A TypeError when no random method (monte-carlo, qmc) is asked for; the
+        result's seed is then None.
     """
     from coinflight.probability import estimate
     from coinflight.probability.monte_carlo import reported_seed, seed_sequence
@@ -147,9 +151,23 @@ def convergence(
             )
     if not methods:
         raise ValueError("give at least one method")
-    root = seed_sequence(seed)
-    the_seed = reported_seed(root)
-    sizes = {"grid": grid_sizes, "monte-carlo": event_sizes, "qmc": qmc_sizes}
+    given = {"grid": grid_sizes, "monte-carlo": event_sizes, "qmc": qmc_sizes}
+    names = {"grid": "grid_sizes", "monte-carlo": "event_sizes", "qmc": "qmc_sizes"}
+    for m, value in given.items():
+        if value is not None and m not in methods:
+            raise TypeError(f"{names[m]} given but {m!r} is not among the methods")
+    defaults: dict[str, Sequence[int]] = {
+        "grid": DEFAULT_GRID_SIZES,
+        "monte-carlo": DEFAULT_EVENT_SIZES,
+        "qmc": DEFAULT_QMC_SIZES,
+    }
+    sizes = {m: defaults[m] if value is None else value for m, value in given.items()}
+    random_methods = [m for m in methods if m in ("monte-carlo", "qmc")]
+    the_seed: int | None = None
+    if random_methods:
+        the_seed = reported_seed(seed_sequence(seed))
+    elif seed is not None:
+        raise TypeError(f"seed given but no random method (monte-carlo, qmc) among {methods}")
     for m in methods:
         if not sizes[m]:
             raise ValueError(f"no sizes given for {m}")
