@@ -200,7 +200,8 @@ def test_data_malformed_file_names_the_line(tmp_path):
     [
         (["--interval", "bayes"], "interval method must be one of exact, wilson"),
         (["--psi-sd", "-1"], "--psi-sd must be a non-negative number"),
-        (["--psi-sd", "20"], "too wide"),
+        (["--psi-sd", "20"], "a spread of psi of 20° is too wide"),
+        (["--psi-sd", "30"], "a spread of psi of 30° is too wide"),
     ],
 )
 def test_data_bad_options(args, message):
@@ -215,7 +216,11 @@ def test_data_spread_too_large_for_the_rate():
     assert result.exit_code == 0, result.output
     payload = json.loads(result.stdout)
     assert payload["psi_deg"] is None
+    assert payload["psi_ci95_deg"] is None  # was [90.0, 90.0]: an interval about no angle
     assert payload["p_same_side_floor"] > payload["p_same_side"]
+    text = run("data", "--counts", BARTOS, "--psi-sd", 12).stdout
+    (line,) = [s for s in text.splitlines() if s.startswith("precession")]
+    assert "no ψ gives this same-side rate" in line and "interval" not in line
 
 
 def test_data_missing_file(tmp_path):

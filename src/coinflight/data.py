@@ -233,9 +233,10 @@ class PsiFit:
         A fixed ψ (``sd == 0``) or the mean of a normal ψ distribution of spread ``sd``, rad, on
         the branch below π/2; None if the rate cannot be reached (at or below the least
         same-side probability of the model, 1/2 for a fixed ψ).
-    ci95 : (float, float)
+    ci95 : (float, float) or None
         ψ at the upper and lower ends of the rate's interval (p grows as ψ falls); an end whose
-        rate cannot be reached is π/2, the angle of least bias, and ``limited`` says so.
+        rate cannot be reached is π/2, the angle of least bias, and ``limited`` says so. None
+        when ``psi`` is None: no angle, no interval about it.
     sd : float
         Spread of the ψ distribution, rad (0: fixed angle).
     limited : bool
@@ -245,7 +246,7 @@ class PsiFit:
     """
 
     psi: float | None
-    ci95: tuple[float, float]
+    ci95: tuple[float, float] | None
     sd: float
     limited: bool
     floor: float = 0.5
@@ -284,7 +285,7 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
     widest = 0.5 * math.pi / -float(ndtri(TAIL_MASS))
     if spread >= widest:
         raise ValueError(
-            f"a spread of psi of {spread:.4g} rad ({math.degrees(spread):.4g}°) is too wide: a "
+            f"a spread of psi of {math.degrees(spread):.4g}° is too wide: a "
             f"normal distribution of psi about 90° must stay within [0°, 180°], so the spread "
             f"must be below {math.degrees(widest):.4g}°"
         )
@@ -301,7 +302,8 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
     ends = [solve(rate.ci95[1]), solve(rate.ci95[0])]
     limited = any(e is None for e in ends)
     lo, hi = (0.5 * math.pi if e is None else e for e in ends)
-    return PsiFit(psi=psi, ci95=(lo, hi), sd=spread, limited=limited, floor=least)
+    ci95 = None if psi is None else (lo, hi)
+    return PsiFit(psi=psi, ci95=ci95, sd=spread, limited=limited, floor=least)
 
 
 @dataclass(frozen=True)

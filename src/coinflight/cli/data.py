@@ -79,7 +79,7 @@ def data(
         written = save_figure(forest_figure(summary), plot)
     same, heads, fit = summary.same_side, summary.heads, summary.psi
     psi_deg = None if fit.psi is None else math.degrees(fit.psi)
-    psi_ci = [math.degrees(x) for x in fit.ci95]
+    psi_ci = None if fit.ci95 is None else [math.degrees(x) for x in fit.ci95]
     if json_output:
         payload: dict[str, Any] = {
             "source": str(counts),
@@ -139,7 +139,7 @@ def data(
         else f"the mean of a normal ψ distribution with sd {psi_sd:g}°"
     )
     limit = " (an end capped at 90°: that rate is not reached)" if fit.limited else ""
-    if psi_deg is None:
+    if psi_deg is None or psi_ci is None:
         typer.echo(
             f"precession (Diaconis et al. 2007, {what}): no ψ gives this same-side rate; "
             f"the model gives at least {fit.floor:.5f}"
