@@ -185,6 +185,10 @@ def test_progress_reports_all_work():
     done = []
     estimate(dist, "monte-carlo", n=(1 << 20) + 7, seed=1, chunk_size=1, progress=done.append)
     assert sum(done) == (1 << 20) + 7 and len(done) == 2
+    # By default too, the progress moves once per block of 2²⁰ tosses (a bar that moves).
+    done.clear()
+    estimate(dist, "monte-carlo", n=3 << 20, seed=1, progress=done.append)
+    assert done == [1 << 20] * 3
     done.clear()
     estimate(dist, "grid", n=300, progress=done.append)
     assert sum(done) == 300**2

@@ -34,7 +34,9 @@ BLOCK = 1 << 20
 """Tosses per random stream. Part of the reproducibility contract: do not change lightly."""
 DRAW = 1 << 16
 """Tosses drawn at a time from a stream (memory only: the tosses do not depend on it)."""
-DEFAULT_CHUNK = 8 * BLOCK
+DEFAULT_CHUNK = BLOCK
+"""Tosses per task: one block, so that a progress bar moves every ~2²⁰ tosses (~15 ms of
+compute); larger tasks measured no faster (benchmarks/bench_probability.py)."""
 
 
 def seed_sequence(seed: int | np.random.SeedSequence | None) -> np.random.SeedSequence:
