@@ -138,6 +138,22 @@ def test_simulation_options_need_the_simulation(tmp_path, argv, message):
     assert not out.exists()
 
 
+@pytest.mark.parametrize(
+    ("points", "shown"),
+    [("60,200", "200.0"), ("-1,60", "-1.0"), ("60,200,-1", "[200. -1.]")],
+)
+def test_bad_values_print_as_numbers(tmp_path, points, shown):
+    # One offending value reads as a number ("got 200.0"), not a NumPy array ("got [200.]").
+    result = run(
+        "plot", "bias", "--out", tmp_path / "x.png", "--monte-carlo", 10, "--psi-points", points
+    )
+    assert result.exit_code == 2
+    assert result.stderr == (
+        "coinflight: error: precession angle psi must be between 0 and 180 (in degrees), "
+        f"got {shown}\n"
+    )
+
+
 def test_data_json_on_the_shared_file():
     result = run("data", "--counts", BARTOS, "--json")
     assert result.exit_code == 0, result.output

@@ -9,9 +9,10 @@ from numpy.typing import ArrayLike, NDArray
 
 
 def _show(value: object) -> str:
+    """A value for a message: one number as a plain number (200.0), several as an array."""
     arr = np.asarray(value)
-    if arr.ndim == 0:
-        return repr(arr.item())
+    if arr.size == 1:
+        return repr(arr.reshape(-1)[0].item())
     return np.array2string(arr, threshold=6)
 
 
