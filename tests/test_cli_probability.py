@@ -106,6 +106,12 @@ def test_launch_speed_and_normal():
         run("probability", "--omega-x", "60:90", "--launch-speed", "2.943:4.4145", "--json").stdout
     )
     assert a["p_heads"] == pytest.approx(0.497470690, abs=1e-8)
+    # What the user asked for is in the output: the launch speed and g.
+    assert a["g"] == 9.81 and a["inputs"]["--launch-speed"] == "2.943:4.4145"
+    assert a["inputs"]["--flight-time"] is None and a["inputs"]["--omega-x"] == "60:90"
+    plain = run("probability", "--omega-x", "60:90", "--launch-speed", "3:4", "--g", "9.7")
+    assert "g = 9.7 m/s²; launch speed v0 = 3–4 m/s (T = 2 v0 / g)" in plain.stdout
+    assert "g = 9.81 m/s²\n" in run("probability", *FIG2A).stdout
     b = run("probability", "--omega-x", "normal:75,5", "--flight-time", "0.6:0.9", "--json")
     assert b.exit_code == 0 and 0.45 < json.loads(b.stdout)["p_heads"] < 0.55
 
@@ -126,6 +132,10 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
+        (
+            ["--omega-x", "60:90", "--launch-speed", "normal:0.1,1"],
+            "--launch-speed normal(0.1, sd 1) m/s reaches speeds ≤ 0 m/s",
+        ),
         (
             [*THREE_SPINS, "--flight-time", "0.7", "--method", "grid", "--n", "1000"],
             "1e+09 configurations, each evaluated one by one",

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -119,6 +121,20 @@ def test_from_launch_speed_uses_eq_11():
     d = TossDistribution.from_launch_speed(80.0, 0, 0, Normal(4.0, 0.1), g=10.0)
     assert isinstance(d.flight_time, Normal)
     assert (d.flight_time.mean, d.flight_time.sd) == pytest.approx((0.8, 0.02), rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("speed", "words"),
+    [
+        (Normal(0.1, 1.0), "launch speed normal(0.1, sd 1) m/s reaches speeds ≤ 0 m/s"),
+        (Uniform(-1.0, 3.0), "launch speed -1–3 m/s reaches speeds ≤ 0 m/s"),
+        (Fixed(0.0), "launch speed 0 m/s reaches"),
+    ],
+)
+def test_launch_speed_errors_name_the_launch_speed(speed, words):
+    # The user's numbers, not the flight times they convert to.
+    with pytest.raises(ValueError, match=re.escape(words)):
+        TossDistribution.from_launch_speed(80.0, 0, 0, speed)
 
 
 @pytest.mark.parametrize("flight_time", [Uniform(-0.1, 0.5), Fixed(0.0), Normal(0.5, 0.1)], ids=str)

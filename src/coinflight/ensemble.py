@@ -97,9 +97,7 @@ class TossDistribution:
     ) -> TossDistribution:
         """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11)."""
         gg = float(v.positive("g", g, "m/s²"))
-        speed = as_distribution(launch_speed)
-        if speed.bounds[0] <= 0.0 and not isinstance(speed, Normal):
-            raise ValueError(f"launch speed {speed.describe('m/s')} must be positive")
+        speed = check_launch_speed(as_distribution(launch_speed))
         return cls(
             omega_x,  # type: ignore[arg-type]
             omega_y,  # type: ignore[arg-type]
@@ -175,6 +173,24 @@ class TossDistribution:
         return "\n".join(lines)
 
 
+def check_launch_speed(speed: Distribution, name: str = "launch speed") -> Distribution:
+    """``speed`` (m/s) if it is positive with certainty, else a ValueError naming ``name``.
+
+    A normal speed must have mean > 8 sd (as a normal flight time, which it becomes).
+    """
+    low = speed.mean - _NORMAL_T_SIGMAS * speed.sd if isinstance(speed, Normal) else speed.bounds[0]
+    if not low > 0.0:
+        extra = (
+            f" (a normal one needs mean > {_NORMAL_T_SIGMAS:g} sd)"
+            if isinstance(speed, Normal)
+            else ""
+        )
+        raise ValueError(
+            f"{name} {speed.describe('m/s')} reaches speeds ≤ 0 m/s; it must be positive{extra}"
+        )
+    return speed
+
+
 def _largest(dist: Distribution) -> float:
     """Largest |value| a distribution reaches (a normal one: within ±8 sd, as for T)."""
     if isinstance(dist, Normal):
@@ -183,4 +199,4 @@ def _largest(dist: Distribution) -> float:
     return max(abs(lo), abs(hi))
 
 
-__all__ = ["PARAMETERS", "TossDistribution"]
+__all__ = ["PARAMETERS", "TossDistribution", "check_launch_speed"]

@@ -120,7 +120,7 @@ def build_distribution(
 ) -> TossDistribution:
     """The :class:`~coinflight.ensemble.TossDistribution` for the command-line options."""
     from coinflight.distributions import parse_distribution
-    from coinflight.ensemble import TossDistribution
+    from coinflight.ensemble import TossDistribution, check_launch_speed
 
     wx = parse_distribution(omega_x, "--omega-x", "rad/s")
     wy = parse_distribution(omega_y, "--omega-y", "rad/s")
@@ -131,7 +131,9 @@ def build_distribution(
         t = parse_distribution(flight_time, "--flight-time", "s")
         return TossDistribution(wx, wy, wz, t, coin=coin, start=start, g=g)  # type: ignore[arg-type]
     assert launch_speed is not None
-    v0 = parse_distribution(launch_speed, "--launch-speed", "m/s")
+    v0 = check_launch_speed(
+        parse_distribution(launch_speed, "--launch-speed", "m/s"), "--launch-speed"
+    )
     return TossDistribution.from_launch_speed(wx, wy, wz, v0, coin=coin, start=start, g=g)  # type: ignore[arg-type]
 
 
@@ -212,11 +214,14 @@ def probability(
         payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}
         payload["coin"] = the_coin.name
         payload["start"] = start
+        payload["g"] = dist.g
+        payload["inputs"] = _inputs(ctx)
         if landing is not None:
             payload.update(surface_payload(landing.surface, landing.drag))
         print_json(payload)
         return
     typer.echo(dist.describe())
+    typer.echo(_gravity_line(dist.g, launch_speed))
     if landing is not None:
         typer.echo(landing.describe())
     typer.echo(result.describe())
@@ -225,6 +230,23 @@ def probability(
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
     typer.echo(_method_line(result))
+
+
+def _gravity_line(g: float, launch_speed: str | None) -> str:
+    """``g = 9.81 m/s²`` and, when given, the launch speed the flight time came from."""
+    line = f"g = {g:g} m/s²"
+    if launch_speed is not None:
+        from coinflight.distributions import parse_distribution
+
+        v0 = parse_distribution(launch_speed, "--launch-speed", "m/s")
+        line += f"; launch speed v0 = {v0.describe('m/s')} (T = 2 v0 / g)"
+    return line
+
+
+def _inputs(ctx: typer.Context) -> dict[str, Any]:
+    """The toss options as the user typed them (or their defaults), by option name."""
+    names = ("omega_x", "omega_y", "omega_z", "flight_time", "launch_speed", "g", "preset")
+    return {f"--{name.replace('_', '-')}": ctx.params.get(name) for name in names}
 
 
 def _method_line(result: object) -> str:
