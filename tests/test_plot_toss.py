@@ -107,3 +107,29 @@ def test_cli_bad_input_is_one_line(tmp_path, extra, message):
     assert message in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert not out.exists()
+
+
+def test_four_panels_keep_their_labels_clear_and_the_sphere_names_each_catch():
+    # Fig 3c-f layout: the bottom row's titles overlapped the top row's "Y (mm)" labels and
+    # the legend covered the last "Y (mm)".
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    times = np.array([0.6, 0.65, 0.7, 0.75])
+    fig = plot_toss(QUARTER, Toss(omega=(90.0, 30.0, 0.0), flight_time=times))
+    FigureCanvasAgg(fig).draw()
+    renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
+    coins, sphere = fig.axes[:4], fig.axes[4]
+
+    def box(artist):
+        return artist.get_window_extent(renderer)
+
+    legend = box(fig.legends[0])
+    for top, bottom in ((coins[0], coins[2]), (coins[1], coins[3])):
+        for label in (top.xaxis.label, top.yaxis.label):
+            assert not box(label).overlaps(box(bottom.title))
+    for ax in coins:
+        for label in (ax.xaxis.label, ax.yaxis.label, ax.zaxis.label):
+            assert not box(label).overlaps(legend)
+            assert fig.bbox.contains(*box(label).min) and fig.bbox.contains(*box(label).max)
+    names = [t.get_text() for t in sphere.texts]
+    assert [f"T = {t:g} s" for t in times] == [n for n in names if n.startswith("T = ")]

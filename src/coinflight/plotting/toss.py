@@ -27,6 +27,10 @@ FloatArray = NDArray[np.float64]
 S_COLOR = "#000000"
 ARROW_SCALE = 1.5
 """Unit vectors n and Ŝ are drawn ARROW_SCALE coin radii long."""
+SPHERE_AZIM = -60.0
+"""Azimuth of the view of the unit sphere, degrees (matplotlib's default)."""
+PANEL_ZOOM = 0.85
+"""Size of a 3-D box within its panel (matplotlib's ``zoom``); 1 lets labels spill out."""
 
 
 def coin_rim(attitude: Rotation, radius: float, n_points: int = 121) -> FloatArray:
@@ -133,7 +137,8 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         ax.set_xlim(-lim, lim)
         ax.set_ylim(-lim, lim)
         ax.set_zlim(-lim, lim)
-        ax.set_box_aspect((1, 1, 1))
+        # zoom < 1 keeps the axis labels inside the panel, clear of the next row and the legend.
+        ax.set_box_aspect((1, 1, 1), zoom=PANEL_ZOOM)
         # Look from near the X axis, the paper's spin axis, so that the tilt reads clearly.
         ax.view_init(elev=20, azim=-30)
         ticks = [-round(r_mm), 0, round(r_mm)]
@@ -164,6 +169,20 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     for start_n in np.unique(n0, axis=0):
         sphere.scatter(*start_n, color=LAUNCH_COLOR, s=40, depthshade=False)
     sphere.scatter(*normals.T, color=CATCH_COLOR, s=40, depthshade=False)
+    if k > 1:  # which catch is which: the label beside its point, on the outer side on screen
+        azim = math.radians(SPHERE_AZIM)
+        right = np.array([-math.sin(azim), math.cos(azim), 0.0])  # screen-right, in the lab
+        for i in range(k):
+            side = 1.0 if normals[i] @ right >= 0 else -1.0
+            sphere.text(
+                *(normals[i] + 0.12 * side * right),
+                f"T = {times[i]:g} s",
+                color=CATCH_COLOR,
+                fontsize=8,
+                ha="left" if side > 0 else "right",
+                va="center",
+                bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none", "pad": 0.5},
+            )
     for end in (n0[0], *normals):
         sphere.plot(*np.stack([np.zeros(3), end]).T, color="#999999", lw=0.6, ls=":")
     psi_deg = np.degrees(psi)
@@ -177,7 +196,8 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     )
     for setter in (sphere.set_xlim, sphere.set_ylim, sphere.set_zlim):
         setter(-1.1, 1.1)
-    sphere.set_box_aspect((1, 1, 1))
+    sphere.set_box_aspect((1, 1, 1), zoom=PANEL_ZOOM)
+    sphere.view_init(elev=30, azim=SPHERE_AZIM)
     for set_ticks in (sphere.set_xticks, sphere.set_yticks, sphere.set_zticks):
         set_ticks([-1.0, 0.0, 1.0])
     sphere.set_xlabel("nX")
