@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 
 import pytest
 from typer.testing import CliRunner
@@ -89,15 +90,28 @@ def test_plain_output_readable():
     result = run("probability", *FIG2A, "-m", "monte-carlo", "-n", "100000", "--seed", "1")
     assert result.exit_code == 0
     out = result.stdout
-    assert "P(heads) = 0.49" in out and "±" in out and "95 % CI" in out
+    assert "P(heads) = 0.49" in out and "95 % CI" in out
+    assert re.search(r"± 0\.0016 s\.e\. \(95 % CI", out)  # sqrt(p(1 − p)/1e5) = 0.00158
     assert "seed 1" in out and "100,000 tosses" in out
     exact = run("probability", *FIG2A)
     assert "P(heads) = 0.497471 (closed form)" in exact.stdout
     quad = ["--omega-x", "60:90", "--omega-y", "0:20", "--flight-time", "0.7"]
     text = run("probability", *quad).stdout
-    assert "(quadrature error bound)" in text and "CI" not in text
+    assert "(quadrature error bound)" in text and "CI" not in text and "s.e." not in text
     payload = json.loads(run("probability", *quad, "--json").stdout)
     assert payload["ci95"] is None and 0 < payload["error_estimate"] < 1e-9
+
+
+def test_short_flight_time_option(tmp_path):
+    # -T is --flight-time, as in coinflight toss.
+    short = run("probability", "--omega-x", "60:90", "-T", "0.6:0.9", "--json")
+    assert json.loads(short.stdout)["p_heads"] == pytest.approx(0.497470690, abs=1e-8)
+    conv = run(
+        "convergence", "--omega-x", "60:90", "-T", "0.6:0.9", "--methods", "grid",
+        "--grid-sizes", "10", "--out", str(tmp_path / "c"), "--json",
+    )  # fmt: skip
+    assert conv.exit_code == 0, conv.stderr
+    assert json.loads(conv.stdout)["exact"] == pytest.approx(0.497470690, abs=1e-8)
 
 
 def test_launch_speed_and_normal():

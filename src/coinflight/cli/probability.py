@@ -39,9 +39,13 @@ METHOD_PANEL = "Method"
 _DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
 
 
-def _dist_option(flag: str, what: str, unit: str) -> object:
+def _dist_option(flag: str, what: str, unit: str, *aliases: str) -> object:
     return typer.Option(
-        flag, metavar="DIST", rich_help_panel=TOSS_PANEL, help=f"{what}, {unit}: {_DIST_HELP}."
+        flag,
+        *aliases,
+        metavar="DIST",
+        rich_help_panel=TOSS_PANEL,
+        help=f"{what}, {unit}: {_DIST_HELP}.",
     )
 
 
@@ -49,7 +53,7 @@ OmegaX = Annotated[str, _dist_option("--omega-x", "Spin about the x diameter", "
 OmegaY = Annotated[str, _dist_option("--omega-y", "Spin about the y diameter", "rad/s")]
 OmegaZ = Annotated[str, _dist_option("--omega-z", "Spin about the normal", "rad/s")]
 FlightTimeDist = Annotated[
-    str | None, _dist_option("--flight-time", "Flight time T (catch at launch height)", "s")
+    str | None, _dist_option("--flight-time", "Flight time T (catch at launch height)", "s", "-T")
 ]
 LaunchSpeedDist = Annotated[
     str | None, _dist_option("--launch-speed", "Upward launch speed v0 (T = 2 v0 / g)", "m/s")

@@ -74,7 +74,7 @@ class ProbabilityResult:
         """The probability with its uncertainty, readable at a glance."""
         p = self.p_heads
         if self.stderr is not None and self.ci95 is not None:
-            unc = f" ± {self.stderr:.2g} (95 % CI {self.ci95[0]:.4f} – {self.ci95[1]:.4f})"
+            unc = f" ± {self.stderr:.2g} s.e. (95 % CI {self.ci95[0]:.4f} – {self.ci95[1]:.4f})"
         elif self.error_estimate is not None and self.error_estimate > 0:
             unc = f" ± {self.error_estimate:.1g} (quadrature error bound)"
         elif self.method == "exact":
