@@ -183,6 +183,28 @@ def test_basin_after_k_bounces(tmp_path):
     assert "P(edge) on the grid" in result.stdout
 
 
+def test_table_basin_title_names_coin_start_grid_and_table():
+    from coinflight.cli.surface import table_title
+    from coinflight.landing import table_faces
+    from coinflight.plotting.basin import basin_map, plot_basin
+
+    surface = Surface("table", drop_height=0.3, restitution=0.4, friction=0.2)
+    basin = basin_map(
+        Coin.preset("us-nickel"),
+        (0.3, 0.4),
+        (20.0, 40.0),
+        resolution=(12, 10),
+        start="tails",
+        outcome=table_faces(surface, 1),
+    )
+    fig = plot_basin(basin, ending=table_title(0.3, 0.4, 0.2, 1), boundaries=False)
+    title = fig._suptitle.get_text()
+    assert title.startswith("Which face a US nickel shows, tossed tails up and dropped on a table")
+    assert "0.3 m below launch" in title and "e = 0.4" in title and "μ = 0.2" in title
+    assert "after 1 bounce" in title and "ωy0 = 0 rad/s" in title
+    assert f"12×10 grid: P(heads) = {basin.heads_fraction:.4f}" in title
+
+
 def test_basin_bounces_need_a_table(tmp_path):
     result = _run("plot", "basin", "--bounces", "1", "--out", str(tmp_path / "b.png"))
     assert result.exit_code == 2

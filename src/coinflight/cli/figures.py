@@ -308,8 +308,8 @@ def plot_basin(
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
     if surface == "table":
         typer.echo(f"P(edge) on the grid = {basin.fraction(2):.6f}")
-        title = table_title(drop_height, restitution, friction, bounces)
-        figure = draw(basin, title=title, boundaries=False)
+        ending = table_title(drop_height, restitution, friction, bounces)
+        figure = draw(basin, ending=ending, boundaries=False)
     else:
         figure = draw(basin, boundaries=boundaries)
     _written(save_figure(figure, out, dpi=dpi))

@@ -306,10 +306,10 @@ def table_title(
     friction: float | None,
     bounces: int | None,
 ) -> str:
-    """Figure title for a map of landings on a table."""
+    """How a toss onto a table ends, for a map's title ("tossed heads up and …")."""
     s = build_surface("table", drop_height, restitution, friction)
     when = "at rest" if bounces is None else f"after {bounces} bounce{'s' * (bounces != 1)}"
     return (
-        f"On a table {s.drop_height:g} m below launch (e = {s.restitution:g}, "
-        f"μ = {s.friction:g}): the face {when}"
+        f"dropped on a table {s.drop_height:g} m below launch\n(restitution e = "
+        f"{s.restitution:g}, friction μ = {s.friction:g}), the face {when}"
     )

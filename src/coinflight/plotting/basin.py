@@ -256,8 +256,26 @@ def basin_map(
     )
 
 
-def plot_basin(basin: BasinMap, *, title: str | None = None, boundaries: bool = True) -> Figure:
+def plot_basin(
+    basin: BasinMap,
+    *,
+    title: str | None = None,
+    boundaries: bool = True,
+    ending: str = "caught",
+) -> Figure:
     """Draw a :class:`BasinMap`: heads and tails cells, analytic boundaries, launch speed on top.
+
+    Parameters
+    ----------
+    basin : BasinMap
+        The map.
+    title : str, optional
+        Replaces the default title, which names the coin, start face, fixed spins, grid and
+        face fractions.
+    boundaries : bool
+        Draw the analytic heads/tails boundaries (they belong to the hand catch).
+    ending : str
+        How the toss ends, for the default title ("caught", or a table landing).
 
     Returns
     -------
@@ -327,10 +345,11 @@ def plot_basin(basin: BasinMap, *, title: str | None = None, boundaries: bool = 
         assert basin.psi is not None
         spin = f"cone angle ψ = {math.degrees(basin.psi):g}°"
     n_w, n_t = basin.face.shape
+    edge = f", P(edge) = {basin.fraction(EDGE):.4f}" if basin.fraction(EDGE) > 0 else ""
     fig.suptitle(
         title
-        or f"Which face a {basin.coin.name} shows, tossed {basin.start} up and caught\n"
-        f"{spin}; {n_t}×{n_w} grid: P(heads) = {basin.heads_fraction:.4f}",
+        or f"Which face a {basin.coin.name} shows, tossed {basin.start} up and {ending}\n"
+        f"{spin}; {n_t}×{n_w} grid: P(heads) = {basin.heads_fraction:.4f}{edge}",
         fontsize=11,
     )
     return fig
