@@ -53,7 +53,9 @@ def sin(x: float) -> float:
     """sin x, branch-free so that LLVM vectorises loops that call it.
 
     Reduction x = kπ + r, |r| ≤ π/2 (Cody & Waite 1980) and a degree-21 Taylor polynomial;
-    absolute error ≤ 2.3e-16 for |x| < 3e6 (checked against ``numpy.sin`` in the tests).
+    absolute error ≤ 3.4e-16 for |x| ≤ 1e7 (measured maximum 3.3e-16 against ``numpy.sin``;
+    checked in the tests). Beyond, k·π_A is no longer exact and the error grows (2e-9 at
+    1e8, 6e-8 at 1e9), staying below the spacing of doubles at x (1.5e-8, 1.2e-7).
     """
     k = np.floor(x * _INV_PI + 0.5)
     r = ((x - k * _PI_A) - k * _PI_B) - k * _PI_C
