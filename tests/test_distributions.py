@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -60,6 +61,19 @@ def test_constructor_errors():
         Normal(1.0, 0.0)
     with pytest.raises(TypeError):
         as_distribution("60:90")  # type: ignore[arg-type]
+    # A bare distribution names its kind and field; attached to a parameter, the parameter.
+    with pytest.raises(ValueError, match="Uniform high must be finite, got inf"):
+        Uniform(60.0, math.inf)
+    with pytest.raises(ValueError, match="Normal mean must be finite, got nan"):
+        Normal(math.nan, 1.0)
+    with pytest.raises(ValueError, match="omega_x must be finite, got nan"):
+        TossDistribution(math.nan, 0, 0, 0.7)
+    with pytest.raises(ValueError, match="flight_time must be finite, got inf"):
+        TossDistribution(60.0, 0, 0, math.inf)
+    with pytest.raises(ValueError, match="launch_speed must be finite"):
+        TossDistribution.from_launch_speed(60.0, 0, 0, math.nan)
+    with pytest.raises(TypeError, match="omega_z: expected a number"):
+        TossDistribution(60.0, 0, "1", 0.7)  # type: ignore[arg-type]
 
 
 @settings(deadline=None)  # the first call imports SciPy

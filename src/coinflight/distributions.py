@@ -91,7 +91,7 @@ class Fixed(Distribution):
     value: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "value", float(v.finite("value", self.value)))
+        object.__setattr__(self, "value", float(v.finite("Fixed value", self.value)))
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return np.full(size, self.value)
@@ -133,8 +133,8 @@ class Uniform(Distribution):
     high: float
 
     def __post_init__(self) -> None:
-        lo = float(v.finite("low", self.low))
-        hi = float(v.finite("high", self.high))
+        lo = float(v.finite("Uniform low", self.low))
+        hi = float(v.finite("Uniform high", self.high))
         if not lo < hi:
             what = "empty" if lo == hi else "reversed"
             raise ValueError(f"range {lo:g}:{hi:g} is {what}: the low end must be below the high")
@@ -177,8 +177,8 @@ class Normal(Distribution):
     sd: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mean", float(v.finite("mean", self.mean)))
-        object.__setattr__(self, "sd", float(v.positive("standard deviation", self.sd)))
+        object.__setattr__(self, "mean", float(v.finite("Normal mean", self.mean)))
+        object.__setattr__(self, "sd", float(v.positive("Normal standard deviation", self.sd)))
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return rng.normal(self.mean, self.sd, size)
@@ -204,15 +204,18 @@ def _space(unit: str) -> str:
     return f" {unit}" if unit else ""
 
 
-def as_distribution(value: Distribution | float | int) -> Distribution:
-    """A distribution as is; a plain number as :class:`Fixed`."""
+def as_distribution(value: Distribution | float | int, name: str = "value") -> Distribution:
+    """A distribution as is; a plain number as :class:`Fixed`.
+
+    ``name`` (e.g. ``"omega_x"``) is the parameter the value is for; errors name it.
+    """
     if isinstance(value, Distribution):
         return value
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise TypeError(
-            f"expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
+            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
         )
-    return Fixed(float(value))
+    return Fixed(float(v.finite(name, value)))
 
 
 def parse_distribution(text: str, name: str, unit: str = "") -> Distribution:

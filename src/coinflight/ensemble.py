@@ -64,7 +64,7 @@ class TossDistribution:
 
     def __post_init__(self) -> None:
         for name in PARAMETERS:
-            object.__setattr__(self, name, as_distribution(getattr(self, name)))
+            object.__setattr__(self, name, as_distribution(getattr(self, name), name))
         v.choice("start", self.start, ("heads", "tails"))
         g = v.positive("g", self.g, "m/s²")
         if g.ndim:
@@ -97,7 +97,7 @@ class TossDistribution:
     ) -> TossDistribution:
         """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11)."""
         gg = float(v.positive("g", g, "m/s²"))
-        speed = check_launch_speed(as_distribution(launch_speed))
+        speed = check_launch_speed(as_distribution(launch_speed, "launch_speed"))
         return cls(
             omega_x,  # type: ignore[arg-type]
             omega_y,  # type: ignore[arg-type]
