@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from _images import assert_nontrivial, colour_fraction
 from coinflight.edge import edge_probability, ratio_for
 
 
@@ -56,3 +57,67 @@ def test_geometric_is_solid_angle_fraction():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_figure_curves_cross_one_third_at_the_marked_ratios(tmp_path):
+    from coinflight.plotting.edge import edge_figure
+    from coinflight.plotting.style import EDGE_COLOR, save_figure
+
+    fig = edge_figure()
+    ax = fig.axes[0]
+    curves = [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 2]
+    marks = sorted(
+        float(ln.get_xdata()[0])
+        for ln in ax.get_lines()
+        if len(ln.get_xdata()) == 2 and ln.get_xdata()[0] == ln.get_xdata()[1]
+    )
+    assert len(curves) == 2
+    # Yong & Mahadevan 2011: P(edge) = 1/3 at h/d = 1/(2√2) (geometric) and 1/√3 (dynamic).
+    assert marks == pytest.approx([1 / (2 * math.sqrt(2)), 1 / math.sqrt(3)], rel=1e-12)
+    crossings = sorted(float(np.interp(1 / 3, ln.get_ydata(), ln.get_xdata())) for ln in curves)
+    assert crossings == pytest.approx(marks, abs=1e-4)  # the curves' own grid: 1/800 apart
+    (path,) = save_figure(fig, tmp_path / "edge.png")
+    rgb = assert_nontrivial(path)
+    assert colour_fraction(rgb, EDGE_COLOR, 10) > 0.001  # the marks are drawn
+
+
+def test_cli_plot_edge_with_simulated_points(tmp_path):
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+    from coinflight.edge import simulate_edge
+
+    out = tmp_path / "edge.svg"
+    args = ["plot", "edge", "--out", str(out), "--simulate", "2000", "--seed", "4"]
+    result = CliRunner().invoke(app, [*args, "--ratios", "0.5774"])
+    assert result.exit_code == 0, result.output
+    assert out.is_file() and out.stat().st_size > 10_000
+    assert "P(edge) = 1/3 at h/d = 0.3536 (geometric model)" in result.stdout
+    assert "P(edge) = 1/3 at h/d = 0.5774 (dynamic model)" in result.stdout
+    (point,) = simulate_edge([0.5774], 2000, 4)
+    assert f"h/d = 0.5774: P(edge) = {point.p_edge:.4f}" in result.stdout
+    assert "seed 4" in result.stdout
+    # Vigorous planar tosses landing dead follow the dynamic model: 1/3 at h/d = 1/√3.
+    assert abs(point.p_edge - 1 / 3) < 4 * point.stderr
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--seed", "3"], "--seed needs --simulate N (it sets the simulation)"),
+        (["--ratios", "0.3"], "--ratios needs --simulate N (it sets the simulation)"),
+        (["--simulate", "5", "--ratios", "0.3,x"], "--ratios must be comma-separated numbers"),
+        (["--simulate", "5", "--ratios", "0.3,-1"], "ratio must be positive and finite, got -1.0"),
+        (["--max-ratio", "0.5"], "max ratio must be a number above 1/√3"),
+    ],
+)
+def test_cli_plot_edge_bad_input(tmp_path, extra, message):
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    out = tmp_path / "edge.png"
+    result = CliRunner().invoke(app, ["plot", "edge", "--out", str(out), *extra])
+    assert result.exit_code == 2
+    assert message in result.stderr
+    assert not out.exists()

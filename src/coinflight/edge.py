@@ -8,12 +8,14 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.landing`.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
+from coinflight.core.outcome import EDGE
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
@@ -76,4 +78,84 @@ def ratio_for(probability: float = 1.0 / 3.0, model: EdgeModel = "dynamic") -> f
     return float(brentq(excess, 0.0, high, xtol=1e-15, rtol=4 * np.finfo(float).eps))
 
 
-__all__ = ["MODELS", "edge_probability", "ratio_for"]
+SIM_DIAMETER = 0.024
+"""Diameter of the simulated coins, m (a thickness h = ratio × d is made for each ratio)."""
+SIM_SPIN = (150.0, 300.0)
+"""Spin about a diameter of the simulated tosses, rad/s, uniform: vigorous and planar."""
+SIM_LAUNCH_SPEED = (1.5, 3.0)
+"""Upward launch speed of the simulated tosses, m/s, uniform."""
+SIM_DROP = 0.5
+"""The table lies this far below the launch point, m; the coin lands dead on it (e = 0)."""
+
+
+@dataclass(frozen=True)
+class EdgeSimulation:
+    """Simulated landings of coins of one thickness / diameter ratio.
+
+    Attributes
+    ----------
+    ratio : float
+        h/d of the coin.
+    edges, n : int
+        Tosses that ended on edge, of ``n``.
+    """
+
+    ratio: float
+    edges: int
+    n: int
+
+    @property
+    def p_edge(self) -> float:
+        """Fraction of tosses on edge."""
+        return self.edges / self.n
+
+    @property
+    def stderr(self) -> float:
+        """Binomial standard error of :attr:`p_edge`."""
+        p = self.p_edge
+        return float(np.sqrt(p * (1.0 - p) / self.n))
+
+
+def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> list[EdgeSimulation]:
+    """P(edge) from the full flight and landing (:func:`coinflight.landing.land`), per ratio.
+
+    Each ratio gets ``n`` tosses of a coin of diameter :data:`SIM_DIAMETER` and thickness
+    ratio × d (uniform density), spinning about a diameter at ωx ~ U(:data:`SIM_SPIN`) rad/s,
+    launched at v0 ~ U(:data:`SIM_LAUNCH_SPEED`) m/s and landing dead (restitution 0) on a
+    table :data:`SIM_DROP` m below: the setting of Yong & Mahadevan's dynamic model, which the
+    points should follow. The random numbers of each ratio come from its own stream spawned
+    from ``seed`` (``np.random.SeedSequence``), so the points are independent and reproducible.
+    """
+    from coinflight.coin import Coin
+    from coinflight.landing import land
+    from coinflight.surface import Surface
+
+    x = np.atleast_1d(v.positive("thickness/diameter ratio", ratios))
+    if x.ndim != 1:
+        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"number of tosses must be a whole number ≥ 1, got {n!r}")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be a whole number ≥ 0, got {seed!r}")
+    surface = Surface("table", drop_height=SIM_DROP, restitution=0.0)
+    r = 0.5 * SIM_DIAMETER
+    out = []
+    for ratio, child in zip(x, np.random.SeedSequence(int(seed)).spawn(len(x)), strict=True):
+        h = float(ratio) * SIM_DIAMETER
+        coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # steel
+        rng = np.random.default_rng(child)
+        omega = np.zeros((n, 3))
+        omega[:, 0] = rng.uniform(*SIM_SPIN, n)
+        speed = rng.uniform(*SIM_LAUNCH_SPEED, n)
+        face = land(coin, omega, speed, 1.0, g, surface).face
+        out.append(EdgeSimulation(float(ratio), int(np.sum(face == EDGE)), int(n)))
+    return out
+
+
+__all__ = [
+    "MODELS",
+    "EdgeSimulation",
+    "edge_probability",
+    "ratio_for",
+    "simulate_edge",
+]

@@ -69,13 +69,18 @@ Seed = Annotated[
 ]
 
 
-def simulation_seed(monte_carlo: int | None, seed: int | None, *others: tuple[str, object]) -> int:
+def simulation_seed(
+    monte_carlo: int | None,
+    seed: int | None,
+    *others: tuple[str, object],
+    run_flag: str = "--monte-carlo",
+) -> int:
     """The seed to use (default 0); ValueError if --seed or another simulation option is given
-    without --monte-carlo, which alone would run the simulation they set."""
+    without ``run_flag`` (--monte-carlo), which alone runs the simulation they set."""
     if monte_carlo is None:
         for flag, value in (("--seed", seed), *others):
             if value is not None:
-                raise ValueError(f"{flag} needs --monte-carlo N (it sets the simulation)")
+                raise ValueError(f"{flag} needs {run_flag} N (it sets the simulation)")
     return 0 if seed is None else seed
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import typer
 
 from coinflight.cli import bias as _bias
+from coinflight.cli import edge as _edge
 from coinflight.cli import figures as _figures
 
 plot_app = typer.Typer(
@@ -23,3 +24,4 @@ def _plot(ctx: typer.Context) -> None:
 plot_app.command("toss")(_figures.plot_toss)
 plot_app.command("basin")(_figures.plot_basin)
 plot_app.command("bias")(_bias.plot_bias)
+plot_app.command("edge")(_edge.plot_edge)

@@ -1,0 +1,94 @@
+"""``coinflight plot edge``: P(edge) of a thick coin against thickness / diameter."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.bias import simulation_seed
+from coinflight.cli.figures import Dpi, OutFile, parse_numbers
+from coinflight.cli.options import number
+
+SIM_PANEL = "Simulation"
+RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
+
+Simulate = Annotated[
+    int | None,
+    typer.Option(
+        "--simulate",
+        min=1,
+        max=10**7,
+        metavar="N",
+        rich_help_panel=SIM_PANEL,
+        help="Also land N simulated tosses per ratio (vigorous planar spins, landing dead on a "
+        "table; coinflight.edge.simulate_edge) and plot their edge fraction.",
+    ),
+]
+Seed = Annotated[
+    int | None,
+    typer.Option(
+        "--seed",
+        min=0,
+        metavar="S",
+        rich_help_panel=SIM_PANEL,
+        help="Seed of the --simulate tosses \\[default: 0].",
+    ),
+]
+Ratios = Annotated[
+    str | None,
+    typer.Option(
+        "--ratios",
+        metavar="R,R,...",
+        rich_help_panel=SIM_PANEL,
+        help=f"Ratios h/d to simulate with --simulate \\[default: {RATIOS}].",
+    ),
+]
+MaxRatio = Annotated[
+    float,
+    typer.Option(
+        "--max-ratio",
+        parser=number,
+        metavar="X",
+        help="Right end of the h/d axis (above 1/√3 ≈ 0.577).",
+    ),
+]
+
+
+def plot_edge(
+    out: OutFile,
+    simulate: Simulate = None,
+    seed: Seed = None,
+    ratios: Ratios = None,
+    max_ratio: MaxRatio = 1.0,
+    dpi: Dpi = 150,
+) -> None:
+    """Plot P(edge) against h/d (Yong & Mahadevan 2011), the ratios for P(edge) = 1/3 marked.
+
+    Example: coinflight plot edge --out edge.png --simulate 4000 --seed 1
+    """
+    from coinflight.edge import MODELS, ratio_for, simulate_edge
+    from coinflight.plotting.edge import edge_figure
+    from coinflight.plotting.style import figure_paths, save_figure
+
+    figure_paths(out, "--out")  # before the simulation, not after
+    the_seed = simulation_seed(simulate, seed, ("--ratios", ratios), run_flag="--simulate")
+    simulated = []
+    if simulate is not None:
+        points = parse_numbers(ratios or RATIOS, "--ratios", "0.2,0.5,1")
+        simulated = simulate_edge(points, simulate, the_seed)
+    figure = edge_figure(simulated, max_ratio)
+    for path in save_figure(figure, out, dpi=dpi):
+        typer.echo(f"wrote {path}")
+    for model in MODELS:
+        typer.echo(f"P(edge) = 1/3 at h/d = {ratio_for(1 / 3, model):.4f} ({model} model)")
+    if simulated:
+        typer.echo(f"simulated, {simulate:,} tosses per ratio, seed {the_seed}:")
+        for s in simulated:
+            typer.echo(
+                f"  h/d = {s.ratio:g}: P(edge) = {s.p_edge:.4f} ± {s.stderr:.4f} (s.e.), "
+                f"{s.edges:,} of {s.n:,}"
+            )
+
+
+__all__ = ["plot_edge"]

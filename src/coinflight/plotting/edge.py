@@ -1,0 +1,98 @@
+"""Figure of the probability that a thick coin lands on edge, against thickness / diameter."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from coinflight.edge import MODELS, EdgeSimulation, edge_probability, ratio_for
+from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, METHOD_COLORS, new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+MODEL_STYLES = {"geometric": "-", "dynamic": "--"}
+MODEL_LABELS = {
+    "geometric": "geometric: random orientation at rest, (h/d)/√(1 + (h/d)²)",
+    "dynamic": "dynamic: planar spin landing dead, 2 arctan(h/d)/π",
+}
+EXACT_RATIOS = {
+    "geometric": ("1/(2√2)", 1.0 / (2.0 * math.sqrt(2.0))),
+    "dynamic": ("1/√3", 1.0 / math.sqrt(3.0)),
+}
+"""Yong & Mahadevan's printed ratios for P(edge) = 1/3 (REFERENCES §5), for the labels."""
+
+
+def edge_figure(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) -> Figure:
+    """P(edge) against h/d for Yong & Mahadevan's two models, the ratios for 1/3 marked.
+
+    Parameters
+    ----------
+    simulated : sequence of EdgeSimulation
+        Simulated landings (:func:`coinflight.edge.simulate_edge`), drawn as points with
+        ±2 standard-error bars.
+    max_ratio : float
+        Right end of the h/d axis (> 1/√3, so both marks show).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Curves of :func:`coinflight.edge.edge_probability` (Yong & Mahadevan 2011, §II and §III),
+        the line P(edge) = 1/3, and a vertical mark at each model's ratio for it
+        (:func:`coinflight.edge.ratio_for`: 1/(2√2) ≈ 0.354 and 1/√3 ≈ 0.577).
+    """
+    if not (math.isfinite(max_ratio) and max_ratio > EXACT_RATIOS["dynamic"][1]):
+        raise ValueError(f"max ratio must be a number above 1/√3 ≈ 0.577, got {max_ratio!r}")
+    fig = new_figure()
+    ax = fig.add_subplot()
+    x = np.linspace(0.0, max_ratio, 801)
+    for model in MODELS:
+        ax.plot(
+            x,
+            edge_probability(x, model),
+            color=EXACT_COLOR,
+            linestyle=MODEL_STYLES[model],
+            label=MODEL_LABELS[model],
+        )
+    ax.axhline(1.0 / 3.0, color="0.6", linewidth=0.8)
+    for model in MODELS:
+        at = ratio_for(1.0 / 3.0, model)
+        name, _ = EXACT_RATIOS[model]
+        ax.axvline(at, color=EDGE_COLOR, linestyle=MODEL_STYLES[model], linewidth=1)
+        # Along the mark, above both curves, so that it hides no data.
+        ax.text(
+            at,
+            0.42 if model == "geometric" else 0.52,
+            f" h/d = {name} ≈ {at:.3f}",
+            rotation=90,
+            ha="right",
+            va="bottom",
+            color=EDGE_COLOR,
+            fontsize="small",
+        )
+    if simulated:
+        ax.errorbar(
+            [s.ratio for s in simulated],
+            [s.p_edge for s in simulated],
+            yerr=[2.0 * s.stderr for s in simulated],
+            fmt="o",
+            color=METHOD_COLORS["monte-carlo"],
+            markersize=4,
+            label=f"simulated landings, dead on a table ({simulated[0].n:,} tosses each, ±2 s.e.)",
+        )
+    ax.set_xlim(0.0, 1.03 * max_ratio)  # room for a point at max_ratio
+    ax.set_ylim(0.0, float(edge_probability(max_ratio, "geometric")) * 1.05)
+    ax.set_xlabel("thickness / diameter h/d")
+    ax.set_ylabel("P(edge)")
+    ax.set_title(
+        "A thick coin lands on edge (Yong & Mahadevan 2011): P(edge) = 1/3 at the marks",
+        fontsize="medium",
+    )
+    ax.legend(loc="lower right", fontsize="x-small")
+    return fig
+
+
+__all__ = ["edge_figure"]
