@@ -146,6 +146,10 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
+        # With drag (~20 tosses/s) the default sizes would run for hours: --n must be given.
+        ([*FIG2A, "--drag", "1.17", "-m", "monte-carlo"], "give --n explicitly, e.g. --n 1000"),
+        ([*FIG2A, "--drag", "1.17", "-m", "grid"], "--n 34 (34^2 = 1,156 tosses"),
+        ([*FIG2A, "--drag", "1.17", "-m", "qmc"], "about 20 tosses per second"),
         (
             ["--omega-x", "60:90", "--launch-speed", "normal:0.1,1"],
             "--launch-speed normal(0.1, sd 1) m/s reaches speeds ≤ 0 m/s",

@@ -36,6 +36,9 @@ if TYPE_CHECKING:
     from coinflight.ensemble import TossDistribution
 
 METHOD_PANEL = "Method"
+DRAG_TOSSES_PER_SECOND = 20
+"""Tosses a second with --drag (one SciPy integration each), measured on the 2-core reference
+machine: 100 tosses in 5.3 s on one thread."""
 _DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
 
 
@@ -206,6 +209,8 @@ def probability(
     if threads is not None and method == "exact":
         raise ValueError("--threads does not apply to the exact method")
     landing = outcome_model(surface, drop_height, restitution, friction, drag, spin_damping)
+    if landing is not None and landing.drag is not None and method != "exact" and n is None:
+        raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
     if landing is not None:
         options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
@@ -234,6 +239,24 @@ def probability(
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
     typer.echo(_method_line(result))
+
+
+_DRAG_NEEDS_N = (
+    f"with --drag each toss is a numerical integration (about {DRAG_TOSSES_PER_SECOND} tosses "
+    "per second per thread), so the default size of --method {method} would run for hours or "
+    "days; give --n explicitly, e.g. {example}"
+)
+
+
+def _drag_example(method: str, dist: TossDistribution) -> str:
+    """An --n that takes about a minute with drag, and what it means."""
+    k = len(dist.ranged)
+    if method == "grid":
+        cells = max(1, int((60 * DRAG_TOSSES_PER_SECOND) ** (1 / max(k, 1))))
+        return f"--n {cells} ({cells}^{k} = {cells**k:,} tosses, about a minute)"
+    if method == "qmc":
+        return "--n 1024 (about a minute)"
+    return "--n 1000 (about a minute; standard error about 0.016)"
 
 
 def _gravity_line(g: float, launch_speed: str | None) -> str:
