@@ -278,3 +278,17 @@ def test_progress_bar_only_on_a_terminal(monkeypatch):
         bar(4)
         bar(6)
         assert bar.done == 10
+
+
+def test_unsettled_tosses_are_a_warning():
+    from coinflight.cli.probability import _warnings
+    from coinflight.probability import ProbabilityResult
+
+    counts = (40, 60, 0)
+    details = {"unsettled": 25, "unsettled_fraction": 0.25}
+    result = ProbabilityResult(0.6, 0.4, 0.0, 0.6, "monte-carlo", counts=counts, details=details)
+    (line,) = _warnings(result)
+    assert line.startswith("25 of 100 tosses (25 %) never settled")
+    assert _warnings(estimate(TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9)))) == []
+    payload = json.loads(run("probability", *FIG2A, "--json").stdout)
+    assert payload["warnings"] == []

@@ -469,3 +469,28 @@ def test_band_counting_wobbling_and_45_degree_spins():
         full = np.full_like(t_nodes, 1.0)
         slow = sampling.count_same_side(wx[j] * full, 0 * full, wz[j] * full, t_nodes, 1.0, 2.0)
         assert fast == slow, j
+
+
+class _Unsettling(Generic):
+    """The hand catch, plus a tally: tosses with T > 0.8 s flagged as never settled."""
+
+    tallies = ("unsettled",)
+
+    def count(self, dist, u):
+        _, _, _, t = dist.values(u)
+        return np.append(super().count(dist, u), np.count_nonzero(t > 0.8))
+
+
+def test_model_tallies_are_reported():
+    # A landing model's extra counts (unsettled tosses) reach the result's details.
+    dist = PAPER["fig2a"]
+    grid = estimate(dist, "grid", n=100, model=_Unsettling())
+    # Grid midpoints 0.6 + 0.3 (i + ½)/100 > 0.8 for i ≥ 67: 33 of 100 time nodes.
+    assert grid.details["unsettled"] == 33 * 100
+    assert grid.details["unsettled_fraction"] == pytest.approx(0.33, abs=1e-15)
+    assert grid.p_heads == estimate(dist, "grid", n=100).p_heads
+    for method, n in (("monte-carlo", 20_000), ("qmc", 16 << 10)):
+        r = estimate(dist, method, n=n, seed=3, model=_Unsettling())
+        # T uniform on 0.6-0.9 s: P(T > 0.8) = 1/3; within 5 binomial standard errors.
+        assert abs(r.details["unsettled_fraction"] - 1 / 3) < 5 * math.sqrt(2 / 9 / n), method
+    assert "unsettled" not in estimate(dist, "monte-carlo", n=1000, seed=3).details

@@ -227,6 +227,7 @@ def probability(
         payload["inputs"] = _inputs(ctx)
         if landing is not None:
             payload.update(surface_payload(landing.surface, landing.drag))
+        payload["warnings"] = _warnings(result)
         print_json(payload)
         return
     typer.echo(dist.describe())
@@ -238,6 +239,8 @@ def probability(
     if landing is not None and landing.surface.bounces:
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
+    for warning in _warnings(result):
+        typer.echo(f"warning: {warning}")
     typer.echo(_method_line(result))
 
 
@@ -257,6 +260,19 @@ def _drag_example(method: str, dist: TossDistribution) -> str:
     if method == "qmc":
         return "--n 1024 (about a minute)"
     return "--n 1000 (about a minute; standard error about 0.016)"
+
+
+def _warnings(result: Any) -> list[str]:
+    """What the user must know about the result: tosses that never settled (table landing)."""
+    unsettled = int(result.details.get("unsettled", 0))
+    if not unsettled:
+        return []
+    n = sum(result.counts) if result.counts is not None else result.samples
+    return [
+        f"{unsettled:,} of {n:,} tosses ({100 * result.details['unsettled_fraction']:.3g} %) "
+        "never settled (status 'unsettled'); they are counted by the face they showed when the "
+        "simulation stopped"
+    ]
 
 
 def _gravity_line(g: float, launch_speed: str | None) -> str:

@@ -26,7 +26,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
-from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
+from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 MAX_WORK = 8 * 10**8
@@ -170,6 +170,7 @@ def estimate(
             same = sum(run_tasks(ex, _band_task, tasks, sizes, progress))
         heads = same if dist.start_sign > 0 else total - same
         counts = (total - heads, heads, 0)
+        tallies = {}
         how = "band counting along the flight time"
     else:
         if total > MAX_WORK:
@@ -185,6 +186,7 @@ def estimate(
             parts = run_tasks(ex, _brute_task, tasks2, sizes, progress)
         c = np.sum(parts, axis=0)
         counts = (int(c[0]), int(c[1]), int(c[2]))
+        tallies = tally_details(model, c)
         how = "every configuration evaluated"
     return from_counts(
         counts,
@@ -193,7 +195,7 @@ def estimate(
         n=n,
         samples=total,
         elapsed=time.perf_counter() - t0,
-        details={"cells_per_parameter": n, "ranged": list(ranged), "how": how},
+        details={"cells_per_parameter": n, "ranged": list(ranged), "how": how, **tallies},
     )
 
 

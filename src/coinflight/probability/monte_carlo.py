@@ -27,7 +27,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
-from coinflight.probability.outcome import HAND_CATCH, OutcomeModel
+from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts, wilson_interval
 
 BLOCK = 1 << 20
@@ -95,7 +95,7 @@ def draw_block(
 def _task(args: tuple[Any, ...]) -> np.ndarray:
     model, dist, entropy, spawn_key, pool_size, first, last, n, cells = args
     root = np.random.SeedSequence(entropy, spawn_key=spawn_key, pool_size=pool_size)
-    counts = np.zeros(3, dtype=np.int64)
+    counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     k = len(dist.ranged)
     for b in range(first, last):
         size = min(BLOCK, n - b * BLOCK)
@@ -165,6 +165,7 @@ def estimate(
     p = heads / n
     method_name = "monte-carlo"
     details: dict[str, Any] = {"grid_cells": grid_cells, "block": BLOCK, "rng": "SFC64"}
+    details.update(tally_details(model, counts))
     return from_counts(
         (int(counts[0]), heads, int(counts[2])),
         dist.start_sign,

@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 from coinflight.ensemble import PARAMETERS, TossDistribution
 
 Counts = NDArray[np.int64]
-"""(tails, heads, edge) counts, shape (3,)."""
+"""(tails, heads, edge) counts, shape (3,), followed by the model's extra tallies if any."""
 
 
 def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
@@ -27,9 +27,15 @@ class OutcomeModel:
     """Counts faces for batches of tosses. Subclasses override :meth:`count`."""
 
     name = "outcome model"
+    tallies: tuple[str, ...] = ()
+    """Names of extra counts :meth:`count` returns after (tails, heads, edge), e.g.
+    ``("unsettled",)`` for tosses a landing model could not settle (their faces are still
+    counted). The estimators add them up and report them in ``details`` (count and fraction)."""
 
     def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
         """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n).
+
+        Returns (tails, heads, edge, *tallies), shape (3 + len(:attr:`tallies`),).
 
         Row r of ``u`` drives parameter ``dist.ranged[r]`` through its distribution's ``ppf``
         (:meth:`~coinflight.ensemble.TossDistribution.values`).
@@ -60,6 +66,16 @@ class HandCatch(OutcomeModel):
             wx, wy, wz, t = dist.values(u)
             same = sampling.count_same_side(wx, wy, wz, t, i1, i3)
         return faces_from_same_side(int(same), n, dist.start_sign)
+
+
+def tally_details(model: OutcomeModel, counts: NDArray[np.int64]) -> dict[str, float]:
+    """``{name: count, name_fraction: count / tosses}`` for the model's extra tallies."""
+    n = int(np.sum(counts[:3]))
+    out: dict[str, float] = {}
+    for name, c in zip(model.tallies, counts[3:], strict=True):
+        out[name] = int(c)
+        out[f"{name}_fraction"] = int(c) / n if n else 0.0
+    return out
 
 
 def _affine_maps(

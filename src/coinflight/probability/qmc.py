@@ -22,7 +22,7 @@ from coinflight.probability._runner import (
     run_tasks,
 )
 from coinflight.probability.monte_carlo import reported_seed, seed_sequence
-from coinflight.probability.outcome import HAND_CATCH, OutcomeModel
+from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 DEFAULT_REPLICATES = 16
@@ -34,7 +34,7 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
 
     model, dist, child, points = args
     k = len(dist.ranged)
-    counts = np.zeros(3, dtype=np.int64)
+    counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     if k == 0:
         return model.count(dist, np.zeros((0, points)))
     sobol = qmc.Sobol(d=k, scramble=True, seed=np.random.Generator(np.random.PCG64(child)))
@@ -96,5 +96,9 @@ def estimate(
         ci95=(max(0.0, p - half), min(1.0, p + half)),
         seed=reported_seed(root),
         elapsed=time.perf_counter() - t0,
-        details={"replicates": replicates, "points_per_replicate": points},
+        details={
+            "replicates": replicates,
+            "points_per_replicate": points,
+            **tally_details(model, counts),
+        },
     )
