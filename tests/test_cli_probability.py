@@ -292,3 +292,13 @@ def test_unsettled_tosses_are_a_warning():
     assert _warnings(estimate(TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9)))) == []
     payload = json.loads(run("probability", *FIG2A, "--json").stdout)
     assert payload["warnings"] == []
+
+
+def test_convergence_refuses_an_over_large_grid_before_starting():
+    from coinflight.probability.convergence import convergence
+
+    three = TossDistribution(Uniform(60, 90), Uniform(0, 20), Uniform(0, 5), 0.7)
+    done: list[int] = []
+    with pytest.raises(ValueError, match=r"1000\^3 = 1e\+09 configurations"):
+        convergence(three, ["grid"], grid_sizes=[5, 10, 1000], progress=done.append)
+    assert done == []  # nothing computed before the refusal

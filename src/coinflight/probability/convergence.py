@@ -173,6 +173,11 @@ def convergence(
             raise ValueError(f"no sizes given for {m}")
         for s in sizes[m]:
             check_count(f"{m} size", s)
+    if "grid" in methods:  # refuse an over-large grid before computing anything
+        from coinflight.probability.grid import check_work
+
+        for s in sizes["grid"]:
+            check_work(dist, s)
     try:
         ex = estimate(dist, "exact")
         exact, how = ex.p_heads, str(ex.details["how"])

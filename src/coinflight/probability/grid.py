@@ -117,6 +117,31 @@ def _bands_per_node(
     return float(np.sqrt(mean_square)) * span / (2.0 * np.pi) + 2.0
 
 
+def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> None:
+    """ValueError when the grid of ``n`` cells per parameter exceeds :data:`MAX_WORK`.
+
+    Cheap (O(n)): callers running several grids (convergence) check them all before starting.
+    """
+    ranged = dist.ranged
+    k = len(ranged)
+    total = n**k
+    spin_names = tuple(name for name in ranged if name != "flight_time")
+    if isinstance(model, HandCatch) and "flight_time" in ranged:
+        spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]
+        combos = n ** len(spin_names)
+        bands = _bands_per_node(dist, spin_nodes, spin_names, n)
+        if combos * bands > MAX_WORK:
+            raise _too_much(
+                f"a grid of {n}^{k} = {total:.3g} configurations means {combos:.3g} spin nodes "
+                f"× ~{bands:.3g} bands each = {combos * bands:.3g} band counts"
+            )
+    elif total > MAX_WORK:
+        raise _too_much(
+            f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one "
+            "(fast band counting needs a ranged flight time and the hand catch)"
+        )
+
+
 def estimate(
     dist: TossDistribution,
     n: int,
@@ -152,15 +177,10 @@ def estimate(
     total = n**k
     spin_names = tuple(name for name in ranged if name != "flight_time")
     fast = isinstance(model, HandCatch) and "flight_time" in ranged
+    check_work(dist, n, model)
     if fast:
         spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]
         combos = n ** len(spin_names)
-        bands = _bands_per_node(dist, spin_nodes, spin_names, n)
-        if combos * bands > MAX_WORK:
-            raise _too_much(
-                f"a grid of {n}^{k} = {total:.3g} configurations means {combos:.3g} spin nodes "
-                f"× ~{bands:.3g} bands each = {combos * bands:.3g} band counts"
-            )
         tasks = [
             (dist, spin_nodes, spin_names, a, min(combos, a + _CHUNK), n)
             for a in range(0, combos, _CHUNK)
@@ -173,11 +193,6 @@ def estimate(
         tallies = {}
         how = "band counting along the flight time"
     else:
-        if total > MAX_WORK:
-            raise _too_much(
-                f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one "
-                "(fast band counting needs a ranged flight time and the hand catch)"
-            )
         tasks2 = [
             (model, dist, k, n, a, min(total, a + _CHUNK)) for a in range(0, max(total, 1), _CHUNK)
         ]
@@ -199,4 +214,4 @@ def estimate(
     )
 
 
-__all__ = ["default_cells", "estimate", "midpoints"]
+__all__ = ["check_work", "default_cells", "estimate", "midpoints"]
