@@ -223,3 +223,41 @@ def test_toss_that_never_settles_says_so():
     assert " ends " not in plain.stdout
     out = json.loads(_run(*TOSS, *table, "--json").stdout)
     assert (out["status"], out["bounces"]) == ("unsettled", MAX_IMPACTS)
+
+
+def test_probability_warns_about_tosses_that_never_settle():
+    # e = 1, μ = 0 conserves energy: the coin bounces until the impact limit and never settles.
+    import json
+
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    args = [
+        "probability",
+        "--surface",
+        "table",
+        "--drop-height",
+        "0.5",
+        "--omega-x",
+        "60:90",
+        "-T",
+        "0.6:0.9",
+        "--restitution",
+        "1",
+        "--friction",
+        "0",
+        "-m",
+        "monte-carlo",
+        "--n",
+        "100",
+        "--seed",
+        "1",
+    ]
+    result = CliRunner().invoke(app, [*args, "--json"])
+    assert result.exit_code == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert payload["details"]["unsettled"] == 100
+    assert any("never settled" in w for w in payload["warnings"])
+    plain = CliRunner().invoke(app, args)
+    assert "warning: 100 of 100 tosses (100 %) never settled" in plain.stdout

@@ -267,10 +267,12 @@ class TableLanding(OutcomeModel):
     """Outcome model for the probability estimators: the tosses land on ``surface``.
 
     Plugs into :func:`coinflight.probability.estimate` (``model=TableLanding(surface)``);
-    counts (tails, heads, edge).
+    counts (tails, heads, edge) and, as an extra tally, the tosses that had not settled when the
+    simulation stopped (counted by the face they showed then).
     """
 
     name = "table landing"
+    tallies = ("unsettled",)
 
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
@@ -282,7 +284,7 @@ class TableLanding(OutcomeModel):
         self.max_bounces = max_bounces
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge) counts for unit-cube points ``u`` (shape (len(ranged), n))."""
+        """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n)."""
         omega, speed = _initial_conditions(dist, u)
         out = land(
             dist.coin,
@@ -295,7 +297,9 @@ class TableLanding(OutcomeModel):
             self.max_bounces,
             parallel=False,  # the estimators run batches in their own threads
         )
-        return np.bincount(out.face, minlength=3).astype(np.int64)
+        faces = np.bincount(out.face, minlength=3).astype(np.int64)
+        unsettled = np.count_nonzero(out.status == STATUS_NAMES.index("unsettled"))
+        return np.append(faces, unsettled)
 
 
 def table_faces(
@@ -335,7 +339,7 @@ class DragCatch(OutcomeModel):
         self.drag = drag
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge) counts for unit-cube points ``u`` (shape (len(ranged), n))."""
+        """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n)."""
         omega, speed = _initial_conditions(dist, u)
         face, _ = catch_with_drag(dist.coin, omega, speed, dist.start_sign, dist.g, self.drag)
         return np.bincount(face, minlength=3).astype(np.int64)
