@@ -51,12 +51,8 @@ def median_times(fn: Callable[[], object], repeats: int) -> tuple[float, float]:
 
 
 def median_time(fn: Callable[[], object], repeats: int) -> float:
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+    """Median wall time of ``fn()``, s."""
+    return median_times(fn, repeats)[0]
 
 
 def machine() -> str:
