@@ -96,7 +96,10 @@ def test_cli_writes_a_gif(tmp_path):
     [
         (["--out", "toss.avi"], "--out must end in .gif or .mp4"),
         (["--out", "toss.gif", "--frames", "1"], "--frames"),
-        (["--out", "toss.gif", "--enlarge", "-2"], "enlarge must be a positive number"),
+        (
+            ["--out", "toss.gif", "--enlarge", "-2"],
+            "enlarge must be between 0.001 and 1e+06, got -2.0",
+        ),
     ],
 )
 def test_cli_bad_input(tmp_path, extra, message):

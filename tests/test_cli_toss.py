@@ -96,10 +96,10 @@ def test_negative_spin_components_parse():
 
 
 BAD_INPUTS = [
-    (["toss", "--flight-time", "0"], "flight time must be positive and finite"),
-    (["toss", "--flight-time", "-0.5"], "flight time must be positive and finite"),
-    (["toss", "--flight-time", "nan"], "flight time must be positive and finite"),
-    (["toss", "--flight-time", "inf"], "flight time must be positive and finite"),
+    (["toss", "--flight-time", "0"], "flight time must be between 1e-06 and 10000 (in s)"),
+    (["toss", "--flight-time", "-0.5"], "flight time must be between 1e-06 and 10000 (in s)"),
+    (["toss", "--flight-time", "nan"], "flight time must be between 1e-06 and 10000 (in s)"),
+    (["toss", "--flight-time", "inf"], "flight time must be between 1e-06 and 10000 (in s)"),
     (["toss", "--launch-speed", "-3"], "launch speed must be positive and finite"),
     (["toss", "--launch-speed", "0"], "launch speed must be positive and finite"),
     (["toss", "-T", "1", "--omega", "nan", "0", "0"], "omega must be finite"),
@@ -112,15 +112,15 @@ BAD_INPUTS = [
     (["toss", "-T", "1", "--coin", "penny"], "unknown coin 'penny'"),
     (
         ["toss", "-T", "1", "--radius", "0", "--thickness", "0.001", "--mass", "0.005"],
-        "radius must be positive and finite",
+        "radius must be between 1e-06 and 1000 (in m)",
     ),
     (
         ["toss", "-T", "1", "--radius", "0.01", "--thickness", "-1", "--mass", "0.005"],
-        "thickness must be positive and finite",
+        "thickness must be between 1e-06 and 1000 (in m)",
     ),
     (
         ["toss", "-T", "1", "--radius", "0.01", "--thickness", "0.001", "--mass", "0"],
-        "mass must be positive and finite",
+        "mass must be between 1e-09 and 1e+06 (in kg)",
     ),
     (
         ["toss", "-T", "1", "--radius", "0.01"],
@@ -133,7 +133,7 @@ BAD_INPUTS = [
     ),
     (["toss"], "give exactly one of --flight-time and --launch-speed"),
     (["toss", "-T", "1", "--start", "edge"], "start must be one of heads, tails"),
-    (["toss", "-T", "1", "--g", "-9.81"], "g must be positive and finite"),
+    (["toss", "-T", "1", "--g", "-9.81"], "g must be between 0.001 and 1000 (in m/s²), got -9.81"),
     (["toss", "-T", "1", "--frobnicate"], "No such option: --frobnicate"),
     (["tosss"], "No such command 'tosss'"),
 ]
@@ -200,5 +200,5 @@ def test_console_script_runs_end_to_end():
     assert bad.returncode == 2
     assert (
         bad.stderr.strip()
-        == "coinflight: error: flight time must be positive and finite (in s), got -1.0"
+        == "coinflight: error: flight time must be between 1e-06 and 10000 (in s), got -1.0"
     )

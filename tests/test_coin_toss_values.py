@@ -50,7 +50,7 @@ def test_presets_are_all_listed():
 @pytest.mark.parametrize("bad", [0.0, -0.01, math.inf, math.nan])
 def test_coin_rejects_bad_dimensions(field, bad):
     kwargs = {"radius": 0.012, "thickness": 0.0015, "mass": 0.005, field: bad}
-    with pytest.raises(ValueError, match=rf"^{field} must be positive and finite"):
+    with pytest.raises(ValueError, match=rf"^{field} must be between .* \(in k?g?m?\), got"):
         Coin(**kwargs)
 
 
@@ -66,7 +66,7 @@ def test_unknown_coin_suggests_a_name():
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.inf, math.nan])
 def test_toss_rejects_bad_flight_time(bad):
-    with pytest.raises(ValueError, match="flight time must be positive and finite"):
+    with pytest.raises(ValueError, match=r"flight time must be between 1e-06 and 10000 \(in s\)"):
         Toss(omega=(1.0, 0.0, 0.0), flight_time=bad)
 
 
@@ -78,7 +78,7 @@ def test_toss_rejects_bad_launch_speed(bad):
 
 @pytest.mark.parametrize("bad", [0.0, -9.81, math.inf])
 def test_toss_rejects_bad_gravity(bad):
-    with pytest.raises(ValueError, match="g must be positive and finite"):
+    with pytest.raises(ValueError, match=r"^g must be between 0.001 and 1000 \(in m/s²\)"):
         Toss(omega=(1.0, 0.0, 0.0), flight_time=0.5, g=bad)
 
 
@@ -113,7 +113,7 @@ def test_toss_keeps_private_read_only_arrays():
         toss.omega[0] = 1.0
 
 
-@pytest.mark.parametrize(("omega", "flight_time"), [((1e200, 0, 0), 0.7), ((1.0, 0, 0), 1e300)])
+@pytest.mark.parametrize(("omega", "flight_time"), [((1e200, 0, 0), 0.7), ((2e5, 0, 0), 1e4)])
 def test_toss_refuses_phases_rounding_would_decide(omega, flight_time):
     with pytest.raises(
         ValueError, match=r"spin component × flight time must be at most 1e\+09 rad"

@@ -1,11 +1,28 @@
-"""Checks shared by every value object: one wording for every error a user can meet."""
+"""Checks shared by every value object: one wording for every error a user can meet.
+
+Every number a user gives goes through :func:`as_float_array` (booleans and strings are not
+numbers), and every physical quantity with limits through a :class:`Quantity`: a hard range
+(ValueError: ``radius must be between 1e-06 and 1000 (in m), got 1e-320``) that keeps the
+arithmetic finite, and a usual range whose violation is only a :class:`PlausibilityWarning`
+(most often a wrong unit: millimetres given as metres).
+"""
 
 from __future__ import annotations
 
+import numbers
+import warnings
 from collections.abc import Iterable
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+
+class PlausibilityWarning(UserWarning):
+    """A value inside its allowed range but unusual for a coin toss: most often a wrong unit.
+
+    The command line prints it as one line (``coinflight: warning: …``) and goes on.
+    """
 
 
 def _show(value: object) -> str:
@@ -17,12 +34,140 @@ def _show(value: object) -> str:
 
 
 def as_float_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
-    """``value`` as a float array, or TypeError naming ``name``."""
+    """``value`` as a float array, or TypeError naming ``name``.
+
+    Real numbers only: a bool (``True`` is not 1.0), a string (``"0.01"`` is text, however
+    numeric it reads), a complex number or a ragged list is a TypeError.
+    """
     try:
-        arr = np.asarray(value, dtype=float)
+        arr = np.asarray(value)
+        if arr.dtype.kind == "O":
+            if not all(_is_real(x) for x in arr.flat):
+                raise TypeError
+        elif arr.dtype.kind not in "iuf":
+            raise TypeError
+        return np.asarray(arr, dtype=float)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a number or an array of numbers, got {value!r}") from None
-    return arr
+        raise TypeError(
+            f"{name} must be a number or an array of numbers, got {_kind(value)} {value!r}"
+        ) from None
+
+
+def _is_real(x: object) -> bool:
+    return isinstance(x, numbers.Real) and not isinstance(x, bool | np.bool_)
+
+
+def _kind(value: object) -> str:
+    """What a value is, for a TypeError: 'str', 'bool', 'array of bool'."""
+    if isinstance(value, np.ndarray):
+        return f"array of {value.dtype}"
+    return type(value).__name__
+
+
+def number(name: str, value: object, unit: str = "") -> float:
+    """One finite real number (not a bool, not a string, not an array), else TypeError or
+    ValueError naming ``name``."""
+    arr = finite(name, value, unit)  # type: ignore[arg-type]
+    if arr.ndim:
+        raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    return float(arr)
+
+
+def count(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
+    """A whole number in [minimum, maximum] (Python or NumPy int, not a bool, not 2.0 or 2.5),
+    else TypeError or ValueError naming ``name``."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
+        raise TypeError(f"{name} must be an integer, got {_kind(value)} {value!r}")
+    value = int(value)
+    if value < minimum or (maximum is not None and value > maximum):
+        allowed = f"at least {minimum}" if maximum is None else f"between {minimum} and {maximum}"
+        raise ValueError(f"{name} must be {allowed}, got {value}")
+    return value
+
+
+def instance(name: str, value: object, kind: type, allowed: str = "") -> None:
+    """TypeError naming ``name`` unless ``value`` is a ``kind``."""
+    if not isinstance(value, kind):
+        what = allowed or f"a {kind.__name__}"
+        raise TypeError(f"{name} must be {what}, got {_kind(value)} {value!r:.60}")
+
+
+def callable_or_none(name: str, value: object, allowed: str) -> None:
+    """TypeError naming ``name`` unless ``value`` is None or callable."""
+    if value is not None and not callable(value):
+        raise TypeError(f"{name} must be {allowed} or None, got {_kind(value)} {value!r:.60}")
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A physical quantity's limits: a hard range (an error outside) and a usual one (a warning).
+
+    The hard range is what the arithmetic survives: the flight, the moments of inertia and the
+    figures stay finite and well conditioned inside it. The usual range is what a coin toss
+    looks like; a value outside it is accepted with a :class:`PlausibilityWarning`.
+
+    Parameters
+    ----------
+    name : str
+        The field, as errors name it ("radius", "g").
+    unit : str
+        SI unit, for messages.
+    low, high : float
+        Hard range, inclusive.
+    usual : (float, float), optional
+        Usual range, inclusive.
+    usual_text : str
+        What the usual range is, for the warning ("a coin's (1 mm to 10 cm)").
+    """
+
+    name: str
+    unit: str
+    low: float
+    high: float
+    usual: tuple[float, float] | None = None
+    usual_text: str = ""
+
+    def check(self, value: object, name: str | None = None) -> float:
+        """``value`` as a float inside the hard range, else TypeError or ValueError."""
+        arr = self.check_array(value, name)  # type: ignore[arg-type]
+        if arr.ndim:
+            raise TypeError(
+                f"{name or self.name} must be a single number, got an array of shape {arr.shape}"
+            )
+        return float(arr)
+
+    def check_array(self, value: ArrayLike, name: str | None = None) -> NDArray[np.float64]:
+        """Every entry of ``value`` inside the hard range, else TypeError or ValueError."""
+        return in_range(name or self.name, value, self.low, self.high, self.unit)
+
+    def is_usual(self, value: ArrayLike) -> bool:
+        """True if every entry lies in the usual range (or there is none)."""
+        if self.usual is None:
+            return True
+        arr = np.asarray(value, dtype=float)
+        return bool(np.all((arr >= self.usual[0]) & (arr <= self.usual[1])))
+
+    @property
+    def high_usual(self) -> float:
+        """Top of the usual range (the hard top if there is none)."""
+        return self.high if self.usual is None else self.usual[1]
+
+    def describe(self, value: float) -> str:
+        """``'radius 12.13 m'``: the field and the value, for a warning."""
+        return f"{self.name} {value:g}{' ' + self.unit if self.unit else ''}"
+
+
+def warn_unusual(message: str, stacklevel: int = 3) -> None:
+    """Issue ``message`` as a :class:`PlausibilityWarning` (``stacklevel`` as for ``warn``)."""
+    warnings.warn(message, PlausibilityWarning, stacklevel=stacklevel + 1)
+
+
+def warn_outside(quantity: Quantity, value: float, hint: str = "", stacklevel: int = 3) -> None:
+    """The warning of one quantity outside its usual range (nothing if inside)."""
+    if quantity.is_usual(value):
+        return
+    tail = f": {hint}" if hint else ""
+    warn_unusual(f"{quantity.describe(value)} is not {quantity.usual_text}{tail}", stacklevel + 1)
 
 
 def finite(name: str, value: ArrayLike, unit: str = "") -> NDArray[np.float64]:

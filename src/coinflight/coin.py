@@ -39,13 +39,15 @@ class Coin:
     name: str = field(default="custom coin", compare=False)
 
     def __post_init__(self) -> None:
-        for name, unit in (("radius", "m"), ("thickness", "m"), ("mass", "kg")):
-            value = v.positive(name, getattr(self, name), unit)
-            if value.ndim:
-                raise TypeError(
-                    f"{name} must be a single number, got an array of shape {value.shape}"
-                )
-            object.__setattr__(self, name, float(value))
+        odd = []
+        for quantity in (RADIUS, THICKNESS, MASS):
+            value = quantity.check(getattr(self, quantity.name))
+            object.__setattr__(self, quantity.name, value)
+            if not quantity.is_usual(value):
+                odd.append((quantity, value))
+        v.instance("name", self.name, str, "a string")
+        if odd:
+            v.warn_unusual(_unusual_coin(odd), stacklevel=3)
 
     @classmethod
     def preset(cls, name: str) -> Coin:
@@ -63,14 +65,15 @@ class Coin:
     def from_mm_g(
         cls, diameter_mm: float, thickness_mm: float, mass_g: float, name: str = "custom coin"
     ) -> Coin:
-        """From the units of coin specifications: diameter and thickness in mm, mass in g."""
-        d = v.positive("diameter", diameter_mm, "mm")
-        return cls(
-            radius=float(d) / 2000.0,
-            thickness=float(thickness_mm) / 1000.0,
-            mass=float(mass_g) / 1000.0,
-            name=name,
-        )
+        """From the units of coin specifications: diameter and thickness in mm, mass in g.
+
+        >>> Coin.from_mm_g(diameter_mm=24.26, thickness_mm=1.75, mass_g=5.67).radius
+        0.01213
+        """
+        d = v.number("diameter_mm", diameter_mm, "mm")
+        h = v.number("thickness_mm", thickness_mm, "mm")
+        m = v.number("mass_g", mass_g, "g")
+        return cls(radius=d / 2000.0, thickness=h / 1000.0, mass=m / 1000.0, name=name)
 
     @property
     def diameter(self) -> float:
@@ -89,6 +92,29 @@ class Coin:
             f"{self.name} (d = {self.diameter * 1e3:.2f} mm, h = {self.thickness * 1e3:.2f} mm, "
             f"m = {self.mass * 1e3:.3f} g)"
         )
+
+
+RADIUS = v.Quantity("radius", "m", 1e-6, 1e3, (1e-3, 0.1), "a coin's size (1 mm to 10 cm)")
+"""Radius: hard range 1 µm to 1 km (the moments r² m stay far from underflow and overflow), a
+warning outside 1 mm to 10 cm (the largest circulating coins are about 5 cm across)."""
+THICKNESS = v.Quantity(
+    "thickness", "m", 1e-6, 1e3, (1e-4, 0.02), "a coin's thickness (0.1 mm to 2 cm)"
+)
+"""Thickness: hard range 1 µm to 1 km, a warning outside 0.1 mm to 2 cm."""
+MASS = v.Quantity("mass", "kg", 1e-9, 1e6, (1e-4, 1.0), "a coin's mass (0.1 g to 1 kg)")
+"""Mass: hard range 1 µg to 1000 t, a warning outside 0.1 g to 1 kg."""
+
+
+def _unusual_coin(odd: list[tuple[v.Quantity, float]]) -> str:
+    """One warning for the coin's unusual dimensions, with the likely unit mix-up."""
+    guesses = []
+    if any(q is not MASS and value > q.high_usual for q, value in odd):
+        guesses.append("millimetres")
+    if any(q is MASS and value > q.high_usual for q, value in odd):
+        guesses.append("grams")
+    ask = f"did you give {' and '.join(guesses)}? " if guesses else ""
+    what = "; ".join(f"{q.describe(value)} is not {q.usual_text}" for q, value in odd)
+    return f"{what}: {ask}Coin takes m and kg; see Coin.from_mm_g for mm and g"
 
 
 def _presets() -> dict[str, Coin]:
@@ -112,4 +138,4 @@ PRESETS = MappingProxyType(_presets())
 
 DEFAULT_COIN = "us-quarter"
 
-__all__ = ["DEFAULT_COIN", "PRESETS", "Coin"]
+__all__ = ["DEFAULT_COIN", "MASS", "PRESETS", "RADIUS", "THICKNESS", "Coin"]

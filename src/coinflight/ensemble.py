@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 from coinflight import _validation as v
 from coinflight.coin import DEFAULT_COIN, Coin
 from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
-from coinflight.toss import STANDARD_GRAVITY, Start
+from coinflight.toss import GRAVITY, STANDARD_GRAVITY, Start, check_gravity
 
 FloatArray = NDArray[np.float64]
 
@@ -66,10 +66,7 @@ class TossDistribution:
         for name in PARAMETERS:
             object.__setattr__(self, name, as_distribution(getattr(self, name), name))
         v.choice("start", self.start, ("heads", "tails"))
-        g = v.positive("g", self.g, "m/s²")
-        if g.ndim:
-            raise TypeError("g must be a single number")
-        object.__setattr__(self, "g", float(g))
+        object.__setattr__(self, "g", check_gravity(self.g))
         if not isinstance(self.coin, Coin):
             raise TypeError(f"coin must be a Coin, got {self.coin!r}")
         t = self.flight_time
@@ -96,7 +93,7 @@ class TossDistribution:
         g: float = STANDARD_GRAVITY,
     ) -> TossDistribution:
         """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11)."""
-        gg = float(v.positive("g", g, "m/s²"))
+        gg = GRAVITY.check(g)  # the range; __post_init__ warns if g is unusual
         speed = check_launch_speed(as_distribution(launch_speed, "launch_speed"))
         return cls(
             omega_x,  # type: ignore[arg-type]

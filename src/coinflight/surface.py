@@ -19,6 +19,11 @@ DEFAULT_FRICTION = 0.3
 """Coulomb friction coefficient of metal on wood (Strzałko et al. 2008 use 0.1-0.5)."""
 
 
+DROP_HEIGHT = v.Quantity("drop height", "m", 0.0, 1e3)
+"""How far below launch the table lies: 0 to 1 km (the fall stays seconds to minutes long,
+even at the smallest g, and the bounce kernel's times finite)."""
+
+
 def _single(name: str, value: float, unit: str, check: str = "non_negative") -> float:
     arr = getattr(v, check)(name, value, unit)
     if arr.ndim:
@@ -66,7 +71,7 @@ class Surface:
                 f"drop height must be ≥ 0 m (how far the surface lies below the launch point), "
                 f"got {float(height)!r}: a surface above the launch point is not allowed"
             )
-        object.__setattr__(self, "drop_height", _single("drop height", self.drop_height, "m"))
+        object.__setattr__(self, "drop_height", DROP_HEIGHT.check(self.drop_height))
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)
         if e.ndim:
             raise TypeError("restitution must be a single number")
@@ -119,4 +124,4 @@ class Drag:
         return self.coefficient == 0.0 and self.spin_damping == 0.0
 
 
-__all__ = ["AIR_DENSITY", "Drag", "Surface"]
+__all__ = ["AIR_DENSITY", "DROP_HEIGHT", "Drag", "Surface"]

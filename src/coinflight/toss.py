@@ -21,7 +21,24 @@ Start = Literal["heads", "tails"]
 STANDARD_GRAVITY = 9.81
 """Default g, m/s² (Stefan & Cheche use g without a value; 9.81 is the usual classroom value)."""
 
+GRAVITY = v.Quantity(
+    "g", "m/s²", 1e-3, 1e3, (0.1, 300.0), "a surface gravity (0.1 to 300 m/s²; Earth 9.81)"
+)
+"""g: hard range 0.001 to 1000 m/s² (a small asteroid to beyond the Sun's 274 m/s², so that
+T = 2 v0 / g and the apex v0² / 2g stay finite), a warning outside 0.1 to 300 m/s²."""
+
+FLIGHT_TIME = v.Quantity("flight time", "s", 1e-6, 1e4)
+"""T: hard range 1 µs to 10⁴ s (with g ≤ 1000 m/s² the apex g T² / 8 stays below 10¹¹ m)."""
+
 FloatArray = NDArray[np.float64]
+
+
+def check_gravity(g: object) -> float:
+    """``g`` inside :data:`GRAVITY`'s hard range (a warning outside its usual one), m/s²."""
+    value = GRAVITY.check(g)
+    hint = "did you give cm/s²?" if value > GRAVITY.high_usual else ""
+    v.warn_outside(GRAVITY, value, hint, stacklevel=4)
+    return value
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,10 +72,8 @@ class Toss:
         omega = v.finite("omega", self.omega, "rad/s")
         if omega.ndim == 0 or omega.shape[-1] != 3:
             raise ValueError(f"omega must have 3 components (ωx, ωy, ωz), got shape {omega.shape}")
-        flight_time = v.positive("flight time", self.flight_time, "s")
-        g = v.positive("g", self.g, "m/s²")
-        if g.ndim:
-            raise TypeError("g must be a single number")
+        flight_time = FLIGHT_TIME.check_array(self.flight_time)
+        g = check_gravity(self.g)
         v.choice("start", self.start, ("heads", "tails"))
         try:
             np.broadcast_shapes(omega.shape[:-1], flight_time.shape)
@@ -78,7 +93,7 @@ class Toss:
         flight_time.flags.writeable = False
         object.__setattr__(self, "omega", omega)
         object.__setattr__(self, "flight_time", flight_time)
-        object.__setattr__(self, "g", float(g))
+        object.__setattr__(self, "g", g)
 
     @classmethod
     def from_launch_speed(
@@ -90,12 +105,22 @@ class Toss:
     ) -> Toss:
         """Toss from the launch speed v0 of the centre of mass (m/s) instead of the flight time."""
         v0 = v.positive("launch speed", launch_speed, "m/s")
-        gg = v.positive("g", g, "m/s²")
+        gg = GRAVITY.check(g)  # the range; Toss warns if g is unusual
+        with np.errstate(over="ignore"):
+            t = ballistics.flight_time(v0, gg)
+        ok = (t >= FLIGHT_TIME.low) & (t <= FLIGHT_TIME.high)
+        if not np.all(ok):
+            bad = float(np.asarray(v0)[~ok][0] if np.ndim(v0) else v0)
+            raise ValueError(
+                f"launch speed must give a flight time 2 v0 / g between {FLIGHT_TIME.low:g} and "
+                f"{FLIGHT_TIME.high:g} s, got {bad!r} m/s (T = {2.0 * bad / gg:.3g} s at "
+                f"g = {gg:g} m/s²)"
+            )
         return cls(
-            omega=np.asarray(omega, dtype=float),
-            flight_time=ballistics.flight_time(v0, gg),
+            omega=v.as_float_array("omega", omega),
+            flight_time=t,
             start=start,
-            g=float(gg),
+            g=gg,
         )
 
     @property
@@ -243,4 +268,4 @@ class Flight:
         )
 
 
-__all__ = ["STANDARD_GRAVITY", "Flight", "FlightState", "Outcome", "Toss"]
+__all__ = ["FLIGHT_TIME", "GRAVITY", "STANDARD_GRAVITY", "Flight", "FlightState", "Outcome", "Toss"]

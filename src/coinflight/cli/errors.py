@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Sequence
+import warnings
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import Any
 
 import typer
@@ -36,13 +38,14 @@ class OneLineErrors(TyperGroup):
         **extra: Any,
     ) -> Any:
         try:
-            rv = super().main(
-                args=args,
-                prog_name=prog_name,
-                complete_var=complete_var,
-                standalone_mode=False,
-                **extra,
-            )
+            with one_line_warnings():
+                rv = super().main(
+                    args=args,
+                    prog_name=prog_name,
+                    complete_var=complete_var,
+                    standalone_mode=False,
+                    **extra,
+                )
         except typer.TyperException as exc:
             fail(_one_line(exc.format_message()), exc.exit_code)
         except typer.Abort:
@@ -54,6 +57,29 @@ class OneLineErrors(TyperGroup):
                 raise
             fail(_one_line(str(exc)))
         sys.exit(rv if isinstance(rv, int) else 0)
+
+
+@contextmanager
+def one_line_warnings() -> Iterator[None]:
+    """The library's :class:`~coinflight._validation.PlausibilityWarning` (an odd but allowed
+    value, e.g. a radius in millimetres) as ``coinflight: warning: …`` on stderr, each once;
+    other warnings as Python shows them."""
+    from coinflight._validation import PlausibilityWarning
+
+    shown: set[str] = set()
+    with warnings.catch_warnings():
+        warnings.simplefilter("always", PlausibilityWarning)
+        default = warnings.showwarning
+
+        def show(message: Warning | str, category: type[Warning], *args: Any, **kw: Any) -> None:
+            if not issubclass(category, PlausibilityWarning):
+                default(message, category, *args, **kw)
+            elif (text := _one_line(str(message))) not in shown:
+                shown.add(text)
+                typer.echo(f"coinflight: warning: {text}", err=True)
+
+        warnings.showwarning = show
+        yield
 
 
 def _one_line(message: str) -> str:

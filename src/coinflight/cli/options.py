@@ -20,6 +20,18 @@ def number(text: str) -> float:
         raise typer.BadParameter(f"{text!r} is not a number") from None
 
 
+def gravity(text: str) -> float:
+    """Parse --g and check it against the library's range (coinflight.toss.GRAVITY) before any
+    command divides by it."""
+    from coinflight.toss import GRAVITY
+
+    value = number(text)
+    try:
+        return GRAVITY.check(value)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+
+
 COIN_PANEL = "Coin"
 TOSS_PANEL = "Toss"
 OUTPUT_PANEL = "Output"
@@ -74,7 +86,7 @@ Gravity = Annotated[
     float,
     typer.Option(
         "--g",
-        parser=number,
+        parser=gravity,
         metavar="G",
         rich_help_panel=TOSS_PANEL,
         help="Gravitational acceleration, m/s².",

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coinflight import _validation as v
 from coinflight._files import replacing
 from coinflight.core.outcome import FACE_NAMES, HEADS, face_from_alignment
 from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR, new_figure
@@ -103,6 +104,11 @@ class TossAnimation:
         return save_animation(self, path, dpi=dpi)
 
 
+ENLARGE = v.Quantity("enlarge", "", 1e-3, 1e6)
+"""How many times larger than life the coin may be drawn: a thousandth to a million (a drawn
+coin of 10⁻³²⁰ cm makes a singular 3-D projection; one of 10³⁰⁸ cm, infinite axis limits)."""
+
+
 def animate_toss(
     coin: Coin,
     toss: Toss,
@@ -144,6 +150,8 @@ def animate_toss(
 
     if toss.shape:
         raise ValueError(f"animate_toss animates a single toss, got a batch of shape {toss.shape}")
+    if enlarge is not None:
+        enlarge = ENLARGE.check(enlarge)
     flight = Flight(coin, toss)
     t_end = float(toss.flight_time)
     turns = float(flight.outcome.rotations)
@@ -162,8 +170,6 @@ def animate_toss(
     apex = float(toss.apex)
     if enlarge is None:
         enlarge = max(1.0, apex / (12.0 * coin.radius))
-    if not np.isfinite(enlarge) or enlarge <= 0:
-        raise ValueError(f"enlarge must be a positive number, got {enlarge!r}")
     r_draw = coin.radius * enlarge * 100.0  # cm
     rims = (
         coin_rim(states.attitude, r_draw)
