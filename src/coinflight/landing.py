@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from coinflight import _validation as v
 from coinflight.coin import Coin
 from coinflight.core.outcome import FACE_NAMES
 from coinflight.probability.outcome import OutcomeModel
@@ -108,8 +109,8 @@ def land(
         raise TypeError(f"surface must be a Surface, got {type(surface).__name__}")
     if surface.kind != "table":
         raise ValueError("a landing needs surface kind 'table'; a hand catch is a Flight")
-    if max_bounces is not None and (isinstance(max_bounces, bool) or int(max_bounces) < 0):
-        raise ValueError(f"max bounces must be a whole number ≥ 0, got {max_bounces!r}")
+    if max_bounces is not None:
+        v.count("max_bounces", max_bounces, 0)
     i1, i3 = coin.moments
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (omega.shape[0],))
@@ -237,6 +238,8 @@ class Landing:
                 )
         if self.drag is not None and not isinstance(self.drag, Drag):
             raise TypeError(f"drag must be a Drag, got {type(self.drag).__name__}")
+        if self.max_bounces is not None:
+            v.count("max_bounces", self.max_bounces, 0)
 
     @cached_property
     def outcome(self) -> LandingOutcome:
@@ -279,6 +282,8 @@ class TableLanding(OutcomeModel):
     ) -> None:
         if not isinstance(surface, Surface) or surface.kind != "table":
             raise ValueError("TableLanding needs a Surface of kind 'table'")
+        if max_bounces is not None:
+            v.count("max_bounces", max_bounces, 0)
         self.surface = surface
         self.drag = drag
         self.max_bounces = max_bounces

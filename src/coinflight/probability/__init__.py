@@ -1,7 +1,9 @@
 """Probability of heads over a distribution of tosses: one entry point, four methods.
 
 >>> from coinflight.distributions import Uniform
->>> from coinflight.ensemble import TossDistribution
+>>> from coinflight import _validation as v
+from coinflight.ensemble import TossDistribution
+from coinflight.probability._runner import check_count, check_runner
 >>> d = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 >>> round(estimate(d, "exact").p_heads, 6)
 0.497471
@@ -23,7 +25,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from coinflight import _validation as v
 from coinflight.ensemble import TossDistribution
+from coinflight.probability._runner import check_count, check_runner
 from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult, wilson_interval
 
@@ -68,8 +72,13 @@ def estimate(
     **options
         ``grid_cells`` (monte-carlo), ``replicates`` (qmc), ``chunk_size`` (monte-carlo).
     """
+    v.instance("dist", dist, TossDistribution, "a TossDistribution")
+    v.instance("method", method, str, f"a string, one of {', '.join(METHODS)}")
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    v.instance("model", model, OutcomeModel, "an OutcomeModel (HandCatch, TableLanding)")
+    if n is not None:
+        check_count("n", n)
     if method in ("exact", "grid") and seed is not None:
         raise TypeError(f"method {method!r} takes no seed (it is deterministic); got seed={seed}")
     if method == "exact":
@@ -81,6 +90,7 @@ def estimate(
         from coinflight.probability import exact
 
         return exact.estimate(dist, model=model)
+    check_runner(executor, threads, progress)
     common: dict[str, Any] = {
         "model": model,
         "executor": executor,

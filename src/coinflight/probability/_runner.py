@@ -8,6 +8,8 @@ from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from typing import Any, Protocol, TypeVar
 
+from coinflight import _validation as v
+
 T = TypeVar("T")
 R = TypeVar("R")
 
@@ -16,21 +18,33 @@ Progress = Callable[[int], None]
 
 
 class Executor(Protocol):
-    """Anything with ``map(fn, iterable)``: ``concurrent.futures`` executors, a Dask or Ray
-    client wrapper, the built-in ``map`` itself."""
+    """Anything with a ``map(fn, iterable)`` method: ``concurrent.futures`` executors, a Dask or
+    Ray client wrapper, an object whose ``map`` is the built-in ``map`` (serial)."""
 
     def map(self, fn: Callable[[Any], Any], *iterables: Iterable[Any]) -> Iterator[Any]: ...
+
+
+def check_runner(executor: object, threads: object, progress: object) -> None:
+    """TypeError or ValueError naming the argument unless ``executor`` is None or has a callable
+    ``map``, ``threads`` None or a whole number ≥ 1, ``progress`` None or callable."""
+    if executor is not None and not callable(getattr(executor, "map", None)):
+        raise TypeError(
+            "executor must be None (a thread pool) or an object with a map(fn, tasks) method, "
+            f"such as a concurrent.futures executor; got {type(executor).__name__}"
+        )
+    if threads is not None:
+        v.count("threads", threads)
+    v.callable_or_none("progress", progress, "a callable taking the amount of work done")
 
 
 @contextmanager
 def executor_or_threads(executor: Executor | None, threads: int | None) -> Iterator[Executor]:
     """The user's executor, or a thread pool (``threads`` workers, default all CPUs)."""
+    check_runner(executor, threads, None)
     if executor is not None:
         yield executor
         return
     workers = threads if threads is not None else (os.cpu_count() or 1)
-    if workers < 1:
-        raise ValueError(f"threads must be at least 1, got {workers}")
     if workers == 1:
         yield _SerialExecutor()
         return
@@ -51,6 +65,7 @@ def run_tasks(
     progress: Progress | None,
 ) -> list[R]:
     """``[fn(t) for t in tasks]`` through ``executor``, reporting ``sizes[i]`` as each ends."""
+    v.callable_or_none("progress", progress, "a callable taking the amount of work done")
     out: list[R] = []
     for size, result in zip(sizes, executor.map(fn, tasks), strict=True):
         out.append(result)
@@ -60,18 +75,5 @@ def run_tasks(
 
 
 def check_count(name: str, value: object, minimum: int = 1) -> int:
-    """A positive integer option, or ValueError naming it."""
-    if isinstance(value, bool) or not isinstance(value, int):
-        try:
-            import numpy as np
-
-            if isinstance(value, np.integer):
-                value = int(value)
-            else:
-                raise TypeError
-        except TypeError:
-            raise TypeError(f"{name} must be an integer, got {value!r}") from None
-    assert isinstance(value, int)
-    if value < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {value}")
-    return value
+    """A whole number ≥ ``minimum`` (not a bool, not 2.5), or TypeError/ValueError naming it."""
+    return v.count(name, value, minimum)
