@@ -152,10 +152,10 @@ def test_monte_carlo_is_reproducible_and_seeded():
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
-        ({"n": 0, "seed": 1}, "number of tosses must be a positive integer"),
-        ({"n": 10, "seed": -1}, "seed must be a non-negative integer"),
-        ({"n": 10, "seed": 1, "flight_time": (0.7, 0.3)}, "low ≤ high"),
-        ({"n": 10, "seed": 1, "precession_rate": (-1.0, 3.0)}, "precession rate range must be"),
+        ({"n": 0, "seed": 1}, "number of tosses must be at least 100"),
+        ({"n": 100, "seed": -1}, "seed must be a non-negative integer"),
+        ({"n": 100, "seed": 1, "flight_time": (0.7, 0.3)}, "low ≤ high"),
+        ({"n": 100, "seed": 1, "precession_rate": (-1.0, 3.0)}, "precession rate range must be"),
     ],
 )
 def test_monte_carlo_bad_input(kwargs, message):

@@ -323,6 +323,25 @@ def expected_same_side(dist: TossDistribution) -> float:
     return float(np.mean(precession.same_side(cone_angle(omega, i1, i3))))
 
 
+MIN_TOSSES = 100
+"""Fewest simulated tosses for a same-side fraction with a standard error. The binomial s.e.
+sqrt(p (1 − p) / n) is estimated from the sample's p; from one toss it is always 0 and from a
+handful it is often 0 (every toss the same side), which would report an exact agreement with the
+closed form. The normal approximation behind "z s.e. from the closed form" wants n p (1 − p)
+≳ 10, i.e. n ≳ 40 at p ≈ 1/2 (the usual textbook rule); 100 leaves room."""
+
+
+def check_tosses(n: object) -> int:
+    """``n`` as the number of tosses of a Monte Carlo check: a whole number ≥ :data:`MIN_TOSSES`."""
+    try:
+        return v.count("number of tosses", n, MIN_TOSSES)
+    except ValueError:
+        raise ValueError(
+            f"number of tosses must be at least {MIN_TOSSES} (from fewer the standard error is "
+            f"not meaningful), got {n}"
+        ) from None
+
+
 @dataclass(frozen=True)
 class SameSideEstimate:
     """Monte Carlo estimate of the same-side probability.
@@ -371,7 +390,7 @@ def simulate_same_side(
     psi : float or object with ``ppf``
         A fixed precession angle, or a distribution of it.
     n : int
-        Number of tosses (≥ 1).
+        Number of tosses (≥ :data:`MIN_TOSSES`).
     seed : int
         Seed (≥ 0) of the :class:`numpy.random.SeedSequence`; tosses come in chunks of
         :data:`CHUNK`, each from its own spawned stream, so the result depends only on
@@ -389,8 +408,7 @@ def simulate_same_side(
     -------
     SameSideEstimate
     """
-    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
-        raise ValueError(f"number of tosses must be a positive integer, got {n!r}")
+    n = check_tosses(n)
     if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
         raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
     for name, rng_, unit in (
@@ -442,10 +460,12 @@ def simulate_same_side(
 __all__ = [
     "DEFAULT_FLIGHT_TIME",
     "DEFAULT_PRECESSION_RATE",
+    "MIN_TOSSES",
     "QuantileDistribution",
     "SameSideEstimate",
     "check_psi",
     "check_psi_distribution",
+    "check_tosses",
     "expected_same_side",
     "mean_same_side_probability",
     "psi_for_probability",

@@ -53,7 +53,7 @@ MonteCarlo = Annotated[
         min=1,
         metavar="N",
         rich_help_panel=SIM_PANEL,
-        help="Also simulate N tosses of the full torque-free flight (random flight time and "
+        help="Also simulate N ≥ 100 tosses of the full torque-free flight (random flight time and "
         "spin at the given ψ) and report their same-side fraction with its standard error.",
     ),
 ]
@@ -207,7 +207,7 @@ def _bias_preset(
     if monte_carlo is not None:
         from coinflight.probability import estimate
 
-        result = estimate(dist, "monte-carlo", monte_carlo, seed)
+        result = estimate(dist, "monte-carlo", b.check_tosses(monte_carlo), seed)
     if json_output:
         payload: dict[str, Any] = {
             "p_same_side": p,
