@@ -51,9 +51,12 @@ def test_drag_shortens_the_flight_and_damping_slows_the_spin():
 @pytest.mark.parametrize(
     ("kwargs", "match"),
     [
-        ({"coefficient": -1.0}, "drag coefficient must be non-negative"),
-        ({"spin_damping": -1e-9}, "spin damping must be non-negative"),
-        ({"air_density": 0.0}, "air density must be positive"),
+        ({"coefficient": -1.0}, r"drag coefficient must be between 0 and 10, got -1.0"),
+        (
+            {"spin_damping": -1e-9},
+            r"spin damping must be between 0 and 0.001 \(in N m s\)",
+        ),
+        ({"air_density": 0.0}, r"air density must be between 1e-06 and 10000 \(in kg/m³\), got 0"),
     ],
 )
 def test_bad_drag(kwargs, match):

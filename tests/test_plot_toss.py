@@ -96,7 +96,7 @@ def test_cli_svg_by_suffix(tmp_path):
     [
         (["--times", "0.6,x"], "--times must be comma-separated numbers"),
         (["--times", "0.6", "-T", "0.7"], "give --times or one of"),
-        (["--times", "0.6,-1"], "flight time must be positive"),
+        (["--times", "0.6,-1"], "flight time must be between 1e-06 and 10000 (in s)"),
         ([], "give exactly one of --flight-time and --launch-speed"),
     ],
 )

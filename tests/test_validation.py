@@ -94,7 +94,7 @@ def test_a_coin_in_millimetres_and_grams_is_accepted_with_a_warning():
     assert len(caught) == 1  # one warning for the coin, not one per field
     assert str(caught[0].message) == (
         "radius 12.13 m is not a coin's size (1 mm to 10 cm); "
-        "thickness 1.75 m is not a coin's thickness (0.1 mm to 2 cm); "
+        "thickness 1.75 m is not a coin's thickness (0.1 mm to 5 cm); "
         "mass 5.67 kg is not a coin's mass (0.1 g to 1 kg): "
         "did you give millimetres and grams? Coin takes m and kg; see Coin.from_mm_g for mm and g"
     )
@@ -199,6 +199,27 @@ def test_bool_arrays_are_not_spins():
 
 
 # --- the table -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("field", "bad", "message"),
+    [
+        # Found by tests/test_cli_generated.py: --drag 1e308 overflowed in the integration.
+        ("coefficient", 1e308, "drag coefficient must be between 0 and 10, got 1e+308"),
+        ("spin_damping", 1.0, "spin damping must be between 0 and 0.001 (in N m s), got 1.0"),
+        ("air_density", True, None),
+    ],
+)
+def test_drag_is_bounded(field, bad, message):
+    from coinflight.surface import Drag
+
+    if message is None:
+        with pytest.raises(TypeError, match=r"^air density must be a number"):
+            Drag(**{field: bad})
+        return
+    with pytest.raises(ValueError) as info:
+        Drag(**{field: bad})
+    assert str(info.value) == message
 
 
 def test_drop_height_is_bounded():

@@ -98,9 +98,10 @@ RADIUS = v.Quantity("radius", "m", 1e-6, 1e3, (1e-3, 0.1), "a coin's size (1 mm 
 """Radius: hard range 1 µm to 1 km (the moments r² m stay far from underflow and overflow), a
 warning outside 1 mm to 10 cm (the largest circulating coins are about 5 cm across)."""
 THICKNESS = v.Quantity(
-    "thickness", "m", 1e-6, 1e3, (1e-4, 0.02), "a coin's thickness (0.1 mm to 2 cm)"
+    "thickness", "m", 1e-6, 1e3, (1e-4, 0.05), "a coin's thickness (0.1 mm to 5 cm)"
 )
-"""Thickness: hard range 1 µm to 1 km, a warning outside 0.1 mm to 2 cm."""
+"""Thickness: hard range 1 µm to 1 km, a warning outside 0.1 mm to 5 cm (bullion coins reach a
+few cm; millimetres given as metres land near 1 m)."""
 MASS = v.Quantity("mass", "kg", 1e-9, 1e6, (1e-4, 1.0), "a coin's mass (0.1 g to 1 kg)")
 """Mass: hard range 1 µg to 1000 t, a warning outside 0.1 g to 1 kg."""
 

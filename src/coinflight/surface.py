@@ -24,6 +24,15 @@ DROP_HEIGHT = v.Quantity("drop height", "m", 0.0, 1e3)
 even at the smallest g, and the bounce kernel's times finite)."""
 
 
+DRAG_COEFFICIENT = v.Quantity("drag coefficient", "", 0.0, 10.0)
+"""C_d: 0 to 10 (a flat disc broadside on is 1.17, no shape reaches 3; 1e308 overflowed)."""
+SPIN_DAMPING = v.Quantity("spin damping", "N m s", 0.0, 1e-3)
+"""k: 0 to 10⁻³ N m s. A quarter's spin decays at k / I1 ≈ 4600 /s at the top, stopping within
+a millisecond; far beyond (k = 1) the integration of a table landing is too stiff to end."""
+AIR_DENSITY_RANGE = v.Quantity("air density", "kg/m³", 1e-6, 1e4)
+"""ρ: 10⁻⁶ to 10⁴ kg/m³ (thin air on Mars is 0.02, water 1000)."""
+
+
 def _single(name: str, value: float, unit: str, check: str = "non_negative") -> float:
     arr = getattr(v, check)(name, value, unit)
     if arr.ndim:
@@ -110,13 +119,9 @@ class Drag:
     air_density: float = AIR_DENSITY
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "coefficient", _single("drag coefficient", self.coefficient, ""))
-        object.__setattr__(
-            self, "spin_damping", _single("spin damping", self.spin_damping, "N m s")
-        )
-        object.__setattr__(
-            self, "air_density", _single("air density", self.air_density, "kg/m³", "positive")
-        )
+        object.__setattr__(self, "coefficient", DRAG_COEFFICIENT.check(self.coefficient))
+        object.__setattr__(self, "spin_damping", SPIN_DAMPING.check(self.spin_damping))
+        object.__setattr__(self, "air_density", AIR_DENSITY_RANGE.check(self.air_density))
 
     @property
     def is_zero(self) -> bool:
