@@ -166,7 +166,10 @@ class Uniform(Distribution):
         return Uniform(self.low * factor, self.high * factor)
 
     def describe(self, unit: str = "") -> str:
-        return f"{self.low:g}–{self.high:g}{_space(unit)}"
+        lo, hi = f"{self.low:g}", f"{self.high:g}"
+        if lo == hi:  # a range narrower than 6 digits: show the digits that tell its ends apart
+            lo, hi = repr(self.low), repr(self.high)
+        return f"{lo}–{hi}{_space(unit)}"
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,9 @@ Keller 1986). These kernels integrate the band indicator exactly.
 
 from __future__ import annotations
 
+import itertools
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -49,15 +52,41 @@ def in_band(u: ArrayLike, a: ArrayLike = np.pi / 2) -> NDArray[np.bool_]:
     return (r < aa) | (r > TWO_PI - aa)
 
 
+def band_measure(u: ArrayLike, length: ArrayLike, a: ArrayLike = np.pi / 2) -> FloatArray:
+    """Measure of the bands in [u, u + length] (u ≥ 0, length ≥ 0), rad: F(u + length) − F(u).
+
+    Written so that a short interval does not lose its digits: F(u + L) − F(u) subtracts two
+    numbers of size u, which leaves nothing of an L below u·2⁻⁵² (the cause of issue 10's
+    P(heads) = 1 for T in 0.7:0.7000000000000002). Here the whole turns of L count 2a each and
+    the rest, an interval [r, r + ρ] with r = u mod 2π and ρ = L mod 2π, is intersected with the
+    bands around 0, 2π and 4π as ρ minus what lies outside each, so an interval inside a band
+    measures exactly ρ. F as in :func:`phase_measure`.
+    """
+    uu = np.asarray(u, dtype=float)
+    ll = np.asarray(length, dtype=float)
+    aa = np.asarray(a, dtype=float)
+    r = uu - TWO_PI * np.floor(uu / TWO_PI)
+    turns = np.floor(ll / TWO_PI)
+    rho = ll - TWO_PI * turns
+    local = np.zeros(np.broadcast(r, rho, aa).shape)
+    for centre in (0.0, TWO_PI, 2.0 * TWO_PI):
+        below = np.maximum(0.0, (centre - aa) - r)  # part of [r, r + ρ] before the band
+        above = np.maximum(0.0, (r + rho) - (centre + aa))  # and after it
+        local = local + np.maximum(0.0, rho - below - above)
+    return 2.0 * aa * turns + local
+
+
 def time_average_uniform(wp: ArrayLike, a: ArrayLike, t1: float, t2: float) -> FloatArray:
     """Fraction of flight times T uniform in [t1, t2] for which ωp T is in a band.
 
-    (F(ωp t2) − F(ωp t1)) / (ωp (t2 − t1)); 1 where ωp = 0 (the coin does not turn).
+    (F(ωp t2) − F(ωp t1)) / (ωp (t2 − t1)), the difference taken by :func:`band_measure` so that
+    it tends to the band indicator at t1 as t2 → t1; 1 where ωp = 0 (the coin does not turn).
     """
     wp = np.asarray(wp, dtype=float)
     safe = np.where(wp > 0, wp, 1.0)
-    val = (phase_measure(safe * t2, a) - phase_measure(safe * t1, a)) / (safe * (t2 - t1))
-    return np.where(wp > 0, val, 1.0)
+    length = safe * (t2 - t1)
+    val = band_measure(safe * t1, length, a) / length
+    return np.where(wp > 0, np.clip(val, 0.0, 1.0), 1.0)
 
 
 def band_edges(wp: float, a: float, t_low: float, t_high: float) -> tuple[FloatArray, FloatArray]:
@@ -66,16 +95,37 @@ def band_edges(wp: float, a: float, t_low: float, t_high: float) -> tuple[FloatA
     return (TWO_PI * m - a) / wp, (TWO_PI * m + a) / wp
 
 
-def diameter_spin_integral(x1: float, x2: float, c: float, t1: float, t2: float) -> float:
+def _segment(u: FloatArray, a: float) -> tuple[FloatArray, FloatArray]:
+    """(s, b) with F(u) = s·u + b on the piece of F holding u: s = 1 inside band k, where
+    b = −(2π − 2a)k; s = 0 in the gap after band k, where b = 2ak + a (F of :func:`phase_measure`).
+
+    From the integer k rather than as F(u) − s·u, which would round at the size of u.
+    """
+    k = np.floor((u + a) / TWO_PI)
+    inside = (u + a) - TWO_PI * k < 2.0 * a
+    s = inside.astype(float)
+    b = np.where(inside, -(TWO_PI - 2.0 * a) * k, 2.0 * a * k + a)
+    return s, b
+
+
+def _diameter_spin_pieces(x1: float, x2: float, c: float, t1: float, t2: float) -> float:
     """∫ over x ∈ [x1, x2] (0 ≤ x1 ≤ x2) of P(same side | Ω = √(x² + c²)), T uniform on [t1, t2].
 
     For a spin about a diameter (ω_z = 0), one spin component x uniform and the other fixed at
     c, the same-side probability at Ω averaged over T uniform is
     G(Ω) = (F(Ω t2) − F(Ω t1)) / (Ω (t2 − t1)). F is piecewise linear, so between the Ω where
     Ω t1 or Ω t2 crosses a band edge, G(Ω) = α + β/Ω with constant α, β; and
-    ∫ dx / √(x² + c²) = asinh(x/|c|) (ln x when c = 0). The integral is thus a finite sum in
-    closed form (Keller 1986; Stefan & Cheche eq 15). With t1 = t2 (fixed T) G is the band
-    indicator and the integral the total length of the bands in x.
+    ∫ dx / √(x² + c²) = ln(x + √(x² + c²)). The integral is thus a finite sum in closed form
+    (Keller 1986; Stefan & Cheche eq 15). With t1 = t2 (fixed T) G is the band indicator and the
+    integral the total length of the bands in x.
+
+    Notes
+    -----
+    Every difference is taken where it is small, so that narrow ranges keep their digits and a
+    range of width → 0 tends to the fixed value (issue 10): pieces are cut in x (the range's ends
+    exact), dΩ and the logarithms' differences (log1p) follow from dx, the offsets β come from
+    integer band indices (:func:`_segment`), and pieces where Ω t1 and Ω t2 lie in one band
+    count dx exactly.
     """
     c = abs(float(c))
     if x2 <= x1:
@@ -84,30 +134,69 @@ def diameter_spin_integral(x1: float, x2: float, c: float, t1: float, t2: float)
     half = np.pi / 2
     times = (t1,) if t1 == t2 else (t1, t2)
     # Ω where Ω t crosses π/2 + jπ, for each t, inside (w1, w2).
-    breaks = [w1, w2]
+    breaks: list[float] = []
     for t in times:
         j = np.arange(np.floor((w1 * t - half) / np.pi), np.ceil((w2 * t - half) / np.pi) + 1)
         w = (half + np.pi * j) / t
         breaks.extend(w[(w > w1) & (w < w2)])
-    omega = np.unique(np.asarray(breaks))
-    xs = np.sqrt(np.maximum(omega * omega - c * c, 0.0))
-    xs[0], xs[-1] = x1, x2
-    mid = 0.5 * (omega[:-1] + omega[1:])
+    inner = np.asarray(breaks, dtype=float)
+    # Pieces in x: the ends exactly as given, the breaks inside mapped by x = √(Ω² − c²).
+    xs = np.unique(np.concatenate(([x1, x2], np.sqrt(np.maximum(inner * inner - c * c, 0.0)))))
+    xs = xs[(xs >= x1) & (xs <= x2)]
     dx = np.diff(xs)
+    omega = np.hypot(xs, c)
+    mid = np.hypot(0.5 * (xs[:-1] + xs[1:]), c)
+    # dΩ = dx (x_a + x_b) / (Ω_a + Ω_b), from x² = Ω² − c², consistent with dx: where a piece's
+    # α dx and β Δln nearly cancel, an error in dx then cancels with them.
+    o_sum = omega[:-1] + omega[1:]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        d_omega = np.where(o_sum > 0, dx * (xs[:-1] + xs[1:]) / o_sum, 0.0)
     if t1 == t2:
         return float(np.sum(dx[in_band(mid * t1)]))
-    # On each piece F(Ω t) = s Ω t + b with s = 1 inside a band, 0 outside.
-    s1 = in_band(mid * t1).astype(float)
-    s2 = in_band(mid * t2).astype(float)
-    b1 = phase_measure(mid * t1) - s1 * mid * t1
-    b2 = phase_measure(mid * t2) - s2 * mid * t2
-    alpha = s2 * t2 - s1 * t1
-    beta = b2 - b1
-    # ∫ dx / √(x² + c²) = ln(x + √(x² + c²)) (= asinh(x/c) + ln c), which also holds for
-    # c = 0 and does not overflow for tiny c. On the first piece from x = 0 with c = 0,
-    # F(Ω t) = Ω t for both times, so β = 0 there and the infinite logarithm is not used.
-    with np.errstate(divide="ignore"):
-        prim = np.log(xs + np.hypot(xs, c))
-    dlog = np.where(beta == 0.0, 0.0, np.diff(prim))
-    total = np.sum(alpha * dx) + np.sum(np.where(beta == 0.0, 0.0, beta * dlog))
-    return float(total / (t2 - t1))
+    s1, b1 = _segment(mid * t1, half)
+    s2, b2 = _segment(mid * t2, half)
+    width = t2 - t1
+    # On a piece, measure(Ω) = (s2 t2 − s1 t1) Ω + (b2 − b1); divided by Ω (t2 − t1) and
+    # integrated over x: α dx + β Δln(x + Ω), Δln = log1p((dx + dΩ) / (x_a + Ω_a)).
+    alpha = np.where((s1 == 1.0) & (s2 == 1.0), 1.0, (s2 * t2 - s1 * t1) / width)
+    beta = (b2 - b1) / width
+    base = xs[:-1] + omega[:-1]
+    # From x = 0 with c = 0 the logarithm is infinite, but there Ω t1 and Ω t2 lie in the first
+    # band (β = 0): the term is not used.
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        dlog = np.where(beta == 0.0, 0.0, np.log1p((dx + d_omega) / base))
+    return float(np.sum(alpha * dx) + np.sum(beta * dlog))
+
+
+PIECES_PER_CHUNK = 1_000_000
+"""Band pieces summed at once by :func:`diameter_spin_integral` (memory ~100 MB at most)."""
+
+
+def diameter_spin_pieces(x1: float, x2: float, c: float, t2: float) -> float:
+    """Upper estimate of the number of band pieces in :func:`diameter_spin_integral`.
+
+    Ω t crosses a band edge every π of phase, for t1 and t2: at most 2 (Ω2 − Ω1) t2 / π + 3.
+    """
+    w1, w2 = math.hypot(x1, c), math.hypot(x2, c)
+    return 2.0 * (w2 - w1) * t2 / math.pi + 3.0
+
+
+def diameter_spin_integral(x1: float, x2: float, c: float, t1: float, t2: float) -> float:
+    """∫ over x ∈ [x1, x2] (0 ≤ x1 ≤ x2) of P(same side | Ω = √(x² + c²)), T uniform on [t1, t2].
+
+    The closed form of :func:`_diameter_spin_pieces`, summed over sub-ranges of x holding at
+    most :data:`PIECES_PER_CHUNK` pieces each, so that memory stays bounded for any range (the
+    integral is additive in x). The caller bounds the total work with
+    :func:`diameter_spin_pieces`.
+    """
+    pieces = diameter_spin_pieces(x1, x2, c, t2)
+    chunks = max(1, math.ceil(pieces / PIECES_PER_CHUNK))
+    if chunks == 1 or x2 <= x1:
+        return _diameter_spin_pieces(x1, x2, c, t1, t2)
+    # Equal steps in Ω hold equal numbers of pieces; map them back to x.
+    w = np.linspace(math.hypot(x1, c), math.hypot(x2, c), chunks + 1)
+    xs = np.sqrt(np.maximum(w * w - c * c, 0.0))
+    xs[0], xs[-1] = x1, x2
+    return math.fsum(
+        _diameter_spin_pieces(float(a), float(b), c, t1, t2) for a, b in itertools.pairwise(xs)
+    )

@@ -39,6 +39,11 @@ MAX_EVALUATIONS = 500_000
 time: about 25-30 s on the reference 2-core machine. The slowest supported case, the ``human``
 preset (normal flight time, two normal spins), needs about 300,000 (~16 s). Past the budget a
 ValueError names the sampling methods instead."""
+MAX_PIECES = 50_000_000
+"""Most band pieces the closed form may sum (about 25 s on the reference 2-core machine, memory
+bounded by :data:`coinflight.core.bands.PIECES_PER_CHUNK`). A spin range of width Δω and flight
+times up to T hold about 2 Δω T / π pieces; when the closed form is the integrand of a
+quadrature, each evaluation may hold at most MAX_PIECES / 1000 of them."""
 _SPINS = ("omega_x", "omega_y", "omega_z")
 _USE_INSTEAD = "use --method grid, monte-carlo or qmc instead"
 
@@ -68,7 +73,23 @@ def _p_same_fixed_spins(
     return float(np.sum(t.cdf(hi) - t.cdf(lo)))
 
 
-def _closed_form_diameter(x: Distribution, c: float, t: Distribution) -> float:
+def _check_pieces(x: Uniform, c: float, t2: float, limit: float) -> None:
+    """Refuse, before any allocation, a closed form that would sum more than ``limit`` pieces."""
+    lo, hi = x.low, x.high
+    pieces = bands.diameter_spin_pieces(0.0, max(abs(lo), abs(hi)), 0.0, t2) + (
+        bands.diameter_spin_pieces(0.0, min(abs(lo), abs(hi)), 0.0, t2) if lo < 0 < hi else 0.0
+    )
+    if pieces > limit:
+        raise ValueError(
+            f"the exact method would sum about {pieces:.2g} band pieces for a spin range "
+            f"{lo:g}:{hi:g} rad/s with flight times up to {t2:g} s (at most {limit:.2g}, "
+            f"~25 s); {_USE_INSTEAD}"
+        )
+
+
+def _closed_form_diameter(
+    x: Distribution, c: float, t: Distribution, limit: float = MAX_PIECES
+) -> float:
     """P(same) for ω_z = 0, one spin ``x`` uniform (or fixed), the other fixed at c."""
     t1, t2 = (t.value, t.value) if isinstance(t, Fixed) else (t.low, t.high)  # type: ignore[attr-defined]
     if isinstance(x, Fixed):
@@ -80,6 +101,7 @@ def _closed_form_diameter(x: Distribution, c: float, t: Distribution) -> float:
         return float(bands.time_average_uniform(w, np.pi / 2, t1, t2))
     assert isinstance(x, Uniform)
     lo, hi = x.low, x.high
+    _check_pieces(x, c, t2, limit)
     total = 0.0
     # The integrand depends on |x| only: fold the negative part onto [0, ∞).
     if hi > 0:
@@ -182,9 +204,11 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         x_name = next(n for n in ranged_spins if isinstance(getattr(dist, n), Uniform))
         c_name = "omega_y" if x_name == "omega_x" else "omega_x"
         x_dist, c_dist = getattr(dist, x_name), getattr(dist, c_name)
+        t_high = t.value if isinstance(t, Fixed) else t.high
+        _check_pieces(x_dist, 0.0, t_high, MAX_PIECES / 1000)
 
         def inner(u: float) -> float:
-            return _closed_form_diameter(x_dist, float(c_dist.ppf(u)), t)
+            return _closed_form_diameter(x_dist, float(c_dist.ppf(u)), t, MAX_PIECES / 1000)
 
         p_same, error = _quad(inner, 1, details)
         how = "closed form in one spin, quadrature in the other"
