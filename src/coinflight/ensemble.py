@@ -26,6 +26,8 @@ FloatArray = NDArray[np.float64]
 
 PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 """Initial conditions in the order used by every estimator (rad/s, rad/s, rad/s, s)."""
+NO_SPIN = Fixed(0.0)
+"""Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
@@ -63,8 +65,8 @@ class TossDistribution:
     """
 
     omega_x: Distribution
-    omega_y: Distribution = Fixed(0.0)
-    omega_z: Distribution = Fixed(0.0)
+    omega_y: Distribution = NO_SPIN
+    omega_z: Distribution = NO_SPIN
     # None until __post_init__ derives it from launch_speed; a Distribution afterwards.
     flight_time: Distribution = None  # type: ignore[assignment]
     coin: Coin = field(default_factory=lambda: Coin.preset(DEFAULT_COIN))
