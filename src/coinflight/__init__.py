@@ -17,8 +17,8 @@ P(heads) over a range of tosses (Stefan & Cheche Fig 2a, 0.497471 by the exact m
 >>> round(estimate(tosses, "exact").p_heads, 6)
 0.497471
 
-The figure functions (``plot_*``) and :func:`convergence` are loaded on first use, so that
-``import coinflight`` does not import matplotlib or SciPy.
+Beyond the one-toss objects, the names are loaded on first use (the figure functions import
+matplotlib only then), so that ``import coinflight`` stays light.
 """
 
 from __future__ import annotations
@@ -27,20 +27,13 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 from coinflight._version import __version__
-from coinflight.bias import same_side_probability
 from coinflight.coin import PRESETS, Coin
-from coinflight.distributions import Distribution, Fixed, Normal, Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.probability import (
-    ProbabilityResult,
-    ProbabilityResults,
-    estimate,
-    estimate_many,
-)
-from coinflight.surface import Drag, Surface
 from coinflight.toss import Flight, FlightState, Outcome, Toss
 
 if TYPE_CHECKING:
+    from coinflight.bias import same_side_probability
+    from coinflight.distributions import Distribution, Fixed, Normal, Uniform
+    from coinflight.ensemble import TossDistribution
     from coinflight.landing import Landing
     from coinflight.plotting.basin import plot_basin
     from coinflight.plotting.bias import plot_bias
@@ -48,18 +41,38 @@ if TYPE_CHECKING:
     from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.forest import plot_forest
     from coinflight.plotting.toss import plot_toss
+    from coinflight.probability import (
+        ProbabilityResult,
+        ProbabilityResults,
+        estimate,
+        estimate_many,
+    )
     from coinflight.probability.convergence import convergence
+    from coinflight.surface import Drag, Surface
 
-# Names loaded on first access (PEP 562): matplotlib for the figures, numba/SciPy on use.
+# Names loaded on first access (PEP 562), so that `import coinflight` (and with it every
+# `coinflight` command, `--help` included) loads only the one-toss objects above.
 _LAZY = {
+    "Distribution": "coinflight.distributions",
+    "Drag": "coinflight.surface",
+    "Fixed": "coinflight.distributions",
     "Landing": "coinflight.landing",
+    "Normal": "coinflight.distributions",
+    "ProbabilityResult": "coinflight.probability",
+    "ProbabilityResults": "coinflight.probability",
+    "Surface": "coinflight.surface",
+    "TossDistribution": "coinflight.ensemble",
+    "Uniform": "coinflight.distributions",
     "convergence": "coinflight.probability.convergence",
+    "estimate": "coinflight.probability",
+    "estimate_many": "coinflight.probability",
     "plot_basin": "coinflight.plotting.basin",
     "plot_bias": "coinflight.plotting.bias",
     "plot_convergence": "coinflight.plotting.convergence",
     "plot_edge": "coinflight.plotting.edge",
     "plot_forest": "coinflight.plotting.forest",
     "plot_toss": "coinflight.plotting.toss",
+    "same_side_probability": "coinflight.bias",
 }
 
 
