@@ -43,6 +43,18 @@ class ProbabilityResult:
         Wall time, s.
     details : dict
         Method options (``grid_cells``, ``replicates``, how ``exact`` integrated, …).
+
+    Examples
+    --------
+    >>> from coinflight import TossDistribution, Uniform, estimate
+    >>> spins = {"omega_x": Uniform(60, 90), "omega_y": 10}
+    >>> tosses = TossDistribution(**spins, flight_time=Uniform(0.6, 0.9))
+    >>> result = estimate(tosses, "exact")  # Stefan & Cheche Fig 3a
+    >>> result.describe()
+    'P(heads) = 0.497212 (closed form)'
+    >>> row = result.to_dict()  # JSON-ready, as coinflight probability --json prints it
+    >>> row["method"], round(row["p_tails"], 6), row["ci95"]
+    ('exact', 0.502788, None)
     """
 
     p_heads: float
