@@ -35,7 +35,7 @@ if TYPE_CHECKING:
     from coinflight.distributions import Distribution, Fixed, Normal, Uniform
     from coinflight.ensemble import TossDistribution
     from coinflight.landing import Landing
-    from coinflight.plotting.basin import plot_basin
+    from coinflight.plotting.basin import basin_map, plot_basin
     from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.edge import plot_edge
@@ -63,6 +63,7 @@ _LAZY = {
     "Surface": "coinflight.surface",
     "TossDistribution": "coinflight.ensemble",
     "Uniform": "coinflight.distributions",
+    "basin_map": "coinflight.plotting.basin",
     "convergence": "coinflight.probability.convergence",
     "estimate": "coinflight.probability",
     "estimate_many": "coinflight.probability",
@@ -106,6 +107,7 @@ __all__ = [
     "TossDistribution",
     "Uniform",
     "__version__",
+    "basin_map",
     "convergence",
     "estimate",
     "estimate_many",
