@@ -108,11 +108,13 @@ class TossDistribution:
         # T = 2 v0 / g is linear in v0: the distribution of v0 scaled by T(v0 = 1 m/s).
         derived = speed.scaled(float(ballistics.flight_time(1.0, self.g)))
         if self.flight_time is not None and self.flight_time != derived:
-            # (dataclasses.replace passes both back; they agree unless one was changed.)
+            # dataclasses.replace passes both back; they agree unless one of them (or g) was
+            # changed, and then the caller must say which one holds.
+            given = as_distribution(self.flight_time, "flight_time").describe("s")
             raise TypeError(
-                "give exactly one of flight_time and launch_speed, not both "
-                f"(flight_time {as_distribution(self.flight_time, 'flight_time').describe('s')}, "
-                f"launch_speed {speed.describe('m/s')})"
+                f"give exactly one of flight_time and launch_speed, not both: flight_time "
+                f"{given} is not 2 v0 / g for launch_speed {speed.describe('m/s')} at "
+                f"g = {self.g:g} m/s² (with dataclasses.replace, set the other one to None)"
             )
         object.__setattr__(self, "launch_speed", speed)
         object.__setattr__(self, "flight_time", derived)
