@@ -12,6 +12,7 @@
 from __future__ import annotations
 
 from dataclasses import KW_ONLY, dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -75,6 +76,21 @@ class TossDistribution:
     _: KW_ONLY
     launch_speed: Distribution | None = field(default=None, compare=False)
 
+    if TYPE_CHECKING:  # what callers may pass (numbers become Fixed); the dataclass builds it
+
+        def __init__(
+            self,
+            omega_x: Distribution | float,
+            omega_y: Distribution | float = NO_SPIN,
+            omega_z: Distribution | float = NO_SPIN,
+            flight_time: Distribution | float | None = None,
+            coin: Coin = ...,
+            start: Start = "heads",
+            g: float = STANDARD_GRAVITY,
+            *,
+            launch_speed: Distribution | float | None = None,
+        ) -> None: ...
+
     def __post_init__(self) -> None:
         for name in PARAMETERS[:3]:
             object.__setattr__(self, name, as_distribution(getattr(self, name), name))
@@ -135,13 +151,13 @@ class TossDistribution:
         The same as ``TossDistribution(omega_x, omega_y, omega_z, launch_speed=...)``.
         """
         return cls(
-            omega_x,  # type: ignore[arg-type]
-            omega_y,  # type: ignore[arg-type]
-            omega_z,  # type: ignore[arg-type]
+            omega_x,
+            omega_y,
+            omega_z,
             coin=coin if coin is not None else Coin.preset(DEFAULT_COIN),
             start=start,
             g=g,
-            launch_speed=launch_speed,  # type: ignore[arg-type]
+            launch_speed=launch_speed,
         )
 
     @property
