@@ -251,4 +251,4 @@ def _largest(dist: Distribution) -> float:
     return max(abs(lo), abs(hi))
 
 
-__all__ = ["PARAMETERS", "TossDistribution", "check_launch_speed"]
+__all__ = ["NO_SPIN", "PARAMETERS", "TossDistribution", "check_launch_speed"]
