@@ -17,14 +17,15 @@ matplotlib.use("Agg")
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE / "_ext"))
 
-import coinflight  # noqa: E402
 from coinflight_cli import write_cli_page  # noqa: E402
+
+import coinflight  # noqa: E402
 
 write_cli_page(HERE / "cli.md")
 
 project = "coinflight"
 author = "coinflight developers"
-copyright = "coinflight developers, MIT licence"  # noqa: A001
+copyright = "coinflight developers, MIT licence"
 version = release = coinflight.__version__
 
 extensions = [
@@ -41,7 +42,6 @@ extensions = [
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "**.ipynb_checkpoints", "tutorials/README.rst", "gallery/README.rst"]
 templates_path: list[str] = []
-default_role = "math"
 nitpicky = False
 
 # -- API reference ------------------------------------------------------------------------
