@@ -18,6 +18,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE / "_ext"))
 
 from coinflight_cli import write_cli_page  # noqa: E402
+from figure_scraper import ReturnedFigures  # noqa: E402
 
 import coinflight  # noqa: E402
 
@@ -63,7 +64,8 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "remove_config_comments": True,
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    # the Figure objects coinflight's functions return, then pyplot's (in this order)
+    "image_scrapers": (ReturnedFigures(), "matplotlib"),
     "abort_on_example_error": True,
     "only_warn_on_example_error": False,
     "show_memory": False,

@@ -17,8 +17,8 @@ from coinflight.plotting.animation import animate_toss
 movie = animate_toss(Coin.preset("us-quarter"), Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7))
 frames = list(movie.rgb_frames(dpi=60))
 picks = np.linspace(0, len(frames) - 1, 4).astype(int)
-fig, axes = plt.subplots(1, 4, figsize=(10, 3.4), layout="constrained")
-for ax, i in zip(axes, picks, strict=True):
+fig, axes = plt.subplots(2, 2, figsize=(10, 7.5), layout="constrained")
+for ax, i in zip(axes.flat, picks, strict=True):
     ax.imshow(frames[i])
     ax.set_title(f"t = {movie.times[i]:.2f} s")
     ax.axis("off")

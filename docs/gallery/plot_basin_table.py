@@ -15,6 +15,7 @@ from coinflight.surface import Surface
 
 coin = Coin.preset("us-quarter")
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)
+figures = []
 for bounces in (0, 1, 2):
     basin = basin_map(
         coin,
@@ -23,4 +24,5 @@ for bounces in (0, 1, 2):
         resolution=(150, 120),
         outcome=table_faces(surface, max_bounces=bounces),
     )
-    plot_basin(basin, boundaries=False, ending=f"on a table 0.3 m below, after {bounces} bounces")
+    ending = f"on a table 0.3 m below, after {bounces} bounces"
+    figures.append(plot_basin(basin, boundaries=False, ending=ending))
