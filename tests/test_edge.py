@@ -60,10 +60,10 @@ def test_bad_input(call, match):
 
 
 def test_figure_curves_cross_one_third_at_the_marked_ratios(tmp_path):
-    from coinflight.plotting.edge import edge_figure
+    from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.style import EDGE_COLOR, save_figure
 
-    fig = edge_figure()
+    fig = plot_edge()
     ax = fig.axes[0]
     curves = [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 2]
     marks = sorted(

@@ -102,6 +102,14 @@ def same_side_probability(psi: ArrayLike, *, degrees: bool = False) -> FloatArra
     -----
     p(ψ) = 1/2 + (1/π) arcsin(cot²ψ) for π/4 ≤ ψ ≤ 3π/4, else 1 (Diaconis, Holmes & Montgomery
     2007, section 2; REFERENCES §2), valid when the phase ωp T spreads over many turns.
+
+    Examples
+    --------
+    Diaconis, Holmes & Montgomery's values: ψ = 60° → 0.608, 80° → 0.510, 90° → 1/2, and a
+    coin that only wobbles (ψ < 45°) always lands as it started:
+
+    >>> same_side_probability([60.0, 80.0, 90.0, 30.0], degrees=True).round(3)
+    array([0.608, 0.51 , 0.5  , 1.   ])
     """
     return precession.same_side(check_psi(psi, degrees=degrees))
 

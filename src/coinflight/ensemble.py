@@ -1,28 +1,33 @@
 """A distribution of tosses: each initial condition fixed, ranged or random.
 
 >>> from coinflight.distributions import Uniform
->>> d = TossDistribution(omega_x=Uniform(60, 90), omega_y=0, omega_z=0,
-...                      flight_time=Uniform(0.6, 0.9))
->>> d.ranged
+>>> d = TossDistribution(omega_x=Uniform(60, 90), flight_time=Uniform(0.6, 0.9))
+>>> d.ranged  # omega_y and omega_z default to 0 rad/s, as on the command line
 ('omega_x', 'flight_time')
+>>> d = TossDistribution(omega_x=80.0, launch_speed=Uniform(2.0, 3.0))  # v0 in m/s
+>>> d.flight_time.describe("s")  # T = 2 v0 / g, g = 9.81 m/s²
+'0.407747–0.611621 s'
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
 from coinflight.coin import DEFAULT_COIN, Coin
+from coinflight.core import ballistics
 from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
-from coinflight.toss import GRAVITY, STANDARD_GRAVITY, Start, check_gravity
+from coinflight.toss import STANDARD_GRAVITY, Start, check_gravity
 
 FloatArray = NDArray[np.float64]
 
 PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 """Initial conditions in the order used by every estimator (rad/s, rad/s, rad/s, s)."""
+NO_SPIN = Fixed(0.0)
+"""Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
@@ -38,15 +43,20 @@ class TossDistribution:
     ----------
     omega_x, omega_y, omega_z : Distribution or float
         Body-frame spin components at launch, rad/s (x, y diameters; z the normal). A number
-        means a fixed value.
+        means a fixed value; ``omega_y`` and ``omega_z`` default to 0 (as on the command line).
     flight_time : Distribution or float
-        Flight time T = 2 v0 / g, s; must be positive with certainty.
+        Flight time T = 2 v0 / g, s; must be positive with certainty. Give exactly one of
+        ``flight_time`` and ``launch_speed``.
     coin : Coin
         The coin (default the US quarter).
     start : {"heads", "tails"}
         Face up at launch.
     g : float
         Gravitational acceleration, m/s².
+    launch_speed : Distribution or float, keyword only
+        The launch speed v0 of the centre of mass, m/s, instead of ``flight_time``: the flight
+        time becomes T = 2 v0 / g (Stefan & Cheche eq 11, :func:`coinflight.core.ballistics.
+        flight_time`). Kept on the object for reference; equality compares the flight times.
 
     Notes
     -----
@@ -55,18 +65,22 @@ class TossDistribution:
     """
 
     omega_x: Distribution
-    omega_y: Distribution
-    omega_z: Distribution
-    flight_time: Distribution
+    omega_y: Distribution = NO_SPIN
+    omega_z: Distribution = NO_SPIN
+    # None until __post_init__ derives it from launch_speed; a Distribution afterwards.
+    flight_time: Distribution = None  # type: ignore[assignment]
     coin: Coin = field(default_factory=lambda: Coin.preset(DEFAULT_COIN))
     start: Start = "heads"
     g: float = STANDARD_GRAVITY
+    _: KW_ONLY
+    launch_speed: Distribution | None = field(default=None, compare=False)
 
     def __post_init__(self) -> None:
-        for name in PARAMETERS:
+        for name in PARAMETERS[:3]:
             object.__setattr__(self, name, as_distribution(getattr(self, name), name))
         v.choice("start", self.start, ("heads", "tails"))
         object.__setattr__(self, "g", check_gravity(self.g))
+        self._set_flight_time()
         if not isinstance(self.coin, Coin):
             raise TypeError(f"coin must be a Coin, got {self.coin!r}")
         t = self.flight_time
@@ -81,6 +95,30 @@ class TossDistribution:
         spin = max(_largest(getattr(self, name)) for name in PARAMETERS[:3])
         v.phase_budget(spin, _largest(t), "largest spin component × largest flight time")
 
+    def _set_flight_time(self) -> None:
+        """``flight_time`` as a Distribution, from itself or from ``launch_speed`` (not both)."""
+        if self.launch_speed is None:
+            if self.flight_time is None:
+                raise TypeError("give one of flight_time (s) and launch_speed (m/s)")
+            object.__setattr__(
+                self, "flight_time", as_distribution(self.flight_time, "flight_time")
+            )
+            return
+        speed = check_launch_speed(as_distribution(self.launch_speed, "launch_speed"))
+        # T = 2 v0 / g is linear in v0: the distribution of v0 scaled by T(v0 = 1 m/s).
+        derived = speed.scaled(float(ballistics.flight_time(1.0, self.g)))
+        if self.flight_time is not None and self.flight_time != derived:
+            # dataclasses.replace passes both back; they agree unless one of them (or g) was
+            # changed, and then the caller must say which one holds.
+            given = as_distribution(self.flight_time, "flight_time").describe("s")
+            raise TypeError(
+                f"give exactly one of flight_time and launch_speed, not both: flight_time "
+                f"{given} is not 2 v0 / g for launch_speed {speed.describe('m/s')} at "
+                f"g = {self.g:g} m/s² (with dataclasses.replace, set the other one to None)"
+            )
+        object.__setattr__(self, "launch_speed", speed)
+        object.__setattr__(self, "flight_time", derived)
+
     @classmethod
     def from_launch_speed(
         cls,
@@ -92,17 +130,18 @@ class TossDistribution:
         start: Start = "heads",
         g: float = STANDARD_GRAVITY,
     ) -> TossDistribution:
-        """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11)."""
-        gg = GRAVITY.check(g)  # the range; __post_init__ warns if g is unusual
-        speed = check_launch_speed(as_distribution(launch_speed, "launch_speed"))
+        """From the launch speed v0 (m/s) instead of the flight time: T = 2 v0 / g (eq 11).
+
+        The same as ``TossDistribution(omega_x, omega_y, omega_z, launch_speed=...)``.
+        """
         return cls(
             omega_x,  # type: ignore[arg-type]
             omega_y,  # type: ignore[arg-type]
             omega_z,  # type: ignore[arg-type]
-            speed.scaled(2.0 / gg),
             coin=coin if coin is not None else Coin.preset(DEFAULT_COIN),
             start=start,
-            g=gg,
+            g=g,
+            launch_speed=launch_speed,  # type: ignore[arg-type]
         )
 
     @property

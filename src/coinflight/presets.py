@@ -148,12 +148,12 @@ def preset(
     if "flight_time" in overrides and "launch_speed" in overrides:
         raise ValueError("give at most one of flight_time and launch_speed")
     dist = factory(coin=coin, start=start, g=g)
-    changes: dict[str, Any] = {k: as_distribution(val) for k, val in overrides.items()}
+    changes: dict[str, Any] = {k: as_distribution(val, k) for k, val in overrides.items()}
+    # The flight time given replaces the preset's launch speed, and the other way round.
     if "launch_speed" in changes:
-        spins = {k: changes.get(k, getattr(dist, k)) for k in OVERRIDABLE[:3]}
-        return TossDistribution.from_launch_speed(
-            **spins, launch_speed=changes["launch_speed"], coin=dist.coin, start=start, g=dist.g
-        )
+        changes["flight_time"] = None
+    elif "flight_time" in changes:
+        changes["launch_speed"] = None
     return dataclasses.replace(dist, **changes) if changes else dist
 
 

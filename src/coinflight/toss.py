@@ -59,7 +59,8 @@ class Toss:
 
     Examples
     --------
-    >>> Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7).launch_speed
+    >>> toss = Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7)
+    >>> float(toss.launch_speed)  # v0 = g T / 2 with g = 9.81 m/s²
     3.4335
     """
 

@@ -22,7 +22,7 @@ app = typer.Typer(
     name="coinflight",
     help="The physics of coin tossing: torque-free flight, probabilities, bias, bounces.",
     invoke_without_command=True,
-    add_completion=False,
+    add_completion=True,
     pretty_exceptions_enable=False,
     context_settings={"help_option_names": ["-h", "--help"]},
 )
@@ -61,4 +61,4 @@ app.command("paper")(_paper.paper)
 
 def main() -> None:
     """Console-script entry point."""
-    app()
+    app(prog_name="coinflight")  # also under python -m: completion keys on this name

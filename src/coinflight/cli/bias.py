@@ -283,7 +283,7 @@ def plot_bias(
     """
     from coinflight import bias as b
     from coinflight.cli.figures import parse_numbers
-    from coinflight.plotting.bias import bias_figure
+    from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.style import figure_paths, save_figure
 
     figure_paths(out, "--out")  # before the simulation, not after
@@ -301,7 +301,7 @@ def plot_bias(
     psi_measured = None
     if measured is not None:
         psi_measured = float(b.psi_for_probability(measured, degrees=True))
-    for p in save_figure(bias_figure(simulated, measured, psi_measured), out, dpi=dpi):
+    for p in save_figure(plot_bias(simulated, measured, psi_measured), out, dpi=dpi):
         typer.echo(f"wrote {p}")
     if measured is not None and psi_measured is not None:
         typer.echo(f"measured P(same side) = {measured:g} needs a fixed ψ = {psi_measured:.2f}°")

@@ -127,7 +127,7 @@ def convergence(
     Example (the paper's Fig 2a): coinflight convergence --omega-x 60:90 --flight-time 0.6:0.9
     --seed 1 --out fig2a
     """
-    from coinflight.plotting.convergence import convergence_figure
+    from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.style import save_figure
     from coinflight.probability.convergence import convergence as run
     from coinflight.probability.convergence import work_total
@@ -176,7 +176,7 @@ def convergence(
             **sizes,  # type: ignore[arg-type]
         )
     written = result.write(prefix)
-    fig = convergence_figure(result)
+    fig = plot_convergence(result)
     written += save_figure(fig, prefix.with_name(prefix.name + ".png"))
     written += save_figure(fig, prefix.with_name(prefix.name + ".svg"))
     if json_output:

@@ -73,10 +73,10 @@ def data(
     summary = summarize(table, interval, math.radians(psi_sd))
     written = []
     if plot is not None:
-        from coinflight.plotting.forest import forest_figure
+        from coinflight.plotting.forest import plot_forest
         from coinflight.plotting.style import save_figure
 
-        written = save_figure(forest_figure(summary), plot)
+        written = save_figure(plot_forest(summary), plot)
     same, heads, fit = summary.same_side, summary.heads, summary.psi
     psi_deg = None if fit.psi is None else math.degrees(fit.psi)
     psi_ci = None if fit.ci95 is None else [math.degrees(x) for x in fit.ci95]

@@ -68,7 +68,7 @@ def plot_edge(
     Example: coinflight plot edge --out edge.png --simulate 4000 --seed 1
     """
     from coinflight.edge import MODELS, ratio_for, simulate_edge
-    from coinflight.plotting.edge import edge_figure
+    from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.style import figure_paths, save_figure
 
     figure_paths(out, "--out")  # before the simulation, not after
@@ -77,7 +77,7 @@ def plot_edge(
     if simulate is not None:
         points = parse_numbers(ratios or RATIOS, "--ratios", "0.2,0.5,1")
         simulated = simulate_edge(points, simulate, the_seed)
-    figure = edge_figure(simulated, max_ratio)
+    figure = plot_edge(simulated, max_ratio)
     for path in save_figure(figure, out, dpi=dpi):
         typer.echo(f"wrote {path}")
     for model in MODELS:

@@ -14,7 +14,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
-def bias_figure(
+def plot_bias(
     simulated: Sequence[tuple[float, SameSideEstimate]] = (),
     measured: float | None = None,
     psi_measured: float | None = None,
@@ -85,3 +85,6 @@ def bias_figure(
     )
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.9), fontsize="x-small")
     return fig
+
+
+__all__ = ["plot_bias"]

@@ -18,7 +18,7 @@ LABELS = {
 }
 
 
-def convergence_figure(result: Convergence, title: str | None = None) -> Figure:
+def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     """P(heads) against the number of configurations or events, log x axis.
 
     Grid estimates are exact counts (no error bar); Monte Carlo and QMC carry 95 % intervals.
@@ -64,3 +64,6 @@ def convergence_figure(result: Convergence, title: str | None = None) -> Figure:
     ax.set_title(title or "Probability of heads as the sample grows")
     ax.legend(fontsize="small")
     return fig
+
+
+__all__ = ["plot_convergence"]

@@ -26,7 +26,7 @@ EXACT_RATIOS = {
 """Yong & Mahadevan's printed ratios for P(edge) = 1/3 (REFERENCES §5), for the labels."""
 
 
-def edge_figure(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) -> Figure:
+def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) -> Figure:
     """P(edge) against h/d for Yong & Mahadevan's two models, the ratios for 1/3 marked.
 
     Parameters
@@ -95,4 +95,4 @@ def edge_figure(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0
     return fig
 
 
-__all__ = ["edge_figure"]
+__all__ = ["plot_edge"]

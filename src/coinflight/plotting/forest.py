@@ -13,7 +13,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
-def forest_figure(summary: CountsSummary, p_model: float | None = None) -> Figure:
+def plot_forest(summary: CountsSummary, p_model: float | None = None) -> Figure:
     """Each person's same-side rate with its 95 % interval, and the pooled rate as a diamond.
 
     Parameters
@@ -68,3 +68,6 @@ def forest_figure(summary: CountsSummary, p_model: float | None = None) -> Figur
         fontsize="medium",
     )
     return fig
+
+
+__all__ = ["plot_forest"]

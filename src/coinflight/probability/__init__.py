@@ -1,9 +1,7 @@
 """Probability of heads over a distribution of tosses: one entry point, four methods.
 
 >>> from coinflight.distributions import Uniform
->>> from coinflight import _validation as v
-from coinflight.ensemble import TossDistribution
-from coinflight.probability._runner import check_count, check_runner
+>>> from coinflight.ensemble import TossDistribution
 >>> d = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 >>> round(estimate(d, "exact").p_heads, 6)
 0.497471
@@ -19,6 +17,8 @@ Methods (one module each):
     grid of 100 cells per parameter).
 ``qmc``
     Scrambled Sobol points with a randomised error estimate.
+
+:func:`estimate_many` runs one method over a list of distributions (a sweep).
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import check_count, check_runner
 from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult, wilson_interval
+from coinflight.probability.sweep import ProbabilityResults, estimate_many
 
 METHODS = ("exact", "grid", "monte-carlo", "qmc")
 PAPER_B_CELLS = 100
@@ -135,8 +136,10 @@ __all__ = [
     "HandCatch",
     "OutcomeModel",
     "ProbabilityResult",
+    "ProbabilityResults",
     "TossDistribution",
     "convergence",
     "estimate",
+    "estimate_many",
     "wilson_interval",
 ]

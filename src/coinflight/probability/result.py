@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -40,6 +43,18 @@ class ProbabilityResult:
         Wall time, s.
     details : dict
         Method options (``grid_cells``, ``replicates``, how ``exact`` integrated, …).
+
+    Examples
+    --------
+    >>> from coinflight import TossDistribution, Uniform, estimate
+    >>> spins = {"omega_x": Uniform(60, 90), "omega_y": 10}
+    >>> tosses = TossDistribution(**spins, flight_time=Uniform(0.6, 0.9))
+    >>> result = estimate(tosses, "exact")  # Stefan & Cheche Fig 3a
+    >>> result.describe()
+    'P(heads) = 0.497212 (closed form)'
+    >>> row = result.to_dict()  # JSON-ready, as coinflight probability --json prints it
+    >>> row["method"], round(row["p_tails"], 6), row["ci95"]
+    ('exact', 0.502788, None)
     """
 
     p_heads: float
@@ -70,6 +85,24 @@ class ProbabilityResult:
             }
         return out
 
+    def to_row(self) -> dict[str, Any]:
+        """One flat row for a table: the fields of :meth:`to_dict` with ``ci95`` as
+        ``ci95_low``/``ci95_high``, ``counts`` as ``tails``/``heads``/``edge`` and each detail as
+        ``details.KEY`` (None where the method has none)."""
+        out = self.to_dict()
+        ci = out.pop("ci95")
+        counts = out.pop("counts")
+        details = out.pop("details")
+        out["ci95_low"], out["ci95_high"] = ci if ci is not None else (None, None)
+        for face in ("tails", "heads", "edge"):
+            out[face] = None if counts is None else counts[face]
+        out.update({f"details.{key}": value for key, value in details.items()})
+        return out
+
+    def to_frame(self) -> pd.DataFrame:
+        """A one-row pandas DataFrame of :meth:`to_row` (needs ``pip install pandas``)."""
+        return require_pandas().DataFrame([self.to_row()])
+
     def describe(self) -> str:
         """The probability with its uncertainty, readable at a glance."""
         p = self.p_heads
@@ -82,6 +115,17 @@ class ProbabilityResult:
         else:
             unc = ""
         return f"P(heads) = {p:.6f}{unc}"
+
+
+def require_pandas() -> Any:
+    """The pandas module, or an ImportError saying how to install it (it is optional)."""
+    try:
+        import pandas
+    except ImportError:
+        raise ImportError(
+            "DataFrames need pandas, which coinflight does not install: pip install pandas"
+        ) from None
+    return pandas
 
 
 Z95 = 1.959963984540054

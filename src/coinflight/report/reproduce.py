@@ -80,7 +80,7 @@ def reproduce_paper(
     step : callable, optional
         Called with a description after each of :data:`STEPS` steps (a progress bar).
     """
-    from coinflight.plotting.convergence import convergence_figure
+    from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.style import save_figure
     from coinflight.plotting.toss import plot_toss
     from coinflight.toss import Toss
@@ -103,7 +103,7 @@ def reproduce_paper(
                 f"ωy0 = {c.omega_y:g} rad/s, ωz0 = 0, T ∈ [{c.flight_time[0]:g}, "
                 f"{c.flight_time[1]:g}] s\n{coin.name} tossed heads up and caught"
             )
-            fig = convergence_figure(row.convergence, title)
+            fig = plot_convergence(row.convergence, title)
             fig.axes[0].set_title(title, fontsize=10.5)
             files += save_figure(fig, stage / f"fig{c.figure}", formats)
             done(f"Fig {c.figure}")
