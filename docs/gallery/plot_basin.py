@@ -8,8 +8,7 @@ fraction of heads cells is the grid method's probability on the same grid.
 (``coinflight plot basin --omega-x 60:90 --flight-time 0.6:0.9``)
 """
 
-from coinflight import Coin
-from coinflight.plotting.basin import basin_map, plot_basin
+from coinflight import Coin, basin_map, plot_basin
 
 basin = basin_map(Coin.preset("us-quarter"), flight_time=(0.6, 0.9), spin=(60.0, 90.0))
 print(f"heads fraction on the grid: {basin.heads_fraction:.6f}")

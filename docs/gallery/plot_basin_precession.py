@@ -10,8 +10,7 @@ rates ωp: it lands on the side it started on far more often than not, p(60°) =
 
 import math
 
-from coinflight import Coin
-from coinflight.plotting.basin import basin_map, plot_basin
+from coinflight import Coin, basin_map, plot_basin
 
 basin = basin_map(
     Coin.preset("us-quarter"),

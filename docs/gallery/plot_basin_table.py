@@ -8,10 +8,8 @@ friction 0.3). The boundaries stay smooth but grow more intricate with each boun
 et al. 2008). (``coinflight plot basin --surface table --drop-height 0.3 --bounces K``)
 """
 
-from coinflight import Coin
+from coinflight import Coin, Surface, basin_map, plot_basin
 from coinflight.landing import table_faces
-from coinflight.plotting.basin import basin_map, plot_basin
-from coinflight.surface import Surface
 
 coin = Coin.preset("us-quarter")
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)

@@ -8,10 +8,10 @@ the rate measured over 350,757 flips. (``coinflight plot bias --monte-carlo 2000
 --measured 0.5077``)
 """
 
+from coinflight import plot_bias
 from coinflight.bias import psi_for_probability, simulate_same_side
-from coinflight.plotting.bias import bias_figure
 
 measured = 0.5077  # Bartoš et al. 2025: 178,078 of 350,757 flips
 psi = float(psi_for_probability(measured, degrees=True))
 simulated = [(p, simulate_same_side(p, n=5000, seed=1, degrees=True)) for p in (50, 60, 70, 80)]
-fig = bias_figure(simulated, measured=measured, psi_measured=psi)
+fig = plot_bias(simulated, measured=measured, psi_measured=psi)

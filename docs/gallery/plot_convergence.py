@@ -8,10 +8,7 @@ Sizes are kept small so that this page builds quickly. (``coinflight convergence
 --omega-x 60:90 --omega-y 60 --flight-time 0.6:0.9 --out fig3b``)
 """
 
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.plotting.convergence import convergence_figure
-from coinflight.probability.convergence import convergence
+from coinflight import TossDistribution, Uniform, convergence, plot_convergence
 
 fig3b = TossDistribution(
     omega_x=Uniform(60.0, 90.0), omega_y=60.0, omega_z=0.0, flight_time=Uniform(0.6, 0.9)
@@ -23,4 +20,4 @@ result = convergence(
     event_sizes=[100, 1_000, 10_000, 100_000],
     seed=1,
 )
-fig = convergence_figure(result)
+fig = plot_convergence(result)

@@ -10,9 +10,9 @@ has: *for my coin and the way I toss, what is the chance of heads?*
 # %%
 # One toss
 # --------
-# A :class:`~coinflight.Toss` is the launch: the body-frame spin ω0 in rad/s (x and y about
+# A :class:`~coinflight.toss.Toss` is the launch: the body-frame spin ω0 in rad/s (x and y about
 # diameters, z about the normal) and the flight time T in s (or ``launch_speed=`` v0 in m/s,
-# T = 2 v0 / g). A :class:`~coinflight.Flight` solves the flight in closed form.
+# T = 2 v0 / g). A :class:`~coinflight.toss.Flight` solves the flight in closed form.
 import numpy as np
 
 from coinflight import Coin, Flight, Toss
@@ -52,14 +52,10 @@ print(mine.describe())
 # :class:`~coinflight.distributions.Normal`, and :func:`~coinflight.probability.estimate`
 # turns it into a probability. ``"exact"`` integrates over Keller's heads bands, with no
 # sampling error.
-from coinflight.distributions import Normal, Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.probability import estimate
+from coinflight import Normal, TossDistribution, Uniform, estimate
 
 my_tosses = TossDistribution(
     omega_x=Uniform(150.0, 250.0),  # rad/s, about 24-40 rev/s
-    omega_y=0.0,
-    omega_z=0.0,
     flight_time=Normal(0.5, 0.05),  # s
     coin=mine,
 )
@@ -76,6 +72,6 @@ print(f"P(heads) = {mc.p_heads:.4f} ± {mc.stderr:.4f} (s.e.), 95 % CI {mc.ci95}
 # ---------------------
 # :func:`~coinflight.plotting.toss.plot_toss` draws the coin at launch and at the catch, with n
 # and S, and the path of n on the unit sphere.
-from coinflight.plotting.toss import plot_toss
+from coinflight import plot_toss
 
 fig = plot_toss(quarter, Toss(omega=(80.0, 0.0, 12.0), flight_time=0.7))

@@ -13,8 +13,7 @@ state. ``coinflight paper --out paper/`` writes all of them with a report.
 # ----------------------------------------------
 # ωx0 = 80 rad/s, T = 0.7 s, and ωx0 = 120 rad/s, T = 0.9 s. The paper states 8.913 and
 # 17.189 rotations.
-from coinflight import Coin, Flight, Toss
-from coinflight.plotting.toss import plot_toss
+from coinflight import Coin, Flight, Toss, plot_toss
 
 quarter = Coin.preset("us-quarter")
 for spin, t in [(80.0, 0.7), (120.0, 0.9)]:
@@ -46,14 +45,9 @@ fig = plot_toss(quarter, batch, title="Figs 3c-f")
 # grid of 100 cells per parameter. :func:`~coinflight.probability.convergence.convergence`
 # runs both for growing sizes next to the exact value (small sizes here, so that this page
 # builds in seconds; the paper goes to 5000² configurations).
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.plotting.convergence import convergence_figure
-from coinflight.probability.convergence import convergence
+from coinflight import TossDistribution, Uniform, convergence, plot_convergence
 
-fig2a = TossDistribution(
-    omega_x=Uniform(60.0, 90.0), omega_y=0.0, omega_z=0.0, flight_time=Uniform(0.6, 0.9)
-)
+fig2a = TossDistribution(omega_x=Uniform(60.0, 90.0), flight_time=Uniform(0.6, 0.9))
 result = convergence(
     fig2a,
     ["grid", "monte-carlo"],
@@ -62,7 +56,7 @@ result = convergence(
     seed=1,
 )
 print(f"exact P(heads) = {result.exact:.6f}")
-fig = convergence_figure(result, title="Fig 2a: ωx0 ∈ [60, 90] rad/s, T ∈ [0.6, 0.9] s")
+fig = plot_convergence(result, title="Fig 2a: ωx0 ∈ [60, 90] rad/s, T ∈ [0.6, 0.9] s")
 
 # %%
 # The basin behind the numbers
@@ -70,7 +64,7 @@ fig = convergence_figure(result, title="Fig 2a: ωx0 ∈ [60, 90] rad/s, T ∈ [
 # Each configuration of Fig 2a's box ends heads or tails; the map of faces over (T, ωx0) shows
 # Keller's hyperbolas ωT = (2k ± ½)π as the boundaries. Its fraction of heads cells is
 # method A's estimate on the same grid.
-from coinflight.plotting.basin import basin_map, plot_basin
+from coinflight import basin_map, plot_basin
 
 basin = basin_map(quarter, flight_time=(0.6, 0.9), spin=(60.0, 90.0), resolution=(300, 300))
 fig = plot_basin(basin)

@@ -21,9 +21,7 @@ qmc         scrambled Sobol points                         spread of scramblings
 # ------------------------------
 # The founding paper's Fig 3a: ωx0 uniform on 60-90 rad/s, ωy0 = 10 rad/s, T uniform on
 # 0.6-0.9 s.
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.probability import estimate
+from coinflight import TossDistribution, Uniform, estimate
 
 fig3a = TossDistribution(
     omega_x=Uniform(60.0, 90.0), omega_y=10.0, omega_z=0.0, flight_time=Uniform(0.6, 0.9)
@@ -85,7 +83,7 @@ print(
 # normal as well (a precessing coin) are handled by the same call. The exact method handles
 # precession too, but integrates over four parameters (tens of seconds); Monte Carlo gives
 # the answer to ±0.001 at once.
-from coinflight.distributions import Normal
+from coinflight import Normal
 
 natural = TossDistribution(
     omega_x=Normal(238.8, 23.9),

@@ -61,6 +61,6 @@ print(f"measured {measured:.5f} -> psi = {psi_measured:.2f} deg")
 
 # %%
 # The curve p(ψ) with the measured rate and its ψ marked:
-from coinflight.plotting.bias import bias_figure
+from coinflight import plot_bias
 
-fig = bias_figure(measured=measured, psi_measured=psi_measured)
+fig = plot_bias(measured=measured, psi_measured=psi_measured)

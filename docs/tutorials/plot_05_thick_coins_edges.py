@@ -39,13 +39,13 @@ print(f"US nickel h/d = {nickel.thickness / nickel.diameter:.3f}")
 # :func:`~coinflight.edge.simulate_edge` tosses cylinders of each ratio with the full flight
 # and lands them dead (restitution 0) on a table: the dynamic model's setting. A few hundred
 # tosses per ratio keep this page quick; the error bars are ±2 standard errors.
+from coinflight import plot_edge
 from coinflight.edge import simulate_edge
-from coinflight.plotting.edge import edge_figure
 
 simulated = simulate_edge([0.1, 0.2, 0.3, 0.4, 0.6, 0.8], n=300, seed=1)
 for s in simulated:
     print(f"h/d = {s.ratio:.1f}: {s.edges} of {s.n} on edge = {s.p_edge:.3f} ± {s.stderr:.3f}")
-fig = edge_figure(simulated)
+fig = plot_edge(simulated)
 
 # %%
 # On a hard table a coin also bounces, and bouncing changes the answer (see

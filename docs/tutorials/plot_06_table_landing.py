@@ -15,9 +15,7 @@ band over plausible e and μ. This tutorial computes that band.
 # A :class:`~coinflight.landing.Landing` flies the coin exactly (torque-free precession plus
 # ballistics), finds each contact by root finding, applies a Newton-Coulomb impulse and
 # stops when the coin has settled: heads, tails or edge.
-from coinflight import Coin, Toss
-from coinflight.landing import Landing
-from coinflight.surface import Surface
+from coinflight import Coin, Landing, Surface, Toss
 
 nickel = Coin.preset("us-nickel")
 toss = Toss.from_launch_speed(omega=(240.0, 5.0, 3.0), launch_speed=2.4)
@@ -38,15 +36,11 @@ for e in (0.2, 0.4, 0.6):
 # surface's, not the sampling's.
 import numpy as np
 
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight import TossDistribution, Uniform, estimate
 from coinflight.landing import TableLanding
-from coinflight.probability import estimate
 
-tosses = TossDistribution.from_launch_speed(
+tosses = TossDistribution(
     omega_x=Uniform(150.0, 300.0),
-    omega_y=0.0,
-    omega_z=0.0,
     launch_speed=Uniform(1.5, 3.0),
     coin=nickel,
 )
@@ -88,8 +82,8 @@ fig.suptitle("US nickel onto a table 0.8 m below, ωx 150-300 rad/s, v0 1.5-3 m/
 # ------------------------
 # Strzałko et al. map heads and tails over (launch speed, spin) after 0, 1, 2, … impacts; the
 # boundaries are smooth but grow more intricate with every bounce. Here, after one bounce:
+from coinflight import basin_map, plot_basin
 from coinflight.landing import table_faces
-from coinflight.plotting.basin import basin_map, plot_basin
 
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)
 basin = basin_map(
