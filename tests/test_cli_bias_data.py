@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from importlib.resources import files
 from pathlib import Path
 
 import pytest
@@ -13,7 +14,8 @@ from coinflight import bias as b
 from coinflight.cli import app
 from coinflight.distributions import Normal
 
-BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+# The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
+BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
 
 
 def run(*args):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from importlib.resources import files
 from pathlib import Path
 
 import pytest
@@ -11,25 +12,29 @@ from coinflight import bias as b
 from coinflight import data as d
 from coinflight.distributions import Normal
 
-# The shared data file sits beside the repository (../shared/data); the project ships no copy.
-BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+# The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
+BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
 
 HEADER = "person hsame hdiff tsame tdiff same flips"
 
 
 @pytest.fixture(scope="module")
 def table():
-    assert BARTOS.is_file(), f"shared data file missing: {BARTOS} (clone ../shared beside repo)"
-    return d.read_counts(BARTOS)
+    return d.load_dataset("bartos2023")
 
 
 def test_pooled_counts(table):
-    # REFERENCES §6 / the issue: 178,078 same-side of 350,757 flips by 48 people.
+    # REFERENCES §6 / the issue: 178,078 same-side of 350,757 flips by 48 people; 175,420 heads
+    # (the sums of the metadat table's columns, checked against /work/shared's reference copy
+    # when it was copied in, SHA-256 in coinflight/datasets/README.md).
     assert len(table.rows) == 48
     assert table.flips == 350_757
     assert table.same == 178_078
-    # Heads = hsame + hdiff, summed over the file's columns.
-    assert table.heads == sum(r.hsame + r.hdiff for r in table.rows)
+    assert table.heads == 175_420
+    # The same totals from the rows one by one (hsame + tsame, hsame + hdiff).
+    assert sum(r.hsame + r.tsame for r in table.rows) == 178_078
+    assert sum(r.hsame + r.hdiff for r in table.rows) == 175_420
+    assert table.source == "bartos2023"
 
 
 @pytest.mark.parametrize("method", ["exact", "wilson"])
