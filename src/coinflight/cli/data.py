@@ -91,7 +91,7 @@ def data(
         name = DEFAULT_DATASET if dataset is None else dataset
         table = load_dataset(name)
         shipped = DATASETS[name]
-        source = f"{name} (Bartoš et al. 2023, doi:{shipped.doi})"
+        source = f"{name} ({shipped.short}, doi:{shipped.doi})"
         described: dict[str, Any] = {
             "dataset": name,
             "source": name,

@@ -29,6 +29,8 @@ class Dataset:
         The file inside this package.
     title : str
         One line saying what it is.
+    short : str
+        The citation in a few words, for a line of output ("Bartoš et al. 2023").
     citation : str
         The publication to cite.
     doi : str
@@ -40,6 +42,7 @@ class Dataset:
     name: str
     filename: str
     title: str
+    short: str
     citation: str
     doi: str
     provenance: str
@@ -54,6 +57,7 @@ DATASETS: dict[str, Dataset] = {
         name="bartos2023",
         filename="bartos2023.txt",
         title="350,757 coin flips by 48 people, per person, by starting and landing face",
+        short="Bartoš et al. 2023",
         citation=(
             "Bartoš, F. et al. (2025). Fair coins tend to land on the same side they started: "
             "Evidence from 350,757 flips. Journal of the American Statistical Association. "
