@@ -26,7 +26,7 @@ def table():
 
 def test_pooled_counts(table):
     # REFERENCES §6 / the issue: 178,078 same-side of 350,757 flips by 48 people; 175,420 heads
-    # (the sums of the metadat table's columns, checked against /work/shared's reference copy
+    # (the sums of the metadat table's columns, as checked when the table was copied in; its
     # when it was copied in, SHA-256 in coinflight/datasets/README.md).
     assert len(table.rows) == 48
     assert table.flips == 350_757
