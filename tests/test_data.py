@@ -27,7 +27,7 @@ def table():
 def test_pooled_counts(table):
     # REFERENCES §6 / the issue: 178,078 same-side of 350,757 flips by 48 people; 175,420 heads
     # (the sums of the metadat table's columns, as checked when the table was copied in; its
-    # when it was copied in, SHA-256 in coinflight/datasets/README.md).
+    # SHA-256 is in coinflight/datasets/README.md).
     assert len(table.rows) == 48
     assert table.flips == 350_757
     assert table.same == 178_078
