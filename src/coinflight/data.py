@@ -312,9 +312,8 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
 def _parse_integers(values: list[list[str]], linenos: list[int], source: str) -> NDArray[np.int64]:
     """The count columns as an (n, 6) int64 array, each in [0, MAX_FLIPS]; else ValueError
     naming the line, the column and the text."""
-    digits = len(str(MAX_FLIPS))
     try:
-        counts = np.array(values, dtype=np.int64)
+        counts = np.array(values, dtype=np.int64)  # Python's int() rules, as one array
     except (ValueError, OverflowError):
         pass  # the slow path below names the fault
     else:
@@ -323,19 +322,22 @@ def _parse_integers(values: list[list[str]], linenos: list[int], source: str) ->
     for row, lineno in zip(values, linenos, strict=True):  # the slow path: find the fault
         for name, text_value in zip(COLUMNS[1:], row, strict=True):
             where = f"{source}, line {lineno}"
-            if not (text_value.isascii() and text_value.lstrip("+-").isdigit()):
+            shown = text_value
+            if len(text_value) > 40:
+                shown = f"{text_value[:40]}… ({len(text_value)} characters)"
+            try:
+                value = int(text_value)  # ≤ MAX_LINE_CHARS digits: below int()'s own limit
+            except ValueError:
                 raise ValueError(
-                    f"{where}: {name} must be a non-negative integer, got {text_value!r:.40}"
-                )
-            if text_value.startswith("-"):
+                    f"{where}: {name} must be a non-negative integer, got {shown!r}"
+                ) from None
+            if value < 0:
+                raise ValueError(f"{where}: {name} must be a non-negative integer, got {shown}")
+            if value > MAX_FLIPS:
                 raise ValueError(
-                    f"{where}: {name} must be a non-negative integer, got {text_value:.40}"
+                    f"{where}: {name} must be between 0 and {MAX_FLIPS:,}, got {shown}"
                 )
-            if len(text_value.lstrip("+0")) > digits or int(text_value) > MAX_FLIPS:
-                raise ValueError(
-                    f"{where}: {name} must be between 0 and {MAX_FLIPS:,}, got {text_value:.40}"
-                )
-    return np.array([[int(x) for x in row] for row in values], dtype=np.int64)
+    raise AssertionError("unreachable: numpy refused counts that int() accepts")
 
 
 def read_counts(path: str | os.PathLike[str]) -> CountsTable:
