@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from importlib.resources import files
 from pathlib import Path
 
 import pytest
@@ -13,7 +14,8 @@ from coinflight import bias as b
 from coinflight.cli import app
 from coinflight.distributions import Normal
 
-BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+# The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
+BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
 
 
 def run(*args):
@@ -154,8 +156,9 @@ def test_bad_values_print_as_numbers(tmp_path, points, shown):
     )
 
 
-def test_data_json_on_the_shared_file():
-    result = run("data", "--counts", BARTOS, "--json")
+def test_data_json_on_the_shipped_dataset_by_default():
+    # Issue 13: `coinflight data --json`, nothing else, reproduces 178,078 of 350,757.
+    result = run("data", "--json")
     assert result.exit_code == 0, result.output
     payload = json.loads(result.stdout)
     # REFERENCES §6 / the issue: 178,078 same-side of 350,757; 0.508 [0.506, 0.509] and
@@ -174,6 +177,19 @@ def test_data_json_on_the_shared_file():
     assert payload["psi_ci95_deg"][0] < psi < payload["psi_ci95_deg"][1]
     assert len(payload["per_person"]) == 48
     assert payload["p_value"] < 1e-15
+    assert payload["dataset"] == "bartos2023"
+    assert payload["doi"] == "10.1080/01621459.2025.2516210"
+    assert "Fair coins tend to land on the same side" in payload["citation"]
+    assert payload["heads"] == 175_420
+    # --dataset bartos2023 and --counts on the shipped file give the same numbers.
+    named = json.loads(run("data", "--dataset", "bartos2023", "--json").stdout)
+    from_file = json.loads(run("data", "--counts", BARTOS, "--json").stdout)
+    assert named == payload
+    assert from_file["dataset"] is None and from_file["source"] == str(BARTOS)
+    strip = ("dataset", "source", "title", "citation", "doi", "provenance")
+    assert {k: x for k, x in from_file.items() if k not in strip} == {
+        k: x for k, x in payload.items() if k not in strip
+    }
 
 
 def test_data_text_and_forest_plot(tmp_path):
@@ -254,3 +270,49 @@ def test_psi_sd_default_is_fixed_angle():
         float(b.psi_for_probability(178_078 / 350_757, degrees=True)), abs=1e-9
     )
     assert math.isfinite(payload["psi_deg"])
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (
+            ["--dataset", "bartos2023", "--counts", "x.txt"],
+            "give either --dataset or --counts, not both (got --dataset bartos2023 and "
+            "--counts x.txt)",
+        ),
+        (["--dataset", "nope"], "dataset must be one of bartos2023; got 'nope'"),
+        (["--counts", "/dev/zero"], "counts files may be at most 64 MiB (67,108,864 bytes)"),
+    ],
+)
+def test_data_source_errors_are_one_line(args, message):
+    if "/dev/zero" in args and not Path("/dev/zero").exists():
+        pytest.skip("no /dev/zero")
+    result = run("data", *args)
+    assert result.exit_code == 2
+    assert result.stdout == ""
+    (line,) = result.stderr.splitlines()
+    assert line.startswith("coinflight: error: ") and message in line
+
+
+def test_data_counts_of_1e18_are_a_range_error_not_scipys(tmp_path):
+    # Issue 10 item 6: "brentq raised a ValueError; report this to the SciPy developers".
+    big = tmp_path / "big.txt"
+    big.write_text(
+        "person hsame hdiff tsame tdiff same flips\n"
+        "A 1000000000000000000 1 1000000000000000000 1 2000000000000000000 2000000000000000002\n",
+        encoding="utf-8",
+    )
+    result = run("data", "--counts", big)
+    assert result.exit_code == 2
+    assert result.stderr == (
+        f"coinflight: error: {big}, line 2: hsame must be between 0 and 1,000,000,000,000, "
+        "got 1000000000000000000\n"
+    )
+
+
+def test_data_text_names_the_dataset_and_its_doi():
+    first = run("data").stdout.splitlines()[0]
+    assert first == (
+        "bartos2023 (Bartoš et al. 2023, doi:10.1080/01621459.2025.2516210): 48 people, "
+        "350,757 flips"
+    )

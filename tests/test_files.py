@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import stat
+from importlib.resources import files
 from pathlib import Path
 
 import pytest
 
 from coinflight._files import replacing, write_text
 
-BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+# The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
+BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
 
 
 def test_write_text_creates_folders_and_readable_file(tmp_path):

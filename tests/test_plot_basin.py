@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from importlib.resources import files
 from pathlib import Path
 
 import numpy as np
@@ -220,7 +221,8 @@ def test_cli_bad_input(tmp_path, extra, message):
     assert not out.exists()
 
 
-BARTOS = Path(__file__).parents[2] / "shared" / "data" / "bartos2023.txt"
+# The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
+BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
 
 
 @pytest.mark.parametrize(

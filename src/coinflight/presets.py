@@ -10,8 +10,8 @@ quantity               value                                  source
 =====================  =====================================  ==================================
 launch speed v0        normal, mean 2.4 m/s, sd 10 %          mean: Diaconis via Keller (§2);
                        (flight time T = 2 v0 / g ≈ 0.49 s)    spread: our assumption
-spin about a diameter  ωx normal, mean 38 rev/s = 238.8 rad/s, mean: Diaconis via Keller (§2);
-                       sd 10 %; ωy = 0                        spread: our assumption
+spin about a diameter  ωx normal, mean 38 rev/s               mean: Diaconis via Keller (§2);
+                       (238.8 rad/s), sd 10 %; ωy = 0         spread: our assumption
 cone angle ψ           set by ωz: cot ψ = I3 ωz / (I1 ωx),    "near but below 90°"; per-flip
                        ωz normal with mean (I1/I3)·238.8·     p(ψ) 0.500 to 0.545, mean 0.508
                        cot ψ0 and sd half of it, ψ0 = 82.05°  (DHM's filmed flips, §2)

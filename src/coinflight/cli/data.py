@@ -11,12 +11,22 @@ import typer
 from coinflight.cli.options import OUTPUT_PANEL, JsonFlag, number, print_json
 
 Counts = Annotated[
-    Path,
+    Path | None,
     typer.Option(
         "--counts",
         metavar="FILE",
-        help="Per-person counts: columns person hsame hdiff tsame tdiff same flips, one header "
-        "line (the format of Bartoš et al.'s data, ../shared/data/bartos2023.txt).",
+        help="Your own per-person counts instead of a dataset: UTF-8 text, columns person hsame "
+        "hdiff tsame tdiff same flips, one header line (the layout of the bartos2023 dataset); "
+        "'# ' starts a comment line.",
+    ),
+]
+Dataset = Annotated[
+    str | None,
+    typer.Option(
+        "--dataset",
+        metavar="NAME",
+        help="A dataset shipped with coinflight: bartos2023 (Bartoš et al. 2023, 350,757 "
+        "flips by 48 people; the default when --counts is not given).",
     ),
 ]
 Interval = Annotated[
@@ -51,7 +61,8 @@ INTERVAL_NAMES = {"exact": "Clopper-Pearson", "wilson": "Wilson"}
 
 
 def data(
-    counts: Counts,
+    dataset: Dataset = None,
+    counts: Counts = None,
     interval: Interval = "exact",
     psi_sd: PsiSd = 0.0,
     plot: PlotFile = None,
@@ -59,9 +70,16 @@ def data(
 ) -> None:
     """Same-side and heads rates of real flips, and the precession angle that explains them.
 
-    Example: coinflight data --counts ../shared/data/bartos2023.txt --plot forest.png
+    Example: coinflight data --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """
-    from coinflight.data import read_counts, summarize
+    from coinflight.data import load_dataset, read_counts, summarize
+    from coinflight.datasets import DATASETS, DEFAULT_DATASET
+
+    if dataset is not None and counts is not None:
+        raise ValueError(
+            f"give either --dataset or --counts, not both (got --dataset {dataset} and "
+            f"--counts {counts})"
+        )
 
     if not (math.isfinite(psi_sd) and psi_sd >= 0.0):
         raise ValueError(f"--psi-sd must be a non-negative number of degrees, got {psi_sd:g}")
@@ -69,7 +87,23 @@ def data(
         from coinflight.plotting.style import figure_paths
 
         figure_paths(plot, "--plot")
-    table = read_counts(counts)
+    if counts is None:
+        name = DEFAULT_DATASET if dataset is None else dataset
+        table = load_dataset(name)
+        shipped = DATASETS[name]
+        source = f"{name} ({shipped.short}, doi:{shipped.doi})"
+        described: dict[str, Any] = {
+            "dataset": name,
+            "source": name,
+            "title": shipped.title,
+            "citation": shipped.citation,
+            "doi": shipped.doi,
+            "provenance": shipped.provenance,
+        }
+    else:
+        table = read_counts(counts)
+        source = str(counts)
+        described = {"dataset": None, "source": str(counts)}
     summary = summarize(table, interval, math.radians(psi_sd))
     written = []
     if plot is not None:
@@ -82,7 +116,7 @@ def data(
     psi_ci = None if fit.ci95 is None else [math.degrees(x) for x in fit.ci95]
     if json_output:
         payload: dict[str, Any] = {
-            "source": str(counts),
+            **described,
             "people": len(summary.people),
             "flips": summary.flips,
             "same": same.successes,
@@ -122,7 +156,7 @@ def data(
         print_json(payload)
         return
     method = INTERVAL_NAMES[same.method]
-    typer.echo(f"{counts}: {len(summary.people)} people, {summary.flips:,} flips")
+    typer.echo(f"{source}: {len(summary.people)} people, {summary.flips:,} flips")
     typer.echo(
         f"same side: {same.successes:,} of {same.trials:,} = {same.estimate:.5f}, "
         f"95% {method} interval [{same.ci95[0]:.5f}, {same.ci95[1]:.5f}]; "
