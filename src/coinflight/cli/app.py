@@ -14,7 +14,7 @@ from coinflight.cli import data as _data
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
-from coinflight.cli.errors import OneLineErrors
+from coinflight.cli.errors import OneLineErrors, guard_stdout
 from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
@@ -60,5 +60,11 @@ app.command("paper")(_paper.paper)
 
 
 def main() -> None:
-    """Console-script entry point."""
+    """Console-script entry point (``coinflight`` and ``python -m coinflight``).
+
+    Standard output is guarded first (:func:`coinflight.cli.errors.guard_stdout`): a closed
+    pipe ends quietly (exit 141), a full disk or closed stdout is one line and exit 2, Ctrl-C
+    is ``coinflight: interrupted`` and exit 130.
+    """
+    guard_stdout()
     app()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
@@ -31,6 +32,17 @@ def gravity(text: str) -> float:
     except ValueError as exc:
         raise typer.BadParameter(str(exc)) from None
 
+
+def output_path(text: str) -> Path:
+    """Parse an output path (--out, --plot): an empty text is a usage error, not the current
+    folder (which is what ``Path("")`` would silently mean)."""
+    if not text.strip():
+        raise typer.BadParameter(f"{text!r} is empty; give a path")
+    return Path(text)
+
+
+OUTPUT_HELP = "Missing folders are created; files are replaced only when the run succeeds."
+"""What every output option does with its path (stated once, in each option's help)."""
 
 COIN_PANEL = "Coin"
 TOSS_PANEL = "Toss"
