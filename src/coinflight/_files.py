@@ -175,17 +175,24 @@ def cannot_write(path: str | os.PathLike[str], exc: OSError) -> ValueError:
     return ValueError(f"cannot write {os.fspath(path)}: {reason}")
 
 
-def check_name(path: str | os.PathLike[str], folder: bool = False) -> None:
-    """ValueError for a path that names no file: empty, or ending in ``.``/``..`` (a folder).
+def names_folder(path: str | os.PathLike[str]) -> bool:
+    """True when the text of ``path`` can only name a folder: it ends in a separator, ``.`` or
+    ``..`` (``Path("out/")`` and ``Path("out/.")`` lose this: pass the user's text)."""
+    text = os.fspath(path)
+    last = text.replace(os.sep, "/").rsplit("/", 1)[-1]
+    return last in ("", ".", "..")
 
-    ``folder=True`` accepts ``.`` and ``..`` (the current or parent folder) but not an empty
-    path.
+
+def check_name(path: str | os.PathLike[str], folder: bool = False) -> None:
+    """ValueError for a path that names no file: empty, or ending in ``/``, ``.`` or ``..``.
+
+    ``folder=True`` accepts a folder's name (``.``, ``out/``) but not an empty path.
     """
     text = os.fspath(path)
-    if not text:
+    if not text.strip():
         what = "a folder" if folder else "a file"
         raise ValueError(f"cannot write {text!r}: the path is empty; give {what}")
-    if not folder and Path(text).name in ("", ".", ".."):
+    if not folder and names_folder(text):
         raise ValueError(f"cannot write {text}: it is a folder; give a file name")
 
 

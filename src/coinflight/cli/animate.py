@@ -17,7 +17,7 @@ from coinflight.cli.options import (
     StartFace,
     Thickness,
     number,
-    output_path,
+    output_file,
     resolve_coin,
 )
 from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
@@ -28,7 +28,7 @@ MovieFile = Annotated[
         "--out",
         "-o",
         metavar="FILE",
-        parser=output_path,
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
         help=f"Animation to write: .gif (always) or .mp4 (needs ffmpeg). {OUTPUT_HELP}",
     ),

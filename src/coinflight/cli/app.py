@@ -14,7 +14,7 @@ from coinflight.cli import data as _data
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
-from coinflight.cli.errors import OneLineErrors, guard_stdout
+from coinflight.cli.errors import OneLineErrors, guard_stdout, interrupted
 from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
@@ -66,5 +66,8 @@ def main() -> None:
     pipe ends quietly (exit 141), a full disk or closed stdout is one line and exit 2, Ctrl-C
     is ``coinflight: interrupted`` and exit 130.
     """
-    guard_stdout()
-    app()
+    try:
+        guard_stdout()
+        app()
+    except KeyboardInterrupt:  # before a command starts; inside one, OneLineErrors says it
+        interrupted()

@@ -16,7 +16,6 @@ from coinflight.cli.options import (
     Radius,
     StartFace,
     Thickness,
-    output_path,
     print_json,
     resolve_coin,
 )
@@ -32,6 +31,18 @@ from coinflight.cli.probability import (
     build_distribution,
 )
 from coinflight.cli.progress import Quiet, progress_bar
+
+
+def output_prefix(text: str) -> Path:
+    """Parse --out PREFIX: a folder's name (existing, or ending in /) means DIR/convergence."""
+    from coinflight._files import check_name, names_folder
+
+    try:
+        check_name(text, folder=True)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    path = Path(text)
+    return path / "convergence" if names_folder(text) or path.is_dir() else path
 
 
 def _int_list(text: str, option: str) -> list[int]:
@@ -70,10 +81,10 @@ Out = Annotated[
         "--out",
         "-o",
         metavar="PREFIX",
-        parser=output_path,
+        parser=output_prefix,
         rich_help_panel="Output",
         help="Write PREFIX.csv, PREFIX.json, PREFIX.png and PREFIX.svg, all together at the end "
-        f"(an existing folder: DIR/convergence.*). {OUTPUT_HELP}",
+        f"(a folder, existing or written as DIR/: DIR/convergence.*). {OUTPUT_HELP}",
     ),
 ]
 
@@ -130,7 +141,7 @@ def convergence(
     Example (the paper's Fig 2a): coinflight convergence --omega-x 60:90 --flight-time 0.6:0.9
     --seed 1 --out fig2a
     """
-    from coinflight._files import check_all_writable, check_name, replacing_all
+    from coinflight._files import check_all_writable, replacing_all
     from coinflight.plotting.convergence import convergence_figure
     from coinflight.plotting.style import save_figure
     from coinflight.probability.convergence import convergence as run
@@ -167,8 +178,7 @@ def convergence(
         raise ValueError(
             f"--grid-cells must be 0 (plain Monte Carlo) or positive, got {grid_cells}"
         )
-    prefix = out / "convergence" if out.is_dir() else out
-    check_name(prefix)
+    prefix = out  # already DIR/convergence for a folder (output_prefix)
     targets = [prefix.with_name(f"{prefix.name}.{ext}") for ext in ("csv", "json", "png", "svg")]
     check_all_writable(targets)  # before computing, not after
     total = work_total(dist, method_list, **sizes)

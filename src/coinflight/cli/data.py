@@ -13,7 +13,7 @@ from coinflight.cli.options import (
     OUTPUT_PANEL,
     JsonFlag,
     number,
-    output_path,
+    output_file,
     print_json,
 )
 
@@ -49,7 +49,7 @@ PlotFile = Annotated[
     typer.Option(
         "--plot",
         metavar="FILE",
-        parser=output_path,
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
         help="Also write a forest plot of the per-person rates; the format follows the suffix "
         f"(.png, .svg, .pdf, …); without a suffix, FILE.png and FILE.svg. {OUTPUT_HELP}",

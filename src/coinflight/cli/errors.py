@@ -41,6 +41,12 @@ def fail(message: str, code: int = USAGE_ERROR) -> None:
     sys.exit(code)
 
 
+def interrupted() -> None:
+    """After Ctrl-C: ``coinflight: interrupted`` on stderr and exit code 130."""
+    _say("coinflight: interrupted")
+    sys.exit(INTERRUPTED)
+
+
 def _say(line: str) -> None:
     """One line on stderr; if stderr itself cannot be written, nothing (the exit code tells)."""
     with suppress(OSError, ValueError):
@@ -181,8 +187,7 @@ class OneLineErrors(TyperGroup):
             except _Escape as escape:
                 raise escape.original from None
         except KeyboardInterrupt:
-            _say("coinflight: interrupted")
-            sys.exit(INTERRUPTED)
+            interrupted()
         except OSError as exc:
             if not _is_stdout_failure(exc):
                 raise

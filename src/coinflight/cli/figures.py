@@ -18,7 +18,7 @@ from coinflight.cli.options import (
     StartFace,
     Thickness,
     number,
-    output_path,
+    output_file,
     resolve_coin,
 )
 from coinflight.cli.surface import (
@@ -38,7 +38,7 @@ OutFile = Annotated[
         "--out",
         "-o",
         metavar="FILE",
-        parser=output_path,
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
         help="Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
         f"without a suffix, FILE.png and FILE.svg (written together). {OUTPUT_HELP}",

@@ -33,11 +33,27 @@ def gravity(text: str) -> float:
         raise typer.BadParameter(str(exc)) from None
 
 
-def output_path(text: str) -> Path:
-    """Parse an output path (--out, --plot): an empty text is a usage error, not the current
-    folder (which is what ``Path("")`` would silently mean)."""
-    if not text.strip():
-        raise typer.BadParameter(f"{text!r} is empty; give a path")
+def output_file(text: str) -> Path:
+    """Parse an output file (--out FILE, --plot FILE): an empty text or a folder's name
+    (``.``, ``out/``) is a usage error, not the current folder or a file ``out`` (what
+    ``Path`` would silently make of them)."""
+    from coinflight._files import check_name
+
+    try:
+        check_name(text)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    return Path(text)
+
+
+def output_folder(text: str) -> Path:
+    """Parse an output folder (--out DIR): an empty text is a usage error."""
+    from coinflight._files import check_name
+
+    try:
+        check_name(text, folder=True)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
     return Path(text)
 
 

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, output_path
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, output_folder
 from coinflight.cli.progress import Quiet
 
 OutDir = Annotated[
@@ -16,7 +16,7 @@ OutDir = Annotated[
         "--out",
         "-o",
         metavar="DIR",
-        parser=output_path,
+        parser=output_folder,
         rich_help_panel=OUTPUT_PANEL,
         help="Folder for the figures (PNG and SVG), report.md and report.html, all written "
         f"together at the end. {OUTPUT_HELP}",
