@@ -177,9 +177,9 @@ def test_a_path_naming_no_file_is_refused(tmp_path, name):
 
     with pytest.raises(ValueError, match=r"^cannot write .*(empty|it is a folder; give a file)"):
         check_name(name)
-    with pytest.raises(ValueError, match="^cannot write "):
+    with pytest.raises(ValueError, match=r"^cannot write "):
         check_writable(name)
-    with pytest.raises(ValueError, match="^cannot write "), replacing(name):
+    with pytest.raises(ValueError, match=r"^cannot write "), replacing(name):
         pass
 
 
