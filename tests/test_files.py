@@ -365,3 +365,17 @@ def test_convergence_out_naming_a_folder_writes_into_it(tmp_path):
     assert sorted(p.name for p in (tmp_path / "new").iterdir()) == [
         f"convergence.{ext}" for ext in ("csv", "json", "png", "svg")
     ]
+
+
+def test_a_device_or_pipe_is_never_replaced(tmp_path):
+    import os
+
+    from coinflight._files import check_writable
+
+    fifo = tmp_path / "pipe.png"
+    os.mkfifo(fifo)
+    for attempt in (check_writable, lambda p: write_text(p, "x")):
+        with pytest.raises(ValueError, match="it is not a regular file"):
+            attempt(fifo)
+    assert fifo.is_fifo()
+    assert [p.name for p in tmp_path.iterdir()] == ["pipe.png"]

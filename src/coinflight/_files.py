@@ -115,6 +115,7 @@ def _swap(moves: list[tuple[Path, Path]]) -> None:
     for _, dest in moves:
         if dest.is_dir():
             raise ValueError(f"cannot write {dest}: it is a folder")
+        _check_replaceable(dest)
         for parent in reversed(dest.parents):
             if parent.exists() and not parent.is_dir():
                 raise ValueError(f"cannot write {dest}: {parent} is a file, not a folder")
@@ -124,6 +125,16 @@ def _swap(moves: list[tuple[Path, Path]]) -> None:
             os.replace(tmp, dest)
         except OSError as exc:
             raise cannot_write(dest, exc) from None
+
+
+def _check_replaceable(dest: Path) -> None:
+    """A device, pipe or socket is never replaced by a file (``--out /dev/null`` as root would
+    otherwise remove the device)."""
+    if dest.exists() and not dest.is_file() and not dest.is_dir():
+        raise ValueError(
+            f"cannot write {dest}: it is not a regular file (a device, pipe or socket); "
+            "give a file name"
+        )
 
 
 def remove_stale_stages(folder: str | os.PathLike[str]) -> list[Path]:
@@ -210,6 +221,8 @@ def check_writable(path: str | os.PathLike[str], folder: bool = False) -> None:
             raise ValueError(f"cannot write {target}: it is a file, not a folder")
         if not folder and target.is_dir():
             raise ValueError(f"cannot write {target}: it is a folder")
+        if not folder:
+            _check_replaceable(target)
     base = target if folder else target.parent
     while not base.exists() and base != base.parent:
         base = base.parent
