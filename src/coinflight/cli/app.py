@@ -14,7 +14,13 @@ from coinflight.cli import data as _data
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
-from coinflight.cli.errors import OneLineErrors, guard_stdout, interrupted
+from coinflight.cli.errors import (
+    INTERRUPTED,
+    OneLineErrors,
+    exit_now,
+    guard_stdout,
+    interrupted,
+)
 from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
@@ -67,7 +73,12 @@ def main() -> None:
     is ``coinflight: interrupted`` and exit 130.
     """
     try:
-        guard_stdout()
-        app()
-    except KeyboardInterrupt:  # before a command starts; inside one, OneLineErrors says it
-        interrupted()
+        try:
+            guard_stdout()
+            app()
+        except KeyboardInterrupt:  # before a command starts; inside one, OneLineErrors says it
+            interrupted()
+    except SystemExit as exc:
+        if exc.code == INTERRUPTED:
+            exit_now(INTERRUPTED)
+        raise

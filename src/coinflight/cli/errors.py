@@ -47,6 +47,19 @@ def interrupted() -> None:
     sys.exit(INTERRUPTED)
 
 
+def exit_now(code: int) -> None:
+    """End the process at once with ``code`` (after Ctrl-C, in the console command only).
+
+    The outputs' staging folders are already gone (removed as the interrupt unwound); what
+    is skipped is waiting for worker threads to finish their chunk, and CPython's habit of
+    ending with SIGINT itself, not exit code 130, when the interrupt landed in an import.
+    """
+    for stream in (sys.stdout, sys.stderr):
+        with suppress(OSError, ValueError, AttributeError):
+            stream.flush()
+    os._exit(code)
+
+
 def _say(line: str) -> None:
     """One line on stderr; if stderr itself cannot be written, nothing (the exit code tells)."""
     with suppress(OSError, ValueError):
