@@ -27,6 +27,9 @@ app = typer.Typer(
     cls=OneLineErrors,
     name="coinflight",
     help="The physics of coin tossing: torque-free flight, probabilities, bias, bounces.",
+    epilog="Exit codes: 0 done; 2 bad input, or an output (a file, standard output) that cannot "
+    "be written; 130 interrupted (Ctrl-C), nothing written; 141 standard output closed by its "
+    "reader (| head). Outputs are written whole at the end, all files of a run or none.",
     invoke_without_command=True,
     add_completion=False,
     pretty_exceptions_enable=False,
