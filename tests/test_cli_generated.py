@@ -55,7 +55,9 @@ HOSTILE_RANGES = [
     "1e308:inf", "nan:1", "normal:80,0", "normal:80,-1", "normal:nan,1", "normal:1e308,1e308",
     "normal:80", "normal:", "uniform:1,2", "60:90:120", "1e-320:2e-320",
 ]  # fmt: skip
-HOSTILE_PATHS = ["", ".", "/", "/dev/full", "/proc/version", "no/such/dir/x.png", "x.unknown"]
+# Never a path outside the test's own folder that the run could write (the suite may run as
+# root: "/" once left /convergence.* behind); /dev/full and /proc/version must be refused.
+HOSTILE_PATHS = ["", ".", "sub/", "/dev/full", "/proc/version", "no/such/dir/x.png", "x.unknown"]
 
 
 def _number(low: float, high: float) -> st.SearchStrategy[str]:

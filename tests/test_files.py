@@ -124,3 +124,260 @@ def test_unwritable_figure_is_one_line_and_exit_2(tmp_path, argv):
     assert result.exit_code == 2, result.output
     assert result.stderr.startswith("coinflight: error: cannot write ")
     assert "Traceback" not in result.output
+
+
+# --- one output path: every target checked before any is replaced (issue 10 item 2) ---
+
+
+def test_replacing_all_replaces_none_when_one_target_is_a_folder(tmp_path):
+    from coinflight._files import replacing_all
+
+    (tmp_path / "x.csv").write_text("old")
+    (tmp_path / "x.svg").mkdir()
+    targets = [tmp_path / "x.csv", tmp_path / "x.json", tmp_path / "x.svg"]
+    with (
+        pytest.raises(ValueError, match=r"cannot write .*x\.svg: it is a folder"),
+        replacing_all(targets) as temps,
+    ):
+        for tmp in temps:
+            tmp.write_text("new")
+    assert (tmp_path / "x.csv").read_text() == "old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["x.csv", "x.svg"]  # no staging left
+
+
+def test_replacing_all_moves_every_file_at_the_end(tmp_path):
+    from coinflight._files import replacing_all
+
+    targets = [tmp_path / "x.csv", tmp_path / "sub" / "x.png"]
+    with replacing_all(targets) as temps:
+        for tmp in temps:
+            tmp.write_text(tmp.name)
+        assert not any(t.exists() for t in targets)  # nothing visible before the end
+    assert [t.read_text() for t in targets] == ["x.csv", "x.png"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sub", "x.csv"]
+
+
+def test_staged_folder_moves_nothing_when_a_file_cannot_replace_a_folder(tmp_path):
+    from coinflight._files import staged_folder
+
+    out = tmp_path / "paper"
+    (out / "report.md").mkdir(parents=True)
+    (out / "fig2a.png").write_text("old")
+    with (
+        pytest.raises(ValueError, match=r"cannot write .*report\.md: it is a folder"),
+        staged_folder(out) as stage,
+    ):
+        write_text(stage / "fig2a.png", "new")
+        write_text(stage / "report.md", "new")
+    assert (out / "fig2a.png").read_text() == "old"
+    assert sorted(p.name for p in out.iterdir()) == ["fig2a.png", "report.md"]
+
+
+@pytest.mark.parametrize("name", ["", " ", ".", "..", "out/.", "out/"])
+def test_a_path_naming_no_file_is_refused(tmp_path, name):
+    from coinflight._files import check_name, check_writable
+
+    with pytest.raises(ValueError, match=r"^cannot write .*(empty|it is a folder; give a file)"):
+        check_name(name)
+    with pytest.raises(ValueError, match=r"^cannot write "):
+        check_writable(name)
+    with pytest.raises(ValueError, match=r"^cannot write "), replacing(name):
+        pass
+
+
+def _dead_pid() -> int:
+    import subprocess
+    import sys
+
+    child = subprocess.Popen([sys.executable, "-c", "pass"])
+    child.wait()
+    return child.pid
+
+
+def test_stale_staging_folders_are_removed_live_ones_kept(tmp_path):
+    import os
+    import time
+
+    from coinflight._files import STALE_AFTER, remove_stale_stages
+
+    dead = tmp_path / f".partial-{_dead_pid()}-abc"
+    live = tmp_path / f".partial-{os.getpid()}-def"
+    old = tmp_path / f".partial-{os.getppid()}-ghi"  # a running process, but long untouched
+    other = tmp_path / ".partial-notes"  # not ours: no process id, recent
+    for folder in (dead, live, old, other):
+        folder.mkdir()
+        (folder / "half.png").write_text("x")
+    long_ago = time.time() - STALE_AFTER - 60
+    os.utime(old, (long_ago, long_ago))
+    assert sorted(remove_stale_stages(tmp_path)) == sorted([dead, old])
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([live.name, other.name])
+
+
+def test_a_later_run_removes_what_a_killed_run_left(tmp_path):
+    """SIGKILL skips every clean-up: the staging folder stays, until the next run writing there."""
+    import os
+    import subprocess
+    import sys
+
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    code = (
+        "import os, signal, sys\n"
+        "from coinflight._files import staged_folder\n"
+        "with staged_folder(sys.argv[1]) as stage:\n"
+        "    (stage / 'fig.png').write_text('half')\n"
+        "    os.kill(os.getpid(), signal.SIGKILL)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).parents[1] / "src")}
+    killed = subprocess.run([sys.executable, "-c", code, str(tmp_path)], env=env, check=False)
+    assert killed.returncode == -9
+    left = list(tmp_path.glob(".partial-*"))
+    assert len(left) == 1 and (left[0] / "fig.png").exists()
+    out = tmp_path / "toss.png"
+    result = CliRunner().invoke(app, ["plot", "toss", "--flight-time", "0.5", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["toss.png"]
+
+
+CONVERGENCE = ["convergence", "--flight-time", "0.6:0.9", "--grid-sizes", "5", "--event-sizes"]
+
+
+def test_convergence_writes_its_four_files_together_or_none(tmp_path, monkeypatch):
+    from typer.testing import CliRunner
+
+    import coinflight.plotting.style as style
+    from coinflight.cli import app
+
+    (tmp_path / "x.csv").write_text("old")
+    real_savefig = style.save_figure
+
+    def svg_fails(fig, path, *args, **kwargs):
+        if str(path).endswith(".svg"):
+            raise KeyboardInterrupt  # Ctrl-C while the last file is written
+        return real_savefig(fig, path, *args, **kwargs)
+
+    monkeypatch.setattr(style, "save_figure", svg_fails)
+    argv = [*CONVERGENCE, "100", "--seed", "1", "-q", "--out", str(tmp_path / "x")]
+    result = CliRunner().invoke(app, argv)
+    assert (result.exit_code, result.stderr) == (130, "coinflight: interrupted\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["x.csv"]
+    assert (tmp_path / "x.csv").read_text() == "old"
+
+    monkeypatch.setattr(style, "save_figure", real_savefig)
+    result = CliRunner().invoke(app, argv)
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["x.csv", "x.json", "x.png", "x.svg"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "module", "name"),
+    [
+        ([*CONVERGENCE, "100"], "coinflight.probability.convergence", "convergence"),
+        (["paper", "-q"], "coinflight.report.reproduce", "paper_numbers"),
+    ],
+)
+def test_a_folder_in_the_place_of_an_output_file_fails_before_computing(
+    tmp_path, monkeypatch, argv, module, name
+):
+    import importlib
+
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    monkeypatch.setattr(importlib.import_module(module), name, _refuse)
+    if argv[0] == "paper":
+        out, folder = tmp_path, tmp_path / "report.md"
+    else:
+        out, folder = tmp_path / "x", tmp_path / "x.svg"
+    folder.mkdir()
+    result = CliRunner().invoke(app, [*argv, "--out", str(out)])
+    assert (result.exit_code, result.stderr) == (
+        2,
+        f"coinflight: error: cannot write {folder}: it is a folder\n",
+    )
+    assert [p.name for p in tmp_path.iterdir()] == [folder.name]
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["paper", "-q"],
+        [*CONVERGENCE, "100"],
+        ["plot", "toss", "--flight-time", "0.5"],
+        ["plot", "basin", "--resolution", "8"],
+        ["plot", "bias"],
+        ["plot", "edge"],
+        ["animate", "--flight-time", "0.5"],
+        ["data", "--counts", "counts.txt", "--plot"],
+    ],
+)
+def test_an_empty_output_path_is_refused(tmp_path, monkeypatch, argv):
+    """`--out ''` is not the current folder (Path('') is '.'): one line naming the option."""
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    monkeypatch.chdir(tmp_path)
+    flag = [] if argv[-1] == "--plot" else ["--out"]
+    result = CliRunner().invoke(app, [*argv, *flag, ""])
+    assert result.exit_code == 2, result.output
+    assert result.stderr.count("\n") == 1
+    assert "cannot write '': the path is empty" in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("out", [".", "..", "sub/.", "sub/"])
+def test_a_figure_path_naming_a_folder_is_one_line(tmp_path, monkeypatch, out):
+    """Not "PosixPath('.') has an empty name", nor a file sub.png for sub/."""
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(app, ["plot", "toss", "--flight-time", "0.5", "--out", out])
+    assert result.exit_code == 2, result.output
+    assert result.stderr.endswith(f": cannot write {out}: it is a folder; give a file name\n")
+    assert result.stderr.startswith("coinflight: error: Invalid value for '--out'")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_folders_are_created(tmp_path):
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    out = tmp_path / "a" / "b" / "toss.svg"
+    result = CliRunner().invoke(app, ["plot", "toss", "--flight-time", "0.5", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.is_file()
+    assert [p.name for p in out.parent.iterdir()] == ["toss.svg"]
+
+
+def test_convergence_out_naming_a_folder_writes_into_it(tmp_path):
+    from typer.testing import CliRunner
+
+    from coinflight.cli import app
+
+    argv = [*CONVERGENCE, "100", "--seed", "1", "-q", "--out", f"{tmp_path / 'new'}/"]
+    result = CliRunner().invoke(app, argv)
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in (tmp_path / "new").iterdir()) == [
+        f"convergence.{ext}" for ext in ("csv", "json", "png", "svg")
+    ]
+
+
+def test_a_device_or_pipe_is_never_replaced(tmp_path):
+    import os
+
+    from coinflight._files import check_writable
+
+    fifo = tmp_path / "pipe.png"
+    os.mkfifo(fifo)
+    for attempt in (check_writable, lambda p: write_text(p, "x")):
+        with pytest.raises(ValueError, match="it is not a regular file"):
+            attempt(fifo)
+    assert fifo.is_fifo()
+    assert [p.name for p in tmp_path.iterdir()] == ["pipe.png"]

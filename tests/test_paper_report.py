@@ -172,4 +172,4 @@ def test_cli_refuses_a_file_as_folder(tmp_path):
     f.write_text("x")
     result = CliRunner().invoke(app, ["paper", "--out", str(f), "-q"])
     assert result.exit_code == 2
-    assert "--out must be a folder" in result.stderr
+    assert result.stderr == f"coinflight: error: cannot write {f}: it is a file, not a folder\n"

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.options import (
+    OUTPUT_HELP,
     OUTPUT_PANEL,
     CoinName,
     Gravity,
@@ -16,6 +17,7 @@ from coinflight.cli.options import (
     StartFace,
     Thickness,
     number,
+    output_file,
     resolve_coin,
 )
 from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
@@ -26,8 +28,9 @@ MovieFile = Annotated[
         "--out",
         "-o",
         metavar="FILE",
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
-        help="Animation to write: .gif (always) or .mp4 (needs ffmpeg).",
+        help=f"Animation to write: .gif (always) or .mp4 (needs ffmpeg). {OUTPUT_HELP}",
     ),
 ]
 Frames = Annotated[

@@ -14,13 +14,22 @@ from coinflight.cli import data as _data
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
-from coinflight.cli.errors import OneLineErrors
+from coinflight.cli.errors import (
+    INTERRUPTED,
+    OneLineErrors,
+    exit_now,
+    guard_stdout,
+    interrupted,
+)
 from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
     cls=OneLineErrors,
     name="coinflight",
     help="The physics of coin tossing: torque-free flight, probabilities, bias, bounces.",
+    epilog="Exit codes: 0 done; 2 bad input, or an output (a file, standard output) that cannot "
+    "be written; 130 interrupted (Ctrl-C), nothing written; 141 standard output closed by its "
+    "reader (| head). Outputs are written whole at the end, all files of a run or none.",
     invoke_without_command=True,
     add_completion=True,
     pretty_exceptions_enable=False,
@@ -60,5 +69,19 @@ app.command("paper")(_paper.paper)
 
 
 def main() -> None:
-    """Console-script entry point."""
-    app(prog_name="coinflight")  # also under python -m: completion keys on this name
+    """Console-script entry point (``coinflight`` and ``python -m coinflight``).
+
+    Standard output is guarded first (:func:`coinflight.cli.errors.guard_stdout`): a closed
+    pipe ends quietly (exit 141), a full disk or closed stdout is one line and exit 2, Ctrl-C
+    is ``coinflight: interrupted`` and exit 130.
+    """
+    try:
+        try:
+            guard_stdout()
+            app(prog_name="coinflight")  # also under python -m: completion keys on this name
+        except KeyboardInterrupt:  # before a command starts; inside one, OneLineErrors says it
+            interrupted()
+    except SystemExit as exc:
+        if exc.code == INTERRUPTED:
+            exit_now(INTERRUPTED)
+        raise

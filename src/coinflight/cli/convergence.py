@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.options import (
+    OUTPUT_HELP,
     CoinName,
     Gravity,
     JsonFlag,
@@ -30,6 +31,18 @@ from coinflight.cli.probability import (
     build_distribution,
 )
 from coinflight.cli.progress import Quiet, progress_bar
+
+
+def output_prefix(text: str) -> Path:
+    """Parse --out PREFIX: a folder's name (existing, or ending in /) means DIR/convergence."""
+    from coinflight._files import check_name, names_folder
+
+    try:
+        check_name(text, folder=True)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    path = Path(text)
+    return path / "convergence" if names_folder(text) or path.is_dir() else path
 
 
 def _int_list(text: str, option: str) -> list[int]:
@@ -68,9 +81,10 @@ Out = Annotated[
         "--out",
         "-o",
         metavar="PREFIX",
+        parser=output_prefix,
         rich_help_panel="Output",
-        help="Write PREFIX.csv, PREFIX.json, PREFIX.png and PREFIX.svg (a directory: "
-        "DIR/convergence.*).",
+        help="Write PREFIX.csv, PREFIX.json, PREFIX.png and PREFIX.svg, all together at the end "
+        f"(a folder, existing or written as DIR/: DIR/convergence.*). {OUTPUT_HELP}",
     ),
 ]
 
@@ -127,6 +141,7 @@ def convergence(
     Example (the paper's Fig 2a): coinflight convergence --omega-x 60:90 --flight-time 0.6:0.9
     --seed 1 --out fig2a
     """
+    from coinflight._files import check_all_writable, replacing_all
     from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.style import save_figure
     from coinflight.probability.convergence import convergence as run
@@ -163,7 +178,9 @@ def convergence(
         raise ValueError(
             f"--grid-cells must be 0 (plain Monte Carlo) or positive, got {grid_cells}"
         )
-    prefix = out / "convergence" if out.is_dir() or str(out).endswith("/") else out
+    prefix = out  # already DIR/convergence for a folder (output_prefix)
+    targets = [prefix.with_name(f"{prefix.name}.{ext}") for ext in ("csv", "json", "png", "svg")]
+    check_all_writable(targets)  # before computing, not after
     total = work_total(dist, method_list, **sizes)
     with progress_bar(total, "convergence", quiet) as bar:
         result = run(
@@ -175,10 +192,12 @@ def convergence(
             progress=bar,
             **sizes,  # type: ignore[arg-type]
         )
-    written = result.write(prefix)
     fig = plot_convergence(result)
-    written += save_figure(fig, prefix.with_name(prefix.name + ".png"))
-    written += save_figure(fig, prefix.with_name(prefix.name + ".svg"))
+    with replacing_all(targets) as (csv, _, png, svg):  # the four files together, or none
+        result.write(csv.with_name(prefix.name))  # PREFIX.csv and PREFIX.json
+        save_figure(fig, png)
+        save_figure(fig, svg)
+    written = targets
     if json_output:
         payload = result.to_dict()
         payload["files"] = [str(p) for p in written]

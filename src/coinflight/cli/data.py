@@ -8,7 +8,14 @@ from typing import Annotated, Any
 
 import typer
 
-from coinflight.cli.options import OUTPUT_PANEL, JsonFlag, number, print_json
+from coinflight.cli.options import (
+    OUTPUT_HELP,
+    OUTPUT_PANEL,
+    JsonFlag,
+    number,
+    output_file,
+    print_json,
+)
 
 Counts = Annotated[
     Path | None,
@@ -52,9 +59,10 @@ PlotFile = Annotated[
     typer.Option(
         "--plot",
         metavar="FILE",
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
         help="Also write a forest plot of the per-person rates; the format follows the suffix "
-        "(.png, .svg, .pdf, …); without a suffix, FILE.png and FILE.svg.",
+        f"(.png, .svg, .pdf, …); without a suffix, FILE.png and FILE.svg. {OUTPUT_HELP}",
     ),
 ]
 INTERVAL_NAMES = {"exact": "Clopper-Pearson", "wilson": "Wilson"}

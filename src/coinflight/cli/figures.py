@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.options import (
+    OUTPUT_HELP,
     OUTPUT_PANEL,
     TOSS_PANEL,
     CoinName,
@@ -17,6 +18,7 @@ from coinflight.cli.options import (
     StartFace,
     Thickness,
     number,
+    output_file,
     resolve_coin,
 )
 from coinflight.cli.surface import (
@@ -36,9 +38,10 @@ OutFile = Annotated[
         "--out",
         "-o",
         metavar="FILE",
+        parser=output_file,
         rich_help_panel=OUTPUT_PANEL,
         help="Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
-        "without a suffix, FILE.png and FILE.svg.",
+        f"without a suffix, FILE.png and FILE.svg (written together). {OUTPUT_HELP}",
     ),
 ]
 Dpi = Annotated[

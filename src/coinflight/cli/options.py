@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
@@ -31,6 +32,33 @@ def gravity(text: str) -> float:
     except ValueError as exc:
         raise typer.BadParameter(str(exc)) from None
 
+
+def output_file(text: str) -> Path:
+    """Parse an output file (--out FILE, --plot FILE): an empty text or a folder's name
+    (``.``, ``out/``) is a usage error, not the current folder or a file ``out`` (what
+    ``Path`` would silently make of them)."""
+    from coinflight._files import check_name
+
+    try:
+        check_name(text)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    return Path(text)
+
+
+def output_folder(text: str) -> Path:
+    """Parse an output folder (--out DIR): an empty text is a usage error."""
+    from coinflight._files import check_name
+
+    try:
+        check_name(text, folder=True)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    return Path(text)
+
+
+OUTPUT_HELP = "Missing folders are created; files are replaced only when the run succeeds."
+"""What every output option does with its path (stated once, in each option's help)."""
 
 COIN_PANEL = "Coin"
 TOSS_PANEL = "Toss"

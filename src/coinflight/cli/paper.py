@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.options import OUTPUT_PANEL, CoinName
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, output_folder
 from coinflight.cli.progress import Quiet
 
 OutDir = Annotated[
@@ -16,8 +16,10 @@ OutDir = Annotated[
         "--out",
         "-o",
         metavar="DIR",
+        parser=output_folder,
         rich_help_panel=OUTPUT_PANEL,
-        help="Folder for the figures (PNG and SVG), report.md and report.html.",
+        help="Folder for the figures (PNG and SVG), report.md and report.html, all written "
+        f"together at the end. {OUTPUT_HELP}",
     ),
 ]
 Seed = Annotated[
@@ -46,15 +48,12 @@ def paper(
 
     Example: coinflight paper --out paper/
     """
-    from coinflight._files import check_writable
     from coinflight.cli.options import resolve_coin
     from coinflight.cli.progress import progress_bar
-    from coinflight.report.reproduce import STEPS, reproduce_paper
+    from coinflight.report.reproduce import STEPS, paper_files, reproduce_paper
 
     the_coin = resolve_coin(coin, None, None, None)
-    if out.exists() and not out.is_dir():
-        raise ValueError(f"--out must be a folder, but {str(out)!r} is a file")
-    check_writable(out, folder=True)  # before minutes of computing, not after
+    paper_files(out)  # all 16 files, before minutes of computing, not after
     with progress_bar(STEPS, "reproducing the paper", quiet) as advance:
 
         def step(_message: str) -> None:

@@ -7,7 +7,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from coinflight._files import check_writable, replacing
+from coinflight._files import check_name, check_writable, replacing_all
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -60,6 +60,7 @@ def figure_paths(
     written.
     """
     target = Path(path)
+    check_name(path)  # '.' or '' would otherwise be an internal error of with_suffix
     if formats is None:
         formats = [target.suffix] if target.suffix else ["png", "svg"]
     paths = [target.with_suffix("." + fmt.lstrip(".")) for fmt in formats]
@@ -82,11 +83,12 @@ def save_figure(
     """Save ``fig`` whole or not at all, to the files :func:`figure_paths` names.
 
     ``path`` with a suffix is written in that format; without one, it is written once per format
-    in ``formats`` (default PNG and SVG). Each file is written to a temporary name in the same
-    folder and renamed into place, so an interrupted run leaves no half-written figure.
+    in ``formats`` (default PNG and SVG). The files are staged and renamed into place together
+    (:func:`coinflight._files.replacing_all`), so an interrupted run leaves no half-written
+    figure, and a PNG never appears without its SVG.
     """
     paths = figure_paths(path, formats=formats)
-    for p in paths:
-        with replacing(p) as tmp:
+    with replacing_all(paths) as temps:
+        for p, tmp in zip(paths, temps, strict=True):
             fig.savefig(tmp, format=p.suffix.lstrip(".").lower(), dpi=dpi)
     return paths

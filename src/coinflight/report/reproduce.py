@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from coinflight import __version__
-from coinflight._files import staged_folder, write_text
+from coinflight._files import check_all_writable, check_writable, staged_folder, write_text
 from coinflight.coin import Coin
 from coinflight.report.document import (
     Bullets,
@@ -42,6 +42,22 @@ FIGURES = ("fig2a", "fig2b", "fig2c", "fig2d", "fig3a", "fig3b", "fig3c-f")
 """File stems of the reproduced figures (each written as .png and .svg)."""
 STEPS = 1 + 4 + len(FIGURES) + 1
 """Progress steps of :func:`reproduce_paper`: numbers (5), figures (7), report (1)."""
+
+
+REPORTS = ("report.md", "report.html")
+"""The report's files, beside the figures."""
+
+
+def paper_files(out_dir: str | Path, formats: tuple[str, ...] = ("png", "svg")) -> list[Path]:
+    """The files :func:`reproduce_paper` writes into ``out_dir``, checked writable first.
+
+    ValueError (``cannot write PATH: reason``) for a folder that cannot be written or a file
+    that cannot be replaced (a folder of that name), before anything is computed.
+    """
+    out = Path(out_dir)
+    check_writable(out, folder=True)
+    files = [out / f"{stem}.{fmt}" for stem in FIGURES for fmt in formats]
+    return check_all_writable([*files, *(out / name for name in REPORTS)])
 
 
 @dataclass(frozen=True)
@@ -87,6 +103,7 @@ def reproduce_paper(
 
     t_start = time.perf_counter()
     out = Path(out_dir)
+    paper_files(out, formats)  # before minutes of computing, not after
     coin = coin if coin is not None else Coin.preset("us-quarter")
     numbers = paper_numbers(coin, seed=seed, events=events, step=step)
     files: list[Path] = []
@@ -135,8 +152,8 @@ def reproduce_paper(
 
         elapsed = time.perf_counter() - t_start
         doc = build_document(numbers, elapsed, image_suffix=formats[0])
-        files.append(write_text(stage / "report.md", doc.to_markdown()))
-        files.append(write_text(stage / "report.html", doc.to_html()))
+        for name, text in zip(REPORTS, (doc.to_markdown(), doc.to_html()), strict=True):
+            files.append(write_text(stage / name, text))
         files = [out / f.relative_to(stage) for f in files]
     done("report.md and report.html")
     return PaperReport(numbers=numbers, files=tuple(files), elapsed=time.perf_counter() - t_start)
