@@ -20,6 +20,7 @@ from coinflight.cli.options import (
 )
 from coinflight.cli.presets import PresetOption, preset_distribution
 from coinflight.cli.progress import Quiet, progress_bar
+from coinflight.landing import DRAG_TOSSES_PER_SECOND
 from coinflight.cli.surface import (
     DragCoefficient,
     DropHeight,
@@ -36,9 +37,6 @@ if TYPE_CHECKING:
     from coinflight.ensemble import TossDistribution
 
 METHOD_PANEL = "Method"
-DRAG_TOSSES_PER_SECOND = 20
-"""Tosses a second with --drag (one SciPy integration each), measured on the 2-core reference
-machine: 100 tosses in 5.3 s on one thread."""
 _DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
 
 

@@ -13,11 +13,13 @@ from typing import Any
 
 import numpy as np
 
+from coinflight import _validation as v
 from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import (
     Executor,
     Progress,
     check_count,
+    check_tosses,
     executor_or_threads,
     run_tasks,
 )
@@ -26,6 +28,11 @@ from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_detai
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 DEFAULT_REPLICATES = 16
+SOBOL_BITS = 30
+"""Bits of SciPy's Sobol generator (its default): at most 2^30 points per scrambling."""
+SOBOL_POINTS_PER_SECOND = 2.5e7
+"""Scrambled Sobol points a second (SciPy), on top of the outcome model's own time: with the
+hand catch, 2^26 points in 5.2 s on the busy 2-core machine (1.3e7 a second in all)."""
 _CHUNK = 1 << 18
 
 
@@ -45,6 +52,25 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
         counts += model.count(dist, np.ascontiguousarray(sobol.random(size).T))
         done += size
     return counts
+
+
+def check_work(
+    n: int, replicates: int = DEFAULT_REPLICATES, model: OutcomeModel = HAND_CATCH
+) -> None:
+    """ValueError unless ``n`` points fit Sobol's :data:`SOBOL_BITS` bits per scrambling and the
+    run limit (:data:`coinflight._validation.MAX_RUN_SECONDS`); nothing is allocated."""
+    n = check_count("n", n)
+    replicates = check_count("replicates", replicates, 2)
+    v.work_bound(
+        f"qmc with n = {n} in {replicates} scramblings",
+        n // replicates,
+        2**SOBOL_BITS,
+        "points per scrambling",
+        f"SciPy's Sobol sequence has {SOBOL_BITS} bits; use n ≤ {replicates} × 2^{SOBOL_BITS} "
+        f"= {replicates << SOBOL_BITS}",
+    )
+    rate = 1.0 / (1.0 / model.rate + 1.0 / SOBOL_POINTS_PER_SECOND)
+    check_tosses("qmc", n, rate, "use a smaller n (16 × a power of two)")
 
 
 def estimate(
@@ -73,6 +99,7 @@ def estimate(
             f"qmc needs n = {replicates} replicates × a power of two, got n = {n}; "
             f"try {below} or {2 * below}"
         )
+    check_work(n, replicates, model)
     root = seed_sequence(seed)
     children = root.spawn(replicates)
     tasks = [(model, dist, child, points) for child in children]
