@@ -20,7 +20,6 @@ from coinflight.cli.options import (
 )
 from coinflight.cli.presets import PresetOption, preset_distribution
 from coinflight.cli.progress import Quiet, progress_bar
-from coinflight.landing import DRAG_TOSSES_PER_SECOND
 from coinflight.cli.surface import (
     DragCoefficient,
     DropHeight,
@@ -31,6 +30,7 @@ from coinflight.cli.surface import (
     outcome_model,
     surface_payload,
 )
+from coinflight.landing import DRAG_TOSSES_PER_SECOND
 
 if TYPE_CHECKING:
     from coinflight.coin import Coin
