@@ -120,12 +120,13 @@ def _bands_per_node(dist: TossDistribution, spin_names: tuple[str, ...], n: int)
     return float(np.sqrt(mean_square)) * float(last - first) / (2.0 * np.pi) + 2.0
 
 
-def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> None:
+def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
     """ValueError (:func:`coinflight._validation.work_bound`) when the grid of ``n`` cells per
     parameter needs more than :data:`MAX_NODE_BYTES` of nodes or more work than :data:`MAX_WORK`
     (brute force with a slower outcome model: at most an hour of its tosses).
 
     O(1) time and memory: callers running several grids (convergence) check them all first.
+    Returns the estimated time, s on the reference machine.
     """
     n = check_count("n", n)
     ranged = dist.ranged
@@ -151,6 +152,7 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
             _WAY_ON,
             BAND_COUNTS_PER_SECOND,
         )
+        return combos * bands / BAND_COUNTS_PER_SECOND
     else:
         v.work_bound(
             f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one (fast band "
@@ -161,6 +163,7 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
             _WAY_ON,
             min(CONFIGURATIONS_PER_SECOND, model.rate),
         )
+    return total / min(CONFIGURATIONS_PER_SECOND, model.rate)
 
 
 def estimate(

@@ -57,10 +57,18 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
 def check_work(
     n: int, replicates: int = DEFAULT_REPLICATES, model: OutcomeModel = HAND_CATCH
 ) -> None:
-    """ValueError unless ``n`` points fit Sobol's :data:`SOBOL_BITS` bits per scrambling and the
-    run limit (:data:`coinflight._validation.MAX_RUN_SECONDS`); nothing is allocated."""
+    """ValueError unless ``n`` is ``replicates`` × a power of two, its points fit Sobol's
+    :data:`SOBOL_BITS` bits per scrambling and the run limit
+    (:data:`coinflight._validation.MAX_RUN_SECONDS`); nothing is allocated."""
     n = check_count("n", n)
     replicates = check_count("replicates", replicates, 2)
+    points = n // replicates
+    if n % replicates or points & (points - 1):
+        below = replicates * 2 ** max(0, math.floor(math.log2(max(1, n // replicates))))
+        raise ValueError(
+            f"qmc needs n = {replicates} replicates × a power of two, got n = {n}; "
+            f"try {below} or {2 * below}"
+        )
     v.work_bound(
         f"qmc with n = {n} in {replicates} scramblings",
         n // replicates,
@@ -69,8 +77,12 @@ def check_work(
         f"SciPy's Sobol sequence has {SOBOL_BITS} bits; use n ≤ {replicates} × 2^{SOBOL_BITS} "
         f"= {replicates << SOBOL_BITS}",
     )
-    rate = 1.0 / (1.0 / model.rate + 1.0 / SOBOL_POINTS_PER_SECOND)
-    check_tosses("qmc", n, rate, "use a smaller n (16 × a power of two)")
+    check_tosses("qmc", n, rate(model), "use a smaller n (16 × a power of two)")
+
+
+def rate(model: OutcomeModel = HAND_CATCH) -> float:
+    """Points a second: the model's tosses and SciPy's scrambled Sobol points together."""
+    return 1.0 / (1.0 / model.rate + 1.0 / SOBOL_POINTS_PER_SECOND)
 
 
 def estimate(
@@ -92,14 +104,8 @@ def estimate(
     t0 = time.perf_counter()
     n = check_count("n", n)
     replicates = check_count("replicates", replicates, 2)
-    points = n // replicates
-    if n % replicates or points & (points - 1):
-        below = replicates * 2 ** max(0, math.floor(math.log2(max(1, n // replicates))))
-        raise ValueError(
-            f"qmc needs n = {replicates} replicates × a power of two, got n = {n}; "
-            f"try {below} or {2 * below}"
-        )
     check_work(n, replicates, model)
+    points = n // replicates
     root = seed_sequence(seed)
     children = root.spawn(replicates)
     tasks = [(model, dist, child, points) for child in children]
