@@ -78,6 +78,9 @@ def ratio_for(probability: float = 1.0 / 3.0, model: EdgeModel = "dynamic") -> f
     return float(brentq(excess, 0.0, high, xtol=1e-15, rtol=4 * np.finfo(float).eps))
 
 
+SIM_RATIOS = (1e-3, 100.0)
+"""Ratios h/d a simulation takes: from a 24 µm foil to a 2.4 m rod (the plot's axis ends at
+100 at most, :data:`coinflight.plotting.edge.MAX_RATIO`)."""
 MAX_SIM_TOSSES = 10**7
 """Most simulated tosses per ratio: they are landed in one batch (~100 bytes each, 1 GB)."""
 SIM_DIAMETER = 0.024
@@ -132,7 +135,7 @@ def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> l
     from coinflight.landing import BOUNCING_TOSSES_PER_SECOND, land
     from coinflight.surface import Surface
 
-    x = np.atleast_1d(v.positive("thickness/diameter ratio", ratios))
+    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
     if x.ndim != 1:
         raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
     n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)

@@ -18,7 +18,7 @@ from coinflight import _validation as v
 from coinflight._files import replacing
 from coinflight.core.outcome import FACE_NAMES, HEADS, face_from_alignment
 from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR, new_figure
-from coinflight.plotting.toss import coin_rim
+from coinflight.plotting.toss import MAX_CURVE_POINTS, coin_rim
 
 if TYPE_CHECKING:
     from matplotlib.animation import FuncAnimation
@@ -31,8 +31,7 @@ FACE_COLORS = {HEADS: HEADS_COLOR, 0: TAILS_COLOR}
 MAX_FRAMES = 2000
 """Most frames a movie may have (each is drawn and held in memory as an image: ~1 MB)."""
 CURVE_POINTS_PER_TURN = 40
-MAX_CURVE_POINTS = 10**6
-"""Most points of the n·Z curve beside the coin (40 a turn: at most 25,000 turns)."""
+"""Points a turn of the n·Z curve beside the coin (at most :data:`MAX_CURVE_POINTS`)."""
 
 
 @dataclass(frozen=True, eq=False)
