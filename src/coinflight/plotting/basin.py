@@ -164,10 +164,10 @@ class BasinMap:
             return []
         half_width = np.arccos(-np.clip(cot2, 0.0, 1.0))
         curves: list[tuple[FloatArray, FloatArray]] = []
-        k_max = int(float(np.max(rate[valid])) * t_hi / (2 * math.pi)) + 1
+        top = float(np.max(rate[valid]))
+        k_max = int(top * t_hi / (2 * math.pi)) + 1
         v.work_bound(
-            f"drawing the analytic boundaries of a map up to {float(np.max(rate[valid])):.3g} rad/s × "
-            f"{t_hi:.3g} s",
+            f"drawing the analytic boundaries of a map up to {top:.3g} rad/s × {t_hi:.3g} s",
             2 * (k_max + 1),
             MAX_BOUNDARIES,
             "curves",
