@@ -176,8 +176,8 @@ class BasinMap:
         )
         for k in range(k_max + 1):
             for sign in (-1.0, 1.0):
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    t = (2 * math.pi * k + sign * half_width) / rate
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    t = (2 * math.pi * k + sign * half_width) / rate  # inf: off the map
                 inside = valid & (t >= t_lo) & (t <= t_hi)
                 if np.any(inside):
                     curves.append((np.where(inside, t, np.nan), w))
