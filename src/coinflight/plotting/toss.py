@@ -119,13 +119,6 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     s_lab = np.asarray(catch.angular_momentum).reshape(k, 3)
     faces = np.atleast_1d(outcome.face)
     turns = np.atleast_1d(outcome.rotations)
-    psi = np.atleast_1d(outcome.psi)
-    launch = Flight(coin, toss).at(0.0 * toss.flight_time)
-    r_mm = coin.radius * 1e3
-    rim0 = coin_rim(launch.attitude, r_mm).reshape(k, -1, 3)
-    rim1 = coin_rim(catch.attitude, r_mm).reshape(k, -1, 3)
-    n0 = np.asarray(launch.normal).reshape(k, 3)
-
     omegas = np.broadcast_to(toss.omega, (*toss.shape, 3)).reshape(k, 3)
     spins, which = np.unique(omegas, axis=0, return_inverse=True)
     samples_per_spin = [
@@ -140,6 +133,13 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         "points",
         "use a smaller spin or flight time (the sphere cannot show so many turns)",
     )
+    psi = np.atleast_1d(outcome.psi)
+    launch = Flight(coin, toss).at(0.0 * toss.flight_time)
+    r_mm = coin.radius * 1e3
+    rim0 = coin_rim(launch.attitude, r_mm).reshape(k, -1, 3)
+    rim1 = coin_rim(catch.attitude, r_mm).reshape(k, -1, 3)
+    n0 = np.asarray(launch.normal).reshape(k, 3)
+
     distinct_spins = len(spins)
     ncols = max(1, min(ncols, k))
     nrows = math.ceil(k / ncols)
