@@ -1,9 +1,7 @@
 """Probability of heads over a distribution of tosses: one entry point, four methods.
 
 >>> from coinflight.distributions import Uniform
->>> from coinflight import _validation as v
-from coinflight.ensemble import TossDistribution
-from coinflight.probability._runner import check_count, check_runner
+>>> from coinflight.ensemble import TossDistribution
 >>> d = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 >>> round(estimate(d, "exact").p_heads, 6)
 0.497471
