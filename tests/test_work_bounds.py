@@ -164,6 +164,14 @@ def test_qmc_within_sobols_bits_is_bounded_by_time():
         qmc.check_work(100)
 
 
+def test_qmc_replicates_are_bounded_before_seeding():
+    # 2^30 scramblings of one point each: a billion seeds and Sobol engines before any point.
+    refused_cheaply(
+        lambda: estimate(FIG_2A, "qmc", n=2**30, replicates=2**30, seed=1),
+        "replicates must be between 2 and 1024, got 1073741824",
+    )
+
+
 # --- convergence (reported: --grid-sizes 99999999999 allocated 745 GiB) ---------------------
 
 

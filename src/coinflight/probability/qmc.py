@@ -28,6 +28,9 @@ from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_detai
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 DEFAULT_REPLICATES = 16
+MAX_REPLICATES = 1024
+"""Most scramblings: each is a task with its own seed and Sobol engine (2^30 of them would build
+a billion before a point is drawn); 16 already give the error estimate (Owen 1997)."""
 SOBOL_BITS = 30
 """Bits of SciPy's Sobol generator (its default): at most 2^30 points per scrambling."""
 SOBOL_POINTS_PER_SECOND = 2.5e7
@@ -61,7 +64,7 @@ def check_work(
     :data:`SOBOL_BITS` bits per scrambling and the run limit
     (:data:`coinflight._validation.MAX_RUN_SECONDS`); nothing is allocated."""
     n = check_count("n", n)
-    replicates = check_count("replicates", replicates, 2)
+    replicates = v.count("replicates", replicates, 2, MAX_REPLICATES)
     points = n // replicates
     if n % replicates or points & (points - 1):
         below = replicates * 2 ** max(0, math.floor(math.log2(max(1, n // replicates))))
@@ -103,7 +106,7 @@ def estimate(
     """
     t0 = time.perf_counter()
     n = check_count("n", n)
-    replicates = check_count("replicates", replicates, 2)
+    replicates = v.count("replicates", replicates, 2, MAX_REPLICATES)
     check_work(n, replicates, model)
     points = n // replicates
     root = seed_sequence(seed)
