@@ -271,8 +271,11 @@ def work_bound(
     ``rate`` units a second on the reference 2-core machine, when given), the limit and the way
     on::
 
-        monte-carlo with n = 9.22e+18 is 9.22e+18 tosses (about 1.9e+03 years at 1.5e+08
-        tosses/s), more than the limit of 1e+10 tosses; use a smaller n …
+        monte-carlo with n = 9223372036854775808 is 9.22e+18 tosses (about 1.2e+04 years at
+        2.5e+07 tosses/s), more than the limit of 9e+10 tosses (about 60 min); use a smaller n
+        (the standard error is at most 0.5/√n)
+
+    An integer beyond float range counts as infinite work (no OverflowError).
     """
     try:
         amount = float(amount)
