@@ -80,7 +80,8 @@ Size = Annotated[
         rich_help_panel=METHOD_PANEL,
         help="grid: cells per ranged parameter (default 5000 with up to 2 ranged parameters, "
         "else the largest N with N^k ≤ 10^8); monte-carlo: tosses (default "
-        "1000000); qmc: points, 16 × a power of two (default 1048576).",
+        "1000000); qmc: points, 16 × a power of two (default 1048576). Sizes beyond about a "
+        "minute's work (grid) or an hour's (monte-carlo, qmc) are refused with the estimate.",
     ),
 ]
 Seed = Annotated[
