@@ -56,8 +56,10 @@ def test_gif_frames_show_both_faces(tmp_path):
 def test_rejects_batches_and_bad_frames():
     with pytest.raises(ValueError, match="single toss"):
         animate_toss(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=np.array([0.6, 0.7])))
-    with pytest.raises(ValueError, match="frames must be a whole number"):
+    with pytest.raises(ValueError, match="frames must be between 2 and 2000, got 1"):
         animate_toss(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7), frames=1)
+    with pytest.raises(ValueError, match="frames must be between 2 and 2000, got 2001"):
+        animate_toss(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7), frames=2001)
 
 
 @pytest.mark.skipif(ffmpeg_available(), reason="ffmpeg is installed here")

@@ -107,8 +107,13 @@ def test_cli_plot_edge_with_simulated_points(tmp_path):
         (["--seed", "3"], "--seed needs --simulate N (it sets the simulation)"),
         (["--ratios", "0.3"], "--ratios needs --simulate N (it sets the simulation)"),
         (["--simulate", "5", "--ratios", "0.3,x"], "--ratios must be comma-separated numbers"),
-        (["--simulate", "5", "--ratios", "0.3,-1"], "ratio must be positive and finite, got -1.0"),
-        (["--max-ratio", "0.5"], "max ratio must be a number above 1/√3"),
+        (
+            ["--simulate", "5", "--ratios", "0.3,-1"],
+            "ratio must be between 0.001 and 100, got -1.0",
+        ),
+        (["--simulate", "5", "--ratios", "1e308"], "ratio must be between 0.001 and 100, got 1e"),
+        (["--max-ratio", "0.5"], "max ratio must be above 1/√3 ≈ 0.577 and at most 100, got 0.5"),
+        (["--max-ratio", "1e308"], "max ratio must be above 1/√3 ≈ 0.577 and at most 100, got 1e"),
     ],
 )
 def test_cli_plot_edge_bad_input(tmp_path, extra, message):

@@ -9,6 +9,7 @@ arithmetic finite, and a usual range whose violation is only a :class:`Plausibil
 
 from __future__ import annotations
 
+import math
 import numbers
 import warnings
 from collections.abc import Iterable
@@ -240,3 +241,59 @@ def choice(name: str, value: object, allowed: Iterable[str]) -> str:
 
 def _unit(unit: str) -> str:
     return f" (in {unit})" if unit else ""
+
+
+def duration(seconds: float) -> str:
+    """A time for a message: '40 s', '12 min', '3.5 h', '45 days', '2.1e+03 years'."""
+    for size, unit, below in (
+        (1, "s", 120),
+        (60, "min", 120),
+        (3600, "h", 48),
+        (86400, "days", 730),
+    ):
+        if seconds / size < below:
+            return f"{seconds / size:.2g} {unit}"
+    return f"{seconds / (365.25 * 86400):.2g} years"
+
+
+def work_bound(
+    what: str,
+    amount: float | int,
+    limit: float,
+    unit: str,
+    way_on: str,
+    rate: float | None = None,
+) -> None:
+    """The one refusal of over-large work, raised before anything is allocated or computed.
+
+    ValueError unless ``amount`` ≤ ``limit`` (both in ``unit``: tosses, configurations,
+    frames, bytes). The message names the request (``what``), the estimate (with the time at
+    ``rate`` units a second on the reference 2-core machine, when given), the limit and the way
+    on::
+
+        monte-carlo with n = 9223372036854775808 is 9.22e+18 tosses (about 1.2e+04 years at
+        2.5e+07 tosses/s), more than the limit of 9e+10 tosses (about 60 min); use a smaller n
+        (the standard error is at most 0.5/√n)
+
+    An integer beyond float range counts as infinite work (no OverflowError).
+    """
+    try:
+        amount = float(amount)
+    except OverflowError:  # an int beyond float range: refused like any other
+        amount = math.inf
+    if amount <= limit:
+        return
+    timing = limit_time = ""
+    if rate:
+        timing = f" (about {duration(amount / rate)} at {rate:.2g} {unit}/s)"
+        limit_time = f" (about {duration(limit / rate)})"
+    raise ValueError(
+        f"{what} is {amount:.3g} {unit}{timing}, more than the limit of {limit:.3g} {unit}"
+        f"{limit_time}; {way_on}"
+    )
+
+
+MAX_RUN_SECONDS = 3600.0
+"""Longest run a size may ask for, s on the reference 2-core machine: Monte Carlo and QMC
+tosses, table landings, convergence series (the grid keeps its own minute,
+:data:`coinflight.probability.grid.MAX_WORK`)."""

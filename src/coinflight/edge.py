@@ -78,6 +78,11 @@ def ratio_for(probability: float = 1.0 / 3.0, model: EdgeModel = "dynamic") -> f
     return float(brentq(excess, 0.0, high, xtol=1e-15, rtol=4 * np.finfo(float).eps))
 
 
+SIM_RATIOS = (1e-3, 100.0)
+"""Ratios h/d a simulation takes: from a 24 µm foil to a 2.4 m rod (the plot's axis ends at
+100 at most, :data:`coinflight.plotting.edge.MAX_RATIO`)."""
+MAX_SIM_TOSSES = 10**7
+"""Most simulated tosses per ratio: they are landed in one batch (~100 bytes each, 1 GB)."""
 SIM_DIAMETER = 0.024
 """Diameter of the simulated coins, m (a thickness h = ratio × d is made for each ratio)."""
 SIM_SPIN = (150.0, 300.0)
@@ -127,14 +132,21 @@ def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> l
     from ``seed`` (``np.random.SeedSequence``), so the points are independent and reproducible.
     """
     from coinflight.coin import Coin
-    from coinflight.landing import land
+    from coinflight.landing import BOUNCING_TOSSES_PER_SECOND, land
     from coinflight.surface import Surface
 
-    x = np.atleast_1d(v.positive("thickness/diameter ratio", ratios))
+    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
     if x.ndim != 1:
         raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"number of tosses must be a whole number ≥ 1, got {n!r}")
+    n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)
+    v.work_bound(
+        f"{len(x)} ratios × {n} tosses",
+        len(x) * n,
+        BOUNCING_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+        "tosses",
+        "use fewer ratios or tosses",
+        BOUNCING_TOSSES_PER_SECOND,
+    )
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed must be a whole number ≥ 0, got {seed!r}")
     surface = Surface("table", drop_height=SIM_DROP, restitution=0.0)

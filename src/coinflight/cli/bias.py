@@ -281,6 +281,7 @@ def plot_bias(
 
     Example: coinflight plot bias --out bias.png --monte-carlo 20000 --measured 0.5077
     """
+    from coinflight import _validation as v
     from coinflight import bias as b
     from coinflight.cli.figures import parse_numbers
     from coinflight.plotting.bias import plot_bias
@@ -292,6 +293,14 @@ def plot_bias(
     if monte_carlo is not None:
         angles = parse_numbers(psi_points or PSI_POINTS, "--psi-points", "60,80,100")
         b.check_psi(angles, degrees=True)
+        v.work_bound(
+            f"{len(angles)} angles × {b.check_tosses(monte_carlo)} tosses",
+            len(angles) * monte_carlo,
+            b.TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+            "tosses",
+            "use fewer --psi-points or a smaller --monte-carlo",
+            b.TOSSES_PER_SECOND,
+        )
         # One seed per point, spawned from --seed, so the points are independent.
         seeds = [int(s.generate_state(1)[0]) for s in _spawn(seed, len(angles))]
         simulated = [

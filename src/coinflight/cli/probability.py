@@ -30,15 +30,13 @@ from coinflight.cli.surface import (
     outcome_model,
     surface_payload,
 )
+from coinflight.landing import DRAG_TOSSES_PER_SECOND
 
 if TYPE_CHECKING:
     from coinflight.coin import Coin
     from coinflight.ensemble import TossDistribution
 
 METHOD_PANEL = "Method"
-DRAG_TOSSES_PER_SECOND = 20
-"""Tosses a second with --drag (one SciPy integration each), measured on the 2-core reference
-machine: 100 tosses in 5.3 s on one thread."""
 _DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
 
 
@@ -82,7 +80,8 @@ Size = Annotated[
         rich_help_panel=METHOD_PANEL,
         help="grid: cells per ranged parameter (default 5000 with up to 2 ranged parameters, "
         "else the largest N with N^k ≤ 10^8); monte-carlo: tosses (default "
-        "1000000); qmc: points, 16 × a power of two (default 1048576).",
+        "1000000); qmc: points, 16 × a power of two (default 1048576). Sizes beyond about a "
+        "minute's work (grid) or an hour's (monte-carlo, qmc) are refused with the estimate.",
     ),
 ]
 Seed = Annotated[

@@ -127,13 +127,14 @@ def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | 
 
 
 def check_bounces(surface: Surface, bounces: int | None) -> None:
-    """--bounces needs a table and a count ≥ 0."""
+    """--bounces needs a table and a count between 0 and landing.MAX_BOUNCES."""
     if bounces is None:
         return
     if surface.kind != "table":
         raise ValueError("--bounces applies to --surface table only")
-    if bounces < 0:
-        raise ValueError(f"--bounces must be ≥ 0, got {bounces}")
+    from coinflight.landing import check_max_bounces
+
+    check_max_bounces(bounces, "--bounces")
 
 
 def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:

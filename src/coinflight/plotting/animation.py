@@ -18,7 +18,7 @@ from coinflight import _validation as v
 from coinflight._files import replacing
 from coinflight.core.outcome import FACE_NAMES, HEADS, face_from_alignment
 from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR, new_figure
-from coinflight.plotting.toss import coin_rim
+from coinflight.plotting.toss import MAX_CURVE_POINTS, coin_rim
 
 if TYPE_CHECKING:
     from matplotlib.animation import FuncAnimation
@@ -28,6 +28,10 @@ if TYPE_CHECKING:
     from coinflight.toss import Toss
 
 FACE_COLORS = {HEADS: HEADS_COLOR, 0: TAILS_COLOR}
+MAX_FRAMES = 2000
+"""Most frames a movie may have (each is drawn and held in memory as an image: ~1 MB)."""
+CURVE_POINTS_PER_TURN = 40
+"""Points a turn of the n·Z curve beside the coin (at most :data:`MAX_CURVE_POINTS`)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -155,10 +159,17 @@ def animate_toss(
     flight = Flight(coin, toss)
     t_end = float(toss.flight_time)
     turns = float(flight.outcome.rotations)
+    v.work_bound(
+        f"the n·Z curve of a toss turning {turns:.3g} times ({CURVE_POINTS_PER_TURN} points a "
+        "turn)",
+        CURVE_POINTS_PER_TURN * turns,
+        MAX_CURVE_POINTS,
+        "points",
+        "use a smaller spin or flight time (a movie of 400 frames cannot show so many turns)",
+    )
     if frames is None:
         frames = int(np.clip(16 * turns, 60, 400))
-    if not isinstance(frames, int | np.integer) or frames < 2:
-        raise ValueError(f"frames must be a whole number ≥ 2, got {frames!r}")
+    v.count("frames", frames, 2, MAX_FRAMES)
     if not isinstance(fps, int | np.integer) or not 1 <= fps <= 120:
         raise ValueError(f"fps must be a whole number between 1 and 120, got {fps!r}")
 
@@ -203,7 +214,7 @@ def animate_toss(
     ax_n = fig.add_subplot(grid[0, 1])
     ax_n.axhspan(0, 1.05, color=HEADS_COLOR, alpha=0.15, lw=0)
     ax_n.axhspan(-1.05, 0, color=TAILS_COLOR, alpha=0.15, lw=0)
-    fine = np.linspace(0.0, t_end, max(400, int(40 * turns)))
+    fine = np.linspace(0.0, t_end, max(400, int(CURVE_POINTS_PER_TURN * turns)))
     ax_n.plot(fine, np.asarray(flight.at(fine).normal)[:, 2], color="black", lw=1)
     (n_dot,) = ax_n.plot([], [], "o", color="black")
     ax_n.set_xlim(0, t_end)

@@ -36,6 +36,9 @@ OutcomeFunction = Callable[["Coin", FloatArray, FloatArray, float, float], FaceA
 """(coin, omega (..., 3) rad/s, flight_time (...) s, start_sign, g) -> faces (...) int8."""
 
 SpinAxis = Literal["x", "precession"]
+MAX_BOUNDARIES = 2000
+"""Most analytic boundary curves drawn on a map (400 points each): 1,000 bands, already a grey
+blur at a figure's size (the paper's Fig 1 has about 20)."""
 
 
 def caught_faces(
@@ -161,11 +164,20 @@ class BasinMap:
             return []
         half_width = np.arccos(-np.clip(cot2, 0.0, 1.0))
         curves: list[tuple[FloatArray, FloatArray]] = []
-        k_max = int(float(np.max(rate[valid])) * t_hi / (2 * math.pi)) + 1
+        top = float(np.max(rate[valid]))
+        k_max = int(top * t_hi / (2 * math.pi)) + 1
+        v.work_bound(
+            f"drawing the analytic boundaries of a map up to {top:.3g} rad/s × {t_hi:.3g} s",
+            2 * (k_max + 1),
+            MAX_BOUNDARIES,
+            "curves",
+            "draw the map without them (--no-boundaries, boundaries=False) or map smaller spins "
+            "or flight times",
+        )
         for k in range(k_max + 1):
             for sign in (-1.0, 1.0):
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    t = (2 * math.pi * k + sign * half_width) / rate
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    t = (2 * math.pi * k + sign * half_width) / rate  # inf: off the map
                 inside = valid & (t >= t_lo) & (t <= t_hi)
                 if np.any(inside):
                     curves.append((np.where(inside, t, np.nan), w))
@@ -287,6 +299,7 @@ def plot_basin(
 
     from coinflight.plotting.style import EDGE_COLOR, HEADS_COLOR, TAILS_COLOR, new_figure
 
+    curves = basin.boundaries() if boundaries else []  # refused before anything is drawn
     fig = new_figure(figsize=(7.2, 5.6))
     ax = fig.add_subplot()
     cmap = ListedColormap([TAILS_COLOR, HEADS_COLOR, EDGE_COLOR])
@@ -309,7 +322,6 @@ def plot_basin(
     if basin.fraction(EDGE) > 0:
         handles.append(Patch(color=EDGE_COLOR, label=f"edge ({basin.fraction(EDGE):.1%})"))
     if boundaries:
-        curves = basin.boundaries()
         for t, w in curves:
             ax.plot(t, w, color="black", lw=0.7)
         if curves:

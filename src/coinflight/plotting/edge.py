@@ -14,6 +14,9 @@ from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, METHOD_COLORS, ne
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
+MAX_RATIO = 100.0
+"""Right end of the h/d axis at most: a coin 100 times thicker than wide is a rod, and the
+geometric model's P(edge) is 0.997 already at h/d = 14."""
 MODEL_STYLES = {"geometric": "-", "dynamic": "--"}
 MODEL_LABELS = {
     "geometric": "geometric: random orientation at rest, (h/d)/√(1 + (h/d)²)",
@@ -44,8 +47,10 @@ def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) 
         the line P(edge) = 1/3, and a vertical mark at each model's ratio for it
         (:func:`coinflight.edge.ratio_for`: 1/(2√2) ≈ 0.354 and 1/√3 ≈ 0.577).
     """
-    if not (math.isfinite(max_ratio) and max_ratio > EXACT_RATIOS["dynamic"][1]):
-        raise ValueError(f"max ratio must be a number above 1/√3 ≈ 0.577, got {max_ratio!r}")
+    if not (math.isfinite(max_ratio) and EXACT_RATIOS["dynamic"][1] < max_ratio <= MAX_RATIO):
+        raise ValueError(
+            f"max ratio must be above 1/√3 ≈ 0.577 and at most {MAX_RATIO:g}, got {max_ratio!r}"
+        )
     fig = new_figure()
     ax = fig.add_subplot()
     x = np.linspace(0.0, max_ratio, 801)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from coinflight import _validation as v
 from coinflight.core.outcome import FACE_NAMES
 from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR, new_figure
 
@@ -30,6 +31,13 @@ ARROW_SCALE = 1.5
 SPHERE_AZIM = -60.0
 """Azimuth of the view of the unit sphere, degrees (matplotlib's default)."""
 PANEL_ZOOM = 0.85
+CURVE_POINTS_PER_TURN = 60
+"""Points a turn of the normal's path on the sphere (smooth at the figure's size)."""
+MAX_CURVE_POINTS = 200_000
+"""Most points of a drawn path (plot_toss's sphere, the animation's n·Z curve): 3,300 turns at
+60 a turn (a toss makes 5-50). 480,000 points took 35 s to draw on the busy 2-core machine."""
+MAX_PANELS = 100
+"""Most tosses (panels) one figure draws."""
 """Size of a 3-D box within its panel (matplotlib's ``zoom``); 1 lets labels spill out."""
 
 
@@ -101,15 +109,30 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         raise ValueError(
             f"plot_toss draws one toss or a one-dimensional batch, got shape {toss.shape}"
         )
+    k = int(np.prod(toss.shape)) if toss.shape else 1
+    v.count("number of panels (flight times)", k, 1, MAX_PANELS)
     flight = Flight(coin, toss)
     catch = flight.catch
     outcome = flight.outcome
-    k = int(np.prod(toss.shape)) if toss.shape else 1
     times = np.atleast_1d(np.broadcast_to(toss.flight_time, toss.shape))
     normals = np.asarray(catch.normal).reshape(k, 3)
     s_lab = np.asarray(catch.angular_momentum).reshape(k, 3)
     faces = np.atleast_1d(outcome.face)
     turns = np.atleast_1d(outcome.rotations)
+    omegas = np.broadcast_to(toss.omega, (*toss.shape, 3)).reshape(k, 3)
+    spins, which = np.unique(omegas, axis=0, return_inverse=True)
+    samples_per_spin = [
+        max(400, CURVE_POINTS_PER_TURN * float(turns[np.ravel(which) == j].max()))
+        for j in range(len(spins))
+    ]
+    v.work_bound(
+        f"the path of the normal over {float(turns.max()):.3g} turns ({CURVE_POINTS_PER_TURN} "
+        "points a turn)",
+        sum(samples_per_spin),
+        MAX_CURVE_POINTS,
+        "points",
+        "use a smaller spin or flight time (the sphere cannot show so many turns)",
+    )
     psi = np.atleast_1d(outcome.psi)
     launch = Flight(coin, toss).at(0.0 * toss.flight_time)
     r_mm = coin.radius * 1e3
@@ -117,8 +140,6 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     rim1 = coin_rim(catch.attitude, r_mm).reshape(k, -1, 3)
     n0 = np.asarray(launch.normal).reshape(k, 3)
 
-    omegas = np.broadcast_to(toss.omega, (*toss.shape, 3)).reshape(k, 3)
-    spins, which = np.unique(omegas, axis=0, return_inverse=True)
     distinct_spins = len(spins)
     ncols = max(1, min(ncols, k))
     nrows = math.ceil(k / ncols)
@@ -161,7 +182,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     for j, w in enumerate(spins):
         mine = np.ravel(which) == j
         one = Toss(omega=w, flight_time=np.ones(()), start=toss.start, g=toss.g)
-        samples = max(400, int(60 * turns[mine].max()))
+        samples = int(samples_per_spin[j])
         path = normal_path(coin, one, np.linspace(0.0, float(times[mine].max()), samples))
         sphere.plot(*path.T, color="#555555", lw=0.8)
         s_hat = s_lab[mine][0] / max(float(np.linalg.norm(s_lab[mine][0])), 1e-300)

@@ -77,3 +77,16 @@ def run_tasks(
 def check_count(name: str, value: object, minimum: int = 1) -> int:
     """A whole number ≥ ``minimum`` (not a bool, not 2.5), or TypeError/ValueError naming it."""
     return v.count(name, value, minimum)
+
+
+def check_tosses(method: str, n: int, rate: float, way_on: str = "") -> None:
+    """ValueError (:func:`coinflight._validation.work_bound`) unless ``n`` tosses at ``rate``
+    a second take at most :data:`coinflight._validation.MAX_RUN_SECONDS`."""
+    v.work_bound(
+        f"{method} with n = {n}",
+        n,
+        rate * v.MAX_RUN_SECONDS,
+        "tosses",
+        way_on or "use a smaller n (the standard error is at most 0.5/√n)",
+        rate,
+    )

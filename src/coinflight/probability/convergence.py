@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from coinflight import _validation as v
 from coinflight._files import write_text
 from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import Executor, Progress, check_count
@@ -173,11 +174,7 @@ def convergence(
             raise ValueError(f"no sizes given for {m}")
         for s in sizes[m]:
             check_count(f"{m} size", s)
-    if "grid" in methods:  # refuse an over-large grid before computing anything
-        from coinflight.probability.grid import check_work
-
-        for s in sizes["grid"]:
-            check_work(dist, s)
+    check_work(dist, methods, sizes)
     try:
         ex = estimate(dist, "exact")
         exact, how = ex.p_heads, str(ex.details["how"])
@@ -206,6 +203,35 @@ def convergence(
         grid_cells=grid_cells if "monte-carlo" in methods else None,
         description=dist.describe(),
         parameters={name: d.describe() for name, d in dist.parameters.items()},
+    )
+
+
+def check_work(
+    dist: TossDistribution, methods: Sequence[str], sizes: dict[str, Sequence[int]]
+) -> None:
+    """Refuse, before computing anything, a size no single estimate accepts or a series whose
+    sizes add up to more than :data:`coinflight._validation.MAX_RUN_SECONDS` of work."""
+    from coinflight.probability import grid, monte_carlo, qmc
+    from coinflight.probability.outcome import HAND_CATCH
+
+    seconds = 0.0
+    for m in methods:
+        for s in sizes[m]:
+            check_count(f"{m} size", s)
+            if m == "grid":
+                seconds += grid.check_work(dist, s)
+            elif m == "monte-carlo":
+                monte_carlo.check_work(s)
+                seconds += s / HAND_CATCH.rate
+            else:
+                qmc.check_work(s)
+                seconds += s / qmc.rate()
+    v.work_bound(
+        f"the convergence series ({', '.join(methods)})",
+        seconds,
+        v.MAX_RUN_SECONDS,
+        "s of work",
+        "give fewer or smaller sizes",
     )
 
 

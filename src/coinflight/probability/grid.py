@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from coinflight import _validation as v
 from coinflight.ensemble import TossDistribution
 from coinflight.probability._runner import (
     Executor,
@@ -33,6 +34,8 @@ MAX_WORK = 8 * 10**8
 """Largest amount of work accepted, about a minute on the reference 2-core machine: the number
 of configurations evaluated one by one (brute force, ~1.5e7 a second), or spin nodes × bands
 per node (band counting, ~1.3e7 a second; measured in this module's docstring cases)."""
+BAND_COUNTS_PER_SECOND = 1.3e7
+CONFIGURATIONS_PER_SECOND = 1.5e7
 DEFAULT_CELLS = 5000
 """Cells per ranged parameter by default with at most two ranged parameters (the paper's)."""
 DEFAULT_CONFIGURATIONS = 10**8
@@ -58,11 +61,13 @@ def default_cells(k: int) -> int:
     return n
 
 
-def _too_much(what: str) -> ValueError:
-    return ValueError(
-        f"{what}, more than the grid's limit of {MAX_WORK:.3g} (about a minute); use a smaller "
-        "n, or --method monte-carlo or qmc (or exact where it applies)"
-    )
+_WAY_ON = "use a smaller n, or --method monte-carlo or qmc (or exact where it applies)"
+MAX_NODE_BYTES = 2**30
+"""Largest memory for band counting's nodes, bytes: n floats per ranged spin, plus the flight
+time's n nodes in each of two concurrent tasks (1 GiB: n ≤ 4.5e7 with the flight time alone
+ranged). Brute force builds its configurations chunk by chunk (no O(n) array)."""
+_SAMPLE = 4096
+"""Nodes sampled to estimate the mean square of a spin (for the work bound, not the count)."""
 
 
 def _band_task(args: tuple[Any, ...]) -> int:
@@ -95,51 +100,70 @@ def _brute_task(args: tuple[Any, ...]) -> np.ndarray:
     return model.count(dist, np.stack([(i + 0.5) / n for i in idx]))
 
 
-def _bands_per_node(
-    dist: TossDistribution, spin_nodes: list[np.ndarray], spin_names: tuple[str, ...], n: int
-) -> float:
+def _bands_per_node(dist: TossDistribution, spin_names: tuple[str, ...], n: int) -> float:
     """Typical number of bands a spin node's flight-time range meets (for the work limit).
 
     ωp ≤ sqrt(ωx² + ωy² + (I3/I1 ωz)²); its root mean square over the product grid is the
-    square root of the summed mean squares. Each node meets about ωp ΔT / 2π + 2 bands.
+    square root of the summed mean squares, each taken over ≤ :data:`_SAMPLE` midpoints (no
+    O(n) array). Each node meets about ωp ΔT / 2π + 2 bands, ΔT between the outer time nodes.
     """
     i1, i3 = dist.moments
     weight = {"omega_x": 1.0, "omega_y": 1.0, "omega_z": (i3 / i1) ** 2}
     mean_square = 0.0
     for name in weight:
         if name in spin_names:
-            values = spin_nodes[spin_names.index(name)]
+            values = getattr(dist, name).ppf(midpoints(min(n, _SAMPLE)))
             mean_square += weight[name] * float(np.mean(np.square(values)))
         else:
             mean_square += weight[name] * getattr(dist, name).mean ** 2
-    t_nodes = dist.flight_time.ppf(midpoints(n))
-    span = float(t_nodes[-1] - t_nodes[0])
-    return float(np.sqrt(mean_square)) * span / (2.0 * np.pi) + 2.0
+    first, last = dist.flight_time.ppf(np.array([0.5 / n, 1.0 - 0.5 / n]))
+    return float(np.sqrt(mean_square)) * float(last - first) / (2.0 * np.pi) + 2.0
 
 
-def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> None:
-    """ValueError when the grid of ``n`` cells per parameter exceeds :data:`MAX_WORK`.
+def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
+    """ValueError (:func:`coinflight._validation.work_bound`) when the grid of ``n`` cells per
+    parameter needs more than :data:`MAX_NODE_BYTES` of nodes or more work than :data:`MAX_WORK`
+    (brute force with a slower outcome model: at most an hour of its tosses).
 
-    Cheap (O(n)): callers running several grids (convergence) check them all before starting.
+    O(1) time and memory: callers running several grids (convergence) check them all first.
+    Returns the estimated time, s on the reference machine.
     """
+    n = check_count("n", n)
     ranged = dist.ranged
     k = len(ranged)
     total = n**k
     spin_names = tuple(name for name in ranged if name != "flight_time")
     if isinstance(model, HandCatch) and "flight_time" in ranged:
-        spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]
-        combos = n ** len(spin_names)
-        bands = _bands_per_node(dist, spin_nodes, spin_names, n)
-        if combos * bands > MAX_WORK:
-            raise _too_much(
-                f"a grid of {n}^{k} = {total:.3g} configurations means {combos:.3g} spin nodes "
-                f"× ~{bands:.3g} bands each = {combos * bands:.3g} band counts"
-            )
-    elif total > MAX_WORK:
-        raise _too_much(
-            f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one "
-            "(fast band counting needs a ranged flight time and the hand catch)"
+        v.work_bound(
+            f"a grid of n = {n} cells per parameter",
+            8 * n * (len(spin_names) + 2),
+            MAX_NODE_BYTES,
+            "bytes of nodes",
+            _WAY_ON,
         )
+        combos = n ** len(spin_names)
+        bands = _bands_per_node(dist, spin_names, n)
+        v.work_bound(
+            f"a grid of {n}^{k} = {total:.3g} configurations ({combos:.3g} spin nodes × "
+            f"~{bands:.3g} bands each)",
+            combos * bands,
+            MAX_WORK,
+            "band counts",
+            _WAY_ON,
+            BAND_COUNTS_PER_SECOND,
+        )
+        return combos * bands / BAND_COUNTS_PER_SECOND
+    else:
+        v.work_bound(
+            f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one (fast band "
+            "counting needs a ranged flight time and the hand catch)",
+            total,
+            min(MAX_WORK, model.rate * v.MAX_RUN_SECONDS),
+            "configurations",
+            _WAY_ON,
+            min(CONFIGURATIONS_PER_SECOND, model.rate),
+        )
+    return total / min(CONFIGURATIONS_PER_SECOND, model.rate)
 
 
 def estimate(

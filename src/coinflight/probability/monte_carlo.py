@@ -24,6 +24,7 @@ from coinflight.probability._runner import (
     Executor,
     Progress,
     check_count,
+    check_tosses,
     executor_or_threads,
     run_tasks,
 )
@@ -104,6 +105,12 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
     return counts
 
 
+def check_work(n: int, model: OutcomeModel = HAND_CATCH) -> None:
+    """ValueError naming the time when ``n`` tosses of ``model`` exceed the run limit
+    (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate`` tosses a second)."""
+    check_tosses("monte-carlo", check_count("n", n), model.rate)
+
+
 def estimate(
     dist: TossDistribution,
     n: int,
@@ -147,6 +154,7 @@ def estimate(
     n = check_count("n", n)
     chunk_size = check_count("chunk size", chunk_size)
     cells = 0 if grid_cells is None else check_count("grid cells", grid_cells)
+    check_work(n, model)
     root = seed_sequence(seed)
     n_blocks = math.ceil(n / BLOCK)
     per_task = max(1, math.ceil(chunk_size / BLOCK))

@@ -31,6 +31,10 @@ class OutcomeModel:
     """Names of extra counts :meth:`count` returns after (tails, heads, edge), e.g.
     ``("unsettled",)`` for tosses a landing model could not settle (their faces are still
     counted). The estimators add them up and report them in ``details`` (count and fraction)."""
+    rate: float = 1e5
+    """Tosses a second on the reference 2-core machine, all threads: the estimators' work
+    bounds (:func:`coinflight.probability.monte_carlo.check_work` …) turn a size into a time
+    with it. Subclasses state their own measured rate."""
 
     def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
         """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n).
@@ -47,6 +51,9 @@ class HandCatch(OutcomeModel):
     """Caught in the hand at launch height: the face is the sign of n(T)·n0 (Stefan & Cheche)."""
 
     name = "hand catch"
+    rate = 2.5e7
+    """Measured: Monte Carlo, 10⁸ tosses of ω_x 60-90 rad/s, T 0.6-0.9 s in 4.2 s on the 2-core
+    machine shared with other jobs (benchmarks/bench_probability.py measures it quietly)."""
 
     def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
         from coinflight.core import sampling

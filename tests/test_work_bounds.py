@@ -1,0 +1,414 @@
+"""Work and memory are bounded before anything is allocated (issue 10, items 3, 4, 6 and 5).
+
+Every size a user gives (grid cells, tosses, Sobol points, convergence series, frames, figure
+points, boundary curves, bounces, drag integrations) is checked against a stated limit by one
+function, :func:`coinflight._validation.work_bound`, whose refusal names the request, the
+estimate (with its time at the measured rate), the limit and the way on. Each reported case is
+here, in the library and through the command line (exit 2, one line, no traceback); "before
+allocating" is checked with tracemalloc: the peak of a refusal is far below the would-be size.
+"""
+
+from __future__ import annotations
+
+import time
+import tracemalloc
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from coinflight import Coin, Toss
+from coinflight import _validation as v
+from coinflight.cli import app
+from coinflight.distributions import Uniform
+from coinflight.ensemble import TossDistribution
+from coinflight.probability import estimate
+
+runner = CliRunner()
+FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
+QUARTER = Coin(radius=0.01213, thickness=0.00175, mass=0.00567)  # REFERENCES §7, in SI
+HUGE = [2**63, 99999999999999999999999, 2**2000]
+MB = 2**20
+
+
+def one_line_error(*args: object) -> str:
+    """Run the CLI; assert exit 2 and one error line on stderr, no traceback; the message."""
+    result = runner.invoke(app, [str(a) for a in args])
+    assert result.exit_code == 2, result.output
+    assert "Traceback" not in result.output
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    assert lines[0].startswith("coinflight: error: ")
+    return lines[0].removeprefix("coinflight: error: ")
+
+
+def refused_cheaply(call: Callable[[], object], match: str, peak_mb: float = 16.0) -> str:
+    """``call()`` raises ValueError matching ``match`` within 2 s and a tracemalloc peak below
+    ``peak_mb`` MB (the refused requests would allocate GBs); the message."""
+    tracemalloc.start()
+    start = time.perf_counter()
+    try:
+        with pytest.raises(ValueError, match=match) as info:
+            call()
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert time.perf_counter() - start < 2.0
+    assert peak < peak_mb * MB, f"peak {peak / MB:.1f} MB before refusing"
+    return str(info.value)
+
+
+# --- the one refusal --------------------------------------------------------------------------
+
+
+def test_work_bound_names_request_estimate_time_limit_and_way_on():
+    v.work_bound("x", 100, 100, "tosses", "use less", 10.0)  # at the limit: accepted
+    with pytest.raises(ValueError) as info:
+        v.work_bound("monte-carlo with n = 7200", 7200, 3600, "tosses", "use a smaller n", 1.0)
+    assert str(info.value) == (
+        "monte-carlo with n = 7200 is 7.2e+03 tosses (about 2 h at 1 tosses/s), more than the "
+        "limit of 3.6e+03 tosses (about 60 min); use a smaller n"
+    )
+    # Integers beyond float range are refused like any other (no OverflowError).
+    with pytest.raises(ValueError, match=r"is inf points, more than the limit of 10 points; y"):
+        v.work_bound("a request", 2**2000, 10, "points", "y")
+
+
+@pytest.mark.parametrize(
+    ("seconds", "text"),
+    [
+        (40, "40 s"),
+        (7200, "2 h"),
+        (720, "12 min"),
+        (86400 * 45, "45 days"),
+        (3.2e13, "1e+06 years"),
+    ],
+)
+def test_duration_reads_as_a_person_would_say_it(seconds, text):
+    assert v.duration(seconds) == text
+
+
+# --- grid (reported: n = 1e9 allocated 7.45 GiB; n = 2^63 an IndexError) -----------------------
+
+
+@pytest.mark.parametrize("n", [10**9, 10**12, *HUGE])
+def test_grid_refuses_before_allocating(n):
+    message = refused_cheaply(lambda: estimate(FIG_2A, "grid", n=n), "bytes of nodes")
+    assert f"a grid of n = {n} cells per parameter" in message
+    assert "more than the limit of 1.07e+09 bytes of nodes" in message
+    assert "monte-carlo or qmc" in message
+
+
+def test_grid_work_check_is_constant_memory():
+    from coinflight.probability import grid
+
+    # 3e7 cells: accepted (5.7 bands × 3e7 nodes ≤ 8e8), and the check itself builds no
+    # O(n) array (the nodes alone would be 240 MB each).
+    tracemalloc.start()
+    seconds = grid.check_work(FIG_2A, 3 * 10**7)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert peak < MB
+    assert 0 < seconds < 60
+
+
+def test_grid_brute_force_with_table_landings_is_bounded_by_their_rate():
+    from coinflight.landing import TableLanding
+    from coinflight.surface import Surface
+
+    model = TableLanding(Surface("table", drop_height=0.3))
+    message = refused_cheaply(
+        lambda: estimate(FIG_2A, "grid", n=10**5, model=model), "configurations"
+    )
+    assert "1e+10 configurations (about 17 h at 1.6e+05 configurations/s)" in message
+
+
+# --- Monte Carlo and QMC (reported: 2^63 ran until killed; SciPy's 'increasing bits' leaked) ----
+
+
+@pytest.mark.parametrize("n", HUGE)
+def test_monte_carlo_counts_are_bounded_by_time(n):
+    message = refused_cheaply(lambda: estimate(FIG_2A, "monte-carlo", n=n, seed=1), "tosses")
+    assert message.startswith(f"monte-carlo with n = {n} is ")
+    assert "years at 2.5e+07 tosses/s), more than the limit of 9e+10 tosses (about 60 min)" in (
+        message
+    )
+
+
+def test_monte_carlo_limit_follows_the_outcome_model():
+    from coinflight.landing import TableLanding
+    from coinflight.surface import Drag, Surface
+
+    model = TableLanding(Surface("table", drop_height=0.3), Drag(coefficient=1.0))
+    message = refused_cheaply(
+        lambda: estimate(FIG_2A, "monte-carlo", n=10**6, seed=1, model=model), "tosses"
+    )
+    assert "(about 14 h at 20 tosses/s), more than the limit of 7.2e+04 tosses" in message
+
+
+@pytest.mark.parametrize("n", [16 << 31, 2**63])
+def test_qmc_points_fit_sobols_bits(n):
+    message = refused_cheaply(lambda: estimate(FIG_2A, "qmc", n=n, seed=1), "points per")
+    assert "more than the limit of 1.07e+09 points per scrambling" in message
+    assert "use n ≤ 16 × 2^30 = 17179869184" in message
+    assert "bits`" not in message  # SciPy's own words never reach the user
+
+
+def test_qmc_within_sobols_bits_is_bounded_by_time():
+    # 16 × 2^30 points fit the bits, but take about 23 min: accepted (an hour is the limit).
+    from coinflight.probability import qmc
+
+    qmc.check_work(16 << 30)
+    with pytest.raises(ValueError, match="qmc needs n = 16 replicates × a power of two"):
+        qmc.check_work(100)
+
+
+def test_qmc_replicates_are_bounded_before_seeding():
+    # 2^30 scramblings of one point each: a billion seeds and Sobol engines before any point.
+    refused_cheaply(
+        lambda: estimate(FIG_2A, "qmc", n=2**30, replicates=2**30, seed=1),
+        "replicates must be between 2 and 1024, got 1073741824",
+    )
+
+
+# --- convergence (reported: --grid-sizes 99999999999 allocated 745 GiB) ---------------------
+
+
+@pytest.mark.parametrize(
+    ("sizes", "match"),
+    [
+        ({"grid_sizes": [5, 99999999999]}, "a grid of n = 99999999999 cells per parameter"),
+        ({"event_sizes": [100, 2**63]}, f"monte-carlo with n = {2**63}"),
+        ({"qmc_sizes": [64, 2**63]}, "points per scrambling"),
+        # Each size allowed, the series not: 2 × 8e10 tosses is 1.8 h.
+        ({"event_sizes": [8 * 10**10, 8 * 10**10]}, r"series \(monte-carlo\) is 6\.4e\+03 s"),
+    ],
+)
+def test_convergence_checks_every_size_before_computing(sizes, match):
+    from coinflight.probability.convergence import convergence
+
+    methods = [
+        m
+        for m, key in [("grid", "grid_sizes"), ("monte-carlo", "event_sizes"), ("qmc", "qmc_sizes")]
+        if key in sizes
+    ]
+    refused_cheaply(lambda: convergence(FIG_2A, methods, **sizes), match)
+
+
+# --- figures and animation (reported: animate --omega 1e9 allocated 33 GiB) -------------------
+
+
+def test_animation_refuses_too_many_turns_before_drawing():
+    import mpl_toolkits.mplot3d.art3d  # noqa: F401  (imported before timing)
+
+    from coinflight.plotting.animation import animate_toss
+
+    toss = Toss(omega=(1e9, 0.0, 0.0), flight_time=0.7)
+    message = refused_cheaply(lambda: animate_toss(QUARTER, toss), "points")
+    assert "the n·Z curve of a toss turning 1.11e+08 times (40 points a turn)" in message
+    with pytest.raises(ValueError, match="frames must be between 2 and 2000, got 99999"):
+        animate_toss(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7), frames=99999)
+
+
+def test_plot_toss_refuses_too_many_turns_and_panels():
+    import matplotlib.gridspec  # noqa: F401  (imported before timing)
+
+    from coinflight.plotting.toss import plot_toss
+    from coinflight.toss import Flight
+
+    warm = Flight(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7))
+    warm.catch, warm.outcome  # noqa: B018  (compiled and imported before timing)
+
+    fast = Toss(omega=(2.2e-308, 1e-320, 1e9), flight_time=0.521912)  # the generated case
+    message = refused_cheaply(lambda: plot_toss(QUARTER, fast), "points")
+    assert "the path of the normal over" in message
+    many = Toss(omega=(80.0, 0.0, 0.0), flight_time=np.linspace(0.5, 0.9, 101))
+    with pytest.raises(ValueError, match=r"number of panels \(flight times\) must be between 1 "):
+        plot_toss(QUARTER, many)
+
+
+def test_basin_boundaries_are_bounded():
+    from coinflight.plotting.basin import basin_map
+
+    basin = basin_map(QUARTER, spin=(-1e9, 1e9), flight_time=(0.6, 0.9), resolution=(4, 4))
+    message = refused_cheaply(basin.boundaries, "curves")
+    assert "more than the limit of 2e+03 curves" in message
+    assert "--no-boundaries" in message
+
+
+# --- counts of bias and edge simulations, bounces -------------------------------------------
+
+
+@pytest.mark.parametrize("n", HUGE)
+def test_same_side_simulation_is_bounded(n):
+    from coinflight.bias import simulate_same_side
+
+    message = refused_cheaply(lambda: simulate_same_side(45.0, n, 0, degrees=True), "tosses")
+    assert "more than the limit of 1.44e+10 tosses (about 60 min)" in message
+
+
+def test_edge_simulation_is_bounded():
+    from coinflight.edge import simulate_edge
+
+    too_many = f"number of tosses must be between 1 and 10000000, got {2**63}"
+    with pytest.raises(ValueError, match=too_many):
+        simulate_edge([0.3], 2**63, 1)
+    with pytest.raises(TypeError, match=r"number of tosses must be an integer, got float 2\.5"):
+        simulate_edge([0.3], 2.5, 1)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match=r"ratio must be between 0\.001 and 100, got 1e"):
+        simulate_edge([0.3, 1e308], 10, 1)
+    message = refused_cheaply(lambda: simulate_edge(np.full(100, 0.3), 10**7, 1), "tosses")
+    assert "100 ratios × 10000000 tosses is 1e+09 tosses" in message
+
+
+def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
+    from coinflight.core import bounce
+    from coinflight.landing import MAX_BOUNCES, TableLanding
+    from coinflight.surface import Surface
+
+    assert MAX_BOUNCES == bounce.MAX_IMPACTS
+    table = Surface("table", drop_height=0.3)
+    with pytest.raises(ValueError, match="max_bounces must be between 0 and 2000, got 10"):
+        TableLanding(table, max_bounces=10**23)
+
+
+# --- the drag integrator (reported: hangs with spin damping; tiny coins) ----------------------
+
+
+def test_drag_refuses_damping_faster_than_the_integrator_can_follow():
+    from coinflight.core import drag
+
+    tiny = Coin(radius=1e-3, thickness=1e-4, mass=1e-4)  # I1 = 2.5e-11 kg m²: K/I1 = 4e7 1/s
+    i1, i3 = tiny.moments
+    model = drag.DragModel(tiny.mass, tiny.radius, (i1, i1, i3), 9.81, 1.17, 1e-3)
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=r"spin damping must be at most .* N m s for this coin"):
+        drag.catch(model, (80.0, 0.0, 0.0), 3.43)
+    assert time.perf_counter() - start < 1.0
+    light = drag.DragModel(1e-6, 1.0, (1e-7, 1e-7, 2e-7), 9.81, 10.0, 0.0)  # a 2 m leaf
+    with pytest.raises(ValueError, match=r"air drag C_d = 10 on this coin .* would stop its fall"):
+        drag.catch(light, (80.0, 0.0, 0.0), 3.43)
+
+
+def test_drag_integration_stops_at_its_evaluation_bound(monkeypatch):
+    from coinflight.core import drag
+
+    i1, i3 = QUARTER.moments
+    model = drag.DragModel(QUARTER.mass, QUARTER.radius, (i1, i1, i3), 9.81, 1.17, 0.0)
+    monkeypatch.setattr(drag, "MAX_EVALUATIONS", 200)
+    with pytest.raises(drag.IntegrationLimit, match="needed more than 200 evaluations"):
+        drag.catch(model, (80.0, 0.0, 0.0), 3.43)
+
+
+def test_strongest_accepted_damping_on_a_quarter_ends_quickly():
+    # Reported: spin damping 1 ran > 30 s; now ≤ 1e-3 N m s, and that runs in seconds.
+    from coinflight.core import drag
+
+    i1, i3 = QUARTER.moments
+    model = drag.DragModel(QUARTER.mass, QUARTER.radius, (i1, i1, i3), 9.81, 10.0, 1e-3)
+    start = time.perf_counter()
+    t, _ = drag.catch(model, (80.0, 0.0, 0.0), 3.43)
+    assert time.perf_counter() - start < 10.0
+    assert 0.5 < t < 0.7  # drag shortens the 0.699 s of the vacuum flight
+
+
+# --- the reported command lines ---------------------------------------------------------------
+
+FIG = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
+
+
+@pytest.mark.parametrize(
+    ("args", "expected"),
+    [
+        (["probability", *FIG, "--method", "grid", "--n", "1000000000"], "bytes of nodes"),
+        (["probability", *FIG, "--method", "grid", "--n", str(2**63)], "bytes of nodes"),
+        (["probability", *FIG, "--method", "monte-carlo", "--n", str(2**63)], "years at"),
+        (["probability", *FIG, "--method", "qmc", "--n", str(2**63)], "SciPy's Sobol sequence"),
+        (["convergence", *FIG, "--grid-sizes", "99999999999", "--out", "x"], "bytes of nodes"),
+        (
+            [
+                "convergence",
+                *FIG,
+                "--methods",
+                "monte-carlo",
+                "--event-sizes",
+                str(2**63),
+                "--out",
+                "x",
+            ],
+            "years at",
+        ),
+        (
+            ["animate", "--omega", "1e9", "0", "0", "--flight-time", "0.7", "--out", "a.gif"],
+            "1.11e+08 times",
+        ),
+        (["bias", "--psi", "45", "--monte-carlo", str(2**63)], "more than the limit"),
+        (
+            ["plot", "bias", "--psi-points", "45", "--monte-carlo", str(2**63), "--out", "b.png"],
+            "more than the limit",
+        ),
+        (
+            [
+                "plot",
+                "bias",
+                "--psi-points",
+                "45,50,60,70,80",
+                "--monte-carlo",
+                "10000000000",
+                "--out",
+                "b.png",
+            ],
+            "5 angles × 10000000000 tosses is 5e+10 tosses (about 3.5 h",
+        ),
+        (["plot", "toss", "--omega", "0", "0", "1e9", "-T", "0.7", "--out", "t.png"], "points"),
+        (["plot", "basin", "--omega-x", "-1e9:1e9", "--out", "b.png"], "--no-boundaries"),
+        (["plot", "edge", "--max-ratio", "1e308", "--out", "e.png"], "at most 100"),
+        (
+            [
+                "toss",
+                "--omega",
+                "80",
+                "0",
+                "0",
+                "-T",
+                "0.7",
+                "--surface",
+                "table",
+                "--bounces",
+                "99999999999999999999999",
+            ],
+            "--bounces must be between 0 and 2000",
+        ),
+        (
+            [
+                "toss",
+                "--omega",
+                "80",
+                "0",
+                "0",
+                "-T",
+                "0.7",
+                "--surface",
+                "table",
+                "--drag",
+                "1",
+                "--spin-damping",
+                "1e-3",
+                "--radius",
+                "1e-3",
+                "--thickness",
+                "1e-4",
+                "--mass",
+                "1e-4",
+            ],
+            "spin damping must be at most",
+        ),
+    ],
+)
+def test_reported_command_lines_end_in_one_line(args, expected, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    start = time.perf_counter()
+    assert expected in one_line_error(*args)
+    assert time.perf_counter() - start < 10.0
+    assert not list(tmp_path.iterdir())  # nothing written
