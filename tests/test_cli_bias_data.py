@@ -281,7 +281,7 @@ def test_psi_sd_default_is_fixed_angle():
             "--counts x.txt)",
         ),
         (["--dataset", "nope"], "dataset must be one of bartos2023; got 'nope'"),
-        (["--counts", "/dev/zero"], "counts files may be at most 64 MiB (67,108,864 bytes)"),
+        (["--counts", "/dev/zero"], "counts files may be at most 16 MiB (16,777,216 bytes)"),
     ],
 )
 def test_data_source_errors_are_one_line(args, message):
