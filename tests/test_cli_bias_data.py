@@ -281,7 +281,7 @@ def test_psi_sd_default_is_fixed_angle():
             "--counts x.txt)",
         ),
         (["--dataset", "nope"], "dataset must be one of bartos2023; got 'nope'"),
-        (["--counts", "/dev/zero"], "counts files may be at most 64 MiB (67,108,864 bytes)"),
+        (["--counts", "/dev/zero"], "counts files may be at most 16 MiB (16,777,216 bytes)"),
     ],
 )
 def test_data_source_errors_are_one_line(args, message):
@@ -316,3 +316,23 @@ def test_data_text_names_the_dataset_and_its_doi():
         "bartos2023 (Bartoš et al. 2023, doi:10.1080/01621459.2025.2516210): 48 people, "
         "350,757 flips"
     )
+
+
+def test_data_forest_plot_of_too_many_people_is_refused_before_computing(tmp_path, monkeypatch):
+    # One row per person: a forest plot of 200,000 people would be a figure miles tall.
+    import coinflight.cli.data
+    import coinflight.data
+
+    monkeypatch.setattr(coinflight.cli.data, "PLOT_MAX_PEOPLE", 47)
+
+    def refuse(*_args, **_kwargs):
+        raise AssertionError("summarized before refusing the plot")
+
+    monkeypatch.setattr(coinflight.data, "summarize", refuse)
+    result = run("data", "--plot", tmp_path / "forest.png")
+    assert result.exit_code == 2
+    assert result.stderr == (
+        "coinflight: error: --plot draws one row per person: at most 47 people, got 48; "
+        "leave out --plot (--json lists every person)\n"
+    )
+    assert list(tmp_path.iterdir()) == []

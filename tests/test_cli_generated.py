@@ -152,6 +152,8 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
         "--json": st.just(None),
     },
     "data": {
+        "--dataset": st.sampled_from(["bartos2023", "bartos2024", ""]),
+        "--counts": st.sampled_from(["/dev/zero", "/proc/version", "no/such/file.txt", "", "."]),
         "--interval": st.sampled_from(["exact", "wilson", "bayes", ""]),
         "--psi-sd": _number(0, 10),
         "--json": st.just(None),

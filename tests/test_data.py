@@ -313,7 +313,7 @@ def test_files_over_the_size_limit_are_refused_before_reading(tmp_path, monkeypa
 @pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
 def test_dev_zero_is_bounded():
     # A device says it has size 0: it is read up to the limit and no further (was: forever).
-    with pytest.raises(ValueError, match=r"'/dev/zero' is too large: .* at most 64 MiB"):
+    with pytest.raises(ValueError, match=r"'/dev/zero' is too large: .* at most 16 MiB"):
         d.read_counts("/dev/zero")
 
 
@@ -413,3 +413,8 @@ def test_many_people_are_summarized_as_arrays():
         assert name == f"P{i}"
         ref = binomtest(same, flips, 0.5).proportion_ci(confidence_level=0.95)
         assert p.ci95 == pytest.approx((ref.low, ref.high), rel=1e-9)
+
+
+def test_windows_and_old_mac_line_ends_keep_line_numbers():
+    text = f"{HEADER}\r\nA 1 2 3 4 4 10\r\n\rB 1 2 3 4 4 10\rC 1 1 1 1 2 4"
+    assert d.parse_counts(text).lines == (2, 4, 5)

@@ -26,6 +26,7 @@ Montgomery's p(ψ) (:mod:`coinflight.bias`). It is either a *fixed* angle shared
 from __future__ import annotations
 
 import codecs
+import io
 import math
 import os
 from collections.abc import Iterable
@@ -46,15 +47,16 @@ INTERVAL_METHODS = ("exact", "wilson")
 
 CONFIDENCE = 0.95
 
-MAX_FILE_BYTES = 64 * 1024 * 1024
-"""Largest counts file read, bytes (64 MiB: over a million people in Bartoš et al.'s layout).
-Checked before the file is read whole; a device such as /dev/zero is read no further."""
+MAX_FILE_BYTES = 16 * 1024 * 1024
+"""Largest counts file read, bytes (16 MiB: 250,000 people of Bartoš et al.'s 48-byte lines fill
+12 MB). Checked before the file is read whole; a device such as /dev/zero is read no further."""
 
 MAX_LINE_CHARS = 1000
 """Longest line of a counts file, characters."""
 
-MAX_PEOPLE = 1_000_000
-"""Most data lines (people) in a counts table."""
+MAX_PEOPLE = 250_000
+"""Most data lines (people) in a counts table: 5,000 times Bartoš et al.'s 48 people. The JSON
+report of that many people takes about 0.5 GB of memory (1.9 GB for a million)."""
 
 MAX_FLIPS = 10**12
 """Most flips of a counts table, all people together (and so of any one count).
@@ -232,7 +234,10 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
     values: list[list[str]] = []
     linenos: list[int] = []
     header_seen = False
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    # One line at a time (universal newlines): a file of 16 MiB of empty lines is not split
+    # into eight million strings first.
+    for lineno, line in enumerate(io.StringIO(text, newline=None), start=1):
+        raw = line.rstrip("\n")
         where = f"{source}, line {lineno}"
         if len(raw) > MAX_LINE_CHARS:
             raise ValueError(

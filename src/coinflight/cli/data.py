@@ -16,6 +16,10 @@ from coinflight.cli.options import (
     output_file,
     print_json,
 )
+from coinflight.datasets import DATASETS, DEFAULT_DATASET
+
+PLOT_MAX_PEOPLE = 1000
+"""Most people a forest plot draws (one row each: 1,000 rows make a figure 180 inches tall)."""
 
 Counts = Annotated[
     Path | None,
@@ -32,8 +36,9 @@ Dataset = Annotated[
     typer.Option(
         "--dataset",
         metavar="NAME",
-        help="A dataset shipped with coinflight: bartos2023 (Bartoš et al. 2023, 350,757 "
-        "flips by 48 people; the default when --counts is not given).",
+        help="A dataset shipped with coinflight: "
+        + "; ".join(f"{d.name} ({d.short}: {d.title})" for d in DATASETS.values())
+        + f". Default {DEFAULT_DATASET} when --counts is not given.",
     ),
 ]
 Interval = Annotated[
@@ -81,7 +86,6 @@ def data(
     Example: coinflight data --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """
     from coinflight.data import load_dataset, read_counts, summarize
-    from coinflight.datasets import DATASETS, DEFAULT_DATASET
 
     if dataset is not None and counts is not None:
         raise ValueError(
@@ -112,6 +116,11 @@ def data(
         table = read_counts(counts)
         source = str(counts)
         described = {"dataset": None, "source": str(counts)}
+    if plot is not None and len(table.people) > PLOT_MAX_PEOPLE:
+        raise ValueError(
+            f"--plot draws one row per person: at most {PLOT_MAX_PEOPLE:,} people, got "
+            f"{len(table.people):,}; leave out --plot (--json lists every person)"
+        )
     summary = summarize(table, interval, math.radians(psi_sd))
     written = []
     if plot is not None:
