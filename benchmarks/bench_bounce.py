@@ -4,7 +4,7 @@
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also P(edge) of a US nickel vs (e, μ)
 
-coinflight: the event-driven numba kernel (``coinflight.landing.land``; exact flights between
+coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
 dropped onto a table 0.8 m below launch (e = 0.5, μ = 0.3): tosses per second, median of
 repeats, all threads of the machine.
@@ -31,8 +31,8 @@ import numpy as np
 from coinflight import Coin
 from coinflight.core.impact import resting_face
 from coinflight.core.outcome import EDGE, HEADS, TAILS
-from coinflight.landing import land
-from coinflight.surface import Surface
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import land
 
 COIN = Coin.preset("us-nickel")
 G = 9.81

@@ -28,8 +28,8 @@ import numpy as np
 from coinflight.core import sampling
 from coinflight.core.numerical import integrate
 from coinflight.core.torque_free import normal_alignment
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
 
 GENERAL = TossDistribution(

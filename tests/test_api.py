@@ -53,9 +53,9 @@ def test_top_level_exports_the_nouns_and_verbs():
 
 
 def test_top_level_names_are_the_library_objects():
-    from coinflight.bias import same_side_probability
     from coinflight.plotting.bias import plot_bias
     from coinflight.probability.convergence import convergence
+    from coinflight.studies.bias import same_side_probability
 
     assert coinflight.same_side_probability is same_side_probability
     assert coinflight.plot_bias is plot_bias

@@ -11,9 +11,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from coinflight import Coin
-from coinflight import bias as b
 from coinflight.core import precession, torque_free
-from coinflight.distributions import Fixed, Normal, Uniform
+from coinflight.model.distributions import Fixed, Normal, Uniform
+from coinflight.studies import bias as b
 
 # REFERENCES §2 (Diaconis, Holmes & Montgomery 2007): p(ψ) printed to 3 decimals, so the
 # tolerance is half a unit of the last digit.

@@ -11,8 +11,8 @@ from scipy.optimize import brentq
 from coinflight import Coin, Flight, Toss
 from coinflight.core import bounce
 from coinflight.core.outcome import EDGE, HEADS, TAILS
-from coinflight.landing import Landing, TableLanding, land
-from coinflight.surface import Drag, Surface
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.table import Landing, TableLanding, land
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")

@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from coinflight import bias as b
 from coinflight.cli import app
-from coinflight.distributions import Normal
+from coinflight.model.distributions import Normal
+from coinflight.studies import bias as b
 
 # The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
 BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
@@ -321,14 +321,14 @@ def test_data_text_names_the_dataset_and_its_doi():
 def test_data_forest_plot_of_too_many_people_is_refused_before_computing(tmp_path, monkeypatch):
     # One row per person: a forest plot of 200,000 people would be a figure miles tall.
     import coinflight.cli.data
-    import coinflight.data
+    import coinflight.studies.data
 
     monkeypatch.setattr(coinflight.cli.data, "PLOT_MAX_PEOPLE", 47)
 
     def refuse(*_args, **_kwargs):
         raise AssertionError("summarized before refusing the plot")
 
-    monkeypatch.setattr(coinflight.data, "summarize", refuse)
+    monkeypatch.setattr(coinflight.studies.data, "summarize", refuse)
     result = run("data", "--plot", tmp_path / "forest.png")
     assert result.exit_code == 2
     assert result.stderr == (

@@ -10,8 +10,8 @@ import pytest
 from typer.testing import CliRunner
 
 from coinflight.cli import app
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
 
 runner = CliRunner()

@@ -11,8 +11,8 @@ from typer.testing import CliRunner
 from coinflight import Coin, Toss
 from coinflight.cli import app
 from coinflight.core.bounce import MAX_IMPACTS
-from coinflight.landing import Landing
-from coinflight.surface import Surface
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import Landing
 
 TOSS = ["toss", "--omega", "240", "5", "3", "--flight-time", "0.49"]
 
@@ -157,7 +157,7 @@ def test_probability_bad_surface_input():
 
 
 def test_basin_after_k_bounces(tmp_path):
-    from coinflight.landing import land, table_faces
+    from coinflight.outcomes.table import land, table_faces
     from coinflight.plotting.basin import basin_map
 
     coin = Coin.preset("us-nickel")
@@ -185,7 +185,7 @@ def test_basin_after_k_bounces(tmp_path):
 
 def test_table_basin_title_names_coin_start_grid_and_table():
     from coinflight.cli.surface import table_title
-    from coinflight.landing import table_faces
+    from coinflight.outcomes.table import table_faces
     from coinflight.plotting.basin import basin_map, plot_basin
 
     surface = Surface("table", drop_height=0.3, restitution=0.4, friction=0.2)

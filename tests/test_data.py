@@ -9,9 +9,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from coinflight import bias as b
-from coinflight import data as d
-from coinflight.distributions import Normal
+from coinflight.model.distributions import Normal
+from coinflight.studies import bias as b
+from coinflight.studies import data as d
 
 # The counts of Bartoš et al. shipped inside the package (coinflight.datasets), nothing outside.
 BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))

@@ -11,8 +11,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from coinflight import Coin
-from coinflight.distributions import Fixed, Normal, Uniform, as_distribution, parse_distribution
-from coinflight.ensemble import PARAMETERS, TossDistribution
+from coinflight.model.distributions import (
+    Fixed,
+    Normal,
+    Uniform,
+    as_distribution,
+    parse_distribution,
+)
+from coinflight.model.ensemble import PARAMETERS, TossDistribution
 
 
 @pytest.mark.parametrize(

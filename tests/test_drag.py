@@ -7,7 +7,7 @@ import pytest
 
 from coinflight import Coin, Flight, Toss
 from coinflight.core import drag
-from coinflight.surface import Drag
+from coinflight.model.surface import Drag
 
 COIN = Coin.preset("us-quarter")
 I1, I3 = COIN.moments

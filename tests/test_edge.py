@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from _images import assert_nontrivial, colour_fraction
-from coinflight.edge import edge_probability, ratio_for
+from coinflight.studies.edge import edge_probability, ratio_for
 
 
 # Yong & Mahadevan 2011 (REFERENCES §5): P(edge) = 1/3 at h/d = 1/(2√2) ≈ 0.354 for a random
@@ -85,7 +85,7 @@ def test_cli_plot_edge_with_simulated_points(tmp_path):
     from typer.testing import CliRunner
 
     from coinflight.cli import app
-    from coinflight.edge import simulate_edge
+    from coinflight.studies.edge import simulate_edge
 
     out = tmp_path / "edge.svg"
     args = ["plot", "edge", "--out", str(out), "--simulate", "2000", "--seed", "4"]

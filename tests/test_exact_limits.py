@@ -16,8 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from coinflight.core import bands
-from coinflight.distributions import Fixed, Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight.model.distributions import Fixed, Uniform
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
 from coinflight.probability.exact import MAX_PIECES
 

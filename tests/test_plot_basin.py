@@ -45,8 +45,8 @@ def test_heads_fraction_is_the_papers_rule_on_the_midpoint_grid():
 def test_heads_pixels_are_the_grid_method_count(wx, wy, wz):
     # The requirement: fraction of heads pixels == grid probability on the same grid
     # (estimate(method="grid") counts bands along T; the map evaluates every pixel).
-    from coinflight.distributions import Uniform
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.distributions import Uniform
+    from coinflight.model.ensemble import TossDistribution
     from coinflight.probability import estimate
 
     n = 333

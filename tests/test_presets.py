@@ -10,13 +10,13 @@ import pytest
 from typer.testing import CliRunner
 
 from coinflight import Coin
-from coinflight import bias as b
 from coinflight.cli import app
 from coinflight.core import precession
-from coinflight.distributions import Fixed, Normal, Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.presets import PRESETS, human, preset
+from coinflight.model.distributions import Fixed, Normal, Uniform
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
+from coinflight.studies import bias as b
+from coinflight.studies.presets import PRESETS, human, preset
 
 # Finite-phase allowance, as in tests/test_bias.py (the closed form assumes a uniform phase).
 PHASE_BIAS = 5e-4

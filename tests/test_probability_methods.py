@@ -18,10 +18,10 @@ from hypothesis import strategies as st
 
 from coinflight.core import bands, sampling
 from coinflight.core.torque_free import normal_alignment
-from coinflight.distributions import Fixed, Normal, Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight.model.distributions import Fixed, Normal, Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import OutcomeModel
 from coinflight.probability import PAPER_B_CELLS, ProbabilityResult, estimate, wilson_interval
-from coinflight.probability.outcome import OutcomeModel
 
 T_RANGE = Uniform(0.6, 0.9)  # Stefan & Cheche §3: T ∈ [0.6, 0.9] s in Figs 2-3
 PAPER = {

@@ -16,13 +16,13 @@ from typer.testing import CliRunner
 from coinflight import Coin, Toss
 from coinflight._validation import PlausibilityWarning, Quantity
 from coinflight.cli import app
-from coinflight.coin import MASS, PRESETS, RADIUS, THICKNESS
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.landing import Landing, TableLanding
+from coinflight.model.coin import MASS, PRESETS, RADIUS, THICKNESS
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.model.surface import Surface
+from coinflight.model.toss import GRAVITY
+from coinflight.outcomes.table import Landing, TableLanding
 from coinflight.probability import estimate
-from coinflight.surface import Surface
-from coinflight.toss import GRAVITY
 
 runner = CliRunner()
 QUARTER = {"radius": 0.01213, "thickness": 0.00175, "mass": 0.00567}  # REFERENCES §7, in SI
@@ -64,7 +64,7 @@ def test_coin_outside_its_hard_range_is_a_value_error(field, bad, message):
 def test_coin_hard_range_ends_are_allowed_and_the_flight_stays_finite():
     # The ends of the hard ranges are accepted (with the warning of an unusual coin), and the
     # arithmetic of the flight survives them: that is what the hard range is for.
-    from coinflight.toss import Flight
+    from coinflight.model.toss import Flight
 
     for radius, thickness, mass in [(1e-6, 1e3, 1e-9), (1e3, 1e-6, 1e6), (1e3, 1e3, 1e-9)]:
         with pytest.warns(PlausibilityWarning):
@@ -211,7 +211,7 @@ def test_bool_arrays_are_not_spins():
     ],
 )
 def test_drag_is_bounded(field, bad, message):
-    from coinflight.surface import Drag
+    from coinflight.model.surface import Drag
 
     if message is None:
         with pytest.raises(TypeError, match=r"^air density must be a number"):
@@ -298,7 +298,7 @@ def test_the_estimators_check_the_runner_options_themselves():
 
 
 def test_same_side_simulation_needs_enough_tosses_for_a_standard_error():
-    from coinflight import bias as b
+    from coinflight.studies import bias as b
 
     # Reported: from one toss, "± 0.000000, +0.00 s.e. from the closed form".
     with pytest.raises(ValueError, match=r"^number of tosses must be at least 100 \(from fewer"):

@@ -21,8 +21,8 @@ from typer.testing import CliRunner
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.cli import app
-from coinflight.distributions import Uniform
-from coinflight.ensemble import TossDistribution
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
 
 runner = CliRunner()
@@ -114,8 +114,8 @@ def test_grid_work_check_is_constant_memory():
 
 
 def test_grid_brute_force_with_table_landings_is_bounded_by_their_rate():
-    from coinflight.landing import TableLanding
-    from coinflight.surface import Surface
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import TableLanding
 
     model = TableLanding(Surface("table", drop_height=0.3))
     message = refused_cheaply(
@@ -137,8 +137,8 @@ def test_monte_carlo_counts_are_bounded_by_time(n):
 
 
 def test_monte_carlo_limit_follows_the_outcome_model():
-    from coinflight.landing import TableLanding
-    from coinflight.surface import Drag, Surface
+    from coinflight.model.surface import Drag, Surface
+    from coinflight.outcomes.table import TableLanding
 
     model = TableLanding(Surface("table", drop_height=0.3), Drag(coefficient=1.0))
     message = refused_cheaply(
@@ -214,8 +214,8 @@ def test_animation_refuses_too_many_turns_before_drawing():
 def test_plot_toss_refuses_too_many_turns_and_panels():
     import matplotlib.gridspec  # noqa: F401  (imported before timing)
 
+    from coinflight.model.toss import Flight
     from coinflight.plotting.toss import plot_toss
-    from coinflight.toss import Flight
 
     warm = Flight(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7))
     warm.catch, warm.outcome  # noqa: B018  (compiled and imported before timing)
@@ -242,14 +242,14 @@ def test_basin_boundaries_are_bounded():
 
 @pytest.mark.parametrize("n", HUGE)
 def test_same_side_simulation_is_bounded(n):
-    from coinflight.bias import simulate_same_side
+    from coinflight.studies.bias import simulate_same_side
 
     message = refused_cheaply(lambda: simulate_same_side(45.0, n, 0, degrees=True), "tosses")
     assert "more than the limit of 1.44e+10 tosses (about 60 min)" in message
 
 
 def test_edge_simulation_is_bounded():
-    from coinflight.edge import simulate_edge
+    from coinflight.studies.edge import simulate_edge
 
     too_many = f"number of tosses must be between 1 and 10000000, got {2**63}"
     with pytest.raises(ValueError, match=too_many):
@@ -264,8 +264,8 @@ def test_edge_simulation_is_bounded():
 
 def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
     from coinflight.core import bounce
-    from coinflight.landing import MAX_BOUNCES, TableLanding
-    from coinflight.surface import Surface
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import MAX_BOUNCES, TableLanding
 
     assert MAX_BOUNCES == bounce.MAX_IMPACTS
     table = Surface("table", drop_height=0.3)

@@ -9,7 +9,7 @@ et al. 2008). (``coinflight plot basin --surface table --drop-height 0.3 --bounc
 """
 
 from coinflight import Coin, Surface, basin_map, plot_basin
-from coinflight.landing import table_faces
+from coinflight.outcomes.table import table_faces
 
 coin = Coin.preset("us-quarter")
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)

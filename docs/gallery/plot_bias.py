@@ -9,7 +9,7 @@ the rate measured over 350,757 flips. (``coinflight plot bias --monte-carlo 2000
 """
 
 from coinflight import plot_bias
-from coinflight.bias import psi_for_probability, simulate_same_side
+from coinflight.studies.bias import psi_for_probability, simulate_same_side
 
 measured = 0.5077  # Bartoš et al. 2025: 178,078 of 350,757 flips
 psi = float(psi_for_probability(measured, degrees=True))

@@ -8,6 +8,6 @@ ratios that give 1/3 marked, and simulated dead landings (±2 s.e.).
 """
 
 from coinflight import plot_edge
-from coinflight.edge import simulate_edge
+from coinflight.studies.edge import simulate_edge
 
 fig = plot_edge(simulate_edge([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0], n=300, seed=1))

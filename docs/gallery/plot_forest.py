@@ -8,6 +8,6 @@ line. The counts ship with coinflight. (``coinflight data --plot forest.png``)
 """
 
 from coinflight import plot_forest
-from coinflight.data import load_dataset, summarize
+from coinflight.studies.data import load_dataset, summarize
 
 fig = plot_forest(summarize(load_dataset("bartos2023")), p_model=0.508)

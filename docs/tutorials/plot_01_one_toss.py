@@ -10,9 +10,10 @@ has: *for my coin and the way I toss, what is the chance of heads?*
 # %%
 # One toss
 # --------
-# A :class:`~coinflight.toss.Toss` is the launch: the body-frame spin ω0 in rad/s (x and y about
-# diameters, z about the normal) and the flight time T in s (or ``launch_speed=`` v0 in m/s,
-# T = 2 v0 / g). A :class:`~coinflight.toss.Flight` solves the flight in closed form.
+# A :class:`~coinflight.model.toss.Toss` is the launch: the body-frame spin ω0 in rad/s
+# (x and y about diameters, z about the normal) and the flight time T in s (or
+# ``launch_speed=`` v0 in m/s, T = 2 v0 / g). A :class:`~coinflight.model.toss.Flight` solves
+# the flight in closed form.
 import numpy as np
 
 from coinflight import Coin, Flight, Toss
@@ -46,10 +47,10 @@ print(mine.describe())
 # %%
 # Your own toss distribution, and P(heads)
 # ----------------------------------------
-# A person's tosses spread over ranges. A :class:`~coinflight.ensemble.TossDistribution`
+# A person's tosses spread over ranges. A :class:`~coinflight.model.ensemble.TossDistribution`
 # takes each initial condition as a number (fixed), a
-# :class:`~coinflight.distributions.Uniform` range or a
-# :class:`~coinflight.distributions.Normal`, and :func:`~coinflight.probability.estimate`
+# :class:`~coinflight.model.distributions.Uniform` range or a
+# :class:`~coinflight.model.distributions.Normal`, and :func:`~coinflight.probability.estimate`
 # turns it into a probability. ``"exact"`` integrates over Keller's heads bands, with no
 # sampling error.
 from coinflight import Normal, TossDistribution, Uniform, estimate

@@ -17,7 +17,7 @@ physics to the data.
 # the condition is p(ψ) = ½ + (1/π) arcsin(cot²ψ).
 import numpy as np
 
-from coinflight.bias import psi_for_probability, same_side_probability
+from coinflight.studies.bias import psi_for_probability, same_side_probability
 
 for psi in (90, 85, 80, 70, 60, 45):
     print(f"psi = {psi:2d} deg: p = {float(same_side_probability(psi, degrees=True)):.4f}")
@@ -28,10 +28,10 @@ for psi in (90, 85, 80, 70, 60, 45):
 #
 # The closed form against the full flight
 # ---------------------------------------
-# :func:`~coinflight.bias.simulate_same_side` tosses coins at a given ψ with random flight
+# :func:`~coinflight.studies.bias.simulate_same_side` tosses coins at a given ψ with random flight
 # times and precession rates and counts those that land on the side they started; the
 # closed form should sit within a few standard errors.
-from coinflight.bias import simulate_same_side
+from coinflight.studies.bias import simulate_same_side
 
 for psi in (60.0, 80.0):
     sim = simulate_same_side(psi, n=100_000, seed=1, degrees=True)
@@ -44,11 +44,11 @@ for psi in (60.0, 80.0):
 # %%
 # A natural toss
 # --------------
-# The ``human`` preset (:mod:`coinflight.presets`) is a person's natural toss: launch speed
+# The ``human`` preset (:mod:`coinflight.studies.presets`) is a person's natural toss: launch speed
 # about 2.4 m/s, about 38 rev/s about a diameter and a little spin about the normal, so that
 # ψ is near but below 90°. Averaged over its spread of ψ:
-from coinflight.bias import expected_same_side
-from coinflight.presets import preset
+from coinflight.studies.bias import expected_same_side
+from coinflight.studies.presets import preset
 
 human = preset("human")
 print(f"human preset: P(same side) = {expected_same_side(human):.4f}")
@@ -60,8 +60,8 @@ print(f"human preset: P(same side) = {expected_same_side(human):.4f}")
 # from the face the previous one landed on. Their per-person counts ship with coinflight
 # (:mod:`coinflight.datasets`, with their provenance and citation), so this needs nothing
 # outside the package:
-from coinflight.data import load_dataset, summarize
 from coinflight.datasets import DATASETS
+from coinflight.studies.data import load_dataset, summarize
 
 table = load_dataset("bartos2023")
 print(DATASETS["bartos2023"].citation)

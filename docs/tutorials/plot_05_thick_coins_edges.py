@@ -4,7 +4,7 @@ Thick coins and edges
 
 A real coin has a rim. How thick must a cylinder be to land on its edge one time in three?
 Yong & Mahadevan (2011) give two answers from two models; coinflight computes both
-(:mod:`coinflight.edge`) and simulates the landing they describe.
+(:mod:`coinflight.studies.edge`) and simulates the landing they describe.
 """
 
 # %%
@@ -16,7 +16,7 @@ Yong & Mahadevan (2011) give two answers from two models; coinflight computes bo
 # contact point where its centre of mass lies, P(edge) = (2/π) arctan(h/d).
 import numpy as np
 
-from coinflight.edge import edge_probability, ratio_for
+from coinflight.studies.edge import edge_probability, ratio_for
 
 for model in ("geometric", "dynamic"):
     print(f"{model:9s}: P(edge) = 1/3 at h/d = {ratio_for(1 / 3, model):.4f}")
@@ -36,11 +36,11 @@ print(f"US nickel h/d = {nickel.thickness / nickel.diameter:.3f}")
 # %%
 # Simulated landings beside the models
 # ------------------------------------
-# :func:`~coinflight.edge.simulate_edge` tosses cylinders of each ratio with the full flight
+# :func:`~coinflight.studies.edge.simulate_edge` tosses cylinders of each ratio with the full flight
 # and lands them dead (restitution 0) on a table: the dynamic model's setting. A few hundred
 # tosses per ratio keep this page quick; the error bars are ±2 standard errors.
 from coinflight import plot_edge
-from coinflight.edge import simulate_edge
+from coinflight.studies.edge import simulate_edge
 
 simulated = simulate_edge([0.1, 0.2, 0.3, 0.4, 0.6, 0.8], n=300, seed=1)
 for s in simulated:

@@ -12,7 +12,7 @@ band over plausible e and μ. This tutorial computes that band.
 # %%
 # One toss onto a table
 # ---------------------
-# A :class:`~coinflight.landing.Landing` flies the coin exactly (torque-free precession plus
+# A :class:`~coinflight.outcomes.table.Landing` flies the coin exactly (torque-free precession plus
 # ballistics), finds each contact by root finding, applies a Newton-Coulomb impulse and
 # stops when the coin has settled: heads, tails or edge.
 from coinflight import Coin, Landing, Surface, Toss
@@ -37,7 +37,7 @@ for e in (0.2, 0.4, 0.6):
 import numpy as np
 
 from coinflight import TossDistribution, Uniform, estimate
-from coinflight.landing import TableLanding
+from coinflight.outcomes.table import TableLanding
 
 tosses = TossDistribution(
     omega_x=Uniform(150.0, 300.0),
@@ -83,7 +83,7 @@ fig.suptitle("US nickel onto a table 0.8 m below, ωx 150-300 rad/s, v0 1.5-3 m/
 # Strzałko et al. map heads and tails over (launch speed, spin) after 0, 1, 2, … impacts; the
 # boundaries are smooth but grow more intricate with every bounce. Here, after one bounce:
 from coinflight import basin_map, plot_basin
-from coinflight.landing import table_faces
+from coinflight.outcomes.table import table_faces
 
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)
 basin = basin_map(

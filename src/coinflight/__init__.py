@@ -27,14 +27,14 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 from coinflight._version import __version__
-from coinflight.coin import PRESETS, Coin
-from coinflight.toss import Flight, FlightState, Outcome, Toss
+from coinflight.model.coin import PRESETS, Coin
+from coinflight.model.toss import Flight, FlightState, Outcome, Toss
 
 if TYPE_CHECKING:
-    from coinflight.bias import same_side_probability
-    from coinflight.distributions import Distribution, Fixed, Normal, Uniform
-    from coinflight.ensemble import TossDistribution
-    from coinflight.landing import Landing
+    from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.model.surface import Drag, Surface
+    from coinflight.outcomes.table import Landing
     from coinflight.plotting.basin import basin_map, plot_basin
     from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.convergence import plot_convergence
@@ -48,21 +48,21 @@ if TYPE_CHECKING:
         estimate_many,
     )
     from coinflight.probability.convergence import convergence
-    from coinflight.surface import Drag, Surface
+    from coinflight.studies.bias import same_side_probability
 
 # Names loaded on first access (PEP 562), so that `import coinflight` (and with it every
 # `coinflight` command, `--help` included) loads only the one-toss objects above.
 _LAZY = {
-    "Distribution": "coinflight.distributions",
-    "Drag": "coinflight.surface",
-    "Fixed": "coinflight.distributions",
-    "Landing": "coinflight.landing",
-    "Normal": "coinflight.distributions",
+    "Distribution": "coinflight.model.distributions",
+    "Drag": "coinflight.model.surface",
+    "Fixed": "coinflight.model.distributions",
+    "Landing": "coinflight.outcomes.table",
+    "Normal": "coinflight.model.distributions",
     "ProbabilityResult": "coinflight.probability",
     "ProbabilityResults": "coinflight.probability",
-    "Surface": "coinflight.surface",
-    "TossDistribution": "coinflight.ensemble",
-    "Uniform": "coinflight.distributions",
+    "Surface": "coinflight.model.surface",
+    "TossDistribution": "coinflight.model.ensemble",
+    "Uniform": "coinflight.model.distributions",
     "basin_map": "coinflight.plotting.basin",
     "convergence": "coinflight.probability.convergence",
     "estimate": "coinflight.probability",
@@ -73,7 +73,7 @@ _LAZY = {
     "plot_edge": "coinflight.plotting.edge",
     "plot_forest": "coinflight.plotting.forest",
     "plot_toss": "coinflight.plotting.toss",
-    "same_side_probability": "coinflight.bias",
+    "same_side_probability": "coinflight.studies.bias",
 }
 
 

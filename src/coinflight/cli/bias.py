@@ -19,8 +19,8 @@ from coinflight.cli.options import (
 )
 
 if TYPE_CHECKING:
-    from coinflight.bias import QuantileDistribution
-    from coinflight.coin import Coin
+    from coinflight.model.coin import Coin
+    from coinflight.studies.bias import QuantileDistribution
 
 PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
@@ -91,7 +91,7 @@ PresetName = Annotated[
         metavar="NAME",
         rich_help_panel=PSI_PANEL,
         help="A named distribution of tosses: human (a person's natural toss: v0 ≈ 2.4 m/s, "
-        "38 rev/s, ψ near but below 90°; DHM 2007 via Keller). See coinflight.presets.",
+        "38 rev/s, ψ near but below 90°; DHM 2007 via Keller). See coinflight.studies.presets.",
     ),
 ]
 
@@ -102,7 +102,7 @@ def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDist
         raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
     if psi is not None:
         return psi
-    from coinflight.distributions import parse_distribution
+    from coinflight.model.distributions import parse_distribution
 
     assert psi_dist is not None
     return parse_distribution(psi_dist, "--psi-dist", "degrees")
@@ -124,7 +124,7 @@ def bias(
 
     Example: coinflight bias --psi 80 --monte-carlo 200000
     """
-    from coinflight import bias as b
+    from coinflight.studies import bias as b
 
     seed = simulation_seed(monte_carlo, seed)
     if preset is not None:
@@ -193,9 +193,9 @@ def _bias_preset(
     estimate` (started heads up, so P(heads) is the same-side probability)."""
     import numpy as np
 
-    from coinflight import bias as b
     from coinflight.core.torque_free import cone_angle
-    from coinflight.presets import preset
+    from coinflight.studies import bias as b
+    from coinflight.studies.presets import preset
 
     dist = preset(name, coin=coin)
     p = b.expected_same_side(dist)
@@ -282,10 +282,10 @@ def plot_bias(
     Example: coinflight plot bias --out bias.png --monte-carlo 20000 --measured 0.5077
     """
     from coinflight import _validation as v
-    from coinflight import bias as b
     from coinflight.cli.figures import parse_numbers
     from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.style import figure_paths, save_figure
+    from coinflight.studies import bias as b
 
     figure_paths(out, "--out")  # before the simulation, not after
     seed = simulation_seed(monte_carlo, seed, ("--psi-points", psi_points))

@@ -85,7 +85,7 @@ def data(
 
     Example: coinflight data --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """
-    from coinflight.data import load_dataset, read_counts, summarize
+    from coinflight.studies.data import load_dataset, read_counts, summarize
 
     if dataset is not None and counts is not None:
         raise ValueError(

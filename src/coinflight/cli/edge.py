@@ -22,7 +22,7 @@ Simulate = Annotated[
         metavar="N",
         rich_help_panel=SIM_PANEL,
         help="Also land N simulated tosses per ratio (vigorous planar spins, landing dead on a "
-        "table; coinflight.edge.simulate_edge) and plot their edge fraction.",
+        "table; coinflight.studies.edge.simulate_edge) and plot their edge fraction.",
     ),
 ]
 Seed = Annotated[
@@ -67,9 +67,9 @@ def plot_edge(
 
     Example: coinflight plot edge --out edge.png --simulate 4000 --seed 1
     """
-    from coinflight.edge import MODELS, ratio_for, simulate_edge
     from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.style import figure_paths, save_figure
+    from coinflight.studies.edge import MODELS, ratio_for, simulate_edge
 
     figure_paths(out, "--out")  # before the simulation, not after
     the_seed = simulation_seed(simulate, seed, ("--ratios", ratios), run_flag="--simulate")

@@ -79,7 +79,7 @@ def parse_range(text: str, name: str, unit: str = "") -> tuple[float, float]:
     A map needs a box, so a fixed value or a normal distribution is refused with a ValueError
     naming the option and the text.
     """
-    from coinflight.distributions import Uniform, parse_distribution
+    from coinflight.model.distributions import Uniform, parse_distribution
 
     dist = parse_distribution(text, name, unit)
     if not isinstance(dist, Uniform):
@@ -130,9 +130,9 @@ def plot_toss(
     """
     import numpy as np
 
+    from coinflight.model.toss import Toss
     from coinflight.plotting.style import figure_paths, save_figure
     from coinflight.plotting.toss import plot_toss as draw
-    from coinflight.toss import Toss
 
     figure_paths(out, "--out")
     the_coin = resolve_coin(coin, radius, thickness, mass)

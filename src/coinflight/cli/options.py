@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 if TYPE_CHECKING:
-    from coinflight.coin import Coin
+    from coinflight.model.coin import Coin
 
 
 def number(text: str) -> float:
@@ -22,9 +22,9 @@ def number(text: str) -> float:
 
 
 def gravity(text: str) -> float:
-    """Parse --g and check it against the library's range (coinflight.toss.GRAVITY) before any
+    """Parse --g and check it against the library's range (coinflight.model.toss.GRAVITY) before any
     command divides by it."""
-    from coinflight.toss import GRAVITY
+    from coinflight.model.toss import GRAVITY
 
     value = number(text)
     try:
@@ -134,7 +134,7 @@ def resolve_coin(
     name: str | None, radius: float | None, thickness: float | None, mass: float | None
 ) -> Coin:
     """The coin the user asked for: a preset by name, or custom dimensions (all three)."""
-    from coinflight.coin import DEFAULT_COIN, Coin
+    from coinflight.model.coin import DEFAULT_COIN, Coin
 
     custom = {"--radius": radius, "--thickness": thickness, "--mass": mass}
     given = [k for k, val in custom.items() if val is not None]

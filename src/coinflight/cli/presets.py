@@ -16,8 +16,8 @@ import typer
 from coinflight.cli.options import TOSS_PANEL
 
 if TYPE_CHECKING:
-    from coinflight.coin import Coin
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
 
 PresetOption = Annotated[
     str | None,
@@ -26,7 +26,7 @@ PresetOption = Annotated[
         metavar="NAME",
         rich_help_panel=TOSS_PANEL,
         help="Start from a named distribution of tosses: human (a person's natural toss, "
-        "v0 ≈ 2.4 m/s, 38 rev/s, ψ near but below 90°; coinflight.presets). Toss options "
+        "v0 ≈ 2.4 m/s, 38 rev/s, ψ near but below 90°; coinflight.studies.presets). Toss options "
         "given explicitly replace the preset's value.",
     ),
 ]
@@ -53,8 +53,8 @@ def preset_distribution(
     ctx: typer.Context, name: str, coin: Coin, start: str, g: float
 ) -> TossDistribution:
     """The preset ``name`` with the toss options the user typed laid over it."""
-    from coinflight.distributions import parse_distribution
-    from coinflight.presets import preset
+    from coinflight.model.distributions import parse_distribution
+    from coinflight.studies.presets import preset
 
     overrides = {
         param: parse_distribution(str(ctx.params[param]), flag, unit)

@@ -30,11 +30,11 @@ from coinflight.cli.surface import (
     outcome_model,
     surface_payload,
 )
-from coinflight.landing import DRAG_TOSSES_PER_SECOND
+from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
 
 if TYPE_CHECKING:
-    from coinflight.coin import Coin
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
 
 METHOD_PANEL = "Method"
 _DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
@@ -124,9 +124,9 @@ def build_distribution(
     start: str,
     g: float,
 ) -> TossDistribution:
-    """The :class:`~coinflight.ensemble.TossDistribution` for the command-line options."""
-    from coinflight.distributions import parse_distribution
-    from coinflight.ensemble import TossDistribution, check_launch_speed
+    """The :class:`~coinflight.model.ensemble.TossDistribution` for the command-line options."""
+    from coinflight.model.distributions import parse_distribution
+    from coinflight.model.ensemble import TossDistribution, check_launch_speed
 
     wx = parse_distribution(omega_x, "--omega-x", "rad/s")
     wy = parse_distribution(omega_y, "--omega-y", "rad/s")
@@ -278,7 +278,7 @@ def _gravity_line(g: float, launch_speed: str | None) -> str:
     """``g = 9.81 m/s²`` and, when given, the launch speed the flight time came from."""
     line = f"g = {g:g} m/s²"
     if launch_speed is not None:
-        from coinflight.distributions import parse_distribution
+        from coinflight.model.distributions import parse_distribution
 
         v0 = parse_distribution(launch_speed, "--launch-speed", "m/s")
         line += f"; launch speed v0 = {v0.describe('m/s')} (T = 2 v0 / g)"

@@ -10,10 +10,10 @@ import typer
 from coinflight.cli.options import number
 
 if TYPE_CHECKING:
-    from coinflight.coin import Coin
-    from coinflight.probability.outcome import OutcomeModel
-    from coinflight.surface import Drag, Surface
-    from coinflight.toss import Toss
+    from coinflight.model.coin import Coin
+    from coinflight.model.surface import Drag, Surface
+    from coinflight.model.toss import Toss
+    from coinflight.outcomes.base import OutcomeModel
 
 SURFACE_PANEL = "Landing"
 
@@ -93,8 +93,8 @@ Bounces = Annotated[
 def build_surface(
     kind: str, drop_height: float | None, restitution: float | None, friction: float | None
 ) -> Surface:
-    """The :class:`~coinflight.surface.Surface` for the options; table options need a table."""
-    from coinflight.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
+    """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table)."""
+    from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
 
     given = {
         "--drop-height": drop_height,
@@ -114,8 +114,8 @@ def build_surface(
 
 
 def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | None:
-    """The :class:`~coinflight.surface.Drag` for the options, None when there is no air."""
-    from coinflight.surface import Drag
+    """The :class:`~coinflight.model.surface.Drag` for the options, None when there is no air."""
+    from coinflight.model.surface import Drag
 
     if coefficient is None and spin_damping is None:
         return None
@@ -132,7 +132,7 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
         return
     if surface.kind != "table":
         raise ValueError("--bounces applies to --surface table only")
-    from coinflight.landing import check_max_bounces
+    from coinflight.outcomes.table import check_max_bounces
 
     check_max_bounces(bounces, "--bounces")
 
@@ -203,7 +203,7 @@ def report_landing(
         },
     }
     if surface.bounces:
-        from coinflight.landing import STATUS_NAMES, Landing
+        from coinflight.outcomes.table import STATUS_NAMES, Landing
 
         out = Landing(coin, toss, surface, drag, bounces).outcome
         payload: dict[str, object] = {
@@ -226,7 +226,7 @@ def report_landing(
                 f"{out.face_name.upper()}, not a resting face"
             )
     else:
-        from coinflight.landing import catch_with_drag
+        from coinflight.outcomes.table import catch_with_drag
 
         assert drag is not None
         face, when = catch_with_drag(
@@ -272,7 +272,7 @@ def outcome_model(
     bounces: int | None = None,
 ) -> LandingChoice | None:
     """None for the plain hand catch; else the surface, drag and outcome model to use."""
-    from coinflight.landing import DragCatch, TableLanding
+    from coinflight.outcomes.table import DragCatch, TableLanding
 
     the_surface = build_surface(kind, drop_height, restitution, friction)
     the_drag = build_drag(drag, spin_damping)
@@ -292,7 +292,7 @@ def table_outcome(
     bounces: int | None,
 ) -> dict[str, Any]:
     """``outcome=`` for :func:`coinflight.plotting.basin.basin_map` (empty for the hand)."""
-    from coinflight.landing import table_faces
+    from coinflight.outcomes.table import table_faces
 
     the_surface = build_surface(kind, drop_height, restitution, friction)
     check_bounces(the_surface, bounces)

@@ -35,7 +35,7 @@ from coinflight.cli.surface import (
 )
 
 if TYPE_CHECKING:
-    from coinflight.toss import Toss
+    from coinflight.model.toss import Toss
 
 Omega = Annotated[
     tuple[float, float, float],
@@ -78,8 +78,8 @@ def build_toss(
     start: str,
     g: float,
 ) -> Toss:
-    """The :class:`~coinflight.toss.Toss` for the toss options (one of T and V0 required)."""
-    from coinflight.toss import Toss
+    """The :class:`~coinflight.model.toss.Toss` for the toss options (one of T and V0 required)."""
+    from coinflight.model.toss import Toss
 
     if (flight_time is None) == (launch_speed is None):
         raise ValueError("give exactly one of --flight-time and --launch-speed")
@@ -112,7 +112,7 @@ def toss(
     Example: coinflight toss --omega 80 0 0 --flight-time 0.7
     (on a table: add --surface table --drop-height 0.8)
     """
-    from coinflight.toss import Flight
+    from coinflight.model.toss import Flight
 
     the_coin = resolve_coin(coin, radius, thickness, mass)
     the_surface = build_surface(surface, drop_height, restitution, friction)

@@ -9,7 +9,8 @@ and the coin shows the face it started with iff that is positive. When the phase
 over many turns (as it is for any real hand), it is in effect uniform on the circle and the
 fraction of tosses that land on the starting side is a function of ψ alone, :func:`same_side`.
 
-All angles in radians. No validation here: the value layer (:mod:`coinflight.bias`) checks input.
+All angles in radians. No validation here: the value layer (:mod:`coinflight.studies.bias`)
+checks input.
 """
 
 from __future__ import annotations

@@ -1,7 +1,8 @@
 """Data shipped with coinflight, with provenance and citation (see ``README.md`` beside it).
 
-The registry :data:`DATASETS` names each dataset; :func:`coinflight.data.load_dataset` reads one
-into a :class:`coinflight.data.CountsTable`, and ``coinflight data --dataset NAME`` analyses it.
+The registry :data:`DATASETS` names each dataset; :func:`coinflight.studies.data.load_dataset`
+reads one into a :class:`coinflight.studies.data.CountsTable`, and
+``coinflight data --dataset NAME`` analyses it.
 
 bartos2023
     Per-person same-side counts of Bartoš et al., "Fair coins tend to land on the same side they
@@ -24,7 +25,7 @@ class Dataset:
     Attributes
     ----------
     name : str
-        The name ``--dataset`` and :func:`coinflight.data.load_dataset` take.
+        The name ``--dataset`` and :func:`coinflight.studies.data.load_dataset` take.
     filename : str
         The file inside this package.
     title : str

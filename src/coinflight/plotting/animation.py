@@ -24,8 +24,8 @@ if TYPE_CHECKING:
     from matplotlib.animation import FuncAnimation
     from matplotlib.figure import Figure
 
-    from coinflight.coin import Coin
-    from coinflight.toss import Toss
+    from coinflight.model.coin import Coin
+    from coinflight.model.toss import Toss
 
 FACE_COLORS = {HEADS: HEADS_COLOR, 0: TAILS_COLOR}
 MAX_FRAMES = 2000
@@ -150,7 +150,7 @@ def animate_toss(
     from matplotlib.patches import Patch
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    from coinflight.toss import Flight
+    from coinflight.model.toss import Flight
 
     if toss.shape:
         raise ValueError(f"animate_toss animates a single toss, got a batch of shape {toss.shape}")

@@ -27,7 +27,7 @@ from coinflight.core.outcome import EDGE, FACE_NAMES, HEADS, TAILS, face_from_al
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from coinflight.coin import Coin
+    from coinflight.model.coin import Coin
 
 FloatArray = NDArray[np.float64]
 FaceArray = NDArray[np.int8]
@@ -225,7 +225,7 @@ def basin_map(
     BasinMap
         ``face`` has shape (resolution[1], resolution[0]).
     """
-    from coinflight.toss import Toss
+    from coinflight.model.toss import Toss
 
     t_lo, t_hi = _range("flight time", flight_time, "s", positive=True)
     w_lo, w_hi = _range("spin", spin, "rad/s", positive=psi is not None)

@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.bias import SameSideEstimate, same_side_probability
 from coinflight.plotting.style import EXACT_COLOR, METHOD_COLORS, TAILS_COLOR, new_figure
+from coinflight.studies.bias import SameSideEstimate, same_side_probability
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -8,8 +8,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.edge import MODELS, EdgeSimulation, edge_probability, ratio_for
 from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, METHOD_COLORS, new_figure
+from coinflight.studies.edge import MODELS, EdgeSimulation, edge_probability, ratio_for
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -35,7 +35,7 @@ def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) 
     Parameters
     ----------
     simulated : sequence of EdgeSimulation
-        Simulated landings (:func:`coinflight.edge.simulate_edge`), drawn as points with
+        Simulated landings (:func:`coinflight.studies.edge.simulate_edge`), drawn as points with
         ±2 standard-error bars.
     max_ratio : float
         Right end of the h/d axis (> 1/√3, so both marks show).
@@ -43,9 +43,9 @@ def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) 
     Returns
     -------
     matplotlib.figure.Figure
-        Curves of :func:`coinflight.edge.edge_probability` (Yong & Mahadevan 2011, §II and §III),
-        the line P(edge) = 1/3, and a vertical mark at each model's ratio for it
-        (:func:`coinflight.edge.ratio_for`: 1/(2√2) ≈ 0.354 and 1/√3 ≈ 0.577).
+        Curves of :func:`coinflight.studies.edge.edge_probability` (Yong & Mahadevan 2011,
+        §II and §III), the line P(edge) = 1/3, and a vertical mark at each model's ratio for it
+        (:func:`coinflight.studies.edge.ratio_for`: 1/(2√2) ≈ 0.354 and 1/√3 ≈ 0.577).
     """
     if not (math.isfinite(max_ratio) and EXACT_RATIOS["dynamic"][1] < max_ratio <= MAX_RATIO):
         raise ValueError(

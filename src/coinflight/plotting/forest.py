@@ -6,8 +6,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.data import CountsSummary
 from coinflight.plotting.style import EXACT_COLOR, HEADS_COLOR, TAILS_COLOR, new_figure
+from coinflight.studies.data import CountsSummary
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -19,7 +19,8 @@ def plot_forest(summary: CountsSummary, p_model: float | None = None) -> Figure:
     Parameters
     ----------
     summary : CountsSummary
-        From :func:`coinflight.data.summarize`; people are drawn in file order, top to bottom.
+        From :func:`coinflight.studies.data.summarize`; people are drawn in file order, top to
+        bottom.
     p_model : float, optional
         A model's same-side probability (e.g. Diaconis et al.'s ≈ 0.51) drawn as a line.
 

@@ -21,8 +21,8 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
     from scipy.spatial.transform import Rotation
 
-    from coinflight.coin import Coin
-    from coinflight.toss import Toss
+    from coinflight.model.coin import Coin
+    from coinflight.model.toss import Toss
 
 FloatArray = NDArray[np.float64]
 S_COLOR = "#000000"
@@ -71,7 +71,7 @@ def normal_path(coin: Coin, toss: Toss, t: ArrayLike) -> FloatArray:
 
     For a batch, the path of its first toss.
     """
-    from coinflight.toss import Flight, Toss
+    from coinflight.model.toss import Flight, Toss
 
     single = Toss(
         omega=toss.omega.reshape(-1, 3)[0], flight_time=np.ones(()), start=toss.start, g=toss.g
@@ -103,7 +103,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     from matplotlib.gridspec import GridSpec
     from matplotlib.lines import Line2D
 
-    from coinflight.toss import Flight, Toss
+    from coinflight.model.toss import Flight, Toss
 
     if len(toss.shape) > 1:
         raise ValueError(

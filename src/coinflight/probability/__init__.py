@@ -1,7 +1,7 @@
 """Probability of heads over a distribution of tosses: one entry point, four methods.
 
->>> from coinflight.distributions import Uniform
->>> from coinflight.ensemble import TossDistribution
+>>> from coinflight.model.distributions import Uniform
+>>> from coinflight.model.ensemble import TossDistribution
 >>> d = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 >>> round(estimate(d, "exact").p_heads, 6)
 0.497471
@@ -26,9 +26,9 @@ from __future__ import annotations
 from typing import Any
 
 from coinflight import _validation as v
-from coinflight.ensemble import TossDistribution
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import HAND_CATCH, HandCatch, OutcomeModel
 from coinflight.probability._runner import check_count, check_runner
-from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult, wilson_interval
 from coinflight.probability.sweep import ProbabilityResults, estimate_many
 

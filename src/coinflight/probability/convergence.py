@@ -18,7 +18,7 @@ from typing import Any
 
 from coinflight import _validation as v
 from coinflight._files import write_text
-from coinflight.ensemble import TossDistribution
+from coinflight.model.ensemble import TossDistribution
 from coinflight.probability._runner import Executor, Progress, check_count
 
 DEFAULT_GRID_SIZES = (5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
@@ -211,8 +211,8 @@ def check_work(
 ) -> None:
     """Refuse, before computing anything, a size no single estimate accepts or a series whose
     sizes add up to more than :data:`coinflight._validation.MAX_RUN_SECONDS` of work."""
+    from coinflight.outcomes.base import HAND_CATCH
     from coinflight.probability import grid, monte_carlo, qmc
-    from coinflight.probability.outcome import HAND_CATCH
 
     seconds = 0.0
     for m in methods:

@@ -26,9 +26,9 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.core import bands
-from coinflight.distributions import Distribution, Fixed, Uniform
-from coinflight.ensemble import TossDistribution
-from coinflight.probability.outcome import HandCatch, OutcomeModel
+from coinflight.model.distributions import Distribution, Fixed, Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import HandCatch, OutcomeModel
 from coinflight.probability.result import ProbabilityResult
 
 TOLERANCE = 1e-9

@@ -19,7 +19,8 @@ from typing import Any
 import numpy as np
 
 from coinflight import _validation as v
-from coinflight.ensemble import TossDistribution
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import HAND_CATCH, HandCatch, OutcomeModel, tally_details
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -27,7 +28,6 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
-from coinflight.probability.outcome import HAND_CATCH, HandCatch, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 MAX_WORK = 8 * 10**8

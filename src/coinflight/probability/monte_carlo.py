@@ -19,7 +19,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from coinflight.ensemble import TossDistribution
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -28,7 +29,6 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
-from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts, wilson_interval
 
 BLOCK = 1 << 20

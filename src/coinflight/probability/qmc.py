@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from coinflight import _validation as v
-from coinflight.ensemble import TossDistribution
+from coinflight.model.ensemble import TossDistribution
+from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -24,7 +25,6 @@ from coinflight.probability._runner import (
     run_tasks,
 )
 from coinflight.probability.monte_carlo import reported_seed, seed_sequence
-from coinflight.probability.outcome import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 DEFAULT_REPLICATES = 16

@@ -1,7 +1,7 @@
 """A sweep: P(heads) for each of several distributions of tosses in one call.
 
->>> from coinflight.distributions import Uniform
->>> from coinflight.ensemble import TossDistribution
+>>> from coinflight.model.distributions import Uniform
+>>> from coinflight.model.ensemble import TossDistribution
 >>> fig2a = TossDistribution(omega_x=Uniform(60, 90), flight_time=Uniform(0.6, 0.9))
 >>> fig3a = TossDistribution(omega_x=Uniform(60, 90), omega_y=10, flight_time=Uniform(0.6, 0.9))
 >>> results = estimate_many([fig2a, fig3a], "exact")  # Stefan & Cheche Figs 2a and 3a
@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
-from coinflight.ensemble import PARAMETERS, UNITS, TossDistribution
+from coinflight.model.ensemble import PARAMETERS, UNITS, TossDistribution
 from coinflight.probability.result import ProbabilityResult, require_pandas
 
 if TYPE_CHECKING:

@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.coin import Coin
 from coinflight.core import paper as paper_kernels
 from coinflight.core.outcome import FACE_NAMES
-from coinflight.toss import Flight, Toss
+from coinflight.model.coin import Coin
+from coinflight.model.toss import Flight, Toss
 
 if TYPE_CHECKING:
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.ensemble import TossDistribution
     from coinflight.probability import ProbabilityResult
     from coinflight.probability.convergence import Convergence
 
@@ -197,9 +197,9 @@ def rotation_row(case: RotationCase, coin: Coin) -> RotationRow:
 
 
 def distribution(case: ProbabilityCase, coin: Coin) -> TossDistribution:
-    """The :class:`~coinflight.ensemble.TossDistribution` of a probability figure."""
-    from coinflight.distributions import Fixed, Uniform
-    from coinflight.ensemble import TossDistribution
+    """The :class:`~coinflight.model.ensemble.TossDistribution` of a probability figure."""
+    from coinflight.model.distributions import Fixed, Uniform
+    from coinflight.model.ensemble import TossDistribution
 
     return TossDistribution(
         Uniform(*case.omega_x),

@@ -13,7 +13,7 @@ import numpy as np
 
 from coinflight import __version__
 from coinflight._files import check_all_writable, check_writable, staged_folder, write_text
-from coinflight.coin import Coin
+from coinflight.model.coin import Coin
 from coinflight.report.document import (
     Bullets,
     Document,
@@ -96,10 +96,10 @@ def reproduce_paper(
     step : callable, optional
         Called with a description after each of :data:`STEPS` steps (a progress bar).
     """
+    from coinflight.model.toss import Toss
     from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.style import save_figure
     from coinflight.plotting.toss import plot_toss
-    from coinflight.toss import Toss
 
     t_start = time.perf_counter()
     out = Path(out_dir)

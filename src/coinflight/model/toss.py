@@ -10,9 +10,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
-from coinflight.coin import Coin
 from coinflight.core import ballistics, torque_free
 from coinflight.core.outcome import FACE_NAMES, face_from_alignment, same_side
+from coinflight.model.coin import Coin
 
 if TYPE_CHECKING:
     from scipy.spatial.transform import Rotation

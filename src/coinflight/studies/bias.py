@@ -28,13 +28,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
-from coinflight.coin import DEFAULT_COIN, Coin
 from coinflight.core import precession
 from coinflight.core.torque_free import normal_alignment
-from coinflight.distributions import Normal
+from coinflight.model.coin import DEFAULT_COIN, Coin
+from coinflight.model.distributions import Normal
 
 if TYPE_CHECKING:
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.ensemble import TossDistribution
 
 FloatArray = NDArray[np.float64]
 
@@ -164,7 +164,7 @@ def mean_same_side_probability(dist: QuantileDistribution, *, degrees: bool = Fa
     ----------
     dist : object with ``ppf``
         Distribution of ψ given by its quantile function (e.g. the distributions of
-        :mod:`coinflight.distributions`), in radians or, with ``degrees=True``, degrees.
+        :mod:`coinflight.model.distributions`), in radians or, with ``degrees=True``, degrees.
     degrees : bool
         Whether ``dist`` is a distribution of degrees.
 
@@ -299,8 +299,8 @@ def expected_same_side(dist: TossDistribution) -> float:
 
     Parameters
     ----------
-    dist : coinflight.ensemble.TossDistribution
-        The tosses (e.g. a preset of :mod:`coinflight.presets`).
+    dist : coinflight.model.ensemble.TossDistribution
+        The tosses (e.g. a preset of :mod:`coinflight.studies.presets`).
 
     Returns
     -------

@@ -1,8 +1,8 @@
 """A toss that ends on a table: bounces, settling, heads, tails or edge.
 
-:class:`Landing` is one toss (or a batch) landing on a :class:`~coinflight.surface.Surface`;
+:class:`Landing` is one toss (or a batch) landing on a :class:`~coinflight.model.surface.Surface`;
 :class:`TableLanding` plugs the same simulation into the probability estimators as an
-:class:`~coinflight.probability.outcome.OutcomeModel`. The physics is in
+:class:`~coinflight.outcomes.base.OutcomeModel`. The physics is in
 :mod:`coinflight.core.bounce` and :mod:`coinflight.core.impact` (drag-free, exact flights
 between impacts) and, with air drag, :mod:`coinflight.core.drag`.
 """
@@ -18,14 +18,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
-from coinflight.coin import Coin
 from coinflight.core.outcome import FACE_NAMES
-from coinflight.probability.outcome import OutcomeModel
-from coinflight.surface import Drag, Surface
-from coinflight.toss import Toss
+from coinflight.model.coin import Coin
+from coinflight.model.surface import Drag, Surface
+from coinflight.model.toss import Toss
+from coinflight.outcomes.base import OutcomeModel
 
 if TYPE_CHECKING:
-    from coinflight.ensemble import TossDistribution
+    from coinflight.model.ensemble import TossDistribution
 
 FloatArray = NDArray[np.float64]
 

@@ -1,7 +1,7 @@
 """Distributions of one initial condition (a spin component, the flight time, the launch speed).
 
 A person's tosses spread over a range of launch speeds and spins (Stefan & Cheche §3). Each
-parameter of a :class:`~coinflight.ensemble.TossDistribution` is one of these frozen value
+parameter of a :class:`~coinflight.model.ensemble.TossDistribution` is one of these frozen value
 objects. The probability methods use only the small protocol of :class:`Distribution`
 (``sample``, ``ppf``, ``cdf``, ``is_fixed``, ``mean``, ``bounds``, ``affine``), so a new kind
 of distribution needs no change to the methods.

@@ -19,8 +19,9 @@ both frequentist intervals give the same three printed digits, [0.506, 0.509] an
 [0.498, 0.502].
 
 The precession angle that explains a same-side rate is found by inverting Diaconis, Holmes &
-Montgomery's p(ψ) (:mod:`coinflight.bias`). It is either a *fixed* angle shared by every flip
-(``psi_sd = 0``), or the *mean* of a normal distribution of ψ with a stated spread ``psi_sd``.
+Montgomery's p(ψ) (:mod:`coinflight.studies.bias`). It is either a *fixed* angle shared by
+every flip (``psi_sd = 0``), or the *mean* of a normal distribution of ψ with a stated spread
+``psi_sd``.
 """
 
 from __future__ import annotations
@@ -593,16 +594,16 @@ def fit_psi(rate: Proportion, sd: float = 0.0) -> PsiFit:
     Notes
     -----
     Inverts p(ψ) (Diaconis, Holmes & Montgomery 2007), see
-    :func:`coinflight.bias.psi_mean_for_probability`.
+    :func:`coinflight.studies.bias.psi_mean_for_probability`.
     """
     from scipy.special import ndtri
 
-    from coinflight.bias import (
+    from coinflight.model.distributions import Normal
+    from coinflight.studies.bias import (
         TAIL_MASS,
         mean_same_side_probability,
         psi_mean_for_probability,
     )
-    from coinflight.distributions import Normal
 
     spread = float(v.non_negative("spread of psi", sd, "rad"))
     widest = 0.5 * math.pi / -float(ndtri(TAIL_MASS))

@@ -3,7 +3,7 @@
 Two closed-form models of Yong & Mahadevan (2011, "Probability, geometry, and dynamics in the
 tossing of thin disks", Am. J. Phys. 79:1195, arXiv:1008.4559; REFERENCES §5), and the root
 finding that gives the ratio h/d for a chosen P(edge) (1/3 for a fair "three-sided coin").
-The simulated P(edge) of real bounces comes from :mod:`coinflight.landing`.
+The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table`.
 """
 
 from __future__ import annotations
@@ -122,7 +122,7 @@ class EdgeSimulation:
 
 
 def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> list[EdgeSimulation]:
-    """P(edge) from the full flight and landing (:func:`coinflight.landing.land`), per ratio.
+    """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
     Each ratio gets ``n`` tosses of a coin of diameter :data:`SIM_DIAMETER` and thickness
     ratio × d (uniform density), spinning about a diameter at ωx ~ U(:data:`SIM_SPIN`) rad/s,
@@ -131,9 +131,9 @@ def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> l
     points should follow. The random numbers of each ratio come from its own stream spawned
     from ``seed`` (``np.random.SeedSequence``), so the points are independent and reproducible.
     """
-    from coinflight.coin import Coin
-    from coinflight.landing import BOUNCING_TOSSES_PER_SECOND, land
-    from coinflight.surface import Surface
+    from coinflight.model.coin import Coin
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, land
 
     x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
     if x.ndim != 1:

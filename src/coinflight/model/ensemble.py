@@ -1,6 +1,6 @@
 """A distribution of tosses: each initial condition fixed, ranged or random.
 
->>> from coinflight.distributions import Uniform
+>>> from coinflight.model.distributions import Uniform
 >>> d = TossDistribution(omega_x=Uniform(60, 90), flight_time=Uniform(0.6, 0.9))
 >>> d.ranged  # omega_y and omega_z default to 0 rad/s, as on the command line
 ('omega_x', 'flight_time')
@@ -18,10 +18,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
-from coinflight.coin import DEFAULT_COIN, Coin
 from coinflight.core import ballistics
-from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
-from coinflight.toss import STANDARD_GRAVITY, Start, check_gravity
+from coinflight.model.coin import DEFAULT_COIN, Coin
+from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.model.toss import STANDARD_GRAVITY, Start, check_gravity
 
 FloatArray = NDArray[np.float64]
 

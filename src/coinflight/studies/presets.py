@@ -18,7 +18,7 @@ cone angle ψ           set by ωz: cot ψ = I3 ωz / (I1 ωx),    "near but bel
 =====================  =====================================  ==================================
 
 The typical angle ψ0 is the one number fitted: it makes the closed-form average of p(ψ)
-(:func:`coinflight.bias.expected_same_side`) equal 0.508, the mean DHM report and the pooled
+(:func:`coinflight.studies.bias.expected_same_side`) equal 0.508, the mean DHM report and the pooled
 rate Bartoš et al. measured over 350,757 flips (0.5077, REFERENCES §6). It gives ψ with median
 82.1° and 95 % of tosses between 74° and 89.8° (a few per cent just above 90°), and per-flip
 p(ψ) from 0.500 to about 0.537 (99.5th percentile), as DHM describe. ωz scales with I1/I3 so that
@@ -37,11 +37,11 @@ from collections.abc import Callable
 from types import MappingProxyType
 from typing import Any
 
-from coinflight.coin import DEFAULT_COIN, Coin
 from coinflight.core import precession
-from coinflight.distributions import Distribution, Fixed, Normal, as_distribution
-from coinflight.ensemble import TossDistribution
-from coinflight.toss import STANDARD_GRAVITY, Start
+from coinflight.model.coin import DEFAULT_COIN, Coin
+from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.model.ensemble import TossDistribution
+from coinflight.model.toss import STANDARD_GRAVITY, Start
 
 HUMAN_LAUNCH_SPEED = 2.4
 """Upward launch speed of a natural toss, m/s (Diaconis via Keller; REFERENCES §2)."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from coinflight.ensemble import PARAMETERS, TossDistribution
+from coinflight.model.ensemble import PARAMETERS, TossDistribution
 
 Counts = NDArray[np.int64]
 """(tails, heads, edge) counts, shape (3,), followed by the model's extra tallies if any."""
@@ -42,7 +42,7 @@ class OutcomeModel:
         Returns (tails, heads, edge, *tallies), shape (3 + len(:attr:`tallies`),).
 
         Row r of ``u`` drives parameter ``dist.ranged[r]`` through its distribution's ``ppf``
-        (:meth:`~coinflight.ensemble.TossDistribution.values`).
+        (:meth:`~coinflight.model.ensemble.TossDistribution.values`).
         """
         raise NotImplementedError
 
