@@ -294,7 +294,8 @@ def contact_impulse(
             break
         s = math.sqrt(ux * ux + uy * uy)
         seg = True
-        if not linear and (s <= slip_tol or steps >= max_steps - 4):
+        late = steps >= max_steps - 6  # then finish in closed form
+        if not linear and (s <= slip_tol or late):
             if not holds:
                 # Slides on, on the ray the cone lets it take (what is left of the slip, below
                 # SLIP_TOLERANCE, is carried along).
@@ -307,7 +308,7 @@ def contact_impulse(
         if linear:
             fx, fy = qx, qy
             h = _linear_event(compression, uz, kzz + kxz * fx + kyz * fy, target - w)
-        elif s <= slip_tol:
+        elif s <= slip_tol or late:
             # Stop the last of the slip exactly: the one straight segment, friction on the cone
             # in a fixed direction, that brings u_t to 0. With a = K_tt⁻¹ u_t it takes the normal
             # impulse h of |a − r h| = μ h, (μ² − |r|²) h² + 2 (a·r) h − |a|² = 0, h > 0.
