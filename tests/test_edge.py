@@ -126,3 +126,16 @@ def test_cli_plot_edge_bad_input(tmp_path, extra, message):
     assert result.exit_code == 2
     assert message in result.stderr
     assert not out.exists()
+
+
+@pytest.mark.parametrize("ratio", [0.1, 0.3, 0.577, 1.0])
+def test_dead_landings_follow_the_dynamic_model(ratio):
+    # Yong & Mahadevan 2011 (REFERENCES §5): vigorous planar tosses landing dead (e = 0) end on
+    # edge with P = 2 arctan(h/d)/π. simulate_edge's setting (e = 0, μ = 0.3): 2·10⁴ tosses,
+    # 3 binomial standard errors. (Issue 11: the sequential impulse gave 0.0436 ± 0.0010 at
+    # h/d = 0.1 against 0.0635, its friction lifting the rim off the table.)
+    from coinflight.studies.edge import simulate_edge
+
+    (point,) = simulate_edge([ratio], 20_000, 3)
+    model = float(edge_probability(ratio, "dynamic"))
+    assert abs(point.p_edge - model) < 3 * math.sqrt(model * (1 - model) / point.n)
