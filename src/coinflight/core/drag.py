@@ -228,42 +228,28 @@ def land(
     launch_speed: float,
     start_sign: float,
     *,
-    drop_height: float,
-    g: float,
-    radius: float,
-    thickness: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    friction: float,
     drag_coefficient: float,
     spin_damping: float,
     air_density: float,
     max_bounces: int = -1,
     rest_speed: float | None = None,
+    **contact: float,
 ) -> tuple[int, int, float, float, int]:
     """One toss with drag onto a table: (face, bounces, first contact, settle time, status).
 
-    The keywords gathered into a :class:`~coinflight.core.contact.Contact` and a
-    :class:`DragModel`, then :func:`land_contact`.
+    ``contact`` are the keywords of :meth:`coinflight.core.contact.Contact.build` but
+    ``rest_speed`` (``drop_height``, ``g``, ``radius``, ``thickness``, ``mass``, ``i1``, ``i3``,
+    ``restitution``, ``friction``), gathered into a :class:`~coinflight.core.contact.Contact`
+    with the drag into a :class:`DragModel`, then :func:`land_contact`. ``rest_speed`` defaults
+    to :data:`coinflight.core.bounce.REST_SPEED`.
     """
     from coinflight.core import bounce
 
-    contact = Contact.build(
-        radius=radius,
-        thickness=thickness,
-        mass=mass,
-        i1=i1,
-        i3=i3,
-        restitution=restitution,
-        friction=friction,
-        drop_height=drop_height,
-        g=g,
-        rest_speed=bounce.REST_SPEED if rest_speed is None else rest_speed,
-    )
-    model = DragModel(mass, radius, (i1, i1, i3), g, drag_coefficient, spin_damping, air_density)
-    return land_contact(omega0, launch_speed, start_sign, contact, model, max_bounces)
+    rest = bounce.REST_SPEED if rest_speed is None else rest_speed
+    c = Contact.build(rest_speed=rest, **contact)
+    moments = (c.i1, c.i1, c.i3)
+    model = DragModel(c.mass, c.radius, moments, c.g, drag_coefficient, spin_damping, air_density)
+    return land_contact(omega0, launch_speed, start_sign, c, model, max_bounces)
 
 
 def land_contact(
