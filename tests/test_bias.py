@@ -44,7 +44,7 @@ def test_closed_form_is_the_fraction_of_phases_that_land_same_side():
     phi = (np.arange(1_000_000) + 0.5) * (2 * np.pi / 1_000_000)
     for psi in np.radians([50.0, 62.5, 75.0, 85.0, 95.0, 120.0]):
         frac = np.mean(np.cos(psi) ** 2 + np.sin(psi) ** 2 * np.cos(phi) > 0)
-        assert float(precession.same_side(psi)) == pytest.approx(frac, abs=2e-6)
+        assert float(precession.same_side_probability(psi)) == pytest.approx(frac, abs=2e-6)
 
 
 @settings(max_examples=200, deadline=None)

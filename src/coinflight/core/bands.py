@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -20,15 +21,35 @@ FloatArray = NDArray[np.float64]
 TWO_PI = 2.0 * np.pi
 
 
-def half_width(cot2_psi: ArrayLike) -> FloatArray:
+def never_turns_over(axial2: Any, transverse2: Any) -> Any:
+    """True where the coin only wobbles: ψ ≤ 45° or ψ ≥ 135°, or no tumbling at all.
+
+    ``axial2`` and ``transverse2`` are cos²ψ and sin²ψ times any common positive factor, e.g.
+    ((I3/I1) ω_z)² and Ω⊥² = ωx² + ωy² (cos ψ = I3 ω_z / |M|, sin ψ = I1 Ω⊥ / |M|), so that
+    no division is needed. Arrays or scalars; compiled as-is by numba in
+    :mod:`coinflight.core.sampling`.
+
+    Notes
+    -----
+    n(T)·n0 = cos²ψ + sin²ψ cos(ωp T) ≥ cos²ψ − sin²ψ ≥ 0 when cot²ψ ≥ 1 (Diaconis, Holmes &
+    Montgomery 2007, section 2): the normal never passes the horizontal, and the coin shows
+    its starting face at every T (at ψ = 45° exactly it touches the horizontal at the phases
+    ωp T = π (2m + 1), a null set of times). With Ω⊥ = 0 the normal does not move.
+    """
+    return (transverse2 == 0.0) | (axial2 >= transverse2)
+
+
+def half_width(cot2_psi: Any) -> Any:
     """Half-width a = arccos(−cot²ψ) of each band in phase; π when ψ ≤ 45° (never turns).
+
+    Arrays or scalars (a float in, a float out); compiled as-is by numba in
+    :mod:`coinflight.core.sampling`.
 
     Notes
     -----
     n(T)·n0 > 0 ⇔ cos(ωp T) > −cot²ψ (Diaconis, Holmes & Montgomery 2007, section 2).
     """
-    c = np.asarray(cot2_psi, dtype=float)
-    return np.arccos(-np.minimum(c, 1.0))
+    return np.arccos(-np.minimum(cot2_psi, 1.0))
 
 
 def phase_measure(u: ArrayLike, a: ArrayLike = np.pi / 2) -> FloatArray:

@@ -28,7 +28,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from coinflight.core.ballistics import flight_time
+from coinflight.core.contact import Contact
 from coinflight.core.numerical import euler_rhs, quaternion_rate
+from coinflight.core.outcome import Status
 
 FloatArray = NDArray[np.float64]
 RTOL = 1e-12
@@ -211,7 +214,7 @@ def catch(
     back_down.terminal = True  # type: ignore[attr-defined]
     back_down.direction = -1  # type: ignore[attr-defined]
     y0 = initial_state(np.asarray(omega0, dtype=float), launch_speed, start_sign)
-    t_max = 2.0 * launch_speed / model.g * 1.5 + 1.0
+    t_max = float(flight_time(launch_speed, model.g)) * 1.5 + 1.0
     what = describe(model, omega0, launch_speed)
     check_stiffness(model, launch_speed)
     sol: Any = solve(bounded(rhs(model), what), (0.0, t_max), y0, what, events=back_down)
@@ -225,40 +228,57 @@ def land(
     launch_speed: float,
     start_sign: float,
     *,
-    drop_height: float,
-    g: float,
-    radius: float,
-    thickness: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    friction: float,
     drag_coefficient: float,
     spin_damping: float,
     air_density: float,
     max_bounces: int = -1,
     rest_speed: float | None = None,
+    **contact: float,
+) -> tuple[int, int, float, float, int]:
+    """One toss with drag onto a table: (face, bounces, first contact, settle time, status).
+
+    ``contact`` are the keywords of :meth:`coinflight.core.contact.Contact.build` but
+    ``rest_speed`` (``drop_height``, ``g``, ``radius``, ``thickness``, ``mass``, ``i1``, ``i3``,
+    ``restitution``, ``friction``), gathered into a :class:`~coinflight.core.contact.Contact`
+    with the drag into a :class:`DragModel`, then :func:`land_contact`. ``rest_speed`` defaults
+    to :data:`coinflight.core.bounce.REST_SPEED`.
+    """
+    from coinflight.core import bounce
+
+    rest = bounce.REST_SPEED if rest_speed is None else rest_speed
+    c = Contact.build(rest_speed=rest, **contact)
+    moments = (c.i1, c.i1, c.i3)
+    model = DragModel(c.mass, c.radius, moments, c.g, drag_coefficient, spin_damping, air_density)
+    return land_contact(omega0, launch_speed, start_sign, c, model, max_bounces)
+
+
+def land_contact(
+    omega0: ArrayLike,
+    launch_speed: float,
+    start_sign: float,
+    contact: Contact,
+    model: DragModel,
+    max_bounces: int = -1,
 ) -> tuple[int, int, float, float, int]:
     """One toss with drag onto a table: (face, bounces, first contact, settle time, status).
 
     The same rules as :func:`coinflight.core.bounce.land` (impact law, settling, rocking,
-    status codes); only the flights between impacts are integrated numerically.
+    status codes :class:`~coinflight.core.outcome.Status`); only the flights between impacts are
+    integrated numerically. ``model`` gives the flight (its coin and g those of ``contact``);
     ``max_bounces`` < 0 means until the coin settles.
     """
     from scipy.spatial.transform import Rotation
 
     from coinflight.core import bounce, impact
 
-    rest = bounce.REST_SPEED if rest_speed is None else rest_speed
-    hh = 0.5 * thickness
-    model = DragModel(mass, radius, (i1, i1, i3), g, drag_coefficient, spin_damping, air_density)
+    radius, hh, mass = contact.radius, contact.half_thickness, contact.mass
+    i1, i3, g = contact.i1, contact.i3, contact.g
+    restitution, friction = contact.restitution, contact.friction
+    drop_height, rest = contact.drop_height, contact.rest_speed
+    rho, edge_sine, barrier = contact.reach, contact.edge_sine, contact.barrier
     what = describe(model, omega0, launch_speed)
     check_stiffness(model, launch_speed)
     f = bounded(rhs(model), what)
-    rho = math.hypot(radius, hh)
-    edge_sine = hh / rho
-    barrier = mass * g * rho
 
     def gap(_t: float, y: FloatArray) -> float:
         n = normal(y[9:13])
@@ -292,7 +312,7 @@ def land(
         if first < 0.0:
             first = t
         if 0 <= max_bounces <= bounces:
-            return impact.resting_face(n[2], edge_sine), bounces, first, t, bounce.BOUNCE_LIMIT
+            return impact.resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
         lm_body = np.array([i1, i1, i3]) * y[6:9]
         lx, ly, lz = (float(c) for c in rot.apply(lm_body))
         lm = (lx, ly, lz)
@@ -301,13 +321,13 @@ def land(
         z = impact.lowest_depth(n[2], radius, hh)
         omega = impact.angular_velocity(lm, n, i1, i3)
         if bounce.tumbling_energy(v, lm, n, mass, i1, g, z) < barrier:
-            return impact.resting_face(n[2], edge_sine), bounces, first, t, bounce.SETTLED_ENERGY
+            return impact.resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_ENERGY
         if rebound < rest:
             if restitution == 0.0:
                 face = impact.resting_face(n[2], edge_sine)
-                return face, bounces, first, t, bounce.SETTLED_DEAD
+                return face, bounces, first, t, Status.SETTLED_DEAD
             face = bounce.rock(n, omega, radius, hh, mass, i1, g)
-            return face, bounces, first, t, bounce.SETTLED_ROCKING
+            return face, bounces, first, t, Status.SETTLED_ROCKING
         bounces += 1
         y = y.copy()
         y[3:6] = v
@@ -324,4 +344,4 @@ def land(
         y = step.y[:, -1]
         t = float(step.t[-1])
     n_z = float(normal(y[9:13])[2])
-    return impact.resting_face(n_z, edge_sine), bounces, first, t, bounce.UNSETTLED
+    return impact.resting_face(n_z, edge_sine), bounces, first, t, Status.UNSETTLED

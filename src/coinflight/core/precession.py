@@ -7,7 +7,8 @@ M̂ on a cone of half-angle ψ = angle(n, M). Started heads up (n0 = Z), after a
 
 and the coin shows the face it started with iff that is positive. When the phase ωp T is spread
 over many turns (as it is for any real hand), it is in effect uniform on the circle and the
-fraction of tosses that land on the starting side is a function of ψ alone, :func:`same_side`.
+fraction of tosses that land on the starting side is a function of ψ alone,
+:func:`same_side_probability`.
 
 All angles in radians. No validation here: the value layer (:mod:`coinflight.studies.bias`)
 checks input.
@@ -18,12 +19,12 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from coinflight.core.bands import never_turns_over
+
 FloatArray = NDArray[np.float64]
 
-QUARTER_PI = 0.25 * np.pi
 
-
-def same_side(psi: ArrayLike) -> FloatArray:
+def same_side_probability(psi: ArrayLike) -> FloatArray:
     """Probability that the coin lands on the side it started, for precession angle ψ.
 
     Parameters
@@ -51,13 +52,13 @@ def same_side(psi: ArrayLike) -> FloatArray:
     psi = np.asarray(psi, dtype=float)
     c2 = np.cos(psi) ** 2
     s2 = np.sin(psi) ** 2
-    inside = c2 < s2  # π/4 < ψ < 3π/4
+    inside = ~never_turns_over(c2, s2)  # π/4 < ψ < 3π/4
     cot2 = np.where(inside, c2 / np.where(inside, s2, 1.0), 1.0)
     return np.asarray(0.5 + np.arcsin(np.minimum(cot2, 1.0)) / np.pi)
 
 
 def angle_for_same_side(p: ArrayLike) -> FloatArray:
-    """Inverse of :func:`same_side` on the branch π/4 ≤ ψ ≤ π/2.
+    """Inverse of :func:`same_side_probability` on the branch π/4 ≤ ψ ≤ π/2.
 
     Parameters
     ----------

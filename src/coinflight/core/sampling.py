@@ -26,7 +26,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from coinflight.core import torque_free
+from coinflight.core import bands, torque_free
 
 # Cody & Waite reduction: π split into three parts whose first two have 33 significant bits,
 # so that k·_PI_A and k·_PI_B are exact for |k| < 2²⁰.
@@ -102,6 +102,14 @@ normal_alignment = numba.njit(inline="always", cache=True, error_model="numpy")(
     _with_fast_sinc(torque_free.normal_alignment, "normal_alignment_sampling")
 )
 """:func:`coinflight.core.torque_free.normal_alignment`, compiled (fast sinc, see module)."""
+
+never_turns_over = numba.njit(inline="always", cache=True, error_model="numpy")(
+    bands.never_turns_over
+)
+""":func:`coinflight.core.bands.never_turns_over`, compiled."""
+
+half_width = numba.njit(inline="always", cache=True, error_model="numpy")(bands.half_width)
+""":func:`coinflight.core.bands.half_width`, compiled."""
 
 
 @numba.njit(nogil=True, cache=True, error_model="numpy")
@@ -184,19 +192,19 @@ def count_same_side_time_bands(
         perp2 = wx[j] * wx[j] + wy[j] * wy[j]
         axial = i3 / i1 * wz[j]
         ax2 = axial * axial
-        if perp2 == 0.0 or ax2 > perp2:
-            # ψ < 45° (or no tumbling at all): n(t)·n0 ≥ cos²ψ − sin²ψ > 0, every node shows
-            # the starting face.
-            total += n_t
-            continue
-        if ax2 == perp2:
+        if never_turns_over(ax2, perp2):
+            if perp2 == 0.0 or ax2 > perp2:
+                # ψ < 45° (or no tumbling at all): n(t)·n0 ≥ cos²ψ − sin²ψ > 0, every node
+                # shows the starting face.
+                total += n_t
+                continue
             # ψ = 45° exactly: the normal touches the horizontal at ωp t = π (2m + 1); the
             # sign there is rounding's, so settled node by node as the brute force does.
             for i in range(n_t):
                 total += normal_alignment(wx[j], wy[j], wz[j], t_nodes[i], i1, i3) > 0.0
             continue
         wp = np.sqrt(perp2 + ax2)
-        a = np.arccos(-ax2 / perp2)
+        a = half_width(ax2 / perp2)
         m_first = int(np.floor((wp * t_first - a) / (2.0 * np.pi)))
         m_last = int(np.ceil((wp * t_last + a) / (2.0 * np.pi)))
         for m in range(m_first, m_last + 1):

@@ -112,9 +112,10 @@ class Toss:
         ok = (t >= FLIGHT_TIME.low) & (t <= FLIGHT_TIME.high)
         if not np.all(ok):
             bad = float(np.asarray(v0)[~ok][0] if np.ndim(v0) else v0)
+            bad_t = float(np.asarray(t)[~ok][0] if np.ndim(t) else t)
             raise ValueError(
                 f"launch speed must give a flight time 2 v0 / g between {FLIGHT_TIME.low:g} and "
-                f"{FLIGHT_TIME.high:g} s, got {bad!r} m/s (T = {2.0 * bad / gg:.3g} s at "
+                f"{FLIGHT_TIME.high:g} s, got {bad!r} m/s (T = {bad_t:.3g} s at "
                 f"g = {gg:g} m/s²)"
             )
         return cls(

@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
+from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES
 from coinflight.model.coin import Coin
 from coinflight.model.surface import Drag, Surface
@@ -349,7 +350,7 @@ def table_faces(
         t = np.asarray(flight_time, dtype=float)
         shape = np.broadcast_shapes(omega.shape[:-1], t.shape)
         flat_omega = np.broadcast_to(omega, (*shape, 3)).reshape(-1, 3)
-        speed = 0.5 * g * np.broadcast_to(t, shape).reshape(-1)
+        speed = ballistics.launch_speed(np.broadcast_to(t, shape).reshape(-1), g)
         out = land(coin, flat_omega, speed, start_sign, g, surface, None, max_bounces)
         return out.face.reshape(shape)
 
@@ -380,7 +381,7 @@ def _initial_conditions(dist: TossDistribution, u: FloatArray) -> tuple[FloatArr
     omega = np.column_stack(
         [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
     )
-    speed = 0.5 * dist.g * np.broadcast_to(np.asarray(t, dtype=float), (n,))
+    speed = ballistics.launch_speed(np.broadcast_to(np.asarray(t, dtype=float), (n,)), dist.g)
     return omega, speed
 
 

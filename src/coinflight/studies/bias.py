@@ -111,7 +111,7 @@ def same_side_probability(psi: ArrayLike, *, degrees: bool = False) -> FloatArra
     >>> same_side_probability([60.0, 80.0, 90.0, 30.0], degrees=True).round(3)
     array([0.608, 0.51 , 0.5  , 1.   ])
     """
-    return precession.same_side(check_psi(psi, degrees=degrees))
+    return precession.same_side_probability(check_psi(psi, degrees=degrees))
 
 
 def psi_for_probability(p: ArrayLike, *, degrees: bool = False) -> FloatArray:
@@ -191,7 +191,7 @@ def mean_same_side_probability(dist: QuantileDistribution, *, degrees: bool = Fa
         return float(np.asarray(dist.ppf(np.array([u])), dtype=float)[0]) * factor
 
     def integrand(u: float) -> float:
-        return float(precession.same_side(psi_at(u)))
+        return float(precession.same_side_probability(psi_at(u)))
 
     # p(ψ) has a square-root corner where ψ crosses π/4 and 3π/4 (the coin starts or stops
     # turning over): give quad those points, found on the quantile function.
@@ -328,7 +328,7 @@ def expected_same_side(dist: TossDistribution) -> float:
     ]
     wx, wy, wz = np.meshgrid(*axes, indexing="ij", sparse=True)
     omega = np.stack(np.broadcast_arrays(wx, wy, wz), axis=-1)
-    return float(np.mean(precession.same_side(cone_angle(omega, i1, i3))))
+    return float(np.mean(precession.same_side_probability(cone_angle(omega, i1, i3))))
 
 
 TOSSES_PER_SECOND = 4e6

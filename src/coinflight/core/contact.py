@@ -1,0 +1,98 @@
+"""The parameters of a coin meeting a surface, gathered once for the landing kernels (SI units).
+
+:class:`Contact` is a ``NamedTuple`` of floats, so that numba passes it to compiled kernels as
+one argument (its fields read as ``contact.radius`` inside them) and Python code builds it once
+with :meth:`Contact.build` instead of handing a dozen floats down every call. The quantities
+derived from the coin's shape (its reach, the sine of its edge angle and the face/edge energy
+barrier) are computed there, once, for every kernel.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+
+class Contact(NamedTuple):
+    """A coin, a horizontal surface and gravity, as the landing kernels read them.
+
+    Attributes
+    ----------
+    radius, half_thickness : float
+        Radius r and half-thickness h/2 of the coin, m.
+    mass : float
+        Mass m, kg.
+    i1, i3 : float
+        Principal moments about a diameter and about the normal, kg m².
+    restitution, friction : float
+        Coefficient of restitution e in [0, 1] and of friction μ ≥ 0 of the surface.
+    drop_height : float
+        Launch height of the centre of mass above the surface, m.
+    g : float
+        Gravitational acceleration, m/s².
+    rest_speed : float
+        Rebound speed of the contact point below which the bounces have died out, m/s.
+    reach : float
+        ρ = sqrt(r² + (h/2)²), the distance from the centre of mass to the rim's corner, m.
+    edge_sine : float
+        (h/2) / ρ = sin(arctan(h / 2r)): the coin rests on its edge while |n_z| is below it.
+    barrier : float
+        m g ρ, the potential energy of the coin balanced on its corner above the centre of
+        mass at the surface, J: below it the coin can no longer change well (Vulović & Prange
+        1986, the face/edge barrier; see :mod:`coinflight.core.bounce`).
+    """
+
+    radius: float
+    half_thickness: float
+    mass: float
+    i1: float
+    i3: float
+    restitution: float
+    friction: float
+    drop_height: float
+    g: float
+    rest_speed: float
+    reach: float
+    edge_sine: float
+    barrier: float
+
+    @classmethod
+    def build(
+        cls,
+        *,
+        radius: float,
+        thickness: float,
+        mass: float,
+        i1: float,
+        i3: float,
+        restitution: float,
+        friction: float,
+        drop_height: float,
+        g: float,
+        rest_speed: float,
+    ) -> Contact:
+        """The record for a coin of ``thickness`` h (m); the derived fields computed here.
+
+        No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
+        :class:`~coinflight.model.surface.Surface`) has checked every value.
+        """
+        hh = 0.5 * float(thickness)
+        reach = math.hypot(float(radius), hh)
+        return cls(
+            radius=float(radius),
+            half_thickness=hh,
+            mass=float(mass),
+            i1=float(i1),
+            i3=float(i3),
+            restitution=float(restitution),
+            friction=float(friction),
+            drop_height=float(drop_height),
+            g=float(g),
+            rest_speed=float(rest_speed),
+            reach=reach,
+            edge_sine=hh / reach,
+            barrier=float(mass) * float(g) * reach,
+        )
+
+
+__all__ = ["Contact"]
