@@ -22,10 +22,11 @@ import numpy as np
 
 from coinflight import Coin, Toss
 from coinflight.plotting.animation import animate_toss, save_animation
-from coinflight.plotting.basin import basin_map, plot_basin
+from coinflight.plotting.basin import plot_basin
 from coinflight.plotting.style import save_figure
 from coinflight.plotting.toss import plot_toss
 from coinflight.report.reproduce import reproduce_paper
+from coinflight.studies.basin import basin_map
 
 QUARTER = Coin.preset("us-quarter")
 

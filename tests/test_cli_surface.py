@@ -157,14 +157,19 @@ def test_probability_bad_surface_input():
 
 
 def test_basin_after_k_bounces(tmp_path):
-    from coinflight.outcomes.table import land, table_faces
-    from coinflight.plotting.basin import basin_map
+    from coinflight.outcomes import outcome_model
+    from coinflight.outcomes.table import land
+    from coinflight.studies.basin import basin_map
 
     coin = Coin.preset("us-nickel")
     surface = Surface("table", drop_height=0.3)
     maps = [
         basin_map(
-            coin, (0.3, 0.4), (20.0, 40.0), resolution=(40, 30), outcome=table_faces(surface, k)
+            coin,
+            (0.3, 0.4),
+            (20.0, 40.0),
+            resolution=(40, 30),
+            outcome=outcome_model(surface, max_bounces=k),
         )
         for k in (0, 1)
     ]
@@ -185,8 +190,9 @@ def test_basin_after_k_bounces(tmp_path):
 
 def test_table_basin_title_names_coin_start_grid_and_table():
     from coinflight.cli.surface import table_title
-    from coinflight.outcomes.table import table_faces
-    from coinflight.plotting.basin import basin_map, plot_basin
+    from coinflight.outcomes import outcome_model
+    from coinflight.plotting.basin import plot_basin
+    from coinflight.studies.basin import basin_map
 
     surface = Surface("table", drop_height=0.3, restitution=0.4, friction=0.2)
     basin = basin_map(
@@ -195,7 +201,7 @@ def test_table_basin_title_names_coin_start_grid_and_table():
         (20.0, 40.0),
         resolution=(12, 10),
         start="tails",
-        outcome=table_faces(surface, 1),
+        outcome=outcome_model(surface, max_bounces=1),
     )
     fig = plot_basin(basin, ending=table_title(0.3, 0.4, 0.2, 1), boundaries=False)
     title = fig._suptitle.get_text()

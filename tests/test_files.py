@@ -80,7 +80,7 @@ def _refuse(*_args, **_kwargs):
 @pytest.mark.parametrize(
     ("argv", "module", "name"),
     [
-        (["plot", "basin", "--resolution", "8"], "coinflight.plotting.basin", "basin_map"),
+        (["plot", "basin", "--resolution", "8"], "coinflight.studies.basin", "basin_map"),
         (["animate", "--flight-time", "0.5"], "coinflight.plotting.animation", "animate_toss"),
         (["paper", "-q"], "coinflight.report.reproduce", "reproduce_paper"),
     ],

@@ -15,8 +15,10 @@ from coinflight import Coin
 from coinflight.cli import app
 from coinflight.core import torque_free
 from coinflight.core.outcome import HEADS
-from coinflight.plotting.basin import basin_map, caught_faces, midpoints, plot_basin
+from coinflight.outcomes.hand import HAND_CATCH
+from coinflight.plotting.basin import plot_basin
 from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR
+from coinflight.studies.basin import basin_map, midpoints
 
 QUARTER = Coin.preset("us-quarter")
 
@@ -96,7 +98,7 @@ def test_psi_grid_has_the_asked_cone_angle_and_rate_through_a_swapped_outcome():
 
     def recording(coin, omega, flight_time, start_sign, g):
         seen["omega"] = omega
-        return caught_faces(coin, omega, flight_time, start_sign, g)
+        return HAND_CATCH.faces(coin, omega, flight_time, start_sign, g)
 
     psi = math.radians(75.0)
     basin = basin_map(QUARTER, spin=(50.0, 70.0), psi=psi, resolution=(4, 5), outcome=recording)
@@ -235,12 +237,12 @@ BARTOS = Path(str(files("coinflight.datasets") / "bartos2023.txt"))
     ],
 )
 def test_every_figure_command_checks_the_format_first(tmp_path, monkeypatch, argv, option):
-    import coinflight.plotting.basin
+    import coinflight.studies.basin
 
     def refuse(*_args, **_kwargs):
         raise AssertionError("computed before checking the format")
 
-    monkeypatch.setattr(coinflight.plotting.basin, "basin_map", refuse)
+    monkeypatch.setattr(coinflight.studies.basin, "basin_map", refuse)
     out = tmp_path / "figure.txt"
     result = CliRunner().invoke(app, [*argv, str(out)])
     assert result.exit_code == 2, result.output

@@ -229,7 +229,7 @@ def test_plot_toss_refuses_too_many_turns_and_panels():
 
 
 def test_basin_boundaries_are_bounded():
-    from coinflight.plotting.basin import basin_map
+    from coinflight.studies.basin import basin_map
 
     basin = basin_map(QUARTER, spin=(-1e9, 1e9), flight_time=(0.6, 0.9), resolution=(4, 4))
     message = refused_cheaply(basin.boundaries, "curves")

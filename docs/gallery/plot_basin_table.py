@@ -9,7 +9,7 @@ et al. 2008). (``coinflight plot basin --surface table --drop-height 0.3 --bounc
 """
 
 from coinflight import Coin, Surface, basin_map, plot_basin
-from coinflight.outcomes.table import table_faces
+from coinflight.outcomes import outcome_model
 
 coin = Coin.preset("us-quarter")
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)
@@ -20,7 +20,7 @@ for bounces in (0, 1, 2):
         flight_time=(2 * 1.0 / 9.81, 2 * 2.5 / 9.81),  # launch speed 1-2.5 m/s
         spin=(20.0, 60.0),
         resolution=(150, 120),
-        outcome=table_faces(surface, max_bounces=bounces),
+        outcome=outcome_model(surface, max_bounces=bounces),
     )
     ending = f"on a table 0.3 m below, after {bounces} bounces"
     figures.append(plot_basin(basin, boundaries=False, ending=ending))

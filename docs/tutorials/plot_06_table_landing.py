@@ -83,7 +83,7 @@ fig.suptitle("US nickel onto a table 0.8 m below, ωx 150-300 rad/s, v0 1.5-3 m/
 # Strzałko et al. map heads and tails over (launch speed, spin) after 0, 1, 2, … impacts; the
 # boundaries are smooth but grow more intricate with every bounce. Here, after one bounce:
 from coinflight import basin_map, plot_basin
-from coinflight.outcomes.table import table_faces
+from coinflight.outcomes import outcome_model
 
 surface = Surface("table", drop_height=0.3, restitution=0.5, friction=0.3)
 basin = basin_map(
@@ -91,6 +91,6 @@ basin = basin_map(
     flight_time=(2 * 1.0 / 9.81, 2 * 2.5 / 9.81),  # launch speed 1-2.5 m/s
     spin=(20.0, 60.0),
     resolution=(160, 120),
-    outcome=table_faces(surface, max_bounces=1),
+    outcome=outcome_model(surface, max_bounces=1),
 )
 fig = plot_basin(basin, boundaries=False, ending="on a table 0.3 m below, after 1 bounce")

@@ -34,8 +34,9 @@ if TYPE_CHECKING:
     from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
     from coinflight.model.ensemble import TossDistribution
     from coinflight.model.surface import Drag, Surface
+    from coinflight.outcomes import outcome_model
     from coinflight.outcomes.table import Landing
-    from coinflight.plotting.basin import basin_map, plot_basin
+    from coinflight.plotting.basin import plot_basin
     from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.convergence import plot_convergence
     from coinflight.plotting.edge import plot_edge
@@ -48,6 +49,7 @@ if TYPE_CHECKING:
         estimate_many,
     )
     from coinflight.probability.convergence import convergence
+    from coinflight.studies.basin import basin_map
     from coinflight.studies.bias import same_side_probability
 
 # Names loaded on first access (PEP 562), so that `import coinflight` (and with it every
@@ -63,10 +65,11 @@ _LAZY = {
     "Surface": "coinflight.model.surface",
     "TossDistribution": "coinflight.model.ensemble",
     "Uniform": "coinflight.model.distributions",
-    "basin_map": "coinflight.plotting.basin",
+    "basin_map": "coinflight.studies.basin",
     "convergence": "coinflight.probability.convergence",
     "estimate": "coinflight.probability",
     "estimate_many": "coinflight.probability",
+    "outcome_model": "coinflight.outcomes",
     "plot_basin": "coinflight.plotting.basin",
     "plot_bias": "coinflight.plotting.bias",
     "plot_convergence": "coinflight.plotting.convergence",
@@ -111,6 +114,7 @@ __all__ = [
     "convergence",
     "estimate",
     "estimate_many",
+    "outcome_model",
     "plot_basin",
     "plot_bias",
     "plot_convergence",

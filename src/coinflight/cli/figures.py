@@ -265,9 +265,9 @@ def plot_basin(
     """
     import math
 
-    from coinflight.plotting.basin import basin_map
     from coinflight.plotting.basin import plot_basin as draw
     from coinflight.plotting.style import figure_paths, save_figure
+    from coinflight.studies.basin import basin_map
 
     figure_paths(out, "--out")  # before the map is computed, not after
     the_coin = resolve_coin(coin, radius, thickness, mass)

@@ -138,41 +138,17 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
 
 
 def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
-    """JSON description of the landing surface and the air."""
-    out: dict[str, object] = {"surface": surface.kind}
-    if surface.bounces:
-        out.update(
-            drop_height=surface.drop_height,
-            restitution=surface.restitution,
-            friction=surface.friction,
-        )
-    out["drag"] = (
-        None
-        if drag is None
-        else {
-            "coefficient": drag.coefficient,
-            "spin_damping": drag.spin_damping,
-            "air_density": drag.air_density,
-        }
-    )
-    return out
+    """JSON description of the landing surface and the air (the model's ``to_dict``)."""
+    from coinflight.outcomes import outcome_model
+
+    return outcome_model(surface, drag).to_dict()
 
 
 def describe_landing(surface: Surface, drag: Drag | None) -> str:
     """One line for the text output: where the toss ends, the air drag and the spin damping."""
-    if surface.bounces:
-        where = (
-            f"landing on a table {surface.drop_height:g} m below launch (restitution "
-            f"{surface.restitution:g}, friction {surface.friction:g})"
-        )
-    else:
-        where = "caught in the hand"
-    if drag is None:
-        return f"{where}, no air drag"
-    air = f"air drag C_d = {drag.coefficient:g}" if drag.coefficient > 0 else "no air drag"
-    if drag.spin_damping > 0:
-        air += f", spin damping K = {drag.spin_damping:g} N m s"
-    return f"{where}, {air}"
+    from coinflight.outcomes import outcome_model
+
+    return outcome_model(surface, drag).describe()
 
 
 def report_landing(
@@ -185,58 +161,26 @@ def report_landing(
 ) -> None:
     """``coinflight toss`` for a table landing or a flight through air: text or JSON."""
     from coinflight.cli.options import print_json
-    from coinflight.core.outcome import FACE_NAMES
+    from coinflight.outcomes import outcome_model
 
+    model = outcome_model(surface, drag, bounces)
+    payload, line = model.report(coin, toss)
     wx, wy, wz = (float(w) for w in toss.omega)
-    head = {
-        "omega": [wx, wy, wz],
-        "start": toss.start,
-        "g": toss.g,
-        "flight_time": float(toss.flight_time),
-        "launch_speed": float(toss.launch_speed),
-        "apex": float(toss.apex),
-        "coin": {
+    payload.update(model.to_dict())
+    payload.update(
+        omega=[wx, wy, wz],
+        start=toss.start,
+        g=toss.g,
+        flight_time=float(toss.flight_time),
+        launch_speed=float(toss.launch_speed),
+        apex=float(toss.apex),
+        coin={
             "name": coin.name,
             "radius": coin.radius,
             "thickness": coin.thickness,
             "mass": coin.mass,
         },
-    }
-    if surface.bounces:
-        from coinflight.outcomes.table import STATUS_NAMES, Landing
-
-        out = Landing(coin, toss, surface, drag, bounces).outcome
-        payload: dict[str, object] = {
-            "outcome": out.face_name,
-            "bounces": int(out.bounces),
-            "first_contact": float(out.first_contact),
-            "settle_time": float(out.settle_time),
-            "status": STATUS_NAMES[int(out.status)],
-        }
-        line = (
-            f"lands on the table at t = {float(out.first_contact):.4f} s, bounces "
-            f"{int(out.bounces)} times and ends {out.face_name.upper()} "
-            f"(at t = {float(out.settle_time):.4f} s; {out.status_name})"
-        )
-        if out.status_name == "unsettled":
-            line = (
-                f"lands on the table at t = {float(out.first_contact):.4f} s and has NOT "
-                f"settled after {int(out.bounces)} impacts (status unsettled, stopped at "
-                f"t = {float(out.settle_time):.4f} s): the face up then was "
-                f"{out.face_name.upper()}, not a resting face"
-            )
-    else:
-        from coinflight.outcomes.table import catch_with_drag
-
-        assert drag is not None
-        face, when = catch_with_drag(
-            coin, toss.omega.reshape(1, 3), toss.launch_speed, toss.start_sign, toss.g, drag
-        )
-        name = FACE_NAMES[int(face[0])]
-        payload = {"outcome": name, "catch_time": float(when[0])}
-        line = f"caught at launch height at t = {float(when[0]):.4f} s, {name.upper()} up"
-    payload.update(surface_payload(surface, drag))
-    payload.update(head)
+    )
     if json_output:
         print_json(payload)
         return
@@ -244,7 +188,7 @@ def report_landing(
     typer.echo(
         f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, launch speed "
         f"{float(toss.launch_speed):.3g} m/s (apex {float(toss.apex):.3g} m); "
-        f"{describe_landing(surface, drag)}"
+        f"{model.describe()}"
     )
     typer.echo(line)
 
@@ -258,8 +202,8 @@ class LandingChoice:
     model: OutcomeModel
 
     def describe(self) -> str:
-        """One line for the text output (:func:`describe_landing`)."""
-        return describe_landing(self.surface, self.drag)
+        """One line for the text output (the model's ``describe``)."""
+        return self.model.describe()
 
 
 def outcome_model(
@@ -272,16 +216,16 @@ def outcome_model(
     bounces: int | None = None,
 ) -> LandingChoice | None:
     """None for the plain hand catch; else the surface, drag and outcome model to use."""
-    from coinflight.outcomes.table import DragCatch, TableLanding
+    from coinflight import outcomes
 
     the_surface = build_surface(kind, drop_height, restitution, friction)
     the_drag = build_drag(drag, spin_damping)
     check_bounces(the_surface, bounces)
-    if the_surface.bounces:
-        return LandingChoice(the_surface, the_drag, TableLanding(the_surface, the_drag, bounces))
-    if the_drag is not None:
-        return LandingChoice(the_surface, the_drag, DragCatch(the_drag))
-    return None
+    if not the_surface.bounces and the_drag is None:
+        return None
+    return LandingChoice(
+        the_surface, the_drag, outcomes.outcome_model(the_surface, the_drag, bounces)
+    )
 
 
 def table_outcome(
@@ -291,14 +235,14 @@ def table_outcome(
     friction: float | None,
     bounces: int | None,
 ) -> dict[str, Any]:
-    """``outcome=`` for :func:`coinflight.plotting.basin.basin_map` (empty for the hand)."""
-    from coinflight.outcomes.table import table_faces
+    """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
+    from coinflight.outcomes import outcome_model
 
     the_surface = build_surface(kind, drop_height, restitution, friction)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces:
         return {}
-    return {"outcome": table_faces(the_surface, bounces)}
+    return {"outcome": outcome_model(the_surface, None, bounces)}
 
 
 def table_title(

@@ -1,32 +1,54 @@
-"""Where a batch of initial conditions becomes counts of faces: the one function boundary.
+"""The one protocol every estimator and map asks of an outcome model, and its tally helpers.
 
-Every estimator asks an :class:`OutcomeModel` to count the faces of a batch of tosses given as
-points of the unit cube (mapped to initial conditions by the distribution's ``ppf``). The hand
-catch of the founding paper is :class:`HandCatch`; a landing on a table (bounces, edge) plugs in
-by subclassing :class:`OutcomeModel` and overriding :meth:`OutcomeModel.count`.
+An :class:`OutcomeModel` turns initial conditions into faces. It answers two questions:
+
+- :meth:`OutcomeModel.faces`: the face of each toss of an array (ω (..., 3), T (...)), for maps
+  (:func:`coinflight.studies.basin.basin_map`) and single tosses;
+- :meth:`OutcomeModel.count`: face counts of a batch given as points of the unit cube, for the
+  probability estimators (by default through :meth:`~OutcomeModel.faces`).
+
+and declares what it can do instead of being recognised by its class: ``closed_form_bands``
+(the hand catch: the exact method and the grid's band counting may use the closed-form bands
+of :mod:`coinflight.core.bands`), ``can_end_on_edge``, ``deterministic``, its ``rate``
+(tosses a second, for the work bounds) and its extra ``tallies``. The models:
+:mod:`~coinflight.outcomes.hand`, :mod:`~coinflight.outcomes.table`,
+:mod:`~coinflight.outcomes.air`; the factory that picks one:
+:func:`coinflight.outcomes.outcome_model`.
 """
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 from numpy.typing import NDArray
 
-from coinflight.model.ensemble import PARAMETERS, TossDistribution
+from coinflight.core.outcome import FACE_NAMES
 
+if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.model.surface import Drag
+    from coinflight.model.toss import Toss
+
+FloatArray = NDArray[np.float64]
+FaceArray = NDArray[np.int8]
 Counts = NDArray[np.int64]
 """(tails, heads, edge) counts, shape (3,), followed by the model's extra tallies if any."""
 
 
-def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
-    """(tails, heads, edge) from the number of tosses that show the starting face."""
-    heads = same if start_sign > 0 else n - same
-    return np.array([n - heads, heads, 0], dtype=np.int64)
-
-
 class OutcomeModel:
-    """Counts faces for batches of tosses. Subclasses override :meth:`count`."""
+    """How a toss ends. Subclasses implement :meth:`faces` (and may override :meth:`count`)."""
 
     name = "outcome model"
+    closed_form_bands: bool = False
+    """True when the face is the sign of n(T)·n0 at the flight time T (the hand catch): the
+    exact method and the grid's band counting then use :mod:`coinflight.core.bands` and never
+    call :meth:`count`."""
+    can_end_on_edge: bool = False
+    """True when a toss may end on its edge (face code EDGE)."""
+    deterministic: bool = True
+    """True when the same initial conditions always give the same face."""
     tallies: tuple[str, ...] = ()
     """Names of extra counts :meth:`count` returns after (tails, heads, edge), e.g.
     ``("unsettled",)`` for tosses a landing model could not settle (their faces are still
@@ -36,43 +58,57 @@ class OutcomeModel:
     bounds (:func:`coinflight.probability.monte_carlo.check_work` …) turn a size into a time
     with it. Subclasses state their own measured rate."""
 
-    def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
-        """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n).
+    def faces(
+        self,
+        coin: Coin,
+        omega: FloatArray,
+        flight_time: FloatArray,
+        start_sign: float,
+        g: float,
+    ) -> FaceArray:
+        """Face codes (:mod:`coinflight.core.outcome`) of tosses ω (..., 3), T (...), shape (...).
 
-        Returns (tails, heads, edge, *tallies), shape (3 + len(:attr:`tallies`),).
-
-        Row r of ``u`` drives parameter ``dist.ranged[r]`` through its distribution's ``ppf``
-        (:meth:`~coinflight.model.ensemble.TossDistribution.values`).
+        The launch speed is v0 = g T / 2 (T: the flight time back to launch height).
         """
         raise NotImplementedError
 
+    def count(self, dist: TossDistribution, u: FloatArray) -> Counts:
+        """Face counts for unit-cube points ``u``, shape (len(dist.ranged), n).
 
-class HandCatch(OutcomeModel):
-    """Caught in the hand at launch height: the face is the sign of n(T)·n0 (Stefan & Cheche)."""
+        Returns (tails, heads, edge, *tallies), shape (3 + len(:attr:`tallies`),). Row r of
+        ``u`` drives parameter ``dist.ranged[r]`` through its distribution's ``ppf``
+        (:meth:`~coinflight.model.ensemble.TossDistribution.values`). By default the faces of
+        :meth:`faces`, counted.
+        """
+        omega, t = initial_conditions(dist, u)
+        face = self.faces(dist.coin, omega, t, dist.start_sign, dist.g)
+        return np.bincount(face, minlength=3).astype(np.int64)
 
-    name = "hand catch"
-    rate = 2.5e7
-    """Measured: Monte Carlo, 10⁸ tosses of ω_x 60-90 rad/s, T 0.6-0.9 s in 4.2 s on the 2-core
-    machine shared with other jobs (benchmarks/bench_probability.py measures it quietly)."""
+    def describe(self) -> str:
+        """One line for text output: where the toss ends and the air."""
+        return self.name
 
-    def count(self, dist: TossDistribution, u: NDArray[np.float64]) -> Counts:
-        from coinflight.core import sampling
+    def to_dict(self) -> dict[str, Any]:
+        """JSON description of the model's settings (surface and air)."""
+        return {"surface": self.name}
 
-        n = u.shape[1]
-        i1, i3 = dist.moments
-        maps = _affine_maps(dist)
-        if maps is not None:
-            offset, scale = maps
-            if dist.ranged == PARAMETERS and u.flags.c_contiguous:
-                rows = u
-            else:  # parameter-major and contiguous, so that the kernel vectorises
-                rows = np.zeros((4, n))
-                rows[[PARAMETERS.index(name) for name in dist.ranged]] = u
-            same = sampling.count_same_side_affine(rows, offset, scale, i1, i3)
-        else:
-            wx, wy, wz, t = dist.values(u)
-            same = sampling.count_same_side(wx, wy, wz, t, i1, i3)
-        return faces_from_same_side(int(same), n, dist.start_sign)
+    def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
+        """One toss: (JSON fields, one line of text). By default the face of :meth:`faces`."""
+        face = self.faces(
+            coin,
+            np.asarray(toss.omega, dtype=float).reshape(1, 3),
+            np.asarray(toss.flight_time, dtype=float).reshape(1),
+            toss.start_sign,
+            toss.g,
+        )
+        name = FACE_NAMES[int(face[0])]
+        return {"outcome": name}, f"ends {name.upper()} up ({self.describe()})"
+
+
+def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
+    """(tails, heads, edge) from the number of tosses that show the starting face."""
+    heads = same if start_sign > 0 else n - same
+    return np.array([n - heads, heads, 0], dtype=np.int64)
 
 
 def tally_details(model: OutcomeModel, counts: NDArray[np.int64]) -> dict[str, float]:
@@ -85,18 +121,72 @@ def tally_details(model: OutcomeModel, counts: NDArray[np.int64]) -> dict[str, f
     return out
 
 
-def _affine_maps(
-    dist: TossDistribution,
-) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
-    """(offset, scale) per parameter when every parameter maps affinely from [0, 1]."""
-    offset = np.empty(4)
-    scale = np.empty(4)
-    for p, name in enumerate(PARAMETERS):
-        affine = getattr(dist, name).affine
-        if affine is None:
-            return None
-        offset[p], scale[p] = affine
-    return offset, scale
+def initial_conditions(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """(ω (n, 3), T (n,)) for unit-cube points u, shape (len(dist.ranged), n)."""
+    wx, wy, wz, t = dist.values(np.asarray(u, dtype=float))
+    n = np.asarray(u).shape[1]
+    omega = np.column_stack(
+        [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
+    )
+    return omega, np.broadcast_to(np.asarray(t, dtype=float), (n,))
 
 
-HAND_CATCH = HandCatch()
+def toss_grid(
+    omega: FloatArray, flight_time: FloatArray
+) -> tuple[tuple[int, ...], FloatArray, FloatArray]:
+    """(shape, ω (m, 3), T (m,)): tosses ω (..., 3), T (...) broadcast together and flattened."""
+    omega = np.asarray(omega, dtype=float)
+    t = np.asarray(flight_time, dtype=float)
+    shape = np.broadcast_shapes(omega.shape[:-1], t.shape)
+    flat_omega = np.broadcast_to(omega, (*shape, 3)).reshape(-1, 3)
+    return shape, flat_omega, np.broadcast_to(t, shape).reshape(-1)
+
+
+def single_name(codes: NDArray[Any], names: tuple[str, ...], what: str) -> str:
+    """The name of the code of a single toss; TypeError for a batch."""
+    if codes.ndim:
+        raise TypeError(f"{what}_name is for a single toss; use {what} for a batch")
+    return names[int(codes)]
+
+
+def describe_air(drag: Drag | None) -> str:
+    """The air part of a model's one-line description."""
+    if drag is None:
+        return "no air drag"
+    air = f"air drag C_d = {drag.coefficient:g}" if drag.coefficient > 0 else "no air drag"
+    if drag.spin_damping > 0:
+        air += f", spin damping K = {drag.spin_damping:g} N m s"
+    return air
+
+
+def drag_dict(drag: Drag | None) -> dict[str, float] | None:
+    """JSON description of the air drag (None: no air)."""
+    if drag is None:
+        return None
+    return {
+        "coefficient": drag.coefficient,
+        "spin_damping": drag.spin_damping,
+        "air_density": drag.air_density,
+    }
+
+
+def __getattr__(name: str) -> Any:
+    # The hand catch moved to coinflight.outcomes.hand; the old import path keeps working.
+    if name in ("HandCatch", "HAND_CATCH"):
+        from coinflight.outcomes import hand
+
+        return getattr(hand, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = [
+    "Counts",
+    "OutcomeModel",
+    "describe_air",
+    "drag_dict",
+    "faces_from_same_side",
+    "initial_conditions",
+    "single_name",
+    "tally_details",
+    "toss_grid",
+]

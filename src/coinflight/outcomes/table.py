@@ -9,7 +9,6 @@ between impacts) and, with air drag, :mod:`coinflight.core.drag`.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -23,7 +22,16 @@ from coinflight.core.outcome import FACE_NAMES
 from coinflight.model.coin import Coin
 from coinflight.model.surface import Drag, Surface
 from coinflight.model.toss import Toss
-from coinflight.outcomes.base import OutcomeModel
+from coinflight.outcomes.air import DRAG_TOSSES_PER_SECOND
+from coinflight.outcomes.base import (
+    FaceArray,
+    OutcomeModel,
+    describe_air,
+    drag_dict,
+    initial_conditions,
+    single_name,
+    toss_grid,
+)
 
 if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
@@ -42,9 +50,6 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 
 BOUNCING_TOSSES_PER_SECOND = 1.6e5
 """Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet)."""
-DRAG_TOSSES_PER_SECOND = 20
-"""Table landings a second with air drag (one SciPy integration each, one thread): 100 tosses
-in 5.3 s on the 2-core reference machine."""
 
 
 STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
@@ -78,16 +83,12 @@ class LandingOutcome:
     @property
     def face_name(self) -> str:
         """ "heads", "tails" or "edge" for a single toss."""
-        if self.face.ndim:
-            raise TypeError("face_name is for a single toss; use face for a batch")
-        return FACE_NAMES[int(self.face)]
+        return single_name(self.face, FACE_NAMES, "face")
 
     @property
     def status_name(self) -> str:
         """Why a single toss ended."""
-        if self.status.ndim:
-            raise TypeError("status_name is for a single toss; use status for a batch")
-        return STATUS_NAMES[int(self.status)]
+        return single_name(self.status, STATUS_NAMES, "status")
 
 
 def check_clears(coin: Coin, apex: FloatArray, surface: Surface) -> None:
@@ -175,48 +176,6 @@ def land(
     return LandingOutcome(face, bounces, first, settle, status)
 
 
-def catch_with_drag(
-    coin: Coin,
-    omega: FloatArray,
-    launch_speed: FloatArray,
-    start_sign: float | FloatArray,
-    g: float,
-    drag: Drag,
-) -> tuple[NDArray[np.int8], FloatArray]:
-    """Caught in the hand at launch height after a flight through air: (face, catch time).
-
-    The face is the sign of the heads normal's vertical component when the centre of mass
-    comes back down to launch height (:func:`coinflight.core.drag.catch`); without drag this
-    is the closed form's heads iff n(T)·Z > 0. One SciPy integration per toss.
-    """
-    from coinflight.core import drag as drag_kernels
-    from coinflight.core.outcome import HEADS, TAILS
-
-    if not isinstance(drag, Drag):
-        raise TypeError(f"drag must be a Drag, got {type(drag).__name__}")
-    i1, i3 = coin.moments
-    model = drag_kernels.DragModel(
-        coin.mass,
-        coin.radius,
-        (i1, i1, i3),
-        g,
-        drag.coefficient,
-        drag.spin_damping,
-        drag.air_density,
-    )
-    omega = np.asarray(omega, dtype=float).reshape(-1, 3)
-    n = omega.shape[0]
-    speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (n,))
-    sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (n,))
-    face = np.empty(n, dtype=np.int8)
-    when = np.empty(n)
-    for k in range(n):
-        when[k], state = drag_kernels.catch(model, omega[k], float(speed[k]), float(sign[k]))
-        nz = float(drag_kernels.normal(state[9:13])[2])
-        face[k] = HEADS if nz > 0.0 else TAILS
-    return face, when
-
-
 @dataclass(frozen=True, eq=False)
 class Landing:
     """A toss (or a batch of tosses) that ends on a table.
@@ -283,6 +242,32 @@ class Landing:
             status=out.status.reshape(shape),
         )
 
+    def to_dict(self) -> dict[str, Any]:
+        """JSON fields of a single toss: face, bounces, times and why it ended."""
+        out = self.outcome
+        return {
+            "outcome": out.face_name,
+            "bounces": int(out.bounces),
+            "first_contact": float(out.first_contact),
+            "settle_time": float(out.settle_time),
+            "status": out.status_name,
+        }
+
+    def describe(self) -> str:
+        """One line for a single toss: when it lands, how often it bounces, how it ends."""
+        out = self.outcome
+        first, settle, bounces = float(out.first_contact), float(out.settle_time), int(out.bounces)
+        if out.status_name == "unsettled":
+            return (
+                f"lands on the table at t = {first:.4f} s and has NOT settled after {bounces} "
+                f"impacts (status unsettled, stopped at t = {settle:.4f} s): the face up then "
+                f"was {out.face_name.upper()}, not a resting face"
+            )
+        return (
+            f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
+            f"{out.face_name.upper()} (at t = {settle:.4f} s; {out.status_name})"
+        )
+
 
 class TableLanding(OutcomeModel):
     """Outcome model for the probability estimators: the tosses land on ``surface``.
@@ -293,6 +278,7 @@ class TableLanding(OutcomeModel):
     """
 
     name = "table landing"
+    can_end_on_edge = True
     tallies = ("unsettled",)
 
     @property
@@ -312,13 +298,31 @@ class TableLanding(OutcomeModel):
         self.drag = drag
         self.max_bounces = max_bounces
 
+    def faces(
+        self, coin: Coin, omega: FloatArray, flight_time: FloatArray, start_sign: float, g: float
+    ) -> FaceArray:
+        """Faces of tosses launched at v0 = g T / 2 that land on the surface (:func:`land`); with
+        ``max_bounces`` = K the well the coin is in at the contact after K bounces."""
+        shape, flat_omega, t = toss_grid(omega, flight_time)
+        out = land(
+            coin,
+            flat_omega,
+            ballistics.launch_speed(t, g),
+            start_sign,
+            g,
+            self.surface,
+            self.drag,
+            self.max_bounces,
+        )
+        return out.face.reshape(shape)
+
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
         """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n)."""
-        omega, speed = _initial_conditions(dist, u)
+        omega, t = initial_conditions(dist, u)
         out = land(
             dist.coin,
             omega,
-            speed,
+            ballistics.launch_speed(t, dist.g),
             dist.start_sign,
             dist.g,
             self.surface,
@@ -330,68 +334,38 @@ class TableLanding(OutcomeModel):
         unsettled = np.count_nonzero(out.status == STATUS_NAMES.index("unsettled"))
         return np.append(faces, unsettled)
 
+    def describe(self) -> str:
+        s = self.surface
+        return (
+            f"landing on a table {s.drop_height:g} m below launch (restitution "
+            f"{s.restitution:g}, friction {s.friction:g}), {describe_air(self.drag)}"
+        )
 
-def table_faces(
-    surface: Surface, max_bounces: int | None = None
-) -> Callable[[Coin, FloatArray, FloatArray, float, float], NDArray[np.int8]]:
-    """An outcome function ``(coin, ω (..., 3), T (...), start_sign, g) -> faces (...)``.
+    def to_dict(self) -> dict[str, Any]:
+        s = self.surface
+        out: dict[str, Any] = {
+            "surface": s.kind,
+            "drop_height": s.drop_height,
+            "restitution": s.restitution,
+            "friction": s.friction,
+            "drag": drag_dict(self.drag),
+        }
+        if self.max_bounces is not None:
+            out["max_bounces"] = self.max_bounces
+        return out
 
-    For maps over grids of tosses (:func:`coinflight.plotting.basin.basin_map`'s ``outcome``):
-    the tosses, launched at v0 = g T / 2, land on ``surface``; with ``max_bounces`` = K the
-    face is the well the coin is in at the contact after K bounces (K = 0: first contact).
-    """
-    if not isinstance(surface, Surface) or surface.kind != "table":
-        raise ValueError("table_faces needs a Surface of kind 'table'")
-
-    def faces(
-        coin: Coin, omega: FloatArray, flight_time: FloatArray, start_sign: float, g: float
-    ) -> NDArray[np.int8]:
-        omega = np.asarray(omega, dtype=float)
-        t = np.asarray(flight_time, dtype=float)
-        shape = np.broadcast_shapes(omega.shape[:-1], t.shape)
-        flat_omega = np.broadcast_to(omega, (*shape, 3)).reshape(-1, 3)
-        speed = ballistics.launch_speed(np.broadcast_to(t, shape).reshape(-1), g)
-        out = land(coin, flat_omega, speed, start_sign, g, surface, None, max_bounces)
-        return out.face.reshape(shape)
-
-    return faces
-
-
-class DragCatch(OutcomeModel):
-    """Outcome model: caught in the hand at launch height after a flight through air."""
-
-    name = "hand catch with drag"
-
-    def __init__(self, drag: Drag) -> None:
-        if not isinstance(drag, Drag):
-            raise TypeError(f"drag must be a Drag, got {type(drag).__name__}")
-        self.drag = drag
-
-    def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n)."""
-        omega, speed = _initial_conditions(dist, u)
-        face, _ = catch_with_drag(dist.coin, omega, speed, dist.start_sign, dist.g, self.drag)
-        return np.bincount(face, minlength=3).astype(np.int64)
-
-
-def _initial_conditions(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """(ω (n, 3), v0 (n,)) for unit-cube points u of the distribution."""
-    wx, wy, wz, t = dist.values(np.asarray(u, dtype=float))
-    n = np.asarray(u).shape[1]
-    omega = np.column_stack(
-        [np.broadcast_to(np.asarray(w, dtype=float), (n,)) for w in (wx, wy, wz)]
-    )
-    speed = ballistics.launch_speed(np.broadcast_to(np.asarray(t, dtype=float), (n,)), dist.g)
-    return omega, speed
+    def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
+        landing = Landing(coin, toss, self.surface, self.drag, self.max_bounces)
+        return landing.to_dict(), landing.describe()
 
 
 __all__ = [
+    "BOUNCING_TOSSES_PER_SECOND",
+    "DRAG_TOSSES_PER_SECOND",
+    "MAX_BOUNCES",
     "STATUS_NAMES",
-    "DragCatch",
     "Landing",
     "LandingOutcome",
     "TableLanding",
-    "catch_with_drag",
     "land",
-    "table_faces",
 ]

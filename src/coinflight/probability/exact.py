@@ -28,7 +28,7 @@ from coinflight import _validation as v
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Fixed, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HandCatch, OutcomeModel
+from coinflight.outcomes.base import OutcomeModel
 from coinflight.probability.result import ProbabilityResult
 
 TOLERANCE = 1e-9
@@ -173,7 +173,7 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         For distributions that no exact integral here handles, naming the methods to use.
     """
     t0 = time.perf_counter()
-    if model is not None and not isinstance(model, HandCatch):
+    if model is not None and not model.closed_form_bands:
         raise ValueError(
             f"the exact method handles the hand catch only, not {model.name}; " + _USE_INSTEAD
         )

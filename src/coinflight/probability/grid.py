@@ -20,7 +20,7 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HAND_CATCH, HandCatch, OutcomeModel, tally_details
+from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -133,7 +133,7 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
     k = len(ranged)
     total = n**k
     spin_names = tuple(name for name in ranged if name != "flight_time")
-    if isinstance(model, HandCatch) and "flight_time" in ranged:
+    if model.closed_form_bands and "flight_time" in ranged:
         v.work_bound(
             f"a grid of n = {n} cells per parameter",
             8 * n * (len(spin_names) + 2),
@@ -200,7 +200,7 @@ def estimate(
     k = len(ranged)
     total = n**k
     spin_names = tuple(name for name in ranged if name != "flight_time")
-    fast = isinstance(model, HandCatch) and "flight_time" in ranged
+    fast = model.closed_form_bands and "flight_time" in ranged
     check_work(dist, n, model)
     if fast:
         spin_nodes = [getattr(dist, name).ppf(midpoints(n)) for name in spin_names]

@@ -1,0 +1,151 @@
+"""The walkthrough "adding an outcome model" (ARCHITECTURE.md), followed with a toy soft mat.
+
+A new model touches at most three places: its kernel (here an existing one,
+:func:`coinflight.core.torque_free.normal_alignment`), its model (the class below, which would be
+``src/coinflight/outcomes/mat.py``) and one registration line (``SURFACE_KINDS`` in
+``src/coinflight/outcomes/__init__.py``, here :func:`coinflight.outcomes.register` at run time).
+Nothing else changes: the factory, the estimators and the maps take it as it is.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from coinflight import outcomes
+from coinflight.core import torque_free
+from coinflight.core.outcome import EDGE, face_from_alignment
+from coinflight.model.coin import Coin
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.air import DragCatch
+from coinflight.outcomes.base import OutcomeModel
+from coinflight.outcomes.hand import HAND_CATCH, HandCatch
+from coinflight.outcomes.table import TableLanding
+from coinflight.probability import estimate
+from coinflight.studies.basin import basin_map
+
+QUARTER = Coin.preset("us-quarter")
+G = 9.81
+
+
+# --- touch point 2 of 3: the model (would be src/coinflight/outcomes/mat.py) ----------------
+class SoftMat(OutcomeModel):
+    """A thick soft mat ``depth`` m below launch stops the coin dead when its centre reaches it.
+
+    The face is the one nearest up then: the sign of n(t)·Z at the time t the centre has fallen
+    ``depth`` below launch height, t = (v0 + sqrt(v0² + 2 g depth)) / g with v0 = g T / 2
+    (uniform gravity, no drag); the attitude is the torque-free closed form (touch point 1, the
+    kernel, reused).
+    """
+
+    name = "soft mat"
+
+    def __init__(self, depth: float) -> None:
+        self.depth = depth
+
+    def faces(self, coin, omega, flight_time, start_sign, g):
+        v0 = 0.5 * g * np.asarray(flight_time, dtype=float)
+        t = (v0 + np.sqrt(v0 * v0 + 2.0 * g * self.depth)) / g
+        i1, i3 = coin.moments
+        align = torque_free.normal_alignment(omega[..., 0], omega[..., 1], omega[..., 2], t, i1, i3)
+        return face_from_alignment(align, start_sign)
+
+
+@pytest.fixture
+def registry(monkeypatch):
+    """A copy of the registry for the test, so that the soft mat does not outlive it."""
+    monkeypatch.setattr(outcomes, "SURFACE_KINDS", dict(outcomes.SURFACE_KINDS))
+    return outcomes.SURFACE_KINDS
+
+
+def _register(depth: float) -> None:
+    # --- touch point 3 of 3: one registration line --------------------------------------------
+    outcomes.register("soft-mat", lambda surface, drag, max_bounces: SoftMat(depth))
+
+
+DIST = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))
+
+
+def test_the_soft_mat_is_built_by_the_factory_with_one_line(registry):
+    with pytest.raises(ValueError, match=r"^surface must be one of hand, table; got 'soft-mat'"):
+        outcomes.outcome_model("soft-mat")
+    _register(0.5)
+    model = outcomes.outcome_model("soft-mat")
+    assert isinstance(model, SoftMat) and model.depth == 0.5
+    # The defaults of the protocol stand for everything the model does not declare.
+    assert not model.closed_form_bands and not model.can_end_on_edge and model.deterministic
+    assert model.describe() == "soft mat"
+
+
+def test_a_mat_at_launch_height_is_the_hand_catch_in_monte_carlo_and_on_a_map(registry):
+    # depth 0: the centre reaches the mat at t = 2 v0 / g = T, where the hand catches it. The
+    # two models share no code path (the hand counts by the compiled affine kernel), so equal
+    # counts on 20,000 random tosses and equal maps test the plumbing end to end.
+    _register(0.0)
+    mat = outcomes.outcome_model("soft-mat")
+    by_mat = estimate(DIST, "monte-carlo", n=20_000, seed=11, model=mat)
+    by_hand = estimate(DIST, "monte-carlo", n=20_000, seed=11)
+    assert by_mat.counts == by_hand.counts
+    assert by_mat.seed == 11
+    mat_map = basin_map(QUARTER, resolution=(60, 40), outcome=mat)
+    hand_map = basin_map(QUARTER, resolution=(60, 40))
+    np.testing.assert_array_equal(mat_map.face, hand_map.face)
+
+
+def test_a_deeper_mat_is_the_catch_at_the_later_contact(registry):
+    depth = 0.5
+    _register(depth)
+    mat = outcomes.outcome_model("soft-mat")
+    mat_map = basin_map(QUARTER, resolution=(60, 40), outcome=mat)
+    # Pixel by pixel: the hand catch's face at the time the centre falls 0.5 m below launch
+    # (z(t) = v0 t − g t²/2 = −0.5 m, v0 = g T / 2), found here by NumPy's polynomial roots.
+    t, w = np.meshgrid(mat_map.flight_time, mat_map.spin)
+    later = np.array(
+        [max(np.roots([-0.5 * G, 0.5 * G * tt, depth]).real) for tt in t.ravel()]
+    ).reshape(t.shape)
+    omega = np.stack([w, 0 * w, 0 * w], axis=-1)
+    np.testing.assert_array_equal(mat_map.face, HAND_CATCH.faces(QUARTER, omega, later, 1.0, G))
+    assert np.any(mat_map.face != basin_map(QUARTER, resolution=(60, 40)).face)
+    # The estimators ask its capabilities: no closed-form bands, so the grid evaluates every
+    # configuration and the exact method refuses, naming it.
+    grid = estimate(DIST, "grid", n=50, model=mat)
+    assert grid.details["how"] == "every configuration evaluated"
+    assert grid.p_heads == pytest.approx(
+        float(np.mean(basin_map(QUARTER, resolution=(50, 50), outcome=mat).face == 1)), abs=0
+    )
+    with pytest.raises(ValueError, match="exact method handles the hand catch only, not soft mat"):
+        estimate(DIST, "exact", model=mat)
+
+
+def test_the_factory_builds_each_registered_model():
+    assert outcomes.outcome_model() is HAND_CATCH
+    assert outcomes.outcome_model(Surface("hand")) is HAND_CATCH
+    assert outcomes.outcome_model("hand", Drag(coefficient=0.0)) is HAND_CATCH  # no air
+    air = outcomes.outcome_model(Surface("hand"), Drag(coefficient=1.17))
+    assert isinstance(air, DragCatch) and air.drag.coefficient == 1.17
+    table = Surface("table", drop_height=0.3)
+    landing = outcomes.outcome_model(table, max_bounces=2)
+    assert isinstance(landing, TableLanding)
+    assert (landing.surface, landing.drag, landing.max_bounces) == (table, None, 2)
+    assert landing.can_end_on_edge and not landing.closed_form_bands
+    assert HandCatch.closed_form_bands and not HandCatch.can_end_on_edge
+    assert landing.to_dict()["max_bounces"] == 2
+    with pytest.raises(ValueError, match=r"^max_bounces applies to a table surface only"):
+        outcomes.outcome_model("hand", max_bounces=1)
+    with pytest.raises(TypeError, match=r"^surface must be a Surface or a kind name, got int"):
+        outcomes.outcome_model(3)  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match=r"^drag must be a Drag"):
+        outcomes.outcome_model("hand", "air")  # type: ignore[arg-type]
+
+
+def test_table_faces_on_a_map_count_edges_like_the_estimator():
+    # One implementation of a table's faces: the map's pixels and the grid's configurations are
+    # the same tosses (cell midpoints), so their face fractions agree exactly.
+    model = outcomes.outcome_model(Surface("table", drop_height=0.3, restitution=0.2))
+    dist = TossDistribution(Uniform(20, 40), 0, 0, Uniform(0.3, 0.4), coin=Coin.preset("us-nickel"))
+    grid = estimate(dist, "grid", n=30, model=model)
+    basin = basin_map(dist.coin, (0.3, 0.4), (20.0, 40.0), resolution=(30, 30), outcome=model)
+    assert grid.p_heads == basin.heads_fraction
+    assert grid.p_edge == basin.fraction(EDGE)
