@@ -198,7 +198,7 @@ class Landing:
     >>> surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
     >>> landing = Landing(Coin.preset("us-nickel"), Toss((240.0, 5.0, 3.0), 0.49), surface)
     >>> landing.outcome.face_name, int(landing.outcome.bounces)  # as in the README
-    ('tails', 4)
+    ('heads', 13)
     """
 
     coin: Coin
