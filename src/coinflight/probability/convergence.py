@@ -142,7 +142,7 @@ def convergence(
         result's seed is then None.
     """
     from coinflight.probability import estimate
-    from coinflight.probability.monte_carlo import reported_seed, seed_sequence
+    from coinflight.probability.streams import reported_seed, seed_sequence
 
     allowed = ("grid", "monte-carlo", "qmc")
     for m in methods:

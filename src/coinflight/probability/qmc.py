@@ -2,7 +2,8 @@
 
 R independent scramblings (default 16), each of 2^m points; the estimate is the mean over the
 scramblings and its standard error their standard deviation over √R (Owen 1997; L'Ecuyer &
-Lemieux 2002). Each scrambling is seeded by child r of the seed's ``SeedSequence``.
+Lemieux 2002). Scrambling r is seeded by child r of the seed's ``SeedSequence``
+(:func:`coinflight.probability.streams.generator`).
 """
 
 from __future__ import annotations
@@ -24,8 +25,8 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
-from coinflight.probability.monte_carlo import reported_seed, seed_sequence
 from coinflight.probability.result import ProbabilityResult, from_counts
+from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
 
 DEFAULT_REPLICATES = 16
 MAX_REPLICATES = 1024
@@ -42,12 +43,14 @@ _CHUNK = 1 << 18
 def _task(args: tuple[Any, ...]) -> np.ndarray:
     from scipy.stats import qmc
 
-    model, dist, child, points = args
+    model, dist, root, replicate, points = args
     k = len(dist.ranged)
     counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     if k == 0:
         return model.count(dist, np.zeros((0, points)))
-    sobol = qmc.Sobol(d=k, scramble=True, seed=np.random.Generator(np.random.PCG64(child)))
+    sobol = qmc.Sobol(
+        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
+    )
     done = 0
     while done < points:
         # Powers of two at every call keep Sobol's balance (and SciPy's warning) in check.
@@ -91,7 +94,7 @@ def rate(model: OutcomeModel = HAND_CATCH) -> float:
 def estimate(
     dist: TossDistribution,
     n: int,
-    seed: int | np.random.SeedSequence | None = None,
+    seed: SeedLike = None,
     *,
     replicates: int = DEFAULT_REPLICATES,
     model: OutcomeModel = HAND_CATCH,
@@ -110,8 +113,7 @@ def estimate(
     check_work(n, replicates, model)
     points = n // replicates
     root = seed_sequence(seed)
-    children = root.spawn(replicates)
-    tasks = [(model, dist, child, points) for child in children]
+    tasks = [(model, dist, root, r, points) for r in range(replicates)]
     with executor_or_threads(executor, threads) as ex:
         parts = run_tasks(ex, _task, tasks, [points] * replicates, progress)
     counts = np.sum(parts, axis=0)
