@@ -29,6 +29,7 @@ from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Fixed, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import HandCatch, OutcomeModel
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult
 
 TOLERANCE = 1e-9
@@ -253,3 +254,21 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         elapsed=time.perf_counter() - t0,
         details=details,
     )
+
+
+def _summary(result: ProbabilityResult) -> str:
+    extra = str(result.details["how"])
+    if "warning" in result.details:
+        extra += f"; quadrature warning: {result.details['warning']}"
+    return extra
+
+
+ESTIMATOR = Estimator(
+    name="exact",
+    run=estimate,
+    label="exact",
+    description="band integral (Keller 1986)",
+    parallel=False,
+    color="#000000",
+    summary=_summary,
+)

@@ -28,6 +28,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 MAX_WORK = 8 * 10**8
@@ -239,3 +240,19 @@ def estimate(
 
 
 __all__ = ["check_work", "default_cells", "estimate", "midpoints"]
+
+
+ESTIMATOR = Estimator(
+    name="grid",
+    run=estimate,
+    label="method A: grid (x = configurations)",
+    description="the paper's method A (N cells per ranged parameter)",
+    default_n=default_cells,
+    size="cells per ranged parameter (default 5000 with up to 2 ranged parameters, else the "
+    "largest N with N^k ≤ 10^8)",
+    color="#0072B2",  # method A (blue in the paper)
+    work=check_work,
+    work_units=lambda k, n: n**k,
+    series=(5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000),  # up to the paper's 5000
+    summary=lambda r: f"{r.n} cells per ranged parameter, {r.samples:,} configurations",
+)

@@ -26,6 +26,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts, wilson_interval
 from coinflight.probability.streams import (
     BLOCK,
@@ -131,3 +132,30 @@ def estimate(
         elapsed=time.perf_counter() - t0,
         details=details,
     )
+
+
+def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
+    check_work(n, model)
+    return n / model.rate
+
+
+def _summary(result: ProbabilityResult) -> str:
+    cells = result.details.get("grid_cells")
+    extra = f"{result.n:,} tosses" + (f" drawn from {cells} cells (method B)" if cells else "")
+    return extra + f", seed {result.seed}"
+
+
+ESTIMATOR = Estimator(
+    name="monte-carlo",
+    run=estimate,
+    label="method B: random events (x = events)",
+    description="N random tosses (with --grid-cells 100: the paper's method B)",
+    default_n=lambda k: 10**6,
+    size="tosses (default 1000000)",
+    seeded=True,
+    options=("grid_cells", "chunk_size"),
+    color="#D55E00",  # method B (red in the paper)
+    work=_work,
+    series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
+    summary=_summary,
+)

@@ -25,6 +25,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
 from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
 
@@ -140,3 +141,26 @@ def estimate(
             **tally_details(model, counts),
         },
     )
+
+
+def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
+    check_work(n, model=model)
+    return n / rate(model)
+
+
+ESTIMATOR = Estimator(
+    name="qmc",
+    run=estimate,
+    label="scrambled Sobol (x = points)",
+    description="scrambled Sobol points",
+    default_n=lambda k: 1 << 20,
+    size="points, 16 × a power of two (default 1048576)",
+    seeded=True,
+    options=("replicates",),
+    color="#009E73",
+    work=_work,
+    series=tuple(16 << k for k in range(2, 17)),
+    summary=lambda r: (
+        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings, seed {r.seed}"
+    ),
+)
