@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.plotting.style import EXACT_COLOR, METHOD_COLORS, TAILS_COLOR, new_figure
+from coinflight.plotting.style import EXACT_COLOR, TAILS_COLOR, method_color, new_figure
 from coinflight.probability.result import BinomialEstimate
 from coinflight.studies.bias import same_side_probability
 
@@ -54,7 +54,7 @@ def plot_bias(
             ys,
             yerr=errs,
             fmt="o",
-            color=METHOD_COLORS["monte-carlo"],
+            color=method_color("monte-carlo"),
             markersize=4,
             label=f"Monte Carlo, full flight ({n:,} tosses each, ±2 s.e.)",
         )

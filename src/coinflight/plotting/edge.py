@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, METHOD_COLORS, new_figure
+from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, method_color, new_figure
 from coinflight.probability.result import BinomialEstimate
 from coinflight.studies.edge import MODELS, edge_probability, ratio_for
 
@@ -88,7 +88,7 @@ def plot_edge(
             [s.p for _, s in simulated],
             yerr=[2.0 * s.stderr for _, s in simulated],
             fmt="o",
-            color=METHOD_COLORS["monte-carlo"],
+            color=method_color("monte-carlo"),
             markersize=4,
             label=f"simulated landings, dead on a table ({n:,} tosses each, ±2 s.e.)",
         )
