@@ -51,6 +51,9 @@ PIECES_PER_SECOND = 2e6
 _SPINS = ("omega_x", "omega_y", "omega_z")
 _USE_INSTEAD = "use --method grid, monte-carlo or qmc instead"
 
+NAME = "exact"
+"""The method's name (its registry entry, results, messages)."""
+
 
 def _p_same_fixed_spins(
     wx: float, wy: float, wz: float, t: Distribution, i1: float, i3: float
@@ -248,7 +251,7 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         p_tails=1.0 - p_heads,
         p_edge=0.0,
         p_same_side=p_same,
-        method="exact",
+        method=NAME,
         ci95=None,  # a deterministic result: error_estimate bounds it, no 95 % interval
         error_estimate=error,
         elapsed=time.perf_counter() - t0,
@@ -264,11 +267,5 @@ def _summary(result: ProbabilityResult) -> str:
 
 
 ESTIMATOR = Estimator(
-    name="exact",
-    run=estimate,
-    label="exact",
-    description="band integral (Keller 1986)",
-    parallel=False,
-    color="#000000",
-    summary=_summary,
+    NAME, estimate, "exact value", "band integral (Keller 1986)", parallel=False, summary=_summary
 )

@@ -43,6 +43,9 @@ DEFAULT_CONFIGURATIONS = 10**8
 """With k > 2 ranged parameters the default n is the largest with n^k ≤ this."""
 _CHUNK = 1 << 20
 
+NAME = "grid"
+"""The method's name (its registry entry, results, messages)."""
+
 
 def midpoints(n: int) -> np.ndarray:
     """(i + ½)/n for i = 0 … n − 1: centres of n equal cells of [0, 1]."""
@@ -231,7 +234,7 @@ def estimate(
     return from_counts(
         counts,
         dist.start_sign,
-        "grid",
+        NAME,
         n=n,
         samples=total,
         elapsed=time.perf_counter() - t0,
@@ -243,7 +246,7 @@ __all__ = ["check_work", "default_cells", "estimate", "midpoints"]
 
 
 ESTIMATOR = Estimator(
-    name="grid",
+    name=NAME,
     run=estimate,
     label="method A: grid (x = configurations)",
     description="the paper's method A (N cells per ranged parameter)",

@@ -40,6 +40,9 @@ DEFAULT_CHUNK = BLOCK
 """Tosses per task: one block, so that a progress bar moves every ~2²⁰ tosses (~15 ms of
 compute); larger tasks measured no faster (benchmarks/bench_probability.py)."""
 
+NAME = "monte-carlo"
+"""The method's name (its registry entry, results, messages)."""
+
 
 def _task(args: tuple[Any, ...]) -> np.ndarray:
     model, dist, entropy, spawn_key, pool_size, first, last, n, cells = args
@@ -54,7 +57,7 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
 def check_work(n: int, model: OutcomeModel = HAND_CATCH) -> None:
     """ValueError naming the time when ``n`` tosses of ``model`` exceed the run limit
     (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate`` tosses a second)."""
-    check_tosses("monte-carlo", check_count("n", n), model.rate)
+    check_tosses(NAME, check_count("n", n), model.rate)
 
 
 def estimate(
@@ -117,7 +120,7 @@ def estimate(
     counts = np.sum(parts, axis=0)
     heads = int(counts[1])
     p = heads / n
-    method_name = "monte-carlo"
+    method_name = NAME
     details: dict[str, Any] = {"grid_cells": grid_cells, "block": BLOCK, "rng": "SFC64"}
     details.update(tally_details(model, counts))
     return from_counts(
@@ -146,7 +149,7 @@ def _summary(result: ProbabilityResult) -> str:
 
 
 ESTIMATOR = Estimator(
-    name="monte-carlo",
+    name=NAME,
     run=estimate,
     label="method B: random events (x = events)",
     description="N random tosses (with --grid-cells 100: the paper's method B)",
@@ -158,4 +161,5 @@ ESTIMATOR = Estimator(
     work=_work,
     series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
     summary=_summary,
+    sizes_keyword="event_sizes",
 )

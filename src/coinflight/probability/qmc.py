@@ -17,14 +17,8 @@ import numpy as np
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
-from coinflight.probability._runner import (
-    Executor,
-    Progress,
-    check_count,
-    check_tosses,
-    executor_or_threads,
-    run_tasks,
-)
+from coinflight.probability import _runner
+from coinflight.probability._runner import Executor, Progress, check_count
 from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
 from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
@@ -39,6 +33,9 @@ SOBOL_POINTS_PER_SECOND = 2.5e7
 """Scrambled Sobol points a second (SciPy), on top of the outcome model's own time: with the
 hand catch, 2^26 points in 5.2 s on the busy 2-core machine (1.3e7 a second in all)."""
 _CHUNK = 1 << 18
+
+NAME = "qmc"
+"""The method's name (its registry entry, results, messages)."""
 
 
 def _task(args: tuple[Any, ...]) -> np.ndarray:
@@ -84,7 +81,7 @@ def check_work(
         f"SciPy's Sobol sequence has {SOBOL_BITS} bits; use n ≤ {replicates} × 2^{SOBOL_BITS} "
         f"= {replicates << SOBOL_BITS}",
     )
-    check_tosses("qmc", n, rate(model), "use a smaller n (16 × a power of two)")
+    _runner.check_tosses(NAME, n, rate(model), "use a smaller n (16 × a power of two)")
 
 
 def rate(model: OutcomeModel = HAND_CATCH) -> float:
@@ -115,8 +112,8 @@ def estimate(
     points = n // replicates
     root = seed_sequence(seed)
     tasks = [(model, dist, root, r, points) for r in range(replicates)]
-    with executor_or_threads(executor, threads) as ex:
-        parts = run_tasks(ex, _task, tasks, [points] * replicates, progress)
+    with _runner.executor_or_threads(executor, threads) as ex:
+        parts = _runner.run_tasks(ex, _task, tasks, [points] * replicates, progress)
     counts = np.sum(parts, axis=0)
     col = 1
     per = np.array([p[col] / points for p in parts])
@@ -128,7 +125,7 @@ def estimate(
     return from_counts(
         (int(counts[0]), int(counts[1]), int(counts[2])),
         dist.start_sign,
-        "qmc",
+        NAME,
         n=n,
         samples=n,
         stderr=stderr,
@@ -149,7 +146,7 @@ def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> f
 
 
 ESTIMATOR = Estimator(
-    name="qmc",
+    name=NAME,
     run=estimate,
     label="scrambled Sobol (x = points)",
     description="scrambled Sobol points",

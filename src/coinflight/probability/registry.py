@@ -76,6 +76,8 @@ class Estimator:
         empty: the method has no series (exact).
     summary : callable
         ``summary(result)``: how the run was made, one line for the command line.
+    sizes_keyword : str
+        The keyword of its convergence sizes when not ``NAME_sizes``.
     """
 
     name: str
@@ -93,12 +95,14 @@ class Estimator:
     work_units: Callable[[int, int], int] = _tosses
     series: tuple[int, ...] = ()
     summary: Callable[[ProbabilityResult], str] = lambda result: ""
+    sizes_keyword: str = ""
 
     @property
     def series_option(self) -> str:
         """The keyword of :func:`~coinflight.probability.convergence.convergence` for its
-        sizes: ``grid_sizes``, ``event_sizes`` (monte-carlo, the paper's "events"), …"""
-        return "event_sizes" if self.name == "monte-carlo" else f"{self.name}_sizes"
+        sizes: ``sizes_keyword`` if given (monte-carlo: ``event_sizes``, the paper's
+        "events"), else ``NAME_sizes``."""
+        return self.sizes_keyword or f"{self.name.replace('-', '_')}_sizes"
 
     def size_for(self, k: int, n: int | None) -> int | None:
         """``n``, or the default size for k ranged parameters (None for a method without n)."""

@@ -221,12 +221,5 @@ class BinomialEstimate:
         return (self.p - expected) / self.stderr if self.stderr > 0 else 0.0
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-ready: successes, n, p, stderr, ci95 (a list), seed."""
-        return {
-            "successes": self.successes,
-            "n": self.n,
-            "p": self.p,
-            "stderr": self.stderr,
-            "ci95": list(self.ci95),
-            "seed": self.seed,
-        }
+        """JSON-ready: successes, n, seed, p, stderr, ci95 (a list)."""
+        return {**asdict(self), "p": self.p, "stderr": self.stderr, "ci95": list(self.ci95)}

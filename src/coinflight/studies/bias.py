@@ -31,15 +31,8 @@ from coinflight.core import precession
 from coinflight.core.torque_free import normal_alignment
 from coinflight.model.coin import DEFAULT_COIN, Coin
 from coinflight.model.distributions import Normal
+from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
-from coinflight.probability.streams import (
-    SeedLike,
-    check_seed,
-    child,
-    reported_seed,
-    seed_sequence,
-    unit_cube,
-)
 
 if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
@@ -370,7 +363,7 @@ def check_tosses(n: object) -> int:
 def simulate_same_side(
     psi: ArrayLike | QuantileDistribution,
     n: int,
-    seed: SeedLike = None,
+    seed: streams.SeedLike = None,
     *,
     coin: Coin | None = None,
     flight_time: tuple[float, float] = DEFAULT_FLIGHT_TIME,
@@ -411,7 +404,7 @@ def simulate_same_side(
         Same-side tosses (``successes``) of ``n``.
     """
     n = check_tosses(n)
-    check_seed(seed)
+    streams.check_seed(seed)
     for name, rng_, unit in (
         ("flight time range", flight_time, "s"),
         ("precession rate range", precession_rate, "rad/s"),
@@ -433,9 +426,9 @@ def simulate_same_side(
             raise TypeError("psi must be a single angle or a distribution, not an array")
         fixed_psi = float(value)
 
-    root = seed_sequence(seed)
+    root = streams.seed_sequence(seed)
     same = 0
-    for u in unit_cube(root, n, 3 if dist is None else 4):
+    for u in streams.unit_cube(root, n, 3 if dist is None else 4):
         t = flight_time[0] + (flight_time[1] - flight_time[0]) * u[0]
         wp = precession_rate[0] + (precession_rate[1] - precession_rate[0]) * u[1]
         azimuth = 2.0 * np.pi * u[2]
@@ -446,11 +439,11 @@ def simulate_same_side(
         w_perp, wz = precession.spin_on_cone(wp, psi_k, i1, i3)
         wx, wy = w_perp * np.cos(azimuth), w_perp * np.sin(azimuth)
         same += int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0.0))
-    return BinomialEstimate(successes=same, n=n, seed=reported_seed(root))
+    return BinomialEstimate(successes=same, n=n, seed=streams.reported_seed(root))
 
 
 def simulate_same_side_at(
-    angles: ArrayLike, n: int, seed: SeedLike = None, **options: Any
+    angles: ArrayLike, n: int, seed: streams.SeedLike = None, **options: Any
 ) -> list[tuple[float, BinomialEstimate]]:
     """:func:`simulate_same_side` at each fixed angle of ``angles``: (angle, estimate) pairs.
 
@@ -469,11 +462,11 @@ def simulate_same_side_at(
         "use fewer angles or tosses",
         TOSSES_PER_SECOND,
     )
-    root = seed_sequence(seed)
+    root = streams.seed_sequence(seed)
     angle_list = [float(a) for a in np.atleast_1d(np.asarray(angles, dtype=float))]
     out = []
     for i, a in enumerate(angle_list):
-        out.append((a, simulate_same_side(a, count, child(root, i), **options)))
+        out.append((a, simulate_same_side(a, count, streams.child(root, i), **options)))
     return out
 
 

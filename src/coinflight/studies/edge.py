@@ -15,15 +15,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
 from coinflight.core.outcome import EDGE
+from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
-from coinflight.probability.streams import (
-    SeedLike,
-    check_seed,
-    child,
-    reported_seed,
-    seed_sequence,
-    unit_cube,
-)
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
@@ -102,7 +95,7 @@ SIM_DROP = 0.5
 
 
 def simulate_edge(
-    ratios: ArrayLike, n: int, seed: SeedLike = None, *, g: float = 9.81
+    ratios: ArrayLike, n: int, seed: streams.SeedLike = None, *, g: float = 9.81
 ) -> list[tuple[float, BinomialEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
@@ -135,21 +128,21 @@ def simulate_edge(
         "use fewer ratios or tosses",
         BOUNCING_TOSSES_PER_SECOND,
     )
-    check_seed(seed)
+    streams.check_seed(seed)
     surface = Surface("table", drop_height=SIM_DROP, restitution=0.0)
     r = 0.5 * SIM_DIAMETER
-    root = seed_sequence(seed)
+    root = streams.seed_sequence(seed)
     out = []
     for i, ratio in enumerate(x):
         h = float(ratio) * SIM_DIAMETER
         coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # steel
         edges = 0
-        for u in unit_cube(child(root, i), n, 2):
+        for u in streams.unit_cube(streams.child(root, i), n, 2):
             omega = np.zeros((u.shape[1], 3))
             omega[:, 0] = SIM_SPIN[0] + (SIM_SPIN[1] - SIM_SPIN[0]) * u[0]
             speed = SIM_LAUNCH_SPEED[0] + (SIM_LAUNCH_SPEED[1] - SIM_LAUNCH_SPEED[0]) * u[1]
             edges += int(np.sum(land(coin, omega, speed, 1.0, g, surface).face == EDGE))
-        out.append((float(ratio), BinomialEstimate(edges, n, reported_seed(root))))
+        out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
 
 
