@@ -94,11 +94,11 @@ def test_cli_plot_edge_with_simulated_points(tmp_path):
     assert out.is_file() and out.stat().st_size > 10_000
     assert "P(edge) = 1/3 at h/d = 0.3536 (geometric model)" in result.stdout
     assert "P(edge) = 1/3 at h/d = 0.5774 (dynamic model)" in result.stdout
-    (point,) = simulate_edge([0.5774], 2000, 4)
-    assert f"h/d = 0.5774: P(edge) = {point.p_edge:.4f}" in result.stdout
+    ((ratio, point),) = simulate_edge([0.5774], 2000, 4)
+    assert f"h/d = 0.5774: P(edge) = {point.p:.4f}" in result.stdout
     assert "seed 4" in result.stdout
     # Vigorous planar tosses landing dead follow the dynamic model: 1/3 at h/d = 1/√3.
-    assert abs(point.p_edge - 1 / 3) < 4 * point.stderr
+    assert ratio == 0.5774 and abs(point.p - 1 / 3) < 4 * point.stderr
 
 
 @pytest.mark.parametrize(

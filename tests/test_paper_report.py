@@ -10,7 +10,7 @@ from typer.testing import CliRunner
 
 from _images import assert_nontrivial, colour_fraction
 from coinflight.cli import app
-from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR, METHOD_COLORS
+from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR, method_color
 from coinflight.report.document import Document, Table
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES, paper_numbers
 from coinflight.report.reproduce import FIGURES
@@ -136,8 +136,8 @@ def test_figures_show_their_colours(paper_dir):
         assert colour_fraction(rgb, CATCH_COLOR) > 1e-3, stem
     for stem in ("fig2a", "fig2b", "fig3a", "fig3b"):
         rgb = assert_nontrivial(out / f"{stem}.png")
-        assert colour_fraction(rgb, METHOD_COLORS["grid"]) > 1e-3, stem
-        assert colour_fraction(rgb, METHOD_COLORS["monte-carlo"]) > 1e-3, stem
+        assert colour_fraction(rgb, method_color("grid")) > 1e-3, stem
+        assert colour_fraction(rgb, method_color("monte-carlo")) > 1e-3, stem
 
 
 def test_report_table_is_right_against_the_paper_and_coinflight(paper_dir, numbers):

@@ -407,7 +407,7 @@ def test_exact_to_1e9_against_independent_quadrature(name):
 
 def test_monte_carlo_runs_are_prefixes_of_longer_runs():
     """Same seed: the first n tosses of a longer run are the tosses of the run of n."""
-    from coinflight.probability.monte_carlo import DRAW, block_generators, draw_block, seed_sequence
+    from coinflight.probability.streams import DRAW, block_generators, draw_block, seed_sequence
 
     root = seed_sequence(5)
     short = np.concatenate(list(draw_block(block_generators(root, 0, 3), DRAW + 77, 0)), axis=1)

@@ -64,7 +64,7 @@ Seed = Annotated[
         min=0,
         metavar="S",
         rich_help_panel=SIM_PANEL,
-        help="Seed of the --monte-carlo simulation \\[default: 0].",
+        help="Seed of the --monte-carlo simulation (reported; drawn at random if not given).",
     ),
 ]
 
@@ -74,14 +74,15 @@ def simulation_seed(
     seed: int | None,
     *others: tuple[str, object],
     run_flag: str = "--monte-carlo",
-) -> int:
-    """The seed to use (default 0); ValueError if --seed or another simulation option is given
-    without ``run_flag`` (--monte-carlo), which alone runs the simulation they set."""
+) -> int | None:
+    """--seed, passed through (None: the library draws one and reports it); ValueError if --seed
+    or another simulation option is given without ``run_flag``, which alone runs the simulation
+    they set."""
     if monte_carlo is None:
         for flag, value in (("--seed", seed), *others):
             if value is not None:
                 raise ValueError(f"{flag} needs {run_flag} N (it sets the simulation)")
-    return 0 if seed is None else seed
+    return seed
 
 
 PresetName = Annotated[
@@ -155,12 +156,12 @@ def bias(
         payload: dict[str, Any] = {"p_same_side": p, **psi_payload, "source": SOURCE}
         if sim is not None:
             payload["monte_carlo"] = {
-                "p_same_side": sim.p_same_side,
+                "p_same_side": sim.p,
                 "stderr": sim.stderr,
-                "same": sim.same,
+                "same": sim.successes,
                 "n": sim.n,
                 "seed": sim.seed,
-                "z": _z(sim, p),
+                "z": sim.z(p),
                 "flight_time": list(b.DEFAULT_FLIGHT_TIME),
                 "precession_rate": list(b.DEFAULT_PRECESSION_RATE),
                 "coin": the_coin.name,
@@ -172,8 +173,8 @@ def bias(
         t_lo, t_hi = b.DEFAULT_FLIGHT_TIME
         w_lo, w_hi = b.DEFAULT_PRECESSION_RATE
         typer.echo(
-            f"Monte Carlo: {sim.same:,} of {sim.n:,} tosses on the same side = "
-            f"{sim.p_same_side:.6f} ± {sim.stderr:.6f} (s.e.), {_z(sim, p):+.2f} s.e. from the "
+            f"Monte Carlo: {sim.successes:,} of {sim.n:,} tosses on the same side = "
+            f"{sim.p:.6f} ± {sim.stderr:.6f} (s.e.), {sim.z(p):+.2f} s.e. from the "
             f"closed form; seed {sim.seed}"
         )
         typer.echo(
@@ -186,7 +187,7 @@ SOURCE = "Diaconis, Holmes & Montgomery 2007"
 
 
 def _bias_preset(
-    name: str, monte_carlo: int | None, seed: int, coin: Coin, json_output: bool
+    name: str, monte_carlo: int | None, seed: int | None, coin: Coin, json_output: bool
 ) -> None:
     """``coinflight bias --preset NAME``: the closed-form average over the preset's spins, and
     optionally a Monte Carlo run of the full flight through :func:`coinflight.probability.
@@ -243,10 +244,6 @@ def _bias_preset(
         )
 
 
-def _z(sim: Any, p: float) -> float:
-    return (sim.p_same_side - p) / sim.stderr if sim.stderr > 0 else 0.0
-
-
 PSI_POINTS = "45,50,55,60,70,80,90,100,110,120,130,135"
 Measured = Annotated[
     float | None,
@@ -281,7 +278,6 @@ def plot_bias(
 
     Example: coinflight plot bias --out bias.png --monte-carlo 20000 --measured 0.5077
     """
-    from coinflight import _validation as v
     from coinflight.cli.figures import parse_numbers
     from coinflight.plotting.bias import plot_bias
     from coinflight.plotting.style import figure_paths, save_figure
@@ -292,21 +288,7 @@ def plot_bias(
     simulated = []
     if monte_carlo is not None:
         angles = parse_numbers(psi_points or PSI_POINTS, "--psi-points", "60,80,100")
-        b.check_psi(angles, degrees=True)
-        v.work_bound(
-            f"{len(angles)} angles × {b.check_tosses(monte_carlo)} tosses",
-            len(angles) * monte_carlo,
-            b.TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
-            "tosses",
-            "use fewer --psi-points or a smaller --monte-carlo",
-            b.TOSSES_PER_SECOND,
-        )
-        # One seed per point, spawned from --seed, so the points are independent.
-        seeds = [int(s.generate_state(1)[0]) for s in _spawn(seed, len(angles))]
-        simulated = [
-            (a, b.simulate_same_side(a, monte_carlo, s, degrees=True))
-            for a, s in zip(angles, seeds, strict=True)
-        ]
+        simulated = b.simulate_same_side_at(angles, monte_carlo, seed, degrees=True)
     psi_measured = None
     if measured is not None:
         psi_measured = float(b.psi_for_probability(measured, degrees=True))
@@ -315,10 +297,4 @@ def plot_bias(
     if measured is not None and psi_measured is not None:
         typer.echo(f"measured P(same side) = {measured:g} needs a fixed ψ = {psi_measured:.2f}°")
     if simulated:
-        typer.echo(f"Monte Carlo: {monte_carlo:,} tosses per point, seed {seed}")
-
-
-def _spawn(seed: int, n: int) -> list[Any]:
-    import numpy as np
-
-    return list(np.random.SeedSequence(seed).spawn(n))
+        typer.echo(f"Monte Carlo: {monte_carlo:,} tosses per point, seed {simulated[0][1].seed}")

@@ -31,6 +31,7 @@ from coinflight.cli.probability import (
     build_distribution,
 )
 from coinflight.cli.progress import Quiet, progress_bar
+from coinflight.probability import registry
 
 
 def output_prefix(text: str) -> Path:
@@ -61,8 +62,9 @@ Methods = Annotated[
         "--methods",
         metavar="LIST",
         rich_help_panel=METHOD_PANEL,
-        help="Comma-separated: grid (method A), monte-carlo (method B with --grid-cells 100, "
-        "the default), qmc.",
+        help="Comma-separated, of "
+        + ", ".join(registry.names(series=True))
+        + " (grid: method A; monte-carlo: method B with --grid-cells 100, the default).",
     ),
 ]
 Cells = Annotated[
@@ -169,9 +171,10 @@ def convergence(
     ):
         if text is not None and needed not in method_list:
             raise ValueError(f"{option} applies to --methods {needed}, not given in {methods!r}")
-    if not {"monte-carlo", "qmc"} & set(method_list):
+    if not set(registry.names(seeded=True)) & set(method_list):
         if seed is not None:
-            raise ValueError(f"--seed applies to monte-carlo and qmc, not to {methods!r}")
+            seeded = " and ".join(registry.names(seeded=True))
+            raise ValueError(f"--seed applies to {seeded}, not to {methods!r}")
         if grid_cells_given:
             raise ValueError(f"--grid-cells applies to --methods monte-carlo, not {methods!r}")
     if grid_cells < 0:

@@ -32,7 +32,7 @@ Seed = Annotated[
         min=0,
         metavar="S",
         rich_help_panel=SIM_PANEL,
-        help="Seed of the --simulate tosses \\[default: 0].",
+        help="Seed of the --simulate tosses (reported; drawn at random if not given).",
     ),
 ]
 Ratios = Annotated[
@@ -83,11 +83,11 @@ def plot_edge(
     for model in MODELS:
         typer.echo(f"P(edge) = 1/3 at h/d = {ratio_for(1 / 3, model):.4f} ({model} model)")
     if simulated:
-        typer.echo(f"simulated, {simulate:,} tosses per ratio, seed {the_seed}:")
-        for s in simulated:
+        typer.echo(f"simulated, {simulate:,} tosses per ratio, seed {simulated[0][1].seed}:")
+        for ratio, s in simulated:
             typer.echo(
-                f"  h/d = {s.ratio:g}: P(edge) = {s.p_edge:.4f} ± {s.stderr:.4f} (s.e.), "
-                f"{s.edges:,} of {s.n:,}"
+                f"  h/d = {ratio:g}: P(edge) = {s.p:.4f} ± {s.stderr:.4f} (s.e.), "
+                f"{s.successes:,} of {s.n:,}"
             )
 
 

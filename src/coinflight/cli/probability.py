@@ -31,6 +31,7 @@ from coinflight.cli.surface import (
     surface_payload,
 )
 from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
+from coinflight.probability import registry
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
@@ -64,11 +65,9 @@ Method = Annotated[
     typer.Option(
         "--method",
         "-m",
-        metavar="exact|grid|monte-carlo|qmc",
+        metavar="|".join(registry.names()),
         rich_help_panel=METHOD_PANEL,
-        help="exact: band integral; grid: the paper's method A (N cells per ranged parameter); "
-        "monte-carlo: N random tosses (with --grid-cells 100: the paper's method B); "
-        "qmc: scrambled Sobol points.",
+        help="; ".join(f"{e.name}: {e.description}" for e in registry.estimators()) + ".",
     ),
 ]
 Size = Annotated[
@@ -78,10 +77,9 @@ Size = Annotated[
         "-n",
         metavar="N",
         rich_help_panel=METHOD_PANEL,
-        help="grid: cells per ranged parameter (default 5000 with up to 2 ranged parameters, "
-        "else the largest N with N^k ≤ 10^8); monte-carlo: tosses (default "
-        "1000000); qmc: points, 16 × a power of two (default 1048576). Sizes beyond about a "
-        "minute's work (grid) or an hour's (monte-carlo, qmc) are refused with the estimate.",
+        help="; ".join(f"{e.name}: {e.size}" for e in registry.estimators() if e.size)
+        + ". Sizes beyond about a minute's work (grid) or an hour's (monte-carlo, qmc) are "
+        "refused with the estimate.",
     ),
 ]
 Seed = Annotated[
@@ -90,7 +88,8 @@ Seed = Annotated[
         "--seed",
         metavar="S",
         rich_help_panel=METHOD_PANEL,
-        help="Seed for monte-carlo and qmc (reported; drawn at random if not given).",
+        help=f"Seed for {' and '.join(registry.names(seeded=True))} (reported; drawn at random "
+        "if not given).",
     ),
 ]
 GridCells = Annotated[
@@ -145,13 +144,8 @@ def build_distribution(
 
 def work_total(method: str, n: int | None, k: int) -> int:
     """Units of work the library reports through ``progress`` for this request."""
-    if method == "grid":
-        from coinflight.probability.grid import default_cells
-
-        return (n or default_cells(k)) ** k
-    if method == "monte-carlo":
-        return n or 10**6
-    return n or (1 << 20)
+    estimator = registry.get(method)
+    return estimator.work_units(k, estimator.size_for(k, n) or 1)
 
 
 def probability(
@@ -187,10 +181,9 @@ def probability(
     Example (the paper's Fig 2a): coinflight probability --omega-x 60:90 --flight-time 0.6:0.9
     --method grid --n 5000
     """
-    from coinflight.probability import METHODS, estimate
+    from coinflight.probability import estimate
 
-    if method not in METHODS:
-        raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    estimator = registry.get(method)
     the_coin = resolve_coin(coin, radius, thickness, mass)
     if preset is not None:
         dist = preset_distribution(ctx, preset, the_coin, start, g)
@@ -200,21 +193,23 @@ def probability(
         )
     options: dict[str, Any] = {}
     if grid_cells is not None:
-        if method != "monte-carlo":
-            raise ValueError("--grid-cells applies to --method monte-carlo only")
+        if "grid_cells" not in estimator.options:
+            takers = [e.name for e in registry.estimators() if "grid_cells" in e.options]
+            raise ValueError(f"--grid-cells applies to --method {' and '.join(takers)} only")
         options["grid_cells"] = grid_cells
-    if seed is not None and method not in ("monte-carlo", "qmc"):
-        raise ValueError(f"--seed applies to monte-carlo and qmc, not {method}")
-    if threads is not None and method == "exact":
-        raise ValueError("--threads does not apply to the exact method")
+    if seed is not None and not estimator.seeded:
+        seeded = " and ".join(registry.names(seeded=True))
+        raise ValueError(f"--seed applies to {seeded}, not {method}")
+    if threads is not None and not estimator.parallel:
+        raise ValueError(f"--threads does not apply to the {method} method")
     landing = outcome_model(surface, drop_height, restitution, friction, drag, spin_damping)
-    if landing is not None and landing.drag is not None and method != "exact" and n is None:
+    if landing is not None and landing.drag is not None and estimator.default_n and n is None:
         raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
     if landing is not None:
         options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
     with progress_bar(total, f"{method}", quiet) as bar:
-        if method != "exact":
+        if estimator.parallel:
             options.update(threads=threads, progress=bar)
         result = estimate(dist, method, n=n, seed=seed, **options)
     if json_output:
@@ -295,17 +290,5 @@ def _method_line(result: object) -> str:
     from coinflight.probability import ProbabilityResult
 
     assert isinstance(result, ProbabilityResult)
-    d = result.details
-    if result.method == "exact":
-        extra = f"{d['how']}"
-        if "warning" in d:
-            extra += f"; quadrature warning: {d['warning']}"
-    elif result.method == "grid":
-        extra = f"{result.n} cells per ranged parameter, {result.samples:,} configurations"
-    elif result.method == "monte-carlo":
-        b = d.get("grid_cells")
-        extra = f"{result.n:,} tosses" + (f" drawn from {b} cells (method B)" if b else "")
-        extra += f", seed {result.seed}"
-    else:
-        extra = f"{result.n:,} Sobol points in {d['replicates']} scramblings, seed {result.seed}"
+    extra = registry.get(result.method).summary(result)
     return f"method {result.method}: {extra}; {result.elapsed:.3g} s"

@@ -170,15 +170,6 @@ def drag_dict(drag: Drag | None) -> dict[str, float] | None:
     }
 
 
-def __getattr__(name: str) -> Any:
-    # The hand catch moved to coinflight.outcomes.hand; the old import path keeps working.
-    if name in ("HandCatch", "HAND_CATCH"):
-        from coinflight.outcomes import hand
-
-        return getattr(hand, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
 __all__ = [
     "Counts",
     "OutcomeModel",

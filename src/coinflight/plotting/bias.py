@@ -7,15 +7,16 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.plotting.style import EXACT_COLOR, METHOD_COLORS, TAILS_COLOR, new_figure
-from coinflight.studies.bias import SameSideEstimate, same_side_probability
+from coinflight.plotting.style import EXACT_COLOR, TAILS_COLOR, method_color, new_figure
+from coinflight.probability.result import BinomialEstimate
+from coinflight.studies.bias import same_side_probability
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
 def plot_bias(
-    simulated: Sequence[tuple[float, SameSideEstimate]] = (),
+    simulated: Sequence[tuple[float, BinomialEstimate]] = (),
     measured: float | None = None,
     psi_measured: float | None = None,
 ) -> Figure:
@@ -23,7 +24,7 @@ def plot_bias(
 
     Parameters
     ----------
-    simulated : sequence of (ψ in degrees, SameSideEstimate)
+    simulated : sequence of (ψ in degrees, BinomialEstimate)
         Monte Carlo estimates drawn as points with ±2 standard-error bars.
     measured : float, optional
         A measured same-side rate (e.g. Bartoš et al.'s 0.508) drawn as a horizontal line.
@@ -45,7 +46,7 @@ def plot_bias(
     )
     if simulated:
         xs = [s[0] for s in simulated]
-        ys = [s[1].p_same_side for s in simulated]
+        ys = [s[1].p for s in simulated]
         errs = [2.0 * s[1].stderr for s in simulated]
         n = simulated[0][1].n
         ax.errorbar(
@@ -53,7 +54,7 @@ def plot_bias(
             ys,
             yerr=errs,
             fmt="o",
-            color=METHOD_COLORS["monte-carlo"],
+            color=method_color("monte-carlo"),
             markersize=4,
             label=f"Monte Carlo, full flight ({n:,} tosses each, ±2 s.e.)",
         )

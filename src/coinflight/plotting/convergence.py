@@ -4,18 +4,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from coinflight.plotting.style import EXACT_COLOR, METHOD_COLORS, new_figure
+from coinflight.plotting.style import EXACT_COLOR, new_figure
+from coinflight.probability import registry
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from coinflight.probability.convergence import Convergence
-
-LABELS = {
-    "grid": "method A: grid (x = configurations)",
-    "monte-carlo": "method B: random events (x = events)",
-    "qmc": "scrambled Sobol (x = points)",
-}
 
 
 def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
@@ -31,13 +26,23 @@ def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
         pts = result.series(method)
         x = [p.samples for p in pts]
         y = [p.p_heads for p in pts]
-        label = LABELS[method]
-        if method == "monte-carlo" and result.grid_cells:
+        estimator = registry.get(method)
+        label = estimator.label
+        if "grid_cells" in estimator.options and result.grid_cells:
             label = f"method B: random events from {result.grid_cells} cells (x = events)"
-        elif method == "monte-carlo":
+        elif "grid_cells" in estimator.options:
             label = "Monte Carlo (x = events)"
-        color = METHOD_COLORS[method]
-        ax.plot(x, y, "o-", color=color, label=label, markersize=4, linewidth=1.2)
+        color = estimator.color
+        ax.plot(
+            x,
+            y,
+            "-",
+            marker=estimator.marker,
+            color=color,
+            label=label,
+            markersize=4,
+            linewidth=1.2,
+        )
         lows = [p.ci95[0] if p.ci95 else p.p_heads for p in pts]
         highs = [p.ci95[1] if p.ci95 else p.p_heads for p in pts]
         if any(p.ci95 for p in pts):
@@ -53,7 +58,7 @@ def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     if result.coarse_limit is not None:
         ax.axhline(
             result.coarse_limit,
-            color=METHOD_COLORS["monte-carlo"],
+            color=registry.get("monte-carlo").color,
             linestyle="--",
             linewidth=1,
             label=f"method B's limit: {result.grid_cells}-cell grid {result.coarse_limit:.4f}",

@@ -8,8 +8,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, METHOD_COLORS, new_figure
-from coinflight.studies.edge import MODELS, EdgeSimulation, edge_probability, ratio_for
+from coinflight.plotting.style import EDGE_COLOR, EXACT_COLOR, method_color, new_figure
+from coinflight.probability.result import BinomialEstimate
+from coinflight.studies.edge import MODELS, edge_probability, ratio_for
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -29,12 +30,14 @@ EXACT_RATIOS = {
 """Yong & Mahadevan's printed ratios for P(edge) = 1/3 (REFERENCES §5), for the labels."""
 
 
-def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) -> Figure:
+def plot_edge(
+    simulated: Sequence[tuple[float, BinomialEstimate]] = (), max_ratio: float = 1.0
+) -> Figure:
     """P(edge) against h/d for Yong & Mahadevan's two models, the ratios for 1/3 marked.
 
     Parameters
     ----------
-    simulated : sequence of EdgeSimulation
+    simulated : sequence of (h/d, BinomialEstimate)
         Simulated landings (:func:`coinflight.studies.edge.simulate_edge`), drawn as points with
         ±2 standard-error bars.
     max_ratio : float
@@ -79,14 +82,15 @@ def plot_edge(simulated: Sequence[EdgeSimulation] = (), max_ratio: float = 1.0) 
             fontsize="small",
         )
     if simulated:
+        n = simulated[0][1].n
         ax.errorbar(
-            [s.ratio for s in simulated],
-            [s.p_edge for s in simulated],
-            yerr=[2.0 * s.stderr for s in simulated],
+            [ratio for ratio, _ in simulated],
+            [s.p for _, s in simulated],
+            yerr=[2.0 * s.stderr for _, s in simulated],
             fmt="o",
-            color=METHOD_COLORS["monte-carlo"],
+            color=method_color("monte-carlo"),
             markersize=4,
-            label=f"simulated landings, dead on a table ({simulated[0].n:,} tosses each, ±2 s.e.)",
+            label=f"simulated landings, dead on a table ({n:,} tosses each, ±2 s.e.)",
         )
     ax.set_xlim(0.0, 1.03 * max_ratio)  # room for a point at max_ratio
     ax.set_ylim(0.0, float(edge_probability(max_ratio, "geometric")) * 1.05)

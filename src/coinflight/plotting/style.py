@@ -19,12 +19,15 @@ EDGE_COLOR = "#009E73"  # bluish green
 LAUNCH_COLOR = "#D55E00"  # vermillion: the coin at launch ("red" in the paper's figures)
 CATCH_COLOR = "#0072B2"  # blue: the coin at catch (as in the paper)
 EXACT_COLOR = "#000000"
-METHOD_COLORS = {
-    "grid": "#0072B2",  # method A (blue in the paper)
-    "monte-carlo": "#D55E00",  # method B (red in the paper)
-    "qmc": "#009E73",
-    "exact": "#000000",
-}
+
+
+def method_color(method: str) -> str:
+    """The colour of an estimator (its entry in :mod:`coinflight.probability.registry`)."""
+    from coinflight.probability import registry
+
+    return registry.get(method).color
+
+
 FIGSIZE = (6.4, 4.8)
 
 

@@ -6,7 +6,7 @@
 >>> round(estimate(d, "exact").p_heads, 6)
 0.497471
 
-Methods (one module each):
+Methods (one module each, declared once in :mod:`coinflight.probability.registry`):
 
 ``exact``
     Integrates the measure of the heads bands (Keller 1986; REFERENCES §3).
@@ -27,12 +27,12 @@ from typing import Any
 
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HAND_CATCH, HandCatch, OutcomeModel
-from coinflight.probability._runner import check_count, check_runner
+from coinflight.outcomes.base import OutcomeModel
+from coinflight.outcomes.hand import HAND_CATCH, HandCatch
+from coinflight.probability import registry
 from coinflight.probability.result import ProbabilityResult, wilson_interval
 from coinflight.probability.sweep import ProbabilityResults, estimate_many
 
-METHODS = ("exact", "grid", "monte-carlo", "qmc")
 PAPER_B_CELLS = 100
 """Cells per parameter of the paper's method B (Stefan & Cheche §3)."""
 
@@ -55,13 +55,16 @@ def estimate(
     ----------
     dist : TossDistribution
         The tosses.
-    method : {"exact", "grid", "monte-carlo", "qmc"}
+    method : str
+        A name of :func:`coinflight.probability.registry.names` (built in: exact, grid,
+        monte-carlo, qmc).
     n : int
         Size: cells per ranged parameter (grid, default 5000 for up to two ranged parameters,
         else the largest n with n^k ≤ 10⁸), tosses (monte-carlo, default
         10⁶), points (qmc, default 2²⁰). Not used by exact.
-    seed : int, optional
-        For monte-carlo and qmc; reported in the result. A TypeError for exact and grid.
+    seed : int or SeedSequence, optional
+        For the seeded methods (monte-carlo, qmc); None draws a fresh one from the OS, and the
+        result reports it either way. A TypeError for exact and grid.
     model : OutcomeModel
         How a toss ends (default: caught in the hand).
     executor : object with ``map``, optional
@@ -74,55 +77,23 @@ def estimate(
         ``grid_cells`` (monte-carlo), ``replicates`` (qmc), ``chunk_size`` (monte-carlo).
     """
     v.instance("dist", dist, TossDistribution, "a TossDistribution")
-    v.instance("method", method, str, f"a string, one of {', '.join(METHODS)}")
-    if method not in METHODS:
-        raise ValueError(f"unknown method {method!r}; choose one of {', '.join(METHODS)}")
+    estimator = registry.get(method)
     v.instance("model", model, OutcomeModel, "an OutcomeModel (HandCatch, TableLanding)")
-    if n is not None:
-        check_count("n", n)
-    if method in ("exact", "grid") and seed is not None:
-        raise TypeError(f"method {method!r} takes no seed (it is deterministic); got seed={seed}")
-    if method == "exact":
-        if n is not None:
-            raise ValueError("the exact method takes no n")
-        given = {"executor": executor, "threads": threads, "progress": progress}
-        _no_options(method, {k: v for k, v in given.items() if v is not None})
-        _no_options(method, options)
-        from coinflight.probability import exact
-
-        return exact.estimate(dist, model=model)
-    check_runner(executor, threads, progress)
-    common: dict[str, Any] = {
-        "model": model,
-        "executor": executor,
-        "threads": threads,
-        "progress": progress,
-    }
-    if method == "grid":
-        _no_options(method, options)
-        from coinflight.probability import grid
-
-        return grid.estimate(
-            dist, grid.default_cells(len(dist.ranged)) if n is None else n, **common
-        )
-    if method == "monte-carlo":
-        _no_options(method, options, ("grid_cells", "chunk_size"))
-        from coinflight.probability import monte_carlo
-
-        return monte_carlo.estimate(dist, 10**6 if n is None else n, seed, **common, **options)
-    _no_options(method, options, ("replicates",))
-    from coinflight.probability import qmc
-
-    return qmc.estimate(dist, 1 << 20 if n is None else n, seed, **common, **options)
-
-
-def _no_options(method: str, options: dict[str, Any], allowed: tuple[str, ...] = ()) -> None:
-    extra = [k for k in options if k not in allowed]
-    if extra:
-        raise TypeError(f"method {method!r} takes no option {', '.join(extra)}")
+    return estimator(
+        dist,
+        n,
+        seed,
+        model=model,
+        executor=executor,
+        threads=threads,
+        progress=progress,
+        **options,
+    )
 
 
 def __getattr__(name: str) -> Any:
+    if name == "METHODS":  # read at each use, so that registered estimators appear
+        return registry.names()
     if name == "convergence":
         from coinflight.probability.convergence import convergence
 

@@ -19,13 +19,13 @@ from typing import Any
 from coinflight import _validation as v
 from coinflight._files import write_text
 from coinflight.model.ensemble import TossDistribution
+from coinflight.probability import registry
 from coinflight.probability._runner import Executor, Progress, check_count
+from coinflight.probability.streams import SeedLike, reported_seed, seed_sequence
 
-DEFAULT_GRID_SIZES = (5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
-"""Cells per parameter for method A, up to the paper's 5000."""
-DEFAULT_EVENT_SIZES = (100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7)
-DEFAULT_QMC_SIZES = tuple(16 << k for k in range(2, 17))
 DEFAULT_METHODS = ("grid", "monte-carlo")
+"""The paper's methods A and B. Each method's default sizes are its registry entry's
+``series`` (:mod:`coinflight.probability.registry`)."""
 COLUMNS = ("method", "n", "samples", "p_heads", "stderr", "ci95_low", "ci95_high")
 
 
@@ -115,66 +115,62 @@ def convergence(
     dist: TossDistribution,
     methods: Sequence[str] = DEFAULT_METHODS,
     *,
-    grid_sizes: Sequence[int] | None = None,
-    event_sizes: Sequence[int] | None = None,
-    qmc_sizes: Sequence[int] | None = None,
-    seed: int | None = None,
+    seed: SeedLike = None,
     grid_cells: int | None = 100,
     executor: Executor | None = None,
     threads: int | None = None,
     progress: Progress | None = None,
+    **sizes: Sequence[int] | None,
 ) -> Convergence:
     """Estimates of P(heads) for growing sizes, per method, and the exact value.
 
     Parameters
     ----------
-    methods : sequence of {"grid", "monte-carlo", "qmc"}
-        ``grid`` is method A; ``monte-carlo`` with ``grid_cells=100`` is method B (None: plain
-        Monte Carlo).
-    grid_sizes, event_sizes, qmc_sizes : sequence of int, optional
-        Cells per parameter (grid), events (monte-carlo), points (qmc: 16 × powers of two);
-        default :data:`DEFAULT_GRID_SIZES` etc. Sizes for a method not in ``methods`` are a
-        TypeError (they would be ignored).
+    methods : sequence of str
+        Methods with a series in :mod:`coinflight.probability.registry` (built in: grid,
+        monte-carlo, qmc). ``grid`` is method A; ``monte-carlo`` with ``grid_cells=100`` is
+        method B (None: plain Monte Carlo).
     seed : int, optional
-        One seed for all random series. Monte Carlo runs of growing size share their first
-        tosses (see :mod:`coinflight.probability.monte_carlo`), so the series is a running
-        estimate. A TypeError when no random method (monte-carlo, qmc) is asked for; the
+        One seed for all random series (None: a fresh one, reported). Monte Carlo runs of
+        growing size share their first tosses (:mod:`coinflight.probability.streams`), so the
+        series is a running estimate. A TypeError when no seeded method is asked for; the
         result's seed is then None.
+    grid_cells : int, optional
+        Passed to the methods that take it (monte-carlo: method B's cells per parameter).
+    **sizes : sequence of int
+        Per method, its sizes under its ``series_option``: ``grid_sizes`` (cells per
+        parameter), ``event_sizes`` (monte-carlo events), ``qmc_sizes`` (points: 16 × powers
+        of two), ``NAME_sizes`` for a registered NAME; default the entry's ``series``. Sizes
+        for a method not in ``methods`` are a TypeError (they would be ignored).
     """
     from coinflight.probability import estimate
-    from coinflight.probability.monte_carlo import reported_seed, seed_sequence
 
-    allowed = ("grid", "monte-carlo", "qmc")
-    for m in methods:
-        if m not in allowed:
-            raise ValueError(
-                f"unknown method {m!r} for convergence; choose from {', '.join(allowed)}"
-            )
-    if not methods:
+    with_series = registry.names(series=True)
+    chosen = [registry.get(m, with_series, " for convergence") for m in methods]
+    if not chosen:
         raise ValueError("give at least one method")
-    given = {"grid": grid_sizes, "monte-carlo": event_sizes, "qmc": qmc_sizes}
-    names = {"grid": "grid_sizes", "monte-carlo": "event_sizes", "qmc": "qmc_sizes"}
-    for m, value in given.items():
-        if value is not None and m not in methods:
-            raise TypeError(f"{names[m]} given but {m!r} is not among the methods")
-    defaults: dict[str, Sequence[int]] = {
-        "grid": DEFAULT_GRID_SIZES,
-        "monte-carlo": DEFAULT_EVENT_SIZES,
-        "qmc": DEFAULT_QMC_SIZES,
-    }
-    sizes = {m: defaults[m] if value is None else value for m, value in given.items()}
-    random_methods = [m for m in methods if m in ("monte-carlo", "qmc")]
+    by_option = {e.series_option: e for e in registry.estimators() if e.series}
+    for option, value in sizes.items():
+        if option not in by_option:
+            raise TypeError(
+                f"convergence() got an unexpected keyword argument {option!r}; sizes are "
+                f"{', '.join(by_option)}"
+            )
+        if value is not None and by_option[option] not in chosen:
+            raise TypeError(
+                f"{option} given but {by_option[option].name!r} is not among the methods"
+            )
+    series = {e.name: sizes.get(e.series_option) or e.series for e in chosen}
+    for e in chosen:
+        if sizes.get(e.series_option) is not None and not sizes[e.series_option]:
+            raise ValueError(f"no sizes given for {e.name}")
     the_seed: int | None = None
-    if random_methods:
+    if any(e.seeded for e in chosen):
         the_seed = reported_seed(seed_sequence(seed))
     elif seed is not None:
-        raise TypeError(f"seed given but no random method (monte-carlo, qmc) among {methods}")
-    for m in methods:
-        if not sizes[m]:
-            raise ValueError(f"no sizes given for {m}")
-        for s in sizes[m]:
-            check_count(f"{m} size", s)
-    check_work(dist, methods, sizes)
+        seeded = ", ".join(registry.names(seeded=True))
+        raise TypeError(f"seed given but no random method ({seeded}) among {methods}")
+    check_work(dist, [e.name for e in chosen], series)
     try:
         ex = estimate(dist, "exact")
         exact, how = ex.p_heads, str(ex.details["how"])
@@ -182,17 +178,20 @@ def convergence(
         exact, how = None, None
     common: dict[str, Any] = {"executor": executor, "threads": threads, "progress": progress}
     points = []
-    for m in methods:
-        for s in sorted(sizes[m]):
-            if m == "grid":
-                r = estimate(dist, "grid", n=s, **common)
-            elif m == "monte-carlo":
-                r = estimate(dist, m, n=s, seed=the_seed, grid_cells=grid_cells, **common)
-            else:
-                r = estimate(dist, m, n=s, seed=the_seed, **common)
-            points.append(ConvergencePoint(m, s, int(r.samples or s), r.p_heads, r.stderr, r.ci95))
+    takes_cells = [e for e in chosen if "grid_cells" in e.options]
+    for e in chosen:
+        options = dict(common)
+        if e.seeded:
+            options["seed"] = the_seed
+        if e in takes_cells:
+            options["grid_cells"] = grid_cells
+        for s in sorted(series[e.name]):
+            r = estimate(dist, e.name, n=s, **options)
+            points.append(
+                ConvergencePoint(e.name, s, int(r.samples or s), r.p_heads, r.stderr, r.ci95)
+            )
     coarse = None
-    if "monte-carlo" in methods and grid_cells:
+    if takes_cells and grid_cells:  # method B converges to the exact count of its coarse grid
         coarse = estimate(dist, "grid", n=grid_cells, executor=executor, threads=threads).p_heads
     return Convergence(
         coarse_limit=coarse,
@@ -200,7 +199,7 @@ def convergence(
         exact=exact,
         exact_how=how,
         seed=the_seed,
-        grid_cells=grid_cells if "monte-carlo" in methods else None,
+        grid_cells=grid_cells if takes_cells else None,
         description=dist.describe(),
         parameters={name: d.describe() for name, d in dist.parameters.items()},
     )
@@ -211,21 +210,15 @@ def check_work(
 ) -> None:
     """Refuse, before computing anything, a size no single estimate accepts or a series whose
     sizes add up to more than :data:`coinflight._validation.MAX_RUN_SECONDS` of work."""
-    from coinflight.outcomes.base import HAND_CATCH
-    from coinflight.probability import grid, monte_carlo, qmc
+    from coinflight.outcomes.hand import HAND_CATCH
 
     seconds = 0.0
     for m in methods:
+        e = registry.get(m)
         for s in sizes[m]:
             check_count(f"{m} size", s)
-            if m == "grid":
-                seconds += grid.check_work(dist, s)
-            elif m == "monte-carlo":
-                monte_carlo.check_work(s)
-                seconds += s / HAND_CATCH.rate
-            else:
-                qmc.check_work(s)
-                seconds += s / qmc.rate()
+            if e.work is not None:
+                seconds += e.work(dist, s, HAND_CATCH)
     v.work_bound(
         f"the convergence series ({', '.join(methods)})",
         seconds,
@@ -239,10 +232,21 @@ def work_total(dist: TossDistribution, methods: Sequence[str], **sizes: Sequence
     """Work units :func:`convergence` reports through ``progress`` (for progress bars)."""
     k = len(dist.ranged)
     total = 0
-    if "grid" in methods:
-        total += sum(s**k for s in sizes.get("grid_sizes", DEFAULT_GRID_SIZES))
-    if "monte-carlo" in methods:
-        total += sum(sizes.get("event_sizes", DEFAULT_EVENT_SIZES))
-    if "qmc" in methods:
-        total += sum(sizes.get("qmc_sizes", DEFAULT_QMC_SIZES))
+    for m in methods:
+        e = registry.get(m)
+        total += sum(e.work_units(k, s) for s in sizes.get(e.series_option, e.series))
     return total
+
+
+_SERIES_CONSTANTS = {
+    "DEFAULT_GRID_SIZES": "grid",
+    "DEFAULT_EVENT_SIZES": "monte-carlo",
+    "DEFAULT_QMC_SIZES": "qmc",
+}
+
+
+def __getattr__(name: str) -> Any:
+    """The former constants of the default sizes, now each estimator's ``series``."""
+    if name in _SERIES_CONSTANTS:
+        return registry.get(_SERIES_CONSTANTS[name]).series
+    raise AttributeError(name)

@@ -20,7 +20,8 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
+from coinflight.outcomes.base import OutcomeModel, tally_details
+from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -28,6 +29,7 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
 
 MAX_WORK = 8 * 10**8
@@ -41,6 +43,9 @@ DEFAULT_CELLS = 5000
 DEFAULT_CONFIGURATIONS = 10**8
 """With k > 2 ranged parameters the default n is the largest with n^k ≤ this."""
 _CHUNK = 1 << 20
+
+NAME = "grid"
+"""The method's name (its registry entry, results, messages)."""
 
 
 def midpoints(n: int) -> np.ndarray:
@@ -230,7 +235,7 @@ def estimate(
     return from_counts(
         counts,
         dist.start_sign,
-        "grid",
+        NAME,
         n=n,
         samples=total,
         elapsed=time.perf_counter() - t0,
@@ -239,3 +244,19 @@ def estimate(
 
 
 __all__ = ["check_work", "default_cells", "estimate", "midpoints"]
+
+
+ESTIMATOR = Estimator(
+    name=NAME,
+    run=estimate,
+    label="method A: grid (x = configurations)",
+    description="the paper's method A (N cells per ranged parameter)",
+    default_n=default_cells,
+    size="cells per ranged parameter (default 5000 with up to 2 ranged parameters, else the "
+    "largest N with N^k ≤ 10^8)",
+    color="#0072B2",  # method A (blue in the paper)
+    work=check_work,
+    work_units=lambda k, n: n**k,
+    series=(5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000),  # up to the paper's 5000
+    summary=lambda r: f"{r.n} cells per ranged parameter, {r.samples:,} configurations",
+)

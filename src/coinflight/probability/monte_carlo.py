@@ -1,11 +1,10 @@
 """Monte Carlo: plain (continuous draws) and the paper's method B (draws from a coarse grid).
 
-Reproducibility: the tosses are cut into blocks of :data:`BLOCK`; block b draws from its own
-NumPy generator (SFC64) per ranged parameter r, seeded by the seed's ``SeedSequence`` child
-``spawn_key + (b, r)`` (what two levels of ``SeedSequence.spawn`` would give); toss j of the
-block takes the j-th uniform of each stream. Tasks group whole blocks, so the estimate is the
-same for every chunk size, thread count and executor, and a run of n tosses is the first n
-tosses of any longer run with the same seed. Parameter-major draws also give the compiled
+Reproducibility: the tosses come from :mod:`coinflight.probability.streams` (blocks of
+:data:`~coinflight.probability.streams.BLOCK` tosses, one SFC64 stream per block and ranged
+parameter). Tasks group whole blocks, so the estimate is the same for every chunk size, thread
+count and executor, and a run of n tosses is the first n tosses of any longer run with the same
+seed. Parameter-major draws also give the compiled
 kernels contiguous rows, which they need to vectorise.
 """
 
@@ -13,14 +12,13 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
+from coinflight.outcomes.base import OutcomeModel, tally_details
+from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -29,68 +27,22 @@ from coinflight.probability._runner import (
     executor_or_threads,
     run_tasks,
 )
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts, wilson_interval
+from coinflight.probability.streams import (
+    BLOCK,
+    SeedLike,
+    reported_seed,
+    seed_sequence,
+    unit_cube,
+)
 
-BLOCK = 1 << 20
-"""Tosses per random stream. Part of the reproducibility contract: do not change lightly."""
-DRAW = 1 << 16
-"""Tosses drawn at a time from a stream (memory only: the tosses do not depend on it)."""
 DEFAULT_CHUNK = BLOCK
 """Tosses per task: one block, so that a progress bar moves every ~2²⁰ tosses (~15 ms of
 compute); larger tasks measured no faster (benchmarks/bench_probability.py)."""
 
-
-def seed_sequence(seed: int | np.random.SeedSequence | None) -> np.random.SeedSequence:
-    """The root ``SeedSequence`` (fresh OS entropy when ``seed`` is None)."""
-    if isinstance(seed, np.random.SeedSequence):
-        return seed
-    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, int | np.integer)):
-        raise TypeError(f"seed must be a non-negative integer, got {seed!r}")
-    if seed is not None and seed < 0:
-        raise ValueError(f"seed must be a non-negative integer, got {seed}")
-    return np.random.SeedSequence(None if seed is None else int(seed))
-
-
-def reported_seed(root: np.random.SeedSequence) -> int:
-    """The integer that reproduces ``root`` (its entropy)."""
-    entropy = root.entropy
-    if isinstance(entropy, int):
-        return entropy
-    raise ValueError("give the seed as one integer so that it can be reported")
-
-
-def block_generators(root: np.random.SeedSequence, block: int, k: int) -> list[np.random.Generator]:
-    """The k generators of block ``block``: SFC64 seeded by children ``(block, r)`` of ``root``."""
-    return [
-        np.random.Generator(
-            np.random.SFC64(
-                np.random.SeedSequence(
-                    root.entropy, spawn_key=(*root.spawn_key, block, r), pool_size=root.pool_size
-                )
-            )
-        )
-        for r in range(k)
-    ]
-
-
-def draw_block(
-    rngs: list[np.random.Generator], size: int, cells: int
-) -> Iterator[NDArray[np.float64]]:
-    """The unit-cube points of one block, :data:`DRAW` tosses at a time, shape (k, m).
-
-    Row r comes from ``rngs[r]``. ``cells`` > 0 snaps each coordinate to the midpoint of its
-    cell among ``cells`` equal cells (the paper's method B).
-    """
-    for start in range(0, size, DRAW):
-        u = np.empty((len(rngs), min(DRAW, size - start)))
-        for row, rng in zip(u, rngs, strict=True):
-            rng.random(out=row)
-        if cells > 0:
-            u *= cells
-            np.floor(u, out=u)
-            u += 0.5
-            u /= cells
-        yield u
+NAME = "monte-carlo"
+"""The method's name (its registry entry, results, messages)."""
 
 
 def _task(args: tuple[Any, ...]) -> np.ndarray:
@@ -98,23 +50,21 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
     root = np.random.SeedSequence(entropy, spawn_key=spawn_key, pool_size=pool_size)
     counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     k = len(dist.ranged)
-    for b in range(first, last):
-        size = min(BLOCK, n - b * BLOCK)
-        for u in draw_block(block_generators(root, b, k), size, cells):
-            counts += model.count(dist, u)
+    for u in unit_cube(root, n, k, first_block=first, last_block=last, cells=cells):
+        counts += model.count(dist, u)
     return counts
 
 
 def check_work(n: int, model: OutcomeModel = HAND_CATCH) -> None:
     """ValueError naming the time when ``n`` tosses of ``model`` exceed the run limit
     (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate`` tosses a second)."""
-    check_tosses("monte-carlo", check_count("n", n), model.rate)
+    check_tosses(NAME, check_count("n", n), model.rate)
 
 
 def estimate(
     dist: TossDistribution,
     n: int,
-    seed: int | np.random.SeedSequence | None = None,
+    seed: SeedLike = None,
     *,
     grid_cells: int | None = None,
     model: OutcomeModel = HAND_CATCH,
@@ -171,7 +121,7 @@ def estimate(
     counts = np.sum(parts, axis=0)
     heads = int(counts[1])
     p = heads / n
-    method_name = "monte-carlo"
+    method_name = NAME
     details: dict[str, Any] = {"grid_cells": grid_cells, "block": BLOCK, "rng": "SFC64"}
     details.update(tally_details(model, counts))
     return from_counts(
@@ -186,3 +136,31 @@ def estimate(
         elapsed=time.perf_counter() - t0,
         details=details,
     )
+
+
+def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
+    check_work(n, model)
+    return n / model.rate
+
+
+def _summary(result: ProbabilityResult) -> str:
+    cells = result.details.get("grid_cells")
+    extra = f"{result.n:,} tosses" + (f" drawn from {cells} cells (method B)" if cells else "")
+    return extra + f", seed {result.seed}"
+
+
+ESTIMATOR = Estimator(
+    name=NAME,
+    run=estimate,
+    label="method B: random events (x = events)",
+    description="N random tosses (with --grid-cells 100: the paper's method B)",
+    default_n=lambda k: 10**6,
+    size="tosses (default 1000000)",
+    seeded=True,
+    options=("grid_cells", "chunk_size"),
+    color="#D55E00",  # method B (red in the paper)
+    work=_work,
+    series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
+    summary=_summary,
+    sizes_keyword="event_sizes",
+)

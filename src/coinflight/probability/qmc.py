@@ -2,7 +2,8 @@
 
 R independent scramblings (default 16), each of 2^m points; the estimate is the mean over the
 scramblings and its standard error their standard deviation over √R (Owen 1997; L'Ecuyer &
-Lemieux 2002). Each scrambling is seeded by child r of the seed's ``SeedSequence``.
+Lemieux 2002). Scrambling r is seeded by child r of the seed's ``SeedSequence``
+(:func:`coinflight.probability.streams.generator`).
 """
 
 from __future__ import annotations
@@ -15,17 +16,13 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
-from coinflight.outcomes.base import HAND_CATCH, OutcomeModel, tally_details
-from coinflight.probability._runner import (
-    Executor,
-    Progress,
-    check_count,
-    check_tosses,
-    executor_or_threads,
-    run_tasks,
-)
-from coinflight.probability.monte_carlo import reported_seed, seed_sequence
+from coinflight.outcomes.base import OutcomeModel, tally_details
+from coinflight.outcomes.hand import HAND_CATCH
+from coinflight.probability import _runner
+from coinflight.probability._runner import Executor, Progress, check_count
+from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
+from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
 
 DEFAULT_REPLICATES = 16
 MAX_REPLICATES = 1024
@@ -38,16 +35,21 @@ SOBOL_POINTS_PER_SECOND = 2.5e7
 hand catch, 2^26 points in 5.2 s on the busy 2-core machine (1.3e7 a second in all)."""
 _CHUNK = 1 << 18
 
+NAME = "qmc"
+"""The method's name (its registry entry, results, messages)."""
+
 
 def _task(args: tuple[Any, ...]) -> np.ndarray:
     from scipy.stats import qmc
 
-    model, dist, child, points = args
+    model, dist, root, replicate, points = args
     k = len(dist.ranged)
     counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     if k == 0:
         return model.count(dist, np.zeros((0, points)))
-    sobol = qmc.Sobol(d=k, scramble=True, seed=np.random.Generator(np.random.PCG64(child)))
+    sobol = qmc.Sobol(
+        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
+    )
     done = 0
     while done < points:
         # Powers of two at every call keep Sobol's balance (and SciPy's warning) in check.
@@ -80,7 +82,7 @@ def check_work(
         f"SciPy's Sobol sequence has {SOBOL_BITS} bits; use n ≤ {replicates} × 2^{SOBOL_BITS} "
         f"= {replicates << SOBOL_BITS}",
     )
-    check_tosses("qmc", n, rate(model), "use a smaller n (16 × a power of two)")
+    _runner.check_tosses(NAME, n, rate(model), "use a smaller n (16 × a power of two)")
 
 
 def rate(model: OutcomeModel = HAND_CATCH) -> float:
@@ -91,7 +93,7 @@ def rate(model: OutcomeModel = HAND_CATCH) -> float:
 def estimate(
     dist: TossDistribution,
     n: int,
-    seed: int | np.random.SeedSequence | None = None,
+    seed: SeedLike = None,
     *,
     replicates: int = DEFAULT_REPLICATES,
     model: OutcomeModel = HAND_CATCH,
@@ -110,10 +112,9 @@ def estimate(
     check_work(n, replicates, model)
     points = n // replicates
     root = seed_sequence(seed)
-    children = root.spawn(replicates)
-    tasks = [(model, dist, child, points) for child in children]
-    with executor_or_threads(executor, threads) as ex:
-        parts = run_tasks(ex, _task, tasks, [points] * replicates, progress)
+    tasks = [(model, dist, root, r, points) for r in range(replicates)]
+    with _runner.executor_or_threads(executor, threads) as ex:
+        parts = _runner.run_tasks(ex, _task, tasks, [points] * replicates, progress)
     counts = np.sum(parts, axis=0)
     col = 1
     per = np.array([p[col] / points for p in parts])
@@ -125,7 +126,7 @@ def estimate(
     return from_counts(
         (int(counts[0]), int(counts[1]), int(counts[2])),
         dist.start_sign,
-        "qmc",
+        NAME,
         n=n,
         samples=n,
         stderr=stderr,
@@ -138,3 +139,26 @@ def estimate(
             **tally_details(model, counts),
         },
     )
+
+
+def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
+    check_work(n, model=model)
+    return n / rate(model)
+
+
+ESTIMATOR = Estimator(
+    name=NAME,
+    run=estimate,
+    label="scrambled Sobol (x = points)",
+    description="scrambled Sobol points",
+    default_n=lambda k: 1 << 20,
+    size="points, 16 × a power of two (default 1048576)",
+    seeded=True,
+    options=("replicates",),
+    color="#009E73",
+    work=_work,
+    series=tuple(16 << k for k in range(2, 17)),
+    summary=lambda r: (
+        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings, seed {r.seed}"
+    ),
+)

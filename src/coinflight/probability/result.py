@@ -171,3 +171,55 @@ def from_counts(
         counts=(tails, heads, edge),
         **kwargs,
     )
+
+
+@dataclass(frozen=True)
+class BinomialEstimate:
+    """A simulated binomial proportion: ``successes`` of ``n`` random trials.
+
+    The one result type of the studies' simulations (same-side fraction, edge fraction).
+
+    Attributes
+    ----------
+    successes, n : int
+        Trials that succeeded, of ``n``.
+    seed : int or None
+        The seed that reproduces the trials (:mod:`coinflight.probability.streams`).
+
+    Examples
+    --------
+    >>> e = BinomialEstimate(successes=60, n=100, seed=1)
+    >>> e.p, round(e.stderr, 4), tuple(round(x, 4) for x in e.ci95)
+    (0.6, 0.049, (0.502, 0.6906))
+    """
+
+    successes: int
+    n: int
+    seed: int | None = None
+
+    def __post_init__(self) -> None:
+        if not 0 <= self.successes <= self.n or self.n < 1:
+            raise ValueError(f"need 0 ≤ successes ≤ n and n ≥ 1, got {self.successes} of {self.n}")
+
+    @property
+    def p(self) -> float:
+        """The fraction of successes."""
+        return self.successes / self.n
+
+    @property
+    def stderr(self) -> float:
+        """Binomial standard error sqrt(p (1 − p) / n)."""
+        return math.sqrt(self.p * (1.0 - self.p) / self.n)
+
+    @property
+    def ci95(self) -> tuple[float, float]:
+        """95 % Wilson score interval (:func:`wilson_interval`)."""
+        return wilson_interval(self.successes, self.n)
+
+    def z(self, expected: float) -> float:
+        """Standard errors from ``expected`` (0 when the standard error is 0)."""
+        return (self.p - expected) / self.stderr if self.stderr > 0 else 0.0
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: successes, n, seed, p, stderr, ci95 (a list)."""
+        return {**asdict(self), "p": self.p, "stderr": self.stderr, "ci95": list(self.ci95)}

@@ -71,7 +71,8 @@ def estimate_many(
     ----------
     dists : iterable of TossDistribution
         The distributions to compare, e.g. one per coin or per spin range.
-    method : {"exact", "grid", "monte-carlo", "qmc"}
+    method : str
+        A registered method (:func:`coinflight.probability.registry.names`).
     **kwargs
         Passed to :func:`~coinflight.probability.estimate` for every distribution (``n``,
         ``seed``, ``model``, ``threads``, …). One ``seed`` serves every distribution: the

@@ -21,8 +21,7 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -32,6 +31,8 @@ from coinflight.core import precession
 from coinflight.core.torque_free import normal_alignment
 from coinflight.model.coin import DEFAULT_COIN, Coin
 from coinflight.model.distributions import Normal
+from coinflight.probability import streams
+from coinflight.probability.result import BinomialEstimate
 
 if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
@@ -53,10 +54,6 @@ turns, which is what makes the phase effectively uniform and the closed form app
 
 QUADRATURE_TOLERANCE = 1e-8
 """Largest accepted error estimate of :func:`mean_same_side_probability`."""
-
-CHUNK = 1 << 17
-"""Tosses per random stream in :func:`simulate_same_side`: fixed, so a result depends only on
-(seed, n)."""
 
 
 @runtime_checkable
@@ -363,41 +360,16 @@ def check_tosses(n: object) -> int:
     return count
 
 
-@dataclass(frozen=True)
-class SameSideEstimate:
-    """Monte Carlo estimate of the same-side probability.
-
-    Attributes
-    ----------
-    p_same_side : float
-        Fraction of simulated tosses that land on their starting side.
-    stderr : float
-        Its binomial standard error sqrt(p (1 − p) / n).
-    same : int
-        Number of same-side tosses.
-    n : int
-        Number of tosses.
-    seed : int
-        Seed of :class:`numpy.random.SeedSequence` the tosses were drawn from.
-    """
-
-    p_same_side: float
-    stderr: float
-    same: int
-    n: int
-    seed: int
-
-
 def simulate_same_side(
     psi: ArrayLike | QuantileDistribution,
     n: int,
-    seed: int,
+    seed: streams.SeedLike = None,
     *,
     coin: Coin | None = None,
     flight_time: tuple[float, float] = DEFAULT_FLIGHT_TIME,
     precession_rate: tuple[float, float] = DEFAULT_PRECESSION_RATE,
     degrees: bool = False,
-) -> SameSideEstimate:
+) -> BinomialEstimate:
     """Same-side frequency of simulated tosses with precession angle ψ (fixed or distributed).
 
     Each toss draws a flight time T ~ U(flight_time), a precession rate ωp ~ U(precession_rate),
@@ -412,10 +384,11 @@ def simulate_same_side(
         A fixed precession angle, or a distribution of it.
     n : int
         Number of tosses (≥ :data:`MIN_TOSSES`).
-    seed : int
-        Seed (≥ 0) of the :class:`numpy.random.SeedSequence`; tosses come in chunks of
-        :data:`CHUNK`, each from its own spawned stream, so the result depends only on
-        (seed, n).
+    seed : int or SeedSequence, optional
+        Seed of the tosses (None: a fresh one from the OS); the result reports it. The tosses
+        come from :func:`coinflight.probability.streams.unit_cube` (T, ωp, azimuth and the
+        quantile of ψ each from its own stream per block), so a run of n tosses is the first n
+        tosses of any longer run with the same seed.
     coin : Coin, optional
         Default the US quarter; enters only through I1 / I3.
     flight_time : (float, float)
@@ -427,11 +400,11 @@ def simulate_same_side(
 
     Returns
     -------
-    SameSideEstimate
+    BinomialEstimate
+        Same-side tosses (``successes``) of ``n``.
     """
     n = check_tosses(n)
-    if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
-        raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
+    streams.check_seed(seed)
     for name, rng_, unit in (
         ("flight time range", flight_time, "s"),
         ("precession rate range", precession_rate, "rad/s"),
@@ -453,29 +426,48 @@ def simulate_same_side(
             raise TypeError("psi must be a single angle or a distribution, not an array")
         fixed_psi = float(value)
 
-    streams = np.random.SeedSequence(int(seed)).spawn(-(-int(n) // CHUNK))
+    root = streams.seed_sequence(seed)
     same = 0
-    for k, stream in enumerate(streams):
-        size = min(CHUNK, int(n) - k * CHUNK)
-        rng = np.random.default_rng(stream)
-        t = rng.uniform(flight_time[0], flight_time[1], size)
-        wp = rng.uniform(precession_rate[0], precession_rate[1], size)
-        azimuth = rng.uniform(0.0, 2.0 * np.pi, size)
+    for u in streams.unit_cube(root, n, 3 if dist is None else 4):
+        t = flight_time[0] + (flight_time[1] - flight_time[0]) * u[0]
+        wp = precession_rate[0] + (precession_rate[1] - precession_rate[0]) * u[1]
+        azimuth = 2.0 * np.pi * u[2]
         if dist is not None:
-            psi_k = np.asarray(dist.ppf(rng.random(size)), dtype=float) * factor
+            psi_k = np.asarray(dist.ppf(u[3]), dtype=float) * factor
         else:
-            psi_k = np.full(size, fixed_psi)
+            psi_k = np.full(u.shape[1], fixed_psi)
         w_perp, wz = precession.spin_on_cone(wp, psi_k, i1, i3)
         wx, wy = w_perp * np.cos(azimuth), w_perp * np.sin(azimuth)
         same += int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0.0))
-    frac = same / int(n)
-    return SameSideEstimate(
-        p_same_side=frac,
-        stderr=math.sqrt(frac * (1.0 - frac) / int(n)),
-        same=same,
-        n=int(n),
-        seed=int(seed),
+    return BinomialEstimate(successes=same, n=n, seed=streams.reported_seed(root))
+
+
+def simulate_same_side_at(
+    angles: ArrayLike, n: int, seed: streams.SeedLike = None, **options: Any
+) -> list[tuple[float, BinomialEstimate]]:
+    """:func:`simulate_same_side` at each fixed angle of ``angles``: (angle, estimate) pairs.
+
+    Angle i draws from child i of the seed's ``SeedSequence``
+    (:func:`coinflight.probability.streams.child`), so the points are independent and each
+    reports the one seed; the whole run is refused before any work beyond the run limit.
+    ``options`` are those of :func:`simulate_same_side` (``coin``, ``degrees``, …).
+    """
+    psi = check_psi(angles, degrees=bool(options.get("degrees", False)))
+    count = check_tosses(n)
+    v.work_bound(
+        f"{psi.size} angles × {count} tosses",
+        psi.size * count,
+        TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+        "tosses",
+        "use fewer angles or tosses",
+        TOSSES_PER_SECOND,
     )
+    root = streams.seed_sequence(seed)
+    angle_list = [float(a) for a in np.atleast_1d(np.asarray(angles, dtype=float))]
+    out = []
+    for i, a in enumerate(angle_list):
+        out.append((a, simulate_same_side(a, count, streams.child(root, i), **options)))
+    return out
 
 
 __all__ = [
@@ -483,7 +475,6 @@ __all__ = [
     "DEFAULT_PRECESSION_RATE",
     "MIN_TOSSES",
     "QuantileDistribution",
-    "SameSideEstimate",
     "check_psi",
     "check_psi_distribution",
     "check_tosses",
@@ -493,4 +484,5 @@ __all__ = [
     "psi_mean_for_probability",
     "same_side_probability",
     "simulate_same_side",
+    "simulate_same_side_at",
 ]

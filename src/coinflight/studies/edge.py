@@ -8,7 +8,6 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
@@ -16,6 +15,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
 from coinflight.core.outcome import EDGE
+from coinflight.probability import streams
+from coinflight.probability.result import BinomialEstimate
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
@@ -82,7 +83,7 @@ SIM_RATIOS = (1e-3, 100.0)
 """Ratios h/d a simulation takes: from a 24 µm foil to a 2.4 m rod (the plot's axis ends at
 100 at most, :data:`coinflight.plotting.edge.MAX_RATIO`)."""
 MAX_SIM_TOSSES = 10**7
-"""Most simulated tosses per ratio: they are landed in one batch (~100 bytes each, 1 GB)."""
+"""Most simulated tosses per ratio (an hour's work bounds the whole run as well)."""
 SIM_DIAMETER = 0.024
 """Diameter of the simulated coins, m (a thickness h = ratio × d is made for each ratio)."""
 SIM_SPIN = (150.0, 300.0)
@@ -93,43 +94,23 @@ SIM_DROP = 0.5
 """The table lies this far below the launch point, m; the coin lands dead on it (e = 0)."""
 
 
-@dataclass(frozen=True)
-class EdgeSimulation:
-    """Simulated landings of coins of one thickness / diameter ratio.
-
-    Attributes
-    ----------
-    ratio : float
-        h/d of the coin.
-    edges, n : int
-        Tosses that ended on edge, of ``n``.
-    """
-
-    ratio: float
-    edges: int
-    n: int
-
-    @property
-    def p_edge(self) -> float:
-        """Fraction of tosses on edge."""
-        return self.edges / self.n
-
-    @property
-    def stderr(self) -> float:
-        """Binomial standard error of :attr:`p_edge`."""
-        p = self.p_edge
-        return float(np.sqrt(p * (1.0 - p) / self.n))
-
-
-def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> list[EdgeSimulation]:
+def simulate_edge(
+    ratios: ArrayLike, n: int, seed: streams.SeedLike = None, *, g: float = 9.81
+) -> list[tuple[float, BinomialEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
     Each ratio gets ``n`` tosses of a coin of diameter :data:`SIM_DIAMETER` and thickness
     ratio × d (uniform density), spinning about a diameter at ωx ~ U(:data:`SIM_SPIN`) rad/s,
     launched at v0 ~ U(:data:`SIM_LAUNCH_SPEED`) m/s and landing dead (restitution 0) on a
     table :data:`SIM_DROP` m below: the setting of Yong & Mahadevan's dynamic model, which the
-    points should follow. The random numbers of each ratio come from its own stream spawned
-    from ``seed`` (``np.random.SeedSequence``), so the points are independent and reproducible.
+    points should follow.
+
+    Returns (ratio, estimate) pairs, the estimate counting the tosses on edge. Ratio i draws
+    from child i of the seed's ``SeedSequence`` through
+    :func:`coinflight.probability.streams.unit_cube` (spin and launch speed each from its own
+    stream), so the points are independent, a run of n tosses is the first n of a longer run,
+    and the first ratios of a longer list give the same points. No seed: a fresh one from the
+    OS, reported in every estimate.
     """
     from coinflight.model.coin import Coin
     from coinflight.model.surface import Surface
@@ -147,26 +128,26 @@ def simulate_edge(ratios: ArrayLike, n: int, seed: int, *, g: float = 9.81) -> l
         "use fewer ratios or tosses",
         BOUNCING_TOSSES_PER_SECOND,
     )
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise ValueError(f"seed must be a whole number ≥ 0, got {seed!r}")
+    streams.check_seed(seed)
     surface = Surface("table", drop_height=SIM_DROP, restitution=0.0)
     r = 0.5 * SIM_DIAMETER
+    root = streams.seed_sequence(seed)
     out = []
-    for ratio, child in zip(x, np.random.SeedSequence(int(seed)).spawn(len(x)), strict=True):
+    for i, ratio in enumerate(x):
         h = float(ratio) * SIM_DIAMETER
         coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # steel
-        rng = np.random.default_rng(child)
-        omega = np.zeros((n, 3))
-        omega[:, 0] = rng.uniform(*SIM_SPIN, n)
-        speed = rng.uniform(*SIM_LAUNCH_SPEED, n)
-        face = land(coin, omega, speed, 1.0, g, surface).face
-        out.append(EdgeSimulation(float(ratio), int(np.sum(face == EDGE)), int(n)))
+        edges = 0
+        for u in streams.unit_cube(streams.child(root, i), n, 2):
+            omega = np.zeros((u.shape[1], 3))
+            omega[:, 0] = SIM_SPIN[0] + (SIM_SPIN[1] - SIM_SPIN[0]) * u[0]
+            speed = SIM_LAUNCH_SPEED[0] + (SIM_LAUNCH_SPEED[1] - SIM_LAUNCH_SPEED[0]) * u[1]
+            edges += int(np.sum(land(coin, omega, speed, 1.0, g, surface).face == EDGE))
+        out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
 
 
 __all__ = [
     "MODELS",
-    "EdgeSimulation",
     "edge_probability",
     "ratio_for",
     "simulate_edge",

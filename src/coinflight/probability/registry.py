@@ -1,0 +1,212 @@
+"""The estimators of P(heads), each declared once.
+
+An :class:`Estimator` says everything the rest of the package needs about a method: its name,
+the function that runs it, its default size, whether it takes a seed and which options, a label
+and description for help texts, its colour and marker in figures, and its work bound.
+:func:`coinflight.probability.estimate` dispatches through :func:`get`; ``convergence``, the
+command line's method choices and help, and the figures' colours read the same entries.
+
+Adding an estimator (two files): write its module, ending with
+``ESTIMATOR = Estimator(name=..., run=estimate, ...)``, and add the module's name to
+:data:`BUILTIN`. Code outside the package may instead call :func:`register` with an
+:class:`Estimator` at run time (tests/test_walkthrough_estimator.py does).
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from coinflight import _validation as v
+
+if TYPE_CHECKING:
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.outcomes.base import OutcomeModel
+    from coinflight.probability.result import ProbabilityResult
+
+BUILTIN = (
+    "coinflight.probability.exact",
+    "coinflight.probability.grid",
+    "coinflight.probability.monte_carlo",
+    "coinflight.probability.qmc",
+)
+"""Modules whose ``ESTIMATOR`` is registered on first use, in this order."""
+
+RUNNER_OPTIONS = ("executor", "threads", "progress")
+
+
+def _tosses(k: int, n: int) -> int:
+    return n
+
+
+@dataclass(frozen=True)
+class Estimator:
+    """One method of estimating P(heads).
+
+    Attributes
+    ----------
+    name : str
+        What users type (``estimate(dist, name)``, ``--method name``).
+    run : callable
+        ``run(dist, [n], *, model, [seed], [executor, threads, progress], **options)``: n when
+        ``default_n`` is given, seed when ``seeded``, the runner arguments when ``parallel``.
+    label, description : str
+        A few words (legends) and one sentence (help texts).
+    default_n : callable or None
+        The default size as a function of the number k of ranged parameters; None: no size.
+    size : str
+        What n counts, for help texts ("tosses").
+    seeded : bool
+        Whether it draws random numbers (takes ``seed``, reports it).
+    options : tuple of str
+        Extra keyword options it accepts.
+    parallel : bool
+        Whether it takes ``executor``, ``threads`` and ``progress``.
+    color, marker : str
+        Its look in figures.
+    work : callable or None
+        ``work(dist, n, model)``: seconds of work at size n, a ValueError beyond what a single
+        run accepts; None when the method bounds its own work inside ``run``.
+    work_units : callable
+        ``work_units(k, n)``: the amount ``progress`` reports over a run of size n.
+    series : tuple of int
+        Default sizes of a :func:`~coinflight.probability.convergence.convergence` series;
+        empty: the method has no series (exact).
+    summary : callable
+        ``summary(result)``: how the run was made, one line for the command line.
+    sizes_keyword : str
+        The keyword of its convergence sizes when not ``NAME_sizes``.
+    """
+
+    name: str
+    run: Callable[..., ProbabilityResult]
+    label: str
+    description: str
+    default_n: Callable[[int], int] | None = None
+    size: str = ""
+    seeded: bool = False
+    options: tuple[str, ...] = ()
+    parallel: bool = True
+    color: str = "#000000"
+    marker: str = "o"
+    work: Callable[[TossDistribution, int, OutcomeModel], float] | None = None
+    work_units: Callable[[int, int], int] = _tosses
+    series: tuple[int, ...] = ()
+    summary: Callable[[ProbabilityResult], str] = lambda result: ""
+    sizes_keyword: str = ""
+
+    @property
+    def series_option(self) -> str:
+        """The keyword of :func:`~coinflight.probability.convergence.convergence` for its
+        sizes: ``sizes_keyword`` if given (monte-carlo: ``event_sizes``, the paper's
+        "events"), else ``NAME_sizes``."""
+        return self.sizes_keyword or f"{self.name.replace('-', '_')}_sizes"
+
+    def size_for(self, k: int, n: int | None) -> int | None:
+        """``n``, or the default size for k ranged parameters (None for a method without n)."""
+        if self.default_n is None:
+            return None
+        return self.default_n(k) if n is None else n
+
+    def __call__(
+        self,
+        dist: TossDistribution,
+        n: int | None = None,
+        seed: Any = None,
+        *,
+        model: OutcomeModel,
+        executor: Any = None,
+        threads: int | None = None,
+        progress: Any = None,
+        **options: Any,
+    ) -> ProbabilityResult:
+        """Check the arguments against this declaration, then run."""
+        from coinflight.probability._runner import check_count, check_runner
+
+        if n is not None:
+            check_count("n", n)
+        if not self.seeded and seed is not None:
+            raise TypeError(
+                f"method {self.name!r} takes no seed (it is deterministic); got seed={seed}"
+            )
+        if self.default_n is None and n is not None:
+            raise ValueError(f"the {self.name} method takes no n")
+        runner = {"executor": executor, "threads": threads, "progress": progress}
+        allowed = self.options + (RUNNER_OPTIONS if self.parallel else ())
+        given = {**{k: x for k, x in runner.items() if x is not None}, **options}
+        extra = [k for k in given if k not in allowed]
+        if extra:
+            raise TypeError(f"method {self.name!r} takes no option {', '.join(extra)}")
+        kwargs: dict[str, Any] = {"model": model, **options}
+        if self.parallel:
+            check_runner(executor, threads, progress)
+            kwargs.update(runner)
+        if self.seeded:
+            kwargs["seed"] = seed
+        size = self.size_for(len(dist.ranged), n)
+        return self.run(dist, **kwargs) if size is None else self.run(dist, size, **kwargs)
+
+
+_REGISTRY: dict[str, Estimator] = {}
+_loaded = False
+
+
+def register(estimator: Estimator) -> Estimator:
+    """Add ``estimator``; ValueError if its name is taken (by a different estimator)."""
+    v.instance("estimator", estimator, Estimator, "an Estimator")
+    old = _REGISTRY.get(estimator.name)
+    if old is not None and old is not estimator:
+        raise ValueError(f"an estimator named {estimator.name!r} is already registered")
+    _REGISTRY[estimator.name] = estimator
+    return estimator
+
+
+def unregister(name: str) -> None:
+    """Remove the estimator ``name`` (for tests and plug-ins that replace one)."""
+    _REGISTRY.pop(name, None)
+
+
+def _load() -> None:
+    global _loaded
+    if not _loaded:
+        _loaded = True
+        for module in BUILTIN:
+            register(importlib.import_module(module).ESTIMATOR)
+
+
+def estimators() -> tuple[Estimator, ...]:
+    """Every registered estimator, built-ins first."""
+    _load()
+    return tuple(_REGISTRY.values())
+
+
+def names(*, seeded: bool | None = None, series: bool | None = None) -> tuple[str, ...]:
+    """The registered names, optionally only those (not) ``seeded`` / with(out) a ``series``."""
+    return tuple(
+        e.name
+        for e in estimators()
+        if (seeded is None or e.seeded == seeded) and (series is None or bool(e.series) == series)
+    )
+
+
+def get(name: object, among: tuple[str, ...] | None = None, what: str = "") -> Estimator:
+    """The estimator ``name``: TypeError if not a string, ValueError naming the choices if
+    unknown (or not in ``among``; ``what`` says for what, e.g. " for convergence")."""
+    choices = names() if among is None else among
+    v.instance("method", name, str, f"a string, one of {', '.join(choices)}")
+    if name not in choices:
+        raise ValueError(f"unknown method {name!r}{what}; choose one of {', '.join(choices)}")
+    return _REGISTRY[str(name)]
+
+
+__all__ = [
+    "BUILTIN",
+    "Estimator",
+    "estimators",
+    "get",
+    "names",
+    "register",
+    "unregister",
+]
