@@ -136,6 +136,6 @@ def test_dead_landings_follow_the_dynamic_model(ratio):
     # h/d = 0.1 against 0.0635, its friction lifting the rim off the table.)
     from coinflight.studies.edge import simulate_edge
 
-    (point,) = simulate_edge([ratio], 20_000, 3)
+    ((_, point),) = simulate_edge([ratio], 20_000, 3)
     model = float(edge_probability(ratio, "dynamic"))
-    assert abs(point.p_edge - model) < 3 * math.sqrt(model * (1 - model) / point.n)
+    assert abs(point.p - model) < 3 * math.sqrt(model * (1 - model) / point.n)

@@ -3,24 +3,18 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from coinflight.cli.options import (
-    OUTPUT_HELP,
-    OUTPUT_PANEL,
-    CoinName,
-    Gravity,
-    Mass,
-    Radius,
-    StartFace,
-    Thickness,
-    number,
-    output_file,
-    resolve_coin,
-)
-from coinflight.cli.toss import FlightTime, LaunchSpeed, Omega, build_toss
+from coinflight.cli.command import command
+from coinflight.cli.groups import CoinOptions, TossOptions
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, number
+from coinflight.cli.parsers import output_file
+from coinflight.cli.values import build_toss
+
+if TYPE_CHECKING:
+    pass
 
 MovieFile = Annotated[
     Path,
@@ -62,17 +56,11 @@ MovieDpi = Annotated[
 ]
 
 
+@command
 def animate(
     out: MovieFile,
-    omega: Omega = (80.0, 0.0, 0.0),
-    flight_time: FlightTime = None,
-    launch_speed: LaunchSpeed = None,
-    start: StartFace = "heads",
-    g: Gravity = 9.81,
-    coin: CoinName = None,
-    radius: Radius = None,
-    thickness: Thickness = None,
-    mass: Mass = None,
+    args: TossOptions,
+    coin: CoinOptions,
     frames: Frames = None,
     fps: Fps = 24,
     enlarge: Enlarge = None,
@@ -88,10 +76,9 @@ def animate(
     if out.suffix.lower() not in (".gif", ".mp4"):
         raise ValueError(f"--out must end in .gif or .mp4, got {str(out)!r}")
     check_writable(out)  # before the frames are drawn, not after
-    the_coin = resolve_coin(coin, radius, thickness, mass)
     movie = animate_toss(
-        the_coin,
-        build_toss(omega, flight_time, launch_speed, start, g),
+        coin,
+        build_toss(args),
         frames=frames,
         fps=fps,
         enlarge=enlarge,

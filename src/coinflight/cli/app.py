@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Annotated
 
 import typer
@@ -21,6 +22,7 @@ from coinflight.cli.errors import (
     guard_stdout,
     interrupted,
 )
+from coinflight.cli.output import help_when_bare
 from coinflight.cli.plot import plot_app
 
 app = typer.Typer(
@@ -54,18 +56,24 @@ def _root(
     ] = False,
 ) -> None:
     """The physics of coin tossing: torque-free flight, probabilities, bias, bounces."""
-    if ctx.invoked_subcommand is None:
-        typer.echo(ctx.get_help())
+    help_when_bare(ctx)
 
 
-app.command("toss")(_toss.toss)
-app.command("bias")(_bias.bias)
-app.command("data")(_data.data)
-app.command("probability")(_probability.probability)
-app.command("convergence")(_convergence.convergence)
-app.add_typer(plot_app, name="plot")
-app.command("animate")(_animate.animate)
-app.command("paper")(_paper.paper)
+_COMMANDS: dict[str, Callable[..., None] | typer.Typer] = {
+    "toss": _toss.toss,
+    "bias": _bias.bias,
+    "data": _data.data,
+    "probability": _probability.probability,
+    "convergence": _convergence.convergence,
+    "plot": plot_app,
+    "animate": _animate.animate,
+    "paper": _paper.paper,
+}
+for _name, _command in _COMMANDS.items():
+    if isinstance(_command, typer.Typer):
+        app.add_typer(_command, name=_name)
+    else:
+        app.command(_name)(_command)
 
 
 def main() -> None:

@@ -6,24 +6,22 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coinflight.cli.figures import Dpi, OutFile
+from coinflight.cli.command import command
+from coinflight.cli.groups import CoinOptions
 from coinflight.cli.options import (
-    CoinName,
+    PSI_PANEL,
     JsonFlag,
-    Mass,
-    Radius,
-    Thickness,
+    MonteCarlo,
+    PsiPreset,
+    SimulationSeed,
     number,
     print_json,
-    resolve_coin,
 )
+from coinflight.cli.values import simulation_seed
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.studies.bias import QuantileDistribution
-
-PSI_PANEL = "Precession angle"
-SIM_PANEL = "Monte Carlo check"
 
 Psi = Annotated[
     float | None,
@@ -46,55 +44,6 @@ PsiDist = Annotated[
         "number, fixed). p(ψ) is averaged over it.",
     ),
 ]
-MonteCarlo = Annotated[
-    int | None,
-    typer.Option(
-        "--monte-carlo",
-        min=1,
-        metavar="N",
-        rich_help_panel=SIM_PANEL,
-        help="Also simulate N ≥ 100 tosses of the full torque-free flight (random flight time and "
-        "spin at the given ψ) and report their same-side fraction with its standard error.",
-    ),
-]
-Seed = Annotated[
-    int | None,
-    typer.Option(
-        "--seed",
-        min=0,
-        metavar="S",
-        rich_help_panel=SIM_PANEL,
-        help="Seed of the --monte-carlo simulation (reported; drawn at random if not given).",
-    ),
-]
-
-
-def simulation_seed(
-    monte_carlo: int | None,
-    seed: int | None,
-    *others: tuple[str, object],
-    run_flag: str = "--monte-carlo",
-) -> int | None:
-    """--seed, passed through (None: the library draws one and reports it); ValueError if --seed
-    or another simulation option is given without ``run_flag``, which alone runs the simulation
-    they set."""
-    if monte_carlo is None:
-        for flag, value in (("--seed", seed), *others):
-            if value is not None:
-                raise ValueError(f"{flag} needs {run_flag} N (it sets the simulation)")
-    return seed
-
-
-PresetName = Annotated[
-    str | None,
-    typer.Option(
-        "--preset",
-        metavar="NAME",
-        rich_help_panel=PSI_PANEL,
-        help="A named distribution of tosses: human (a person's natural toss: v0 ≈ 2.4 m/s, "
-        "38 rev/s, ψ near but below 90°; DHM 2007 via Keller). See coinflight.studies.presets.",
-    ),
-]
 
 
 def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDistribution:
@@ -109,16 +58,15 @@ def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDist
     return parse_distribution(psi_dist, "--psi-dist", "degrees")
 
 
+@command
 def bias(
+    *,
     psi: Psi = None,
     psi_dist: PsiDist = None,
-    preset: PresetName = None,
+    preset: PsiPreset = None,
     monte_carlo: MonteCarlo = None,
-    seed: Seed = None,
-    coin: CoinName = None,
-    radius: Radius = None,
-    thickness: Thickness = None,
-    mass: Mass = None,
+    seed: SimulationSeed = None,
+    coin: CoinOptions,
     json_output: JsonFlag = False,
 ) -> None:
     """Probability that a precessing coin lands on the side it started (Diaconis et al. 2007).
@@ -131,9 +79,7 @@ def bias(
     if preset is not None:
         if psi is not None or psi_dist is not None:
             raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
-        _bias_preset(
-            preset, monte_carlo, seed, resolve_coin(coin, radius, thickness, mass), json_output
-        )
+        _bias_preset(preset, monte_carlo, seed, coin, json_output)
         return
     spec = resolve_psi(psi, psi_dist)
     if isinstance(spec, float):
@@ -148,8 +94,7 @@ def bias(
         if mean is not None:
             psi_payload["psi_deg"] = float(mean)
     sim = None
-    # The coin enters only the simulation (through I1/I3), but is checked in any case.
-    the_coin = resolve_coin(coin, radius, thickness, mass)
+    the_coin = coin  # enters only the simulation (through I1/I3), but is checked in any case
     if monte_carlo is not None:
         sim = b.simulate_same_side(spec, monte_carlo, seed, coin=the_coin, degrees=True)
     if json_output:
@@ -192,18 +137,12 @@ def _bias_preset(
     """``coinflight bias --preset NAME``: the closed-form average over the preset's spins, and
     optionally a Monte Carlo run of the full flight through :func:`coinflight.probability.
     estimate` (started heads up, so P(heads) is the same-side probability)."""
-    import numpy as np
-
-    from coinflight.core.torque_free import cone_angle
     from coinflight.studies import bias as b
-    from coinflight.studies.presets import preset
+    from coinflight.studies.presets import preset, psi_range
 
     dist = preset(name, coin=coin)
     p = b.expected_same_side(dist)
-    # Median and 95 % range of ψ over the spins, for the report.
-    u = np.array([0.025, 0.5, 0.975])
-    omega = np.stack([dist.omega_x.ppf(0.5 + 0 * u), 0 * u, dist.omega_z.ppf(u)], axis=-1)
-    psi_q = np.degrees(cone_angle(omega, *dist.moments))[::-1]
+    psi_q = psi_range(dist)  # median and 95 % range of ψ over the spins, for the report
     result = None
     if monte_carlo is not None:
         from coinflight.probability import estimate
@@ -242,59 +181,3 @@ def _bias_preset(
             f"{(result.p_same_side - p) / result.stderr:+.2f} s.e. from the closed form; "
             f"seed {result.seed}"
         )
-
-
-PSI_POINTS = "45,50,55,60,70,80,90,100,110,120,130,135"
-Measured = Annotated[
-    float | None,
-    typer.Option(
-        "--measured",
-        parser=number,
-        metavar="P",
-        rich_help_panel=PSI_PANEL,
-        help="Mark a measured same-side rate (e.g. 0.5077, Bartoš et al.) and the ψ that gives it.",
-    ),
-]
-PsiPoints = Annotated[
-    str | None,
-    typer.Option(
-        "--psi-points",
-        metavar="DEG,DEG,...",
-        rich_help_panel=SIM_PANEL,
-        help=f"Angles (degrees) at which to simulate with --monte-carlo \\[default: {PSI_POINTS}].",
-    ),
-]
-
-
-def plot_bias(
-    out: OutFile,
-    monte_carlo: MonteCarlo = None,
-    seed: Seed = None,
-    psi_points: PsiPoints = None,
-    measured: Measured = None,
-    dpi: Dpi = 150,
-) -> None:
-    """Plot p(ψ), optionally with Monte Carlo points of the full flight.
-
-    Example: coinflight plot bias --out bias.png --monte-carlo 20000 --measured 0.5077
-    """
-    from coinflight.cli.figures import parse_numbers
-    from coinflight.plotting.bias import plot_bias
-    from coinflight.plotting.style import figure_paths, save_figure
-    from coinflight.studies import bias as b
-
-    figure_paths(out, "--out")  # before the simulation, not after
-    seed = simulation_seed(monte_carlo, seed, ("--psi-points", psi_points))
-    simulated = []
-    if monte_carlo is not None:
-        angles = parse_numbers(psi_points or PSI_POINTS, "--psi-points", "60,80,100")
-        simulated = b.simulate_same_side_at(angles, monte_carlo, seed, degrees=True)
-    psi_measured = None
-    if measured is not None:
-        psi_measured = float(b.psi_for_probability(measured, degrees=True))
-    for p in save_figure(plot_bias(simulated, measured, psi_measured), out, dpi=dpi):
-        typer.echo(f"wrote {p}")
-    if measured is not None and psi_measured is not None:
-        typer.echo(f"measured P(same side) = {measured:g} needs a fixed ψ = {psi_measured:.2f}°")
-    if simulated:
-        typer.echo(f"Monte Carlo: {monte_carlo:,} tosses per point, seed {simulated[0][1].seed}")

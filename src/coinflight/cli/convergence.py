@@ -3,59 +3,45 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from coinflight.cli.command import command
+from coinflight.cli.groups import CoinOptions, ConvergenceTossesOptions
 from coinflight.cli.options import (
-    OUTPUT_HELP,
-    CoinName,
-    Gravity,
-    JsonFlag,
-    Mass,
-    Radius,
-    StartFace,
-    Thickness,
-    print_json,
-    resolve_coin,
-)
-from coinflight.cli.probability import (
     METHOD_PANEL,
-    FlightTimeDist,
-    LaunchSpeedDist,
-    OmegaX,
-    OmegaY,
-    OmegaZ,
+    OUTPUT_HELP,
+    JsonFlag,
+    Quiet,
     Seed,
     Threads,
-    build_distribution,
+    print_json,
 )
-from coinflight.cli.progress import Quiet, progress_bar
+from coinflight.cli.parsers import output_prefix, parse_sizes
+from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
 
-
-def output_prefix(text: str) -> Path:
-    """Parse --out PREFIX: a folder's name (existing, or ending in /) means DIR/convergence."""
-    from coinflight._files import check_name, names_folder
-
-    try:
-        check_name(text, folder=True)
-    except ValueError as exc:
-        raise typer.BadParameter(str(exc)) from None
-    path = Path(text)
-    return path / "convergence" if names_folder(text) or path.is_dir() else path
+if TYPE_CHECKING:
+    from coinflight.probability.convergence import Convergence
 
 
-def _int_list(text: str, option: str) -> list[int]:
-    try:
-        values = [int(part) for part in text.split(",") if part.strip()]
-    except ValueError:
-        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
-    if not values:
-        raise ValueError(f"{option} {text!r}: give at least one size")
-    return values
+def _sizes_option(flag: str, help: str) -> Any:
+    return typer.Option(flag, metavar="N1,N2,…", rich_help_panel=METHOD_PANEL, help=help)
 
 
+GridSizes = Annotated[
+    str | None,
+    _sizes_option("--grid-sizes", "Cells per parameter for method A (default 5,10,…,5000)."),
+]
+EventSizes = Annotated[
+    str | None,
+    _sizes_option("--event-sizes", "Events for method B / Monte Carlo (default 100,…,10000000)."),
+]
+QmcSizes = Annotated[
+    str | None,
+    _sizes_option("--qmc-sizes", "QMC points, each 16 × a power of two (default 64,…,1048576)."),
+]
 Methods = Annotated[
     str,
     typer.Option(
@@ -91,46 +77,15 @@ Out = Annotated[
 ]
 
 
+@command
 def convergence(
-    omega_x: OmegaX = "60:90",
-    omega_y: OmegaY = "0",
-    omega_z: OmegaZ = "0",
-    flight_time: FlightTimeDist = None,
-    launch_speed: LaunchSpeedDist = None,
-    start: StartFace = "heads",
-    g: Gravity = 9.81,
-    coin: CoinName = None,
-    radius: Radius = None,
-    thickness: Thickness = None,
-    mass: Mass = None,
+    *,
+    tosses: ConvergenceTossesOptions,
+    coin: CoinOptions,
     methods: Methods = "grid,monte-carlo",
-    grid_sizes: Annotated[
-        str | None,
-        typer.Option(
-            "--grid-sizes",
-            metavar="N1,N2,…",
-            rich_help_panel=METHOD_PANEL,
-            help="Cells per parameter for method A (default 5,10,…,5000).",
-        ),
-    ] = None,
-    event_sizes: Annotated[
-        str | None,
-        typer.Option(
-            "--event-sizes",
-            metavar="N1,N2,…",
-            rich_help_panel=METHOD_PANEL,
-            help="Events for method B / Monte Carlo (default 100,…,10000000).",
-        ),
-    ] = None,
-    qmc_sizes: Annotated[
-        str | None,
-        typer.Option(
-            "--qmc-sizes",
-            metavar="N1,N2,…",
-            rich_help_panel=METHOD_PANEL,
-            help="QMC points, each 16 × a power of two (default 64,…,1048576).",
-        ),
-    ] = None,
+    grid_sizes: GridSizes = None,
+    event_sizes: EventSizes = None,
+    qmc_sizes: QmcSizes = None,
     grid_cells: Cells = None,
     seed: Seed = None,
     threads: Threads = None,
@@ -149,21 +104,18 @@ def convergence(
     from coinflight.probability.convergence import convergence as run
     from coinflight.probability.convergence import work_total
 
-    the_coin = resolve_coin(coin, radius, thickness, mass)
-    dist = build_distribution(
-        omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
-    )
+    dist = tosses.build(coin)
     method_list = [m.strip() for m in methods.split(",") if m.strip()]
     grid_cells_given = grid_cells is not None
     if grid_cells is None:
         grid_cells = 100
     sizes: dict[str, list[int]] = {}
     if grid_sizes is not None:
-        sizes["grid_sizes"] = _int_list(grid_sizes, "--grid-sizes")
+        sizes["grid_sizes"] = parse_sizes(grid_sizes, "--grid-sizes")
     if event_sizes is not None:
-        sizes["event_sizes"] = _int_list(event_sizes, "--event-sizes")
+        sizes["event_sizes"] = parse_sizes(event_sizes, "--event-sizes")
     if qmc_sizes is not None:
-        sizes["qmc_sizes"] = _int_list(qmc_sizes, "--qmc-sizes")
+        sizes["qmc_sizes"] = parse_sizes(qmc_sizes, "--qmc-sizes")
     for option, text, needed in (
         ("--grid-sizes", grid_sizes, "grid"),
         ("--event-sizes", event_sizes, "monte-carlo"),
@@ -200,12 +152,14 @@ def convergence(
         result.write(csv.with_name(prefix.name))  # PREFIX.csv and PREFIX.json
         save_figure(fig, png)
         save_figure(fig, svg)
-    written = targets
     if json_output:
-        payload = result.to_dict()
-        payload["files"] = [str(p) for p in written]
-        print_json(payload)
+        print_json({**result.to_dict(), "files": [str(p) for p in targets]})
         return
+    _report(result, targets)
+
+
+def _report(result: Convergence, written: list[Path]) -> None:
+    """The text output of ``coinflight convergence``."""
     exact = "not available" if result.exact is None else f"{result.exact:.6f} ({result.exact_how})"
     typer.echo(f"exact P(heads) = {exact}")
     for m in result.methods:

@@ -8,14 +8,9 @@ from typing import Annotated, Any
 
 import typer
 
-from coinflight.cli.options import (
-    OUTPUT_HELP,
-    OUTPUT_PANEL,
-    JsonFlag,
-    number,
-    output_file,
-    print_json,
-)
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, JsonFlag, number, print_json
+from coinflight.cli.output import echo_written
+from coinflight.cli.parsers import output_file
 from coinflight.datasets import DATASETS, DEFAULT_DATASET
 
 PLOT_MAX_PEOPLE = 1000
@@ -212,5 +207,4 @@ def data(
             f"  {name:<{width}} {p.successes:>7,} of {p.trials:>7,}  {p.estimate:.4f}  "
             f"[{p.ci95[0]:.4f}, {p.ci95[1]:.4f}]"
         )
-    for path in written:
-        typer.echo(f"wrote {path}")
+    echo_written(written)

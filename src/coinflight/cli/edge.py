@@ -6,9 +6,10 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.bias import simulation_seed
-from coinflight.cli.figures import Dpi, OutFile, parse_numbers
-from coinflight.cli.options import number
+from coinflight.cli.options import Dpi, OutFile, SimulateSeed, number
+from coinflight.cli.output import echo_written
+from coinflight.cli.parsers import parse_numbers
+from coinflight.cli.values import simulation_seed
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
@@ -23,16 +24,6 @@ Simulate = Annotated[
         rich_help_panel=SIM_PANEL,
         help="Also land N simulated tosses per ratio (vigorous planar spins, landing dead on a "
         "table; coinflight.studies.edge.simulate_edge) and plot their edge fraction.",
-    ),
-]
-Seed = Annotated[
-    int | None,
-    typer.Option(
-        "--seed",
-        min=0,
-        metavar="S",
-        rich_help_panel=SIM_PANEL,
-        help="Seed of the --simulate tosses (reported; drawn at random if not given).",
     ),
 ]
 Ratios = Annotated[
@@ -58,7 +49,7 @@ MaxRatio = Annotated[
 def plot_edge(
     out: OutFile,
     simulate: Simulate = None,
-    seed: Seed = None,
+    seed: SimulateSeed = None,
     ratios: Ratios = None,
     max_ratio: MaxRatio = 1.0,
     dpi: Dpi = 150,
@@ -78,8 +69,7 @@ def plot_edge(
         points = parse_numbers(ratios or RATIOS, "--ratios", "0.2,0.5,1")
         simulated = simulate_edge(points, simulate, the_seed)
     figure = plot_edge(simulated, max_ratio)
-    for path in save_figure(figure, out, dpi=dpi):
-        typer.echo(f"wrote {path}")
+    echo_written(save_figure(figure, out, dpi=dpi))
     for model in MODELS:
         typer.echo(f"P(edge) = 1/3 at h/d = {ratio_for(1 / 3, model):.4f} ({model} model)")
     if simulated:

@@ -1,61 +1,22 @@
-"""Options shared by several commands, and turning them into library objects."""
+"""Every option used by more than one command, defined once.
+
+A command imports its shared options from here, and its option groups (coin, toss, tosses,
+table, air: several options received as one value) from :mod:`coinflight.cli.groups`.
+"""
 
 from __future__ import annotations
 
-import json
-import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import Annotated, Any
 
 import typer
 
-if TYPE_CHECKING:
-    from coinflight.model.coin import Coin
+from coinflight.cli.output import print_json
+from coinflight.cli.parsers import gravity, number, output_file
+from coinflight.cli.values import resolve_coin
+from coinflight.probability import registry
 
-
-def number(text: str) -> float:
-    """Parse a command-line number, or a usage error that names the text."""
-    try:
-        return float(text)
-    except ValueError:
-        raise typer.BadParameter(f"{text!r} is not a number") from None
-
-
-def gravity(text: str) -> float:
-    """Parse --g and check it against the library's range (coinflight.model.toss.GRAVITY) before any
-    command divides by it."""
-    from coinflight.model.toss import GRAVITY
-
-    value = number(text)
-    try:
-        return GRAVITY.check(value)
-    except ValueError as exc:
-        raise typer.BadParameter(str(exc)) from None
-
-
-def output_file(text: str) -> Path:
-    """Parse an output file (--out FILE, --plot FILE): an empty text or a folder's name
-    (``.``, ``out/``) is a usage error, not the current folder or a file ``out`` (what
-    ``Path`` would silently make of them)."""
-    from coinflight._files import check_name
-
-    try:
-        check_name(text)
-    except ValueError as exc:
-        raise typer.BadParameter(str(exc)) from None
-    return Path(text)
-
-
-def output_folder(text: str) -> Path:
-    """Parse an output folder (--out DIR): an empty text is a usage error."""
-    from coinflight._files import check_name
-
-    try:
-        check_name(text, folder=True)
-    except ValueError as exc:
-        raise typer.BadParameter(str(exc)) from None
-    return Path(text)
-
+__all__ = ["number", "print_json", "resolve_coin"]  # also used from here (cli/surface.py)
 
 OUTPUT_HELP = "Missing folders are created; files are replaced only when the run succeeds."
 """What every output option does with its path (stated once, in each option's help)."""
@@ -63,7 +24,32 @@ OUTPUT_HELP = "Missing folders are created; files are replaced only when the run
 COIN_PANEL = "Coin"
 TOSS_PANEL = "Toss"
 OUTPUT_PANEL = "Output"
+METHOD_PANEL = "Method"
+SURFACE_PANEL = "Landing"
+PSI_PANEL = "Precession angle"
+SIM_PANEL = "Monte Carlo check"
 
+
+def number_option(flag: str, metavar: str, panel: str, help: str, *aliases: str) -> Any:
+    """A numeric option (parsed by :func:`~coinflight.cli.parsers.number`)."""
+    return typer.Option(
+        flag, *aliases, parser=number, metavar=metavar, rich_help_panel=panel, help=help
+    )
+
+
+def _seed(
+    help: str, panel: str | None = None, minimum: int | None = 0, metavar: str | None = "S"
+) -> Any:
+    """--seed: the one definition; each command says what it seeds and its default."""
+    return typer.Option("--seed", min=minimum, metavar=metavar, rich_help_panel=panel, help=help)
+
+
+def _preset(panel: str, help: str) -> Any:
+    """--preset NAME: the one definition (names and values: coinflight.studies.presets)."""
+    return typer.Option("--preset", metavar="NAME", rich_help_panel=panel, help=help)
+
+
+# --- the coin and the toss ---------------------------------------------------------------
 CoinName = Annotated[
     str | None,
     typer.Option(
@@ -72,36 +58,6 @@ CoinName = Annotated[
         rich_help_panel=COIN_PANEL,
         help="A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, "
         "eur-1, eur-2, eur-50c, gbp-1. Default us-quarter.",
-    ),
-]
-Radius = Annotated[
-    float | None,
-    typer.Option(
-        "--radius",
-        parser=number,
-        metavar="R",
-        rich_help_panel=COIN_PANEL,
-        help="Custom coin radius, m.",
-    ),
-]
-Thickness = Annotated[
-    float | None,
-    typer.Option(
-        "--thickness",
-        parser=number,
-        metavar="H",
-        rich_help_panel=COIN_PANEL,
-        help="Custom coin thickness, m.",
-    ),
-]
-Mass = Annotated[
-    float | None,
-    typer.Option(
-        "--mass",
-        parser=number,
-        metavar="M",
-        rich_help_panel=COIN_PANEL,
-        help="Custom coin mass, kg.",
     ),
 ]
 StartFace = Annotated[
@@ -120,6 +76,79 @@ Gravity = Annotated[
         help="Gravitational acceleration, m/s².",
     ),
 ]
+TossPreset = Annotated[
+    str | None,
+    _preset(
+        TOSS_PANEL,
+        "Start from a named distribution of tosses: human (a person's natural toss, "
+        "v0 ≈ 2.4 m/s, 38 rev/s, ψ near but below 90°; coinflight.studies.presets). Toss options "
+        "given explicitly replace the preset's value.",
+    ),
+]
+PsiPreset = Annotated[
+    str | None,
+    _preset(
+        PSI_PANEL,
+        "A named distribution of tosses: human (a person's natural toss: v0 ≈ 2.4 m/s, "
+        "38 rev/s, ψ near but below 90°; DHM 2007 via Keller). See coinflight.studies.presets.",
+    ),
+]
+
+Bounces = Annotated[
+    int | None,
+    typer.Option(
+        "--bounces",
+        metavar="K",
+        rich_help_panel=SURFACE_PANEL,
+        help="table: stop at the contact after K bounces (0: the first contact) and report "
+        "the well the coin is in; default: bounce until it settles.",
+    ),
+]
+
+# --- how: method, seeds, threads, simulations -----------------------------------------------
+Seed = Annotated[
+    int | None,
+    _seed(
+        f"Seed for {' and '.join(registry.names(seeded=True))} (reported; drawn at random if "
+        "not given).",
+        METHOD_PANEL,
+        minimum=None,
+    ),
+]
+SimulationSeed = Annotated[
+    int | None,
+    _seed(
+        "Seed of the --monte-carlo simulation (reported; drawn at random if not given).",
+        SIM_PANEL,
+    ),
+]
+SimulateSeed = Annotated[
+    int | None,
+    _seed("Seed of the --simulate tosses (reported; drawn at random if not given).", "Simulation"),
+]
+PaperSeed = Annotated[int, _seed("Seed of method B's random events (reported).", metavar=None)]
+Threads = Annotated[
+    int | None,
+    typer.Option(
+        "--threads",
+        metavar="K",
+        rich_help_panel=METHOD_PANEL,
+        help="Worker threads (default: all CPUs). The result does not depend on it.",
+    ),
+]
+MonteCarlo = Annotated[
+    int | None,
+    typer.Option(
+        "--monte-carlo",
+        min=1,
+        metavar="N",
+        rich_help_panel=SIM_PANEL,
+        help="Also simulate N ≥ 100 tosses of the full torque-free flight (random flight time and "
+        "spin at the given ψ) and report their same-side fraction with its standard error.",
+    ),
+]
+
+# --- output ---------------------------------------------------------------------------------
 JsonFlag = Annotated[
     bool,
     typer.Option(
@@ -128,41 +157,23 @@ JsonFlag = Annotated[
         help="Print one JSON object on stdout instead of text.",
     ),
 ]
-
-
-def resolve_coin(
-    name: str | None, radius: float | None, thickness: float | None, mass: float | None
-) -> Coin:
-    """The coin the user asked for: a preset by name, or custom dimensions (all three)."""
-    from coinflight.model.coin import DEFAULT_COIN, Coin
-
-    custom = {"--radius": radius, "--thickness": thickness, "--mass": mass}
-    given = [k for k, val in custom.items() if val is not None]
-    if given and name is not None:
-        raise ValueError(f"give either --coin or custom dimensions ({', '.join(given)}), not both")
-    if given:
-        missing = [k for k, val in custom.items() if val is None]
-        if missing:
-            raise ValueError(
-                "a custom coin needs --radius, --thickness and --mass; "
-                f"missing {', '.join(missing)}"
-            )
-        assert radius is not None and thickness is not None and mass is not None
-        return Coin(radius=radius, thickness=thickness, mass=mass)
-    return Coin.preset(name if name is not None else DEFAULT_COIN)
-
-
-def print_json(payload: dict[str, Any]) -> None:
-    """One JSON object on stdout (NumPy scalars and arrays become numbers and lists)."""
-    text = json.dumps(payload, default=_jsonable, allow_nan=False)  # whole, or an error
-    sys.stdout.write(text + "\n")
-
-
-def _jsonable(obj: Any) -> Any:
-    import numpy as np
-
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    if isinstance(obj, np.generic):
-        return obj.item()
-    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+Quiet = Annotated[
+    bool,
+    typer.Option("--quiet", "-q", rich_help_panel=OUTPUT_PANEL, help="No progress bar on stderr."),
+]
+OutFile = Annotated[
+    Path,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE",
+        parser=output_file,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
+        f"without a suffix, FILE.png and FILE.svg (written together). {OUTPUT_HELP}",
+    ),
+]
+Dpi = Annotated[
+    int,
+    typer.Option("--dpi", min=20, max=1200, rich_help_panel=OUTPUT_PANEL, help="PNG resolution."),
+]

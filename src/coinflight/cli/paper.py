@@ -7,8 +7,8 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, output_folder
-from coinflight.cli.progress import Quiet
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, PaperSeed, Quiet
+from coinflight.cli.parsers import output_folder
 
 OutDir = Annotated[
     Path,
@@ -21,10 +21,6 @@ OutDir = Annotated[
         help="Folder for the figures (PNG and SVG), report.md and report.html, all written "
         f"together at the end. {OUTPUT_HELP}",
     ),
-]
-Seed = Annotated[
-    int,
-    typer.Option("--seed", min=0, help="Seed of method B's random events (reported)."),
 ]
 Events = Annotated[
     int,
@@ -39,7 +35,7 @@ Events = Annotated[
 
 def paper(
     out: OutDir = Path("paper"),
-    seed: Seed = 20240601,
+    seed: PaperSeed = 20240601,
     events: Events = 10**6,
     coin: CoinName = None,
     quiet: Quiet = False,
@@ -48,8 +44,8 @@ def paper(
 
     Example: coinflight paper --out paper/
     """
-    from coinflight.cli.options import resolve_coin
     from coinflight.cli.progress import progress_bar
+    from coinflight.cli.values import resolve_coin
     from coinflight.report.reproduce import STEPS, paper_files, reproduce_paper
 
     the_coin = resolve_coin(coin, None, None, None)

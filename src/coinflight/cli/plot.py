@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import typer
 
-from coinflight.cli import bias as _bias
-from coinflight.cli import edge as _edge
-from coinflight.cli import figures as _figures
+from coinflight.cli.edge import plot_edge
+from coinflight.cli.output import help_when_bare
+from coinflight.cli.plot_basin import plot_basin
+from coinflight.cli.plot_bias import plot_bias
+from coinflight.cli.plot_toss import plot_toss
 
 plot_app = typer.Typer(
     help="Draw figures (PNG, SVG, PDF, …, by the suffix of --out; PNG and SVG without one).",
@@ -17,11 +21,14 @@ plot_app = typer.Typer(
 @plot_app.callback()
 def _plot(ctx: typer.Context) -> None:
     """Draw figures (PNG, SVG, PDF, …, by the suffix of --out; PNG and SVG without one)."""
-    if ctx.invoked_subcommand is None:
-        typer.echo(ctx.get_help())
+    help_when_bare(ctx)
 
 
-plot_app.command("toss")(_figures.plot_toss)
-plot_app.command("basin")(_figures.plot_basin)
-plot_app.command("bias")(_bias.plot_bias)
-plot_app.command("edge")(_edge.plot_edge)
+_COMMANDS: dict[str, Callable[..., None]] = {
+    "toss": plot_toss,
+    "basin": plot_basin,
+    "bias": plot_bias,
+    "edge": plot_edge,
+}
+for _name, _command in _COMMANDS.items():
+    plot_app.command(_name)(_command)

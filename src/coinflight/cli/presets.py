@@ -9,27 +9,13 @@ at its default never overrides the preset.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING
 
 import typer
-
-from coinflight.cli.options import TOSS_PANEL
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.ensemble import TossDistribution
-
-PresetOption = Annotated[
-    str | None,
-    typer.Option(
-        "--preset",
-        metavar="NAME",
-        rich_help_panel=TOSS_PANEL,
-        help="Start from a named distribution of tosses: human (a person's natural toss, "
-        "v0 ≈ 2.4 m/s, 38 rev/s, ψ near but below 90°; coinflight.studies.presets). Toss options "
-        "given explicitly replace the preset's value.",
-    ),
-]
 
 # Command-line parameter name → (option flag, unit) of the toss options a preset supplies.
 TOSS_OPTIONS = {

@@ -6,60 +6,29 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from coinflight.cli.command import command
+from coinflight.cli.groups import AirOptions, CoinOptions, TableOptions, TossesOptions
+from coinflight.cli.landing import surface_payload
 from coinflight.cli.options import (
-    TOSS_PANEL,
-    CoinName,
-    Gravity,
+    METHOD_PANEL,
     JsonFlag,
-    Mass,
-    Radius,
-    StartFace,
-    Thickness,
+    Quiet,
+    Seed,
+    Threads,
+    TossPreset,
     print_json,
-    resolve_coin,
 )
-from coinflight.cli.presets import PresetOption, preset_distribution
-from coinflight.cli.progress import Quiet, progress_bar
-from coinflight.cli.surface import (
-    DragCoefficient,
-    DropHeight,
-    Friction,
-    Restitution,
-    SpinDamping,
-    SurfaceKindOption,
-    outcome_model,
-    surface_payload,
-)
+from coinflight.cli.presets import preset_distribution
+from coinflight.cli.progress import progress_bar
+from coinflight.cli.surface import outcome_model
 from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
 from coinflight.probability import registry
 
 if TYPE_CHECKING:
-    from coinflight.model.coin import Coin
+    from coinflight.cli.surface import LandingChoice
     from coinflight.model.ensemble import TossDistribution
+    from coinflight.probability import ProbabilityResult
 
-METHOD_PANEL = "Method"
-_DIST_HELP = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
-
-
-def _dist_option(flag: str, what: str, unit: str, *aliases: str) -> object:
-    return typer.Option(
-        flag,
-        *aliases,
-        metavar="DIST",
-        rich_help_panel=TOSS_PANEL,
-        help=f"{what}, {unit}: {_DIST_HELP}.",
-    )
-
-
-OmegaX = Annotated[str, _dist_option("--omega-x", "Spin about the x diameter", "rad/s")]
-OmegaY = Annotated[str, _dist_option("--omega-y", "Spin about the y diameter", "rad/s")]
-OmegaZ = Annotated[str, _dist_option("--omega-z", "Spin about the normal", "rad/s")]
-FlightTimeDist = Annotated[
-    str | None, _dist_option("--flight-time", "Flight time T (catch at launch height)", "s", "-T")
-]
-LaunchSpeedDist = Annotated[
-    str | None, _dist_option("--launch-speed", "Upward launch speed v0 (T = 2 v0 / g)", "m/s")
-]
 Method = Annotated[
     str,
     typer.Option(
@@ -82,16 +51,6 @@ Size = Annotated[
         "refused with the estimate.",
     ),
 ]
-Seed = Annotated[
-    int | None,
-    typer.Option(
-        "--seed",
-        metavar="S",
-        rich_help_panel=METHOD_PANEL,
-        help=f"Seed for {' and '.join(registry.names(seeded=True))} (reported; drawn at random "
-        "if not given).",
-    ),
-]
 GridCells = Annotated[
     int | None,
     typer.Option(
@@ -102,44 +61,6 @@ GridCells = Annotated[
         "(the paper's method B uses 100).",
     ),
 ]
-Threads = Annotated[
-    int | None,
-    typer.Option(
-        "--threads",
-        metavar="K",
-        rich_help_panel=METHOD_PANEL,
-        help="Worker threads (default: all CPUs). The result does not depend on it.",
-    ),
-]
-
-
-def build_distribution(
-    omega_x: str,
-    omega_y: str,
-    omega_z: str,
-    flight_time: str | None,
-    launch_speed: str | None,
-    coin: Coin,
-    start: str,
-    g: float,
-) -> TossDistribution:
-    """The :class:`~coinflight.model.ensemble.TossDistribution` for the command-line options."""
-    from coinflight.model.distributions import parse_distribution
-    from coinflight.model.ensemble import TossDistribution, check_launch_speed
-
-    wx = parse_distribution(omega_x, "--omega-x", "rad/s")
-    wy = parse_distribution(omega_y, "--omega-y", "rad/s")
-    wz = parse_distribution(omega_z, "--omega-z", "rad/s")
-    if (flight_time is None) == (launch_speed is None):
-        raise ValueError("give exactly one of --flight-time and --launch-speed")
-    if flight_time is not None:
-        t = parse_distribution(flight_time, "--flight-time", "s")
-        return TossDistribution(wx, wy, wz, t, coin=coin, start=start, g=g)  # type: ignore[arg-type]
-    assert launch_speed is not None
-    v0 = check_launch_speed(
-        parse_distribution(launch_speed, "--launch-speed", "m/s"), "--launch-speed"
-    )
-    return TossDistribution.from_launch_speed(wx, wy, wz, v0, coin=coin, start=start, g=g)  # type: ignore[arg-type]
 
 
 def work_total(method: str, n: int | None, k: int) -> int:
@@ -148,26 +69,15 @@ def work_total(method: str, n: int | None, k: int) -> int:
     return estimator.work_units(k, estimator.size_for(k, n) or 1)
 
 
+@command
 def probability(
     ctx: typer.Context,
-    omega_x: OmegaX = "80",
-    omega_y: OmegaY = "0",
-    omega_z: OmegaZ = "0",
-    flight_time: FlightTimeDist = None,
-    launch_speed: LaunchSpeedDist = None,
-    start: StartFace = "heads",
-    g: Gravity = 9.81,
-    preset: PresetOption = None,
-    coin: CoinName = None,
-    radius: Radius = None,
-    thickness: Thickness = None,
-    mass: Mass = None,
-    surface: SurfaceKindOption = "hand",
-    drop_height: DropHeight = None,
-    restitution: Restitution = None,
-    friction: Friction = None,
-    drag: DragCoefficient = None,
-    spin_damping: SpinDamping = None,
+    *,
+    tosses: TossesOptions,
+    preset: TossPreset = None,
+    coin: CoinOptions,
+    table: TableOptions,
+    air: AirOptions,
     method: Method = "exact",
     n: Size = None,
     seed: Seed = None,
@@ -184,13 +94,10 @@ def probability(
     from coinflight.probability import estimate
 
     estimator = registry.get(method)
-    the_coin = resolve_coin(coin, radius, thickness, mass)
     if preset is not None:
-        dist = preset_distribution(ctx, preset, the_coin, start, g)
+        dist = preset_distribution(ctx, preset, coin, tosses.start, tosses.g)
     else:
-        dist = build_distribution(
-            omega_x, omega_y, omega_z, flight_time, launch_speed, the_coin, start, g
-        )
+        dist = tosses.build(coin)
     options: dict[str, Any] = {}
     if grid_cells is not None:
         if "grid_cells" not in estimator.options:
@@ -202,7 +109,7 @@ def probability(
         raise ValueError(f"--seed applies to {seeded}, not {method}")
     if threads is not None and not estimator.parallel:
         raise ValueError(f"--threads does not apply to the {method} method")
-    landing = outcome_model(surface, drop_height, restitution, friction, drag, spin_damping)
+    landing = outcome_model(*table, *air)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
         raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
     if landing is not None:
@@ -215,15 +122,22 @@ def probability(
     if json_output:
         payload = result.to_dict()
         payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}
-        payload["coin"] = the_coin.name
-        payload["start"] = start
-        payload["g"] = dist.g
-        payload["inputs"] = _inputs(ctx)
+        payload.update(coin=coin.name, start=tosses.start, g=dist.g, inputs=_inputs(ctx))
         if landing is not None:
             payload.update(surface_payload(landing.surface, landing.drag))
         payload["warnings"] = _warnings(result)
         print_json(payload)
         return
+    _report(result, dist, tosses.launch_speed, landing)
+
+
+def _report(
+    result: ProbabilityResult,
+    dist: TossDistribution,
+    launch_speed: str | None,
+    landing: LandingChoice | None,
+) -> None:
+    """The text output of ``coinflight probability``."""
     typer.echo(dist.describe())
     typer.echo(_gravity_line(dist.g, launch_speed))
     if landing is not None:

@@ -1,7 +1,8 @@
 """A progress bar on stderr for long runs: one place, reused by every command.
 
-Shown only when stderr is a terminal, ``--quiet`` is not given, and the run is still going
-after :data:`DELAY` seconds, so quick runs and pipes stay clean. rich is imported lazily.
+Shown only when stderr is a terminal, ``--quiet`` (cli.options.Quiet) is not given, and the run
+is still going after :data:`DELAY` seconds, so quick runs and pipes stay clean. rich is imported
+lazily.
 """
 
 from __future__ import annotations
@@ -10,17 +11,10 @@ import sys
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Annotated, Any
-
-import typer
+from typing import Any
 
 DELAY = 1.0
 """Seconds before the bar appears."""
-
-Quiet = Annotated[
-    bool,
-    typer.Option("--quiet", "-q", rich_help_panel="Output", help="No progress bar on stderr."),
-]
 
 
 class _Bar:

@@ -3,107 +3,28 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING
 
 import typer
 
-from coinflight.cli.options import (
-    TOSS_PANEL,
-    CoinName,
-    Gravity,
-    JsonFlag,
-    Mass,
-    Radius,
-    StartFace,
-    Thickness,
-    number,
-    print_json,
-    resolve_coin,
-)
-from coinflight.cli.surface import (
-    Bounces,
-    DragCoefficient,
-    DropHeight,
-    Friction,
-    Restitution,
-    SpinDamping,
-    SurfaceKindOption,
-    build_drag,
-    build_surface,
-    check_bounces,
-    report_landing,
-)
+from coinflight.cli.command import command
+from coinflight.cli.groups import AirOptions, CoinOptions, TableOptions, TossOptions
+from coinflight.cli.options import Bounces, JsonFlag, print_json
+from coinflight.cli.surface import build_drag, build_surface, check_bounces, report_landing
+from coinflight.cli.values import build_toss
 
 if TYPE_CHECKING:
-    from coinflight.model.toss import Toss
-
-Omega = Annotated[
-    tuple[float, float, float],
-    typer.Option(
-        "--omega",
-        parser=number,
-        metavar="WX WY WZ",
-        rich_help_panel=TOSS_PANEL,
-        help="Body-frame angular velocity at launch, rad/s: x and y about diameters, "
-        "z about the normal.",
-    ),
-]
-FlightTime = Annotated[
-    float | None,
-    typer.Option(
-        "--flight-time",
-        "-T",
-        parser=number,
-        metavar="T",
-        rich_help_panel=TOSS_PANEL,
-        help="Flight time to catch at launch height, s.",
-    ),
-]
-LaunchSpeed = Annotated[
-    float | None,
-    typer.Option(
-        "--launch-speed",
-        parser=number,
-        metavar="V0",
-        rich_help_panel=TOSS_PANEL,
-        help="Upward launch speed, m/s (T = 2 V0 / g).",
-    ),
-]
+    from coinflight.cli.values import TossArgs
+    from coinflight.model.coin import Coin
+    from coinflight.model.toss import Flight
 
 
-def build_toss(
-    omega: tuple[float, float, float],
-    flight_time: float | None,
-    launch_speed: float | None,
-    start: str,
-    g: float,
-) -> Toss:
-    """The :class:`~coinflight.model.toss.Toss` for the toss options (one of T and V0 required)."""
-    from coinflight.model.toss import Toss
-
-    if (flight_time is None) == (launch_speed is None):
-        raise ValueError("give exactly one of --flight-time and --launch-speed")
-    if flight_time is not None:
-        return Toss(omega=omega, flight_time=flight_time, start=start, g=g)  # type: ignore[arg-type]
-    return Toss.from_launch_speed(omega, launch_speed, start=start, g=g)  # type: ignore[arg-type]
-
-
+@command
 def toss(
-    omega: Omega = (80.0, 0.0, 0.0),
-    flight_time: FlightTime = None,
-    launch_speed: LaunchSpeed = None,
-    start: StartFace = "heads",
-    g: Gravity = 9.81,
-    coin: CoinName = None,
-    radius: Radius = None,
-    thickness: Thickness = None,
-    mass: Mass = None,
-    surface: SurfaceKindOption = "hand",
-    drop_height: DropHeight = None,
-    restitution: Restitution = None,
-    friction: Friction = None,
-    drag: DragCoefficient = None,
-    spin_damping: SpinDamping = None,
+    args: TossOptions,
+    coin: CoinOptions,
+    table: TableOptions,
+    air: AirOptions,
     bounces: Bounces = None,
     json_output: JsonFlag = False,
 ) -> None:
@@ -114,47 +35,20 @@ def toss(
     """
     from coinflight.model.toss import Flight
 
-    the_coin = resolve_coin(coin, radius, thickness, mass)
-    the_surface = build_surface(surface, drop_height, restitution, friction)
-    the_drag = build_drag(drag, spin_damping)
+    the_surface = build_surface(*table)
+    the_drag = build_drag(*air)
     check_bounces(the_surface, bounces)
-    the_toss = build_toss(omega, flight_time, launch_speed, start, g)
+    the_toss = build_toss(args)
     if the_surface.bounces or the_drag is not None:
-        report_landing(the_coin, the_toss, the_surface, the_drag, json_output, bounces)
+        report_landing(coin, the_toss, the_surface, the_drag, json_output, bounces)
         return
-    flight = Flight(the_coin, the_toss)
-    out = flight.outcome
-    catch = flight.catch
-    t = flight.toss
+    flight = Flight(coin, the_toss)
     if json_output:
-        print_json(
-            {
-                "outcome": out.face_name,
-                "same_side": bool(out.same_side),
-                "rotations": float(out.rotations),
-                "psi": float(out.psi),
-                "psi_deg": math.degrees(float(out.psi)),
-                "normal": catch.normal,
-                "angular_momentum": catch.angular_momentum,
-                "omega_at_catch": catch.omega,
-                "cos_theta": float(out.alignment),
-                "flight_time": float(t.flight_time),
-                "launch_speed": float(t.launch_speed),
-                "apex": float(t.apex),
-                "omega": list(omega),
-                "start": start,
-                "g": t.g,
-                "coin": {
-                    "name": the_coin.name,
-                    "radius": the_coin.radius,
-                    "thickness": the_coin.thickness,
-                    "mass": the_coin.mass,
-                },
-            }
-        )
+        print_json(_payload(flight, args))
         return
-    wx, wy, wz = omega
-    typer.echo(f"{the_coin.describe()}, started {start} up")
+    out, t = flight.outcome, flight.toss
+    wx, wy, wz = args.omega
+    typer.echo(f"{coin.describe()}, started {args.start} up")
     typer.echo(
         f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, flight time T = {float(t.flight_time):.4g} s "
         f"(launch speed {float(t.launch_speed):.3g} m/s, apex {float(t.apex):.3g} m)"
@@ -162,6 +56,39 @@ def toss(
     typer.echo(
         f"lands {out.face_name.upper()} up after {_turns(float(out.rotations), float(out.psi))}"
     )
+
+
+def _payload(flight: Flight, args: TossArgs) -> dict[str, object]:
+    """The JSON object of ``coinflight toss --json`` for a catch in the hand."""
+    out, catch, t, coin = flight.outcome, flight.catch, flight.toss, flight.coin
+    return {
+        "outcome": out.face_name,
+        "same_side": bool(out.same_side),
+        "rotations": float(out.rotations),
+        "psi": float(out.psi),
+        "psi_deg": math.degrees(float(out.psi)),
+        "normal": catch.normal,
+        "angular_momentum": catch.angular_momentum,
+        "omega_at_catch": catch.omega,
+        "cos_theta": float(out.alignment),
+        "flight_time": float(t.flight_time),
+        "launch_speed": float(t.launch_speed),
+        "apex": float(t.apex),
+        "omega": list(args.omega),
+        "start": args.start,
+        "g": t.g,
+        "coin": _coin_dict(coin),
+    }
+
+
+def _coin_dict(coin: Coin) -> dict[str, object]:
+    # Belongs on Coin (model/coin.py) as to_dict; cli/surface.report_landing writes the same.
+    return {
+        "name": coin.name,
+        "radius": coin.radius,
+        "thickness": coin.thickness,
+        "mass": coin.mass,
+    }
 
 
 def _turns(rotations: float, psi: float) -> str:

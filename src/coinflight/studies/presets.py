@@ -166,3 +166,20 @@ __all__ = [
     "human",
     "preset",
 ]
+
+
+def psi_range(dist: TossDistribution) -> tuple[float, float, float]:
+    """The precession angle ψ (degrees) of a preset's spins: (low, median, high), the ends
+    holding 95 % of them, at the median ωx and ωy = 0 (ψ falls as ωz grows).
+
+    ψ is the cone angle between the normal and the angular momentum (Diaconis, Holmes &
+    Montgomery 2007; :func:`coinflight.core.torque_free.cone_angle`).
+    """
+    import numpy as np
+
+    from coinflight.core.torque_free import cone_angle
+
+    u = np.array([0.025, 0.5, 0.975])
+    omega = np.stack([dist.omega_x.ppf(0.5 + 0 * u), 0 * u, dist.omega_z.ppf(u)], axis=-1)
+    low, median, high = np.degrees(cone_angle(omega, *dist.moments))[::-1]
+    return float(low), float(median), float(high)

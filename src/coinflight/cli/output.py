@@ -1,0 +1,39 @@
+"""What commands print: one JSON object, or the files they wrote."""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+import typer
+
+
+def print_json(payload: dict[str, Any]) -> None:
+    """One JSON object on stdout (NumPy scalars and arrays become numbers and lists)."""
+    text = json.dumps(payload, default=_jsonable, allow_nan=False)  # whole, or an error
+    sys.stdout.write(text + "\n")
+
+
+def _jsonable(obj: Any) -> Any:
+    import numpy as np
+
+    if isinstance(obj, np.ndarray):
+        return obj.tolist()
+    if isinstance(obj, np.generic):
+        return obj.item()
+    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+
+
+def echo_written(paths: Iterable[Path]) -> None:
+    """``wrote PATH``, one line per file."""
+    for path in paths:
+        typer.echo(f"wrote {path}")
+
+
+def help_when_bare(ctx: typer.Context) -> None:
+    """A command group called without a subcommand shows its help."""
+    if ctx.invoked_subcommand is None:
+        typer.echo(ctx.get_help())

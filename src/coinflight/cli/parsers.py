@@ -1,0 +1,117 @@
+"""Parsers of command-line texts: numbers, lists, ranges and output paths.
+
+Each turns a bad text into a usage error (typer.BadParameter) or a ValueError that names the
+option and what it takes; the library's own range checks do the rest.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+
+def number(text: str) -> float:
+    """Parse a command-line number, or a usage error that names the text."""
+    try:
+        return float(text)
+    except ValueError:
+        raise typer.BadParameter(f"{text!r} is not a number") from None
+
+
+def gravity(text: str) -> float:
+    """Parse --g and check it against the library's range (coinflight.model.toss.GRAVITY) before any
+    command divides by it."""
+    from coinflight.model.toss import GRAVITY
+
+    value = number(text)
+    try:
+        return GRAVITY.check(value)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+
+
+def _checked_name(text: str, folder: bool) -> Path:
+    from coinflight._files import check_name
+
+    try:
+        check_name(text, folder=folder)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+    return Path(text)
+
+
+def output_file(text: str) -> Path:
+    """Parse an output file (--out FILE, --plot FILE): an empty text or a folder's name
+    (``.``, ``out/``) is a usage error, not the current folder or a file ``out`` (what
+    ``Path`` would silently make of them)."""
+    return _checked_name(text, folder=False)
+
+
+def output_folder(text: str) -> Path:
+    """Parse an output folder (--out DIR): an empty text is a usage error."""
+    return _checked_name(text, folder=True)
+
+
+def output_prefix(text: str) -> Path:
+    """Parse --out PREFIX: a folder's name (existing, or ending in /) means DIR/convergence."""
+    from coinflight._files import names_folder
+
+    path = _checked_name(text, folder=True)
+    return path / "convergence" if names_folder(text) or path.is_dir() else path
+
+
+def parse_numbers(text: str, name: str, example: str = "0.6,0.65,0.7") -> list[float]:
+    """Comma-separated numbers, or a ValueError naming the option, an ``example`` of what it
+    takes and the bad text."""
+    parts = [p.strip() for p in text.split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise ValueError(
+            f"{name} must be comma-separated numbers such as {example}; got {text!r}"
+        ) from None
+    return values
+
+
+def parse_sizes(text: str, option: str) -> list[int]:
+    """Comma-separated whole numbers (at least one), or a ValueError naming the option."""
+    try:
+        values = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
+    if not values:
+        raise ValueError(f"{option} {text!r}: give at least one size")
+    return values
+
+
+def parse_range(text: str, name: str, unit: str = "") -> tuple[float, float]:
+    """ "LO:HI" as two numbers (the range syntax of :func:`parse_distribution`).
+
+    A map needs a box, so a fixed value or a normal distribution is refused with a ValueError
+    naming the option and the text.
+    """
+    from coinflight.model.distributions import Uniform, parse_distribution
+
+    dist = parse_distribution(text, name, unit)
+    if not isinstance(dist, Uniform):
+        raise ValueError(
+            f"{name} must be a range LO:HI such as 60:90 for a map; got {text!r} "
+            f"({dist.describe(unit)})"
+        )
+    return dist.low, dist.high
+
+
+def parse_resolution(text: str) -> tuple[int, int]:
+    """ "N" (N×N cells) or "NTxNW" (cells along T, along the spin)."""
+    parts = text.lower().split("x")
+    try:
+        if len(parts) not in (1, 2):
+            raise ValueError
+        sizes = [int(p) for p in parts]
+    except ValueError:
+        raise ValueError(
+            f"--resolution must be N or NTxNW with whole numbers, such as 500 or 600x400; "
+            f"got {text!r}"
+        ) from None
+    return (sizes[0], sizes[-1])

@@ -1,0 +1,208 @@
+"""``coinflight plot basin``: heads and tails mapped over flight times and spins."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+
+from coinflight.cli.command import command
+from coinflight.cli.groups import CoinOptions, TableOptions
+from coinflight.cli.options import (
+    OUTPUT_PANEL,
+    TOSS_PANEL,
+    Bounces,
+    Dpi,
+    Gravity,
+    OutFile,
+    StartFace,
+    number,
+)
+from coinflight.cli.output import echo_written
+from coinflight.cli.parsers import parse_range, parse_resolution
+from coinflight.cli.surface import table_outcome, table_title
+
+if TYPE_CHECKING:
+    pass
+
+FlightTimeRange = Annotated[
+    str | None,
+    typer.Option(
+        "--flight-time",
+        "-T",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of flight times T, s \\[default: 0.6:0.9, Stefan & Cheche].",
+    ),
+]
+LaunchSpeedRange = Annotated[
+    str | None,
+    typer.Option(
+        "--launch-speed",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of upward launch speeds v0, m/s, instead of --flight-time (T = 2 v0 / g).",
+    ),
+]
+OmegaXRange = Annotated[
+    str | None,
+    typer.Option(
+        "--omega-x",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of the spin about a diameter ωx0, rad/s \\[default: 60:90].",
+    ),
+]
+OmegaY = Annotated[
+    float,
+    typer.Option(
+        "--omega-y",
+        parser=number,
+        metavar="WY",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed spin about the other diameter ωy0, rad/s.",
+    ),
+]
+OmegaZ = Annotated[
+    float,
+    typer.Option(
+        "--omega-z",
+        parser=number,
+        metavar="WZ",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed spin about the normal ωz0, rad/s (a precessing toss).",
+    ),
+]
+PsiDeg = Annotated[
+    float | None,
+    typer.Option(
+        "--psi",
+        parser=number,
+        metavar="DEG",
+        rich_help_panel=TOSS_PANEL,
+        help="Fixed angle between the normal and S, degrees; the vertical axis is then the "
+        "precession rate (see --precession-rate).",
+    ),
+]
+PrecessionRange = Annotated[
+    str | None,
+    typer.Option(
+        "--precession-rate",
+        metavar="LO:HI",
+        rich_help_panel=TOSS_PANEL,
+        help="Range of the precession rate ωp = |S|/I1, rad/s, with --psi \\[default: 60:90].",
+    ),
+]
+Resolution = Annotated[
+    str,
+    typer.Option(
+        "--resolution",
+        metavar="N|NTxNW",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Grid cells (pixels): N×N, or NT along T by NW along the spin.",
+    ),
+]
+Boundaries = Annotated[
+    bool,
+    typer.Option(
+        "--boundaries/--no-boundaries",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Overlay the analytic heads/tails boundaries (Keller's hyperbolas when planar).",
+    ),
+]
+
+
+@command
+def plot_basin(
+    *,
+    out: OutFile,
+    flight_time: FlightTimeRange = None,
+    launch_speed: LaunchSpeedRange = None,
+    omega_x: OmegaXRange = None,
+    omega_y: OmegaY = 0.0,
+    omega_z: OmegaZ = 0.0,
+    psi: PsiDeg = None,
+    precession_rate: PrecessionRange = None,
+    resolution: Resolution = "500",
+    start: StartFace = "heads",
+    g: Gravity = 9.81,
+    coin: CoinOptions,
+    boundaries: Boundaries = True,
+    dpi: Dpi = 150,
+    table: TableOptions,
+    bounces: Bounces = None,
+) -> None:
+    """Map heads and tails over a box of flight times and spins, with Keller's hyperbolas.
+
+    Example: coinflight plot basin --omega-x 60:90 --flight-time 0.6:0.9 --out basin.png
+    (on a table, after K bounces: --surface table --drop-height 0.3 --bounces K; the
+    hyperbolas, which belong to the catch, are then not drawn)
+    """
+    from coinflight.plotting.basin import plot_basin as draw
+    from coinflight.plotting.style import figure_paths, save_figure
+    from coinflight.studies.basin import basin_map
+
+    figure_paths(out, "--out")  # before the map is computed, not after
+    spin, psi_rad = _spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
+    basin = basin_map(
+        coin,
+        _time_range(flight_time, launch_speed, g),
+        spin,
+        omega_y=omega_y,
+        omega_z=omega_z,
+        psi=psi_rad,
+        resolution=parse_resolution(resolution),
+        start=start,
+        g=g,
+        **table_outcome(*table, bounces),
+    )
+    n_w, n_t = basin.face.shape
+    typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
+    if table.surface == "table":
+        typer.echo(f"P(edge) on the grid = {basin.fraction(2):.6f}")
+        ending = table_title(*table[1:], bounces)
+        figure = draw(basin, ending=ending, boundaries=False)
+    else:
+        figure = draw(basin, boundaries=boundaries)
+    echo_written(save_figure(figure, out, dpi=dpi))
+
+
+def _spin_box(
+    omega_x: str | None,
+    omega_y: float,
+    omega_z: float,
+    psi: float | None,
+    precession_rate: str | None,
+) -> tuple[tuple[float, float], float | None]:
+    """The map's spin axis (--omega-x, or --precession-rate at a fixed --psi), and ψ in
+    radians (None without --psi)."""
+    if psi is None:
+        if precession_rate is not None:
+            raise ValueError("--precession-rate goes with --psi; use --omega-x without --psi")
+        return parse_range(omega_x or "60:90", "--omega-x", "rad/s"), None
+    if omega_x is not None or omega_y != 0.0 or omega_z != 0.0:
+        raise ValueError(
+            "with --psi the spin is set by --precession-rate; drop --omega-x/--omega-y/--omega-z"
+        )
+    if not 0.0 < psi < 180.0:
+        raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
+    spin = parse_range(precession_rate or "60:90", "--precession-rate", "rad/s")
+    return spin, math.radians(psi)
+
+
+def _time_range(flight_time: str | None, launch_speed: str | None, g: float) -> tuple[float, float]:
+    """The map's flight-time axis, s: --flight-time, or --launch-speed turned into T."""
+    from coinflight.core.ballistics import flight_time as time_of_flight
+
+    if flight_time is not None and launch_speed is not None:
+        raise ValueError("give --flight-time or --launch-speed, not both")
+    if launch_speed is None:
+        return parse_range(flight_time or "0.6:0.9", "--flight-time", "s")
+    v_lo, v_hi = parse_range(launch_speed, "--launch-speed", "m/s")
+    if v_lo <= 0:
+        raise ValueError(f"--launch-speed range must be positive, got {launch_speed!r} m/s")
+    return float(time_of_flight(v_lo, g)), float(time_of_flight(v_hi, g))
+
+
+__all__ = ["plot_basin"]

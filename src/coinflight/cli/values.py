@@ -1,0 +1,119 @@
+"""Turning parsed options into the library's values (coin, toss, tosses), checking the
+combinations the command line allows (one of --flight-time and --launch-speed, …)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, NamedTuple
+
+if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.model.toss import Toss
+
+
+def resolve_coin(
+    coin: str | None, radius: float | None, thickness: float | None, mass: float | None
+) -> Coin:
+    """The coin the user asked for: a preset by name, or custom dimensions (all three)."""
+    from coinflight.model.coin import DEFAULT_COIN, Coin
+
+    custom = {"--radius": radius, "--thickness": thickness, "--mass": mass}
+    given = [k for k, val in custom.items() if val is not None]
+    if given and coin is not None:
+        raise ValueError(f"give either --coin or custom dimensions ({', '.join(given)}), not both")
+    if given:
+        missing = [k for k, val in custom.items() if val is None]
+        if missing:
+            raise ValueError(
+                "a custom coin needs --radius, --thickness and --mass; "
+                f"missing {', '.join(missing)}"
+            )
+        assert radius is not None and thickness is not None and mass is not None
+        return Coin(radius=radius, thickness=thickness, mass=mass)
+    return Coin.preset(coin if coin is not None else DEFAULT_COIN)
+
+
+class TossArgs(NamedTuple):
+    """The options of one toss: spin, one of flight time and launch speed, start face, g."""
+
+    omega: tuple[float, float, float]
+    flight_time: float | None
+    launch_speed: float | None
+    start: str
+    g: float
+
+
+def build_toss(args: TossArgs) -> Toss:
+    """The :class:`~coinflight.model.toss.Toss` for the toss options (one of T and V0 required)."""
+    from coinflight.model.toss import Toss
+
+    omega, flight_time, launch_speed, start, g = args
+    if (flight_time is None) == (launch_speed is None):
+        raise ValueError("give exactly one of --flight-time and --launch-speed")
+    if flight_time is not None:
+        return Toss(omega=omega, flight_time=flight_time, start=start, g=g)  # type: ignore[arg-type]
+    return Toss.from_launch_speed(omega, launch_speed, start=start, g=g)  # type: ignore[arg-type]
+
+
+class DistArgs(NamedTuple):
+    """The options of a range of tosses, as typed: each spin and T or v0 a distribution."""
+
+    omega_x: str
+    omega_y: str
+    omega_z: str
+    flight_time: str | None
+    launch_speed: str | None
+    start: str
+    g: float
+
+    def build(self, coin: Coin) -> TossDistribution:
+        """The :class:`~coinflight.model.ensemble.TossDistribution` these options describe."""
+        from coinflight.model.distributions import parse_distribution
+        from coinflight.model.ensemble import TossDistribution, check_launch_speed
+
+        wx = parse_distribution(self.omega_x, "--omega-x", "rad/s")
+        wy = parse_distribution(self.omega_y, "--omega-y", "rad/s")
+        wz = parse_distribution(self.omega_z, "--omega-z", "rad/s")
+        where = {"coin": coin, "start": self.start, "g": self.g}
+        if (self.flight_time is None) == (self.launch_speed is None):
+            raise ValueError("give exactly one of --flight-time and --launch-speed")
+        if self.flight_time is not None:
+            t = parse_distribution(self.flight_time, "--flight-time", "s")
+            return TossDistribution(wx, wy, wz, t, **where)  # type: ignore[arg-type]
+        assert self.launch_speed is not None
+        v0 = check_launch_speed(
+            parse_distribution(self.launch_speed, "--launch-speed", "m/s"), "--launch-speed"
+        )
+        return TossDistribution.from_launch_speed(wx, wy, wz, v0, **where)  # type: ignore[arg-type]
+
+
+class TableArgs(NamedTuple):
+    """Where the toss ends, as typed: --surface and the table's options (None: not given)."""
+
+    surface: str
+    drop_height: float | None
+    restitution: float | None
+    friction: float | None
+
+
+class AirArgs(NamedTuple):
+    """The air, as typed: --drag and --spin-damping (None: not given)."""
+
+    drag: float | None
+    spin_damping: float | None
+
+
+def simulation_seed(
+    runs: int | None,
+    seed: int | None,
+    *others: tuple[str, object],
+    run_flag: str = "--monte-carlo",
+) -> int | None:
+    """--seed, passed through (None: the library draws one and reports it); ValueError if --seed
+    or another simulation option is given without ``run_flag``, which alone runs the simulation
+    they set."""
+    if runs is None:
+        for flag, value in (("--seed", seed), *others):
+            if value is not None:
+                raise ValueError(f"{flag} needs {run_flag} N (it sets the simulation)")
+    return seed
