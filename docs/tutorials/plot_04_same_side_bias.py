@@ -37,8 +37,8 @@ for psi in (60.0, 80.0):
     sim = simulate_same_side(psi, n=100_000, seed=1, degrees=True)
     exact = float(same_side_probability(psi, degrees=True))
     print(
-        f"psi = {psi:g}: simulated {sim.p_same_side:.4f} ± {sim.stderr:.4f}, "
-        f"closed form {exact:.4f} ({(sim.p_same_side - exact) / sim.stderr:+.2f} s.e.)"
+        f"psi = {psi:g}: simulated {sim.p:.4f} ± {sim.stderr:.4f}, "
+        f"closed form {exact:.4f} ({sim.z(exact):+.2f} s.e.)"
     )
 
 # %%

@@ -43,8 +43,8 @@ from coinflight import plot_edge
 from coinflight.studies.edge import simulate_edge
 
 simulated = simulate_edge([0.1, 0.2, 0.3, 0.4, 0.6, 0.8], n=300, seed=1)
-for s in simulated:
-    print(f"h/d = {s.ratio:.1f}: {s.edges} of {s.n} on edge = {s.p_edge:.3f} ± {s.stderr:.3f}")
+for ratio, s in simulated:
+    print(f"h/d = {ratio:.1f}: {s.successes} of {s.n} on edge = {s.p:.3f} ± {s.stderr:.3f}")
 fig = plot_edge(simulated)
 
 # %%
