@@ -10,7 +10,7 @@ from scipy.optimize import brentq
 
 from coinflight import Coin, Flight, Toss
 from coinflight.core import bounce
-from coinflight.core.outcome import EDGE, HEADS, TAILS
+from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.table import Landing, TableLanding, land
 
@@ -72,7 +72,7 @@ def test_restitution_zero_no_friction_is_first_contact_outcome(coin):
 def test_bouncing_coin_settles():
     omega, v0 = _tosses(20_000, 11)
     out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.5, 0.3))
-    settled = np.isin(out.status, [bounce.SETTLED_ENERGY, bounce.SETTLED_ROCKING])
+    settled = np.isin(out.status, [Status.SETTLED_ENERGY, Status.SETTLED_ROCKING])
     assert settled.all()
     assert (out.bounces >= 1).mean() > 0.9
     assert np.all(out.settle_time >= out.first_contact)
@@ -108,7 +108,7 @@ def test_restitution_zero_never_bounces(friction):
     omega, v0 = _tosses(20_000, 23)
     out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.0, friction))
     assert np.all(out.bounces == 0)
-    assert np.all(np.isin(out.status, [bounce.SETTLED_DEAD, bounce.SETTLED_ENERGY]))
+    assert np.all(np.isin(out.status, [Status.SETTLED_DEAD, Status.SETTLED_ENERGY]))
     first = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.0, friction), max_bounces=0)
     np.testing.assert_array_equal(out.face, first.face)
 
@@ -201,7 +201,7 @@ def test_flat_drop_bounces_straight_and_stays_up(spin_z):
             NICKEL, np.array([[0.0, 0.0, spin_z]]), 1.0, start, G, Surface("table", 0.5, 0.5, 0.3)
         )
         assert out.face[0] == face
-        assert out.status[0] == bounce.SETTLED_ENERGY
+        assert out.status[0] == Status.SETTLED_ENERGY
         # First contact: the face, h/2 below the centre of mass, reaches the table.
         z0, v0 = 0.5 - NICKEL.thickness / 2, 1.0
         t_first = (v0 + math.sqrt(v0 * v0 + 2 * G * z0)) / G

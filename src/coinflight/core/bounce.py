@@ -38,6 +38,7 @@ import numpy as np
 from numba import njit, prange
 from numpy.typing import NDArray
 
+from coinflight.core.contact import Contact
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
@@ -47,19 +48,9 @@ from coinflight.core.impact import (
     lowest_depth,
     resting_face,
 )
+from coinflight.core.outcome import Status
 
-# Why a toss ended (the ``status`` array).
-SETTLED_ENERGY = 0
-"""Energy below the face/edge barrier: the outcome is certain."""
-SETTLED_DEAD = 1
-"""e = 0: the surface absorbs the coin at its first contact, which decides (Yong & Mahadevan)."""
-BOUNCE_LIMIT = 2
-"""Stopped at the contact after ``max_bounces`` bounces, as asked (basin maps)."""
-UNSETTLED = 3
-"""Still bouncing after the safety limit of impacts; the outcome is the well it is in."""
-SETTLED_ROCKING = 4
-"""The bounces died out (rebound below the rest speed); the coin rocked on its corners until
-it was trapped in a well (:func:`rock`)."""
+# Why a toss ended (the ``status`` array): :class:`coinflight.core.outcome.Status`.
 
 MAX_IMPACTS = 2_000
 MAX_STEPS = 100_000
@@ -270,34 +261,20 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
 
 
 @njit(cache=True)
-def land_one(
-    omega_body,
-    start_sign,
-    launch_speed,
-    drop_height,
-    g,
-    radius,
-    hh,
-    mass,
-    i1,
-    i3,
-    restitution,
-    friction,
-    max_bounces,
-    rest_speed,
-):
+def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status)."""
+    # The contact record (core.contact.Contact), unpacked once for the loop below.
+    radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
+    g, restitution, friction, rest_speed = c.g, c.restitution, c.friction, c.rest_speed
+    rho, edge_sine, barrier = c.reach, c.edge_sine, c.barrier
     wx, wy, wz = omega_body
     # Launch attitude: identity heads up, a half turn about lab X tails up (flips y and z).
     s = 1.0 if start_sign > 0 else -1.0
     n = (0.0, 0.0, s)
     lm = (i1 * wx, s * i1 * wy, s * i3 * wz)
     v = (0.0, 0.0, launch_speed)
-    z = drop_height  # height of the centre of mass above the surface
+    z = c.drop_height  # height of the centre of mass above the surface
     t = 0.0
-    rho = math.sqrt(radius * radius + hh * hh)
-    edge_sine = hh / rho
-    barrier = mass * g * rho
     # The coin leaves the hand and is looked for on the way down, from the apex on.
     tau = launch_speed / g
     bounces = 0
@@ -305,7 +282,7 @@ def land_one(
     for _ in range(MAX_IMPACTS):
         tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh)
         if tc < 0.0:
-            return resting_face(n[2], edge_sine), bounces, first, t, UNSETTLED
+            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
         t += tc
@@ -318,16 +295,16 @@ def land_one(
         if first < 0.0:
             first = t
         if bounces >= max_bounces:
-            return resting_face(n[2], edge_sine), bounces, first, t, BOUNCE_LIMIT
+            return resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
         v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
         omega = angular_velocity(lm, n, i1, i3)
         if tumbling_energy(v, lm, n, mass, i1, g, z) < barrier:
-            return resting_face(n[2], edge_sine), bounces, first, t, SETTLED_ENERGY
+            return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_ENERGY
         if rebound < rest_speed:
             if restitution == 0.0:
-                return resting_face(n[2], edge_sine), bounces, first, t, SETTLED_DEAD
+                return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_DEAD
             face = rock(n, omega, radius, hh, mass, i1, g)
-            return face, bounces, first, t, SETTLED_ROCKING
+            return face, bounces, first, t, Status.SETTLED_ROCKING
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
         # the downward acceleration of any point of the coin; start looking at its peak.
@@ -335,7 +312,7 @@ def land_one(
         tau = rebound / accel
         if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
             tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
-    return resting_face(n[2], edge_sine), bounces, first, t, UNSETTLED
+    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
 
 
 @njit(cache=True)
@@ -369,42 +346,15 @@ def _batch_kernel(parallel: bool) -> Any:
     loop = prange if parallel else range
 
     def batch(
-        omega,
-        start_sign,
-        launch_speed,
-        drop_height,
-        g,
-        radius,
-        hh,
-        mass,
-        i1,
-        i3,
-        restitution,
-        friction,
-        max_bounces,
-        rest_speed,
-        face,
-        bounces,
-        first,
-        settle,
-        status,
+        omega, start_sign, launch_speed, contact, max_bounces, face, bounces, first, settle, status
     ):
         for k in loop(omega.shape[0]):
             f, b, t1, ts, st = land_one(
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
-                drop_height,
-                g,
-                radius,
-                hh,
-                mass,
-                i1,
-                i3,
-                restitution,
-                friction,
+                contact,
                 max_bounces,
-                rest_speed,
             )
             face[k] = f
             bounces[k] = b
@@ -423,18 +373,9 @@ def land(
     omega: NDArray[np.float64],
     launch_speed: NDArray[np.float64],
     start_sign: NDArray[np.float64],
+    contact: Contact,
     *,
-    drop_height: float,
-    g: float,
-    radius: float,
-    thickness: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    friction: float,
     max_bounces: int = MAX_IMPACTS,
-    rest_speed: float = REST_SPEED,
     parallel: bool = True,
 ) -> tuple[
     NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
@@ -449,17 +390,12 @@ def land(
         Upward speed of the centre of mass at launch, m/s.
     start_sign : ndarray, shape (n,)
         +1 heads up at launch, −1 tails up.
-    drop_height : float
-        Launch height of the centre of mass above the surface, m (≥ 0).
-    g, radius, thickness, mass, i1, i3 : float
-        Gravity (m/s²) and the coin (m, m, kg, kg m², kg m²).
-    restitution, friction : float
-        e in [0, 1], μ ≥ 0 (see :func:`coinflight.core.impact.impact`).
+    contact : Contact
+        The coin, the surface (drop height, e, μ), gravity and the rest speed, built once by
+        :meth:`coinflight.core.contact.Contact.build`.
     max_bounces : int
         Stop at the contact that follows this many bounces and report the well the coin is in
         there (0: the first contact); by default, run until the coin settles.
-    rest_speed : float
-        Rebound speed of the contact point below which the bounces have died out, m/s.
     parallel : bool
         Spread the tosses over numba's threads (True), or run them in the calling thread with
         the GIL released (False: for callers that run several batches in their own threads).
@@ -473,7 +409,7 @@ def land(
     first_contact, settle_time : ndarray, shape (n,)
         Time of the first and of the last contact since launch, s.
     status : ndarray of int8, shape (n,)
-        Why the toss ended: SETTLED_ENERGY, SETTLED_DEAD, BOUNCE_LIMIT or UNSETTLED.
+        Why the toss ended (:class:`coinflight.core.outcome.Status`).
     """
     omega = np.ascontiguousarray(omega, dtype=np.float64).reshape(-1, 3)
     n = omega.shape[0]
@@ -485,25 +421,5 @@ def land(
     settle = np.empty(n)
     status = np.empty(n, dtype=np.int8)
     kernel = _land_batch if parallel else _land_batch_serial
-    kernel(
-        omega,
-        sign,
-        speed,
-        float(drop_height),
-        float(g),
-        float(radius),
-        0.5 * float(thickness),
-        float(mass),
-        float(i1),
-        float(i3),
-        float(restitution),
-        float(friction),
-        int(max_bounces),
-        float(rest_speed),
-        face,
-        bounces,
-        first,
-        settle,
-        status,
-    )
+    kernel(omega, sign, speed, contact, int(max_bounces), face, bounces, first, settle, status)
     return face, bounces, first, settle, status

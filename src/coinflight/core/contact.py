@@ -77,7 +77,8 @@ class Contact(NamedTuple):
         :class:`~coinflight.model.surface.Surface`) has checked every value.
         """
         hh = 0.5 * float(thickness)
-        reach = math.hypot(float(radius), hh)
+        # sqrt(r² + hh²) as the bounce kernel always computed it (hypot can differ by an ulp).
+        reach = math.sqrt(float(radius) * float(radius) + hh * hh)
         return cls(
             radius=float(radius),
             half_thickness=hh,

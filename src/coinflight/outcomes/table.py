@@ -135,9 +135,10 @@ def land(
     speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (omega.shape[0],))
     sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (omega.shape[0],))
     check_clears(coin, speed * speed / (2.0 * g), surface)
-    kwargs: dict[str, Any] = dict(
-        drop_height=surface.drop_height,
-        g=g,
+    from coinflight.core import bounce
+    from coinflight.core.contact import Contact
+
+    contact = Contact.build(  # the coin, the surface and gravity, once for every kernel
         radius=coin.radius,
         thickness=coin.thickness,
         mass=coin.mass,
@@ -145,20 +146,26 @@ def land(
         i3=i3,
         restitution=surface.restitution,
         friction=surface.friction,
+        drop_height=surface.drop_height,
+        g=g,
+        rest_speed=bounce.REST_SPEED,
     )
     if drag is not None and not drag.is_zero:
         from coinflight.core import drag as drag_kernels
 
+        model = drag_kernels.DragModel(
+            coin.mass,
+            coin.radius,
+            (i1, i1, i3),
+            g,
+            drag.coefficient,
+            drag.spin_damping,
+            drag.air_density,
+        )
+        limit = -1 if max_bounces is None else int(max_bounces)
         rows = [
-            drag_kernels.land(
-                omega[k],
-                float(speed[k]),
-                float(sign[k]),
-                drag_coefficient=drag.coefficient,
-                spin_damping=drag.spin_damping,
-                air_density=drag.air_density,
-                max_bounces=-1 if max_bounces is None else int(max_bounces),
-                **kwargs,
+            drag_kernels.land_contact(
+                omega[k], float(speed[k]), float(sign[k]), contact, model, limit
             )
             for k in range(omega.shape[0])
         ]
@@ -166,12 +173,9 @@ def land(
         return LandingOutcome(
             face.astype(np.int8), bounces.astype(np.int32), first, settle, status.astype(np.int8)
         )
-    from coinflight.core import bounce
-
-    if max_bounces is not None:
-        kwargs["max_bounces"] = int(max_bounces)
+    limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
     face, bounces, first, settle, status = bounce.land(
-        omega, speed, sign, parallel=parallel, **kwargs
+        omega, speed, sign, contact, max_bounces=limit, parallel=parallel
     )
     return LandingOutcome(face, bounces, first, settle, status)
 
