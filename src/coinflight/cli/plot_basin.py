@@ -8,7 +8,8 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.command import command
-from coinflight.cli.groups import CoinOptions, TableOptions
+from coinflight.cli.groups import CoinOptions
+from coinflight.cli.landing_groups import TableOptions
 from coinflight.cli.options import (
     OUTPUT_PANEL,
     TOSS_PANEL,
