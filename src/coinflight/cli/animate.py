@@ -3,29 +3,17 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import Annotated
 
 import typer
 
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, TossOptions
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, number
-from coinflight.cli.parsers import output_file
+from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, number, out_file
 from coinflight.cli.values import build_toss
 
-if TYPE_CHECKING:
-    pass
-
 MovieFile = Annotated[
-    Path,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE",
-        parser=output_file,
-        rich_help_panel=OUTPUT_PANEL,
-        help=f"Animation to write: .gif (always) or .mp4 (needs ffmpeg). {OUTPUT_HELP}",
-    ),
+    Path, out_file(f"Animation to write: .gif (always) or .mp4 (needs ffmpeg). {OUTPUT_HELP}")
 ]
 Frames = Annotated[
     int | None,

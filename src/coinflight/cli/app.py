@@ -15,15 +15,11 @@ from coinflight.cli import data as _data
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
-from coinflight.cli.errors import (
-    INTERRUPTED,
-    OneLineErrors,
-    exit_now,
-    guard_stdout,
-    interrupted,
-)
+from coinflight.cli.errors import OneLineErrors
+from coinflight.cli.exits import INTERRUPTED, exit_now, interrupted
 from coinflight.cli.output import help_when_bare
 from coinflight.cli.plot import plot_app
+from coinflight.cli.stdout import guard_stdout
 
 app = typer.Typer(
     cls=OneLineErrors,
@@ -79,7 +75,7 @@ for _name, _command in _COMMANDS.items():
 def main() -> None:
     """Console-script entry point (``coinflight`` and ``python -m coinflight``).
 
-    Standard output is guarded first (:func:`coinflight.cli.errors.guard_stdout`): a closed
+    Standard output is guarded first (:func:`coinflight.cli.stdout.guard_stdout`): a closed
     pipe ends quietly (exit 141), a full disk or closed stdout is one line and exit 2, Ctrl-C
     is ``coinflight: interrupted`` and exit 130.
     """

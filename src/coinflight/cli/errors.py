@@ -16,129 +16,18 @@ The standard streams are handled as command-line tools handle them:
 
 from __future__ import annotations
 
-import errno
-import io
 import os
 import sys
 import warnings
 from collections.abc import Iterator, Sequence
-from contextlib import contextmanager, suppress
+from contextlib import contextmanager
 from typing import Any
 
 import typer
 from typer.core import TyperGroup
 
-USAGE_ERROR = 2
-INTERRUPTED = 130
-"""Exit code after Ctrl-C: 128 + SIGINT."""
-PIPE_CLOSED = 141
-"""Exit code when standard output's reader has gone: 128 + SIGPIPE."""
-
-
-def fail(message: str, code: int = USAGE_ERROR) -> None:
-    """Print ``coinflight: error: message`` on stderr and exit with ``code``."""
-    _say(f"coinflight: error: {message}")
-    sys.exit(code)
-
-
-def interrupted() -> None:
-    """After Ctrl-C: ``coinflight: interrupted`` on stderr and exit code 130."""
-    _say("coinflight: interrupted")
-    sys.exit(INTERRUPTED)
-
-
-def exit_now(code: int) -> None:
-    """End the process at once with ``code`` (after Ctrl-C, in the console command only).
-
-    The outputs' staging folders are already gone (removed as the interrupt unwound); what
-    is skipped is waiting for worker threads to finish their chunk, and CPython's habit of
-    ending with SIGINT itself, not exit code 130, when the interrupt landed in an import.
-    """
-    for stream in (sys.stdout, sys.stderr):
-        with suppress(OSError, ValueError, AttributeError):
-            stream.flush()
-    os._exit(code)
-
-
-def _say(line: str) -> None:
-    """One line on stderr; if stderr itself cannot be written, nothing (the exit code tells)."""
-    with suppress(OSError, ValueError):
-        typer.echo(line, err=True)
-
-
-class StdoutError(OSError):
-    """A write to standard output failed (raised by the stream :func:`guard_stdout` installs)."""
-
-
-class _RawStdout(io.RawIOBase):
-    """File descriptor 1 whose write errors are :class:`StdoutError`, so that a failure of
-    standard output is never confused with one of another file."""
-
-    def __init__(self, fd: int = 1) -> None:
-        super().__init__()
-        self._fd = fd
-
-    def writable(self) -> bool:
-        return True
-
-    def fileno(self) -> int:
-        return self._fd
-
-    def isatty(self) -> bool:
-        return os.isatty(self._fd)
-
-    def write(self, data: Any) -> int:
-        try:
-            return os.write(self._fd, data)
-        except OSError as exc:
-            raise StdoutError(exc.errno, exc.strerror) from None
-
-
-def guard_stdout() -> None:
-    """Prepare the standard streams of the console command (``main``), before any command runs.
-
-    Closed descriptors 0-2 are reopened on ``/dev/null``, so that no output file is ever opened
-    as one of them (a library writing to descriptor 2 would write into it); a closed standard
-    output is then refused (one line, exit 2). ``sys.stdout`` becomes the same text stream over
-    a writer whose errors are :class:`StdoutError`.
-    """
-    closed = []
-    for fd in (0, 1, 2):
-        try:
-            os.fstat(fd)
-        except OSError:
-            closed.append(fd)
-            null = os.open(os.devnull, os.O_RDWR)
-            if null != fd:
-                os.dup2(null, fd)
-                os.close(null)
-    if 1 in closed or sys.stdout is None:
-        fail(f"cannot write to standard output: {os.strerror(errno.EBADF)}")
-    old = sys.stdout
-    old.flush()
-    sys.stdout = io.TextIOWrapper(
-        io.BufferedWriter(_RawStdout(1)),
-        encoding=old.encoding,
-        errors=old.errors,
-        line_buffering=bool(old.line_buffering),
-    )
-
-
-def _is_stdout_failure(exc: BaseException) -> bool:
-    return isinstance(exc, StdoutError | BrokenPipeError)
-
-
-def _stdout_failed(exc: OSError) -> None:
-    """End the command after standard output failed: quietly for a closed pipe, else one line."""
-    stream = sys.stdout
-    raw = getattr(getattr(stream, "buffer", None), "raw", None)
-    if isinstance(raw, _RawStdout):  # point descriptor 1 at /dev/null: the last flush succeeds
-        null = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(null, raw.fileno())
-        os.close(null)
-    if exc.errno == errno.EPIPE:
-        sys.exit(PIPE_CLOSED)
-    fail(f"cannot write to standard output: {exc.strerror or exc}")
+from coinflight.cli.exits import fail, interrupted, say
+from coinflight.cli.stdout import is_stdout_failure, stdout_failed
 
 
 class _Escape(Exception):
@@ -157,7 +46,7 @@ def _escaping() -> Iterator[None]:
     except KeyboardInterrupt as exc:
         raise _Escape(exc) from exc
     except OSError as exc:
-        if _is_stdout_failure(exc):
+        if is_stdout_failure(exc):
             raise _Escape(exc) from exc
         raise
 
@@ -202,9 +91,9 @@ class OneLineErrors(TyperGroup):
         except KeyboardInterrupt:
             interrupted()
         except OSError as exc:
-            if not _is_stdout_failure(exc):
+            if not is_stdout_failure(exc):
                 raise
-            _stdout_failed(exc)
+            stdout_failed(exc)
         except typer.TyperException as exc:
             fail(_one_line(exc.format_message()), exc.exit_code)
         except typer.Abort:
@@ -233,7 +122,7 @@ def one_line_warnings() -> Iterator[None]:
                 default(message, category, *args, **kw)
             elif (text := _one_line(str(message))) not in shown:
                 shown.add(text)
-                _say(f"coinflight: warning: {text}")
+                say(f"coinflight: warning: {text}")
 
         warnings.showwarning = show
         yield

@@ -1,5 +1,6 @@
 """Option groups: several options a command receives as one value (see
-:mod:`coinflight.cli.command`). Each group is defined here once, with the options it shows.
+:mod:`coinflight.cli.command`). Each group is defined here once, with the options it shows;
+the landing and the air are in :mod:`coinflight.cli.landing_groups`.
 """
 
 from __future__ import annotations
@@ -11,14 +12,13 @@ import typer
 from coinflight.cli.command import Group
 from coinflight.cli.options import (
     COIN_PANEL,
-    SURFACE_PANEL,
     TOSS_PANEL,
     CoinName,
     Gravity,
     StartFace,
     number_option,
 )
-from coinflight.cli.values import AirArgs, DistArgs, TableArgs, TossArgs, resolve_coin
+from coinflight.cli.values import DistArgs, TossArgs, resolve_coin
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
@@ -131,91 +131,3 @@ TossesOptions = Annotated[DistArgs, _tosses("80")]
 """--omega-x/-y/-z, --flight-time or --launch-speed as distributions, --start, --g."""
 ConvergenceTossesOptions = Annotated[DistArgs, _tosses("60:90")]
 """As :data:`TossesOptions`, with the paper's Fig 2a spin range as the default."""
-# --- where the toss ends, and the air -------------------------------------------------------
-SurfaceKind = Annotated[
-    str,
-    typer.Option(
-        "--surface",
-        metavar="hand|table",
-        rich_help_panel=SURFACE_PANEL,
-        help="hand: caught at launch height (no bounce); table: falls onto a hard surface, "
-        "bounces and settles heads, tails or on edge.",
-    ),
-]
-_TABLE = "table: "
-TABLE = Group(
-    {
-        "surface": (SurfaceKind, "hand"),
-        "drop_height": (
-            Annotated[
-                float | None,
-                number_option(
-                    "--drop-height",
-                    "D",
-                    SURFACE_PANEL,
-                    _TABLE + "how far the surface lies below the launch height, m (default 0).",
-                ),
-            ],
-            None,
-        ),
-        "restitution": (
-            Annotated[
-                float | None,
-                number_option(
-                    "--restitution",
-                    "E",
-                    SURFACE_PANEL,
-                    _TABLE + "coefficient of restitution in [0, 1] (default 0.5; 0 lands dead).",
-                ),
-            ],
-            None,
-        ),
-        "friction": (
-            Annotated[
-                float | None,
-                number_option(
-                    "--friction",
-                    "MU",
-                    SURFACE_PANEL,
-                    _TABLE + "Coulomb friction coefficient ≥ 0 (default 0.3).",
-                ),
-            ],
-            None,
-        ),
-    },
-    TableArgs,
-)
-TableOptions = Annotated[TableArgs, TABLE]
-"""--surface and the table's --drop-height, --restitution, --friction, as typed."""
-AIR = Group(
-    {
-        "drag": (
-            Annotated[
-                float | None,
-                number_option(
-                    "--drag",
-                    "CD",
-                    SURFACE_PANEL,
-                    "Air drag coefficient C_d ≥ 0 on the face area (1.17: a flat disc); "
-                    "integrated numerically, slower. Default 0 (no air).",
-                ),
-            ],
-            None,
-        ),
-        "spin_damping": (
-            Annotated[
-                float | None,
-                number_option(
-                    "--spin-damping",
-                    "K",
-                    SURFACE_PANEL,
-                    "Damping torque −K ω on the spin, N m s ≥ 0 (default 0).",
-                ),
-            ],
-            None,
-        ),
-    },
-    AirArgs,
-)
-AirOptions = Annotated[AirArgs, AIR]
-"""--drag and --spin-damping, as typed."""

@@ -30,11 +30,17 @@ PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
 
 
-def number_option(flag: str, metavar: str, panel: str, help: str, *aliases: str) -> Any:
+def option(
+    flag: str, *aliases: str, metavar: str | None, panel: str | None, help: str, **extra: Any
+) -> Any:
+    """An option with its value's name, its help panel and its help (``extra``: typer's
+    other settings, e.g. ``parser``, ``min``)."""
+    return typer.Option(flag, *aliases, metavar=metavar, rich_help_panel=panel, help=help, **extra)
+
+
+def number_option(flag: str, metavar: str, panel: str | None, help: str, *aliases: str) -> Any:
     """A numeric option (parsed by :func:`~coinflight.cli.parsers.number`)."""
-    return typer.Option(
-        flag, *aliases, parser=number, metavar=metavar, rich_help_panel=panel, help=help
-    )
+    return option(flag, *aliases, metavar=metavar, panel=panel, help=help, parser=number)
 
 
 def _seed(
@@ -52,28 +58,25 @@ def _preset(panel: str, help: str) -> Any:
 # --- the coin and the toss ---------------------------------------------------------------
 CoinName = Annotated[
     str | None,
-    typer.Option(
+    option(
         "--coin",
         metavar="NAME",
-        rich_help_panel=COIN_PANEL,
+        panel=COIN_PANEL,
         help="A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, "
         "eur-1, eur-2, eur-50c, gbp-1. Default us-quarter.",
     ),
 ]
 StartFace = Annotated[
-    str,
-    typer.Option(
-        "--start", metavar="heads|tails", rich_help_panel=TOSS_PANEL, help="Face up at launch."
-    ),
+    str, option("--start", metavar="heads|tails", panel=TOSS_PANEL, help="Face up at launch.")
 ]
 Gravity = Annotated[
     float,
-    typer.Option(
+    option(
         "--g",
-        parser=gravity,
         metavar="G",
-        rich_help_panel=TOSS_PANEL,
+        panel=TOSS_PANEL,
         help="Gravitational acceleration, m/s².",
+        parser=gravity,
     ),
 ]
 TossPreset = Annotated[
@@ -96,10 +99,10 @@ PsiPreset = Annotated[
 
 Bounces = Annotated[
     int | None,
-    typer.Option(
+    option(
         "--bounces",
         metavar="K",
-        rich_help_panel=SURFACE_PANEL,
+        panel=SURFACE_PANEL,
         help="table: stop at the contact after K bounces (0: the first contact) and report "
         "the well the coin is in; default: bounce until it settles.",
     ),
@@ -129,22 +132,22 @@ SimulateSeed = Annotated[
 PaperSeed = Annotated[int, _seed("Seed of method B's random events (reported).", metavar=None)]
 Threads = Annotated[
     int | None,
-    typer.Option(
+    option(
         "--threads",
         metavar="K",
-        rich_help_panel=METHOD_PANEL,
+        panel=METHOD_PANEL,
         help="Worker threads (default: all CPUs). The result does not depend on it.",
     ),
 ]
 MonteCarlo = Annotated[
     int | None,
-    typer.Option(
+    option(
         "--monte-carlo",
-        min=1,
         metavar="N",
-        rich_help_panel=SIM_PANEL,
+        panel=SIM_PANEL,
         help="Also simulate N ≥ 100 tosses of the full torque-free flight (random flight time and "
         "spin at the given ψ) and report their same-side fraction with its standard error.",
+        min=1,
     ),
 ]
 
@@ -161,16 +164,18 @@ Quiet = Annotated[
     bool,
     typer.Option("--quiet", "-q", rich_help_panel=OUTPUT_PANEL, help="No progress bar on stderr."),
 ]
+
+
+def out_file(help: str) -> Any:
+    """--out/-o FILE: the file a command writes, checked as an output path."""
+    return option("--out", "-o", metavar="FILE", panel=OUTPUT_PANEL, help=help, parser=output_file)
+
+
 OutFile = Annotated[
     Path,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE",
-        parser=output_file,
-        rich_help_panel=OUTPUT_PANEL,
-        help="Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
-        f"without a suffix, FILE.png and FILE.svg (written together). {OUTPUT_HELP}",
+    out_file(
+        "Image file to write; the format follows the suffix (.png, .svg, .pdf, …); "
+        f"without a suffix, FILE.png and FILE.svg (written together). {OUTPUT_HELP}"
     ),
 ]
 Dpi = Annotated[

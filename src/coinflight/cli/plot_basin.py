@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Annotated
+from typing import Annotated
 
 import typer
 
 from coinflight.cli.command import command
-from coinflight.cli.groups import CoinOptions, TableOptions
+from coinflight.cli.groups import CoinOptions
+from coinflight.cli.landing_groups import TableOptions
 from coinflight.cli.options import (
     OUTPUT_PANEL,
     TOSS_PANEL,
@@ -17,89 +18,69 @@ from coinflight.cli.options import (
     Gravity,
     OutFile,
     StartFace,
-    number,
+    number_option,
+    option,
 )
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_range, parse_resolution
 from coinflight.cli.surface import table_outcome, table_title
 
-if TYPE_CHECKING:
-    pass
+
+def _range(flag: str, help: str, *aliases: str) -> object:
+    """A LO:HI range of the map's toss (parsed by :func:`~coinflight.cli.parsers.parse_range`)."""
+    return option(flag, *aliases, metavar="LO:HI", panel=TOSS_PANEL, help=help)
+
 
 FlightTimeRange = Annotated[
     str | None,
-    typer.Option(
-        "--flight-time",
-        "-T",
-        metavar="LO:HI",
-        rich_help_panel=TOSS_PANEL,
-        help="Range of flight times T, s \\[default: 0.6:0.9, Stefan & Cheche].",
+    _range(
+        "--flight-time", "Range of flight times T, s \\[default: 0.6:0.9, Stefan & Cheche].", "-T"
     ),
 ]
 LaunchSpeedRange = Annotated[
     str | None,
-    typer.Option(
+    _range(
         "--launch-speed",
-        metavar="LO:HI",
-        rich_help_panel=TOSS_PANEL,
-        help="Range of upward launch speeds v0, m/s, instead of --flight-time (T = 2 v0 / g).",
+        "Range of upward launch speeds v0, m/s, instead of --flight-time (T = 2 v0 / g).",
     ),
 ]
 OmegaXRange = Annotated[
     str | None,
-    typer.Option(
-        "--omega-x",
-        metavar="LO:HI",
-        rich_help_panel=TOSS_PANEL,
-        help="Range of the spin about a diameter ωx0, rad/s \\[default: 60:90].",
-    ),
+    _range("--omega-x", "Range of the spin about a diameter ωx0, rad/s \\[default: 60:90]."),
 ]
 OmegaY = Annotated[
     float,
-    typer.Option(
-        "--omega-y",
-        parser=number,
-        metavar="WY",
-        rich_help_panel=TOSS_PANEL,
-        help="Fixed spin about the other diameter ωy0, rad/s.",
-    ),
+    number_option("--omega-y", "WY", TOSS_PANEL, "Fixed spin about the other diameter ωy0, rad/s."),
 ]
 OmegaZ = Annotated[
     float,
-    typer.Option(
-        "--omega-z",
-        parser=number,
-        metavar="WZ",
-        rich_help_panel=TOSS_PANEL,
-        help="Fixed spin about the normal ωz0, rad/s (a precessing toss).",
+    number_option(
+        "--omega-z", "WZ", TOSS_PANEL, "Fixed spin about the normal ωz0, rad/s (a precessing toss)."
     ),
 ]
 PsiDeg = Annotated[
     float | None,
-    typer.Option(
+    number_option(
         "--psi",
-        parser=number,
-        metavar="DEG",
-        rich_help_panel=TOSS_PANEL,
-        help="Fixed angle between the normal and S, degrees; the vertical axis is then the "
+        "DEG",
+        TOSS_PANEL,
+        "Fixed angle between the normal and S, degrees; the vertical axis is then the "
         "precession rate (see --precession-rate).",
     ),
 ]
 PrecessionRange = Annotated[
     str | None,
-    typer.Option(
+    _range(
         "--precession-rate",
-        metavar="LO:HI",
-        rich_help_panel=TOSS_PANEL,
-        help="Range of the precession rate ωp = |S|/I1, rad/s, with --psi \\[default: 60:90].",
+        "Range of the precession rate ωp = |S|/I1, rad/s, with --psi \\[default: 60:90].",
     ),
 ]
 Resolution = Annotated[
     str,
-    typer.Option(
+    option(
         "--resolution",
         metavar="N|NTxNW",
-        rich_help_panel=OUTPUT_PANEL,
+        panel=OUTPUT_PANEL,
         help="Grid cells (pixels): N×N, or NT along T by NW along the spin.",
     ),
 ]

@@ -13,7 +13,8 @@ from coinflight.cli.options import (
     MonteCarlo,
     OutFile,
     SimulationSeed,
-    number,
+    number_option,
+    option,
 )
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers
@@ -22,20 +23,19 @@ from coinflight.cli.values import simulation_seed
 PSI_POINTS = "45,50,55,60,70,80,90,100,110,120,130,135"
 Measured = Annotated[
     float | None,
-    typer.Option(
+    number_option(
         "--measured",
-        parser=number,
-        metavar="P",
-        rich_help_panel=PSI_PANEL,
-        help="Mark a measured same-side rate (e.g. 0.5077, Bartoš et al.) and the ψ that gives it.",
+        "P",
+        PSI_PANEL,
+        "Mark a measured same-side rate (e.g. 0.5077, Bartoš et al.) and the ψ that gives it.",
     ),
 ]
 PsiPoints = Annotated[
     str | None,
-    typer.Option(
+    option(
         "--psi-points",
         metavar="DEG,DEG,...",
-        rich_help_panel=SIM_PANEL,
+        panel=SIM_PANEL,
         help=f"Angles (degrees) at which to simulate with --monte-carlo \\[default: {PSI_POINTS}].",
     ),
 ]

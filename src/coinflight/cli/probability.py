@@ -7,8 +7,9 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from coinflight.cli.command import command
-from coinflight.cli.groups import AirOptions, CoinOptions, TableOptions, TossesOptions
+from coinflight.cli.groups import CoinOptions, TossesOptions
 from coinflight.cli.landing import surface_payload
+from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import (
     METHOD_PANEL,
     JsonFlag,

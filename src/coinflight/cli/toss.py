@@ -8,7 +8,8 @@ from typing import TYPE_CHECKING
 import typer
 
 from coinflight.cli.command import command
-from coinflight.cli.groups import AirOptions, CoinOptions, TableOptions, TossOptions
+from coinflight.cli.groups import CoinOptions, TossOptions
+from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import Bounces, JsonFlag, print_json
 from coinflight.cli.surface import build_drag, build_surface, check_bounces, report_landing
 from coinflight.cli.values import build_toss

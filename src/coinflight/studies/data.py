@@ -34,6 +34,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -45,6 +46,8 @@ COLUMNS = ("person", "hsame", "hdiff", "tsame", "tdiff", "same", "flips")
 
 INTERVAL_METHODS = ("exact", "wilson")
 """Binomial interval methods: Clopper-Pearson ("exact") and Wilson score."""
+INTERVAL_NAMES = {"exact": "Clopper-Pearson", "wilson": "Wilson"}
+"""The printed name of each interval method."""
 
 CONFIDENCE = 0.95
 
@@ -682,6 +685,127 @@ class CountsSummary:
     psi: PsiFit
     heterogeneity: Heterogeneity
 
+    def to_dict(self, psi_sd_deg: float) -> dict[str, Any]:
+        """The pooled and per-person statistics as JSON-ready values (ψ in degrees).
+
+        ``psi_sd_deg`` is the spread of ψ as the caller gave it, degrees (the fit keeps
+        radians, and degrees → radians → degrees need not round-trip exactly).
+        """
+        same, heads, fit = self.same_side, self.heads, self.psi
+        return {
+            "people": len(self.people),
+            "flips": self.flips,
+            "same": same.successes,
+            "p_same_side": same.estimate,
+            "ci95": list(same.ci95),
+            "p_value": same.p_value,
+            "z": same.z,
+            "heads": heads.successes,
+            "p_heads": heads.estimate,
+            "ci95_heads": list(heads.ci95),
+            "p_value_heads": heads.p_value,
+            "interval": INTERVAL_NAMES[same.method],
+            "psi_deg": None if fit.psi is None else math.degrees(fit.psi),
+            "psi_ci95_deg": None if fit.ci95 is None else [math.degrees(x) for x in fit.ci95],
+            "psi_model": fit.model,
+            "psi_sd_deg": psi_sd_deg,
+            "psi_ci95_limited": fit.limited,
+            "heterogeneity": {
+                "chi2": self.heterogeneity.chi2,
+                "dof": self.heterogeneity.dof,
+                "p_value": self.heterogeneity.p_value,
+            },
+            "p_same_side_floor": fit.floor,
+            "per_person": [
+                {
+                    "person": name,
+                    "same": p.successes,
+                    "flips": p.trials,
+                    "p_same_side": p.estimate,
+                    "ci95": list(p.ci95),
+                    "p_value": p.p_value,
+                }
+                for name, p in self.people
+            ],
+        }
+
+    def report(self, source: str, psi_sd_deg: float) -> list[str]:
+        """The text report, one line each: the pooled rates and tests, ψ, the heterogeneity
+        test and the per-person rates (``psi_sd_deg`` as in :meth:`to_dict`)."""
+        method = INTERVAL_NAMES[self.same_side.method]
+        lines = [f"{source}: {len(self.people)} people, {self.flips:,} flips"]
+        for label, p in (("same side:", self.same_side), ("heads:    ", self.heads)):
+            lines.append(
+                f"{label} {p.successes:,} of {p.trials:,} = {p.estimate:.5f}, "
+                f"95% {method} interval [{p.ci95[0]:.5f}, {p.ci95[1]:.5f}]; "
+                f"test against 1/2: p = {p.p_value:.2g} (z = {p.z:.2f})"
+            )
+        lines.append(self._psi_line(psi_sd_deg))
+        het = self.heterogeneity
+        lines.append(
+            f"between people: χ² = {het.chi2:.1f} on {het.dof} degrees of freedom, p = "
+            f"{het.p_value:.2g} (test that everyone has the same same-side rate)"
+        )
+        lines.append("per person (same side of flips, rate, 95% interval):")
+        width = max(len(name) for name, _ in self.people)
+        lines.extend(
+            f"  {name:<{width}} {p.successes:>7,} of {p.trials:>7,}  {p.estimate:.4f}  "
+            f"[{p.ci95[0]:.4f}, {p.ci95[1]:.4f}]"
+            for name, p in self.people
+        )
+        return lines
+
+    def _psi_line(self, psi_sd_deg: float) -> str:
+        fit = self.psi
+        what = (
+            "a fixed ψ for every flip"
+            if fit.model == "fixed"
+            else f"the mean of a normal ψ distribution with sd {psi_sd_deg:g}°"
+        )
+        if fit.psi is None or fit.ci95 is None:
+            return (
+                f"precession (Diaconis et al. 2007, {what}): no ψ gives this same-side rate; "
+                f"the model gives at least {fit.floor:.5f}"
+            )
+        lo, hi = (math.degrees(x) for x in fit.ci95)
+        limit = " (an end capped at 90°: that rate is not reached)" if fit.limited else ""
+        return (
+            f"precession (Diaconis et al. 2007, {what}): ψ = {math.degrees(fit.psi):.2f}°, "
+            f"95% interval [{lo:.2f}°, {hi:.2f}°]{limit}"
+        )
+
+
+def counts_source(
+    dataset: str | None = None, counts: str | os.PathLike[str] | None = None
+) -> tuple[CountsTable, str, dict[str, Any]]:
+    """The counts to summarize: a shipped dataset or a file.
+
+    The dataset defaults to :data:`coinflight.datasets.DEFAULT_DATASET`. Returns the table, a
+    one-line label of its source (name, citation key and DOI, or the path) and its description
+    as JSON-ready values (``dataset`` is None for a file).
+    """
+    if dataset is not None and counts is not None:
+        raise ValueError(
+            f"give either --dataset or --counts, not both (got --dataset {dataset} and "
+            f"--counts {counts})"
+        )
+    if counts is not None:
+        return read_counts(counts), str(counts), {"dataset": None, "source": str(counts)}
+    from coinflight.datasets import DATASETS, DEFAULT_DATASET
+
+    name = DEFAULT_DATASET if dataset is None else dataset
+    table = load_dataset(name)
+    shipped = DATASETS[name]
+    described: dict[str, Any] = {
+        "dataset": name,
+        "source": name,
+        "title": shipped.title,
+        "citation": shipped.citation,
+        "doi": shipped.doi,
+        "provenance": shipped.provenance,
+    }
+    return table, f"{name} ({shipped.short}, doi:{shipped.doi})", described
+
 
 def summarize(table: CountsTable, method: str = "exact", psi_sd: float = 0.0) -> CountsSummary:
     """Pooled same-side and heads rates with intervals and tests, per-person rates and their
@@ -717,6 +841,7 @@ def summarize(table: CountsTable, method: str = "exact", psi_sd: float = 0.0) ->
 __all__ = [
     "COLUMNS",
     "INTERVAL_METHODS",
+    "INTERVAL_NAMES",
     "MAX_FILE_BYTES",
     "MAX_FLIPS",
     "MAX_LINE_CHARS",
@@ -727,6 +852,7 @@ __all__ = [
     "PersonCounts",
     "Proportion",
     "PsiFit",
+    "counts_source",
     "fit_psi",
     "heterogeneity",
     "load_dataset",

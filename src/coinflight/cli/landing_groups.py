@@ -1,0 +1,100 @@
+"""Option groups of where a toss ends and the air it flies through (see
+:mod:`coinflight.cli.command`): --surface and the table's options, --drag and the air's."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.command import Group
+from coinflight.cli.options import SURFACE_PANEL, number_option
+from coinflight.cli.values import AirArgs, TableArgs
+
+SurfaceKind = Annotated[
+    str,
+    typer.Option(
+        "--surface",
+        metavar="hand|table",
+        rich_help_panel=SURFACE_PANEL,
+        help="hand: caught at launch height (no bounce); table: falls onto a hard surface, "
+        "bounces and settles heads, tails or on edge.",
+    ),
+]
+_TABLE = "table: "
+TABLE = Group(
+    {
+        "surface": (SurfaceKind, "hand"),
+        "drop_height": (
+            Annotated[
+                float | None,
+                number_option(
+                    "--drop-height",
+                    "D",
+                    SURFACE_PANEL,
+                    _TABLE + "how far the surface lies below the launch height, m (default 0).",
+                ),
+            ],
+            None,
+        ),
+        "restitution": (
+            Annotated[
+                float | None,
+                number_option(
+                    "--restitution",
+                    "E",
+                    SURFACE_PANEL,
+                    _TABLE + "coefficient of restitution in [0, 1] (default 0.5; 0 lands dead).",
+                ),
+            ],
+            None,
+        ),
+        "friction": (
+            Annotated[
+                float | None,
+                number_option(
+                    "--friction",
+                    "MU",
+                    SURFACE_PANEL,
+                    _TABLE + "Coulomb friction coefficient ≥ 0 (default 0.3).",
+                ),
+            ],
+            None,
+        ),
+    },
+    TableArgs,
+)
+TableOptions = Annotated[TableArgs, TABLE]
+"""--surface and the table's --drop-height, --restitution, --friction, as typed."""
+AIR = Group(
+    {
+        "drag": (
+            Annotated[
+                float | None,
+                number_option(
+                    "--drag",
+                    "CD",
+                    SURFACE_PANEL,
+                    "Air drag coefficient C_d ≥ 0 on the face area (1.17: a flat disc); "
+                    "integrated numerically, slower. Default 0 (no air).",
+                ),
+            ],
+            None,
+        ),
+        "spin_damping": (
+            Annotated[
+                float | None,
+                number_option(
+                    "--spin-damping",
+                    "K",
+                    SURFACE_PANEL,
+                    "Damping torque −K ω on the spin, N m s ≥ 0 (default 0).",
+                ),
+            ],
+            None,
+        ),
+    },
+    AirArgs,
+)
+AirOptions = Annotated[AirArgs, AIR]
+"""--drag and --spin-damping, as typed."""
