@@ -16,6 +16,7 @@ from coinflight.studies.edge import (
     SIM_DROP,
     SIM_LAUNCH_SPEED,
     SIM_SPIN,
+    EdgeModel,
     edge_probability,
     ratio_for,
 )
@@ -56,7 +57,7 @@ def simulation_text(simulated: Sequence[tuple[float, BinomialEstimate]]) -> str:
     )
 
 
-def model_distance(ratio: float, estimate: BinomialEstimate, model: str) -> float:
+def model_distance(ratio: float, estimate: BinomialEstimate, model: EdgeModel) -> float:
     """(p̂ − P_model(h/d)) / s.e., the s.e. the model's own binomial √(P(1 − P)/n).
 
     The model's s.e. rather than the estimate's, so that a point with no edge at all (p̂ = 0,
