@@ -1,7 +1,8 @@
 """The coin at launch and at catch, drawn as in Stefan & Cheche's Figs 2c-d and 3c-f.
 
-Each panel shows the coin's rim at launch (red) and at catch (blue) about its centre of mass,
-with the heads normal n and the angular momentum S as arrows; a last panel shows the path of n
+Each panel shows the coin's rim at launch (vermillion) and at catch (blue) about its centre of
+mass, the caught coin's heads face blue and tails face orange, with the heads normal n and the
+angular momentum S as arrows; a last panel shows the path of n
 on the unit sphere, the precession cone about S (Diaconis, Holmes & Montgomery 2007).
 """
 
@@ -93,7 +94,7 @@ def normal_path(coin: Coin, toss: Toss, t: ArrayLike) -> FloatArray:
 
 
 def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 2) -> Figure:
-    """Coin at launch (red) and at catch (blue), one panel per toss, plus the precession cone.
+    """Coin at launch (vermillion) and at catch (blue), one panel per toss, and the precession cone.
 
     Parameters
     ----------
