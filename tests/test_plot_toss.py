@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 from _images import assert_nontrivial, colour_fraction
 from coinflight import Coin, Flight, Toss
 from coinflight.cli import app
-from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR
+from coinflight.plotting.style import CATCH_COLOR, HEADS_COLOR, LAUNCH_COLOR, TAILS_COLOR
 from coinflight.plotting.toss import coin_rim, normal_path, plot_toss
 
 QUARTER = Coin.preset("us-quarter")
@@ -133,3 +133,31 @@ def test_four_panels_keep_their_labels_clear_and_the_sphere_names_each_catch():
             assert fig.bbox.contains(*box(label).min) and fig.bbox.contains(*box(label).max)
     names = [t.get_text() for t in sphere.texts]
     assert [f"T = {t:g} s" for t in times] == [n for n in names if n.startswith("T = ")]
+
+
+def _view_direction(ax) -> np.ndarray:
+    el, az = math.radians(ax.elev), math.radians(ax.azim)
+    return np.array([math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)])
+
+
+@pytest.mark.parametrize(
+    ("omega", "flight_time", "letter"),
+    [((80.0, 0.0, 0.0), 0.7, "H"), ((90.0, 30.0, 0.0), 0.7, "T"), ((0.0, 0.0, 5.0), 0.5, "H")],
+)
+def test_camera_sees_the_face_up_and_marks_it(omega, flight_time, letter):
+    # Stefan & Cheche Fig 2c (ω0 = (80, 0, 0) rad/s, T = 0.7 s: 8.913 turns, heads up by eq 14);
+    # Fig 3e (90, 30, 0), T = 0.7 s: 10.569 turns, tails up; a flat spin: heads up, lying flat.
+    toss = Toss(omega=omega, flight_time=flight_time)
+    n = np.asarray(Flight(QUARTER, toss).catch.normal)
+    up = n if n[2] >= 0 else -n
+    ax = plot_toss(QUARTER, toss).axes[0]
+    # The old camera (elev 20°, azim −30°) saw Fig 2c's caught coin edge-on: cos = 0.17.
+    assert _view_direction(ax) @ up > 0.5
+    assert [t.get_text() for t in ax.texts if t.get_text() in ("H", "T")] == [letter]
+    # The face up is drawn last and strong, in the heads or tails colour.
+    faces = [c for c in ax.collections if len(c.get_facecolor()) == 1]
+    top = faces[-1].get_facecolor()[0]
+    colour = HEADS_COLOR if letter == "H" else TAILS_COLOR
+    rgb = [int(colour[i : i + 2], 16) / 255 for i in (1, 3, 5)]
+    np.testing.assert_allclose(top[:3], rgb, atol=1e-6)
+    assert top[3] == pytest.approx(0.75)

@@ -92,10 +92,12 @@ print(
 )
 
 # %%
-# The curve p(ψ) with the measured rate and its ψ marked:
+# The curve p(ψ) with the measured rate, its 95 % interval and its ψ marked. The lower panel
+# zooms on where the measured rate lies; p(ψ) = p(180° − ψ), so the mirror 180° − ψ explains
+# it as well and is marked too.
 from coinflight import plot_bias
 
-fig = plot_bias(measured=measured, psi_measured=psi_measured)
+fig = plot_bias(measured=measured, psi_measured=psi_measured, measured_interval=same.ci95)
 
 # %%
 # People differ

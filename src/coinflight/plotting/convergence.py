@@ -1,74 +1,172 @@
-"""Figure: estimates of P(heads) against configurations / events (Stefan & Cheche Figs 2-3)."""
+"""Figure: error of P(heads) against configurations / events (Stefan & Cheche Figs 2-3).
+
+The paper plots the estimates themselves on a linear scale; here the error |estimate − exact|
+is drawn against the sample size on log–log axes, where a rate n^-k is a straight line of
+slope −k, so that the methods' rates can be read and compared.
+"""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from coinflight.plotting.style import EXACT_COLOR, new_figure
+import numpy as np
+
+from coinflight.plotting.style import new_figure
 from coinflight.probability import registry
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from coinflight.probability.convergence import Convergence
+    from coinflight.probability.convergence import Convergence, ConvergencePoint
+
+Z95 = 1.959963984540054
+"""Two-sided 95 % normal quantile: the half-width of a 95 % interval in standard errors."""
+MIN_FIT_POINTS = 3
+"""Fewest non-zero errors a fitted slope is drawn from."""
+MC_SLOPE_TOLERANCE = 0.1
+"""A method whose interval half-widths fall with a fitted slope within this of −1/2 has a Monte
+Carlo rate: its expected n^-1/2 line is drawn; any other gets its observed slope."""
+
+
+def error_reference(result: Convergence) -> tuple[float, str]:
+    """The value errors are measured from and its name in the figure.
+
+    The exact value when there is one; otherwise the largest grid (method A) estimate, or the
+    largest estimate of any method, named as such (the errors are then relative to it).
+    """
+    if result.exact is not None:
+        return result.exact, "exact"
+    grid = result.series("grid") if "grid" in result.methods else ()
+    last = grid[-1] if grid else max(result.points, key=lambda p: p.samples)
+    return last.p_heads, f"the largest {registry.get(last.method).name} estimate"
+
+
+def fitted_slope(samples: np.ndarray, errors: np.ndarray) -> tuple[float, float] | None:
+    """Least-squares slope and intercept of log10 error against log10 n (zero errors left out).
+
+    None with fewer than :data:`MIN_FIT_POINTS` non-zero errors.
+    """
+    keep = errors > 0
+    if keep.sum() < MIN_FIT_POINTS:
+        return None
+    slope, intercept = np.polyfit(np.log10(samples[keep]), np.log10(errors[keep]), 1)
+    return float(slope), float(intercept)
+
+
+def _series_label(result: Convergence, method: str) -> str:
+    estimator = registry.get(method)
+    if "grid_cells" in estimator.options and result.grid_cells:
+        return f"method B: random events from {result.grid_cells} cells (x = events)"
+    if "grid_cells" in estimator.options:
+        return "Monte Carlo (x = events)"
+    return estimator.label
+
+
+def _short_name(result: Convergence, method: str) -> str:
+    if method == "grid":
+        return "method A"
+    if "grid_cells" in registry.get(method).options and result.grid_cells:
+        return "method B"
+    return method
+
+
+def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: float) -> None:
+    """One method's errors, its 95 % band (methods with a standard error) and its rate line."""
+    pts: tuple[ConvergencePoint, ...] = result.series(method)
+    estimator = registry.get(method)
+    name = _short_name(result, method)
+    x = np.array([p.samples for p in pts], dtype=float)
+    err = np.array([abs(p.p_heads - ref) for p in pts])
+    shown = np.maximum(err, floor)  # an exact hit (error 0) sits on the floor, not off the axis
+    ax.plot(
+        x,
+        shown,
+        "-",
+        marker=estimator.marker,
+        color=estimator.color,
+        label=_series_label(result, method),
+        markersize=4,
+        linewidth=1.2,
+    )
+    half = np.array([Z95 * p.stderr if p.stderr else np.nan for p in pts])
+    has_band = np.isfinite(half)
+    if has_band.any():
+        ax.fill_between(
+            x,
+            floor,
+            np.where(has_band, half, floor),
+            where=has_band,
+            color=estimator.color,
+            alpha=0.15,
+            linewidth=0,
+            label=f"{name}: 95 % interval half-width, 1.96 s.e.",
+        )
+    band_fit = fitted_slope(x[has_band], half[has_band]) if has_band.any() else None
+    if band_fit is not None and abs(band_fit[0] + 0.5) < MC_SLOPE_TOLERANCE:
+        # A Monte Carlo rate: the expected n^-1/2 line through the first interval.
+        first = int(np.argmax(has_band))
+        ax.plot(
+            x,
+            half[first] * np.sqrt(x[first] / x),
+            ":",
+            color=estimator.color,
+            linewidth=1.2,
+            label=f"{name}: expected slope −1/2 (error ∝ n^-1/2)",
+        )
+        return
+    fit = fitted_slope(x, err)
+    if fit is not None:
+        slope, intercept = fit
+        ax.plot(
+            x,
+            10.0**intercept * x**slope,
+            "--",
+            color=estimator.color,
+            linewidth=1,
+            label=f"{name}: observed slope {slope:.2f} (least-squares fit)",
+        )
 
 
 def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
-    """P(heads) against the number of configurations or events, log x axis.
+    """|P(heads) − exact| against the number of configurations or events, log–log axes.
 
-    Grid estimates are exact counts (no error bar); Monte Carlo and QMC carry 95 % intervals.
-    The exact value is a black line, ½ a dotted grey line, and the value method B converges
-    to (its coarse grid's exact count) a dashed line.
+    Each method's error is a line with markers. A method with a standard error carries a shaded
+    band from the floor to its 95 % interval's half-width 1.96 s.e. (where 95 % of its errors
+    would fall if it were unbiased). A method whose half-widths fall as n^-1/2 (Monte Carlo,
+    method B) gets a dotted line of slope −1/2, its expected rate; any other (the grid, method
+    A; QMC) a dashed least-squares line through its errors, its observed slope in the legend.
+    Method B converges to its coarse grid's exact count, not to the exact value: the distance
+    between the two, the error B cannot go below, is a dashed horizontal line.
+    Errors of 0 (an exact hit) are drawn at the axis' floor. Without an exact value the errors
+    are measured from the largest grid estimate (named on the y axis).
     """
-    fig = new_figure()
+    ref, ref_name = error_reference(result)
+    errors = [abs(p.p_heads - ref) for p in result.points]
+    halves = [Z95 * p.stderr for p in result.points if p.stderr]
+    positive = [e for e in (*errors, *halves) if e > 0]
+    floor = min(positive) / 2 if positive else 1e-12
+    fig = new_figure(figsize=(6.4, 6.6))
     ax = fig.add_subplot()
     for method in result.methods:
-        pts = result.series(method)
-        x = [p.samples for p in pts]
-        y = [p.p_heads for p in pts]
-        estimator = registry.get(method)
-        label = estimator.label
-        if "grid_cells" in estimator.options and result.grid_cells:
-            label = f"method B: random events from {result.grid_cells} cells (x = events)"
-        elif "grid_cells" in estimator.options:
-            label = "Monte Carlo (x = events)"
-        color = estimator.color
-        ax.plot(
-            x,
-            y,
-            "-",
-            marker=estimator.marker,
-            color=color,
-            label=label,
-            markersize=4,
-            linewidth=1.2,
-        )
-        lows = [p.ci95[0] if p.ci95 else p.p_heads for p in pts]
-        highs = [p.ci95[1] if p.ci95 else p.p_heads for p in pts]
-        if any(p.ci95 for p in pts):
-            ax.fill_between(x, lows, highs, color=color, alpha=0.15, linewidth=0)
-    ax.axhline(0.5, color="0.6", linestyle=":", linewidth=1, label="1/2")
-    if result.exact is not None:
+        _draw_series(ax, result, method, ref, floor)
+    if result.coarse_limit is not None and abs(result.coarse_limit - ref) > 0:
         ax.axhline(
-            result.exact,
-            color=EXACT_COLOR,
-            linewidth=1,
-            label=f"exact {result.exact:.6f}",
-        )
-    if result.coarse_limit is not None:
-        ax.axhline(
-            result.coarse_limit,
+            abs(result.coarse_limit - ref),
             color=registry.get("monte-carlo").color,
             linestyle="--",
             linewidth=1,
-            label=f"method B's limit: {result.grid_cells}-cell grid {result.coarse_limit:.4f}",
+            label=f"method B's limit: |{result.grid_cells}-cell grid − {ref_name}| = "
+            f"{abs(result.coarse_limit - ref):.1e}",
         )
     ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_ylim(bottom=floor)
     ax.set_xlabel("number of configurations (A) or events (B)")
-    ax.set_ylabel("P(heads)")
-    ax.set_title(title or "Probability of heads as the sample grows")
-    ax.legend(fontsize="small")
+    ax.set_ylabel(f"|P(heads) − {ref_name}|" + (f"  ({ref:.6f})" if ref_name == "exact" else ""))
+    ax.set_title(title or "Error of P(heads) as the sample grows")
+    fig.legend(loc="outside lower center", ncols=2, fontsize="x-small")
     return fig
 
 
-__all__ = ["plot_convergence"]
+__all__ = ["error_reference", "fitted_slope", "plot_convergence"]

@@ -16,9 +16,34 @@ if TYPE_CHECKING:
 HEADS_COLOR = "#0072B2"  # blue
 TAILS_COLOR = "#E69F00"  # orange
 EDGE_COLOR = "#009E73"  # bluish green
-LAUNCH_COLOR = "#D55E00"  # vermillion: the coin at launch ("red" in the paper's figures)
+LAUNCH_COLOR = "#D55E00"  # vermillion: the coin at launch (red in the paper's figures)
 CATCH_COLOR = "#0072B2"  # blue: the coin at catch (as in the paper)
 EXACT_COLOR = "#000000"
+
+COLOR_NAMES = {
+    "#000000": "black",
+    "#E69F00": "orange",
+    "#56B4E9": "sky blue",
+    "#009E73": "bluish green",
+    "#F0E442": "yellow",
+    "#0072B2": "blue",
+    "#D55E00": "vermillion",
+    "#CC79A7": "reddish purple",
+}
+"""Okabe & Ito's (2008) names of their palette's colours: the words captions use."""
+
+
+def color_name(color: str) -> str:
+    """The palette's name of ``color`` (a hex string, any case), for a caption.
+
+    ValueError for a colour outside the palette (a caption must not guess a name).
+    """
+    try:
+        return COLOR_NAMES[color.upper()]
+    except KeyError:
+        raise ValueError(
+            f"colour {color!r} is not in the Okabe & Ito palette ({', '.join(COLOR_NAMES)})"
+        ) from None
 
 
 def method_color(method: str) -> str:

@@ -1,7 +1,8 @@
 """The coin at launch and at catch, drawn as in Stefan & Cheche's Figs 2c-d and 3c-f.
 
-Each panel shows the coin's rim at launch (red) and at catch (blue) about its centre of mass,
-with the heads normal n and the angular momentum S as arrows; a last panel shows the path of n
+Each panel shows the coin's rim at launch (vermillion) and at catch (blue) about its centre of
+mass, the caught coin's heads face blue and tails face orange, with the heads normal n and the
+angular momentum S as arrows; a last panel shows the path of n
 on the unit sphere, the precession cone about S (Diaconis, Holmes & Montgomery 2007).
 """
 
@@ -15,7 +16,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
 from coinflight.core.outcome import FACE_NAMES
-from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR, new_figure
+from coinflight.plotting.style import (
+    CATCH_COLOR,
+    HEADS_COLOR,
+    LAUNCH_COLOR,
+    TAILS_COLOR,
+    new_figure,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -31,6 +38,7 @@ ARROW_SCALE = 1.5
 SPHERE_AZIM = -60.0
 """Azimuth of the view of the unit sphere, degrees (matplotlib's default)."""
 PANEL_ZOOM = 0.85
+"""Size of a 3-D box within its panel (matplotlib's ``zoom``); 1 lets labels spill out."""
 CURVE_POINTS_PER_TURN = 60
 """Points a turn of the normal's path on the sphere (smooth at the figure's size)."""
 MAX_CURVE_POINTS = 200_000
@@ -38,7 +46,13 @@ MAX_CURVE_POINTS = 200_000
 60 a turn (a toss makes 5-50). 480,000 points took 35 s to draw on the busy 2-core machine."""
 MAX_PANELS = 100
 """Most tosses (panels) one figure draws."""
-"""Size of a 3-D box within its panel (matplotlib's ``zoom``); 1 lets labels spill out."""
+VIEW_ELEVATION = 35.0
+"""Elevation (degrees) of each coin panel's camera: from above, so that the face up is seen."""
+VIEW_TURN = 40.0
+"""Degrees the camera is turned away from the up face's own direction, so that the launch and
+the catch do not hide each other and the tilt still reads."""
+DEFAULT_AZIM = -30.0
+"""Azimuth of a coin panel whose catch lies flat (no horizontal direction to look along)."""
 
 
 def coin_rim(attitude: Rotation, radius: float, n_points: int = 121) -> FloatArray:
@@ -80,7 +94,7 @@ def normal_path(coin: Coin, toss: Toss, t: ArrayLike) -> FloatArray:
 
 
 def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 2) -> Figure:
-    """Coin at launch (red) and at catch (blue), one panel per toss, plus the precession cone.
+    """Coin at launch (vermillion) and at catch (blue), one panel per toss, and the precession cone.
 
     Parameters
     ----------
@@ -102,6 +116,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     """
     from matplotlib.gridspec import GridSpec
     from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
     from coinflight.model.toss import Flight, Toss
 
@@ -143,13 +158,15 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     distinct_spins = len(spins)
     ncols = max(1, min(ncols, k))
     nrows = math.ceil(k / ncols)
-    fig = new_figure(figsize=(3.6 * ncols + 4.2, max(3.9 * nrows, 4.6)))
+    fig = new_figure(figsize=(3.6 * ncols + 4.2, max(4.4 * nrows, 4.6)))
     grid = GridSpec(nrows, ncols + 1, figure=fig, width_ratios=[1.0] * ncols + [1.15])
     lim = ARROW_SCALE * r_mm
     for i in range(k):
         ax: Any = fig.add_subplot(grid[i // ncols, i % ncols], projection="3d")
+        ax.computed_zorder = False  # drawn in order: launch, the caught coin's faces, its rim
         _draw_coin(ax, rim0[i], LAUNCH_COLOR)
-        _draw_coin(ax, rim1[i], CATCH_COLOR)
+        _draw_faces(ax, rim1[i], normals[i], coin.thickness * 1e3)
+        _draw_coin(ax, rim1[i], CATCH_COLOR, fill=False)  # its faces are drawn
         _arrow(ax, n0[i] * lim, LAUNCH_COLOR, label="n(0)")
         _arrow(ax, normals[i] * lim, CATCH_COLOR, label="n(T)")
         s_norm = float(np.linalg.norm(s_lab[i]))
@@ -160,8 +177,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         ax.set_zlim(-lim, lim)
         # zoom < 1 keeps the axis labels inside the panel, clear of the next row and the legend.
         ax.set_box_aspect((1, 1, 1), zoom=PANEL_ZOOM)
-        # Look from near the X axis, the paper's spin axis, so that the tilt reads clearly.
-        ax.view_init(elev=20, azim=-30)
+        ax.view_init(elev=VIEW_ELEVATION, azim=catch_azimuth(normals[i]))
         ticks = [-round(r_mm), 0, round(r_mm)]
         ax.set_xticks(ticks)
         ax.set_yticks(ticks)
@@ -228,6 +244,8 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     handles = [
         Line2D([], [], color=LAUNCH_COLOR, lw=2, marker="o", label="coin and n at launch, t = 0"),
         Line2D([], [], color=CATCH_COLOR, lw=2, marker="o", label="coin and n at catch, t = T"),
+        Patch(facecolor=HEADS_COLOR, alpha=0.6, label="heads face of the caught coin (H)"),
+        Patch(facecolor=TAILS_COLOR, alpha=0.6, label="tails face of the caught coin (T)"),
         Line2D([], [], color="#555555", lw=1, label="path of the heads normal n(t)"),
         Line2D([], [], color=S_COLOR, lw=1.5, ls="--", label="angular momentum S (direction)"),
     ]
@@ -244,10 +262,56 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     return fig
 
 
-def _draw_coin(ax: Any, rim: FloatArray, color: str) -> None:
+def catch_azimuth(normal: FloatArray) -> float:
+    """Azimuth (degrees) of a camera that sees the face up of a coin whose heads normal is n.
+
+    The camera looks along the horizontal part of the up face's normal (n if n·Z ≥ 0, else
+    −n), turned by :data:`VIEW_TURN`, from :data:`VIEW_ELEVATION` above, so the face up is
+    seen obliquely from its own side rather than edge-on; :data:`DEFAULT_AZIM` for a coin
+    lying flat.
+    """
+    up = normal if normal[2] >= 0 else -normal
+    if math.hypot(up[0], up[1]) < 1e-6:
+        return DEFAULT_AZIM
+    return math.degrees(math.atan2(up[1], up[0])) - VIEW_TURN
+
+
+def _draw_faces(ax: Any, rim: FloatArray, normal: FloatArray, thickness: float) -> None:
+    """The two faces of a coin, heads and tails coloured, half a thickness either side, and
+    its face up marked with a letter (H or T) above its centre."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    ax.add_collection3d(Poly3DCollection([rim], facecolor=color, alpha=0.25, edgecolor="none"))
+    half = 0.5 * thickness * normal
+    up = 1.0 if normal[2] >= 0 else -1.0
+    # The face down first and faint, the face up over it (the camera is above: it sees the face
+    # up); the panel draws in this order (computed_zorder off).
+    faces = ((1.0, HEADS_COLOR), (-1.0, TAILS_COLOR))
+    for sign, color in sorted(faces, key=lambda f: f[0] * up):
+        alpha = 0.75 if sign == up else 0.08
+        face = Poly3DCollection([rim + sign * half], facecolor=color, alpha=alpha, edgecolor="none")
+        ax.add_collection3d(face)
+    radius = float(np.linalg.norm(rim[0]))
+    ax.text(
+        *(up * normal * 0.35 * radius),
+        "H" if up > 0 else "T",
+        color="white",
+        fontsize=13,
+        fontweight="bold",
+        ha="center",
+        va="center",
+        bbox={
+            "facecolor": HEADS_COLOR if up > 0 else TAILS_COLOR,
+            "edgecolor": "none",
+            "boxstyle": "circle,pad=0.2",
+        },
+    )
+
+
+def _draw_coin(ax: Any, rim: FloatArray, color: str, fill: bool = True) -> None:
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    if fill:
+        ax.add_collection3d(Poly3DCollection([rim], facecolor=color, alpha=0.25, edgecolor="none"))
     ax.plot(*rim.T, color=color, lw=2)
 
 
@@ -266,4 +330,4 @@ def _draw_sphere(ax: Any) -> None:
     ax.plot_wireframe(x, y, z, color="#cccccc", lw=0.4, rstride=3, cstride=3)
 
 
-__all__ = ["coin_rim", "normal_path", "plot_toss"]
+__all__ = ["catch_azimuth", "coin_rim", "normal_path", "plot_toss"]

@@ -15,6 +15,7 @@ from coinflight import __version__
 from coinflight._files import check_all_writable, check_writable, staged_folder, write_text
 from coinflight.model.coin import Coin
 from coinflight.report.document import (
+    Block,
     Bullets,
     Document,
     Heading,
@@ -131,7 +132,7 @@ def reproduce_paper(
             fig = plot_toss(coin, toss)
             fig.suptitle(
                 f"Fig {fig_id}: ωx0 = {case.omega_x:g} rad/s, T = {case.flight_time:g} s — "
-                f"{coin.name} at launch (red) and at catch (blue)",
+                f"{coin.name} {_launch_catch()}",
                 fontsize=11,
             )
             files += save_figure(fig, stage / f"fig{fig_id}", formats)
@@ -144,14 +145,15 @@ def reproduce_paper(
         fig = plot_toss(coin, toss3)
         fig.suptitle(
             "Figs 3c-f: ωx0 = 90 rad/s, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s — "
-            f"{coin.name} at launch (red) and at catch (blue)",
+            f"{coin.name} {_launch_catch()}",
             fontsize=11,
         )
         files += save_figure(fig, stage / "fig3c-f", formats)
         done("Figs 3c-f")
 
         elapsed = time.perf_counter() - t_start
-        doc = build_document(numbers, elapsed, image_suffix=formats[0])
+        doc = build_document(numbers, image_suffix=formats[0])
+        doc.add(*timings_footer(numbers, elapsed))
         for name, text in zip(REPORTS, (doc.to_markdown(), doc.to_html()), strict=True):
             files.append(write_text(stage / name, text))
         files = [out / f.relative_to(stage) for f in files]
@@ -159,18 +161,50 @@ def reproduce_paper(
     return PaperReport(numbers=numbers, files=tuple(files), elapsed=time.perf_counter() - t_start)
 
 
+def _colour(color: str) -> str:
+    from coinflight.plotting.style import color_name
+
+    return color_name(color)
+
+
+def _method_colours() -> tuple[str, str]:
+    from coinflight.plotting.style import method_color
+
+    return _colour(method_color("grid")), _colour(method_color("monte-carlo"))
+
+
+def _launch_catch() -> str:
+    from coinflight.plotting.style import CATCH_COLOR, LAUNCH_COLOR
+
+    return f"at launch ({_colour(LAUNCH_COLOR)}) and at catch ({_colour(CATCH_COLOR)})"
+
+
+def _toss_colours() -> str:
+    from coinflight.plotting.style import HEADS_COLOR, TAILS_COLOR
+
+    return (
+        f"{_launch_catch()}, the caught coin's heads face {_colour(HEADS_COLOR)} and tails "
+        f"face {_colour(TAILS_COLOR)}"
+    )
+
+
 def _captions(numbers: PaperNumbers) -> dict[str, str]:
     rot = {r.case.figure: r for r in numbers.rotations}
     prob = {r.case.figure: r for r in numbers.probabilities}
+
+    colour_a, colour_b = _method_colours()
 
     def p_caption(fig: str) -> str:
         r = prob[fig]
         c = r.case
         return (
-            f"Fig {fig}: P(heads) by method A (blue) and method B (red) for ωx0 ∈ "
+            f"Fig {fig}: the error |P(heads) − exact| of method A ({colour_a}) and method B "
+            f"({colour_b}) against the number of configurations or events, log–log, for ωx0 ∈ "
             f"[{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, ωy0 = {c.omega_y:g} rad/s, T ∈ "
             f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s; exact value "
-            f"{r.exact.p_heads:.6f}."
+            f"{r.exact.p_heads:.6f}. Shaded: method B's 95 % interval half-width (1.96 s.e.), "
+            f"with its expected slope −1/2 dotted; method A's observed slope dashed; method B's "
+            f"floor, its {METHOD_B_INTERVALS}-cell grid's distance from exact, dashed across."
         )
 
     def t_caption(fig: str) -> str:
@@ -182,7 +216,7 @@ def _captions(numbers: PaperNumbers) -> dict[str, str]:
             else ""
         )
         return (
-            f"Fig {fig}: the coin at launch (red) and at catch (blue), ωx0 = {c.omega_x:g} "
+            f"Fig {fig}: the coin {_toss_colours()}, ωx0 = {c.omega_x:g} "
             f"rad/s, T = {c.flight_time:g} s: {r.rotations:.3f} turns, {r.face} up{said}."
         )
 
@@ -196,7 +230,8 @@ def _captions(numbers: PaperNumbers) -> dict[str, str]:
         "fig3a": p_caption("3a"),
         "fig3b": p_caption("3b"),
         "fig3c-f": "Figs 3c-f: ωx0 = 90, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s: "
-        f"{turns} turns, {faces} up; n and S (S ⟂ n) and the path of n on the unit sphere.",
+        f"{turns} turns, {faces} up; the coin {_toss_colours()}; n and S (S ⟂ n) and the "
+        "path of n on the unit sphere.",
     }
 
 
@@ -227,11 +262,50 @@ def _yes(flag: bool | None) -> str:
     return "—" if flag is None else ("yes" if flag else "NO")
 
 
-def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "png") -> Document:
-    """The reproduction report as a :class:`~coinflight.report.document.Document`."""
+def build_document(numbers: PaperNumbers, image_suffix: str = "png") -> Document:
+    """The reproduction report's body as a :class:`~coinflight.report.document.Document`.
+
+    The body holds only what the numbers determine, so that two runs with the same seed write
+    the same body; the run's timings go in a footer after it (:func:`timings_footer`).
+    """
+    doc = Document('Reproduction of Stefan & Cheche, "Coin toss modeling"')
+    doc.add(*_summary(numbers))
+    doc.add(*_rotations_section(numbers.rotations))
+    doc.add(*_disagreements_section(numbers.rotations))
+    doc.add(*_probabilities_section(numbers))
+    doc.add(Heading("Other statements checked"), Bullets(_other_checks()))
+    doc.add(Heading("4. Figures"))
+    captions = _captions(numbers)
+    for stem in FIGURES:
+        doc.add(Image(f"{stem}.{image_suffix}", captions[stem]))
+    return doc
+
+
+TIMINGS_HEADING = "Timings of this run"
+"""The footer's heading: what follows it changes from run to run, what precedes it does not."""
+
+
+def timings_footer(numbers: PaperNumbers, elapsed: float) -> tuple[Block, ...]:
+    """The run's timings, appended after the report's body (they change every run)."""
+    return (
+        Heading(TIMINGS_HEADING),
+        Paragraph(
+            f"Generated by coinflight {__version__} in {elapsed:.1f} s. These timings are the "
+            "only part of the report that changes between runs with the same seed."
+        ),
+        Table(
+            ("step", "seconds"),
+            (
+                *((k, f"{v:.2f}") for k, v in numbers.timings.items()),
+                ("whole reproduction before writing the report", f"{elapsed:.2f}"),
+            ),
+        ),
+    )
+
+
+def _summary(numbers: PaperNumbers) -> tuple[Block, ...]:
     rot = numbers.rotations
     prob = numbers.probabilities
-    doc = Document('Reproduction of Stefan & Cheche, "Coin toss modeling"')
     n_agree = sum(r.rotations_agree for r in rot)
     disagreements = [r for r in rot if r.face_agrees is False]
     worst_a = max(abs(r.method_a.p_heads - r.exact.p_heads) for r in prob)
@@ -239,9 +313,16 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
     a_faster = sum(
         r.error_at("grid", events)[1] < r.error_at("monte-carlo", events)[1] for r in prob
     )
-    doc.add(
+    faces = (
+        "the paper's text and its own eq 14 disagree for "
+        + ", ".join(f"Fig {r.case.figure}" for r in disagreements)
+        + " (section 2 below)."
+        if disagreements
+        else "every face the paper states agrees with its eq 14."
+    )
+    return (
         Paragraph(
-            f"Generated by coinflight {__version__} in {elapsed:.1f} s. Coin: "
+            f"Generated by coinflight {__version__}. Coin: "
             f"{numbers.coin.describe()} (the paper names no coin; for a spin about a diameter "
             "the face does not depend on it). Every toss starts heads up and is caught at "
             f"launch height. Method B seed: {numbers.seed}."
@@ -251,14 +332,7 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
             (
                 f"Rotations: {n_agree} of {len(rot)} counts the paper prints agree with "
                 "coinflight to the digits printed.",
-                "Faces: "
-                + (
-                    "the paper's text and its own eq 14 disagree for "
-                    + ", ".join(f"Fig {r.case.figure}" for r in disagreements)
-                    + " (section 2 below)."
-                    if disagreements
-                    else "every face the paper states agrees with its eq 14."
-                ),
+                "Faces: " + faces,
                 "Probabilities: the paper gives no number, only that methods A and B tend to "
                 "50 %. coinflight's exact values for its four ranges lie within "
                 f"{max(abs(r.exact.p_heads - 0.5) for r in prob):.4f} of 1/2; method A with "
@@ -270,7 +344,10 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
             )
         ),
     )
-    doc.add(
+
+
+def _rotations_section(rot: tuple[RotationRow, ...]) -> tuple[Block, ...]:
+    return (
         Heading("1. Rotations and faces (Figs 2c-d, 3c-f)"),
         Paragraph(
             "θ(T) = T·sqrt(ωx0² + ωy0²) (eqs 11, 15); rotations = θ(T)/2π. The face follows "
@@ -301,11 +378,14 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
             'theorem", S·n = 0 in case b).',
         ),
     )
-    doc.add(Heading("2. Where the paper's text and its own formulas disagree"))
-    for r in disagreements:
+
+
+def _disagreements_section(rot: tuple[RotationRow, ...]) -> tuple[Block, ...]:
+    blocks: list[Block] = [Heading("2. Where the paper's text and its own formulas disagree")]
+    for r in (r for r in rot if r.face_agrees is False):
         c = r.case
         frac = c.paper_rotations - math.floor(c.paper_rotations)
-        doc.add(
+        blocks += (
             Heading(f'Fig {c.figure}: the text says "{c.quote}"', 3),
             Paragraph(
                 f"With ωx0 = {c.omega_x:g} rad/s and T = {c.flight_time:g} s the paper counts "
@@ -319,7 +399,7 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
                 f"between 0.25 and 0.75; it is {frac:.3f}."
             ),
         )
-    doc.add(
+    blocks += (
         Heading('The ranges written "T = v0/g"', 3),
         Paragraph(
             "Section 3 gives the ranges as T = v0/g ∈ [0.6, 0.9] s, but eq 11 defines the "
@@ -331,7 +411,11 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
             "flight times (launch speeds 2.94 to 4.41 m/s for T ∈ [0.6, 0.9] s)."
         ),
     )
-    doc.add(
+    return tuple(blocks)
+
+
+def _probabilities_section(numbers: PaperNumbers) -> tuple[Block, ...]:
+    return (
         Heading("3. Probabilities (Figs 2a-b, 3a-b)"),
         Paragraph(
             f"Method A: the ranges of ωx0 and T cut into {METHOD_A_INTERVALS} intervals each, "
@@ -342,25 +426,9 @@ def build_document(numbers: PaperNumbers, elapsed: float, image_suffix: str = "p
             "Exact: the measure of the heads bands integrated in closed form (Keller 1986). "
             "The paper states no probability beyond 'tends to the unbiased value of 50%'."
         ),
-        probability_table(prob, numbers.method_b_events),
-        speed_table(prob, numbers.method_b_events),
+        probability_table(numbers.probabilities, numbers.method_b_events),
+        speed_table(numbers.probabilities, numbers.method_b_events),
     )
-    doc.add(Heading("Other statements checked"), Bullets(_other_checks()))
-    doc.add(Heading("4. Figures"))
-    captions = _captions(numbers)
-    for stem in FIGURES:
-        doc.add(Image(f"{stem}.{image_suffix}", captions[stem]))
-    doc.add(
-        Heading("5. Timings"),
-        Table(
-            ("step", "seconds"),
-            (
-                *((k, f"{v:.2f}") for k, v in numbers.timings.items()),
-                ("whole reproduction before writing the report", f"{elapsed:.2f}"),
-            ),
-        ),
-    )
-    return doc
 
 
 def rotation_table(rows: tuple[RotationRow, ...]) -> Table:
@@ -479,4 +547,5 @@ __all__ = [
     "reproduce_paper",
     "rotation_table",
     "speed_table",
+    "timings_footer",
 ]
