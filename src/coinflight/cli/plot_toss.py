@@ -37,7 +37,7 @@ def plot_toss(
     coin: CoinOptions,
     dpi: Dpi = 150,
 ) -> None:
-    """Draw the coin at launch (red) and at catch (blue), n and S, and the precession cone.
+    """Draw the coin at launch (vermillion) and at catch (blue), n and S, and the precession cone.
 
     Example: coinflight plot toss --omega 90 30 0 --times 0.6,0.65,0.7,0.75 --out fig3.png
     """
