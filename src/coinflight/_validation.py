@@ -9,11 +9,13 @@ arithmetic finite, and a usual range whose violation is only a :class:`Plausibil
 
 from __future__ import annotations
 
+import difflib
 import math
 import numbers
 import warnings
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -24,6 +26,9 @@ class PlausibilityWarning(UserWarning):
 
     The command line prints it as one line (``coinflight: warning: …``) and goes on.
     """
+
+
+T = TypeVar("T")
 
 
 def _show(value: object) -> str:
@@ -237,6 +242,19 @@ def choice(name: str, value: object, allowed: Iterable[str]) -> str:
     if not isinstance(value, str) or value not in allowed:
         raise ValueError(f"{name} must be one of {', '.join(allowed)}; got {value!r}")
     return value
+
+
+def known(what: str, name: str, table: Mapping[str, T]) -> T:
+    """``table[name]``, else ValueError "unknown <what> 'name' (did you mean …?); known <what>s:
+    …" with the closest known name (difflib)."""
+    try:
+        return table[name]
+    except KeyError:
+        hint = difflib.get_close_matches(str(name), table, n=1)
+        maybe = f" (did you mean {hint[0]}?)" if hint else ""
+        raise ValueError(
+            f"unknown {what} {name!r}{maybe}; known {what}s: {', '.join(table)}"
+        ) from None
 
 
 def _unit(unit: str) -> str:

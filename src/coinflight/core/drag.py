@@ -252,6 +252,65 @@ def land(
     return land_contact(omega0, launch_speed, start_sign, c, model, max_bounces)
 
 
+def _next_contact(
+    f: Any, t: float, y: FloatArray, what: str, gap: Callable[[float, FloatArray], float]
+) -> tuple[float, FloatArray]:
+    """Time and state when the coin next touches the table (``gap`` reaches 0 going down).
+
+    Steps of at most 1/64 of a turn: a rim that dips below the surface and out again between two
+    solver steps would be missed (no sign change to locate); such dips last a small fraction of
+    a turn (one of 0.5 ms at ~200 rad/s in test_bounce).
+    """
+    spin = float(np.linalg.norm(y[6:9]))
+    turn = 0.03125 * math.pi / spin if spin > 0.0 else math.inf
+    sol: Any = solve(f, (t, t + 60.0), y, what, events=gap, max_step=turn)
+    if sol.t_events[0].size == 0:  # pragma: no cover - a minute of falling meets the table
+        raise ValueError(f"{what} did not reach the table within 60 s of t = {t:.3g} s")
+    return float(sol.t_events[0][0]), np.array(sol.y_events[0][0])
+
+
+def _settles(
+    n: tuple[float, float, float],
+    v: tuple[float, float, float],
+    lm: tuple[float, float, float],
+    omega: tuple[float, float, float],
+    rebound: float,
+    contact: Contact,
+) -> tuple[int, Status] | None:
+    """(face, status) if the coin settles after this impact, else None (the rules of
+    :func:`coinflight.core.bounce.land`: below the barrier, dead, or rocking to rest)."""
+    from coinflight.core import bounce, impact
+
+    radius, hh, mass, i1, g = (
+        contact.radius,
+        contact.half_thickness,
+        contact.mass,
+        contact.i1,
+        contact.g,
+    )
+    z = impact.lowest_depth(n[2], radius, hh)
+    if bounce.tumbling_energy(v, lm, n, mass, i1, g, z) < contact.barrier:
+        return impact.resting_face(n[2], contact.edge_sine), Status.SETTLED_ENERGY
+    if rebound >= contact.rest_speed:
+        return None
+    if contact.restitution == 0.0:
+        return impact.resting_face(n[2], contact.edge_sine), Status.SETTLED_DEAD
+    return bounce.rock(n, omega, radius, hh, mass, i1, g), Status.SETTLED_ROCKING
+
+
+def _lift_off(
+    f: Any, t: float, y: FloatArray, what: str, gap: Callable[[float, FloatArray], float], dt: float
+) -> tuple[float, FloatArray]:
+    """Time and state a little after an impact, once the coin is off the surface: the first of
+    dt, dt/2, dt/4, … after which ``gap`` is positive."""
+    for _ in range(60):
+        step: Any = solve(f, (t, t + dt), y, what)
+        if gap(0.0, step.y[:, -1]) > 0.0:
+            break
+        dt *= 0.5
+    return float(step.t[-1]), step.y[:, -1]
+
+
 def land_contact(
     omega0: ArrayLike,
     launch_speed: float,
@@ -274,8 +333,7 @@ def land_contact(
     radius, hh, mass = contact.radius, contact.half_thickness, contact.mass
     i1, i3, g = contact.i1, contact.i3, contact.g
     restitution, friction = contact.restitution, contact.friction
-    drop_height, rest = contact.drop_height, contact.rest_speed
-    rho, edge_sine, barrier = contact.reach, contact.edge_sine, contact.barrier
+    drop_height, rho, edge_sine = contact.drop_height, contact.reach, contact.edge_sine
     what = describe(model, omega0, launch_speed)
     check_stiffness(model, launch_speed)
     f = bounded(rhs(model), what)
@@ -295,16 +353,7 @@ def land_contact(
     bounces = 0
     first = -1.0
     for _ in range(bounce.MAX_IMPACTS):
-        # Steps of at most 1/64 of a turn: a rim that dips below the surface and out again
-        # between two solver steps would be missed (no sign change to locate); such dips last
-        # a small fraction of a turn (one of 0.5 ms at ~200 rad/s in test_bounce).
-        spin = float(np.linalg.norm(y[6:9]))
-        turn = 0.03125 * math.pi / spin if spin > 0.0 else math.inf
-        sol: Any = solve(f, (t, t + 60.0), y, what, events=gap, max_step=turn)
-        if sol.t_events[0].size == 0:  # pragma: no cover - a minute of falling meets the table
-            raise ValueError(f"{what} did not reach the table within 60 s of t = {t:.3g} s")
-        t = float(sol.t_events[0][0])
-        y = np.array(sol.y_events[0][0])
+        t, y = _next_contact(f, t, y, what, gap)
         q = y[9:13] / np.linalg.norm(y[9:13])
         rot = Rotation.from_quat(q)
         nx, ny, nz = (float(c) for c in rot.apply([0.0, 0.0, 1.0]))
@@ -318,30 +367,18 @@ def land_contact(
         lm = (lx, ly, lz)
         v = (float(y[3]), float(y[4]), float(y[5]))
         v, lm, rebound = impact.impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
-        z = impact.lowest_depth(n[2], radius, hh)
         omega = impact.angular_velocity(lm, n, i1, i3)
-        if bounce.tumbling_energy(v, lm, n, mass, i1, g, z) < barrier:
-            return impact.resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_ENERGY
-        if rebound < rest:
-            if restitution == 0.0:
-                face = impact.resting_face(n[2], edge_sine)
-                return face, bounces, first, t, Status.SETTLED_DEAD
-            face = bounce.rock(n, omega, radius, hh, mass, i1, g)
-            return face, bounces, first, t, Status.SETTLED_ROCKING
+        settled = _settles(n, v, lm, omega, rebound, contact)
+        if settled is not None:
+            return settled[0], bounces, first, t, settled[1]
         bounces += 1
         y = y.copy()
         y[3:6] = v
         y[6:9] = rot.inv().apply(np.asarray(omega))
         y[9:13] = q
         # Leave the surface before looking for the next contact (as in the drag-free kernel).
-        accel = g + 2.0 * float(np.dot(omega, omega)) * rho
-        dt = rebound / accel
-        for _ in range(60):
-            step: Any = solve(f, (t, t + dt), y, what)
-            if gap(0.0, step.y[:, -1]) > 0.0:
-                break
-            dt *= 0.5
-        y = step.y[:, -1]
-        t = float(step.t[-1])
+        t, y = _lift_off(
+            f, t, y, what, gap, rebound / (g + 2.0 * float(np.dot(omega, omega)) * rho)
+        )
     n_z = float(normal(y[9:13])[2])
     return impact.resting_face(n_z, edge_sine), bounces, first, t, Status.UNSETTLED

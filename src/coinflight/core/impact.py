@@ -65,6 +65,8 @@ import math
 from numba import njit
 
 Vec = tuple[float, float, float]
+Matrix = tuple[float, float, float, float, float, float]
+"""The collision matrix K as (K_xx, K_xy, K_xz, K_yy, K_yz, K_zz), 1/kg."""
 TURN_STEP = 0.2
 """A turning slide is integrated in RK4 steps over which its direction turns by at most this
 angle, rad (up to a radian for a slip much slower than |u0|)."""
@@ -253,159 +255,240 @@ def contact_impulse(
         P, N s.
     steps : int
         Integration segments used (≤ :data:`MAX_STEPS`).
+
+    Notes
+    -----
+    Each step is a straight segment (sticking, a ray, the stop of a small slip:
+    :func:`_stop_segment`, a nearly straight slide) or an RK4 step of a turning slide
+    (:func:`_slide_step`), cut at the end of compression or restitution (:func:`_cut`).
     """
-    u0x, u0y, u0z = u0
-    kxx, kxy, kxz, kyy, kyz, kzz = k
-    if u0z >= 0.0:
+    if u0[2] >= 0.0:
         return (0.0, 0.0, 0.0), 0
-    e = restitution
     if friction == 0.0:
-        return (0.0, 0.0, -(1.0 + e) * u0z / kzz), 1
-    scale = math.sqrt(u0x * u0x + u0y * u0y + u0z * u0z)
+        return (0.0, 0.0, -(1.0 + restitution) * u0[2] / k[5]), 1
+    scale = math.sqrt(u0[0] * u0[0] + u0[1] * u0[1] + u0[2] * u0[2])
     z_tol = END_TOLERANCE * scale
     slip_tol = slip_tolerance * scale
-    det = kxx * kyy - kxy * kxy
-    rx = -(kyy * kxz - kxy * kyz) / det  # sticking: dP_t/dp = r = −K_tt⁻¹ K_tz
-    ry = -(kxx * kyz - kxy * kxz) / det
-    holds = math.sqrt(rx * rx + ry * ry) <= friction
-    p = 0.0
-    px = 0.0
-    py = 0.0
-    w = 0.0  # normal work ∫ u_z dp
-    energy = 0.0  # change of kinetic energy ∫ u · dP
-    w_tol = 0.0
-    target = 0.0
-    compression = True
-    linear = False  # sticking or sliding on a ray: constant dP_t/dp = (qx, qy) to the end
-    qx = 0.0
-    qy = 0.0
+    rx, ry, det = _stick_rate(k)
+    holds = math.sqrt(rx * rx + ry * ry) <= friction  # the cone holds a stick for good
+    p, px, py = 0.0, 0.0, 0.0  # the impulse so far
+    w, energy = 0.0, 0.0  # normal work ∫ u_z dp and change of kinetic energy ∫ u · dP
+    w_tol, target = 0.0, 0.0  # the normal work done by the end of restitution
+    compression, linear = True, False
+    qx, qy = 0.0, 0.0  # sticking or sliding on a ray (linear): dP_t/dp to the end
     steps = 0
     for steps in range(1, max_steps + 1):
-        ux = u0x + kxx * px + kxy * py + kxz * p
-        uy = u0y + kxy * px + kyy * py + kyz * p
-        uz = u0z + kxz * px + kyz * py + kzz * p
+        ux, uy, uz = _velocity_at(u0, k, px, py, p)
         if compression and uz >= -z_tol:
             compression = False
-            if e == 0.0:
-                break
-            target = (1.0 - e * e) * w  # the normal work done by the end of restitution
-            w_tol = -END_TOLERANCE * w
-        if not compression and w >= target - w_tol:
+            target, w_tol = (1.0 - restitution * restitution) * w, -END_TOLERANCE * w
+        if not compression and (restitution == 0.0 or w >= target - w_tol):
             break
         s = math.sqrt(ux * ux + uy * uy)
         seg = True
-        late = steps >= max_steps - 6  # then finish in closed form
-        if not linear and (s <= slip_tol or late):
-            if not holds:
-                # Slides on, on the ray the cone lets it take (what is left of the slip, below
-                # SLIP_TOLERANCE, is carried along).
-                linear = True
-                dx, dy = _ray_direction(kxx, kxy, kyy, kxz, kyz, friction)
-                qx, qy = _friction_rate(dx, dy, friction)
-            elif s <= ROUNDING * scale:
+        small = s <= slip_tol or steps >= max_steps - 6  # late: then finish in closed form
+        if not linear and small:
+            linear, qx, qy = _settle(holds, s <= ROUNDING * scale, rx, ry, k, friction)
+        if not linear and small:
+            stops, h, fx, fy = _stop_segment(ux, uy, k, det, rx, ry, friction)
+            if not stops:
                 linear = True
                 qx, qy = rx, ry
+        elif not linear:
+            fx, fy = _friction_rate(ux, uy, friction)
+            h, seg = _slide_step(
+                ux, uy, uz, s, fx, fy, k, compression, target - w, turn_step, scale, slip_tol
+            )
         if linear:
             fx, fy = qx, qy
-            h = _linear_event(compression, uz, kzz + kxz * fx + kyz * fy, target - w)
-        elif s <= slip_tol or late:
-            # Stop the last of the slip exactly: the one straight segment, friction on the cone
-            # in a fixed direction, that brings u_t to 0. With a = K_tt⁻¹ u_t it takes the normal
-            # impulse h of |a − r h| = μ h, (μ² − |r|²) h² + 2 (a·r) h − |a|² = 0, h > 0.
-            ax = (kyy * ux - kxy * uy) / det
-            ay = (kxx * uy - kxy * ux) / det
-            a2 = ax * ax + ay * ay
-            b1 = ax * rx + ay * ry
-            c2 = friction * friction - rx * rx - ry * ry
-            denominator = b1 + math.sqrt(max(b1 * b1 + c2 * a2, 0.0))
-            if denominator > 0.0:
-                h = 2.0 * a2 / denominator
-                fx = rx - ax / h
-                fy = ry - ay / h
-            else:
-                # |r| = μ to rounding: the cone holds the stick but cannot stop the slip; it is
-                # carried along (below SLIP_TOLERANCE).
-                linear = True
-                qx, qy = rx, ry
-                fx, fy = qx, qy
-                h = _linear_event(compression, uz, kzz + kxz * fx + kyz * fy, target - w)
-        else:
-            fx, fy = _friction_rate(ux, uy, friction)
-            gx = kxx * fx + kxy * fy + kxz  # du_t/dp
-            gy = kxy * fx + kyy * fy + kyz
-            sigma = (ux * gx + uy * gy) / s  # d|u_t|/dp
-            turn = abs(ux * gy - uy * gx) / s  # |u_t| |dû/dp|
-            if turn == 0.0 or (sigma < 0.0 and s * turn <= slip_tol * -sigma):
-                # Straight, or so nearly that what it misses of a stop is below SLIP_TOLERANCE:
-                # a segment to the stop or to the next normal event.
-                h = _linear_event(compression, uz, kzz + kxz * fx + kyz * fy, target - w)
-                if sigma < 0.0 and s / -sigma < h:
-                    h = s / -sigma
-            else:
-                seg = False
-                # The slip changes by at most STOP_FRACTION of itself in one step (so it cannot
-                # reverse within it), and its direction turns by at most turn_step: at the rate
-                # turn / |u_t(p)| with |u_t| ≈ s + σ p, the turn over h is
-                # (turn/σ) ln(1 + σ h / s).
-                h = STOP_FRACTION * s / math.sqrt(sigma * sigma + turn * turn)
-                if sigma > 0.0:
-                    h = math.inf  # a growing slip cannot reverse: the turn sets the step
-                # A slower slip matters less (what a step misses scales with it): it may turn
-                # further in one step, up to a radian.
-                angle = min(turn_step * math.sqrt(math.sqrt(scale / s)), 1.0)
-                x = min(angle * sigma / turn, 30.0)
-                limit = s / sigma * math.expm1(x) if sigma != 0.0 else angle * s / turn
-                if limit < h:
-                    h = limit
-                # Not past the next normal event as u_z would reach it at its present rate
-                # (so the chord is cut close to its end).
-                limit = _linear_event(compression, uz, kzz + kxz * fx + kyz * fy, target - w)
-                if limit < h:
-                    h = limit
-        if not compression and uz <= 0.0 and kzz + kxz * fx + kyz * fy <= 0.0:
-            break  # the slip has turned the contact point back onto the surface
-        if not h < math.inf:
-            break  # cannot happen for a positive definite K (a guard: never loop forever)
-        if seg:
-            nx = px + fx * h
-            ny = py + fy * h
-            uz_new = u0z + kxz * nx + kyz * ny + kzz * (p + h)
-            theta, done = _cut(compression, uz, uz_new, h, target - w)
-        else:
-            nx, ny = _rk4(u0x, u0y, kxx, kxy, kxz, kyy, kyz, p, px, py, h, friction)
-            while (u0x + kxx * nx + kxy * ny + kxz * (p + h)) * ux + (
-                u0y + kxy * nx + kyy * ny + kyz * (p + h)
-            ) * uy <= 0.0:
-                # The slip would have turned by 90° or more in one step: a shorter step.
-                h *= 0.25
-                nx, ny = _rk4(u0x, u0y, kxx, kxy, kxz, kyy, kyz, p, px, py, h, friction)
-            uz_new = u0z + kxz * nx + kyz * ny + kzz * (p + h)
-            theta, done = _cut(compression, uz, uz_new, h, target - w)
-        # Kinetic energy along the chord: E(θ) = E + θ u·ΔP + ½ θ² ΔP·K ΔP.
-        dpx = nx - px
-        dpy = ny - py
-        dux = kxx * dpx + kxy * dpy + kxz * h
-        duy = kxy * dpx + kyy * dpy + kyz * h
-        duz = uz_new - uz
-        lin = ux * dpx + uy * dpy + uz * h
-        quad = 0.5 * (dpx * dux + dpy * duy + h * duz)
-        if not compression and energy + theta * lin + theta * theta * quad > 0.0:
-            # Guard: kinetic energy never grows. Only the O(SLIP_TOLERANCE) approximations at
-            # the end of a slide could make it; the impact then ends where it is back to start.
-            denominator = lin + math.sqrt(max(lin * lin - 4.0 * quad * energy, 0.0))
-            if denominator > 0.0:
-                theta = min(theta, 2.0 * -energy / denominator)
-            else:
-                theta = min(theta, -lin / quad) if quad > 0.0 else 0.0
-            done = True
-        energy += theta * lin + theta * theta * quad
-        w += h * theta * (uz + 0.5 * theta * duz)
-        px += theta * dpx
-        py += theta * dpy
+            h = _linear_event(compression, uz, _normal_rate(k, fx, fy), target - w)
+        # Ends if the slip has turned the contact point back onto the surface; h = ∞ cannot
+        # happen for a positive definite K (a guard: never loop forever).
+        if (not compression and uz <= 0.0 and _normal_rate(k, fx, fy) <= 0.0) or not h < math.inf:
+            break
+        nx, ny = (px + fx * h, py + fy * h) if seg else _rk4(u0, k, p, px, py, h, friction)
+        while not seg and _turns_back(u0, k, nx, ny, p + h, ux, uy):
+            h *= 0.25  # the slip would have turned by 90° or more in one step
+            nx, ny = _rk4(u0, k, p, px, py, h, friction)
+        uz_new = _velocity_at(u0, k, nx, ny, p + h)[2]
+        theta, done = _cut(compression, uz, uz_new, h, target - w)
+        theta, done, gain = _chord_energy(
+            (ux, uy, uz), k, nx - px, ny - py, h, uz_new - uz, compression, energy, theta, done
+        )
+        energy += gain
+        w += h * theta * (uz + 0.5 * theta * (uz_new - uz))
+        px += theta * (nx - px)
+        py += theta * (ny - py)
         p += theta * h
         if done:
             break
     return (px, py, p), steps
+
+
+@njit(cache=True, error_model="numpy")
+def _velocity_at(u0: Vec, k: Matrix, px: float, py: float, p: float) -> Vec:
+    """Velocity of the contact point after the impulse (px, py, p): u = u0 + K P (Stronge 2000,
+    eq 5.7)."""
+    kxx, kxy, kxz, kyy, kyz, kzz = k
+    return (
+        u0[0] + kxx * px + kxy * py + kxz * p,
+        u0[1] + kxy * px + kyy * py + kyz * p,
+        u0[2] + kxz * px + kyz * py + kzz * p,
+    )
+
+
+@njit(cache=True, error_model="numpy")
+def _normal_rate(k: Matrix, fx: float, fy: float) -> float:
+    """du_z/dp while the tangential impulse grows at dP_t/dp = (fx, fy)."""
+    return k[5] + k[2] * fx + k[4] * fy
+
+
+@njit(cache=True, error_model="numpy")
+def _stick_rate(k: Matrix) -> tuple[float, float, float]:
+    """(r_x, r_y, det K_tt): the rate r = −K_tt⁻¹ K_tz at which a stuck contact takes tangential
+    impulse (the stick test is |r| ≤ μ; Stronge 2000, §5.2)."""
+    kxx, kxy, kxz, kyy, kyz, _ = k
+    det = kxx * kyy - kxy * kxy
+    return -(kyy * kxz - kxy * kyz) / det, -(kxx * kyz - kxy * kxz) / det, det
+
+
+@njit(cache=True, error_model="numpy")
+def _settle(
+    holds: bool, rounding: bool, rx: float, ry: float, k: Matrix, friction: float
+) -> tuple[bool, float, float]:
+    """What a slip below SLIP_TOLERANCE (or a slide out of steps) does to the end of the impact:
+    (whether it takes a constant rate dP_t/dp, that rate).
+
+    If the cone cannot hold a stick (not ``holds``), it slides on, on the ray the cone lets it
+    take (what is left of the slip is carried along); if the slip is rounding error, it sticks;
+    otherwise it is stopped by one straight segment (:func:`_stop_segment`).
+    """
+    if not holds:
+        dx, dy = _ray_direction(k[0], k[1], k[3], k[2], k[4], friction)
+        qx, qy = _friction_rate(dx, dy, friction)
+        return True, qx, qy
+    if rounding:
+        return True, rx, ry
+    return False, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _stop_segment(
+    ux: float, uy: float, k: Matrix, det: float, rx: float, ry: float, friction: float
+) -> tuple[bool, float, float, float]:
+    """The one straight segment, friction on the cone in a fixed direction, that brings the
+    slip u_t to 0: (whether there is one, its normal impulse h, dP_t/dp on it).
+
+    With a = K_tt⁻¹ u_t it takes the normal impulse h of |a − r h| = μ h,
+    (μ² − |r|²) h² + 2 (a·r) h − |a|² = 0, h > 0. There is none when |r| = μ to rounding: the
+    cone holds the stick but cannot stop the slip.
+    """
+    kxx, kxy, _, kyy, _, _ = k
+    ax = (kyy * ux - kxy * uy) / det
+    ay = (kxx * uy - kxy * ux) / det
+    a2 = ax * ax + ay * ay
+    b1 = ax * rx + ay * ry
+    c2 = friction * friction - rx * rx - ry * ry
+    denominator = b1 + math.sqrt(max(b1 * b1 + c2 * a2, 0.0))
+    if denominator > 0.0:
+        h = 2.0 * a2 / denominator
+        return True, h, rx - ax / h, ry - ay / h
+    return False, 0.0, 0.0, 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _slide_step(
+    ux: float,
+    uy: float,
+    uz: float,
+    s: float,
+    fx: float,
+    fy: float,
+    k: Matrix,
+    compression: bool,
+    dw: float,
+    turn_step: float,
+    scale: float,
+    slip_tol: float,
+) -> tuple[float, bool]:
+    """Normal impulse h of the next step of a slide (slip (ux, uy) of size s, friction rate
+    (fx, fy)) and whether it is a straight segment (else an RK4 step)."""
+    kxx, kxy, kxz, kyy, kyz, _ = k
+    gx = kxx * fx + kxy * fy + kxz  # du_t/dp
+    gy = kxy * fx + kyy * fy + kyz
+    sigma = (ux * gx + uy * gy) / s  # d|u_t|/dp
+    turn = abs(ux * gy - uy * gx) / s  # |u_t| |dû/dp|
+    event = _linear_event(compression, uz, _normal_rate(k, fx, fy), dw)
+    if turn == 0.0 or (sigma < 0.0 and s * turn <= slip_tol * -sigma):
+        # Straight, or so nearly that what it misses of a stop is below SLIP_TOLERANCE: a
+        # segment to the stop or to the next normal event.
+        if sigma < 0.0 and s / -sigma < event:
+            return s / -sigma, True
+        return event, True
+    # The slip changes by at most STOP_FRACTION of itself in one step (so it cannot reverse
+    # within it), and its direction turns by at most turn_step: at the rate turn / |u_t(p)|
+    # with |u_t| ≈ s + σ p, the turn over h is (turn/σ) ln(1 + σ h / s).
+    h = STOP_FRACTION * s / math.sqrt(sigma * sigma + turn * turn)
+    if sigma > 0.0:
+        h = math.inf  # a growing slip cannot reverse: the turn sets the step
+    # A slower slip matters less (what a step misses scales with it): it may turn further in
+    # one step, up to a radian.
+    angle = min(turn_step * math.sqrt(math.sqrt(scale / s)), 1.0)
+    x = min(angle * sigma / turn, 30.0)
+    limit = s / sigma * math.expm1(x) if sigma != 0.0 else angle * s / turn
+    if limit < h:
+        h = limit
+    # Not past the next normal event as u_z would reach it at its present rate (so the chord
+    # is cut close to its end).
+    return (event if event < h else h), False
+
+
+@njit(cache=True, error_model="numpy")
+def _turns_back(u0: Vec, k: Matrix, nx: float, ny: float, p: float, ux: float, uy: float) -> bool:
+    """Whether the slip at the impulse (nx, ny, p) points against the slip (ux, uy)."""
+    vx, vy, _ = _velocity_at(u0, k, nx, ny, p)
+    return vx * ux + vy * uy <= 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _chord_energy(
+    u: Vec,
+    k: Matrix,
+    dpx: float,
+    dpy: float,
+    h: float,
+    duz: float,
+    compression: bool,
+    energy: float,
+    theta: float,
+    done: bool,
+) -> tuple[float, bool, float]:
+    """The cut θ of the chord ΔP = (dpx, dpy, h) (and whether the impact ends there) kept or
+    shortened so that the kinetic energy does not grow, and the change of kinetic energy to it.
+
+    Along the chord E(θ) = E + θ u·ΔP + ½ θ² ΔP·K ΔP (duz = (K ΔP)_z, already known); energy is
+    E − E(before the impact) at its start.
+    """
+    kxx, kxy, kxz, kyy, kyz, _ = k
+    dux = kxx * dpx + kxy * dpy + kxz * h
+    duy = kxy * dpx + kyy * dpy + kyz * h
+    lin = u[0] * dpx + u[1] * dpy + u[2] * h
+    quad = 0.5 * (dpx * dux + dpy * duy + h * duz)
+    if not compression and energy + theta * lin + theta * theta * quad > 0.0:
+        theta = _energy_guard(energy, lin, quad, theta)
+        done = True
+    return theta, done, theta * lin + theta * theta * quad
+
+
+@njit(cache=True, error_model="numpy")
+def _energy_guard(energy: float, lin: float, quad: float, theta: float) -> float:
+    """The fraction of a restitution chord (≤ θ) where the kinetic energy is back to its value
+    before the impact: it never grows. Only the O(SLIP_TOLERANCE) approximations at the end of a
+    slide could make it; the impact then ends there."""
+    denominator = lin + math.sqrt(max(lin * lin - 4.0 * quad * energy, 0.0))
+    if denominator > 0.0:
+        return min(theta, 2.0 * -energy / denominator)
+    return min(theta, -lin / quad) if quad > 0.0 else 0.0
 
 
 @njit(cache=True, error_model="numpy")
@@ -448,35 +531,17 @@ def _linear_event(compression: bool, uz: float, c: float, dw: float) -> float:
 
 @njit(cache=True, error_model="numpy")
 def _rk4(
-    u0x: float,
-    u0y: float,
-    kxx: float,
-    kxy: float,
-    kxz: float,
-    kyy: float,
-    kyz: float,
-    p: float,
-    px: float,
-    py: float,
-    h: float,
-    friction: float,
+    u0: Vec, k: Matrix, p: float, px: float, py: float, h: float, friction: float
 ) -> tuple[float, float]:
     """Tangential impulse after a classical Runge-Kutta step h of dP_t/dp = −μ û_t(P_t, p)."""
-    ax, ay = _friction_rate(
-        u0x + kxx * px + kxy * py + kxz * p, u0y + kxy * px + kyy * py + kyz * p, friction
-    )
-    x, y, q = px + 0.5 * h * ax, py + 0.5 * h * ay, p + 0.5 * h
-    bx, by = _friction_rate(
-        u0x + kxx * x + kxy * y + kxz * q, u0y + kxy * x + kyy * y + kyz * q, friction
-    )
-    x, y = px + 0.5 * h * bx, py + 0.5 * h * by
-    cx, cy = _friction_rate(
-        u0x + kxx * x + kxy * y + kxz * q, u0y + kxy * x + kyy * y + kyz * q, friction
-    )
-    x, y, q = px + h * cx, py + h * cy, p + h
-    dx, dy = _friction_rate(
-        u0x + kxx * x + kxy * y + kxz * q, u0y + kxy * x + kyy * y + kyz * q, friction
-    )
+    u = _velocity_at(u0, k, px, py, p)
+    ax, ay = _friction_rate(u[0], u[1], friction)
+    u = _velocity_at(u0, k, px + 0.5 * h * ax, py + 0.5 * h * ay, p + 0.5 * h)
+    bx, by = _friction_rate(u[0], u[1], friction)
+    u = _velocity_at(u0, k, px + 0.5 * h * bx, py + 0.5 * h * by, p + 0.5 * h)
+    cx, cy = _friction_rate(u[0], u[1], friction)
+    u = _velocity_at(u0, k, px + h * cx, py + h * cy, p + h)
+    dx, dy = _friction_rate(u[0], u[1], friction)
     return (
         px + h * (ax + 2.0 * bx + 2.0 * cx + dx) / 6.0,
         py + h * (ay + 2.0 * by + 2.0 * cy + dy) / 6.0,

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
@@ -52,14 +51,7 @@ class Coin:
     @classmethod
     def preset(cls, name: str) -> Coin:
         """A real coin by short name, see :data:`PRESETS` (REFERENCES §7)."""
-        try:
-            return PRESETS[name]
-        except KeyError:
-            hint = difflib.get_close_matches(str(name), PRESETS, n=1)
-            maybe = f" (did you mean {hint[0]}?)" if hint else ""
-            raise ValueError(
-                f"unknown coin {name!r}{maybe}; known coins: {', '.join(PRESETS)}"
-            ) from None
+        return v.known("coin", name, PRESETS)
 
     @classmethod
     def from_mm_g(

@@ -31,6 +31,22 @@ DRAG_TOSSES_PER_SECOND = 20
 in 5.3 s on the 2-core reference machine."""
 
 
+def drag_model(coin: Coin, drag: Drag, g: float) -> Any:
+    """The kernels' :class:`coinflight.core.drag.DragModel` of this coin in this air."""
+    from coinflight.core import drag as drag_kernels
+
+    i1, i3 = coin.moments
+    return drag_kernels.DragModel(
+        coin.mass,
+        coin.radius,
+        (i1, i1, i3),
+        g,
+        drag.coefficient,
+        drag.spin_damping,
+        drag.air_density,
+    )
+
+
 def catch_with_drag(
     coin: Coin,
     omega: FloatArray,
@@ -50,16 +66,7 @@ def catch_with_drag(
 
     if not isinstance(drag, Drag):
         raise TypeError(f"drag must be a Drag, got {type(drag).__name__}")
-    i1, i3 = coin.moments
-    model = drag_kernels.DragModel(
-        coin.mass,
-        coin.radius,
-        (i1, i1, i3),
-        g,
-        drag.coefficient,
-        drag.spin_damping,
-        drag.air_density,
-    )
+    model = drag_model(coin, drag, g)
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     n = omega.shape[0]
     speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (n,))

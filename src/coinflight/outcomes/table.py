@@ -22,7 +22,7 @@ from coinflight.core.outcome import FACE_NAMES
 from coinflight.model.coin import Coin
 from coinflight.model.surface import Drag, Surface
 from coinflight.model.toss import Toss
-from coinflight.outcomes.air import DRAG_TOSSES_PER_SECOND
+from coinflight.outcomes.air import DRAG_TOSSES_PER_SECOND, drag_model
 from coinflight.outcomes.base import (
     FaceArray,
     OutcomeModel,
@@ -153,15 +153,7 @@ def land(
     if drag is not None and not drag.is_zero:
         from coinflight.core import drag as drag_kernels
 
-        model = drag_kernels.DragModel(
-            coin.mass,
-            coin.radius,
-            (i1, i1, i3),
-            g,
-            drag.coefficient,
-            drag.spin_damping,
-            drag.air_density,
-        )
+        model = drag_model(coin, drag, g)
         limit = -1 if max_bounces is None else int(max_bounces)
         rows = [
             drag_kernels.land_contact(

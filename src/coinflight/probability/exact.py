@@ -168,8 +168,133 @@ def _quad(f: Callable[..., float], dims: int, details: dict[str, Any]) -> tuple[
     return float(val), float(err)
 
 
+_Details = dict[str, Any]
+
+
+def _one_uniform_diameter_spin(dist: TossDistribution, ranged: list[str]) -> bool:
+    """Spin about a diameter, T fixed or uniform, at most one ranged spin and that uniform."""
+    return (
+        dist.spin_about_diameter
+        and isinstance(dist.flight_time, Fixed | Uniform)
+        and (
+            len(ranged) == 0 or (len(ranged) == 1 and isinstance(getattr(dist, ranged[0]), Uniform))
+        )
+    )
+
+
+def _closed_form(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """The band integral over the one uniform spin (or none), in closed form."""
+    x_name = ranged[0] if ranged else "omega_x"
+    c_name = "omega_y" if x_name == "omega_x" else "omega_x"
+    return _closed_form_diameter(
+        getattr(dist, x_name), getattr(dist, c_name).mean, dist.flight_time
+    ), 0.0
+
+
+def _closed_form_in_t(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """Fixed spins: the band integral over T in closed form."""
+    i1, i3 = dist.moments
+    p = _p_same_fixed_spins(
+        dist.omega_x.mean, dist.omega_y.mean, dist.omega_z.mean, dist.flight_time, i1, i3
+    )
+    return p, 0.0
+
+
+def _two_diameter_spins_one_uniform(dist: TossDistribution, ranged: list[str]) -> bool:
+    """Spin about a diameter, T fixed or uniform, both spins ranged, one of them uniform."""
+    return (
+        dist.spin_about_diameter
+        and isinstance(dist.flight_time, Uniform | Fixed)
+        and len(ranged) == 2
+        and any(isinstance(getattr(dist, n), Uniform) for n in ranged)
+    )
+
+
+def _closed_form_and_quadrature(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """One uniform spin in closed form, the other by quadrature over its quantiles."""
+    t = dist.flight_time
+    assert isinstance(t, Fixed | Uniform)  # _two_diameter_spins_one_uniform
+    x_name = next(n for n in ranged if isinstance(getattr(dist, n), Uniform))
+    c_name = "omega_y" if x_name == "omega_x" else "omega_x"
+    x_dist, c_dist = getattr(dist, x_name), getattr(dist, c_name)
+    _check_pieces(x_dist, 0.0, t.value if isinstance(t, Fixed) else t.high, MAX_PIECES / 1000)
+
+    def inner(u: float) -> float:
+        return _closed_form_diameter(x_dist, float(c_dist.ppf(u)), t, MAX_PIECES / 1000)
+
+    return _quad(inner, 1, details)
+
+
+def _spins_by_quadrature(dist: TossDistribution, ranged: list[str]) -> bool:
+    """T ranged and at most two ranged spins."""
+    return not isinstance(dist.flight_time, Fixed) and len(ranged) <= 2
+
+
+def _closed_form_in_t_quadrature(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """The band integral over T in closed form, quadrature over the ranged spins' quantiles."""
+    i1, i3 = dist.moments
+    spins = {name: getattr(dist, name) for name in _SPINS}
+
+    def integrand(*u: float) -> float:
+        w = {n: spins[n].mean for n in _SPINS}
+        for name, ui in zip(ranged, u, strict=True):
+            w[name] = float(spins[name].ppf(ui))
+        return _p_same_fixed_spins(
+            w["omega_x"], w["omega_y"], w["omega_z"], dist.flight_time, i1, i3
+        )
+
+    return _quad(integrand, len(ranged), details)
+
+
+_CASES: tuple[
+    tuple[
+        str,
+        Callable[[TossDistribution, list[str]], bool],
+        Callable[[TossDistribution, list[str], _Details], tuple[float, float]],
+    ],
+    ...,
+] = (
+    ("closed form", _one_uniform_diameter_spin, _closed_form),
+    ("closed form in T", lambda dist, ranged: not ranged, _closed_form_in_t),
+    (
+        "closed form in one spin, quadrature in the other",
+        _two_diameter_spins_one_uniform,
+        _closed_form_and_quadrature,
+    ),
+    (
+        "closed form in T, quadrature over the spins",
+        _spins_by_quadrature,
+        _closed_form_in_t_quadrature,
+    ),
+)
+"""The integrals this method does, in order of preference: (how, whether it applies, run)."""
+
+
+def _refusal(dist: TossDistribution, ranged: list[str]) -> str:
+    """Why no exact integral here handles the distribution, and what to use instead."""
+    if isinstance(dist.flight_time, Fixed):
+        return (
+            "the exact method cannot integrate over ranged spins with a fixed flight time unless "
+            f"ω_z = 0 and one spin component is a uniform range; {_USE_INSTEAD}"
+        )
+    return (
+        f"the exact method integrates over at most two ranged spin components, got "
+        f"{len(ranged)} ({', '.join(ranged)}); {_USE_INSTEAD}"
+    )
+
+
 def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> ProbabilityResult:
     """Exact P(heads) for the hand catch; see the module notes for what is supported.
+
+    The first of the integrals in ``_CASES`` that applies to the distribution is done.
 
     Raises
     ------
@@ -181,68 +306,13 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         raise ValueError(
             f"the exact method handles the hand catch only, not {model.name}; " + _USE_INSTEAD
         )
-    i1, i3 = dist.moments
-    t = dist.flight_time
-    ranged_spins = [name for name in _SPINS if not getattr(dist, name).is_fixed]
-    error = 0.0
-    how: str
-    details: dict[str, Any] = {}
-    if (
-        dist.spin_about_diameter
-        and isinstance(t, Fixed | Uniform)
-        and (
-            len(ranged_spins) == 0
-            or (len(ranged_spins) == 1 and isinstance(getattr(dist, ranged_spins[0]), Uniform))
-        )
-    ):
-        x_name = ranged_spins[0] if ranged_spins else "omega_x"
-        c_name = "omega_y" if x_name == "omega_x" else "omega_x"
-        p_same = _closed_form_diameter(getattr(dist, x_name), getattr(dist, c_name).mean, t)
-        how = "closed form"
-    elif not ranged_spins:
-        p_same = _p_same_fixed_spins(
-            dist.omega_x.mean, dist.omega_y.mean, dist.omega_z.mean, t, i1, i3
-        )
-        how = "closed form in T"
-    elif (
-        dist.spin_about_diameter
-        and isinstance(t, Uniform | Fixed)
-        and len(ranged_spins) == 2
-        and any(isinstance(getattr(dist, n), Uniform) for n in ranged_spins)
-    ):
-        # One uniform spin in closed form, the other by quadrature over its quantiles.
-        x_name = next(n for n in ranged_spins if isinstance(getattr(dist, n), Uniform))
-        c_name = "omega_y" if x_name == "omega_x" else "omega_x"
-        x_dist, c_dist = getattr(dist, x_name), getattr(dist, c_name)
-        t_high = t.value if isinstance(t, Fixed) else t.high
-        _check_pieces(x_dist, 0.0, t_high, MAX_PIECES / 1000)
-
-        def inner(u: float) -> float:
-            return _closed_form_diameter(x_dist, float(c_dist.ppf(u)), t, MAX_PIECES / 1000)
-
-        p_same, error = _quad(inner, 1, details)
-        how = "closed form in one spin, quadrature in the other"
-    elif isinstance(t, Fixed):
-        raise ValueError(
-            "the exact method cannot integrate over ranged spins with a fixed flight time unless "
-            f"ω_z = 0 and one spin component is a uniform range; {_USE_INSTEAD}"
-        )
-    elif len(ranged_spins) > 2:
-        raise ValueError(
-            f"the exact method integrates over at most two ranged spin components, got "
-            f"{len(ranged_spins)} ({', '.join(ranged_spins)}); {_USE_INSTEAD}"
-        )
-    else:
-        spins = {name: getattr(dist, name) for name in _SPINS}
-
-        def integrand(*u: float) -> float:
-            w = {n: spins[n].mean for n in _SPINS}
-            for name, ui in zip(ranged_spins, u, strict=True):
-                w[name] = float(spins[name].ppf(ui))
-            return _p_same_fixed_spins(w["omega_x"], w["omega_y"], w["omega_z"], t, i1, i3)
-
-        p_same, error = _quad(integrand, len(ranged_spins), details)
-        how = "closed form in T, quadrature over the spins"
+    ranged = [name for name in _SPINS if not getattr(dist, name).is_fixed]
+    case = next((case for case in _CASES if case[1](dist, ranged)), None)
+    if case is None:
+        raise ValueError(_refusal(dist, ranged))
+    how, _applies, run = case
+    details: _Details = {}
+    p_same, error = run(dist, ranged, details)
     p_same = min(1.0, max(0.0, p_same))
     p_heads = p_same if dist.start_sign > 0 else 1.0 - p_same
     details["how"] = how

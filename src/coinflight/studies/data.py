@@ -234,6 +234,23 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
     :data:`MAX_PEOPLE`, flips in all at most :data:`MAX_FLIPS`.
     """
     v.instance("text", text, str)
+    names, values, linenos = _data_lines(text, source)
+    counts = _parse_integers(values, linenos, source)
+    _check_sums(counts, names, linenos, source)
+    _check_unique(names, linenos, source)
+    running = np.cumsum(counts[:, :4].sum(axis=1))  # each total ≤ 4e12: no overflow below 2e6 rows
+    if running[-1] > MAX_FLIPS:
+        i = int(np.argmax(running > MAX_FLIPS))
+        raise ValueError(
+            f"{source}, line {linenos[i]}: flips must be between 1 and {MAX_FLIPS:,} in all "
+            f"(all people together), got {int(running[-1]):.3g}"
+        )
+    return CountsTable(tuple(names), counts[:, :4], source, tuple(linenos))
+
+
+def _data_lines(text: str, source: str) -> tuple[list[str], list[list[str]], list[int]]:
+    """The people's names, their count fields (as text) and line numbers, after the header; the
+    line faults of :func:`parse_counts` (length, '#', header, columns, people) as ValueError."""
     names: list[str] = []
     values: list[list[str]] = []
     linenos: list[int] = []
@@ -243,18 +260,9 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
     for lineno, line in enumerate(io.StringIO(text, newline=None), start=1):
         raw = line.rstrip("\n")
         where = f"{source}, line {lineno}"
-        if len(raw) > MAX_LINE_CHARS:
-            raise ValueError(
-                f"{where}: lines must be at most {MAX_LINE_CHARS} characters, got {len(raw):,}"
-            )
-        fields = raw.split()
-        if not fields or _is_comment(fields):
+        fields = _fields(raw, where)
+        if not fields:
             continue
-        if fields[0].startswith("#"):
-            raise ValueError(
-                f"{where}: starts with {fields[0]!r}: a comment is '#' followed by a space, and "
-                f"a person's name may not start with '#'"
-            )
         if not header_seen:
             if tuple(f.lower() for f in fields) != COLUMNS:
                 raise ValueError(
@@ -279,7 +287,32 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
         raise ValueError(f"{source}: empty, expected the header '{' '.join(COLUMNS)}'")
     if not names:
         raise ValueError(f"{source}: no data lines after the header")
-    counts = _parse_integers(values, linenos, source)
+    return names, values, linenos
+
+
+def _fields(raw: str, where: str) -> list[str]:
+    """The fields of one line, none for a blank line or a comment; ValueError for a line too
+    long or one starting with a '#' that is not a comment."""
+    if len(raw) > MAX_LINE_CHARS:
+        raise ValueError(
+            f"{where}: lines must be at most {MAX_LINE_CHARS} characters, got {len(raw):,}"
+        )
+    fields = raw.split()
+    if not fields or _is_comment(fields):
+        return []
+    if fields[0].startswith("#"):
+        raise ValueError(
+            f"{where}: starts with {fields[0]!r}: a comment is '#' followed by a space, and "
+            f"a person's name may not start with '#'"
+        )
+    return fields
+
+
+def _check_sums(
+    counts: NDArray[np.int64], names: list[str], linenos: list[int], source: str
+) -> None:
+    """ValueError at the first line whose same ≠ hsame + tsame, flips ≠ the sum of the four
+    counts, or flips = 0."""
     hsame, hdiff, tsame, tdiff, same, flips = counts.T
     total = hsame + hdiff + tsame + tdiff
     for bad, what in (
@@ -300,6 +333,10 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
                     f"{where}: flips = {flips[i]} but hsame + hdiff + tsame + tdiff = {total[i]}"
                 )
             raise ValueError(f"{where}: person {names[i]!r} has no flips")
+
+
+def _check_unique(names: list[str], linenos: list[int], source: str) -> None:
+    """ValueError at the second line of a person who appears twice."""
     if len(set(names)) != len(names):
         seen: dict[str, int] = {}
         for name, lineno in zip(names, linenos, strict=True):
@@ -308,14 +345,6 @@ def parse_counts(text: str, source: str = "<counts>") -> CountsTable:
                     f"{source}, line {lineno}: person {name!r} already appears on line {seen[name]}"
                 )
             seen[name] = lineno
-    running = np.cumsum(total)  # each total ≤ 4e12: no overflow below 2e6 rows
-    if running[-1] > MAX_FLIPS:
-        i = int(np.argmax(running > MAX_FLIPS))
-        raise ValueError(
-            f"{source}, line {linenos[i]}: flips must be between 1 and {MAX_FLIPS:,} in all "
-            f"(all people together), got {int(running[-1]):.3g}"
-        )
-    return CountsTable(tuple(names), counts[:, :4], source, tuple(linenos))
 
 
 def _parse_integers(values: list[list[str]], linenos: list[int], source: str) -> NDArray[np.int64]:

@@ -31,12 +31,12 @@ values are not published and barely matter (the bias depends on ψ alone). The s
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import math
 from collections.abc import Callable
 from types import MappingProxyType
 from typing import Any
 
+from coinflight import _validation as v
 from coinflight.core import precession
 from coinflight.model.coin import DEFAULT_COIN, Coin
 from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
@@ -132,14 +132,7 @@ def preset(
     >>> preset("human", omega_z=0.0).spin_about_diameter  # the same toss with no precession
     True
     """
-    try:
-        factory = PRESETS[name]
-    except KeyError:
-        hint = difflib.get_close_matches(str(name), PRESETS, n=1)
-        maybe = f" (did you mean {hint[0]}?)" if hint else ""
-        raise ValueError(
-            f"unknown preset {name!r}{maybe}; known presets: {', '.join(PRESETS)}"
-        ) from None
+    factory = v.known("preset", name, PRESETS)
     unknown = [k for k in overrides if k not in OVERRIDABLE]
     if unknown:
         raise ValueError(
