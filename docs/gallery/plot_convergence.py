@@ -3,7 +3,7 @@ Convergence of methods A and B
 ==============================
 
 The founding paper's Fig 3b (ωx0 ∈ [60, 90] rad/s, ωy0 = 60 rad/s, T ∈ [0.6, 0.9] s): the
-error |P(heads) − exact| of method A's grid and method B's random events against their size,
+error ``|P(heads) − exact|`` of method A's grid and method B's random events against their size,
 log–log, with method B's 95 % interval half-width shaded, its expected slope −1/2 and the grid's
 observed slope.
 Sizes are kept small so that this page builds quickly. (``coinflight convergence

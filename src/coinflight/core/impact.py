@@ -65,7 +65,7 @@ import math
 from numba import njit
 
 Vec = tuple[float, float, float]
-Matrix = tuple[float, float, float, float, float, float]
+_Matrix = tuple[float, float, float, float, float, float]
 """The collision matrix K as (K_xx, K_xy, K_xz, K_yy, K_yz, K_zz), 1/kg."""
 TURN_STEP = 0.2
 """A turning slide is integrated in RK4 steps over which its direction turns by at most this
@@ -326,7 +326,7 @@ def contact_impulse(
 
 
 @njit(cache=True, error_model="numpy")
-def _velocity_at(u0: Vec, k: Matrix, px: float, py: float, p: float) -> Vec:
+def _velocity_at(u0: Vec, k: _Matrix, px: float, py: float, p: float) -> Vec:
     """Velocity of the contact point after the impulse (px, py, p): u = u0 + K P (Stronge 2000,
     eq 5.7)."""
     kxx, kxy, kxz, kyy, kyz, kzz = k
@@ -338,13 +338,13 @@ def _velocity_at(u0: Vec, k: Matrix, px: float, py: float, p: float) -> Vec:
 
 
 @njit(cache=True, error_model="numpy")
-def _normal_rate(k: Matrix, fx: float, fy: float) -> float:
+def _normal_rate(k: _Matrix, fx: float, fy: float) -> float:
     """du_z/dp while the tangential impulse grows at dP_t/dp = (fx, fy)."""
     return k[5] + k[2] * fx + k[4] * fy
 
 
 @njit(cache=True, error_model="numpy")
-def _stick_rate(k: Matrix) -> tuple[float, float, float]:
+def _stick_rate(k: _Matrix) -> tuple[float, float, float]:
     """(r_x, r_y, det K_tt): the rate r = −K_tt⁻¹ K_tz at which a stuck contact takes tangential
     impulse (the stick test is |r| ≤ μ; Stronge 2000, §5.2)."""
     kxx, kxy, kxz, kyy, kyz, _ = k
@@ -354,7 +354,7 @@ def _stick_rate(k: Matrix) -> tuple[float, float, float]:
 
 @njit(cache=True, error_model="numpy")
 def _settle(
-    holds: bool, rounding: bool, rx: float, ry: float, k: Matrix, friction: float
+    holds: bool, rounding: bool, rx: float, ry: float, k: _Matrix, friction: float
 ) -> tuple[bool, float, float]:
     """What a slip below SLIP_TOLERANCE (or a slide out of steps) does to the end of the impact:
     (whether it takes a constant rate dP_t/dp, that rate).
@@ -374,7 +374,7 @@ def _settle(
 
 @njit(cache=True, error_model="numpy")
 def _stop_segment(
-    ux: float, uy: float, k: Matrix, det: float, rx: float, ry: float, friction: float
+    ux: float, uy: float, k: _Matrix, det: float, rx: float, ry: float, friction: float
 ) -> tuple[bool, float, float, float]:
     """The one straight segment, friction on the cone in a fixed direction, that brings the
     slip u_t to 0: (whether there is one, its normal impulse h, dP_t/dp on it).
@@ -404,7 +404,7 @@ def _slide_step(
     s: float,
     fx: float,
     fy: float,
-    k: Matrix,
+    k: _Matrix,
     compression: bool,
     dw: float,
     turn_step: float,
@@ -444,7 +444,7 @@ def _slide_step(
 
 
 @njit(cache=True, error_model="numpy")
-def _turns_back(u0: Vec, k: Matrix, nx: float, ny: float, p: float, ux: float, uy: float) -> bool:
+def _turns_back(u0: Vec, k: _Matrix, nx: float, ny: float, p: float, ux: float, uy: float) -> bool:
     """Whether the slip at the impulse (nx, ny, p) points against the slip (ux, uy)."""
     vx, vy, _ = _velocity_at(u0, k, nx, ny, p)
     return vx * ux + vy * uy <= 0.0
@@ -453,7 +453,7 @@ def _turns_back(u0: Vec, k: Matrix, nx: float, ny: float, p: float, ux: float, u
 @njit(cache=True, error_model="numpy")
 def _chord_energy(
     u: Vec,
-    k: Matrix,
+    k: _Matrix,
     dpx: float,
     dpy: float,
     h: float,
@@ -531,7 +531,7 @@ def _linear_event(compression: bool, uz: float, c: float, dw: float) -> float:
 
 @njit(cache=True, error_model="numpy")
 def _rk4(
-    u0: Vec, k: Matrix, p: float, px: float, py: float, h: float, friction: float
+    u0: Vec, k: _Matrix, p: float, px: float, py: float, h: float, friction: float
 ) -> tuple[float, float]:
     """Tangential impulse after a classical Runge-Kutta step h of dP_t/dp = −μ û_t(P_t, p)."""
     u = _velocity_at(u0, k, px, py, p)
