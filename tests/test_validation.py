@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from _cli import one_line_error
 from coinflight import Coin, Toss
 from coinflight._validation import PlausibilityWarning, Quantity
 from coinflight.cli import app
@@ -27,17 +28,6 @@ from coinflight.probability import estimate
 runner = CliRunner()
 QUARTER = {"radius": 0.01213, "thickness": 0.00175, "mass": 0.00567}  # REFERENCES §7, in SI
 FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
-
-
-def one_line_error(*args: object) -> str:
-    """Run the CLI; assert exit 2 and one error line on stderr, no traceback; the message."""
-    result = runner.invoke(app, [str(a) for a in args])
-    assert result.exit_code == 2, result.output
-    assert "Traceback" not in result.output
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1, result.stderr
-    assert lines[0].startswith("coinflight: error: ")
-    return lines[0].removeprefix("coinflight: error: ")
 
 
 # --- the coin ---------------------------------------------------------------------------------

@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from _cli import one_line_error
 from coinflight import Coin, Toss
 from coinflight import _validation as v
-from coinflight.cli import app
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
@@ -30,17 +30,6 @@ FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & 
 QUARTER = Coin(radius=0.01213, thickness=0.00175, mass=0.00567)  # REFERENCES §7, in SI
 HUGE = [2**63, 99999999999999999999999, 2**2000]
 MB = 2**20
-
-
-def one_line_error(*args: object) -> str:
-    """Run the CLI; assert exit 2 and one error line on stderr, no traceback; the message."""
-    result = runner.invoke(app, [str(a) for a in args])
-    assert result.exit_code == 2, result.output
-    assert "Traceback" not in result.output
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1, result.stderr
-    assert lines[0].startswith("coinflight: error: ")
-    return lines[0].removeprefix("coinflight: error: ")
 
 
 def refused_cheaply(call: Callable[[], object], match: str, peak_mb: float = 16.0) -> str:
