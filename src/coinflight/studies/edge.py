@@ -8,7 +8,7 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -180,9 +180,54 @@ def simulate_edge(
     return out
 
 
+def edge_table(
+    ratios: ArrayLike,
+    n: int | None = None,
+    seed: streams.SeedLike = None,
+    **setting: Any,
+) -> list[dict[str, Any]]:
+    """P(edge) per ratio h/d, one dict each: both closed-form models and, with ``n``, a simulation.
+
+    Each dict has ``ratio``, ``p_edge_geometric`` and ``p_edge_dynamic``
+    (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
+    ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
+    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g). Ratios
+    must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
+    ``n``.
+
+    Examples
+    --------
+    >>> [round(row["p_edge_dynamic"], 4) for row in edge_table([0.577, 1.0])]
+    [0.3332, 0.5]
+    """
+    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
+    if x.ndim != 1:
+        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    if n is None and (setting or seed is not None):
+        given = ", ".join(["seed"] * (seed is not None) + sorted(setting))
+        raise ValueError(f"{given} set the simulation: give the number of tosses n as well")
+    geometric = edge_probability(x, "geometric")
+    dynamic = edge_probability(x, "dynamic")
+    rows: list[dict[str, Any]] = [
+        {"ratio": float(r), "p_edge_geometric": float(pg), "p_edge_dynamic": float(pd)}
+        for r, pg, pd in zip(x, geometric, dynamic, strict=True)
+    ]
+    if n is not None:
+        for row, (_, s) in zip(rows, simulate_edge(x, n, seed, **setting), strict=True):
+            row["simulated"] = {
+                "p_edge": s.p,
+                "stderr": s.stderr,
+                "n": s.n,
+                "successes": s.successes,
+                "seed": s.seed,
+            }
+    return rows
+
+
 __all__ = [
     "MODELS",
     "edge_probability",
+    "edge_table",
     "ratio_for",
     "simulate_edge",
 ]
