@@ -208,15 +208,17 @@ def edge(
     if json:
         print_json(cast(Any, rows))  # a list: one object per ratio
         return
+    width = max(13, 2 * len(f"{simulate or 0:,}") + 3)  # "edge / tosses", right-aligned
     header = f"{'h/d':>8}  {'geometric':>9}  {'dynamic':>9}"
     if simulate is not None:
-        header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>15}"
+        header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>{width}}"
     typer.echo(header)
     for row in rows:
         line = f"{row['ratio']:>8g}  {row['p_edge_geometric']:>9.4f}  {row['p_edge_dynamic']:>9.4f}"
         if "simulated" in row:
             s = row["simulated"]
-            line += f"  {s['p_edge']:>9.4f}  {s['stderr']:>7.4f}  {s['successes']:>7,} / {s['n']:,}"
+            count = f"{s['successes']:,} / {s['n']:,}"
+            line += f"  {s['p_edge']:>9.4f}  {s['stderr']:>7.4f}  {count:>{width}}"
         typer.echo(line)
     if simulate is not None:
         typer.echo(f"seed {rows[0]['simulated']['seed']}")
