@@ -12,6 +12,7 @@ from coinflight.cli import animate as _animate
 from coinflight.cli import bias as _bias
 from coinflight.cli import convergence as _convergence
 from coinflight.cli import data as _data
+from coinflight.cli import edge as _edge
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import toss as _toss
@@ -61,6 +62,7 @@ _COMMANDS: dict[str, Callable[..., None] | typer.Typer] = {
     "data": _data.data,
     "probability": _probability.probability,
     "convergence": _convergence.convergence,
+    "edge": _edge.edge,
     "plot": plot_app,
     "animate": _animate.animate,
     "paper": _paper.paper,

@@ -1,31 +1,47 @@
-"""``coinflight plot edge``: P(edge) of a thick coin against thickness / diameter."""
+"""``coinflight edge`` (P(edge) of thick coins as numbers) and ``coinflight plot edge`` (the
+same against thickness / diameter, as a figure)."""
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any, cast
 
 import typer
 
-from coinflight.cli.options import Dpi, OutFile, SimulateSeed, number
+from coinflight.cli.groups import _dist
+from coinflight.cli.options import (
+    OUTPUT_PANEL,
+    SURFACE_PANEL,
+    Dpi,
+    Gravity,
+    OutFile,
+    SimulateSeed,
+    number,
+    number_option,
+    print_json,
+)
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers
 from coinflight.cli.values import simulation_seed
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
+TABLE_RATIOS = "0.1,0.3,0.577,1"
+_SETTING = "vigorous planar spins, landing dead on a table; coinflight.studies.edge.simulate_edge"
 
-Simulate = Annotated[
-    int | None,
-    typer.Option(
+
+def _simulate(what: str) -> Any:
+    """--simulate N: tosses per ratio (``what``: what the command does with them)."""
+    return typer.Option(
         "--simulate",
         min=1,
         max=10**7,
         metavar="N",
         rich_help_panel=SIM_PANEL,
-        help="Also land N simulated tosses per ratio (vigorous planar spins, landing dead on a "
-        "table; coinflight.studies.edge.simulate_edge) and plot their edge fraction.",
-    ),
-]
+        help=f"Also land N simulated tosses per ratio ({_SETTING}) and {what}.",
+    )
+
+
+Simulate = Annotated[int | None, _simulate("plot their edge fraction")]
 Ratios = Annotated[
     str | None,
     typer.Option(
@@ -81,4 +97,131 @@ def plot_edge(
             )
 
 
-__all__ = ["plot_edge"]
+# --- coinflight edge: the numbers --------------------------------------------------------------
+_ONLY = "with --simulate: "
+EdgeRatios = Annotated[
+    str,
+    typer.Option(
+        "--ratios",
+        metavar="R,R,...",
+        help="Thickness / diameter ratios h/d, each between 0.001 and 100.",
+    ),
+]
+EdgeSimulate = Annotated[
+    int | None, _simulate("report their edge fraction with its standard error")
+]
+Restitution = Annotated[
+    float | None,
+    number_option(
+        "--restitution",
+        "E",
+        SURFACE_PANEL,
+        _ONLY + "the table's coefficient of restitution in [0, 1] (default 0: lands dead, "
+        "as in the dynamic model).",
+    ),
+]
+Friction = Annotated[
+    float | None,
+    number_option(
+        "--friction",
+        "MU",
+        SURFACE_PANEL,
+        _ONLY + "the table's Coulomb friction coefficient ≥ 0 (default 0.3).",
+    ),
+]
+DropHeight = Annotated[
+    float | None,
+    number_option(
+        "--drop-height",
+        "D",
+        SURFACE_PANEL,
+        _ONLY + "how far the table lies below the launch height, m (default 0.5).",
+    ),
+]
+SpinX = Annotated[
+    str | None, _dist("--omega-x", "With --simulate: spin about the x diameter", "rad/s")
+]
+LaunchSpeed = Annotated[
+    str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
+]
+EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
+EdgeJson = Annotated[
+    bool,
+    typer.Option(
+        "--json",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Print a JSON list on stdout, one object per ratio, instead of text.",
+    ),
+]
+
+
+def edge(
+    ratios: EdgeRatios = TABLE_RATIOS,
+    simulate: EdgeSimulate = None,
+    seed: SimulateSeed = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
+    drop_height: DropHeight = None,
+    omega_x: SpinX = None,
+    launch_speed: LaunchSpeed = None,
+    g: EdgeGravity = None,
+    json: EdgeJson = False,
+) -> None:
+    """P(edge) of thick coins per ratio h/d: Yong & Mahadevan's (2011) geometric and dynamic
+    models and, with --simulate, simulated landings.
+
+    Simulated by default in the dynamic model's setting:
+    spins of 150–300 rad/s about a diameter, launched at 1.5–3 m/s,
+    landing dead (restitution 0, friction 0.3) on a table 0.5 m below.
+
+    Example: coinflight edge --ratios 0.1,0.577,1 --simulate 4000 --seed 1 --json
+    """
+    from coinflight.model.distributions import parse_distribution
+    from coinflight.studies.edge import edge_table
+
+    given: dict[str, object] = {
+        "--restitution": restitution,
+        "--friction": friction,
+        "--drop-height": drop_height,
+        "--omega-x": omega_x,
+        "--launch-speed": launch_speed,
+        "--g": g,
+    }
+    the_seed = simulation_seed(simulate, seed, *given.items(), run_flag="--simulate")
+    setting: dict[str, Any] = {
+        key: value
+        for key, value in (
+            ("restitution", restitution),
+            ("friction", friction),
+            ("drop_height", drop_height),
+            ("g", g),
+        )
+        if value is not None
+    }
+    if omega_x is not None:
+        setting["spin"] = parse_distribution(omega_x, "--omega-x", "rad/s")
+    if launch_speed is not None:
+        setting["launch_speed"] = parse_distribution(launch_speed, "--launch-speed", "m/s")
+    rows = edge_table(
+        parse_numbers(ratios, "--ratios", TABLE_RATIOS), simulate, the_seed, **setting
+    )
+    if json:
+        print_json(cast(Any, rows))  # a list: one object per ratio
+        return
+    width = max(13, 2 * len(f"{simulate or 0:,}") + 3)  # "edge / tosses", right-aligned
+    header = f"{'h/d':>8}  {'geometric':>9}  {'dynamic':>9}"
+    if simulate is not None:
+        header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>{width}}"
+    typer.echo(header)
+    for row in rows:
+        line = f"{row['ratio']:>8g}  {row['p_edge_geometric']:>9.4f}  {row['p_edge_dynamic']:>9.4f}"
+        if "simulated" in row:
+            s = row["simulated"]
+            count = f"{s['successes']:,} / {s['n']:,}"
+            line += f"  {s['p_edge']:>9.4f}  {s['stderr']:>7.4f}  {count:>{width}}"
+        typer.echo(line)
+    if simulate is not None:
+        typer.echo(f"seed {rows[0]['simulated']['seed']}")
+
+
+__all__ = ["edge", "plot_edge"]

@@ -8,7 +8,7 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -17,6 +17,9 @@ from coinflight import _validation as v
 from coinflight.core.outcome import EDGE
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
+
+if TYPE_CHECKING:
+    from coinflight.model.distributions import Distribution
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
@@ -94,8 +97,24 @@ SIM_DROP = 0.5
 """The table lies this far below the launch point, m; the coin lands dead on it (e = 0)."""
 
 
+SIM_RESTITUTION = 0.0
+"""Restitution of the simulated landings: dead, as in the dynamic model."""
+SIM_FRICTION = 0.3
+"""Coulomb friction of the simulated landings, as the table's default
+(:data:`coinflight.model.surface.DEFAULT_FRICTION`)."""
+
+
 def simulate_edge(
-    ratios: ArrayLike, n: int, seed: streams.SeedLike = None, *, g: float = 9.81
+    ratios: ArrayLike,
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    g: float = 9.81,
+    restitution: float = SIM_RESTITUTION,
+    friction: float = SIM_FRICTION,
+    drop_height: float = SIM_DROP,
+    spin: Distribution | None = None,
+    launch_speed: Distribution | None = None,
 ) -> list[tuple[float, BinomialEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
@@ -111,8 +130,16 @@ def simulate_edge(
     stream), so the points are independent, a run of n tosses is the first n of a longer run,
     and the first ratios of a longer list give the same points. No seed: a fresh one from the
     OS, reported in every estimate.
+
+    The keywords change the setting (their defaults are the one above): ``restitution``,
+    ``friction`` and ``drop_height`` of the table (:class:`coinflight.model.surface.Surface`);
+    ``spin`` (ωx, rad/s) and ``launch_speed`` (v0, m/s) as distributions
+    (:mod:`coinflight.model.distributions`, drawn through their ``ppf`` from the same streams);
+    the launch speed must be positive with certainty.
     """
     from coinflight.model.coin import Coin
+    from coinflight.model.distributions import Distribution, Uniform
+    from coinflight.model.ensemble import check_launch_speed
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, land
 
@@ -129,7 +156,14 @@ def simulate_edge(
         BOUNCING_TOSSES_PER_SECOND,
     )
     streams.check_seed(seed)
-    surface = Surface("table", drop_height=SIM_DROP, restitution=0.0)
+    surface = Surface("table", drop_height=drop_height, restitution=restitution, friction=friction)
+    wx = Uniform(*SIM_SPIN) if spin is None else spin
+    for name, dist in (("spin", spin), ("launch speed", launch_speed)):
+        if dist is not None and not isinstance(dist, Distribution):
+            raise TypeError(f"{name} must be a distribution, got {type(dist).__name__}")
+    v0 = check_launch_speed(
+        Uniform(*SIM_LAUNCH_SPEED) if launch_speed is None else launch_speed, "launch speed"
+    )
     r = 0.5 * SIM_DIAMETER
     root = streams.seed_sequence(seed)
     out = []
@@ -139,16 +173,61 @@ def simulate_edge(
         edges = 0
         for u in streams.unit_cube(streams.child(root, i), n, 2):
             omega = np.zeros((u.shape[1], 3))
-            omega[:, 0] = SIM_SPIN[0] + (SIM_SPIN[1] - SIM_SPIN[0]) * u[0]
-            speed = SIM_LAUNCH_SPEED[0] + (SIM_LAUNCH_SPEED[1] - SIM_LAUNCH_SPEED[0]) * u[1]
+            omega[:, 0] = wx.ppf(u[0])
+            speed = v0.ppf(u[1])
             edges += int(np.sum(land(coin, omega, speed, 1.0, g, surface).face == EDGE))
         out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
 
 
+def edge_table(
+    ratios: ArrayLike,
+    n: int | None = None,
+    seed: streams.SeedLike = None,
+    **setting: Any,
+) -> list[dict[str, Any]]:
+    """P(edge) per ratio h/d, one dict each: both closed-form models and, with ``n``, a simulation.
+
+    Each dict has ``ratio``, ``p_edge_geometric`` and ``p_edge_dynamic``
+    (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
+    ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
+    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g). Ratios
+    must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
+    ``n``.
+
+    Examples
+    --------
+    >>> [round(row["p_edge_dynamic"], 4) for row in edge_table([0.577, 1.0])]
+    [0.3332, 0.5]
+    """
+    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
+    if x.ndim != 1:
+        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    if n is None and (setting or seed is not None):
+        given = ", ".join(["seed"] * (seed is not None) + sorted(setting))
+        raise ValueError(f"{given} set the simulation: give the number of tosses n as well")
+    geometric = edge_probability(x, "geometric")
+    dynamic = edge_probability(x, "dynamic")
+    rows: list[dict[str, Any]] = [
+        {"ratio": float(r), "p_edge_geometric": float(pg), "p_edge_dynamic": float(pd)}
+        for r, pg, pd in zip(x, geometric, dynamic, strict=True)
+    ]
+    if n is not None:
+        for row, (_, s) in zip(rows, simulate_edge(x, n, seed, **setting), strict=True):
+            row["simulated"] = {
+                "p_edge": s.p,
+                "stderr": s.stderr,
+                "n": s.n,
+                "successes": s.successes,
+                "seed": s.seed,
+            }
+    return rows
+
+
 __all__ = [
     "MODELS",
     "edge_probability",
+    "edge_table",
     "ratio_for",
     "simulate_edge",
 ]

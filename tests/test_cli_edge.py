@@ -1,0 +1,132 @@
+"""``coinflight edge``: P(edge) per ratio h/d as numbers (issue 11)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from typer.testing import CliRunner
+
+from coinflight.cli import app
+from coinflight.studies.edge import edge_probability
+
+RATIOS = [0.1, 0.3, 0.577, 1.0]
+
+
+def _run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(app, ["edge", *args])
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_json_rows_are_the_closed_form_models():
+    # Yong & Mahadevan 2011 (REFERENCES §5): geometric (h/d)/sqrt(1 + (h/d)²), dynamic
+    # 2 arctan(h/d)/π; also written out here so that the command is checked against the formula.
+    code, out, _ = _run("--ratios", "0.1,0.3,0.577,1", "--json")
+    assert code == 0
+    rows = json.loads(out)
+    assert [set(row) for row in rows] == [{"ratio", "p_edge_geometric", "p_edge_dynamic"}] * 4
+    assert [row["ratio"] for row in rows] == RATIOS
+    for row, x in zip(rows, RATIOS, strict=True):
+        geometric = float(edge_probability(x, "geometric"))
+        dynamic = float(edge_probability(x, "dynamic"))
+        assert row["p_edge_geometric"] == pytest.approx(geometric, abs=1e-12)
+        assert row["p_edge_dynamic"] == pytest.approx(dynamic, abs=1e-12)
+        assert row["p_edge_geometric"] == pytest.approx(x / math.sqrt(1 + x * x), abs=1e-12)
+        assert row["p_edge_dynamic"] == pytest.approx(2 * math.atan(x) / math.pi, abs=1e-12)
+    # h/d = 1: geometric 1/√2, dynamic exactly 1/2.
+    assert rows[-1]["p_edge_dynamic"] == pytest.approx(0.5, abs=1e-12)
+
+
+def test_simulated_rows_are_reproducible_and_follow_the_dynamic_model():
+    args = ("--ratios", "0.1,0.3,0.577,1", "--simulate", "2000", "--seed", "1", "--json")
+    code, out, _ = _run(*args)
+    assert code == 0
+    assert _run(*args)[1] == out  # same seed, same numbers
+    rows = json.loads(out)
+    for row in rows:
+        s = row["simulated"]
+        assert set(s) == {"p_edge", "stderr", "n", "successes", "seed"}
+        assert s["n"] == 2000 and s["seed"] == 1
+        assert s["p_edge"] == s["successes"] / 2000
+        assert math.isfinite(s["stderr"]) and s["stderr"] > 0
+        # Dead landings of vigorous planar spins: the dynamic model, within 4 s.e.
+        assert abs(s["p_edge"] - row["p_edge_dynamic"]) < 4 * s["stderr"]
+
+
+def test_seed_is_drawn_and_reported_when_not_given():
+    code, out, _ = _run("--ratios", "0.577", "--simulate", "200", "--json")
+    assert code == 0
+    seed = json.loads(out)[0]["simulated"]["seed"]
+    assert isinstance(seed, int)
+    again = _run("--ratios", "0.577", "--simulate", "200", "--seed", str(seed), "--json")[1]
+    assert again == out
+
+
+def test_setting_options_reach_the_simulation():
+    from coinflight.model.distributions import Fixed, Uniform
+    from coinflight.studies.edge import simulate_edge
+
+    args = ["--ratios", "0.3", "--simulate", "300", "--seed", "2", "--json"]
+    setting = ["--restitution", "0.4", "--friction", "0.5", "--drop-height", "0.3"]
+    setting += ["--omega-x", "100:200", "--launch-speed", "2", "--g", "9.8"]
+    code, out, _ = _run(*args, *setting)
+    assert code == 0
+    ((_, expected),) = simulate_edge(
+        [0.3],
+        300,
+        2,
+        restitution=0.4,
+        friction=0.5,
+        drop_height=0.3,
+        spin=Uniform(100.0, 200.0),
+        launch_speed=Fixed(2.0),
+        g=9.8,
+    )
+    assert json.loads(out)[0]["simulated"]["successes"] == expected.successes
+
+
+def test_text_table():
+    code, out, _ = _run("--ratios", "0.577,1", "--simulate", "100", "--seed", "5")
+    assert code == 0
+    lines = out.splitlines()
+    assert lines[0].split()[:4] == ["h/d", "geometric", "dynamic", "simulated"]
+    assert lines[1].split()[:3] == ["0.577", "0.4998", "0.3332"]
+    assert lines[2].split()[:3] == ["1", "0.7071", "0.5000"]
+    assert lines[-1] == "seed 5"
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--ratios", "0"], "thickness/diameter ratio must be between 0.001 and 100, got 0"),
+        (["--ratios", "abc"], "--ratios must be comma-separated numbers"),
+        (["--ratios", "0.1,,1"], "--ratios must be comma-separated numbers"),
+        (["--simulate", "0"], "--simulate"),
+        (["--seed", "3"], "--seed needs --simulate N"),
+        (["--friction", "0.1"], "--friction needs --simulate N"),
+        (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
+        (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
+        (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(args, words):
+    code, out, err = _run(*args)
+    assert code == 2
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("coinflight: error: ")
+    assert words in lines[0]
+
+
+def test_help():
+    from coinflight.studies import edge as study
+
+    code, out, _ = _run("--help")
+    assert code == 0
+    # The defaults the help states are the simulation's.
+    assert (study.SIM_RESTITUTION, study.SIM_FRICTION, study.SIM_DROP) == (0.0, 0.3, 0.5)
+    assert (study.SIM_SPIN, study.SIM_LAUNCH_SPEED) == ((150.0, 300.0), (1.5, 3.0))
+    assert "(restitution 0, friction 0.3) on a table 0.5 m below" in out
+    for flag in ("--ratios", "--simulate", "--seed", "--restitution", "--friction", "--json"):
+        assert flag in out
