@@ -101,12 +101,8 @@ def bias(
         payload: dict[str, Any] = {"p_same_side": p, **psi_payload, "source": SOURCE}
         if sim is not None:
             payload["monte_carlo"] = {
-                "p_same_side": sim.p,
-                "stderr": sim.stderr,
+                **_monte_carlo(sim.p, sim.stderr, sim.n, sim.seed, p),
                 "same": sim.successes,
-                "n": sim.n,
-                "seed": sim.seed,
-                "z": sim.z(p),
                 "flight_time": list(b.DEFAULT_FLIGHT_TIME),
                 "precession_rate": list(b.DEFAULT_PRECESSION_RATE),
                 "coin": the_coin.name,
@@ -160,13 +156,9 @@ def _bias_preset(
             "source": SOURCE,
         }
         if result is not None:
-            payload["monte_carlo"] = {
-                "p_same_side": result.p_same_side,
-                "stderr": result.stderr,
-                "n": result.n,
-                "seed": result.seed,
-                "z": (result.p_same_side - p) / result.stderr if result.stderr else 0.0,
-            }
+            payload["monte_carlo"] = _monte_carlo(
+                result.p_same_side, result.stderr, result.n, result.seed, p
+            )
         print_json(payload)
         return
     typer.echo(f"preset {name}: {dist.describe()}".replace("\n", "; "))
@@ -181,3 +173,11 @@ def _bias_preset(
             f"{(result.p_same_side - p) / result.stderr:+.2f} s.e. from the closed form; "
             f"seed {result.seed}"
         )
+
+
+def _monte_carlo(
+    p_sim: float, stderr: float | None, n: int | None, seed: int | None, p: float
+) -> dict[str, Any]:
+    """The JSON of a Monte Carlo check against the closed form p: estimate, s.e., n, seed, z."""
+    z = (p_sim - p) / stderr if stderr else 0.0
+    return {"p_same_side": p_sim, "stderr": stderr, "n": n, "seed": seed, "z": z}
