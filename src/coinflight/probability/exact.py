@@ -361,11 +361,11 @@ def _gauss_spins(
         # Outer spins: a tensor grid of nodes with their density-weighted weights.
         coords = {d: np.array([spins[d].mean]) for d in _SPINS}
         weight = np.ones(1)
-        for d in outer:
-            x, w = _composite(_breaks(spins[d]), n)
-            w = w * _pdf(spins[d], x)
+        for name in outer:
+            x, w = _composite(_breaks(spins[name]), n)
+            w = w * _pdf(spins[name], x)
             coords = {k: np.repeat(c, x.size) for k, c in coords.items()}
-            coords[d] = np.tile(x, weight.size)
+            coords[name] = np.tile(x, weight.size)
             weight = np.repeat(weight, x.size) * np.tile(w, weight.size)
         wx, wy, wz = coords["omega_x"], coords["omega_y"], coords["omega_z"]
         if inner is None:
