@@ -221,3 +221,36 @@ def diameter_spin_integral(x1: float, x2: float, c: float, t1: float, t2: float)
     return math.fsum(
         _diameter_spin_pieces(float(a), float(b), c, t1, t2) for a, b in itertools.pairwise(xs)
     )
+
+
+def same_side_over_times(
+    perp2: FloatArray,
+    axial2: FloatArray,
+    cdf: Any,
+    t_low: float,
+    t_high: float,
+) -> FloatArray:
+    """P(same side) at each spin, the flight time T with CDF ``cdf`` on about [t_low, t_high].
+
+    Vectorized over spins given as Ω⊥² = ωx² + ωy² (``perp2``) and ((I3/I1) ω_z)² (``axial2``):
+    the band measure Σ_m CDF((2πm + a)/ωp) − CDF((2πm − a)/ωp) over every band that meets
+    [t_low, t_high] (ωp = √(Ω⊥² + axial²), a from :func:`half_width`; Diaconis, Holmes &
+    Montgomery 2007, section 2); 1 where the coin never turns over (:func:`never_turns_over`).
+    The same sum as the fixed-spin closed form in T, for arrays of spins at once; the caller
+    bounds its work (about ωp (t_high − t_low) / 2π + 3 terms a spin).
+    """
+    perp2 = np.asarray(perp2, dtype=float)
+    axial2 = np.asarray(axial2, dtype=float)
+    turns = ~never_turns_over(axial2, perp2)
+    p2 = np.where(turns, perp2, 1.0)
+    x2 = np.where(turns, axial2, 0.0)
+    wp = np.sqrt(p2 + x2)
+    a = half_width(x2 / p2)
+    m0 = np.floor((wp * t_low - a) / TWO_PI)
+    count = int(np.max(np.ceil((wp * t_high + a) / TWO_PI) - m0, initial=0.0)) + 1
+    m = m0[..., None] + np.arange(count)
+    inv = 1.0 / wp[..., None]
+    total = np.sum(
+        cdf((TWO_PI * m + a[..., None]) * inv) - cdf((TWO_PI * m - a[..., None]) * inv), axis=-1
+    )
+    return np.where(turns, total, 1.0)

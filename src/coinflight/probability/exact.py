@@ -26,7 +26,7 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.core import bands
-from coinflight.model.distributions import Distribution, Fixed, Uniform
+from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import OutcomeModel
 from coinflight.probability.registry import Estimator
@@ -254,6 +254,173 @@ def _closed_form_in_t_quadrature(
     return _quad(integrand, len(ranged), details)
 
 
+GAUSS_ORDERS = (12, 16, 24, 32, 48, 64)
+"""Gauss–Legendre nodes per panel tried in turn by the Gauss product rule over the spins; the
+result is the first whose change from the previous order is within :data:`TOLERANCE`."""
+MAX_BAND_TERMS = 3e9
+"""Most normal-CDF differences the Gauss product rule may evaluate over all its orders (about
+the time budget of :data:`MAX_EVALUATIONS`)."""
+BAND_TERMS_PER_SECOND = 5e7
+"""CDF differences the Gauss product rule evaluates a second (2-core machine)."""
+_CHUNK = 1 << 15
+"""Spins evaluated at once by the Gauss product rule (memory ~ _CHUNK × bands × 8 bytes × 4)."""
+
+
+def _pdf(d: Distribution, x: np.ndarray) -> np.ndarray:
+    """Density of a uniform or normal spin distribution at ``x``."""
+    if isinstance(d, Uniform):
+        return np.where((x >= d.low) & (x <= d.high), 1.0 / (d.high - d.low), 0.0)
+    assert isinstance(d, Normal)
+    z = (x - d.mean) / d.sd
+    return np.exp(-0.5 * z * z) / (d.sd * math.sqrt(2.0 * math.pi))
+
+
+def _breaks(d: Distribution) -> np.ndarray:
+    """Panel ends of the composite rule for one spin: its support (normal: ±9 sd, which holds
+    all but 2e-19 of the mass) cut at the mean, ±3 sd and at 0 (where the spin's sign flips)."""
+    if isinstance(d, Uniform):
+        pts = np.linspace(d.low, d.high, 3)
+    else:
+        assert isinstance(d, Normal)
+        pts = d.mean + d.sd * np.array([-9.0, -3.0, 0.0, 3.0, 9.0])
+    if pts[0] < 0.0 < pts[-1]:
+        pts = np.sort(np.append(pts, 0.0))
+    return pts
+
+
+def _composite(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss–Legendre nodes and weights (``numpy.polynomial.legendre.leggauss``), ``n`` per
+    panel, on the panels between consecutive ``ends`` (last axis; earlier axes broadcast)."""
+    g, gw = np.polynomial.legendre.leggauss(n)
+    lo, hi = ends[..., :-1, None], ends[..., 1:, None]
+    half = 0.5 * (hi - lo)
+    x = 0.5 * (hi + lo) + half * g
+    w = half * gw
+    shape = (*ends.shape[:-1], -1)
+    return x.reshape(shape), w.reshape(shape)
+
+
+def _gauss_applies(dist: TossDistribution, ranged: list[str]) -> bool:
+    """A flight time with a smooth CDF (normal), ranged spins uniform or normal, and the ψ = 45°
+    kink where it can be split: ω_z ranged, ω_z = 0, or one ranged spin."""
+    if isinstance(dist.flight_time, Fixed | Uniform) or not ranged:
+        return False
+    if not all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged):
+        return False
+    return "omega_z" in ranged or dist.omega_z.mean == 0.0 or len(ranged) == 1
+
+
+def _gauss_spins(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """Closed form in T, Gauss–Legendre product rule over the spins, split at ψ = 45°.
+
+    Conditional on the spins, P(same side) is the band measure over T
+    (:func:`coinflight.core.bands.same_side_over_times`), smooth in the spins except where the
+    coin stops turning over, ((I3/I1) ω_z)² = Ω⊥²: beyond it the measure is 1, and at it the
+    band half-width a = arccos(−cot²ψ) reaches π like a square root. One spin carries the kink
+    at ±k: ω_z (k = (I1/I3) Ω⊥, the measure 1 outside, ω_z = k sin θ inside) or, with ω_z fixed,
+    the one ranged spin x (k² = ((I3/I1) ω_z)² − c², the measure 1 inside, x = ±√(k² + s²)
+    outside); both substitutions make the integrand smooth in the new variable. The mass where
+    the measure is 1 comes from the spin's CDF. The other spins are outer variables. Each
+    variable takes a composite Gauss–Legendre rule (:func:`_breaks` panels); orders
+    :data:`GAUSS_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`, their
+    difference being the error estimate.
+    """
+    i1, i3 = dist.moments
+    ratio = i3 / i1
+    t = dist.flight_time
+    lo_t, hi_t = t.bounds
+    if not math.isfinite(lo_t):
+        lo_t = max(0.0, float(t.ppf(2.0**-53)))
+    if not math.isfinite(hi_t):
+        hi_t = float(t.ppf(1.0 - 2.0**-53))
+    spins: dict[str, Distribution] = {n: getattr(dist, n) for n in _SPINS}
+    inner = "omega_z" if "omega_z" in ranged else (ranged[0] if spins["omega_z"].mean else None)
+    outer = [n for n in ranged if n != inner]
+    # Work: points × bands a point, at the largest order, bounded before anything is allocated.
+    largest = {
+        n: float(np.max(np.abs(_breaks(spins[n])))) if n in ranged else abs(spins[n].mean)
+        for n in _SPINS
+    }
+    wp_max = math.sqrt(
+        largest["omega_x"] ** 2 + largest["omega_y"] ** 2 + (ratio * largest["omega_z"]) ** 2
+    )
+    per_point = wp_max * (hi_t - lo_t) / (2.0 * math.pi) + 3.0
+    points = sum(math.prod(n * (len(_breaks(spins[d])) + 1) for d in ranged) for n in GAUSS_ORDERS)
+    v.work_bound(
+        f"the exact Gauss quadrature over {len(ranged)} ranged spins",
+        points * per_point,
+        MAX_BAND_TERMS,
+        "band terms",
+        _USE_INSTEAD,
+        rate=BAND_TERMS_PER_SECOND,
+    )
+
+    def integral(n: int) -> float:
+        # Outer spins: a tensor grid of nodes with their density-weighted weights.
+        coords = {d: np.array([spins[d].mean]) for d in _SPINS}
+        weight = np.ones(1)
+        for name in outer:
+            x, w = _composite(_breaks(spins[name]), n)
+            w = w * _pdf(spins[name], x)
+            coords = {k: np.repeat(c, x.size) for k, c in coords.items()}
+            coords[name] = np.tile(x, weight.size)
+            weight = np.repeat(weight, x.size) * np.tile(w, weight.size)
+        wx, wy, wz = coords["omega_x"], coords["omega_y"], coords["omega_z"]
+        if inner is None:
+            same = _same(wx * wx + wy * wy, (ratio * wz) ** 2)
+            return math.fsum(weight * same)
+        d = spins[inner]
+        cuts = _breaks(d)
+        if inner == "omega_z":
+            k = np.sqrt(wx * wx + wy * wy) / ratio
+            sure = 1.0 - (d.cdf(k) - d.cdf(-k))  # |ω_z| ≥ k: never turns over
+            safe = np.where(k > 0.0, k, 1.0)[:, None]
+            ends = np.where(k[:, None] > 0.0, np.arcsin(np.clip(cuts, -safe, safe) / safe), 0.0)
+            theta, w = _composite(ends, n)
+            z = safe * np.sin(theta)
+            w = w * safe * np.cos(theta) * _pdf(d, z)
+            perp2 = np.broadcast_to((wx * wx + wy * wy)[:, None], z.shape)
+            same = _same(perp2.ravel(), ((ratio * z) ** 2).ravel()).reshape(z.shape)
+            return math.fsum(weight * sure) + math.fsum((weight[:, None] * w * same).ravel())
+        # ω_z fixed, one ranged spin x, the other fixed at c: the kink at x = ±k.
+        other = "omega_y" if inner == "omega_x" else "omega_x"
+        c = spins[other].mean
+        axial2 = (ratio * spins["omega_z"].mean) ** 2
+        k = math.sqrt(max(axial2 - c * c, 0.0))
+        total = float(d.cdf(k) - d.cdf(-k))  # |x| < k: never turns over
+        for sign in (1.0, -1.0):
+            side = np.clip(sign * cuts, k, None)
+            ends = np.sort(np.sqrt(np.maximum(side * side - k * k, 0.0)))
+            s, w = _composite(ends, n)
+            x = np.sqrt(k * k + s * s)
+            w = w * np.where(x > 0.0, s / np.where(x > 0.0, x, 1.0), 1.0) * _pdf(d, sign * x)
+            same = _same(x * x + c * c, np.full_like(x, axial2))
+            total += math.fsum(w * same)
+        return total
+
+    def _same(perp2: np.ndarray, axial2: np.ndarray) -> np.ndarray:
+        out = np.empty(perp2.size)
+        for start in range(0, perp2.size, _CHUNK):
+            sl = slice(start, start + _CHUNK)
+            out[sl] = bands.same_side_over_times(perp2[sl], axial2[sl], t.cdf, lo_t, hi_t)
+        return out
+
+    previous = math.nan
+    for n in GAUSS_ORDERS:
+        value = integral(n)
+        change = abs(value - previous)
+        if change <= TOLERANCE:
+            details["nodes per panel"] = n
+            return value, change
+        previous = value
+    raise ValueError(
+        f"the exact Gauss quadrature did not reach its tolerance {TOLERANCE:g} with "
+        f"{GAUSS_ORDERS[-1]} nodes per panel (last change {change:.2g}); {_USE_INSTEAD}"
+    )
+
+
 _CASES: tuple[
     tuple[
         str,
@@ -268,6 +435,11 @@ _CASES: tuple[
         "closed form in one spin, quadrature in the other",
         _two_diameter_spins_one_uniform,
         _closed_form_and_quadrature,
+    ),
+    (
+        "closed form in T, Gauss product rule over the spins split at ψ = 45°",
+        _gauss_applies,
+        _gauss_spins,
     ),
     (
         "closed form in T, quadrature over the spins",
