@@ -7,12 +7,19 @@ Which integral is used (``details["how"]``):
   (:func:`coinflight.core.bands.diameter_spin_integral`); error at rounding level (~1e-14).
 * ``closed form in T``: every spin fixed (precession allowed), any flight-time distribution
   with a CDF: Σ over bands of CDF(hi) − CDF(lo).
+* ``closed form in T, Gauss product rule over the spins split at ψ = 45°``: a normal flight
+  time (or launch speed) with any ranged spins when ω_z is ranged or ω_z = 0, or one ranged spin
+  with ω_z fixed: the closed form over T for arrays of spins
+  (:func:`coinflight.core.bands.same_side_over_times`), then Gauss–Legendre panels over the
+  spins with the kink at ψ = 45° put on one spin and smoothed by a change of variable; node
+  counts raised until two agree within 1e-9 (their difference is the error estimate), else a
+  ValueError.
 * ``quadrature``: otherwise, with at most two ranged spin components and a continuous flight
   time: adaptive quadrature (``scipy.integrate.quad``) over the ranged spins, in probability
   space (u = CDF(ω)), of the closed form in T or, with ω_z = 0 and a uniform spin range, of the
   closed form in that spin. The error estimate is reported.
-* A fixed flight time with ranged spins and precession, or three ranged spin components: a
-  ValueError naming the methods to use instead.
+* A fixed flight time with ranged spins and precession, or three ranged spin components with a
+  uniform or fixed flight time: a ValueError naming the methods to use instead.
 """
 
 from __future__ import annotations
