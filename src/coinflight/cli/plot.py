@@ -6,10 +6,10 @@ from collections.abc import Callable
 
 import typer
 
-from coinflight.cli.edge import plot_edge
 from coinflight.cli.output import help_when_bare
 from coinflight.cli.plot_basin import plot_basin
 from coinflight.cli.plot_bias import plot_bias
+from coinflight.cli.plot_edge import plot_edge
 from coinflight.cli.plot_toss import plot_toss
 
 plot_app = typer.Typer(
