@@ -55,9 +55,12 @@ HOSTILE_RANGES = [
     "1e308:inf", "nan:1", "normal:80,0", "normal:80,-1", "normal:nan,1", "normal:1e308,1e308",
     "normal:80", "normal:", "uniform:1,2", "60:90:120", "1e-320:2e-320",
 ]  # fmt: skip
-# Never a path outside the test's own folder that the run could write (the suite may run as
-# root: "/" once left /convergence.* behind); /dev/full and /proc/version must be refused.
-HOSTILE_PATHS = ["", ".", "sub/", "/dev/full", "/proc/version", "no/such/dir/x.png", "x.unknown"]
+# Never a path outside the test's own folder that the run could write: the suite may run as
+# root, and "/" once left /convergence.*, "/dev/full" /dev/full.png (a suffix is added to a
+# bare name). /proc refuses new files even to root. (Full devices: tests/test_cli_streams.py.)
+HOSTILE_PATHS = [
+    "", ".", "sub/", "/proc/coinflight-test", "/proc/version", "no/such/dir/x.png", "x.unknown",
+]  # fmt: skip
 
 
 def _number(low: float, high: float) -> st.SearchStrategy[str]:
