@@ -24,6 +24,7 @@ Which integral is used (``details["how"]``):
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 from collections.abc import Callable
@@ -264,13 +265,17 @@ def _closed_form_in_t_quadrature(
 GAUSS_ORDERS = (12, 16, 24, 32, 48, 64)
 """Gauss–Legendre nodes per panel tried in turn by the Gauss product rule over the spins; the
 result is the first whose change from the previous order is within :data:`TOLERANCE`."""
-MAX_BAND_TERMS = 3e9
-"""Most normal-CDF differences the Gauss product rule may evaluate over all its orders (about
-the time budget of :data:`MAX_EVALUATIONS`)."""
-BAND_TERMS_PER_SECOND = 5e7
-"""CDF differences the Gauss product rule evaluates a second (2-core machine)."""
-_CHUNK = 1 << 15
-"""Spins evaluated at once by the Gauss product rule (memory ~ _CHUNK × bands × 8 bytes × 4)."""
+MAX_SPIN_POINTS = 6e7
+"""Most spin points (each a few wrapped-normal terms) the Gauss product rule may evaluate over
+all its orders, bounded before anything is allocated (about a minute on the 2-core machine)."""
+SPIN_POINTS_PER_SECOND = 1.5e6
+"""Spin points the Gauss product rule evaluates a second (2-core machine, about ten terms each)."""
+MAX_PANELS = 24
+"""Most panels per spin variable (or per angular sector) the resolution may ask for."""
+_CHUNK = 1 << 16
+"""Spins evaluated at once by the Gauss product rule (memory ~ _CHUNK × 6 terms × 8 bytes × 4)."""
+_NORMAL_SPAN = 9.0
+"""A normal spin is integrated over mean ± 9 sd (all but 2e-19 of its mass)."""
 
 
 def _pdf(d: Distribution, x: np.ndarray) -> np.ndarray:
@@ -282,17 +287,45 @@ def _pdf(d: Distribution, x: np.ndarray) -> np.ndarray:
     return np.exp(-0.5 * z * z) / (d.sd * math.sqrt(2.0 * math.pi))
 
 
-def _breaks(d: Distribution) -> np.ndarray:
-    """Panel ends of the composite rule for one spin: its support (normal: ±9 sd, which holds
-    all but 2e-19 of the mass) cut at the mean, ±3 sd and at 0 (where the spin's sign flips)."""
+def _support(d: Distribution) -> tuple[float, float]:
+    """Where a spin's mass lies: a uniform's range, a normal's mean ± 9 sd."""
     if isinstance(d, Uniform):
-        pts = np.linspace(d.low, d.high, 3)
-    else:
-        assert isinstance(d, Normal)
+        return d.low, d.high
+    assert isinstance(d, Normal)
+    return d.mean - _NORMAL_SPAN * d.sd, d.mean + _NORMAL_SPAN * d.sd
+
+
+def _scale(d: Distribution) -> float:
+    """Widest panel a spin's density allows: 3 sd for a normal, half the range for a uniform."""
+    if isinstance(d, Normal):
+        return 3.0 * d.sd
+    lo, hi = d.bounds
+    return 0.5 * (hi - lo)
+
+
+def _breaks(d: Distribution, h: float) -> np.ndarray:
+    """Panel ends of the composite rule for one spin: its support cut at the mean, ±3 sd and
+    at 0 (where the spin's sign flips), then each panel halved until it is at most ``h`` wide
+    (at most :data:`MAX_PANELS` panels in all)."""
+    lo, hi = _support(d)
+    h = min(h, _scale(d))
+    if isinstance(d, Normal):
         pts = d.mean + d.sd * np.array([-9.0, -3.0, 0.0, 3.0, 9.0])
+    else:
+        pts = np.linspace(lo, hi, 3)
     if pts[0] < 0.0 < pts[-1]:
         pts = np.sort(np.append(pts, 0.0))
-    return pts
+    return _refine(pts, h)
+
+
+def _refine(pts: np.ndarray, h: float) -> np.ndarray:
+    """``pts`` with each gap cut into equal pieces at most ``h`` wide (≤ MAX_PANELS pieces)."""
+    out = [pts[:1]]
+    budget = max(1, MAX_PANELS // max(1, len(pts) - 1))
+    for a, b in itertools.pairwise(pts):
+        pieces = min(budget, max(1, math.ceil((b - a) / h))) if h > 0 else 1
+        out.append(np.linspace(a, b, pieces + 1)[1:])
+    return np.concatenate(out)
 
 
 def _composite(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -308,79 +341,237 @@ def _composite(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _gauss_applies(dist: TossDistribution, ranged: list[str]) -> bool:
-    """A flight time with a smooth CDF (normal), ranged spins uniform or normal, and the ψ = 45°
-    kink where it can be split: ω_z ranged, ω_z = 0, or one ranged spin."""
-    if isinstance(dist.flight_time, Fixed | Uniform) or not ranged:
+    """A normal flight time (or launch speed) and ranged spins uniform or normal."""
+    if not isinstance(dist.flight_time, Normal) or not ranged:
         return False
-    if not all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged):
-        return False
-    return "omega_z" in ranged or dist.omega_z.mean == 0.0 or len(ranged) == 1
+    return all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
+
+
+def _resolution(dist: TossDistribution, ranged: list[str]) -> float:
+    """Widest panel over the spins (besides each density's own scale, :func:`_scale`): where
+    the flight-time spread leaves the phase's wrapped-normal terms alive for typical spins
+    (ωp · sd < 5.3, a term above 1e-6, with the spins within their central 1 − 1e-4), one
+    phase period
+    2π / mean T over which P(same side | spins) then oscillates. The comparison of successive
+    orders judges what remains."""
+    t = dist.flight_time
+    assert isinstance(t, Normal)
+    h = math.inf
+    i1, i3 = dist.moments
+    nearest = {}
+    for name in _SPINS:
+        d = getattr(dist, name)
+        lo, hi = (float(d.ppf(5e-5)), float(d.ppf(1 - 5e-5))) if name in ranged else (d.mean,) * 2
+        nearest[name] = 0.0 if lo <= 0.0 <= hi else min(abs(lo), abs(hi))
+    typical = math.hypot(nearest["omega_x"], nearest["omega_y"], i3 / i1 * nearest["omega_z"])
+    if typical * t.sd < 5.3:
+        h = min(h, 2.0 * math.pi / t.mean)
+    return h
+
+
+def _polar_plan(
+    dx: Distribution, dy: Distribution, h: float, kink: float | None, rims: tuple[float, ...] = ()
+) -> tuple[np.ndarray, int]:
+    """The angular panel ends and the radial pieces per segment of :func:`_polar`."""
+    (x1, x2), (y1, y2) = _support(dx), _support(dy)
+    h = min(h, _scale(dx), _scale(dy))
+    corners = [(x, y) for x in (x1, x2) for y in (y1, y2)]
+    if x1 <= 0.0 <= x2 and y1 <= 0.0 <= y2:
+        start, stop = -math.pi, math.pi
+    else:
+        centre = math.atan2(0.5 * (y1 + y2), 0.5 * (x1 + x2))
+        rel = [(math.atan2(y, x) - centre + math.pi) % (2 * math.pi) - math.pi for x, y in corners]
+        start, stop = centre + min(rel), centre + max(rel)
+    cuts = [math.atan2(y, x) for x, y in corners] + [-math.pi / 2, 0.0, math.pi / 2]
+    for radius in (kink, *rims) if kink else rims:
+        for edge in (x1, x2):
+            if abs(edge) < radius:
+                c = math.acos(edge / radius)
+                cuts += [c, -c]
+        for edge in (y1, y2):
+            if abs(edge) < radius:
+                s = math.asin(edge / radius)
+                cuts += [s, math.pi - s]
+    wrapped = [start + (c - start) % (2 * math.pi) for c in cuts]
+    ends = np.unique(np.clip([start, stop, *wrapped], start, stop))
+    far = max(math.hypot(x, y) for x, y in corners)
+    ends = _refine(ends, h / far)
+    chord = math.hypot(x2 - x1, y2 - y1)
+    return ends, min(MAX_PANELS, max(1, math.ceil(chord / h)))
+
+
+def _polar(
+    dx: Distribution,
+    dy: Distribution,
+    n: int,
+    h: float,
+    kink: float | None,
+    rims: tuple[float, ...] = (),
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Nodes (x, y) and density-weighted weights of a product rule over two ranged spins in
+    polar coordinates about the origin, where P(same side | spins) depends on the radius
+    Ω⊥ smoothly except at the origin (a cone's apex when ω_z is ranged) and at ``kink``
+    (the circle Ω⊥ = (I3/I1) |ω_z| where the coin stops turning over, ω_z fixed).
+
+    The angle is cut at the corners of the support box (where the ray leaves through another
+    side), at the axes, and where a side meets the circle; the radius runs from where the ray
+    enters the box to where it leaves it, cut at the circle, beyond which r = √(k² + s²) makes
+    the square-root kink smooth in s. ``rims`` are radii where the integrand has a
+    half-integer power (a uniform ω_z's range ends meet the cone): the radius is cut there too and
+    each radial piece mapped by the smoothstep r = a + (b − a)(3u² − 2u³), whose vanishing
+    slope at both ends makes such powers smooth in u. Each piece then carries a smooth
+    integrand: Gauss–Legendre with ``n`` nodes a panel, panels at most ``h`` wide (arc length
+    at the far corner).
+    """
+    (x1, x2), (y1, y2) = _support(dx), _support(dy)
+    ends, pieces = _polar_plan(dx, dy, h, kink, rims)
+    phi, wphi = _composite(ends, n)
+    cos, sin = np.cos(phi), np.sin(phi)
+    # Where each ray enters and leaves the box (slab method).
+    r_in = np.zeros_like(phi)
+    r_out = np.full_like(phi, np.inf)
+    for c, lo, hi in ((cos, x1, x2), (sin, y1, y2)):
+        safe = np.where(c != 0.0, c, 1.0)
+        a, b = lo / safe, hi / safe
+        near, far_ = np.minimum(a, b), np.maximum(a, b)
+        inside = (lo <= 0.0) & (hi >= 0.0)
+        near = np.where(c != 0.0, near, -np.inf if inside else np.inf)
+        far_ = np.where(c != 0.0, far_, np.inf if inside else -np.inf)
+        r_in, r_out = np.maximum(r_in, near), np.minimum(r_out, far_)
+    r_out = np.maximum(r_out, r_in)
+    frac = np.linspace(0.0, 1.0, pieces + 1)
+    segments = []
+    k = kink or 0.0
+    # Inside the circle (P = 1 when ω_z is fixed), then outside it in s = √(r² − k²).
+    if k:
+        segments.append((np.minimum(r_in, k), np.minimum(r_out, k), False))
+        s_lo = np.sqrt(np.maximum(np.maximum(r_in, k) ** 2 - k * k, 0.0))
+        s_hi = np.sqrt(np.maximum(np.maximum(r_out, k) ** 2 - k * k, 0.0))
+        segments.append((s_lo, s_hi, True))
+    else:
+        bounds = [r_in, *(np.clip(rim, r_in, r_out) for rim in sorted(rims)), r_out]
+        segments += [(a, b, False) for a, b in itertools.pairwise(bounds)]
+    graded = bool(rims) and not k
+    xs, ys, ws = [], [], []
+    for lo, hi, substituted in segments:
+        u, ws_ = _composite(np.broadcast_to(frac, (lo.size, frac.size)), n)
+        if graded:  # smoothstep: slope 0 at both ends of the piece
+            ws_ = ws_ * 6.0 * u * (1.0 - u)
+            u = u * u * (3.0 - 2.0 * u)
+        s = lo[:, None] + (hi - lo)[:, None] * u
+        ws_ = ws_ * (hi - lo)[:, None]
+        if substituted:
+            r = np.sqrt(k * k + s * s)
+            ws_ = ws_ * np.where(r > 0.0, s / np.where(r > 0.0, r, 1.0), 1.0)
+        else:
+            r = s
+        x, y = r * cos[:, None], r * sin[:, None]
+        xs.append(x.ravel())
+        ys.append(y.ravel())
+        ws.append((wphi[:, None] * ws_ * r * _pdf(dx, x) * _pdf(dy, y)).ravel())
+    return np.concatenate(xs), np.concatenate(ys), np.concatenate(ws)
+
+
+def _use_polar(dist: TossDistribution, ranged: list[str]) -> bool:
+    """Two ranged ωx, ωy go to polar coordinates when ω_z is fixed ≠ 0 (the circle where the
+    coin stops turning over); else a tensor product. (Polar coordinates would also take the
+    cone's apex at the origin when ω_z is ranged, but the ray's exit from an elongated box
+    then has a pole near the sector's end and Gauss–Legendre in the angle converges slowly.)"""
+    return "omega_z" not in ranged and dist.omega_z.mean != 0.0
+
+
+def _rims(dist: TossDistribution, ranged: list[str]) -> tuple[float, ...]:
+    """Radii Ω⊥ = (I3/I1) |ω_z| at the ends of a uniform ω_z range: there the cone where the
+    coin stops turning over meets the range's end, and the integral over ω_z has a
+    half-integer power of the distance (:func:`_polar` grades its pieces there)."""
+    d = dist.omega_z
+    if "omega_z" not in ranged or not isinstance(d, Uniform):
+        return ()
+    i1, i3 = dist.moments
+    return tuple(sorted({i3 / i1 * abs(e) for e in (d.low, d.high) if e != 0.0}))
+
+
+def _gauss_points(dist: TossDistribution, ranged: list[str], h: float, n: int) -> int:
+    """The spin points of one order of :func:`_gauss_spins`, counted before any allocation."""
+    spins = {d: getattr(dist, d) for d in _SPINS}
+    plane = [d for d in ("omega_x", "omega_y") if d in ranged]
+    if len(plane) == 2 and _use_polar(dist, ranged):
+        kink = None if "omega_z" in ranged else abs(spins["omega_z"].mean) or None
+        rims = _rims(dist, ranged)
+        ends, pieces = _polar_plan(spins["omega_x"], spins["omega_y"], h, kink, rims)
+        outer = (len(ends) - 1) * n * pieces * n * (2 if kink else 1 + len(rims))
+    else:
+        outer = math.prod(n * (len(_breaks(spins[d], h)) - 1) for d in plane)
+        outer *= 2 if plane and "omega_z" not in ranged else 1
+    inner = n * (len(_breaks(spins["omega_z"], h)) - 1) if "omega_z" in ranged else 1
+    return outer * inner
 
 
 def _gauss_spins(
     dist: TossDistribution, ranged: list[str], details: _Details
 ) -> tuple[float, float]:
-    """Closed form in T, Gauss–Legendre product rule over the spins, split at ψ = 45°.
+    """Wrapped-normal closed form in T, Gauss–Legendre product rule over the spins, split at
+    ψ = 45°.
 
-    Conditional on the spins, P(same side) is the band measure over T
-    (:func:`coinflight.core.bands.same_side_over_times`), smooth in the spins except where the
+    Conditional on the spins, P(same side) over the normal flight time is a short series
+    (:func:`coinflight.core.bands.same_side_normal_time`), smooth in the spins except where the
     coin stops turning over, ((I3/I1) ω_z)² = Ω⊥²: beyond it the measure is 1, and at it the
-    band half-width a = arccos(−cot²ψ) reaches π like a square root. One spin carries the kink
-    at ±k: ω_z (k = (I1/I3) Ω⊥, the measure 1 outside, ω_z = k sin θ inside) or, with ω_z fixed,
-    the one ranged spin x (k² = ((I3/I1) ω_z)² − c², the measure 1 inside, x = ±√(k² + s²)
-    outside); both substitutions make the integrand smooth in the new variable. The mass where
-    the measure is 1 comes from the spin's CDF. The other spins are outer variables. Each
-    variable takes a composite Gauss–Legendre rule (:func:`_breaks` panels); orders
-    :data:`GAUSS_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`, their
-    difference being the error estimate.
+    band half-width a = arccos(−cot²ψ) reaches π like a square root. The kink is put on a
+    coordinate and smoothed by a change of variable:
+
+    * ω_z ranged: ω_z is the inner variable, the kink at ±k, k = (I1/I3) Ω⊥, with the
+      measure 1 outside and ω_z = k sin θ inside; the mass outside comes from ω_z's CDF. The
+      ranged ωx, ωy are outer variables: one by composite Gauss–Legendre, two in polar
+      coordinates (:func:`_polar`; Ω⊥ has a cone's apex at the origin).
+    * ω_z fixed ≠ 0: the kink is the circle Ω⊥ = (I3/I1) |ω_z|; one ranged spin x (the other
+      fixed at c) is cut at x = ±√(k² − c²) and x = ±√(k² + s²) outside; two ranged spins go
+      to polar coordinates with the radius cut at the circle.
+    * ω_z = 0: no kink; a tensor product over the ranged ωx, ωy.
+
+    Each variable takes a composite Gauss–Legendre rule (panels from :func:`_breaks`, at most
+    :func:`_resolution` wide); orders :data:`GAUSS_ORDERS` are tried until two in a row agree
+    within :data:`TOLERANCE`, their difference being the error estimate.
     """
     i1, i3 = dist.moments
     ratio = i3 / i1
     t = dist.flight_time
-    lo_t, hi_t = t.bounds
-    if not math.isfinite(lo_t):
-        lo_t = max(0.0, float(t.ppf(2.0**-53)))
-    if not math.isfinite(hi_t):
-        hi_t = float(t.ppf(1.0 - 2.0**-53))
+    assert isinstance(t, Normal)
     spins: dict[str, Distribution] = {n: getattr(dist, n) for n in _SPINS}
-    inner = "omega_z" if "omega_z" in ranged else (ranged[0] if spins["omega_z"].mean else None)
-    outer = [n for n in ranged if n != inner]
-    # Work: points × bands a point, at the largest order, bounded before anything is allocated.
-    largest = {
-        n: float(np.max(np.abs(_breaks(spins[n])))) if n in ranged else abs(spins[n].mean)
-        for n in _SPINS
-    }
-    wp_max = math.sqrt(
-        largest["omega_x"] ** 2 + largest["omega_y"] ** 2 + (ratio * largest["omega_z"]) ** 2
-    )
-    per_point = wp_max * (hi_t - lo_t) / (2.0 * math.pi) + 3.0
-    points = sum(math.prod(n * (len(_breaks(spins[d])) + 1) for d in ranged) for n in GAUSS_ORDERS)
-    v.work_bound(
-        f"the exact Gauss quadrature over {len(ranged)} ranged spins",
-        points * per_point,
-        MAX_BAND_TERMS,
-        "band terms",
-        _USE_INSTEAD,
-        rate=BAND_TERMS_PER_SECOND,
-    )
+    plane = [n for n in ("omega_x", "omega_y") if n in ranged]
+    z_ranged = "omega_z" in ranged
+    axial0 = ratio * spins["omega_z"].mean
+    h = _resolution(dist, ranged)
+
+    def same(perp2: np.ndarray, axial2: np.ndarray) -> np.ndarray:
+        out = np.empty(perp2.size)
+        for start in range(0, perp2.size, _CHUNK):
+            sl = slice(start, start + _CHUNK)
+            out[sl] = bands.same_side_normal_time(perp2[sl], axial2[sl], t.mean, t.sd)
+        return out
+
+    def plane_nodes(n: int, kink: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Nodes (ωx, ωy) and weights over the ranged plane spins (fixed ones at their value)."""
+        if len(plane) == 2 and _use_polar(dist, ranged):
+            rims = _rims(dist, ranged) if kink is None else ()
+            return _polar(spins["omega_x"], spins["omega_y"], n, h, kink, rims)
+        if len(plane) == 2:  # the apex outside the box: a tensor product of the two
+            (x, wx_), (y, wy_) = (_composite(_breaks(spins[d], h), n) for d in plane)
+            wx_, wy_ = wx_ * _pdf(spins[plane[0]], x), wy_ * _pdf(spins[plane[1]], y)
+            return np.repeat(x, y.size), np.tile(y, x.size), np.outer(wx_, wy_).ravel()
+        if not plane:
+            return (np.array([spins["omega_x"].mean]), np.array([spins["omega_y"].mean]),
+                    np.ones(1))  # fmt: skip
+        d = spins[plane[0]]
+        x, w = _composite(_breaks(d, h), n)
+        w = w * _pdf(d, x)
+        fixed = np.full_like(x, spins["omega_y" if plane[0] == "omega_x" else "omega_x"].mean)
+        return (x, fixed, w) if plane[0] == "omega_x" else (fixed, x, w)
 
     def integral(n: int) -> float:
-        # Outer spins: a tensor grid of nodes with their density-weighted weights.
-        coords = {d: np.array([spins[d].mean]) for d in _SPINS}
-        weight = np.ones(1)
-        for name in outer:
-            x, w = _composite(_breaks(spins[name]), n)
-            w = w * _pdf(spins[name], x)
-            coords = {k: np.repeat(c, x.size) for k, c in coords.items()}
-            coords[name] = np.tile(x, weight.size)
-            weight = np.repeat(weight, x.size) * np.tile(w, weight.size)
-        wx, wy, wz = coords["omega_x"], coords["omega_y"], coords["omega_z"]
-        if inner is None:
-            same = _same(wx * wx + wy * wy, (ratio * wz) ** 2)
-            return math.fsum(weight * same)
-        d = spins[inner]
-        cuts = _breaks(d)
-        if inner == "omega_z":
+        if z_ranged:
+            wx, wy, weight = plane_nodes(n, None)
+            d = spins["omega_z"]
+            cuts = _breaks(d, h)
             k = np.sqrt(wx * wx + wy * wy) / ratio
             sure = 1.0 - (d.cdf(k) - d.cdf(-k))  # |ω_z| ≥ k: never turns over
             safe = np.where(k > 0.0, k, 1.0)[:, None]
@@ -389,39 +580,51 @@ def _gauss_spins(
             z = safe * np.sin(theta)
             w = w * safe * np.cos(theta) * _pdf(d, z)
             perp2 = np.broadcast_to((wx * wx + wy * wy)[:, None], z.shape)
-            same = _same(perp2.ravel(), ((ratio * z) ** 2).ravel()).reshape(z.shape)
-            return math.fsum(weight * sure) + math.fsum((weight[:, None] * w * same).ravel())
-        # ω_z fixed, one ranged spin x, the other fixed at c: the kink at x = ±k.
-        other = "omega_y" if inner == "omega_x" else "omega_x"
-        c = spins[other].mean
-        axial2 = (ratio * spins["omega_z"].mean) ** 2
-        k = math.sqrt(max(axial2 - c * c, 0.0))
+            p = same(perp2.ravel(), ((ratio * z) ** 2).ravel()).reshape(z.shape)
+            return math.fsum(weight * sure) + math.fsum((weight[:, None] * w * p).ravel())
+        if axial0 == 0.0 or len(plane) == 2:
+            wx, wy, weight = plane_nodes(n, abs(axial0) or None)
+            return math.fsum(weight * same(wx * wx + wy * wy, np.full(wx.size, axial0**2)))
+        # ω_z fixed ≠ 0, one ranged spin x, the other fixed at c: the kink at x = ±k.
+        inner = plane[0]
+        d = spins[inner]
+        c = spins["omega_y" if inner == "omega_x" else "omega_x"].mean
+        k = math.sqrt(max(axial0 * axial0 - c * c, 0.0))
         total = float(d.cdf(k) - d.cdf(-k))  # |x| < k: never turns over
+        cuts = _breaks(d, h)
         for sign in (1.0, -1.0):
             side = np.clip(sign * cuts, k, None)
             ends = np.sort(np.sqrt(np.maximum(side * side - k * k, 0.0)))
             s, w = _composite(ends, n)
             x = np.sqrt(k * k + s * s)
             w = w * np.where(x > 0.0, s / np.where(x > 0.0, x, 1.0), 1.0) * _pdf(d, sign * x)
-            same = _same(x * x + c * c, np.full_like(x, axial2))
-            total += math.fsum(w * same)
+            total += math.fsum(w * same(x * x + c * c, np.full_like(x, axial0**2)))
         return total
 
-    def _same(perp2: np.ndarray, axial2: np.ndarray) -> np.ndarray:
-        out = np.empty(perp2.size)
-        for start in range(0, perp2.size, _CHUNK):
-            sl = slice(start, start + _CHUNK)
-            out[sl] = bands.same_side_over_times(perp2[sl], axial2[sl], t.cdf, lo_t, hi_t)
-        return out
-
-    previous = math.nan
+    previous, previous_n, change = math.nan, 0, math.nan
+    used = 0
     for n in GAUSS_ORDERS:
+        points = _gauss_points(dist, ranged, h, n)
+        where = f"the exact Gauss quadrature over {len(ranged)} ranged spins" + (
+            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
+            f"to {n} nodes a panel,"
+            if math.isfinite(change)
+            else ""
+        )
+        # Bounded before the order's nodes are allocated: refused rather than loosened.
+        v.work_bound(
+            where, used + points, MAX_SPIN_POINTS, "spin points", _USE_INSTEAD,
+            rate=SPIN_POINTS_PER_SECOND,
+        )  # fmt: skip
+        used += points
         value = integral(n)
         change = abs(value - previous)
         if change <= TOLERANCE:
             details["nodes per panel"] = n
-            return value, change
-        previous = value
+            details["spin points"] = used
+            # The difference of the last two orders, not below the rounding of the sums.
+            return value, max(change, 4e-16 * math.sqrt(points))
+        previous, previous_n = value, n
     raise ValueError(
         f"the exact Gauss quadrature did not reach its tolerance {TOLERANCE:g} with "
         f"{GAUSS_ORDERS[-1]} nodes per panel (last change {change:.2g}); {_USE_INSTEAD}"

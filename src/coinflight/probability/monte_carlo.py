@@ -19,6 +19,7 @@ import numpy as np
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import OutcomeModel, tally_details
 from coinflight.outcomes.hand import HAND_CATCH
+from coinflight.probability import conditional
 from coinflight.probability._runner import (
     Executor,
     Progress,
@@ -28,7 +29,7 @@ from coinflight.probability._runner import (
     run_tasks,
 )
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import ProbabilityResult, from_counts, wilson_interval
+from coinflight.probability.result import Z95, ProbabilityResult, from_counts, wilson_interval
 from coinflight.probability.streams import (
     BLOCK,
     SeedLike,
@@ -55,6 +56,49 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
     return counts
 
 
+CONDITIONAL_RATE = 4e6
+"""Spins a second of the ``conditional-on-spin`` mode (closed form over T for each), 2-core
+machine (benchmarks/bench_probability.py)."""
+
+
+def _conditional_task(args: tuple[Any, ...]) -> np.ndarray:
+    """Σ P(same | spins) and Σ P² over each block of the task, shape (blocks, 2)."""
+    dist, entropy, spawn_key, pool_size, first, last, n = args
+    root = np.random.SeedSequence(entropy, spawn_key=spawn_key, pool_size=pool_size)
+    k = len(conditional.ranged_spins(dist))
+    out = np.zeros((last - first, 2))
+    for b in range(first, last):
+        parts = []
+        for u in unit_cube(root, n, k, first_block=b, last_block=b + 1):
+            p = conditional.same_side_given_spins(dist, *conditional.spins_from_unit(dist, u))
+            parts.append((float(np.sum(p)), float(np.sum(p * p))))
+        out[b - first] = [math.fsum(x for x, _ in parts), math.fsum(y for _, y in parts)]
+    return out
+
+
+def _conditional(
+    dist: TossDistribution,
+    n: int,
+    root: np.random.SeedSequence,
+    ex: Executor,
+    per_task: int,
+    progress: Progress | None,
+) -> tuple[float, float]:
+    """Mean and standard error of P(same | spins) over n random spins (blocks summed exactly,
+    so that the answer does not depend on how blocks are grouped into tasks)."""
+    n_blocks = math.ceil(n / BLOCK)
+    tasks, sizes = [], []
+    for first in range(0, n_blocks, per_task):
+        last = min(n_blocks, first + per_task)
+        tasks.append((dist, root.entropy, root.spawn_key, root.pool_size, first, last, n))
+        sizes.append(min(n, last * BLOCK) - first * BLOCK)
+    sums = np.concatenate(run_tasks(ex, _conditional_task, tasks, sizes, progress))
+    mean = math.fsum(sums[:, 0]) / n
+    second = math.fsum(sums[:, 1]) / n
+    var = max(0.0, second - mean * mean) * n / max(1, n - 1)
+    return mean, math.sqrt(var / n)
+
+
 def check_work(n: int, model: OutcomeModel = HAND_CATCH) -> None:
     """ValueError naming the time when ``n`` tosses of ``model`` exceed the run limit
     (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate`` tosses a second)."""
@@ -72,6 +116,7 @@ def estimate(
     threads: int | None = None,
     chunk_size: int = DEFAULT_CHUNK,
     progress: Progress | None = None,
+    variance_reduction: str | None = None,
 ) -> ProbabilityResult:
     """Monte Carlo estimate of P(heads) from ``n`` random tosses.
 
@@ -95,15 +140,25 @@ def estimate(
         Tosses per task, rounded up to whole blocks of :data:`BLOCK` (no effect on the result).
     progress : callable, optional
         Called with the number of tosses done as tasks finish.
+    variance_reduction : {None, "conditional-on-spin"}
+        ``"conditional-on-spin"``: draw the ``n`` spins only and average P(same side | spins)
+        in closed form over the flight time (:mod:`coinflight.probability.conditional`); the
+        hand catch only. The result says so in ``details["variance_reduction"]``.
 
     Notes
     -----
-    Standard error sqrt(p(1 − p)/n); 95 % interval by Wilson's score method.
+    Standard error sqrt(p(1 − p)/n); 95 % interval by Wilson's score method. Conditional on
+    the spins: the standard error is the sample standard deviation of P(same | spins) over √n,
+    the 95 % interval p ± 1.96 s.e.
     """
     t0 = time.perf_counter()
     n = check_count("n", n)
     chunk_size = check_count("chunk size", chunk_size)
     cells = 0 if grid_cells is None else check_count("grid cells", grid_cells)
+    if variance_reduction is not None:
+        return _estimate_conditional(
+            dist, n, seed, grid_cells, model, executor, threads, chunk_size, progress, t0
+        )
     check_work(n, model)
     root = seed_sequence(seed)
     n_blocks = math.ceil(n / BLOCK)
@@ -138,12 +193,64 @@ def estimate(
     )
 
 
+def _estimate_conditional(
+    dist: TossDistribution,
+    n: int,
+    seed: SeedLike,
+    grid_cells: int | None,
+    model: OutcomeModel,
+    executor: Executor | None,
+    threads: int | None,
+    chunk_size: int,
+    progress: Progress | None,
+    t0: float,
+) -> ProbabilityResult:
+    """The ``conditional-on-spin`` mode of :func:`estimate`."""
+    if not model.closed_form_bands:
+        raise ValueError(
+            f"the {conditional.MODE} variance reduction needs the hand catch's closed-form "
+            f"bands, not {model.name}; use monte-carlo without it"
+        )
+    if grid_cells is not None:
+        raise ValueError(f"grid cells (method B) do not combine with {conditional.MODE}")
+    conditional.check_flight_time(dist.flight_time)
+    check_tosses(f"{NAME} ({conditional.MODE})", n, CONDITIONAL_RATE)
+    root = seed_sequence(seed)
+    with executor_or_threads(executor, threads) as ex:
+        same, se = _conditional(dist, n, root, ex, max(1, math.ceil(chunk_size / BLOCK)), progress)
+    p = same if dist.start_sign > 0 else 1.0 - same
+    return ProbabilityResult(
+        p_heads=p,
+        p_tails=1.0 - p,
+        p_edge=0.0,
+        p_same_side=same,
+        method=NAME,
+        n=n,
+        samples=n,
+        stderr=se,
+        ci95=(max(0.0, p - Z95 * se), min(1.0, p + Z95 * se)),
+        seed=reported_seed(root),
+        elapsed=time.perf_counter() - t0,
+        details={
+            "variance_reduction": conditional.MODE,
+            "spins": list(conditional.ranged_spins(dist)),
+            "block": BLOCK,
+            "rng": "SFC64",
+        },
+    )
+
+
 def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
     check_work(n, model)
     return n / model.rate
 
 
 def _summary(result: ProbabilityResult) -> str:
+    if result.details.get("variance_reduction"):
+        return (
+            f"{result.n:,} spins, {result.details['variance_reduction']} (closed form over T), "
+            f"seed {result.seed}"
+        )
     cells = result.details.get("grid_cells")
     extra = f"{result.n:,} tosses" + (f" drawn from {cells} cells (method B)" if cells else "")
     return extra + f", seed {result.seed}"
@@ -157,10 +264,11 @@ ESTIMATOR = Estimator(
     default_n=lambda k: 10**6,
     size="tosses (default 1000000)",
     seeded=True,
-    options=("grid_cells", "chunk_size"),
+    options=("grid_cells", "chunk_size", "variance_reduction"),
     color="#D55E00",  # method B (red in the paper)
     work=_work,
     series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
     summary=_summary,
     sizes_keyword="event_sizes",
+    modes=(conditional.MODE,),
 )

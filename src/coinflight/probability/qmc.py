@@ -18,7 +18,7 @@ from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import OutcomeModel, tally_details
 from coinflight.outcomes.hand import HAND_CATCH
-from coinflight.probability import _runner
+from coinflight.probability import _runner, conditional
 from coinflight.probability._runner import Executor, Progress, check_count
 from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult, from_counts
@@ -57,6 +57,29 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
         counts += model.count(dist, np.ascontiguousarray(sobol.random(size).T))
         done += size
     return counts
+
+
+def _conditional_task(args: tuple[Any, ...]) -> float:
+    """The mean of P(same | spins) over one scrambling's points (spins only)."""
+    from scipy.stats import qmc
+
+    dist, root, replicate, points = args
+    k = len(conditional.ranged_spins(dist))
+    if k == 0:
+        wx, wy, wz = (np.full(1, getattr(dist, n).mean) for n in conditional.SPINS)
+        return float(conditional.same_side_given_spins(dist, wx, wy, wz)[0])
+    sobol = qmc.Sobol(
+        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
+    )
+    sums = []
+    done = 0
+    while done < points:
+        size = min(_CHUNK, points - done)
+        u = np.ascontiguousarray(sobol.random(size).T)
+        p = conditional.same_side_given_spins(dist, *conditional.spins_from_unit(dist, u))
+        sums.append(float(np.sum(p)))
+        done += size
+    return math.fsum(sums) / points
 
 
 def check_work(
@@ -100,11 +123,16 @@ def estimate(
     executor: Executor | None = None,
     threads: int | None = None,
     progress: Progress | None = None,
+    variance_reduction: str | None = None,
 ) -> ProbabilityResult:
     """Scrambled-Sobol estimate of P(heads) from ``n`` points in ``replicates`` scramblings.
 
     ``n`` must be ``replicates`` × a power of two (Sobol points keep their balance only in
-    powers of two); the error message names the nearest valid values otherwise.
+    powers of two); the error message names the nearest valid values otherwise. With
+    ``variance_reduction="conditional-on-spin"`` the points are spins only and each carries
+    P(same side | spins) in closed form over the flight time
+    (:mod:`coinflight.probability.conditional`; hand catch only): a smooth integrand but at
+    ψ = 45°, where scrambled Sobol points converge much faster than on the 0/1 outcome.
     """
     t0 = time.perf_counter()
     n = check_count("n", n)
@@ -112,6 +140,10 @@ def estimate(
     check_work(n, replicates, model)
     points = n // replicates
     root = seed_sequence(seed)
+    if variance_reduction is not None:
+        return _estimate_conditional(
+            dist, n, replicates, points, root, model, executor, threads, progress, t0
+        )
     tasks = [(model, dist, root, r, points) for r in range(replicates)]
     with _runner.executor_or_threads(executor, threads) as ex:
         parts = _runner.run_tasks(ex, _task, tasks, [points] * replicates, progress)
@@ -141,6 +173,57 @@ def estimate(
     )
 
 
+def _estimate_conditional(
+    dist: TossDistribution,
+    n: int,
+    replicates: int,
+    points: int,
+    root: np.random.SeedSequence,
+    model: OutcomeModel,
+    executor: Executor | None,
+    threads: int | None,
+    progress: Progress | None,
+    t0: float,
+) -> ProbabilityResult:
+    """The ``conditional-on-spin`` mode of :func:`estimate`."""
+    if not model.closed_form_bands:
+        raise ValueError(
+            f"the {conditional.MODE} variance reduction needs the hand catch's closed-form "
+            f"bands, not {model.name}; use qmc without it"
+        )
+    conditional.check_flight_time(dist.flight_time)
+    tasks = [(dist, root, r, points) for r in range(replicates)]
+    with _runner.executor_or_threads(executor, threads) as ex:
+        per = np.array(
+            _runner.run_tasks(ex, _conditional_task, tasks, [points] * replicates, progress)
+        )
+    from scipy.stats import t as student_t
+
+    same = math.fsum(per) / replicates
+    stderr = float(np.std(per, ddof=1) / math.sqrt(replicates))
+    p = same if dist.start_sign > 0 else 1.0 - same
+    half = float(student_t.ppf(0.975, replicates - 1)) * stderr
+    return ProbabilityResult(
+        p_heads=p,
+        p_tails=1.0 - p,
+        p_edge=0.0,
+        p_same_side=same,
+        method=NAME,
+        n=n,
+        samples=n,
+        stderr=stderr,
+        ci95=(max(0.0, p - half), min(1.0, p + half)),
+        seed=reported_seed(root),
+        elapsed=time.perf_counter() - t0,
+        details={
+            "replicates": replicates,
+            "points_per_replicate": points,
+            "variance_reduction": conditional.MODE,
+            "spins": list(conditional.ranged_spins(dist)),
+        },
+    )
+
+
 def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
     check_work(n, model=model)
     return n / rate(model)
@@ -154,11 +237,14 @@ ESTIMATOR = Estimator(
     default_n=lambda k: 1 << 20,
     size="points, 16 × a power of two (default 1048576)",
     seeded=True,
-    options=("replicates",),
+    options=("replicates", "variance_reduction"),
     color="#009E73",
     work=_work,
     series=tuple(16 << k for k in range(2, 17)),
     summary=lambda r: (
-        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings, seed {r.seed}"
+        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings"
+        + (f", {r.details['variance_reduction']}" if r.details.get("variance_reduction") else "")
+        + f", seed {r.seed}"
     ),
+    modes=(conditional.MODE,),
 )

@@ -36,6 +36,16 @@ BUILTIN = (
 
 RUNNER_OPTIONS = ("executor", "threads", "progress")
 
+VARIANCE_REDUCTIONS = {
+    "conditional-on-spin": (
+        "draw the spins only and take P(same side | spins) in closed form over the flight time "
+        "(conditional Monte Carlo; hand catch only)"
+    ),
+}
+"""The variance reductions an estimator may declare in ``modes`` (its ``variance_reduction``
+option), each with one sentence for help texts. Results report the one used in
+``details["variance_reduction"]``."""
+
 
 def _tosses(k: int, n: int) -> int:
     return n
@@ -78,6 +88,9 @@ class Estimator:
         ``summary(result)``: how the run was made, one line for the command line.
     sizes_keyword : str
         The keyword of its convergence sizes when not ``NAME_sizes``.
+    modes : tuple of str
+        The variance reductions (keys of :data:`VARIANCE_REDUCTIONS`) its
+        ``variance_reduction`` option takes.
     """
 
     name: str
@@ -96,6 +109,7 @@ class Estimator:
     series: tuple[int, ...] = ()
     summary: Callable[[ProbabilityResult], str] = lambda result: ""
     sizes_keyword: str = ""
+    modes: tuple[str, ...] = ()
 
     @property
     def series_option(self) -> str:
@@ -139,6 +153,13 @@ class Estimator:
         extra = [k for k in given if k not in allowed]
         if extra:
             raise TypeError(f"method {self.name!r} takes no option {', '.join(extra)}")
+        mode = options.get("variance_reduction")
+        if mode is not None and mode not in self.modes:
+            allowed_modes = ", ".join(self.modes) or "none"
+            raise ValueError(
+                f"method {self.name!r} has no variance reduction {mode!r}; it takes: "
+                f"{allowed_modes}"
+            )
         kwargs: dict[str, Any] = {"model": model, **options}
         if self.parallel:
             check_runner(executor, threads, progress)
@@ -203,6 +224,7 @@ def get(name: object, among: tuple[str, ...] | None = None, what: str = "") -> E
 
 __all__ = [
     "BUILTIN",
+    "VARIANCE_REDUCTIONS",
     "Estimator",
     "estimators",
     "get",

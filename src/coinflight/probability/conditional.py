@@ -1,0 +1,91 @@
+"""P(same side) given the spins, in closed form over the flight time: the conditioning that the
+exact method, and the ``conditional-on-spin`` variance reduction of Monte Carlo and QMC, share.
+
+Conditional on the spins (ωx, ωy, ω_z), the coin shows its starting face iff the phase ωp T lies
+in the bands (2πm − a, 2πm + a) (Diaconis, Holmes & Montgomery 2007, section 2;
+:mod:`coinflight.core.bands`). Over the flight-time distribution that measure is closed form:
+the band indicator for a fixed T, the band length over [t1, t2] for a uniform T
+(:func:`~coinflight.core.bands.time_average_uniform`), the wrapped-normal series or normal-CDF
+differences for a normal T (:func:`~coinflight.core.bands.same_side_normal_time`). Averaging it
+over random spins instead of averaging the 0/1 outcome over random (spins, T) is conditional
+Monte Carlo (Rao–Blackwellisation): the same mean, a variance never larger (Robert & Casella
+2004, Monte Carlo Statistical Methods, §4.2).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from coinflight.core import bands
+from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
+from coinflight.model.ensemble import TossDistribution
+
+FloatArray = NDArray[np.float64]
+
+SPINS = ("omega_x", "omega_y", "omega_z")
+"""The spin components, in the order of :data:`coinflight.model.ensemble.PARAMETERS`."""
+
+MODE = "conditional-on-spin"
+"""The name of this variance reduction (results' ``details["variance_reduction"]``)."""
+
+
+def ranged_spins(dist: TossDistribution) -> tuple[str, ...]:
+    """The ranged spin components (the flight time left out), in :data:`SPINS` order."""
+    return tuple(name for name in SPINS if not getattr(dist, name).is_fixed)
+
+
+def check_flight_time(t: Distribution) -> None:
+    """ValueError unless the closed form over T exists for ``t`` (fixed, uniform, normal)."""
+    if not isinstance(t, Fixed | Uniform | Normal):
+        raise ValueError(
+            f"the conditional-on-spin mode needs a fixed, uniform or normal flight time, got "
+            f"{type(t).__name__}"
+        )
+
+
+def same_side_given_spins(
+    dist: TossDistribution, wx: FloatArray, wy: FloatArray, wz: FloatArray
+) -> FloatArray:
+    """P(same side | spins) over ``dist``'s flight time, for arrays of spins (rad/s)."""
+    i1, i3 = dist.moments
+    perp2 = wx * wx + wy * wy
+    axial2 = (i3 / i1 * wz) ** 2
+    t = dist.flight_time
+    if isinstance(t, Normal):
+        return bands.same_side_normal_time(perp2, axial2, t.mean, t.sd)
+    turns = ~bands.never_turns_over(axial2, perp2)
+    p2 = np.where(turns, perp2, 1.0)
+    x2 = np.where(turns, axial2, 0.0)
+    wp = np.sqrt(p2 + x2)
+    a = bands.half_width(x2 / p2)
+    if isinstance(t, Uniform):
+        inside = bands.time_average_uniform(wp, a, t.low, t.high)
+    else:
+        check_flight_time(t)
+        inside = bands.in_band(wp * t.mean, a).astype(float)
+    return np.where(turns, inside, 1.0)
+
+
+def spins_from_unit(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, ...]:
+    """Spins (wx, wy, wz) for points ``u`` of shape (len(ranged_spins), m) of the unit cube."""
+    ranged = ranged_spins(dist)
+    m = u.shape[1]
+    out = []
+    for name in SPINS:
+        d: Distribution = getattr(dist, name)
+        if name in ranged:
+            out.append(np.asarray(d.ppf(u[ranged.index(name)]), dtype=float))
+        else:
+            out.append(np.full(m, d.mean))
+    return tuple(out)
+
+
+__all__ = [
+    "MODE",
+    "SPINS",
+    "check_flight_time",
+    "ranged_spins",
+    "same_side_given_spins",
+    "spins_from_unit",
+]
