@@ -2,18 +2,25 @@
 
     python benchmarks/bench_probability.py            # everything (about a minute)
     python benchmarks/bench_probability.py --quick    # skip the billion-toss memory run
+    python benchmarks/bench_probability.py --accuracy # time to a given accuracy only
 
 Monte Carlo of fully general tosses (ωx, ωy, ωz and T all random, precession included), side
 by side with a plain NumPy vectorised baseline (Generator draws + the NumPy closed form) and
 per-toss numerical integration (``coinflight.core.numerical.integrate``, SciPy DOP853); the
 grid method at 5000² and 100000² configurations; the exact method; peak resident memory of
 a billion Monte Carlo tosses. Medians of repeats.
+
+Time to a given accuracy (issue 12): for three distributions, the seconds each method needs to
+reach a standard error (or error) of 1e-4 and 1e-6, as ratios to exact in one run. Sampling
+methods are measured at one or two sizes and extrapolated at their measured rate (Monte
+Carlo: s.e. ∝ n^-1/2; QMC: the exponent fitted between two sizes), which the table says.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import platform
 import statistics
@@ -28,9 +35,10 @@ import numpy as np
 from coinflight.core import sampling
 from coinflight.core.numerical import integrate
 from coinflight.core.torque_free import normal_alignment
-from coinflight.model.distributions import Uniform
+from coinflight.model.distributions import Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate
+from coinflight.studies.presets import human
 
 GENERAL = TossDistribution(
     Uniform(60.0, 90.0), Uniform(-10.0, 10.0), Uniform(-20.0, 20.0), Uniform(0.6, 0.9)
@@ -96,14 +104,81 @@ def per_toss_ivp(n: int, seed: int = 0) -> int:
     return same
 
 
+NORMAL_SPINS = TossDistribution.from_launch_speed(
+    Normal(240.0, 24.0), 0.0, Normal(0.0, 40.0), Normal(2.4, 0.24)
+)
+"""Issue 12's normal-spin example (--omega-x normal:240,24 --omega-z normal:0,40
+--launch-speed normal:2.4,0.24)."""
+
+CONDITIONAL = "conditional-on-spin"
+
+
+def _seconds_for(
+    run: Callable[[int], tuple[float, float]], sizes: tuple[int, int], target: float
+) -> tuple[float, str]:
+    """Seconds to reach a standard error ``target``: measured at two sizes (median of 3 runs
+    each), extrapolated by the fitted power law of s.e. and of time in n."""
+    points = []
+    for n in sizes:
+        results = [run(n) for _ in range(3)]
+        points.append((n, statistics.median(r[0] for r in results), statistics.median(
+            r[1] for r in results)))  # fmt: skip
+    (n1, _t1, e1), (n2, t2, e2) = points
+    slope = math.log(e2 / e1) / math.log(n2 / n1) if e1 > 0 and e2 > 0 else -0.5
+    n_target = n2 * (target / e2) ** (1.0 / slope)
+    t_per = t2 / n2
+    how = "within the sizes run" if n_target <= n2 else f"extrapolated, s.e. ∝ n^{slope:.2f}"
+    return max(t_per * n_target, 0.0), how
+
+
+def time_to_accuracy() -> None:
+    """Seconds to s.e. (or error) 1e-4 and 1e-6, per method, as ratios to exact; medians."""
+    print("\nTime to a given accuracy (seconds; ratio to exact; medians of 3):")
+    cases = (("Fig 2a (uniform ωx, T)", FIG2A), ("human preset", human()),
+             ("normal spins (issue 12)", NORMAL_SPINS))  # fmt: skip
+    for label, dist in cases:
+        estimate(dist, "exact")
+        t_exact = median_time(lambda d=dist: estimate(d, "exact"), 5)
+        exact = estimate(dist, "exact")
+        print(f"  {label}: exact {t_exact * 1e3:.1f} ms, p = {exact.p_heads:.10f} "
+              f"± {exact.error_estimate:.1g}")  # fmt: skip
+
+        def sampled(method: str, mode: str | None, d: TossDistribution = dist) -> Callable[
+            [int], tuple[float, float]]:  # fmt: skip
+            def run(n: int) -> tuple[float, float]:
+                kw = {"variance_reduction": mode} if mode else {}
+                r = estimate(d, method, n=n, seed=n, **kw)
+                return r.elapsed, float(r.stderr or 0.0)
+
+            return run
+
+        rows = (
+            ("monte-carlo", None, (1 << 20, 1 << 22)),
+            ("monte-carlo", CONDITIONAL, (1 << 16, 1 << 18)),
+            ("qmc", None, (16 << 14, 16 << 16)),
+            ("qmc", CONDITIONAL, (16 << 8, 16 << 12)),
+        )
+        for method, mode, sizes in rows:
+            name = method + (f" ({mode})" if mode else "")
+            cells = []
+            for target in (1e-4, 1e-6):
+                secs, how = _seconds_for(sampled(method, mode), sizes, target)
+                cells.append(f"{target:.0e}: {secs:10.3g} s ({secs / t_exact:9.3g}x, {how})")
+            print(f"    {name:34s} " + "; ".join(cells))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="skip the billion-toss run")
+    parser.add_argument("--accuracy", action="store_true", help="time to accuracy only")
     args = parser.parse_args()
     print(f"machine: {machine()}")
     t0 = time.perf_counter()
     sampling.warm_up()
     print(f"numba kernels ready (loaded from the on-disk cache): {time.perf_counter() - t0:.2f} s")
+    time_to_accuracy()
+    if args.accuracy:
+        return
 
     print("\nMonte Carlo, fully general tosses (ωx, ωy, ωz, T all uniform; precession):")
     n_fast = 1 << 27
