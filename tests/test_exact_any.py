@@ -8,6 +8,8 @@ the heads/tails symmetry, and on the ``human`` preset's value before this change
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import pytest
 
@@ -123,17 +125,19 @@ def test_heads_and_tails_are_symmetric():
 
 
 def test_work_is_bounded_before_it_starts():
-    # A flight time so narrow that P(same | spins) oscillates with the spins (period 2π/T),
-    # over three wide spin ranges: the second order's points pass the bound and are refused
-    # before they are allocated.
+    # A flight time so narrow that P(same | spins) oscillates with the spins (period 2π/T)
+    # over three wide spin ranges: the first two orders (the least that gives an error
+    # estimate) already pass the bound, refused before anything is computed.
     dist = TossDistribution(
-        omega_x=Uniform(-3000.0, 3000.0),
-        omega_y=Uniform(-3000.0, 3000.0),
-        omega_z=Uniform(-3000.0, 3000.0),
+        omega_x=Uniform(100.0, 6100.0),
+        omega_y=Uniform(100.0, 6100.0),
+        omega_z=Uniform(100.0, 6100.0),
         flight_time=Normal(1.0, 1e-4),
     )
+    t0 = time.perf_counter()
     with pytest.raises(ValueError, match="spin points"):
         estimate(dist, "exact")
+    assert time.perf_counter() - t0 < 1.0
 
 
 def _monte_carlo_check(dist: TossDistribution, seed: int) -> None:

@@ -314,7 +314,7 @@ def _breaks(d: Distribution, h: float) -> np.ndarray:
     else:
         pts = np.linspace(lo, hi, 3)
     if pts[0] < 0.0 < pts[-1]:
-        pts = np.sort(np.append(pts, 0.0))
+        pts = np.unique(np.append(pts, 0.0))
     return _refine(pts, h)
 
 
@@ -602,6 +602,16 @@ def _gauss_spins(
         return total
 
     previous, previous_n, change = math.nan, 0, math.nan
+    # No answer without two orders (their difference is the error estimate): both bounded
+    # before anything is computed, each later order before its nodes are allocated.
+    v.work_bound(
+        f"the exact Gauss quadrature over {len(ranged)} ranged spins",
+        sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2]),
+        MAX_SPIN_POINTS,
+        "spin points",
+        _USE_INSTEAD,
+        rate=SPIN_POINTS_PER_SECOND,
+    )
     used = 0
     for n in GAUSS_ORDERS:
         points = _gauss_points(dist, ranged, h, n)
