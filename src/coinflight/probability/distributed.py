@@ -325,9 +325,9 @@ def dask_client(
         return
     try:
         client = distributed.Client(scheduler, timeout=timeout)
-    except (OSError, TimeoutError) as exc:
+    except Exception as exc:  # refused, timed out, or not a Dask scheduler answering
         raise ValueError(
-            f"cannot reach the Dask scheduler at {scheduler} within {timeout:g} s "
+            f"cannot reach a Dask scheduler at {scheduler} within {timeout:g} s "
             f"({type(exc).__name__}); start one with `dask scheduler` or check the address"
         ) from None
     with client:
