@@ -64,7 +64,7 @@ CLUSTER = Group(
                     "--scheduler",
                     metavar="local|tcp://HOST:PORT",
                     rich_help_panel=CLUSTER_PANEL,
-                    help="Run the tasks on a Dask cluster (pip install \"coinflight[dask]\"): "
+                    help='Run the tasks on a Dask cluster (pip install "coinflight[dask]"): '
                     "local starts a LocalCluster of --workers processes on this machine; "
                     "tcp://HOST:PORT joins a running one (`dask scheduler`, `dask worker "
                     "tcp://HOST:PORT`; waits 5 s for it). Same seed, same result as on threads.",

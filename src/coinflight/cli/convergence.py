@@ -148,7 +148,7 @@ def convergence(
             executor=executor,
             threads=threads,
             progress=bar,
-            **sizes,  # type: ignore[arg-type]
+            **sizes,
         )
     fig = plot_convergence(result)
     with replacing_all(targets) as (csv, _, png, svg):  # the four files together, or none

@@ -230,8 +230,7 @@ class DaskExecutor:
                 # makes the next ones smaller (more overhead), never a worker idle
                 done_seconds += seconds
                 done_units += sum(units[i] for i in indices)
-                for i, result in zip(indices, results, strict=True):
-                    yield i, result
+                yield from zip(indices, results, strict=True)
                 fill()
         finally:
             if next_task < n or pending.count():
