@@ -196,11 +196,13 @@ class DaskExecutor:
 
         def submit() -> None:
             nonlocal next_task, remaining
-            if done_seconds > 0:  # units a second, from the warm batches done
-                per_batch = done_units / done_seconds * overhead / TARGET_OVERHEAD
+            if done_seconds > 0:  # units a second, from the batches done
+                target = done_units / done_seconds * overhead / TARGET_OVERHEAD
+                # near the end, smaller batches so that no worker idles while another
+                # finishes a long one (at most a quarter of the target: a short tail)
+                per_batch = min(target, max(remaining / stats.slots, target / 4))
             else:  # not known yet: one task a batch, to measure
                 per_batch = 0
-            per_batch = min(per_batch, remaining / stats.slots)  # keep every worker busy
             first = next_task
             total = 0
             while next_task < n and (next_task == first or total < per_batch):
@@ -314,6 +316,8 @@ def dask_client(
             threads_per_worker=1,
             processes=True,
             dashboard_address=None,
+            # the scheduler's HTTP server on a free local port, not 8787 (maybe taken)
+            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
             silence_logs=logging.ERROR,
         )
         try:
