@@ -15,6 +15,7 @@ from coinflight.cli import data as _data
 from coinflight.cli import edge as _edge
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
+from coinflight.cli import sweep as _sweep
 from coinflight.cli import toss as _toss
 from coinflight.cli.errors import OneLineErrors
 from coinflight.cli.exits import INTERRUPTED, exit_now, interrupted
@@ -62,6 +63,7 @@ _COMMANDS: dict[str, Callable[..., None] | typer.Typer] = {
     "data": _data.data,
     "probability": _probability.probability,
     "convergence": _convergence.convergence,
+    "sweep": _sweep.sweep,
     "edge": _edge.edge,
     "plot": plot_app,
     "animate": _animate.animate,

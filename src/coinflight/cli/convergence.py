@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, ConvergenceTossesOptions
 from coinflight.cli.options import (
@@ -89,6 +90,7 @@ def convergence(
     grid_cells: Cells = None,
     seed: Seed = None,
     threads: Threads = None,
+    cluster: ClusterOptions,
     out: Out = Path("convergence"),
     quiet: Quiet = False,
     json_output: JsonFlag = False,
@@ -137,15 +139,16 @@ def convergence(
     targets = [prefix.with_name(f"{prefix.name}.{ext}") for ext in ("csv", "json", "png", "svg")]
     check_all_writable(targets)  # before computing, not after
     total = work_total(dist, method_list, **sizes)
-    with progress_bar(total, "convergence", quiet) as bar:
+    with cluster.executor(threads) as executor, progress_bar(total, "convergence", quiet) as bar:
         result = run(
             dist,
             method_list,
             seed=seed,
             grid_cells=grid_cells or None,
+            executor=executor,
             threads=threads,
             progress=bar,
-            **sizes,  # type: ignore[arg-type]
+            **sizes,
         )
     fig = plot_convergence(result)
     with replacing_all(targets) as (csv, _, png, svg):  # the four files together, or none

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, TossesOptions
 from coinflight.cli.landing import surface_payload
@@ -84,6 +85,7 @@ def probability(
     seed: Seed = None,
     grid_cells: GridCells = None,
     threads: Threads = None,
+    cluster: ClusterOptions,
     quiet: Quiet = False,
     json_output: JsonFlag = False,
 ) -> None:
@@ -110,15 +112,17 @@ def probability(
         raise ValueError(f"--seed applies to {seeded}, not {method}")
     if threads is not None and not estimator.parallel:
         raise ValueError(f"--threads does not apply to the {method} method")
+    if cluster.scheduler is not None and not estimator.parallel:
+        raise ValueError(f"--scheduler does not apply to the {method} method (one task)")
     landing = outcome_model(*table, *air)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
         raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
     if landing is not None:
         options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
-    with progress_bar(total, f"{method}", quiet) as bar:
+    with cluster.executor(threads) as executor, progress_bar(total, f"{method}", quiet) as bar:
         if estimator.parallel:
-            options.update(threads=threads, progress=bar)
+            options.update(threads=threads, progress=bar, executor=executor)
         result = estimate(dist, method, n=n, seed=seed, **options)
     if json_output:
         payload = result.to_dict()

@@ -18,8 +18,11 @@ Progress = Callable[[int], None]
 
 
 class Executor(Protocol):
-    """Anything with a ``map(fn, iterable)`` method: ``concurrent.futures`` executors, a Dask or
-    Ray client wrapper, an object whose ``map`` is the built-in ``map`` (serial)."""
+    """Anything with a ``map(fn, iterable)`` method: ``concurrent.futures`` executors, an object
+    whose ``map`` is the built-in ``map`` (serial), a ``distributed.Client`` (wrapped by
+    :class:`coinflight.probability.distributed.DaskExecutor`). An executor may also have
+    ``completed(fn, tasks, sizes)`` yielding ``(index, result)`` pairs as tasks finish, in any
+    order (:func:`completed` then uses it)."""
 
     def map(self, fn: Callable[[Any], Any], *iterables: Iterable[Any]) -> Iterator[Any]: ...
 
@@ -42,7 +45,9 @@ def executor_or_threads(executor: Executor | None, threads: int | None) -> Itera
     """The user's executor, or a thread pool (``threads`` workers, default all CPUs)."""
     check_runner(executor, threads, None)
     if executor is not None:
-        yield executor
+        from coinflight.probability.distributed import DaskExecutor, is_dask_client
+
+        yield DaskExecutor(executor) if is_dask_client(executor) else executor
         return
     workers = threads if threads is not None else (os.cpu_count() or 1)
     if workers == 1:
@@ -57,6 +62,18 @@ class _SerialExecutor:
         return map(fn, *iterables)
 
 
+def completed(
+    executor: Executor, fn: Callable[[T], R], tasks: list[T], sizes: list[int]
+) -> Iterator[tuple[int, R]]:
+    """``(i, fn(tasks[i]))`` as tasks finish: in any order through an executor's own
+    ``completed`` (a Dask cluster's), else in task order through its ``map``."""
+    own = getattr(executor, "completed", None)
+    if callable(own):
+        yield from own(fn, tasks, sizes)
+        return
+    yield from enumerate(executor.map(fn, tasks))
+
+
 def run_tasks(
     executor: Executor,
     fn: Callable[[T], R],
@@ -64,13 +81,18 @@ def run_tasks(
     sizes: list[int],
     progress: Progress | None,
 ) -> list[R]:
-    """``[fn(t) for t in tasks]`` through ``executor``, reporting ``sizes[i]`` as each ends."""
+    """``[fn(t) for t in tasks]`` through ``executor``, reporting ``sizes[i]`` as each ends.
+
+    The results are in task order whatever the order in which the tasks finish, so sums over
+    them are the same, bit for bit, on every executor."""
     v.callable_or_none("progress", progress, "a callable taking the amount of work done")
-    out: list[R] = []
-    for size, result in zip(sizes, executor.map(fn, tasks), strict=True):
-        out.append(result)
+    if len(sizes) != len(tasks):
+        raise ValueError(f"{len(sizes)} sizes for {len(tasks)} tasks; they must pair up")
+    out: list[Any] = [None] * len(tasks)
+    for i, result in completed(executor, fn, tasks, sizes):
+        out[i] = result
         if progress is not None:
-            progress(size)
+            progress(sizes[i])
     return out
 
 

@@ -1,4 +1,11 @@
-"""A sweep: P(heads) for each of several distributions of tosses in one call.
+"""Sweeps: P(heads), P(same side) and P(edge) for many distributions of tosses in one call.
+
+:func:`estimate_many` runs one method over a list of distributions, one after the other, with
+one seed for all (common random numbers). :func:`sweep` runs one row per :class:`Case` (a
+distribution and the way its tosses end) as an independent task on an executor (threads, or a
+Dask cluster: :mod:`coinflight.probability.distributed`), each row with its own random stream
+derived from the one seed and the row's inputs, and can resume from a checkpoint of finished
+rows; :func:`write_table` writes the results as one Parquet or CSV table, whole or not at all.
 
 >>> from coinflight.model.distributions import Uniform
 >>> from coinflight.model.ensemble import TossDistribution
@@ -11,14 +18,32 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import hashlib
+import itertools
+import json
+import math
+import os
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
+from coinflight import _validation as v
+from coinflight.model.distributions import Distribution
 from coinflight.model.ensemble import PARAMETERS, UNITS, TossDistribution
+from coinflight.model.toss import STANDARD_GRAVITY
+from coinflight.outcomes.base import OutcomeModel
+from coinflight.outcomes.hand import HAND_CATCH
+from coinflight.probability import registry
 from coinflight.probability.result import ProbabilityResult, require_pandas
+from coinflight.probability.streams import SeedLike, reported_seed, seed_sequence
 
 if TYPE_CHECKING:
     import pandas as pd
+
+    from coinflight.model.coin import Coin
 
 
 class ProbabilityResults(list[ProbabilityResult]):
@@ -101,4 +126,508 @@ def estimate_many(
     return ProbabilityResults(items, [estimate(dist, method, **kwargs) for dist in items])
 
 
-__all__ = ["ProbabilityResults", "estimate_many"]
+# --- sweeps: rows as tasks, streams per row, a checkpoint, one table -----------------------
+
+MAX_ROWS = 1_000_000
+"""Most rows a sweep accepts (checked before any row is built)."""
+ROW_SECONDS = 0.05
+"""Seconds of work counted for a row whose method bounds its own work (exact): the sweep's
+work bound (:func:`check_sweep_work`) adds this per row; a single row's own bound still holds."""
+CHECKPOINT_SUFFIX = ".partial.jsonl"
+"""A sweep writing FILE keeps its finished rows in FILE + this suffix until FILE is written."""
+
+
+@dataclass(frozen=True)
+class Case:
+    """One row of a sweep: a distribution of tosses and how the tosses end.
+
+    Parameters
+    ----------
+    dist : TossDistribution
+    model : OutcomeModel
+        Default: caught in the hand.
+    """
+
+    dist: TossDistribution
+    model: OutcomeModel = HAND_CATCH
+
+    def __post_init__(self) -> None:
+        v.instance("dist", self.dist, TossDistribution, "a TossDistribution")
+        v.instance("model", self.model, OutcomeModel, "an OutcomeModel (HandCatch, TableLanding)")
+
+    def inputs(self) -> dict[str, Any]:
+        """Everything that defines the row, JSON-ready: each parameter's distribution, the
+        launch speed when given, the coin's name and dimensions, start face, g, the outcome
+        model (:meth:`~coinflight.outcomes.base.OutcomeModel.to_dict`)."""
+        dist = self.dist
+        coin = dist.coin
+        speed = dist.launch_speed
+        return {
+            **{name: getattr(dist, name).to_dict() for name in PARAMETERS},
+            "launch_speed": None if speed is None else speed.to_dict(),
+            "coin": {
+                "name": coin.name,
+                "radius": coin.radius,
+                "thickness": coin.thickness,
+                "mass": coin.mass,
+            },
+            "start": dist.start,
+            "g": dist.g,
+            "model": self.model.to_dict(),
+        }
+
+    def stream(self) -> int:
+        """The row's random stream: a 60-bit number from its :meth:`inputs` (not from its
+        position, the method, n or the seed). Row i of a seeded sweep draws from
+        ``SeedSequence(seed, spawn_key=(stream,))``: the same tosses whatever the order of the
+        rows, the workers, the other rows, and a run of n tosses is the first n of a longer
+        one."""
+        return int(_digest(self.inputs())[:15], 16)
+
+
+def product_cases(
+    *,
+    omega_x: Sequence[Distribution | float],
+    omega_y: Sequence[Distribution | float] = (0.0,),
+    omega_z: Sequence[Distribution | float] = (0.0,),
+    flight_time: Sequence[Distribution | float] | None = None,
+    launch_speed: Sequence[Distribution | float] | None = None,
+    coins: Sequence[Coin] | None = None,
+    starts: Sequence[str] = ("heads",),
+    models: Sequence[OutcomeModel] = (HAND_CATCH,),
+    g: float = STANDARD_GRAVITY,
+) -> list[Case]:
+    """The Cartesian product of the given values, one :class:`Case` each.
+
+    Each argument is a list of the values to sweep (distributions or numbers for the toss
+    parameters, as :class:`~coinflight.model.ensemble.TossDistribution` takes them); give
+    exactly one of ``flight_time`` and ``launch_speed``. Rows come in the order coin, start
+    face, outcome model, ωx, ωy, ωz, flight time (or launch speed), the last varying fastest.
+    The number of rows is checked against :data:`MAX_ROWS` before any is built.
+    """
+    from coinflight.model.coin import DEFAULT_COIN, Coin
+
+    if (flight_time is None) == (launch_speed is None):
+        raise TypeError("give one of flight_time (s) and launch_speed (m/s)")
+    the_coins = [Coin.preset(DEFAULT_COIN)] if coins is None else list(coins)
+    time_key = "flight_time" if launch_speed is None else "launch_speed"
+    times = flight_time if launch_speed is None else launch_speed
+    assert times is not None
+    lists: dict[str, Sequence[Any]] = {
+        "coin": the_coins,
+        "start": starts,
+        "model": models,
+        "omega_x": omega_x,
+        "omega_y": omega_y,
+        "omega_z": omega_z,
+        time_key: times,
+    }
+    for name, values in lists.items():
+        if len(values) == 0:
+            raise ValueError(f"no values given for {name}")
+    rows = math.prod(len(values) for values in lists.values())
+    if rows > MAX_ROWS:
+        sizes = " × ".join(f"{len(x)} {name}" for name, x in lists.items() if len(x) > 1)
+        raise ValueError(f"a sweep of {sizes} is {rows:,} rows, more than {MAX_ROWS:,}; use fewer")
+    cases = []
+    for combo in itertools.product(*lists.values()):
+        row = dict(zip(lists, combo, strict=True))
+        model = row.pop("model")
+        cases.append(Case(TossDistribution(**row, g=g), model))
+    return cases
+
+
+def _digest(obj: object) -> str:
+    text = json.dumps(obj, sort_keys=True, separators=(",", ":"), allow_nan=False)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def row_key(case: Case, method: str, n: int | None, seed: int | None) -> str:
+    """The key of a finished row in a checkpoint: a digest of its inputs, method, n and seed
+    (a row is reused only when all four are the same)."""
+    return _digest({"inputs": case.inputs(), "method": method, "n": n, "seed": seed})[:32]
+
+
+class SweepResults(ProbabilityResults):
+    """The results of :func:`sweep`, in the order of its cases.
+
+    A :class:`ProbabilityResults` that also keeps the cases, the method, size and seed, the row
+    keys and streams, and how many rows came from the checkpoint (:attr:`reused`).
+    """
+
+    def __init__(
+        self,
+        cases: Sequence[Case],
+        results: Iterable[ProbabilityResult],
+        *,
+        method: str,
+        n: int | None,
+        seed: int | None,
+        keys: Sequence[str],
+        reused: int = 0,
+    ) -> None:
+        super().__init__([c.dist for c in cases], results)
+        self.cases = tuple(cases)
+        self.method = method
+        self.n = n
+        self.seed = seed
+        self.keys = tuple(keys)
+        self.reused = reused
+
+    def to_dicts(self) -> list[dict[str, Any]]:
+        """One flat row per case: :meth:`ProbabilityResults.to_dicts` (parameters as text,
+        coin, start, g, the result's fields) and, for each parameter, its distribution's fields
+        as numbers (``omega_x.kind``, ``omega_x.low``, … ``omega_x.mean``), the coin's
+        dimensions, the outcome model's fields (``surface``, ``restitution``, …), the row's
+        ``stream`` (seeded methods) and ``key``. ``p_edge`` is empty where the surface cannot
+        leave a coin on its edge (the hand); the method's details are left out."""
+        rows = []
+        seeded = registry.get(self.method).seeded
+        for row, case, key in zip(super().to_dicts(), self.cases, self.keys, strict=True):
+            out = {k: x for k, x in row.items() if not k.startswith("details.")}
+            inputs = case.inputs()
+            for name in (*PARAMETERS, "launch_speed"):
+                dist = inputs[name]
+                if dist is None:
+                    continue
+                for field in ("kind", "value", "low", "high", "mean", "sd"):
+                    out[f"{name}.{field}"] = dist.get(field)
+                out[f"{name}.mean"] = float(getattr(case.dist, name).mean)
+            out.update({f"coin.{k}": x for k, x in inputs["coin"].items() if k != "name"})
+            for k, x in inputs["model"].items():
+                out[k] = json.dumps(x) if isinstance(x, dict) else x
+            if not case.model.can_end_on_edge:
+                out["p_edge"] = None
+            out["stream"] = case.stream() if seeded else None
+            out["key"] = key
+            rows.append(out)
+        return rows
+
+
+def check_sweep_work(cases: Sequence[Case], method: str, n: int | None) -> float:
+    """Seconds of work of the sweep on the reference machine (each row's estimate, or
+    :data:`ROW_SECONDS` for a method without one); ValueError beyond
+    :data:`coinflight._validation.MAX_RUN_SECONDS`, before anything runs."""
+    estimator = registry.get(method)
+    total = 0.0
+    for case in cases:
+        size = estimator.size_for(len(case.dist.ranged), n)
+        if estimator.work is None or size is None:
+            total += ROW_SECONDS
+        else:
+            total += estimator.work(case.dist, size, case.model)
+    v.work_bound(
+        f"a sweep of {len(cases)} rows by {method}" + ("" if n is None else f" with n = {n}"),
+        total,
+        v.MAX_RUN_SECONDS,
+        "s of work",
+        "use fewer values per option or a smaller n",
+    )
+    return total
+
+
+def _row_task(args: tuple[Any, ...]) -> ProbabilityResult:
+    """One row, computed serially (the rows are the parallel tasks)."""
+    from coinflight.probability import estimate
+
+    dist, model, method, n, seed, stream = args
+    estimator = registry.get(method)
+    kwargs: dict[str, Any] = {"model": model}
+    if estimator.seeded:
+        kwargs["seed"] = np.random.SeedSequence(seed, spawn_key=(stream,))
+    if estimator.parallel:
+        kwargs["threads"] = 1
+    return estimate(dist, method, n=n, **kwargs)
+
+
+def result_from_dict(data: Mapping[str, Any]) -> ProbabilityResult:
+    """The :class:`ProbabilityResult` of its :meth:`~ProbabilityResult.to_dict` (floats come
+    back bit for bit through JSON)."""
+    d = dict(data)
+    ci = d.get("ci95")
+    counts = d.get("counts")
+    d["ci95"] = None if ci is None else (float(ci[0]), float(ci[1]))
+    d["counts"] = None if counts is None else (counts["tails"], counts["heads"], counts["edge"])
+    return ProbabilityResult(**d)
+
+
+def read_checkpoint(path: str | os.PathLike[str]) -> dict[str, ProbabilityResult]:
+    """The finished rows of a checkpoint, by key ({} when there is none). A line that does not
+    parse (the last one of a run killed while writing it) is skipped: that row is recomputed."""
+    out: dict[str, ProbabilityResult] = {}
+    try:
+        with open(path, encoding="utf-8") as f:
+            lines = f.readlines()
+    except FileNotFoundError:
+        return out
+    except OSError as exc:
+        raise ValueError(f"cannot read the checkpoint {os.fspath(path)}: {exc.strerror}") from None
+    for line in lines:
+        try:
+            entry = json.loads(line)
+            out[str(entry["key"])] = result_from_dict(entry["result"])
+        except (ValueError, KeyError, TypeError):
+            continue
+    return out
+
+
+def sweep(
+    cases: Iterable[Case],
+    method: str = "exact",
+    n: int | None = None,
+    seed: SeedLike = None,
+    *,
+    executor: Any = None,
+    threads: int | None = None,
+    progress: Callable[[int], None] | None = None,
+    checkpoint: str | os.PathLike[str] | None = None,
+) -> SweepResults:
+    """P(heads), P(same side), P(edge) for each case, each row an independent task.
+
+    Parameters
+    ----------
+    cases : iterable of Case
+        The rows: a distribution of tosses and its outcome model each.
+    method : str
+        A registered method (:func:`coinflight.probability.registry.names`), for every row.
+    n : int, optional
+        The method's size for every row (default: the method's default per row).
+    seed : int, optional
+        For the seeded methods: one seed for the whole sweep (None: a fresh one, reported).
+        Row i draws from ``SeedSequence(seed, spawn_key=(cases[i].stream(),))``
+        (:meth:`Case.stream`), so each row is reproducible on its own, whatever the order of the
+        rows and the workers; ``estimate(case.dist, method, n, seed=that SeedSequence,
+        model=case.model)`` gives the same row.
+    executor : object with ``map``, or a distributed.Client, optional
+        Runs the rows (default: a thread pool of ``threads`` workers); each row runs serially
+        inside its task.
+    progress : callable, optional
+        Called with 1 as each row finishes (in any order), reused rows included.
+    checkpoint : path, optional
+        A file of finished rows (JSON lines, one per row, keyed by :func:`row_key`): rows found
+        in it are not recomputed, and every row computed is appended as it finishes, so a sweep
+        that is stopped (Ctrl-C, a failure, a killed process) resumes where it stopped.
+
+    Returns
+    -------
+    SweepResults
+        One result per case, in order; ``.to_dicts()``/``.to_frame()`` give the table.
+
+    Raises
+    ------
+    ValueError
+        Before any work: too many rows, or more work than
+        :data:`coinflight._validation.MAX_RUN_SECONDS` in all (:func:`check_sweep_work`).
+    """
+    from coinflight.probability._runner import check_runner, completed, executor_or_threads
+
+    items = list(cases)
+    if len(items) > MAX_ROWS:
+        raise ValueError(f"a sweep of {len(items):,} rows is more than {MAX_ROWS:,}; use fewer")
+    for i, case in enumerate(items):
+        if not isinstance(case, Case):
+            raise TypeError(f"cases[{i}] must be a Case, got {case!r}")
+    if not items:
+        raise ValueError("a sweep needs at least one case")
+    estimator = registry.get(method)
+    if n is not None:
+        n = v.count("n", n)
+        if estimator.default_n is None:
+            raise ValueError(f"the {method} method takes no n")
+    check_runner(executor, threads, progress)
+    the_seed: int | None = None
+    if estimator.seeded:
+        the_seed = reported_seed(seed_sequence(seed))
+    elif seed is not None:
+        raise TypeError(f"method {method!r} takes no seed (it is deterministic); got seed={seed}")
+    check_sweep_work(items, method, n)
+    keys = [row_key(case, method, n, the_seed) for case in items]
+    done = {} if checkpoint is None else read_checkpoint(checkpoint)
+    results: list[ProbabilityResult | None] = [done.get(k) for k in keys]
+    reused = sum(r is not None for r in results)
+    if progress is not None and reused:
+        progress(reused)
+    todo = [i for i, r in enumerate(results) if r is None]
+    tasks = [(items[i].dist, items[i].model, method, n, the_seed, items[i].stream()) for i in todo]
+    log = None
+    if checkpoint is not None and todo:
+        Path(checkpoint).parent.mkdir(parents=True, exist_ok=True)
+        log = open(checkpoint, "a", encoding="utf-8")  # noqa: SIM115 (closed below)
+    try:
+        with executor_or_threads(executor, threads) as ex:
+            for j, result in completed(ex, _row_task, tasks, [1] * len(tasks)):
+                i = todo[j]
+                results[i] = result
+                if log is not None:
+                    entry = {"key": keys[i], "result": result.to_dict()}
+                    log.write(json.dumps(entry) + "\n")
+                    log.flush()
+                if progress is not None:
+                    progress(1)
+    finally:
+        if log is not None:
+            log.close()
+    return SweepResults(
+        items,
+        [r for r in results if r is not None],
+        method=method,
+        n=n,
+        seed=the_seed,
+        keys=keys,
+        reused=reused,
+    )
+
+
+def table_metadata(results: SweepResults, inputs: Mapping[str, Any] | None = None) -> dict:
+    """What a sweep's table records about itself: the package version, the method, n, seed,
+    rows, the inputs as given (e.g. the command line's options), the columns of the standard
+    errors."""
+    from coinflight import __version__
+
+    return {
+        "coinflight_version": __version__,
+        "method": results.method,
+        "n": results.n,
+        "seed": results.seed,
+        "rows": len(results),
+        "inputs": dict(inputs or {}),
+        "stderr": "column stderr: standard error of p_heads per row (random methods); "
+        "error_estimate: the numerical error bound of exact",
+    }
+
+
+TABLE_FORMATS = (".parquet", ".csv")
+"""Suffixes :func:`write_table` writes."""
+
+
+def table_files(path: str | os.PathLike[str]) -> list[Path]:
+    """The files :func:`write_table` writes for ``path``: FILE.parquet alone (its metadata
+    inside), or FILE.csv with FILE.csv.json (the metadata beside it)."""
+    target = Path(path)
+    suffix = target.suffix.lower()
+    if suffix not in TABLE_FORMATS:
+        raise ValueError(
+            f"cannot write {os.fspath(path)}: the table's format follows the suffix, "
+            f"{' or '.join(TABLE_FORMATS)}"
+        )
+    return [target] if suffix == ".parquet" else [target, target.with_name(target.name + ".json")]
+
+
+def write_table(
+    results: SweepResults,
+    path: str | os.PathLike[str],
+    inputs: Mapping[str, Any] | None = None,
+) -> list[Path]:
+    """Write the sweep as one table, whole or not at all (:func:`coinflight._files.replacing_all`).
+
+    ``.parquet`` (needs ``pip install "coinflight[parquet]"``): one file, the metadata of
+    :func:`table_metadata` as JSON under the key ``coinflight`` of the schema's metadata.
+    ``.csv``: the table, and its metadata as FILE.csv.json. Returns the files written.
+    """
+    from coinflight._files import cannot_write, replacing_all
+
+    files = table_files(path)
+    rows = results.to_dicts()
+    columns: dict[str, None] = {}
+    for row in rows:
+        columns.update(dict.fromkeys(row))
+    meta = table_metadata(results, inputs)
+    if files[0].suffix.lower() == ".parquet":
+        pa, pq = _require_pyarrow()
+        table = pa.Table.from_pylist(
+            [{c: row.get(c) for c in columns} for row in rows],
+            metadata={"coinflight": json.dumps(meta)},
+        )
+    try:
+        with replacing_all(files) as temps:
+            if files[0].suffix.lower() == ".parquet":
+                pq.write_table(table, temps[0])
+            else:
+                import csv
+
+                with open(temps[0], "w", newline="", encoding="utf-8") as f:
+                    writer = csv.DictWriter(f, fieldnames=list(columns), restval="")
+                    writer.writeheader()
+                    writer.writerows(rows)
+                temps[1].write_text(json.dumps(meta, indent=2) + "\n", encoding="utf-8")
+    except OSError as exc:
+        raise cannot_write(path, exc) from None
+    return files
+
+
+def read_table(path: str | os.PathLike[str]) -> tuple[list[dict[str, Any]], dict[str, Any]]:
+    """The rows and metadata of a table written by :func:`write_table` (CSV values as text)."""
+    files = table_files(path)
+    if files[0].suffix.lower() == ".parquet":
+        _, pq = _require_pyarrow()
+        table = pq.read_table(files[0])
+        meta = json.loads((table.schema.metadata or {})[b"coinflight"])
+        return table.to_pylist(), meta
+    import csv
+
+    with open(files[0], newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    return rows, json.loads(files[1].read_text(encoding="utf-8"))
+
+
+def _require_pyarrow() -> tuple[Any, Any]:
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ModuleNotFoundError:
+        raise ValueError(
+            'writing Parquet needs pyarrow: pip install "coinflight[parquet]" (or write a .csv)'
+        ) from None
+    return pa, pq
+
+
+def run_sweep(
+    cases: Iterable[Case],
+    out: str | os.PathLike[str],
+    method: str = "exact",
+    n: int | None = None,
+    seed: SeedLike = None,
+    *,
+    inputs: Mapping[str, Any] | None = None,
+    **runner: Any,
+) -> tuple[SweepResults, list[Path]]:
+    """:func:`sweep` into the table ``out`` (:func:`write_table`), resumable.
+
+    The finished rows are kept in ``out`` + :data:`CHECKPOINT_SUFFIX` while the sweep runs; a
+    rerun with the same cases, method, n and seed computes only the rows missing from it. The
+    table is written whole at the end, then the checkpoint removed; if anything fails, no table
+    is written and the checkpoint stays for the next run. ``runner``: ``executor``,
+    ``threads``, ``progress``.
+    """
+    from coinflight._files import check_all_writable
+
+    files = table_files(out)
+    if files[0].suffix.lower() == ".parquet":
+        _require_pyarrow()
+    check_all_writable(files)
+    checkpoint = Path(os.fspath(out) + CHECKPOINT_SUFFIX)
+    results = sweep(cases, method, n, seed, checkpoint=checkpoint, **runner)
+    written = write_table(results, out, inputs)
+    checkpoint.unlink(missing_ok=True)
+    return results, written
+
+
+__all__ = [
+    "CHECKPOINT_SUFFIX",
+    "MAX_ROWS",
+    "Case",
+    "ProbabilityResults",
+    "SweepResults",
+    "check_sweep_work",
+    "estimate_many",
+    "product_cases",
+    "read_checkpoint",
+    "read_table",
+    "result_from_dict",
+    "row_key",
+    "run_sweep",
+    "sweep",
+    "table_files",
+    "table_metadata",
+    "write_table",
+]
