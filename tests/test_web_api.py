@@ -5,6 +5,9 @@ from __future__ import annotations
 
 import json
 import math
+import signal
+import subprocess
+import sys
 import time
 
 import numpy as np
@@ -13,6 +16,7 @@ from fastapi.testclient import TestClient
 from scipy.spatial.transform import Rotation
 from typer.testing import CliRunner
 
+from _web_server import serving
 from coinflight.cli import app as cli_app
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
 from coinflight.web import create_app
@@ -375,3 +379,49 @@ def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
     assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
     assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")
+
+
+# --- a real server -------------------------------------------------------------------------------
+def test_coinflight_serve_answers_over_http_on_loopback():
+    """``coinflight serve --port 0`` binds 127.0.0.1 on a free port, prints its address, answers
+    the CLI's JSON over real HTTP, refuses a second server on its port (one line, exit 2) and
+    stops on Ctrl-C."""
+    import httpx2
+
+    with serving() as server:
+        assert server.url.startswith("http://127.0.0.1:")
+        with httpx2.Client(base_url=server.url, timeout=60) as http:
+            got = http.get("/api/toss", params={"omega": "90,30,0", "flight_time": "0.65"})
+            assert got.status_code == 200
+            assert got.json() == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
+                                          "0.65")  # fmt: skip
+            assert http.get("/").status_code == 200
+            bad = http.get("/api/toss", params={"flight_time": "abc"})
+            assert (bad.status_code, bad.json()) == (
+                422, {"detail": "Invalid value for '--flight-time': 'abc' is not a number"}
+            )  # fmt: skip
+        second = subprocess.run(
+            [sys.executable, "-m", "coinflight", "serve", "--port", str(server.port)],
+            capture_output=True, text=True, timeout=60,
+        )  # fmt: skip
+        assert second.returncode == 2
+        assert second.stderr == (
+            f"coinflight: error: port {server.port} on 127.0.0.1 is in use; choose another "
+            "with --port (0: any free port)\n"
+        )
+        server.process.send_signal(signal.SIGINT)
+        assert server.process.wait(timeout=20) in (0, 130)
+
+
+def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
+    with serving("--host", "0.0.0.0", "--port", "0") as server:
+        assert server.url.startswith("http://0.0.0.0:")
+        server.process.send_signal(signal.SIGINT)
+        server.process.wait(timeout=20)
+        warning = server.process.stderr.read().splitlines()[0]
+    assert warning.startswith("coinflight: warning: --host 0.0.0.0 serves coinflight to every ")
+    result = cli.invoke(cli_app, ["serve", "--port", "70000"])
+    assert result.exit_code == 2
+    assert result.stderr.strip().splitlines() == [
+        "coinflight: error: Invalid value for '--port': Input should be less than or equal to 65535"
+    ]

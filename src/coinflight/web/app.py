@@ -61,7 +61,8 @@ def create_app(
     _static(app)
 
     async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
-        return Response(json_text(await runner.run(fn, *args)), media_type=JSON)
+        """``fn(*args)`` as JSON text, computed and encoded in a worker thread."""
+        return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
 
     @app.get("/api/toss", tags=["toss"], response_class=Response)
     async def toss(
@@ -253,6 +254,10 @@ def create_app(
         return await answer(endpoints.data, dataset, interval, psi_sd)
 
     return app
+
+
+def _encoded(fn: Callable[..., dict[str, Any]], *args: Any) -> str:
+    return json_text(fn(*args))
 
 
 async def _known_parameters(request: Request) -> None:
