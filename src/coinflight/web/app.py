@@ -1,0 +1,329 @@
+"""The ASGI application: the page, its static files and the JSON API (see
+:mod:`coinflight.web`)."""
+
+from __future__ import annotations
+
+from collections.abc import AsyncIterator, Callable
+from contextlib import asynccontextmanager
+from importlib.resources import as_file, files
+from typing import Any
+
+from fastapi import Depends, FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import FileResponse, JSONResponse, Response
+from fastapi.staticfiles import StaticFiles
+
+from coinflight import __version__
+from coinflight.queries.encoding import json_text
+from coinflight.web import params as p
+from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner
+
+JSON = "application/json"
+
+
+def create_app(
+    *, time_limit: float = DEFAULT_TIME_LIMIT, workers: int | None = None, backlog: int = 64
+) -> FastAPI:
+    """The coinflight web application.
+
+    Parameters
+    ----------
+    time_limit : float
+        Seconds a request may compute; beyond it the answer is HTTP 503 with one line.
+    workers : int or None
+        Worker threads computing answers (default: the CPU count, 2 to 8).
+    backlog : int
+        Requests that may wait for a worker; beyond them HTTP 503 ("busy") at once.
+    """
+    runner = Runner(workers, time_limit, backlog)
+
+    @asynccontextmanager
+    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        yield
+        runner.close()
+
+    app = FastAPI(
+        title="coinflight",
+        version=__version__,
+        summary="The physics of coin tossing: the command line's answers as JSON.",
+        description=(
+            "Each endpoint answers as `coinflight COMMAND --json` does: the parameters are the "
+            "command's options with underscores (`flight_time` for `--flight-time`), the "
+            'answer the same JSON object. Bad input: HTTP 422 `{"detail": "one line"}` '
+            "with the command line's words; work over the server's limits: 422 before it "
+            "starts, or 503 after the time limit."
+        ),
+        lifespan=lifespan,
+        dependencies=[Depends(_known_parameters)],
+    )
+    app.state.runner = runner
+    _errors(app)
+    _static(app)
+
+    async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
+        """``fn(*args)`` as JSON text, computed and encoded in a worker thread."""
+        return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
+
+    @app.get("/api/toss", tags=["toss"], response_class=Response)
+    async def toss(
+        omega: p.Omega = "80,0,0",
+        flight_time: p.FlightTime = None,
+        launch_speed: p.LaunchSpeed = None,
+        start: p.Start = "heads",
+        g: p.Gravity = 9.81,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+        surface: p.Surface = "hand",
+        drop_height: p.DropHeight = None,
+        restitution: p.Restitution = None,
+        friction: p.Friction = None,
+        drag: p.Drag = None,
+        spin_damping: p.SpinDamping = None,
+        bounces: p.Bounces = None,
+        trajectory: p.Trajectory = None,
+    ) -> Response:
+        """One toss: the face it shows and how it turned, as `coinflight toss --json`; with
+        `trajectory=K` also the flight sampled at K times from launch to catch (the closed
+        form: normal, attitude quaternion, height, the angular momentum's direction and the
+        cone half-angle), for drawing it."""
+        from coinflight.web import endpoints
+
+        args = p.toss_args(omega, flight_time, launch_speed, start, g)
+        return await answer(
+            endpoints.toss,
+            (coin, radius, thickness, mass),
+            args,
+            p.table_args(surface, drop_height, restitution, friction),
+            p.air_args(drag, spin_damping),
+            bounces,
+            trajectory,
+        )
+
+    @app.get("/api/probability", tags=["probability"], response_class=Response)
+    async def probability(
+        request: Request,
+        omega_x: p.OmegaX = "80",
+        omega_y: p.OmegaY = "0",
+        omega_z: p.OmegaZ = "0",
+        flight_time: p.FlightTimes = None,
+        launch_speed: p.LaunchSpeeds = None,
+        start: p.Start = "heads",
+        g: p.Gravity = 9.81,
+        preset: p.TossPreset = None,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+        surface: p.Surface = "hand",
+        drop_height: p.DropHeight = None,
+        restitution: p.Restitution = None,
+        friction: p.Friction = None,
+        drag: p.Drag = None,
+        spin_damping: p.SpinDamping = None,
+        method: p.Method = "exact",
+        n: p.Size = None,
+        seed: p.Seed = None,
+        grid_cells: p.GridCells = None,
+    ) -> Response:
+        """The chance of heads for tosses spread over ranges of spin and flight time, as
+        `coinflight probability --json` (the server runs each request on one thread; the
+        answer does not depend on it)."""
+        from coinflight.queries.probability import INPUT_NAMES, PRESET_OPTIONS
+        from coinflight.queries.values import DistArgs
+        from coinflight.web import endpoints
+
+        g = p.gravity(g)
+        typed = {
+            "omega_x": omega_x,
+            "omega_y": omega_y,
+            "omega_z": omega_z,
+            "flight_time": flight_time,
+            "launch_speed": launch_speed,
+            "g": g,
+            "preset": preset,
+        }
+        given = {k: str(typed[k]) for k in PRESET_OPTIONS if k in request.query_params}
+        options = {
+            "method": method,
+            "n": n,
+            "seed": seed,
+            "grid_cells": grid_cells,
+            "preset": preset,
+            "overrides": given if preset is not None else None,
+            "inputs": {k: typed[k] for k in INPUT_NAMES},
+        }
+        return await answer(
+            endpoints.probability,
+            (coin, radius, thickness, mass),
+            DistArgs(omega_x, omega_y, omega_z, flight_time, launch_speed, start, g),
+            p.table_args(surface, drop_height, restitution, friction),
+            p.air_args(drag, spin_damping),
+            options,
+            runner.time_limit,
+        )
+
+    @app.get("/api/basin", tags=["basin"], response_class=Response)
+    async def basin(
+        flight_time: p.FlightTimeRange = None,
+        launch_speed: p.LaunchSpeedRange = None,
+        omega_x: p.OmegaXRange = None,
+        omega_y: p.OmegaYFixed = 0.0,
+        omega_z: p.OmegaZFixed = 0.0,
+        psi: p.PsiFixed = None,
+        precession_rate: p.PrecessionRange = None,
+        resolution: p.Resolution = "500",
+        start: p.Start = "heads",
+        g: p.Gravity = 9.81,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+        surface: p.Surface = "hand",
+        drop_height: p.DropHeight = None,
+        restitution: p.Restitution = None,
+        friction: p.Friction = None,
+        bounces: p.Bounces = None,
+        boundaries: p.Boundaries = False,
+    ) -> Response:
+        """Heads and tails over a box of flight times and spins: the map `coinflight plot
+        basin` draws, as JSON (`face`: one row per `spin` value, face codes along
+        `flight_time`; `faces` names the codes). At most 640,000 cells."""
+        from coinflight.web import endpoints
+
+        options = {
+            "flight_time": flight_time,
+            "launch_speed": launch_speed,
+            "omega_x": omega_x,
+            "omega_y": omega_y,
+            "omega_z": omega_z,
+            "psi": psi,
+            "precession_rate": precession_rate,
+            "resolution": resolution,
+            "start": start,
+            "g": p.gravity(g),
+        }
+        return await answer(
+            endpoints.basin,
+            (coin, radius, thickness, mass),
+            options,
+            p.table_args(surface, drop_height, restitution, friction),
+            bounces,
+            boundaries,
+            runner.time_limit,
+        )
+
+    @app.get("/api/bias", tags=["bias"], response_class=Response)
+    async def bias(
+        psi: p.Psi = None,
+        psi_dist: p.PsiDist = None,
+        preset: p.PsiPreset = None,
+        monte_carlo: p.MonteCarlo = None,
+        seed: p.Seed = None,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+    ) -> Response:
+        """The probability that a precessing coin lands on the side it started (Diaconis,
+        Holmes & Montgomery 2007), as `coinflight bias --json`."""
+        from coinflight.web import endpoints
+
+        return await answer(
+            endpoints.bias,
+            (coin, radius, thickness, mass),
+            psi,
+            psi_dist,
+            preset,
+            monte_carlo,
+            seed,
+            runner.time_limit,
+        )
+
+    @app.get("/api/data", tags=["data"], response_class=Response)
+    async def data(
+        dataset: p.Dataset = None,
+        interval: p.Interval = "exact",
+        psi_sd: p.PsiSd = 0.0,
+    ) -> Response:
+        """Same-side and heads rates of real flips (Bartoš et al.'s 350,757) and the precession
+        angle ψ that explains them, as `coinflight data --json`."""
+        from coinflight.web import endpoints
+
+        return await answer(endpoints.data, dataset, interval, psi_sd)
+
+    return app
+
+
+def _encoded(fn: Callable[..., dict[str, Any]], *args: Any) -> str:
+    return json_text(fn(*args))
+
+
+async def _known_parameters(request: Request) -> None:
+    """A parameter the endpoint does not take is an error, as an unknown option is on the
+    command line (a typo such as ``flight-time=`` is not silently ignored)."""
+    route = request.scope.get("route")
+    dependant = getattr(route, "dependant", None)
+    if dependant is None:
+        return
+    known = {param.alias for param in dependant.query_params}
+    for name in request.query_params:
+        if name not in known:
+            raise ValueError(f"No such option: {p.flag(name)}")
+
+
+def _errors(app: FastAPI) -> None:
+    """Bad input → 422 with one line; over time or busy → 503 with one line."""
+
+    def one_line(status: int, message: str) -> JSONResponse:
+        return JSONResponse({"detail": " ".join(message.split())}, status_code=status)
+
+    async def bad_value(_: Request, exc: Exception) -> JSONResponse:
+        return one_line(422, str(exc))
+
+    async def bad_request(_: Request, exc: Exception) -> JSONResponse:
+        assert isinstance(exc, RequestValidationError)
+        return one_line(422, _validation_line(exc))
+
+    async def overloaded(_: Request, exc: Exception) -> JSONResponse:
+        return one_line(503, str(exc))
+
+    app.add_exception_handler(ValueError, bad_value)
+    app.add_exception_handler(TypeError, bad_value)
+    app.add_exception_handler(RequestValidationError, bad_request)
+    app.add_exception_handler(Overloaded, overloaded)
+
+
+_READING = {
+    "float_parsing": "is not a number",
+    "int_parsing": "is not a valid integer",
+    "int_from_float": "is not a valid integer",
+    "bool_parsing": "is not a valid boolean",
+}
+
+
+def _validation_line(exc: RequestValidationError) -> str:
+    """The first error of a request FastAPI could not read, as the command line says it
+    (typer's words: ``Invalid value for '--n': '1.5' is not a valid integer``)."""
+    error = exc.errors()[0]
+    name = str(error.get("loc", ("", "?"))[-1])
+    reading = _READING.get(str(error.get("type")))
+    if reading is not None:
+        return p.invalid(name, error.get("input"), reading)
+    return f"Invalid value for '{p.flag(name)}': {error.get('msg', 'not valid')}"
+
+
+def _static(app: FastAPI) -> None:
+    """``/``: the page; ``/static/...``: its files (package data, read-only)."""
+    static = files("coinflight.web").joinpath("static")
+    with as_file(static) as folder:  # a real folder for an installed (unzipped) package
+        app.mount("/static", StaticFiles(directory=folder), name="static")
+        index = folder / "index.html"
+
+    @app.get("/", include_in_schema=False)
+    async def page() -> FileResponse:
+        return FileResponse(index, media_type="text/html")
+
+
+__all__ = ["create_app"]

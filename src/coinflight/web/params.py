@@ -1,0 +1,168 @@
+"""The API's query parameters: the command line's options, named with underscores
+(``flight_time`` for ``--flight-time``), read into the same values the command line makes.
+
+Errors say what the command line says, naming the option as the command line names it
+(``Invalid value for '--flight-time': 'abc' is not a number``).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from fastapi import Query
+
+from coinflight.queries.values import AirArgs, TableArgs, TossArgs
+
+
+def flag(name: str) -> str:
+    """The command-line option of the API parameter ``name`` (``omega_x`` → ``--omega-x``)."""
+    return "--" + name.replace("_", "-")
+
+
+def invalid(name: str, text: object, what: str) -> str:
+    """The command line's words for a value it cannot read (typer's usage error)."""
+    return f"Invalid value for '{flag(name)}': {text!r} {what}"
+
+
+def numbers(text: str, name: str, count: int, metavar: str) -> tuple[float, ...]:
+    """``count`` comma-separated numbers (``omega=80,0,0`` for ``--omega 80 0 0``)."""
+    parts = text.split(",")
+    if len(parts) != count:
+        raise ValueError(
+            f"{flag(name)} takes {count} comma-separated numbers {metavar}; got {text!r}"
+        )
+    values = []
+    for part in parts:
+        try:
+            values.append(float(part))
+        except ValueError:
+            raise ValueError(invalid(name, part, "is not a number")) from None
+    return tuple(values)
+
+
+def gravity(g: float) -> float:
+    """--g checked as the command line checks it, before anything divides by it."""
+    from coinflight.model.toss import GRAVITY
+
+    try:
+        return GRAVITY.check(g)
+    except ValueError as exc:
+        raise ValueError(f"Invalid value for '--g': {exc}") from None
+
+
+def _q(description: str, **extra: Any) -> Any:
+    return Query(description=description, **extra)
+
+
+# --- the coin --------------------------------------------------------------------------------
+CoinName = Annotated[
+    str | None,
+    _q(
+        "A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, "
+        "eur-50c, gbp-1 (default us-quarter); as --coin."
+    ),
+]
+Radius = Annotated[float | None, _q("Custom coin radius, m (as --radius).")]
+Thickness = Annotated[float | None, _q("Custom coin thickness, m (as --thickness).")]
+Mass = Annotated[float | None, _q("Custom coin mass, kg (as --mass).")]
+
+# --- one toss --------------------------------------------------------------------------------
+Omega = Annotated[
+    str,
+    _q(
+        "Body-frame angular velocity at launch WX,WY,WZ, rad/s: x and y about diameters, z "
+        "about the normal (as --omega WX WY WZ).",
+        examples=["80,0,0"],
+    ),
+]
+FlightTime = Annotated[float | None, _q("Flight time to catch at launch height, s.")]
+LaunchSpeed = Annotated[float | None, _q("Upward launch speed, m/s (T = 2 V0 / g).")]
+Start = Annotated[str, _q("Face up at launch: heads or tails.")]
+Gravity = Annotated[float, _q("Gravitational acceleration, m/s².")]
+
+# --- where it ends ---------------------------------------------------------------------------
+Surface = Annotated[str, _q("hand (caught at launch height) or table (as --surface).")]
+DropHeight = Annotated[float | None, _q("table: surface below the launch height, m.")]
+Restitution = Annotated[float | None, _q("table: coefficient of restitution in [0, 1].")]
+Friction = Annotated[float | None, _q("table: Coulomb friction coefficient ≥ 0.")]
+Drag = Annotated[float | None, _q("Air drag coefficient C_d ≥ 0 (integrated numerically).")]
+SpinDamping = Annotated[float | None, _q("Damping torque −K ω on the spin, N m s ≥ 0.")]
+Bounces = Annotated[int | None, _q("table: stop at the contact after K bounces.")]
+
+
+def toss_args(
+    omega: str, flight_time: float | None, launch_speed: float | None, start: str, g: float
+) -> TossArgs:
+    """The toss options as the command line's :class:`~coinflight.queries.values.TossArgs`."""
+    wx, wy, wz = numbers(omega, "omega", 3, "WX,WY,WZ")
+    return TossArgs((wx, wy, wz), flight_time, launch_speed, start, gravity(g))
+
+
+def table_args(
+    surface: str, drop_height: float | None, restitution: float | None, friction: float | None
+) -> TableArgs:
+    """--surface and the table's options."""
+    return TableArgs(surface, drop_height, restitution, friction)
+
+
+def air_args(drag: float | None, spin_damping: float | None) -> AirArgs:
+    """--drag and --spin-damping."""
+    return AirArgs(drag, spin_damping)
+
+
+Trajectory = Annotated[
+    int | None,
+    _q(
+        "Also sample the flight at K equally spaced times, 2 ≤ K ≤ 2000 (the closed form; "
+        "for drawing it).",
+    ),
+]
+
+# --- a range of tosses (probability) ------------------------------------------------------------
+_DIST = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
+OmegaX = Annotated[str, _q(f"Spin about the x diameter, rad/s: {_DIST} (as --omega-x).")]
+OmegaY = Annotated[str, _q(f"Spin about the y diameter, rad/s: {_DIST} (as --omega-y).")]
+OmegaZ = Annotated[str, _q(f"Spin about the normal, rad/s: {_DIST} (as --omega-z).")]
+FlightTimes = Annotated[
+    str | None, _q(f"Flight time T (catch at launch height), s: {_DIST} (as --flight-time).")
+]
+LaunchSpeeds = Annotated[
+    str | None, _q(f"Upward launch speed v0 (T = 2 v0 / g), m/s: {_DIST} (as --launch-speed).")
+]
+TossPreset = Annotated[
+    str | None,
+    _q("A named distribution of tosses: human; toss parameters given replace its values."),
+]
+Method = Annotated[str, _q("exact, grid, monte-carlo or qmc (as --method).")]
+Size = Annotated[int | None, _q("The method's size (as --n): cells per parameter, tosses, …")]
+Seed = Annotated[int | None, _q("Seed of monte-carlo and qmc (reported; drawn if not given).")]
+GridCells = Annotated[int | None, _q("monte-carlo only: draw from the midpoints of C cells.")]
+
+# --- a map (basin) ---------------------------------------------------------------------------
+FlightTimeRange = Annotated[str | None, _q("Range of flight times LO:HI, s (default 0.6:0.9).")]
+LaunchSpeedRange = Annotated[str | None, _q("Range of launch speeds LO:HI, m/s, instead.")]
+OmegaXRange = Annotated[str | None, _q("Range of the spin ωx0 LO:HI, rad/s (default 60:90).")]
+OmegaYFixed = Annotated[float, _q("Fixed spin about the other diameter ωy0, rad/s.")]
+OmegaZFixed = Annotated[float, _q("Fixed spin about the normal ωz0, rad/s.")]
+PsiFixed = Annotated[
+    float | None,
+    _q("Fixed angle between the normal and S, degrees; the spin axis is then the precession rate."),
+]
+PrecessionRange = Annotated[
+    str | None, _q("Range of the precession rate LO:HI, rad/s, with psi (default 60:90).")
+]
+Resolution = Annotated[str, _q("Grid cells: N (N×N) or NTxNW (as --resolution).")]
+Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand only).")]
+
+# --- the same-side bias and real flips --------------------------------------------------------
+Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]
+PsiDist = Annotated[
+    str | None, _q("A distribution of ψ in degrees: normal:MEAN,SD, LOW:HIGH or a number.")
+]
+PsiPreset = Annotated[str | None, _q("A named distribution of tosses: human.")]
+MonteCarlo = Annotated[
+    int | None, _q("Also simulate N tosses of the full flight (as --monte-carlo).")
+]
+Dataset = Annotated[str | None, _q("A dataset shipped with coinflight (default bartos2023).")]
+Interval = Annotated[str, _q("95 % interval: exact (Clopper-Pearson) or wilson.")]
+PsiSd = Annotated[float, _q("Spread of ψ, degrees: 0 fits one fixed ψ; > 0 a normal's mean.")]

@@ -1,0 +1,427 @@
+"""The JSON API of ``coinflight serve`` (coinflight.web): the same answers as the command line's
+``--json``, the same one-line errors, every request's work bounded, and a real server."""
+
+from __future__ import annotations
+
+import json
+import math
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+from fastapi.testclient import TestClient
+from scipy.spatial.transform import Rotation
+from typer.testing import CliRunner
+
+from _web_server import serving
+from coinflight.cli import app as cli_app
+from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
+from coinflight.web import create_app
+
+cli = CliRunner()
+
+
+@pytest.fixture(scope="module")
+def client():
+    with TestClient(create_app()) as c:
+        yield c
+
+
+def cli_json(*args: str) -> dict:
+    result = cli.invoke(cli_app, [*args, "--json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def cli_error(*args: str) -> str:
+    result = cli.invoke(cli_app, list(args))
+    assert result.exit_code == 2
+    (line,) = result.stderr.strip().splitlines()
+    prefix = "coinflight: error: "
+    assert line.startswith(prefix)
+    return line[len(prefix) :]
+
+
+def api_error(client: TestClient, url: str, status: int = 422) -> str:
+    response = client.get(url)
+    assert response.status_code == status, response.text
+    detail = response.json()["detail"]
+    assert isinstance(detail, str) and "\n" not in detail
+    return detail
+
+
+# --- /api/toss ---------------------------------------------------------------------------------
+@pytest.mark.parametrize("case", ROTATION_CASES, ids=lambda c: c.figure)
+def test_toss_json_equals_the_command_line_for_the_papers_six_tosses(client, case):
+    """Stefan & Cheche's six tosses (Figs 2c-d, 3c-f): the API's object is the CLI's, key for key
+    and number for number (one implementation, coinflight.queries.toss)."""
+    wx, wy, t = case.omega_x, case.omega_y, case.flight_time
+    response = client.get(f"/api/toss?omega={wx},{wy},0&flight_time={t}&coin=us-quarter")
+    assert response.status_code == 200
+    assert response.headers["content-type"] == "application/json"
+    expected = cli_json(
+        "toss", "--omega", str(wx), str(wy), "0", "--flight-time", str(t), "--coin", "us-quarter"
+    )
+    assert response.json() == expected
+    assert round(response.json()["rotations"], case.decimals) == case.paper_rotations
+
+
+def test_toss_on_a_table_equals_the_command_line(client):
+    url = "/api/toss?omega=80,0,0&flight_time=0.7&surface=table&drop_height=0.3&bounces=1"
+    expected = cli_json(
+        "toss", "--omega", "80", "0", "0", "--flight-time", "0.7", "--surface", "table",
+        "--drop-height", "0.3", "--bounces", "1",
+    )  # fmt: skip
+    assert client.get(url).json() == expected
+
+
+@pytest.mark.parametrize(
+    ("query", "cli_args"),
+    [
+        ("flight_time=abc", ["--flight-time", "abc"]),
+        ("flight_time=-1", ["--flight-time", "-1"]),
+        ("flight_time=0.7&coin=foo", ["--flight-time", "0.7", "--coin", "foo"]),
+        ("flight_time=0.7&start=up", ["--flight-time", "0.7", "--start", "up"]),
+        ("omega=80,x,0&flight_time=0.7", ["--omega", "80", "x", "0", "--flight-time", "0.7"]),
+        ("flight_time=0.7&launch_speed=3", ["--flight-time", "0.7", "--launch-speed", "3"]),
+        ("flight_time=0.7&drop_height=0.3", ["--flight-time", "0.7", "--drop-height", "0.3"]),
+        ("flight_time=0.7&g=-1", ["--flight-time", "0.7", "--g", "-1"]),
+        ("flight_time=0.7&radius=0.01", ["--flight-time", "0.7", "--radius", "0.01"]),
+    ],
+)
+def test_toss_bad_values_are_one_line_422_in_the_command_lines_words(client, query, cli_args):
+    detail = api_error(client, f"/api/toss?{query}")
+    said = cli_error("toss", *cli_args)
+    # typer names an option with its alias ('--flight-time' / '-T'); the API by its name only
+    assert detail == said.replace("'--flight-time' / '-T'", "'--flight-time'")
+
+
+def test_toss_omega_takes_three_numbers(client):
+    assert api_error(client, "/api/toss?omega=80,0&flight_time=0.7") == (
+        "--omega takes 3 comma-separated numbers WX,WY,WZ; got '80,0'"
+    )
+
+
+def test_toss_trajectory_is_the_closed_form_flight(client):
+    """trajectory=K samples Flight.at: it starts heads up, ends on the catch's normal, keeps
+    n on its cone about S (n·Ŝ = cos ψ), its quaternion turns the body z axis onto n, and the
+    height is the parabola v0 t − g t²/2 (0 at launch and at catch)."""
+    body = client.get("/api/toss?omega=90,30,10&flight_time=0.65&trajectory=41").json()
+    traj = body["trajectory"]
+    normal = np.array(traj["normal"])
+    quat = np.array(traj["quaternion"])
+    t = np.array(traj["t"])
+    assert normal.shape == (41, 3) and quat.shape == (41, 4) and t.shape == (41,)
+    assert t[0] == 0.0 and t[-1] == pytest.approx(0.65, abs=1e-15)
+    np.testing.assert_allclose(normal[0], [0, 0, 1], atol=1e-12)
+    np.testing.assert_allclose(normal[-1], body["normal"], atol=1e-12)
+    axis = np.array(traj["axis"])
+    assert np.linalg.norm(axis) == pytest.approx(1.0, abs=1e-12)
+    np.testing.assert_allclose(axis, np.array(body["angular_momentum"]) / np.linalg.norm(
+        body["angular_momentum"]), atol=1e-12)  # fmt: skip
+    cos_psi = math.cos(math.radians(traj["cone_half_angle_deg"]))
+    np.testing.assert_allclose(normal @ axis, cos_psi, atol=1e-9)
+    np.testing.assert_allclose(Rotation.from_quat(quat).apply([0, 0, 1]), normal, atol=1e-12)
+    v0, g = body["launch_speed"], body["g"]
+    np.testing.assert_allclose(traj["height"], v0 * t - g * t**2 / 2, atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("query", "message"),
+    [
+        ("trajectory=1", "trajectory must be a whole number from 2 to 2000, got 1"),
+        ("trajectory=2001", "trajectory must be a whole number from 2 to 2000, got 2001"),
+        ("trajectory=x", "Invalid value for '--trajectory': 'x' is not a valid integer"),
+        (
+            "trajectory=10&surface=table",
+            "trajectory draws the catch in the hand (the closed form); leave out --surface "
+            "table, --drag and --spin-damping, or trajectory",
+        ),
+    ],
+)
+def test_trajectory_is_bounded(client, query, message):
+    assert api_error(client, f"/api/toss?flight_time=0.7&{query}") == message
+
+
+# --- /api/probability --------------------------------------------------------------------------
+def _box(case) -> tuple[list[str], str]:
+    """The paper's box as command-line options and as the API's query."""
+    wx = f"{case.omega_x[0]:g}:{case.omega_x[1]:g}"
+    t = f"{case.flight_time[0]:g}:{case.flight_time[1]:g}"
+    wy = f"{case.omega_y:g}"
+    args = ["--omega-x", wx, "--omega-y", wy, "--flight-time", t]
+    return args, f"omega_x={wx}&omega_y={wy}&flight_time={t}"
+
+
+def _without_timing(payload: dict) -> dict:
+    return {k: v for k, v in payload.items() if k != "elapsed"}
+
+
+@pytest.mark.parametrize("case", PROBABILITY_CASES, ids=lambda c: c.figure)
+@pytest.mark.parametrize(("method", "extra"), [("exact", ""), ("monte-carlo", "&n=20000&seed=7")])
+def test_probability_json_equals_the_command_line_for_the_papers_four_boxes(
+    client, case, method, extra
+):
+    """Stefan & Cheche's Figs 2a, 2b, 3a, 3b: the same object as ``coinflight probability
+    --json``, all but the run's own ``elapsed`` time; exact to the last digit, Monte Carlo from
+    the same seed (the server's one thread gives the CLI's answer, whatever its threads)."""
+    args, query = _box(case)
+    response = client.get(f"/api/probability?{query}&method={method}{extra}")
+    assert response.status_code == 200, response.text
+    cli_args = ["probability", *args, "--method", method, "-q"]
+    if extra:
+        cli_args += ["--n", "20000", "--seed", "7"]
+    expected = cli_json(*cli_args)
+    got = response.json()
+    assert _without_timing(got) == _without_timing(expected)
+    assert got["elapsed"] > 0
+    assert got["p_heads"] == pytest.approx(0.5, abs=0.02)  # "tends to the unbiased value of 50%"
+
+
+def test_probability_preset_with_an_override_equals_the_command_line(client):
+    query = "preset=human&flight_time=0.4:0.6&method=monte-carlo&n=5000&seed=11"
+    expected = cli_json(
+        "probability", "--preset", "human", "--flight-time", "0.4:0.6", "--method",
+        "monte-carlo", "--n", "5000", "--seed", "11", "-q",
+    )  # fmt: skip
+    got = client.get(f"/api/probability?{query}").json()
+    assert _without_timing(got) == _without_timing(expected)
+    assert got["inputs"]["--flight-time"] == "0.4:0.6" and got["inputs"]["--preset"] == "human"
+
+
+@pytest.mark.parametrize(
+    ("query", "cli_args"),
+    [
+        ("omega_x=60:x&flight_time=0.6:0.9", ["--omega-x", "60:x", "--flight-time", "0.6:0.9"]),
+        ("flight_time=0.6:0.9&method=foo", ["--flight-time", "0.6:0.9", "-m", "foo"]),
+        ("flight_time=0.6:0.9&seed=3", ["--flight-time", "0.6:0.9", "--seed", "3"]),
+        ("flight_time=0.6:0.9&method=exact&grid_cells=5",
+         ["--flight-time", "0.6:0.9", "--grid-cells", "5"]),
+        ("omega_x=60:90", ["--omega-x", "60:90"]),
+        ("flight_time=normal:0.7", ["--flight-time", "normal:0.7"]),
+        ("flight_time=0.6:0.9&method=grid&n=100000000",
+         ["--flight-time", "0.6:0.9", "-m", "grid", "--n", "100000000"]),
+        ("flight_time=0.6:0.9&method=monte-carlo&n=0",
+         ["--flight-time", "0.6:0.9", "-m", "monte-carlo", "--n", "0"]),
+    ],
+)  # fmt: skip
+def test_probability_bad_values_are_one_line_422_in_the_command_lines_words(
+    client, query, cli_args
+):
+    assert api_error(client, f"/api/probability?{query}") == cli_error(
+        "probability", *cli_args, "-q"
+    )
+
+
+def test_probability_work_beyond_the_servers_budget_is_refused_before_it_starts(client):
+    """A size the command line would run (within its hour) but this server would not answer in
+    time: refused at once, with the estimate, the limit and the way on."""
+    n = 10**9  # 40 s at 2.5e7 tosses/s: within the CLI's hour, beyond half of 30 s
+    started = time.perf_counter()
+    detail = api_error(client, f"/api/probability?flight_time=0.6:0.9&method=monte-carlo&n={n}")
+    assert time.perf_counter() - started < 5
+    assert detail.startswith(f"monte-carlo with n = {n} is 40 s of estimated work, more than ")
+    assert "use a smaller n (this server answers within 30 s)" in detail
+
+
+# --- /api/basin, /api/bias, /api/data ----------------------------------------------------------
+def test_basin_is_the_map_the_command_line_draws(client, tmp_path):
+    """The JSON map is basin_map's grid: the CLI's printed P(heads) on the grid, its shape
+    (rows along the spin), and each pixel the face of the toss at its cell's centre."""
+    body = client.get("/api/basin?omega_x=60:90&flight_time=0.6:0.9&resolution=40x30").json()
+    face = np.array(body["face"])
+    assert face.shape == (30, 40) and body["resolution"] == [40, 30]
+    assert body["faces"] == {"0": "tails", "1": "heads", "2": "edge"}
+    out = cli.invoke(cli_app, [
+        "plot", "basin", "--omega-x", "60:90", "--flight-time", "0.6:0.9", "--resolution",
+        "40x30", "--out", str(tmp_path / "basin.png"),
+    ])  # fmt: skip
+    assert out.exit_code == 0, out.output
+    assert f"P(heads) on the 40×30 grid = {body['heads_fraction']:.6f}" in out.stdout
+    for i, j in [(0, 0), (7, 31), (29, 39)]:
+        w, t = body["spin"][i], body["flight_time"][j]
+        toss = client.get(f"/api/toss?omega={w!r},0,0&flight_time={t!r}").json()
+        assert face[i, j] == (1 if toss["outcome"] == "heads" else 0)
+
+
+def test_basin_boundaries_are_kellers_hyperbolas(client):
+    """Planar spin: each boundary satisfies ω T = (2k ± ½)π (Keller 1986; REFERENCES §3)."""
+    body = client.get("/api/basin?resolution=10&boundaries=true").json()
+    assert body["planar"] and body["boundaries"]
+    for curve in body["boundaries"]:
+        points = [(t, w) for t, w in zip(curve["flight_time"], curve["spin"], strict=True) if t]
+        assert points
+        for t, w in points:
+            assert math.cos(w * t) == pytest.approx(0.0, abs=1e-9)  # ω T = (2k ± ½)π
+
+
+@pytest.mark.parametrize(
+    ("query", "message"),
+    [
+        ("resolution=2000", "a map of 2000×2000 cells is 4e+06 cells, more than the limit of "
+         "6.4e+05 cells; use a coarser resolution (e.g. 400 or 600x300)"),
+        ("resolution=10x", "--resolution must be N or NTxNW with whole numbers, such as 500 or "
+         "600x400; got '10x'"),
+        ("omega_x=60", "--omega-x must be a range LO:HI such as 60:90 for a map; got '60' "
+         "(60 rad/s)"),
+    ],
+)  # fmt: skip
+def test_basin_bad_values_and_sizes_are_refused(client, query, message):
+    assert api_error(client, f"/api/basin?{query}") == message
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--psi", "80"],
+        ["--psi-dist", "normal:80,5"],
+        ["--psi", "75", "--monte-carlo", "20000", "--seed", "5"],
+        ["--preset", "human"],
+    ],
+)
+def test_bias_json_equals_the_command_line(client, args):
+    pairs = zip(args[::2], args[1::2], strict=True)
+    query = "&".join(f"{k.lstrip('-').replace('-', '_')}={v}" for k, v in pairs)
+    assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
+
+
+def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
+    detail = api_error(client, "/api/bias?psi=80&monte_carlo=1000000000")
+    assert detail.startswith("a Monte Carlo check of 1000000000 tosses is 250 s of estimated work")
+    assert api_error(client, "/api/bias?psi=80&psi_dist=normal:80,5") == cli_error(
+        "bias", "--psi", "80", "--psi-dist", "normal:80,5"
+    )
+
+
+def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
+    """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
+    got = client.get("/api/data?interval=wilson&psi_sd=5").json()
+    assert got == cli_json("data", "--interval", "wilson", "--psi-sd", "5")
+    assert (got["flips"], got["same"], got["plot"]) == (350_757, 178_078, [])
+    assert api_error(client, "/api/data?psi_sd=-1") == cli_error("data", "--psi-sd", "-1")
+    # no request reads a file: --counts FILE is the command line's alone
+    assert api_error(client, "/api/data?counts=/etc/passwd") == "No such option: --counts"
+
+
+# --- time, the page, the schema ----------------------------------------------------------------
+def test_a_request_over_its_time_limit_is_503_and_the_server_keeps_serving(monkeypatch):
+    """A request whose work runs past the time limit (here a data summary made to take 2 s) is
+    answered 503 with one line when the limit is up, not when the work ends; requests after it
+    are answered while the abandoned work finishes in its worker."""
+    from coinflight.web import endpoints
+
+    slow_data = endpoints.data
+
+    def slow(*args):
+        time.sleep(2.0)
+        return slow_data(*args)
+
+    monkeypatch.setattr(endpoints, "data", slow)
+    with TestClient(create_app(time_limit=0.3, workers=2)) as c:
+        started = time.perf_counter()
+        detail = api_error(c, "/api/data", status=503)
+        assert time.perf_counter() - started < 1.5
+        assert detail == (
+            "the request ran over the server's time limit of 0.3 s; ask for less work "
+            "(a smaller n, a coarser resolution)"
+        )
+        assert c.get("/api/bias?psi=80").status_code == 200
+        assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
+
+
+def test_every_worker_taken_is_503_busy_at_once():
+    """No queue without end: with one worker and no backlog, a second request while the first
+    runs is refused at once."""
+    import asyncio
+    import threading
+
+    from coinflight.web.runner import Overloaded, Runner
+
+    release = threading.Event()
+
+    async def scenario() -> str:
+        runner = Runner(workers=1, time_limit=10, backlog=0)
+        first = asyncio.ensure_future(runner.run(release.wait, 10))
+        await asyncio.sleep(0.05)
+        try:
+            await runner.run(lambda: None)
+        except Overloaded as exc:
+            message = str(exc)
+        else:
+            message = ""
+        release.set()
+        assert await first is True
+        assert await runner.run(lambda: 42) == 42  # the slot came back
+        runner.close()
+        return message
+
+    assert asyncio.run(scenario()) == (
+        "the server is busy (every worker is taken); try again in a few seconds"
+    )
+
+
+def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
+    page = client.get("/")
+    assert page.status_code == 200 and page.headers["content-type"].startswith("text/html")
+    assert "<html" in page.text.lower()
+    assert client.get("/static/index.html").text == page.text
+    assert client.get("/static/../../__init__.py").status_code == 404
+    schema = client.get("/openapi.json").json()
+    assert set(schema["paths"]) >= {f"/api/{e}" for e in ("toss", "probability", "basin",
+                                                          "bias", "data")}  # fmt: skip
+    names = {p["name"] for p in schema["paths"]["/api/toss"]["get"]["parameters"]}
+    assert {"omega", "flight_time", "coin", "trajectory"} <= names
+
+
+def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
+    assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
+    assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")
+
+
+# --- a real server -------------------------------------------------------------------------------
+def test_coinflight_serve_answers_over_http_on_loopback():
+    """``coinflight serve --port 0`` binds 127.0.0.1 on a free port, prints its address, answers
+    the CLI's JSON over real HTTP, refuses a second server on its port (one line, exit 2) and
+    stops on Ctrl-C."""
+    import httpx2
+
+    with serving() as server:
+        assert server.url.startswith("http://127.0.0.1:")
+        with httpx2.Client(base_url=server.url, timeout=60) as http:
+            got = http.get("/api/toss", params={"omega": "90,30,0", "flight_time": "0.65"})
+            assert got.status_code == 200
+            assert got.json() == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
+                                          "0.65")  # fmt: skip
+            assert http.get("/").status_code == 200
+            bad = http.get("/api/toss", params={"flight_time": "abc"})
+            assert (bad.status_code, bad.json()) == (
+                422, {"detail": "Invalid value for '--flight-time': 'abc' is not a number"}
+            )  # fmt: skip
+        second = subprocess.run(
+            [sys.executable, "-m", "coinflight", "serve", "--port", str(server.port)],
+            capture_output=True, text=True, timeout=60,
+        )  # fmt: skip
+        assert second.returncode == 2
+        assert second.stderr == (
+            f"coinflight: error: port {server.port} on 127.0.0.1 is in use; choose another "
+            "with --port (0: any free port)\n"
+        )
+        server.process.send_signal(signal.SIGINT)
+        assert server.process.wait(timeout=20) in (0, 130)
+
+
+def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
+    with serving("--host", "0.0.0.0", "--port", "0") as server:
+        assert server.url.startswith("http://0.0.0.0:")
+        server.process.send_signal(signal.SIGINT)
+        server.process.wait(timeout=20)
+        warning = server.process.stderr.read().splitlines()[0]
+    assert warning.startswith("coinflight: warning: --host 0.0.0.0 serves coinflight to every ")
+    result = cli.invoke(cli_app, ["serve", "--port", "70000"])
+    assert result.exit_code == 2
+    assert result.stderr.strip().splitlines() == [
+        "coinflight: error: Invalid value for '--port': Input should be less than or equal to 65535"
+    ]
