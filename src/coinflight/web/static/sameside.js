@@ -1,0 +1,146 @@
+// Same side: p(ψ), the chance a precessing coin lands the side it started (/api/bias, Diaconis,
+// Holmes & Montgomery 2007), and the ψ that explains 350,757 real flips (/api/data).
+import { ApiError, getJSON, latest, showError } from "./api.js";
+import { fitCanvas, Axes } from "./plot2d.js";
+import { COLORS } from "./explorer.js";
+import { fmtG, thousands } from "./format.js";
+
+const CURVE_STEP = 5; // degrees between the curve's points (37 closed-form answers)
+
+export class SameSide {
+  constructor(root) {
+    this.root = root;
+    this.el = (id) => root.querySelector(`#${id}`);
+    this.curve = null;
+    this.data = null;
+    this.current = null;
+    this.request = latest((signal) => this.fetchPsi(signal));
+    const range = this.el("psi-range");
+    const box = this.el("psi");
+    range.addEventListener("input", () => {
+      box.value = range.value;
+      this.changed();
+    });
+    box.addEventListener("input", () => {
+      if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
+      this.changed();
+    });
+    this.el("psi-data").addEventListener("click", () => {
+      if (!this.data) return;
+      const psi = this.data.psi_deg.toFixed(1);
+      box.value = psi;
+      range.value = psi;
+      this.changed();
+    });
+    new ResizeObserver(() => this.draw()).observe(this.el("psi-canvas"));
+  }
+
+  changed() {
+    clearTimeout(this.timer);
+    this.timer = setTimeout(() => this.update(), 80);
+  }
+
+  async load() {
+    this.root.dataset.state = "loading";
+    try {
+      const psis = [];
+      for (let d = 0; d <= 180; d += CURVE_STEP) psis.push(d);
+      const [curve, data] = await Promise.all([
+        Promise.all(psis.map((psi) => getJSON("api/bias", { psi }))),
+        getJSON("api/data"),
+      ]);
+      this.curve = curve.map((r) => [r.psi_deg, r.p_same_side]);
+      this.data = data;
+      this.el("data-text").textContent =
+        `${thousands(data.flips)} flips by ${data.people} people (Bartoš et al.): ` +
+        `${(100 * data.p_same_side).toFixed(2)} % landed on the side they started ` +
+        `(95 % interval ${(100 * data.ci95[0]).toFixed(2)} – ${(100 * data.ci95[1]).toFixed(2)} %), ` +
+        `heads ${(100 * data.p_heads).toFixed(2)} %. ` +
+        `A coin whose normal makes ψ = ${data.psi_deg.toFixed(1)}° ` +
+        `(${data.psi_ci95_deg[0].toFixed(1)}° – ${data.psi_ci95_deg[1].toFixed(1)}°) ` +
+        `with its angular momentum explains that rate.`;
+      this.el("data-text").title = `${data.citation}. doi:${data.doi}`;
+      showError(this.el("psi-error"), null);
+      await this.update();
+    } catch (err) {
+      if (!(err instanceof ApiError)) console.warn(err);
+      showError(this.el("psi-error"), err);
+      this.root.dataset.state = "error";
+    }
+  }
+
+  async update() {
+    try {
+      await this.request();
+    } catch (err) {
+      if (err.name !== "AbortError") throw err;
+    }
+  }
+
+  async fetchPsi(signal) {
+    this.root.dataset.state = "loading";
+    try {
+      const r = await getJSON("api/bias", { psi: this.el("psi").value.trim() }, { signal });
+      this.current = r;
+      this.el("psi-p").textContent = r.p_same_side.toFixed(6);
+      this.el("psi-p").dataset.value = String(r.p_same_side);
+      this.el("psi-text").textContent =
+        `ψ = ${fmtG(r.psi_deg)}° (${r.psi_model}): P(same side) = ${r.p_same_side.toFixed(6)}  ` +
+        `(closed form, ${r.source})`;
+      showError(this.el("psi-error"), null);
+      this.draw();
+      this.root.dataset.state = "ready";
+    } catch (err) {
+      if (err.name === "AbortError") throw err;
+      if (!(err instanceof ApiError)) console.warn(err);
+      showError(this.el("psi-error"), err);
+      this.root.dataset.state = "error";
+    }
+  }
+
+  draw() {
+    const fit = fitCanvas(this.el("psi-canvas"));
+    if (!this.curve) return;
+    const ax = new Axes(fit, [0, 180], [0.5, 1.0]);
+    const { ctx } = fit;
+    ctx.save();
+    ax.clip();
+    if (this.data) {
+      const d = this.data;
+      // The flips' same-side rate (band: its 95 % interval) and the ψ that explains it.
+      ctx.fillStyle = "rgba(0, 158, 115, 0.18)";
+      ctx.fillRect(ax.left, ax.y(d.ci95[1]), ax.pw, Math.max(2, ax.y(d.ci95[0]) - ax.y(d.ci95[1])));
+      ctx.fillRect(ax.x(d.psi_ci95_deg[0]), ax.top, ax.x(d.psi_ci95_deg[1]) - ax.x(d.psi_ci95_deg[0]), ax.ph);
+      ctx.strokeStyle = COLORS.edge;
+      ctx.lineWidth = 1.5;
+      ctx.setLineDash([6, 4]);
+      ctx.beginPath();
+      ctx.moveTo(ax.left, ax.y(d.p_same_side));
+      ctx.lineTo(ax.left + ax.pw, ax.y(d.p_same_side));
+      ctx.moveTo(ax.x(d.psi_deg), ax.top);
+      ctx.lineTo(ax.x(d.psi_deg), ax.top + ax.ph);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }
+    ctx.strokeStyle = COLORS.heads;
+    ctx.lineWidth = 2.5;
+    ctx.beginPath();
+    this.curve.forEach(([psi, p], k) => (k ? ctx.lineTo(ax.x(psi), ax.y(p)) : ctx.moveTo(ax.x(psi), ax.y(p))));
+    ctx.stroke();
+    if (this.current) {
+      const x = ax.x(this.current.psi_deg);
+      const y = ax.y(this.current.p_same_side);
+      ctx.fillStyle = COLORS.momentum;
+      ctx.strokeStyle = "#fff";
+      ctx.lineWidth = 2;
+      ctx.beginPath();
+      ctx.arc(x, y, 7, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.stroke();
+    }
+    ctx.restore();
+    ax.draw("ψ, degrees (angle between the normal n and the angular momentum S)", "P(same side)", {
+      xticks: [0, 30, 60, 90, 120, 150, 180],
+    });
+  }
+}
