@@ -162,13 +162,15 @@ def test_version_and_help():
 
 
 def test_help_needs_no_heavy_imports():
-    """``coinflight --help`` stays fast: SciPy, numba and matplotlib are imported only when used."""
+    """``coinflight --help`` stays fast: SciPy, numba, matplotlib and the web stack
+    (fastapi, uvicorn) are imported only when used."""
     code = (
         "import sys\n"
         "from coinflight.cli import app\n"
         "from typer.main import get_command\n"
         "get_command(app)\n"
-        "print(sorted(m for m in ('scipy', 'numba', 'matplotlib') if m in sys.modules))\n"
+        "heavy = ('scipy', 'numba', 'matplotlib', 'fastapi', 'starlette', 'uvicorn', 'pydantic')\n"
+        "print(sorted(m for m in heavy if m in sys.modules))\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"

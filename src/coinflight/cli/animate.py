@@ -10,7 +10,7 @@ import typer
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, TossOptions
 from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, number, out_file
-from coinflight.cli.values import build_toss
+from coinflight.queries.values import build_toss
 
 MovieFile = Annotated[
     Path, out_file(f"Animation to write: .gif (always) or .mp4 (needs ffmpeg). {OUTPUT_HELP}")

@@ -15,6 +15,7 @@ from coinflight.cli import data as _data
 from coinflight.cli import edge as _edge
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
+from coinflight.cli import serve as _serve
 from coinflight.cli import toss as _toss
 from coinflight.cli.errors import OneLineErrors
 from coinflight.cli.exits import INTERRUPTED, exit_now, interrupted
@@ -66,6 +67,7 @@ _COMMANDS: dict[str, Callable[..., None] | typer.Typer] = {
     "plot": plot_app,
     "animate": _animate.animate,
     "paper": _paper.paper,
+    "serve": _serve.serve,
 }
 for _name, _command in _COMMANDS.items():
     if isinstance(_command, typer.Typer):

@@ -17,7 +17,7 @@ from coinflight.cli.options import (
     number,
     print_json,
 )
-from coinflight.cli.values import simulation_seed
+from coinflight.queries.values import simulation_seed
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin

@@ -16,7 +16,7 @@ from coinflight.cli.options import (
     print_json,
 )
 from coinflight.cli.parsers import parse_numbers
-from coinflight.cli.values import simulation_seed
+from coinflight.queries.values import simulation_seed
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"

@@ -18,7 +18,7 @@ from coinflight.cli.options import (
     StartFace,
     number_option,
 )
-from coinflight.cli.values import DistArgs, TossArgs, resolve_coin
+from coinflight.queries.values import DistArgs, TossArgs, resolve_coin
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin

@@ -9,7 +9,7 @@ import typer
 
 from coinflight.cli.command import Group
 from coinflight.cli.options import SURFACE_PANEL, number_option
-from coinflight.cli.values import AirArgs, TableArgs
+from coinflight.queries.values import AirArgs, TableArgs
 
 SurfaceKind = Annotated[
     str,

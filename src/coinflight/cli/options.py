@@ -13,8 +13,8 @@ import typer
 
 from coinflight.cli.output import print_json
 from coinflight.cli.parsers import gravity, number, output_file
-from coinflight.cli.values import resolve_coin
 from coinflight.probability import registry
+from coinflight.queries.values import resolve_coin
 
 __all__ = ["number", "print_json", "resolve_coin"]  # also used from here (cli/surface.py)
 

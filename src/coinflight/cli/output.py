@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import sys
 from collections.abc import Iterable
 from pathlib import Path
@@ -13,18 +12,9 @@ import typer
 
 def print_json(payload: dict[str, Any]) -> None:
     """One JSON object on stdout (NumPy scalars and arrays become numbers and lists)."""
-    text = json.dumps(payload, default=_jsonable, allow_nan=False)  # whole, or an error
-    sys.stdout.write(text + "\n")
+    from coinflight.queries.encoding import json_text
 
-
-def _jsonable(obj: Any) -> Any:
-    import numpy as np
-
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    if isinstance(obj, np.generic):
-        return obj.item()
-    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+    sys.stdout.write(json_text(payload) + "\n")  # whole, or an error
 
 
 def echo_written(paths: Iterable[Path]) -> None:

@@ -45,7 +45,7 @@ def paper(
     Example: coinflight paper --out paper/
     """
     from coinflight.cli.progress import progress_bar
-    from coinflight.cli.values import resolve_coin
+    from coinflight.queries.values import resolve_coin
     from coinflight.report.reproduce import STEPS, paper_files, reproduce_paper
 
     the_coin = resolve_coin(coin, None, None, None)

@@ -18,7 +18,7 @@ from coinflight.cli.options import (
 )
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers
-from coinflight.cli.values import simulation_seed
+from coinflight.queries.values import simulation_seed
 
 PSI_POINTS = "45,50,55,60,70,80,90,100,110,120,130,135"
 Measured = Annotated[

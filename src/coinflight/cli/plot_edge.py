@@ -10,7 +10,7 @@ from coinflight.cli.edge import RATIOS, SIM_PANEL, _simulate
 from coinflight.cli.options import Dpi, OutFile, SimulateSeed, number
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers
-from coinflight.cli.values import simulation_seed
+from coinflight.queries.values import simulation_seed
 
 Simulate = Annotated[int | None, _simulate("plot their edge fraction")]
 Ratios = Annotated[

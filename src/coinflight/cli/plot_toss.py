@@ -11,7 +11,7 @@ from coinflight.cli.groups import CoinOptions, TossOptions
 from coinflight.cli.options import TOSS_PANEL, Dpi, OutFile
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers
-from coinflight.cli.values import build_toss
+from coinflight.queries.values import build_toss
 
 if TYPE_CHECKING:
     pass

@@ -8,7 +8,6 @@ import typer
 
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, TossesOptions
-from coinflight.cli.landing import surface_payload
 from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import (
     METHOD_PANEL,
@@ -24,6 +23,7 @@ from coinflight.cli.progress import progress_bar
 from coinflight.cli.surface import outcome_model
 from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
 from coinflight.probability import registry
+from coinflight.queries.landing import surface_payload
 
 if TYPE_CHECKING:
     from coinflight.cli.surface import LandingChoice

@@ -2,22 +2,34 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import typer
 
-from coinflight.cli.landing import (
+from coinflight.queries.landing import (
+    LandingChoice,
     build_drag,
     build_surface,
     check_bounces,
+    outcome_model,
+    table_outcome,
 )
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.surface import Drag, Surface
     from coinflight.model.toss import Toss
-    from coinflight.outcomes.base import OutcomeModel
+
+__all__ = [
+    "LandingChoice",
+    "build_drag",
+    "build_surface",
+    "check_bounces",
+    "outcome_model",
+    "report_landing",
+    "table_outcome",
+    "table_title",
+]
 
 
 def report_landing(
@@ -30,29 +42,13 @@ def report_landing(
 ) -> None:
     """``coinflight toss`` for a table landing or a flight through air: text or JSON."""
     from coinflight.cli.options import print_json
-    from coinflight.outcomes import outcome_model
+    from coinflight.queries.toss import landing_report
 
-    model = outcome_model(surface, drag, bounces)
-    payload, line = model.report(coin, toss)
-    wx, wy, wz = (float(w) for w in toss.omega)
-    payload.update(model.to_dict())
-    payload.update(
-        omega=[wx, wy, wz],
-        start=toss.start,
-        g=toss.g,
-        flight_time=float(toss.flight_time),
-        launch_speed=float(toss.launch_speed),
-        apex=float(toss.apex),
-        coin={
-            "name": coin.name,
-            "radius": coin.radius,
-            "thickness": coin.thickness,
-            "mass": coin.mass,
-        },
-    )
+    payload, line, model = landing_report(coin, toss, surface, drag, bounces)
     if json_output:
         print_json(payload)
         return
+    wx, wy, wz = (float(w) for w in toss.omega)
     typer.echo(f"{coin.describe()}, started {toss.start} up")
     typer.echo(
         f"spin ω0 = ({wx:g}, {wy:g}, {wz:g}) rad/s, launch speed "
@@ -60,58 +56,6 @@ def report_landing(
         f"{model.describe()}"
     )
     typer.echo(line)
-
-
-@dataclass(frozen=True)
-class LandingChoice:
-    """The landing the options ask for, and the outcome model that evaluates it."""
-
-    surface: Surface
-    drag: Drag | None
-    model: OutcomeModel
-
-    def describe(self) -> str:
-        """One line for the text output (the model's ``describe``)."""
-        return self.model.describe()
-
-
-def outcome_model(
-    kind: str,
-    drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
-    drag: float | None,
-    spin_damping: float | None,
-    bounces: int | None = None,
-) -> LandingChoice | None:
-    """None for the plain hand catch; else the surface, drag and outcome model to use."""
-    from coinflight import outcomes
-
-    the_surface = build_surface(kind, drop_height, restitution, friction)
-    the_drag = build_drag(drag, spin_damping)
-    check_bounces(the_surface, bounces)
-    if not the_surface.bounces and the_drag is None:
-        return None
-    return LandingChoice(
-        the_surface, the_drag, outcomes.outcome_model(the_surface, the_drag, bounces)
-    )
-
-
-def table_outcome(
-    kind: str,
-    drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
-    bounces: int | None,
-) -> dict[str, Any]:
-    """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
-    from coinflight.outcomes import outcome_model
-
-    the_surface = build_surface(kind, drop_height, restitution, friction)
-    check_bounces(the_surface, bounces)
-    if not the_surface.bounces:
-        return {}
-    return {"outcome": outcome_model(the_surface, None, bounces)}
 
 
 def table_title(

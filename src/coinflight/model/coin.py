@@ -78,6 +78,19 @@ class Coin:
         i1, i3 = principal_moments(self.radius, self.thickness, self.mass)
         return float(i1), float(i3)
 
+    def to_dict(self) -> dict[str, object]:
+        """JSON-ready: name, radius (m), thickness (m), mass (kg).
+
+        >>> Coin.preset("us-quarter").to_dict()["radius"]
+        0.01213
+        """
+        return {
+            "name": self.name,
+            "radius": self.radius,
+            "thickness": self.thickness,
+            "mass": self.mass,
+        }
+
     def describe(self) -> str:
         """One line: name and dimensions in the units people use for coins."""
         return (

@@ -1,11 +1,15 @@
-"""The landing surface and the air, from the options as typed: built, checked, described."""
+"""The landing surface and the air, from the options as typed: built, checked, described
+(the command line's and the web application's one reading of --surface, --drop-height,
+--restitution, --friction, --drag, --spin-damping and --bounces)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from coinflight.model.surface import Drag, Surface
+    from coinflight.outcomes.base import OutcomeModel
 
 
 def build_surface(
@@ -67,3 +71,55 @@ def describe_landing(surface: Surface, drag: Drag | None) -> str:
     from coinflight.outcomes import outcome_model
 
     return outcome_model(surface, drag).describe()
+
+
+@dataclass(frozen=True)
+class LandingChoice:
+    """The landing the options ask for, and the outcome model that evaluates it."""
+
+    surface: Surface
+    drag: Drag | None
+    model: OutcomeModel
+
+    def describe(self) -> str:
+        """One line for the text output (the model's ``describe``)."""
+        return self.model.describe()
+
+
+def outcome_model(
+    kind: str,
+    drop_height: float | None,
+    restitution: float | None,
+    friction: float | None,
+    drag: float | None,
+    spin_damping: float | None,
+    bounces: int | None = None,
+) -> LandingChoice | None:
+    """None for the plain hand catch; else the surface, drag and outcome model to use."""
+    from coinflight import outcomes
+
+    the_surface = build_surface(kind, drop_height, restitution, friction)
+    the_drag = build_drag(drag, spin_damping)
+    check_bounces(the_surface, bounces)
+    if not the_surface.bounces and the_drag is None:
+        return None
+    return LandingChoice(
+        the_surface, the_drag, outcomes.outcome_model(the_surface, the_drag, bounces)
+    )
+
+
+def table_outcome(
+    kind: str,
+    drop_height: float | None,
+    restitution: float | None,
+    friction: float | None,
+    bounces: int | None,
+) -> dict[str, Any]:
+    """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
+    from coinflight.outcomes import outcome_model
+
+    the_surface = build_surface(kind, drop_height, restitution, friction)
+    check_bounces(the_surface, bounces)
+    if not the_surface.bounces:
+        return {}
+    return {"outcome": outcome_model(the_surface, None, bounces)}

@@ -1,0 +1,54 @@
+"""``coinflight serve``: the classroom page and its JSON API on a local web server."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from coinflight.cli.exits import say
+from coinflight.cli.options import number
+
+Host = Annotated[
+    str,
+    typer.Option(
+        "--host",
+        metavar="ADDRESS",
+        help="Address to listen on. The default answers this machine only; 0.0.0.0 (any "
+        "address not a loopback) serves every machine that can reach it, with a warning.",
+    ),
+]
+Port = Annotated[
+    int,
+    typer.Option("--port", min=0, max=65535, help="TCP port (0: any free port, printed)."),
+]
+TimeLimit = Annotated[
+    float,
+    typer.Option(
+        "--time-limit",
+        parser=number,
+        metavar="S",
+        help="Seconds one request may compute before it is answered 503.",
+    ),
+]
+
+
+def serve(host: Host = "127.0.0.1", port: Port = 8000, time_limit: TimeLimit = 30.0) -> None:
+    """Serve the interactive page and its JSON API (/api/..., /docs) until Ctrl-C.
+
+    Example: coinflight serve, then open http://127.0.0.1:8000/
+    """
+    from coinflight.web.server import serve as run
+
+    if not time_limit > 0:
+        raise ValueError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
+    run(
+        host,
+        port,
+        time_limit=time_limit,
+        announce=lambda line: typer.echo(line),
+        warn=lambda line: say(f"coinflight: warning: {line}"),
+    )
+
+
+__all__ = ["serve"]

@@ -1,0 +1,146 @@
+"""One toss (``coinflight toss --json``, ``GET /api/toss``): the face it shows, and the flight
+sampled in time for a drawing."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from coinflight.queries.landing import build_drag, build_surface, check_bounces
+from coinflight.queries.values import AirArgs, TableArgs, TossArgs, build_toss
+
+if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
+    from coinflight.model.surface import Drag, Surface
+    from coinflight.model.toss import Flight, Toss
+    from coinflight.outcomes.base import OutcomeModel
+
+MAX_TRAJECTORY = 2000
+"""Most times a sampled flight (``trajectory=K``) holds: 2,000 frames are 33 s at 60 frames per
+second, more than a student watches of one toss."""
+
+
+@dataclass(frozen=True)
+class TossQuery:
+    """One toss as the options describe it, checked: coin, toss, surface, air, bounces."""
+
+    coin: Coin
+    toss: Toss
+    surface: Surface
+    drag: Drag | None
+    bounces: int | None
+
+    @property
+    def caught(self) -> bool:
+        """True for the plain hand catch (the closed form), False for a table or air."""
+        return not self.surface.bounces and self.drag is None
+
+
+def toss_query(
+    coin: Coin, args: TossArgs, table: TableArgs, air: AirArgs, bounces: int | None
+) -> TossQuery:
+    """The options of ``coinflight toss`` checked in the command line's order (surface, air,
+    bounces, then the toss)."""
+    surface = build_surface(*table)
+    drag = build_drag(*air)
+    check_bounces(surface, bounces)
+    return TossQuery(coin, build_toss(args), surface, drag, bounces)
+
+
+def toss_payload(query: TossQuery) -> dict[str, Any]:
+    """The JSON object of ``coinflight toss --json``: the catch in the hand by the closed form,
+    or the model's report of a table landing or a flight through air."""
+    if query.caught:
+        from coinflight.model.toss import Flight
+
+        return catch_payload(Flight(query.coin, query.toss))
+    payload, _, _ = landing_report(query.coin, query.toss, query.surface, query.drag, query.bounces)
+    return payload
+
+
+def catch_payload(flight: Flight) -> dict[str, Any]:
+    """The JSON object of one toss caught in the hand at launch height."""
+    out, catch, t = flight.outcome, flight.catch, flight.toss
+    return {
+        "outcome": out.face_name,
+        "same_side": bool(out.same_side),
+        "rotations": float(out.rotations),
+        "psi": float(out.psi),
+        "psi_deg": math.degrees(float(out.psi)),
+        "normal": catch.normal,
+        "angular_momentum": catch.angular_momentum,
+        "omega_at_catch": catch.omega,
+        "cos_theta": float(out.alignment),
+        "flight_time": float(t.flight_time),
+        "launch_speed": float(t.launch_speed),
+        "apex": float(t.apex),
+        "omega": [float(w) for w in t.omega],
+        "start": t.start,
+        "g": t.g,
+        "coin": flight.coin.to_dict(),
+    }
+
+
+def landing_report(
+    coin: Coin, toss: Toss, surface: Surface, drag: Drag | None, bounces: int | None
+) -> tuple[dict[str, Any], str, OutcomeModel]:
+    """A table landing or a flight through air: the JSON object, the model's one-line report
+    and the model (for its description)."""
+    from coinflight.outcomes import outcome_model
+
+    model = outcome_model(surface, drag, bounces)
+    payload, line = model.report(coin, toss)
+    payload.update(model.to_dict())
+    payload.update(
+        omega=[float(w) for w in toss.omega],
+        start=toss.start,
+        g=toss.g,
+        flight_time=float(toss.flight_time),
+        launch_speed=float(toss.launch_speed),
+        apex=float(toss.apex),
+        coin=coin.to_dict(),
+    )
+    return payload, line, model
+
+
+def trajectory(flight: Flight, k: int) -> dict[str, Any]:
+    """The flight sampled at ``k`` equally spaced times from launch to catch, for a drawing,
+    by the closed form (:meth:`coinflight.model.toss.Flight.at`, the one
+    :func:`coinflight.plotting.animation.animate_toss` draws).
+
+    Returns ``t`` (s), ``normal`` (the heads normal n, lab frame, k × 3), ``quaternion`` (the
+    body → lab attitude as [x, y, z, w], scalar last, k × 4: the coin's body z axis is its heads
+    normal), ``height`` (m above launch) and, constant over the flight, ``axis`` (the unit
+    angular momentum S/|S|, lab frame) and ``cone_half_angle_deg`` (ψ, the angle of n about
+    S). The lab frame has z up; the coin starts with its heads normal along +z (heads up) or
+    −z (tails up).
+    """
+    if isinstance(k, bool) or not isinstance(k, int) or not 2 <= k <= MAX_TRAJECTORY:
+        raise ValueError(f"trajectory must be a whole number from 2 to {MAX_TRAJECTORY}, got {k!r}")
+    import numpy as np
+
+    times = np.linspace(0.0, float(flight.toss.flight_time), k)
+    states = flight.at(times)
+    s = np.asarray(states.angular_momentum[0], dtype=np.float64)
+    size = float(np.linalg.norm(s))
+    axis = (s / size).tolist() if size > 0.0 else [0.0, 0.0, 1.0]
+    return {
+        "t": times,
+        "normal": states.normal,
+        "quaternion": states.attitude.as_quat(),
+        "height": states.height,
+        "axis": axis,
+        "cone_half_angle_deg": math.degrees(float(flight.outcome.psi)),
+    }
+
+
+__all__ = [
+    "MAX_TRAJECTORY",
+    "TossQuery",
+    "catch_payload",
+    "landing_report",
+    "toss_payload",
+    "toss_query",
+    "trajectory",
+]
