@@ -93,8 +93,18 @@ export class Basin {
     }
   }
 
-  axes(fit) {
-    return new Axes(fit, this.map.Tr, this.map.Wr);
+  /** The map's axes on the canvas as it is now laid out. */
+  axes() {
+    const canvas = this.el("basin-canvas");
+    const rect = canvas.getBoundingClientRect();
+    const fontPx = parseFloat(getComputedStyle(canvas).fontSize) || 14;
+    return new Axes({ w: rect.width, h: rect.height, fontPx }, this.map.Tr, this.map.Wr);
+  }
+
+  /** Where the point (T, ω) lies on the canvas, CSS pixels from its top left corner. */
+  pixelOf(T, w) {
+    const ax = this.axes();
+    return [ax.x(T), ax.y(w)];
   }
 
   draw() {
@@ -102,7 +112,7 @@ export class Basin {
     const fit = fitCanvas(canvas);
     if (!this.map) return;
     const { T, W, face } = this.map;
-    const ax = this.axes(fit);
+    const ax = new Axes(fit, this.map.Tr, this.map.Wr);
     // One image pixel per cell, scaled into the plotting box without smoothing.
     const image = new ImageData(T.length, W.length);
     const h = rgb(COLORS.heads);
@@ -152,10 +162,8 @@ export class Basin {
   /** A click on the map: toss that (T, ω) in the explorer. */
   click(event) {
     if (!this.map) return;
-    const canvas = this.el("basin-canvas");
-    const rect = canvas.getBoundingClientRect();
-    const fit = { w: rect.width, h: rect.height, fontPx: parseFloat(getComputedStyle(canvas).fontSize) || 14 };
-    const point = this.axes(fit).invert(event.clientX - rect.left, event.clientY - rect.top);
+    const rect = this.el("basin-canvas").getBoundingClientRect();
+    const point = this.axes().invert(event.clientX - rect.left, event.clientY - rect.top);
     if (!point) return;
     // Round to the map's resolution: a click cannot be finer than a cell.
     const T = Number(point[0].toFixed(4));

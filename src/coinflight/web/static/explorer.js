@@ -24,17 +24,15 @@ function sampleCount(rotations, maxSamples) {
   return Math.max(101, Math.min(maxSamples, want));
 }
 
-/** The trajectory of the answer: times, unit normals n(t), heights, unit S (see web/api). */
+/**
+ * The flight of the answer (`trajectory=K` of /api/toss, coinflight.queries.toss.trajectory):
+ * times t, the heads normal n(t), the attitude quaternions [x, y, z, w] (body → lab, the body z
+ * axis is n), heights, and the unit angular momentum S ("axis"), all in the lab frame, z up.
+ */
 function readTrajectory(r) {
   const tr = r.trajectory;
   if (!tr) throw new Error("the server sent no trajectory");
-  const time = tr.time ?? tr.t ?? tr.times;
-  const normal = tr.normal ?? tr.normals ?? tr.n;
-  const height = tr.height ?? tr.heights ?? tr.z;
-  let s = tr.angular_momentum_direction ?? tr.angular_momentum ?? tr.S ?? r.angular_momentum;
-  const sn = Math.hypot(...s);
-  s = s.map((v) => v / sn);
-  return { time, normal, height, S: s };
+  return { time: tr.t, normal: tr.normal, quaternion: tr.quaternion, height: tr.height, S: tr.axis };
 }
 
 function makeArrow(color, length, radius) {
@@ -50,7 +48,31 @@ function makeArrow(color, length, radius) {
 }
 
 const Y = new THREE.Vector3(0, 1, 0);
-const Z = new THREE.Vector3(0, 0, 1);
+
+/** A face of the coin: its colour and its letter, so the face reads without colour too, and
+ * the letter turning shows the spin about the normal. */
+function faceTexture(color, letter) {
+  const size = 256;
+  const canvas = document.createElement("canvas");
+  canvas.width = size;
+  canvas.height = size;
+  const ctx = canvas.getContext("2d");
+  ctx.fillStyle = color;
+  ctx.fillRect(0, 0, size, size);
+  ctx.strokeStyle = "rgba(255, 255, 255, 0.7)";
+  ctx.lineWidth = 8;
+  ctx.beginPath();
+  ctx.arc(size / 2, size / 2, size * 0.42, 0, 2 * Math.PI);
+  ctx.stroke();
+  ctx.fillStyle = "#ffffff";
+  ctx.font = `bold ${Math.round(size * 0.5)}px sans-serif`;
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.fillText(letter, size / 2, size / 2 + size * 0.02);
+  const texture = new THREE.CanvasTexture(canvas);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  return texture;
+}
 
 export class Explorer {
   constructor(root, settings) {
@@ -61,7 +83,7 @@ export class Explorer {
     this.traj = null;
     this.t = 0;
     this.playing = false;
-    this.maxSamples = 4001;
+    this.maxSamples = 2000; // MAX_TRAJECTORY of coinflight.queries.toss
     this.sceneOK = this.buildScene();
     this.bindControls();
     this.request = latest((signal) => this.fetchToss(signal));
@@ -86,7 +108,7 @@ export class Explorer {
     this.scene = scene;
     const camera = new THREE.PerspectiveCamera(32, 1, 0.1, 100);
     camera.up.set(0, 0, 1);
-    camera.position.set(6.2, -8.4, 3.4);
+    camera.position.set(4.6, -8.2, 6.2); // from above: a coin tilted up shows its top face
     camera.lookAt(0, 0, 0);
     this.camera = camera;
     this.controls = new OrbitControls(camera, canvas);
@@ -106,12 +128,13 @@ export class Explorer {
     grid.position.z = -1.6;
     scene.add(grid);
 
-    // The coin: a cylinder of radius 1 and the coin's thickness ratio; +z face heads (blue).
+    // The coin: a cylinder of radius 1 (thickness to scale); its +z face heads (blue, H), as the
+    // body frame of the quaternions.
     this.coin = new THREE.Group();
     this.coinMesh = new THREE.Mesh(new THREE.CylinderGeometry(1, 1, 0.144, 96).rotateX(Math.PI / 2), [
       new THREE.MeshLambertMaterial({ color: "#9a9a9a" }),
-      new THREE.MeshLambertMaterial({ color: COLORS.heads }),
-      new THREE.MeshLambertMaterial({ color: COLORS.tails }),
+      new THREE.MeshLambertMaterial({ map: faceTexture(COLORS.heads, "H") }),
+      new THREE.MeshLambertMaterial({ map: faceTexture(COLORS.tails, "T") }),
     ]);
     this.coin.add(this.coinMesh);
     scene.add(this.coin);
@@ -222,6 +245,17 @@ export class Explorer {
     return n.map((a) => a / len);
   }
 
+  /** The attitude at time t: the sample, or the spherical blend of the two around t. */
+  attitudeAt(t, out) {
+    const { time, quaternion } = this.traj;
+    const last = time.length - 1;
+    const k = Math.min(last - 1, Math.max(0, Math.floor((t / time[last]) * last)));
+    const w = Math.min(1, Math.max(0, (t - time[k]) / (time[k + 1] - time[k])));
+    const a = new THREE.Quaternion(...quaternion[k]);
+    const b = new THREE.Quaternion(...quaternion[k + 1]);
+    return out.slerpQuaternions(a, b, w);
+  }
+
   heightAt(t) {
     const { time, height } = this.traj;
     const last = time.length - 1;
@@ -246,7 +280,7 @@ export class Explorer {
     const up = n[2] > 0 ? "heads" : n[2] < 0 ? "tails" : "edge";
     const nv = new THREE.Vector3(...n);
     if (this.renderer) {
-      this.coin.quaternion.setFromUnitVectors(Z, nv);
+      this.attitudeAt(this.t, this.coin.quaternion);
       this.nArrow.quaternion.setFromUnitVectors(Y, nv);
       const { time } = this.traj;
       const k = Math.round((this.t / T) * (time.length - 1));
@@ -413,6 +447,7 @@ export class Explorer {
     this.el("toss-psi").textContent = `${r.psi_deg.toFixed(1)}°`;
     this.el("toss-text").textContent = tossLines(r).join("\n");
     if (this.renderer) {
+      this.coinMesh.scale.z = r.coin.thickness / r.coin.radius / 0.144;
       this.setCone(this.traj.S, r.psi);
       this.setTrail(this.traj.normal);
     }
