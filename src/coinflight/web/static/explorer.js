@@ -35,6 +35,28 @@ function readTrajectory(r) {
   return { time: tr.t, normal: tr.normal, quaternion: tr.quaternion, height: tr.height, S: tr.axis };
 }
 
+/** A text label that always faces the camera (the arrows' n and S). */
+function makeLabel(text, color) {
+  const canvas = document.createElement("canvas");
+  canvas.width = 128;
+  canvas.height = 128;
+  const ctx = canvas.getContext("2d");
+  ctx.font = "italic bold 96px serif";
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineWidth = 10;
+  ctx.strokeStyle = "rgba(255, 255, 255, 0.9)";
+  ctx.strokeText(text, 64, 64);
+  ctx.fillStyle = color;
+  ctx.fillText(text, 64, 64);
+  const map = new THREE.CanvasTexture(canvas);
+  map.colorSpace = THREE.SRGBColorSpace;
+  const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map, depthTest: false }));
+  sprite.scale.set(0.55, 0.55, 1);
+  sprite.renderOrder = 10;
+  return sprite;
+}
+
 function makeArrow(color, length, radius) {
   const group = new THREE.Group();
   const material = new THREE.MeshLambertMaterial({ color });
@@ -108,7 +130,7 @@ export class Explorer {
     this.scene = scene;
     const camera = new THREE.PerspectiveCamera(32, 1, 0.1, 100);
     camera.up.set(0, 0, 1);
-    camera.position.set(4.6, -8.2, 6.2); // from above: a coin tilted up shows its top face
+    camera.position.set(4.0, -7.2, 5.4); // from above: a coin tilted up shows its top face
     camera.lookAt(0, 0, 0);
     this.camera = camera;
     this.controls = new OrbitControls(camera, canvas);
@@ -141,7 +163,9 @@ export class Explorer {
 
     this.nArrow = makeArrow(COLORS.normal, N_LENGTH, 0.035);
     this.sArrow = makeArrow(COLORS.momentum, S_LENGTH, 0.045);
-    scene.add(this.nArrow, this.sArrow);
+    this.nLabel = makeLabel("n", COLORS.normal);
+    this.sLabel = makeLabel("S", COLORS.momentum);
+    scene.add(this.nArrow, this.sArrow, this.nLabel, this.sLabel);
 
     this.cone = new THREE.Mesh(
       new THREE.BufferGeometry(),
@@ -215,6 +239,7 @@ export class Explorer {
     this.rim.geometry.dispose();
     this.rim.geometry = rim;
     this.sArrow.quaternion.setFromUnitVectors(Y, s);
+    this.sLabel.position.copy(s).multiplyScalar(S_LENGTH + 0.3);
   }
 
   setTrail(normals) {
@@ -282,6 +307,7 @@ export class Explorer {
     if (this.renderer) {
       this.attitudeAt(this.t, this.coin.quaternion);
       this.nArrow.quaternion.setFromUnitVectors(Y, nv);
+      this.nLabel.position.copy(nv).multiplyScalar(N_LENGTH + 0.3);
       const { time } = this.traj;
       const k = Math.round((this.t / T) * (time.length - 1));
       this.trail.geometry.setDrawRange(0, k + 1);
