@@ -31,10 +31,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-
-from coinflight.cli import app
 from tests._cli import runner
 from tests._images import assert_nontrivial, colour_fraction, load_rgb
+
+from coinflight.cli import app
 
 CHROMIUM = Path(os.environ.get("COINFLIGHT_CHROMIUM", "/usr/bin/chromium"))
 CHROMIUM_ARGS = [
@@ -154,13 +154,17 @@ class Problems:
         self.messages: list[str] = []
         page.on(
             "console",
-            lambda m: self.messages.append(f"console {m.type}: {m.text}") if m.type == "error" else None,
+            lambda m: (
+                self.messages.append(f"console {m.type}: {m.text}") if m.type == "error" else None
+            ),
         )
         page.on("pageerror", lambda e: self.messages.append(f"uncaught: {e}"))
         page.on("requestfailed", lambda r: self.messages.append(f"request failed: {r.url}"))
         page.on(
             "response",
-            lambda r: self.messages.append(f"HTTP {r.status}: {r.url}") if r.status >= 400 else None,
+            lambda r: (
+                self.messages.append(f"HTTP {r.status}: {r.url}") if r.status >= 400 else None
+            ),
         )
 
 
@@ -194,7 +198,8 @@ def test_page_loads_with_every_panel_and_no_console_errors(page: Any) -> None:
     assert page.problems.messages == []
     # Offline: every script, style and picture came from this server.
     origins = page.evaluate(
-        "() => [...new Set(performance.getEntriesByType('resource').map(e => new URL(e.name).origin))]"
+        "() => [...new Set(performance.getEntriesByType('resource')"
+        ".map(e => new URL(e.name).origin))]"
     )
     assert origins == [page.evaluate("location.origin")]
     # WebGL drew the coin (the fallback message is for browsers without it).
@@ -218,7 +223,9 @@ def test_toss_face_and_rotations_are_the_command_lines(page: Any, server: str) -
 
 
 @pytest.mark.parametrize("control", ["number", "slider"])
-def test_changing_the_spin_shows_the_face_the_api_gives(page: Any, server: str, control: str) -> None:
+def test_changing_the_spin_shows_the_face_the_api_gives(
+    page: Any, server: str, control: str
+) -> None:
     before = page.locator("#toss-result").get_attribute("data-outcome")
     assert before == "heads"
     # A spin that lands the other face (the API decides; T stays 0.7 s).
@@ -266,9 +273,7 @@ def test_an_api_refusal_is_shown_in_the_page(page: Any, server: str) -> None:
 def test_a_click_on_the_basin_map_tosses_that_point(page: Any, server: str) -> None:
     ready(page, "basin")
     target_t, target_w = 0.65, 42.0
-    x, y = page.evaluate(
-        "([t, w]) => window.coinflight.basin.pixelOf(t, w)", [target_t, target_w]
-    )
+    x, y = page.evaluate("([t, w]) => window.coinflight.basin.pixelOf(t, w)", [target_t, target_w])
     page.locator("#basin-canvas").click(position={"x": x, "y": y})
     picked = json.loads(page.wait_for_selector("#basin[data-picked]").get_attribute("data-picked"))
     # The point clicked is the one aimed at, to within a pixel of the map.

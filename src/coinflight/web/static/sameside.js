@@ -5,7 +5,17 @@ import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { fmtG, thousands } from "./format.js";
 
-const CURVE_STEP = 5; // degrees between the curve's points (37 closed-form answers)
+/** The curve's ψ, degrees: every 5°, closer near 45° and 135° where p(ψ) leaves 1 steeply. */
+function curvePsis() {
+  const near = [0.1, 0.3, 0.6, 1, 1.5, 2.2, 3.2];
+  const psis = new Set();
+  for (let d = 0; d <= 180; d += 5) psis.add(d);
+  for (const e of near) {
+    psis.add(45 + e);
+    psis.add(135 - e);
+  }
+  return [...psis].sort((a, b) => a - b);
+}
 
 export class SameSide {
   constructor(root) {
@@ -43,8 +53,7 @@ export class SameSide {
   async load() {
     this.root.dataset.state = "loading";
     try {
-      const psis = [];
-      for (let d = 0; d <= 180; d += CURVE_STEP) psis.push(d);
+      const psis = curvePsis();
       const [curve, data] = await Promise.all([
         Promise.all(psis.map((psi) => getJSON("api/bias", { psi }))),
         getJSON("api/data"),
