@@ -26,6 +26,15 @@ for (const id of ["coin", "start"]) {
   });
 }
 
+// The map is drawn for the explorer's ωy and ωz: redraw it when they settle.
+let redraw = null;
+for (const id of ["wy", "wz", "wy-range", "wz-range"]) {
+  $(id).addEventListener("input", () => {
+    clearTimeout(redraw);
+    redraw = setTimeout(() => basin.update(), 400);
+  });
+}
+
 // The tests and curious students can reach the panels from the console.
 window.coinflight = { explorer, basin, probability, sameSide };
 

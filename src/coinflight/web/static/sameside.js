@@ -17,6 +17,17 @@ function curvePsis() {
   return [...psis].sort((a, b) => a - b);
 }
 
+const VIEWS = {
+  all: { x: [0, 180], y: [0.5, 1.0], ticks: [0, 30, 60, 90, 120, 150, 180] },
+  near: { x: [60, 100], y: [0.49, 0.62], ticks: [60, 70, 80, 90, 100], psis: range(60, 100, 1) },
+};
+
+function range(lo, hi, step) {
+  const out = [];
+  for (let v = lo; v <= hi; v += step) out.push(v);
+  return out;
+}
+
 export class SameSide {
   constructor(root) {
     this.root = root;
@@ -42,6 +53,10 @@ export class SameSide {
       range.value = psi;
       this.changed();
     });
+    for (const radio of root.querySelectorAll("input[name=psi-view]")) {
+      radio.addEventListener("change", () => this.setView(radio.value));
+    }
+    this.view = "all";
     new ResizeObserver(() => this.draw()).observe(this.el("psi-canvas"));
   }
 
@@ -58,7 +73,7 @@ export class SameSide {
         Promise.all(psis.map((psi) => getJSON("api/bias", { psi }))),
         getJSON("api/data"),
       ]);
-      this.curve = curve.map((r) => [r.psi_deg, r.p_same_side]);
+      this.curve = new Map(curve.map((r) => [r.psi_deg, r.p_same_side]));
       this.data = data;
       this.el("data-text").textContent =
         `${thousands(data.flips)} flips by ${data.people} people (Bartoš et al.): ` +
@@ -76,6 +91,21 @@ export class SameSide {
       showError(this.el("psi-error"), err);
       this.root.dataset.state = "error";
     }
+  }
+
+  /** The whole range of ψ, or close to 90° (the curve sampled every degree there, once). */
+  async setView(view) {
+    this.view = view;
+    const missing = (VIEWS[view].psis || []).filter((psi) => !this.curve.has(psi));
+    try {
+      const answers = await Promise.all(missing.map((psi) => getJSON("api/bias", { psi })));
+      for (const r of answers) this.curve.set(r.psi_deg, r.p_same_side);
+      showError(this.el("psi-error"), null);
+    } catch (err) {
+      if (!(err instanceof ApiError)) console.warn(err);
+      showError(this.el("psi-error"), err);
+    }
+    this.draw();
   }
 
   async update() {
@@ -110,7 +140,8 @@ export class SameSide {
   draw() {
     const fit = fitCanvas(this.el("psi-canvas"));
     if (!this.curve) return;
-    const ax = new Axes(fit, [0, 180], [0.5, 1.0]);
+    const view = VIEWS[this.view];
+    const ax = new Axes(fit, view.x, view.y);
     const { ctx } = fit;
     ctx.save();
     ax.clip();
@@ -134,7 +165,8 @@ export class SameSide {
     ctx.strokeStyle = COLORS.heads;
     ctx.lineWidth = 2.5;
     ctx.beginPath();
-    this.curve.forEach(([psi, p], k) => (k ? ctx.lineTo(ax.x(psi), ax.y(p)) : ctx.moveTo(ax.x(psi), ax.y(p))));
+    const points = [...this.curve].sort((a, b) => a[0] - b[0]);
+    points.forEach(([psi, p], k) => (k ? ctx.lineTo(ax.x(psi), ax.y(p)) : ctx.moveTo(ax.x(psi), ax.y(p))));
     ctx.stroke();
     if (this.current) {
       const x = ax.x(this.current.psi_deg);
@@ -149,7 +181,7 @@ export class SameSide {
     }
     ctx.restore();
     ax.draw("ψ, degrees (angle between the normal n and the angular momentum S)", "P(same side)", {
-      xticks: [0, 30, 60, 90, 120, 150, 180],
+      xticks: view.ticks,
     });
   }
 }
