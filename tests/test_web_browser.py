@@ -378,7 +378,8 @@ def test_panel_screenshots_are_not_blank(page: Any, shots: Path, panel: str) -> 
 def test_the_page_fits_a_phone_and_a_projector(
     browser_context: Any, shots: Path, name: str, width: int, height: int
 ) -> None:
-    page = browser_context.new_page(viewport={"width": width, "height": height})
+    page = browser_context.new_page()
+    page.set_viewport_size({"width": width, "height": height})
     page.set_default_timeout(WAIT_MS)
     problems = Problems(page)
     try:
