@@ -470,6 +470,9 @@ export class Explorer {
     face.textContent = r.outcome.toUpperCase();
     face.dataset.face = r.outcome;
     this.el("toss-rotations").textContent = r.rotations.toFixed(4);
+    // As `coinflight toss` says it: rotations about a diameter, or turns of n about S.
+    const flip = Math.abs(r.psi_deg - 90) < 1e-9;
+    this.el("toss-turns").textContent = flip ? "rotations" : "turns of n about S";
     this.el("toss-psi").textContent = `${r.psi_deg.toFixed(1)}°`;
     this.el("toss-text").textContent = tossLines(r).join("\n");
     if (this.renderer) {
