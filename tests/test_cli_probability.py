@@ -281,8 +281,8 @@ def test_progress_bar_only_on_a_terminal(monkeypatch):
 
 
 def test_unsettled_tosses_are_a_warning():
-    from coinflight.cli.probability import _warnings
     from coinflight.probability import ProbabilityResult
+    from coinflight.queries.probability import result_warnings as _warnings
 
     counts = (40, 60, 0)
     details = {"unsettled": 25, "unsettled_fraction": 0.25}

@@ -193,7 +193,7 @@ def _raise(exc):
 def test_interrupt_and_broken_pipe_inside_a_command(monkeypatch, exc, code, stderr):
     import coinflight.cli.toss as toss_cli
 
-    monkeypatch.setattr(toss_cli, "build_toss", _raise(exc))
+    monkeypatch.setattr(toss_cli, "toss_query", _raise(exc))
     result = CliRunner().invoke(app, ["toss", "--flight-time", "0.7"])
     assert (result.exit_code, result.stderr) == (code, stderr)
 
@@ -202,7 +202,7 @@ def test_other_os_errors_are_not_taken_for_stdout(monkeypatch):
     """Only standard output's failures are 'cannot write to standard output'."""
     import coinflight.cli.toss as toss_cli
 
-    monkeypatch.setattr(toss_cli, "build_toss", _raise(OSError(28, "No space left on device")))
+    monkeypatch.setattr(toss_cli, "toss_query", _raise(OSError(28, "No space left on device")))
     result = CliRunner().invoke(app, ["toss", "--flight-time", "0.7"])
     assert isinstance(result.exception, OSError)
     assert "standard output" not in result.stderr

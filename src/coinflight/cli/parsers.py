@@ -10,6 +10,10 @@ from pathlib import Path
 
 import typer
 
+from coinflight.queries.values import parse_range, parse_resolution
+
+__all__ = ["parse_range", "parse_resolution"]  # the one reading of ranges and resolutions
+
 
 def number(text: str) -> float:
     """Parse a command-line number, or a usage error that names the text."""
@@ -83,35 +87,3 @@ def parse_sizes(text: str, option: str) -> list[int]:
     if not values:
         raise ValueError(f"{option} {text!r}: give at least one size")
     return values
-
-
-def parse_range(text: str, name: str, unit: str = "") -> tuple[float, float]:
-    """ "LO:HI" as two numbers (the range syntax of :func:`parse_distribution`).
-
-    A map needs a box, so a fixed value or a normal distribution is refused with a ValueError
-    naming the option and the text.
-    """
-    from coinflight.model.distributions import Uniform, parse_distribution
-
-    dist = parse_distribution(text, name, unit)
-    if not isinstance(dist, Uniform):
-        raise ValueError(
-            f"{name} must be a range LO:HI such as 60:90 for a map; got {text!r} "
-            f"({dist.describe(unit)})"
-        )
-    return dist.low, dist.high
-
-
-def parse_resolution(text: str) -> tuple[int, int]:
-    """ "N" (N×N cells) or "NTxNW" (cells along T, along the spin)."""
-    parts = text.lower().split("x")
-    try:
-        if len(parts) not in (1, 2):
-            raise ValueError
-        sizes = [int(p) for p in parts]
-    except ValueError:
-        raise ValueError(
-            f"--resolution must be N or NTxNW with whole numbers, such as 500 or 600x400; "
-            f"got {text!r}"
-        ) from None
-    return (sizes[0], sizes[-1])

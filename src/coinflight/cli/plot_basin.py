@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Annotated
 
 import typer
@@ -22,12 +21,12 @@ from coinflight.cli.options import (
     option,
 )
 from coinflight.cli.output import echo_written
-from coinflight.cli.parsers import parse_range, parse_resolution
-from coinflight.cli.surface import table_outcome, table_title
+from coinflight.cli.surface import table_title
 
 
 def _range(flag: str, help: str, *aliases: str) -> object:
-    """A LO:HI range of the map's toss (parsed by :func:`~coinflight.cli.parsers.parse_range`)."""
+    """A LO:HI range of the map's toss (read by
+    :func:`~coinflight.queries.values.parse_range`)."""
     return option(flag, *aliases, metavar="LO:HI", panel=TOSS_PANEL, help=help)
 
 
@@ -122,21 +121,23 @@ def plot_basin(
     """
     from coinflight.plotting.basin import plot_basin as draw
     from coinflight.plotting.style import figure_paths, save_figure
-    from coinflight.studies.basin import basin_map
+    from coinflight.queries.basin import basin_query
 
     figure_paths(out, "--out")  # before the map is computed, not after
-    spin, psi_rad = _spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
-    basin = basin_map(
+    basin = basin_query(
         coin,
-        _time_range(flight_time, launch_speed, g),
-        spin,
+        flight_time=flight_time,
+        launch_speed=launch_speed,
+        omega_x=omega_x,
         omega_y=omega_y,
         omega_z=omega_z,
-        psi=psi_rad,
-        resolution=parse_resolution(resolution),
+        psi=psi,
+        precession_rate=precession_rate,
+        resolution=resolution,
         start=start,
         g=g,
-        **table_outcome(*table, bounces),
+        table=table,
+        bounces=bounces,
     )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
@@ -147,43 +148,6 @@ def plot_basin(
     else:
         figure = draw(basin, boundaries=boundaries)
     echo_written(save_figure(figure, out, dpi=dpi))
-
-
-def _spin_box(
-    omega_x: str | None,
-    omega_y: float,
-    omega_z: float,
-    psi: float | None,
-    precession_rate: str | None,
-) -> tuple[tuple[float, float], float | None]:
-    """The map's spin axis (--omega-x, or --precession-rate at a fixed --psi), and ψ in
-    radians (None without --psi)."""
-    if psi is None:
-        if precession_rate is not None:
-            raise ValueError("--precession-rate goes with --psi; use --omega-x without --psi")
-        return parse_range(omega_x or "60:90", "--omega-x", "rad/s"), None
-    if omega_x is not None or omega_y != 0.0 or omega_z != 0.0:
-        raise ValueError(
-            "with --psi the spin is set by --precession-rate; drop --omega-x/--omega-y/--omega-z"
-        )
-    if not 0.0 < psi < 180.0:
-        raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
-    spin = parse_range(precession_rate or "60:90", "--precession-rate", "rad/s")
-    return spin, math.radians(psi)
-
-
-def _time_range(flight_time: str | None, launch_speed: str | None, g: float) -> tuple[float, float]:
-    """The map's flight-time axis, s: --flight-time, or --launch-speed turned into T."""
-    from coinflight.core.ballistics import flight_time as time_of_flight
-
-    if flight_time is not None and launch_speed is not None:
-        raise ValueError("give --flight-time or --launch-speed, not both")
-    if launch_speed is None:
-        return parse_range(flight_time or "0.6:0.9", "--flight-time", "s")
-    v_lo, v_hi = parse_range(launch_speed, "--launch-speed", "m/s")
-    if v_lo <= 0:
-        raise ValueError(f"--launch-speed range must be positive, got {launch_speed!r} m/s")
-    return float(time_of_flight(v_lo, g)), float(time_of_flight(v_hi, g))
 
 
 __all__ = ["plot_basin"]

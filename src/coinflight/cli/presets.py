@@ -9,22 +9,7 @@ at its default never overrides the preset.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import typer
-
-if TYPE_CHECKING:
-    from coinflight.model.coin import Coin
-    from coinflight.model.ensemble import TossDistribution
-
-# Command-line parameter name → (option flag, unit) of the toss options a preset supplies.
-TOSS_OPTIONS = {
-    "omega_x": ("--omega-x", "rad/s"),
-    "omega_y": ("--omega-y", "rad/s"),
-    "omega_z": ("--omega-z", "rad/s"),
-    "flight_time": ("--flight-time", "s"),
-    "launch_speed": ("--launch-speed", "m/s"),
-}
 
 
 def given_on_command_line(ctx: typer.Context, name: str) -> bool:
@@ -35,18 +20,13 @@ def given_on_command_line(ctx: typer.Context, name: str) -> bool:
     return source is not None and source.name == "COMMANDLINE"
 
 
-def preset_distribution(
-    ctx: typer.Context, name: str, coin: Coin, start: str, g: float
-) -> TossDistribution:
-    """The preset ``name`` with the toss options the user typed laid over it."""
-    from coinflight.model.distributions import parse_distribution
-    from coinflight.studies.presets import preset
+def given_toss_options(ctx: typer.Context) -> dict[str, str]:
+    """The toss options the user typed, parameter name → text: what replaces a preset's value
+    (:func:`coinflight.queries.probability.preset_tosses`)."""
+    from coinflight.queries.probability import PRESET_OPTIONS
 
-    overrides = {
-        param: parse_distribution(str(ctx.params[param]), flag, unit)
-        for param, (flag, unit) in TOSS_OPTIONS.items()
+    return {
+        param: str(ctx.params[param])
+        for param in PRESET_OPTIONS
         if param in ctx.params and given_on_command_line(ctx, param)
     }
-    if "flight_time" in overrides and "launch_speed" in overrides:
-        raise ValueError("give at most one of --flight-time and --launch-speed")
-    return preset(name, coin=coin, start=start, g=g, **overrides)  # type: ignore[arg-type]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
@@ -18,17 +18,15 @@ from coinflight.cli.options import (
     TossPreset,
     print_json,
 )
-from coinflight.cli.presets import preset_distribution
+from coinflight.cli.presets import given_toss_options
 from coinflight.cli.progress import progress_bar
-from coinflight.cli.surface import outcome_model
-from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
 from coinflight.probability import registry
-from coinflight.queries.landing import surface_payload
+from coinflight.queries.probability import result_warnings
 
 if TYPE_CHECKING:
-    from coinflight.cli.surface import LandingChoice
     from coinflight.model.ensemble import TossDistribution
     from coinflight.probability import ProbabilityResult
+    from coinflight.queries.landing import LandingChoice
 
 Method = Annotated[
     str,
@@ -64,12 +62,6 @@ GridCells = Annotated[
 ]
 
 
-def work_total(method: str, n: int | None, k: int) -> int:
-    """Units of work the library reports through ``progress`` for this request."""
-    estimator = registry.get(method)
-    return estimator.work_units(k, estimator.size_for(k, n) or 1)
-
-
 @command
 def probability(
     ctx: typer.Context,
@@ -92,44 +84,28 @@ def probability(
     Example (the paper's Fig 2a): coinflight probability --omega-x 60:90 --flight-time 0.6:0.9
     --method grid --n 5000
     """
-    from coinflight.probability import estimate
+    from coinflight.queries import probability as q
 
-    estimator = registry.get(method)
-    if preset is not None:
-        dist = preset_distribution(ctx, preset, coin, tosses.start, tosses.g)
-    else:
-        dist = tosses.build(coin)
-    options: dict[str, Any] = {}
-    if grid_cells is not None:
-        if "grid_cells" not in estimator.options:
-            takers = [e.name for e in registry.estimators() if "grid_cells" in e.options]
-            raise ValueError(f"--grid-cells applies to --method {' and '.join(takers)} only")
-        options["grid_cells"] = grid_cells
-    if seed is not None and not estimator.seeded:
-        seeded = " and ".join(registry.names(seeded=True))
-        raise ValueError(f"--seed applies to {seeded}, not {method}")
-    if threads is not None and not estimator.parallel:
-        raise ValueError(f"--threads does not apply to the {method} method")
-    landing = outcome_model(*table, *air)
-    if landing is not None and landing.drag is not None and estimator.default_n and n is None:
-        raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
-    if landing is not None:
-        options["model"] = landing.model
-    total = work_total(method, n, len(dist.ranged))
-    with progress_bar(total, f"{method}", quiet) as bar:
-        if estimator.parallel:
-            options.update(threads=threads, progress=bar)
-        result = estimate(dist, method, n=n, seed=seed, **options)
+    query = q.probability_query(
+        tosses,
+        coin,
+        table,
+        air,
+        method=method,
+        n=n,
+        seed=seed,
+        grid_cells=grid_cells,
+        threads=threads,
+        preset=preset,
+        overrides=given_toss_options(ctx) if preset is not None else None,
+        inputs={name: ctx.params.get(name) for name in q.INPUT_NAMES},
+    )
+    with progress_bar(query.work_units(), f"{method}", quiet) as bar:
+        result = q.run(query, bar)
     if json_output:
-        payload = result.to_dict()
-        payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}
-        payload.update(coin=coin.name, start=tosses.start, g=dist.g, inputs=_inputs(ctx))
-        if landing is not None:
-            payload.update(surface_payload(landing.surface, landing.drag))
-        payload["warnings"] = _warnings(result)
-        print_json(payload)
+        print_json(q.probability_payload(query, result))
         return
-    _report(result, dist, tosses.launch_speed, landing)
+    _report(result, query.dist, tosses.launch_speed, query.landing)
 
 
 def _report(
@@ -148,40 +124,9 @@ def _report(
     if landing is not None and landing.surface.bounces:
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
-    for warning in _warnings(result):
+    for warning in result_warnings(result):
         typer.echo(f"warning: {warning}")
     typer.echo(_method_line(result))
-
-
-_DRAG_NEEDS_N = (
-    f"with --drag each toss is a numerical integration (about {DRAG_TOSSES_PER_SECOND} tosses "
-    "per second per thread), so the default size of --method {method} would run for hours or "
-    "days; give --n explicitly, e.g. {example}"
-)
-
-
-def _drag_example(method: str, dist: TossDistribution) -> str:
-    """An --n that takes about a minute with drag, and what it means."""
-    k = len(dist.ranged)
-    if method == "grid":
-        cells = max(1, int((60 * DRAG_TOSSES_PER_SECOND) ** (1 / max(k, 1))))
-        return f"--n {cells} ({cells}^{k} = {cells**k:,} tosses, about a minute)"
-    if method == "qmc":
-        return "--n 1024 (about a minute)"
-    return "--n 1000 (about a minute; standard error about 0.016)"
-
-
-def _warnings(result: Any) -> list[str]:
-    """What the user must know about the result: tosses that never settled (table landing)."""
-    unsettled = int(result.details.get("unsettled", 0))
-    if not unsettled:
-        return []
-    n = sum(result.counts) if result.counts is not None else result.samples
-    return [
-        f"{unsettled:,} of {n:,} tosses ({100 * result.details['unsettled_fraction']:.3g} %) "
-        "never settled (status 'unsettled'); they are counted by the face they showed when the "
-        "simulation stopped"
-    ]
 
 
 def _gravity_line(g: float, launch_speed: str | None) -> str:
@@ -193,12 +138,6 @@ def _gravity_line(g: float, launch_speed: str | None) -> str:
         v0 = parse_distribution(launch_speed, "--launch-speed", "m/s")
         line += f"; launch speed v0 = {v0.describe('m/s')} (T = 2 v0 / g)"
     return line
-
-
-def _inputs(ctx: typer.Context) -> dict[str, Any]:
-    """The toss options as the user typed them (or their defaults), by option name."""
-    names = ("omega_x", "omega_y", "omega_z", "flight_time", "launch_speed", "g", "preset")
-    return {f"--{name.replace('_', '-')}": ctx.params.get(name) for name in names}
 
 
 def _method_line(result: object) -> str:

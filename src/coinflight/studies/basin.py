@@ -17,14 +17,14 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
 from coinflight.core.bands import half_width
-from coinflight.core.outcome import HEADS
+from coinflight.core.outcome import EDGE, FACE_NAMES, HEADS, TAILS
 from coinflight.outcomes.base import OutcomeModel
 from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability import grid
@@ -104,6 +104,34 @@ class BasinMap:
         if self.axis == "precession":
             return self.psi is not None and math.isclose(self.psi, math.pi / 2)
         return self.omega_z == 0.0
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: the grid and its faces, for drawing the map elsewhere (the web page).
+
+        ``face`` is a list of rows, one per ``spin`` value, each a list of face codes along
+        ``flight_time`` (``faces`` names the codes: 0 tails, 1 heads, 2 edge); the fractions
+        are those of the grid method on this grid. ``psi_deg`` is the fixed cone angle on a
+        precession-rate axis, else None.
+        """
+        return {
+            "flight_time": self.flight_time.tolist(),
+            "spin": self.spin.tolist(),
+            "axis": self.axis,
+            "face": self.face.tolist(),
+            "faces": dict(enumerate(FACE_NAMES)),
+            "heads_fraction": self.heads_fraction,
+            "tails_fraction": self.fraction(TAILS),
+            "edge_fraction": self.fraction(EDGE),
+            "flight_time_range": list(self.flight_time_range),
+            "spin_range": list(self.spin_range),
+            "omega_y": self.omega_y,
+            "omega_z": self.omega_z,
+            "psi_deg": None if self.psi is None else math.degrees(self.psi),
+            "planar": self.planar,
+            "coin": self.coin.to_dict(),
+            "start": self.start,
+            "g": self.g,
+        }
 
     def boundaries(self, n_points: int = 400) -> list[tuple[FloatArray, FloatArray]]:
         """Analytic heads/tails boundaries inside the box, as (T, spin) curves.

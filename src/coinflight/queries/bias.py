@@ -1,0 +1,159 @@
+"""The same-side bias of a precessing coin (``coinflight bias --json``, ``GET /api/bias``):
+p(ψ) in closed form for a fixed ψ, a ψ distribution or a preset, optionally checked by a Monte
+Carlo run of the full flight."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from coinflight.queries.values import simulation_seed
+
+if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.probability import ProbabilityResult
+    from coinflight.probability.result import BinomialEstimate
+    from coinflight.studies.bias import QuantileDistribution
+
+SOURCE = "Diaconis, Holmes & Montgomery 2007"
+
+
+def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDistribution:
+    """The fixed ψ (degrees) or the ψ distribution the options ask for (exactly one)."""
+    if (psi is None) == (psi_dist is None):
+        raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
+    if psi is not None:
+        return psi
+    from coinflight.model.distributions import parse_distribution
+
+    assert psi_dist is not None
+    return parse_distribution(psi_dist, "--psi-dist", "degrees")
+
+
+@dataclass(frozen=True)
+class AngleBias:
+    """p(ψ) at a fixed ψ or averaged over a ψ distribution, and the Monte Carlo check."""
+
+    p: float
+    what: str
+    psi: dict[str, Any]
+    coin: Coin
+    simulation: BinomialEstimate | None
+
+    def payload(self) -> dict[str, Any]:
+        """The JSON object of ``coinflight bias --json``."""
+        from coinflight.studies import bias as b
+
+        payload: dict[str, Any] = {"p_same_side": self.p, **self.psi, "source": SOURCE}
+        sim = self.simulation
+        if sim is not None:
+            payload["monte_carlo"] = {
+                **monte_carlo_payload(sim.p, sim.stderr, sim.n, sim.seed, self.p),
+                "same": sim.successes,
+                "flight_time": list(b.DEFAULT_FLIGHT_TIME),
+                "precession_rate": list(b.DEFAULT_PRECESSION_RATE),
+                "coin": self.coin.name,
+            }
+        return payload
+
+
+@dataclass(frozen=True)
+class PresetBias:
+    """p(ψ) averaged over a preset's spins, ψ's median and 95 % range, the Monte Carlo check."""
+
+    name: str
+    p: float
+    psi_q: tuple[float, float, float]
+    dist: TossDistribution
+    result: ProbabilityResult | None
+
+    def payload(self) -> dict[str, Any]:
+        """The JSON object of ``coinflight bias --preset NAME --json``."""
+        psi_q = self.psi_q
+        payload: dict[str, Any] = {
+            "p_same_side": self.p,
+            "preset": self.name,
+            "psi_model": "preset",
+            "psi_deg": float(psi_q[1]),
+            "psi_range95_deg": [float(psi_q[0]), float(psi_q[2])],
+            "distribution": {k: d.to_dict() for k, d in self.dist.parameters.items()},
+            "coin": self.dist.coin.name,
+            "source": SOURCE,
+        }
+        r = self.result
+        if r is not None:
+            payload["monte_carlo"] = monte_carlo_payload(
+                r.p_same_side, r.stderr, r.n, r.seed, self.p
+            )
+        return payload
+
+
+def bias_query(
+    psi: float | None,
+    psi_dist: str | None,
+    preset: str | None,
+    monte_carlo: int | None,
+    seed: int | None,
+    coin: Coin,
+) -> AngleBias | PresetBias:
+    """The answer of ``coinflight bias`` (options checked in its order)."""
+    from coinflight.studies import bias as b
+
+    seed = simulation_seed(monte_carlo, seed)
+    if preset is not None:
+        if psi is not None or psi_dist is not None:
+            raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
+        return _preset_bias(preset, monte_carlo, seed, coin)
+    spec = resolve_psi(psi, psi_dist)
+    if isinstance(spec, float):
+        p = float(b.same_side_probability(spec, degrees=True))
+        what = f"ψ = {spec:g}° (fixed)"
+        psi_payload: dict[str, Any] = {"psi_deg": spec, "psi_model": "fixed"}
+    else:
+        p = b.mean_same_side_probability(spec, degrees=True)
+        what = f"ψ ~ {spec.describe('degrees')}"  # type: ignore[attr-defined]
+        psi_payload = {"psi_dist": psi_dist, "psi_model": "distribution"}
+        mean = getattr(spec, "mean", None)
+        if mean is not None:
+            psi_payload["psi_deg"] = float(mean)
+    sim = None
+    if monte_carlo is not None:
+        sim = b.simulate_same_side(spec, monte_carlo, seed, coin=coin, degrees=True)
+    return AngleBias(p, what, psi_payload, coin, sim)
+
+
+def _preset_bias(name: str, monte_carlo: int | None, seed: int | None, coin: Coin) -> PresetBias:
+    """The closed-form average over the preset's spins, and optionally a Monte Carlo run of the
+    full flight through :func:`coinflight.probability.estimate` (started heads up, so P(heads)
+    is the same-side probability)."""
+    from coinflight.studies import bias as b
+    from coinflight.studies.presets import preset, psi_range
+
+    dist = preset(name, coin=coin)
+    p = b.expected_same_side(dist)
+    lo, mid, hi = (float(x) for x in psi_range(dist))
+    result = None
+    if monte_carlo is not None:
+        from coinflight.probability import estimate
+
+        result = estimate(dist, "monte-carlo", b.check_tosses(monte_carlo), seed)
+    return PresetBias(name, p, (lo, mid, hi), dist, result)
+
+
+def monte_carlo_payload(
+    p_sim: float, stderr: float | None, n: int | None, seed: int | None, p: float
+) -> dict[str, Any]:
+    """The JSON of a Monte Carlo check against the closed form p: estimate, s.e., n, seed, z."""
+    z = (p_sim - p) / stderr if stderr else 0.0
+    return {"p_same_side": p_sim, "stderr": stderr, "n": n, "seed": seed, "z": z}
+
+
+__all__ = [
+    "SOURCE",
+    "AngleBias",
+    "PresetBias",
+    "bias_query",
+    "monte_carlo_payload",
+    "resolve_psi",
+]

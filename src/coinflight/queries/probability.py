@@ -1,0 +1,209 @@
+"""The chance of heads for a range of tosses (``coinflight probability --json``,
+``GET /api/probability``): the options checked in one order, the estimate, the JSON object."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from coinflight.queries.landing import LandingChoice, outcome_model
+from coinflight.queries.values import AirArgs, DistArgs, TableArgs
+
+if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.probability import ProbabilityResult
+    from coinflight.probability.registry import Estimator
+
+INPUT_NAMES = ("omega_x", "omega_y", "omega_z", "flight_time", "launch_speed", "g", "preset")
+"""The toss options whose typed values the JSON repeats under ``inputs`` (by option name)."""
+
+PRESET_OPTIONS = {
+    "omega_x": ("--omega-x", "rad/s"),
+    "omega_y": ("--omega-y", "rad/s"),
+    "omega_z": ("--omega-z", "rad/s"),
+    "flight_time": ("--flight-time", "s"),
+    "launch_speed": ("--launch-speed", "m/s"),
+}
+"""Parameter name → (option, unit) of the toss options a preset supplies and a typed option
+replaces."""
+
+
+@dataclass(frozen=True)
+class ProbabilityQuery:
+    """A checked request for P(heads): the estimator, the tosses, the landing and the size."""
+
+    method: str
+    estimator: Estimator
+    dist: TossDistribution
+    coin: Coin
+    start: str
+    landing: LandingChoice | None
+    n: int | None
+    seed: int | None
+    threads: int | None
+    options: dict[str, Any] = field(default_factory=dict)
+    inputs: dict[str, Any] = field(default_factory=dict)
+
+    def seconds(self) -> float | None:
+        """The estimator's estimate of the run's time on the reference machine, s (a
+        ValueError, the library's refusal, beyond what one run may ask); None when the method
+        bounds its own work (exact)."""
+        if self.estimator.work is None:
+            return None
+        from coinflight.outcomes.hand import HAND_CATCH
+
+        size = self.estimator.size_for(len(self.dist.ranged), self.n) or 1
+        model = self.landing.model if self.landing is not None else HAND_CATCH
+        return self.estimator.work(self.dist, size, model)
+
+    def work_units(self) -> int:
+        """Units of work the library reports through ``progress`` for this request."""
+        e = self.estimator
+        return e.work_units(len(self.dist.ranged), e.size_for(len(self.dist.ranged), self.n) or 1)
+
+
+def preset_tosses(
+    name: str, coin: Coin, start: str, g: float, overrides: Mapping[str, str]
+) -> TossDistribution:
+    """The preset ``name`` with the toss options the user typed (``overrides``, parameter name
+    → text) laid over it."""
+    from coinflight.model.distributions import parse_distribution
+    from coinflight.studies.presets import preset
+
+    laid = {
+        param: parse_distribution(str(overrides[param]), flag, unit)
+        for param, (flag, unit) in PRESET_OPTIONS.items()
+        if param in overrides
+    }
+    if "flight_time" in laid and "launch_speed" in laid:
+        raise ValueError("give at most one of --flight-time and --launch-speed")
+    return preset(name, coin=coin, start=start, g=g, **laid)  # type: ignore[arg-type]
+
+
+def probability_query(
+    tosses: DistArgs,
+    coin: Coin,
+    table: TableArgs,
+    air: AirArgs,
+    *,
+    method: str = "exact",
+    n: int | None = None,
+    seed: int | None = None,
+    grid_cells: int | None = None,
+    threads: int | None = None,
+    preset: str | None = None,
+    overrides: Mapping[str, str] | None = None,
+    inputs: Mapping[str, Any] | None = None,
+) -> ProbabilityQuery:
+    """The options of ``coinflight probability`` checked in its order: the method, the tosses
+    (``preset`` with ``overrides`` laid over it, or ``tosses``), the method's options, the
+    landing. ``inputs``: the toss options as typed, repeated in the JSON."""
+    from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
+    from coinflight.probability import registry
+
+    estimator = registry.get(method)
+    if preset is not None:
+        dist = preset_tosses(preset, coin, tosses.start, tosses.g, overrides or {})
+    else:
+        dist = tosses.build(coin)
+    options: dict[str, Any] = {}
+    if grid_cells is not None:
+        if "grid_cells" not in estimator.options:
+            takers = [e.name for e in registry.estimators() if "grid_cells" in e.options]
+            raise ValueError(f"--grid-cells applies to --method {' and '.join(takers)} only")
+        options["grid_cells"] = grid_cells
+    if seed is not None and not estimator.seeded:
+        seeded = " and ".join(registry.names(seeded=True))
+        raise ValueError(f"--seed applies to {seeded}, not {method}")
+    if threads is not None and not estimator.parallel:
+        raise ValueError(f"--threads does not apply to the {method} method")
+    landing = outcome_model(*table, *air)
+    if landing is not None and landing.drag is not None and estimator.default_n and n is None:
+        raise ValueError(
+            _DRAG_NEEDS_N.format(
+                rate=DRAG_TOSSES_PER_SECOND,
+                method=method,
+                example=_drag_example(method, dist, DRAG_TOSSES_PER_SECOND),
+            )
+        )
+    if landing is not None:
+        options["model"] = landing.model
+    return ProbabilityQuery(
+        method, estimator, dist, coin, tosses.start, landing, n, seed, threads, options,
+        dict(inputs or {}),
+    )  # fmt: skip
+
+
+def run(
+    query: ProbabilityQuery, progress: Callable[[int], None] | None = None
+) -> ProbabilityResult:
+    """The estimate the query asks for (``progress``: called with units of work done)."""
+    from coinflight.probability import estimate
+
+    options = dict(query.options)
+    if query.estimator.parallel:
+        options.update(threads=query.threads, progress=progress)
+    return estimate(query.dist, query.method, n=query.n, seed=query.seed, **options)
+
+
+def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> dict[str, Any]:
+    """The JSON object of ``coinflight probability --json``."""
+    from coinflight.queries.landing import surface_payload
+
+    payload = result.to_dict()
+    payload["distribution"] = {name: d.to_dict() for name, d in query.dist.parameters.items()}
+    payload.update(
+        coin=query.coin.name,
+        start=query.start,
+        g=query.dist.g,
+        inputs={f"--{name.replace('_', '-')}": query.inputs.get(name) for name in INPUT_NAMES},
+    )
+    if query.landing is not None:
+        payload.update(surface_payload(query.landing.surface, query.landing.drag))
+    payload["warnings"] = result_warnings(result)
+    return payload
+
+
+def result_warnings(result: Any) -> list[str]:
+    """What the user must know about the result: tosses that never settled (table landing)."""
+    unsettled = int(result.details.get("unsettled", 0))
+    if not unsettled:
+        return []
+    n = sum(result.counts) if result.counts is not None else result.samples
+    return [
+        f"{unsettled:,} of {n:,} tosses ({100 * result.details['unsettled_fraction']:.3g} %) "
+        "never settled (status 'unsettled'); they are counted by the face they showed when the "
+        "simulation stopped"
+    ]
+
+
+_DRAG_NEEDS_N = (
+    "with --drag each toss is a numerical integration (about {rate} tosses per second per "
+    "thread), so the default size of --method {method} would run for hours or days; give --n "
+    "explicitly, e.g. {example}"
+)
+
+
+def _drag_example(method: str, dist: TossDistribution, rate: float) -> str:
+    """An --n that takes about a minute with drag, and what it means."""
+    k = len(dist.ranged)
+    if method == "grid":
+        cells = max(1, int((60 * rate) ** (1 / max(k, 1))))
+        return f"--n {cells} ({cells}^{k} = {cells**k:,} tosses, about a minute)"
+    if method == "qmc":
+        return "--n 1024 (about a minute)"
+    return "--n 1000 (about a minute; standard error about 0.016)"
+
+
+__all__ = [
+    "INPUT_NAMES",
+    "PRESET_OPTIONS",
+    "ProbabilityQuery",
+    "preset_tosses",
+    "probability_payload",
+    "probability_query",
+    "result_warnings",
+    "run",
+]
