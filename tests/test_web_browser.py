@@ -159,7 +159,15 @@ class Problems:
             ),
         )
         page.on("pageerror", lambda e: self.messages.append(f"uncaught: {e}"))
-        page.on("requestfailed", lambda r: self.messages.append(f"request failed: {r.url}"))
+        # A request the page cancels itself (a newer slider position replaced it) is no fault.
+        page.on(
+            "requestfailed",
+            lambda r: (
+                self.messages.append(f"request failed: {r.url} ({r.failure})")
+                if "ERR_ABORTED" not in (r.failure or "")
+                else None
+            ),
+        )
         page.on(
             "response",
             lambda r: (
@@ -394,3 +402,43 @@ def test_the_page_fits_a_phone_and_a_projector(
         assert problems.messages == []
     finally:
         page.close()
+
+
+# Python's format specification "g", and the page's copy of it (static/format.js), on numbers
+# where the two could part: rounding up a digit, the switch to exponents at 1e-4 and 10^p.
+NUMBERS = [
+    0.0035355179959943635,
+    80.0,
+    1e-5,
+    0.0001,
+    0.00012345,
+    123456789.0,
+    0.5,
+    2.5e-7,
+    9.9999999,
+    999999.5,
+    1234567.0,
+    -3.14159265,
+    1e16,
+    0.1 + 0.2,
+    42.0,
+    3.4335,
+    0.6008625,
+]
+
+
+@pytest.mark.parametrize("digits", [1, 2, 3, 4, 6])
+def test_the_page_writes_numbers_as_python_does(page: Any, digits: int) -> None:
+    written = page.evaluate(
+        "async ([xs, p]) => { const m = await import('/static/format.js');"
+        " return xs.map(x => m.fmtG(x, p)); }",
+        [NUMBERS, digits],
+    )
+    assert written == [format(x, f".{digits}g") for x in NUMBERS]
+    counts = [0, 7, 999, 1000, 350757, 1234567890]
+    grouped = page.evaluate(
+        "async (ns) => { const m = await import('/static/format.js');"
+        " return ns.map(n => m.thousands(n)); }",
+        counts,
+    )
+    assert grouped == [f"{n:,}" for n in counts]
