@@ -79,12 +79,12 @@ def data(
 
     Example: coinflight data --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """
+    from coinflight.queries.data import check_psi_sd, data_payload
     from coinflight.studies.data import counts_source, summarize
 
     if dataset is not None and counts is not None:
         counts_source(dataset, counts)  # the error naming both, before any other
-    if not (math.isfinite(psi_sd) and psi_sd >= 0.0):
-        raise ValueError(f"--psi-sd must be a non-negative number of degrees, got {psi_sd:g}")
+    check_psi_sd(psi_sd)
     if plot is not None:
         from coinflight.plotting.style import figure_paths
 
@@ -103,8 +103,7 @@ def data(
 
         written = save_figure(plot_forest(summary), plot)
     if json_output:
-        payload = {**described, **summary.to_dict(psi_sd), "plot": [str(p) for p in written]}
-        print_json(payload)
+        print_json(data_payload(described, summary, psi_sd, written))
         return
     for line in summary.report(source, psi_sd):
         typer.echo(line)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import Annotated
 
 import typer
@@ -46,9 +47,15 @@ def serve(host: Host = "127.0.0.1", port: Port = 8000, time_limit: TimeLimit = 3
         host,
         port,
         time_limit=time_limit,
-        announce=lambda line: typer.echo(line),
+        announce=_announce,
         warn=lambda line: say(f"coinflight: warning: {line}"),
     )
+
+
+def _announce(line: str) -> None:
+    """The address, on stdout at once (a script reading it through a pipe sees it now)."""
+    typer.echo(line)
+    sys.stdout.flush()
 
 
 __all__ = ["serve"]

@@ -99,6 +99,158 @@ def create_app(
             trajectory,
         )
 
+    @app.get("/api/probability", tags=["probability"], response_class=Response)
+    async def probability(
+        request: Request,
+        omega_x: p.OmegaX = "80",
+        omega_y: p.OmegaY = "0",
+        omega_z: p.OmegaZ = "0",
+        flight_time: p.FlightTimes = None,
+        launch_speed: p.LaunchSpeeds = None,
+        start: p.Start = "heads",
+        g: p.Gravity = 9.81,
+        preset: p.TossPreset = None,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+        surface: p.Surface = "hand",
+        drop_height: p.DropHeight = None,
+        restitution: p.Restitution = None,
+        friction: p.Friction = None,
+        drag: p.Drag = None,
+        spin_damping: p.SpinDamping = None,
+        method: p.Method = "exact",
+        n: p.Size = None,
+        seed: p.Seed = None,
+        grid_cells: p.GridCells = None,
+    ) -> Response:
+        """The chance of heads for tosses spread over ranges of spin and flight time, as
+        `coinflight probability --json` (the server runs each request on one thread; the
+        answer does not depend on it)."""
+        from coinflight.queries.probability import INPUT_NAMES, PRESET_OPTIONS
+        from coinflight.queries.values import DistArgs
+        from coinflight.web import endpoints
+
+        g = p.gravity(g)
+        typed = {
+            "omega_x": omega_x,
+            "omega_y": omega_y,
+            "omega_z": omega_z,
+            "flight_time": flight_time,
+            "launch_speed": launch_speed,
+            "g": g,
+            "preset": preset,
+        }
+        given = {k: str(typed[k]) for k in PRESET_OPTIONS if k in request.query_params}
+        options = {
+            "method": method,
+            "n": n,
+            "seed": seed,
+            "grid_cells": grid_cells,
+            "preset": preset,
+            "overrides": given if preset is not None else None,
+            "inputs": {k: typed[k] for k in INPUT_NAMES},
+        }
+        return await answer(
+            endpoints.probability,
+            (coin, radius, thickness, mass),
+            DistArgs(omega_x, omega_y, omega_z, flight_time, launch_speed, start, g),
+            p.table_args(surface, drop_height, restitution, friction),
+            p.air_args(drag, spin_damping),
+            options,
+            runner.time_limit,
+        )
+
+    @app.get("/api/basin", tags=["basin"], response_class=Response)
+    async def basin(
+        flight_time: p.FlightTimeRange = None,
+        launch_speed: p.LaunchSpeedRange = None,
+        omega_x: p.OmegaXRange = None,
+        omega_y: p.OmegaYFixed = 0.0,
+        omega_z: p.OmegaZFixed = 0.0,
+        psi: p.PsiFixed = None,
+        precession_rate: p.PrecessionRange = None,
+        resolution: p.Resolution = "500",
+        start: p.Start = "heads",
+        g: p.Gravity = 9.81,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+        surface: p.Surface = "hand",
+        drop_height: p.DropHeight = None,
+        restitution: p.Restitution = None,
+        friction: p.Friction = None,
+        bounces: p.Bounces = None,
+        boundaries: p.Boundaries = False,
+    ) -> Response:
+        """Heads and tails over a box of flight times and spins: the map `coinflight plot
+        basin` draws, as JSON (`face`: one row per `spin` value, face codes along
+        `flight_time`; `faces` names the codes). At most 640,000 cells."""
+        from coinflight.web import endpoints
+
+        options = {
+            "flight_time": flight_time,
+            "launch_speed": launch_speed,
+            "omega_x": omega_x,
+            "omega_y": omega_y,
+            "omega_z": omega_z,
+            "psi": psi,
+            "precession_rate": precession_rate,
+            "resolution": resolution,
+            "start": start,
+            "g": p.gravity(g),
+        }
+        return await answer(
+            endpoints.basin,
+            (coin, radius, thickness, mass),
+            options,
+            p.table_args(surface, drop_height, restitution, friction),
+            bounces,
+            boundaries,
+            runner.time_limit,
+        )
+
+    @app.get("/api/bias", tags=["bias"], response_class=Response)
+    async def bias(
+        psi: p.Psi = None,
+        psi_dist: p.PsiDist = None,
+        preset: p.PsiPreset = None,
+        monte_carlo: p.MonteCarlo = None,
+        seed: p.Seed = None,
+        coin: p.CoinName = None,
+        radius: p.Radius = None,
+        thickness: p.Thickness = None,
+        mass: p.Mass = None,
+    ) -> Response:
+        """The probability that a precessing coin lands on the side it started (Diaconis,
+        Holmes & Montgomery 2007), as `coinflight bias --json`."""
+        from coinflight.web import endpoints
+
+        return await answer(
+            endpoints.bias,
+            (coin, radius, thickness, mass),
+            psi,
+            psi_dist,
+            preset,
+            monte_carlo,
+            seed,
+            runner.time_limit,
+        )
+
+    @app.get("/api/data", tags=["data"], response_class=Response)
+    async def data(
+        dataset: p.Dataset = None,
+        interval: p.Interval = "exact",
+        psi_sd: p.PsiSd = 0.0,
+    ) -> Response:
+        """Same-side and heads rates of real flips (Bartoš et al.'s 350,757) and the precession
+        angle ψ that explains them, as `coinflight data --json`."""
+        from coinflight.web import endpoints
+
+        return await answer(endpoints.data, dataset, interval, psi_sd)
+
     return app
 
 
@@ -128,15 +280,19 @@ _READING = {
     "float_parsing": "is not a number",
     "int_parsing": "is not a valid integer",
     "int_from_float": "is not a valid integer",
+    "bool_parsing": "is not a valid boolean",
 }
 
 
 def _validation_line(exc: RequestValidationError) -> str:
-    """The first error of a request FastAPI could not read, as the command line says it."""
+    """The first error of a request FastAPI could not read, as the command line says it
+    (typer's words: ``Invalid value for '--n': '1.5' is not a valid integer``)."""
     error = exc.errors()[0]
     name = str(error.get("loc", ("", "?"))[-1])
-    what = _READING.get(str(error.get("type")), str(error.get("msg", "is not valid")))
-    return p.invalid(name, error.get("input"), what)
+    reading = _READING.get(str(error.get("type")))
+    if reading is not None:
+        return p.invalid(name, error.get("input"), reading)
+    return f"Invalid value for '{p.flag(name)}': {error.get('msg', 'not valid')}"
 
 
 def _static(app: FastAPI) -> None:

@@ -1,16 +1,46 @@
 """What each endpoint computes, in a worker thread: the options read as the command line reads
-them (:mod:`coinflight.queries`), the library called, the JSON-ready object returned."""
+them (:mod:`coinflight.queries`), the work bounded for this server, the library called, the
+JSON-ready object returned.
+
+Every size is checked twice before work starts: by the library's own refusal
+(:func:`coinflight._validation.work_bound`, the words the command line prints), then against this
+server's budget (a fraction of its time limit, and at most :data:`MAX_MAP_CELLS` cells of a map).
+"""
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Mapping
 from typing import Any
 
+from coinflight import _validation as v
 from coinflight.queries import toss as toss_queries
-from coinflight.queries.values import AirArgs, TableArgs, TossArgs, resolve_coin
+from coinflight.queries.values import AirArgs, DistArgs, TableArgs, TossArgs, resolve_coin
+
+CoinArgs = tuple[str | None, float | None, float | None, float | None]
+
+MAX_MAP_CELLS = 640_000
+"""Most cells of a map the server sends (800 × 800: a phone's or a projector's width; about
+2 MB of JSON)."""
+
+BUDGET_SHARE = 0.5
+"""Share of the time limit the estimated work of a request may take on the reference machine
+(each request runs on one thread; the machine may be busier than the reference)."""
+
+
+def budget(what: str, seconds: float, time_limit: float, way_on: str) -> None:
+    """Refuse (ValueError, the library's wording) work estimated beyond the server's budget."""
+    v.work_bound(
+        what,
+        seconds,
+        BUDGET_SHARE * time_limit,
+        "s of estimated work",
+        f"{way_on} (this server answers within {time_limit:g} s)",
+    )
 
 
 def toss(
-    coin: tuple[str | None, float | None, float | None, float | None],
+    coin: CoinArgs,
     args: TossArgs,
     table: TableArgs,
     air: AirArgs,
@@ -32,3 +62,89 @@ def toss(
 
         payload["trajectory"] = toss_queries.trajectory(Flight(the_coin, query.toss), trajectory)
     return payload
+
+
+def probability(
+    coin: CoinArgs,
+    tosses: DistArgs,
+    table: TableArgs,
+    air: AirArgs,
+    options: Mapping[str, Any],
+    time_limit: float,
+) -> dict[str, Any]:
+    """``GET /api/probability``: ``coinflight probability --json``, on one thread."""
+    from coinflight.queries import probability as q
+
+    query = q.probability_query(tosses, resolve_coin(*coin), table, air, **options)
+    seconds = query.seconds()
+    if seconds is not None:
+        size = query.estimator.size_for(len(query.dist.ranged), query.n)
+        budget(f"{query.method} with n = {size}", seconds, time_limit, "use a smaller n")
+    if query.estimator.parallel:
+        query = dataclasses.replace(query, threads=1)  # the answer does not depend on it
+    return q.probability_payload(query, q.run(query))
+
+
+def basin(
+    coin: CoinArgs,
+    options: Mapping[str, Any],
+    table: TableArgs,
+    bounces: int | None,
+    boundaries: bool,
+    time_limit: float,
+) -> dict[str, Any]:
+    """``GET /api/basin``: the map of ``coinflight plot basin`` as JSON
+    (:mod:`coinflight.queries.basin`)."""
+    from coinflight.queries.basin import basin_payload, basin_query
+    from coinflight.queries.landing import table_outcome
+    from coinflight.queries.values import parse_resolution
+
+    n_t, n_w = parse_resolution(options.get("resolution", "500"))
+    cells = n_t * n_w
+    v.work_bound(
+        f"a map of {n_t}×{n_w} cells",
+        cells,
+        MAX_MAP_CELLS,
+        "cells",
+        "use a coarser resolution (e.g. 400 or 600x300)",
+    )
+    model = table_outcome(*table, bounces).get("outcome")
+    if model is not None:
+        budget(f"a map of {cells:,} table landings", cells / model.rate, time_limit,
+               "use a coarser resolution")  # fmt: skip
+    the_map = basin_query(resolve_coin(*coin), table=table, bounces=bounces, **options)
+    return basin_payload(the_map, table, bounces, boundaries)
+
+
+def bias(
+    coin: CoinArgs,
+    psi: float | None,
+    psi_dist: str | None,
+    preset: str | None,
+    monte_carlo: int | None,
+    seed: int | None,
+    time_limit: float,
+) -> dict[str, Any]:
+    """``GET /api/bias``: ``coinflight bias --json``."""
+    from coinflight.queries.bias import bias_query
+
+    if monte_carlo is not None:
+        from coinflight.studies.bias import check_tosses
+
+        check_tosses(monte_carlo)  # the library's refusal first, in its words
+        if preset is None:
+            from coinflight.studies.bias import TOSSES_PER_SECOND as rate
+        else:
+            from coinflight.outcomes.hand import HAND_CATCH
+
+            rate = HAND_CATCH.rate
+        budget(f"a Monte Carlo check of {monte_carlo} tosses", monte_carlo / rate, time_limit,
+               "use fewer tosses")  # fmt: skip
+    return bias_query(psi, psi_dist, preset, monte_carlo, seed, resolve_coin(*coin)).payload()
+
+
+def data(dataset: str | None, interval: str, psi_sd: float) -> dict[str, Any]:
+    """``GET /api/data``: ``coinflight data --json`` for a shipped dataset."""
+    from coinflight.queries.data import dataset_payload
+
+    return dataset_payload(dataset, interval, psi_sd)

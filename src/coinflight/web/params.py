@@ -117,3 +117,52 @@ Trajectory = Annotated[
         "for drawing it).",
     ),
 ]
+
+# --- a range of tosses (probability) ------------------------------------------------------------
+_DIST = "a number, LOW:HIGH (uniform) or normal:MEAN,SD"
+OmegaX = Annotated[str, _q(f"Spin about the x diameter, rad/s: {_DIST} (as --omega-x).")]
+OmegaY = Annotated[str, _q(f"Spin about the y diameter, rad/s: {_DIST} (as --omega-y).")]
+OmegaZ = Annotated[str, _q(f"Spin about the normal, rad/s: {_DIST} (as --omega-z).")]
+FlightTimes = Annotated[
+    str | None, _q(f"Flight time T (catch at launch height), s: {_DIST} (as --flight-time).")
+]
+LaunchSpeeds = Annotated[
+    str | None, _q(f"Upward launch speed v0 (T = 2 v0 / g), m/s: {_DIST} (as --launch-speed).")
+]
+TossPreset = Annotated[
+    str | None,
+    _q("A named distribution of tosses: human; toss parameters given replace its values."),
+]
+Method = Annotated[str, _q("exact, grid, monte-carlo or qmc (as --method).")]
+Size = Annotated[int | None, _q("The method's size (as --n): cells per parameter, tosses, …")]
+Seed = Annotated[int | None, _q("Seed of monte-carlo and qmc (reported; drawn if not given).")]
+GridCells = Annotated[int | None, _q("monte-carlo only: draw from the midpoints of C cells.")]
+
+# --- a map (basin) ---------------------------------------------------------------------------
+FlightTimeRange = Annotated[str | None, _q("Range of flight times LO:HI, s (default 0.6:0.9).")]
+LaunchSpeedRange = Annotated[str | None, _q("Range of launch speeds LO:HI, m/s, instead.")]
+OmegaXRange = Annotated[str | None, _q("Range of the spin ωx0 LO:HI, rad/s (default 60:90).")]
+OmegaYFixed = Annotated[float, _q("Fixed spin about the other diameter ωy0, rad/s.")]
+OmegaZFixed = Annotated[float, _q("Fixed spin about the normal ωz0, rad/s.")]
+PsiFixed = Annotated[
+    float | None,
+    _q("Fixed angle between the normal and S, degrees; the spin axis is then the precession rate."),
+]
+PrecessionRange = Annotated[
+    str | None, _q("Range of the precession rate LO:HI, rad/s, with psi (default 60:90).")
+]
+Resolution = Annotated[str, _q("Grid cells: N (N×N) or NTxNW (as --resolution).")]
+Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand only).")]
+
+# --- the same-side bias and real flips --------------------------------------------------------
+Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]
+PsiDist = Annotated[
+    str | None, _q("A distribution of ψ in degrees: normal:MEAN,SD, LOW:HIGH or a number.")
+]
+PsiPreset = Annotated[str | None, _q("A named distribution of tosses: human.")]
+MonteCarlo = Annotated[
+    int | None, _q("Also simulate N tosses of the full flight (as --monte-carlo).")
+]
+Dataset = Annotated[str | None, _q("A dataset shipped with coinflight (default bartos2023).")]
+Interval = Annotated[str, _q("95 % interval: exact (Clopper-Pearson) or wilson.")]
+PsiSd = Annotated[float, _q("Spread of ψ, degrees: 0 fits one fixed ψ; > 0 a normal's mean.")]
