@@ -5,9 +5,11 @@ A real ``coinflight serve --port 0`` runs for the module on a free loopback port
 own download) opens the page headless with a fresh profile. The tests check what a student sees
 against what the JSON API and the command line answer.
 
-Screenshots of every panel are kept as the run's artefacts in the test's own temporary folder
-(pytest keeps the last three runs: ``/tmp/pytest-of-USER/pytest-N/web-screenshots0/``; in CI
-``pytest --basetemp=DIR`` puts them under DIR to upload).
+Screenshots of every panel, and of the whole page on a phone and a projector, are the run's
+artefacts, in the test's own temporary folder ``web-screenshots0/`` (pytest keeps the last three
+runs under ``/tmp/pytest-of-USER/``); to keep them in the repository, for a look or a CI upload:
+``pytest --basetemp=test-artefacts tests/test_web_browser.py`` (``test-artefacts/`` is ignored
+by git).
 
 Without Chromium or Playwright the tests skip on a workstation and fail in CI (``CI`` set), so
 a CI machine that lost the browser cannot pass silently.

@@ -5,7 +5,7 @@ import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { thousands } from "./format.js";
 
-const HEADS = 1; // coinflight.core.outcome.Face
+const HEADS = 1; // coinflight.core.outcome.Face (the answer's "faces" names them)
 const TAILS = 0;
 
 function rgb(hex) {
@@ -22,7 +22,7 @@ function readBasin(r) {
   else face = face.map((row) => row.map(code));
   const Tr = r.flight_time_range ?? [T[0] - (T[1] - T[0]) / 2, T.at(-1) + (T[1] - T[0]) / 2];
   const Wr = r.spin_range ?? [W[0] - (W[1] - W[0]) / 2, W.at(-1) + (W[1] - W[0]) / 2];
-  return { T, W, face, Tr, Wr };
+  return { T, W, face, Tr, Wr, boundaries: r.boundaries || [], headsFraction: r.heads_fraction };
 }
 
 export class Basin {
@@ -38,6 +38,7 @@ export class Basin {
       e.preventDefault();
       this.update();
     });
+    this.el("basin-boundaries").addEventListener("change", () => this.update());
     const canvas = this.el("basin-canvas");
     canvas.addEventListener("click", (e) => this.click(e));
     new ResizeObserver(() => this.draw()).observe(canvas);
@@ -51,6 +52,7 @@ export class Basin {
       omega_y: this.settings.wy(),
       omega_z: this.settings.wz(),
       resolution: v("basin-res"),
+      boundaries: this.el("basin-boundaries").checked,
       coin: this.settings.coin(),
       start: this.settings.start(),
     };
@@ -71,17 +73,10 @@ export class Basin {
       const r = await getJSON("api/basin", q, { signal });
       this.map = readBasin(r);
       this.query_ = q;
-      let heads = 0;
-      let cells = 0;
-      for (const row of this.map.face) {
-        for (const f of row) {
-          heads += f === HEADS;
-          cells += 1;
-        }
-      }
+      const cells = this.map.T.length * this.map.W.length;
       this.el("basin-summary").textContent =
         `${thousands(cells)} tosses (${this.map.T.length} flight times × ${this.map.W.length} spins, ` +
-        `ωy = ${q.omega_y}, ωz = ${q.omega_z} rad/s): heads ${(100 * heads / cells).toFixed(1)} %`;
+        `ωy = ${q.omega_y}, ωz = ${q.omega_z} rad/s): heads ${(100 * this.map.headsFraction).toFixed(1)} %`;
       showError(this.el("basin-error"), null);
       this.draw();
       this.root.dataset.state = "ready";
@@ -135,6 +130,28 @@ export class Basin {
     ctx.save();
     ctx.imageSmoothingEnabled = false;
     ctx.drawImage(off, ax.left, ax.top, ax.pw, ax.ph);
+    ctx.restore();
+    // Keller's boundaries between heads and tails (null where a curve leaves the box).
+    ctx.save();
+    ax.clip();
+    ctx.strokeStyle = "rgba(0, 0, 0, 0.55)";
+    ctx.lineWidth = 1;
+    for (const curve of this.map.boundaries) {
+      ctx.beginPath();
+      let pen = false;
+      curve.flight_time.forEach((t, k) => {
+        const w = curve.spin[k];
+        if (t === null || w === null) {
+          pen = false;
+        } else if (pen) {
+          ctx.lineTo(ax.x(t), ax.y(w));
+        } else {
+          ctx.moveTo(ax.x(t), ax.y(w));
+          pen = true;
+        }
+      });
+      ctx.stroke();
+    }
     ctx.restore();
     ax.draw("flight time T, s", "spin ωx, rad/s");
     if (this.mark) {
