@@ -216,6 +216,15 @@ def test_page_loads_with_every_panel_and_no_console_errors(page: Any) -> None:
     assert page.locator("#scene-fallback").is_hidden()
 
 
+def test_the_coin_menu_is_the_librarys_presets(page: Any) -> None:
+    from coinflight.model.coin import PRESETS
+
+    options = page.eval_on_selector_all(
+        "#coin option", "os => os.map(o => [o.value, o.textContent])"
+    )
+    assert options == [[key, coin.name] for key, coin in PRESETS.items()]
+
+
 def test_toss_face_and_rotations_are_the_command_lines(page: Any, server: str) -> None:
     """The paper's first toss (ω = (80, 0, 0) rad/s, T = 0.7 s): the page prints what
     ``coinflight toss`` prints, character for character."""
