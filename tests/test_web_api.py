@@ -221,3 +221,157 @@ def test_probability_work_beyond_the_servers_budget_is_refused_before_it_starts(
     assert time.perf_counter() - started < 5
     assert detail.startswith(f"monte-carlo with n = {n} is 40 s of estimated work, more than ")
     assert "use a smaller n (this server answers within 30 s)" in detail
+
+
+# --- /api/basin, /api/bias, /api/data ----------------------------------------------------------
+def test_basin_is_the_map_the_command_line_draws(client, tmp_path):
+    """The JSON map is basin_map's grid: the CLI's printed P(heads) on the grid, its shape
+    (rows along the spin), and each pixel the face of the toss at its cell's centre."""
+    body = client.get("/api/basin?omega_x=60:90&flight_time=0.6:0.9&resolution=40x30").json()
+    face = np.array(body["face"])
+    assert face.shape == (30, 40) and body["resolution"] == [40, 30]
+    assert body["faces"] == {"0": "tails", "1": "heads", "2": "edge"}
+    out = cli.invoke(cli_app, [
+        "plot", "basin", "--omega-x", "60:90", "--flight-time", "0.6:0.9", "--resolution",
+        "40x30", "--out", str(tmp_path / "basin.png"),
+    ])  # fmt: skip
+    assert out.exit_code == 0, out.output
+    assert f"P(heads) on the 40×30 grid = {body['heads_fraction']:.6f}" in out.stdout
+    for i, j in [(0, 0), (7, 31), (29, 39)]:
+        w, t = body["spin"][i], body["flight_time"][j]
+        toss = client.get(f"/api/toss?omega={w!r},0,0&flight_time={t!r}").json()
+        assert face[i, j] == (1 if toss["outcome"] == "heads" else 0)
+
+
+def test_basin_boundaries_are_kellers_hyperbolas(client):
+    """Planar spin: each boundary satisfies ω T = (2k ± ½)π (Keller 1986; REFERENCES §3)."""
+    body = client.get("/api/basin?resolution=10&boundaries=true").json()
+    assert body["planar"] and body["boundaries"]
+    for curve in body["boundaries"]:
+        points = [(t, w) for t, w in zip(curve["flight_time"], curve["spin"], strict=True) if t]
+        assert points
+        for t, w in points:
+            assert math.cos(w * t) == pytest.approx(0.0, abs=1e-9)  # ω T = (2k ± ½)π
+
+
+@pytest.mark.parametrize(
+    ("query", "message"),
+    [
+        ("resolution=2000", "a map of 2000×2000 cells is 4e+06 cells, more than the limit of "
+         "6.4e+05 cells; use a coarser resolution (e.g. 400 or 600x300)"),
+        ("resolution=10x", "--resolution must be N or NTxNW with whole numbers, such as 500 or "
+         "600x400; got '10x'"),
+        ("omega_x=60", "--omega-x must be a range LO:HI such as 60:90 for a map; got '60' "
+         "(60 rad/s)"),
+    ],
+)  # fmt: skip
+def test_basin_bad_values_and_sizes_are_refused(client, query, message):
+    assert api_error(client, f"/api/basin?{query}") == message
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--psi", "80"],
+        ["--psi-dist", "normal:80,5"],
+        ["--psi", "75", "--monte-carlo", "20000", "--seed", "5"],
+        ["--preset", "human"],
+    ],
+)
+def test_bias_json_equals_the_command_line(client, args):
+    pairs = zip(args[::2], args[1::2], strict=True)
+    query = "&".join(f"{k.lstrip('-').replace('-', '_')}={v}" for k, v in pairs)
+    assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
+
+
+def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
+    detail = api_error(client, "/api/bias?psi=80&monte_carlo=1000000000")
+    assert detail.startswith("a Monte Carlo check of 1000000000 tosses is 250 s of estimated work")
+    assert api_error(client, "/api/bias?psi=80&psi_dist=normal:80,5") == cli_error(
+        "bias", "--psi", "80", "--psi-dist", "normal:80,5"
+    )
+
+
+def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
+    """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
+    got = client.get("/api/data?interval=wilson&psi_sd=5").json()
+    assert got == cli_json("data", "--interval", "wilson", "--psi-sd", "5")
+    assert (got["flips"], got["same"], got["plot"]) == (350_757, 178_078, [])
+    assert api_error(client, "/api/data?psi_sd=-1") == cli_error("data", "--psi-sd", "-1")
+    # no request reads a file: --counts FILE is the command line's alone
+    assert api_error(client, "/api/data?counts=/etc/passwd") == "No such option: --counts"
+
+
+# --- time, the page, the schema ----------------------------------------------------------------
+def test_a_request_over_its_time_limit_is_503_and_the_server_keeps_serving(monkeypatch):
+    """A request whose work runs past the time limit (here a data summary made to take 2 s) is
+    answered 503 with one line when the limit is up, not when the work ends; requests after it
+    are answered while the abandoned work finishes in its worker."""
+    from coinflight.web import endpoints
+
+    slow_data = endpoints.data
+
+    def slow(*args):
+        time.sleep(2.0)
+        return slow_data(*args)
+
+    monkeypatch.setattr(endpoints, "data", slow)
+    with TestClient(create_app(time_limit=0.3, workers=2)) as c:
+        started = time.perf_counter()
+        detail = api_error(c, "/api/data", status=503)
+        assert time.perf_counter() - started < 1.5
+        assert detail == (
+            "the request ran over the server's time limit of 0.3 s; ask for less work "
+            "(a smaller n, a coarser resolution)"
+        )
+        assert c.get("/api/bias?psi=80").status_code == 200
+        assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
+
+
+def test_every_worker_taken_is_503_busy_at_once():
+    """No queue without end: with one worker and no backlog, a second request while the first
+    runs is refused at once."""
+    import asyncio
+    import threading
+
+    from coinflight.web.runner import Overloaded, Runner
+
+    release = threading.Event()
+
+    async def scenario() -> str:
+        runner = Runner(workers=1, time_limit=10, backlog=0)
+        first = asyncio.ensure_future(runner.run(release.wait, 10))
+        await asyncio.sleep(0.05)
+        try:
+            await runner.run(lambda: None)
+        except Overloaded as exc:
+            message = str(exc)
+        else:
+            message = ""
+        release.set()
+        assert await first is True
+        assert await runner.run(lambda: 42) == 42  # the slot came back
+        runner.close()
+        return message
+
+    assert asyncio.run(scenario()) == (
+        "the server is busy (every worker is taken); try again in a few seconds"
+    )
+
+
+def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
+    page = client.get("/")
+    assert page.status_code == 200 and page.headers["content-type"].startswith("text/html")
+    assert "<html" in page.text.lower()
+    assert client.get("/static/index.html").text == page.text
+    assert client.get("/static/../../__init__.py").status_code == 404
+    schema = client.get("/openapi.json").json()
+    assert set(schema["paths"]) >= {f"/api/{e}" for e in ("toss", "probability", "basin",
+                                                          "bias", "data")}  # fmt: skip
+    names = {p["name"] for p in schema["paths"]["/api/toss"]["get"]["parameters"]}
+    assert {"omega", "flight_time", "coin", "trajectory"} <= names
+
+
+def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
+    assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
+    assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")

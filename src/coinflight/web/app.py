@@ -8,7 +8,7 @@ from contextlib import asynccontextmanager
 from importlib.resources import as_file, files
 from typing import Any
 
-from fastapi import FastAPI, Request
+from fastapi import Depends, FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
@@ -54,6 +54,7 @@ def create_app(
             "starts, or 503 after the time limit."
         ),
         lifespan=lifespan,
+        dependencies=[Depends(_known_parameters)],
     )
     app.state.runner = runner
     _errors(app)
@@ -252,6 +253,19 @@ def create_app(
         return await answer(endpoints.data, dataset, interval, psi_sd)
 
     return app
+
+
+async def _known_parameters(request: Request) -> None:
+    """A parameter the endpoint does not take is an error, as an unknown option is on the
+    command line (a typo such as ``flight-time=`` is not silently ignored)."""
+    route = request.scope.get("route")
+    dependant = getattr(route, "dependant", None)
+    if dependant is None:
+        return
+    known = {param.alias for param in dependant.query_params}
+    for name in request.query_params:
+        if name not in known:
+            raise ValueError(f"No such option: {p.flag(name)}")
 
 
 def _errors(app: FastAPI) -> None:
