@@ -475,6 +475,15 @@ export class Explorer {
     this.el("toss-turns").textContent = flip ? "rotations" : "turns of n about S";
     this.el("toss-psi").textContent = `${r.psi_deg.toFixed(1)}°`;
     this.el("toss-text").textContent = tossLines(r).join("\n");
+    // Too fast to draw: fewer than 8 samples a turn and the blend between samples would turn
+    // the coin the short way round (a stroboscope). Say so; the face and the numbers stay exact.
+    const samples = this.traj.time.length;
+    const perTurn = (samples - 1) / Math.max(r.rotations, 1e-12);
+    const note = this.el("sample-note");
+    note.hidden = perTurn >= 8;
+    note.textContent =
+      `${r.rotations.toFixed(1)} turns drawn from ${samples} instants: too fast to follow every ` +
+      "turn (the motion shown between instants is not the coin's); the face and counts are exact.";
     if (this.renderer) {
       this.coinMesh.scale.z = r.coin.thickness / r.coin.radius / 0.144;
       this.setCone(this.traj.S, r.psi);
