@@ -372,23 +372,46 @@ def test_same_side_follows_the_psi_slider_and_shows_the_real_flips(page: Any, se
     assert page.problems.messages == []
 
 
-PANEL_COLOURS = {
-    # panel: colours that must cover a share of its picture (the drawing, not only the legend)
-    "explorer": {HEADS: 0.005},
-    "basin": {HEADS: 0.10, TAILS: 0.10},
-    "probability": {HEADS: 0.005, TAILS: 0.005},
-    "same-side": {HEADS: 0.002},
-}
+PANELS = ["explorer", "basin", "probability", "same-side"]
 
 
-@pytest.mark.parametrize("panel", list(PANEL_COLOURS))
+@pytest.mark.parametrize("panel", PANELS)
 def test_panel_screenshots_are_not_blank(page: Any, shots: Path, panel: str) -> None:
     ready(page, panel)
     path = shots / f"{panel}.png"
     page.locator(f"#{panel}").screenshot(path=str(path))
-    rgb = assert_nontrivial(path, min_side=300)
-    for colour, share in PANEL_COLOURS[panel].items():
-        assert colour_fraction(rgb, colour, tol=20) > share, (panel, colour)
+    assert_nontrivial(path, min_side=300)
+
+
+VERMILLION = "#D55E00"  # S, the angular momentum
+CONE = "#EEDCE4"  # the cone: reddish purple #CC79A7 at 22 % over the scene's #F8F8F5
+GREEN = "#009E73"  # the real flips
+DRAWINGS = {
+    # element: {colour: least share of its pixels}; each colour is drawn there, not a legend's
+    "scene": {HEADS: 0.005, VERMILLION: 0.001, CONE: 0.01},  # coin face up, S, the cone
+    "height-canvas": {HEADS: 0.01, TAILS: 0.01},  # the face-up strip along the flight
+    "basin-canvas": {HEADS: 0.15, TAILS: 0.15},  # the map
+    "psi-canvas": {HEADS: 0.002, GREEN: 0.001},  # p(ψ) and the flips' rate
+    "prob-bar": {HEADS: 0.3, TAILS: 0.3},  # P(heads) ≈ 0.497 of the bar
+}
+
+
+@pytest.mark.parametrize("element", list(DRAWINGS))
+def test_every_drawing_shows_what_it_draws(page: Any, shots: Path, element: str) -> None:
+    """The 3-D view (WebGL), the canvases and the bar each show their own colours."""
+    for panel in PANELS:
+        ready(page, panel)
+    if element == "scene":  # at launch: the coin lies flat, its heads face up to the camera
+        page.eval_on_selector(
+            "#time", "el => { el.value = 0; el.dispatchEvent(new Event('input', {bubbles: true})); }"
+        )
+    path = shots / f"drawing-{element}.png"
+    page.locator(f"#{element}").screenshot(path=str(path))
+    rgb = load_rgb(path)
+    if element != "prob-bar":  # a bar a line high
+        assert_nontrivial(path, min_side=100)
+    for colour, share in DRAWINGS[element].items():
+        assert colour_fraction(rgb, colour, tol=20) > share, (element, colour)
 
 
 @pytest.mark.parametrize(
