@@ -275,18 +275,61 @@ def test_changing_the_spin_shows_the_face_the_api_gives(
     assert page.problems.messages == []
 
 
-def test_an_api_refusal_is_shown_in_the_page(page: Any, server: str) -> None:
-    status, line = refusal(server, "/api/toss", omega="80,0,0", flight_time=0, coin="us-quarter")
+REFUSALS = {
+    # panel: (inputs to fill, button to press, the same request to the API, the error line)
+    "explorer": ({"#T": "0"}, None, ("/api/toss", {"omega": "80,0,0", "flight_time": "0"}), "toss"),
+    "basin": (
+        {"#basin-T-lo": "1.5"},
+        "#basin-run",
+        ("/api/basin", {"flight_time": "1.5:1.0", "omega_x": "0:100", "resolution": "200"}),
+        "basin",
+    ),
+    "probability": (
+        {"#prob-n": "100000000000"},
+        "#prob-run",
+        (
+            "/api/probability",
+            {
+                "omega_x": "60:90",
+                "flight_time": "0.6:0.9",
+                "method": "monte-carlo",
+                "n": "100000000000",
+            },
+        ),
+        "prob",
+    ),
+    "same-side": ({"#psi": "200"}, None, ("/api/bias", {"psi": "200"}), "psi"),
+}
+
+
+@pytest.mark.parametrize("panel", list(REFUSALS))
+def test_an_api_refusal_is_shown_in_the_page(page: Any, server: str, panel: str) -> None:
+    """Bad input: the server's one line (HTTP 422) appears in the panel, the last answer is
+    greyed (the panel's state "error"), and goes when the input is put right."""
+    ready(page, panel)
+    fills, button, (path, params), prefix = REFUSALS[panel]
+    status, line = refusal(server, path, **params)
     assert status == 422
-    page.fill("#T", "0")
-    error = page.locator("#toss-error")
+    assert "\n" not in line
+    if panel == "probability":
+        page.select_option("#prob-method", "monte-carlo")
+    before = {selector: page.locator(selector).input_value() for selector in fills}
+    for selector, value in fills.items():
+        page.fill(selector, value)
+    if button:
+        page.click(button)
+    error = page.locator(f"#{prefix}-error")
     error.wait_for(state="visible")
     assert error.text_content() == line
-    assert "\n" not in line
+    assert page.locator(f"#{panel}").get_attribute("data-state") == "error"
     # Put right, the error goes.
-    page.fill("#T", "0.7")
+    for selector, value in before.items():
+        page.fill(selector, value)
+    if button:
+        page.click(button)
     error.wait_for(state="hidden")
-    assert page.locator("#toss-face").text_content() == "HEADS"
+    ready(page, panel)
+    assert page.locator(f"#{panel}").get_attribute("data-state") == "ready"
 
 
 def test_a_click_on_the_basin_map_tosses_that_point(page: Any, server: str) -> None:
@@ -403,7 +446,8 @@ def test_every_drawing_shows_what_it_draws(page: Any, shots: Path, element: str)
         ready(page, panel)
     if element == "scene":  # at launch: the coin lies flat, its heads face up to the camera
         page.eval_on_selector(
-            "#time", "el => { el.value = 0; el.dispatchEvent(new Event('input', {bubbles: true})); }"
+            "#time",
+            "el => { el.value = 0; el.dispatchEvent(new Event('input', {bubbles: true})); }",
         )
     path = shots / f"drawing-{element}.png"
     page.locator(f"#{element}").screenshot(path=str(path))
