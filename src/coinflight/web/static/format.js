@@ -59,7 +59,7 @@ export function describeDistribution(name, d) {
   const unit = UNITS[name] ? ` ${UNITS[name]}` : "";
   if (d.kind === "fixed") return `${name} = ${fmtG(d.value)}${unit}`;
   if (d.kind === "uniform") return `${name} = ${fmtG(d.low)}–${fmtG(d.high)}${unit}`;
-  if (d.kind === "normal") return `${name} = normal(${fmtG(d.mean)}, ${fmtG(d.sd)})${unit}`;
+  if (d.kind === "normal") return `${name} = normal(${fmtG(d.mean)}, sd ${fmtG(d.sd)})${unit}`;
   return `${name} = ${JSON.stringify(d)}`;
 }
 

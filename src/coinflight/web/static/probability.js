@@ -1,7 +1,7 @@
 // Probability: P(heads) over ranges of spin and flight time (/api/probability), printed as
 // `coinflight probability` prints it.
 import { ApiError, getJSON, latest, showError } from "./api.js";
-import { probabilityLines } from "./format.js";
+import { fmtG, probabilityLines } from "./format.js";
 
 /** A parameter as the command line takes it: one number (fixed) or LOW:HIGH (uniform). */
 function spec(lo, hi) {
@@ -65,7 +65,7 @@ export class Probability {
       this.el("prob-p").textContent = r.p_heads.toFixed(6);
       this.el("prob-unc").textContent =
         r.stderr != null
-          ? `± ${r.stderr.toPrecision(2)} (standard error), 95 % interval ${r.ci95[0].toFixed(4)} – ${r.ci95[1].toFixed(4)}`
+          ? `± ${fmtG(r.stderr, 2)} (standard error), 95 % interval ${r.ci95[0].toFixed(4)} – ${r.ci95[1].toFixed(4)}`
           : r.method === "exact"
             ? "exact (closed form: no sampling error)"
             : "";
