@@ -5,7 +5,7 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.installed-docs
 
-.PHONY: demo test lint docs bench clean
+.PHONY: demo test lint docs bench clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -31,8 +31,27 @@ docs: $(DOCS_STAMP)
 	MPLBACKEND=Agg $(BIN)/sphinx-build -W --keep-going -b html docs docs/_build/html
 	@echo "open docs/_build/html/index.html"
 
+# The browser tests (tests/test_web_browser.py) drive Debian's Chromium through Playwright; they
+# never use Playwright's own browser download (`playwright install` needs the internet). Install
+# the system package when it is missing: as root, or through sudo. Where it cannot be installed
+# the tests skip on a workstation and fail under CI=true.
+CHROMIUM ?= /usr/bin/chromium
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+chromium:
+	@if [ -x "$(CHROMIUM)" ]; then \
+		echo "chromium: $(CHROMIUM)"; \
+	elif ! command -v apt-get >/dev/null; then \
+		echo "chromium: $(CHROMIUM) missing and no apt-get here; the browser tests cannot run"; \
+	else \
+		apt-cache policy chromium 2>/dev/null | grep -q 'Candidate: [0-9]' \
+			|| $(SUDO) apt-get update -q || true; \
+		$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -q chromium \
+			|| echo "chromium: could not install Debian's chromium; the browser tests cannot run"; \
+	fi
+
 # CI runs `make test` only: it builds the documentation too.
-test: lint docs
+test: lint docs chromium
 	$(BIN)/python -m pytest
 
 bench: $(STAMP)

@@ -1,0 +1,84 @@
+// The JSON API behind the page: one GET per question, the same answers as `coinflight … --json`.
+
+/** An answer the server refused (HTTP 4xx/5xx): `message` is its one line. */
+export class ApiError extends Error {
+  constructor(message, status) {
+    super(message);
+    this.name = "ApiError";
+    this.status = status;
+  }
+}
+
+/** The one line a refusal carries, whatever the envelope (`detail` as text or FastAPI's list). */
+function refusal(body, status) {
+  if (body && typeof body === "object") {
+    const d = body.detail ?? body.error ?? body.message;
+    if (typeof d === "string") return d;
+    if (Array.isArray(d) && d.length) {
+      return d.map((e) => (typeof e === "string" ? e : e.msg || JSON.stringify(e))).join("; ");
+    }
+  }
+  return `the server answered HTTP ${status}`;
+}
+
+/** GET `path` with query `params` (null and "" left out); the decoded JSON or an ApiError. */
+export async function getJSON(path, params = {}, { signal } = {}) {
+  const query = new URLSearchParams();
+  for (const [key, value] of Object.entries(params)) {
+    if (value !== null && value !== undefined && value !== "") query.set(key, String(value));
+  }
+  const url = query.toString() ? `${path}?${query}` : path;
+  let response;
+  try {
+    response = await fetch(url, { signal, headers: { Accept: "application/json" } });
+  } catch (err) {
+    if (err.name === "AbortError") throw err;
+    throw new ApiError("the coinflight server does not answer (is `coinflight serve` running?)", 0);
+  }
+  let body = null;
+  try {
+    body = await response.json();
+  } catch {
+    body = null;
+  }
+  if (!response.ok) throw new ApiError(refusal(body, response.status), response.status);
+  return body;
+}
+
+/**
+ * Run `task` (given an AbortSignal) at most once at a time: a newer call cancels the older one,
+ * so a slider dragged fast shows the answer for where it stopped, never an older one.
+ */
+export function latest(task) {
+  let controller = null;
+  return async (...args) => {
+    if (controller) controller.abort();
+    const mine = new AbortController();
+    controller = mine;
+    try {
+      return await task(mine.signal, ...args);
+    } finally {
+      if (controller === mine) controller = null;
+    }
+  };
+}
+
+/** Show `err` in the panel's error line (or clear it when `err` is null). */
+export function showError(element, err) {
+  if (!err) {
+    element.textContent = "";
+    element.hidden = true;
+    return;
+  }
+  element.textContent = err instanceof ApiError ? err.message : `error: ${err.message || err}`;
+  element.hidden = false;
+}
+
+/** Call `fn` once `ms` milliseconds have passed without another call. */
+export function debounce(fn, ms) {
+  let timer = null;
+  return (...args) => {
+    clearTimeout(timer);
+    timer = setTimeout(() => fn(...args), ms);
+  };
+}
