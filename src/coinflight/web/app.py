@@ -12,13 +12,27 @@ from fastapi import Depends, FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
+from pydantic import BaseModel
 
 from coinflight import __version__
 from coinflight.queries.encoding import json_text
 from coinflight.web import params as p
-from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner
+from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
 
 JSON = "application/json"
+
+
+class OneLine(BaseModel):
+    """A refusal: one line naming the value and what is allowed (the command line's words)."""
+
+    detail: str
+
+
+ANSWERS: dict[int | str, dict[str, Any]] = {
+    200: {"content": {JSON: {}}, "description": "The object of the command's --json."},
+    422: {"model": OneLine, "description": "A bad value, or work beyond the server's limits."},
+    503: {"model": OneLine, "description": "Over the time limit, or every worker busy."},
+}
 
 
 def create_app(
@@ -31,16 +45,24 @@ def create_app(
     time_limit : float
         Seconds a request may compute; beyond it the answer is HTTP 503 with one line.
     workers : int or None
-        Worker threads computing answers (default: the CPU count, 2 to 8).
+        Worker processes computing answers (default: the CPU count, 1 to 4).
     backlog : int
         Requests that may wait for a worker; beyond them HTTP 503 ("busy") at once.
     """
-    runner = Runner(workers, time_limit, backlog)
+    check_runner(workers, time_limit, backlog)
+    running: list[Runner] = []  # the pool, while the application runs (its lifespan)
 
     @asynccontextmanager
-    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
-        yield
-        runner.close()
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        runner = Runner(workers, time_limit, backlog)
+        try:
+            await runner.start()
+            running.append(runner)
+            app.state.runner = runner
+            yield
+        finally:
+            running.clear()
+            runner.close()
 
     app = FastAPI(
         title="coinflight",
@@ -56,15 +78,16 @@ def create_app(
         lifespan=lifespan,
         dependencies=[Depends(_known_parameters)],
     )
-    app.state.runner = runner
     _errors(app)
     _static(app)
 
     async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
-        """``fn(*args)`` as JSON text, computed and encoded in a worker thread."""
-        return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
+        """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
+        if not running:
+            raise Overloaded("the server is starting or stopping; try again in a few seconds")
+        return Response(await running[0].run(_encoded, fn, *args), media_type=JSON)
 
-    @app.get("/api/toss", tags=["toss"], response_class=Response)
+    @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
         omega: p.Omega = "80,0,0",
         flight_time: p.FlightTime = None,
@@ -101,7 +124,7 @@ def create_app(
             trajectory,
         )
 
-    @app.get("/api/probability", tags=["probability"], response_class=Response)
+    @app.get("/api/probability", tags=["probability"], response_class=Response, responses=ANSWERS)
     async def probability(
         request: Request,
         omega_x: p.OmegaX = "80",
@@ -161,10 +184,10 @@ def create_app(
             p.table_args(surface, drop_height, restitution, friction),
             p.air_args(drag, spin_damping),
             options,
-            runner.time_limit,
+            time_limit,
         )
 
-    @app.get("/api/basin", tags=["basin"], response_class=Response)
+    @app.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
     async def basin(
         flight_time: p.FlightTimeRange = None,
         launch_speed: p.LaunchSpeedRange = None,
@@ -211,10 +234,10 @@ def create_app(
             p.table_args(surface, drop_height, restitution, friction),
             bounces,
             boundaries,
-            runner.time_limit,
+            time_limit,
         )
 
-    @app.get("/api/bias", tags=["bias"], response_class=Response)
+    @app.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
     async def bias(
         psi: p.Psi = None,
         psi_dist: p.PsiDist = None,
@@ -238,10 +261,10 @@ def create_app(
             preset,
             monte_carlo,
             seed,
-            runner.time_limit,
+            time_limit,
         )
 
-    @app.get("/api/data", tags=["data"], response_class=Response)
+    @app.get("/api/data", tags=["data"], response_class=Response, responses=ANSWERS)
     async def data(
         dataset: p.Dataset = None,
         interval: p.Interval = "exact",
