@@ -267,6 +267,9 @@ def test_changing_the_spin_shows_the_face_the_api_gives(
     assert page.locator("#toss-face").text_content() == answer["outcome"].upper()
     assert page.locator("#toss-rotations").text_content() == f"{answer['rotations']:.4f}"
     assert page.locator("#scene").get_attribute("data-face-up") == answer["outcome"]
+    cli = runner.invoke(app, ["toss", "--omega", str(wx), "0", "0", "--flight-time", "0.7"])
+    assert cli.exit_code == 0, cli.output
+    assert page.locator("#toss-text").text_content() == cli.stdout.rstrip("\n")
     # The time slider walks the flight: at launch the coin shows its start face.
     page.eval_on_selector(
         "#time", "el => { el.value = 0; el.dispatchEvent(new Event('input', {bubbles: true})); }"
