@@ -5,14 +5,20 @@ from __future__ import annotations
 
 import json
 import math
+import signal
+import subprocess
+import sys
 import time
 
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 from typer.testing import CliRunner
 
+from _web_server import serving
 from coinflight.cli import app as cli_app
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
 from coinflight.web import create_app
@@ -303,54 +309,46 @@ def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
 
 
 # --- time, the page, the schema ----------------------------------------------------------------
-def test_a_request_over_its_time_limit_is_503_and_the_server_keeps_serving(monkeypatch):
-    """A request whose work runs past the time limit (here a data summary made to take 2 s) is
-    answered 503 with one line when the limit is up, not when the work ends; requests after it
-    are answered while the abandoned work finishes in its worker."""
-    from coinflight.web import endpoints
-
-    slow_data = endpoints.data
-
-    def slow(*args):
-        time.sleep(2.0)
-        return slow_data(*args)
-
-    monkeypatch.setattr(endpoints, "data", slow)
-    with TestClient(create_app(time_limit=0.3, workers=2)) as c:
+def test_a_request_over_its_time_limit_is_503_and_its_worker_is_ended():
+    """An exact quadrature the library gives up only after about 100 s (a kinked integrand in
+    two dimensions) is answered 503 with one line when the 3 s limit is up; its worker is ended
+    and replaced, so that with one worker the next request is answered at once."""
+    slow = "/api/probability?omega_x=60:90&omega_z=0:5&flight_time=0.6:0.9&method=exact"
+    with TestClient(create_app(time_limit=3, workers=1)) as c:
         started = time.perf_counter()
-        detail = api_error(c, "/api/data", status=503)
-        assert time.perf_counter() - started < 1.5
+        detail = api_error(c, slow, status=503)
+        assert time.perf_counter() - started < 10
         assert detail == (
-            "the request ran over the server's time limit of 0.3 s; ask for less work "
+            "the request ran over the server's time limit of 3 s; ask for less work "
             "(a smaller n, a coarser resolution)"
         )
-        assert c.get("/api/bias?psi=80").status_code == 200
+        started = time.perf_counter()
         assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
+        assert time.perf_counter() - started < 3  # not behind the abandoned quadrature
+        assert c.get("/api/bias?psi=80").status_code == 200
 
 
 def test_every_worker_taken_is_503_busy_at_once():
     """No queue without end: with one worker and no backlog, a second request while the first
-    runs is refused at once."""
+    runs is refused at once; the slot comes back when the first ends."""
     import asyncio
-    import threading
+    import os
 
     from coinflight.web.runner import Overloaded, Runner
 
-    release = threading.Event()
-
     async def scenario() -> str:
-        runner = Runner(workers=1, time_limit=10, backlog=0)
-        first = asyncio.ensure_future(runner.run(release.wait, 10))
-        await asyncio.sleep(0.05)
+        runner = Runner(workers=1, time_limit=30, backlog=0)
+        await runner.start()
+        first = asyncio.ensure_future(runner.run(time.sleep, 1.0))
+        await asyncio.sleep(0.1)
         try:
-            await runner.run(lambda: None)
+            await runner.run(os.getpid)
         except Overloaded as exc:
             message = str(exc)
         else:
             message = ""
-        release.set()
-        assert await first is True
-        assert await runner.run(lambda: 42) == 42  # the slot came back
+        assert await first is None
+        assert isinstance(await runner.run(os.getpid), int)  # the slot came back
         runner.close()
         return message
 
@@ -364,14 +362,173 @@ def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
     assert page.status_code == 200 and page.headers["content-type"].startswith("text/html")
     assert "<html" in page.text.lower()
     assert client.get("/static/index.html").text == page.text
-    assert client.get("/static/../../__init__.py").status_code == 404
+    for escape in (
+        "/static/%2e%2e/app.py",
+        "/static/..%2fapp.py",
+        "/static/%2e%2e/%2e%2e/_files.py",
+    ):
+        assert client.get(escape).status_code == 404  # nothing outside static/ is served
     schema = client.get("/openapi.json").json()
     assert set(schema["paths"]) >= {f"/api/{e}" for e in ("toss", "probability", "basin",
                                                           "bias", "data")}  # fmt: skip
-    names = {p["name"] for p in schema["paths"]["/api/toss"]["get"]["parameters"]}
-    assert {"omega", "flight_time", "coin", "trajectory"} <= names
+    toss = schema["paths"]["/api/toss"]["get"]
+    assert {"omega", "flight_time", "coin", "trajectory"} <= {p["name"] for p in toss["parameters"]}
+    refusal = toss["responses"]["422"]["content"]["application/json"]["schema"]["$ref"]
+    assert schema["components"]["schemas"][refusal.rsplit("/", 1)[1]]["properties"] == {
+        "detail": {"type": "string", "title": "Detail"}
+    }
 
 
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
     assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
     assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")
+
+
+# --- a real server -------------------------------------------------------------------------------
+def test_coinflight_serve_answers_over_http_on_loopback():
+    """``coinflight serve --port 0`` binds 127.0.0.1 on a free port, prints its address, answers
+    the CLI's JSON over real HTTP, refuses a second server on its port (one line, exit 2) and
+    stops on Ctrl-C."""
+    import httpx2
+
+    with serving() as server:
+        assert server.url.startswith("http://127.0.0.1:")
+        with httpx2.Client(base_url=server.url, timeout=60) as http:
+            got = http.get("/api/toss", params={"omega": "90,30,0", "flight_time": "0.65"})
+            assert got.status_code == 200
+            assert got.json() == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
+                                          "0.65")  # fmt: skip
+            assert http.get("/").status_code == 200
+            bad = http.get("/api/toss", params={"flight_time": "abc"})
+            assert (bad.status_code, bad.json()) == (
+                422, {"detail": "Invalid value for '--flight-time': 'abc' is not a number"}
+            )  # fmt: skip
+        second = subprocess.run(
+            [sys.executable, "-m", "coinflight", "serve", "--port", str(server.port)],
+            capture_output=True, text=True, timeout=60,
+        )  # fmt: skip
+        assert second.returncode == 2
+        assert second.stderr == (
+            f"coinflight: error: port {server.port} on 127.0.0.1 is in use; choose another "
+            "with --port (0: any free port)\n"
+        )
+        server.process.send_signal(signal.SIGINT)
+        assert server.process.wait(timeout=20) in (0, 130)
+
+
+def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
+    with serving("--host", "0.0.0.0", "--port", "0") as server:
+        assert server.url.startswith("http://0.0.0.0:")
+        server.process.send_signal(signal.SIGINT)
+        server.process.wait(timeout=20)
+        warning = server.process.stderr.read().splitlines()[0]
+    assert warning.startswith("coinflight: warning: --host 0.0.0.0 serves coinflight to every ")
+    result = cli.invoke(cli_app, ["serve", "--port", "70000"])
+    assert result.exit_code == 2
+    assert result.stderr.strip().splitlines() == [
+        "coinflight: error: Invalid value for '--port': Input should be less than or equal to 65535"
+    ]
+
+
+# --- generated hostile requests ----------------------------------------------------------------
+HOSTILE = [
+    "nan", "inf", "-inf", "1e308", "-1e308", "1e-320", "0", "-1", "abc", "", " ", "1,2", "60:",
+    ":", "90:60", "normal:80,-1", "normal:", "60:90:120", "½", "9223372036854775808", "2.5",
+    "%00", "../etc/passwd", "x" * 300,
+]  # fmt: skip
+ENDPOINTS = {
+    "toss": {
+        "omega": ["80,0,0", "90,30,10", "1e308,0,0", "nan,0,0", "80,0"],
+        "flight_time": ["0.7", "0.3", "1e4"], "launch_speed": ["3"], "start": ["heads", "tails"],
+        "g": ["9.81", "1.62"], "coin": ["eur-1", "us-dime"], "surface": ["hand", "table"],
+        "drop_height": ["0.3"], "bounces": ["0", "3"], "trajectory": ["2", "50", "2000"],
+    },
+    "probability": {
+        "omega_x": ["60:90", "normal:240,24", "80"], "omega_y": ["0", "0:20"],
+        "omega_z": ["0", "0:5"], "flight_time": ["0.6:0.9", "normal:0.5,0.05", "0.7"],
+        "method": ["exact", "grid", "monte-carlo", "qmc"], "n": ["50", "2000", "10000000000000"],
+        "seed": ["1", "-5"], "preset": ["human"], "grid_cells": ["10"],
+    },
+    "basin": {
+        "omega_x": ["60:90", "100:200"], "flight_time": ["0.6:0.9"], "omega_z": ["0", "20"],
+        "psi": ["60", "90"], "precession_rate": ["100:200"], "resolution": ["20", "30x10"],
+        "boundaries": ["true", "false"],
+    },
+    "bias": {
+        "psi": ["80", "45", "180"], "psi_dist": ["normal:80,5", "70:90"], "preset": ["human"],
+        "monte_carlo": ["100", "5000"], "seed": ["3"],
+    },
+    "data": {
+        "interval": ["exact", "wilson"], "psi_sd": ["0", "5", "80"], "dataset": ["bartos2023"],
+    },
+}  # fmt: skip
+
+
+BASE = {
+    "toss": {"flight_time": "0.7"},
+    "probability": {"omega_x": "60:90", "flight_time": "0.6:0.9"},
+    "bias": {"psi": "80"},
+}
+"""What each request starts from, so that most generated requests reach the physics."""
+
+
+@st.composite
+def _request(draw, endpoint: str) -> dict[str, str]:
+    options = ENDPOINTS[endpoint]
+    names = draw(st.lists(st.sampled_from(sorted(options)), max_size=4, unique=True))
+    return BASE.get(endpoint, {}) | {
+        name: draw(st.one_of(st.sampled_from(options[name]), st.sampled_from(options[name]),
+                             st.sampled_from(HOSTILE)))
+        for name in names
+    }  # fmt: skip
+
+
+def _probabilities(payload, key: str = ""):
+    if isinstance(payload, dict):
+        for k, value in payload.items():
+            yield from _probabilities(value, str(k))
+    elif isinstance(payload, list):
+        for value in payload:
+            yield from _probabilities(value, key)
+    elif key.startswith("p_") and isinstance(payload, float):
+        yield key, payload
+
+
+GENERATED_TIME_LIMIT = 5.0
+"""The time limit of the server the generated requests meet: heavy requests the budget lets
+through (an exact quadrature over a preset's spins) end as 503 after it, not after 30 s."""
+
+
+@pytest.fixture(scope="module")
+def quick_client():
+    with TestClient(create_app(time_limit=GENERATED_TIME_LIMIT)) as c:
+        yield c
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("endpoint", sorted(ENDPOINTS))
+def test_generated_requests_are_answered_or_refused_in_one_line(quick_client, endpoint):
+    """Whatever a hostile client sends: 200 with finite JSON and probabilities in [0, 1], 422
+    with one line, or 503 with the time limit's line; never a 500, never a traceback."""
+    client = quick_client
+
+    @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+    @given(params=_request(endpoint))
+    def run(params):
+        response = client.get(f"/api/{endpoint}", params=params)
+        context = f"/api/{endpoint} {params}: {response.status_code} {response.text[:300]}"
+        assert response.status_code in (200, 422, 503), context
+        body = response.json()
+        if response.status_code == 503:
+            assert body["detail"].startswith(
+                f"the request ran over the server's time limit of {GENERATED_TIME_LIMIT:g} s;"
+            ), context
+            return
+        if response.status_code == 422:
+            assert isinstance(body["detail"], str) and body["detail"], context
+            assert "\n" not in body["detail"] and "Traceback" not in body["detail"], context
+            return
+        for key, p in _probabilities(body):
+            assert 0.0 <= p <= 1.0, f"{context}\n{key} = {p}"
+
+    run()

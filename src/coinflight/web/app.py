@@ -12,6 +12,7 @@ from fastapi import Depends, FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
+from pydantic import BaseModel
 
 from coinflight import __version__
 from coinflight.queries.encoding import json_text
@@ -19,6 +20,19 @@ from coinflight.web import params as p
 from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner
 
 JSON = "application/json"
+
+
+class OneLine(BaseModel):
+    """A refusal: one line naming the value and what is allowed (the command line's words)."""
+
+    detail: str
+
+
+ANSWERS: dict[int | str, dict[str, Any]] = {
+    200: {"content": {JSON: {}}, "description": "The object of the command's --json."},
+    422: {"model": OneLine, "description": "A bad value, or work beyond the server's limits."},
+    503: {"model": OneLine, "description": "Over the time limit, or every worker busy."},
+}
 
 
 def create_app(
@@ -31,7 +45,7 @@ def create_app(
     time_limit : float
         Seconds a request may compute; beyond it the answer is HTTP 503 with one line.
     workers : int or None
-        Worker threads computing answers (default: the CPU count, 2 to 8).
+        Worker processes computing answers (default: the CPU count, 1 to 4).
     backlog : int
         Requests that may wait for a worker; beyond them HTTP 503 ("busy") at once.
     """
@@ -39,6 +53,7 @@ def create_app(
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        await runner.start()
         yield
         runner.close()
 
@@ -61,9 +76,10 @@ def create_app(
     _static(app)
 
     async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
-        return Response(json_text(await runner.run(fn, *args)), media_type=JSON)
+        """``fn(*args)`` as JSON text, computed and encoded in a worker thread."""
+        return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
 
-    @app.get("/api/toss", tags=["toss"], response_class=Response)
+    @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
         omega: p.Omega = "80,0,0",
         flight_time: p.FlightTime = None,
@@ -100,7 +116,7 @@ def create_app(
             trajectory,
         )
 
-    @app.get("/api/probability", tags=["probability"], response_class=Response)
+    @app.get("/api/probability", tags=["probability"], response_class=Response, responses=ANSWERS)
     async def probability(
         request: Request,
         omega_x: p.OmegaX = "80",
@@ -163,7 +179,7 @@ def create_app(
             runner.time_limit,
         )
 
-    @app.get("/api/basin", tags=["basin"], response_class=Response)
+    @app.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
     async def basin(
         flight_time: p.FlightTimeRange = None,
         launch_speed: p.LaunchSpeedRange = None,
@@ -213,7 +229,7 @@ def create_app(
             runner.time_limit,
         )
 
-    @app.get("/api/bias", tags=["bias"], response_class=Response)
+    @app.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
     async def bias(
         psi: p.Psi = None,
         psi_dist: p.PsiDist = None,
@@ -240,7 +256,7 @@ def create_app(
             runner.time_limit,
         )
 
-    @app.get("/api/data", tags=["data"], response_class=Response)
+    @app.get("/api/data", tags=["data"], response_class=Response, responses=ANSWERS)
     async def data(
         dataset: p.Dataset = None,
         interval: p.Interval = "exact",
@@ -253,6 +269,10 @@ def create_app(
         return await answer(endpoints.data, dataset, interval, psi_sd)
 
     return app
+
+
+def _encoded(fn: Callable[..., dict[str, Any]], *args: Any) -> str:
+    return json_text(fn(*args))
 
 
 async def _known_parameters(request: Request) -> None:
