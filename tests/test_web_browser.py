@@ -278,6 +278,39 @@ def test_changing_the_spin_shows_the_face_the_api_gives(
     assert page.problems.messages == []
 
 
+def test_launch_speed_gives_the_command_lines_toss(page: Any) -> None:
+    """v0 instead of T: the paper's toss again (v0 = g T / 2 = 3.4335 m/s)."""
+    page.check("input[name=by][value=v0]")
+    page.fill("#v0", "3.4335")
+    page.wait_for_function(
+        "() => document.querySelector('#toss-text').textContent.includes('launch speed 3.43 m/s')"
+        " && document.querySelector('#explorer').dataset.state === 'ready'"
+    )
+    cli = runner.invoke(app, ["toss", "--omega", "80", "0", "0", "--launch-speed", "3.4335"])
+    assert cli.exit_code == 0, cli.output
+    assert page.locator("#toss-text").text_content() == cli.stdout.rstrip("\n")
+    assert page.problems.messages == []
+
+
+def test_play_runs_the_flight_from_launch_to_the_catch(page: Any) -> None:
+    page.select_option("#speed", "1")  # real time: 0.7 s
+    page.click("#play")
+    assert page.locator("#play").get_attribute("aria-pressed") == "true"
+    page.wait_for_selector("#play[aria-pressed=false]")  # stops by itself at the catch
+    assert page.locator("#time-readout").text_content() == "t = 0.700 s of T = 0.700 s"
+    assert page.locator("#face-now").text_content() == "HEADS"
+    # Pause in the middle: the time stays where it was.
+    page.select_option("#speed", "0.03")
+    page.click("#play")
+    page.wait_for_timeout(500)
+    page.click("#play")
+    shown = page.locator("#time-readout").text_content()
+    page.wait_for_timeout(300)
+    assert page.locator("#time-readout").text_content() == shown
+    assert shown != "t = 0.700 s of T = 0.700 s"
+    assert page.problems.messages == []
+
+
 REFUSALS = {
     # panel: (inputs to fill, button to press, the same request to the API, the error line)
     "explorer": ({"#T": "0"}, None, ("/api/toss", {"omega": "80,0,0", "flight_time": "0"}), "toss"),
