@@ -34,7 +34,24 @@ TimeLimit = Annotated[
 ]
 
 
-def serve(host: Host = "127.0.0.1", port: Port = 8000, time_limit: TimeLimit = 30.0) -> None:
+Workers = Annotated[
+    int | None,
+    typer.Option(
+        "--workers",
+        min=1,
+        max=64,
+        metavar="N",
+        help="Worker processes computing answers \\[default: the CPU count, at most 4].",
+    ),
+]
+
+
+def serve(
+    host: Host = "127.0.0.1",
+    port: Port = 8000,
+    time_limit: TimeLimit = 30.0,
+    workers: Workers = None,
+) -> None:
     """Serve the interactive page and its JSON API (/api/..., /docs) until Ctrl-C.
 
     Example: coinflight serve, then open http://127.0.0.1:8000/
@@ -47,6 +64,7 @@ def serve(host: Host = "127.0.0.1", port: Port = 8000, time_limit: TimeLimit = 3
         host,
         port,
         time_limit=time_limit,
+        workers=workers,
         announce=_announce,
         warn=lambda line: say(f"coinflight: warning: {line}"),
     )

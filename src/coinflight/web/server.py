@@ -42,7 +42,6 @@ def bind(host: str, port: int) -> socket.socket:
         raise ValueError(
             f"port {port} on {host} {reason}; choose another with --port (0: any free port)"
         ) from None
-    sock.set_inheritable(True)
     return sock
 
 
@@ -57,20 +56,21 @@ def serve(
     port: int = 8000,
     *,
     time_limit: float = DEFAULT_TIME_LIMIT,
+    workers: int | None = None,
     announce: Callable[[str], None] = print,
     warn: Callable[[str], None] = print,
 ) -> None:
     """Serve :func:`coinflight.web.create_app` on ``host``:``port`` until interrupted.
 
-    ``announce`` receives the address once the socket is bound; ``warn`` a warning when
-    ``host`` is reachable from other machines.
+    ``announce`` receives the address once the socket is bound (requests wait until the
+    workers have started); ``warn`` a warning when ``host`` is reachable from other machines.
     """
     import uvicorn
 
     from coinflight.web.app import create_app
 
-    app = create_app(time_limit=time_limit)
-    sock = bind(host, port)
+    sock = bind(host, port)  # a port in use is refused before any worker starts
+    app = create_app(time_limit=time_limit, workers=workers)
     if not is_loopback(host):
         warn(
             f"--host {host} serves coinflight to every machine that can reach this one "
