@@ -423,6 +423,34 @@ def test_probability_is_printed_as_the_command_line_prints_it(page: Any) -> None
     assert page.problems.messages == []
 
 
+def test_the_monte_carlo_estimate_builds_up_from_one_run(page: Any, server: str) -> None:
+    """The build-up's points are the API's answers for fewer tosses from the answer's own seed
+    (the library makes a shorter run the start of a longer one; its streams are tested in
+    test_streams.py); here the heads counts are at least consistent with that."""
+    ready(page, "probability")
+    page.select_option("#prob-method", "monte-carlo")
+    page.fill("#prob-n", "20000")
+    page.fill("#prob-seed", "3")
+    page.click("#prob-run")
+    page.wait_for_selector("#buildup[data-state=ready]")
+    points = sorted(page.evaluate("window.coinflight.probability.points.map(p => [p[0], p[1]])"))
+    # n / 2^k for k = 8…0, of at least 100 tosses (20000 / 2^8 = 78 is left out).
+    assert [n for n, _ in points] == [156, 312, 625, 1250, 2500, 5000, 10000, 20000]
+    box = {"omega_x": "60:90", "flight_time": "0.6:0.9", "coin": "us-quarter"}
+    heads = []
+    for n, p in points:
+        answer = api(server, "/api/probability", **box, method="monte-carlo", n=n, seed=3)
+        assert p == answer["p_heads"]
+        heads.append(answer["counts"]["heads"])
+    exact = api(server, "/api/probability", **box, method="exact")["p_heads"]
+    assert f"exact value {exact:.6f}" in page.locator("#buildup-text").text_content()
+    # Necessary for prefixes of one run: a longer run has at least the heads of a shorter one,
+    # and at most as many more as it has more tosses.
+    for (n0, _), (n1, _), h0, h1 in zip(points, points[1:], heads, heads[1:], strict=False):
+        assert 0 <= h1 - h0 <= n1 - n0
+    assert page.problems.messages == []
+
+
 def _p_line(text: str) -> str:
     return next(line for line in text.splitlines() if line.startswith("P(heads)"))
 
