@@ -17,7 +17,7 @@ from pydantic import BaseModel
 from coinflight import __version__
 from coinflight.queries.encoding import json_text
 from coinflight.web import params as p
-from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner
+from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
 
 JSON = "application/json"
 
@@ -49,13 +49,20 @@ def create_app(
     backlog : int
         Requests that may wait for a worker; beyond them HTTP 503 ("busy") at once.
     """
-    runner = Runner(workers, time_limit, backlog)
+    check_runner(workers, time_limit, backlog)
+    running: list[Runner] = []  # the pool, while the application runs (its lifespan)
 
     @asynccontextmanager
-    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
-        await runner.start()
-        yield
-        runner.close()
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        runner = Runner(workers, time_limit, backlog)
+        try:
+            await runner.start()
+            running.append(runner)
+            app.state.runner = runner
+            yield
+        finally:
+            running.clear()
+            runner.close()
 
     app = FastAPI(
         title="coinflight",
@@ -71,13 +78,14 @@ def create_app(
         lifespan=lifespan,
         dependencies=[Depends(_known_parameters)],
     )
-    app.state.runner = runner
     _errors(app)
     _static(app)
 
     async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
-        """``fn(*args)`` as JSON text, computed and encoded in a worker thread."""
-        return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
+        """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
+        if not running:
+            raise Overloaded("the server is starting or stopping; try again in a few seconds")
+        return Response(await running[0].run(_encoded, fn, *args), media_type=JSON)
 
     @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
@@ -176,7 +184,7 @@ def create_app(
             p.table_args(surface, drop_height, restitution, friction),
             p.air_args(drag, spin_damping),
             options,
-            runner.time_limit,
+            time_limit,
         )
 
     @app.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
@@ -226,7 +234,7 @@ def create_app(
             p.table_args(surface, drop_height, restitution, friction),
             bounces,
             boundaries,
-            runner.time_limit,
+            time_limit,
         )
 
     @app.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
@@ -253,7 +261,7 @@ def create_app(
             preset,
             monte_carlo,
             seed,
-            runner.time_limit,
+            time_limit,
         )
 
     @app.get("/api/data", tags=["data"], response_class=Response, responses=ANSWERS)

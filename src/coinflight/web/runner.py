@@ -36,6 +36,15 @@ def default_workers() -> int:
     return max(1, min(4, os.cpu_count() or 1))
 
 
+def check_runner(workers: int | None, time_limit: float, backlog: int) -> None:
+    """ValueError unless workers ≥ 1 (or None: the default), backlog ≥ 0, time limit > 0 s."""
+    if (workers is not None and workers < 1) or backlog < 0 or not time_limit > 0:
+        raise ValueError(
+            f"a runner needs workers ≥ 1, backlog ≥ 0 and a time limit > 0 s; got "
+            f"{workers}, {backlog}, {time_limit}"
+        )
+
+
 class Overloaded(Exception):
     """The request was not answered in time, or every worker is taken (HTTP 503)."""
 
@@ -52,12 +61,8 @@ class Runner:
     ) -> None:
         from pebble import ProcessPool
 
+        check_runner(workers, time_limit, backlog)
         workers = default_workers() if workers is None else workers
-        if workers < 1 or backlog < 0 or not time_limit > 0:
-            raise ValueError(
-                f"a runner needs workers ≥ 1, backlog ≥ 0 and a time limit > 0 s; got "
-                f"{workers}, {backlog}, {time_limit}"
-            )
         self.workers = workers
         self.time_limit = float(time_limit)
         context = multiprocessing.get_context("forkserver")
@@ -111,4 +116,4 @@ class Runner:
         self._pool.join(timeout=10)
 
 
-__all__ = ["DEFAULT_TIME_LIMIT", "Overloaded", "Runner", "default_workers"]
+__all__ = ["DEFAULT_TIME_LIMIT", "Overloaded", "Runner", "check_runner", "default_workers"]
