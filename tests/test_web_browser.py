@@ -451,6 +451,22 @@ def test_the_monte_carlo_estimate_builds_up_from_one_run(page: Any, server: str)
     assert page.problems.messages == []
 
 
+def test_a_seed_drawn_by_the_server_is_kept_to_the_last_digit(page: Any, server: str) -> None:
+    """No seed given: the server draws one (up to 128 bits, beyond JavaScript's exact
+    integers); the page prints it and asks for the same run with it, digit for digit."""
+    ready(page, "probability")
+    page.select_option("#prob-method", "monte-carlo")
+    page.fill("#prob-n", "2000")
+    page.click("#prob-run")
+    page.wait_for_selector("#buildup[data-state=ready]")
+    seed = re.search(r"seed (\d+);", page.locator("#prob-text").text_content())
+    assert seed, page.locator("#prob-text").text_content()
+    box = {"omega_x": "60:90", "flight_time": "0.6:0.9", "coin": "us-quarter"}
+    again = api(server, "/api/probability", **box, method="monte-carlo", n=2000, seed=seed[1])
+    assert page.locator("#prob-result").get_attribute("data-p-heads") == repr(again["p_heads"])
+    assert page.problems.messages == []
+
+
 def _p_line(text: str) -> str:
     return next(line for line in text.splitlines() if line.startswith("P(heads)"))
 

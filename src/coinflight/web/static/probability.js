@@ -64,6 +64,11 @@ export class Probability {
    */
   async buildUp(r, signal) {
     const box = this.el("buildup");
+    if (typeof r.seed === "number" && !Number.isSafeInteger(r.seed)) {
+      // This browser rounded the seed (no JSON source access): it cannot ask for the same run.
+      this.hideBuildUp();
+      return;
+    }
     box.hidden = false;
     box.dataset.state = "loading";
     const q = { ...this.query(), seed: r.seed };
