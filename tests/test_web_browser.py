@@ -267,11 +267,47 @@ def test_changing_the_spin_shows_the_face_the_api_gives(
     assert page.locator("#toss-face").text_content() == answer["outcome"].upper()
     assert page.locator("#toss-rotations").text_content() == f"{answer['rotations']:.4f}"
     assert page.locator("#scene").get_attribute("data-face-up") == answer["outcome"]
+    cli = runner.invoke(app, ["toss", "--omega", str(wx), "0", "0", "--flight-time", "0.7"])
+    assert cli.exit_code == 0, cli.output
+    assert page.locator("#toss-text").text_content() == cli.stdout.rstrip("\n")
     # The time slider walks the flight: at launch the coin shows its start face.
     page.eval_on_selector(
         "#time", "el => { el.value = 0; el.dispatchEvent(new Event('input', {bubbles: true})); }"
     )
     assert page.locator("#face-now").text_content() == "HEADS"
+    assert page.problems.messages == []
+
+
+def test_launch_speed_gives_the_command_lines_toss(page: Any) -> None:
+    """v0 instead of T: the paper's toss again (v0 = g T / 2 = 3.4335 m/s)."""
+    page.check("input[name=by][value=v0]")
+    page.fill("#v0", "3.4335")
+    page.wait_for_function(
+        "() => document.querySelector('#toss-text').textContent.includes('launch speed 3.43 m/s')"
+        " && document.querySelector('#explorer').dataset.state === 'ready'"
+    )
+    cli = runner.invoke(app, ["toss", "--omega", "80", "0", "0", "--launch-speed", "3.4335"])
+    assert cli.exit_code == 0, cli.output
+    assert page.locator("#toss-text").text_content() == cli.stdout.rstrip("\n")
+    assert page.problems.messages == []
+
+
+def test_play_runs_the_flight_from_launch_to_the_catch(page: Any) -> None:
+    page.select_option("#speed", "1")  # real time: 0.7 s
+    page.click("#play")
+    assert page.locator("#play").get_attribute("aria-pressed") == "true"
+    page.wait_for_selector("#play[aria-pressed=false]")  # stops by itself at the catch
+    assert page.locator("#time-readout").text_content() == "t = 0.700 s of T = 0.700 s"
+    assert page.locator("#face-now").text_content() == "HEADS"
+    # Pause in the middle: the time stays where it was.
+    page.select_option("#speed", "0.03")
+    page.click("#play")
+    page.wait_for_timeout(500)
+    page.click("#play")
+    shown = page.locator("#time-readout").text_content()
+    page.wait_for_timeout(300)
+    assert page.locator("#time-readout").text_content() == shown
+    assert shown != "t = 0.700 s of T = 0.700 s"
     assert page.problems.messages == []
 
 
@@ -384,6 +420,50 @@ def test_probability_is_printed_as_the_command_line_prints_it(page: Any) -> None
     assert "± " in _p_line(text) and "95 % CI" in _p_line(text)
     # Every line but the timing is the command line's.
     assert _lines(text, drop=("method ",)) == _lines(mc.stdout, drop=("method ", "US quarter"))
+    assert page.problems.messages == []
+
+
+def test_the_monte_carlo_estimate_builds_up_from_one_run(page: Any, server: str) -> None:
+    """The build-up's points are the API's answers for fewer tosses from the answer's own seed
+    (the library makes a shorter run the start of a longer one; its streams are tested in
+    test_streams.py); here the heads counts are at least consistent with that."""
+    ready(page, "probability")
+    page.select_option("#prob-method", "monte-carlo")
+    page.fill("#prob-n", "20000")
+    page.fill("#prob-seed", "3")
+    page.click("#prob-run")
+    page.wait_for_selector("#buildup[data-state=ready]")
+    points = sorted(page.evaluate("window.coinflight.probability.points.map(p => [p[0], p[1]])"))
+    # n / 2^k for k = 8…0, of at least 100 tosses (20000 / 2^8 = 78 is left out).
+    assert [n for n, _ in points] == [156, 312, 625, 1250, 2500, 5000, 10000, 20000]
+    box = {"omega_x": "60:90", "flight_time": "0.6:0.9", "coin": "us-quarter"}
+    heads = []
+    for n, p in points:
+        answer = api(server, "/api/probability", **box, method="monte-carlo", n=n, seed=3)
+        assert p == answer["p_heads"]
+        heads.append(answer["counts"]["heads"])
+    exact = api(server, "/api/probability", **box, method="exact")["p_heads"]
+    assert f"exact value {exact:.6f}" in page.locator("#buildup-text").text_content()
+    # Necessary for prefixes of one run: a longer run has at least the heads of a shorter one,
+    # and at most as many more as it has more tosses.
+    for (n0, _), (n1, _), h0, h1 in zip(points, points[1:], heads, heads[1:], strict=False):
+        assert 0 <= h1 - h0 <= n1 - n0
+    assert page.problems.messages == []
+
+
+def test_a_seed_drawn_by_the_server_is_kept_to_the_last_digit(page: Any, server: str) -> None:
+    """No seed given: the server draws one (up to 128 bits, beyond JavaScript's exact
+    integers); the page prints it and asks for the same run with it, digit for digit."""
+    ready(page, "probability")
+    page.select_option("#prob-method", "monte-carlo")
+    page.fill("#prob-n", "2000")
+    page.click("#prob-run")
+    page.wait_for_selector("#buildup[data-state=ready]")
+    seed = re.search(r"seed (\d+);", page.locator("#prob-text").text_content())
+    assert seed, page.locator("#prob-text").text_content()
+    box = {"omega_x": "60:90", "flight_time": "0.6:0.9", "coin": "us-quarter"}
+    again = api(server, "/api/probability", **box, method="monte-carlo", n=2000, seed=seed[1])
+    assert page.locator("#prob-result").get_attribute("data-p-heads") == repr(again["p_heads"])
     assert page.problems.messages == []
 
 

@@ -21,6 +21,17 @@ function refusal(body, status) {
   return `the server answered HTTP ${status}`;
 }
 
+/**
+ * Integers beyond 2^53 (a seed drawn by the server is up to 128 bits) kept as their exact digits:
+ * a JavaScript number would round them, and the seed sent back would be another one.
+ */
+function exactIntegers(key, value, context) {
+  if (typeof value === "number" && !Number.isSafeInteger(value) && context?.source) {
+    if (/^-?\d+$/.test(context.source)) return context.source;
+  }
+  return value;
+}
+
 /** GET `path` with query `params` (null and "" left out); the decoded JSON or an ApiError. */
 export async function getJSON(path, params = {}, { signal } = {}) {
   const query = new URLSearchParams();
@@ -37,8 +48,9 @@ export async function getJSON(path, params = {}, { signal } = {}) {
   }
   let body = null;
   try {
-    body = await response.json();
-  } catch {
+    body = JSON.parse(await response.text(), exactIntegers);
+  } catch (err) {
+    if (err.name === "AbortError") throw err;
     body = null;
   }
   if (!response.ok) throw new ApiError(refusal(body, response.status), response.status);

@@ -72,7 +72,7 @@ export class Axes {
   }
 
   /** The frame, ticks and axis labels. */
-  draw(xlabel, ylabel, { xticks, yticks } = {}) {
+  draw(xlabel, ylabel, { xticks, yticks, xformat } = {}) {
     const { ctx, fontPx, family } = this.fit;
     const ink = "#222";
     ctx.save();
@@ -90,7 +90,7 @@ export class Axes {
       ctx.moveTo(px, this.top + this.ph);
       ctx.lineTo(px, this.top + this.ph + 5);
       ctx.stroke();
-      ctx.fillText(tickText(v, xt), px, this.top + this.ph + 7);
+      ctx.fillText(xformat ? xformat(v) : tickText(v, xt), px, this.top + this.ph + 7);
     }
     const yt = yticks || niceTicks(this.ylim[0], this.ylim[1], Math.max(3, Math.floor(this.ph / (3 * fontPx))));
     ctx.textAlign = "right";
