@@ -377,6 +377,9 @@ def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
     assert schema["components"]["schemas"][refusal.rsplit("/", 1)[1]]["properties"] == {
         "detail": {"type": "string", "title": "Detail"}
     }
+    # FastAPI's /docs and /redoc pages load Swagger UI and ReDoc from a CDN: not served offline.
+    assert client.get("/docs").status_code == 404
+    assert client.get("/redoc").status_code == 404
 
 
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):

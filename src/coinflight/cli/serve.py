@@ -52,7 +52,7 @@ def serve(
     time_limit: TimeLimit = 30.0,
     workers: Workers = None,
 ) -> None:
-    """Serve the interactive page and its JSON API (/api/..., /docs) until Ctrl-C.
+    """Serve the interactive page and its JSON API (/api/..., /openapi.json) until Ctrl-C.
 
     Example: coinflight serve, then open http://127.0.0.1:8000/
     """

@@ -65,6 +65,10 @@ def create_app(
             runner.close()
 
     app = FastAPI(
+        # FastAPI's /docs and /redoc pages load their scripts from a CDN; the server must work
+        # offline, so only the schema (/openapi.json) is served.
+        docs_url=None,
+        redoc_url=None,
         title="coinflight",
         version=__version__,
         summary="The physics of coin tossing: the command line's answers as JSON.",
