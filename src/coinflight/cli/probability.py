@@ -63,6 +63,19 @@ GridCells = Annotated[
     ),
 ]
 
+VarianceReduction = Annotated[
+    str | None,
+    typer.Option(
+        "--variance-reduction",
+        metavar="|".join(registry.VARIANCE_REDUCTIONS),
+        rich_help_panel=METHOD_PANEL,
+        help="; ".join(f"{k}: {text}" for k, text in registry.VARIANCE_REDUCTIONS.items())
+        + ". For --method "
+        + " and ".join(e.name for e in registry.estimators() if e.modes)
+        + ".",
+    ),
+]
+
 
 def work_total(method: str, n: int | None, k: int) -> int:
     """Units of work the library reports through ``progress`` for this request."""
@@ -83,6 +96,7 @@ def probability(
     n: Size = None,
     seed: Seed = None,
     grid_cells: GridCells = None,
+    variance_reduction: VarianceReduction = None,
     threads: Threads = None,
     quiet: Quiet = False,
     json_output: JsonFlag = False,
@@ -105,6 +119,13 @@ def probability(
             takers = [e.name for e in registry.estimators() if "grid_cells" in e.options]
             raise ValueError(f"--grid-cells applies to --method {' and '.join(takers)} only")
         options["grid_cells"] = grid_cells
+    if variance_reduction is not None:
+        if not estimator.modes:
+            takers = [e.name for e in registry.estimators() if e.modes]
+            raise ValueError(
+                f"--variance-reduction applies to --method {' and '.join(takers)} only"
+            )
+        options["variance_reduction"] = variance_reduction
     if seed is not None and not estimator.seeded:
         seeded = " and ".join(registry.names(seeded=True))
         raise ValueError(f"--seed applies to {seeded}, not {method}")
