@@ -16,7 +16,6 @@ import pytest
 from typer.testing import CliRunner
 
 from coinflight.cli.app import app
-
 from coinflight.model.distributions import Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes import outcome_model
