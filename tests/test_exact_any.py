@@ -95,8 +95,9 @@ def _random_box(rng: np.random.Generator) -> dict[str, object]:
         # 40 s: 48 nodes a panel over three spins across 0
         pytest.param(1, marks=pytest.mark.slow),
         2,
-        # 30 s: refused before (2.8e-08 apart at 64 nodes a panel); the wrapped-normal closed
-        # form in T with panels a phase period wide now converges at 48 nodes a panel
+        # ~20 s: refused before (2.8e-08 apart at 64 nodes a panel). The uniform ω_z's range
+        # ends make circles Ω⊥ = (I3/I1)|ω_z| where the integral over ω_z has a 3/2 power; the
+        # polar rule cuts the radius there and converges at 24 nodes a panel
         pytest.param(3, marks=pytest.mark.slow),
     ],
 )
