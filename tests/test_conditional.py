@@ -8,11 +8,14 @@ mode against the registry's declaration.
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
 import pytest
+from typer.testing import CliRunner
 
+from coinflight.cli.app import app
 from coinflight.model.distributions import Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes import outcome_model
@@ -86,3 +89,21 @@ def test_tails_start_is_the_complement():
     b = estimate(tails, "monte-carlo", n=1 << 16, seed=3, variance_reduction=MODE)
     assert a.p_heads == pytest.approx(b.p_tails, abs=1e-15)
     assert math.isclose(a.stderr, b.stderr)
+
+
+def test_command_line_option():
+    fig2a = ["probability", "--omega-x", "60:90", "--flight-time", "0.6:0.9"]
+    runner = CliRunner()
+    ok = runner.invoke(
+        app,
+        [*fig2a, "-m", "monte-carlo", "-n", "65536", "--seed", "4", "--json", "--quiet",
+         "--variance-reduction", MODE],
+    )  # fmt: skip
+    assert ok.exit_code == 0, ok.output
+    payload = json.loads(ok.output)
+    assert payload["method"] == "monte-carlo"
+    assert payload["details"]["variance_reduction"] == MODE
+    assert payload["seed"] == 4
+    refused = runner.invoke(app, [*fig2a, "--variance-reduction", MODE])
+    assert refused.exit_code == 2
+    assert "--variance-reduction applies to --method monte-carlo and qmc only" in refused.output

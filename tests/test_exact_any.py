@@ -95,8 +95,9 @@ def _random_box(rng: np.random.Generator) -> dict[str, object]:
         # 40 s: 48 nodes a panel over three spins across 0
         pytest.param(1, marks=pytest.mark.slow),
         2,
-        # 30 s: refused before (2.8e-08 apart at 64 nodes a panel); the wrapped-normal closed
-        # form in T with panels a phase period wide now converges at 48 nodes a panel
+        # ~20 s: refused before (2.8e-08 apart at 64 nodes a panel). The uniform ω_z's range
+        # ends make circles Ω⊥ = (I3/I1)|ω_z| where the integral over ω_z has a 3/2 power; the
+        # polar rule cuts the radius there and converges at 24 nodes a panel
         pytest.param(3, marks=pytest.mark.slow),
     ],
 )
@@ -170,3 +171,27 @@ def test_fixed_axial_spin_with_two_ranged_spins(spins):
     dist = TossDistribution(**spins, flight_time=Normal(0.4, 0.04))
     assert estimate(dist, "exact").details["how"] == GAUSS
     _monte_carlo_check(dist, 123)
+
+
+@pytest.mark.parametrize("sd", [0.002, 0.02, 0.06])
+def test_wrapped_normal_series_equals_the_band_sum(sd):
+    # The Fourier series of the wrapped normal (Mardia & Jupp §3.5.7) against the direct sum
+    # of normal-CDF differences over every band (Diaconis, Holmes & Montgomery 2007), at
+    # phase spreads σ = ωp·sd on both sides of the switch at 1.5, to rounding. (sd ≤ mean/8,
+    # as TossDistribution requires: the series also counts T < 0.)
+    from scipy.special import ndtr
+
+    from coinflight.core import bands
+
+    rng = np.random.default_rng(7)
+    perp2 = rng.uniform(0.0, 400.0, 5000) ** 2
+    axial2 = rng.uniform(0.0, 300.0, 5000) ** 2 * rng.random(5000)
+    mean = 0.5
+    direct = bands.same_side_over_times(
+        perp2, axial2, lambda t: ndtr((t - mean) / sd), max(0.0, mean - 9 * sd), mean + 9 * sd
+    )
+    series = bands.same_side_normal_time(perp2, axial2, mean, sd)
+    sigma = np.sqrt(perp2 + axial2) * sd
+    if sd == 0.02:
+        assert np.any(sigma < bands.WRAPPED_SIGMA) and np.any(sigma >= bands.WRAPPED_SIGMA)
+    np.testing.assert_allclose(series, direct, rtol=0, atol=1e-13)

@@ -62,6 +62,19 @@ GridCells = Annotated[
     ),
 ]
 
+VarianceReduction = Annotated[
+    str | None,
+    typer.Option(
+        "--variance-reduction",
+        metavar="|".join(registry.VARIANCE_REDUCTIONS),
+        rich_help_panel=METHOD_PANEL,
+        help="; ".join(f"{k}: {text}" for k, text in registry.VARIANCE_REDUCTIONS.items())
+        + ". For --method "
+        + " and ".join(e.name for e in registry.estimators() if e.modes)
+        + ".",
+    ),
+]
+
 
 @command
 def probability(
@@ -76,6 +89,7 @@ def probability(
     n: Size = None,
     seed: Seed = None,
     grid_cells: GridCells = None,
+    variance_reduction: VarianceReduction = None,
     threads: Threads = None,
     cluster: ClusterOptions,
     quiet: Quiet = False,
@@ -97,6 +111,7 @@ def probability(
         n=n,
         seed=seed,
         grid_cells=grid_cells,
+        variance_reduction=variance_reduction,
         threads=threads,
         preset=preset,
         overrides=given_toss_options(ctx) if preset is not None else None,

@@ -92,6 +92,7 @@ def probability_query(
     n: int | None = None,
     seed: int | None = None,
     grid_cells: int | None = None,
+    variance_reduction: str | None = None,
     threads: int | None = None,
     preset: str | None = None,
     overrides: Mapping[str, str] | None = None,
@@ -114,6 +115,13 @@ def probability_query(
             takers = [e.name for e in registry.estimators() if "grid_cells" in e.options]
             raise ValueError(f"--grid-cells applies to --method {' and '.join(takers)} only")
         options["grid_cells"] = grid_cells
+    if variance_reduction is not None:
+        if not estimator.modes:
+            takers = [e.name for e in registry.estimators() if e.modes]
+            raise ValueError(
+                f"--variance-reduction applies to --method {' and '.join(takers)} only"
+            )
+        options["variance_reduction"] = variance_reduction
     if seed is not None and not estimator.seeded:
         seeded = " and ".join(registry.names(seeded=True))
         raise ValueError(f"--seed applies to {seeded}, not {method}")
