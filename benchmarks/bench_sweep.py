@@ -4,7 +4,7 @@
     python benchmarks/bench_sweep.py --quick    # 200 rows, 1 repeat
 
 A sweep of 10 mean spins × 10 spreads × 10 flight-time ranges = 1000 rows, each a Monte Carlo
-estimate of 200,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters live
+estimate of 50,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters live
 side by side, one of 1 worker process and one of 2 (one thread each), and the repeats alternate
 between them, so that both see the same load of a shared machine; the result is the median time
 of each and their ratio (2.0 would be perfect scaling on 2 cores). Also: the per-task overhead
@@ -27,7 +27,7 @@ from coinflight.model.ensemble import TossDistribution
 from coinflight.probability.distributed import dask_client
 from coinflight.probability.sweep import Case, sweep
 
-N = 200_000
+N = 50_000
 
 
 def cases(k: int) -> list[Case]:

@@ -239,3 +239,36 @@ def test_results_do_not_depend_on_the_number_of_tasks_in_flight(cluster):
     # many more tasks than workers, finishing out of order: assembled by index
     cases = np.arange(40)
     assert list(cluster.map(_square, cases)) == [int(x) ** 2 for x in cases]
+
+
+def test_edge_simulation_on_dask_equals_the_serial_counts(cluster):
+    from coinflight.studies.edge import simulate_edge
+
+    plain = simulate_edge([0.3, 0.6], 1500, seed=2)
+    on_dask = simulate_edge([0.3, 0.6], 1500, seed=2, executor=cluster)
+    assert [e.successes for _, e in on_dask] == [e.successes for _, e in plain]
+
+
+def test_basin_map_in_stripes_on_dask_is_the_same_map(cluster):
+    from coinflight.model.coin import Coin
+    from coinflight.studies.basin import STRIPE_CELLS, basin_map
+
+    coin = Coin.preset("us-quarter")
+    resolution = (300, 2 * STRIPE_CELLS // 300 + 7)  # three stripes, the last one short
+    plain = basin_map(coin, resolution=resolution)
+    on_dask = basin_map(coin, resolution=resolution, executor=cluster)
+    assert np.array_equal(plain.face, on_dask.face)
+
+
+def test_cli_edge_and_plot_basin_take_the_scheduler(cluster, tmp_path):
+    address = cluster.client.scheduler.address
+    edge = ["edge", "--ratios", "0.3,0.6", "--simulate", "800", "--seed", "3", "--json"]
+    a, b = _cli(*edge, "--scheduler", address), _cli(*edge)
+    assert a.exit_code == 0, a.output
+    assert json.loads(a.stdout) == json.loads(b.stdout)
+    basin = ["plot", "basin", "--resolution", "120", "--scheduler", address]
+    c = _cli(*basin, "--out", tmp_path / "b.png")
+    d = _cli(*basin[:-2], "--out", tmp_path / "c.png")
+    assert c.exit_code == 0, c.output
+    assert c.stdout.splitlines()[0] == d.stdout.splitlines()[0]  # P(heads) on the grid
+    assert "--scheduler applies with --simulate" in one_line_error("edge", "--scheduler", address)

@@ -7,6 +7,7 @@ from typing import Annotated
 
 import typer
 
+from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions
 from coinflight.cli.landing_groups import TableOptions
@@ -113,6 +114,7 @@ def plot_basin(
     dpi: Dpi = 150,
     table: TableOptions,
     bounces: Bounces = None,
+    cluster: ClusterOptions,
 ) -> None:
     """Map heads and tails over a box of flight times and spins, with Keller's hyperbolas.
 
@@ -126,18 +128,20 @@ def plot_basin(
 
     figure_paths(out, "--out")  # before the map is computed, not after
     spin, psi_rad = _spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
-    basin = basin_map(
-        coin,
-        _time_range(flight_time, launch_speed, g),
-        spin,
-        omega_y=omega_y,
-        omega_z=omega_z,
-        psi=psi_rad,
-        resolution=parse_resolution(resolution),
-        start=start,
-        g=g,
-        **table_outcome(*table, bounces),
-    )
+    with cluster.executor() as executor:
+        basin = basin_map(
+            coin,
+            _time_range(flight_time, launch_speed, g),
+            spin,
+            omega_y=omega_y,
+            omega_z=omega_z,
+            psi=psi_rad,
+            resolution=parse_resolution(resolution),
+            start=start,
+            g=g,
+            executor=executor,
+            **table_outcome(*table, bounces),
+        )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
     if table.surface == "table":
