@@ -30,6 +30,15 @@ from coinflight.probability.sweep import Case, sweep
 N = 50_000
 
 
+def _cpu_seconds() -> float:
+    return time.process_time()
+
+
+def worker_cpu(ex: object) -> float:
+    """CPU seconds used so far by all the cluster's worker processes."""
+    return sum(ex.client.run(_cpu_seconds).values())  # type: ignore[attr-defined]
+
+
 def cases(k: int) -> list[Case]:
     """k³ rows: ωx ~ normal(mean, sd) × T ~ uniform ranges."""
     means = [60.0 + 20.0 * i for i in range(k)]
@@ -64,9 +73,11 @@ def main(argv: list[str]) -> int:
             print(f"{workers} worker(s): per-task overhead {1e3 * ex.overhead:.2f} ms")
         for _ in range(repeats):
             for workers, ex in executors.items():
+                c0 = worker_cpu(ex)
                 t0 = time.perf_counter()
                 result = sweep(rows, "monte-carlo", n=N, seed=1, executor=ex)
                 times[workers].append(time.perf_counter() - t0)
+                cpu = worker_cpu(ex) - c0
                 answers[workers] = [r.counts for r in result]
                 last = ex.last
                 stats[workers] = {
@@ -75,6 +86,8 @@ def main(argv: list[str]) -> int:
                     "compute_s": last.compute,
                     "wall_s": last.wall,
                     "not_computing": last.overhead_share,
+                    # CPU the workers got, in cores: 1.0 per worker on an idle machine
+                    "cores_used": cpu / times[workers][-1],
                 }
     if answers[1] != answers[2]:
         print("ERROR: the answers on 1 and 2 workers differ")
@@ -86,9 +99,15 @@ def main(argv: list[str]) -> int:
         print(
             f"{w} worker(s): median {median[w]:.2f} s over {repeats} run(s) "
             f"({', '.join(f'{t:.2f}' for t in times[w])}); {s['batches']} batches, "
-            f"{100 * s['not_computing']:.1f} % of the workers' time not computing"
+            f"{100 * s['not_computing']:.1f} % of the workers' time not computing, "
+            f"{s['cores_used']:.2f} cores of CPU used (last run)"
         )
     print(f"speed-up 1 → 2 workers: {ratio:.2f}× (2.00 = linear); answers equal bit for bit")
+    cores = stats[2]["cores_used"] / stats[1]["cores_used"]
+    print(
+        f"CPU the machine gave: {cores:.2f}× as much to 2 workers as to 1; speed-up per core "
+        f"obtained {ratio / cores:.2f} (1.00: the cluster adds no loss of its own)"
+    )
     if args.json:
         report = {
             "rows": len(rows),
