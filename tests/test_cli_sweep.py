@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import json
+import sys
 
 import numpy as np
 import pytest
@@ -308,3 +309,13 @@ def test_product_cases_has_one_row_per_combination_in_order(sizes):
         lists["flight_time"][1 % sizes[3]]
     )
     assert len({c.stream() for c in cases}) == len(cases)  # a stream each
+
+
+def test_without_pyarrow_a_parquet_table_says_how_to_install_it(tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    message = one_line_error("sweep", "--omega-x", "60:90", "--flight-time", "0.7",
+                             "--out", tmp_path / "x.parquet")  # fmt: skip
+    assert message == (
+        'writing Parquet needs pyarrow: pip install "coinflight[parquet]" (or write a .csv)'
+    )
+    assert not list(tmp_path.iterdir())  # refused before any row ran
