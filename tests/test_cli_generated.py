@@ -145,6 +145,22 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
         "--seed": _count(0, 2**32),
         "--json": st.just(None),
     },
+    "sweep": {
+        "--omega-x": _dist(0, 300),
+        "--omega-x-mean": st.sampled_from(["60,80", "60:90:3", "0:1:0", "a", "", "1e308"]),
+        "--omega-x-sd": st.sampled_from(["0,5", "1", "-1", "nan", ""]),
+        "--omega-y": _dist(-50, 50),
+        "--flight-time": _dist(0.2, 1.0),
+        "--launch-speed": _dist(1, 5),
+        "--coin": st.sampled_from(["us-quarter,eur-1", "us-cent", "peso", ",", ""]),
+        "--start": st.sampled_from(["heads,tails", "tails", "edge", ""]),
+        "--surface": st.sampled_from(["hand", "hand,table", "table", "sand", ""]),
+        "--restitution": st.sampled_from(["0.3,0.6", "0.5", "2", "nan", ""]),
+        "--method": st.sampled_from(["monte-carlo", "qmc", "grid", "exact", ""]),
+        "--n": _count(1, 500),
+        "--seed": _count(0, 2**32),
+        "--json": st.just(None),
+    },
     "bias": {
         "--psi": _number(0, 180),
         "--psi-dist": _dist(0, 180),
@@ -194,7 +210,11 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
     },
 }
 # Options whose value the command needs to run at all (a plausible one when none was drawn).
-REQUIRED = {"toss": ["--flight-time", "0.7"], "plot toss": ["--flight-time", "0.7"]}
+REQUIRED = {
+    "toss": ["--flight-time", "0.7"],
+    "plot toss": ["--flight-time", "0.7"],
+    "sweep": ["--flight-time", "0.6:0.9"],
+}
 FIGURE_COMMANDS = {"plot toss", "plot basin", "plot bias", "plot edge"}
 
 
@@ -231,6 +251,11 @@ def _command_line(draw, command: str, out: Path) -> list[str]:
             args.append(value)
     if command in REQUIRED and not {"--flight-time", "--launch-speed", "--times"} & set(names):
         args += REQUIRED[command]
+    if command == "sweep":
+        if not {"--omega-x", "--omega-x-mean", "--omega-x-sd"} & set(names):
+            args += ["--omega-x", "60:90"]
+        path = draw(st.one_of(st.just(str(out / "sweep.csv")), st.sampled_from(HOSTILE_PATHS)))
+        args += ["--out", path]
     if (
         command in FIGURE_COMMANDS
         or command == "convergence"

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from tests._cli import one_line_error
 from typer.testing import CliRunner
 
 from coinflight.cli import app
@@ -30,7 +31,6 @@ from coinflight.probability.distributed import (
 )
 from coinflight.probability.streams import BLOCK
 from coinflight.probability.sweep import Case, sweep
-from tests._cli import one_line_error
 
 pytest.importorskip("distributed")  # installed by the dev extra: CI runs these tests
 
@@ -61,13 +61,14 @@ def _fail_on_three(x: int) -> int:
 
 
 def test_monte_carlo_on_dask_is_bit_for_bit_the_threads_answer(cluster):
-    # the check: 10^7 tosses, seed 9, over 10 blocks (tasks) on 2 worker processes
-    on_threads = estimate(FIG_2A, "monte-carlo", n=10_000_000, seed=9)
-    done = []
-    on_dask = estimate(FIG_2A, "monte-carlo", n=10_000_000, seed=9, executor=cluster, progress=done.append)
+    # 3 blocks and a part (tasks) on 2 worker processes; the 10^7: the CLI tests below
+    n = 3 * BLOCK + 12345
+    on_threads = estimate(FIG_2A, "monte-carlo", n=n, seed=9)
+    done: list[int] = []
+    on_dask = estimate(FIG_2A, "monte-carlo", n=n, seed=9, executor=cluster, progress=done.append)
     assert on_dask.p_heads == on_threads.p_heads
     assert on_dask.counts == on_threads.counts
-    assert sum(done) == 10_000_000  # progress from every future, whatever their order
+    assert sum(done) == n  # progress from every future, whatever their order
 
 
 def test_a_raw_client_is_accepted_as_the_executor(cluster):
@@ -75,7 +76,9 @@ def test_a_raw_client_is_accepted_as_the_executor(cluster):
     assert grid.p_heads == estimate(FIG_2A, "grid", n=300, threads=2).p_heads
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
 @given(
     n=st.integers(1, 3 * BLOCK + 17),
     seed=st.integers(0, 2**63),
@@ -89,9 +92,9 @@ def test_any_size_seed_and_chunking_gives_the_threads_answer(cluster, n, seed, c
 
 def test_qmc_and_the_grid_sum_in_task_order(cluster):
     # float sums: equal only if the parts are added in the same order as on threads
-    qmc = estimate(FIG_2A, "qmc", n=2**14, seed=3, executor=cluster)
-    assert qmc.p_heads == estimate(FIG_2A, "qmc", n=2**14, seed=3).p_heads
-    assert qmc.stderr == estimate(FIG_2A, "qmc", n=2**14, seed=3).stderr
+    qmc = estimate(FIG_2A, "qmc", n=2**12, seed=3, executor=cluster)
+    on_threads = estimate(FIG_2A, "qmc", n=2**12, seed=3)
+    assert (qmc.p_heads, qmc.stderr) == (on_threads.p_heads, on_threads.stderr)
 
 
 def test_table_landings_on_dask_equal_threads(cluster):
@@ -146,10 +149,10 @@ def _cli(*args):
     return runner.invoke(app, [str(a) for a in args])
 
 
-MC_9 = (
-    "probability --omega-x 60:90 --flight-time 0.6:0.9 --method monte-carlo --n 10000000 "
-    "--seed 9 --json"
-).split()
+MC_9 = [
+    "probability", "--omega-x", "60:90", "--flight-time", "0.6:0.9", "--method", "monte-carlo",
+    "--n", "10000000", "--seed", "9", "--json",
+]  # fmt: skip
 
 
 def test_cli_on_a_running_scheduler_prints_the_threads_answer(cluster):
@@ -174,7 +177,7 @@ def test_cli_local_cluster_of_two_workers_prints_the_threads_answer():
 def test_convergence_on_dask_writes_the_threads_table(cluster, tmp_path):
     args = [
         "convergence", "--omega-x", "60:90", "--flight-time", "0.6:0.9", "--seed", "2",
-        "--methods", "grid,monte-carlo", "--grid-sizes", "10,50", "--event-sizes", "1000,3000000",
+        "--methods", "grid,monte-carlo", "--grid-sizes", "10,50", "--event-sizes", "1000,1100000",
     ]  # fmt: skip
     a = _cli(*args, "--out", tmp_path / "a", "--scheduler", cluster.client.scheduler.address)
     b = _cli(*args, "--out", tmp_path / "b")
@@ -223,10 +226,11 @@ def test_library_checks_name_the_value():
         check_scheduler(8786)
     with pytest.raises(ValueError, match="workers applies to the local scheduler only"):
         check_scheduler("tcp://127.0.0.1:8786", 2)
-    with pytest.raises(TypeError, match="client must be a distributed.Client"):
+    with pytest.raises(TypeError, match=r"client must be a distributed\.Client"):
         DaskExecutor(object())
-    with pytest.raises(ValueError, match="cannot reach a Dask scheduler"), dask_client(
-        "tcp://127.0.0.1:1", timeout=0.5
+    with (
+        pytest.raises(ValueError, match="cannot reach a Dask scheduler"),
+        dask_client("tcp://127.0.0.1:1", timeout=0.5),
     ):
         pass  # pragma: no cover
 
@@ -235,3 +239,36 @@ def test_results_do_not_depend_on_the_number_of_tasks_in_flight(cluster):
     # many more tasks than workers, finishing out of order: assembled by index
     cases = np.arange(40)
     assert list(cluster.map(_square, cases)) == [int(x) ** 2 for x in cases]
+
+
+def test_edge_simulation_on_dask_equals_the_serial_counts(cluster):
+    from coinflight.studies.edge import simulate_edge
+
+    plain = simulate_edge([0.3, 0.6], 1500, seed=2)
+    on_dask = simulate_edge([0.3, 0.6], 1500, seed=2, executor=cluster)
+    assert [e.successes for _, e in on_dask] == [e.successes for _, e in plain]
+
+
+def test_basin_map_in_stripes_on_dask_is_the_same_map(cluster):
+    from coinflight.model.coin import Coin
+    from coinflight.studies.basin import STRIPE_CELLS, basin_map
+
+    coin = Coin.preset("us-quarter")
+    resolution = (300, 2 * STRIPE_CELLS // 300 + 7)  # three stripes, the last one short
+    plain = basin_map(coin, resolution=resolution)
+    on_dask = basin_map(coin, resolution=resolution, executor=cluster)
+    assert np.array_equal(plain.face, on_dask.face)
+
+
+def test_cli_edge_and_plot_basin_take_the_scheduler(cluster, tmp_path):
+    address = cluster.client.scheduler.address
+    edge = ["edge", "--ratios", "0.3,0.6", "--simulate", "800", "--seed", "3", "--json"]
+    a, b = _cli(*edge, "--scheduler", address), _cli(*edge)
+    assert a.exit_code == 0, a.output
+    assert json.loads(a.stdout) == json.loads(b.stdout)
+    basin = ["plot", "basin", "--resolution", "120", "--scheduler", address]
+    c = _cli(*basin, "--out", tmp_path / "b.png")
+    d = _cli(*basin[:-2], "--out", tmp_path / "c.png")
+    assert c.exit_code == 0, c.output
+    assert c.stdout.splitlines()[0] == d.stdout.splitlines()[0]  # P(heads) on the grid
+    assert "--scheduler applies with --simulate" in one_line_error("edge", "--scheduler", address)

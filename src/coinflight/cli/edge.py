@@ -6,6 +6,8 @@ from typing import Annotated, Any, cast
 
 import typer
 
+from coinflight.cli.cluster import ClusterOptions
+from coinflight.cli.command import command
 from coinflight.cli.groups import _dist
 from coinflight.cli.options import (
     OUTPUT_PANEL,
@@ -93,7 +95,9 @@ EdgeJson = Annotated[
 ]
 
 
+@command
 def edge(
+    *,
     ratios: EdgeRatios = TABLE_RATIOS,
     simulate: EdgeSimulate = None,
     seed: SimulateSeed = None,
@@ -103,6 +107,7 @@ def edge(
     omega_x: SpinX = None,
     launch_speed: LaunchSpeed = None,
     g: EdgeGravity = None,
+    cluster: ClusterOptions,
     json: EdgeJson = False,
 ) -> None:
     """P(edge) of thick coins per ratio h/d: Yong & Mahadevan's (2011) geometric and dynamic
@@ -140,9 +145,11 @@ def edge(
         setting["spin"] = parse_distribution(omega_x, "--omega-x", "rad/s")
     if launch_speed is not None:
         setting["launch_speed"] = parse_distribution(launch_speed, "--launch-speed", "m/s")
-    rows = edge_table(
-        parse_numbers(ratios, "--ratios", TABLE_RATIOS), simulate, the_seed, **setting
-    )
+    if simulate is None and cluster.scheduler is not None:
+        raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
+    x = parse_numbers(ratios, "--ratios", TABLE_RATIOS)
+    with cluster.executor() as executor:
+        rows = edge_table(x, simulate, the_seed, executor=executor, **setting)
     if json:
         print_json(cast(Any, rows))  # a list: one object per ratio
         return

@@ -6,6 +6,7 @@ from typing import Annotated
 
 import typer
 
+from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions
 from coinflight.cli.landing_groups import TableOptions
@@ -112,6 +113,7 @@ def plot_basin(
     dpi: Dpi = 150,
     table: TableOptions,
     bounces: Bounces = None,
+    cluster: ClusterOptions,
 ) -> None:
     """Map heads and tails over a box of flight times and spins, with Keller's hyperbolas.
 
@@ -124,21 +126,23 @@ def plot_basin(
     from coinflight.queries.basin import basin_query
 
     figure_paths(out, "--out")  # before the map is computed, not after
-    basin = basin_query(
-        coin,
-        flight_time=flight_time,
-        launch_speed=launch_speed,
-        omega_x=omega_x,
-        omega_y=omega_y,
-        omega_z=omega_z,
-        psi=psi,
-        precession_rate=precession_rate,
-        resolution=resolution,
-        start=start,
-        g=g,
-        table=table,
-        bounces=bounces,
-    )
+    with cluster.executor() as executor:
+        basin = basin_query(
+            coin,
+            flight_time=flight_time,
+            launch_speed=launch_speed,
+            omega_x=omega_x,
+            omega_y=omega_y,
+            omega_z=omega_z,
+            psi=psi,
+            precession_rate=precession_rate,
+            resolution=resolution,
+            start=start,
+            g=g,
+            table=table,
+            bounces=bounces,
+            executor=executor,
+        )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
     if table.surface == "table":

@@ -149,11 +149,20 @@ def parse_dists(texts: list[str], option_name: str, unit: str) -> list[Distribut
 
 def _normals(means: str, sds: str, name: str) -> list[Distribution]:
     from coinflight.model.distributions import Fixed, Normal
+    from coinflight.probability.sweep import MAX_ROWS
 
     flag = _flag(name)
+    mean_list = parse_numbers_list(means, f"{flag}-mean")
+    sd_list = parse_numbers_list(sds, f"{flag}-sd")
+    rows = len(mean_list) * len(sd_list)
+    if rows > MAX_ROWS:  # before building them
+        raise ValueError(
+            f"{flag}-mean × {flag}-sd is {len(mean_list)} × {len(sd_list)} = {rows:,} "
+            f"distributions, more than the {MAX_ROWS:,} rows a sweep accepts; use fewer"
+        )
     out: list[Distribution] = []
-    for mean in parse_numbers_list(means, f"{flag}-mean"):
-        for sd in parse_numbers_list(sds, f"{flag}-sd"):
+    for mean in mean_list:
+        for sd in sd_list:
             if sd < 0:
                 raise ValueError(f"{flag}-sd {sds!r}: a standard deviation must be ≥ 0")
             out.append(Fixed(mean) if sd == 0 else Normal(mean, sd))

@@ -128,7 +128,7 @@ def estimate_many(
 
 # --- sweeps: rows as tasks, streams per row, a checkpoint, one table -----------------------
 
-MAX_ROWS = 1_000_000
+MAX_ROWS = 100_000
 """Most rows a sweep accepts (checked before any row is built)."""
 ROW_SECONDS = 0.05
 """Seconds of work counted for a row whose method bounds its own work (exact): the sweep's

@@ -77,8 +77,10 @@ def basin_query(
     g: float = 9.81,
     table: TableArgs = HAND,
     bounces: int | None = None,
+    executor: Any = None,
 ) -> BasinMap:
-    """The map ``coinflight plot basin`` draws, for its options as typed."""
+    """The map ``coinflight plot basin`` draws, for its options as typed (``executor``: where
+    its rows run, as :func:`coinflight.studies.basin.basin_map` takes it)."""
     from coinflight.studies.basin import basin_map
 
     spin, psi_rad = spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
@@ -92,6 +94,7 @@ def basin_query(
         resolution=parse_resolution(resolution),
         start=start,
         g=g,
+        executor=executor,
         **table_outcome(*table, bounces),
     )
 

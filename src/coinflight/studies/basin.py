@@ -198,6 +198,7 @@ def basin_map(
     start: str = "heads",
     g: float = 9.81,
     outcome: OutcomeModel | OutcomeFunction = HAND_CATCH,
+    executor: Any = None,
 ) -> BasinMap:
     """Heads/tails map over a box of flight times and spins.
 
@@ -224,6 +225,11 @@ def basin_map(
         :meth:`~coinflight.outcomes.base.OutcomeModel.faces`; build one with
         :func:`coinflight.outcomes.outcome_model`) or a function with that signature; default
         the catch in the hand.
+    executor : object with ``map``, or a distributed.Client, optional
+        Computes the map in stripes of rows (spins), one task each (:data:`STRIPE_CELLS`
+        cells), e.g. on a Dask cluster (:mod:`coinflight.probability.distributed`); the map is
+        the same as without it. ``outcome`` must then pickle (a model, or a module-level
+        function). Default: the whole grid in one call, in this process.
 
     Returns
     -------
@@ -257,7 +263,19 @@ def basin_map(
         )
     sign = 1.0 if start == "heads" else -1.0
     faces = outcome.faces if isinstance(outcome, OutcomeModel) else outcome
-    face = np.asarray(faces(coin, omega, tt, sign, g), dtype=np.int8)
+    if executor is None:
+        face = np.asarray(faces(coin, omega, tt, sign, g), dtype=np.int8)
+    else:
+        from coinflight.probability._runner import check_runner, executor_or_threads, run_tasks
+
+        check_runner(executor, None, None)
+        rows = max(1, STRIPE_CELLS // n_t)
+        starts = range(0, n_w, rows)
+        tasks = [(faces, coin, omega[a : a + rows], tt[a : a + rows], sign, g) for a in starts]
+        sizes = [min(rows, n_w - a) * n_t for a in starts]
+        with executor_or_threads(executor, None) as ex:
+            stripes = run_tasks(ex, _stripe, tasks, sizes, None)
+        face = np.concatenate([np.asarray(f, dtype=np.int8) for f in stripes], axis=0)
     return BasinMap(
         flight_time=t,
         spin=w,
@@ -272,6 +290,16 @@ def basin_map(
         start=start,
         g=float(g),
     )
+
+
+STRIPE_CELLS = 1 << 16
+"""Cells per task of a map computed on an executor (whole rows of spins)."""
+
+
+def _stripe(args: tuple[Any, ...]) -> Any:
+    """Faces of one stripe of rows of a map."""
+    faces, coin, omega, tt, sign, g = args
+    return faces(coin, omega, tt, sign, g)
 
 
 def _range(name: str, value: tuple[float, float], unit: str, positive: bool) -> tuple[float, float]:

@@ -8,6 +8,7 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
@@ -115,6 +116,8 @@ def simulate_edge(
     drop_height: float = SIM_DROP,
     spin: Distribution | None = None,
     launch_speed: Distribution | None = None,
+    executor: Any = None,
+    progress: Callable[[int], None] | None = None,
 ) -> list[tuple[float, BinomialEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
@@ -136,12 +139,18 @@ def simulate_edge(
     ``spin`` (ωx, rad/s) and ``launch_speed`` (v0, m/s) as distributions
     (:mod:`coinflight.model.distributions`, drawn through their ``ppf`` from the same streams);
     the launch speed must be positive with certainty.
+
+    ``executor`` (an object with ``map``, or a ``distributed.Client``: :mod:`coinflight.
+    probability.distributed`) runs the blocks of :data:`~coinflight.probability.streams.BLOCK`
+    tosses of each ratio as separate tasks, each landing its tosses in one thread; the counts
+    are the same as without it, bit for bit. ``progress`` is called with the tosses of each
+    finished task.
     """
     from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution, Uniform
     from coinflight.model.ensemble import check_launch_speed
     from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, land
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
 
     x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
     if x.ndim != 1:
@@ -164,26 +173,60 @@ def simulate_edge(
     v0 = check_launch_speed(
         Uniform(*SIM_LAUNCH_SPEED) if launch_speed is None else launch_speed, "launch speed"
     )
+    from coinflight.probability._runner import check_runner, executor_or_threads, run_tasks
+
+    check_runner(executor, None, progress)
     r = 0.5 * SIM_DIAMETER
     root = streams.seed_sequence(seed)
+    coins = []
+    for ratio in x:
+        h = float(ratio) * SIM_DIAMETER
+        coins.append(Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h))  # steel
+    tasks: list[tuple[Any, ...]]
+    if executor is None:  # one ratio at a time, each landing on all of numba's threads
+        tasks = [(coin, streams.child(root, i), n, 0, None, wx, v0, g, surface, True)
+                 for i, coin in enumerate(coins)]  # fmt: skip
+        sizes = [n] * len(coins)
+    else:  # one task per block of tosses, each in one thread of its worker
+        blocks = -(-n // streams.BLOCK)
+        tasks = [
+            (coin, streams.child(root, i), n, b, b + 1, wx, v0, g, surface, False)
+            for i, coin in enumerate(coins)
+            for b in range(blocks)
+        ]
+        sizes = [min(streams.BLOCK, n - b * streams.BLOCK) for _ in coins for b in range(blocks)]
+    with executor_or_threads(executor, 1) as ex:
+        counts = run_tasks(ex, _edge_task, tasks, sizes, progress)
+    per_ratio = len(tasks) // len(coins)
     out = []
     for i, ratio in enumerate(x):
-        h = float(ratio) * SIM_DIAMETER
-        coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # steel
-        edges = 0
-        for u in streams.unit_cube(streams.child(root, i), n, 2):
-            omega = np.zeros((u.shape[1], 3))
-            omega[:, 0] = wx.ppf(u[0])
-            speed = v0.ppf(u[1])
-            edges += int(np.sum(land(coin, omega, speed, 1.0, g, surface).face == EDGE))
+        edges = sum(counts[i * per_ratio : (i + 1) * per_ratio])
         out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
+
+
+def _edge_task(args: tuple[Any, ...]) -> int:
+    """Tosses on edge among blocks ``first`` to ``last`` of one ratio's stream."""
+    from coinflight.outcomes.table import land
+
+    coin, stream, n, first, last, wx, v0, g, surface, parallel = args
+    edges = 0
+    for u in streams.unit_cube(stream, n, 2, first_block=first, last_block=last):
+        omega = np.zeros((u.shape[1], 3))
+        omega[:, 0] = wx.ppf(u[0])
+        speed = v0.ppf(u[1])
+        face = land(coin, omega, speed, 1.0, g, surface, parallel=parallel).face
+        edges += int(np.sum(face == EDGE))
+    return edges
 
 
 def edge_table(
     ratios: ArrayLike,
     n: int | None = None,
     seed: streams.SeedLike = None,
+    *,
+    executor: Any = None,
+    progress: Callable[[int], None] | None = None,
     **setting: Any,
 ) -> list[dict[str, Any]]:
     """P(edge) per ratio h/d, one dict each: both closed-form models and, with ``n``, a simulation.
@@ -193,7 +236,7 @@ def edge_table(
     ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
     keyword ``setting``: restitution, friction, drop height, spin, launch speed, g). Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
-    ``n``.
+    ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
     Examples
     --------
@@ -213,7 +256,8 @@ def edge_table(
         for r, pg, pd in zip(x, geometric, dynamic, strict=True)
     ]
     if n is not None:
-        for row, (_, s) in zip(rows, simulate_edge(x, n, seed, **setting), strict=True):
+        simulated = simulate_edge(x, n, seed, executor=executor, progress=progress, **setting)
+        for row, (_, s) in zip(rows, simulated, strict=True):
             row["simulated"] = {
                 "p_edge": s.p,
                 "stderr": s.stderr,

@@ -1,0 +1,126 @@
+"""Scaling of a sweep on a Dask LocalCluster from 1 to 2 workers (issue 12), in one run.
+
+    python benchmarks/bench_sweep.py            # 1000 rows, 3 repeats (a few minutes)
+    python benchmarks/bench_sweep.py --quick    # 200 rows, 1 repeat
+
+A sweep of 10 mean spins × 10 spreads × 10 flight-time ranges = 1000 rows, each a Monte Carlo
+estimate of 50,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters live
+side by side, one of 1 worker process and one of 2 (one thread each), and the repeats alternate
+between them, so that both see the same load of a shared machine; the result is the median time
+of each and their ratio (2.0 would be perfect scaling on 2 cores). Also: the per-task overhead
+each cluster measured, the batches it formed, and the share of the workers' time not spent
+computing. The answers on 1 and 2 workers are checked equal, bit for bit.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+import time
+from pathlib import Path
+
+from bench_probability import machine
+from coinflight.model.distributions import Normal, Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.probability.distributed import dask_client
+from coinflight.probability.sweep import Case, sweep
+
+N = 50_000
+
+
+def _cpu_seconds() -> float:
+    return time.process_time()
+
+
+def worker_cpu(ex: object) -> float:
+    """CPU seconds used so far by all the cluster's worker processes."""
+    return sum(ex.client.run(_cpu_seconds).values())  # type: ignore[attr-defined]
+
+
+def cases(k: int) -> list[Case]:
+    """k³ rows: ωx ~ normal(mean, sd) × T ~ uniform ranges."""
+    means = [60.0 + 20.0 * i for i in range(k)]
+    sds = [1.0 + 2.0 * i for i in range(k)]
+    times = [(0.4 + 0.05 * i, 0.6 + 0.05 * i) for i in range(k)]
+    return [
+        Case(TossDistribution(omega_x=Normal(m, s), flight_time=Uniform(*t)))
+        for m in means
+        for s in sds
+        for t in times
+    ]
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="200 rows, one repeat")
+    parser.add_argument("--json", type=Path, help="also write the numbers to this file")
+    args = parser.parse_args(argv)
+    k, repeats = (6, 1) if args.quick else (10, 3)
+    rows = cases(k)
+    if args.quick:
+        rows = rows[:200]
+    print(f"machine: {machine()}; shared with other jobs, timings are noisy: compare the ratio")
+    print(f"sweep of {len(rows)} rows, monte-carlo n = {N:,} each, seed 1")
+    times: dict[int, list[float]] = {1: [], 2: []}
+    stats: dict[int, dict[str, float]] = {}
+    answers: dict[int, list[tuple[int, int, int] | None]] = {}
+    with dask_client("local", 1) as one, dask_client("local", 2) as two:
+        executors = {1: one, 2: two}
+        for workers, ex in executors.items():  # warm-up: imports and compiled kernels
+            sweep(rows[:8], "monte-carlo", n=N, seed=1, executor=ex)
+            print(f"{workers} worker(s): per-task overhead {1e3 * ex.overhead:.2f} ms")
+        for _ in range(repeats):
+            for workers, ex in executors.items():
+                c0 = worker_cpu(ex)
+                t0 = time.perf_counter()
+                result = sweep(rows, "monte-carlo", n=N, seed=1, executor=ex)
+                times[workers].append(time.perf_counter() - t0)
+                cpu = worker_cpu(ex) - c0
+                answers[workers] = [r.counts for r in result]
+                last = ex.last
+                stats[workers] = {
+                    "overhead_ms": 1e3 * ex.overhead,
+                    "batches": last.batches,
+                    "compute_s": last.compute,
+                    "wall_s": last.wall,
+                    "not_computing": last.overhead_share,
+                    # CPU the workers got, in cores: 1.0 per worker on an idle machine
+                    "cores_used": cpu / times[workers][-1],
+                }
+    if answers[1] != answers[2]:
+        print("ERROR: the answers on 1 and 2 workers differ")
+        return 1
+    median = {w: statistics.median(t) for w, t in times.items()}
+    ratio = median[1] / median[2]
+    for w in (1, 2):
+        s = stats[w]
+        print(
+            f"{w} worker(s): median {median[w]:.2f} s over {repeats} run(s) "
+            f"({', '.join(f'{t:.2f}' for t in times[w])}); {s['batches']} batches, "
+            f"{100 * s['not_computing']:.1f} % of the workers' time not computing, "
+            f"{s['cores_used']:.2f} cores of CPU used (last run)"
+        )
+    print(f"speed-up 1 → 2 workers: {ratio:.2f}× (2.00 = linear); answers equal bit for bit")
+    cores = stats[2]["cores_used"] / stats[1]["cores_used"]
+    print(
+        f"CPU the machine gave: {cores:.2f}× as much to 2 workers as to 1; speed-up per core "
+        f"obtained {ratio / cores:.2f} (1.00: the cluster adds no loss of its own)"
+    )
+    if args.json:
+        report = {
+            "rows": len(rows),
+            "n": N,
+            "repeats": repeats,
+            "times": times,
+            "median": median,
+            "ratio": ratio,
+            "stats": stats,
+        }
+        args.json.write_text(json.dumps(report, indent=2) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
