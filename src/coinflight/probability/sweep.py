@@ -482,7 +482,7 @@ def table_metadata(results: SweepResults, inputs: Mapping[str, Any] | None = Non
     """What a sweep's table records about itself: the package version, the method, n, seed,
     rows, the inputs as given (e.g. the command line's options), the columns of the standard
     errors."""
-    from coinflight import __version__
+    from coinflight._version import __version__
 
     return {
         "coinflight_version": __version__,
