@@ -201,7 +201,7 @@ def outcome_models(
     bounces: int | None,
 ) -> list[OutcomeModel]:
     """The outcome models of --surface and the table's lists (swept for the table only)."""
-    from coinflight.cli.landing import build_surface, check_bounces
+    from coinflight.queries.landing import build_surface, check_bounces
     from coinflight.outcomes import SURFACE_KINDS
     from coinflight.outcomes import outcome_model as build_model
 
@@ -373,7 +373,7 @@ def sweep(
     Example: coinflight sweep --omega-x-mean 150,200,250 --omega-x-sd 10,20 --launch-speed
     1.5:3 --coin us-quarter,eur-1 --method monte-carlo --n 100000 --seed 1 --out sweep.parquet
     """
-    from coinflight.cli.values import resolve_coin
+    from coinflight.queries.values import resolve_coin
     from coinflight.probability.sweep import product_cases, run_sweep, table_files
 
     t0 = time.perf_counter()
