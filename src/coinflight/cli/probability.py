@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
@@ -22,7 +24,6 @@ from coinflight.cli.options import (
 from coinflight.cli.presets import preset_distribution
 from coinflight.cli.progress import progress_bar
 from coinflight.cli.surface import outcome_model
-from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
 from coinflight.probability import registry
 
 if TYPE_CHECKING:
@@ -112,7 +113,13 @@ def probability(
         raise ValueError(f"--threads does not apply to the {method} method")
     landing = outcome_model(*table, *air)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
-        raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
+        rate = landing.model.rate
+        if _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
+            raise ValueError(
+                _DRAG_NEEDS_N.format(
+                    method=method, rate=f"{rate:,.0f}", example=_drag_example(method, dist, rate)
+                )
+            )
     if landing is not None:
         options["model"] = landing.model
     total = work_total(method, n, len(dist.ranged))
@@ -153,22 +160,35 @@ def _report(
     typer.echo(_method_line(result))
 
 
+_DRAG_DEFAULT_SECONDS = 60.0
+"""With air, the default size must run within this many seconds, else --n must be given."""
 _DRAG_NEEDS_N = (
-    f"with --drag each toss is a numerical integration (about {DRAG_TOSSES_PER_SECOND} tosses "
-    "per second per thread), so the default size of --method {method} would run for hours or "
-    "days; give --n explicitly, e.g. {example}"
+    "with --drag each toss is integrated through air (about {rate} tosses per second), so the "
+    "default size of --method {method} would run for minutes; give --n explicitly, e.g. {example}"
 )
 
 
-def _drag_example(method: str, dist: TossDistribution) -> str:
+def _default_seconds(estimator: Any, dist: TossDistribution, model: Any) -> float:
+    """Seconds of work of the method's default size with this model (inf beyond its bound)."""
+    if estimator.work is None:
+        return 0.0
+    try:
+        return float(estimator.work(dist, estimator.size_for(len(dist.ranged), None), model))
+    except ValueError:
+        return math.inf
+
+
+def _drag_example(method: str, dist: TossDistribution, rate: float) -> str:
     """An --n that takes about a minute with drag, and what it means."""
     k = len(dist.ranged)
     if method == "grid":
-        cells = max(1, int((60 * DRAG_TOSSES_PER_SECOND) ** (1 / max(k, 1))))
+        cells = max(1, int((60 * rate) ** (1 / max(k, 1))))
         return f"--n {cells} ({cells}^{k} = {cells**k:,} tosses, about a minute)"
     if method == "qmc":
-        return "--n 1024 (about a minute)"
-    return "--n 1000 (about a minute; standard error about 0.016)"
+        size = 1 << max(4, int(math.log2(60 * rate)))
+        return f"--n {size} (about a minute)"
+    size = int(10 ** math.floor(math.log10(60 * rate)))
+    return f"--n {size} (about a minute or less; standard error about {0.5 / math.sqrt(size):.2g})"
 
 
 def _warnings(result: Any) -> list[str]:
