@@ -93,7 +93,7 @@ TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
 """Largest rotation of the coin in one step, rad."""
 MAX_STEP = 1.0 / 64.0
 """Longest step, s."""
-DRAG_STEP = 0.05
+DRAG_STEP = 0.02
 """Largest step in units of the velocity's relaxation time 1/(c |v|)."""
 DECAY_STEP = 0.5
 """Largest step in units of the spin damping's time min(I1, I3)/K while the spin still turns
@@ -193,12 +193,12 @@ def projected_area(c: float, radius: float, thickness: float) -> float:
 def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
     """dv/dt: gravity and the quadratic drag c A |v| v, c = ρ C_d / 2m, on the projected area
     A = π r² |n·v̂| + 2 r h sqrt(1 − (n·v̂)²) (or the face area): A |v| = π r² |n·v| + 2 r h
-    sqrt(|v|² − (n·v)²), one square root."""
+    |n × v|, one square root."""
     if air.projected > 0.0:
-        nv = dot(n, v)
-        s2 = dot(v, v) - nv * nv
-        area_speed = math.pi * air.radius * air.radius * abs(nv) + 2.0 * air.radius * (
-            air.thickness * math.sqrt(s2 if s2 > 0.0 else 0.0)
+        # |v| sqrt(1 − (n·v̂)²) = |n × v|, accurate when broadside on (unlike |v|² − (n·v)²).
+        nxv = cross(n, v)
+        area_speed = math.pi * air.radius * air.radius * abs(dot(n, v)) + 2.0 * air.radius * (
+            air.thickness * math.sqrt(dot(nxv, nxv))
         )
     else:
         area_speed = math.pi * air.radius * air.radius * math.sqrt(dot(v, v))
