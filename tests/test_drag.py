@@ -264,9 +264,10 @@ def test_any_damping_ends_quickly(k):
     # left could turn the coin by less than FROZEN_TURN), whatever K.
     tiny = Coin(radius=1e-3, thickness=1e-4, mass=1e-4)  # I1 = 2.5e-11 kg m²: K/I1 to 4e13 1/s
     omega = np.array([[80.0, 20.0, 10.0]])
+    air_kernels.catch(omega, 3.43, 1.0, _air(tiny, cd=1.17))  # compile or load the cache
     start = time.perf_counter()
     face, when, nz = air_kernels.catch(omega, 3.43, 1.0, _air(tiny, cd=1.17, k=k))
-    assert time.perf_counter() - start < 5.0  # includes the first compilation
+    assert time.perf_counter() - start < 1.0
     assert face[0] == 1 and nz[0] > 1 - 1e-6  # stopped at once: still heads up
     assert 0.5 < when[0] < 0.7  # drag shortens the 0.699 s of the vacuum flight
     i1, i3 = QUARTER.moments

@@ -694,24 +694,22 @@ def states(
 def steps_needed(air: Air, launch_speed: float, drop_height: float = 0.0, spin: float = 0.0) -> float:
     """Upper estimate of the steps of one toss to its catch or first contact (for the work bound).
 
-    The flight lasts at most v0/g up and, down a height D = v0²/2g + drop height, at most the
-    broadside fall with the largest drag factor c = ρ C_d A_max / 2m from rest,
-    t = acosh(e^{c D}) / sqrt(g c) (the quadratic-drag fall, e.g. Taylor, *Classical Mechanics*,
-    2005, §2.4). Steps: that time over the shortest step, DRAG_STEP / (c max(v0, v_t)),
-    MAX_STEP or TURN_STEP at the spin ``spin`` (rad/s; the coin turns at most that fast times
-    I3/I1).
+    With the largest drag factor c = ρ C_d A_max / 2m and v_t = sqrt(g/c) (the quadratic-drag
+    motions, e.g. Taylor, *Classical Mechanics*, 2005, §2.4): the rise lasts (v_t/g) atan(v0/v_t)
+    ≤ v0/g at speeds ≤ v0; the fall, down at most D = v0²/2g + drop height from rest, lasts at
+    most acosh(e^{c D}) / sqrt(g c) at speeds ≤ v_t. Steps: each phase's time over its shortest
+    step, DRAG_STEP / (c v), MAX_STEP or TURN_STEP at the spin ``spin`` (rad/s; the coin turns
+    at most that fast times I3/I1).
     """
     g = air.g
     c = air.drag_factor * air.max_area
     v0 = abs(float(launch_speed))
     fall = v0 * v0 / (2.0 * g) + max(float(drop_height), 0.0)
+    turning = max(spin * max(air.i3 / air.i1, 1.0) / TURN_STEP, 1.0 / MAX_STEP)
     if c > 0.0:
+        v_t = math.sqrt(g / c)
+        up = v_t / g * math.atan(v0 / v_t)
         x = c * fall
         down = (x + math.log1p(math.sqrt(-math.expm1(-2.0 * x)))) / math.sqrt(g * c)
-        fastest = c * max(v0, math.sqrt(g / c)) / DRAG_STEP
-    else:
-        down = math.sqrt(2.0 * fall / g)
-        fastest = 0.0
-    duration = v0 / g + down
-    turning = spin * max(air.i3 / air.i1, 1.0) / TURN_STEP
-    return duration * max(fastest, turning, 1.0 / MAX_STEP) + 10.0
+        return up * max(turning, c * v0 / DRAG_STEP) + down * max(turning, c * v_t / DRAG_STEP) + 10
+    return (v0 / g + math.sqrt(2.0 * fall / g)) * turning + 10.0

@@ -78,7 +78,7 @@ def check_air(
             f"air drag C_d = {drag.coefficient:g} in air of density {drag.air_density:g} kg/m³ on "
             f"this coin (radius {coin.radius:g} m, mass {coin.mass:g} kg) would need about "
             f"{steps:.3g} integration steps a toss, more than the {drag_kernels.MAX_STEPS:,} "
-            "allowed; use a smaller C_d, spin or flight time, or a heavier coin"
+            "allowed; use a smaller C_d, spin, flight time or drop height, or a heavier coin"
         )
 
 

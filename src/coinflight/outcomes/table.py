@@ -52,7 +52,7 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 BOUNCING_TOSSES_PER_SECOND = 1.6e5
 """Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet)."""
 
-AIR_LANDINGS_PER_SECOND = 1e4
+AIR_LANDINGS_PER_SECOND = 4e3
 """Table landings through air carried to rest a second, 2 threads on the busy 2-core machine
 (benchmarks/bench_air.py)."""
 
