@@ -108,9 +108,7 @@ def main() -> None:
         "table first contact": median_rate(
             lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0), n, args.repeats
         ),
-        "table": median_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag), n, args.repeats
-        ),
+        "table": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag), n, args.repeats),
     }
     for name, rate in rates.items():
         print(f"  compiled, {name}: {rate:,.0f} tosses/s")
@@ -128,11 +126,20 @@ def main() -> None:
     )
     if args.old_src:
         payload = json.dumps(
-            {"omega": omega[:m].tolist(), "v0": v0[:m].tolist(), "cd": args.drag, "k": args.spin_damping}
+            {
+                "omega": omega[:m].tolist(),
+                "v0": v0[:m].tolist(),
+                "cd": args.drag,
+                "k": args.spin_damping,
+            }
         )
         env = dict(os.environ, PYTHONPATH=args.old_src)
         out = subprocess.run(
-            [sys.executable, "-c", OLD, payload], env=env, capture_output=True, text=True, check=True
+            [sys.executable, "-c", OLD, payload],
+            env=env,
+            capture_output=True,
+            text=True,
+            check=True,
         )
         old = json.loads(out.stdout)
         for name in ("hand", "table"):

@@ -191,7 +191,7 @@ def test_projected_area_is_the_silhouette():
         [np.column_stack([r * np.cos(phi), r * np.sin(phi), np.full_like(phi, z)]) for z in (0, h)]
     )
     for theta in np.linspace(0.0, np.pi, 13):
-        d = np.array([np.sin(theta), 0.0, np.cos(theta)])
+        # Seen along d = (sin θ, 0, cos θ): the plane across it is spanned by e1, e2.
         e1 = np.array([np.cos(theta), 0.0, -np.sin(theta)])
         e2 = np.array([0.0, 1.0, 0.0])
         hull = ConvexHull(np.column_stack([rims @ e1, rims @ e2]))

@@ -166,8 +166,6 @@ def test_drag_landing_takes_the_contact_record():
         spin_damping=0.0,
         air_density=1.2,
     )
-    face, _, first, settle, status = drag.land(
-        np.array([[40.0, 3.0, 2.0]]), 2.0, 1.0, air, contact
-    )
+    face, _, first, settle, status = drag.land(np.array([[40.0, 3.0, 2.0]]), 2.0, 1.0, air, contact)
     assert int(face[0]) in tuple(Face) and int(status[0]) in tuple(Status)
     assert 0.0 < first[0] <= settle[0]

@@ -163,9 +163,7 @@ def air_catch(
     back_down.direction = -1  # type: ignore[attr-defined]
     q0 = [0.0, 0.0, 0.0, 1.0] if start_sign > 0 else [1.0, 0.0, 0.0, 0.0]
     y0 = np.concatenate([[0.0, 0.0, 0.0, 0.0, 0.0, float(launch_speed)], omega0, q0])
-    sol = solve_ivp(
-        f, (0.0, 60.0), y0, method="DOP853", rtol=rtol, atol=atol, events=back_down
-    )
+    sol = solve_ivp(f, (0.0, 60.0), y0, method="DOP853", rtol=rtol, atol=atol, events=back_down)
     if sol.t_events[0].size == 0:  # pragma: no cover - gravity brings it down
         raise RuntimeError("the numerical reference did not come back down")
     return float(sol.t_events[0][0]), np.asarray(sol.y_events[0][0])
