@@ -32,7 +32,8 @@ coupling only turns b), so
 
 in closed form, and the triad (n, u = b/|b|, n × u) turns with the angular velocity L/I1,
 which has the components (a, |b|, 0)/I1 in that triad. Its rotation is integrated by the
-fourth-order Magnus method of Blanes, Casas, Oteo & Ros (*Phys. Rep.* 470:151, 2009, eq 4.3):
+fourth-order Magnus method with two Gauss-Legendre points (Blanes, Casas, Oteo & Ros,
+*Phys. Rep.* 470:151, 2009):
 over a step h the triad turns by the rotation vector
 
     θ = ∫ (a n + |b| u)/I1 dt + (√3/12) h² ω1 × ω2
@@ -113,12 +114,14 @@ MAX_STEPS = 1_000_000
 negative catch time (hand); :func:`coinflight.outcomes.air.check_air` refuses, before any
 work, the air in which a toss would need more (:func:`steps_needed`)."""
 SQRT3_12 = math.sqrt(3.0) / 12.0
+GAUSS = math.sqrt(3.0) / 6.0
+"""The Gauss-Legendre points of a step h from t0 are t0 + (½ ∓ GAUSS) h."""
+# Status codes as plain ints for the compiled loops (core.outcome.Status).
 _ENERGY = int(Status.SETTLED_ENERGY)
 _DEAD = int(Status.SETTLED_DEAD)
 _ROCKING = int(Status.SETTLED_ROCKING)
 _LIMIT = int(Status.BOUNCE_LIMIT)
 _UNSETTLED = int(Status.UNSETTLED)
-GAUSS = math.sqrt(3.0) / 6.0
 
 
 class Air(NamedTuple):
@@ -451,7 +454,11 @@ def _gap(z, v, n, lm, air, hh):
 @njit(cache=True)
 def ending(v, lm, n, rebound, c):
     """(face, status) if the coin has settled after this impact, else (−1, −1): the rules of
-    :func:`coinflight.core.bounce.land_one` (below the barrier; dead; the bounces died out)."""
+    :func:`coinflight.core.bounce.land_one` (below the barrier; dead; the bounces died out).
+
+    The landing through air calls its ending here and only here (a new contact phase of
+    :mod:`coinflight.core.bounce` replaces :func:`~coinflight.core.bounce.rock` in this one
+    place)."""
     z = lowest_depth(n[2], c.radius, c.half_thickness)
     if tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z) < c.barrier:
         return resting_face(n[2], c.edge_sine), _ENERGY
