@@ -11,6 +11,7 @@ are tosses a second, the median of the repeats, all of numba's threads:
 - hand catch (:func:`coinflight.outcomes.air.catch_with_drag`),
 - table landing 0.8 m below launch (e = 0.5, μ = 0.3) to the first contact and carried to rest
   (:func:`coinflight.outcomes.table.land`),
+- the same kernels in one thread, per second of CPU time (the machine's other load excluded),
 - the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
   toss at a time: the previous product path's method and tolerance) on the first tosses,
 - with ``--old-src DIR``: the previous implementation (``coinflight`` imported from DIR in a
@@ -79,6 +80,13 @@ def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-d
     return n / statistics.median(times)
 
 
+def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
+    """Tosses per second of this process's CPU time (one call, after a warm-up)."""
+    t0 = time.process_time()
+    fn()
+    return n / (time.process_time() - t0)
+
+
 def main() -> None:
     import numba
 
@@ -99,8 +107,9 @@ def main() -> None:
         f"{n:,} tosses of a US nickel, C_d = {drag.coefficient:g}, K = {drag.spin_damping:g} N m s,"
         f" {numba.get_num_threads()} threads, {os.cpu_count()} CPUs, median of {args.repeats}"
     )
-    catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag)  # compile or load the cache
-    land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag)
+    for parallel in (True, False):  # compile or load the cache
+        catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
+        land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
     rates = {
         "hand": median_rate(
             lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag), n, args.repeats
@@ -112,6 +121,14 @@ def main() -> None:
     }
     for name, rate in rates.items():
         print(f"  compiled, {name}: {rate:,.0f} tosses/s")
+    # On a shared machine the wall clock counts the time other processes hold the cores: the
+    # serial kernels' CPU time gives the rate of one core (times the cores for a quiet machine).
+    cpu = {
+        "hand": cpu_rate(lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False), n),
+        "table": cpu_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False), n),
+    }
+    for name, rate in cpu.items():
+        print(f"  compiled, {name}, one thread: {rate:,.0f} tosses per CPU second")
     air = drag_model(COIN, drag, G)
     i1, i3 = COIN.moments
     f = numerical.air_rhs(
