@@ -31,9 +31,10 @@ if TYPE_CHECKING:
     from coinflight.model.toss import Toss
 
 DRAG_TOSSES_PER_SECOND = 2e4
-"""Tosses a second through air, for the work bounds: the slower of the hand catch and the table
-landing carried to rest (benchmarks/bench_air.py: a US nickel, ωx 150-300 rad/s, C_d = 1.17,
-2 threads on the busy 2-core machine; see its notes)."""
+"""Hand catches through air a second, for the work bounds: a US nickel, ωx 150-300 rad/s,
+C_d = 1.17, 2 threads on the shared 2-core machine (benchmarks/bench_air.py: 11,000-22,000 a
+second under a load of 7-24, ~75,000 per CPU second in one thread). The table landing's rate
+is :data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND`."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:

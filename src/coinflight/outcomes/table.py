@@ -53,8 +53,9 @@ BOUNCING_TOSSES_PER_SECOND = 1.6e5
 """Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet)."""
 
 AIR_LANDINGS_PER_SECOND = 4e3
-"""Table landings through air carried to rest a second, 2 threads on the busy 2-core machine
-(benchmarks/bench_air.py)."""
+"""Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3, C_d = 1.17),
+2 threads on the shared 2-core machine (benchmarks/bench_air.py: 3,500-3,700 a second under a
+load of 7-24, ~18,000 per CPU second in one thread)."""
 
 
 STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
