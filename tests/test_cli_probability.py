@@ -16,6 +16,7 @@ from coinflight.probability import estimate
 
 runner = CliRunner()
 FIG2A = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # Stefan & Cheche Fig 2a
+TABLE_AIR = ["--surface", "table", "--drag", "1.17"]
 THREE_SPINS = ["--omega-x", "60:90", "--omega-y", "0:20", "--omega-z", "0:5"]
 
 
@@ -146,10 +147,11 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
-        # With drag (~20 tosses/s) the default sizes would run for hours: --n must be given.
-        ([*FIG2A, "--drag", "1.17", "-m", "monte-carlo"], "give --n explicitly, e.g. --n 1000"),
-        ([*FIG2A, "--drag", "1.17", "-m", "grid"], "--n 34 (34^2 = 1,156 tosses"),
-        ([*FIG2A, "--drag", "1.17", "-m", "qmc"], "about 20 tosses per second"),
+        # A table landing through air (~4,000 tosses/s) would run the default sizes for minutes:
+        # --n must be given (the hand catch through air runs them in about a minute).
+        ([*FIG2A, *TABLE_AIR, "-m", "monte-carlo"], "give --n explicitly, e.g. --n 100000"),
+        ([*FIG2A, *TABLE_AIR, "-m", "grid"], "--n 489 (489^2 = 239,121 tosses"),
+        ([*FIG2A, *TABLE_AIR, "-m", "qmc"], "about 4,000 tosses per second"),
         (
             ["--omega-x", "60:90", "--launch-speed", "normal:0.1,1"],
             "--launch-speed normal(0.1, sd 1) m/s reaches speeds ≤ 0 m/s",

@@ -143,7 +143,7 @@ def test_drag_landing_takes_the_contact_record():
 
     coin = Coin.preset("us-nickel")
     i1, i3 = coin.moments
-    kw = dict(
+    contact = Contact.build(
         radius=coin.radius,
         thickness=coin.thickness,
         mass=coin.mass,
@@ -153,14 +153,19 @@ def test_drag_landing_takes_the_contact_record():
         friction=0.3,
         drop_height=0.8,
         g=9.81,
+        rest_speed=0.01,
     )
-    omega, v0 = (40.0, 3.0, 2.0), 2.0
-    by_keywords = drag.land(
-        omega, v0, 1.0, drag_coefficient=1.0, spin_damping=0.0, air_density=1.2, **kw
+    air = drag.Air.build(
+        mass=coin.mass,
+        radius=coin.radius,
+        thickness=coin.thickness,
+        i1=i1,
+        i3=i3,
+        g=9.81,
+        drag_coefficient=1.0,
+        spin_damping=0.0,
+        air_density=1.2,
     )
-    contact = Contact.build(rest_speed=0.01, **kw)
-    model = drag.DragModel(coin.mass, coin.radius, (i1, i1, i3), 9.81, 1.0, 0.0, 1.2)
-    assert drag.land_contact(omega, v0, 1.0, contact, model) == by_keywords
-    face, _, first, settle, status = by_keywords
-    assert face in tuple(Face) and isinstance(status, Status)
-    assert 0.0 < first <= settle
+    face, _, first, settle, status = drag.land(np.array([[40.0, 3.0, 2.0]]), 2.0, 1.0, air, contact)
+    assert int(face[0]) in tuple(Face) and int(status[0]) in tuple(Status)
+    assert 0.0 < first[0] <= settle[0]

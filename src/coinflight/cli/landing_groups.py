@@ -75,8 +75,8 @@ AIR = Group(
                     "--drag",
                     "CD",
                     SURFACE_PANEL,
-                    "Air drag coefficient C_d ≥ 0 on the face area (1.17: a flat disc); "
-                    "integrated numerically, slower. Default 0 (no air).",
+                    "Air drag coefficient C_d ≥ 0 on the coin's projected area (1.17: a flat "
+                    "disc broadside on); compiled integration. Default 0 (no air).",
                 ),
             ],
             None,

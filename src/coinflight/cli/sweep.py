@@ -201,9 +201,9 @@ def outcome_models(
     bounces: int | None,
 ) -> list[OutcomeModel]:
     """The outcome models of --surface and the table's lists (swept for the table only)."""
-    from coinflight.queries.landing import build_surface, check_bounces
     from coinflight.outcomes import SURFACE_KINDS
     from coinflight.outcomes import outcome_model as build_model
+    from coinflight.queries.landing import build_surface, check_bounces
 
     kinds = _names(surfaces, "--surface")
     for kind in kinds:
@@ -373,8 +373,8 @@ def sweep(
     Example: coinflight sweep --omega-x-mean 150,200,250 --omega-x-sd 10,20 --launch-speed
     1.5:3 --coin us-quarter,eur-1 --method monte-carlo --n 100000 --seed 1 --out sweep.parquet
     """
-    from coinflight.queries.values import resolve_coin
     from coinflight.probability.sweep import product_cases, run_sweep, table_files
+    from coinflight.queries.values import resolve_coin
 
     t0 = time.perf_counter()
     estimator = registry.get(method)

@@ -1,384 +1,741 @@
-"""Flight through air: quadratic drag on the centre of mass and damping of the spin (SciPy).
+"""Flight through air, compiled: quadratic drag on the projected area and linear spin damping.
 
-One toss per call, integrated by ``scipy.integrate.solve_ivp`` (DOP853; damping no faster
-than :data:`MAX_RATE`, never more than :data:`MAX_EVALUATIONS` evaluations a toss) on the
-13-dimensional state (position, velocity, body angular velocity ω, scalar-last quaternion q
-body → lab):
+One integrator (numba) carries a toss from launch to a hand catch at launch height
+(:func:`catch`) or to rest on a table (:func:`land`, with the impacts of
+:func:`coinflight.core.impact.impact` and the ending rules of :mod:`coinflight.core.bounce`).
 
-    dv/dt = −g Z − (ρ C_d A / 2m) |v| v,          A = π r² (a face, broadside on)
-    I ω̇ = −ω × I ω − k ω                          (Euler's equations with a damping torque)
-    dq/dt = ½ q ⊗ (ω, 0)
+Equations of motion (lab frame, SI; heads normal n, angular momentum L about the centre of mass,
+symmetric top with moments I1 about a diameter and I3 about the axis):
 
-The torque-free part reuses :func:`coinflight.core.numerical.euler_rhs` and
-:func:`coinflight.core.numerical.quaternion_rate` (Stefan & Cheche eq 5). Quadratic drag with a
-fixed area is the model of Strzałko et al. 2008 (§5, REFERENCES §4); the coin's changing
-attitude to the wind is not followed. With C_d = k = 0 the flight is the closed form of
-:mod:`coinflight.core.torque_free` and :mod:`coinflight.core.ballistics` (tested to 1e-9).
-Contacts with a table are located by ``solve_ivp``'s event root finding on the gap under the
-coin's lowest point, and resolved by :func:`coinflight.core.impact.impact`.
+    dv/dt = −g Z − (ρ C_d A(n·v̂) / 2m) |v| v
+    A(c) = π r² |c| + 2 r h sqrt(1 − c²)                    (c = n·v̂)
+    dL/dt = −K ω,   ω = I⁻¹ L = L/I1 + (1/I3 − 1/I1)(L·n) n,   dn/dt = ω × n
+
+Drag. A(c) is the area of the coin's silhouette seen along the flow: a right circular cylinder
+of radius r and thickness h viewed at an angle θ from its axis (cos θ = c) shows its face as an
+ellipse of area π r² |cos θ| and its side as a 2r × h sin θ rectangle, which do not overlap.
+One drag coefficient C_d is applied to that area for every attitude: an assumption (quasi-steady
+drag with the coefficient of a disc broadside on, 1.17, Hoerner, *Fluid-Dynamic Drag*, 1965,
+ch. 3; a thin disc edge-on has its own coefficient, not modelled separately), which replaces the
+fixed face area of the previous model (Strzałko et al. 2008 use quadratic drag on a fixed area,
+§5, REFERENCES §4; ``projected=False`` keeps it, for comparison). The drag acts at the centre of
+mass: the aerodynamic torques of a tumbling disc (lift, a centre of pressure off the centre) are
+not modelled.
+
+Spin damping. The torque is −K ω (K in N m s, ``Drag.spin_damping``). It is not isotropic in I
+(the torque −k I ω would be, and reduces to the torque-free motion in the rescaled time
+(1 − e^{−kt})/k), so the motion is solved as follows. Writing L = a n + b with a = L·n and b ⊥
+n, the equations give ȧ = −(K/I3) a and d|b|/dt = −(K/I1) |b| exactly (the torque-free
+coupling only turns b), so
+
+    a(t) = a0 e^{−K t / I3},   |b|(t) = |b0| e^{−K t / I1}
+
+in closed form, and the triad (n, u = b/|b|, n × u) turns with the angular velocity L/I1,
+which has the components (a, |b|, 0)/I1 in that triad. Its rotation is integrated by the
+fourth-order Magnus method with two Gauss-Legendre points (Blanes, Casas, Oteo & Ros,
+*Phys. Rep.* 470:151, 2009):
+over a step h the triad turns by the rotation vector
+
+    θ = ∫ (a n + |b| u)/I1 dt + (√3/12) h² ω1 × ω2
+
+(ω1, ω2 the triad's angular velocity at the two Gauss points), the first term integrated
+exactly. Without damping the first term is the whole rotation: the torque-free precession of
+n about the fixed L at the rate |L|/I1 (Diaconis, Holmes & Montgomery 2007 §2, as
+:func:`coinflight.core.bounce.precess`) to rounding error, so K = 0 reproduces the closed form
+whatever the step. The damping's only time scale limits a step to ``DECAY_STEP`` · min(I1, I3)/K
+until the spin that remains could turn the coin by less than 1e-12 rad; after that the attitude is
+frozen, so any K ≥ 0 (1e3 N m s on a 1 mm coin) ends in a bounded number of steps.
+
+Translation: classical Runge-Kutta (RK4) in t on (z, v), with n at the stages from the
+Magnus half steps. RK4 is exact for the vacuum parabola, so C_d = K = 0 reproduces
+:mod:`coinflight.core.ballistics` too. A step turns the coin by at most ``TURN_STEP`` rad (the
+projected area changes with the attitude), lasts at most ``MAX_STEP`` s and at most
+``DRAG_STEP``/(c |v|) (c = ρ C_d A_max / 2m: the relaxation of the velocity).
+
+Accuracy. The area's |n·v̂| has a kink twice a turn, which RK4 samples with errors of either
+sign; against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
+time of vigorous tosses (ωx 150-300 rad/s) differs by 1e-6 s (median) and 4e-6 s (worst of 40)
+and n_z by at most 5e-4 (tests/test_drag.py); the drag itself moves the catch by ~4e-3 s and a
+10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 + (√5 − 1)/2) ≈ 0.95 rad keeps the step
+incommensurate with the half turn: at 2π/6.5 the kinks fell at the same phase of the steps
+and the errors added up (3e-5 s).
+
+Events. The catch is the centre of mass coming back down to launch height; the table contact
+is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
+next_contact`: conservative advancement (Mirtich 1996, §3.4) with a second-order bound on the
+gap, then a safeguarded Newton iteration on the length of one step from the bracket's start
+(a step of any length from a state is a smooth function of its length).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numba import njit, prange
+from numpy.typing import NDArray
 
-from coinflight.core.ballistics import flight_time
+from coinflight.core.bounce import (
+    CA_TOLERANCE,
+    GAP_TOLERANCE,
+    GRAZE_SKIP,
+    MAX_IMPACTS,
+    rock,
+    tumbling_energy,
+)
 from coinflight.core.contact import Contact
-from coinflight.core.numerical import euler_rhs, quaternion_rate
+from coinflight.core.impact import (
+    angular_velocity,
+    contact_point,
+    cross,
+    dot,
+    impact,
+    lowest_depth,
+    resting_face,
+)
 from coinflight.core.outcome import Status
 
 FloatArray = NDArray[np.float64]
-RTOL = 1e-12
-ATOL = 1e-13
-MAX_EVALUATIONS = 50_000
-"""Most evaluations of the equations of motion for one toss (every flight and bounce of it):
-about 5 s at the ~10⁴ a second measured on the 2-core machine. A toss at 80 rad/s takes
-1,000-10,000; beyond the limit the toss ends in a ValueError instead of running on."""
-EVALUATIONS_PER_SECOND = 1e4
-MAX_RATE = 1e4
-"""Fastest relaxation rate accepted, 1/s: the spin damping K/I (a tiny coin's spin dies in
-attoseconds) or the drag 2 c |v| (a light, wide coin). DOP853, like any explicit method, is
-stable only for steps below ~3/rate: at 1e4 1/s a second of flight is ~4e4 evaluations. Stiff
-solvers (BDF, LSODA) were tried: they failed ('step size less than spacing') on the table."""
+
+TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
+"""Largest rotation of the coin in one step, rad (see the notes on accuracy)."""
+MAX_STEP = 1.0 / 64.0
+"""Longest step, s."""
+DRAG_STEP = 0.02
+"""Largest step in units of the velocity's relaxation time 1/(c |v|)."""
+DECAY_STEP = 0.5
+"""Largest step in units of the spin damping's time min(I1, I3)/K while the spin still turns
+the coin."""
+FROZEN_TURN = 1e-12
+"""Once the spin that remains can turn the coin by less than this (rad), its attitude is frozen."""
+MAX_STEPS = 1_000_000
+"""Steps per toss at most: a toss that needs more ends with status UNSETTLED (table) or a
+negative catch time (hand); :func:`coinflight.outcomes.air.check_air` refuses, before any
+work, the air in which a toss would need more (:func:`steps_needed`)."""
+SQRT3_12 = math.sqrt(3.0) / 12.0
+GAUSS = math.sqrt(3.0) / 6.0
+"""The Gauss-Legendre points of a step h from t0 are t0 + (½ ∓ GAUSS) h."""
+# Status codes as plain ints for the compiled loops (core.outcome.Status).
+_ENERGY = int(Status.SETTLED_ENERGY)
+_DEAD = int(Status.SETTLED_DEAD)
+_ROCKING = int(Status.SETTLED_ROCKING)
+_LIMIT = int(Status.BOUNCE_LIMIT)
+_UNSETTLED = int(Status.UNSETTLED)
 
 
-class IntegrationLimit(ValueError):
-    """A toss with drag needed more than :data:`MAX_EVALUATIONS` evaluations."""
+class Air(NamedTuple):
+    """A coin in air, as the kernels read it (SI units): built by :meth:`Air.build`.
 
-
-@dataclass(frozen=True)
-class DragModel:
-    """Parameters of the drag flight (SI units)."""
+    Attributes
+    ----------
+    mass, radius, thickness, i1, i3, g : float
+        The coin (kg, m, m, kg m², kg m²) and gravity (m/s²).
+    drag_factor : float
+        ρ C_d / 2m, 1/m³: times an area A and |v| v, the drag deceleration.
+    spin_damping : float
+        K of the damping torque −K ω, N m s.
+    projected : float
+        1.0: A is the projected area of the coin seen along its velocity; 0.0: the face area
+        π r² whatever the attitude (the previous model).
+    max_area : float
+        Largest projected area, sqrt((π r²)² + (2 r h)²) (1.0) or π r² (0.0), m².
+    """
 
     mass: float
     radius: float
-    moments: tuple[float, float, float]
+    thickness: float
+    i1: float
+    i3: float
     g: float
-    drag_coefficient: float = 0.0
-    spin_damping: float = 0.0
-    air_density: float = 1.2
+    drag_factor: float
+    spin_damping: float
+    projected: float
+    max_area: float
 
-    @property
-    def drag_factor(self) -> float:
-        """ρ C_d A / 2m, 1/m: the deceleration per (m/s)² of speed."""
-        area = math.pi * self.radius**2
-        return 0.5 * self.air_density * self.drag_coefficient * area / self.mass
-
-
-def stiffness(model: DragModel, launch_speed: float) -> float:
-    """Fastest relaxation rate of the flight, 1/s: max(k/I1, k/I3, 2 c v) with c the drag factor
-    and v the larger of the launch speed and the terminal speed sqrt(g/c)."""
-    rates = [model.spin_damping / i for i in model.moments]
-    c = model.drag_factor
-    if c > 0:
-        rates.append(2.0 * c * max(abs(float(launch_speed)), math.sqrt(model.g / c)))
-    return max(rates)
-
-
-def check_stiffness(model: DragModel, launch_speed: float) -> None:
-    """ValueError unless the flight relaxes no faster than :data:`MAX_RATE` (before any work).
-
-    Beyond it the spin damping stops the spin (or the drag the fall) faster than DOP853 can
-    follow within :data:`MAX_EVALUATIONS` (its steps stay below ~3/rate); so short a time
-    constant is no coin in air (a 1 mm coin with K = 1e-3 N m s would stop in a nanosecond).
-    """
-    rate = stiffness(model, launch_speed)
-    if rate <= MAX_RATE:
-        return
-    i_min = min(model.moments)
-    if model.spin_damping / i_min >= rate:
-        raise ValueError(
-            f"spin damping must be at most {i_min * MAX_RATE:.3g} N m s for this coin (it would "
-            f"stop the spin in {i_min / model.spin_damping:.3g} s, faster than the "
-            f"{1.0 / MAX_RATE:g} s the integrator can follow), got {model.spin_damping:g}"
+    @classmethod
+    def build(
+        cls,
+        *,
+        mass: float,
+        radius: float,
+        thickness: float,
+        i1: float,
+        i3: float,
+        g: float,
+        drag_coefficient: float,
+        spin_damping: float,
+        air_density: float,
+        projected: bool = True,
+    ) -> Air:
+        """The record; no validation (the value layer has checked every value)."""
+        face = math.pi * radius * radius
+        side = 2.0 * radius * thickness
+        return cls(
+            mass=float(mass),
+            radius=float(radius),
+            thickness=float(thickness),
+            i1=float(i1),
+            i3=float(i3),
+            g=float(g),
+            drag_factor=0.5 * float(air_density) * float(drag_coefficient) / float(mass),
+            spin_damping=float(spin_damping),
+            projected=1.0 if projected else 0.0,
+            max_area=math.hypot(face, side) if projected else face,
         )
-    raise ValueError(
-        f"air drag C_d = {model.drag_coefficient:g} on this coin (radius {model.radius:g} m, mass "
-        f"{model.mass:g} kg) would stop its fall in {1.0 / rate:.3g} s, faster than the "
-        f"{1.0 / MAX_RATE:g} s the integrator can follow; use a smaller C_d or a heavier coin"
-    )
 
 
-def bounded(
-    f: Callable[[float, FloatArray], FloatArray], what: str
-) -> Callable[[float, FloatArray], FloatArray]:
-    """``f`` that raises :class:`IntegrationLimit` at its :data:`MAX_EVALUATIONS` + 1-th call.
+@njit(cache=True)
+def projected_area(c: float, radius: float, thickness: float) -> float:
+    """Area of a cylinder's silhouette seen along a direction at cos θ = c from its axis, m².
 
-    One bounded function serves every integration of a toss, so the bound is per toss.
+    π r² |c| (the face, an ellipse) + 2 r h sqrt(1 − c²) (the side, a rectangle).
     """
-    calls = 0
-
-    def g(t: float, y: FloatArray) -> FloatArray:
-        nonlocal calls
-        calls += 1
-        if calls > MAX_EVALUATIONS:
-            raise IntegrationLimit(
-                f"{what} needed more than {MAX_EVALUATIONS:,} evaluations of its equations of "
-                f"motion (about {MAX_EVALUATIONS / EVALUATIONS_PER_SECOND:.0f} s) and was "
-                "stopped; use a smaller spin, flight time, drag or spin damping"
-            )
-        return f(t, y)
-
-    return g
+    s2 = 1.0 - c * c
+    return math.pi * radius * radius * abs(c) + 2.0 * radius * thickness * math.sqrt(
+        s2 if s2 > 0.0 else 0.0
+    )
 
 
-def solve(
-    f: Callable[[float, FloatArray], FloatArray],
-    span: tuple[float, float],
-    y0: FloatArray,
-    what: str,
-    **options: object,
-) -> Any:
-    """``solve_ivp`` at :data:`RTOL`/:data:`ATOL`; a ValueError naming the toss if it fails."""
-    from scipy.integrate import solve_ivp
+@njit(cache=True)
+def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
+    """dv/dt: gravity and the quadratic drag c A |v| v, c = ρ C_d / 2m, on the projected area
+    A = π r² |n·v̂| + 2 r h sqrt(1 − (n·v̂)²) (or the face area): A |v| = π r² |n·v| + 2 r h
+    |n × v|, one square root."""
+    if air.projected > 0.0:
+        # |v| sqrt(1 − (n·v̂)²) = |n × v|, accurate when broadside on (unlike |v|² − (n·v)²).
+        nxv = cross(n, v)
+        area_speed = math.pi * air.radius * air.radius * abs(dot(n, v)) + 2.0 * air.radius * (
+            air.thickness * math.sqrt(dot(nxv, nxv))
+        )
+    else:
+        area_speed = math.pi * air.radius * air.radius * math.sqrt(dot(v, v))
+    k = air.drag_factor * area_speed
+    return (-k * v[0], -k * v[1], -air.g - k * v[2])
 
-    sol = solve_ivp(f, span, y0, method="DOP853", rtol=RTOL, atol=ATOL, **options)
-    if sol.status < 0:  # pragma: no cover - bounded rates and evaluations
-        raise ValueError(f"{what} could not be integrated (DOP853: {sol.message})")
-    return sol
+
+@njit(cache=True)
+def _decay(rate: float, t0: float, h: float) -> tuple:
+    """(e^{−rate t0}, ∫_{t0}^{t0+h} e^{−rate t} dt)."""
+    e0 = math.exp(-rate * t0)
+    if rate == 0.0:
+        return e0, h
+    x = rate * h
+    if x < 1e-8:
+        return e0, e0 * h * (1.0 - 0.5 * x)
+    return e0, -e0 * math.expm1(-x) / rate
 
 
-def describe(model: DragModel, omega0: ArrayLike, launch_speed: float) -> str:
-    """``'the toss with air drag (|ω0| = 80 rad/s, v0 = 3.43 m/s, C_d = 1.17, K = 0 N m s)'``."""
-    w = float(np.linalg.norm(np.asarray(omega0, dtype=float)))
+@njit(cache=True)
+def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
+    """x turned about the unit vector ``axis`` by the angle of cosine c and sine s (Rodrigues)."""
+    d = dot(axis, x) * (1.0 - c)
+    w = cross(axis, x)
     return (
-        f"the toss with air drag (|ω0| = {w:.3g} rad/s, v0 = {float(launch_speed):.3g} m/s, "
-        f"C_d = {model.drag_coefficient:g}, K = {model.spin_damping:g} N m s)"
+        x[0] * c + w[0] * s + axis[0] * d,
+        x[1] * c + w[1] * s + axis[1] * d,
+        x[2] * c + w[2] * s + axis[2] * d,
     )
 
 
-def rhs(model: DragModel) -> Callable[[float, FloatArray], FloatArray]:
-    """Right-hand side f(t, y) for y = (x, y, z, vx, vy, vz, ωx, ωy, ωz, qx, qy, qz, qw)."""
-    moments = np.asarray(model.moments, dtype=float)
-    k = model.drag_factor
-    damping = model.spin_damping / moments
-    g = model.g
-
-    def f(_t: float, y: FloatArray) -> FloatArray:
-        v = y[3:6]
-        w = y[6:9]
-        acc = -k * math.sqrt(v @ v) * v
-        acc[2] -= g
-        dw = euler_rhs(w, moments) - damping * w
-        return np.concatenate([v, acc, dw, quaternion_rate(y[9:13], w)])
-
-    return f
-
-
-def initial_state(omega0: ArrayLike, launch_speed: float, start_sign: float) -> FloatArray:
-    """State at launch: centre of mass at the origin moving up at v0; heads or tails up."""
-    q0 = [0.0, 0.0, 0.0, 1.0] if start_sign > 0 else [1.0, 0.0, 0.0, 0.0]
-    return np.concatenate([[0.0, 0.0, 0.0, 0.0, 0.0, float(launch_speed)], omega0, q0])
-
-
-def normal(q: FloatArray) -> FloatArray:
-    """Heads normal in the lab, the third column of R(q), for scalar-last q (..., 4)."""
-    x, y, z, w = np.moveaxis(np.asarray(q, dtype=float), -1, 0)
-    s = 1.0 / (x * x + y * y + z * z + w * w)
-    return np.stack(
-        [2 * s * (x * z + w * y), 2 * s * (y * z - w * x), 1 - 2 * s * (x * x + y * y)], axis=-1
+@njit(cache=True)
+def rotation(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
+    """(axis, cos, sin) of the triad's turn over a step h from t0 (times since a0, b0 were
+    set): fourth-order Magnus (see the module notes), exact when K = 0."""
+    k = air.spin_damping
+    if k == 0.0:
+        ta = a0 * h / air.i1  # ∫ a/I1 dt, along n
+        tb = b0 * h / air.i1  # ∫ |b|/I1 dt, along u
+        tw = 0.0
+    else:
+        _, int3 = _decay(k / air.i3, t0, h)
+        _, int1 = _decay(k / air.i1, t0, h)
+        ta = a0 * int3 / air.i1
+        tb = b0 * int1 / air.i1
+        # (√3/12) h² (ω1 × ω2)·w with ω = (a, |b|, 0)/I1 at the Gauss points t0 + (½ ∓ √3/6) h.
+        s1 = t0 + (0.5 - GAUSS) * h
+        s2 = t0 + (0.5 + GAUSS) * h
+        al1 = a0 * math.exp(-k * s1 / air.i3)
+        al2 = a0 * math.exp(-k * s2 / air.i3)
+        be1 = b0 * math.exp(-k * s1 / air.i1)
+        be2 = b0 * math.exp(-k * s2 / air.i1)
+        tw = SQRT3_12 * h * h * (al1 * be2 - be1 * al2) / (air.i1 * air.i1)
+    w = cross(n, u)
+    theta = (
+        ta * n[0] + tb * u[0] + tw * w[0],
+        ta * n[1] + tb * u[1] + tw * w[1],
+        ta * n[2] + tb * u[2] + tw * w[2],
     )
+    angle = math.sqrt(dot(theta, theta))
+    if angle == 0.0:
+        return (0.0, 0.0, 1.0), 1.0, 0.0
+    return (theta[0] / angle, theta[1] / angle, theta[2] / angle), math.cos(angle), math.sin(angle)
 
 
-def fly(
-    model: DragModel,
-    omega0: ArrayLike,
-    launch_speed: float,
-    t_eval: ArrayLike,
-    start_sign: float = 1.0,
-) -> FloatArray:
-    """States (n, 13) at the times ``t_eval`` (increasing, ≥ 0) of a flight with drag."""
-    t_eval = np.atleast_1d(np.asarray(t_eval, dtype=float))
-    y0 = initial_state(np.asarray(omega0, dtype=float), launch_speed, start_sign)
-    t_end = max(float(t_eval[-1]), 1e-12)
-    what = describe(model, omega0, launch_speed)
-    check_stiffness(model, launch_speed)
-    sol: Any = solve(bounded(rhs(model), what), (0.0, t_end), y0, what, t_eval=t_eval)
-    return np.asarray(sol.y.T)
+@njit(cache=True)
+def turn(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
+    """The triad (n, u) after a step h from t0 (:func:`rotation`)."""
+    axis, c, s = rotation(n, u, t0, h, a0, b0, air)
+    return _rotate(n, axis, c, s), _rotate(u, axis, c, s)
+
+
+@njit(cache=True)
+def angular_momentum(n: tuple, u: tuple, t: float, a0: float, b0: float, air: Air) -> tuple:
+    """L = a(t) n + |b|(t) u at time t since a0, b0 were set (the closed-form decays)."""
+    a = a0
+    b = b0
+    if air.spin_damping > 0.0:
+        a *= math.exp(-air.spin_damping * t / air.i3)
+        b *= math.exp(-air.spin_damping * t / air.i1)
+    return (a * n[0] + b * u[0], a * n[1] + b * u[1], a * n[2] + b * u[2])
+
+
+@njit(cache=True)
+def split(lm: tuple, n: tuple) -> tuple:
+    """(a, |b|, u): L = a n + |b| u with u ⊥ n a unit vector (any, when b = 0)."""
+    a = dot(lm, n)
+    b = (lm[0] - a * n[0], lm[1] - a * n[1], lm[2] - a * n[2])
+    bm = math.sqrt(dot(b, b))
+    if bm > 0.0:
+        return a, bm, (b[0] / bm, b[1] / bm, b[2] / bm)
+    # Any unit vector perpendicular to n.
+    p = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+    q = cross(n, p)
+    qm = math.sqrt(dot(q, q))
+    return a, 0.0, (q[0] / qm, q[1] / qm, q[2] / qm)
+
+
+@njit(cache=True)
+def step(z, v, n, u, t0, h, a0, b0, air):
+    """One RK4 step of length h of the centre of mass (height z, velocity v) and the Magnus
+    half steps of the attitude (n, u); t0 counts from the setting of a0, b0."""
+    axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
+    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s)
+
+
+@njit(cache=True)
+def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
+    """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation`:
+    without damping the same for every step of the same length, so computed once for them."""
+    n1 = _rotate(n, axis, c, s)
+    u1 = _rotate(u, axis, c, s)
+    if air.spin_damping > 0.0:  # else the second half turn is the first again
+        axis, c, s = rotation(n1, u1, t0 + 0.5 * h, 0.5 * h, a0, b0, air)
+    n2 = _rotate(n1, axis, c, s)
+    u2 = _rotate(u1, axis, c, s)
+    k1 = _acceleration(v, n, air)
+    va = (v[0] + 0.5 * h * k1[0], v[1] + 0.5 * h * k1[1], v[2] + 0.5 * h * k1[2])
+    k2 = _acceleration(va, n1, air)
+    vb = (v[0] + 0.5 * h * k2[0], v[1] + 0.5 * h * k2[1], v[2] + 0.5 * h * k2[2])
+    k3 = _acceleration(vb, n1, air)
+    vc = (v[0] + h * k3[0], v[1] + h * k3[1], v[2] + h * k3[2])
+    k4 = _acceleration(vc, n2, air)
+    z1 = z + h / 6.0 * (v[2] + 2.0 * va[2] + 2.0 * vb[2] + vc[2])
+    v1 = (
+        v[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
+        v[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
+        v[2] + h / 6.0 * (k1[2] + 2.0 * k2[2] + 2.0 * k3[2] + k4[2]),
+    )
+    return z1, v1, n2, u2
+
+
+@njit(cache=True)
+def step_size(v, t0, a0, b0, air):
+    """Longest step allowed from this state (TURN_STEP, MAX_STEP, DRAG_STEP, DECAY_STEP)."""
+    k = air.spin_damping
+    a = abs(a0)
+    b = b0
+    if k > 0.0:
+        a *= math.exp(-k * t0 / air.i3)
+        b *= math.exp(-k * t0 / air.i1)
+    rate = math.sqrt(a * a + b * b) / air.i1  # how fast the triad turns, rad/s
+    h = MAX_STEP
+    if rate * h > TURN_STEP:
+        h = TURN_STEP / rate
+    speed = math.sqrt(dot(v, v))
+    relax = air.drag_factor * air.max_area * speed
+    if relax * h > DRAG_STEP:
+        h = DRAG_STEP / relax
+    # The spin that remains turns the coin by at most ∫ rate dt ≤ (a I3 + b I1)/(K I1).
+    if k > 0.0 and (a * air.i3 + b * air.i1) / (k * air.i1) > FROZEN_TURN:
+        decay = DECAY_STEP * min(air.i1, air.i3) / k
+        if decay < h:
+            h = decay
+    return h
+
+
+@njit(cache=True)
+def launch_state(omega_body, start_sign, air):
+    """(n, u, a0, b0) at launch: heads up (identity) or tails up (a half turn about lab X)."""
+    s = 1.0 if start_sign > 0 else -1.0
+    n = (0.0, 0.0, s)
+    lm = (air.i1 * omega_body[0], s * air.i1 * omega_body[1], s * air.i3 * omega_body[2])
+    a0, b0, u = split(lm, n)
+    return n, u, a0, b0
+
+
+@njit(cache=True)
+def catch_one(omega_body, start_sign, launch_speed, air):
+    """(face, catch time, n_z then): the centre of mass back at launch height on the way down.
+
+    The catch time is −1 if the toss needed more than MAX_STEPS steps.
+    """
+    n, u, a0, b0 = launch_state(omega_body, start_sign, air)
+    z = 0.0
+    v = (0.0, 0.0, launch_speed)
+    t = 0.0
+    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    for _ in range(MAX_STEPS):
+        h = step_size(v, t, a0, b0, air)
+        if h != hc or air.spin_damping > 0.0:
+            hc = h
+            axis, cr, sr = rotation(n, u, t, 0.5 * h, a0, b0, air)
+        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr)
+        if v1[2] < 0.0 and z1 <= 0.0:
+            # Newton on the length of one step from (z, v, n, u) at t: z(τ) = 0, z'(τ) = v_z.
+            lo = 0.0
+            hi = h
+            tau = h * z / (z - z1) if z > z1 else h
+            for _ in range(60):
+                zt, vt, _, _ = step(z, v, n, u, t, tau, a0, b0, air)
+                if zt > 0.0:
+                    lo = tau
+                else:
+                    hi = tau
+                trial = tau - zt / vt[2] if vt[2] < 0.0 else 0.5 * (lo + hi)
+                if not (lo <= trial <= hi):
+                    trial = 0.5 * (lo + hi)
+                if abs(trial - tau) <= 1e-15 * (t + tau) or zt == 0.0:
+                    tau = trial
+                    break
+                tau = trial
+            _, _, nt, _ = step(z, v, n, u, t, tau, a0, b0, air)
+            face = 1 if nt[2] > 0.0 else 0
+            return face, t + tau, nt[2]
+        z, v, n, u = z1, v1, n1, u1
+        t += h
+    return (1 if n[2] > 0.0 else 0), -1.0, n[2]
+
+
+@njit(cache=True)
+def trajectory(omega_body, start_sign, launch_speed, air, times, out):
+    """States at the increasing ``times`` (≥ 0) from launch: out[k] = (z, vx, vy, vz, nx, ny,
+    nz, Lx, Ly, Lz); z counts from launch height. For the tests and the figures."""
+    n, u, a0, b0 = launch_state(omega_body, start_sign, air)
+    z = 0.0
+    v = (0.0, 0.0, launch_speed)
+    t = 0.0
+    for k in range(times.shape[0]):
+        for _ in range(MAX_STEPS):
+            if t >= times[k]:
+                break
+            h = step_size(v, t, a0, b0, air)
+            last = t + h >= times[k]
+            if last:
+                h = times[k] - t
+            z, v, n, u = step(z, v, n, u, t, h, a0, b0, air)
+            t = times[k] if last else t + h
+        lm = angular_momentum(n, u, t, a0, b0, air)
+        out[k, 0] = z
+        out[k, 1], out[k, 2], out[k, 3] = v
+        out[k, 4], out[k, 5], out[k, 6] = n
+        out[k, 7], out[k, 8], out[k, 9] = lm
+
+
+@njit(cache=True)
+def _gap(z, v, n, lm, air, hh):
+    """(gap under the lowest point, its rate): z − depth(n_z), v_z + (ω × r_c)_z."""
+    gap = z - lowest_depth(n[2], air.radius, hh)
+    omega = angular_velocity(lm, n, air.i1, air.i3)
+    rc = contact_point(n, air.radius, hh)
+    return gap, v[2] + cross(omega, rc)[2]
+
+
+@njit(cache=True)
+def ending(v, lm, n, rebound, c):
+    """(face, status) if the coin has settled after this impact, else (−1, −1): the rules of
+    :func:`coinflight.core.bounce.land_one` (below the barrier; dead; the bounces died out).
+
+    The landing through air calls its ending here and only here (a new contact phase of
+    :mod:`coinflight.core.bounce` replaces :func:`~coinflight.core.bounce.rock` in this one
+    place)."""
+    z = lowest_depth(n[2], c.radius, c.half_thickness)
+    if tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z) < c.barrier:
+        return resting_face(n[2], c.edge_sine), _ENERGY
+    if rebound < c.rest_speed:
+        if c.restitution == 0.0:
+            return resting_face(n[2], c.edge_sine), _DEAD
+        omega = angular_velocity(lm, n, c.i1, c.i3)
+        return rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g), _ROCKING
+    return -1, -1
+
+
+@njit(cache=True)
+def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
+    """One toss from launch through air to rest on the table: (face, bounces, first contact,
+    settle time, status), as :func:`coinflight.core.bounce.land_one`."""
+    hh = c.half_thickness
+    rho = c.reach
+    n, u, a0, b0 = launch_state(omega_body, start_sign, air)
+    z = c.drop_height  # height of the centre of mass above the surface
+    v = (0.0, 0.0, launch_speed)
+    t = 0.0  # since launch
+    tr = 0.0  # since a0, b0 were set (launch or the last impact)
+    bounces = 0
+    first = -1.0
+    rising = True  # the contact is looked for from the apex on, as without air
+    impacts = 0
+    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    for _ in range(MAX_STEPS):
+        if impacts >= MAX_IMPACTS:
+            break
+        h = step_size(v, tr, a0, b0, air)
+        if rising:
+            if h != hc or air.spin_damping > 0.0:
+                hc = h
+                axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+            z, v, n, u = z1, v1, n1, u1
+            t += h
+            tr += h
+            rising = v[2] > 0.0
+            continue
+        lm = angular_momentum(n, u, tr, a0, b0, air)
+        gap, speed = _gap(z, v, n, lm, air, hh)
+        # The state from which the contact is polished, and the bracket on the step from it.
+        zb, vb, nb, ub = z, v, n, u
+        z1, v1, n1, u1 = z, v, n, u
+        tau, lo, hi, bracketed = 0.0, 0.0, 0.0, False
+        g1, s1, lm1 = gap, speed, lm
+        if gap > CA_TOLERANCE:
+            # Conservative advancement: no point of the coin falls faster than |v_z| + |Ω| ρ
+            # nor accelerates downwards faster than g + c v² + 2 |Ω|² ρ.
+            spin = math.sqrt(dot(lm, lm)) / air.i1
+            omega = angular_velocity(lm, n, air.i1, air.i3)
+            w2 = dot(omega, omega)
+            a = (-v[2] if v[2] < 0.0 else 0.0) + spin * rho
+            accel = air.g + air.drag_factor * air.max_area * dot(v, v) + 2.0 * w2 * rho
+            safe = 2.0 * gap / (a + math.sqrt(a * a + 2.0 * accel * gap))
+            taylor = (speed + math.sqrt(speed * speed + 2.0 * accel * gap)) / accel
+            trial = taylor if taylor > safe else safe
+            if trial < h:
+                h = trial
+            if h != hc or air.spin_damping > 0.0:
+                hc = h
+                axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+            lm1 = angular_momentum(n1, u1, tr + h, a0, b0, air)
+            g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
+            if g1 >= -CA_TOLERANCE:
+                z, v, n, u = z1, v1, n1, u1
+                t += h
+                tr += h
+                if g1 > CA_TOLERANCE:
+                    continue
+                zb, vb, nb, ub = z, v, n, u  # within the band above the surface: polish
+            else:
+                tau, hi, bracketed = h, h, True
+        # Safeguarded Newton on the length τ of one step from (zb, vb, nb, ub) at t (Newton
+        # inside the bracket once there is one, else bisection; as bounce.next_contact).
+        t0 = t
+        tr0 = tr
+        for _ in range(100):
+            if abs(g1) <= GAP_TOLERANCE or (not bracketed and s1 >= 0.0):
+                break
+            if g1 > 0.0:
+                lo = tau
+            else:
+                hi = tau
+                bracketed = True
+            trial = tau - g1 / s1 if s1 < 0.0 else 0.5 * (lo + hi)
+            if bracketed and not (lo < trial < hi):
+                trial = 0.5 * (lo + hi)
+            if trial == tau:
+                break
+            tau = trial
+            z1, v1, n1, u1 = step(zb, vb, nb, ub, tr0, tau, a0, b0, air)
+            lm1 = angular_momentum(n1, u1, tr0 + tau, a0, b0, air)
+            g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
+        z, v, n, u = z1, v1, n1, u1
+        t = t0 + tau
+        tr = tr0 + tau
+        lm = lm1
+        speed = s1
+        # At the surface (within the tolerances).
+        if speed >= 0.0:
+            # A graze: no impact, fly on from a little later.
+            z, v, n, u = step(z, v, n, u, tr, GRAZE_SKIP, a0, b0, air)
+            t += GRAZE_SKIP
+            tr += GRAZE_SKIP
+            continue
+        impacts += 1
+        if first < 0.0:
+            first = t
+        if bounces >= max_bounces:
+            return resting_face(n[2], c.edge_sine), bounces, first, t, _LIMIT
+        z = lowest_depth(n[2], c.radius, hh)
+        v, lm, rebound = impact(
+            v, lm, n, c.radius, hh, c.mass, c.i1, c.i3, c.restitution, c.friction
+        )
+        face, status = ending(v, lm, n, rebound, c)
+        if status >= 0:
+            return face, bounces, first, t, status
+        bounces += 1
+        a0, b0, u = split(lm, n)
+        tr = 0.0
+        hc = -1.0
+        # Leave the surface: first try the peak of rebound τ − A τ²/2, then halve.
+        omega = angular_velocity(lm, n, c.i1, c.i3)
+        lift = rebound / (c.g + 2.0 * dot(omega, omega) * rho)
+        for _ in range(200):
+            z1, v1, n1, u1 = step(z, v, n, u, 0.0, lift, a0, b0, air)
+            if z1 - lowest_depth(n1[2], c.radius, hh) > 0.0:
+                break
+            lift *= 0.5
+        z, v, n, u = z1, v1, n1, u1
+        t += lift
+        tr = lift
+    return resting_face(n[2], c.edge_sine), bounces, first, t, _UNSETTLED
+
+
+def _batch_kernels(parallel: bool) -> tuple[Any, Any]:
+    """The loops over a batch (catch and landing), for numba's threads or for the calling
+    thread with the GIL released (as :func:`coinflight.core.bounce._batch_kernel`)."""
+    loop = prange if parallel else range
+
+    def catches(omega, start_sign, launch_speed, air, face, when, nz):
+        for k in loop(omega.shape[0]):
+            f, t, z = catch_one(
+                (omega[k, 0], omega[k, 1], omega[k, 2]), start_sign[k], launch_speed[k], air
+            )
+            face[k] = f
+            when[k] = t
+            nz[k] = z
+
+    def landings(
+        omega,
+        start_sign,
+        launch_speed,
+        air,
+        contact,
+        max_bounces,
+        face,
+        bounces,
+        first,
+        settle,
+        status,
+    ):
+        for k in loop(omega.shape[0]):
+            f, b, t1, ts, st = land_one(
+                (omega[k, 0], omega[k, 1], omega[k, 2]),
+                start_sign[k],
+                launch_speed[k],
+                air,
+                contact,
+                max_bounces,
+            )
+            face[k] = f
+            bounces[k] = b
+            first[k] = t1
+            settle[k] = ts
+            status[k] = st
+
+    jit = njit(cache=True, parallel=parallel, nogil=True)
+    return jit(catches), jit(landings)
+
+
+_catch_parallel, _land_parallel = _batch_kernels(parallel=True)
+_catch_serial, _land_serial = _batch_kernels(parallel=False)
+
+
+def _batch(omega: Any, launch_speed: Any, start_sign: Any) -> tuple[FloatArray, ...]:
+    omega = np.ascontiguousarray(omega, dtype=np.float64).reshape(-1, 3)
+    n = omega.shape[0]
+    speed = np.ascontiguousarray(np.broadcast_to(launch_speed, (n,)), dtype=np.float64)
+    sign = np.ascontiguousarray(np.broadcast_to(start_sign, (n,)), dtype=np.float64)
+    return omega, speed, sign
 
 
 def catch(
-    model: DragModel, omega0: ArrayLike, launch_speed: float, start_sign: float = 1.0
-) -> tuple[float, FloatArray]:
-    """Time and state when the centre of mass comes back down to launch height (a catch)."""
+    omega: Any, launch_speed: Any, start_sign: Any, air: Air, *, parallel: bool = True
+) -> tuple[NDArray[np.int8], FloatArray, FloatArray]:
+    """Hand catches of a batch: (face, catch time, n_z at the catch), shapes (n,).
 
-    def back_down(t: float, y: FloatArray) -> float:
-        return float(y[2]) if t > 0 else 1.0
-
-    back_down.terminal = True  # type: ignore[attr-defined]
-    back_down.direction = -1  # type: ignore[attr-defined]
-    y0 = initial_state(np.asarray(omega0, dtype=float), launch_speed, start_sign)
-    t_max = float(flight_time(launch_speed, model.g)) * 1.5 + 1.0
-    what = describe(model, omega0, launch_speed)
-    check_stiffness(model, launch_speed)
-    sol: Any = solve(bounded(rhs(model), what), (0.0, t_max), y0, what, events=back_down)
-    if sol.t_events[0].size == 0:  # pragma: no cover - gravity always brings it down
-        raise ValueError(f"{what} did not come back down within {t_max:.3g} s")
-    return float(sol.t_events[0][0]), np.asarray(sol.y_events[0][0])
+    ``omega`` (n, 3) body-frame angular velocity at launch, rad/s; ``launch_speed`` (n,) m/s;
+    ``start_sign`` (n,) +1 heads up, −1 tails up. A catch time of −1 marks a toss that needed
+    more than :data:`MAX_STEPS` steps (refused beforehand by :func:`check_air`).
+    """
+    omega, speed, sign = _batch(omega, launch_speed, start_sign)
+    n = omega.shape[0]
+    face = np.empty(n, dtype=np.int8)
+    when = np.empty(n)
+    nz = np.empty(n)
+    kernel = _catch_parallel if parallel else _catch_serial
+    kernel(omega, sign, speed, air, face, when, nz)
+    return face, when, nz
 
 
 def land(
-    omega0: ArrayLike,
-    launch_speed: float,
-    start_sign: float,
+    omega: Any,
+    launch_speed: Any,
+    start_sign: Any,
+    air: Air,
+    contact: Contact,
     *,
-    drag_coefficient: float,
-    spin_damping: float,
-    air_density: float,
-    max_bounces: int = -1,
-    rest_speed: float | None = None,
-    **contact: float,
-) -> tuple[int, int, float, float, int]:
-    """One toss with drag onto a table: (face, bounces, first contact, settle time, status).
-
-    ``contact`` are the keywords of :meth:`coinflight.core.contact.Contact.build` but
-    ``rest_speed`` (``drop_height``, ``g``, ``radius``, ``thickness``, ``mass``, ``i1``, ``i3``,
-    ``restitution``, ``friction``), gathered into a :class:`~coinflight.core.contact.Contact`
-    with the drag into a :class:`DragModel`, then :func:`land_contact`. ``rest_speed`` defaults
-    to :data:`coinflight.core.bounce.REST_SPEED`.
-    """
-    from coinflight.core import bounce
-
-    rest = bounce.REST_SPEED if rest_speed is None else rest_speed
-    c = Contact.build(rest_speed=rest, **contact)
-    moments = (c.i1, c.i1, c.i3)
-    model = DragModel(c.mass, c.radius, moments, c.g, drag_coefficient, spin_damping, air_density)
-    return land_contact(omega0, launch_speed, start_sign, c, model, max_bounces)
+    max_bounces: int = MAX_IMPACTS,
+    parallel: bool = True,
+) -> tuple[NDArray[np.int8], NDArray[np.int32], FloatArray, FloatArray, NDArray[np.int8]]:
+    """Land a batch through air on a table: as :func:`coinflight.core.bounce.land` (face,
+    bounces, first contact, settle time, status), with the flights of this module."""
+    omega, speed, sign = _batch(omega, launch_speed, start_sign)
+    n = omega.shape[0]
+    face = np.empty(n, dtype=np.int8)
+    bounces = np.empty(n, dtype=np.int32)
+    first = np.empty(n)
+    settle = np.empty(n)
+    status = np.empty(n, dtype=np.int8)
+    kernel = _land_parallel if parallel else _land_serial
+    kernel(omega, sign, speed, air, contact, int(max_bounces), face, bounces, first, settle, status)
+    return face, bounces, first, settle, status
 
 
-def _next_contact(
-    f: Any, t: float, y: FloatArray, what: str, gap: Callable[[float, FloatArray], float]
-) -> tuple[float, FloatArray]:
-    """Time and state when the coin next touches the table (``gap`` reaches 0 going down).
-
-    Steps of at most 1/64 of a turn: a rim that dips below the surface and out again between two
-    solver steps would be missed (no sign change to locate); such dips last a small fraction of
-    a turn (one of 0.5 ms at ~200 rad/s in test_bounce).
-    """
-    spin = float(np.linalg.norm(y[6:9]))
-    turn = 0.03125 * math.pi / spin if spin > 0.0 else math.inf
-    sol: Any = solve(f, (t, t + 60.0), y, what, events=gap, max_step=turn)
-    if sol.t_events[0].size == 0:  # pragma: no cover - a minute of falling meets the table
-        raise ValueError(f"{what} did not reach the table within 60 s of t = {t:.3g} s")
-    return float(sol.t_events[0][0]), np.array(sol.y_events[0][0])
-
-
-def _settles(
-    n: tuple[float, float, float],
-    v: tuple[float, float, float],
-    lm: tuple[float, float, float],
-    omega: tuple[float, float, float],
-    rebound: float,
-    contact: Contact,
-) -> tuple[int, Status] | None:
-    """(face, status) if the coin settles after this impact, else None (the rules of
-    :func:`coinflight.core.bounce.land`: below the barrier, dead, or rocking to rest)."""
-    from coinflight.core import bounce, impact
-
-    radius, hh, mass, i1, g = (
-        contact.radius,
-        contact.half_thickness,
-        contact.mass,
-        contact.i1,
-        contact.g,
+def states(omega: Any, launch_speed: float, start_sign: float, air: Air, times: Any) -> FloatArray:
+    """States (len(times), 10) of one flight: z, v (3), n (3), L (3); see :func:`trajectory`."""
+    times = np.ascontiguousarray(np.atleast_1d(np.asarray(times, dtype=float)))
+    out = np.empty((times.shape[0], 10))
+    w = np.asarray(omega, dtype=float)
+    trajectory(
+        (float(w[0]), float(w[1]), float(w[2])),
+        float(start_sign),
+        float(launch_speed),
+        air,
+        times,
+        out,
     )
-    z = impact.lowest_depth(n[2], radius, hh)
-    if bounce.tumbling_energy(v, lm, n, mass, i1, g, z) < contact.barrier:
-        return impact.resting_face(n[2], contact.edge_sine), Status.SETTLED_ENERGY
-    if rebound >= contact.rest_speed:
-        return None
-    if contact.restitution == 0.0:
-        return impact.resting_face(n[2], contact.edge_sine), Status.SETTLED_DEAD
-    return bounce.rock(n, omega, radius, hh, mass, i1, g), Status.SETTLED_ROCKING
+    return out
 
 
-def _lift_off(
-    f: Any, t: float, y: FloatArray, what: str, gap: Callable[[float, FloatArray], float], dt: float
-) -> tuple[float, FloatArray]:
-    """Time and state a little after an impact, once the coin is off the surface: the first of
-    dt, dt/2, dt/4, … after which ``gap`` is positive."""
-    for _ in range(60):
-        step: Any = solve(f, (t, t + dt), y, what)
-        if gap(0.0, step.y[:, -1]) > 0.0:
-            break
-        dt *= 0.5
-    return float(step.t[-1]), step.y[:, -1]
+def steps_needed(
+    air: Air, launch_speed: float, drop_height: float = 0.0, spin: float = 0.0
+) -> float:
+    """Upper estimate of the steps of one toss to its catch or first contact (for the work bound).
 
-
-def land_contact(
-    omega0: ArrayLike,
-    launch_speed: float,
-    start_sign: float,
-    contact: Contact,
-    model: DragModel,
-    max_bounces: int = -1,
-) -> tuple[int, int, float, float, int]:
-    """One toss with drag onto a table: (face, bounces, first contact, settle time, status).
-
-    The same rules as :func:`coinflight.core.bounce.land` (impact law, settling, rocking,
-    status codes :class:`~coinflight.core.outcome.Status`); only the flights between impacts are
-    integrated numerically. ``model`` gives the flight (its coin and g those of ``contact``);
-    ``max_bounces`` < 0 means until the coin settles.
+    With the largest drag factor c = ρ C_d A_max / 2m and v_t = sqrt(g/c) (the quadratic-drag
+    motions, e.g. Taylor, *Classical Mechanics*, 2005, §2.4): the rise lasts (v_t/g) atan(v0/v_t)
+    ≤ v0/g at speeds ≤ v0; the fall, down at most D = v0²/2g + drop height from rest, lasts at
+    most acosh(e^{c D}) / sqrt(g c) at speeds ≤ v_t. Steps: each phase's time over its shortest
+    step, DRAG_STEP / (c v), MAX_STEP or TURN_STEP at the spin ``spin`` (rad/s; the coin turns
+    at most that fast times I3/I1).
     """
-    from scipy.spatial.transform import Rotation
-
-    from coinflight.core import bounce, impact
-
-    radius, hh, mass = contact.radius, contact.half_thickness, contact.mass
-    i1, i3, g = contact.i1, contact.i3, contact.g
-    restitution, friction = contact.restitution, contact.friction
-    drop_height, rho, edge_sine = contact.drop_height, contact.reach, contact.edge_sine
-    what = describe(model, omega0, launch_speed)
-    check_stiffness(model, launch_speed)
-    f = bounded(rhs(model), what)
-
-    def gap(_t: float, y: FloatArray) -> float:
-        n = normal(y[9:13])
-        return float(y[2] + drop_height - impact.lowest_depth(float(n[2]), radius, hh))
-
-    gap.terminal = True  # type: ignore[attr-defined]
-    gap.direction = -1  # type: ignore[attr-defined]
-    y = initial_state(np.asarray(omega0, dtype=float), launch_speed, start_sign)
-    # As in the drag-free kernel, look for the contact from the apex on.
-    t = 0.0
-    apex: Any = solve(f, (0.0, launch_speed / g), y, what)
-    y = apex.y[:, -1]
-    t = float(apex.t[-1])
-    bounces = 0
-    first = -1.0
-    for _ in range(bounce.MAX_IMPACTS):
-        t, y = _next_contact(f, t, y, what, gap)
-        q = y[9:13] / np.linalg.norm(y[9:13])
-        rot = Rotation.from_quat(q)
-        nx, ny, nz = (float(c) for c in rot.apply([0.0, 0.0, 1.0]))
-        n = (nx, ny, nz)
-        if first < 0.0:
-            first = t
-        if 0 <= max_bounces <= bounces:
-            return impact.resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
-        lm_body = np.array([i1, i1, i3]) * y[6:9]
-        lx, ly, lz = (float(c) for c in rot.apply(lm_body))
-        lm = (lx, ly, lz)
-        v = (float(y[3]), float(y[4]), float(y[5]))
-        v, lm, rebound = impact.impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
-        omega = impact.angular_velocity(lm, n, i1, i3)
-        settled = _settles(n, v, lm, omega, rebound, contact)
-        if settled is not None:
-            return settled[0], bounces, first, t, settled[1]
-        bounces += 1
-        y = y.copy()
-        y[3:6] = v
-        y[6:9] = rot.inv().apply(np.asarray(omega))
-        y[9:13] = q
-        # Leave the surface before looking for the next contact (as in the drag-free kernel).
-        t, y = _lift_off(
-            f, t, y, what, gap, rebound / (g + 2.0 * float(np.dot(omega, omega)) * rho)
-        )
-    n_z = float(normal(y[9:13])[2])
-    return impact.resting_face(n_z, edge_sine), bounces, first, t, Status.UNSETTLED
+    g = air.g
+    c = air.drag_factor * air.max_area
+    v0 = abs(float(launch_speed))
+    fall = v0 * v0 / (2.0 * g) + max(float(drop_height), 0.0)
+    turning = max(spin * max(air.i3 / air.i1, 1.0) / TURN_STEP, 1.0 / MAX_STEP)
+    if c > 0.0:
+        v_t = math.sqrt(g / c)
+        up = v_t / g * math.atan(v0 / v_t)
+        x = c * fall
+        down = (x + math.log1p(math.sqrt(-math.expm1(-2.0 * x)))) / math.sqrt(g * c)
+        return up * max(turning, c * v0 / DRAG_STEP) + down * max(turning, c * v_t / DRAG_STEP) + 10
+    return (v0 / g + math.sqrt(2.0 * fall / g)) * turning + 10.0

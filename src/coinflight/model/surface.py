@@ -101,8 +101,9 @@ class Drag:
     ----------
     coefficient : float
         Drag coefficient C_d ≥ 0 of the quadratic drag F = −½ ρ C_d A |v| v on the centre of
-        mass, with A = π r² the area of a face. 1.17 is the value for a flat disc broadside on
-        (Hoerner, *Fluid-Dynamic Drag*, 1965, ch. 3); the coin's orientation is not followed.
+        mass, with A the coin's area seen along its velocity, π r² |n·v̂| + 2 r h
+        sqrt(1 − (n·v̂)²) (:mod:`coinflight.core.drag`). 1.17 is the value for a flat disc
+        broadside on (Hoerner, *Fluid-Dynamic Drag*, 1965, ch. 3).
     spin_damping : float
         k ≥ 0 of the damping torque −k ω on the spin, N m s.
     air_density : float

@@ -4,7 +4,8 @@
 :class:`TableLanding` plugs the same simulation into the probability estimators as an
 :class:`~coinflight.outcomes.base.OutcomeModel`. The physics is in
 :mod:`coinflight.core.bounce` and :mod:`coinflight.core.impact` (drag-free, exact flights
-between impacts) and, with air drag, :mod:`coinflight.core.drag`.
+between impacts) and, with air drag, :mod:`coinflight.core.drag` (the same impacts and endings,
+flights integrated through air).
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from coinflight.core.outcome import FACE_NAMES
 from coinflight.model.coin import Coin
 from coinflight.model.surface import Drag, Surface
 from coinflight.model.toss import Toss
-from coinflight.outcomes.air import DRAG_TOSSES_PER_SECOND, drag_model
+from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
     FaceArray,
     OutcomeModel,
@@ -50,6 +51,11 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 
 BOUNCING_TOSSES_PER_SECOND = 1.6e5
 """Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet)."""
+
+AIR_LANDINGS_PER_SECOND = 4e3
+"""Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3, C_d = 1.17),
+2 threads on the shared 2-core machine (benchmarks/bench_air.py: 3,500-3,700 a second under a
+load of 7-24, ~18,000 per CPU second in one thread)."""
 
 
 STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
@@ -122,7 +128,8 @@ def land(
     """Land tosses given as arrays (ω (n, 3), v0 (n,)) on ``surface``; flat batch of n.
 
     Without drag this is the parallel event-driven kernel :func:`coinflight.core.bounce.land`;
-    with drag each toss is integrated by :func:`coinflight.core.drag.land` (slow).
+    with drag the compiled integrator :func:`coinflight.core.drag.land` (the same impacts and
+    endings).
     """
     if not isinstance(surface, Surface):
         raise TypeError(f"surface must be a Surface, got {type(surface).__name__}")
@@ -150,22 +157,21 @@ def land(
         g=g,
         rest_speed=bounce.REST_SPEED,
     )
+    limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
     if drag is not None and not drag.is_zero:
         from coinflight.core import drag as drag_kernels
 
-        model = drag_model(coin, drag, g)
-        limit = -1 if max_bounces is None else int(max_bounces)
-        rows = [
-            drag_kernels.land_contact(
-                omega[k], float(speed[k]), float(sign[k]), contact, model, limit
-            )
-            for k in range(omega.shape[0])
-        ]
-        face, bounces, first, settle, status = (np.array(col) for col in zip(*rows, strict=True))
-        return LandingOutcome(
-            face.astype(np.int8), bounces.astype(np.int32), first, settle, status.astype(np.int8)
+        check_air(coin, drag, g, speed, surface.drop_height, omega)
+        face, bounces, first, settle, status = drag_kernels.land(
+            omega,
+            speed,
+            sign,
+            drag_model(coin, drag, g),
+            contact,
+            max_bounces=limit,
+            parallel=parallel,
         )
-    limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
+        return LandingOutcome(face, bounces, first, settle, status)
     face, bounces, first, settle, status = bounce.land(
         omega, speed, sign, contact, max_bounces=limit, parallel=parallel
     )
@@ -184,7 +190,7 @@ class Landing:
     surface : Surface
         Kind ``"table"``, with the drop height, restitution and friction.
     drag : Drag, optional
-        Air drag on the flight (slower: numerical integration).
+        Air drag on the flight (:mod:`coinflight.core.drag`).
     max_bounces : int, optional
         Stop at the contact that follows this many bounces (0: the first contact) and report
         the well the coin is in there; by default the coin bounces until it settles.
@@ -280,8 +286,8 @@ class TableLanding(OutcomeModel):
     @property
     def rate(self) -> float:  # type: ignore[override]
         """Tosses a second: :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag
-        :data:`DRAG_TOSSES_PER_SECOND`."""
-        return BOUNCING_TOSSES_PER_SECOND if self.drag is None else DRAG_TOSSES_PER_SECOND
+        :data:`AIR_LANDINGS_PER_SECOND`."""
+        return BOUNCING_TOSSES_PER_SECOND if self.drag is None else AIR_LANDINGS_PER_SECOND
 
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
@@ -356,8 +362,8 @@ class TableLanding(OutcomeModel):
 
 
 __all__ = [
+    "AIR_LANDINGS_PER_SECOND",
     "BOUNCING_TOSSES_PER_SECOND",
-    "DRAG_TOSSES_PER_SECOND",
     "MAX_BOUNCES",
     "STATUS_NAMES",
     "Landing",

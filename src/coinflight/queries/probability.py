@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -101,7 +102,6 @@ def probability_query(
     """The options of ``coinflight probability`` checked in its order: the method, the tosses
     (``preset`` with ``overrides`` laid over it, or ``tosses``), the method's options, the
     landing. ``inputs``: the toss options as typed, repeated in the JSON."""
-    from coinflight.outcomes.table import DRAG_TOSSES_PER_SECOND
     from coinflight.probability import registry
 
     estimator = registry.get(method)
@@ -129,13 +129,13 @@ def probability_query(
         raise ValueError(f"--threads does not apply to the {method} method")
     landing = outcome_model(*table, *air)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
-        raise ValueError(
-            _DRAG_NEEDS_N.format(
-                rate=DRAG_TOSSES_PER_SECOND,
-                method=method,
-                example=_drag_example(method, dist, DRAG_TOSSES_PER_SECOND),
+        rate = landing.model.rate
+        if _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
+            raise ValueError(
+                _DRAG_NEEDS_N.format(
+                    method=method, rate=f"{rate:,.0f}", example=_drag_example(method, dist, rate)
+                )
             )
-        )
     if landing is not None:
         options["model"] = landing.model
     return ProbabilityQuery(
@@ -191,11 +191,23 @@ def result_warnings(result: Any) -> list[str]:
     ]
 
 
+_DRAG_DEFAULT_SECONDS = 60.0
+"""With air, the default size must run within this many seconds, else --n must be given."""
 _DRAG_NEEDS_N = (
-    "with --drag each toss is a numerical integration (about {rate} tosses per second per "
-    "thread), so the default size of --method {method} would run for hours or days; give --n "
-    "explicitly, e.g. {example}"
+    "with --drag each toss is integrated through air (about {rate} tosses per second), so the "
+    "default size of --method {method} would run for minutes; give --n explicitly, e.g. {example}"
 )
+
+
+def _default_seconds(estimator: Estimator, dist: TossDistribution, model: Any) -> float:
+    """Seconds of work of the method's default size with this model (inf beyond its bound)."""
+    if estimator.work is None:
+        return 0.0
+    try:
+        size = estimator.size_for(len(dist.ranged), None) or 1
+        return float(estimator.work(dist, size, model))
+    except ValueError:
+        return math.inf
 
 
 def _drag_example(method: str, dist: TossDistribution, rate: float) -> str:
@@ -205,8 +217,10 @@ def _drag_example(method: str, dist: TossDistribution, rate: float) -> str:
         cells = max(1, int((60 * rate) ** (1 / max(k, 1))))
         return f"--n {cells} ({cells}^{k} = {cells**k:,} tosses, about a minute)"
     if method == "qmc":
-        return "--n 1024 (about a minute)"
-    return "--n 1000 (about a minute; standard error about 0.016)"
+        size = 1 << max(4, int(math.log2(60 * rate)))
+        return f"--n {size} (about a minute)"
+    size = int(10 ** math.floor(math.log10(60 * rate)))
+    return f"--n {size} (about a minute or less; standard error about {0.5 / math.sqrt(size):.2g})"
 
 
 __all__ = [

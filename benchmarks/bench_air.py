@@ -1,0 +1,170 @@
+"""Speed of tosses through air (issue 11): the compiled integrator against SciPy, in one run.
+
+    python benchmarks/bench_air.py                          # new kernels + SciPy reference
+    python benchmarks/bench_air.py --old-src /path/to/src   # + the previous implementation
+    python benchmarks/bench_air.py --quick
+
+The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
+rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
+are tosses a second, the median of the repeats, all of numba's threads:
+
+- hand catch (:func:`coinflight.outcomes.air.catch_with_drag`),
+- table landing 0.8 m below launch (e = 0.5, μ = 0.3) to the first contact and carried to rest
+  (:func:`coinflight.outcomes.table.land`),
+- the same kernels in one thread, per second of CPU time (the machine's other load excluded),
+- the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
+  toss at a time: the previous product path's method and tolerance) on the first tosses,
+- with ``--old-src DIR``: the previous implementation (``coinflight`` imported from DIR in a
+  subprocess: one SciPy integration a toss, the table's bounce loop in Python) on the first
+  tosses, hand and table.
+
+The ratios are taken within the run (the machine is shared: absolute rates vary).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+from coinflight import Coin
+from coinflight.core import numerical
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.air import catch_with_drag, drag_model
+from coinflight.outcomes.table import land
+
+COIN = Coin.preset("us-nickel")
+G = 9.81
+SURFACE = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+
+OLD = """
+import json, sys, time
+import numpy as np
+from coinflight import Coin
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.air import catch_with_drag
+from coinflight.outcomes.table import land
+a = json.loads(sys.argv[1])
+omega, v0 = np.array(a["omega"]), np.array(a["v0"])
+coin = Coin.preset("us-nickel")
+drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
+surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+t0 = time.perf_counter(); catch_with_drag(coin, omega, v0, 1.0, 9.81, drag)
+t1 = time.perf_counter(); land(coin, omega, v0, 1.0, 9.81, surface, drag)
+t2 = time.perf_counter()
+print(json.dumps({"hand": len(v0) / (t1 - t0), "table": len(v0) / (t2 - t1)}))
+"""
+
+
+def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
+    """ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s (as bench_bounce)."""
+    rng = np.random.default_rng(seed)
+    omega = np.column_stack(
+        [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
+    )
+    return omega, rng.uniform(1.5, 3.0, n)
+
+
+def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-def]
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return n / statistics.median(times)
+
+
+def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
+    """Tosses per second of this process's CPU time (one call, after a warm-up)."""
+    t0 = time.process_time()
+    fn()
+    return n / (time.process_time() - t0)
+
+
+def main() -> None:
+    import numba
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true", help="fewer tosses")
+    parser.add_argument("--n", type=int, default=None, help="tosses for the compiled kernels")
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
+    parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
+    parser.add_argument("--drag", type=float, default=1.17, help="C_d")
+    parser.add_argument("--old-src", default=None, help="src folder of the previous coinflight")
+    args = parser.parse_args()
+    n = args.n or (20_000 if args.quick else 100_000)
+    m = args.reference or (10 if args.quick else 40)
+    drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
+    omega, v0 = tosses(n)
+    print(
+        f"{n:,} tosses of a US nickel, C_d = {drag.coefficient:g}, K = {drag.spin_damping:g} N m s,"
+        f" {numba.get_num_threads()} threads, {os.cpu_count()} CPUs, median of {args.repeats}"
+    )
+    for parallel in (True, False):  # compile or load the cache
+        catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
+        land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
+    rates = {
+        "hand": median_rate(
+            lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag), n, args.repeats
+        ),
+        "table first contact": median_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0), n, args.repeats
+        ),
+        "table": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag), n, args.repeats),
+    }
+    for name, rate in rates.items():
+        print(f"  compiled, {name}: {rate:,.0f} tosses/s")
+    # On a shared machine the wall clock counts the time other processes hold the cores: the
+    # serial kernels' CPU time gives the rate of one core (times the cores for a quiet machine).
+    cpu = {
+        "hand": cpu_rate(lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False), n),
+        "table": cpu_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False), n),
+    }
+    for name, rate in cpu.items():
+        print(f"  compiled, {name}, one thread: {rate:,.0f} tosses per CPU second")
+    air = drag_model(COIN, drag, G)
+    i1, i3 = COIN.moments
+    f = numerical.air_rhs(
+        COIN.mass, COIN.radius, COIN.thickness, (i1, i1, i3), G, air.drag_factor, air.spin_damping
+    )
+    scipy_rate = median_rate(
+        lambda: [numerical.air_catch(f, omega[k], v0[k]) for k in range(m)], m, 1
+    )
+    print(
+        f"  SciPy DOP853 reference, hand ({m} tosses): {scipy_rate:,.2f} tosses/s; "
+        f"compiled / SciPy = {rates['hand'] / scipy_rate:,.0f}"
+    )
+    if args.old_src:
+        payload = json.dumps(
+            {
+                "omega": omega[:m].tolist(),
+                "v0": v0[:m].tolist(),
+                "cd": args.drag,
+                "k": args.spin_damping,
+            }
+        )
+        env = dict(os.environ, PYTHONPATH=args.old_src)
+        out = subprocess.run(
+            [sys.executable, "-c", OLD, payload],
+            env=env,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        old = json.loads(out.stdout)
+        for name in ("hand", "table"):
+            print(
+                f"  previous implementation ({args.old_src}), {name} ({m} tosses): "
+                f"{old[name]:,.2f} tosses/s; compiled / previous = {rates[name] / old[name]:,.0f}"
+            )
+
+
+if __name__ == "__main__":
+    main()
