@@ -29,7 +29,6 @@ from __future__ import annotations
 import math
 import os
 import re
-import socket
 import sys
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -99,11 +98,11 @@ def measure_overhead(client: Any, tasks_per_slot: int = 8, repeats: int = 3) -> 
     return best
 
 
-def _run_batch(fn: Callable[[Any], Any], batch: list[Any]) -> tuple[list[Any], float, str]:
-    """Run one batch on a worker: its results, the compute seconds and who computed it."""
+def _run_batch(fn: Callable[[Any], Any], batch: list[Any]) -> tuple[list[Any], float]:
+    """Run one batch on a worker: its results and the seconds it computed."""
     t0 = time.perf_counter()
     out = [fn(task) for task in batch]
-    return out, time.perf_counter() - t0, f"{socket.gethostname()}:{os.getpid()}"
+    return out, time.perf_counter() - t0
 
 
 @dataclass
@@ -224,7 +223,7 @@ class DaskExecutor:
         try:
             fill()
             for future in pending:
-                results, seconds, _worker = future.result()
+                results, seconds = future.result()
                 stats.compute += seconds
                 stats.durations.append(seconds)
                 indices = owner.pop(future.key)
