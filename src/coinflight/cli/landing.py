@@ -5,13 +5,65 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from coinflight.model.distributions import Distribution
     from coinflight.model.surface import Drag, Surface
+
+CONTACT_FLAGS = {"restitution": "--restitution", "friction": "--friction"}
+"""The contact parameters a command line may spread, and their options."""
+
+
+def contact_spread(restitution: str | None, friction: str | None) -> dict[str, Distribution]:
+    """The --restitution and --friction texts as distributions (only those given), each checked
+    against its physical range (:func:`coinflight.model.surface.contact_distribution`: a normal
+    one truncated to it, the rest refused outside it); ValueError naming the option."""
+    from coinflight.model.distributions import parse_distribution
+    from coinflight.model.surface import contact_distribution
+
+    out = {}
+    for name, text in (("restitution", restitution), ("friction", friction)):
+        if text is None:
+            continue
+        flag = CONTACT_FLAGS[name]
+        try:
+            out[name] = contact_distribution(name, parse_distribution(text, flag))
+        except ValueError as exc:
+            message = str(exc)
+            raise ValueError(
+                message if message.startswith(flag) else f"{flag}: {message}"
+            ) from None
+    return out
+
+
+def single_values(
+    spread: dict[str, Distribution], command: str = "this command"
+) -> dict[str, float]:
+    """The contact parameters of ``spread`` as single numbers; ValueError (one line) for a
+    distribution, which only a probability integrates over."""
+    ranged = [
+        f"{CONTACT_FLAGS[name]} {d.describe()}" for name, d in spread.items() if not d.is_fixed
+    ]
+    if ranged:
+        raise ValueError(
+            f"{', '.join(ranged)}: {command} takes a single value; a distribution of restitution "
+            "or friction is for coinflight probability --method monte-carlo, qmc or grid, which "
+            "integrate over it"
+        )
+    return {name: d.mean for name, d in spread.items()}
 
 
 def build_surface(
-    kind: str, drop_height: float | None, restitution: float | None, friction: float | None
+    kind: str,
+    drop_height: float | None,
+    restitution: str | None,
+    friction: str | None,
+    ranged: bool = False,
 ) -> Surface:
-    """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table)."""
+    """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table).
+
+    --restitution and --friction must be single numbers unless ``ranged`` (the command then
+    reads their distributions with :func:`contact_spread` and passes them with the tosses; the
+    surface keeps its defaults for them).
+    """
     from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
 
     given = {
@@ -23,11 +75,17 @@ def build_surface(
         extra = [flag for flag, value in given.items() if value is not None]
         if extra:
             raise ValueError(f"{', '.join(extra)} applies to --surface table only")
+    spread = contact_spread(restitution, friction)
+    fixed = (
+        {name: d.mean for name, d in spread.items() if d.is_fixed}
+        if ranged
+        else single_values(spread)
+    )
     return Surface(
         kind,  # type: ignore[arg-type]
         drop_height=0.0 if drop_height is None else drop_height,
-        restitution=DEFAULT_RESTITUTION if restitution is None else restitution,
-        friction=DEFAULT_FRICTION if friction is None else friction,
+        restitution=fixed.get("restitution", DEFAULT_RESTITUTION),
+        friction=fixed.get("friction", DEFAULT_FRICTION),
     )
 
 
@@ -53,17 +111,3 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     from coinflight.outcomes.table import check_max_bounces
 
     check_max_bounces(bounces, "--bounces")
-
-
-def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
-    """JSON description of the landing surface and the air (the model's ``to_dict``)."""
-    from coinflight.outcomes import outcome_model
-
-    return outcome_model(surface, drag).to_dict()
-
-
-def describe_landing(surface: Surface, drag: Drag | None) -> str:
-    """One line for the text output: where the toss ends, the air drag and the spin damping."""
-    from coinflight.outcomes import outcome_model
-
-    return outcome_model(surface, drag).describe()

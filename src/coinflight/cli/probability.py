@@ -8,7 +8,7 @@ import typer
 
 from coinflight.cli.command import command
 from coinflight.cli.groups import CoinOptions, TossesOptions
-from coinflight.cli.landing import surface_payload
+from coinflight.cli.landing import contact_spread
 from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import (
     METHOD_PANEL,
@@ -110,7 +110,13 @@ def probability(
         raise ValueError(f"--seed applies to {seeded}, not {method}")
     if threads is not None and not estimator.parallel:
         raise ValueError(f"--threads does not apply to the {method} method")
-    landing = outcome_model(*table, *air)
+    landing = outcome_model(*table, *air, ranged=True)
+    # Distributions of e and μ (build_surface refused them for the hand; single values are in
+    # the surface) go with the tosses, drawn toss by toss.
+    given = contact_spread(table.restitution, table.friction)
+    spread = {name: d for name, d in given.items() if not d.is_fixed}
+    if spread:
+        dist = dist.with_contact(**spread)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
         raise ValueError(_DRAG_NEEDS_N.format(method=method, example=_drag_example(method, dist)))
     if landing is not None:
@@ -124,8 +130,9 @@ def probability(
         payload = result.to_dict()
         payload["distribution"] = {name: d.to_dict() for name, d in dist.parameters.items()}
         payload.update(coin=coin.name, start=tosses.start, g=dist.g, inputs=_inputs(ctx))
+        payload["distribution"].update({name: d.to_dict() for name, d in dist.contact.items()})
         if landing is not None:
-            payload.update(surface_payload(landing.surface, landing.drag))
+            payload.update(landing.model.settings_for(dist))
         payload["warnings"] = _warnings(result)
         print_json(payload)
         return
@@ -142,7 +149,7 @@ def _report(
     typer.echo(dist.describe())
     typer.echo(_gravity_line(dist.g, launch_speed))
     if landing is not None:
-        typer.echo(landing.describe())
+        typer.echo(landing.model.describe_for(dist))
     typer.echo(result.describe())
     line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
     if landing is not None and landing.surface.bounces:

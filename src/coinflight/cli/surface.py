@@ -78,16 +78,19 @@ class LandingChoice:
 def outcome_model(
     kind: str,
     drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
+    restitution: str | None,
+    friction: str | None,
     drag: float | None,
     spin_damping: float | None,
     bounces: int | None = None,
+    ranged: bool = False,
 ) -> LandingChoice | None:
-    """None for the plain hand catch; else the surface, drag and outcome model to use."""
+    """None for the plain hand catch; else the surface, drag and outcome model to use
+    (``ranged``: --restitution and --friction may be distributions, read apart with
+    :func:`~coinflight.cli.landing.contact_spread`)."""
     from coinflight import outcomes
 
-    the_surface = build_surface(kind, drop_height, restitution, friction)
+    the_surface = build_surface(kind, drop_height, restitution, friction, ranged)
     the_drag = build_drag(drag, spin_damping)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces and the_drag is None:
@@ -100,8 +103,8 @@ def outcome_model(
 def table_outcome(
     kind: str,
     drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
+    restitution: str | None,
+    friction: str | None,
     bounces: int | None,
 ) -> dict[str, Any]:
     """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
@@ -116,8 +119,8 @@ def table_outcome(
 
 def table_title(
     drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
+    restitution: str | None,
+    friction: str | None,
     bounces: int | None,
 ) -> str:
     """How a toss onto a table ends, for a map's title ("tossed heads up and …")."""

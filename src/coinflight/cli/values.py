@@ -92,8 +92,8 @@ class TableArgs(NamedTuple):
 
     surface: str
     drop_height: float | None
-    restitution: float | None
-    friction: float | None
+    restitution: str | None
+    friction: str | None
 
 
 class AirArgs(NamedTuple):
