@@ -261,3 +261,77 @@ def test_cli_probability_integrates_over_restitution_and_friction():
 )
 def test_cli_refuses_contact_distributions_where_they_do_not_apply(args, words):
     assert words in one_line_error(*args)
+
+
+# --- surface presets ---------------------------------------------------------------------------
+def test_surface_presets_carry_their_ranges_and_sources():
+    from coinflight.studies.presets import SURFACE_PRESETS, surface_preset
+
+    wood = surface_preset("coin-on-wood")
+    # Module notes of coinflight.studies.presets: e 0.3-0.6 (Strzałko et al. 2008; Pletser
+    # 2022), μ 0.2-0.6 (Engineering ToolBox, wood on metal, clean and dry).
+    assert wood.restitution == Uniform(0.3, 0.6) and wood.friction == Uniform(0.2, 0.6)
+    table = surface_preset("coin-on-table")
+    assert table.friction == Uniform(0.05, 0.5)  # Pletser 2022 (0.05) to Strzałko et al. (0.5)
+    for p in SURFACE_PRESETS.values():
+        assert set(p.sources) == {"restitution", "friction"}
+        for name, d in p.contact.items():
+            lo, hi = d.bounds
+            assert f"{lo:g}-{hi:g}" in p.sources[name]  # each range quoted with its source
+            assert contact_distribution(name, d) == d
+    with pytest.raises(ValueError, match=r"unknown surface preset 'wood'.*coin-on-wood"):
+        surface_preset("wood")
+
+
+def test_cli_surface_preset_integrates_over_the_ranges_and_is_replaced_by_given_values():
+    args = [*PROB, "--surface-preset", "coin-on-wood", "--friction", "0.3"]
+    result = CliRunner().invoke(app, [*args, "--json"])
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.stdout)
+    assert out["surface_preset"]["name"] == "coin-on-wood"
+    assert out["restitution"] == {"kind": "uniform", "low": 0.3, "high": 0.6}
+    assert out["friction"] == 0.3  # given: replaces the preset's range
+    d = TossDistribution(**SPINS, restitution=Uniform(0.3, 0.6))
+    model = TableLanding(Surface("table", drop_height=0.3, friction=0.3))
+    lib = estimate(d, "monte-carlo", n=2000, seed=4, model=model)
+    assert [out["counts"][k] for k in ("tails", "heads", "edge")] == list(lib.counts)
+    text = CliRunner().invoke(app, args)
+    assert "surface preset coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6" in text.stdout
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (
+            [
+                "toss",
+                "--omega",
+                "80",
+                "0",
+                "0",
+                "--flight-time",
+                "0.7",
+                "--surface",
+                "table",
+                "--surface-preset",
+                "coin-on-wood",
+            ],
+            "this command takes single values",
+        ),
+        ([*PROB, "--surface-preset", "oak"], "unknown surface preset 'oak'"),
+        (
+            [
+                "probability",
+                "--omega-x",
+                "60:90",
+                "--flight-time",
+                "0.6:0.9",
+                "--surface-preset",
+                "coin-on-wood",
+            ],
+            "--surface-preset applies to --surface table only",
+        ),
+    ],
+)
+def test_cli_surface_preset_refusals(args, words):
+    assert words in one_line_error(*args)

@@ -12,14 +12,22 @@ CONTACT_FLAGS = {"restitution": "--restitution", "friction": "--friction"}
 """The contact parameters a command line may spread, and their options."""
 
 
-def contact_spread(restitution: str | None, friction: str | None) -> dict[str, Distribution]:
+def contact_spread(
+    restitution: str | None, friction: str | None, surface_preset: str | None = None
+) -> dict[str, Distribution]:
     """The --restitution and --friction texts as distributions (only those given), each checked
     against its physical range (:func:`coinflight.model.surface.contact_distribution`: a normal
-    one truncated to it, the rest refused outside it); ValueError naming the option."""
+    one truncated to it, the rest refused outside it); ValueError naming the option. With
+    --surface-preset, the preset's ranges (:data:`coinflight.studies.presets.SURFACE_PRESETS`)
+    for those not given."""
     from coinflight.model.distributions import parse_distribution
     from coinflight.model.surface import contact_distribution
 
-    out = {}
+    out: dict[str, Distribution] = {}
+    if surface_preset is not None:
+        from coinflight.studies.presets import surface_preset as lookup
+
+        out.update(lookup(surface_preset).contact)
     for name, text in (("restitution", restitution), ("friction", friction)):
         if text is None:
             continue
@@ -56,13 +64,15 @@ def build_surface(
     drop_height: float | None,
     restitution: str | None,
     friction: str | None,
+    surface_preset: str | None = None,
     ranged: bool = False,
 ) -> Surface:
     """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table).
 
-    --restitution and --friction must be single numbers unless ``ranged`` (the command then
-    reads their distributions with :func:`contact_spread` and passes them with the tosses; the
-    surface keeps its defaults for them).
+    --restitution and --friction must be single numbers, and --surface-preset (ranges) is
+    refused, unless ``ranged`` (the command then reads their distributions with
+    :func:`contact_spread` and passes them with the tosses; the surface keeps its defaults
+    for them).
     """
     from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
 
@@ -70,12 +80,20 @@ def build_surface(
         "--drop-height": drop_height,
         "--restitution": restitution,
         "--friction": friction,
+        "--surface-preset": surface_preset,
     }
     if kind == "hand":
         extra = [flag for flag, value in given.items() if value is not None]
         if extra:
             raise ValueError(f"{', '.join(extra)} applies to --surface table only")
-    spread = contact_spread(restitution, friction)
+    if surface_preset is not None and not ranged:
+        contact_spread(None, None, surface_preset)  # an unknown name first
+        raise ValueError(
+            f"--surface-preset {surface_preset} spreads restitution and friction over the "
+            "literature's ranges: this command takes single values (--restitution, --friction); "
+            "coinflight probability --method monte-carlo, qmc or grid integrates over a preset"
+        )
+    spread = contact_spread(restitution, friction, surface_preset)
     fixed = (
         {name: d.mean for name, d in spread.items() if d.is_fixed}
         if ranged

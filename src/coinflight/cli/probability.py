@@ -93,6 +93,7 @@ def probability(
     --method grid --n 5000
     """
     from coinflight.probability import estimate
+    from coinflight.studies.presets import surface_preset
 
     estimator = registry.get(method)
     if preset is not None:
@@ -113,7 +114,7 @@ def probability(
     landing = outcome_model(*table, *air, ranged=True)
     # Distributions of e and μ (build_surface refused them for the hand; single values are in
     # the surface) go with the tosses, drawn toss by toss.
-    given = contact_spread(table.restitution, table.friction)
+    given = contact_spread(table.restitution, table.friction, table.surface_preset)
     spread = {name: d for name, d in given.items() if not d.is_fixed}
     if spread:
         dist = dist.with_contact(**spread)
@@ -133,10 +134,14 @@ def probability(
         payload["distribution"].update({name: d.to_dict() for name, d in dist.contact.items()})
         if landing is not None:
             payload.update(landing.model.settings_for(dist))
+        if table.surface_preset is not None:
+            payload["surface_preset"] = surface_preset(table.surface_preset).to_dict()
         payload["warnings"] = _warnings(result)
         print_json(payload)
         return
     _report(result, dist, tosses.launch_speed, landing)
+    if table.surface_preset is not None:
+        typer.echo(f"surface preset {surface_preset(table.surface_preset).describe()}")
 
 
 def _report(

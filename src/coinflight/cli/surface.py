@@ -80,6 +80,7 @@ def outcome_model(
     drop_height: float | None,
     restitution: str | None,
     friction: str | None,
+    surface_preset: str | None,
     drag: float | None,
     spin_damping: float | None,
     bounces: int | None = None,
@@ -90,7 +91,7 @@ def outcome_model(
     :func:`~coinflight.cli.landing.contact_spread`)."""
     from coinflight import outcomes
 
-    the_surface = build_surface(kind, drop_height, restitution, friction, ranged)
+    the_surface = build_surface(kind, drop_height, restitution, friction, surface_preset, ranged)
     the_drag = build_drag(drag, spin_damping)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces and the_drag is None:
@@ -105,12 +106,13 @@ def table_outcome(
     drop_height: float | None,
     restitution: str | None,
     friction: str | None,
+    surface_preset: str | None,
     bounces: int | None,
 ) -> dict[str, Any]:
     """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
     from coinflight.outcomes import outcome_model
 
-    the_surface = build_surface(kind, drop_height, restitution, friction)
+    the_surface = build_surface(kind, drop_height, restitution, friction, surface_preset)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces:
         return {}
