@@ -73,7 +73,7 @@ TABLE = Group(
                     "--surface-preset",
                     metavar="NAME",
                     panel=SURFACE_PANEL,
-                    help=_TABLE + "probability: restitution and friction spread uniformly over "
+                    help="table, probability only: restitution and friction spread uniformly over "
                     "the literature's ranges for coin-on-wood or coin-on-table (ranges and "
                     "sources: coinflight.studies.presets, SURFACE_PRESETS); --restitution and "
                     "--friction given replace the preset's.",

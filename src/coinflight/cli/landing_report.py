@@ -37,7 +37,7 @@ MujocoTosses = Annotated[
         metavar="N",
         min=0,
         help="Identical tosses compared with MuJoCo (default 10000, 4 with --quick; 0 skips; "
-        "skipped anyway when MuJoCo is not installed: pip install 'coinflight[mujoco]').",
+        "skipped anyway when MuJoCo, the optional extra 'mujoco', is not installed).",
     ),
 ]
 ReportSeed = Annotated[
