@@ -138,6 +138,14 @@ class LandingReport:
         return out
 
 
+def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
+    """MuJoCo's (tails, heads, edge) among the tosses that settled (None if none did)."""
+    settled = c.mujoco_rest[~c.mujoco_moving]
+    if not len(settled):
+        return None
+    return (np.bincount(settled, minlength=3) / len(settled)).tolist()
+
+
 def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
     return {
         "n": c.n,
@@ -151,6 +159,7 @@ def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
         "rest_agreement": c.rest_agreement,
         "coinflight_unsettled": c.ours_unsettled,
         "mujoco_unsettled": c.mujoco_unsettled,
+        "mujoco_rest_settled_only": _settled_fractions(c),
         "coinflight_seconds": c.ours_seconds,
         "mujoco_seconds": c.mujoco_seconds,
         "speed_ratio": c.speed_ratio,
@@ -406,8 +415,11 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
     names = ("tails", "heads", "edge")
 
     def row(label: str, faces: np.ndarray) -> tuple[str, ...]:
-        p = c.fractions(faces)
-        return (label, *(_pm(float(x), math.sqrt(x * (1 - x) / c.n)) for x in p))
+        p = np.bincount(faces, minlength=3) / max(len(faces), 1)
+        return (label, *(_pm(float(x), math.sqrt(x * (1 - x) / max(len(faces), 1))) for x in p))
+
+    moving_edges = int(np.count_nonzero(c.mujoco_moving & (c.mujoco_rest == 2)))
+    all_edges = int(np.count_nonzero(c.mujoco_rest == 2))
 
     ours_rate = c.n / c.ours_seconds
     theirs_rate = c.n / c.mujoco_seconds
@@ -436,6 +448,10 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 row("MuJoCo, first contact", c.mujoco_first),
                 row("coinflight, at rest", c.ours_rest),
                 row("MuJoCo, at rest", c.mujoco_rest),
+                row(
+                    f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
+                    c.mujoco_rest[~c.mujoco_moving],
+                ),
             ),
             caption="Fractions of the tosses (± s.e.)",
         ),
@@ -444,6 +460,8 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 f"Same well at the first contact: {c.first_agreement:.1%} of the tosses "
                 "(geometry and free flight only; the rest are within a time step of a "
                 "boundary).",
+                f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
+                "their edge when cut; the settled-only row leaves them out.",
                 f"Same face at rest: {c.rest_agreement:.1%}. After several bounces the face at "
                 "rest depends on every detail of each impact, so two contact models agree on "
                 "single tosses little more than chance; the comparison is of the fractions.",

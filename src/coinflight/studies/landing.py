@@ -307,7 +307,7 @@ class MujocoComparison:
     ours_seconds: float
     mujoco_first: NDArray[np.int8]
     mujoco_rest: NDArray[np.int8]
-    mujoco_unsettled: int
+    mujoco_moving: NDArray[np.bool_]
     mujoco_seconds: float
     settings: dict[str, Any]
 
@@ -320,6 +320,11 @@ class MujocoComparison:
     def rest_agreement(self) -> float:
         """Fraction of tosses with the same face at rest."""
         return float(np.mean(self.ours_rest == self.mujoco_rest))
+
+    @property
+    def mujoco_unsettled(self) -> int:
+        """MuJoCo tosses cut at the settle limit (most rolling on their edge)."""
+        return int(np.count_nonzero(self.mujoco_moving))
 
     @property
     def speed_ratio(self) -> float:
@@ -369,7 +374,7 @@ def mujoco_comparison(
         ours_seconds,
         theirs.first,
         theirs.rest,
-        theirs.unsettled,
+        theirs.moving,
         theirs.elapsed,
         theirs.settings(friction),
     )

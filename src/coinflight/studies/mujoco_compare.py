@@ -151,7 +151,7 @@ class MujocoRun:
     ----------
     first, rest : ndarray of int8
         Face codes (TAILS 0, HEADS 1, EDGE 2) at the first contact and at rest.
-    unsettled : int
+    moving : ndarray of bool
         Tosses whose face could still change after :data:`SETTLE` s (most of them rolling on
         their edge; counted by the face they show then).
     dampratio, restitution : float
@@ -165,7 +165,7 @@ class MujocoRun:
 
     first: NDArray[np.int8]
     rest: NDArray[np.int8]
-    unsettled: int
+    moving: NDArray[np.bool_]
     dampratio: float
     restitution: float
     elapsed: float
@@ -256,7 +256,7 @@ def run(
     dt = m.opt.timestep
     first = np.empty(n, dtype=np.int8)
     rest = np.empty(n, dtype=np.int8)
-    unsettled = 0
+    still = np.zeros(n, dtype=bool)
     data = datas[0]
     for a in range(0, n, CHUNK):
         idx = np.arange(a, min(a + CHUNK, n))
@@ -286,7 +286,7 @@ def run(
             moving = moving[~_settled(states[moving], coin, g, edge_sine)]
             if not len(moving):
                 break
-        unsettled += len(moving)
+        still[idx[moving]] = True
         q = states[:, 4:8]
         nz_end = 1.0 - 2.0 * (q[:, 1] ** 2 + q[:, 2] ** 2)
         for j, k in enumerate(idx):
@@ -294,7 +294,7 @@ def run(
     return MujocoRun(
         first,
         rest,
-        unsettled,
+        still,
         zeta,
         e_mujoco,
         time.perf_counter() - t0,
