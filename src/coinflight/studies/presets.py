@@ -261,8 +261,8 @@ def surface_preset(name: str) -> SurfacePreset:
 
     Examples
     --------
-    >>> surface_preset("coin-on-wood").describe()
-    'coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6 (uniform over the literature's ranges)'
+    >>> print(surface_preset("coin-on-wood").describe())
+    coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6 (uniform over the literature's ranges)
     """
     return v.known("surface preset", name, SURFACE_PRESETS)
 
