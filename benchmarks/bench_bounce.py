@@ -2,7 +2,7 @@
 
     python benchmarks/bench_bounce.py              # coinflight speed + MuJoCo on 200 tosses
     python benchmarks/bench_bounce.py --quick      # fewer tosses
-    python benchmarks/bench_bounce.py --nickel     # also P(edge) of a US nickel vs (e, μ)
+    python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -10,17 +10,16 @@ dropped onto a table 0.8 m below launch (e = 0.5, μ = 0.3): tosses per second, 
 repeats, all threads of the machine.
 
 MuJoCo (optional: ``pip install coinflight[mujoco]``; skipped cleanly when not installed): the
-same tosses as a free cylinder over a plane, time step 1e-4 s, RK4 and MuJoCo's default Euler
-integrator, its default soft contact with friction μ, multithreaded rollouts; tosses per second,
-and the agreement of outcomes with coinflight, (a) at the first contact (geometry and free
-flight only: the well of the coin's orientation when it first touches) and (b) at rest after
-2 s (depends on each engine's contact model).
+same tosses in coinflight and MuJoCo, with the settings of
+:mod:`coinflight.studies.mujoco_compare` (the comparison lives in the library; the landing
+report, ``coinflight landing-report``, runs it on 10,000 tosses): tosses per second of each and
+the agreement of outcomes, (a) at the first contact (geometry and free flight only) and (b) at
+rest (depends on each engine's contact model).
 """
 
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import platform
 import statistics
@@ -29,7 +28,6 @@ import time
 import numpy as np
 
 from coinflight import Coin
-from coinflight.core.impact import resting_face
 from coinflight.core.outcome import EDGE, HEADS, TAILS
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import land
@@ -86,101 +84,42 @@ def bench_coinflight(n: int, repeats: int) -> None:
     )
 
 
-def _mujoco_model(friction: float, integrator: str = "RK4"):  # type: ignore[no-untyped-def]
-    import mujoco
-
-    xml = f"""
-    <mujoco>
-      <option timestep="1e-4" gravity="0 0 -{G}" integrator="{integrator}"/>
-      <worldbody>
-        <geom type="plane" size="5 5 0.1" friction="{friction} 0.005 0.0001"/>
-        <body name="coin" pos="0 0 1">
-          <freejoint/>
-          <geom type="cylinder" size="{COIN.radius} {COIN.thickness / 2}" mass="{COIN.mass}"
-                friction="{friction} 0.005 0.0001"/>
-        </body>
-      </worldbody>
-    </mujoco>"""
-    return mujoco.MjModel.from_xml_string(xml)
-
-
-def mujoco_outcomes(
-    omega: np.ndarray, v0: np.ndarray, settle: float = 2.0, integrator: str = "RK4"
-) -> tuple:  # type: ignore[type-arg]
-    """(face at first contact, face at rest) for each toss: MuJoCo's multithreaded rollout."""
-    import mujoco
-    from mujoco import rollout
-
-    model = _mujoco_model(SURFACE.friction, integrator)
-    datas = [mujoco.MjData(model) for _ in range(os.cpu_count() or 1)]
-    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
-    size = mujoco.mj_stateSize(model, spec)
-    r, hh = COIN.radius, COIN.thickness / 2
-    edge_sine = hh / math.hypot(r, hh)
-    nstep = int((2 * float(v0.max()) / G + 1.0 + settle) / model.opt.timestep)
-    data = datas[0]
-    first = np.empty(len(v0), dtype=np.int8)
-    rest = np.empty(len(v0), dtype=np.int8)
-    chunk = 8
-    for a in range(0, len(v0), chunk):
-        states = []
-        for k in range(a, min(a + chunk, len(v0))):
-            mujoco.mj_resetData(model, data)
-            data.qpos[:3] = (0.0, 0.0, DROP)  # launch point DROP above the plane
-            data.qpos[3:7] = (1.0, 0.0, 0.0, 0.0)  # heads up (scalar first)
-            data.qvel[:3] = (0.0, 0.0, v0[k])
-            data.qvel[3:6] = omega[k]  # free joint: angular velocity in the body frame
-            state = np.empty(size)
-            mujoco.mj_getState(model, data, state, spec)
-            states.append(state)
-        traj, _ = rollout.rollout(model, datas, np.array(states), nstep=nstep)
-        z = traj[:, :, 3]
-        w, x, y = traj[:, :, 4], traj[:, :, 5], traj[:, :, 6]
-        nz = 1.0 - 2.0 * (x * x + y * y)  # third row of R(q): the normal's z component
-        gap = z - r * np.sqrt(np.clip(1 - nz * nz, 0, 1)) - hh * np.abs(nz)
-        del w
-        for j in range(traj.shape[0]):
-            apex = int(v0[a + j] / G / model.opt.timestep)
-            hit = apex + int(np.argmax(gap[j, apex:] <= 0.0))
-            first[a + j] = resting_face(float(nz[j, hit]), edge_sine)
-            rest[a + j] = resting_face(float(nz[j, -1]), edge_sine)
-    return first, rest
-
-
 def bench_mujoco(m: int) -> None:
-    try:
-        import mujoco
-    except ImportError:
+    """The same tosses in MuJoCo (coinflight.studies.landing.mujoco_comparison: settings and
+    the comparison live in the library, coinflight.studies.mujoco_compare)."""
+    from coinflight.studies import mujoco_compare
+    from coinflight.studies.landing import mujoco_comparison
+
+    if not mujoco_compare.available():
         print("MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
         return
-    omega, v0 = tosses(m)
-    ours_first = land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0).face
-    ours = land(COIN, omega, v0, 1.0, G, SURFACE).face
-    for integrator in ("RK4", "Euler"):
-        t0 = time.perf_counter()
-        first, rest = mujoco_outcomes(omega, v0, integrator=integrator)
-        rate = m / (time.perf_counter() - t0)
-        print(
-            f"MuJoCo {mujoco.__version__} ({integrator}, dt = 1e-4 s, {os.cpu_count()} threads), "
-            f"{m} tosses: {rate:,.1f} tosses/s"
-        )
-        print(
-            f"  agreement with coinflight: first contact {np.mean(first == ours_first):.1%}, "
-            f"at rest {np.mean(rest == ours):.1%} (MuJoCo's soft contact is not e = "
-            f"{SURFACE.restitution}); MuJoCo at rest: {face_fractions(rest)}"
-        )
+    c = mujoco_comparison(m, seed=2026)
+    s = c.settings
+    print(
+        f"MuJoCo {s['mujoco']} ({s['integrator']}, dt = {s['timestep']:g} s, {s['threads']} "
+        f"threads), {m} tosses: {m / c.mujoco_seconds:,.1f} tosses/s; coinflight "
+        f"{m / c.ours_seconds:,.0f} tosses/s on the same tosses: ratio {c.speed_ratio:,.0f}"
+    )
+    print(
+        f"  agreement with coinflight: first contact {c.first_agreement:.1%}, at rest "
+        f"{c.rest_agreement:.1%}; MuJoCo at rest: {face_fractions(c.mujoco_rest)}, "
+        f"coinflight: {face_fractions(c.ours_rest)}"
+    )
 
 
 def nickel_edge(n: int) -> None:
-    """P(edge) of a US nickel for a few (e, μ), beside Murray & Teare's 1 in 6000."""
-    omega, v0 = tosses(n, seed=6000)
-    print(f"US nickel, {n:,} tosses onto a table {DROP} m below launch (Murray & Teare: 1/6000)")
-    for e in (0.25, 0.35, 0.5):
-        for mu in (0.3, 0.5, 1.0):
-            out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
-            k = int(np.sum(out.face == EDGE))
-            ratio = f"1 in {n / k:,.0f}" if k else "none"
-            print(f"  e = {e:.2f}, μ = {mu:.1f}: P(edge) = {k / n:.2e} ({ratio}; {k} edges)")
+    """P(edge) of a US nickel as a band over the literature's (e, μ) (the surface presets),
+    beside Murray & Teare's extrapolated 1 in 6000 (coinflight.studies.landing.nickel_band)."""
+    from coinflight.studies.landing import nickel_band
+
+    print(f"US nickel, {n:,} tosses per cell, table 0.8 m below launch (Murray & Teare: 1/6000)")
+    for band in nickel_band(n, seed=6000):
+        (lo, lo_se), (hi, hi_se) = band.low, band.high
+        p = band.integrated
+        print(
+            f"  {band.preset}: P(edge) from {lo:.2e} ± {lo_se:.1e} to {hi:.2e} ± {hi_se:.1e}; "
+            f"integrated over the ranges {p.p:.2e} ± {p.stderr:.1e}"
+        )
 
 
 def main() -> None:
@@ -192,7 +131,7 @@ def main() -> None:
     bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
     bench_mujoco(16 if args.quick else 100)
     if args.nickel:
-        nickel_edge(1_000_000)
+        nickel_edge(200_000)
 
 
 if __name__ == "__main__":

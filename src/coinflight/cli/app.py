@@ -13,6 +13,7 @@ from coinflight.cli import bias as _bias
 from coinflight.cli import convergence as _convergence
 from coinflight.cli import data as _data
 from coinflight.cli import edge as _edge
+from coinflight.cli import landing_report as _landing_report
 from coinflight.cli import paper as _paper
 from coinflight.cli import probability as _probability
 from coinflight.cli import serve as _serve
@@ -70,6 +71,7 @@ _COMMANDS: dict[str, Callable[..., None] | typer.Typer] = {
     "animate": _animate.animate,
     "paper": _paper.paper,
     "serve": _serve.serve,
+    "landing-report": _landing_report.landing_report,
 }
 for _name, _command in _COMMANDS.items():
     if isinstance(_command, typer.Typer):

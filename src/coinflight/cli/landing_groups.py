@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from coinflight.cli.command import Group
-from coinflight.cli.options import SURFACE_PANEL, number_option
+from coinflight.cli.options import SURFACE_PANEL, number_option, option
 from coinflight.queries.values import AirArgs, TableArgs
 
 SurfaceKind = Annotated[
@@ -22,6 +22,10 @@ SurfaceKind = Annotated[
     ),
 ]
 _TABLE = "table: "
+_SPREAD = (
+    " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal "
+    "one truncated to the physical range)."
+)
 TABLE = Group(
     {
         "surface": (SurfaceKind, "hand"),
@@ -39,24 +43,40 @@ TABLE = Group(
         ),
         "restitution": (
             Annotated[
-                float | None,
-                number_option(
+                str | None,
+                option(
                     "--restitution",
-                    "E",
-                    SURFACE_PANEL,
-                    _TABLE + "coefficient of restitution in [0, 1] (default 0.5; 0 lands dead).",
+                    metavar="E",
+                    panel=SURFACE_PANEL,
+                    help=_TABLE + "coefficient of restitution in [0, 1] (default 0.5; 0 lands "
+                    "dead)." + _SPREAD,
                 ),
             ],
             None,
         ),
         "friction": (
             Annotated[
-                float | None,
-                number_option(
+                str | None,
+                option(
                     "--friction",
-                    "MU",
-                    SURFACE_PANEL,
-                    _TABLE + "Coulomb friction coefficient ≥ 0 (default 0.3).",
+                    metavar="MU",
+                    panel=SURFACE_PANEL,
+                    help=_TABLE + "Coulomb friction coefficient ≥ 0 (default 0.3)." + _SPREAD,
+                ),
+            ],
+            None,
+        ),
+        "surface_preset": (
+            Annotated[
+                str | None,
+                option(
+                    "--surface-preset",
+                    metavar="NAME",
+                    panel=SURFACE_PANEL,
+                    help="table, probability only: restitution and friction spread uniformly over "
+                    "the literature's ranges for coin-on-wood or coin-on-table (ranges and "
+                    "sources: coinflight.studies.presets, SURFACE_PRESETS); --restitution and "
+                    "--friction given replace the preset's.",
                 ),
             ],
             None,

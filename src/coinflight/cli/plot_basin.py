@@ -147,7 +147,7 @@ def plot_basin(
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
     if table.surface == "table":
         typer.echo(f"P(edge) on the grid = {basin.fraction(2):.6f}")
-        ending = table_title(*table[1:], bounces)
+        ending = table_title(table.drop_height, table.restitution, table.friction, bounces)
         figure = draw(basin, ending=ending, boundaries=False)
     else:
         figure = draw(basin, boundaries=boundaries)

@@ -128,6 +128,10 @@ def probability(
         print_json(q.probability_payload(query, result))
         return
     _report(result, query.dist, tosses.launch_speed, query.landing)
+    if table.surface_preset is not None:
+        from coinflight.studies.presets import surface_preset
+
+        typer.echo(f"surface preset {surface_preset(table.surface_preset).describe()}")
 
 
 def _report(
@@ -140,7 +144,7 @@ def _report(
     typer.echo(dist.describe())
     typer.echo(_gravity_line(dist.g, launch_speed))
     if landing is not None:
-        typer.echo(landing.describe())
+        typer.echo(landing.model.describe_for(dist))
     typer.echo(result.describe())
     line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
     if landing is not None and landing.surface.bounces:

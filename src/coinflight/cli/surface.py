@@ -60,8 +60,8 @@ def report_landing(
 
 def table_title(
     drop_height: float | None,
-    restitution: float | None,
-    friction: float | None,
+    restitution: str | None,
+    friction: str | None,
     bounces: int | None,
 ) -> str:
     """How a toss onto a table ends, for a map's title ("tossed heads up and …")."""

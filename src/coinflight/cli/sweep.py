@@ -230,7 +230,10 @@ def outcome_models(
         for d in lists[0]:
             for e in lists[1]:
                 for mu in lists[2]:
-                    surface = build_surface("table", d, e, mu)
+                    # build_surface reads the options as typed; repr round-trips a float exactly
+                    surface = build_surface(
+                        "table", d, None if e is None else repr(e), None if mu is None else repr(mu)
+                    )
                     check_bounces(surface, bounces)
                     models.append(build_model(surface, None, bounces))
     return models

@@ -339,21 +339,55 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
     return tau
 
 
+@njit(cache=True)
+def with_surface(c, restitution, friction):
+    """The contact record ``c`` with this toss's restitution and friction (the other fields
+    as they are): a per-toss surface for distributions of e and μ."""
+    return Contact(
+        c.radius,
+        c.half_thickness,
+        c.mass,
+        c.i1,
+        c.i3,
+        restitution,
+        friction,
+        c.drop_height,
+        c.g,
+        c.rest_speed,
+        c.reach,
+        c.edge_sine,
+        c.barrier,
+    )
+
+
 def _batch_kernel(parallel: bool) -> Any:
     """The loop over a batch, compiled for numba's threads (parallel) or for the calling thread
     with the GIL released. One source; the closure's ``loop`` keeps the two apart in numba's
-    on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables)."""
+    on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables).
+    Each toss lands with its own restitution and friction (``restitution[k]``,
+    ``friction[k]``) on the surface of ``contact``."""
     loop = prange if parallel else range
 
     def batch(
-        omega, start_sign, launch_speed, contact, max_bounces, face, bounces, first, settle, status
+        omega,
+        start_sign,
+        launch_speed,
+        contact,
+        restitution,
+        friction,
+        max_bounces,
+        face,
+        bounces,
+        first,
+        settle,
+        status,
     ):
         for k in loop(omega.shape[0]):
             f, b, t1, ts, st = land_one(
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
-                contact,
+                with_surface(contact, restitution[k], friction[k]),
                 max_bounces,
             )
             face[k] = f
@@ -377,6 +411,8 @@ def land(
     *,
     max_bounces: int = MAX_IMPACTS,
     parallel: bool = True,
+    restitution: NDArray[np.float64] | None = None,
+    friction: NDArray[np.float64] | None = None,
 ) -> tuple[
     NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
 ]:
@@ -399,6 +435,9 @@ def land(
     parallel : bool
         Spread the tosses over numba's threads (True), or run them in the calling thread with
         the GIL released (False: for callers that run several batches in their own threads).
+    restitution, friction : ndarray, shape (n,), optional
+        Each toss's own coefficient of restitution and of friction (distributions of what is
+        not measured); by default the contact's single values.
 
     Returns
     -------
@@ -420,6 +459,14 @@ def land(
     first = np.empty(n)
     settle = np.empty(n)
     status = np.empty(n, dtype=np.int8)
+    e = _per_toss(contact.restitution if restitution is None else restitution, n)
+    mu = _per_toss(contact.friction if friction is None else friction, n)
     kernel = _land_batch if parallel else _land_batch_serial
-    kernel(omega, sign, speed, contact, int(max_bounces), face, bounces, first, settle, status)
+    kernel(
+        omega, sign, speed, contact, e, mu, int(max_bounces), face, bounces, first, settle, status
+    )
     return face, bounces, first, settle, status
+
+
+def _per_toss(value: float | NDArray[np.float64], n: int) -> NDArray[np.float64]:
+    return np.ascontiguousarray(np.broadcast_to(np.asarray(value, dtype=np.float64), (n,)))

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -203,6 +204,92 @@ class Normal(Distribution):
         return f"normal({self.mean:g}, sd {self.sd:g}){_space(unit)}"
 
 
+@dataclass(frozen=True)
+class TruncatedNormal(Distribution):
+    """A normal distribution (mean, sd) restricted to [low, high] and renormalised there.
+
+    What a normal restitution or friction becomes (:func:`coinflight.model.surface.
+    contact_distribution`): the draws outside the physical range are not clipped onto its ends
+    but left out, the density inside scaled up by 1 / (Φ(b) − Φ(a)), a = (low − mean)/sd,
+    b = (high − mean)/sd (SciPy's ``truncnorm``). The mean must lie inside [low, high].
+    """
+
+    normal_mean: float
+    sd: float
+    low: float
+    high: float
+
+    def __post_init__(self) -> None:
+        m = float(v.finite("TruncatedNormal mean", self.normal_mean))
+        sd = float(v.positive("TruncatedNormal standard deviation", self.sd))
+        lo, hi = float(self.low), float(self.high)
+        if not lo < hi or math.isnan(lo) or math.isnan(hi):
+            raise ValueError(f"truncation range [{lo:g}, {hi:g}] is empty")
+        if not lo <= m <= hi:
+            raise ValueError(
+                f"normal({m:g}, sd {sd:g}) has its mean outside [{lo:g}, {hi:g}]: most of it "
+                "would be cut away"
+            )
+        object.__setattr__(self, "normal_mean", m)
+        object.__setattr__(self, "sd", sd)
+        object.__setattr__(self, "low", lo)
+        object.__setattr__(self, "high", hi)
+
+    def _frozen(self) -> Any:
+        from scipy.stats import truncnorm
+
+        a = (self.low - self.normal_mean) / self.sd
+        b = (self.high - self.normal_mean) / self.sd
+        return truncnorm(a, b, loc=self.normal_mean, scale=self.sd)
+
+    def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
+        return self.ppf(rng.random(size))
+
+    def ppf(self, u: ArrayLike) -> FloatArray:
+        return np.asarray(self._frozen().ppf(_u(u)), dtype=np.float64)
+
+    def cdf(self, x: ArrayLike) -> FloatArray:
+        return np.asarray(self._frozen().cdf(_u(x)), dtype=np.float64)
+
+    @property
+    def mean(self) -> float:  # type: ignore[override]
+        return float(self._frozen().mean())
+
+    @property
+    def kept(self) -> float:
+        """Probability mass of the untruncated normal inside [low, high]."""
+        from scipy.special import ndtr
+
+        a = (self.low - self.normal_mean) / self.sd
+        b = (self.high - self.normal_mean) / self.sd
+        return float(ndtr(b) - ndtr(a))
+
+    @property
+    def bounds(self) -> tuple[float, float]:
+        return (self.low, self.high)
+
+    def scaled(self, factor: float) -> TruncatedNormal:
+        return TruncatedNormal(
+            self.normal_mean * factor, self.sd * factor, self.low * factor, self.high * factor
+        )
+
+    def describe(self, unit: str = "") -> str:
+        where = f"[{self.low:g}, {self.high:g}]" if math.isfinite(self.high) else f"≥ {self.low:g}"
+        return (
+            f"normal({self.normal_mean:g}, sd {self.sd:g}){_space(unit)} truncated to {where} "
+            f"({100 * self.kept:.3g} % kept)"
+        )
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "kind": "truncated-normal",
+            "mean": self.normal_mean,
+            "sd": self.sd,
+            "low": self.low,
+            "high": self.high if math.isfinite(self.high) else None,  # JSON has no infinity
+        }
+
+
 def _space(unit: str) -> str:
     return f" {unit}" if unit else ""
 
@@ -265,6 +352,7 @@ __all__ = [
     "Distribution",
     "Fixed",
     "Normal",
+    "TruncatedNormal",
     "Uniform",
     "as_distribution",
     "parse_distribution",

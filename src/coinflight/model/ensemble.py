@@ -21,6 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.model.coin import DEFAULT_COIN, Coin
 from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.model.surface import contact_distribution
 from coinflight.model.toss import STANDARD_GRAVITY, Start, check_gravity
 
 FloatArray = NDArray[np.float64]
@@ -30,6 +31,9 @@ PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 NO_SPIN = Fixed(0.0)
 """Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
+CONTACT = ("restitution", "friction")
+"""Contact parameters a distribution of tosses may spread (table landings); when set they
+replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`)."""
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
 # below anything an estimate can resolve, so such draws can never occur in practice.
@@ -58,6 +62,12 @@ class TossDistribution:
         The launch speed v0 of the centre of mass, m/s, instead of ``flight_time``: the flight
         time becomes T = 2 v0 / g (Stefan & Cheche eq 11, :func:`coinflight.core.ballistics.
         flight_time`). Kept on the object for reference; equality compares the flight times.
+    restitution, friction : Distribution or float, keyword only
+        What is not measured about the contact with a table: the coefficient of restitution
+        (in [0, 1]) and of friction (≥ 0), drawn toss by toss, so that P(heads, tails, edge)
+        integrates over them. None (default): the surface's single value. A normal one is
+        truncated to the physical range (:func:`coinflight.model.surface.contact_distribution`).
+        Only table landings take them (the estimators refuse them for other outcome models).
 
     Notes
     -----
@@ -75,6 +85,8 @@ class TossDistribution:
     g: float = STANDARD_GRAVITY
     _: KW_ONLY
     launch_speed: Distribution | None = field(default=None, compare=False)
+    restitution: Distribution | None = None
+    friction: Distribution | None = None
 
     if TYPE_CHECKING:  # what callers may pass (numbers become Fixed); the dataclass builds it
 
@@ -89,6 +101,8 @@ class TossDistribution:
             g: float = STANDARD_GRAVITY,
             *,
             launch_speed: Distribution | float | None = None,
+            restitution: Distribution | float | None = None,
+            friction: Distribution | float | None = None,
         ) -> None: ...
 
     def __post_init__(self) -> None:
@@ -97,6 +111,10 @@ class TossDistribution:
         v.choice("start", self.start, ("heads", "tails"))
         object.__setattr__(self, "g", check_gravity(self.g))
         self._set_flight_time()
+        for name in CONTACT:
+            value = getattr(self, name)
+            if value is not None:
+                object.__setattr__(self, name, contact_distribution(name, value))
         if not isinstance(self.coin, Coin):
             raise TypeError(f"coin must be a Coin, got {self.coin!r}")
         t = self.flight_time
@@ -165,10 +183,33 @@ class TossDistribution:
         """The four initial conditions by name, in :data:`PARAMETERS` order."""
         return {name: getattr(self, name) for name in PARAMETERS}
 
+    def with_contact(
+        self,
+        restitution: Distribution | float | None = None,
+        friction: Distribution | float | None = None,
+    ) -> TossDistribution:
+        """The same tosses with these restitution and friction distributions (None: keep)."""
+        import dataclasses
+
+        changes = {
+            name: value
+            for name, value in (("restitution", restitution), ("friction", friction))
+            if value is not None
+        }
+        return dataclasses.replace(self, **changes) if changes else self  # type: ignore[arg-type]
+
+    @property
+    def contact(self) -> dict[str, Distribution]:
+        """The contact parameters this distribution sets (:data:`CONTACT`), by name."""
+        return {name: d for name in CONTACT if (d := getattr(self, name)) is not None}
+
     @property
     def ranged(self) -> tuple[str, ...]:
-        """Names of the parameters that vary (not :class:`Fixed`), in :data:`PARAMETERS` order."""
-        return tuple(name for name in PARAMETERS if not getattr(self, name).is_fixed)
+        """Names of the parameters that vary (not :class:`Fixed`): those of :data:`PARAMETERS`,
+        then the contact parameters of :data:`CONTACT` that vary, in that order."""
+        return tuple(name for name in PARAMETERS if not getattr(self, name).is_fixed) + tuple(
+            name for name, d in self.contact.items() if not d.is_fixed
+        )
 
     @property
     def start_sign(self) -> float:
@@ -211,6 +252,22 @@ class TossDistribution:
                 out.append(np.full(n, dist.mean))
         return out[0], out[1], out[2], out[3]
 
+    def contact_values(self, u: FloatArray) -> dict[str, FloatArray]:
+        """The contact parameters this distribution sets, for points of the unit cube.
+
+        ``u`` as for :meth:`values`; returns {name: array of shape (n,)} for each parameter of
+        :attr:`contact` (a fixed one repeated).
+        """
+        u = np.asarray(u, dtype=float)
+        ranged = self.ranged
+        n = u.shape[1]
+        return {
+            name: np.asarray(d.ppf(u[ranged.index(name)]), dtype=float)
+            if name in ranged
+            else np.full(n, d.mean)
+            for name, d in self.contact.items()
+        }
+
     def sample(
         self, rng: np.random.Generator, n: int
     ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
@@ -222,6 +279,8 @@ class TossDistribution:
         lines = [f"{self.coin.describe()}, started {self.start} up"]
         for name in PARAMETERS:
             lines.append(f"{name} = {getattr(self, name).describe(UNITS[name])}")
+        for name, d in self.contact.items():
+            lines.append(f"{name} = {d.describe()} (toss by toss)")
         return "\n".join(lines)
 
 
@@ -251,4 +310,4 @@ def _largest(dist: Distribution) -> float:
     return max(abs(lo), abs(hi))
 
 
-__all__ = ["NO_SPIN", "PARAMETERS", "TossDistribution", "check_launch_speed"]
+__all__ = ["CONTACT", "NO_SPIN", "PARAMETERS", "TossDistribution", "check_launch_speed"]

@@ -2,10 +2,18 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Literal
 
 from coinflight import _validation as v
+from coinflight.model.distributions import (
+    Distribution,
+    Fixed,
+    Normal,
+    TruncatedNormal,
+    as_distribution,
+)
 
 SurfaceKind = Literal["hand", "table"]
 
@@ -93,6 +101,58 @@ class Surface:
         return self.kind == "table"
 
 
+CONTACT_RANGES = {"restitution": (0.0, 1.0), "friction": (0.0, math.inf)}
+"""The physical range of each contact parameter a distribution of tosses may spread: e in
+[0, 1] (no contact gives energy back beyond elastic), μ ≥ 0."""
+
+
+def contact_distribution(name: str, value: Distribution | float) -> Distribution:
+    """``value`` as a distribution of the contact parameter ``name`` inside its physical range.
+
+    A number or :class:`~coinflight.model.distributions.Fixed` value and a
+    :class:`~coinflight.model.distributions.Uniform` range must lie inside
+    :data:`CONTACT_RANGES` (else a ValueError naming the value and the range: no silent
+    clipping). A :class:`~coinflight.model.distributions.Normal` one is *truncated* to the range
+    (:class:`~coinflight.model.distributions.TruncatedNormal`: the mass outside is left out and
+    the rest renormalised, said in its description), and refused when its mean lies outside
+    the range.
+
+    Examples
+    --------
+    >>> from coinflight.model.distributions import Normal
+    >>> contact_distribution("friction", Normal(0.4, 0.1)).describe()
+    'normal(0.4, sd 0.1) truncated to ≥ 0 (100 % kept)'
+    >>> contact_distribution("restitution", 1.2)
+    Traceback (most recent call last):
+    ...
+    ValueError: restitution must be between 0 and 1, got 1.2
+    """
+    low, high = v.known("contact parameter", name, CONTACT_RANGES)
+    dist = as_distribution(value, name)
+    allowed = (
+        f"{name} must be between {low:g} and {high:g}"
+        if math.isfinite(high)
+        else f"{name} must be non-negative"
+    )
+    if isinstance(dist, Fixed):  # one number: the Surface's own check and wording
+        if math.isfinite(high):
+            v.in_range(name, dist.value, low, high)
+        else:
+            v.non_negative(name, dist.value)
+        return dist
+    if isinstance(dist, Normal):
+        if not low <= dist.mean <= high:
+            raise ValueError(
+                f"{name} {dist.describe()} has its mean outside the physical range; {allowed} "
+                "(a normal one is truncated to the range, so its mean must lie inside)"
+            )
+        return TruncatedNormal(dist.mean, dist.sd, low, high)
+    for end in dist.bounds:
+        if not low <= end <= high:
+            raise ValueError(f"{name} {dist.describe()} reaches {end:g}; {allowed}")
+    return dist
+
+
 @dataclass(frozen=True)
 class Drag:
     """Air resistance on the flying coin.
@@ -130,4 +190,11 @@ class Drag:
         return self.coefficient == 0.0 and self.spin_damping == 0.0
 
 
-__all__ = ["AIR_DENSITY", "DROP_HEIGHT", "Drag", "Surface"]
+__all__ = [
+    "AIR_DENSITY",
+    "CONTACT_RANGES",
+    "DROP_HEIGHT",
+    "Drag",
+    "Surface",
+    "contact_distribution",
+]

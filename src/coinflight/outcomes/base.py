@@ -53,6 +53,12 @@ class OutcomeModel:
     """Names of extra counts :meth:`count` returns after (tails, heads, edge), e.g.
     ``("unsettled",)`` for tosses a landing model could not settle (their faces are still
     counted). The estimators add them up and report them in ``details`` (count and fraction)."""
+    contact_parameters: tuple[str, ...] = ()
+    """Contact parameters (:data:`coinflight.model.ensemble.CONTACT`: restitution, friction)
+    this model can take toss by toss from a distribution of tosses; the estimators refuse a
+    distribution that sets any other (:func:`check_contact`)."""
+    contact_refusal: str = ""
+    """Why this model takes no contact distributions, when it is not obvious (one line)."""
     rate: float = 1e5
     """Tosses a second on the reference 2-core machine, all threads: the estimators' work
     bounds (:func:`coinflight.probability.monte_carlo.check_work` …) turn a size into a time
@@ -92,6 +98,15 @@ class OutcomeModel:
         """JSON description of the model's settings (surface and air)."""
         return {"surface": self.name}
 
+    def describe_for(self, dist: TossDistribution | None) -> str:
+        """:meth:`describe` for the tosses ``dist`` (a model that takes contact distributions
+        names those of ``dist`` in place of its surface's values)."""
+        return self.describe()
+
+    def settings_for(self, dist: TossDistribution | None) -> dict[str, Any]:
+        """:meth:`to_dict` for the tosses ``dist`` (as :meth:`describe_for`)."""
+        return self.to_dict()
+
     def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
         """One toss: (JSON fields, one line of text). By default the face of :meth:`faces`."""
         face = self.faces(
@@ -103,6 +118,23 @@ class OutcomeModel:
         )
         name = FACE_NAMES[int(face[0])]
         return {"outcome": name}, f"ends {name.upper()} up ({self.describe()})"
+
+
+def check_contact(dist: TossDistribution, model: OutcomeModel) -> None:
+    """ValueError (one line) when ``dist`` sets contact parameters ``model`` cannot take.
+
+    A hand catch has no contact; a table landing through air takes single values only (for
+    now): the distribution would be silently ignored, so it is refused.
+    """
+    extra = [name for name in dist.contact if name not in model.contact_parameters]
+    if not extra:
+        return
+    given = ", ".join(f"{name} {dist.contact[name].describe()}" for name in extra)
+    why = model.contact_refusal or (
+        f"{model.name} has no contact with a surface; restitution and friction distributions "
+        "apply to a table landing (surface kind 'table', --surface table)"
+    )
+    raise ValueError(f"{given}: {why}")
 
 
 def faces_from_same_side(same: int, n: int, start_sign: float) -> Counts:
@@ -173,6 +205,7 @@ def drag_dict(drag: Drag | None) -> dict[str, float] | None:
 __all__ = [
     "Counts",
     "OutcomeModel",
+    "check_contact",
     "describe_air",
     "drag_dict",
     "faces_from_same_side",

@@ -58,6 +58,13 @@ AIR_LANDINGS_PER_SECOND = 4e3
 load of 7-24, ~18,000 per CPU second in one thread)."""
 
 
+NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
+    "restitution and friction distributions are not yet taken by a table landing through air "
+    "(--drag, --spin-damping): give single values, or drop the air"
+)
+"""The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
+
+
 STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
 """Why a landing ended, by the status codes of :mod:`coinflight.core.bounce`."""
 
@@ -124,12 +131,15 @@ def land(
     drag: Drag | None = None,
     max_bounces: int | None = None,
     parallel: bool = True,
+    contact: dict[str, FloatArray] | None = None,
 ) -> LandingOutcome:
     """Land tosses given as arrays (ω (n, 3), v0 (n,)) on ``surface``; flat batch of n.
 
     Without drag this is the parallel event-driven kernel :func:`coinflight.core.bounce.land`;
     with drag the compiled integrator :func:`coinflight.core.drag.land` (the same impacts and
-    endings).
+    endings). ``contact`` gives tosses their own ``restitution`` and/or ``friction`` (arrays of
+    shape (n,), checked by the caller; :meth:`~coinflight.model.ensemble.TossDistribution.
+    contact_values`) in place of the surface's; not with drag.
     """
     if not isinstance(surface, Surface):
         raise TypeError(f"surface must be a Surface, got {type(surface).__name__}")
@@ -145,7 +155,7 @@ def land(
     from coinflight.core import bounce
     from coinflight.core.contact import Contact
 
-    contact = Contact.build(  # the coin, the surface and gravity, once for every kernel
+    record = Contact.build(  # the coin, the surface and gravity, once for every kernel
         radius=coin.radius,
         thickness=coin.thickness,
         mass=coin.mass,
@@ -158,7 +168,10 @@ def land(
         rest_speed=bounce.REST_SPEED,
     )
     limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
+    per_toss = {} if contact is None else contact
     if drag is not None and not drag.is_zero:
+        if per_toss:
+            raise ValueError(NO_CONTACT_DISTRIBUTIONS_WITH_DRAG)
         from coinflight.core import drag as drag_kernels
 
         check_air(coin, drag, g, speed, surface.drop_height, omega)
@@ -167,13 +180,20 @@ def land(
             speed,
             sign,
             drag_model(coin, drag, g),
-            contact,
+            record,
             max_bounces=limit,
             parallel=parallel,
         )
         return LandingOutcome(face, bounces, first, settle, status)
     face, bounces, first, settle, status = bounce.land(
-        omega, speed, sign, contact, max_bounces=limit, parallel=parallel
+        omega,
+        speed,
+        sign,
+        record,
+        max_bounces=limit,
+        parallel=parallel,
+        restitution=per_toss.get("restitution"),
+        friction=per_toss.get("friction"),
     )
     return LandingOutcome(face, bounces, first, settle, status)
 
@@ -284,6 +304,15 @@ class TableLanding(OutcomeModel):
     tallies = ("unsettled",)
 
     @property
+    def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
+        """Restitution and friction may vary toss by toss, except through air (not yet)."""
+        return ("restitution", "friction") if self.drag is None else ()
+
+    @property
+    def contact_refusal(self) -> str:  # type: ignore[override]
+        return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG if self.drag is not None else ""
+
+    @property
     def rate(self) -> float:  # type: ignore[override]
         """Tosses a second: :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag
         :data:`AIR_LANDINGS_PER_SECOND`."""
@@ -331,25 +360,42 @@ class TableLanding(OutcomeModel):
             self.drag,
             self.max_bounces,
             parallel=False,  # the estimators run batches in their own threads
+            contact=dist.contact_values(u) if dist.contact else None,
         )
         faces = np.bincount(out.face, minlength=3).astype(np.int64)
         unsettled = np.count_nonzero(out.status == STATUS_NAMES.index("unsettled"))
         return np.append(faces, unsettled)
 
     def describe(self) -> str:
-        s = self.surface
-        return (
-            f"landing on a table {s.drop_height:g} m below launch (restitution "
-            f"{s.restitution:g}, friction {s.friction:g}), {describe_air(self.drag)}"
-        )
+        return self.describe_for(None)
 
     def to_dict(self) -> dict[str, Any]:
+        return self.settings_for(None)
+
+    def describe_for(self, dist: TossDistribution | None) -> str:
+        """One line; the restitution and friction distributions of ``dist``, if any, in place
+        of the surface's values (they replace them toss by toss)."""
         s = self.surface
+        spread = {} if dist is None else dist.contact
+        e = spread["restitution"].describe() if "restitution" in spread else f"{s.restitution:g}"
+        mu = spread["friction"].describe() if "friction" in spread else f"{s.friction:g}"
+        return (
+            f"landing on a table {s.drop_height:g} m below launch (restitution "
+            f"{e}, friction {mu}), {describe_air(self.drag)}"
+        )
+
+    def settings_for(self, dist: TossDistribution | None) -> dict[str, Any]:
+        """JSON settings; the restitution and friction distributions of ``dist``, if any, as
+        objects (``{"kind": "uniform", ...}``) in place of the surface's numbers."""
+        s = self.surface
+        spread = {} if dist is None else dist.contact
         out: dict[str, Any] = {
             "surface": s.kind,
             "drop_height": s.drop_height,
-            "restitution": s.restitution,
-            "friction": s.friction,
+            "restitution": spread["restitution"].to_dict()
+            if "restitution" in spread
+            else s.restitution,
+            "friction": spread["friction"].to_dict() if "friction" in spread else s.friction,
             "drag": drag_dict(self.drag),
         }
         if self.max_bounces is not None:

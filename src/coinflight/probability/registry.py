@@ -166,6 +166,9 @@ class Estimator:
             kwargs.update(runner)
         if self.seeded:
             kwargs["seed"] = seed
+        from coinflight.outcomes.base import check_contact
+
+        check_contact(dist, model)
         size = self.size_for(len(dist.ranged), n)
         return self.run(dist, **kwargs) if size is None else self.run(dist, size, **kwargs)
 

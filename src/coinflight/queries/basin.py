@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.studies.basin import BasinMap
 
-HAND = TableArgs("hand", None, None, None)
+HAND = TableArgs("hand", None, None, None, None)
 """The catch in the hand (no table options): the default landing of a map."""
 
 

@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from coinflight.queries.landing import LandingChoice, outcome_model
+from coinflight.queries.landing import LandingChoice, contact_spread, outcome_model
 from coinflight.queries.values import AirArgs, DistArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -46,6 +46,7 @@ class ProbabilityQuery:
     threads: int | None
     options: dict[str, Any] = field(default_factory=dict)
     inputs: dict[str, Any] = field(default_factory=dict)
+    surface_preset: str | None = None
 
     def seconds(self) -> float | None:
         """The estimator's estimate of the run's time on the reference machine, s (a
@@ -127,7 +128,13 @@ def probability_query(
         raise ValueError(f"--seed applies to {seeded}, not {method}")
     if threads is not None and not estimator.parallel:
         raise ValueError(f"--threads does not apply to the {method} method")
-    landing = outcome_model(*table, *air)
+    landing = outcome_model(*table, *air, ranged=True)
+    # Distributions of e and μ (build_surface refused them for the hand; single values are in
+    # the surface) go with the tosses, drawn toss by toss.
+    given = contact_spread(table.restitution, table.friction, table.surface_preset)
+    spread = {name: d for name, d in given.items() if not d.is_fixed}
+    if spread:
+        dist = dist.with_contact(**spread)
     if landing is not None and landing.drag is not None and estimator.default_n and n is None:
         rate = landing.model.rate
         if _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
@@ -140,7 +147,7 @@ def probability_query(
         options["model"] = landing.model
     return ProbabilityQuery(
         method, estimator, dist, coin, tosses.start, landing, n, seed, threads, options,
-        dict(inputs or {}),
+        dict(inputs or {}), table.surface_preset,
     )  # fmt: skip
 
 
@@ -162,8 +169,6 @@ def run(
 
 def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> dict[str, Any]:
     """The JSON object of ``coinflight probability --json``."""
-    from coinflight.queries.landing import surface_payload
-
     payload = result.to_dict()
     payload["distribution"] = {name: d.to_dict() for name, d in query.dist.parameters.items()}
     payload.update(
@@ -172,8 +177,13 @@ def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> d
         g=query.dist.g,
         inputs={f"--{name.replace('_', '-')}": query.inputs.get(name) for name in INPUT_NAMES},
     )
+    payload["distribution"].update({name: d.to_dict() for name, d in query.dist.contact.items()})
     if query.landing is not None:
-        payload.update(surface_payload(query.landing.surface, query.landing.drag))
+        payload.update(query.landing.model.settings_for(query.dist))
+    if query.surface_preset is not None:
+        from coinflight.studies.presets import surface_preset
+
+        payload["surface_preset"] = surface_preset(query.surface_preset).to_dict()
     payload["warnings"] = result_warnings(result)
     return payload
 

@@ -88,12 +88,14 @@ class DistArgs(NamedTuple):
 
 
 class TableArgs(NamedTuple):
-    """Where the toss ends, as typed: --surface and the table's options (None: not given)."""
+    """Where the toss ends, as typed: --surface and the table's options (None: not given),
+    --surface-preset last."""
 
     surface: str
     drop_height: float | None
-    restitution: float | None
-    friction: float | None
+    restitution: str | None
+    friction: str | None
+    surface_preset: str | None
 
 
 class AirArgs(NamedTuple):

@@ -1,4 +1,5 @@
-"""Named distributions of tosses: ``--preset NAME`` wherever a distribution of tosses is asked.
+"""Named distributions of tosses (``--preset NAME``) and of what is not measured about a surface
+(``--surface-preset NAME``).
 
 ``human``: a person's natural toss, caught in the hand
 -------------------------------------------------------
@@ -26,6 +27,30 @@ the ψ distribution is the same for every coin. The 10 % spreads make ωp T vary
 turns (sd), enough for the phase to be uniform, which is what the closed form assumes; their
 values are not published and barely matter (the bias depends on ψ alone). The spread of ωz
 (half its mean) sets the spread of ψ and, with ψ0, the range of per-flip p(ψ) above.
+
+Surface presets: what a coin meets on wood or on a table top
+-------------------------------------------------------------
+No source measures the restitution or the friction of a coin on a table; the literature gives
+ranges (below). A surface preset spreads each parameter *uniformly* over its range (our choice:
+no source gives a distribution), so that a probability integrates over it
+(:meth:`coinflight.model.ensemble.TossDistribution.with_contact`) and quotes a band, not a
+point.
+
+==============  ===========  ============  =========================================================
+preset          restitution  friction      sources
+==============  ===========  ============  =========================================================
+coin-on-wood    0.3–0.6      0.2–0.6       e: the range of the published coin-toss simulations of a
+                                           coin on wood or a table top (Strzałko, Grabski,
+                                           Stefański, Perlikowski & Kapitaniak 2008, Phys. Rep.
+                                           469:59; Pletser 2022, Foundations 2(3):39, e = 0.5).
+                                           μ: wood on metal, clean and dry, 0.2–0.6 (Engineering
+                                           ToolBox, "Friction and Friction Coefficients",
+                                           engineeringtoolbox.com/friction-coefficients-d_778.html).
+coin-on-table   0.3–0.6      0.05–0.5      e: as above. μ: from the smooth table top Pletser (2022)
+                                           assumes for a 50-eurocent coin (0.05) to the top of the
+                                           range used in published coin-toss simulations (0.5;
+                                           Strzałko et al. 2008).
+==============  ===========  ============  =========================================================
 """
 
 from __future__ import annotations
@@ -39,7 +64,7 @@ from typing import Any
 from coinflight import _validation as v
 from coinflight.core import precession
 from coinflight.model.coin import DEFAULT_COIN, Coin
-from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform, as_distribution
 from coinflight.model.ensemble import TossDistribution
 from coinflight.model.toss import STANDARD_GRAVITY, Start
 
@@ -150,14 +175,109 @@ def preset(
     return dataclasses.replace(dist, **changes) if changes else dist
 
 
+@dataclasses.dataclass(frozen=True)
+class SurfacePreset:
+    """A named surface: the ranges of its restitution and friction, and their sources.
+
+    Attributes
+    ----------
+    name : str
+    restitution, friction : Distribution
+        Uniform over the literature's range (see the module notes).
+    sources : dict
+        {"restitution": ..., "friction": ...}: where each range comes from.
+    """
+
+    name: str
+    restitution: Distribution
+    friction: Distribution
+    sources: MappingProxyType[str, str]
+
+    @property
+    def contact(self) -> dict[str, Distribution]:
+        """{"restitution": ..., "friction": ...}, for
+        :meth:`~coinflight.model.ensemble.TossDistribution.with_contact`."""
+        return {"restitution": self.restitution, "friction": self.friction}
+
+    def describe(self) -> str:
+        """One line: the name and the two ranges."""
+        return (
+            f"{self.name}: restitution {self.restitution.describe()}, friction "
+            f"{self.friction.describe()} (uniform over the literature's ranges)"
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON: name, the two distributions and the sources."""
+        return {
+            "name": self.name,
+            "restitution": self.restitution.to_dict(),
+            "friction": self.friction.to_dict(),
+            "sources": dict(self.sources),
+        }
+
+
+_RESTITUTION_SOURCE = (
+    "0.3-0.6: the range of published coin-toss simulations of a coin on wood or a table top "
+    "(Strzałko, Grabski, Stefański, Perlikowski & Kapitaniak 2008, Phys. Rep. 469:59; "
+    "Pletser 2022, Foundations 2(3):39, e = 0.5); not measured for coins"
+)
+
+SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
+    {
+        "coin-on-wood": SurfacePreset(
+            "coin-on-wood",
+            Uniform(0.3, 0.6),
+            Uniform(0.2, 0.6),
+            MappingProxyType(
+                {
+                    "restitution": _RESTITUTION_SOURCE,
+                    "friction": "0.2-0.6: wood on metal, clean and dry (Engineering ToolBox, "
+                    "'Friction and Friction Coefficients', "
+                    "engineeringtoolbox.com/friction-coefficients-d_778.html)",
+                }
+            ),
+        ),
+        "coin-on-table": SurfacePreset(
+            "coin-on-table",
+            Uniform(0.3, 0.6),
+            Uniform(0.05, 0.5),
+            MappingProxyType(
+                {
+                    "restitution": _RESTITUTION_SOURCE,
+                    "friction": "0.05-0.5: from the smooth surface Pletser (2022, Foundations "
+                    "2(3):39) assumes for a 50-eurocent coin (0.05) to the top of the range of "
+                    "published coin-toss simulations (0.5; Strzałko et al. 2008)",
+                }
+            ),
+        ),
+    }
+)
+"""Surface presets by name (see the module notes for every number and its source)."""
+
+
+def surface_preset(name: str) -> SurfacePreset:
+    """The surface preset ``name`` (a key of :data:`SURFACE_PRESETS`), else a ValueError
+    listing the known ones.
+
+    Examples
+    --------
+    >>> print(surface_preset("coin-on-wood").describe())
+    coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6 (uniform over the literature's ranges)
+    """
+    return v.known("surface preset", name, SURFACE_PRESETS)
+
+
 __all__ = [
     "HUMAN_LAUNCH_SPEED",
     "HUMAN_PSI",
     "HUMAN_SPIN",
     "OVERRIDABLE",
     "PRESETS",
+    "SURFACE_PRESETS",
+    "SurfacePreset",
     "human",
     "preset",
+    "surface_preset",
 ]
 
 

@@ -83,8 +83,13 @@ Gravity = Annotated[float, _q("Gravitational acceleration, m/s².")]
 # --- where it ends ---------------------------------------------------------------------------
 Surface = Annotated[str, _q("hand (caught at launch height) or table (as --surface).")]
 DropHeight = Annotated[float | None, _q("table: surface below the launch height, m.")]
-Restitution = Annotated[float | None, _q("table: coefficient of restitution in [0, 1].")]
-Friction = Annotated[float | None, _q("table: Coulomb friction coefficient ≥ 0.")]
+Restitution = Annotated[
+    str | None,
+    _q("table: coefficient of restitution in [0, 1] (probability: also a distribution, 0.3:0.6)."),
+]
+Friction = Annotated[
+    str | None, _q("table: Coulomb friction coefficient ≥ 0 (probability: also a distribution).")
+]
 Drag = Annotated[float | None, _q("Air drag coefficient C_d ≥ 0 (integrated numerically).")]
 SpinDamping = Annotated[float | None, _q("Damping torque −K ω on the spin, N m s ≥ 0.")]
 Bounces = Annotated[int | None, _q("table: stop at the contact after K bounces.")]
@@ -99,10 +104,11 @@ def toss_args(
 
 
 def table_args(
-    surface: str, drop_height: float | None, restitution: float | None, friction: float | None
+    surface: str, drop_height: float | None, restitution: str | None, friction: str | None
 ) -> TableArgs:
-    """--surface and the table's options."""
-    return TableArgs(surface, drop_height, restitution, friction)
+    """--surface and the table's options (as typed, parsed as the command line parses them);
+    no --surface-preset."""
+    return TableArgs(surface, drop_height, restitution, friction, None)
 
 
 def air_args(drag: float | None, spin_damping: float | None) -> AirArgs:

@@ -1,0 +1,177 @@
+"""Figures of the landing report (:mod:`coinflight.studies.landing`): the (e, μ) maps, the
+nickel's P(edge) band, and coinflight beside MuJoCo. The dead landings reuse
+:func:`coinflight.plotting.edge.plot_edge`."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from coinflight.plotting.style import (
+    EDGE_COLOR,
+    EXACT_COLOR,
+    HEADS_COLOR,
+    TAILS_COLOR,
+    method_color,
+    new_figure,
+)
+from coinflight.studies.landing import (
+    DROP_HEIGHT,
+    MURRAY_TEARE,
+    Band,
+    ContactMaps,
+    MujocoComparison,
+)
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
+def plot_contact_maps(maps: ContactMaps, coin_name: str = "US nickel") -> Figure:
+    """Two maps over restitution e (x) and friction μ (y): P(same side at rest) (diverging
+    about 1/2) and P(edge), each cell annotated with its value; ``maps.n`` tosses per cell."""
+    fig = new_figure(figsize=(11.0, 4.8))
+    axes = fig.subplots(1, 2)
+    de = np.diff(maps.restitution).mean() if len(maps.restitution) > 1 else 0.1
+    dm = np.diff(maps.friction).mean() if len(maps.friction) > 1 else 0.1
+    extent = (
+        maps.restitution[0] - de / 2,
+        maps.restitution[-1] + de / 2,
+        maps.friction[0] - dm / 2,
+        maps.friction[-1] + dm / 2,
+    )
+    worst = float(np.max(np.abs(maps.same - 0.5)))
+    panels = (
+        (maps.same, "P(same side at rest)", "RdBu_r", 0.5 - worst, 0.5 + worst),
+        (maps.edge, "P(edge)", "Greens", 0.0, max(float(maps.edge.max()), 1e-9)),
+    )
+    for ax, (values, label, cmap, lo, hi) in zip(axes, panels, strict=True):
+        im = ax.imshow(
+            values, origin="lower", extent=extent, aspect="auto", cmap=cmap, vmin=lo, vmax=hi
+        )
+        fig.colorbar(im, ax=ax, label=label)
+        if values.size <= 150:
+            for i, m in enumerate(maps.friction):
+                for j, e in enumerate(maps.restitution):
+                    ax.text(e, m, f"{values[i, j]:.3f}", ha="center", va="center", fontsize=6)
+        ax.set_xlabel("restitution e")
+        ax.set_ylabel("friction μ")
+        ax.set_title(label, fontsize="medium")
+    se = float(maps.stderr(np.full(1, 0.5))[0])
+    fig.suptitle(
+        f"{coin_name} tossed heads up, landing on a table {DROP_HEIGHT:g} m below launch: "
+        f"{maps.n:,} tosses per cell, the same in every cell (s.e. ≤ {se:.3f}), seed "
+        f"{maps.seed}",
+        fontsize="medium",
+    )
+    return fig
+
+
+def plot_nickel_band(bands: Sequence[Band]) -> Figure:
+    """The nickel's P(edge) per surface preset: every cell of the grid over the preset's
+    ranges (points, ±2 s.e.), the band from the lowest to the highest cell, the probability
+    integrated over the preset (diamond, ±2 s.e.), and Murray & Teare's 1 in 6000 (line)."""
+    fig = new_figure(figsize=(7.0, 1.6 + 1.1 * len(bands)))
+    ax = fig.add_subplot()
+    for k, band in enumerate(bands):
+        y = float(k)
+        cells = band.edge.ravel()
+        se = np.sqrt(cells * (1 - cells) / band.n)
+        jitter = np.linspace(-0.2, 0.2, cells.size)
+        ax.errorbar(
+            cells,
+            y + jitter,
+            xerr=2 * se,
+            fmt="o",
+            color=EDGE_COLOR,
+            markersize=3,
+            alpha=0.7,
+            label="grid cells over the ranges (±2 s.e.)" if k == 0 else None,
+        )
+        lo, hi = band.low[0], band.high[0]
+        ax.fill_betweenx(
+            [y - 0.3, y + 0.3],
+            lo,
+            hi,
+            color=EDGE_COLOR,
+            alpha=0.15,
+            label="band: lowest to highest cell" if k == 0 else None,
+        )
+        p = band.integrated
+        ax.errorbar(
+            [p.p],
+            [y + 0.38],
+            xerr=[2 * p.stderr],
+            fmt="D",
+            color=method_color("monte-carlo"),
+            label="integrated over the ranges (±2 s.e.)" if k == 0 else None,
+        )
+    ax.axvline(
+        MURRAY_TEARE,
+        color=EXACT_COLOR,
+        linestyle="--",
+        linewidth=1,
+        label="Murray & Teare 1993: 1 in 6000 (extrapolated)",
+    )
+    ax.set_yticks(range(len(bands)))
+    ax.set_yticklabels([b.preset for b in bands])
+    ax.set_ylim(-0.6, len(bands) - 0.4 + 0.2)
+    ax.set_xlabel("P(edge) of a US nickel")
+    ax.set_xlim(left=0.0)
+    ax.legend(fontsize="x-small", loc="upper right")
+    ax.set_title(
+        f"US nickel landing on a table {DROP_HEIGHT:g} m below launch: P(edge) over the "
+        "literature's (e, μ)",
+        fontsize="medium",
+    )
+    return fig
+
+
+def plot_mujoco(c: MujocoComparison) -> Figure:
+    """P(tails, heads, edge) of the same tosses in coinflight and MuJoCo, at the first contact
+    and at rest (bars, ±2 s.e.)."""
+    fig = new_figure(figsize=(8.0, 4.2))
+    axes = fig.subplots(1, 2, sharey=True)
+    names = ("tails", "heads", "edge")
+    colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
+    for ax, (title, ours, theirs) in zip(
+        axes,
+        (
+            ("first contact", c.ours_first, c.mujoco_first),
+            ("at rest", c.ours_rest, c.mujoco_rest),
+        ),
+        strict=True,
+    ):
+        x = np.arange(3)
+        for shift, faces, hatch, label in (
+            (-0.2, ours, None, "coinflight"),
+            (0.2, theirs, "//", "MuJoCo"),
+        ):
+            p = c.fractions(faces)
+            ax.bar(
+                x + shift,
+                p,
+                width=0.38,
+                color=colours,
+                hatch=hatch,
+                edgecolor="0.2",
+                yerr=2 * np.sqrt(p * (1 - p) / c.n),
+                capsize=3,
+                label=label,
+            )
+        ax.set_xticks(x)
+        ax.set_xticklabels(names)
+        ax.set_title(title, fontsize="medium")
+    axes[0].set_ylabel("fraction of tosses (±2 s.e.)")
+    axes[1].legend(fontsize="small")
+    fig.suptitle(
+        f"{c.n:,} identical tosses (seed {c.seed}), e = {c.restitution:g}, μ = "
+        f"{c.friction:g}: coinflight left, MuJoCo right (hatched)",
+        fontsize="medium",
+    )
+    return fig
+
+
+__all__ = ["plot_contact_maps", "plot_mujoco", "plot_nickel_band"]

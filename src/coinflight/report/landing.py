@@ -1,0 +1,484 @@
+"""``coinflight landing-report``: the table landing validated, as figures, numbers and a report.
+
+Every number comes from :mod:`coinflight.studies.landing` at run time (none is written here),
+so the report of a later version of the contact physics shows that version's numbers. The
+files (``report.md``, ``report.html``, ``numbers.json`` and the figures) appear together at
+the end or not at all (:func:`coinflight._files.staged_folder`).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from coinflight import __version__
+from coinflight._files import check_all_writable, staged_folder, write_text
+from coinflight.probability import streams
+from coinflight.report.document import (
+    Block,
+    Bullets,
+    Document,
+    Heading,
+    Image,
+    Paragraph,
+    Table,
+)
+from coinflight.studies import landing as study
+
+DEFAULT_SEED = 20261123
+"""The report's documented seed, so that it is the same on every machine (reported)."""
+FIGURES = ("dead_landings", "contact_maps", "nickel_band", "mujoco")
+REPORTS = ("report.md", "report.html", "numbers.json")
+Step = Callable[[str], None]
+
+
+@dataclass(frozen=True)
+class Sizes:
+    """How much the report computes (the defaults are the full report; :data:`QUICK`)."""
+
+    dead: int = 100_000
+    """Dead landings per ratio h/d (issue 11: 10⁵)."""
+    map_tosses: int = 20_000
+    """Tosses per (e, μ) cell of the maps."""
+    map_restitution: int = 10
+    map_friction: int = 11
+    """Cells of the maps along e ∈ [0, 0.9] and μ ∈ [0, 1]."""
+    band_tosses: int = 200_000
+    """Nickel tosses per cell of each preset's grid, and integrated over it."""
+    band_cells: int = 3
+    """Cells per parameter over each preset's box."""
+    mujoco: int = 10_000
+    """Identical tosses in coinflight and MuJoCo (0: skip)."""
+
+    def to_dict(self) -> dict[str, int]:
+        from dataclasses import asdict
+
+        return asdict(self)
+
+
+QUICK = Sizes(
+    dead=2_000,
+    map_tosses=400,
+    map_restitution=3,
+    map_friction=3,
+    band_tosses=4_000,
+    band_cells=2,
+    mujoco=4,
+)
+"""A report in seconds (tests, a first look): the same sections, small samples."""
+
+
+@dataclass(frozen=True)
+class LandingReport:
+    """What :func:`landing_report` computed and wrote."""
+
+    dead: list[study.DeadLanding]
+    maps: study.ContactMaps
+    bands: list[study.Band]
+    mujoco: study.MujocoComparison | None
+    mujoco_note: str
+    sizes: Sizes
+    seed: int
+    files: tuple[Path, ...]
+    timings: dict[str, float] = field(default_factory=dict)
+
+    def numbers(self) -> dict[str, Any]:
+        """Every number of the report, JSON-ready (``numbers.json``)."""
+        out: dict[str, Any] = {
+            "coinflight": __version__,
+            "seed": self.seed,
+            "sizes": self.sizes.to_dict(),
+            "dead_landings": [
+                {
+                    "ratio": d.ratio,
+                    "p_edge_dynamic": d.dynamic,
+                    "p_edge_geometric": d.geometric,
+                    "p_edge": d.simulated.p,
+                    "stderr": d.simulated.stderr,
+                    "n": d.simulated.n,
+                    "z_dynamic": d.z,
+                }
+                for d in self.dead
+            ],
+            "contact_maps": {
+                "restitution": self.maps.restitution.tolist(),
+                "friction": self.maps.friction.tolist(),
+                "p_same_side": self.maps.same.tolist(),
+                "p_edge": self.maps.edge.tolist(),
+                "unsettled": self.maps.unsettled.tolist(),
+                "n": self.maps.n,
+            },
+            "nickel_band": [
+                {
+                    "preset": b.preset,
+                    "restitution": b.restitution.tolist(),
+                    "friction": b.friction.tolist(),
+                    "p_edge_cells": b.edge.tolist(),
+                    "low": b.low[0],
+                    "high": b.high[0],
+                    "integrated": b.integrated.p,
+                    "integrated_stderr": b.integrated.stderr,
+                    "n": b.n,
+                    "sources": b.sources,
+                }
+                for b in self.bands
+            ],
+            "murray_teare": study.MURRAY_TEARE,
+            "mujoco": None if self.mujoco is None else _mujoco_numbers(self.mujoco),
+            "mujoco_note": self.mujoco_note,
+            "timings": self.timings,
+        }
+        return out
+
+
+def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
+    """MuJoCo's (tails, heads, edge) among the tosses that settled (None if none did)."""
+    settled = c.mujoco_rest[~c.mujoco_moving]
+    if not len(settled):
+        return None
+    return (np.bincount(settled, minlength=3) / len(settled)).tolist()
+
+
+def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
+    return {
+        "n": c.n,
+        "restitution": c.restitution,
+        "friction": c.friction,
+        "coinflight_first": c.fractions(c.ours_first).tolist(),
+        "mujoco_first": c.fractions(c.mujoco_first).tolist(),
+        "coinflight_rest": c.fractions(c.ours_rest).tolist(),
+        "mujoco_rest": c.fractions(c.mujoco_rest).tolist(),
+        "first_agreement": c.first_agreement,
+        "rest_agreement": c.rest_agreement,
+        "coinflight_unsettled": c.ours_unsettled,
+        "mujoco_unsettled": c.mujoco_unsettled,
+        "mujoco_rest_settled_only": _settled_fractions(c),
+        "coinflight_seconds": c.ours_seconds,
+        "mujoco_seconds": c.mujoco_seconds,
+        "speed_ratio": c.speed_ratio,
+        "settings": c.settings,
+    }
+
+
+def report_files(out_dir: str | Path, formats: tuple[str, ...] = ("png",)) -> list[Path]:
+    """The files the report writes into ``out_dir``, checked writable before any computing."""
+    out = Path(out_dir)
+    paths = [out / f"{name}.{fmt}" for name in FIGURES for fmt in formats]
+    paths += [out / name for name in REPORTS]
+    return check_all_writable(paths)
+
+
+def landing_report(
+    out_dir: str | Path,
+    *,
+    seed: int = DEFAULT_SEED,
+    sizes: Sizes | None = None,
+    step: Step | None = None,
+) -> LandingReport:
+    """Compute every section of the landing report and write it into ``out_dir``.
+
+    Parameters
+    ----------
+    out_dir : path
+        Folder for ``report.md``, ``report.html``, ``numbers.json`` and the figures (PNG).
+    seed : int
+        The one seed of every random draw (reported; each section draws from its own child).
+    sizes : Sizes, optional
+        How much to compute; default the full report (:class:`Sizes`), :data:`QUICK` for a
+        report in seconds. The MuJoCo section is skipped, and says so, when MuJoCo is not
+        installed or ``sizes.mujoco`` is 0.
+    step : callable, optional
+        Called with a short description after each section (a progress bar).
+    """
+    from coinflight.plotting.edge import plot_edge
+    from coinflight.plotting.landing import plot_contact_maps, plot_mujoco, plot_nickel_band
+    from coinflight.plotting.style import save_figure
+    from coinflight.studies import mujoco_compare
+
+    streams.check_seed(seed)
+    sizes = sizes if sizes is not None else Sizes()
+    out = Path(out_dir)
+    report_files(out)  # before minutes of computing, not after
+    timings: dict[str, float] = {}
+
+    def timed(name: str, fn: Callable[[], Any]) -> Any:
+        t0 = time.perf_counter()
+        value = fn()
+        timings[name] = time.perf_counter() - t0
+        if step is not None:
+            step(name)
+        return value
+
+    dead = timed("dead landings", lambda: study.dead_landings(sizes.dead, seed))
+    maps = timed(
+        "maps over (e, μ)",
+        lambda: study.contact_maps(
+            sizes.map_tosses,
+            seed,
+            np.linspace(0.0, 0.9, sizes.map_restitution),
+            np.linspace(0.0, 1.0, sizes.map_friction),
+        ),
+    )
+    bands = timed(
+        "nickel band", lambda: study.nickel_band(sizes.band_tosses, seed, sizes.band_cells)
+    )
+    mujoco: study.MujocoComparison | None = None
+    if sizes.mujoco <= 0:
+        note = "MuJoCo comparison not asked for (size 0)."
+    elif not mujoco_compare.available():
+        note = (
+            "MuJoCo is not installed (pip install 'coinflight[mujoco]'): the comparison was "
+            "skipped."
+        )
+    else:
+        mujoco = timed("MuJoCo", lambda: study.mujoco_comparison(sizes.mujoco, seed))
+        note = ""
+    files: list[Path] = []
+    report = LandingReport(dead, maps, bands, mujoco, note, sizes, seed, (), timings)
+    with staged_folder(out) as stage:
+        figures = {
+            "dead_landings": plot_edge([(d.ratio, d.simulated) for d in dead]),
+            "contact_maps": plot_contact_maps(maps),
+            "nickel_band": plot_nickel_band(bands),
+        }
+        if mujoco is not None:
+            figures["mujoco"] = plot_mujoco(mujoco)
+        for name, fig in figures.items():
+            files += save_figure(fig, stage / f"{name}.png")
+        doc = build_document(report)
+        for name, text in zip(
+            REPORTS,
+            (doc.to_markdown(), doc.to_html(), json.dumps(report.numbers(), indent=1) + "\n"),
+            strict=True,
+        ):
+            files.append(write_text(stage / name, text))
+        files = [out / f.relative_to(stage) for f in files]
+    return LandingReport(dead, maps, bands, mujoco, note, sizes, seed, tuple(files), timings)
+
+
+def _pm(p: float, se: float, digits: int = 4) -> str:
+    return f"{p:.{digits}f} ± {se:.{digits}f}"
+
+
+def _one_in(p: float) -> str:
+    return f"1 in {1 / p:,.0f}" if p > 0 else "none seen"
+
+
+def build_document(r: LandingReport) -> Document:
+    """The report's text, tables and figures, from the computed numbers."""
+    doc = Document("Table landings validated: dead landings, (e, μ) maps, the nickel, MuJoCo")
+    doc.add(
+        Paragraph(
+            f"coinflight {__version__}, seed {r.seed} (every random draw; each section from its "
+            f"own child stream). Sizes: {json.dumps(r.sizes.to_dict())}. Every number below is "
+            "computed by the library when the report is made (coinflight.studies.landing); "
+            "none is written into the report's code."
+        )
+    )
+    doc.add(*_dead_section(r.dead))
+    doc.add(*_maps_section(r.maps))
+    doc.add(*_band_section(r.bands))
+    doc.add(*_mujoco_section(r.mujoco, r.mujoco_note))
+    doc.add(
+        Heading("Timings"),
+        Table(("section", "seconds"), tuple((k, f"{v:.1f}") for k, v in r.timings.items())),
+    )
+    return doc
+
+
+def _dead_section(dead: list[study.DeadLanding]) -> tuple[Block, ...]:
+    from coinflight.studies.edge import SIM_DROP, SIM_FRICTION, SIM_LAUNCH_SPEED, SIM_SPIN
+
+    n = dead[0].simulated.n
+    rows = tuple(
+        (
+            f"{d.ratio:g}",
+            f"{d.dynamic:.4f}",
+            f"{d.geometric:.4f}",
+            _pm(d.simulated.p, d.simulated.stderr),
+            f"{d.z:+.2f}",
+            "yes" if abs(d.z) <= 3 else "NO",
+        )
+        for d in dead
+    )
+    outside = [d for d in dead if abs(d.z) > 3]
+    verdict = (
+        "Every ratio lies within 3 standard errors of the dynamic model."
+        if not outside
+        else "Outside 3 standard errors of the dynamic model at h/d = "
+        + ", ".join(f"{d.ratio:g} ({d.z:+.1f} s.e.)" for d in outside)
+        + ": the landing is not yet the model's dead landing there."
+    )
+    return (
+        Heading("Dead landings against Yong & Mahadevan"),
+        Paragraph(
+            f"{n:,} tosses per ratio h/d, spinning about a diameter at ωx ~ U{SIM_SPIN} rad/s, "
+            f"v0 ~ U{SIM_LAUNCH_SPEED} m/s, landing on a table {SIM_DROP:g} m below with "
+            f"restitution 0 and friction {SIM_FRICTION:g} (coinflight.studies.edge.simulate_edge)"
+            ": the setting of Yong & Mahadevan's dynamic model (2011, Am. J. Phys. 79:1195), "
+            "P(edge) = 2 arctan(h/d)/π. z is the distance in the model's binomial standard "
+            f"errors at n = {n:,}. {verdict}"
+        ),
+        Table(
+            ("h/d", "dynamic model", "geometric model", "simulated ± s.e.", "z", "within 3 s.e."),
+            rows,
+        ),
+        Image("dead_landings.png", "Dead landings: simulated P(edge) against both models."),
+    )
+
+
+def _maps_section(m: study.ContactMaps) -> tuple[Block, ...]:
+    i, j = np.unravel_index(np.argmin(m.same), m.same.shape)
+    k, l_ = np.unravel_index(np.argmax(m.same), m.same.shape)
+    a, b = np.unravel_index(np.argmax(m.edge), m.edge.shape)
+    se = float(m.stderr(np.full(1, 0.5))[0])
+    unsettled = int(m.unsettled.sum())
+    return (
+        Heading("P(same side at rest) and P(edge) over restitution and friction"),
+        Paragraph(
+            f"The US nickel tossed heads up with ωx ~ U{study.SPIN} rad/s, ωz ~ "
+            f"U{study.AXIAL_SPIN} rad/s (it precesses), v0 ~ U{study.LAUNCH_SPEED} m/s, landing "
+            f"on a table {study.DROP_HEIGHT:g} m below: {m.n:,} tosses per cell, the same tosses "
+            f"in every cell (seed {m.seed}), so that the maps show what e and μ do, not noise. "
+            f"P(same side at rest) ranges from {m.same[i, j]:.3f} (e = "
+            f"{m.restitution[j]:g}, μ = {m.friction[i]:g}) to {m.same[k, l_]:.3f} (e = "
+            f"{m.restitution[l_]:g}, μ = {m.friction[k]:g}), each ± {se:.3f} (s.e.); P(edge) "
+            f"reaches {m.edge[a, b]:.4f} at e = {m.restitution[b]:g}, μ = {m.friction[a]:g}. "
+            "Neither restitution nor friction of a coin on a table is measured, so a same-side "
+            "bias of a table landing is this whole range, not one cell. "
+            f"{unsettled:,} of the {m.n * m.same.size:,} landings had not settled when the "
+            "simulation stopped (counted by the face they showed)."
+        ),
+        Image("contact_maps.png", "P(same side at rest) and P(edge) over e and μ."),
+    )
+
+
+def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
+    rows = []
+    for b in bands:
+        (lo, lo_se), (hi, hi_se) = b.low, b.high
+        p = b.integrated
+        rows.append(
+            (
+                b.preset,
+                f"{b.restitution[0]:g}–{b.restitution[-1]:g}",
+                f"{b.friction[0]:g}–{b.friction[-1]:g}",
+                f"{lo:.2e} ± {lo_se:.1e} – {hi:.2e} ± {hi_se:.1e}",
+                f"{_one_in(hi)} – {_one_in(lo)}",
+                f"{p.p:.2e} ± {p.stderr:.1e} ({_one_in(p.p)})",
+                "yes" if lo - 2 * lo_se <= study.MURRAY_TEARE <= hi + 2 * hi_se else "no",
+            )
+        )
+    sources = [f"{b.preset}, {k}: {s}" for b in bands for k, s in b.sources.items()]
+    n = bands[0].n
+    return (
+        Heading("The US nickel's P(edge): a band over the literature's ranges"),
+        Paragraph(
+            f"The nickel tossed as for the maps, {n:,} tosses per cell of a "
+            f"{len(bands[0].restitution)} × {len(bands[0].friction)} grid over each surface "
+            "preset's ranges of e and μ (the same tosses in every cell), and "
+            f"{n:,} tosses with e and μ drawn toss by toss from the preset (integrated). The "
+            "band runs from the lowest to the highest cell. Murray & Teare (1993) extrapolated "
+            f"1 in {1 / study.MURRAY_TEARE:,.0f} from their own model; it is a reference, not a "
+            "target: no parameter here was tuned to it."
+        ),
+        Table(
+            (
+                "surface preset",
+                "e",
+                "μ",
+                "band of P(edge) (± s.e.)",
+                "as 1 in N",
+                "integrated (± s.e.)",
+                "1 in 6000 inside (±2 s.e.)",
+            ),
+            tuple(rows),
+        ),
+        Paragraph("Sources of the ranges (coinflight.studies.presets):"),
+        Bullets(tuple(sources)),
+        Image("nickel_band.png", "The US nickel's P(edge) over each preset's ranges."),
+    )
+
+
+def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block, ...]:
+    head = Heading("The same tosses in MuJoCo")
+    if c is None:
+        return (head, Paragraph(note))
+    s = c.settings
+    names = ("tails", "heads", "edge")
+
+    def row(label: str, faces: np.ndarray) -> tuple[str, ...]:
+        p = np.bincount(faces, minlength=3) / max(len(faces), 1)
+        return (label, *(_pm(float(x), math.sqrt(x * (1 - x) / max(len(faces), 1))) for x in p))
+
+    moving_edges = int(np.count_nonzero(c.mujoco_moving & (c.mujoco_rest == 2)))
+    all_edges = int(np.count_nonzero(c.mujoco_rest == 2))
+
+    ours_rate = c.n / c.ours_seconds
+    theirs_rate = c.n / c.mujoco_seconds
+    return (
+        head,
+        Paragraph(
+            f"{c.n:,} identical tosses (seed {c.seed}): the US nickel with ωx ~ U{study.SPIN}, "
+            f"ωy ~ U{study.WOBBLE}, ωz = 0 rad/s, v0 ~ U{study.LAUNCH_SPEED} m/s, heads up, "
+            f"onto a table {study.DROP_HEIGHT:g} m below, e = {c.restitution:g}, μ = "
+            f"{c.friction:g}. coinflight: coinflight.outcomes.table.land. MuJoCo "
+            f"{s['mujoco']}: a free cylinder over a plane, integrator {s['integrator']}, time step "
+            f"{s['timestep']:g} s, contact solref = ({s['solref'][0]:g} s, damping ratio "
+            f"{s['solref'][1]:.3f}: calibrated so that a flat drop at the landing speed rebounds "
+            f"at {s['flat_drop_restitution']:.3f}), friction (sliding, torsional, rolling) = "
+            f"{tuple(s['friction'])}, {s['threads']} threads; a toss ends when it can no longer "
+            f"change face (at rest, or in a face's well with less energy than the corner) or "
+            f"after {s['settle_limit']:g} s past its first contact "
+            f"({c.mujoco_unsettled:,} tosses, most rolling on their edge, were cut there and "
+            "counted by the face they showed). No axial spin: MuJoCo's Euler integrator drifts "
+            "in the precession phase over a 0.8 m fall (RK4 does not, at four times the cost)."
+        ),
+        Table(
+            ("engine, moment", *names),
+            (
+                row("coinflight, first contact", c.ours_first),
+                row("MuJoCo, first contact", c.mujoco_first),
+                row("coinflight, at rest", c.ours_rest),
+                row("MuJoCo, at rest", c.mujoco_rest),
+                row(
+                    f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
+                    c.mujoco_rest[~c.mujoco_moving],
+                ),
+            ),
+            caption="Fractions of the tosses (± s.e.)",
+        ),
+        Bullets(
+            (
+                f"Same well at the first contact: {c.first_agreement:.1%} of the tosses "
+                "(geometry and free flight only; the rest are within a time step of a "
+                "boundary).",
+                f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
+                "their edge when cut; the settled-only row leaves them out.",
+                f"Same face at rest: {c.rest_agreement:.1%}. After several bounces the face at "
+                "rest depends on every detail of each impact, so two contact models agree on "
+                "single tosses little more than chance; the comparison is of the fractions.",
+                f"Speed, same tosses, same machine, one run: coinflight {ours_rate:,.0f} "
+                f"tosses/s, MuJoCo {theirs_rate:,.2f} tosses/s: a ratio of "
+                f"{c.speed_ratio:,.0f}.",
+                "Why the fractions at rest may differ: MuJoCo's contact is soft (a "
+                "spring-damper whose rebound depends on the impact speed and that lets the rim "
+                "sink fractions of a millimetre), its friction cone has torsional and rolling "
+                "resistance, and a coin rolling on its edge keeps rolling for seconds (Euler's "
+                "disk) before it falls flat; coinflight's impacts are instantaneous with one "
+                "restitution and one friction, and its contact phase (being rewritten) has no "
+                "rolling or pivoting resistance.",
+            )
+        ),
+        Image("mujoco.png", "The same tosses in coinflight and MuJoCo."),
+    )
+
+
+__all__ = ["DEFAULT_SEED", "QUICK", "LandingReport", "Sizes", "landing_report", "report_files"]

@@ -1,0 +1,398 @@
+"""Validation of the table landing: every number of the landing report, computed by the library.
+
+Four questions (issue 11), each a function returning plain values with their seeds:
+
+* :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
+  P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
+* :func:`contact_maps`: P(same side at rest) and P(edge) over a grid of restitution e and
+  friction μ, the same tosses in every cell (common random numbers: the maps show the effect
+  of e and μ, not noise);
+* :func:`nickel_band`: the US nickel's P(edge) over the literature's ranges of e and μ
+  (:data:`coinflight.studies.presets.SURFACE_PRESETS`): the lowest and highest cell of a grid
+  over each preset's box, and the probability integrated over the preset (e and μ drawn toss
+  by toss) — a band, not a point, beside Murray & Teare's extrapolated 1 in 6000;
+* :func:`mujoco_comparison`: identical tosses in coinflight and in MuJoCo
+  (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
+  of each.
+
+Nothing here is a hard-coded result: re-running after a change of the contact physics gives
+the new numbers. Every random draw comes from the seed through
+:mod:`coinflight.probability.streams` (one child per question and cell, one stream per
+parameter).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from coinflight import _validation as v
+from coinflight.model.coin import Coin
+from coinflight.model.distributions import Uniform
+from coinflight.model.ensemble import TossDistribution
+from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
+from coinflight.probability import streams
+from coinflight.probability.result import BinomialEstimate
+
+DROP_HEIGHT = 0.8
+"""The table lies this far below the launch point, m (as in the issue's measurements)."""
+COIN = "us-nickel"
+"""The coin of the maps, the band and the MuJoCo comparison (Murray & Teare's)."""
+SPIN = (150.0, 300.0)
+"""Spin about a diameter, rad/s, uniform: a vigorous toss."""
+AXIAL_SPIN = (-20.0, 20.0)
+"""Spin about the normal of the map and band tosses, rad/s, uniform: the coin precesses, so
+that a frictionless impact (which keeps L·n and L_z) can favour the starting face."""
+WOBBLE = (-30.0, 30.0)
+"""Spin about the second diameter of the MuJoCo tosses, rad/s, uniform (no axial spin there:
+MuJoCo's Euler integrator drifts in the precession phase; see :mod:`.mujoco_compare`)."""
+LAUNCH_SPEED = (1.5, 3.0)
+"""Upward launch speed, m/s, uniform."""
+MURRAY_TEARE = 1.0 / 6000.0
+"""Murray & Teare (1993, Phys. Rev. E 48:2547): a US nickel lands on edge "approximately 1 in
+6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
+
+# Children of the report's seed, one per question (streams.child(root, PART)).
+_DEAD, _MAPS, _BAND, _MUJOCO = 0, 1, 2, 3
+
+
+def map_tosses(coin: Coin | None = None) -> TossDistribution:
+    """The tosses of the maps and the band: ωx ~ U(:data:`SPIN`), ωy = 0,
+    ωz ~ U(:data:`AXIAL_SPIN`), v0 ~ U(:data:`LAUNCH_SPEED`), heads up."""
+    return TossDistribution(
+        Uniform(*SPIN),
+        0.0,
+        Uniform(*AXIAL_SPIN),
+        coin=coin if coin is not None else Coin.preset(COIN),
+        launch_speed=Uniform(*LAUNCH_SPEED),
+    )
+
+
+def mujoco_tosses(coin: Coin | None = None) -> TossDistribution:
+    """The tosses compared with MuJoCo: ωx ~ U(:data:`SPIN`), ωy ~ U(:data:`WOBBLE`),
+    ωz = 0, v0 ~ U(:data:`LAUNCH_SPEED`), heads up."""
+    return TossDistribution(
+        Uniform(*SPIN),
+        Uniform(*WOBBLE),
+        0.0,
+        coin=coin if coin is not None else Coin.preset(COIN),
+        launch_speed=Uniform(*LAUNCH_SPEED),
+    )
+
+
+def _draw(
+    dist: TossDistribution, n: int, root: np.random.SeedSequence
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """n tosses of ``dist`` from ``root``'s streams: (ω (n, 3), v0 (n,))."""
+    from coinflight.core import ballistics
+    from coinflight.outcomes.base import initial_conditions
+
+    u = np.concatenate(list(streams.unit_cube(root, n, len(dist.ranged))), axis=1)
+    omega, t = initial_conditions(dist, u)
+    return omega, np.asarray(ballistics.launch_speed(t, dist.g), dtype=float)
+
+
+# --- dead landings -------------------------------------------------------------------------------
+RATIOS = (0.1, 0.3, 0.577, 1.0)
+"""Thickness / diameter ratios of the dead-landing check (the issue's)."""
+
+
+@dataclass(frozen=True)
+class DeadLanding:
+    """Simulated P(edge) of dead landings at one ratio h/d, beside Yong & Mahadevan."""
+
+    ratio: float
+    dynamic: float
+    geometric: float
+    simulated: BinomialEstimate
+
+    @property
+    def z(self) -> float:
+        """(p̂ − P_dynamic) / s.e., the s.e. of the model's binomial at n (finite at p̂ = 0)."""
+        se = math.sqrt(self.dynamic * (1.0 - self.dynamic) / self.simulated.n)
+        return (self.simulated.p - self.dynamic) / se
+
+
+def dead_landings(
+    n: int, seed: streams.SeedLike, ratios: tuple[float, ...] = RATIOS
+) -> list[DeadLanding]:
+    """P(edge) of ``n`` dead landings per ratio (:func:`coinflight.studies.edge.edge_table`,
+    its default setting: Yong & Mahadevan's) against their dynamic and geometric models."""
+    from coinflight.studies.edge import edge_table
+
+    root = streams.seed_sequence(seed)
+    rows = edge_table(list(ratios), n, streams.child(root, _DEAD))
+    return [
+        DeadLanding(
+            r["ratio"],
+            r["p_edge_dynamic"],
+            r["p_edge_geometric"],
+            BinomialEstimate(
+                r["simulated"]["successes"], r["simulated"]["n"], streams.reported_seed(root)
+            ),
+        )
+        for r in rows
+    ]
+
+
+# --- maps over (e, μ) ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ContactMaps:
+    """P(same side at rest) and P(edge) over a grid of restitution × friction.
+
+    ``same`` and ``edge`` have shape (len(friction), len(restitution)); ``n`` tosses per cell,
+    the same tosses in every cell; ``unsettled`` counts the tosses that had not settled when
+    the simulation stopped, per cell.
+    """
+
+    restitution: NDArray[np.float64]
+    friction: NDArray[np.float64]
+    same: NDArray[np.float64]
+    edge: NDArray[np.float64]
+    unsettled: NDArray[np.int64]
+    n: int
+    seed: int
+    elapsed: float
+
+    def stderr(self, p: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Binomial standard errors of cell probabilities ``p``."""
+        return np.sqrt(p * (1.0 - p) / self.n)
+
+
+def _faces(
+    coin: Coin, omega: NDArray[np.float64], v0: NDArray[np.float64], e: float, mu: float
+) -> tuple[NDArray[np.int8], NDArray[np.int8]]:
+    from coinflight.outcomes.table import land
+
+    out = land(coin, omega, v0, 1.0, 9.81, Surface("table", DROP_HEIGHT, e, mu))
+    return out.face, out.status
+
+
+def contact_maps(
+    n: int,
+    seed: streams.SeedLike,
+    restitution: NDArray[np.float64] | None = None,
+    friction: NDArray[np.float64] | None = None,
+) -> ContactMaps:
+    """The maps over e ∈ [0, 0.9] × μ ∈ [0, 1] (default 10 × 11 cells), ``n`` tosses of
+    :func:`map_tosses` per cell, landing on a table :data:`DROP_HEIGHT` below launch."""
+    from coinflight.core.outcome import EDGE, HEADS
+    from coinflight.outcomes.table import STATUS_NAMES
+
+    e = np.linspace(0.0, 0.9, 10) if restitution is None else np.asarray(restitution, float)
+    mu = np.linspace(0.0, 1.0, 11) if friction is None else np.asarray(friction, float)
+    n = v.count("tosses per cell", n, 1, 10**7)
+    _bound(f"maps of {len(mu)} × {len(e)} cells × {n} tosses", len(e) * len(mu) * n)
+    t0 = time.perf_counter()
+    root = streams.seed_sequence(seed)
+    dist = map_tosses()
+    omega, v0 = _draw(dist, n, streams.child(root, _MAPS))
+    same = np.empty((len(mu), len(e)))
+    edge = np.empty_like(same)
+    unsettled = np.empty(same.shape, dtype=np.int64)
+    for i, m in enumerate(mu):
+        for j, r in enumerate(e):
+            face, status = _faces(dist.coin, omega, v0, float(r), float(m))
+            same[i, j] = np.count_nonzero(face == HEADS) / n  # started heads up
+            edge[i, j] = np.count_nonzero(face == EDGE) / n
+            unsettled[i, j] = np.count_nonzero(status == STATUS_NAMES.index("unsettled"))
+    return ContactMaps(
+        e, mu, same, edge, unsettled, n, streams.reported_seed(root), time.perf_counter() - t0
+    )
+
+
+def _bound(what: str, tosses: int) -> None:
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
+
+    v.work_bound(
+        what,
+        tosses,
+        BOUNCING_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+        "tosses",
+        "use fewer cells or tosses (--quick)",
+        BOUNCING_TOSSES_PER_SECOND,
+    )
+
+
+# --- the nickel's P(edge) band ----------------------------------------------------------------
+@dataclass(frozen=True)
+class Band:
+    """The nickel's P(edge) over one surface preset's ranges of e and μ.
+
+    Attributes
+    ----------
+    preset : str
+    restitution, friction : ndarray
+        The grid over the preset's box (its ends and interior points).
+    edge : ndarray, shape (len(friction), len(restitution))
+        P(edge) per cell, the same ``n`` tosses in every cell.
+    integrated : BinomialEstimate
+        Edges of ``n`` tosses with e and μ drawn toss by toss from the preset
+        (:meth:`~coinflight.model.ensemble.TossDistribution.with_contact`, Monte Carlo).
+    """
+
+    preset: str
+    restitution: NDArray[np.float64]
+    friction: NDArray[np.float64]
+    edge: NDArray[np.float64]
+    n: int
+    integrated: BinomialEstimate
+    sources: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def low(self) -> tuple[float, float]:
+        """(P, s.e.) of the lowest cell."""
+        p = float(self.edge.min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    @property
+    def high(self) -> tuple[float, float]:
+        """(P, s.e.) of the highest cell."""
+        p = float(self.edge.max())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+
+def nickel_band(n: int, seed: streams.SeedLike, cells: int = 3) -> list[Band]:
+    """P(edge) of the US nickel over each surface preset's box (``cells`` × ``cells`` grid,
+    ``n`` tosses of :func:`map_tosses` per cell) and integrated over it (``n`` tosses)."""
+    from coinflight.core.outcome import EDGE
+    from coinflight.outcomes.table import TableLanding
+    from coinflight.probability import monte_carlo
+    from coinflight.studies.presets import SURFACE_PRESETS
+
+    n = v.count("tosses per cell", n, 1, 10**8)
+    cells = v.count("cells per parameter", cells, 2, 50)
+    _bound(
+        f"the nickel band: {len(SURFACE_PRESETS)} presets × ({cells}² cells + 1) × {n} tosses",
+        len(SURFACE_PRESETS) * (cells * cells + 1) * n,
+    )
+    root = streams.seed_sequence(seed)
+    dist = map_tosses()
+    omega, v0 = _draw(dist, n, streams.child(root, _BAND, 0))
+    out = []
+    for k, preset in enumerate(SURFACE_PRESETS.values()):
+        e = np.linspace(*preset.restitution.bounds, cells)
+        mu = np.linspace(*preset.friction.bounds, cells)
+        edge = np.empty((cells, cells))
+        for i, m in enumerate(mu):
+            for j, r in enumerate(e):
+                face, _ = _faces(dist.coin, omega, v0, float(r), float(m))
+                edge[i, j] = np.count_nonzero(face == EDGE) / n
+        spread = dist.with_contact(**preset.contact)
+        model = TableLanding(Surface("table", drop_height=DROP_HEIGHT))
+        result = monte_carlo.estimate(spread, n, streams.child(root, _BAND, 1 + k), model=model)
+        assert result.counts is not None  # Monte Carlo counts its tosses
+        integrated = BinomialEstimate(int(result.counts[2]), n, streams.reported_seed(root))
+        out.append(Band(preset.name, e, mu, edge, n, integrated, dict(preset.sources)))
+    return out
+
+
+# --- MuJoCo --------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class MujocoComparison:
+    """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`."""
+
+    n: int
+    seed: int
+    restitution: float
+    friction: float
+    ours_first: NDArray[np.int8]
+    ours_rest: NDArray[np.int8]
+    ours_unsettled: int
+    ours_seconds: float
+    mujoco_first: NDArray[np.int8]
+    mujoco_rest: NDArray[np.int8]
+    mujoco_moving: NDArray[np.bool_]
+    mujoco_seconds: float
+    settings: dict[str, Any]
+
+    @property
+    def first_agreement(self) -> float:
+        """Fraction of tosses in the same well at the first contact."""
+        return float(np.mean(self.ours_first == self.mujoco_first))
+
+    @property
+    def rest_agreement(self) -> float:
+        """Fraction of tosses with the same face at rest."""
+        return float(np.mean(self.ours_rest == self.mujoco_rest))
+
+    @property
+    def mujoco_unsettled(self) -> int:
+        """MuJoCo tosses cut at the settle limit (most rolling on their edge)."""
+        return int(np.count_nonzero(self.mujoco_moving))
+
+    @property
+    def speed_ratio(self) -> float:
+        """coinflight's tosses a second over MuJoCo's (same tosses, same machine, one run)."""
+        return self.mujoco_seconds / self.ours_seconds
+
+    def fractions(self, faces: NDArray[np.int8]) -> NDArray[np.float64]:
+        """(tails, heads, edge) fractions of face codes."""
+        return np.bincount(faces, minlength=3) / self.n
+
+
+def mujoco_comparison(
+    n: int,
+    seed: streams.SeedLike,
+    restitution: float = DEFAULT_RESTITUTION,
+    friction: float = DEFAULT_FRICTION,
+    threads: int | None = None,
+) -> MujocoComparison:
+    """``n`` tosses of :func:`mujoco_tosses` on a table :data:`DROP_HEIGHT` below launch, in
+    coinflight (:func:`coinflight.outcomes.table.land`) and in MuJoCo
+    (:func:`coinflight.studies.mujoco_compare.run`); ImportError without MuJoCo."""
+    from coinflight.core.outcome import Status
+    from coinflight.outcomes.table import land
+    from coinflight.studies import mujoco_compare
+
+    n = v.count("MuJoCo tosses", n, 1, 10**6)
+    root = streams.seed_sequence(seed)
+    dist = mujoco_tosses()
+    omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
+    surface = Surface("table", DROP_HEIGHT, restitution, friction)
+    land(dist.coin, omega[:2], v0[:2], 1.0, dist.g, surface)  # compile before timing
+    t0 = time.perf_counter()
+    ours = land(dist.coin, omega, v0, 1.0, dist.g, surface)
+    ours_seconds = time.perf_counter() - t0
+    first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
+    theirs = mujoco_compare.run(
+        dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads
+    )
+    return MujocoComparison(
+        n,
+        streams.reported_seed(root),
+        restitution,
+        friction,
+        first,
+        ours.face,
+        int(np.count_nonzero(ours.status == Status.UNSETTLED)),
+        ours_seconds,
+        theirs.first,
+        theirs.rest,
+        theirs.moving,
+        theirs.elapsed,
+        theirs.settings(friction),
+    )
+
+
+__all__ = [
+    "COIN",
+    "DROP_HEIGHT",
+    "MURRAY_TEARE",
+    "RATIOS",
+    "Band",
+    "ContactMaps",
+    "DeadLanding",
+    "MujocoComparison",
+    "contact_maps",
+    "dead_landings",
+    "map_tosses",
+    "mujoco_comparison",
+    "mujoco_tosses",
+    "nickel_band",
+]

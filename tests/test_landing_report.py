@@ -1,0 +1,180 @@
+"""The landing report (issue 11): its files appear whole, its numbers are the library's, its
+figures are drawn, and MuJoCo's part runs or is skipped cleanly."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from _images import assert_nontrivial
+from coinflight.cli import app
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import TableLanding, land
+from coinflight.probability import monte_carlo, streams
+from coinflight.report import landing as report
+from coinflight.studies import landing as study
+from coinflight.studies import mujoco_compare
+from coinflight.studies.edge import edge_table
+
+SEED = 11
+TINY = report.Sizes(
+    dead=300,
+    map_tosses=200,
+    map_restitution=2,
+    map_friction=2,
+    band_tosses=500,
+    band_cells=2,
+    mujoco=3,
+)
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    out = tmp_path_factory.mktemp("landing") / "report"
+    return out, report.landing_report(out, seed=SEED, sizes=TINY)
+
+
+def test_every_file_is_written_and_the_figures_are_drawn(written):
+    out, r = written
+    names = {p.name for p in out.iterdir()}
+    figures = {"dead_landings.png", "contact_maps.png", "nickel_band.png"}
+    if mujoco_compare.available():
+        figures.add("mujoco.png")
+    assert names == figures | set(report.REPORTS)
+    assert {p.name for p in r.files} == names
+    for name in figures:
+        assert_nontrivial(out / name)
+    md = (out / "report.md").read_text()
+    for name in figures:
+        assert f"]({name})" in md  # every figure is shown in the report
+    assert "<table>" in (out / "report.html").read_text()
+
+
+def test_the_numbers_are_the_librarys(written):
+    out, _ = written
+    numbers = json.loads((out / "numbers.json").read_text())
+    assert numbers["seed"] == SEED and numbers["sizes"] == TINY.to_dict()
+    # Dead landings: edge_table with the report's child stream (part 0) of the seed.
+    rows = edge_table(list(study.RATIOS), TINY.dead, streams.child(streams.seed_sequence(SEED), 0))
+    for row, got in zip(rows, numbers["dead_landings"], strict=True):
+        assert got["p_edge"] == row["simulated"]["p_edge"]
+        assert got["p_edge_dynamic"] == row["p_edge_dynamic"]
+        se = math.sqrt(got["p_edge_dynamic"] * (1 - got["p_edge_dynamic"]) / TINY.dead)
+        assert got["z_dynamic"] == pytest.approx((got["p_edge"] - got["p_edge_dynamic"]) / se)
+    # A map cell is the Monte Carlo estimate of the same tosses (part 1) on that surface.
+    maps = numbers["contact_maps"]
+    e, mu = maps["restitution"][1], maps["friction"][0]
+    model = TableLanding(
+        Surface("table", drop_height=study.DROP_HEIGHT, restitution=e, friction=mu)
+    )
+    child = streams.child(streams.seed_sequence(SEED), 1)
+    mc = monte_carlo.estimate(study.map_tosses(), TINY.map_tosses, child, model=model)
+    assert maps["p_same_side"][0][1] == mc.p_same_side
+    assert maps["p_edge"][0][1] == mc.p_edge
+    # The integrated band is the Monte Carlo estimate over the preset's distributions.
+    from coinflight.studies.presets import SURFACE_PRESETS
+
+    for k, (band, preset) in enumerate(
+        zip(numbers["nickel_band"], SURFACE_PRESETS.values(), strict=True)
+    ):
+        assert band["preset"] == preset.name
+        spread = study.map_tosses().with_contact(**preset.contact)
+        child = streams.child(streams.seed_sequence(SEED), 2, 1 + k)
+        table = TableLanding(Surface("table", drop_height=study.DROP_HEIGHT))
+        mc = monte_carlo.estimate(spread, TINY.band_tosses, child, model=table)
+        assert band["integrated"] == mc.p_edge
+        cells = np.array(band["p_edge_cells"])
+        assert band["low"] == cells.min() and band["high"] == cells.max()
+    # The text quotes the computed numbers, not others.
+    md = (out / "report.md").read_text()
+    first = numbers["dead_landings"][0]
+    assert f"{first['p_edge']:.4f} ± {first['stderr']:.4f}" in md
+
+
+def test_the_report_is_whole_or_nothing(tmp_path, monkeypatch):
+    from coinflight.plotting import style
+
+    out = tmp_path / "report"
+    saved = []
+
+    def first_then_fail(fig, path, *args, **kwargs):
+        if saved:
+            raise RuntimeError("interrupted")
+        saved.append(path)
+        path.with_suffix(".png").write_bytes(b"half a report")
+        return [path.with_suffix(".png")]
+
+    monkeypatch.setattr(style, "save_figure", first_then_fail)
+    sizes = report.Sizes(
+        dead=50,
+        map_tosses=20,
+        map_restitution=2,
+        map_friction=2,
+        band_tosses=50,
+        band_cells=2,
+        mujoco=0,
+    )
+    with pytest.raises(RuntimeError, match="interrupted"):
+        report.landing_report(out, seed=1, sizes=sizes)
+    assert saved  # one figure was written (into the stage) before the failure
+    assert not out.exists() or not any(out.iterdir())  # ... and none of it appeared
+
+
+def test_cli_landing_report_quick_skips_mujoco_cleanly_when_absent(tmp_path, monkeypatch):
+    monkeypatch.setattr(report, "QUICK", TINY)
+    monkeypatch.setattr(mujoco_compare, "available", lambda: False)
+    out = tmp_path / "cli"
+    result = CliRunner().invoke(
+        app, ["landing-report", "--out", str(out), "--quick", "--seed", str(SEED)]
+    )
+    assert result.exit_code == 0, result.output
+    assert "dead landings h/d = 0.577" in result.stdout
+    assert "MuJoCo is not installed (pip install 'coinflight[mujoco]')" in result.stdout
+    assert not (out / "mujoco.png").exists()
+    assert "MuJoCo is not installed" in (out / "report.md").read_text()
+    numbers = json.loads((out / "numbers.json").read_text())
+    assert numbers["mujoco"] is None
+    # The same seed and sizes as the library's report: the same numbers.
+    assert numbers["dead_landings"][0]["p_edge"] == pytest.approx(
+        study.dead_landings(TINY.dead, SEED)[0].simulated.p, abs=0
+    )
+
+
+def test_cli_landing_report_refuses_a_bad_folder_before_computing():
+    from _cli import one_line_error
+
+    assert "the path is empty; give a folder" in one_line_error("landing-report", "--out", "")
+    # /proc refuses new files even to root: refused by the check before any computing.
+    assert "cannot write /proc/" in one_line_error("landing-report", "--out", "/proc/x/y")
+
+
+# --- MuJoCo ---------------------------------------------------------------------------------------
+mujoco = pytest.importorskip("mujoco")
+
+
+def test_mujoco_contact_is_calibrated_to_the_restitution():
+    coin = study.mujoco_tosses().coin
+    zeta = mujoco_compare.calibrated_damping(coin, 0.5, 4.5)
+    assert mujoco_compare.flat_drop_restitution(coin, 4.5, zeta) == pytest.approx(0.5, abs=2e-3)
+    # A dead landing is beyond MuJoCo's soft contact: refused, not silently approximated.
+    with pytest.raises(ValueError, match="cannot rebound at restitution 0"):
+        mujoco_compare.calibrated_damping(coin, 0.0, 4.5)
+
+
+def test_mujoco_agrees_with_coinflight_at_the_first_contact():
+    # Geometry and free flight only: the same well at the first contact (planar tosses, no
+    # precession for MuJoCo's Euler integrator to drift in).
+    c = study.mujoco_comparison(6, seed=3)
+    assert c.first_agreement == 1.0
+    assert c.n == 6 and c.settings["flat_drop_restitution"] == pytest.approx(0.5, abs=2e-3)
+    surface = Surface("table", study.DROP_HEIGHT, c.restitution, c.friction)
+    root = streams.child(streams.seed_sequence(3), 3)
+    omega, v0 = study._draw(study.mujoco_tosses(), 6, root)
+    np.testing.assert_array_equal(
+        land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.ours_rest
+    )
+    assert c.speed_ratio > 1.0
