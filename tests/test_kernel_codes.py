@@ -24,7 +24,8 @@ from coinflight.core.outcome import (
 
 def test_codes_keep_their_integers_and_names():
     # The integers stored in every face/status array since the first release (core/bounce.py,
-    # core/impact.py, outcomes/table.py before issue 9).
+    # core/impact.py, outcomes/table.py before issue 9); code 4, "settled rocking" until the
+    # 3-D contact phase replaced the planar rocking (issue 11), is "settled in contact".
     assert [int(f) for f in Face] == [0, 1, 2]
     assert (TAILS, HEADS, EDGE) == (0, 1, 2)
     assert FACE_NAMES == ("tails", "heads", "edge")
@@ -34,9 +35,9 @@ def test_codes_keep_their_integers_and_names():
         "SETTLED_DEAD",
         "BOUNCE_LIMIT",
         "UNSETTLED",
-        "SETTLED_ROCKING",
+        "SETTLED_CONTACT",
     ]
-    released = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
+    released = ("settled", "landed dead", "bounce limit", "unsettled", "settled in contact")
     assert released == STATUS_NAMES
     assert FACE_NAMES[Face.EDGE] == Face.EDGE.label == "edge"
     assert STATUS_NAMES.index("unsettled") == Status.UNSETTLED

@@ -24,9 +24,15 @@ height of its centre of mass when balanced on the corner of rim and face (Vulovi
 1986; Yong & Mahadevan 2011; REFERENCES §4-5). Its outcome is then the well it is in
 (:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
-one rim point while it tips), the end is the planar rocking of :func:`rock`. With e = 0 the
-surface absorbs the coin at its first contact and the well it touches in is the outcome, as
-in Yong & Mahadevan's model of a landing without bounce.
+one rim point while it tips, rolls or spins), the coin is carried on in persistent contact, in
+3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting and rocking on
+its rim, two-point and face contact, with Coulomb friction and rolling and pivoting resistance)
+until it cannot leave its well (status SETTLED_CONTACT). With e = 0 the surface absorbs the
+coin at its first contact and the well it touches in is the outcome, as in Yong & Mahadevan's
+model of a landing without bounce.
+
+:func:`rock`, the planar rocking block that ended the landings before the contact phase, is
+kept only for :mod:`coinflight.core.drag` until its landings call the contact phase too.
 """
 
 from __future__ import annotations
@@ -39,6 +45,7 @@ from numba import njit, prange
 from numpy.typing import NDArray
 
 from coinflight.core.contact import Contact
+from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
@@ -95,6 +102,9 @@ def tumbling_energy(v, angular_momentum, n, mass, i1, g, z):
 @njit(cache=True)
 def rock(n, omega, radius, hh, mass, i1, g):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
+
+    Superseded by :func:`coinflight.core.contact_phase.settle` in :func:`land`; used only by
+    :mod:`coinflight.core.drag` until it calls the contact phase.
 
     Parameters
     ----------
@@ -303,8 +313,8 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if rebound < rest_speed:
             if restitution == 0.0:
                 return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_DEAD
-            face = rock(n, omega, radius, hh, mass, i1, g)
-            return face, bounces, first, t, Status.SETTLED_ROCKING
+            face, status, duration = settle(z, v, n, lm, c)
+            return face, bounces, first, t + duration, status
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
         # the downward acceleration of any point of the coin; start looking at its peak.

@@ -52,7 +52,7 @@ BOUNCING_TOSSES_PER_SECOND = 1.6e5
 """Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet)."""
 
 
-STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
+STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled in contact")
 """Why a landing ended, by the status codes of :mod:`coinflight.core.bounce`."""
 
 
@@ -149,6 +149,9 @@ def land(
         drop_height=surface.drop_height,
         g=g,
         rest_speed=bounce.REST_SPEED,
+        rolling_resistance=surface.rolling_resistance,
+        pivoting_resistance=surface.pivoting_resistance,
+        contact_time=surface.contact_time,
     )
     if drag is not None and not drag.is_zero:
         from coinflight.core import drag as drag_kernels
