@@ -3,7 +3,7 @@
     python benchmarks/bench_bounce.py              # coinflight speed + MuJoCo on 200 tosses
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also P(edge) of a US nickel vs (e, μ)
-    python benchmarks/bench_bounce.py --contact N  # the contact phase: share, same side, edges
+    python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -78,14 +78,14 @@ def bench_coinflight(n: int, repeats: int) -> None:
     first = median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats)
     out = land(COIN, omega, v0, 1.0, G, SURFACE)
     print(
-        f"coinflight bouncing and contact phase, {n:,} tosses, {numba.get_num_threads()} "
+        f"coinflight bouncing (default rocking ending), {n:,} tosses, {numba.get_num_threads()} "
         f"threads: {rate:,.0f} tosses/s carried to rest (median of {repeats}); first contact "
         f"only: {first:,.0f} tosses/s"
     )
-    contact = np.mean(out.status == Status.SETTLED_CONTACT)
+    rocking = np.mean(out.status == Status.SETTLED_ROCKING)
     print(
         f"  mean bounces {out.bounces.mean():.2f}, max {out.bounces.max()}; decided by the "
-        f"contact phase {contact:.1%}; unsettled {np.mean(out.status == Status.UNSETTLED):.2%}; "
+        f"rocking hand-off {rocking:.1%}; unsettled {np.mean(out.status == Status.UNSETTLED):.2%}; "
         f"{face_fractions(out.face)}"
     )
 
@@ -188,7 +188,8 @@ def nickel_edge(n: int) -> None:
 
 
 def contact_phase(n: int) -> None:
-    """What the contact phase decides, over the parameters nobody has measured (issue 11)."""
+    """What the experimental contact phase (``ending="contact"``) decides, over the parameters
+    nobody has measured (issue 11)."""
     rng = np.random.default_rng(11)
     # The axial-spin toss: ωx 150-300, ωz = ±20 rad/s, 0.8 m drop, started heads up.
     omega = np.column_stack(
@@ -198,7 +199,7 @@ def contact_phase(n: int) -> None:
     print(f"axial-spin tosses (ωx 150-300, ωz ±20 rad/s, {DROP} m drop), {n:,} per setting:")
     for mu in (0.0, 0.1, 0.3, 1.0):
         for resist in (1e-5, 1e-4, 1e-3):
-            surface = Surface("table", DROP, 0.5, mu, resist, resist)
+            surface = Surface("table", DROP, 0.5, mu, resist, resist, ending="contact")
             t0 = time.perf_counter()
             out = land(COIN, omega, v0, 1.0, G, surface)
             rate = n / (time.perf_counter() - t0)
@@ -213,7 +214,7 @@ def contact_phase(n: int) -> None:
     omega = np.column_stack([rng.uniform(150.0, 300.0, n), np.zeros(n), np.zeros(n)])
     print(f"planar tosses (ωx 150-300 only), {n:,} per setting: P(heads) − P(tails)")
     for e, mu in ((0.2, 0.1), (0.5, 0.3), (0.8, 1.0)):
-        out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu))
+        out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu, ending="contact"))
         h, t = np.mean(out.face == HEADS), np.mean(out.face == TAILS)
         se = math.sqrt((h + t - (h - t) ** 2) / n)
         print(f"  e = {e}, μ = {mu}: {h - t:+.4f} ± {se:.4f} (s.e.)")

@@ -9,7 +9,7 @@ import pytest
 
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
-from coinflight.core.contact import Contact
+from coinflight.core.contact import ROCKING_ENDING, Contact
 from coinflight.core.impact import angular_velocity, contact_point, lowest_depth
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
@@ -281,9 +281,65 @@ def test_planar_tosses_are_fair_at_rest(e, mu):
     rng = np.random.default_rng(41)
     omega = np.column_stack([rng.uniform(150.0, 300.0, n), np.zeros(n), np.zeros(n)])
     v0 = rng.uniform(1.5, 3.0, n)
-    out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, e, mu))
+    out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, e, mu, ending="contact"))
     heads = np.mean(out.face == HEADS)
     tails = np.mean(out.face == TAILS)
     se = math.sqrt((heads + tails - (heads - tails) ** 2) / n)
     assert abs(heads - tails) < 3 * se
     assert np.all(out.status != Status.UNSETTLED)
+    assert np.any(out.status == Status.SETTLED_CONTACT)
+
+
+def test_default_ending_is_the_rocking_hand_off(monkeypatch):
+    # The contact phase is opt-in (Surface(ending="contact")): by default a landing ends as it
+    # did before it, with the planar rocking of bounce.rock. Checked against the kernel's own
+    # Python source run with ``rock`` recorded and ``settle`` forbidden: the same faces and
+    # statuses, toss for toss, and rock called for every "settled rocking" toss.
+    from coinflight.core import bounce
+
+    assert Surface("table").ending == "rocking"
+    with pytest.raises(ValueError, match="ending must be one of rocking, contact; got 'planar'"):
+        Surface("table", ending="planar")  # type: ignore[arg-type]
+    rng = np.random.default_rng(11)
+    n = 40
+    omega = np.column_stack(
+        [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    surface = Surface("table", 0.8, 0.5, 0.3)
+    out = land(NICKEL, omega, v0, 1.0, G, surface)
+    assert np.any(out.status == Status.SETTLED_ROCKING)
+    assert not np.any(out.status == Status.SETTLED_CONTACT)
+
+    rocked = []
+    planar_rocking = bounce.rock
+
+    def rock(*args):
+        face = planar_rocking(*args)
+        rocked.append(face)
+        return face
+
+    def settle(*args):
+        raise AssertionError("the default ending called the contact phase")
+
+    land_one = bounce.land_one.py_func
+    i1, i3 = NICKEL.moments
+    c = Contact.build(  # as outcomes.table.land builds it, but for the ending left at its default
+        radius=NICKEL.radius,
+        thickness=NICKEL.thickness,
+        mass=NICKEL.mass,
+        i1=float(i1),
+        i3=float(i3),
+        restitution=0.5,
+        friction=0.3,
+        drop_height=0.8,
+        g=G,
+        rest_speed=bounce.REST_SPEED,
+    )
+    assert c.ending == ROCKING_ENDING
+    monkeypatch.setitem(land_one.__globals__, "rock", rock)
+    monkeypatch.setitem(land_one.__globals__, "settle", settle)
+    for k in range(n):
+        face, bounces, _, _, status = land_one(tuple(omega[k]), 1.0, v0[k], c, bounce.MAX_IMPACTS)
+        assert (face, bounces, status) == (out.face[k], out.bounces[k], out.status[k])
+    assert len(rocked) == np.count_nonzero(out.status == Status.SETTLED_ROCKING)

@@ -13,9 +13,8 @@ band over plausible e and μ. This tutorial computes that band.
 # One toss onto a table
 # ---------------------
 # A :class:`~coinflight.outcomes.table.Landing` flies the coin exactly (torque-free precession plus
-# ballistics), finds each contact by root finding, applies Stronge's impact law and, once the
-# bounces die out, follows the coin rolling, sliding and rocking on the table in 3-D
-# (:mod:`coinflight.core.contact_phase`) until it has settled: heads, tails or edge.
+# ballistics), finds each contact by root finding, applies a Newton-Coulomb impulse and
+# stops when the coin has settled: heads, tails or edge.
 from coinflight import Coin, Landing, Surface, Toss
 
 nickel = Coin.preset("us-nickel")
@@ -49,7 +48,7 @@ restitutions = [0.2, 0.4, 0.6]
 frictions = [0.1, 0.3, 1.0]
 p_heads = np.empty((3, 3))
 p_edge = np.empty((3, 3))
-n = 2_000  # the contact phase follows coins that roll away on their edge for seconds
+n = 20_000
 for i, e in enumerate(restitutions):
     for j, mu in enumerate(frictions):
         model = TableLanding(Surface("table", drop_height=0.8, restitution=e, friction=mu))

@@ -24,15 +24,14 @@ height of its centre of mass when balanced on the corner of rim and face (Vulovi
 1986; Yong & Mahadevan 2011; REFERENCES §4-5). Its outcome is then the well it is in
 (:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
-one rim point while it tips, rolls or spins), the coin is carried on in persistent contact, in
-3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting and rocking on
-its rim, two-point and face contact, with Coulomb friction and rolling and pivoting resistance)
-until it cannot leave its well (status SETTLED_CONTACT). With e = 0 the surface absorbs the
-coin at its first contact and the well it touches in is the outcome, as in Yong & Mahadevan's
-model of a landing without bounce.
-
-:func:`rock`, the planar rocking block that ended the landings before the contact phase, is
-kept only for :mod:`coinflight.core.drag` until its landings call the contact phase too.
+one rim point while it tips), the end is chosen by the record's ``ending`` flag
+(:class:`coinflight.model.surface.Surface` ``ending``): by default the planar rocking of
+:func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
+contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
+and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
+cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not yet credible).
+With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
+outcome, as in Yong & Mahadevan's model of a landing without bounce.
 """
 
 from __future__ import annotations
@@ -44,7 +43,7 @@ import numpy as np
 from numba import njit, prange
 from numpy.typing import NDArray
 
-from coinflight.core.contact import Contact
+from coinflight.core.contact import CONTACT_ENDING, Contact
 from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (
     angular_velocity,
@@ -103,8 +102,8 @@ def tumbling_energy(v, angular_momentum, n, mass, i1, g, z):
 def rock(n, omega, radius, hh, mass, i1, g):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
 
-    Superseded by :func:`coinflight.core.contact_phase.settle` in :func:`land`; used only by
-    :mod:`coinflight.core.drag` until it calls the contact phase.
+    The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
+    alternative is :func:`coinflight.core.contact_phase.settle`.
 
     Parameters
     ----------
@@ -313,8 +312,11 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if rebound < rest_speed:
             if restitution == 0.0:
                 return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_DEAD
-            face, status, duration = settle(z, v, n, lm, c)
-            return face, bounces, first, t + duration, status
+            if c.ending == CONTACT_ENDING:
+                face, status, duration = settle(z, v, n, lm, c)
+                return face, bounces, first, t + duration, status
+            face = rock(n, omega, radius, hh, mass, i1, g)
+            return face, bounces, first, t, Status.SETTLED_ROCKING
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
         # the downward acceleration of any point of the coin; start looking at its peak.

@@ -13,6 +13,11 @@ import math
 from functools import lru_cache
 from typing import NamedTuple
 
+ROCKING_ENDING = 0.0
+"""``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
+CONTACT_ENDING = 1.0
+"""``Contact.ending`` of the experimental end of a landing: the 3-D contact phase."""
+
 
 class Contact(NamedTuple):
     """A coin, a horizontal surface and gravity, as the landing kernels read them.
@@ -54,6 +59,11 @@ class Contact(NamedTuple):
     damping_restitution : float
         The restitution ``damping_ratio`` was set for (the contact phase recomputes ζ when the
         record's ``restitution`` differs, e.g. a per-toss value).
+    ending : float
+        How a landing ends once the bounces die out: :data:`ROCKING_ENDING` (0, the planar
+        rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
+        :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
+        :func:`coinflight.core.contact_phase.settle`); a float so the record stays all floats.
     """
 
     radius: float
@@ -74,6 +84,7 @@ class Contact(NamedTuple):
     contact_time: float = 1e-3
     damping_ratio: float = -1.0
     damping_restitution: float = -1.0
+    ending: float = ROCKING_ENDING
 
     @classmethod
     def build(
@@ -92,13 +103,15 @@ class Contact(NamedTuple):
         rolling_resistance: float = 0.0,
         pivoting_resistance: float = 0.0,
         contact_time: float | None = None,
+        ending: float = ROCKING_ENDING,
     ) -> Contact:
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
         No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
         :class:`~coinflight.model.surface.Surface`) has checked every value. ``contact_time``
         defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
-        the contact model is computed here, once (numba).
+        the contact model is computed here, once (numba). ``ending`` is :data:`ROCKING_ENDING`
+        or :data:`CONTACT_ENDING` (:class:`~coinflight.model.surface.Surface` ``ending``).
         """
         from coinflight.core import contact_phase
 
@@ -126,6 +139,7 @@ class Contact(NamedTuple):
             contact_time=float(contact_time),
             damping_ratio=_damping_ratio(float(restitution)),
             damping_restitution=float(restitution),
+            ending=float(ending),
         )
 
 
@@ -136,4 +150,4 @@ def _damping_ratio(restitution: float) -> float:
     return float(contact_phase.damping_ratio(restitution))
 
 
-__all__ = ["Contact"]
+__all__ = ["CONTACT_ENDING", "ROCKING_ENDING", "Contact"]

@@ -9,6 +9,9 @@ from coinflight import _validation as v
 
 SurfaceKind = Literal["hand", "table"]
 
+ENDINGS = ("rocking", "contact")
+"""How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
+
 AIR_DENSITY = 1.2
 """Density of air at 20 °C and sea level, kg/m³ (ISO 2533 standard atmosphere: 1.204)."""
 
@@ -83,6 +86,16 @@ class Surface:
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
+        Used only with ``ending="contact"``, as are the two resistances.
+    ending : {"rocking", "contact"}
+        How a table landing ends once its bounces die out (a rebound slower than the rest
+        speed). ``"rocking"`` (default): the planar Housner rocking hand-off of
+        :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
+        the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
+        phase of :mod:`coinflight.core.contact_phase` (status "settled in contact");
+        **experimental**: slow (tens to hundreds of landings a second instead of tens of
+        thousands), and its edge rates are not yet credible (coins that roll upright on a
+        sharp-cornered rim stop upright; see :mod:`coinflight.core.contact_phase`).
 
     Examples
     --------
@@ -101,6 +114,7 @@ class Surface:
     rolling_resistance: float = DEFAULT_ROLLING_RESISTANCE
     pivoting_resistance: float = DEFAULT_PIVOTING_RESISTANCE
     contact_time: float = 1e-3
+    ending: Literal["rocking", "contact"] = "rocking"
 
     def __post_init__(self) -> None:
         v.choice("surface", self.kind, ("hand", "table"))
@@ -122,6 +136,7 @@ class Surface:
             ("contact_time", CONTACT_TIME),
         ):
             object.__setattr__(self, name, quantity.check(getattr(self, name)))
+        v.choice("ending", self.ending, ENDINGS)
 
     @property
     def bounces(self) -> bool:

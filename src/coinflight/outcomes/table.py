@@ -49,16 +49,23 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 
 
 BOUNCING_TOSSES_PER_SECOND = 1.6e5
-"""Drag-free table landings a second on the 2-core machine while busy, without the contact
-phase (dead landings, e = 0, and first contacts)."""
+"""Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet),
+with the default ending (the planar rocking hand-off)."""
 
 CONTACT_TOSSES_PER_SECOND = 300.0
-"""Drag-free table landings carried to rest a second with the 3-D contact phase (e > 0), on the
-2-core machine while busy (issue 11: coins that roll away on their edge are followed for
-seconds; 100-1,000 a second measured)."""
+"""Drag-free table landings carried to rest a second with the experimental 3-D contact phase
+(``Surface(ending="contact")``, e > 0), on the 2-core machine while busy (issue 11: coins that
+roll away on their edge are followed for seconds; 50-1,100 a second measured)."""
 
 
-STATUS_NAMES = ("settled", "landed dead", "bounce limit", "unsettled", "settled in contact")
+STATUS_NAMES = (
+    "settled",
+    "landed dead",
+    "bounce limit",
+    "unsettled",
+    "settled rocking",
+    "settled in contact",
+)
 """Why a landing ended, by the status codes of :mod:`coinflight.core.bounce`."""
 
 
@@ -142,7 +149,7 @@ def land(
     sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (omega.shape[0],))
     check_clears(coin, speed * speed / (2.0 * g), surface)
     from coinflight.core import bounce
-    from coinflight.core.contact import Contact
+    from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
 
     contact = Contact.build(  # the coin, the surface and gravity, once for every kernel
         radius=coin.radius,
@@ -158,6 +165,7 @@ def land(
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
         contact_time=surface.contact_time,
+        ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
     )
     if drag is not None and not drag.is_zero:
         from coinflight.core import drag as drag_kernels
@@ -203,7 +211,7 @@ class Landing:
     >>> surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
     >>> landing = Landing(Coin.preset("us-nickel"), Toss((240.0, 5.0, 3.0), 0.49), surface)
     >>> landing.outcome.face_name, int(landing.outcome.bounces)  # as in the README
-    ('edge', 13)
+    ('heads', 13)
     """
 
     coin: Coin
@@ -288,12 +296,16 @@ class TableLanding(OutcomeModel):
 
     @property
     def rate(self) -> float:  # type: ignore[override]
-        """Tosses a second: :data:`CONTACT_TOSSES_PER_SECOND` carried to rest,
-        :data:`BOUNCING_TOSSES_PER_SECOND` for dead landings or a bounce limit, or with air drag
-        :data:`DRAG_TOSSES_PER_SECOND`."""
+        """Tosses a second: :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag
+        :data:`DRAG_TOSSES_PER_SECOND`; with the experimental ``ending="contact"``, landings
+        carried to rest (e > 0, no bounce limit) at :data:`CONTACT_TOSSES_PER_SECOND`."""
         if self.drag is not None:
             return DRAG_TOSSES_PER_SECOND
-        if self.surface.restitution == 0.0 or self.max_bounces is not None:
+        if (
+            self.surface.ending != "contact"
+            or self.surface.restitution == 0.0
+            or self.max_bounces is not None
+        ):
             return BOUNCING_TOSSES_PER_SECOND
         return CONTACT_TOSSES_PER_SECOND
 
