@@ -13,7 +13,7 @@ from coinflight.core.contact import ROCKING_ENDING, Contact
 from coinflight.core.impact import angular_velocity, contact_point, lowest_depth
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
-from coinflight.outcomes.table import land
+from coinflight.outcomes.table import TableLanding, land
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")
@@ -298,6 +298,10 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
     from coinflight.core import bounce
 
     assert Surface("table").ending == "rocking"
+    assert "ending" not in TableLanding(Surface("table")).to_dict()
+    contact = TableLanding(Surface("table", ending="contact"))
+    assert contact.to_dict()["ending"] == "contact"
+    assert TableLanding(Surface("table")).rate > 100 * contact.rate
     with pytest.raises(ValueError, match="ending must be one of rocking, contact; got 'planar'"):
         Surface("table", ending="planar")  # type: ignore[arg-type]
     rng = np.random.default_rng(11)

@@ -374,6 +374,10 @@ class TableLanding(OutcomeModel):
         }
         if self.max_bounces is not None:
             out["max_bounces"] = self.max_bounces
+        if s.ending != "rocking":  # the experimental ending, reported; the default unchanged
+            out["ending"] = s.ending
+            out["rolling_resistance"] = s.rolling_resistance
+            out["pivoting_resistance"] = s.pivoting_resistance
         return out
 
     def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
