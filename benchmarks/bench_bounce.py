@@ -3,6 +3,7 @@
     python benchmarks/bench_bounce.py              # coinflight speed + MuJoCo on 200 tosses
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
+    python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -20,6 +21,7 @@ rest (depends on each engine's contact model).
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import platform
 import statistics
@@ -28,7 +30,7 @@ import time
 import numpy as np
 
 from coinflight import Coin
-from coinflight.core.outcome import EDGE, HEADS, TAILS
+from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import land
 
@@ -75,11 +77,14 @@ def bench_coinflight(n: int, repeats: int) -> None:
     first = median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats)
     out = land(COIN, omega, v0, 1.0, G, SURFACE)
     print(
-        f"coinflight bouncing, {n:,} tosses, {numba.get_num_threads()} threads: "
-        f"{rate:,.0f} tosses/s (median of {repeats}); first contact only: {first:,.0f} tosses/s"
+        f"coinflight bouncing (default rocking ending), {n:,} tosses, {numba.get_num_threads()} "
+        f"threads: {rate:,.0f} tosses/s carried to rest (median of {repeats}); first contact "
+        f"only: {first:,.0f} tosses/s"
     )
+    rocking = np.mean(out.status == Status.SETTLED_ROCKING)
     print(
-        f"  mean bounces {out.bounces.mean():.2f}, max {out.bounces.max()}; "
+        f"  mean bounces {out.bounces.mean():.2f}, max {out.bounces.max()}; decided by the "
+        f"rocking hand-off {rocking:.1%}; unsettled {np.mean(out.status == Status.UNSETTLED):.2%}; "
         f"{face_fractions(out.face)}"
     )
 
@@ -122,11 +127,48 @@ def nickel_edge(n: int) -> None:
         )
 
 
+def contact_phase(n: int) -> None:
+    """What the experimental contact phase (``ending="contact"``) decides, over the parameters
+    nobody has measured (issue 11)."""
+    rng = np.random.default_rng(11)
+    # The axial-spin toss: ωx 150-300, ωz = ±20 rad/s, 0.8 m drop, started heads up.
+    omega = np.column_stack(
+        [rng.uniform(150.0, 300.0, n), np.zeros(n), rng.choice([-20.0, 20.0], n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    print(f"axial-spin tosses (ωx 150-300, ωz ±20 rad/s, {DROP} m drop), {n:,} per setting:")
+    for mu in (0.0, 0.1, 0.3, 1.0):
+        for resist in (1e-5, 1e-4, 1e-3):
+            surface = Surface("table", DROP, 0.5, mu, resist, resist, ending="contact")
+            t0 = time.perf_counter()
+            out = land(COIN, omega, v0, 1.0, G, surface)
+            rate = n / (time.perf_counter() - t0)
+            same = np.mean(out.face == HEADS)
+            se = math.sqrt(same * (1 - same) / n)
+            print(
+                f"  e = 0.5, μ = {mu:.1f}, rolling = pivoting = {resist:.0e} m: P(same side) = "
+                f"{same:.3f} ± {se:.3f}, edge {np.mean(out.face == EDGE):.4f}, contact phase "
+                f"{np.mean(out.status == Status.SETTLED_CONTACT):.1%}, unsettled "
+                f"{np.mean(out.status == Status.UNSETTLED):.2%}, {rate:,.0f} tosses/s"
+            )
+    omega = np.column_stack([rng.uniform(150.0, 300.0, n), np.zeros(n), np.zeros(n)])
+    print(f"planar tosses (ωx 150-300 only), {n:,} per setting: P(heads) − P(tails)")
+    for e, mu in ((0.2, 0.1), (0.5, 0.3), (0.8, 1.0)):
+        out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu, ending="contact"))
+        h, t = np.mean(out.face == HEADS), np.mean(out.face == TAILS)
+        se = math.sqrt((h + t - (h - t) ** 2) / n)
+        print(f"  e = {e}, μ = {mu}: {h - t:+.4f} ± {se:.4f} (s.e.)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--nickel", action="store_true")
+    parser.add_argument("--contact", type=int, default=0, metavar="N")
     args = parser.parse_args()
+    if args.contact:
+        contact_phase(args.contact)
+        return
     print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs")
     bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
     bench_mujoco(16 if args.quick else 100)

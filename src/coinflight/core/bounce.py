@@ -24,9 +24,14 @@ height of its centre of mass when balanced on the corner of rim and face (Vulovi
 1986; Yong & Mahadevan 2011; REFERENCES §4-5). Its outcome is then the well it is in
 (:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
-one rim point while it tips), the end is the planar rocking of :func:`rock`. With e = 0 the
-surface absorbs the coin at its first contact and the well it touches in is the outcome, as
-in Yong & Mahadevan's model of a landing without bounce.
+one rim point while it tips), the end is chosen by the record's ``ending`` flag
+(:class:`coinflight.model.surface.Surface` ``ending``): by default the planar rocking of
+:func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
+contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
+and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
+cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not yet credible).
+With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
+outcome, as in Yong & Mahadevan's model of a landing without bounce.
 """
 
 from __future__ import annotations
@@ -38,7 +43,8 @@ import numpy as np
 from numba import njit, prange
 from numpy.typing import NDArray
 
-from coinflight.core.contact import Contact
+from coinflight.core.contact import CONTACT_ENDING, Contact
+from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
@@ -95,6 +101,9 @@ def tumbling_energy(v, angular_momentum, n, mass, i1, g, z):
 @njit(cache=True)
 def rock(n, omega, radius, hh, mass, i1, g):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
+
+    The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
+    alternative is :func:`coinflight.core.contact_phase.settle`.
 
     Parameters
     ----------
@@ -303,6 +312,9 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if rebound < rest_speed:
             if restitution == 0.0:
                 return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_DEAD
+            if c.ending == CONTACT_ENDING:
+                face, status, duration = settle(z, v, n, lm, c)
+                return face, bounces, first, t + duration, status
             face = rock(n, omega, radius, hh, mass, i1, g)
             return face, bounces, first, t, Status.SETTLED_ROCKING
         bounces += 1
@@ -342,7 +354,9 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
 @njit(cache=True)
 def with_surface(c, restitution, friction):
     """The contact record ``c`` with this toss's restitution and friction (the other fields
-    as they are): a per-toss surface for distributions of e and μ."""
+    as they are): a per-toss surface for distributions of e and μ. The damping ratio of the
+    contact phase stays that of the surface's e, with ``damping_restitution`` telling
+    :func:`coinflight.core.contact_phase.settle` to recompute it for another e."""
     return Contact(
         c.radius,
         c.half_thickness,
@@ -357,6 +371,12 @@ def with_surface(c, restitution, friction):
         c.reach,
         c.edge_sine,
         c.barrier,
+        c.rolling_resistance,
+        c.pivoting_resistance,
+        c.contact_time,
+        c.damping_ratio,
+        c.damping_restitution,
+        c.ending,
     )
 
 

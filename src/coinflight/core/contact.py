@@ -10,7 +10,13 @@ barrier) are computed there, once, for every kernel.
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 from typing import NamedTuple
+
+ROCKING_ENDING = 0.0
+"""``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
+CONTACT_ENDING = 1.0
+"""``Contact.ending`` of the experimental end of a landing: the 3-D contact phase."""
 
 
 class Contact(NamedTuple):
@@ -40,6 +46,24 @@ class Contact(NamedTuple):
         m g ρ, the potential energy of the coin balanced on its corner above the centre of
         mass at the surface, J: below it the coin can no longer change well (Vulović & Prange
         1986, the face/edge barrier; see :mod:`coinflight.core.bounce`).
+    rolling_resistance, pivoting_resistance : float
+        Lengths ℓ_r, ℓ_p ≥ 0 of the rolling and pivoting (drilling) resistance of the coin's rim
+        on the surface, m: torques ℓ F_n against the horizontal and the vertical part of the
+        angular velocity in contact (:mod:`coinflight.core.contact_phase`).
+    contact_time : float
+        t_c > 0, the duration of a flat contact of the compliant contact model, s: its
+        stiffness (:mod:`coinflight.core.contact_phase`).
+    damping_ratio : float
+        ζ of the contact model's damping, set from ``restitution`` by
+        :func:`coinflight.core.contact_phase.damping_ratio` (−1: not set).
+    damping_restitution : float
+        The restitution ``damping_ratio`` was set for (the contact phase recomputes ζ when the
+        record's ``restitution`` differs, e.g. a per-toss value).
+    ending : float
+        How a landing ends once the bounces die out: :data:`ROCKING_ENDING` (0, the planar
+        rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
+        :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
+        :func:`coinflight.core.contact_phase.settle`); a float so the record stays all floats.
     """
 
     radius: float
@@ -55,6 +79,12 @@ class Contact(NamedTuple):
     reach: float
     edge_sine: float
     barrier: float
+    rolling_resistance: float = 0.0
+    pivoting_resistance: float = 0.0
+    contact_time: float = 1e-3
+    damping_ratio: float = -1.0
+    damping_restitution: float = -1.0
+    ending: float = ROCKING_ENDING
 
     @classmethod
     def build(
@@ -70,12 +100,23 @@ class Contact(NamedTuple):
         drop_height: float,
         g: float,
         rest_speed: float,
+        rolling_resistance: float = 0.0,
+        pivoting_resistance: float = 0.0,
+        contact_time: float | None = None,
+        ending: float = ROCKING_ENDING,
     ) -> Contact:
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
         No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
-        :class:`~coinflight.model.surface.Surface`) has checked every value.
+        :class:`~coinflight.model.surface.Surface`) has checked every value. ``contact_time``
+        defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
+        the contact model is computed here, once (numba). ``ending`` is :data:`ROCKING_ENDING`
+        or :data:`CONTACT_ENDING` (:class:`~coinflight.model.surface.Surface` ``ending``).
         """
+        from coinflight.core import contact_phase
+
+        if contact_time is None:
+            contact_time = contact_phase.CONTACT_TIME
         hh = 0.5 * float(thickness)
         # sqrt(r² + hh²) as the bounce kernel always computed it (hypot can differ by an ulp).
         reach = math.sqrt(float(radius) * float(radius) + hh * hh)
@@ -93,7 +134,20 @@ class Contact(NamedTuple):
             reach=reach,
             edge_sine=hh / reach,
             barrier=float(mass) * float(g) * reach,
+            rolling_resistance=float(rolling_resistance),
+            pivoting_resistance=float(pivoting_resistance),
+            contact_time=float(contact_time),
+            damping_ratio=_damping_ratio(float(restitution)),
+            damping_restitution=float(restitution),
+            ending=float(ending),
         )
 
 
-__all__ = ["Contact"]
+@lru_cache(maxsize=256)
+def _damping_ratio(restitution: float) -> float:
+    from coinflight.core import contact_phase
+
+    return float(contact_phase.damping_ratio(restitution))
+
+
+__all__ = ["CONTACT_ENDING", "ROCKING_ENDING", "Contact"]

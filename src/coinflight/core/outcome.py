@@ -41,12 +41,17 @@ class Status(IntEnum):
     """Still bouncing after the safety limit of impacts; the outcome is the well it is in."""
     SETTLED_ROCKING = 4
     """The bounces died out (rebound below the rest speed); the coin rocked on its corners until
-    it was trapped in a well."""
+    it was trapped in a well (the planar hand-off of :func:`coinflight.core.bounce.rock`, the
+    default ending)."""
+    SETTLED_CONTACT = 5
+    """The bounces died out; the coin then rolled, slid, pivoted and rocked in contact with the
+    surface, in 3-D (:mod:`coinflight.core.contact_phase`, the experimental ending
+    ``Surface(ending="contact")``), until its energy could no longer take it out of its well."""
 
     @property
     def label(self) -> str:
         """What reports print: ``"settled"``, ``"landed dead"``, ``"bounce limit"``,
-        ``"unsettled"`` or ``"settled rocking"``."""
+        ``"unsettled"``, ``"settled rocking"`` or ``"settled in contact"``."""
         return _STATUS_LABELS[self]
 
 
@@ -56,6 +61,7 @@ _STATUS_LABELS = {
     Status.BOUNCE_LIMIT: "bounce limit",
     Status.UNSETTLED: "unsettled",
     Status.SETTLED_ROCKING: "settled rocking",
+    Status.SETTLED_CONTACT: "settled in contact",
 }
 
 TAILS = Face.TAILS
@@ -64,7 +70,8 @@ EDGE = Face.EDGE
 FACE_NAMES = tuple(face.label for face in Face)
 """("tails", "heads", "edge"), indexed by face code."""
 STATUS_NAMES = tuple(status.label for status in Status)
-"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking"), by status code."""
+"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking", "settled in contact"),
+by status code."""
 
 
 def same_side(alignment: ArrayLike) -> NDArray[np.bool_]:

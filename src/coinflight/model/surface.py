@@ -17,6 +17,9 @@ from coinflight.model.distributions import (
 
 SurfaceKind = Literal["hand", "table"]
 
+ENDINGS = ("rocking", "contact")
+"""How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
+
 AIR_DENSITY = 1.2
 """Density of air at 20 °C and sea level, kg/m³ (ISO 2533 standard atmosphere: 1.204)."""
 
@@ -25,6 +28,25 @@ DEFAULT_RESTITUTION = 0.5
 
 DEFAULT_FRICTION = 0.3
 """Coulomb friction coefficient of metal on wood (Strzałko et al. 2008 use 0.1-0.5)."""
+
+DEFAULT_ROLLING_RESISTANCE = 1e-4
+"""Rolling resistance ℓ_r of a coin's rim on a table, m: an assumption. No source measures it
+for a coin (REFERENCES §5); 1e-4 m is MuJoCo's default rolling friction (XML reference,
+``geom/@friction``), and 1e-5 to 1e-3 m the band to carry (a hard rim on hard wood to a rim
+sinking into a varnish or a cloth)."""
+
+DEFAULT_PIVOTING_RESISTANCE = 1e-4
+"""Pivoting (drilling) resistance ℓ_p of a coin's rim on a table, m, beyond the Coulomb friction
+spread over the contact arc: an assumption, as the rolling resistance (band 1e-5 to 1e-3 m;
+MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
+
+ROLLING_RESISTANCE = v.Quantity("rolling resistance", "m", 0.0, 0.01)
+"""ℓ_r: 0 to 1 cm (a coin's radius: a torque ℓ F_n above that stops any rolling at once)."""
+PIVOTING_RESISTANCE = v.Quantity("pivoting resistance", "m", 0.0, 0.01)
+"""ℓ_p: 0 to 1 cm, as the rolling resistance."""
+CONTACT_TIME = v.Quantity("contact time", "s", 1e-5, 1e-2)
+"""t_c of the compliant contact (:mod:`coinflight.core.contact_phase`): 10 μs to 10 ms (shorter
+steps cost time in proportion; longer would let the coin sink by g (t_c/π)² ≈ 0.1 mm)."""
 
 
 DROP_HEIGHT = v.Quantity("drop height", "m", 0.0, 1e3)
@@ -64,6 +86,24 @@ class Surface:
         Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1].
     friction : float
         Coulomb friction coefficient μ ≥ 0 of the coin on the surface.
+    rolling_resistance, pivoting_resistance : float
+        Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
+        its pivoting about the vertical while it touches the table
+        (:mod:`coinflight.core.contact_phase`); assumptions, see
+        :data:`DEFAULT_ROLLING_RESISTANCE`.
+    contact_time : float
+        Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
+        softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
+        Used only with ``ending="contact"``, as are the two resistances.
+    ending : {"rocking", "contact"}
+        How a table landing ends once its bounces die out (a rebound slower than the rest
+        speed). ``"rocking"`` (default): the planar Housner rocking hand-off of
+        :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
+        the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
+        phase of :mod:`coinflight.core.contact_phase` (status "settled in contact");
+        **experimental**: slow (tens to hundreds of landings a second instead of tens of
+        thousands), and its edge rates are not yet credible (coins that roll upright on a
+        sharp-cornered rim stop upright; see :mod:`coinflight.core.contact_phase`).
 
     Examples
     --------
@@ -79,6 +119,10 @@ class Surface:
     drop_height: float = 0.0
     restitution: float = DEFAULT_RESTITUTION
     friction: float = DEFAULT_FRICTION
+    rolling_resistance: float = DEFAULT_ROLLING_RESISTANCE
+    pivoting_resistance: float = DEFAULT_PIVOTING_RESISTANCE
+    contact_time: float = 1e-3
+    ending: Literal["rocking", "contact"] = "rocking"
 
     def __post_init__(self) -> None:
         v.choice("surface", self.kind, ("hand", "table"))
@@ -94,6 +138,13 @@ class Surface:
             raise TypeError("restitution must be a single number")
         object.__setattr__(self, "restitution", float(e))
         object.__setattr__(self, "friction", _single("friction", self.friction, ""))
+        for name, quantity in (
+            ("rolling_resistance", ROLLING_RESISTANCE),
+            ("pivoting_resistance", PIVOTING_RESISTANCE),
+            ("contact_time", CONTACT_TIME),
+        ):
+            object.__setattr__(self, name, quantity.check(getattr(self, name)))
+        v.choice("ending", self.ending, ENDINGS)
 
     @property
     def bounces(self) -> bool:

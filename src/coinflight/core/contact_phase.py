@@ -1,0 +1,549 @@
+"""The coin in persistent contact with the table, in 3-D, until it cannot leave its well (numba).
+
+When the bounces of :mod:`coinflight.core.bounce` die out (a rebound slower than
+``rest_speed``), the coin is not at rest: it rocks, rolls and slides on its rim, spins and
+precesses like Euler's disk, touches with two rim points or slaps its face. This module carries
+that motion on until the coin's energy can no longer take it over the barrier between its well
+and the next one, and says which well that is.
+
+**Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
+planar rocking of :func:`coinflight.core.bounce.rock`): landings carried to rest through this
+phase run at ~50-1,100 a second instead of ~57,000, and its edge rates are not yet credible
+(a coin rolling upright on its sharp-cornered rim stops upright: a US nickel lands on edge in
+1 % to 43 % of tosses over e and μ, against Murray & Teare's measured 1 in 6,000).
+
+The state is the height z of the centre of mass, its velocity v, the heads normal n and the
+angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not
+enter the contact of a cylinder with a plane, and neither does the horizontal position.
+
+The contact model (compliant)
+-----------------------------
+A compliant (penalty) contact rather than a constrained one: rolling, sliding, pivoting,
+rocking, two-point and face contact and short hops then follow from one force law, with no
+list of contact modes, no complementarity problem and no Painlevé inconsistencies to resolve
+(the price: stiff equations, integrated with small steps). The coin touches the plane with the
+two circles of its rims (the lowest points of a cylinder always lie on them). A rim circle
+σ = ±1 (heads, tails), centre σ (h/2) n from the centre of mass, has at the angle φ from its
+lowest point the penetration
+
+    d(φ) = A + B cos φ,   A = −z − σ (h/2) n_z,   B = r s,   s = sqrt(1 − n_z²),
+
+positive on the arc |φ| < φ* (cos φ* = −A/B; the whole circle when A ≥ B, a face flat on the
+table). Each point of the arc carries a vertical force per radian
+
+    f(φ) = κ d(φ) + γ ḋ_s(φ),
+
+a linear spring along the rim whose total is Hertz-like on a short arc (F ∝ d0^(3/2), as a
+curved rim pressed on a plane) and linear for a face (F = 2π κ d). The sums over the arc are in
+closed form, so a rim contact is exact for any arc, with no sampling of the rim. ḋ_s is the
+penetration rate without its part odd in φ (a rate ∝ sin φ, a sideways roll of the arc): then
+the frictionless normal force of a rim acts on the arc's plane of symmetry, through the rim's
+lowest point and n, and exerts no torque about n or about the vertical, as in a rigid
+frictionless contact (Stronge 2000, §5), so that L·n and L_z are conserved with μ = 0. The total
+force of a rim is clipped at zero (the surface pushes, never pulls).
+
+* **Stiffness.** κ = π m / (2 t_c²), t_c :data:`CONTACT_TIME` by default: a coin dropped flat
+  sinks for t_c (an undamped half period of m on 2π κ). It is a numerical softness, far below
+  steel on wood, chosen so that t_c is short beside every time of the coin's motion (√(r/g) ≈
+  30 ms); it enters the outcomes only through the penetration m g / (2πκ) = g (t_c/π)² ≈ 1 μm.
+* **Restitution.** The damping is γ = ζ sqrt(2 φ* κ m_eff) / φ*: the arc's tangent stiffness
+  K_t = dF/dd0 = 2 φ* κ and the effective mass m_eff = 1/K_zz of the arc's centroid (the
+  collision matrix of :mod:`coinflight.core.impact`) give a damping force 2 ζ sqrt(K_t m_eff) ḋ.
+  On a short arc (F = K d^(3/2)) this is the damping ∝ d^(1/4) of Tsuji, Tanaka & Ishida
+  (Powder Technol. 71:239, 1992), whose coefficient of restitution does not depend on the impact
+  speed; ζ is set from the surface's e by :func:`damping_ratio` so that a rim contact restitutes
+  with e exactly (in the limit of a short contact). A face slap (linear, Kelvin-Voigt clipped at
+  zero force: Schwager & Pöschel, Granular Matter 9:465, 2007) restitutes with a slightly
+  different e (:func:`restitution_of`).
+* **Friction.** Coulomb's, regularised (a linear slope below :data:`SLIP_SPEED`, as in
+  MuJoCo's soft contacts and Leine's regularised Euler-disk models), at the arc's centre of
+  pressure: F_t = −μ F_n u_t / sqrt(|u_t|² + v_ε²), u_t the horizontal velocity of the coin's
+  material point there.
+* **Pivoting (drilling) resistance.** A torque −(μ r_t + ℓ_p) F_n ω_z / sqrt(ω_z² + ω_ε²)
+  about the vertical: Coulomb friction spread over the arc, r_t = r sqrt(1 − (sin φ*/φ*)²) the
+  arc's radius of gyration about its centroid (0 for a point, r for a face, whose rim bears the
+  load), plus the surface's pivoting resistance ℓ_p (a length).
+* **Rolling resistance.** A torque −ℓ_r F_n ω_h / sqrt(|ω_h|² + ω_ε²) against the horizontal
+  part of ω, ℓ_r the surface's rolling resistance (a length). Both resistances as in MuJoCo's
+  contact (torsional and rolling friction coefficients, lengths) and in Le Saux, Leine & Glocker
+  (J. Nonlinear Sci. 15:27, 2005: rolling and drilling friction set how a rolling disk's spin
+  decays). No source gives them for a coin's rim: they are assumptions, to be carried as a band.
+
+Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
+(kinetic + m g z + the springs') never grows but by integration error.
+
+Integration and ending
+----------------------
+Dormand-Prince 5(4) with adaptive steps (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.5),
+which take large steps through a hop (a lift-off is integrated here, not handed back to the
+exact flight loop: the hops of the last phase are short and a step-size control resolves
+them) and small ones through a slap. After each step the coin has *settled* when it cannot
+leave its well any more:
+
+* with friction or resistances, when the mechanical energy is below m g ρ, the height of the
+  centre of mass balanced on the corner (ρ = sqrt(r² + h²/4); Vulović & Prange 1986, Yong &
+  Mahadevan 2011): no force here adds energy, so the coin can never get over a corner again;
+* frictionless (μ = 0, no resistances), the horizontal momentum, L_z and L·n are conserved, so
+  only E − ½ m v_h² is free, and a corner at n_z = ±sin(edge) needs at least
+  m g ρ + (L·n)²/2I3 + (L_z − (L·n) n_z)² / (2 I1 (1 − n_z²)) (the least rotational energy with
+  those L_z and L·n there): the barrier of the well in 3-D.
+
+The outcome is then the well the coin is in (:func:`coinflight.core.impact.resting_face`). A
+coin at rest is below the barrier of its well, so it has settled too. After MAX_STEPS steps
+(a coin rolling on its edge with no rolling resistance would roll for ever) the toss is
+unsettled, with the well it was in; so is at once a coin with nothing to dissipate its
+energy (e = 1, μ = 0, no resistances) above its barrier.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from coinflight.core.impact import _coupling, angular_velocity, cross, dot, resting_face
+from coinflight.core.outcome import Status
+
+CONTACT_TIME = 1e-3
+"""Default duration t_c of a flat contact of the compliant model, s (a numerical softness; see
+the module notes)."""
+SLIP_SPEED = 5e-3
+"""v_ε of the regularised Coulomb friction, m/s: below it friction grows linearly with the slip.
+It sets the stiffest time of the contact, m_eff v_ε / (μ F_n) (~0.1 ms at μ = 1), hence the
+cost of a rolling coin (steps ∝ 1/v_ε); a contact that would stick creeps at v_ε F_t/(μ F_n),
+a few mm/s."""
+MAX_STEPS = 400_000
+"""Integration steps at most in one contact phase; then the toss is unsettled."""
+RTOL = 1e-7
+"""Relative tolerance of the step-size control."""
+MAX_STEP = 1e-3
+"""Longest step, s (also at most a sixteenth of a turn)."""
+
+
+@njit(cache=True)
+def _tangent_basis(n):
+    """(s, ŵ): ŵ the unit vector of the coin's plane pointing most downwards, s = sqrt(1 − n_z²);
+    for a coin lying flat any unit vector of its plane."""
+    nz = n[2]
+    sw = (nz * n[0], nz * n[1], nz * nz - 1.0)  # s ŵ = −Z + n_z n
+    s = math.sqrt(dot(sw, sw))
+    if s > 1e-12:
+        w = (sw[0] / s, sw[1] / s, sw[2] / s)
+    else:
+        a = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+        t = cross(n, a)
+        size = math.sqrt(dot(t, t))
+        w = (t[0] / size, t[1] / size, t[2] / size)
+    return s, w
+
+
+@njit(cache=True)
+def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta):
+    """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
+
+    Parameters
+    ----------
+    sigma : float
+        +1 the rim of the heads face, −1 that of the tails face.
+    z, v, n, omega
+        Height and velocity of the centre of mass, heads normal, angular velocity (lab, SI).
+    radius, hh, mass, i1, i3 : float
+        The coin: r, h/2, m, I1, I3.
+    stiffness, zeta : float
+        κ (N/m per radian of rim) and the damping ratio ζ (see the module notes).
+
+    Returns
+    -------
+    force : float
+        Total vertical force F_n ≥ 0 of the arc, N.
+    q : tuple of 3 floats
+        Centre of pressure relative to the centre of mass (the normal force's torque is
+        q × F_n Z), m.
+    pivot_radius : float
+        r_t, the arc's radius of gyration about its centroid, m.
+    energy : float
+        Elastic energy of the arc, κ ∫ d²/2 dφ, J.
+    """
+    s, w = _tangent_basis(n)
+    a = -z - sigma * hh * n[2]
+    b = radius * s
+    if a + b <= 0.0:
+        return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
+    phi = math.pi if a >= b else math.acos(-a / b)
+    sp = math.sin(phi)
+    cp = math.cos(phi)
+    i0 = 2.0 * phi  # ∫ dφ over the arc
+    ic = 2.0 * sp  # ∫ cos φ dφ
+    icc = phi + sp * cp  # ∫ cos² φ dφ
+    elastic = stiffness * (a * i0 + b * ic)
+    moment = stiffness * (a * ic + b * icc)  # ∫ κ d cos φ dφ
+    energy = 0.5 * stiffness * (a * a * i0 + 2.0 * a * b * ic + b * b * icc)
+    # Penetration rate, its even part: ḋ = a0 + a1 cos φ (+ a2 sin φ, left out).
+    wn = cross(omega, n)
+    ww = cross(omega, w)
+    a0 = -(v[2] + sigma * hh * wn[2])
+    a1 = -radius * ww[2]
+    # Damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = 2 φ κ, m_eff at the arc's centroid.
+    k = radius * sp / phi
+    centroid = (
+        sigma * hh * n[0] + k * w[0],
+        sigma * hh * n[1] + k * w[1],
+        sigma * hh * n[2] + k * w[2],
+    )
+    up = (0.0, 0.0, 1.0)
+    m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
+    gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
+    force = elastic + gamma * (a0 * i0 + a1 * ic)
+    if force <= 0.0:
+        return 0.0, (0.0, 0.0, 0.0), 0.0, energy
+    moment += gamma * (a0 * ic + a1 * icc)
+    # q = Σ f (p − c) / F: p − c = σ (h/2) n + r (cos φ ŵ + sin φ e2); the sin part sums to 0.
+    kq = radius * moment / force
+    q = (
+        sigma * hh * n[0] + kq * w[0],
+        sigma * hh * n[1] + kq * w[1],
+        sigma * hh * n[2] + kq * w[2],
+    )
+    ratio = sp / phi
+    pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
+    return force, q, pivot, energy
+
+
+@njit(cache=True)
+def _derivative(y, out, c, stiffness, zeta):
+    """dy/dt of the state y = (z, v, n, L) in contact (the forces of the module notes)."""
+    mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
+    mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    omega = angular_velocity(lm, n, i1, i3)
+    spin_eps = SLIP_SPEED / radius
+    fx, fy, fz = 0.0, 0.0, -mass * c.g
+    tx, ty, tz = 0.0, 0.0, 0.0
+    # The lower rim first: the same sums, in the same order, for the mirror toss (n → −n).
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    for sigma in (lower, -lower):
+        fn, q, rt, _ = rim_contact(
+            sigma, y[0], v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
+        )
+        if fn <= 0.0:
+            continue
+        fz += fn
+        tx += q[1] * fn  # q × (0, 0, F_n)
+        ty -= q[0] * fn
+        if mu > 0.0:
+            u = cross(omega, q)
+            ux, uy = v[0] + u[0], v[1] + u[1]
+            k = -mu * fn / math.sqrt(ux * ux + uy * uy + SLIP_SPEED * SLIP_SPEED)
+            gx, gy = k * ux, k * uy
+            fx += gx
+            fy += gy
+            tx -= q[2] * gy  # q × (gx, gy, 0)
+            ty += q[2] * gx
+            tz += q[0] * gy - q[1] * gx
+        drill = mu * rt + pivoting
+        if drill > 0.0:
+            tz -= drill * fn * omega[2] / math.sqrt(omega[2] * omega[2] + spin_eps * spin_eps)
+        if rolling > 0.0:
+            k = (
+                -rolling
+                * fn
+                / math.sqrt(omega[0] * omega[0] + omega[1] * omega[1] + spin_eps * spin_eps)
+            )
+            tx += k * omega[0]
+            ty += k * omega[1]
+    nd = cross(omega, n)
+    out[0] = v[2]
+    out[1] = fx / mass
+    out[2] = fy / mass
+    out[3] = fz / mass
+    out[4] = nd[0]
+    out[5] = nd[1]
+    out[6] = nd[2]
+    out[7] = tx
+    out[8] = ty
+    out[9] = tz
+
+
+@njit(cache=True)
+def energy(y, c, stiffness):
+    """Mechanical energy of the state y = (z, v, n, L): ½ m v² + ½ L·ω + m g z + the springs', J."""
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    e = 0.5 * c.mass * dot(v, v) + 0.5 * dot(lm, omega) + c.mass * c.g * y[0]
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    for sigma in (lower, -lower):
+        _, _, _, spring = rim_contact(
+            sigma, y[0], v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiffness, 0.0
+        )
+        e += spring
+    return e
+
+
+@njit(cache=True)
+def _corner_energy(ln, lz, nz, c):
+    """Least energy of the coin balanced on a corner at n_z = nz with L·n = ln and L_z = lz."""
+    return c.barrier + 0.5 * ln * ln / c.i3 + 0.5 * (lz - ln * nz) ** 2 / (c.i1 * (1.0 - nz * nz))
+
+
+@njit(cache=True)
+def free_energy(y, c, stiffness):
+    """(energy that can lift the coin, barrier of its well), J (module notes, "ending").
+
+    With friction or resistances: the mechanical energy and m g ρ. Frictionless: the energy
+    less ½ m v_h² and the least energy on the corners of the well at the conserved L·n, L_z.
+    """
+    e = energy(y, c, stiffness)
+    if c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0:
+        return e, c.barrier
+    e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+    ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
+    lz = y[9]
+    nz = y[6]
+    corner = c.edge_sine
+    up = _corner_energy(ln, lz, corner, c)
+    down = _corner_energy(ln, lz, -corner, c)
+    if abs(nz) < corner:
+        return e, min(up, down)
+    return e, up if nz > 0.0 else down
+
+
+# Dormand-Prince 5(4) (Hairer, Nørsett & Wanner, Solving ODEs I, table II.5.2).
+_A21 = 1.0 / 5.0
+_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
+_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+_A61, _A62, _A63 = 9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0
+_A64, _A65 = 49.0 / 176.0, -5103.0 / 18656.0
+_B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
+_E1, _E3, _E4 = 71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0
+_E5, _E6, _E7 = -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0
+
+
+@njit(cache=True)
+def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
+    """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
+    coin has settled, whichever comes first.
+
+    Returns (time advanced, accepted steps, settled).
+    """
+    k1 = np.empty(10)
+    k2 = np.empty(10)
+    k3 = np.empty(10)
+    k4 = np.empty(10)
+    k5 = np.empty(10)
+    k6 = np.empty(10)
+    k7 = np.empty(10)
+    tmp = np.empty(10)
+    new = np.empty(10)
+    scale = np.empty(10)
+    reach = c.reach
+    speed = max(math.sqrt(c.g * reach), 0.01)  # velocity scale of the tolerances, m/s
+    scale[0] = reach
+    for i in range(1, 4):
+        scale[i] = speed
+        scale[i + 3] = 1.0
+        scale[i + 6] = c.i1 * speed / reach
+    contact_time = c.contact_time
+    h = contact_time / 20.0
+    t = 0.0
+    _derivative(y, k1, c, stiffness, zeta)
+    for step in range(max_steps):
+        if settle:
+            free, barrier = free_energy(y, c, stiffness)
+            if free < barrier:
+                return t, step, True
+        if t >= duration:
+            return t, step, False
+        lm = (y[7], y[8], y[9])
+        n = (y[4], y[5], y[6])
+        omega = angular_velocity(lm, n, c.i1, c.i3)
+        turn = 0.125 * math.pi / (math.sqrt(dot(omega, omega)) + 1e-300)
+        limit = min(MAX_STEP, turn, duration - t)
+        if h > limit:
+            h = limit
+        for _ in range(60):
+            for i in range(10):
+                tmp[i] = y[i] + h * _A21 * k1[i]
+            _derivative(tmp, k2, c, stiffness, zeta)
+            for i in range(10):
+                tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
+            _derivative(tmp, k3, c, stiffness, zeta)
+            for i in range(10):
+                tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
+            _derivative(tmp, k4, c, stiffness, zeta)
+            for i in range(10):
+                tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
+            _derivative(tmp, k5, c, stiffness, zeta)
+            for i in range(10):
+                tmp[i] = y[i] + h * (
+                    _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
+                )
+            _derivative(tmp, k6, c, stiffness, zeta)
+            for i in range(10):
+                new[i] = y[i] + h * (
+                    _B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i]
+                )
+            _derivative(new, k7, c, stiffness, zeta)
+            err = 0.0
+            for i in range(10):
+                e = h * (
+                    _E1 * k1[i]
+                    + _E3 * k3[i]
+                    + _E4 * k4[i]
+                    + _E5 * k5[i]
+                    + _E6 * k6[i]
+                    + _E7 * k7[i]
+                )
+                tol = RTOL * (scale[i] + max(abs(y[i]), abs(new[i])))
+                r = abs(e) / tol
+                if r > err:
+                    err = r
+            if err <= 1.0:
+                break
+            h *= max(0.2, 0.9 * err**-0.2)
+        t += h
+        # Keep n a unit vector (the exact flow does).
+        size = math.sqrt(new[4] * new[4] + new[5] * new[5] + new[6] * new[6])
+        for i in range(10):
+            y[i] = new[i]
+        y[4] /= size
+        y[5] /= size
+        y[6] /= size
+        if size != 1.0:
+            _derivative(y, k7, c, stiffness, zeta)
+        for i in range(10):
+            k1[i] = k7[i]
+        h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+    return t, max_steps, False
+
+
+@njit(cache=True)
+def stiffness_of(c):
+    """κ = π m / (2 t_c²), N/m per radian of rim (module notes)."""
+    return math.pi * c.mass / (2.0 * c.contact_time * c.contact_time)
+
+
+@njit(cache=True)
+def settle(z, v, n, lm, c):
+    """Carry the coin on in contact until it cannot leave its well: (face, status, time).
+
+    Parameters
+    ----------
+    z : float
+        Height of the centre of mass above the table, m.
+    v, n, lm : tuple of 3 floats
+        Velocity of the centre of mass, heads normal (unit), angular momentum about the centre
+        of mass (lab frame, SI).
+    c : Contact
+        The coin, the surface (e, μ, rolling and pivoting resistance, contact time) and g.
+
+    Returns
+    -------
+    face : int
+        TAILS 0, HEADS 1, EDGE 2: the well the coin cannot leave.
+    status : Status
+        SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
+    time : float
+        Duration of the contact phase, s.
+    """
+    y = np.empty(10)
+    y[0] = z
+    y[1], y[2], y[3] = v
+    y[4], y[5], y[6] = n
+    y[7], y[8], y[9] = lm
+    conservative = c.friction == 0.0 and c.rolling_resistance == 0.0
+    if conservative and c.pivoting_resistance == 0.0 and c.restitution >= 1.0:
+        # Nothing dissipates: the free energy stays where it is, above the barrier or below.
+        y0 = (z, v[0], v[1], v[2], n[0], n[1], n[2], lm[0], lm[1], lm[2])
+        y[:] = y0
+        free, barrier = free_energy(y, c, stiffness_of(c))
+        status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
+        return resting_face(n[2], c.edge_sine), status, 0.0
+    zeta = c.damping_ratio
+    if c.damping_restitution != c.restitution:
+        zeta = damping_ratio(c.restitution)
+    t, _, settled = _integrate(y, math.inf, c, stiffness_of(c), zeta, True, MAX_STEPS)
+    face = resting_face(y[6], c.edge_sine)
+    return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
+
+
+def advance(
+    state: np.ndarray, duration: float, c, *, settle_check: bool = False, max_steps: int = MAX_STEPS
+) -> tuple[float, int, bool]:
+    """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
+    studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
+    when the coin has settled (:func:`settle`), whichever comes first."""
+    zeta = damping_ratio(c.restitution)
+    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps)
+
+
+@njit(cache=True)
+def restitution_of(zeta, exponent):
+    """Coefficient of restitution of the compliant normal law with damping ratio ζ.
+
+    The dimensionless contact x'' = −x^p − 2 ζ sqrt(p x^(p−1)) x' (force K x^p, damping
+    2 ζ sqrt(K_t m), K_t = dF/dx; m = K = v0 = 1, which the coefficient does not depend on), from
+    x = 0, x' = 1 until the force vanishes (clipped at zero: the surface does not pull); e = −x'
+    then. p = 3/2: a rim (Tsuji et al. 1992); p = 1: a face (Kelvin-Voigt; Schwager & Pöschel
+    2007 give it in closed form).
+    """
+    x = 0.0
+    u = 1.0
+    dt = 2e-3
+    for _ in range(1_000_000):
+        # RK4 on (x, u).
+        a1 = _law(x, u, zeta, exponent)
+        x2, u2 = x + 0.5 * dt * u, u + 0.5 * dt * a1
+        a2 = _law(x2, u2, zeta, exponent)
+        x3, u3 = x + 0.5 * dt * u2, u + 0.5 * dt * a2
+        a3 = _law(x3, u3, zeta, exponent)
+        x4, u4 = x + dt * u3, u + dt * a3
+        a4 = _law(x4, u4, zeta, exponent)
+        xn = x + dt * (u + 2.0 * u2 + 2.0 * u3 + u4) / 6.0
+        un = u + dt * (a1 + 2.0 * a2 + 2.0 * a3 + a4) / 6.0
+        fn = -_law(xn, un, zeta, exponent)
+        if xn <= 0.0 or (un < 0.0 and fn <= 0.0):
+            # Interpolate the end (force or depth zero) linearly within the step.
+            f0 = -a1
+            if xn <= 0.0:
+                frac = x / (x - xn)
+            elif f0 > fn:
+                frac = f0 / (f0 - fn)
+            else:
+                frac = 1.0
+            return -(u + frac * (un - u))
+        x, u = xn, un
+    return 0.0
+
+
+@njit(cache=True)
+def _law(x, u, zeta, exponent):
+    if x <= 0.0:
+        return 0.0
+    return -(x**exponent) - 2.0 * zeta * math.sqrt(exponent * x ** (exponent - 1.0)) * u
+
+
+@njit(cache=True)
+def damping_ratio(restitution):
+    """ζ for which a rim contact (p = 3/2) restitutes with e (:func:`restitution_of`), by
+    bisection; 0 for e = 1."""
+    if restitution >= 1.0:
+        return 0.0
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        if restitution_of(hi, 1.5) < restitution:
+            break
+        lo = hi
+        hi *= 2.0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        if restitution_of(mid, 1.5) > restitution:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
