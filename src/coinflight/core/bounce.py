@@ -99,6 +99,20 @@ def tumbling_energy(v, angular_momentum, n, mass, i1, g, z):
 
 
 @njit(cache=True)
+def mechanical_energy(v, angular_momentum, n, mass, i1, i3, g, z):
+    """All the coin's energy: ½ m v² + ½ L·ω + m g z (translation, rotation, height), J.
+
+    No force of a landing adds energy (the impact law of :func:`coinflight.core.impact.impact`
+    and the contact phase only store or dissipate it), so once this is below the barrier of the
+    coin's well, m g sqrt(r² + h²/4), the coin can never leave that well: the well is the
+    outcome, whatever friction later does with the horizontal motion and the spin (which
+    :func:`tumbling_energy` leaves out, and which friction can turn into tumbling).
+    """
+    omega = angular_velocity(angular_momentum, n, i1, i3)
+    return 0.5 * mass * dot(v, v) + 0.5 * dot(angular_momentum, omega) + mass * g * z
+
+
+@njit(cache=True)
 def rock(n, omega, radius, hh, mass, i1, g):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
 
@@ -306,17 +320,10 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if bounces >= max_bounces:
             return resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
         v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
+        face, status, duration = after_impact(z, v, lm, n, rebound, c)
+        if status >= 0:
+            return face, bounces, first, t + duration, status
         omega = angular_velocity(lm, n, i1, i3)
-        if tumbling_energy(v, lm, n, mass, i1, g, z) < barrier:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_ENERGY
-        if rebound < rest_speed:
-            if restitution == 0.0:
-                return resting_face(n[2], edge_sine), bounces, first, t, Status.SETTLED_DEAD
-            if c.ending == CONTACT_ENDING:
-                face, status, duration = settle(z, v, n, lm, c)
-                return face, bounces, first, t + duration, status
-            face = rock(n, omega, radius, hh, mass, i1, g)
-            return face, bounces, first, t, Status.SETTLED_ROCKING
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
         # the downward acceleration of any point of the coin; start looking at its peak.
@@ -325,6 +332,40 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
             tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
     return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
+
+
+@njit(cache=True)
+def after_impact(z, v, lm, n, rebound, c):
+    """How a landing ends after an impact, if it does: (face, status, duration of a contact
+    phase, s); status −1 (and face −1) if the coin flies on.
+
+    The one ending of every landing kernel (:func:`land_one`, and through air
+    :func:`coinflight.core.drag.ending`), in this order:
+
+    * the coin is trapped in its well: with the 3-D contact ending, its whole energy
+      (:func:`mechanical_energy`, rigorous: nothing adds energy afterwards) is below the
+      barrier m g sqrt(r² + h²/4); with the rocking ending, its tumbling energy
+      (:func:`tumbling_energy`) is (status SETTLED_ENERGY);
+    * e = 0 and the rebound below ``rest_speed``: the surface absorbed it (SETTLED_DEAD);
+    * the bounces died out (rebound below ``rest_speed``): the contact phase
+      (:func:`coinflight.core.contact_phase.settle`, SETTLED_CONTACT or UNSETTLED) or the planar
+      rocking of :func:`rock` (SETTLED_ROCKING), by ``c.ending``.
+    """
+    if c.ending == CONTACT_ENDING:
+        free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
+    else:
+        free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
+    if free < c.barrier:
+        return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY, 0.0
+    if rebound < c.rest_speed:
+        if c.restitution == 0.0:
+            return resting_face(n[2], c.edge_sine), Status.SETTLED_DEAD, 0.0
+        if c.ending == CONTACT_ENDING:
+            return settle(z, v, n, lm, c)
+        omega = angular_velocity(lm, n, c.i1, c.i3)
+        face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g)
+        return face, Status.SETTLED_ROCKING, 0.0
+    return -1, -1, 0.0
 
 
 @njit(cache=True)

@@ -81,8 +81,7 @@ from coinflight.core.bounce import (
     GAP_TOLERANCE,
     GRAZE_SKIP,
     MAX_IMPACTS,
-    rock,
-    tumbling_energy,
+    after_impact,
 )
 from coinflight.core.contact import Contact
 from coinflight.core.impact import (
@@ -117,9 +116,6 @@ SQRT3_12 = math.sqrt(3.0) / 12.0
 GAUSS = math.sqrt(3.0) / 6.0
 """The Gauss-Legendre points of a step h from t0 are t0 + (½ ∓ GAUSS) h."""
 # Status codes as plain ints for the compiled loops (core.outcome.Status).
-_ENERGY = int(Status.SETTLED_ENERGY)
-_DEAD = int(Status.SETTLED_DEAD)
-_ROCKING = int(Status.SETTLED_ROCKING)
 _LIMIT = int(Status.BOUNCE_LIMIT)
 _UNSETTLED = int(Status.UNSETTLED)
 
@@ -453,21 +449,11 @@ def _gap(z, v, n, lm, air, hh):
 
 @njit(cache=True)
 def ending(v, lm, n, rebound, c):
-    """(face, status) if the coin has settled after this impact, else (−1, −1): the rules of
-    :func:`coinflight.core.bounce.land_one` (below the barrier; dead; the bounces died out).
-
-    The landing through air calls its ending here and only here (a new contact phase of
-    :mod:`coinflight.core.bounce` replaces :func:`~coinflight.core.bounce.rock` in this one
-    place)."""
+    """(face, status, duration of a contact phase) if the coin has settled after this impact,
+    else (−1, −1, 0): :func:`coinflight.core.bounce.after_impact`, the one ending of every
+    landing kernel (below the barrier; dead; the bounces died out: rocking or contact phase)."""
     z = lowest_depth(n[2], c.radius, c.half_thickness)
-    if tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z) < c.barrier:
-        return resting_face(n[2], c.edge_sine), _ENERGY
-    if rebound < c.rest_speed:
-        if c.restitution == 0.0:
-            return resting_face(n[2], c.edge_sine), _DEAD
-        omega = angular_velocity(lm, n, c.i1, c.i3)
-        return rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g), _ROCKING
-    return -1, -1
+    return after_impact(z, v, lm, n, rebound, c)
 
 
 @njit(cache=True)
@@ -577,9 +563,9 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         v, lm, rebound = impact(
             v, lm, n, c.radius, hh, c.mass, c.i1, c.i3, c.restitution, c.friction
         )
-        face, status = ending(v, lm, n, rebound, c)
+        face, status, duration = ending(v, lm, n, rebound, c)
         if status >= 0:
-            return face, bounces, first, t, status
+            return face, bounces, first, t + duration, status
         bounces += 1
         a0, b0, u = split(lm, n)
         tr = 0.0
