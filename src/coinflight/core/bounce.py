@@ -288,8 +288,8 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status)."""
     # The contact record (core.contact.Contact), unpacked once for the loop below.
     radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
-    g, restitution, friction, rest_speed = c.g, c.restitution, c.friction, c.rest_speed
-    rho, edge_sine, barrier = c.reach, c.edge_sine, c.barrier
+    g, restitution, friction = c.g, c.restitution, c.friction
+    rho, edge_sine = c.reach, c.edge_sine
     wx, wy, wz = omega_body
     # Launch attitude: identity heads up, a half turn about lab X tails up (flips y and z).
     s = 1.0 if start_sign > 0 else -1.0
