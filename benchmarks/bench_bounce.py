@@ -127,9 +127,39 @@ def nickel_edge(n: int) -> None:
         )
 
 
+def contact_rates(n: int, repeats: int = 3) -> None:
+    """Tosses a second carried to rest with the 3-D contact ending against the rocking ending
+    and first contact, in one run (medians), and where the contact ending decides them."""
+    omega, v0 = tosses(n)
+    contact = Surface("table", DROP, 0.5, 0.3, ending="contact")
+    land(COIN, omega[:20], v0[:20], 1.0, G, contact)  # compile (or load the cache)
+    rates = {
+        "contact ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, contact), n, repeats),
+        "rocking ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE), n, repeats),
+        "first contact": median_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats
+        ),
+    }
+    first = rates["first contact"]
+    print(f"{n:,} vigorous tosses, e = 0.5, μ = 0.3, median of {repeats}, load {os.getloadavg()}")
+    for name, rate in rates.items():
+        print(f"  {name}: {rate:,.0f} tosses/s ({rate / first:.2e} of first contact)")
+    for e, mu in ((0.5, 0.3), (0.2, 0.5), (0.8, 0.1)):
+        out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu, ending="contact"))
+        share = np.bincount(out.status, minlength=len(Status)) / n
+        print(
+            f"  e = {e}, μ = {mu}: decided at an impact (whole energy below the barrier) "
+            f"{share[Status.SETTLED_ENERGY]:.1%}, in the contact phase "
+            f"{share[Status.SETTLED_CONTACT]:.1%}, unsettled {share[Status.UNSETTLED]:.2%}; "
+            f"contact phase {np.median(out.settle_time - out.first_contact):.2f} s after the first "
+            f"contact (median); {face_fractions(out.face)}"
+        )
+
+
 def contact_phase(n: int) -> None:
     """What the experimental contact phase (``ending="contact"``) decides, over the parameters
     nobody has measured (issue 11)."""
+    contact_rates(n)
     rng = np.random.default_rng(11)
     # The axial-spin toss: ωx 150-300, ωz = ±20 rad/s, 0.8 m drop, started heads up.
     omega = np.column_stack(

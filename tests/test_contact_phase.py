@@ -355,7 +355,7 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
 
 def _critical_spin(coin):
     """Ω_c of a disc rolling upright on a knife edge: upright rolling is stable for Ω > Ω_c,
-    Ω_c² = m g r I1 / (I3 (I3 + m r²)) (Routh; O'Reilly, Nonlinear Dyn. 10:287, 1996, eq. 38;
+    Ω_c² = m g r I1 / (I3 (I3 + m r²)) (Routh; O'Reilly, Nonlinear Dyn. 10:287, 1996;
     g / 3r for a thin uniform disc)."""
     i1, i3 = (float(x) for x in coin.moments)
     m, r = coin.mass, coin.radius

@@ -18,18 +18,23 @@ Newton iteration on the gap between the coin's lowest point and the surface poli
 contact time to machine precision (:func:`next_contact`). The impact is
 :func:`coinflight.core.impact.impact`.
 
-The coin has settled when it can no longer cross the potential barrier between a face and its
-edge: the energy that can turn it over (:func:`tumbling_energy`) below m g sqrt(r² + h²/4), the
-height of its centre of mass when balanced on the corner of rim and face (Vulović & Prange
-1986; Yong & Mahadevan 2011; REFERENCES §4-5). Its outcome is then the well it is in
-(:func:`coinflight.core.impact.resting_face`).
+After every impact :func:`after_impact` decides whether the landing has ended (the one ending
+of the exact and the air landings). The coin has settled when it can no longer cross the
+potential barrier between a face and its edge, m g sqrt(r² + h²/4), the height of its centre
+of mass when balanced on the corner of rim and face (Vulović & Prange 1986; Yong & Mahadevan
+2011; REFERENCES §4-5): with the rocking ending, when the energy that can turn it over
+(:func:`tumbling_energy`) is below it; with the contact ending, when its whole energy
+(:func:`mechanical_energy`) is, which is rigorous, as no impact or contact force adds energy
+(:func:`coinflight.core.impact.impact` is tested for it). Its outcome is then the well it is
+in (:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
 one rim point while it tips), the end is chosen by the record's ``ending`` flag
 (:class:`coinflight.model.surface.Surface` ``ending``): by default the planar rocking of
 :func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
 contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
 and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
-cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not yet credible).
+cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not yet credible:
+see :mod:`coinflight.core.contact_phase`).
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 """

@@ -49,14 +49,18 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
     return v.count(name, value, 0, MAX_BOUNCES)
 
 
-BOUNCING_TOSSES_PER_SECOND = 1.6e5
-"""Drag-free table landings a second on the 2-core machine while busy (README: 290,000 quiet),
-with the default ending (the planar rocking hand-off)."""
+BOUNCING_TOSSES_PER_SECOND = 5e4
+"""Drag-free table landings carried to rest a second with the default ending (the planar
+rocking hand-off), 2 threads on the shared 2-core machine while busy: 34,000-63,000 measured at
+e = 0.5, μ = 0.3 (25,000 at e = 0.8, μ = 0.1; 405,000 dead, e = 0) under a load of 2.5-3.5
+(``python benchmarks/bench_bounce.py --quick``, 2×10⁵ vigorous tosses, median of 3)."""
 
 CONTACT_TOSSES_PER_SECOND = 300.0
 """Drag-free table landings carried to rest a second with the experimental 3-D contact phase
-(``Surface(ending="contact")``, e > 0), on the 2-core machine while busy (issue 11: coins that
-roll away on their edge are followed for seconds; 50-1,100 a second measured)."""
+(``Surface(ending="contact")``, e > 0), on the 2-core machine while busy: 301 a second
+measured at e = 0.5, μ = 0.3 under a load of 3.3, 300-800 quieter (``python
+benchmarks/bench_bounce.py --contact N``; 66-81 % of the tosses go through the contact phase,
+for a median 0.3-2.3 s of motion)."""
 
 AIR_LANDINGS_PER_SECOND = 4e3
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3, C_d = 1.17),
