@@ -21,7 +21,15 @@ THICK = Coin(radius=0.012, thickness=0.024 / math.sqrt(3), mass=0.005)  # h/d = 
 
 
 def _contact(
-    coin, e=0.5, mu=0.3, rolling=0.0, pivoting=0.0, contact_time=1e-3, g=G, ending=ROCKING_ENDING
+    coin,
+    e=0.5,
+    mu=0.3,
+    rolling=0.0,
+    pivoting=0.0,
+    contact_time=1e-3,
+    g=G,
+    ending=ROCKING_ENDING,
+    corner=0.0,
 ):
     i1, i3 = coin.moments
     return Contact.build(
@@ -39,6 +47,7 @@ def _contact(
         pivoting_resistance=pivoting,
         contact_time=contact_time,
         ending=ending,
+        corner_radius=corner,
     )
 
 
@@ -468,3 +477,38 @@ def test_landing_through_air_ends_in_the_same_contact_phase():
     assert np.any(exact.status == Status.SETTLED_CONTACT)
     np.testing.assert_array_equal(air.status, exact.status)
     np.testing.assert_array_equal(air.face, exact.face)
+
+
+def test_rounded_corners_move_the_barrier_and_the_edge_well():
+    # Contact.build's corner radius a: the coin is a cylinder (r − a, h/2 − a) swept by a ball
+    # of radius a, so its corner sits at a + ρ′ above the table when balanced, ρ′ = sqrt((r −
+    # a)² + (h/2 − a)²), and its edge well spans |n_z| < (h/2 − a)/ρ′; a = 0 is the sharp coin.
+    sharp = _contact(NICKEL)
+    hh, r = NICKEL.thickness / 2, NICKEL.radius
+    a = 0.5 * hh
+    c = _contact(NICKEL, corner=a)
+    inner = math.hypot(r - a, hh - a)
+    assert c.barrier == pytest.approx(NICKEL.mass * G * (a + inner), rel=1e-14)
+    assert c.edge_sine == pytest.approx((hh - a) / inner, rel=1e-14)
+    assert c.barrier < sharp.barrier and c.edge_sine < sharp.edge_sine
+    assert c._replace(corner_radius=0.0, barrier=sharp.barrier, edge_sine=sharp.edge_sine) == sharp
+    # A coin lying flat rests on its face at z = h/2 whatever its corners (the face's
+    # penetration is the same): sunk to the equilibrium of its weight, it stays at rest.
+    y = _state(NICKEL, 0.0)
+    y[0] -= NICKEL.mass * G / (2 * math.pi * cp.stiffness_of(c))
+    cp.advance(y, 0.05, c)
+    assert abs(y[3]) < 1e-4 and abs(y[6] - 1.0) < 1e-9
+
+
+def test_fully_rounded_rim_has_no_edge_well():
+    # With a = h/2 the rim is a half-round, and the edge well vanishes: a nickel standing upright
+    # and nudged at 0.15 rad/s, which the sharp coin's edge well holds (as in
+    # test_coin_standing_on_its_edge_tipped_falls_to_a_face), falls onto the face it tips to.
+    for a, face in ((0.0, EDGE), (NICKEL.thickness / 2, HEADS)):
+        c = _contact(NICKEL, e=0.3, mu=0.5, rolling=1e-4, pivoting=1e-4, corner=a)
+        y = _tipping(NICKEL, math.pi / 2, -0.15, -1.0)
+        f, status, _ = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
+        assert (f, status) == (face, Status.SETTLED_CONTACT)
+        # and it does lie on that face (with a = h/2 every tilt but upright reads as a face).
+        cp.advance(y, 1.0, c)
+        assert (y[6] > 0.999) if face == HEADS else (abs(y[6]) < c.edge_sine)

@@ -423,6 +423,7 @@ def with_surface(c, restitution, friction):
         c.damping_ratio,
         c.damping_restitution,
         c.ending,
+        c.corner_radius,
     )
 
 

@@ -64,6 +64,13 @@ class Contact(NamedTuple):
         rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
         :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
         :func:`coinflight.core.contact_phase.settle`); a float so the record stays all floats.
+    corner_radius : float
+        a ≥ 0, the radius of the rounded corners of the coin's rim, m (experimental, core only):
+        the coin is a cylinder of radius r − a and half-thickness h/2 − a swept by a ball of
+        radius a. The contact phase touches the table with that rounded rim, and ``barrier``
+        and ``edge_sine`` are its wells' (m g (a + ρ′) and (h/2 − a)/ρ′, ρ′ = sqrt((r − a)² +
+        (h/2 − a)²)); the impacts of :mod:`coinflight.core.impact` still meet the sharp
+        cylinder (their contact point differs by at most a (1 − 1/√2)). 0: sharp corners.
     """
 
     radius: float
@@ -85,6 +92,7 @@ class Contact(NamedTuple):
     damping_ratio: float = -1.0
     damping_restitution: float = -1.0
     ending: float = ROCKING_ENDING
+    corner_radius: float = 0.0
 
     @classmethod
     def build(
@@ -104,6 +112,7 @@ class Contact(NamedTuple):
         pivoting_resistance: float = 0.0,
         contact_time: float | None = None,
         ending: float = ROCKING_ENDING,
+        corner_radius: float = 0.0,
     ) -> Contact:
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
@@ -120,6 +129,9 @@ class Contact(NamedTuple):
         hh = 0.5 * float(thickness)
         # sqrt(r² + hh²) as the bounce kernel always computed it (hypot can differ by an ulp).
         reach = math.sqrt(float(radius) * float(radius) + hh * hh)
+        a = float(corner_radius)
+        # The rounded rim's corner, as seen from the centre of mass (ρ′, and a + ρ′ its height).
+        inner = math.sqrt((float(radius) - a) ** 2 + (hh - a) ** 2) if a > 0.0 else reach
         return cls(
             radius=float(radius),
             half_thickness=hh,
@@ -132,14 +144,15 @@ class Contact(NamedTuple):
             g=float(g),
             rest_speed=float(rest_speed),
             reach=reach,
-            edge_sine=hh / reach,
-            barrier=float(mass) * float(g) * reach,
+            edge_sine=(hh - a) / inner,
+            barrier=float(mass) * float(g) * (a + inner),
             rolling_resistance=float(rolling_resistance),
             pivoting_resistance=float(pivoting_resistance),
             contact_time=float(contact_time),
             damping_ratio=_damping_ratio(float(restitution)),
             damping_restitution=float(restitution),
             ending=float(ending),
+            corner_radius=a,
         )
 
 

@@ -24,8 +24,11 @@ rolling on its rim falls below the critical spin of a rolling disc, Ω_c² = m g
 m r²)) (O'Reilly 1996), and rolls on upright above it (tests/test_contact_phase.py). The rim is:
 modelled as a flat band with sharp corners, it gives a nickel a static edge well arctan(h/2r) =
 5.3° wide, which holds a coin rolling slowly upright until the rolling resistance stops it,
-where a thin disc falls (the same test). A rim with rounded corners (corner radius a: a well
-arctan((h/2 − a)/(r − a)) wide, none for a = h/2) is the missing, unmeasured parameter.
+where a thin disc falls (the same test). Rounded corners (``Contact.build(corner_radius=a)``,
+experimental and core only: the rim circles are those of a cylinder (r − a, h/2 − a) swept by
+a ball of radius a, the edge well arctan((h/2 − a)/(r − a)) wide, none for a = h/2) take the
+edges away, but how fast depends on a and on the resistances, none of them measured for a
+coin (``python benchmarks/bench_bounce.py --contact N`` prints the table).
 
 The state is the height z of the centre of mass, its velocity v, the heads normal n and the
 angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not
@@ -33,9 +36,10 @@ enter the contact of a cylinder with a plane, and neither does the horizontal po
 
 The contact model (compliant)
 -----------------------------
-A compliant (penalty) contact rather than a constrained one (issue 11 allows either): rolling, sliding, pivoting,
-rocking, two-point and face contact and short hops then follow from one force law, with no
-list of contact modes, no complementarity problem and no Painlevé inconsistencies to resolve
+A compliant (penalty) contact rather than a constrained one (issue 11 allows either):
+rolling, sliding, pivoting, rocking, two-point and face contact and short hops then follow from
+one force law, with no list of contact modes, no complementarity problem and no Painlevé
+inconsistencies to resolve
 (the price: stiff equations, integrated with small steps). The coin touches the plane with the
 two circles of its rims (the lowest points of a cylinder always lie on them). A rim circle
 σ = ±1 (heads, tails), centre σ (h/2) n from the centre of mass, has at the angle φ from its
@@ -154,7 +158,7 @@ def _tangent_basis(n):
 
 
 @njit(cache=True)
-def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta):
+def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):
     """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
 
     Parameters
@@ -167,6 +171,10 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         The coin: r, h/2, m, I1, I3.
     stiffness, zeta : float
         κ (N/m per radian of rim) and the damping ratio ζ (see the module notes).
+    corner : float
+        a, the radius of the rim's rounded corners, m: the circle is then that of the core
+        cylinder (``radius`` and ``hh`` less a) swept by a ball of radius a, which touches the
+        table a below the circle (0: sharp corners).
 
     Returns
     -------
@@ -181,7 +189,9 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         Elastic energy of the arc, κ ∫ d²/2 dφ, J.
     """
     s, w = _tangent_basis(n)
-    a = -z - sigma * hh * n[2]
+    radius -= corner
+    hh -= corner
+    a = corner - z - sigma * hh * n[2]
     b = radius * s
     if a + b <= 0.0:
         return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
@@ -204,7 +214,7 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
     centroid = (
         sigma * hh * n[0] + k * w[0],
         sigma * hh * n[1] + k * w[1],
-        sigma * hh * n[2] + k * w[2],
+        sigma * hh * n[2] + k * w[2] - corner,
     )
     up = (0.0, 0.0, 1.0)
     m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
@@ -218,7 +228,7 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
     q = (
         sigma * hh * n[0] + kq * w[0],
         sigma * hh * n[1] + kq * w[1],
-        sigma * hh * n[2] + kq * w[2],
+        sigma * hh * n[2] + kq * w[2] - corner,
     )
     ratio = sp / phi
     pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
@@ -241,7 +251,7 @@ def _derivative(y, out, c, stiffness, zeta):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     for sigma in (lower, -lower):
         fn, q, rt, _ = rim_contact(
-            sigma, y[0], v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
+            sigma, y[0], v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, c.corner_radius
         )
         if fn <= 0.0:
             continue
@@ -293,7 +303,19 @@ def energy(y, c, stiffness):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     for sigma in (lower, -lower):
         _, _, _, spring = rim_contact(
-            sigma, y[0], v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiffness, 0.0
+            sigma,
+            y[0],
+            v,
+            n,
+            omega,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            stiffness,
+            0.0,
+            c.corner_radius,
         )
         e += spring
     return e
