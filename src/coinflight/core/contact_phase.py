@@ -39,10 +39,10 @@ The contact model (compliant)
 A compliant (penalty) contact rather than a constrained one (issue 11 allows either):
 rolling, sliding, pivoting, rocking, two-point and face contact and short hops then follow from
 one force law, with no list of contact modes, no complementarity problem and no Painlevé
-inconsistencies to resolve
-(the price: stiff equations, integrated with small steps). The coin touches the plane with the
-two circles of its rims (the lowest points of a cylinder always lie on them). A rim circle
-σ = ±1 (heads, tails), centre σ (h/2) n from the centre of mass, has at the angle φ from its
+inconsistencies to resolve (the price: stiff equations, integrated with small steps). The coin
+touches the plane with the two circles of its rims (the lowest points of a cylinder always lie
+on them; with rounded corners, the circles of the core cylinder, a lower). A rim circle σ = ±1
+(heads, tails), centre σ (h/2) n from the centre of mass, has at the angle φ from its
 lowest point the penetration
 
     d(φ) = A + B cos φ,   A = −z − σ (h/2) n_z,   B = r s,   s = sqrt(1 − n_z²),
