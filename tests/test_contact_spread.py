@@ -268,11 +268,11 @@ def test_surface_presets_carry_their_ranges_and_sources():
     from coinflight.studies.presets import SURFACE_PRESETS, surface_preset
 
     wood = surface_preset("coin-on-wood")
-    # Module notes of coinflight.studies.presets: e 0.3-0.6 (Strzałko et al. 2008; Pletser
-    # 2022), μ 0.2-0.6 (Engineering ToolBox, wood on metal, clean and dry).
+    # Module notes of coinflight.studies.presets: e 0.3-0.6 (a band around Pletser 2022's
+    # assumed 0.5), μ 0.2-0.6 (Engineering ToolBox, wood on metal, clean and dry, static).
     assert wood.restitution == Uniform(0.3, 0.6) and wood.friction == Uniform(0.2, 0.6)
     table = surface_preset("coin-on-table")
-    assert table.friction == Uniform(0.05, 0.5)  # Pletser 2022 (0.05) to Strzałko et al. (0.5)
+    assert table.friction == Uniform(0.05, 0.5)  # Pletser 2022 (0.05) to our upper bound 0.5
     for p in SURFACE_PRESETS.values():
         assert set(p.sources) == {"restitution", "friction"}
         for name, d in p.contact.items():

@@ -30,7 +30,8 @@ for e in (0.2, 0.4, 0.6):
 #
 # P(heads) and P(edge) as a band over e and μ
 # -------------------------------------------
-# Published simulations use e ≈ 0.3-0.6 and μ ≈ 0.2-0.5 (Strzałko et al. 2008; Pletser 2022);
+# Pletser (2022) assumes e = 0.5 and μ = 0.05 for a 50-eurocent coin; tables give μ 0.2-0.6 for
+# the static friction of metal on dry wood; nobody has measured either for a coin;
 # we take e ∈ [0.2, 0.6] and μ ∈ [0.1, 1] and estimate the probabilities on a 3 × 3 grid of
 # them, with the same random tosses (seed 1) for each pair so that the differences are the
 # surface's, not the sampling's.

@@ -24,10 +24,12 @@ AIR_DENSITY = 1.2
 """Density of air at 20 °C and sea level, kg/m³ (ISO 2533 standard atmosphere: 1.204)."""
 
 DEFAULT_RESTITUTION = 0.5
-"""Coefficient of restitution of a coin on a wooden table (Strzałko et al. 2008 use 0.2-0.8)."""
+"""Coefficient of restitution of a coin on a wooden table: 0.5, the value Pletser (2022,
+Foundations, doi:10.3390/foundations2030039) assumes; not measured for coins."""
 
 DEFAULT_FRICTION = 0.3
-"""Coulomb friction coefficient of metal on wood (Strzałko et al. 2008 use 0.1-0.5)."""
+"""Coulomb friction coefficient of metal on wood: 0.3, inside the 0.2-0.6 static range tabulated
+for wood on metal, clean and dry (Engineering ToolBox); not measured for coins."""
 
 DEFAULT_ROLLING_RESISTANCE = 1e-4
 """Rolling resistance ℓ_r of a coin's rim on a table, m: an assumption. No source measures it

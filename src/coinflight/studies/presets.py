@@ -39,17 +39,18 @@ point.
 ==============  ===========  ============  =========================================================
 preset          restitution  friction      sources
 ==============  ===========  ============  =========================================================
-coin-on-wood    0.3–0.6      0.2–0.6       e: the range of the published coin-toss simulations of a
-                                           coin on wood or a table top (Strzałko, Grabski,
-                                           Stefański, Perlikowski & Kapitaniak 2008, Phys. Rep.
-                                           469:59; Pletser 2022, Foundations 2(3):39, e = 0.5).
-                                           μ: wood on metal, clean and dry, 0.2–0.6 (Engineering
-                                           ToolBox, "Friction and Friction Coefficients",
-                                           engineeringtoolbox.com/friction-coefficients-d_778.html).
-coin-on-table   0.3–0.6      0.05–0.5      e: as above. μ: from the smooth table top Pletser (2022)
-                                           assumes for a 50-eurocent coin (0.05) to the top of the
-                                           range used in published coin-toss simulations (0.5;
-                                           Strzałko et al. 2008).
+coin-on-wood    0.3–0.6      0.2–0.6       e: our band around the single value e = 0.5 that
+                                           Pletser (2022, Foundations, doi:10.3390/
+                                           foundations2030039, §2.2) assumes for a 50-eurocent
+                                           coin; no measured value for a coin is known to us.
+                                           μ: wood on metal, clean and dry, static, 0.2–0.6
+                                           (Engineering ToolBox, "Friction and Friction
+                                           Coefficients", engineeringtoolbox.com/
+                                           friction-coefficients-d_778.html).
+coin-on-table   0.3–0.6      0.05–0.5      e: as above. μ: from the 0.05 Pletser (2022, §2.2)
+                                           assumes for a 50-eurocent coin to 0.5, our choice of
+                                           an upper bound (no source we found measures a coin
+                                           on a laminate or varnished top).
 ==============  ===========  ============  =========================================================
 """
 
@@ -217,9 +218,9 @@ class SurfacePreset:
 
 
 _RESTITUTION_SOURCE = (
-    "0.3-0.6: the range of published coin-toss simulations of a coin on wood or a table top "
-    "(Strzałko, Grabski, Stefański, Perlikowski & Kapitaniak 2008, Phys. Rep. 469:59; "
-    "Pletser 2022, Foundations 2(3):39, e = 0.5); not measured for coins"
+    "0.3-0.6: our band around e = 0.5, the value Pletser (2022, Foundations, "
+    "doi:10.3390/foundations2030039, §2.2) assumes for a 50-eurocent coin; "
+    "not measured for coins"
 )
 
 SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
@@ -231,8 +232,8 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
             MappingProxyType(
                 {
                     "restitution": _RESTITUTION_SOURCE,
-                    "friction": "0.2-0.6: wood on metal, clean and dry (Engineering ToolBox, "
-                    "'Friction and Friction Coefficients', "
+                    "friction": "0.2-0.6: wood on metal, clean and dry, static "
+                    "(Engineering ToolBox, 'Friction and Friction Coefficients', "
                     "engineeringtoolbox.com/friction-coefficients-d_778.html)",
                 }
             ),
@@ -244,9 +245,9 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
             MappingProxyType(
                 {
                     "restitution": _RESTITUTION_SOURCE,
-                    "friction": "0.05-0.5: from the smooth surface Pletser (2022, Foundations "
-                    "2(3):39) assumes for a 50-eurocent coin (0.05) to the top of the range of "
-                    "published coin-toss simulations (0.5; Strzałko et al. 2008)",
+                    "friction": "0.05-0.5: from the 0.05 Pletser (2022, Foundations, "
+                    "doi:10.3390/foundations2030039, §2.2) assumes for a 50-eurocent coin "
+                    "to 0.5, our upper bound; not measured for coins",
                 }
             ),
         ),
