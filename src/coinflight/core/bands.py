@@ -321,3 +321,49 @@ def same_side_normal_time(
         lo = (TWO_PI * mm - aa[:, None]) * inv - mean / sd
         out[direct] = np.sum(ndtr(hi) - ndtr(lo), axis=-1)
     return out
+
+
+def circle_in_box_angle(rho: ArrayLike, x1: float, x2: float, y1: float, y2: float) -> FloatArray:
+    """Angle (rad) of the circle of radius ``rho`` about the origin that lies in the box
+    [x1, x2] × [y1, y2].
+
+    The box is cut into its parts in the four quadrants, each reflected into the first one,
+    [p1, p2] × [q1, q2] with 0 ≤ p1, 0 ≤ q1; there the circle's angles with p1 ≤ ρ cos φ ≤ p2
+    form [arccos(p2/ρ), arccos(p1/ρ)] and those with q1 ≤ ρ sin φ ≤ q2 form
+    [arcsin(q1/ρ), arcsin(q2/ρ)] (ratios capped at 1), and the part's angle is the overlap of
+    the two. Times ρ / area, it is the density of Ω⊥ = √(ωx² + ωy²) for uniform ωx, ωy (the
+    polar-coordinates Jacobian). Continuous in ρ, smooth except at the radii of the box's
+    corners and where the circle touches a side's line (ρ = p or q, a square-root onset).
+    """
+    r = np.asarray(rho, dtype=float)
+    safe = np.where(r > 0.0, r, 1.0)
+    total = np.zeros_like(r)
+    xs = [(max(x1, 0.0), x2)] if x2 > 0.0 else []
+    xs += [(max(-x2, 0.0), -x1)] if x1 < 0.0 else []
+    ys = [(max(y1, 0.0), y2)] if y2 > 0.0 else []
+    ys += [(max(-y2, 0.0), -y1)] if y1 < 0.0 else []
+    for p1, p2 in xs:
+        for q1, q2 in ys:
+            if p2 <= p1 or q2 <= q1:
+                continue
+            lo = np.maximum(
+                np.arccos(np.minimum(p2 / safe, 1.0)), np.arcsin(np.minimum(q1 / safe, 1.0))
+            )
+            hi = np.minimum(
+                np.arccos(np.minimum(p1 / safe, 1.0)), np.arcsin(np.minimum(q2 / safe, 1.0))
+            )
+            total = total + np.maximum(hi - lo, 0.0)
+    return np.where(r > 0.0, total, 0.0)
+
+
+def gap_half_width(cot2_psi: Any) -> Any:
+    """Half-width b = π − a = arccos(cot²ψ) of the phase gaps (2m + 1)π ± b in which the coin
+    shows the other face (a from :func:`half_width`); 0 when ψ ≤ 45° (no gap).
+
+    Notes
+    -----
+    n(T)·n0 < 0 ⇔ cos(ωp T) < −cot²ψ (Diaconis, Holmes & Montgomery 2007, section 2): the
+    phases within arccos(cot²ψ) of an odd multiple of π. Near ψ = 45° it is a square root,
+    b ≈ √(2 (1 − cot²ψ)).
+    """
+    return np.arccos(np.minimum(cot2_psi, 1.0))

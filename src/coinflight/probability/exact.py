@@ -690,6 +690,425 @@ def _gauss_spins(
     )
 
 
+# --- T fixed or uniform, any spins: the spins in (Ω, ψ) coordinates -------------------------
+
+POLAR_ORDERS = (8, 12, 16, 24, 32)
+"""Gauss–Legendre nodes per panel tried in turn by the (Ω, ψ) rule (:func:`_omega_psi`); the
+result is the first whose change from the previous order is within :data:`TOLERANCE`."""
+MAX_POLAR_POINTS = 4e7
+"""Most integrand points the (Ω, ψ) rule may evaluate over its first two orders and each later
+one, bounded before its nodes are allocated (about half a minute on the 2-core machine)."""
+POLAR_POINTS_PER_SECOND = 3e6
+"""Integrand points the (Ω, ψ) rule evaluates a second (2-core machine)."""
+MAX_CROSSING_SAMPLES = 5e7
+"""Most curve-pair samples the search for the outer cuts of the (Ω, ψ) rule may take."""
+_CROSSING_SAMPLES = 257
+"""Samples along ψ (equal steps in √(ψ − 45°)) on which each pair of curves is searched for a
+crossing (a sign change, then bisection)."""
+_PSI_PANEL = 0.05
+"""Widest outer panel in ψ, rad."""
+_POLAR_CHUNK = 1 << 18
+"""Integrand points evaluated at once by the (Ω, ψ) rule."""
+_QUARTER = math.pi / 4
+
+
+class _Radial:
+    """The distribution of Ω⊥ = √(ωx² + ωy²) (the plane) or of A = (I3/I1) |ω_z| (axial):
+    an atom at ``value`` (``density`` None), or a density on [lo, hi] = the first and last of
+    ``breaks``, smooth between consecutive breaks (where it may have a square-root onset or a
+    jump)."""
+
+    def __init__(
+        self,
+        density: Callable[[np.ndarray], np.ndarray] | None,
+        breaks: list[float] | None = None,
+        value: float = math.nan,
+    ) -> None:
+        self.density = density
+        self.value = value
+        b = np.unique(np.asarray(breaks if breaks is not None else [value], dtype=float))
+        self.breaks = b
+        self.lo, self.hi = float(b[0]), float(b[-1])
+
+
+def _folded(d: Distribution) -> tuple[list[float], float, float]:
+    """Breaks, lowest and highest value of |X| for a ranged spin X (its support folded onto
+    [0, ∞)); a normal's breaks every 1.5 sd so that no panel is wider than its density's
+    scale."""
+    s1, s2 = _support(d)
+    pts = [s1, s2]
+    if isinstance(d, Normal):
+        pts = list(d.mean + d.sd * np.arange(-_NORMAL_SPAN, _NORMAL_SPAN + 0.1, 1.5))
+    if s1 < 0.0 < s2:
+        pts.append(0.0)
+    folded = [abs(p) for p in pts]
+    lo = 0.0 if s1 <= 0.0 <= s2 else min(abs(s1), abs(s2))
+    return folded, lo, max(abs(s1), abs(s2))
+
+
+def _axial(dz: Distribution, ratio: float) -> _Radial:
+    """A = (I3/I1) |ω_z|: its density on A ≥ 0 is (p(A/ratio) + p(−A/ratio)) / ratio."""
+    if dz.is_fixed:
+        return _Radial(None, value=ratio * abs(dz.mean))
+    folded, _, _ = _folded(dz)
+
+    def density(a: np.ndarray) -> np.ndarray:
+        z = a / ratio
+        return (_pdf(dz, z) + _pdf(dz, -z)) / ratio
+
+    return _Radial(density, [ratio * f for f in folded])
+
+
+def _plane(dx: Distribution, dy: Distribution) -> _Radial | None:
+    """Ω⊥ = √(ωx² + ωy²): an atom when both are fixed; for one fixed at c and the other y
+    ranged, the density (p(s) + p(−s)) ρ / s, s = √(ρ² − c²) (an inverse square root at
+    ρ = |c|); for two uniform ranges, ρ times the circle's angle in the box over its area
+    (:func:`coinflight.core.bands.circle_in_box_angle`). None (not handled) for two ranged
+    components of which one is normal."""
+    if dx.is_fixed and dy.is_fixed:
+        return _Radial(None, value=math.hypot(dx.mean, dy.mean))
+    if dx.is_fixed or dy.is_fixed:
+        c, d = (dx.mean, dy) if dx.is_fixed else (dy.mean, dx)
+        folded, _, _ = _folded(d)
+
+        def one(rho: np.ndarray) -> np.ndarray:
+            s = np.sqrt(np.maximum(rho * rho - c * c, 0.0))
+            safe = np.where(s > 0.0, s, 1.0)
+            return np.where(s > 0.0, (_pdf(d, s) + _pdf(d, -s)) * rho / safe, 0.0)
+
+        return _Radial(one, [math.hypot(c, f) for f in folded])
+    if not (isinstance(dx, Uniform) and isinstance(dy, Uniform)):
+        return None
+    x1, x2, y1, y2 = dx.low, dx.high, dy.low, dy.high
+    area = (x2 - x1) * (y2 - y1)
+
+    def box(rho: np.ndarray) -> np.ndarray:
+        return rho * bands.circle_in_box_angle(rho, x1, x2, y1, y2) / area
+
+    near = math.hypot(
+        0.0 if x1 <= 0.0 <= x2 else min(abs(x1), abs(x2)),
+        0.0 if y1 <= 0.0 <= y2 else min(abs(y1), abs(y2)),
+    )
+    far = max(math.hypot(x, y) for x in (x1, x2) for y in (y1, y2))
+    pts = [near, far, *(math.hypot(x, y) for x in (x1, x2) for y in (y1, y2))]
+    pts += [abs(e) for e in (x1, x2, y1, y2)]
+    return _Radial(box, [p for p in pts if near <= p <= far])
+
+
+def _times(t: Distribution) -> tuple[float, float]:
+    """(T1, T2) of a uniform flight time, (T, T) of a fixed one."""
+    return (t.value, t.value) if isinstance(t, Fixed) else (t.low, t.high)  # type: ignore[attr-defined]
+
+
+def _curves(kind: np.ndarray, p: np.ndarray, sgn: np.ndarray, t: np.ndarray, psi: Any) -> Any:
+    """Ω along the curves of the (Ω, ψ) plane where the integrand changes form, at ψ:
+    kind 0, a band edge Ω = ((2j + 1)π ± b(ψ)) / T (p = (2j + 1)π, sgn = ±1, b from
+    :func:`coinflight.core.bands.gap_half_width`); kind 1, a circle Ω⊥ = p, Ω = p / sin ψ;
+    kind 2, a plane A = p, Ω = p / cos ψ. Broadcasts."""
+    s, c = np.sin(psi), np.cos(psi)
+    b = bands.gap_half_width((c / s) ** 2)
+    with np.errstate(divide="ignore"):
+        axial = p / c
+    return np.where(kind == 0, (p + sgn * b) / t, np.where(kind == 1, p / s, axial))
+
+
+def _edges(times: tuple[float, float], om_lo: float, om_hi: float) -> tuple[np.ndarray, ...]:
+    """The band-edge curves (kind, p, sgn, T) that may meet Ω in [om_lo, om_hi]."""
+    cols: list[list[float]] = [[], [], [], []]
+    for t in sorted(set(times)):
+        j = np.arange(
+            max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi))),
+            max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi))) + 1,
+        )
+        for sgn in (-1.0, 1.0):
+            cols[0] += [0.0] * j.size
+            cols[1] += list((2 * j + 1) * math.pi)
+            cols[2] += [sgn] * j.size
+            cols[3] += [t] * j.size
+    return tuple(np.asarray(c, dtype=float) for c in cols)
+
+
+def _stack(*curves: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
+    """Curve tables (kind, p, sgn, T) joined."""
+    return tuple(np.concatenate([c[i] for c in curves]) for i in range(4))
+
+
+def _box(kind: int, values: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Curve table of circles (kind 1) or planes (kind 2) at ``values``."""
+    vals = np.asarray(values, dtype=float)
+    return (np.full(vals.size, float(kind)), vals, np.zeros(vals.size), np.ones(vals.size))
+
+
+def _crossings(
+    first: tuple[np.ndarray, ...], second: tuple[np.ndarray, ...], psi_lo: float, psi_hi: float
+) -> np.ndarray:
+    """ψ in (psi_lo, psi_hi) where a curve of ``first`` crosses one of ``second``.
+
+    Each pair is sampled at :data:`_CROSSING_SAMPLES` points equally spaced in √(ψ − 45°)
+    (the band edges move like that square root near 45°); every sign change is bisected to
+    rounding. Pairs that cross twice between two samples are missed; the comparison of
+    successive Gauss orders judges what that leaves.
+    """
+    na, nb = first[0].size, second[0].size
+    if na == 0 or nb == 0 or psi_hi <= psi_lo:
+        return np.empty(0)
+    s = np.linspace(
+        math.sqrt(max(psi_lo - _QUARTER, 0.0)),
+        math.sqrt(max(psi_hi - _QUARTER, 0.0)),
+        _CROSSING_SAMPLES,
+    )
+    psi = _QUARTER + s * s
+    fb = _curves(*(c[:, None] for c in second), psi)
+    roots = []
+    step = max(1, int(4e6 // (nb * s.size)))
+    for start in range(0, na, step):
+        part = tuple(c[start : start + step] for c in first)
+        fa = _curves(*(c[:, None] for c in part), psi)
+        with np.errstate(invalid="ignore"):
+            d = fa[:, None, :] - fb[None, :, :]
+        pos = d > 0.0
+        ok = np.isfinite(d)
+        change = (pos[..., :-1] != pos[..., 1:]) & ok[..., :-1] & ok[..., 1:]
+        ia, ib, m = np.nonzero(change)
+        if ia.size == 0:
+            continue
+        lo, hi = s[m], s[m + 1]
+        sign_lo = pos[ia, ib, m]
+        ca = tuple(c[ia] for c in part)
+        cb = tuple(c[ib] for c in second)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            pm = _QUARTER + mid * mid
+            with np.errstate(invalid="ignore"):
+                same = (_curves(*ca, pm) - _curves(*cb, pm) > 0.0) == sign_lo
+            lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+        roots.append(_QUARTER + (0.5 * (lo + hi)) ** 2)
+    return np.concatenate(roots) if roots else np.empty(0)
+
+
+def _smooth_rule(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss–Legendre with ``n`` nodes on each panel between consecutive ``ends`` (last axis),
+    through the smoothstep x = a + (b − a)(3u² − 2u³): its slope vanishes at both ends, so
+    that a square root or inverse square root at a panel's end (the gap's width at ψ = 45°, a
+    circle touching a side of the box, a fixed ωx) becomes smooth in u."""
+    g, gw = np.polynomial.legendre.leggauss(n)
+    u, wu = 0.5 * (g + 1.0), 0.5 * gw
+    lo, hi = ends[..., :-1, None], ends[..., 1:, None]
+    width = hi - lo
+    x = lo + width * (u * u * (3.0 - 2.0 * u))
+    w = width * (6.0 * u * (1.0 - u) * wu)
+    shape = (*ends.shape[:-1], -1)
+    return x.reshape(shape), w.reshape(shape)
+
+
+def _panels(cuts: np.ndarray, lo: float, hi: float, width: float = _PSI_PANEL) -> np.ndarray:
+    """Panel ends: ``cuts`` inside (lo, hi) with lo and hi, each gap cut to at most ``width``."""
+    pts = np.unique(np.concatenate(([lo, hi], cuts[(cuts > lo) & (cuts < hi)])))
+    out = [pts[:1]]
+    for a, b in itertools.pairwise(pts):
+        out.append(np.linspace(a, b, max(1, math.ceil((b - a) / width)) + 1)[1:])
+    return np.concatenate(out)
+
+
+def _turning(om: np.ndarray, a: np.ndarray, times: tuple[float, float]) -> np.ndarray:
+    """1 − P(same side) at rate Ω and band half-width a over the flight times: the fraction of
+    T uniform on [T1, T2] (:func:`coinflight.core.bands.time_average_uniform`), or whether
+    the one T, puts Ω T in a gap."""
+    t1, t2 = times
+    if t1 == t2:
+        return (~bands.in_band(om * t1, a)).astype(float)
+    return 1.0 - bands.time_average_uniform(om, a, t1, t2)
+
+
+class _PolarPlan:
+    """The (Ω, ψ) integral of a case: its outer panel ends, and per order its points."""
+
+    def __init__(self, dist: TossDistribution) -> None:
+        i1, i3 = dist.moments
+        self.ratio = i3 / i1
+        self.times = _times(dist.flight_time)
+        plane = _plane(dist.omega_x, dist.omega_y)
+        assert plane is not None  # _omega_psi_applies
+        self.plane, self.axial = plane, _axial(dist.omega_z, self.ratio)
+        p, ax = self.plane, self.axial
+        self.empty = False
+        if p.density is None and ax.density is None:  # pragma: no cover - closed form in T
+            raise AssertionError("both atoms: the closed form in T")
+        if p.density is None:
+            self.kind = "plane fixed"
+            # Along Ω⊥ = p: ψ from where A reaches the top of its range (or Ω⊥) to its bottom.
+            psi_a = math.atan2(p.value, min(ax.hi, p.value))
+            psi_b = math.atan2(p.value, ax.lo)
+            curve = _box(1, np.array([p.value]))
+            om_hi = p.value / math.sin(psi_a)
+            fixed_cuts = np.arctan2(p.value, ax.breaks[ax.breaks > 0.0])
+        elif ax.density is None and ax.value > 0.0:
+            self.kind = "axial fixed"
+            # Along A = value: ψ from where Ω⊥ reaches A (or its range's bottom) to its top.
+            psi_a = math.atan2(max(p.lo, ax.value), ax.value)
+            psi_b = math.atan2(p.hi, ax.value)
+            curve = _box(2, np.array([ax.value]))
+            om_hi = math.hypot(p.hi, ax.value)
+            fixed_cuts = np.arctan2(p.breaks, ax.value)
+        elif ax.density is None:
+            self.kind = "diameter"  # ω_z = 0: ψ = 90°, Ω = Ω⊥, the gaps' half-width π/2
+            edges = _edges(self.times, p.lo, p.hi)
+            cuts = (edges[1] + edges[2] * 0.5 * math.pi) / edges[3]
+            self.ends = _panels(np.concatenate((cuts, p.breaks)), p.lo, p.hi, math.inf)
+            return
+        else:
+            self.kind = "2-D"
+            psi_a, psi_b = _QUARTER, 0.5 * math.pi
+            om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
+            self.edges = _edges(self.times, p.lo, om_hi)
+            circles, planes = _box(1, p.breaks), _box(2, ax.breaks[ax.breaks > 0.0])
+            self.box_curves = _stack(circles, planes)
+            self._bound_crossings(self.edges[0].size * self.box_curves[0].size)
+            cuts = np.concatenate(
+                (
+                    _crossings(self.edges, self.box_curves, psi_a, psi_b),
+                    _crossings(circles, planes, psi_a, psi_b),
+                )
+            )
+            self.ends = _panels(cuts, psi_a, psi_b)
+            self.inner = self.edges[0].size + self.box_curves[0].size + 1
+            return
+        if psi_b <= psi_a:
+            self.empty = True
+            return
+        edges = _edges(self.times, 0.0, om_hi)
+        self._bound_crossings(edges[0].size)
+        cuts = np.concatenate((_crossings(edges, curve, psi_a, psi_b), fixed_cuts))
+        self.ends = _panels(cuts, psi_a, psi_b)
+
+    def _bound_crossings(self, pairs: int) -> None:
+        v.work_bound(
+            "the exact (Ω, ψ) rule's search for where band edges cross the spin box",
+            float(pairs) * _CROSSING_SAMPLES,
+            MAX_CROSSING_SAMPLES,
+            "curve samples",
+            _USE_INSTEAD,
+            rate=POLAR_POINTS_PER_SECOND * 10,
+        )
+
+    def points(self, n: int) -> int:
+        """Integrand points of order ``n``, counted before any allocation."""
+        if self.empty:
+            return 0
+        outer = (self.ends.size - 1) * n
+        return outer * self.inner * n if self.kind == "2-D" else outer
+
+    def integral(self, n: int) -> float:
+        """∫ of the density times 1 − P(same side | spins) over the spins, order ``n``."""
+        if self.empty:
+            return 0.0
+        p, ax, times, ratio = self.plane, self.axial, self.times, self.ratio
+        x, w = _smooth_rule(self.ends, n)
+        if self.kind == "diameter":
+            assert p.density is not None
+            return math.fsum(w * p.density(x) * _turning(x, np.full_like(x, 0.5 * math.pi), times))
+        s, c = np.sin(x), np.cos(x)
+        a = bands.half_width((c / s) ** 2)
+        if self.kind == "plane fixed":
+            assert ax.density is not None
+            r0 = p.value
+            om, axial = r0 / s, r0 * c / s
+            g = ax.density(axial) * _turning(om, a, times) * r0 / (s * s)
+            return math.fsum(w * g)
+        if self.kind == "axial fixed":
+            assert p.density is not None
+            a0 = ax.value
+            om, rho = a0 / c, a0 * s / c
+            g = p.density(rho) * _turning(om, a, times) * a0 / (c * c)
+            return math.fsum(w * g)
+        assert p.density is not None and ax.density is not None
+        total = []
+        rows = max(1, _POLAR_CHUNK // (self.inner * n))
+        for start in range(0, x.size, rows):
+            sl = slice(start, start + rows)
+            ss, cc, aa = s[sl, None], c[sl, None], a[sl, None]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                lo = np.maximum(p.lo / ss, np.where(ax.lo > 0.0, ax.lo / cc, 0.0))
+                hi = np.minimum(p.hi / ss, ax.hi / cc)
+            hi = np.maximum(hi, lo)
+            brk = _curves(*(q[None, :] for q in self.box_curves), x[sl, None])
+            edge = _curves(*(q[None, :] for q in self.edges), x[sl, None])
+            ends = np.sort(np.clip(np.concatenate((lo, edge, brk, hi), axis=1), lo, hi), axis=1)
+            om, wo = _smooth_rule(ends, n)
+            val = p.density(om * ss) * ax.density(om * cc) * om * _turning(om, aa, times)
+            total.append(math.fsum((w[sl, None] * wo * val).ravel()))
+        return math.fsum(total)
+
+
+def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
+    """T fixed or uniform, some spin ranged (uniform or normal), the plane's density known."""
+    return (
+        isinstance(dist.flight_time, Fixed | Uniform)
+        and bool(ranged)
+        and all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
+        and _plane(dist.omega_x, dist.omega_y) is not None
+    )
+
+
+def _omega_psi(dist: TossDistribution, ranged: list[str], details: _Details) -> tuple[float, float]:
+    """Band measure over T in closed form, Gauss–Legendre over the spins in (Ω, ψ).
+
+    P(same side | spins) depends on the spins through Ω = √(Ω⊥² + A²) and ψ with
+    cot ψ = A / Ω⊥, A = (I3/I1) ω_z, Ω⊥ = √(ωx² + ωy²) (Diaconis, Holmes & Montgomery 2007,
+    section 2): the coin shows the other face iff Ω T lies in a gap (2j + 1)π ± b(ψ),
+    b = arccos(cot²ψ), only for ψ > 45°. With the density of Ω⊥ (:func:`_plane`, the azimuth
+    integrated out) and of A (:func:`_axial`, ω_z's sign folded), 1 − P(same side) is
+
+        ∫ dψ ∫ dΩ  (Ω / ratio)·p⊥(Ω sin ψ)·p_A(Ω cos ψ)·(1 − P(same | Ω, ψ))
+
+    over ψ ∈ (45°, 90°], the Jacobian of (Ω⊥, ω_z) → (Ω, ψ) being Ω / ratio (the ratio's
+    1/ratio is in p_A). For fixed ψ every place where the integrand changes form is explicit
+    in Ω: the band edges ((2j + 1)π ± b(ψ)) / T1,2 (1 − P is linear in Ω T between them,
+    for T uniform: Keller 1986), the radii where p⊥ has a kink (corners of a uniform box, a
+    side's tangent circle) over sin ψ, and the ends of ω_z's range over cos ψ. The inner
+    integral over Ω is cut at all of them; the outer one over ψ at 45°, 90° and where two of
+    these curves cross (:func:`_crossings`). Each panel takes Gauss–Legendre through a
+    smoothstep (:func:`_smooth_rule`), which makes the square roots at ψ = 45° and at a
+    tangent circle smooth. With one of Ω⊥, A fixed the integral is over ψ along one curve.
+    Orders :data:`POLAR_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`.
+    """
+    plan = _PolarPlan(dist)
+    details["spin integral"] = plan.kind
+    previous, previous_n, change, used = math.nan, 0, math.nan, 0
+    v.work_bound(
+        f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins",
+        sum(plan.points(n) for n in POLAR_ORDERS[:2]),
+        MAX_POLAR_POINTS,
+        "integrand points",
+        _USE_INSTEAD,
+        rate=POLAR_POINTS_PER_SECOND,
+    )
+    for n in POLAR_ORDERS:
+        points = plan.points(n)
+        where = f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins" + (
+            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
+            f"to {n} nodes a panel,"
+            if math.isfinite(change)
+            else ""
+        )
+        v.work_bound(
+            where, used + points, 2 * MAX_POLAR_POINTS, "integrand points", _USE_INSTEAD,
+            rate=POLAR_POINTS_PER_SECOND,
+        )  # fmt: skip
+        used += points
+        value = 1.0 - plan.integral(n)
+        change = abs(value - previous)
+        if change <= TOLERANCE:
+            details["nodes per panel"] = n
+            details["integrand points"] = used
+            return value, max(change, 4e-16 * math.sqrt(max(points, 1)))
+        previous, previous_n = value, n
+    raise ValueError(
+        f"the exact (Ω, ψ) rule did not reach its tolerance {TOLERANCE:g} with "
+        f"{POLAR_ORDERS[-1]} nodes per panel (last change {change:.2g}); {_USE_INSTEAD}"
+    )
+
+
 _CASES: tuple[
     tuple[
         str,
@@ -709,6 +1128,11 @@ _CASES: tuple[
         "closed form in T, Gauss product rule over the spins split at ψ = 45°",
         _gauss_applies,
         _gauss_spins,
+    ),
+    (
+        "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)",
+        _omega_psi_applies,
+        _omega_psi,
     ),
     (
         "closed form in T, quadrature over the spins",
