@@ -733,12 +733,12 @@ class _Radial:
 
 def _folded(d: Distribution) -> tuple[list[float], float, float]:
     """Breaks, lowest and highest value of |X| for a ranged spin X (its support folded onto
-    [0, ∞)); a normal's breaks every 1.5 sd so that no panel is wider than its density's
-    scale."""
+    [0, ∞)); a normal's also at its mean and ±3 sd, so that no panel is much wider than its
+    density's scale."""
     s1, s2 = _support(d)
     pts = [s1, s2]
     if isinstance(d, Normal):
-        pts = list(d.mean + d.sd * np.arange(-_NORMAL_SPAN, _NORMAL_SPAN + 0.1, 1.5))
+        pts = list(d.mean + d.sd * np.array([-_NORMAL_SPAN, -3.0, 0.0, 3.0, _NORMAL_SPAN]))
     if s1 < 0.0 < s2:
         pts.append(0.0)
     folded = [abs(p) for p in pts]
@@ -759,12 +759,13 @@ def _axial(dz: Distribution, ratio: float) -> _Radial:
     return _Radial(density, [ratio * f for f in folded])
 
 
-def _plane(dx: Distribution, dy: Distribution) -> _Radial | None:
+def _plane(dx: Distribution, dy: Distribution) -> _Radial:
     """Ω⊥ = √(ωx² + ωy²): an atom when both are fixed; for one fixed at c and the other y
     ranged, the density (p(s) + p(−s)) ρ / s, s = √(ρ² − c²) (an inverse square root at
     ρ = |c|); for two uniform ranges, ρ times the circle's angle in the box over its area
-    (:func:`coinflight.core.bands.circle_in_box_angle`). None (not handled) for two ranged
-    components of which one is normal."""
+    (:func:`coinflight.core.bands.circle_in_box_angle`); for two ranged components of which
+    one is normal, an interpolant (:class:`_PlaneInterpolant`). Breaks: the support's ends,
+    the box's corner radii and the sides' distances (a circle's tangent)."""
     if dx.is_fixed and dy.is_fixed:
         return _Radial(None, value=math.hypot(dx.mean, dy.mean))
     if dx.is_fixed or dy.is_fixed:
@@ -777,14 +778,7 @@ def _plane(dx: Distribution, dy: Distribution) -> _Radial | None:
             return np.where(s > 0.0, (_pdf(d, s) + _pdf(d, -s)) * rho / safe, 0.0)
 
         return _Radial(one, [math.hypot(c, f) for f in folded])
-    if not (isinstance(dx, Uniform) and isinstance(dy, Uniform)):
-        return None
-    x1, x2, y1, y2 = dx.low, dx.high, dy.low, dy.high
-    area = (x2 - x1) * (y2 - y1)
-
-    def box(rho: np.ndarray) -> np.ndarray:
-        return rho * bands.circle_in_box_angle(rho, x1, x2, y1, y2) / area
-
+    (x1, x2), (y1, y2) = _support(dx), _support(dy)
     near = math.hypot(
         0.0 if x1 <= 0.0 <= x2 else min(abs(x1), abs(x2)),
         0.0 if y1 <= 0.0 <= y2 else min(abs(y1), abs(y2)),
@@ -792,7 +786,98 @@ def _plane(dx: Distribution, dy: Distribution) -> _Radial | None:
     far = max(math.hypot(x, y) for x in (x1, x2) for y in (y1, y2))
     pts = [near, far, *(math.hypot(x, y) for x in (x1, x2) for y in (y1, y2))]
     pts += [abs(e) for e in (x1, x2, y1, y2)]
-    return _Radial(box, [p for p in pts if near <= p <= far])
+    pts = sorted({p for p in pts if near <= p <= far})
+    if isinstance(dx, Uniform) and isinstance(dy, Uniform):
+        area = (x2 - x1) * (y2 - y1)
+
+        def box(rho: np.ndarray) -> np.ndarray:
+            return rho * bands.circle_in_box_angle(rho, x1, x2, y1, y2) / area
+
+        return _Radial(box, pts)
+    return _Radial(_PlaneInterpolant(dx, dy, pts), pts)
+
+
+class _PlaneInterpolant:
+    """Density of Ω⊥ = √(ωx² + ωy²) for two ranged spins of which one is normal:
+    W(ρ) = ρ ∫ p_x(ρ cos φ) p_y(ρ sin φ) dφ over the circle's arcs in the support box
+    (:func:`coinflight.core.bands.circle_in_box_arcs`), by composite Gauss–Legendre in φ at
+    Chebyshev points, and then a Chebyshev interpolant on each piece between consecutive
+    ``breaks`` (cut to at most 1.5 sd wide), in the smoothstep variable u of
+    ρ = a + (b − a)(3u² − 2u³) that makes the square-root onsets at a tangent side smooth.
+    Each piece is halved until its interpolant's last coefficients are below 1e-13 of W's
+    largest value (:func:`numpy.polynomial.chebyshev.chebinterpolate`)."""
+
+    DEGREE = 24
+    MAX_PIECES = 4000
+
+    def __init__(self, dx: Distribution, dy: Distribution, breaks: list[float]) -> None:
+        self.dx, self.dy = dx, dy
+        self.box = (*_support(dx), *_support(dy))
+        self.sd = min(d.sd for d in (dx, dy) if isinstance(d, Normal))
+        ends = _refine_width(np.asarray(breaks), 1.5 * self.sd)
+        pieces = list(itertools.pairwise(ends))
+        coefs = [self._fit(a, b) for a, b in pieces]
+        scale = max(np.max(np.abs(c)) for c in coefs)
+        done: list[tuple[float, float, np.ndarray]] = []
+        while pieces:
+            (a, b), c = pieces.pop(), coefs.pop()
+            if np.max(np.abs(c[-4:])) <= 1e-13 * scale or len(done) + len(pieces) > self.MAX_PIECES:
+                done.append((a, b, c))
+                continue
+            m = 0.5 * (a + b)
+            pieces += [(a, m), (m, b)]
+            coefs += [self._fit(a, m), self._fit(m, b)]
+        done.sort(key=lambda piece: piece[0])
+        self.starts = np.array([d[0] for d in done])
+        self.widths = np.array([d[1] - d[0] for d in done])
+        self.coefs = np.array([d[2] for d in done]).T.copy()  # (degree + 1, pieces)
+        self.lo, self.hi = float(ends[0]), float(ends[-1])
+
+    def _exact(self, rho: np.ndarray) -> np.ndarray:
+        """W at a few radii by Gauss–Legendre over each arc, panels at most sd / 4 long."""
+        out = np.zeros_like(rho)
+        g, gw = np.polynomial.legendre.leggauss(16)
+        for sx, sy, lo, hi in bands.circle_in_box_arcs(rho, *self.box):
+            panels = max(1, math.ceil(float(np.max(rho * (hi - lo))) / (0.25 * self.sd)))
+            k = np.arange(panels)
+            width = (hi - lo)[:, None] / panels
+            phi = lo[:, None] + width * (k[:, None] + 0.5 * (g + 1.0)).ravel()[None, :]
+            w = (0.5 * width) * np.tile(gw, panels)[None, :]
+            r = rho[:, None]
+            val = _pdf(self.dx, sx * r * np.cos(phi)) * _pdf(self.dy, sy * r * np.sin(phi))
+            out += rho * np.sum(w * val, axis=1)
+        return out
+
+    def _fit(self, a: float, b: float) -> np.ndarray:
+        def f(t: np.ndarray) -> np.ndarray:
+            u = 0.5 * (t + 1.0)
+            return self._exact(a + (b - a) * u * u * (3.0 - 2.0 * u))
+
+        return np.polynomial.chebyshev.chebinterpolate(f, self.DEGREE)
+
+    def __call__(self, rho: np.ndarray) -> np.ndarray:
+        r = np.asarray(rho, dtype=float)
+        inside = (r > self.lo) & (r < self.hi)
+        i = np.clip(np.searchsorted(self.starts, r, side="right") - 1, 0, self.starts.size - 1)
+        y = np.clip((r - self.starts[i]) / self.widths[i], 0.0, 1.0)
+        u = 0.5 - np.sin(np.arcsin(1.0 - 2.0 * y) / 3.0)  # the smoothstep's inverse
+        t = 2.0 * u - 1.0
+        c = self.coefs
+        # Clenshaw's recurrence, each point with its piece's coefficients.
+        b1 = np.zeros_like(t)
+        b2 = np.zeros_like(t)
+        t2 = 2.0 * t
+        for k in range(c.shape[0] - 1, 0, -1):
+            b1, b2 = t2 * b1 - b2 + c[k][i], b1
+        return np.where(inside, t * b1 - b2 + c[0][i], 0.0)
+
+
+def _refine_width(pts: np.ndarray, width: float) -> np.ndarray:
+    """``pts`` (sorted) with each gap cut into equal pieces at most ``width`` wide."""
+    out = [pts[:1]]
+    for a, b in itertools.pairwise(pts):
+        out.append(np.linspace(a, b, max(1, math.ceil((b - a) / width)) + 1)[1:])
+    return np.concatenate(out)
 
 
 def _times(t: Distribution) -> tuple[float, float]:
@@ -927,9 +1012,8 @@ class _PolarPlan:
         i1, i3 = dist.moments
         self.ratio = i3 / i1
         self.times = _times(dist.flight_time)
-        plane = _plane(dist.omega_x, dist.omega_y)
-        assert plane is not None  # _omega_psi_applies
-        self.plane, self.axial = plane, _axial(dist.omega_z, self.ratio)
+        self.plane = _plane(dist.omega_x, dist.omega_y)
+        self.axial = _axial(dist.omega_z, self.ratio)
         p, ax = self.plane, self.axial
         self.empty = False
         if p.density is None and ax.density is None:  # pragma: no cover - closed form in T
@@ -1002,7 +1086,7 @@ class _PolarPlan:
         """∫ of the density times 1 − P(same side | spins) over the spins, order ``n``."""
         if self.empty:
             return 0.0
-        p, ax, times, ratio = self.plane, self.axial, self.times, self.ratio
+        p, ax, times = self.plane, self.axial, self.times
         x, w = _smooth_rule(self.ends, n)
         if self.kind == "diameter":
             assert p.density is not None
@@ -1034,19 +1118,23 @@ class _PolarPlan:
             brk = _curves(*(q[None, :] for q in self.box_curves), x[sl, None])
             edge = _curves(*(q[None, :] for q in self.edges), x[sl, None])
             ends = np.sort(np.clip(np.concatenate((lo, edge, brk, hi), axis=1), lo, hi), axis=1)
-            om, wo = _smooth_rule(ends, n)
+            # Only the pieces of positive width (most curves lie outside a row's range).
+            keep = ends[:, 1:] > ends[:, :-1]
+            row = np.nonzero(keep)[0]
+            pieces = np.stack((ends[:, :-1][keep], ends[:, 1:][keep]), axis=-1)
+            om, wo = _smooth_rule(pieces, n)
+            ss, cc, aa = ss[row], cc[row], aa[row]
             val = p.density(om * ss) * ax.density(om * cc) * om * _turning(om, aa, times)
-            total.append(math.fsum((w[sl, None] * wo * val).ravel()))
+            total.append(float(np.sum(w[sl][row, None] * wo * val)))
         return math.fsum(total)
 
 
 def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
-    """T fixed or uniform, some spin ranged (uniform or normal), the plane's density known."""
+    """T fixed or uniform, some spin ranged, every ranged spin uniform or normal."""
     return (
         isinstance(dist.flight_time, Fixed | Uniform)
         and bool(ranged)
         and all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
-        and _plane(dist.omega_x, dist.omega_y) is not None
     )
 
 
