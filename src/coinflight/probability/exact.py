@@ -920,11 +920,12 @@ def _times(t: Distribution) -> tuple[float, float]:
     return (t.value, t.value) if isinstance(t, Fixed) else (t.low, t.high)  # type: ignore[attr-defined]
 
 
-def _curves(kind: np.ndarray, p: np.ndarray, sgn: np.ndarray, t: np.ndarray, psi: Any) -> Any:
+def _curves(table: tuple[np.ndarray, ...], psi: Any) -> Any:
     """Ω along the curves of the (Ω, ψ) plane where the integrand changes form, at ψ:
     kind 0, a band edge Ω = ((2j + 1)π ± b(ψ)) / T (p = (2j + 1)π, sgn = ±1, b from
     :func:`coinflight.core.bands.gap_half_width`); kind 1, a circle Ω⊥ = p, Ω = p / sin ψ;
-    kind 2, a plane A = p, Ω = p / cos ψ. Broadcasts."""
+    kind 2, a plane A = p, Ω = p / cos ψ. ``table`` = (kind, p, sgn, T). Broadcasts."""
+    kind, p, sgn, t = table
     s, c = np.sin(psi), np.cos(psi)
     b = bands.gap_half_width((c / s) ** 2)
     with np.errstate(divide="ignore"):
@@ -978,12 +979,12 @@ def _crossings(
         _CROSSING_SAMPLES,
     )
     psi = _QUARTER + s * s
-    fb = _curves(*(c[:, None] for c in second), psi)
+    fb = _curves(tuple(c[:, None] for c in second), psi)
     roots = []
     step = max(1, int(4e6 // (nb * s.size)))
     for start in range(0, na, step):
         part = tuple(c[start : start + step] for c in first)
-        fa = _curves(*(c[:, None] for c in part), psi)
+        fa = _curves(tuple(c[:, None] for c in part), psi)
         with np.errstate(invalid="ignore"):
             d = fa[:, None, :] - fb[None, :, :]
         pos = d > 0.0
@@ -1000,7 +1001,7 @@ def _crossings(
             mid = 0.5 * (lo + hi)
             pm = _QUARTER + mid * mid
             with np.errstate(invalid="ignore"):
-                same = (_curves(*ca, pm) - _curves(*cb, pm) > 0.0) == sign_lo
+                same = (_curves(ca, pm) - _curves(cb, pm) > 0.0) == sign_lo
             lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
         roots.append(_QUARTER + (0.5 * (lo + hi)) ** 2)
     return np.concatenate(roots) if roots else np.empty(0)
@@ -1152,8 +1153,8 @@ class _PolarPlan:
                 lo = np.maximum(p.lo / ss, np.where(ax.lo > 0.0, ax.lo / cc, 0.0))
                 hi = np.minimum(p.hi / ss, ax.hi / cc)
             hi = np.maximum(hi, lo)
-            brk = _curves(*(q[None, :] for q in self.inner_curves), x[sl, None])
-            edge = _curves(*(q[None, :] for q in self.edges), x[sl, None])
+            brk = _curves(tuple(q[None, :] for q in self.inner_curves), x[sl, None])
+            edge = _curves(tuple(q[None, :] for q in self.edges), x[sl, None])
             ends = np.sort(np.clip(np.concatenate((lo, edge, brk, hi), axis=1), lo, hi), axis=1)
             # Only the pieces of positive width (most curves lie outside a row's range).
             keep = ends[:, 1:] > ends[:, :-1]
