@@ -281,3 +281,23 @@ def test_other_distributions_are_refused_by_name():
     )
     with pytest.raises(ValueError, match=r"not omega_y \(TruncatedNormal\)"):
         estimate(dist, "exact")
+
+
+def test_a_sweep_counts_the_exact_rows_work():
+    # The sweep's work bound takes each exact row's own estimate (the integral it will do),
+    # not a flat 0.05 s: an upper estimate (a few times the time measured on the 2-core
+    # machine), larger for the four-parameter box than for the paper's closed form.
+    from coinflight.probability.sweep import Case, check_sweep_work
+
+    box = TossDistribution(**CLI_BOX)
+    fig2a = TossDistribution(omega_x=Uniform(60.0, 90.0), flight_time=Uniform(0.6, 0.9))
+    seconds = exact.estimated_seconds(box)
+    assert seconds is not None and 1e-3 < seconds < 5.0
+    small = exact.estimated_seconds(fig2a)
+    assert small is not None and small < seconds
+    assert check_sweep_work([Case(box), Case(fig2a)], "exact", None) == pytest.approx(
+        seconds + small
+    )
+    t0 = time.perf_counter()
+    estimate(box, "exact")
+    assert time.perf_counter() - t0 < 10 * seconds  # the measured run, with room for load

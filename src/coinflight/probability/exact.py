@@ -849,14 +849,19 @@ class _PlaneInterpolant:
         self.dx, self.dy = dx, dy
         self.box = (*_support(dx), *_support(dy))
         self.sd = min(d.sd for d in (dx, dy) if isinstance(d, Normal))
-        ends = _refine_width(np.asarray(breaks), 1.5 * self.sd)
+        self.breaks = np.asarray(breaks, dtype=float)
+        self.coefs = np.empty((0, 0))  # built on first use (:meth:`_build`)
+
+    def _build(self) -> None:
+        ends = _refine_width(self.breaks, 1.5 * self.sd)
         pieces = list(itertools.pairwise(ends))
         coefs = [self._fit(a, b) for a, b in pieces]
         scale = max(np.max(np.abs(c)) for c in coefs)
         done: list[tuple[float, float, np.ndarray]] = []
         while pieces:
             (a, b), c = pieces.pop(), coefs.pop()
-            if np.max(np.abs(c[-4:])) <= 1e-13 * scale or len(done) + len(pieces) > self.MAX_PIECES:
+            small = np.max(np.abs(c[-4:])) <= 1e-13 * scale
+            if small or len(done) + len(pieces) > self.MAX_PIECES:
                 done.append((a, b, c))
                 continue
             m = 0.5 * (a + b)
@@ -891,6 +896,8 @@ class _PlaneInterpolant:
         return np.polynomial.chebyshev.chebinterpolate(f, self.DEGREE)
 
     def __call__(self, rho: np.ndarray) -> np.ndarray:
+        if not self.coefs.size:
+            self._build()
         r = np.asarray(rho, dtype=float)
         inside = (r > self.lo) & (r < self.hi)
         i = np.clip(np.searchsorted(self.starts, r, side="right") - 1, 0, self.starts.size - 1)
@@ -1169,6 +1176,28 @@ class _PolarPlan:
         return math.fsum(total)
 
 
+def _polar_seconds(dist: TossDistribution) -> float:
+    """An upper estimate of the seconds of :func:`_omega_psi`'s first two orders, without its
+    search for crossings: at most about one outer cut per pair of a band edge and a box curve
+    (measured 0.2-1.2 of that on the test boxes) plus the panels' width limit, and the inner
+    pieces counted as the plan counts them; 0.2 s more to build a normal plane's interpolant."""
+    i1, i3 = dist.moments
+    times = _times(dist.flight_time)
+    p, ax = _plane(dist.omega_x, dist.omega_y), _axial(dist.omega_z, i3 / i1)
+    setup = 0.2 if isinstance(p.density, _PlaneInterpolant) else 0.0
+    orders = sum(n * n for n in POLAR_ORDERS[:2])
+    if p.density is None or ax.density is None:
+        om_hi = math.hypot(p.hi, ax.hi)
+        edges = _edges(times, 0.0, om_hi)[0].size
+        return 1e-3 + setup + (edges + p.graded.size + 64) * orders / POLAR_POINTS_PER_SECOND
+    om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
+    edges = _edges(times, p.lo, om_hi)[0].size
+    curves = p.breaks.size + ax.breaks.size
+    panels = edges * curves + edges + 32
+    inner = edges + p.graded.size + ax.breaks.size + 1
+    return 1e-3 + setup + panels * inner * orders / POLAR_POINTS_PER_SECOND
+
+
 def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
     """T fixed or uniform, some spin ranged, every ranged spin uniform or normal."""
     return (
@@ -1320,6 +1349,42 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         elapsed=time.perf_counter() - t0,
         details=details,
     )
+
+
+def estimated_seconds(dist: TossDistribution, model: OutcomeModel | None = None) -> float | None:
+    """Seconds the exact method will take on ``dist`` (2-core reference machine), from the
+    work of the integral that would run, counted before it runs: its band pieces, spin points
+    or integrand points (the first two orders, the least that gives an error estimate) at
+    the measured rates. None where no estimate is made (the adaptive quadrature, a model
+    other than the hand catch, a distribution refused or over budget: those end early or
+    within their own bound). For a sweep's work bound
+    (:func:`coinflight.probability.sweep.check_sweep_work`)."""
+    if model is not None and not model.closed_form_bands:
+        return None
+    ranged = [name for name in _SPINS if not getattr(dist, name).is_fixed]
+    case = next((case for case in _CASES if case[1](dist, ranged)), None)
+    if case is None:
+        return None
+    run = case[2]
+    try:
+        if run is _closed_form_in_t:
+            return 1e-4
+        if run is _closed_form:
+            x = getattr(dist, ranged[0]) if ranged else None
+            if not isinstance(x, Uniform):
+                return 1e-4
+            t2 = _times(dist.flight_time)[1]
+            pieces = bands.diameter_spin_pieces(0.0, max(abs(x.low), abs(x.high)), 0.0, t2)
+            return 1e-4 + 2.0 * pieces / PIECES_PER_SECOND
+        if run is _gauss_spins:
+            h = _resolution(dist, ranged)
+            points = sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2])
+            return points / SPIN_POINTS_PER_SECOND
+        if run is _omega_psi:
+            return _polar_seconds(dist)
+    except ValueError:
+        return None
+    return None
 
 
 def _summary(result: ProbabilityResult) -> str:
