@@ -341,11 +341,18 @@ def circle_in_box_arcs(
     """
     r = np.asarray(rho, dtype=float)
 
+    legs: dict[float, FloatArray] = {}
+
+    def leg(p: float) -> FloatArray:  # √(ρ² − p²), 0 inside; each distance once
+        if p not in legs:
+            legs[p] = np.sqrt(np.maximum((r - p) * (r + p), 0.0))
+        return legs[p]
+
     def acos(p: float) -> FloatArray:  # arccos(min(p/ρ, 1)), accurate where p/ρ → 1
-        return np.arctan2(np.sqrt(np.maximum((r - p) * (r + p), 0.0)), p)
+        return np.arctan2(leg(p), p)
 
     def asin(q: float) -> FloatArray:  # arcsin(min(q/ρ, 1)), likewise
-        return np.arctan2(q, np.sqrt(np.maximum((r - q) * (r + q), 0.0)))
+        return np.arctan2(q, leg(q))
 
     xs = [(1.0, max(x1, 0.0), x2)] if x2 > 0.0 else []
     xs += [(-1.0, max(-x2, 0.0), -x1)] if x1 < 0.0 else []
