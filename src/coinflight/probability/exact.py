@@ -722,23 +722,31 @@ _QUARTER = math.pi / 4
 
 class _Radial:
     """The distribution of Ω⊥ = √(ωx² + ωy²) (the plane) or of A = (I3/I1) |ω_z| (axial):
-    an atom at ``value`` (``density`` None), or a density on [lo, hi] = the first and last of
-    ``breaks``, smooth between consecutive breaks (where it may have a square-root onset or a
-    jump); ``graded`` adds the points of :func:`_graded` (so that two breaks close together,
-    a narrow range, do not spoil the pieces beside them)."""
+    an atom at ``value`` (``density`` None), or a density on [lo, hi], smooth between
+    consecutive ``breaks`` (where it may have a square-root onset, an inverse square root or
+    a jump: the outer rule cuts where a band edge crosses them) and ``soft`` points (where it
+    is smooth or negligible, a normal's mean ± 3 sd or ± 9 sd: only inner cuts, so that no
+    piece is much wider than the density's scale); ``graded`` holds all of them with the
+    points of :func:`_graded` (so that two breaks close together, a narrow range, do not
+    spoil the pieces beside them)."""
 
     def __init__(
         self,
         density: Callable[[np.ndarray], np.ndarray] | None,
         breaks: list[float] | None = None,
+        soft: list[float] | None = None,
         value: float = math.nan,
     ) -> None:
         self.density = density
         self.value = value
-        b = np.unique(np.asarray(breaks if breaks is not None else [value], dtype=float))
-        self.breaks = b
-        self.lo, self.hi = float(b[0]), float(b[-1])
-        self.graded = _graded(b)
+        hard = np.asarray(breaks if breaks is not None else [], dtype=float)
+        both = np.unique(np.concatenate((hard, np.asarray(soft or [], dtype=float))))
+        if density is None:
+            both = np.array([value])
+        self.breaks = np.unique(hard)
+        self.points = both
+        self.lo, self.hi = float(both[0]), float(both[-1])
+        self.graded = _graded(both)
 
 
 def _graded(pts: np.ndarray, factor: float = 4.0) -> np.ndarray:
@@ -766,32 +774,31 @@ def _graded(pts: np.ndarray, factor: float = 4.0) -> np.ndarray:
     return np.unique(np.concatenate((p, extra)))
 
 
-def _folded(d: Distribution) -> tuple[list[float], float, float]:
-    """Breaks, lowest and highest value of |X| for a ranged spin X (its support folded onto
-    [0, ∞)); a normal's also at its mean and ±3 sd, so that no panel is much wider than its
-    density's scale."""
+def _folded(d: Distribution) -> tuple[list[float], list[float]]:
+    """Breaks and soft points (as :class:`_Radial` has them) of |X| for a ranged spin X, its
+    support folded onto [0, ∞): a uniform's ends and 0 inside its range are breaks; a
+    normal's 0 inside its support is a break (the fold), its mean, ±3 sd and its support's
+    ends (±9 sd, density below 1e-17) soft points."""
     s1, s2 = _support(d)
-    pts = [s1, s2]
+    zero = [0.0] if s1 < 0.0 < s2 else []
+    lo = [0.0 if s1 <= 0.0 <= s2 else min(abs(s1), abs(s2)), max(abs(s1), abs(s2))]
     if isinstance(d, Normal):
-        pts = list(d.mean + d.sd * np.array([-_NORMAL_SPAN, -3.0, 0.0, 3.0, _NORMAL_SPAN]))
-    if s1 < 0.0 < s2:
-        pts.append(0.0)
-    folded = [abs(p) for p in pts]
-    lo = 0.0 if s1 <= 0.0 <= s2 else min(abs(s1), abs(s2))
-    return folded, lo, max(abs(s1), abs(s2))
+        pts = d.mean + d.sd * np.array([-_NORMAL_SPAN, -3.0, 0.0, 3.0, _NORMAL_SPAN])
+        return zero, [*lo, *(abs(float(p)) for p in pts)]
+    return [*zero, *lo, abs(s1), abs(s2)], []
 
 
 def _axial(dz: Distribution, ratio: float) -> _Radial:
     """A = (I3/I1) |ω_z|: its density on A ≥ 0 is (p(A/ratio) + p(−A/ratio)) / ratio."""
     if dz.is_fixed:
         return _Radial(None, value=ratio * abs(dz.mean))
-    folded, _, _ = _folded(dz)
+    hard, soft = _folded(dz)
 
     def density(a: np.ndarray) -> np.ndarray:
         z = a / ratio
         return (_pdf(dz, z) + _pdf(dz, -z)) / ratio
 
-    return _Radial(density, [ratio * f for f in folded])
+    return _Radial(density, [ratio * f for f in hard], [ratio * f for f in soft])
 
 
 def _plane(dx: Distribution, dy: Distribution) -> _Radial:
@@ -805,14 +812,16 @@ def _plane(dx: Distribution, dy: Distribution) -> _Radial:
         return _Radial(None, value=math.hypot(dx.mean, dy.mean))
     if dx.is_fixed or dy.is_fixed:
         c, d = (dx.mean, dy) if dx.is_fixed else (dy.mean, dx)
-        folded, _, _ = _folded(d)
+        hard, soft = _folded(d)
 
         def one(rho: np.ndarray) -> np.ndarray:
             s = np.sqrt(np.maximum(rho * rho - c * c, 0.0))
             safe = np.where(s > 0.0, s, 1.0)
             return np.where(s > 0.0, (_pdf(d, s) + _pdf(d, -s)) * rho / safe, 0.0)
 
-        return _Radial(one, [math.hypot(c, f) for f in folded])
+        # ρ = |c| (s = 0) holds the inverse square root: a break whatever y's kind.
+        hard = [*hard, 0.0] if _support(d)[0] <= 0.0 <= _support(d)[1] else hard
+        return _Radial(one, [math.hypot(c, f) for f in hard], [math.hypot(c, f) for f in soft])
     (x1, x2), (y1, y2) = _support(dx), _support(dy)
     near = math.hypot(
         0.0 if x1 <= 0.0 <= x2 else min(abs(x1), abs(x2)),
@@ -829,7 +838,12 @@ def _plane(dx: Distribution, dy: Distribution) -> _Radial:
             return rho * bands.circle_in_box_angle(rho, x1, x2, y1, y2) / area
 
         return _Radial(box, pts)
-    return _Radial(_PlaneInterpolant(dx, dy, pts), pts)
+    # A normal component: its side lines (±9 sd) are negligible; a uniform one's are breaks.
+    sides = [
+        abs(e) for d, es in ((dx, (x1, x2)), (dy, (y1, y2))) if isinstance(d, Uniform) for e in es
+    ]
+    hard = [p for p in sides if near <= p <= far]
+    return _Radial(_PlaneInterpolant(dx, dy, pts), hard, pts)
 
 
 class _PlaneInterpolant:
@@ -1068,7 +1082,7 @@ class _PolarPlan:
             psi_b = math.atan2(p.value, ax.lo)
             curve = _box(1, np.array([p.value]))
             om_hi = p.value / math.sin(psi_a)
-            fixed_cuts = np.arctan2(p.value, ax.breaks[ax.breaks > 0.0])
+            fixed_cuts = np.arctan2(p.value, ax.points[ax.points > 0.0])
         elif ax.density is None and ax.value > 0.0:
             self.kind = "axial fixed"
             # Along A = value: ψ from where Ω⊥ reaches A (or its range's bottom) to its top.
@@ -1081,7 +1095,7 @@ class _PolarPlan:
             self.kind = "diameter"  # ω_z = 0: ψ = 90°, Ω = Ω⊥, the gaps' half-width π/2
             edges = _edges(self.times, p.lo, p.hi)
             cuts = (edges[1] + edges[2] * 0.5 * math.pi) / edges[3]
-            self.ends = _panels(_graded(np.concatenate((cuts, p.breaks))), p.lo, p.hi, math.inf)
+            self.ends = _panels(_graded(np.concatenate((cuts, p.graded))), p.lo, p.hi, math.inf)
             return
         else:
             self.kind = "2-D"
@@ -1090,8 +1104,8 @@ class _PolarPlan:
             self.edges = _edges(self.times, p.lo, om_hi)
             circles, planes = _box(1, p.breaks), _box(2, ax.breaks[ax.breaks > 0.0])
             self.box_curves = _stack(circles, planes)
-            # The inner cuts: the box's curves with the plane's graded radii.
-            self.inner_curves = _stack(_box(1, p.graded), planes)
+            # The inner cuts: the box's curves with the soft points and the graded radii.
+            self.inner_curves = _stack(_box(1, p.graded), _box(2, ax.points[ax.points > 0.0]))
             self._bound_crossings(self.edges[0].size * self.box_curves[0].size)
             cuts = np.concatenate(
                 (
@@ -1194,7 +1208,7 @@ def _polar_seconds(dist: TossDistribution) -> float:
     edges = _edges(times, p.lo, om_hi)[0].size
     curves = p.breaks.size + ax.breaks.size
     panels = edges * curves + edges + 32
-    inner = edges + p.graded.size + ax.breaks.size + 1
+    inner = edges + p.graded.size + ax.points.size + 1
     return 1e-3 + setup + panels * inner * orders / POLAR_POINTS_PER_SECOND
 
 
