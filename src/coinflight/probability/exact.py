@@ -8,8 +8,10 @@ Which integral is used (``details["how"]``):
 * ``closed form in T``: every spin fixed (precession allowed), any flight-time distribution
   with a CDF: Σ over bands of CDF(hi) − CDF(lo).
 * ``closed form in T, Gauss product rule over the spins split at ψ = 45°``: a normal flight
-  time (or launch speed) with any ranged spins (uniform or normal): P(same side | spins) over
-  T as the wrapped-normal series (:func:`coinflight.core.bands.same_side_normal_time`), then
+  time (or launch speed) with one or two ranged spins (uniform or normal; where this rule
+  refuses, the (Ω, ψ) rule below runs instead and ``details["fallback"]`` says why):
+  P(same side | spins) over T as the wrapped-normal series
+  (:func:`coinflight.core.bands.same_side_normal_time`), then
   Gauss–Legendre panels over the spins with the kink at ψ = 45° put on a coordinate (ω_z
   inner, or the radius of polar coordinates in (ωx, ωy) when ω_z is fixed ≠ 0 or the cone's
   apex or a uniform ω_z's rims lie in the box) and smoothed by a change of variable; node
@@ -17,7 +19,9 @@ Which integral is used (``details["how"]``):
   ValueError. The work of the first two orders is bounded before anything is computed.
 * ``closed form in T, Gauss–Legendre over the spins in (Ω, ψ)``: a fixed or uniform flight
   time (or launch speed) with any ranged spins (uniform or normal, up to all three), e.g.
-  precession with a fixed T, or all four parameters ranged. P(same side | spins) depends on
+  precession with a fixed T, or all four parameters ranged; and a normal flight time with
+  three ranged spins (the wrapped-normal series as the inner function, 2-100x faster than
+  the product rule there, and equal to it within 1e-10). P(same side | spins) depends on
   Ω = √(Ω⊥² + ((I3/I1) ω_z)²) and ψ only; the azimuth of (ωx, ωy) is integrated out in closed
   form (a uniform box's arc length, a fixed component's Jacobian) or by an interpolant (a
   normal component), ω_z's sign folded, and the rest integrated over Ω (inner, cut at every
@@ -352,8 +356,9 @@ def _composite(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _gauss_applies(dist: TossDistribution, ranged: list[str]) -> bool:
-    """A normal flight time (or launch speed) and ranged spins uniform or normal."""
-    if not isinstance(dist.flight_time, Normal) or not ranged:
+    """A normal flight time (or launch speed) and one or two ranged spins, uniform or normal
+    (three go to the (Ω, ψ) rule, measured 2-100x faster there)."""
+    if not isinstance(dist.flight_time, Normal) or not ranged or len(ranged) == 3:
         return False
     return all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
 
@@ -936,9 +941,12 @@ def _refine_width(pts: np.ndarray, width: float) -> np.ndarray:
     return np.concatenate(out)
 
 
-def _times(t: Distribution) -> tuple[float, float]:
-    """(T1, T2) of a uniform flight time, (T, T) of a fixed one."""
-    return (t.value, t.value) if isinstance(t, Fixed) else (t.low, t.high)  # type: ignore[attr-defined]
+def _times(t: Distribution) -> tuple[float, float, float]:
+    """(T1, T2, 0) of a uniform flight time, (T, T, 0) of a fixed one, (mean, mean, sd) of a
+    normal one."""
+    if isinstance(t, Normal):
+        return t.mean, t.mean, t.sd
+    return (t.value, t.value, 0.0) if isinstance(t, Fixed) else (t.low, t.high, 0.0)  # type: ignore[attr-defined]
 
 
 def _curves(table: tuple[np.ndarray, ...], psi: Any) -> Any:
@@ -954,10 +962,10 @@ def _curves(table: tuple[np.ndarray, ...], psi: Any) -> Any:
     return np.where(kind == 0, (p + sgn * b) / t, np.where(kind == 1, p / s, axial))
 
 
-def _edges(times: tuple[float, float], om_lo: float, om_hi: float) -> tuple[np.ndarray, ...]:
+def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.ndarray, ...]:
     """The band-edge curves (kind, p, sgn, T) that may meet Ω in [om_lo, om_hi]."""
     cols: list[list[float]] = [[], [], [], []]
-    for t in sorted(set(times)):
+    for t in sorted(set(times[:2])):
         j = np.arange(
             max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi))),
             max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi))) + 1,
@@ -1052,11 +1060,18 @@ def _panels(cuts: np.ndarray, lo: float, hi: float, width: float = _PSI_PANEL) -
     return np.concatenate(out)
 
 
-def _turning(om: np.ndarray, a: np.ndarray, times: tuple[float, float]) -> np.ndarray:
+def _turning(om: np.ndarray, a: np.ndarray, times: tuple[float, float, float]) -> np.ndarray:
     """1 − P(same side) at rate Ω and band half-width a over the flight times: the fraction of
-    T uniform on [T1, T2] (:func:`coinflight.core.bands.time_average_uniform`), or whether
-    the one T, puts Ω T in a gap."""
-    t1, t2 = times
+    T uniform on [T1, T2] (:func:`coinflight.core.bands.time_average_uniform`), whether the
+    one T puts Ω T in a gap, or the wrapped-normal series of a normal T
+    (:func:`coinflight.core.bands.same_side_normal_time`, with cot²ψ = −cos a)."""
+    t1, t2, sd = times
+    if sd > 0.0:
+        om, a = np.broadcast_arrays(om, a)
+        cot2 = -np.cos(a)
+        perp2 = om * om / (1.0 + cot2)
+        same = bands.same_side_normal_time(perp2.ravel(), (perp2 * cot2).ravel(), t1, sd)
+        return 1.0 - same.reshape(om.shape)
     if t1 == t2:
         return (~bands.in_band(om * t1, a)).astype(float)
     return 1.0 - bands.time_average_uniform(om, a, t1, t2)
@@ -1190,6 +1205,29 @@ class _PolarPlan:
         return math.fsum(total)
 
 
+_OMEGA_PSI = "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)"
+
+
+def _gauss_or_omega_psi(
+    dist: TossDistribution, ranged: list[str], details: _Details
+) -> tuple[float, float]:
+    """The Gauss product rule over the spins (:func:`_gauss_spins`, fastest with a normal T and
+    one or two ranged spins); where it refuses (not converged, or over its budget), the
+    (Ω, ψ) rule (:func:`_omega_psi`), e.g. ωx and ω_z ranged across 0 with a narrow T. If
+    both refuse, the Gauss rule's reason is given."""
+    try:
+        return _gauss_spins(dist, ranged, details)
+    except ValueError as gauss_error:
+        fallback: _Details = {}
+        try:
+            result = _omega_psi(dist, ranged, fallback)
+        except ValueError:
+            raise gauss_error from None
+        details.clear()
+        details.update(fallback, how=_OMEGA_PSI, fallback=f"the Gauss rule refused: {gauss_error}")
+        return result
+
+
 def _polar_seconds(dist: TossDistribution) -> float:
     """An upper estimate of the seconds of :func:`_omega_psi`'s first two orders, without its
     search for crossings: at most about one outer cut per pair of a band edge and a box curve
@@ -1213,9 +1251,11 @@ def _polar_seconds(dist: TossDistribution) -> float:
 
 
 def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
-    """T fixed or uniform, some spin ranged, every ranged spin uniform or normal."""
+    """T fixed or uniform with some spin ranged, or T normal with three ranged spins; every
+    ranged spin uniform or normal."""
+    t = dist.flight_time
     return (
-        isinstance(dist.flight_time, Fixed | Uniform)
+        (isinstance(t, Fixed | Uniform) or (isinstance(t, Normal) and len(ranged) == 3))
         and bool(ranged)
         and all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
     )
@@ -1298,13 +1338,9 @@ _CASES: tuple[
     (
         "closed form in T, Gauss product rule over the spins split at ψ = 45°",
         _gauss_applies,
-        _gauss_spins,
+        _gauss_or_omega_psi,
     ),
-    (
-        "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)",
-        _omega_psi_applies,
-        _omega_psi,
-    ),
+    (_OMEGA_PSI, _omega_psi_applies, _omega_psi),
     (
         "closed form in T, quadrature over the spins",
         _spins_by_quadrature,
@@ -1351,7 +1387,7 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
     p_same, error = run(dist, ranged, details)
     p_same = min(1.0, max(0.0, p_same))
     p_heads = p_same if dist.start_sign > 0 else 1.0 - p_same
-    details["how"] = how
+    details.setdefault("how", how)  # a runner that fell back to another integral says so
     return ProbabilityResult(
         p_heads=p_heads,
         p_tails=1.0 - p_heads,
@@ -1390,7 +1426,7 @@ def estimated_seconds(dist: TossDistribution, model: OutcomeModel | None = None)
             t2 = _times(dist.flight_time)[1]
             pieces = bands.diameter_spin_pieces(0.0, max(abs(x.low), abs(x.high)), 0.0, t2)
             return 1e-4 + 2.0 * pieces / PIECES_PER_SECOND
-        if run is _gauss_spins:
+        if run is _gauss_or_omega_psi:
             h = _resolution(dist, ranged)
             points = sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2])
             return points / SPIN_POINTS_PER_SECOND
