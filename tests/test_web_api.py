@@ -310,13 +310,13 @@ def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
 
 # --- time, the page, the schema ----------------------------------------------------------------
 def test_a_request_over_its_time_limit_is_503_and_its_worker_is_ended():
-    """An exact integral the library gives up only after about 15 s (three wide spin ranges
-    and a normal flight time: the Gauss rule over the spins is refused at its third order) is
-    answered 503 with one line when the 3 s limit is up; its worker is ended and replaced, so
-    that with one worker the next request is answered at once."""
+    """An exact integral the library gives up only after about 14 s (ωx in a range 1e-12 wide
+    beside wide ωy, ω_z and T: the (Ω, ψ) rule's orders disagree until its budget is spent)
+    is answered 503 with one line when the 3 s limit is up; its worker is ended and replaced,
+    so that with one worker the next request is answered at once."""
     slow = (
-        "/api/probability?omega_x=-85:85&omega_y=-85:85&omega_z=-85:85"
-        "&flight_time=normal:0.6,0.03&method=exact"
+        "/api/probability?omega_x=60:60.000000000001&omega_y=-60:60&omega_z=-40:40"
+        "&flight_time=0.5:1&method=exact"
     )
     with TestClient(create_app(time_limit=3, workers=1)) as c:
         started = time.perf_counter()
