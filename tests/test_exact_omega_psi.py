@@ -301,3 +301,18 @@ def test_a_sweep_counts_the_exact_rows_work():
     t0 = time.perf_counter()
     estimate(box, "exact")
     assert time.perf_counter() - t0 < 10 * seconds  # the measured run, with room for load
+
+
+def test_a_narrow_flight_time_tends_to_the_fixed_time():
+    # Issue 10's check for the new cases: T uniform in 0.7:0.7 + δ tends to T = 0.7 (the
+    # band measure's short differences keep their digits), at most δ times P's slope in T
+    # (below 0.1 per s here) plus the two rules' 1e-9.
+    base = {
+        "omega_x": Uniform(60.0, 90.0),
+        "omega_y": Uniform(-20.0, 20.0),
+        "omega_z": Uniform(-10.0, 10.0),
+    }
+    fixed = _exact(**base, flight_time=0.7)
+    for high in (0.7000000000000002, 0.70000000000001, 0.700000001):
+        narrow = _exact(**base, flight_time=Uniform(0.7, high))
+        assert narrow.p_heads == pytest.approx(fixed.p_heads, abs=0.1 * (high - 0.7) + 2e-9)
