@@ -60,10 +60,10 @@ TOLERANCE = 1e-9
 promises. (1e-10 is beyond what round-off in the band sums allows for normal distributions:
 QUADPACK then warns and takes twice as long.)"""
 MAX_EVALUATIONS = 500_000
-"""Budget of integrand evaluations for the quadrature, so that ``exact`` always ends in bounded
-time: about 25-30 s on the reference 2-core machine. The slowest supported case, the ``human``
-preset (normal flight time, two normal spins), needs about 300,000 (~16 s). Past the budget a
-ValueError names the sampling methods instead."""
+"""Budget of integrand evaluations for the adaptive quadrature, so that ``exact`` always ends
+in bounded time: about 25-30 s on the reference 2-core machine. Only distributions beyond
+fixed, uniform and normal spins reach that quadrature now (e.g. a truncated normal spin); past
+the budget a ValueError names the sampling methods instead."""
 MAX_PIECES = 50_000_000
 """Most band pieces the closed form may sum (about 25 s on the reference 2-core machine, memory
 bounded by :data:`coinflight.core.bands.PIECES_PER_CHUNK`). A spin range of width Δω and flight
