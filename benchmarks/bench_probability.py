@@ -10,7 +10,8 @@ per-toss numerical integration (``coinflight.core.numerical.integrate``, SciPy D
 grid method at 5000² and 100000² configurations; the exact method; peak resident memory of
 a billion Monte Carlo tosses. Medians of repeats.
 
-Time to a given accuracy (issue 12): for three distributions, the seconds each method needs to
+Time to a given accuracy (issue 12): for five distributions (two of them, three and four ranged
+uniform parameters, refused by exact before), the seconds each method needs to
 reach a standard error (or error) of 1e-4 and 1e-6, as ratios to exact in one run. Sampling
 methods are measured at one or two sizes and extrapolated at their measured rate (Monte
 Carlo: s.e. ∝ n^-1/2; QMC: the exponent fitted between two sizes), which the table says.
@@ -110,6 +111,11 @@ NORMAL_SPINS = TossDistribution.from_launch_speed(
 """Issue 12's normal-spin example (--omega-x normal:240,24 --omega-z normal:0,40
 --launch-speed normal:2.4,0.24)."""
 
+THREE_SPINS_FIXED_T = TossDistribution(
+    Uniform(60.0, 90.0), Uniform(-20.0, 20.0), Uniform(-10.0, 10.0), 0.7
+)
+"""Three uniform spins and a fixed flight time (precession; refused by exact before issue 12)."""
+
 CONDITIONAL = "conditional-on-spin"
 
 
@@ -135,7 +141,9 @@ def time_to_accuracy() -> None:
     """Seconds to s.e. (or error) 1e-4 and 1e-6, per method, as ratios to exact; medians."""
     print("\nTime to a given accuracy (seconds; ratio to exact; medians of 3):")
     cases = (("Fig 2a (uniform ωx, T)", FIG2A), ("human preset", human()),
-             ("normal spins (issue 12)", NORMAL_SPINS))  # fmt: skip
+             ("normal spins (issue 12)", NORMAL_SPINS),
+             ("four uniform: ωx, ωy, ωz, T", GENERAL),
+             ("three uniform spins, fixed T", THREE_SPINS_FIXED_T))  # fmt: skip
     for label, dist in cases:
         estimate(dist, "exact")
         t_exact = median_time(lambda d=dist: estimate(d, "exact"), 5)

@@ -143,7 +143,20 @@ def test_launch_speed_and_normal():
         ([*FIG2A, "--method", "monte-carlo", "--n", "-3"], "n must be at least 1"),
         ([*FIG2A, "--method", "qmc", "--n", "1000"], "power of two"),
         ([*FIG2A, "--grid-cells", "100"], "--grid-cells applies to --method monte-carlo"),
-        (["--omega-x", "60:90", "--omega-z", "1:2", "--flight-time", "0.7"], "fixed flight time"),
+        # exact integrates every distribution the options take (issue 12), within its budget
+        (
+            [
+                "--omega-x",
+                "0:1e5",
+                "--omega-y",
+                "0:1e5",
+                "--omega-z",
+                "0:1e5",
+                "--flight-time",
+                "0.5:1",
+            ],
+            "use --method grid, monte-carlo or qmc instead",
+        ),
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),

@@ -2,7 +2,7 @@
 
 The Gauss product rule over the spins (closed form in T, split at ψ = 45°) is checked against
 the adaptive QUADPACK quadrature it replaces where both apply (to 1e-9), against Monte Carlo
-(10⁶ tosses, within 4 standard errors) where the old method refused (three ranged spins), on
+(10⁸ tosses, within 4 standard errors) where the old method refused (three ranged spins), on
 the heads/tails symmetry, and on the ``human`` preset's value before this change.
 """
 
@@ -88,28 +88,67 @@ def _random_box(rng: np.random.Generator) -> dict[str, object]:
     return {**spins, "flight_time": Normal(t, t * rng.uniform(0.02, 0.15))}
 
 
-@pytest.mark.parametrize(
-    "case",
-    [
-        0,
-        # 40 s: 48 nodes a panel over three spins across 0
-        pytest.param(1, marks=pytest.mark.slow),
-        2,
-        # ~20 s: refused before (2.8e-08 apart at 64 nodes a panel). The uniform ω_z's range
-        # ends make circles Ω⊥ = (I3/I1)|ω_z| where the integral over ω_z has a 3/2 power; the
-        # polar rule cuts the radius there and converges at 24 nodes a panel
-        pytest.param(3, marks=pytest.mark.slow),
-    ],
-)
+OMEGA_PSI = "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", [0, 1, 2, 3])
 def test_three_ranged_spins_agree_with_monte_carlo(case):
-    # Refused before (three ranged spin components); 10⁶ tosses, within 4 standard errors.
+    # Refused before (three ranged spin components); now the (Ω, ψ) rule with the
+    # wrapped-normal series inside. 10⁸ tosses (issue 12's criterion), within 4 standard
+    # errors.
     dist = TossDistribution(**_random_box(np.random.default_rng(1200 + case)))
     result = estimate(dist, "exact")
-    assert result.details["how"] == GAUSS
+    assert result.details["how"] == OMEGA_PSI
     assert result.error_estimate <= 1e-9
-    mc = estimate(dist, "monte-carlo", n=1_000_000, seed=12 + case)
-    se = max(np.sqrt(mc.p_heads * (1 - mc.p_heads) / 1_000_000), 1e-6)
+    mc = estimate(dist, "monte-carlo", n=10**8, seed=12 + case)
+    se = max(mc.stderr, 1e-9)
     assert abs(result.p_heads - mc.p_heads) <= 4 * se
+
+
+@pytest.mark.parametrize("case", [0, 2])
+def test_three_ranged_spins_two_rules_agree(case):
+    # The Gauss product rule over (ωx, ωy, ω_z) (split at ψ = 45° on a coordinate) and the
+    # (Ω, ψ) rule (azimuth integrated out, cuts at the box's curves) share only the
+    # wrapped-normal series: they agree within their tolerances (1e-9 each).
+    dist = TossDistribution(**_random_box(np.random.default_rng(1200 + case)))
+    ranged = list(exact._SPINS)
+    gauss = exact._gauss_spins(dist, ranged, {})[0]
+    assert estimate(dist, "exact").p_same_side == pytest.approx(gauss, abs=2e-9)
+
+
+@pytest.mark.parametrize(
+    "spins",
+    [
+        # ω_z fixed ≠ 0 with the azimuth integrated out (a 1-D rule along A = const)
+        {"omega_x": Normal(60.0, 6.0), "omega_y": Uniform(-20.0, 30.0), "omega_z": 25.0},
+        {"omega_x": Uniform(-40.0, 50.0), "omega_y": Normal(5.0, 10.0), "omega_z": -15.0},
+        # one spin fixed: the density of Ω⊥ with its inverse square root
+        {"omega_x": Normal(60.0, 6.0), "omega_y": Uniform(-20.0, 30.0)},
+        {"omega_x": 60.0, "omega_z": Uniform(-80.0, 80.0)},
+    ],
+)
+def test_two_ranged_spins_two_rules_agree(spins):
+    # As above, where the Gauss rule runs by default (one or two ranged spins).
+    dist = TossDistribution(**spins, flight_time=Normal(0.4, 0.04))
+    ranged = [n for n in exact._SPINS if not getattr(dist, n).is_fixed]
+    result = estimate(dist, "exact")
+    assert result.details["how"] == GAUSS
+    assert exact._omega_psi(dist, ranged, {})[0] == pytest.approx(result.p_same_side, abs=2e-9)
+
+
+def test_where_the_gauss_rule_refuses_the_omega_psi_rule_answers():
+    # ωx and ω_z across 0 with a narrow normal T: the Gauss rule does not converge by 64 nodes
+    # a panel (5e-8 apart); the (Ω, ψ) rule does, and the result says so.
+    dist = TossDistribution(
+        omega_x=Uniform(-85.0, 85.0), omega_z=Uniform(-85.0, 85.0), flight_time=Normal(0.6, 0.03)
+    )
+    result = estimate(dist, "exact")
+    assert result.details["how"] == OMEGA_PSI
+    assert "did not reach its tolerance" in result.details["fallback"]
+    assert result.error_estimate <= 1e-9
+    mc = estimate(dist, "monte-carlo", n=10**7, seed=5)
+    assert abs(result.p_heads - mc.p_heads) <= 4 * mc.stderr
 
 
 def test_heads_and_tails_are_symmetric():
@@ -128,7 +167,8 @@ def test_heads_and_tails_are_symmetric():
 def test_work_is_bounded_before_it_starts():
     # A flight time so narrow that P(same | spins) oscillates with the spins (period 2π/T)
     # over three wide spin ranges: the first two orders (the least that gives an error
-    # estimate) already pass the bound, refused before anything is computed.
+    # estimate) already pass the bound (thousands of band edges to cross with the box's
+    # curves), refused before anything is computed.
     dist = TossDistribution(
         omega_x=Uniform(100.0, 6100.0),
         omega_y=Uniform(100.0, 6100.0),
@@ -136,7 +176,7 @@ def test_work_is_bounded_before_it_starts():
         flight_time=Normal(1.0, 1e-4),
     )
     t0 = time.perf_counter()
-    with pytest.raises(ValueError, match="spin points"):
+    with pytest.raises(ValueError, match="use --method grid, monte-carlo or qmc instead"):
         estimate(dist, "exact")
     assert time.perf_counter() - t0 < 1.0
 

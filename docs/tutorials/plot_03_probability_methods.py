@@ -81,8 +81,9 @@ print(
 # --------------------------------
 # Any parameter can be fixed, uniform or normal; a normal flight time and a spin about the
 # normal as well (a precessing coin) are handled by the same call. The exact method handles
-# precession too, but integrates over four parameters (tens of seconds); Monte Carlo gives
-# the answer to ±0.001 at once.
+# every fixed, uniform or normal distribution, precession and all four parameters ranged
+# included, to 1e-9 (here in about half a second); Monte Carlo gives the answer to ±0.001 at
+# once.
 from coinflight import Normal
 
 natural = TossDistribution(
@@ -92,3 +93,4 @@ natural = TossDistribution(
     flight_time=Normal(0.49, 0.05),
 )
 print(estimate(natural, "monte-carlo", n=400_000, seed=1).describe())
+print(estimate(natural, "exact").describe())

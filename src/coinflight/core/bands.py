@@ -321,3 +321,74 @@ def same_side_normal_time(
         lo = (TWO_PI * mm - aa[:, None]) * inv - mean / sd
         out[direct] = np.sum(ndtr(hi) - ndtr(lo), axis=-1)
     return out
+
+
+def circle_in_box_arcs(
+    rho: ArrayLike, x1: float, x2: float, y1: float, y2: float
+) -> list[tuple[float, float, FloatArray, FloatArray]]:
+    """Arcs of the circle of radius ``rho`` about the origin inside the box [x1, x2] × [y1, y2],
+    one per quadrant the box reaches: (sx, sy, lo, hi), the points (sx ρ cos φ, sy ρ sin φ)
+    for φ in [lo, hi] ⊂ [0, π/2] (hi = lo where the circle misses that part).
+
+    The box's part in a quadrant, reflected into the first one, is [p1, p2] × [q1, q2] with
+    0 ≤ p1, 0 ≤ q1; there the circle's angles with p1 ≤ ρ cos φ ≤ p2 form
+    [arccos(p2/ρ), arccos(p1/ρ)] and those with q1 ≤ ρ sin φ ≤ q2 form
+    [arcsin(q1/ρ), arcsin(q2/ρ)] (ratios capped at 1, each angle from atan2 of the legs
+    √((ρ − p)(ρ + p)) and p so that it keeps its digits near a tangent); the arc is their
+    overlap. Its ends are
+    smooth in ρ except at the radii of the box's corners and where the circle touches a side's
+    line (ρ = p or q, a square-root onset).
+    """
+    r = np.asarray(rho, dtype=float)
+
+    legs: dict[float, FloatArray] = {}
+
+    def leg(p: float) -> FloatArray:  # √(ρ² − p²), 0 inside; each distance once
+        if p not in legs:
+            legs[p] = np.sqrt(np.maximum((r - p) * (r + p), 0.0))
+        return legs[p]
+
+    def acos(p: float) -> FloatArray:  # arccos(min(p/ρ, 1)), accurate where p/ρ → 1
+        return np.arctan2(leg(p), p)
+
+    def asin(q: float) -> FloatArray:  # arcsin(min(q/ρ, 1)), likewise
+        return np.arctan2(q, leg(q))
+
+    xs = [(1.0, max(x1, 0.0), x2)] if x2 > 0.0 else []
+    xs += [(-1.0, max(-x2, 0.0), -x1)] if x1 < 0.0 else []
+    ys = [(1.0, max(y1, 0.0), y2)] if y2 > 0.0 else []
+    ys += [(-1.0, max(-y2, 0.0), -y1)] if y1 < 0.0 else []
+    arcs = []
+    for sx, p1, p2 in xs:
+        for sy, q1, q2 in ys:
+            if p2 <= p1 or q2 <= q1:
+                continue
+            lo = np.maximum(acos(p2), asin(q1))
+            hi = np.minimum(acos(p1), asin(q2))
+            hi = np.where(r > 0.0, np.maximum(hi, lo), lo)
+            arcs.append((sx, sy, lo, hi))
+    return arcs
+
+
+def circle_in_box_angle(rho: ArrayLike, x1: float, x2: float, y1: float, y2: float) -> FloatArray:
+    """Angle (rad) of the circle of radius ``rho`` about the origin that lies in the box
+    [x1, x2] × [y1, y2]: the total of :func:`circle_in_box_arcs`. Times ρ / area, it is the
+    density of Ω⊥ = √(ωx² + ωy²) for uniform ωx, ωy (the polar-coordinates Jacobian).
+    """
+    total = np.zeros(np.shape(rho))
+    for _sx, _sy, lo, hi in circle_in_box_arcs(rho, x1, x2, y1, y2):
+        total = total + (hi - lo)
+    return total
+
+
+def gap_half_width(cot2_psi: Any) -> Any:
+    """Half-width b = π − a = arccos(cot²ψ) of the phase gaps (2m + 1)π ± b in which the coin
+    shows the other face (a from :func:`half_width`); 0 when ψ ≤ 45° (no gap).
+
+    Notes
+    -----
+    n(T)·n0 < 0 ⇔ cos(ωp T) < −cot²ψ (Diaconis, Holmes & Montgomery 2007, section 2): the
+    phases within arccos(cot²ψ) of an odd multiple of π. Near ψ = 45° it is a square root,
+    b ≈ √(2 (1 − cot²ψ)).
+    """
+    return np.arccos(np.minimum(cot2_psi, 1.0))

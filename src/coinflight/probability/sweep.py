@@ -131,8 +131,10 @@ def estimate_many(
 MAX_ROWS = 100_000
 """Most rows a sweep accepts (checked before any row is built)."""
 ROW_SECONDS = 0.05
-"""Seconds of work counted for a row whose method bounds its own work (exact): the sweep's
-work bound (:func:`check_sweep_work`) adds this per row; a single row's own bound still holds."""
+"""Seconds of work counted for a row whose method bounds its own work and makes no estimate
+of it (exact's adaptive quadrature; exact otherwise estimates its row,
+:func:`coinflight.probability.exact.estimated_seconds`): the sweep's work bound
+(:func:`check_sweep_work`) adds this per row; a single row's own bound still holds."""
 CHECKPOINT_SUFFIX = ".partial.jsonl"
 """A sweep writing FILE keeps its finished rows in FILE + this suffix until FILE is written."""
 
@@ -305,14 +307,20 @@ class SweepResults(ProbabilityResults):
 
 
 def check_sweep_work(cases: Sequence[Case], method: str, n: int | None) -> float:
-    """Seconds of work of the sweep on the reference machine (each row's estimate, or
-    :data:`ROW_SECONDS` for a method without one); ValueError beyond
+    """Seconds of work of the sweep on the reference machine (each row's estimate, exact's
+    from the integral it will do, or :data:`ROW_SECONDS` for a method without one); ValueError
+    beyond
     :data:`coinflight._validation.MAX_RUN_SECONDS`, before anything runs."""
+    from coinflight.probability import exact
+
     estimator = registry.get(method)
     total = 0.0
     for case in cases:
         size = estimator.size_for(len(case.dist.ranged), n)
-        if estimator.work is None or size is None:
+        if estimator.name == exact.NAME:
+            seconds = exact.estimated_seconds(case.dist, case.model)
+            total += ROW_SECONDS if seconds is None else seconds
+        elif estimator.work is None or size is None:
             total += ROW_SECONDS
         else:
             total += estimator.work(case.dist, size, case.model)
