@@ -382,6 +382,30 @@ def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
     assert client.get("/redoc").status_code == 404
 
 
+def test_the_coin_table_and_air_parameters_are_one_definition_in_every_endpoint(client):
+    """The coin's, the table's and the air's parameters come from one dependency each
+    (coinflight.web.params): the same names, schemas and words wherever they are taken, read
+    and refused as the command line does."""
+    paths = client.get("/openapi.json").json()["paths"]
+    documented = {
+        path.rsplit("/", 1)[1]: {q["name"]: q for q in op["get"]["parameters"]}
+        for path, op in paths.items()
+    }
+    groups = {
+        ("coin", "radius", "thickness", "mass"): ("toss", "probability", "basin", "bias"),
+        ("surface", "drop_height", "restitution", "friction"): ("toss", "probability", "basin"),
+        ("drag", "spin_damping"): ("toss", "probability"),
+    }
+    for names, endpoints in groups.items():
+        for name in names:
+            first = documented[endpoints[0]][name]
+            assert all(documented[e][name] == first for e in endpoints), name
+    assert api_error(client, "/api/bias?psi=10&mass=x") == cli_error(
+        "bias", "--psi", "10", "--mass", "x"
+    )
+    assert api_error(client, "/api/bias?psi=10&drag=1") == "No such option: --drag"
+
+
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
     assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
     assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")

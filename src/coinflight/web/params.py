@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import Query
+from fastapi import Depends, Query
 
-from coinflight.queries.values import AirArgs, TableArgs, TossArgs
+from coinflight.queries.values import AirArgs, CoinArgs, TableArgs, TossArgs
 
 
 def flag(name: str) -> str:
@@ -66,6 +66,17 @@ Radius = Annotated[float | None, _q("Custom coin radius, m (as --radius).")]
 Thickness = Annotated[float | None, _q("Custom coin thickness, m (as --thickness).")]
 Mass = Annotated[float | None, _q("Custom coin mass, kg (as --mass).")]
 
+
+def coin_args(
+    coin: CoinName = None, radius: Radius = None, thickness: Thickness = None, mass: Mass = None
+) -> CoinArgs:
+    """--coin or the custom dimensions, as typed (resolved in the worker)."""
+    return CoinArgs(coin, radius, thickness, mass)
+
+
+CoinQuery = Annotated[CoinArgs, Depends(coin_args)]
+"""The coin's four parameters, one dependency shared by the endpoints that take a coin."""
+
 # --- one toss --------------------------------------------------------------------------------
 Omega = Annotated[
     str,
@@ -104,16 +115,25 @@ def toss_args(
 
 
 def table_args(
-    surface: str, drop_height: float | None, restitution: str | None, friction: str | None
+    surface: Surface = "hand",
+    drop_height: DropHeight = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
     return TableArgs(surface, drop_height, restitution, friction, None)
 
 
-def air_args(drag: float | None, spin_damping: float | None) -> AirArgs:
+def air_args(drag: Drag = None, spin_damping: SpinDamping = None) -> AirArgs:
     """--drag and --spin-damping."""
     return AirArgs(drag, spin_damping)
+
+
+TableQuery = Annotated[TableArgs, Depends(table_args)]
+"""Where the toss ends: one dependency shared by the endpoints that land a coin."""
+AirQuery = Annotated[AirArgs, Depends(air_args)]
+"""The air: one dependency shared by the endpoints that fly through it."""
 
 
 Trajectory = Annotated[
