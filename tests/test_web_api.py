@@ -290,6 +290,29 @@ def test_bias_json_equals_the_command_line(client, args):
     assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
 
 
+def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each(client):
+    """``psis`` (the page's curve p(ψ) in one request): for each ψ, in the order given, the
+    object of ``coinflight bias --psi ψ --json``; documented in the schema; refused in one line
+    with another way of giving ψ, beyond its bound, or with a value out of range."""
+    psis = ["90", "0", "45.3", "134.9", "180"]
+    got = client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}).json()
+    assert got == [cli_json("bias", "--psi", psi, "--coin", "eur-1") for psi in psis]
+    assert got[1]["p_same_side"] == 1.0 and got[0]["p_same_side"] == 0.5  # DHM 2007, eq. (2)
+    documented = client.get("/openapi.json").json()["paths"]["/api/bias"]["get"]["parameters"]
+    assert "psis=0,5,10" in next(q for q in documented if q["name"] == "psis")["description"]
+    assert api_error(client, "/api/bias?psis=10,200") == cli_error("bias", "--psi", "200")
+    assert (
+        api_error(client, "/api/bias?psis=10,x")
+        == "Invalid value for '--psis': 'x' is not a number"
+    )
+    assert api_error(client, "/api/bias?psis=10&psi=3&monte_carlo=10") == (
+        "psis is the closed form at each ψ: leave out psi, monte_carlo"
+    )
+    assert api_error(client, "/api/bias?psis=" + ",".join(["1"] * 2001)).startswith(
+        "a curve of 2001 values of ψ"
+    )
+
+
 def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
     detail = api_error(client, "/api/bias?psi=80&monte_carlo=1000000000")
     assert detail.startswith("a Monte Carlo check of 1000000000 tosses is 250 s of estimated work")
@@ -482,7 +505,8 @@ ENDPOINTS = {
         "boundaries": ["true", "false"],
     },
     "bias": {
-        "psi": ["80", "45", "180"], "psi_dist": ["normal:80,5", "70:90"], "preset": ["human"],
+        "psi": ["80", "45", "180"], "psis": ["0,45,90", "46.5", "5,x"],
+        "psi_dist": ["normal:80,5", "70:90"], "preset": ["human"],
         "monte_carlo": ["100", "5000"], "seed": ["3"],
     },
     "data": {

@@ -228,6 +228,7 @@ def create_app(
     async def bias(
         *,
         psi: p.Psi = None,
+        psis: p.Psis = None,
         psi_dist: p.PsiDist = None,
         preset: p.PsiPreset = None,
         monte_carlo: p.MonteCarlo = None,
@@ -235,9 +236,17 @@ def create_app(
         coin: p.CoinQuery,
     ) -> Response:
         """The probability that a precessing coin lands on the side it started (Diaconis,
-        Holmes & Montgomery 2007), as `coinflight bias --json`."""
+        Holmes & Montgomery 2007), as `coinflight bias --json`; with `psis` a list of those
+        objects, one for each fixed ψ, in one request."""
         from coinflight.web import endpoints
 
+        if psis is not None:
+            others = {"psi": psi, "psi_dist": psi_dist, "preset": preset,
+                      "monte_carlo": monte_carlo}  # fmt: skip
+            given = [name for name, value in others.items() if value is not None]
+            if given:
+                raise ValueError(f"psis is the closed form at each ψ: leave out {', '.join(given)}")
+            return await answer(endpoints.bias_curve, coin, p.number_list(psis, "psis"))
         return await answer(
             endpoints.bias,
             coin,

@@ -141,6 +141,13 @@ def bias(
     return bias_query(psi, psi_dist, preset, monte_carlo, seed, coin.resolve()).payload()
 
 
+def bias_curve(coin: CoinArgs, psis: tuple[float, ...]) -> list[dict[str, Any]]:
+    """``GET /api/bias?psis=…``: ``coinflight bias --psi X --json`` for each ψ."""
+    from coinflight.queries.bias import bias_curve as curve
+
+    return curve(psis, coin.resolve())
+
+
 def data(dataset: str | None, interval: str, psi_sd: float) -> dict[str, Any]:
     """``GET /api/data``: ``coinflight data --json`` for a shipped dataset."""
     from coinflight.queries.data import dataset_payload

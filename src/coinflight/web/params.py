@@ -40,6 +40,17 @@ def numbers(text: str, name: str, count: int, metavar: str) -> tuple[float, ...]
     return tuple(values)
 
 
+def number_list(text: str, name: str) -> tuple[float, ...]:
+    """Comma-separated numbers, as many as given (``psis=0,5,10``)."""
+    values = []
+    for part in text.split(","):
+        try:
+            values.append(float(part))
+        except ValueError:
+            raise ValueError(invalid(name, part, "is not a number")) from None
+    return tuple(values)
+
+
 def gravity(g: float) -> float:
     """--g checked as the command line checks it, before anything divides by it."""
     from coinflight.model.toss import GRAVITY
@@ -182,6 +193,15 @@ Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand 
 
 # --- the same-side bias and real flips --------------------------------------------------------
 Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]
+Psis = Annotated[
+    str | None,
+    _q(
+        "Several fixed ψ at once, degrees, comma-separated (psis=0,5,10, at most 2000): the "
+        "answer is then a list, for each ψ in the order given the object that psi=ψ answers "
+        "(one request for a curve p(ψ)); not with psi, psi_dist, preset or monte_carlo.",
+        examples=["0,45,90,135,180"],
+    ),
+]
 PsiDist = Annotated[
     str | None, _q("A distribution of ψ in degrees: normal:MEAN,SD, LOW:HIGH or a number.")
 ]
