@@ -420,8 +420,9 @@ def test_probability_is_printed_as_the_command_line_prints_it(page: Any) -> None
     text = page.locator("#prob-text").text_content()
     assert _p_line(text) == _p_line(mc.stdout)
     assert "± " in _p_line(text) and "95 % CI" in _p_line(text)
-    # Every line but the timing is the command line's.
-    assert _lines(text, drop=("method ",)) == _lines(mc.stdout, drop=("method ", "US quarter"))
+    # Every line but the timing is the command line's, the coin's first.
+    assert text.splitlines()[0].startswith("US quarter (d = 24.26 mm")
+    assert _lines(text, drop=("method ",)) == _lines(mc.stdout, drop=("method ",))
     assert page.problems.messages == []
 
 
