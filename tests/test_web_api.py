@@ -429,6 +429,49 @@ def test_the_coin_table_and_air_parameters_are_one_definition_in_every_endpoint(
     assert api_error(client, "/api/bias?psi=10&drag=1") == "No such option: --drag"
 
 
+MILLIMETRES = ["--radius", "12.13", "--thickness", "0.00175", "--mass", "0.00567"]
+"""A quarter's radius given in millimetres: allowed, and warned about (a PlausibilityWarning)."""
+
+
+@pytest.mark.parametrize(
+    ("command", "args", "query"),
+    [
+        ("toss", ["--omega", "80", "0", "0", "--flight-time", "0.7"],
+         "omega=80,0,0&flight_time=0.7"),
+        ("probability", ["--omega-x", "60:90", "--flight-time", "0.6:0.9"],
+         "omega_x=60:90&flight_time=0.6:0.9"),
+        ("bias", ["--psi", "80"], "psi=80"),
+    ],
+)  # fmt: skip
+def test_plausibility_warnings_are_in_the_answer_as_in_the_command_lines_json(
+    client, command, args, query
+):
+    """The library's warnings reach the API's caller (not only the worker's stderr): the
+    command line prints each once on stderr and carries it in ``--json``'s ``"warnings"``;
+    the API's answer is that same object."""
+    result = cli.invoke(cli_app, [command, *args, *MILLIMETRES, "--json"])
+    assert result.exit_code == 0, result.output
+    expected = json.loads(result.stdout)
+    (line,) = result.stderr.splitlines()
+    prefix = "coinflight: warning: "
+    assert line.startswith(prefix + "radius 12.13 m is not a coin's size (1 mm to 10 cm)")
+    assert expected["warnings"] == [line[len(prefix) :]]
+    coin = "radius=12.13&thickness=0.00175&mass=0.00567"
+    got = client.get(f"/api/{command}?{query}&{coin}").json()
+    got.pop("elapsed", None), expected.pop("elapsed", None)
+    assert got == expected
+    if command == "bias":
+        assert client.get(f"/api/bias?psis=80&{coin}").json() == [expected]
+
+
+def test_an_answer_without_warnings_has_no_new_key(client):
+    """No warning, no ``"warnings"`` key where there was none (the JSON of ``toss`` and ``bias``
+    is as before); ``probability`` keeps its list (empty)."""
+    assert "warnings" not in client.get("/api/toss?flight_time=0.7").json()
+    assert "warnings" not in client.get("/api/bias?psi=80").json()
+    assert client.get("/api/probability?flight_time=0.6:0.9").json()["warnings"] == []
+
+
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
     assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
     assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")

@@ -85,7 +85,7 @@ def create_app(
     _errors(app)
     _static(app)
 
-    async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
+    async def answer(fn: Callable[..., Any], *args: Any) -> Response:
         """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
         if not running:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
@@ -273,8 +273,15 @@ def create_app(
     return app
 
 
-def _encoded(fn: Callable[..., dict[str, Any]], *args: Any) -> str:
-    return json_text(fn(*args))
+def _encoded(fn: Callable[..., Any], *args: Any) -> str:
+    """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
+    computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
+    reaches no one)."""
+    from coinflight.queries.plausibility import heard, with_warnings
+
+    with heard() as texts:
+        payload = fn(*args)
+    return json_text(with_warnings(payload, texts))
 
 
 async def _known_parameters(request: Request) -> None:
