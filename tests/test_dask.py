@@ -169,6 +169,18 @@ def test_batches_are_sized_by_the_cpu_they_cost_outside_the_tasks(cluster):
     assert stats.cost == pytest.approx(0.004)
 
 
+def _profiling() -> bool:
+    import dask
+
+    return bool(dask.config.get("distributed.worker.profile.enabled"))
+
+
+def test_the_local_cluster_workers_run_without_the_statistical_profiler(cluster):
+    # a thread sampling the computing thread every 10 ms (Dask's default), for a dashboard
+    # coinflight does not serve: off in the workers dask_client starts (LOCAL_CONFIG)
+    assert set(cluster.client.run(_profiling).values()) == {False}
+
+
 def test_a_sweep_on_dask_equals_the_sweep_on_threads(cluster):
     cases = [
         Case(TossDistribution(omega_x=Normal(m, sd), flight_time=Uniform(0.5, 0.8)))
