@@ -4,22 +4,31 @@
     python benchmarks/bench_sweep.py --quick    # 200 rows, 1 repeat
 
 A sweep of 10 mean spins × 10 spreads × 10 flight-time ranges = 1000 rows, each a Monte Carlo
-estimate of 50,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters live
-side by side, one of 1 worker process and one of 2 (one thread each), and the repeats alternate
-between them, so that both see the same load of a shared machine; the result is the median time
-of each and their ratio (2.0 would be perfect scaling on 2 cores). Also: the per-task overhead
-each cluster measured, the batches it formed, and the share of the workers' time not spent
-computing. The answers on 1 and 2 workers are checked equal, bit for bit.
+estimate of 50,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters, one
+of 1 worker process and one of 2 (one thread each), started anew for each repeat and one at a
+time (an idle cluster would take CPU from the other), the repeats alternating between them so
+that both see the same load of a shared machine; the result is the median time of each and
+their ratio (2.0 would be perfect scaling on 2 cores). Also: the per-task overhead each cluster
+measured, the batches it formed, the share of the workers' time not spent computing, and where
+the CPU went (psutil, per process and, in the client's process, per thread): the worker
+processes; the client process's event loop (on a LocalCluster it runs the client's messaging,
+the scheduler and the nannies); its main thread (the sweep's own Python: rows, keys,
+submitting, results). On a 2-core machine the client's CPU is taken from the 2 workers, not
+from the 1. The answers on 1 and 2 workers are checked equal, bit for bit.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import statistics
 import sys
+import threading
 import time
 from pathlib import Path
+
+import psutil  # a dependency of dask.distributed
 
 from bench_probability import machine
 from coinflight.model.distributions import Normal, Uniform
@@ -37,6 +46,22 @@ def _cpu_seconds() -> float:
 def worker_cpu(ex: object) -> float:
     """CPU seconds used so far by all the cluster's worker processes."""
     return sum(ex.client.run(_cpu_seconds).values())  # type: ignore[attr-defined]
+
+
+def cpu_split(ex: object) -> dict[str, float]:
+    """CPU seconds so far: this cluster's worker processes, and this process's threads (the
+    main thread; the event loops and every other thread)."""
+    pids = ex.client.run(os.getpid).values()  # type: ignore[attr-defined]
+    workers = sum(sum(psutil.Process(pid).cpu_times()[:2]) for pid in pids)
+    main_id = threading.main_thread().native_id
+    main = loops = 0.0
+    for thread in psutil.Process().threads():
+        seconds = thread.user_time + thread.system_time
+        if thread.id == main_id:
+            main += seconds
+        else:
+            loops += seconds
+    return {"workers": workers, "client_main_thread": main, "client_event_loops": loops}
 
 
 def cases(k: int) -> list[Case]:
@@ -66,18 +91,18 @@ def main(argv: list[str]) -> int:
     times: dict[int, list[float]] = {1: [], 2: []}
     stats: dict[int, dict[str, float]] = {}
     answers: dict[int, list[tuple[int, int, int] | None]] = {}
-    with dask_client("local", 1) as one, dask_client("local", 2) as two:
-        executors = {1: one, 2: two}
-        for workers, ex in executors.items():  # warm-up: imports and compiled kernels
-            sweep(rows[:8], "monte-carlo", n=N, seed=1, executor=ex)
-            print(f"{workers} worker(s): per-task overhead {1e3 * ex.overhead:.2f} ms")
-        for _ in range(repeats):
-            for workers, ex in executors.items():
+    for _ in range(repeats):
+        for workers in (1, 2):
+            with dask_client("local", workers) as ex:
+                # warm-up (not timed): imports, compiled kernels, the measured overhead
+                sweep(rows[:8], "monte-carlo", n=N, seed=1, executor=ex)
                 c0 = worker_cpu(ex)
+                split0 = cpu_split(ex)
                 t0 = time.perf_counter()
                 result = sweep(rows, "monte-carlo", n=N, seed=1, executor=ex)
                 times[workers].append(time.perf_counter() - t0)
                 cpu = worker_cpu(ex) - c0
+                split = {k: x - split0[k] for k, x in cpu_split(ex).items()}
                 answers[workers] = [r.counts for r in result]
                 last = ex.last
                 stats[workers] = {
@@ -88,6 +113,9 @@ def main(argv: list[str]) -> int:
                     "not_computing": last.overhead_share,
                     # CPU the workers got, in cores: 1.0 per worker on an idle machine
                     "cores_used": cpu / times[workers][-1],
+                    "cost_ms": 1e3 * last.cost,
+                    "load": os.getloadavg()[0],
+                    **{f"cpu_{k}_s": x for k, x in split.items()},
                 }
     if answers[1] != answers[2]:
         print("ERROR: the answers on 1 and 2 workers differ")
@@ -101,6 +129,13 @@ def main(argv: list[str]) -> int:
             f"({', '.join(f'{t:.2f}' for t in times[w])}); {s['batches']} batches, "
             f"{100 * s['not_computing']:.1f} % of the workers' time not computing, "
             f"{s['cores_used']:.2f} cores of CPU used (last run)"
+        )
+        print(
+            f"  CPU of the last run: workers {s['cpu_workers_s']:.2f} s, client process "
+            f"{s['cpu_client_event_loops_s']:.2f} s in its event loops (scheduler, nannies, "
+            f"messaging) + {s['cpu_client_main_thread_s']:.2f} s in its main thread (the sweep); "
+            f"batches sized for {s['cost_ms']:.1f} ms of overhead each; load average "
+            f"{s['load']:.1f}"
         )
     print(f"speed-up 1 → 2 workers: {ratio:.2f}× (2.00 = linear); answers equal bit for bit")
     cores = stats[2]["cores_used"] / stats[1]["cores_used"]

@@ -37,6 +37,22 @@ def test_exact_json_matches_library():
     assert {"stderr", "ci95"} <= set(payload)
 
 
+def test_json_names_the_coin_and_gives_its_dimensions():
+    """``coin`` stays the name (scripts read it); ``coin_dimensions`` adds the size and mass in SI
+    (US Mint: the cent 19.05 mm across, 1.52 mm thick, 2.5 g), the numbers of the first line."""
+    result = run("probability", *FIG2A, "--coin", "us-cent", "--json")
+    assert result.exit_code == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert payload["coin"] == "US cent"
+    size = payload["coin_dimensions"]
+    assert set(size) == {"radius", "thickness", "mass"}
+    assert size["radius"] == pytest.approx(19.05e-3 / 2, rel=1e-12)
+    assert size["thickness"] == pytest.approx(1.52e-3, rel=1e-12)
+    assert size["mass"] == pytest.approx(2.5e-3, rel=1e-12)
+    text = run("probability", *FIG2A, "--coin", "us-cent").stdout.splitlines()[0]
+    assert text == "US cent (d = 19.05 mm, h = 1.52 mm, m = 2.500 g), started heads up"
+
+
 @pytest.mark.parametrize(
     ("method", "n", "extra"),
     [

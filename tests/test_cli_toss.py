@@ -204,3 +204,18 @@ def test_console_script_runs_end_to_end():
         bad.stderr.strip()
         == "coinflight: error: flight time must be between 1e-06 and 10000 (in s), got -1.0"
     )
+
+
+def test_coin_name_in_any_case_on_the_command_line():
+    """``--coin US-Cent`` is the cent (presets by casefold), in ``toss`` as in every command
+    that takes a coin (they share its one lookup, ``Coin.preset``)."""
+    upper = run("toss", "-T", "0.7", "--coin", "US-Cent", "--json")
+    assert upper.exit_code == 0, upper.output
+    assert json.loads(upper.stdout) == json.loads(run("toss", "-T", "0.7", "--coin", "us-cent",
+                                                      "--json").stdout)  # fmt: skip
+    bad = run("toss", "-T", "0.7", "--coin", "US-Penny")
+    assert bad.exit_code == 2
+    assert bad.stderr.strip() == (
+        "coinflight: error: unknown coin 'US-Penny'; known coins: us-cent, us-nickel, us-dime, "
+        "us-quarter, us-half-dollar, eur-1, eur-2, eur-50c, gbp-1"
+    )

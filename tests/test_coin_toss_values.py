@@ -64,6 +64,22 @@ def test_unknown_coin_suggests_a_name():
         Coin.preset("us-quater")
 
 
+@pytest.mark.parametrize("typed", ["US-Cent", "US-CENT", "us-Cent", "Us-cent"])
+def test_coin_presets_are_found_in_any_case(typed):
+    assert Coin.preset(typed) == Coin.preset("us-cent")
+    assert Coin.preset(typed).name == "US cent"
+
+
+def test_an_unknown_coin_in_another_case_is_refused_as_typed_with_the_names():
+    with pytest.raises(ValueError) as caught:
+        Coin.preset("US-Penny")
+    assert str(caught.value).startswith("unknown coin 'US-Penny'")
+    assert str(caught.value).endswith(
+        "known coins: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, "
+        "eur-50c, gbp-1"
+    )
+
+
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.inf, math.nan])
 def test_toss_rejects_bad_flight_time(bad):
     with pytest.raises(ValueError, match=r"flight time must be between 1e-06 and 10000 \(in s\)"):

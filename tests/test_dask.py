@@ -134,6 +134,53 @@ def test_small_tasks_are_batched_until_the_overhead_is_under_five_percent(cluste
     assert big >= 0.5 * stats.compute, (wanted, stats)
 
 
+def _burn(seconds: float) -> float:
+    """Computes (CPU, not sleep) for ``seconds`` of the thread's CPU time."""
+    end = time.thread_time() + seconds
+    while time.thread_time() < end:
+        pass
+    return seconds
+
+
+def test_batches_are_sized_by_the_cpu_they_cost_outside_the_tasks(cluster):
+    # 1 ms of round trip but 4 ms of CPU per task outside it (the client's, the scheduler's,
+    # the workers' messaging; given here, so that the sizing alone is tested): batches compute
+    # for at least 4 ms / 5 % = 80 ms of CPU, not the 20 ms the round trip alone would ask;
+    # a busy machine stretches their wall time, never below their CPU time
+    from coinflight.probability import distributed
+
+    executor = DaskExecutor(cluster.client)
+    key = str(cluster.client.id)
+    measured = distributed._OVERHEADS.get(key)
+    distributed._OVERHEADS[key] = (0.001, 0.004, None)
+    try:
+        tasks = [0.002] * 400
+        out = dict(executor.completed(_burn, tasks, [1] * len(tasks)))
+    finally:
+        if measured is None:
+            distributed._OVERHEADS.pop(key)
+        else:
+            distributed._OVERHEADS[key] = measured
+    assert sorted(out) == list(range(400))
+    stats = executor.last
+    wanted = 0.004 / TARGET_OVERHEAD
+    big = sum(d for d in stats.durations if d >= 0.8 * wanted)
+    assert big >= 0.5 * stats.compute, (wanted, stats)
+    assert stats.cost == pytest.approx(0.004)
+
+
+def _profiling() -> bool:
+    import dask
+
+    return bool(dask.config.get("distributed.worker.profile.enabled"))
+
+
+def test_the_local_cluster_workers_run_without_the_statistical_profiler(cluster):
+    # a thread sampling the computing thread every 10 ms (Dask's default), for a dashboard
+    # coinflight does not serve: off in the workers dask_client starts (LOCAL_CONFIG)
+    assert set(cluster.client.run(_profiling).values()) == {False}
+
+
 def test_a_sweep_on_dask_equals_the_sweep_on_threads(cluster):
     cases = [
         Case(TossDistribution(omega_x=Normal(m, sd), flight_time=Uniform(0.5, 0.8)))

@@ -290,6 +290,29 @@ def test_bias_json_equals_the_command_line(client, args):
     assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
 
 
+def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each(client):
+    """``psis`` (the page's curve p(ψ) in one request): for each ψ, in the order given, the
+    object of ``coinflight bias --psi ψ --json``; documented in the schema; refused in one line
+    with another way of giving ψ, beyond its bound, or with a value out of range."""
+    psis = ["90", "0", "45.3", "134.9", "180"]
+    got = client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}).json()
+    assert got == [cli_json("bias", "--psi", psi, "--coin", "eur-1") for psi in psis]
+    assert got[1]["p_same_side"] == 1.0 and got[0]["p_same_side"] == 0.5  # DHM 2007, eq. (2)
+    documented = client.get("/openapi.json").json()["paths"]["/api/bias"]["get"]["parameters"]
+    assert "psis=0,5,10" in next(q for q in documented if q["name"] == "psis")["description"]
+    assert api_error(client, "/api/bias?psis=10,200") == cli_error("bias", "--psi", "200")
+    assert (
+        api_error(client, "/api/bias?psis=10,x")
+        == "Invalid value for '--psis': 'x' is not a number"
+    )
+    assert api_error(client, "/api/bias?psis=10&psi=3&monte_carlo=10") == (
+        "psis is the closed form at each ψ: leave out psi, monte_carlo"
+    )
+    assert api_error(client, "/api/bias?psis=" + ",".join(["1"] * 2001)).startswith(
+        "a curve of 2001 values of ψ"
+    )
+
+
 def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
     detail = api_error(client, "/api/bias?psi=80&monte_carlo=1000000000")
     assert detail.startswith("a Monte Carlo check of 1000000000 tosses is 250 s of estimated work")
@@ -386,6 +409,73 @@ def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
     assert client.get("/redoc").status_code == 404
 
 
+def test_the_coin_table_and_air_parameters_are_one_definition_in_every_endpoint(client):
+    """The coin's, the table's and the air's parameters come from one dependency each
+    (coinflight.web.params): the same names, schemas and words wherever they are taken, read
+    and refused as the command line does."""
+    paths = client.get("/openapi.json").json()["paths"]
+    documented = {
+        path.rsplit("/", 1)[1]: {q["name"]: q for q in op["get"]["parameters"]}
+        for path, op in paths.items()
+    }
+    groups = {
+        ("coin", "radius", "thickness", "mass"): ("toss", "probability", "basin", "bias"),
+        ("surface", "drop_height", "restitution", "friction"): ("toss", "probability", "basin"),
+        ("drag", "spin_damping"): ("toss", "probability"),
+    }
+    for names, endpoints in groups.items():
+        for name in names:
+            first = documented[endpoints[0]][name]
+            assert all(documented[e][name] == first for e in endpoints), name
+    assert api_error(client, "/api/bias?psi=10&mass=x") == cli_error(
+        "bias", "--psi", "10", "--mass", "x"
+    )
+    assert api_error(client, "/api/bias?psi=10&drag=1") == "No such option: --drag"
+
+
+MILLIMETRES = ["--radius", "12.13", "--thickness", "0.00175", "--mass", "0.00567"]
+"""A quarter's radius given in millimetres: allowed, and warned about (a PlausibilityWarning)."""
+
+
+@pytest.mark.parametrize(
+    ("command", "args", "query"),
+    [
+        ("toss", ["--omega", "80", "0", "0", "--flight-time", "0.7"],
+         "omega=80,0,0&flight_time=0.7"),
+        ("probability", ["--omega-x", "60:90", "--flight-time", "0.6:0.9"],
+         "omega_x=60:90&flight_time=0.6:0.9"),
+        ("bias", ["--psi", "80"], "psi=80"),
+    ],
+)  # fmt: skip
+def test_plausibility_warnings_are_in_the_answer_as_in_the_command_lines_json(
+    client, command, args, query
+):
+    """The library's warnings reach the API's caller (not only the worker's stderr): the
+    command line prints each once on stderr and carries it in ``--json``'s ``"warnings"``;
+    the API's answer is that same object."""
+    result = cli.invoke(cli_app, [command, *args, *MILLIMETRES, "--json"])
+    assert result.exit_code == 0, result.output
+    expected = json.loads(result.stdout)
+    (line,) = result.stderr.splitlines()
+    prefix = "coinflight: warning: "
+    assert line.startswith(prefix + "radius 12.13 m is not a coin's size (1 mm to 10 cm)")
+    assert expected["warnings"] == [line[len(prefix) :]]
+    coin = "radius=12.13&thickness=0.00175&mass=0.00567"
+    got = client.get(f"/api/{command}?{query}&{coin}").json()
+    got.pop("elapsed", None), expected.pop("elapsed", None)
+    assert got == expected
+    if command == "bias":
+        assert client.get(f"/api/bias?psis=80&{coin}").json() == [expected]
+
+
+def test_an_answer_without_warnings_has_no_new_key(client):
+    """No warning, no ``"warnings"`` key where there was none (the JSON of ``toss`` and ``bias``
+    is as before); ``probability`` keeps its list (empty)."""
+    assert "warnings" not in client.get("/api/toss?flight_time=0.7").json()
+    assert "warnings" not in client.get("/api/bias?psi=80").json()
+    assert client.get("/api/probability?flight_time=0.6:0.9").json()["warnings"] == []
+
+
 def test_an_unknown_parameter_is_an_error_as_an_unknown_option(client):
     assert api_error(client, "/api/toss?flight-time=0.7") == "No such option: --flight-time"
     assert cli_error("toss", "--flight-tim", "0.7").startswith("No such option: --flight-tim")
@@ -462,7 +552,8 @@ ENDPOINTS = {
         "boundaries": ["true", "false"],
     },
     "bias": {
-        "psi": ["80", "45", "180"], "psi_dist": ["normal:80,5", "70:90"], "preset": ["human"],
+        "psi": ["80", "45", "180"], "psis": ["0,45,90", "46.5", "5,x"],
+        "psi_dist": ["normal:80,5", "70:90"], "preset": ["human"],
         "monte_carlo": ["100", "5000"], "seed": ["3"],
     },
     "data": {

@@ -184,6 +184,8 @@ def page(browser_context: Any) -> Iterator[Any]:
     page = browser_context.new_page()
     page.set_default_timeout(WAIT_MS)
     page.problems = Problems(page)
+    page.api_requests = []  # the API's URLs the page asked, in order
+    page.on("request", lambda r: page.api_requests.append(r.url) if "/api/" in r.url else None)
     page.goto("/")
     page.wait_for_selector("body[data-ready=true]")
     yield page
@@ -418,8 +420,9 @@ def test_probability_is_printed_as_the_command_line_prints_it(page: Any) -> None
     text = page.locator("#prob-text").text_content()
     assert _p_line(text) == _p_line(mc.stdout)
     assert "± " in _p_line(text) and "95 % CI" in _p_line(text)
-    # Every line but the timing is the command line's.
-    assert _lines(text, drop=("method ",)) == _lines(mc.stdout, drop=("method ", "US quarter"))
+    # Every line but the timing is the command line's, the coin's first.
+    assert text.splitlines()[0].startswith("US quarter (d = 24.26 mm")
+    assert _lines(text, drop=("method ",)) == _lines(mc.stdout, drop=("method ",))
     assert page.problems.messages == []
 
 
@@ -492,6 +495,25 @@ def test_same_side_follows_the_psi_slider_and_shows_the_real_flips(page: Any, se
     page.wait_for_function(
         "v => document.querySelector('#psi').value == v", arg=f"{data['psi_deg']:.1f}"
     )
+    assert page.problems.messages == []
+
+
+def test_the_curve_p_of_psi_is_one_request(page: Any) -> None:
+    """The curve p(ψ) is drawn from one request (``/api/bias?psis=…``, not one a ψ); the zoom
+    near 90° asks once more, for the ψ it lacks."""
+    ready(page, "same-side")
+    curves = [u for u in page.api_requests if "/api/bias" in u and "psis=" in u]
+    assert len(curves) == 1
+    psis = urllib.parse.parse_qs(urllib.parse.urlparse(curves[0]).query)["psis"][0].split(",")
+    assert len(psis) > 40 and {"0", "45.1", "90", "180"} <= set(psis)
+    singles = [u for u in page.api_requests if "/api/bias" in u and "psis=" not in u]
+    assert len(singles) == 1  # the slider's ψ
+    page.check("input[name=psi-view][value=near]")
+    page.wait_for_function(
+        "() => performance.getEntriesByType('resource')"
+        ".filter(e => e.name.includes('psis=')).length == 2"
+    )
+    assert len([u for u in page.api_requests if "psis=" in u]) == 2
     assert page.problems.messages == []
 
 

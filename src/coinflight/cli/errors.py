@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import os
 import sys
-import warnings
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -108,23 +107,12 @@ class OneLineErrors(TyperGroup):
 @contextmanager
 def one_line_warnings() -> Iterator[None]:
     """The library's :class:`~coinflight._validation.PlausibilityWarning` (an odd but allowed
-    value, e.g. a radius in millimetres) as ``coinflight: warning: …`` on stderr, each once;
-    other warnings as Python shows them."""
-    from coinflight._validation import PlausibilityWarning
+    value, e.g. a radius in millimetres) as ``coinflight: warning: …`` on stderr, each once
+    (:func:`coinflight.queries.plausibility.heard`; ``--json`` also carries them); other
+    warnings as Python shows them."""
+    from coinflight.queries.plausibility import heard
 
-    shown: set[str] = set()
-    with warnings.catch_warnings():
-        warnings.simplefilter("always", PlausibilityWarning)
-        default = warnings.showwarning
-
-        def show(message: Warning | str, category: type[Warning], *args: Any, **kw: Any) -> None:
-            if not issubclass(category, PlausibilityWarning):
-                default(message, category, *args, **kw)
-            elif (text := _one_line(str(message))) not in shown:
-                shown.add(text)
-                say(f"coinflight: warning: {text}")
-
-        warnings.showwarning = show
+    with heard(lambda text: say(f"coinflight: warning: {text}")):
         yield
 
 

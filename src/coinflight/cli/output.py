@@ -11,9 +11,12 @@ import typer
 
 
 def print_json(payload: dict[str, Any]) -> None:
-    """One JSON object on stdout (NumPy scalars and arrays become numbers and lists)."""
+    """One JSON object on stdout (NumPy scalars and arrays become numbers and lists), the
+    plausibility warnings heard so far in its ``"warnings"``, as the web's answers carry them."""
+    from coinflight.queries import plausibility
     from coinflight.queries.encoding import json_text
 
+    payload = plausibility.with_warnings(payload, plausibility.so_far())
     sys.stdout.write(json_text(payload) + "\n")  # whole, or an error
 
 

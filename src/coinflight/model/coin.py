@@ -50,7 +50,11 @@ class Coin:
 
     @classmethod
     def preset(cls, name: str) -> Coin:
-        """A real coin by short name, see :data:`PRESETS` (REFERENCES §7)."""
+        """A real coin by short name in any case (``US-Cent`` is ``us-cent``), see
+        :data:`PRESETS` (REFERENCES §7); an unknown name is refused as typed, the names listed."""
+        if isinstance(name, str):
+            folded = {key.casefold(): key for key in PRESETS}
+            name = folded.get(name.casefold(), name)
         return v.known("coin", name, PRESETS)
 
     @classmethod

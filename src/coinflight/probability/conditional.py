@@ -14,12 +14,20 @@ Monte Carlo (Rao–Blackwellisation): the same mean, a variance never larger (Ro
 
 from __future__ import annotations
 
+import time
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
+from coinflight.probability.result import ProbabilityResult
+from coinflight.probability.streams import reported_seed
+
+if TYPE_CHECKING:
+    from coinflight.outcomes.base import OutcomeModel
 
 FloatArray = NDArray[np.float64]
 
@@ -42,6 +50,21 @@ def check_flight_time(t: Distribution) -> None:
             f"the conditional-on-spin mode needs a fixed, uniform or normal flight time, got "
             f"{type(t).__name__}"
         )
+
+
+def check(
+    dist: TossDistribution, model: OutcomeModel, method: str, grid_cells: int | None = None
+) -> None:
+    """ValueError unless ``method`` can run in this mode: ``model`` has closed-form bands (the
+    hand catch), no grid cells (Monte Carlo's method B), a flight time with a closed form."""
+    if not model.closed_form_bands:
+        raise ValueError(
+            f"the {MODE} variance reduction needs the hand catch's closed-form "
+            f"bands, not {model.name}; use {method} without it"
+        )
+    if grid_cells is not None:
+        raise ValueError(f"grid cells (method B) do not combine with {MODE}")
+    check_flight_time(dist.flight_time)
 
 
 def same_side_given_spins(
@@ -81,11 +104,56 @@ def spins_from_unit(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, 
     return tuple(out)
 
 
+def same_side_at(dist: TossDistribution, u: FloatArray) -> FloatArray:
+    """P(same side | spins) at points ``u`` of the spins' unit cube (:func:`spins_from_unit`)."""
+    return same_side_given_spins(dist, *spins_from_unit(dist, u))
+
+
+def details(dist: TossDistribution) -> dict[str, Any]:
+    """The mode's entries of a result's ``details``: its name and the ranged spins."""
+    return {"variance_reduction": MODE, "spins": list(ranged_spins(dist))}
+
+
+def result(
+    dist: TossDistribution,
+    same: float,
+    stderr: float,
+    half: float,
+    *,
+    method: str,
+    n: int,
+    root: np.random.SeedSequence,
+    t0: float,
+    details: dict[str, Any],
+) -> ProbabilityResult:
+    """The result of ``method`` in this mode from P(same side) ``same``, its standard error and
+    the half-width ``half`` of its 95 % interval (no counts: averages of probabilities)."""
+    p = same if dist.start_sign > 0 else 1.0 - same
+    return ProbabilityResult(
+        p_heads=p,
+        p_tails=1.0 - p,
+        p_edge=0.0,
+        p_same_side=same,
+        method=method,
+        n=n,
+        samples=n,
+        stderr=stderr,
+        ci95=(max(0.0, p - half), min(1.0, p + half)),
+        seed=reported_seed(root),
+        elapsed=time.perf_counter() - t0,
+        details=details,
+    )
+
+
 __all__ = [
     "MODE",
     "SPINS",
+    "check",
     "check_flight_time",
+    "details",
     "ranged_spins",
+    "result",
+    "same_side_at",
     "same_side_given_spins",
     "spins_from_unit",
 ]

@@ -11,12 +11,17 @@ executor is (``estimate(..., executor=client)``); it is wrapped here, once, in
   to workers: :mod:`coinflight.probability.streams`).
 * **Progress from the futures** as they complete (``distributed.as_completed``), in any order.
 * **Tasks sized from the measured overhead.** A task sent to a cluster costs a fixed time
-  (scheduling, pickling, the round trip): :func:`measure_overhead` times no-op tasks once per
-  client. Consecutive tasks are then grouped into batches, each expected to compute for at
-  least ``overhead / TARGET_OVERHEAD`` seconds, so that the overhead stays under
-  :data:`TARGET_OVERHEAD` (5 %) of the work; the compute time per unit of work comes from the
-  batches already done (each worker's first batch, which may compile numba kernels, excluded).
-  The batches never get so large that a worker would stay idle at the end.
+  (scheduling, pickling, the round trip) and CPU outside the task: the client's, the
+  scheduler's and the nannies' (all in the client's process on a ``LocalCluster``) and the
+  workers' own messaging. On a machine whose cores the client shares with the workers that
+  CPU is taken from the workers, so it counts as overhead as much as the round trip:
+  :func:`measure_overhead` times no-op tasks once per client and takes the larger of the two,
+  and during a run the client process's CPU per batch, observed, raises it when real tasks
+  cost more to send and receive than no-ops. Consecutive tasks are then grouped into batches,
+  each expected to compute for at least ``overhead / TARGET_OVERHEAD`` seconds, so that the
+  overhead stays under :data:`TARGET_OVERHEAD` (5 %) of the work; the compute time per unit of
+  work comes from the batches already done. The batches never get so large that a worker
+  would stay idle at the end.
 
 :func:`dask_client` opens a client on a new ``LocalCluster`` (``"local"``) or on a running
 scheduler (``"tcp://HOST:PORT"``, started with ``dask scheduler`` and ``dask worker``), and
@@ -50,8 +55,25 @@ INSTALL = 'pip install "coinflight[dask]"'
 IN_FLIGHT_PER_SLOT = 2
 """Batches queued per worker thread: one computing, one waiting, so no worker idles."""
 
-_OVERHEADS: dict[str, float] = {}
-"""Measured per-task overhead by client id: a client passed to several estimates is timed once."""
+LOCAL_CONFIG = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.system-monitor.interval": "5s",
+    "distributed.admin.tick.interval": "1s",
+}
+"""Dask settings of the clusters :func:`dask_client` starts: no statistical profiler in the
+workers (a thread sampling the computing thread every 10 ms, for a dashboard coinflight does not
+serve), the system monitors and the event loops' tick less often. An idle 2-worker cluster then
+takes about 0.02 of a core instead of 0.12 (the client's process 0.01 instead of 0.05, the
+workers 0.01 instead of 0.07), CPU that on a small machine is the workers'."""
+
+IDLE_SECONDS = 0.25
+"""Seconds the client's process is watched idle, once per client: the CPU its event loop (on a
+``LocalCluster`` also the scheduler's and the nannies') takes with no task, a rate that is not
+charged to the batches."""
+
+_OVERHEADS: dict[str, tuple[float, float, float | None]] = {}
+"""Measured per-task overhead by client id (:func:`_measure`): a client passed to several
+estimates is timed once."""
 _ADDRESS = re.compile(r"^tcp://(?P<host>\[[0-9a-fA-F:]+\]|[A-Za-z0-9_.\-]+):(?P<port>\d{1,5})$")
 
 
@@ -82,32 +104,65 @@ def worker_slots(client: Any) -> int:
     return max(1, sum(client.nthreads().values()))
 
 
+def _process_cpu() -> float:
+    return time.process_time()
+
+
 def measure_overhead(client: Any, tasks_per_slot: int = 8, repeats: int = 3) -> float:
-    """Seconds of per-task overhead on ``client``'s cluster: the wall time of no-op tasks,
-    ``tasks_per_slot`` per worker thread, times the worker threads, divided by the tasks (the
-    best of ``repeats`` rounds after a warm-up round)."""
+    """Seconds of per-task overhead on ``client``'s cluster, from no-op tasks,
+    ``tasks_per_slot`` per worker thread, in ``repeats`` rounds after a warm-up round: the
+    larger of the wall time per task (times the worker threads; the best round) and the CPU
+    per task outside the task, of the client's process (on a ``LocalCluster`` also the
+    scheduler's and the nannies') and of the workers' processes, over all rounds."""
+    return max(_measure(client, tasks_per_slot, repeats)[:2])
+
+
+def _measure(
+    client: Any, tasks_per_slot: int = 8, repeats: int = 3
+) -> tuple[float, float, float | None]:
+    """The parts of :func:`measure_overhead`: the wall time per task, the CPU per task, and the
+    CPU the client's process uses a second when idle (CPU 0 and None when a worker runs in
+    the client's own process: its CPU then includes the workers' computing)."""
     slots = worker_slots(client)
     m = tasks_per_slot * slots
+    in_process = os.getpid() in client.run(os.getpid).values()
     best = math.inf
+    cpu = client_cpu = workers_cpu = 0.0
     for round_ in range(repeats + 1):
+        if round_ == 1:  # the first round warms the connections up
+            client_cpu = time.process_time()
+            workers_cpu = sum(client.run(_process_cpu).values())
         t0 = time.perf_counter()
         client.gather(client.map(_noop, range(m), pure=False))
         wall = time.perf_counter() - t0
-        if round_:  # the first round warms the connections up
+        if round_:
             best = min(best, wall * slots / m)
-    return best
+    if in_process:
+        return best, 0.0, None
+    used = time.process_time() - client_cpu
+    used += sum(client.run(_process_cpu).values()) - workers_cpu
+    cpu = used / (m * max(1, repeats))
+    c0, t0 = time.process_time(), time.perf_counter()
+    time.sleep(IDLE_SECONDS)
+    idle = (time.process_time() - c0) / (time.perf_counter() - t0)
+    return best, cpu, idle
 
 
-def _run_batch(fn: Callable[[Any], Any], batch: list[Any]) -> tuple[list[Any], float]:
-    """Run one batch on a worker: its results and the seconds it computed."""
-    t0 = time.perf_counter()
+def _run_batch(fn: Callable[[Any], Any], batch: list[Any]) -> tuple[list[Any], float, float]:
+    """Run one batch on a worker: its results, the seconds it computed and their CPU seconds
+    (of the worker's thread: one more worker on a busy machine stretches the first, not the
+    second)."""
+    t0, c0 = time.perf_counter(), time.thread_time()
     out = [fn(task) for task in batch]
-    return out, time.perf_counter() - t0
+    return out, time.perf_counter() - t0, time.thread_time() - c0
 
 
 @dataclass
 class RunStats:
-    """How the last run went: tasks, batches, compute and wall seconds, the overhead."""
+    """How the last run went: tasks, batches, compute and wall seconds, the overhead
+    measured, the overhead per batch its last batches were sized by (``cost``: the measured
+    one or the client's CPU per batch observed, the larger), the client process's CPU
+    seconds during the run."""
 
     tasks: int = 0
     batches: int = 0
@@ -115,7 +170,9 @@ class RunStats:
     wall: float = 0.0
     slots: int = 1
     overhead: float = 0.0
+    cost: float = 0.0
     durations: list[float] = field(default_factory=list)
+    client_cpu: float = 0.0
 
     @property
     def overhead_share(self) -> float:
@@ -144,17 +201,29 @@ class DaskExecutor:
             v.in_range("overhead", overhead, 0.0, math.inf, "s")
         self.client = client
         self._overhead = overhead
+        self._given = overhead is not None
         self.last = RunStats()
 
     @property
     def overhead(self) -> float:
-        """Per-task overhead of this cluster, s (measured once per client)."""
+        """Per-task overhead of this cluster, s (measured once per client: the larger of the
+        wall time and the CPU per task, :func:`measure_overhead`)."""
         if self._overhead is None:
-            key = str(self.client.id)
-            if key not in _OVERHEADS:
-                _OVERHEADS[key] = measure_overhead(self.client)
-            self._overhead = _OVERHEADS[key]
+            self._overhead = max(self._facts()[:2])
         return self._overhead
+
+    def _costs(self) -> tuple[float, float, float | None]:
+        """Wall and CPU seconds per task, the client's idle CPU rate: measured, or the overhead
+        given (in wall seconds; then no CPU is counted)."""
+        if self._given:
+            return self.overhead, 0.0, None
+        return self._facts()
+
+    def _facts(self) -> tuple[float, float, float | None]:
+        key = str(self.client.id)
+        if key not in _OVERHEADS:
+            _OVERHEADS[key] = _measure(self.client)
+        return _OVERHEADS[key]
 
     @property
     def slots(self) -> int:
@@ -184,19 +253,36 @@ class DaskExecutor:
         if n == 0:
             return
         overhead = self.overhead
+        # the client process's CPU per batch, observed, its idle rate taken off: what sending,
+        # receiving and handing over a real batch costs, more than a no-op (not when a worker
+        # computes in this process)
+        wall_cost, cpu_cost, idle = self._costs()
+        cpu0 = time.process_time()
         t0 = time.perf_counter()
         units = [max(1, int(s)) for s in sizes]
         remaining = sum(units)
         next_task = 0
+        finished = 0
         done_units = 0.0
         done_seconds = 0.0
+        done_cpu = 0.0
         pending = distributed.as_completed()
         owner: dict[str, list[int]] = {}
 
         def submit() -> None:
             nonlocal next_task, remaining
             if done_seconds > 0:  # units a second, from the batches done
-                target = done_units / done_seconds * overhead / TARGET_OVERHEAD
+                # the round trip against the batches' wall time, the CPU outside the tasks
+                # against their CPU time (on a busy machine a batch's wall time stretches, its
+                # CPU time and the CPU it costs to send it do not)
+                target = done_units / done_seconds * wall_cost / TARGET_OVERHEAD
+                cost = cpu_cost
+                if idle is not None and finished >= stats.slots:
+                    busy = time.process_time() - cpu0 - idle * (time.perf_counter() - t0)
+                    cost = max(cost, busy / stats.batches)  # sent, most of them back
+                stats.cost = max(wall_cost, cost)
+                if cost > 0 and done_cpu > 0:
+                    target = max(target, done_units / done_cpu * cost / TARGET_OVERHEAD)
                 # near the end, smaller batches so that no worker idles while another
                 # finishes a long one (at most a quarter of the target: a short tail)
                 per_batch = min(target, max(remaining / stats.slots, target / 4))
@@ -223,13 +309,15 @@ class DaskExecutor:
         try:
             fill()
             for future in pending:
-                results, seconds = future.result()
+                results, seconds, cpu_seconds = future.result()
+                finished += 1
                 stats.compute += seconds
                 stats.durations.append(seconds)
                 indices = owner.pop(future.key)
                 # every batch counts, a first one that compiled kernels too: a slow batch only
                 # makes the next ones smaller (more overhead), never a worker idle
                 done_seconds += seconds
+                done_cpu += cpu_seconds
                 done_units += sum(units[i] for i in indices)
                 yield from zip(indices, results, strict=True)
                 fill()
@@ -239,6 +327,7 @@ class DaskExecutor:
                     future.cancel()
             stats.wall = time.perf_counter() - t0
             stats.overhead = overhead
+            stats.client_cpu = time.process_time() - cpu0
 
 
 class _Star:
@@ -288,9 +377,9 @@ def dask_client(
     ----------
     scheduler : str
         ``"local"``: a ``distributed.LocalCluster`` of ``workers`` processes (default: one per
-        CPU), one thread each, no dashboard. ``"tcp://HOST:PORT"``: the scheduler of a cluster
-        started elsewhere (``dask scheduler`` and ``dask worker tcp://HOST:PORT``); its workers
-        must be able to import coinflight.
+        CPU), one thread each, no dashboard, with :data:`LOCAL_CONFIG`. ``"tcp://HOST:PORT"``:
+        the scheduler of a cluster started elsewhere (``dask scheduler`` and ``dask worker
+        tcp://HOST:PORT``); its workers must be able to import coinflight.
     workers : int, optional
         Worker processes of the local cluster.
     timeout : float
@@ -309,16 +398,19 @@ def dask_client(
     import logging
 
     if scheduler == "local":
+        import dask
+
         n = workers if workers is not None else (os.cpu_count() or 1)
-        cluster = distributed.LocalCluster(
-            n_workers=n,
-            threads_per_worker=1,
-            processes=True,
-            dashboard_address=None,
-            # the scheduler's HTTP server on a free local port, not 8787 (maybe taken)
-            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
-            silence_logs=logging.ERROR,
-        )
+        with dask.config.set(LOCAL_CONFIG):  # read as the scheduler and the workers start
+            cluster = distributed.LocalCluster(
+                n_workers=n,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=None,
+                # the scheduler's HTTP server on a free local port, not 8787 (maybe taken)
+                scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+                silence_logs=logging.ERROR,
+            )
         try:
             with distributed.Client(cluster) as client:
                 yield DaskExecutor(client)
@@ -339,6 +431,7 @@ def dask_client(
 __all__ = [
     "CONNECT_TIMEOUT",
     "INSTALL",
+    "LOCAL_CONFIG",
     "TARGET_OVERHEAD",
     "DaskExecutor",
     "RunStats",

@@ -70,7 +70,7 @@ def _conditional_task(args: tuple[Any, ...]) -> np.ndarray:
     for b in range(first, last):
         parts = []
         for u in unit_cube(root, n, k, first_block=b, last_block=b + 1):
-            p = conditional.same_side_given_spins(dist, *conditional.spins_from_unit(dist, u))
+            p = conditional.same_side_at(dist, u)
             parts.append((float(np.sum(p)), float(np.sum(p * p))))
         out[b - first] = [math.fsum(x for x, _ in parts), math.fsum(y for _, y in parts)]
     return out
@@ -206,37 +206,21 @@ def _estimate_conditional(
     t0: float,
 ) -> ProbabilityResult:
     """The ``conditional-on-spin`` mode of :func:`estimate`."""
-    if not model.closed_form_bands:
-        raise ValueError(
-            f"the {conditional.MODE} variance reduction needs the hand catch's closed-form "
-            f"bands, not {model.name}; use monte-carlo without it"
-        )
-    if grid_cells is not None:
-        raise ValueError(f"grid cells (method B) do not combine with {conditional.MODE}")
-    conditional.check_flight_time(dist.flight_time)
+    conditional.check(dist, model, NAME, grid_cells)
     check_tosses(f"{NAME} ({conditional.MODE})", n, CONDITIONAL_RATE)
     root = seed_sequence(seed)
     with executor_or_threads(executor, threads) as ex:
         same, se = _conditional(dist, n, root, ex, max(1, math.ceil(chunk_size / BLOCK)), progress)
-    p = same if dist.start_sign > 0 else 1.0 - same
-    return ProbabilityResult(
-        p_heads=p,
-        p_tails=1.0 - p,
-        p_edge=0.0,
-        p_same_side=same,
+    return conditional.result(
+        dist,
+        same,
+        se,
+        Z95 * se,
         method=NAME,
         n=n,
-        samples=n,
-        stderr=se,
-        ci95=(max(0.0, p - Z95 * se), min(1.0, p + Z95 * se)),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
-        details={
-            "variance_reduction": conditional.MODE,
-            "spins": list(conditional.ranged_spins(dist)),
-            "block": BLOCK,
-            "rng": "SFC64",
-        },
+        root=root,
+        t0=t0,
+        details={**conditional.details(dist), "block": BLOCK, "rng": "SFC64"},
     )
 
 

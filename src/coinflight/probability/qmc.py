@@ -76,10 +76,18 @@ def _conditional_task(args: tuple[Any, ...]) -> float:
     while done < points:
         size = min(_CHUNK, points - done)
         u = np.ascontiguousarray(sobol.random(size).T)
-        p = conditional.same_side_given_spins(dist, *conditional.spins_from_unit(dist, u))
-        sums.append(float(np.sum(p)))
+        sums.append(float(np.sum(conditional.same_side_at(dist, u))))
         done += size
     return math.fsum(sums) / points
+
+
+def _spread(per: np.ndarray) -> tuple[float, float]:
+    """Standard error of the mean over the scramblings' estimates ``per`` and the half-width
+    of its 95 % Student t interval (Owen 1997; L'Ecuyer & Lemieux 2002)."""
+    from scipy.stats import t as student_t
+
+    stderr = float(np.std(per, ddof=1) / math.sqrt(len(per)))
+    return stderr, float(student_t.ppf(0.975, len(per) - 1)) * stderr
 
 
 def check_work(
@@ -150,10 +158,7 @@ def estimate(
     counts = np.sum(parts, axis=0)
     col = 1
     per = np.array([p[col] / points for p in parts])
-    stderr = float(np.std(per, ddof=1) / math.sqrt(replicates))
-    from scipy.stats import t as student_t
-
-    half = float(student_t.ppf(0.975, replicates - 1)) * stderr
+    stderr, half = _spread(per)
     p = float(per.mean())
     return from_counts(
         (int(counts[0]), int(counts[1]), int(counts[2])),
@@ -186,40 +191,26 @@ def _estimate_conditional(
     t0: float,
 ) -> ProbabilityResult:
     """The ``conditional-on-spin`` mode of :func:`estimate`."""
-    if not model.closed_form_bands:
-        raise ValueError(
-            f"the {conditional.MODE} variance reduction needs the hand catch's closed-form "
-            f"bands, not {model.name}; use qmc without it"
-        )
-    conditional.check_flight_time(dist.flight_time)
+    conditional.check(dist, model, NAME)
     tasks = [(dist, root, r, points) for r in range(replicates)]
     with _runner.executor_or_threads(executor, threads) as ex:
         per = np.array(
             _runner.run_tasks(ex, _conditional_task, tasks, [points] * replicates, progress)
         )
-    from scipy.stats import t as student_t
-
-    same = math.fsum(per) / replicates
-    stderr = float(np.std(per, ddof=1) / math.sqrt(replicates))
-    p = same if dist.start_sign > 0 else 1.0 - same
-    half = float(student_t.ppf(0.975, replicates - 1)) * stderr
-    return ProbabilityResult(
-        p_heads=p,
-        p_tails=1.0 - p,
-        p_edge=0.0,
-        p_same_side=same,
+    stderr, half = _spread(per)
+    return conditional.result(
+        dist,
+        math.fsum(per) / replicates,
+        stderr,
+        half,
         method=NAME,
         n=n,
-        samples=n,
-        stderr=stderr,
-        ci95=(max(0.0, p - half), min(1.0, p + half)),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
+        root=root,
+        t0=t0,
         details={
             "replicates": replicates,
             "points_per_replicate": points,
-            "variance_reduction": conditional.MODE,
-            "spins": list(conditional.ranged_spins(dist)),
+            **conditional.details(dist),
         },
     )
 

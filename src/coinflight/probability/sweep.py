@@ -184,7 +184,7 @@ class Case:
         ``SeedSequence(seed, spawn_key=(stream,))``: the same tosses whatever the order of the
         rows, the workers, the other rows, and a run of n tosses is the first n of a longer
         one."""
-        return int(_digest(self.inputs())[:15], 16)
+        return _stream(self.inputs())
 
 
 def product_cases(
@@ -247,7 +247,15 @@ def _digest(obj: object) -> str:
 def row_key(case: Case, method: str, n: int | None, seed: int | None) -> str:
     """The key of a finished row in a checkpoint: a digest of its inputs, method, n and seed
     (a row is reused only when all four are the same)."""
-    return _digest({"inputs": case.inputs(), "method": method, "n": n, "seed": seed})[:32]
+    return _key(case.inputs(), method, n, seed)
+
+
+def _key(inputs: Mapping[str, Any], method: str, n: int | None, seed: int | None) -> str:
+    return _digest({"inputs": inputs, "method": method, "n": n, "seed": seed})[:32]
+
+
+def _stream(inputs: Mapping[str, Any]) -> int:
+    return int(_digest(inputs)[:15], 16)
 
 
 class SweepResults(ProbabilityResults):
@@ -449,14 +457,15 @@ def sweep(
     elif seed is not None:
         raise TypeError(f"method {method!r} takes no seed (it is deterministic); got seed={seed}")
     check_sweep_work(items, method, n)
-    keys = [row_key(case, method, n, the_seed) for case in items]
+    inputs = [case.inputs() for case in items]  # once a row: its key and its stream
+    keys = [_key(x, method, n, the_seed) for x in inputs]
     done = {} if checkpoint is None else read_checkpoint(checkpoint)
     results: list[ProbabilityResult | None] = [done.get(k) for k in keys]
     reused = sum(r is not None for r in results)
     if progress is not None and reused:
         progress(reused)
     todo = [i for i, r in enumerate(results) if r is None]
-    tasks = [(items[i].dist, items[i].model, method, n, the_seed, items[i].stream()) for i in todo]
+    tasks = [(items[i].dist, items[i].model, method, n, the_seed, _stream(inputs[i])) for i in todo]
     log = None
     if checkpoint is not None and todo:
         Path(checkpoint).parent.mkdir(parents=True, exist_ok=True)

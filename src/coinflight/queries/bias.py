@@ -4,6 +4,7 @@ Carlo run of the full flight."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -123,6 +124,25 @@ def bias_query(
     return AngleBias(p, what, psi_payload, coin, sim)
 
 
+MAX_CURVE_POINTS = 2000
+"""Most values of ψ in one request for a curve (the page draws p(ψ) from about 50)."""
+
+
+def bias_curve(psis: Sequence[float], coin: Coin) -> list[dict[str, Any]]:
+    """p(ψ) at several fixed ψ (degrees) at once: the object of ``coinflight bias --psi X
+    --json`` for each, in the order given (``GET /api/bias?psis=…``, one request for a curve)."""
+    from coinflight import _validation as v
+
+    v.work_bound(
+        f"a curve of {len(psis)} values of ψ",
+        len(psis),
+        MAX_CURVE_POINTS,
+        "values",
+        "ask for fewer values of ψ, or in several requests",
+    )
+    return [bias_query(float(psi), None, None, None, None, coin).payload() for psi in psis]
+
+
 def _preset_bias(name: str, monte_carlo: int | None, seed: int | None, coin: Coin) -> PresetBias:
     """The closed-form average over the preset's spins, and optionally a Monte Carlo run of the
     full flight through :func:`coinflight.probability.estimate` (started heads up, so P(heads)
@@ -153,6 +173,7 @@ __all__ = [
     "SOURCE",
     "AngleBias",
     "PresetBias",
+    "bias_curve",
     "bias_query",
     "monte_carlo_payload",
     "resolve_psi",

@@ -6,7 +6,7 @@ import json
 from typing import Any
 
 
-def json_text(payload: dict[str, Any]) -> str:
+def json_text(payload: dict[str, Any] | list[Any]) -> str:
     """``payload`` as one line of JSON: NumPy scalars and arrays become numbers and lists; a
     NaN or an infinity is an error (the text is whole and valid JSON, or not made)."""
     return json.dumps(payload, default=_jsonable, allow_nan=False)

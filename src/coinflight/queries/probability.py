@@ -171,8 +171,10 @@ def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> d
     """The JSON object of ``coinflight probability --json``."""
     payload = result.to_dict()
     payload["distribution"] = {name: d.to_dict() for name, d in query.dist.parameters.items()}
+    dimensions = {k: value for k, value in query.coin.to_dict().items() if k != "name"}
     payload.update(
         coin=query.coin.name,
+        coin_dimensions=dimensions,  # radius, thickness (m), mass (kg): as Coin.to_dict
         start=query.start,
         g=query.dist.g,
         inputs={f"--{name.replace('_', '-')}": query.inputs.get(name) for name in INPUT_NAMES},

@@ -33,6 +33,20 @@ def resolve_coin(
     return Coin.preset(coin if coin is not None else DEFAULT_COIN)
 
 
+class CoinArgs(NamedTuple):
+    """The coin, as typed: --coin or the custom dimensions --radius, --thickness, --mass (SI;
+    None: not given); :meth:`resolve` makes the coin."""
+
+    coin: str | None = None
+    radius: float | None = None
+    thickness: float | None = None
+    mass: float | None = None
+
+    def resolve(self) -> Coin:
+        """The coin (:func:`resolve_coin`)."""
+        return resolve_coin(*self)
+
+
 class TossArgs(NamedTuple):
     """The options of one toss: spin, one of flight time and launch speed, start face, g."""
 

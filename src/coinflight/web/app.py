@@ -85,7 +85,7 @@ def create_app(
     _errors(app)
     _static(app)
 
-    async def answer(fn: Callable[..., dict[str, Any]], *args: Any) -> Response:
+    async def answer(fn: Callable[..., Any], *args: Any) -> Response:
         """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
         if not running:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
@@ -93,21 +93,15 @@ def create_app(
 
     @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
+        *,
         omega: p.Omega = "80,0,0",
         flight_time: p.FlightTime = None,
         launch_speed: p.LaunchSpeed = None,
         start: p.Start = "heads",
         g: p.Gravity = 9.81,
-        coin: p.CoinName = None,
-        radius: p.Radius = None,
-        thickness: p.Thickness = None,
-        mass: p.Mass = None,
-        surface: p.Surface = "hand",
-        drop_height: p.DropHeight = None,
-        restitution: p.Restitution = None,
-        friction: p.Friction = None,
-        drag: p.Drag = None,
-        spin_damping: p.SpinDamping = None,
+        coin: p.CoinQuery,
+        table: p.TableQuery,
+        air: p.AirQuery,
         bounces: p.Bounces = None,
         trajectory: p.Trajectory = None,
     ) -> Response:
@@ -120,10 +114,10 @@ def create_app(
         args = p.toss_args(omega, flight_time, launch_speed, start, g)
         return await answer(
             endpoints.toss,
-            (coin, radius, thickness, mass),
+            coin,
             args,
-            p.table_args(surface, drop_height, restitution, friction),
-            p.air_args(drag, spin_damping),
+            table,
+            air,
             bounces,
             trajectory,
         )
@@ -131,6 +125,7 @@ def create_app(
     @app.get("/api/probability", tags=["probability"], response_class=Response, responses=ANSWERS)
     async def probability(
         request: Request,
+        *,
         omega_x: p.OmegaX = "80",
         omega_y: p.OmegaY = "0",
         omega_z: p.OmegaZ = "0",
@@ -139,16 +134,9 @@ def create_app(
         start: p.Start = "heads",
         g: p.Gravity = 9.81,
         preset: p.TossPreset = None,
-        coin: p.CoinName = None,
-        radius: p.Radius = None,
-        thickness: p.Thickness = None,
-        mass: p.Mass = None,
-        surface: p.Surface = "hand",
-        drop_height: p.DropHeight = None,
-        restitution: p.Restitution = None,
-        friction: p.Friction = None,
-        drag: p.Drag = None,
-        spin_damping: p.SpinDamping = None,
+        coin: p.CoinQuery,
+        table: p.TableQuery,
+        air: p.AirQuery,
         method: p.Method = "exact",
         n: p.Size = None,
         seed: p.Seed = None,
@@ -183,16 +171,17 @@ def create_app(
         }
         return await answer(
             endpoints.probability,
-            (coin, radius, thickness, mass),
+            coin,
             DistArgs(omega_x, omega_y, omega_z, flight_time, launch_speed, start, g),
-            p.table_args(surface, drop_height, restitution, friction),
-            p.air_args(drag, spin_damping),
+            table,
+            air,
             options,
             time_limit,
         )
 
     @app.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
     async def basin(
+        *,
         flight_time: p.FlightTimeRange = None,
         launch_speed: p.LaunchSpeedRange = None,
         omega_x: p.OmegaXRange = None,
@@ -203,14 +192,8 @@ def create_app(
         resolution: p.Resolution = "500",
         start: p.Start = "heads",
         g: p.Gravity = 9.81,
-        coin: p.CoinName = None,
-        radius: p.Radius = None,
-        thickness: p.Thickness = None,
-        mass: p.Mass = None,
-        surface: p.Surface = "hand",
-        drop_height: p.DropHeight = None,
-        restitution: p.Restitution = None,
-        friction: p.Friction = None,
+        coin: p.CoinQuery,
+        table: p.TableQuery,
         bounces: p.Bounces = None,
         boundaries: p.Boundaries = False,
     ) -> Response:
@@ -233,9 +216,9 @@ def create_app(
         }
         return await answer(
             endpoints.basin,
-            (coin, radius, thickness, mass),
+            coin,
             options,
-            p.table_args(surface, drop_height, restitution, friction),
+            table,
             bounces,
             boundaries,
             time_limit,
@@ -243,23 +226,30 @@ def create_app(
 
     @app.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
     async def bias(
+        *,
         psi: p.Psi = None,
+        psis: p.Psis = None,
         psi_dist: p.PsiDist = None,
         preset: p.PsiPreset = None,
         monte_carlo: p.MonteCarlo = None,
         seed: p.Seed = None,
-        coin: p.CoinName = None,
-        radius: p.Radius = None,
-        thickness: p.Thickness = None,
-        mass: p.Mass = None,
+        coin: p.CoinQuery,
     ) -> Response:
         """The probability that a precessing coin lands on the side it started (Diaconis,
-        Holmes & Montgomery 2007), as `coinflight bias --json`."""
+        Holmes & Montgomery 2007), as `coinflight bias --json`; with `psis` a list of those
+        objects, one for each fixed ψ, in one request."""
         from coinflight.web import endpoints
 
+        if psis is not None:
+            others = {"psi": psi, "psi_dist": psi_dist, "preset": preset,
+                      "monte_carlo": monte_carlo}  # fmt: skip
+            given = [name for name, value in others.items() if value is not None]
+            if given:
+                raise ValueError(f"psis is the closed form at each ψ: leave out {', '.join(given)}")
+            return await answer(endpoints.bias_curve, coin, p.number_list(psis, "psis"))
         return await answer(
             endpoints.bias,
-            (coin, radius, thickness, mass),
+            coin,
             psi,
             psi_dist,
             preset,
@@ -283,8 +273,15 @@ def create_app(
     return app
 
 
-def _encoded(fn: Callable[..., dict[str, Any]], *args: Any) -> str:
-    return json_text(fn(*args))
+def _encoded(fn: Callable[..., Any], *args: Any) -> str:
+    """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
+    computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
+    reaches no one)."""
+    from coinflight.queries.plausibility import heard, with_warnings
+
+    with heard() as texts:
+        payload = fn(*args)
+    return json_text(with_warnings(payload, texts))
 
 
 async def _known_parameters(request: Request) -> None:
@@ -294,10 +291,18 @@ async def _known_parameters(request: Request) -> None:
     dependant = getattr(route, "dependant", None)
     if dependant is None:
         return
-    known = {param.alias for param in dependant.query_params}
+    known = _query_names(dependant)
     for name in request.query_params:
         if name not in known:
             raise ValueError(f"No such option: {p.flag(name)}")
+
+
+def _query_names(dependant: Any) -> set[str]:
+    """The query parameters of an endpoint and of its dependencies (the coin, the table, …)."""
+    names = {param.alias for param in dependant.query_params}
+    for sub in dependant.dependencies:
+        names |= _query_names(sub)
+    return names
 
 
 def _errors(app: FastAPI) -> None:

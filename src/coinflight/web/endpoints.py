@@ -15,9 +15,7 @@ from typing import Any
 
 from coinflight import _validation as v
 from coinflight.queries import toss as toss_queries
-from coinflight.queries.values import AirArgs, DistArgs, TableArgs, TossArgs, resolve_coin
-
-CoinArgs = tuple[str | None, float | None, float | None, float | None]
+from coinflight.queries.values import AirArgs, CoinArgs, DistArgs, TableArgs, TossArgs
 
 MAX_MAP_CELLS = 640_000
 """Most cells of a map the server sends (800 × 800: a phone's or a projector's width; about
@@ -49,7 +47,7 @@ def toss(
 ) -> dict[str, Any]:
     """``GET /api/toss``: ``coinflight toss --json``, and the flight sampled at ``trajectory``
     times (the catch in the hand only: the closed form)."""
-    the_coin = resolve_coin(*coin)
+    the_coin = coin.resolve()
     query = toss_queries.toss_query(the_coin, args, table, air, bounces)
     if trajectory is not None and not query.caught:
         raise ValueError(
@@ -75,7 +73,7 @@ def probability(
     """``GET /api/probability``: ``coinflight probability --json``, on one thread."""
     from coinflight.queries import probability as q
 
-    query = q.probability_query(tosses, resolve_coin(*coin), table, air, **options)
+    query = q.probability_query(tosses, coin.resolve(), table, air, **options)
     seconds = query.seconds()
     if seconds is not None:
         size = query.estimator.size_for(len(query.dist.ranged), query.n)
@@ -112,7 +110,7 @@ def basin(
     if model is not None:
         budget(f"a map of {cells:,} table landings", cells / model.rate, time_limit,
                "use a coarser resolution")  # fmt: skip
-    the_map = basin_query(resolve_coin(*coin), table=table, bounces=bounces, **options)
+    the_map = basin_query(coin.resolve(), table=table, bounces=bounces, **options)
     return basin_payload(the_map, table, bounces, boundaries)
 
 
@@ -140,7 +138,14 @@ def bias(
             rate = HAND_CATCH.rate
         budget(f"a Monte Carlo check of {monte_carlo} tosses", monte_carlo / rate, time_limit,
                "use fewer tosses")  # fmt: skip
-    return bias_query(psi, psi_dist, preset, monte_carlo, seed, resolve_coin(*coin)).payload()
+    return bias_query(psi, psi_dist, preset, monte_carlo, seed, coin.resolve()).payload()
+
+
+def bias_curve(coin: CoinArgs, psis: tuple[float, ...]) -> list[dict[str, Any]]:
+    """``GET /api/bias?psis=…``: ``coinflight bias --psi X --json`` for each ψ."""
+    from coinflight.queries.bias import bias_curve as curve
+
+    return curve(psis, coin.resolve())
 
 
 def data(dataset: str | None, interval: str, psi_sd: float) -> dict[str, Any]:

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import Query
+from fastapi import Depends, Query
 
-from coinflight.queries.values import AirArgs, TableArgs, TossArgs
+from coinflight.queries.values import AirArgs, CoinArgs, TableArgs, TossArgs
 
 
 def flag(name: str) -> str:
@@ -33,6 +33,17 @@ def numbers(text: str, name: str, count: int, metavar: str) -> tuple[float, ...]
         )
     values = []
     for part in parts:
+        try:
+            values.append(float(part))
+        except ValueError:
+            raise ValueError(invalid(name, part, "is not a number")) from None
+    return tuple(values)
+
+
+def number_list(text: str, name: str) -> tuple[float, ...]:
+    """Comma-separated numbers, as many as given (``psis=0,5,10``)."""
+    values = []
+    for part in text.split(","):
         try:
             values.append(float(part))
         except ValueError:
@@ -65,6 +76,17 @@ CoinName = Annotated[
 Radius = Annotated[float | None, _q("Custom coin radius, m (as --radius).")]
 Thickness = Annotated[float | None, _q("Custom coin thickness, m (as --thickness).")]
 Mass = Annotated[float | None, _q("Custom coin mass, kg (as --mass).")]
+
+
+def coin_args(
+    coin: CoinName = None, radius: Radius = None, thickness: Thickness = None, mass: Mass = None
+) -> CoinArgs:
+    """--coin or the custom dimensions, as typed (resolved in the worker)."""
+    return CoinArgs(coin, radius, thickness, mass)
+
+
+CoinQuery = Annotated[CoinArgs, Depends(coin_args)]
+"""The coin's four parameters, one dependency shared by the endpoints that take a coin."""
 
 # --- one toss --------------------------------------------------------------------------------
 Omega = Annotated[
@@ -104,16 +126,25 @@ def toss_args(
 
 
 def table_args(
-    surface: str, drop_height: float | None, restitution: str | None, friction: str | None
+    surface: Surface = "hand",
+    drop_height: DropHeight = None,
+    restitution: Restitution = None,
+    friction: Friction = None,
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
     return TableArgs(surface, drop_height, restitution, friction, None)
 
 
-def air_args(drag: float | None, spin_damping: float | None) -> AirArgs:
+def air_args(drag: Drag = None, spin_damping: SpinDamping = None) -> AirArgs:
     """--drag and --spin-damping."""
     return AirArgs(drag, spin_damping)
+
+
+TableQuery = Annotated[TableArgs, Depends(table_args)]
+"""Where the toss ends: one dependency shared by the endpoints that land a coin."""
+AirQuery = Annotated[AirArgs, Depends(air_args)]
+"""The air: one dependency shared by the endpoints that fly through it."""
 
 
 Trajectory = Annotated[
@@ -162,6 +193,15 @@ Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand 
 
 # --- the same-side bias and real flips --------------------------------------------------------
 Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]
+Psis = Annotated[
+    str | None,
+    _q(
+        "Several fixed ψ at once, degrees, comma-separated (psis=0,5,10, at most 2000): the "
+        "answer is then a list, for each ψ in the order given the object that psi=ψ answers "
+        "(one request for a curve p(ψ)); not with psi, psi_dist, preset or monte_carlo.",
+        examples=["0,45,90,135,180"],
+    ),
+]
 PsiDist = Annotated[
     str | None, _q("A distribution of ψ in degrees: normal:MEAN,SD, LOW:HIGH or a number.")
 ]

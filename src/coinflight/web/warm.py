@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from contextlib import suppress
 
-from coinflight.queries.values import AirArgs, DistArgs, TableArgs, TossArgs
+from coinflight.queries.values import AirArgs, CoinArgs, DistArgs, TableArgs, TossArgs
 from coinflight.web import endpoints
 
 
 def warm() -> None:
     """One small request to each endpoint (the answers are thrown away)."""
-    hand, air, coin = TableArgs("hand", None, None, None, None), AirArgs(None, None), (None,) * 4
+    hand, air, coin = TableArgs("hand", None, None, None, None), AirArgs(None, None), CoinArgs()
     endpoints.toss(coin, TossArgs((80.0, 0.0, 0.0), 0.7, None, "heads", 9.81), hand, air, None, 3)
     tosses = DistArgs("60:90", "0", "0", "0.6:0.9", None, "heads", 9.81)
     endpoints.probability(coin, tosses, hand, air, {"method": "exact"}, 30.0)

@@ -39,13 +39,19 @@ export function turns(rotations, psi) {
   );
 }
 
+/** The first line of `coinflight toss` and `coinflight probability` (`Coin.describe`, the start). */
+function coinLine(c, start) {
+  return (
+    `${c.name} (d = ${(2000 * c.radius).toFixed(2)} mm, h = ${(1000 * c.thickness).toFixed(2)} mm, ` +
+    `m = ${(1000 * c.mass).toFixed(3)} g), started ${start} up`
+  );
+}
+
 /** The text `coinflight toss` prints, from the object `coinflight toss --json` prints. */
 export function tossLines(r) {
-  const c = r.coin;
   const [wx, wy, wz] = r.omega;
   return [
-    `${c.name} (d = ${(2000 * c.radius).toFixed(2)} mm, h = ${(1000 * c.thickness).toFixed(2)} mm, ` +
-      `m = ${(1000 * c.mass).toFixed(3)} g), started ${r.start} up`,
+    coinLine(r.coin, r.start),
     `spin ω0 = (${fmtG(wx)}, ${fmtG(wy)}, ${fmtG(wz)}) rad/s, flight time T = ${fmtG(r.flight_time, 4)} s ` +
       `(launch speed ${fmtG(r.launch_speed, 3)} m/s, apex ${fmtG(r.apex, 3)} m)`,
     `lands ${r.outcome.toUpperCase()} up after ${turns(r.rotations, r.psi)}`,
@@ -95,7 +101,7 @@ function methodSummary(r) {
 
 /** The text `coinflight probability` prints (hand catch), from its --json object. */
 export function probabilityLines(r) {
-  const lines = [];
+  const lines = [coinLine({ name: r.coin, ...r.coin_dimensions }, r.start)];
   for (const name of ["omega_x", "omega_y", "omega_z", "flight_time"]) {
     if (r.distribution && r.distribution[name]) {
       lines.push(describeDistribution(name, r.distribution[name]));

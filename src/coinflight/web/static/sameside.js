@@ -17,6 +17,11 @@ function curvePsis() {
   return [...psis].sort((a, b) => a - b);
 }
 
+/** p(ψ) at each of `psis`, in one request (/api/bias?psis=…: the answer for each ψ, in order). */
+async function curveAt(psis) {
+  return psis.length ? getJSON("api/bias", { psis: psis.join(",") }) : [];
+}
+
 const VIEWS = {
   all: { x: [0, 180], y: [0.5, 1.0], ticks: [0, 30, 60, 90, 120, 150, 180] },
   near: { x: [60, 100], y: [0.49, 0.62], ticks: [60, 70, 80, 90, 100], psis: range(60, 100, 1) },
@@ -70,7 +75,7 @@ export class SameSide {
     try {
       const psis = curvePsis();
       const [curve, data] = await Promise.all([
-        Promise.all(psis.map((psi) => getJSON("api/bias", { psi }))),
+        curveAt(psis),
         getJSON("api/data"),
       ]);
       this.curve = new Map(curve.map((r) => [r.psi_deg, r.p_same_side]));
@@ -98,7 +103,7 @@ export class SameSide {
     this.view = view;
     const missing = (VIEWS[view].psis || []).filter((psi) => !this.curve.has(psi));
     try {
-      const answers = await Promise.all(missing.map((psi) => getJSON("api/bias", { psi })));
+      const answers = await curveAt(missing);
       for (const r of answers) this.curve.set(r.psi_deg, r.p_same_side);
       showError(this.el("psi-error"), null);
     } catch (err) {
