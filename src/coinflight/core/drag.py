@@ -103,6 +103,9 @@ TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
 MAX_STEP = 1.0 / 64.0
 """Longest step, s."""
 DRAG_STEP = 0.02
+KUTTA_DRAG = 2e-3
+"""Steps in which the drag's relaxation rate times the step, c A_max |v| h, is below this take
+Kutta's third-order rule (three evaluations of the acceleration), the others RK4."""
 """Largest step in units of the velocity's relaxation time 1/(c |v|)."""
 DECAY_STEP = 0.5
 """Largest step in units of the spin damping's time min(I1, I3)/K while the spin still turns
@@ -318,14 +321,34 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
     """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation`:
     without damping the same for every step of the same length, so computed once for them."""
     n1 = _rotate(n, axis, c, s)
-    u1 = _rotate(u, axis, c, s)
-    if air.spin_damping > 0.0:  # else the second half turn is the first again
+    if air.spin_damping > 0.0:
+        u1 = _rotate(u, axis, c, s)
         axis, c, s = rotation(n1, u1, t0 + 0.5 * h, 0.5 * h, a0, b0, air)
-    n2 = _rotate(n1, axis, c, s)
-    u2 = _rotate(u1, axis, c, s)
+        n2 = _rotate(n1, axis, c, s)
+        u2 = _rotate(u1, axis, c, s)
+    else:  # the second half turn is the first again: u turns by twice its angle at once
+        n2 = _rotate(n1, axis, c, s)
+        u2 = _rotate(u, axis, c * c - s * s, 2.0 * c * s)
     k1 = _acceleration(v, n, air)
     va = (v[0] + 0.5 * h * k1[0], v[1] + 0.5 * h * k1[1], v[2] + 0.5 * h * k1[2])
     k2 = _acceleration(va, n1, air)
+    relax = air.drag_factor * air.max_area * h
+    if relax * relax * dot(v, v) <= KUTTA_DRAG * KUTTA_DRAG:
+        # Kutta's third-order rule (Simpson's weights on the stages t0, t0 + h/2, t0 + h):
+        # the drag changes by less than KUTTA_DRAG of itself with the velocity in a step.
+        vb = (
+            v[0] + h * (2.0 * k2[0] - k1[0]),
+            v[1] + h * (2.0 * k2[1] - k1[1]),
+            v[2] + h * (2.0 * k2[2] - k1[2]),
+        )
+        k4 = _acceleration(vb, n2, air)
+        z1 = z + h / 6.0 * (v[2] + 4.0 * va[2] + vb[2])
+        v1 = (
+            v[0] + h / 6.0 * (k1[0] + 4.0 * k2[0] + k4[0]),
+            v[1] + h / 6.0 * (k1[1] + 4.0 * k2[1] + k4[1]),
+            v[2] + h / 6.0 * (k1[2] + 4.0 * k2[2] + k4[2]),
+        )
+        return z1, v1, n2, u2
     vb = (v[0] + 0.5 * h * k2[0], v[1] + 0.5 * h * k2[1], v[2] + 0.5 * h * k2[2])
     k3 = _acceleration(vb, n1, air)
     vc = (v[0] + h * k3[0], v[1] + h * k3[1], v[2] + h * k3[2])
