@@ -112,6 +112,8 @@ DECAY_STEP = 0.5
 the coin."""
 FROZEN_TURN = 1e-12
 """Once the spin that remains can turn the coin by less than this (rad), its attitude is frozen."""
+FAR_MARGIN = 1e-6
+"""A flight step skips the contact search when the coin stays this far above the surface, m."""
 MAX_STEPS = 1_000_000
 """Steps per toss at most: a toss that needs more ends with status UNSETTLED (table) or a
 negative catch time (hand); :func:`coinflight.outcomes.air.check_air` refuses, before any
@@ -513,7 +515,10 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         if impacts >= MAX_IMPACTS:
             break
         h = step_size(v, tr, a0, b0, air)
-        if rising:
+        # Rising from the launch, or so high above the surface that no point of the coin can
+        # reach it within the step (the centre falls by at most −min(v_z, 0) h + g h²/2: the
+        # drag never pulls it down while it falls), fly on without the contact search.
+        if rising or z - rho + h * (min(v[2], 0.0) - 0.5 * air.g * h) > FAR_MARGIN:
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
@@ -521,7 +526,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             z, v, n, u = z1, v1, n1, u1
             t += h
             tr += h
-            rising = v[2] > 0.0
+            rising = rising and v[2] > 0.0
             continue
         lm = angular_momentum(n, u, tr, a0, b0, air)
         gap, speed = _gap(z, v, n, lm, air, hh)
