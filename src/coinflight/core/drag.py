@@ -373,14 +373,14 @@ def step_size(v, t0, a0, b0, air):
     if k > 0.0:
         a *= math.exp(-k * t0 / air.i3)
         b *= math.exp(-k * t0 / air.i1)
-    rate = math.sqrt(a * a + b * b) / air.i1  # how fast the triad turns, rad/s
+    # Compared squared: the square roots are taken only for a limit that applies.
     h = MAX_STEP
-    if rate * h > TURN_STEP:
-        h = TURN_STEP / rate
-    speed = math.sqrt(dot(v, v))
-    relax = air.drag_factor * air.max_area * speed
-    if relax * h > DRAG_STEP:
-        h = DRAG_STEP / relax
+    spin2 = a * a + b * b  # (I1 times how fast the triad turns, rad/s) squared
+    if spin2 * h * h > (TURN_STEP * air.i1) ** 2:
+        h = TURN_STEP * air.i1 / math.sqrt(spin2)
+    relax2 = (air.drag_factor * air.max_area) ** 2 * dot(v, v)  # (c A_max |v|)²
+    if relax2 * h * h > DRAG_STEP * DRAG_STEP:
+        h = DRAG_STEP / math.sqrt(relax2)
     # The spin that remains turns the coin by at most ∫ rate dt ≤ (a I3 + b I1)/(K I1).
     if k > 0.0 and (a * air.i3 + b * air.i1) / (k * air.i1) > FROZEN_TURN:
         decay = DECAY_STEP * min(air.i1, air.i3) / k
