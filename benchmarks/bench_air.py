@@ -18,7 +18,8 @@ and each air case is given as a ratio to its vacuum model timed in the same roun
 - the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
   toss at a time: the previous product path's method and tolerance) on the first tosses,
 - with ``--old-src DIR``: another implementation (``coinflight`` imported from DIR in a
-  subprocess) on the first tosses, hand and table.
+  subprocess, after one toss of each to compile) on the first ``--old-n`` tosses, hand and
+  table to rest.
 
 The load average is printed before and after: absolute rates on a shared machine vary with it.
 """
@@ -58,6 +59,8 @@ omega, v0 = np.array(a["omega"]), np.array(a["v0"])
 coin = Coin.preset("us-nickel")
 drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
 surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+catch_with_drag(coin, omega[:1], v0[:1], 1.0, 9.81, drag)  # compile or load the cache
+land(coin, omega[:1], v0[:1], 1.0, 9.81, surface, drag)
 t0 = time.perf_counter(); catch_with_drag(coin, omega, v0, 1.0, 9.81, drag)
 t1 = time.perf_counter(); land(coin, omega, v0, 1.0, 9.81, surface, drag)
 t2 = time.perf_counter()
@@ -100,7 +103,8 @@ def main() -> None:
     parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
-    parser.add_argument("--old-src", default=None, help="src folder of the previous coinflight")
+    parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
+    parser.add_argument("--old-n", type=int, default=None, help="tosses for it (--reference)")
     args = parser.parse_args()
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
@@ -168,10 +172,11 @@ def main() -> None:
         f"compiled / SciPy = {rates[('air', 'hand')] / scipy_rate:,.0f}"
     )
     if args.old_src:
+        old_n = args.old_n or m
         payload = json.dumps(
             {
-                "omega": omega[:m].tolist(),
-                "v0": v0[:m].tolist(),
+                "omega": omega[:old_n].tolist(),
+                "v0": v0[:old_n].tolist(),
                 "cd": args.drag,
                 "k": args.spin_damping,
             }
@@ -187,7 +192,8 @@ def main() -> None:
         old = json.loads(out.stdout)
         for name, key in (("hand", "hand"), ("table", "table to rest")):
             print(
-                f"  other implementation ({args.old_src}), {name} ({m} tosses): {old[name]:,.2f}"
+                f"  other implementation ({args.old_src}), {name} ({old_n} tosses): "
+                f"{old[name]:,.2f}"
                 f" tosses/s; compiled / other = {rates[('air', key)] / old[name]:,.1f}"
             )
     print(f"  load average {load_before} before, {os.getloadavg()[0]:.2f} after")
