@@ -46,19 +46,34 @@ whatever the step. The damping's only time scale limits a step to ``DECAY_STEP``
 until the spin that remains could turn the coin by less than 1e-12 rad; after that the attitude is
 frozen, so any K ≥ 0 (1e3 N m s on a 1 mm coin) ends in a bounded number of steps.
 
-Translation: classical Runge-Kutta (RK4) in t on (z, v), with n at the stages from the
-Magnus half steps. RK4 is exact for the vacuum parabola, so C_d = K = 0 reproduces
-:mod:`coinflight.core.ballistics` too. A step turns the coin by at most ``TURN_STEP`` rad (the
-projected area changes with the attitude), lasts at most ``MAX_STEP`` s and at most
-``DRAG_STEP``/(c |v|) (c = ρ C_d A_max / 2m: the relaxation of the velocity).
+Translation: Runge-Kutta in t on (z, v), with n at the stages t0, t0 + h/2, t0 + h from the
+Magnus half steps. Where the drag barely depends on the velocity within a step (its relaxation
+rate times the step, c |v| h with c = ρ C_d A_max / 2m, below ``KUTTA_DRAG`` = 2e-3: every step
+of a coin toss) the step is Kutta's third-order rule, three evaluations of the acceleration
+with Simpson's weights on those stages (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
+Equations I*, 2nd ed., 1993, §II.1, Table 1.1); elsewhere (a light coin near its terminal speed)
+it is classical RK4, four evaluations. For a toss the two differ only through the velocity
+dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step: both sample the attitude's
+time dependence, which dominates the error, at the same stages with the same weights. Both are
+exact for the vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too.
+A step turns the coin by at most ``TURN_STEP`` rad (the projected area changes with the
+attitude), lasts at most ``MAX_STEP`` s and at most ``DRAG_STEP``/(c |v|). In the landing, a
+step that cannot bring any point of the coin to the surface (its centre stays higher than the
+coin's reach, falling at most −min(v_z, 0) h + g h²/2: falling, the drag only slows it) skips
+the contact search.
 
-Accuracy. The area's |n·v̂| has a kink twice a turn, which RK4 samples with errors of either
+Accuracy. The area's |n·v̂| has a kink twice a turn, which the steps sample with errors of either
 sign; against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
-time of vigorous tosses (ωx 150-300 rad/s) differs by 1e-6 s (median) and 4e-6 s (worst of 40)
-and n_z by at most 5e-4 (tests/test_drag.py); the drag itself moves the catch by ~4e-3 s and a
-10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 + (√5 − 1)/2) ≈ 0.95 rad keeps the step
-incommensurate with the half turn: at 2π/6.5 the kinks fell at the same phase of the steps
-and the errors added up (3e-5 s).
+time of 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0 1.5-3 m/s)
+differs by 8e-7 s (median) and 2e-6 s (worst) and n_z by at most 4e-4, and their first contact
+with a table 0.8 m below launch by 3e-7 s (median) and 2.4e-6 s (worst); the same to two digits
+as with RK4 in every step (tests/test_drag.py checks 1e-5 s on a handful). For scale, the drag
+itself moves the catch by ~4e-3 s and a 10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 +
+(√5 − 1)/2) ≈ 0.95 rad keeps the step incommensurate with the half turn, so the kinks fall at
+well spread phases of the steps: at 2π/6.5 they fell at the same phase and the errors added up
+(3e-5 s), and so they did (to 3e-5 s) when the step followed the speed (a step ∝ 1/|v|, which
+would have balanced the errors, drifts slowly through the phases). Steps of 2π/(4 + ...) ≈ 1.37
+rad or 2π/(3 + ...) ≈ 1.74 rad are 1.4 and 1.75 times fewer but double and triple those errors.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
@@ -312,8 +327,9 @@ def split(lm: tuple, n: tuple) -> tuple:
 
 @njit(cache=True)
 def step(z, v, n, u, t0, h, a0, b0, air):
-    """One RK4 step of length h of the centre of mass (height z, velocity v) and the Magnus
-    half steps of the attitude (n, u); t0 counts from the setting of a0, b0."""
+    """One step of length h of the centre of mass (height z, velocity v: Kutta's third-order
+    rule or RK4, see the module notes) and the Magnus half steps of the attitude (n, u); t0
+    counts from the setting of a0, b0."""
     axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
     return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s)
 
