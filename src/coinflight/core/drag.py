@@ -118,10 +118,10 @@ TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
 MAX_STEP = 1.0 / 64.0
 """Longest step, s."""
 DRAG_STEP = 0.02
+"""Largest step in units of the velocity's relaxation time 1/(c |v|)."""
 KUTTA_DRAG = 2e-3
 """Steps in which the drag's relaxation rate times the step, c A_max |v| h, is below this take
 Kutta's third-order rule (three evaluations of the acceleration), the others RK4."""
-"""Largest step in units of the velocity's relaxation time 1/(c |v|)."""
 DECAY_STEP = 0.5
 """Largest step in units of the spin damping's time min(I1, I3)/K while the spin still turns
 the coin."""
