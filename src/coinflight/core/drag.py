@@ -48,11 +48,12 @@ frozen, so any K ≥ 0 (1e3 N m s on a 1 mm coin) ends in a bounded number of st
 
 Translation: Runge-Kutta in t on (z, v), with n at the stages t0, t0 + h/2, t0 + h from the
 Magnus half steps. Where the drag barely depends on the velocity within a step (its relaxation
-rate times the step, c |v| h with c = ρ C_d A_max / 2m, below ``KUTTA_DRAG`` = 2e-3: every step
-of a coin toss) the step is Kutta's third-order rule, three evaluations of the acceleration
-with Simpson's weights on those stages (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
-Equations I*, 2nd ed., 1993, §II.1, Table 1.1); elsewhere (a light coin near its terminal speed)
-it is classical RK4, four evaluations. For a toss the two differ only through the velocity
+rate times the step, c |v| h with c = ρ C_d A_max / 2m, below ``KUTTA_DRAG`` = 2e-3: every
+step of a US nickel spinning at 150 rad/s or more below 8 m/s) the step is Kutta's third-order
+rule, three evaluations of the acceleration with Simpson's weights on those stages (Hairer,
+Nørsett & Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., 1993, §II.1, Table
+1.1); elsewhere (a slow spin's longer steps, a light coin near its terminal speed) it is
+classical RK4, four evaluations. For a toss the two differ only through the velocity
 dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step: both sample the attitude's
 time dependence, which dominates the error, at the same stages with the same weights. Both are
 exact for the vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too.
