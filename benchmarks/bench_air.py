@@ -1,24 +1,27 @@
-"""Speed of tosses through air (issue 11): the compiled integrator against SciPy, in one run.
+"""Speed of tosses through air (issue 11): the compiled integrator against the vacuum models.
 
-    python benchmarks/bench_air.py                          # new kernels + SciPy reference
+    python benchmarks/bench_air.py                          # air vs vacuum + SciPy reference
     python benchmarks/bench_air.py --old-src /path/to/src   # + the previous implementation
     python benchmarks/bench_air.py --quick
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
 rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
-are tosses a second, the median of the repeats, all of numba's threads:
+are tosses a second, all of numba's threads, the median of the repeats; the repeats of every
+case are interleaved (one of each in turn), so that the machine's other load falls on all alike,
+and each air case is given as a ratio to its vacuum model timed in the same rounds:
 
-- hand catch (:func:`coinflight.outcomes.air.catch_with_drag`),
+- hand catch (:func:`coinflight.outcomes.air.catch_with_drag`) against the closed-form hand
+  catch (:data:`coinflight.outcomes.hand.HAND_CATCH`),
 - table landing 0.8 m below launch (e = 0.5, μ = 0.3) to the first contact and carried to rest
-  (:func:`coinflight.outcomes.table.land`),
-- the same kernels in one thread, per second of CPU time (the machine's other load excluded),
+  (:func:`coinflight.outcomes.table.land` with and without drag),
+- the air kernels in one thread, per second of CPU time (the machine's other load excluded),
 - the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
   toss at a time: the previous product path's method and tolerance) on the first tosses,
-- with ``--old-src DIR``: the previous implementation (``coinflight`` imported from DIR in a
-  subprocess: one SciPy integration a toss, the table's bounce loop in Python) on the first
-  tosses, hand and table.
+- with ``--old-src DIR``: another implementation (``coinflight`` imported from DIR in a
+  subprocess, after one toss of each to compile) on the first ``--old-n`` tosses, hand and
+  table to rest.
 
-The ratios are taken within the run (the machine is shared: absolute rates vary).
+The load average is printed before and after: absolute rates on a shared machine vary with it.
 """
 
 from __future__ import annotations
@@ -37,6 +40,7 @@ from coinflight import Coin
 from coinflight.core import numerical
 from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.air import catch_with_drag, drag_model
+from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.outcomes.table import land
 
 COIN = Coin.preset("us-nickel")
@@ -55,6 +59,8 @@ omega, v0 = np.array(a["omega"]), np.array(a["v0"])
 coin = Coin.preset("us-nickel")
 drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
 surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+catch_with_drag(coin, omega[:1], v0[:1], 1.0, 9.81, drag)  # compile or load the cache
+land(coin, omega[:1], v0[:1], 1.0, 9.81, surface, drag)
 t0 = time.perf_counter(); catch_with_drag(coin, omega, v0, 1.0, 9.81, drag)
 t1 = time.perf_counter(); land(coin, omega, v0, 1.0, 9.81, surface, drag)
 t2 = time.perf_counter()
@@ -97,12 +103,14 @@ def main() -> None:
     parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
-    parser.add_argument("--old-src", default=None, help="src folder of the previous coinflight")
+    parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
+    parser.add_argument("--old-n", type=int, default=None, help="tosses for it (--reference)")
     args = parser.parse_args()
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
     omega, v0 = tosses(n)
+    load_before = f"{os.getloadavg()[0]:.2f}"
     print(
         f"{n:,} tosses of a US nickel, C_d = {drag.coefficient:g}, K = {drag.spin_damping:g} N m s,"
         f" {numba.get_num_threads()} threads, {os.cpu_count()} CPUs, median of {args.repeats}"
@@ -110,25 +118,47 @@ def main() -> None:
     for parallel in (True, False):  # compile or load the cache
         catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
         land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
-    rates = {
-        "hand": median_rate(
-            lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag), n, args.repeats
-        ),
-        "table first contact": median_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0), n, args.repeats
-        ),
-        "table": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag), n, args.repeats),
+    flight = 2.0 * v0 / G
+    air_cases = {
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag),
+        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag),
     }
-    for name, rate in rates.items():
-        print(f"  compiled, {name}: {rate:,.0f} tosses/s")
+    vacuum_cases = {
+        "hand": lambda: HAND_CATCH.faces(COIN, omega, flight, 1.0, G),
+        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE),
+    }
+    for fn in [*vacuum_cases.values()]:  # compile or load the cache
+        fn()
+    cases = {("air", k): f for k, f in air_cases.items()}
+    cases.update({("vacuum", k): f for k, f in vacuum_cases.items()})
+    times: dict[tuple[str, str], list[float]] = {key: [] for key in cases}
+    for _ in range(args.repeats):
+        for key, fn in cases.items():
+            t0 = time.perf_counter()
+            fn()
+            times[key].append(time.perf_counter() - t0)
+    rates = {key: n / statistics.median(ts) for key, ts in times.items()}
+    for name in air_cases:
+        air_rate, vacuum_rate = rates[("air", name)], rates[("vacuum", name)]
+        print(
+            f"  {name}: air {air_rate:,.0f} tosses/s, vacuum {vacuum_rate:,.0f} tosses/s, "
+            f"air / vacuum = {air_rate / vacuum_rate:.3f}"
+        )
     # On a shared machine the wall clock counts the time other processes hold the cores: the
     # serial kernels' CPU time gives the rate of one core (times the cores for a quiet machine).
     cpu = {
         "hand": cpu_rate(lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False), n),
-        "table": cpu_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False), n),
+        "table first contact": cpu_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=False), n
+        ),
+        "table to rest": cpu_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False), n
+        ),
     }
     for name, rate in cpu.items():
-        print(f"  compiled, {name}, one thread: {rate:,.0f} tosses per CPU second")
+        print(f"  air, {name}, one thread: {rate:,.0f} tosses per CPU second")
     air = drag_model(COIN, drag, G)
     i1, i3 = COIN.moments
     f = numerical.air_rhs(
@@ -139,13 +169,14 @@ def main() -> None:
     )
     print(
         f"  SciPy DOP853 reference, hand ({m} tosses): {scipy_rate:,.2f} tosses/s; "
-        f"compiled / SciPy = {rates['hand'] / scipy_rate:,.0f}"
+        f"compiled / SciPy = {rates[('air', 'hand')] / scipy_rate:,.0f}"
     )
     if args.old_src:
+        old_n = args.old_n or m
         payload = json.dumps(
             {
-                "omega": omega[:m].tolist(),
-                "v0": v0[:m].tolist(),
+                "omega": omega[:old_n].tolist(),
+                "v0": v0[:old_n].tolist(),
                 "cd": args.drag,
                 "k": args.spin_damping,
             }
@@ -159,11 +190,13 @@ def main() -> None:
             check=True,
         )
         old = json.loads(out.stdout)
-        for name in ("hand", "table"):
+        for name, key in (("hand", "hand"), ("table", "table to rest")):
             print(
-                f"  previous implementation ({args.old_src}), {name} ({m} tosses): "
-                f"{old[name]:,.2f} tosses/s; compiled / previous = {rates[name] / old[name]:,.0f}"
+                f"  other implementation ({args.old_src}), {name} ({old_n} tosses): "
+                f"{old[name]:,.2f}"
+                f" tosses/s; compiled / other = {rates[('air', key)] / old[name]:,.1f}"
             )
+    print(f"  load average {load_before} before, {os.getloadavg()[0]:.2f} after")
 
 
 if __name__ == "__main__":

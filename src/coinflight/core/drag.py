@@ -46,19 +46,35 @@ whatever the step. The damping's only time scale limits a step to ``DECAY_STEP``
 until the spin that remains could turn the coin by less than 1e-12 rad; after that the attitude is
 frozen, so any K ≥ 0 (1e3 N m s on a 1 mm coin) ends in a bounded number of steps.
 
-Translation: classical Runge-Kutta (RK4) in t on (z, v), with n at the stages from the
-Magnus half steps. RK4 is exact for the vacuum parabola, so C_d = K = 0 reproduces
-:mod:`coinflight.core.ballistics` too. A step turns the coin by at most ``TURN_STEP`` rad (the
-projected area changes with the attitude), lasts at most ``MAX_STEP`` s and at most
-``DRAG_STEP``/(c |v|) (c = ρ C_d A_max / 2m: the relaxation of the velocity).
+Translation: Runge-Kutta in t on (z, v), with n at the stages t0, t0 + h/2, t0 + h from the
+Magnus half steps. Where the drag barely depends on the velocity within a step (its relaxation
+rate times the step, c |v| h with c = ρ C_d A_max / 2m, below ``KUTTA_DRAG`` = 2e-3: every
+step of a US nickel spinning at 150 rad/s or more below 8 m/s) the step is Kutta's third-order
+rule, three evaluations of the acceleration with Simpson's weights on those stages (Hairer,
+Nørsett & Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., 1993, §II.1, Table
+1.1); elsewhere (a slow spin's longer steps, a light coin near its terminal speed) it is
+classical RK4, four evaluations. For a toss the two differ only through the velocity
+dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step: both sample the attitude's
+time dependence, which dominates the error, at the same stages with the same weights. Both are
+exact for the vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too.
+A step turns the coin by at most ``TURN_STEP`` rad (the projected area changes with the
+attitude), lasts at most ``MAX_STEP`` s and at most ``DRAG_STEP``/(c |v|). In the landing, a
+step that cannot bring any point of the coin to the surface (its centre stays higher than the
+coin's reach, falling at most −min(v_z, 0) h + g h²/2: falling, the drag only slows it) skips
+the contact search.
 
-Accuracy. The area's |n·v̂| has a kink twice a turn, which RK4 samples with errors of either
+Accuracy. The area's |n·v̂| has a kink twice a turn, which the steps sample with errors of either
 sign; against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
-time of vigorous tosses (ωx 150-300 rad/s) differs by 1e-6 s (median) and 4e-6 s (worst of 40)
-and n_z by at most 5e-4 (tests/test_drag.py); the drag itself moves the catch by ~4e-3 s and a
-10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 + (√5 − 1)/2) ≈ 0.95 rad keeps the step
-incommensurate with the half turn: at 2π/6.5 the kinks fell at the same phase of the steps
-and the errors added up (3e-5 s).
+time of 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0 1.5-3 m/s)
+differs by 8e-7 s (median) and 2e-6 s (worst) and n_z by at most 4e-4, and their first contact
+with a table 0.8 m below launch by 3e-7 s (median) and 2.4e-6 s (worst); the same to two digits
+as with RK4 in every step (tests/test_drag.py checks 1e-5 s on a handful). For scale, the drag
+itself moves the catch by ~4e-3 s and a 10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 +
+(√5 − 1)/2) ≈ 0.95 rad keeps the step incommensurate with the half turn, so the kinks fall at
+well spread phases of the steps: at 2π/6.5 they fell at the same phase and the errors added up
+(3e-5 s), and so they did (to 3e-5 s) when the step followed the speed (a step ∝ 1/|v|, which
+would have balanced the errors, drifts slowly through the phases). Steps of 2π/(4 + ...) ≈ 1.37
+rad or 2π/(3 + ...) ≈ 1.74 rad are 1.4 and 1.75 times fewer but double and triple those errors.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
@@ -103,11 +119,16 @@ MAX_STEP = 1.0 / 64.0
 """Longest step, s."""
 DRAG_STEP = 0.02
 """Largest step in units of the velocity's relaxation time 1/(c |v|)."""
+KUTTA_DRAG = 2e-3
+"""Steps in which the drag's relaxation rate times the step, c A_max |v| h, is below this take
+Kutta's third-order rule (three evaluations of the acceleration), the others RK4."""
 DECAY_STEP = 0.5
 """Largest step in units of the spin damping's time min(I1, I3)/K while the spin still turns
 the coin."""
 FROZEN_TURN = 1e-12
 """Once the spin that remains can turn the coin by less than this (rad), its attitude is frozen."""
+FAR_MARGIN = 1e-6
+"""A flight step skips the contact search when the coin stays this far above the surface, m."""
 MAX_STEPS = 1_000_000
 """Steps per toss at most: a toss that needs more ends with status UNSETTLED (table) or a
 negative catch time (hand); :func:`coinflight.outcomes.air.check_air` refuses, before any
@@ -303,8 +324,9 @@ def split(lm: tuple, n: tuple) -> tuple:
 
 @njit(cache=True)
 def step(z, v, n, u, t0, h, a0, b0, air):
-    """One RK4 step of length h of the centre of mass (height z, velocity v) and the Magnus
-    half steps of the attitude (n, u); t0 counts from the setting of a0, b0."""
+    """One step of length h of the centre of mass (height z, velocity v: Kutta's third-order
+    rule or RK4, see the module notes) and the Magnus half steps of the attitude (n, u); t0
+    counts from the setting of a0, b0."""
     axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
     return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s)
 
@@ -314,14 +336,34 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
     """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation`:
     without damping the same for every step of the same length, so computed once for them."""
     n1 = _rotate(n, axis, c, s)
-    u1 = _rotate(u, axis, c, s)
-    if air.spin_damping > 0.0:  # else the second half turn is the first again
+    if air.spin_damping > 0.0:
+        u1 = _rotate(u, axis, c, s)
         axis, c, s = rotation(n1, u1, t0 + 0.5 * h, 0.5 * h, a0, b0, air)
-    n2 = _rotate(n1, axis, c, s)
-    u2 = _rotate(u1, axis, c, s)
+        n2 = _rotate(n1, axis, c, s)
+        u2 = _rotate(u1, axis, c, s)
+    else:  # the second half turn is the first again: u turns by twice its angle at once
+        n2 = _rotate(n1, axis, c, s)
+        u2 = _rotate(u, axis, c * c - s * s, 2.0 * c * s)
     k1 = _acceleration(v, n, air)
     va = (v[0] + 0.5 * h * k1[0], v[1] + 0.5 * h * k1[1], v[2] + 0.5 * h * k1[2])
     k2 = _acceleration(va, n1, air)
+    relax = air.drag_factor * air.max_area * h
+    if relax * relax * dot(v, v) <= KUTTA_DRAG * KUTTA_DRAG:
+        # Kutta's third-order rule (Simpson's weights on the stages t0, t0 + h/2, t0 + h):
+        # the drag changes by less than KUTTA_DRAG of itself with the velocity in a step.
+        vb = (
+            v[0] + h * (2.0 * k2[0] - k1[0]),
+            v[1] + h * (2.0 * k2[1] - k1[1]),
+            v[2] + h * (2.0 * k2[2] - k1[2]),
+        )
+        k4 = _acceleration(vb, n2, air)
+        z1 = z + h / 6.0 * (v[2] + 4.0 * va[2] + vb[2])
+        v1 = (
+            v[0] + h / 6.0 * (k1[0] + 4.0 * k2[0] + k4[0]),
+            v[1] + h / 6.0 * (k1[1] + 4.0 * k2[1] + k4[1]),
+            v[2] + h / 6.0 * (k1[2] + 4.0 * k2[2] + k4[2]),
+        )
+        return z1, v1, n2, u2
     vb = (v[0] + 0.5 * h * k2[0], v[1] + 0.5 * h * k2[1], v[2] + 0.5 * h * k2[2])
     k3 = _acceleration(vb, n1, air)
     vc = (v[0] + h * k3[0], v[1] + h * k3[1], v[2] + h * k3[2])
@@ -344,14 +386,14 @@ def step_size(v, t0, a0, b0, air):
     if k > 0.0:
         a *= math.exp(-k * t0 / air.i3)
         b *= math.exp(-k * t0 / air.i1)
-    rate = math.sqrt(a * a + b * b) / air.i1  # how fast the triad turns, rad/s
+    # Compared squared: the square roots are taken only for a limit that applies.
     h = MAX_STEP
-    if rate * h > TURN_STEP:
-        h = TURN_STEP / rate
-    speed = math.sqrt(dot(v, v))
-    relax = air.drag_factor * air.max_area * speed
-    if relax * h > DRAG_STEP:
-        h = DRAG_STEP / relax
+    spin2 = a * a + b * b  # (I1 times how fast the triad turns, rad/s) squared
+    if spin2 * h * h > (TURN_STEP * air.i1) ** 2:
+        h = TURN_STEP * air.i1 / math.sqrt(spin2)
+    relax2 = (air.drag_factor * air.max_area) ** 2 * dot(v, v)  # (c A_max |v|)²
+    if relax2 * h * h > DRAG_STEP * DRAG_STEP:
+        h = DRAG_STEP / math.sqrt(relax2)
     # The spin that remains turns the coin by at most ∫ rate dt ≤ (a I3 + b I1)/(K I1).
     if k > 0.0 and (a * air.i3 + b * air.i1) / (k * air.i1) > FROZEN_TURN:
         decay = DECAY_STEP * min(air.i1, air.i3) / k
@@ -476,7 +518,10 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         if impacts >= MAX_IMPACTS:
             break
         h = step_size(v, tr, a0, b0, air)
-        if rising:
+        # Rising from the launch, or so high above the surface that no point of the coin can
+        # reach it within the step (the centre falls by at most −min(v_z, 0) h + g h²/2: the
+        # drag never pulls it down while it falls), fly on without the contact search.
+        if rising or z - rho + h * (min(v[2], 0.0) - 0.5 * air.g * h) > FAR_MARGIN:
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
@@ -484,7 +529,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             z, v, n, u = z1, v1, n1, u1
             t += h
             tr += h
-            rising = v[2] > 0.0
+            rising = rising and v[2] > 0.0
             continue
         lm = angular_momentum(n, u, tr, a0, b0, air)
         gap, speed = _gap(z, v, n, lm, air, hh)
