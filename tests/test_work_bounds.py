@@ -133,7 +133,7 @@ def test_monte_carlo_limit_follows_the_outcome_model():
     message = refused_cheaply(
         lambda: estimate(FIG_2A, "monte-carlo", n=10**8, seed=1, model=model), "tosses"
     )
-    assert "(about 6.9 h at 4e+03 tosses/s), more than the limit of 1.44e+07 tosses" in message
+    assert "(about 2.8 h at 1e+04 tosses/s), more than the limit of 3.6e+07 tosses" in message
 
 
 @pytest.mark.parametrize("n", [16 << 31, 2**63])

@@ -62,10 +62,11 @@ measured at e = 0.5, μ = 0.3 under a load of 3.3, 300-800 quieter (``python
 benchmarks/bench_bounce.py --contact N``; 66-81 % of the tosses go through the contact phase,
 for a median 0.3-2.3 s of motion)."""
 
-AIR_LANDINGS_PER_SECOND = 4e3
+AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3, C_d = 1.17),
-2 threads on the shared 2-core machine (benchmarks/bench_air.py: 3,500-3,700 a second under a
-load of 7-24, ~18,000 per CPU second in one thread)."""
+2 threads on the shared 2-core machine (benchmarks/bench_air.py, rocking ending: 10,600-15,600 a
+second under a load of 4-8, 24,000 at a load of about 1; 21,000-25,000 per CPU second in one
+thread)."""
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
