@@ -19,8 +19,8 @@ drag with the coefficient of a disc broadside on, 1.17, Hoerner, *Fluid-Dynamic 
 ch. 3; a thin disc edge-on has its own coefficient, not modelled separately), which replaces the
 fixed face area of the previous model (quadratic drag on a fixed area, as Strzałko et al. 2008
 are reported to use: not checked in their paper; ``projected=False`` keeps it, for comparison).
-The drag acts at the centre of mass: the aerodynamic torques of a tumbling disc (lift, a centre of pressure off the centre) are
-not modelled.
+The drag acts at the centre of mass: the aerodynamic torques of a tumbling disc (lift, a centre
+of pressure off the centre) are not modelled.
 
 Spin damping. The torque is −K ω (K in N m s, ``Drag.spin_damping``). It is not isotropic in I
 (the torque −k I ω would be, and reduces to the torque-free motion in the rescaled time
