@@ -53,8 +53,15 @@ def executor_or_threads(executor: Executor | None, threads: int | None) -> Itera
     if workers == 1:
         yield _SerialExecutor()
         return
-    with ThreadPoolExecutor(max_workers=workers) as pool:
+    pool = ThreadPoolExecutor(max_workers=workers)
+    try:
         yield pool
+    except BaseException:
+        # Interrupted (Ctrl-C, an error, a time limit): the tasks not yet started are dropped,
+        # so that only those running are waited for, not every task the pool was given.
+        pool.shutdown(wait=True, cancel_futures=True)
+        raise
+    pool.shutdown(wait=True)
 
 
 class _SerialExecutor:
