@@ -176,8 +176,9 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
-        # A table landing through air (~10,000 tosses/s, AIR_LANDINGS_PER_SECOND) would run the default sizes for minutes:
-        # --n must be given (the hand catch through air runs them in about a minute).
+        # A table landing through air (~10,000 tosses/s, AIR_LANDINGS_PER_SECOND) would run the
+        # default sizes for minutes: --n must be given (the hand catch through air runs them in
+        # about a minute).
         ([*FIG2A, *TABLE_AIR, "-m", "monte-carlo"], "give --n explicitly, e.g. --n 100000"),
         ([*FIG2A, *TABLE_AIR, "-m", "grid"], "--n 774 (774^2 = 599,076 tosses"),
         ([*FIG2A, *TABLE_AIR, "-m", "qmc"], "about 10,000 tosses per second"),
