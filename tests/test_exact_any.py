@@ -15,7 +15,8 @@ import pytest
 
 from coinflight.model.distributions import Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability import estimate, exact
+from coinflight.probability import estimate
+from coinflight.probability.exact import closed_form, common, gauss, omega_psi, quadrature
 from coinflight.studies.presets import human
 
 GAUSS = "closed form in T, Gauss product rule over the spins split at ψ = 45°"
@@ -23,8 +24,8 @@ GAUSS = "closed form in T, Gauss product rule over the spins split at ψ = 45°"
 
 def _old(dist: TossDistribution) -> float:
     """The adaptive quadrature (QUADPACK) that ran before, called directly."""
-    ranged = [n for n in exact._SPINS if not getattr(dist, n).is_fixed]
-    return exact._closed_form_in_t_quadrature(dist, ranged, {})[0]
+    ranged = [n for n in common._SPINS if not getattr(dist, n).is_fixed]
+    return quadrature._closed_form_in_t_quadrature(dist, ranged, {})[0]
 
 
 def test_human_preset_keeps_its_value():
@@ -66,7 +67,7 @@ def test_a_tail_that_the_old_quadrature_missed():
 
     def f(x: float) -> float:
         density = np.exp(-0.5 * ((x - 60.0) / 6.0) ** 2) / (6.0 * np.sqrt(2.0 * np.pi))
-        return exact._p_same_fixed_spins(x, 0.0, 40.0, dist.flight_time, i1, i3) * density
+        return closed_form._p_same_fixed_spins(x, 0.0, 40.0, dist.flight_time, i1, i3) * density
 
     reference = sum(
         quad(f, lo, hi, epsabs=1e-13, limit=500)[0] for lo, hi in ((0.0, k), (k, 200.0))
@@ -112,9 +113,9 @@ def test_three_ranged_spins_two_rules_agree(case):
     # (Ω, ψ) rule (azimuth integrated out, cuts at the box's curves) share only the
     # wrapped-normal series: they agree within their tolerances (1e-9 each).
     dist = TossDistribution(**_random_box(np.random.default_rng(1200 + case)))
-    ranged = list(exact._SPINS)
-    gauss = exact._gauss_spins(dist, ranged, {})[0]
-    assert estimate(dist, "exact").p_same_side == pytest.approx(gauss, abs=2e-9)
+    ranged = list(common._SPINS)
+    product = gauss._gauss_spins(dist, ranged, {})[0]
+    assert estimate(dist, "exact").p_same_side == pytest.approx(product, abs=2e-9)
 
 
 @pytest.mark.parametrize(
@@ -131,10 +132,10 @@ def test_three_ranged_spins_two_rules_agree(case):
 def test_two_ranged_spins_two_rules_agree(spins):
     # As above, where the Gauss rule runs by default (one or two ranged spins).
     dist = TossDistribution(**spins, flight_time=Normal(0.4, 0.04))
-    ranged = [n for n in exact._SPINS if not getattr(dist, n).is_fixed]
+    ranged = [n for n in common._SPINS if not getattr(dist, n).is_fixed]
     result = estimate(dist, "exact")
     assert result.details["how"] == GAUSS
-    assert exact._omega_psi(dist, ranged, {})[0] == pytest.approx(result.p_same_side, abs=2e-9)
+    assert omega_psi._omega_psi(dist, ranged, {})[0] == pytest.approx(result.p_same_side, abs=2e-9)
 
 
 def test_where_the_gauss_rule_refuses_the_omega_psi_rule_answers():

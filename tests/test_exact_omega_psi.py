@@ -1,7 +1,7 @@
 """``exact`` with a fixed or uniform flight time and any ranged spins (issue 12).
 
 Refused before: three ranged spin components with a uniform or fixed flight time, and a fixed
-flight time with ranged spins and precession. The (Ω, ψ) rule (``exact._omega_psi``) is
+flight time with ranged spins and precession. The (Ω, ψ) rule (``exact.omega_psi``) is
 checked against 10⁸ Monte Carlo tosses (within 4 standard errors, the issue's criterion),
 against the closed forms it meets in its limits (a narrow box tends to fixed spins, ω_z = 0 is
 the paper's closed form, ψ < 45° everywhere never turns over), on the symmetries of the
@@ -22,6 +22,7 @@ from coinflight.cli import app
 from coinflight.model.distributions import Fixed, Normal, TruncatedNormal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability import estimate, exact
+from coinflight.probability.exact import omega_psi
 
 HOW = "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)"
 CLI_BOX = {
@@ -201,7 +202,7 @@ def test_diameter_form_equals_the_closed_form(t):
     closed = estimate(dist, "exact")
     assert closed.details["how"] == "closed form"
     details: dict[str, object] = {}
-    value, _error = exact._omega_psi(dist, ["omega_x"], details)
+    value, _error = omega_psi._omega_psi(dist, ["omega_x"], details)
     assert details["spin integral"] == "diameter"
     assert value == pytest.approx(closed.p_same_side, abs=1e-10)
 
@@ -247,7 +248,7 @@ def test_the_density_of_the_radius_integrates_to_one():
         (Normal(60.0, 10.0), Normal(0.0, 15.0)),
         (Normal(60.0, 10.0), Fixed(7.0)),
     ]:
-        plane = exact._plane(dx, dy)
+        plane = omega_psi._plane(dx, dy)
         density = plane.density
         assert density is not None
         total = sum(

@@ -431,9 +431,9 @@ def test_exact_quadrature_has_an_evaluation_budget(monkeypatch):
     # The reviewer's case (ω_z ranged, 2-D quadrature on a kinked integrand) ran for minutes;
     # with the budget it stops with a ValueError naming the sampling methods. A small budget
     # keeps the test fast; the default one is sized on the human preset (~300,000 evaluations).
-    from coinflight.probability import exact
+    from coinflight.probability.exact import quadrature
 
-    monkeypatch.setattr(exact, "MAX_EVALUATIONS", 1000)
+    monkeypatch.setattr(quadrature, "MAX_EVALUATIONS", 1000)
     # (The reviewer's uniform ω_z now goes to the (Ω, ψ) rule; a truncated normal one, which
     # only the quadrature takes, keeps the kinked 2-D integrand.)
     slow = TossDistribution(Uniform(60, 90), 0, TruncatedNormal(2.5, 2.0, 0.0, 5.0), T_RANGE)
