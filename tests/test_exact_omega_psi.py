@@ -162,6 +162,58 @@ def test_a_narrow_box_tends_to_the_fixed_spins(t):
         assert box.p_heads == pytest.approx(fixed.p_heads, abs=0.05 * w + 1e-9)
 
 
+def test_a_range_narrower_than_the_rule_resolves_is_refused_at_once():
+    # ωx in a range 1e-12 wide beside wide ωy, ω_z, T: the density of √(ωx² + ωy²) is a
+    # difference of angles that keeps ~4 of its 16 digits; the orders used to disagree until
+    # the budget was spent (14-30 s, then refused). Now refused before any integral, in the
+    # words of the library (the command line shows them as its one line). So is a normal
+    # spin of a tiny sd (it asked for 1e14 interpolant pieces: 1 PiB, a MemoryError), on
+    # every axis, also with a normal T (the Gauss rule's fallback).
+    wide = {"omega_y": Uniform(-60.0, 60.0), "omega_z": Uniform(-40.0, 40.0)}
+    cases = [
+        ({**wide, "omega_x": Uniform(60.0, 60.000000000001)}, "omega_x = 60:60.000000000001 "),
+        ({**wide, "omega_x": Normal(60.0, 1e-13)}, "omega_x = normal:60,1e-13 "),
+        ({**wide, "omega_x": Uniform(40.0, 80.0), "omega_y": Uniform(5.0, 5.0 + 1e-12)}, "omega_y"),
+        (
+            {**wide, "omega_x": Uniform(40.0, 80.0), "omega_z": Uniform(10.0, 10.0 + 1e-12)},
+            "omega_z",
+        ),
+    ]
+    for spins, name in cases:
+        for t in (Uniform(0.5, 1.0), Normal(0.7, 0.05)):
+            dist = TossDistribution(**spins, flight_time=t)
+            started = time.perf_counter()
+            with pytest.raises(ValueError, match="cannot resolve " + name) as info:
+                estimate(dist, "exact")
+            assert time.perf_counter() - started < 2.0
+            assert "less than 1e-09 of its size" in str(info.value)
+            assert str(info.value).endswith("use --method grid, monte-carlo or qmc instead")
+            assert exact.estimated_seconds(dist) is None  # refused: no estimate either
+    # The sampling methods take such a range: the refusal's way on works.
+    dist = TossDistribution(**cases[0][0], flight_time=Uniform(0.5, 1.0))
+    assert 0.0 <= estimate(dist, "monte-carlo", n=1000, seed=1).p_heads <= 1.0
+    # Just above the limit (1e-8 of 60) the rule still answers, near the fixed value.
+    base = {**wide, "flight_time": Uniform(0.5, 1.0)}
+    fixed = estimate(TossDistribution(omega_x=60.0, **base), "exact")
+    near = estimate(TossDistribution(omega_x=Uniform(60.0, 60.0 + 1e-7), **base), "exact")
+    assert near.p_heads == pytest.approx(fixed.p_heads, abs=0.05 * 1e-7 + 2e-9)
+
+
+def test_a_normal_plane_spin_of_small_sd_is_bounded_before_its_interpolant():
+    # The interpolant of the plane density cuts [near, far] into pieces 1.5 sd wide: sd 1e-4
+    # beside ωy over 120 rad/s asks for ~1.7e5 pieces (half an hour at ~100 pieces/s),
+    # refused at once by the work bound; estimated_seconds counts the pieces (1,670 for sd
+    # 0.01: ~17 s, not a flat 0.2 s).
+    spins = {"omega_y": Uniform(-60.0, 60.0), "omega_z": Uniform(-40.0, 40.0)}
+    small = TossDistribution(omega_x=Normal(60.0, 1e-4), **spins, flight_time=Uniform(0.5, 1.0))
+    started = time.perf_counter()
+    with pytest.raises(ValueError, match=r"interpolant .* pieces .* more than the limit of 4e\+03"):
+        estimate(small, "exact")
+    assert time.perf_counter() - started < 2.0
+    wider = TossDistribution(omega_x=Normal(60.0, 0.01), **spins, flight_time=Uniform(0.5, 1.0))
+    assert exact.estimated_seconds(wider) > 1670 / 100
+
+
 def test_never_turning_over_is_one():
     # (I3/I1)|ω_z| ≥ 2 × 30 = 60 > Ω⊥ ≤ √(20² + 5²): ψ < 45° everywhere, the coin only
     # wobbles and always shows its starting face (Diaconis, Holmes & Montgomery 2007, §2).

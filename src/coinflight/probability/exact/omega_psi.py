@@ -21,6 +21,7 @@ from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability.exact.common import (
     _NORMAL_SPAN,
+    _SPINS,
     _USE_INSTEAD,
     TOLERANCE,
     _Details,
@@ -46,6 +47,16 @@ _PSI_PANEL = 0.05
 _POLAR_CHUNK = 1 << 18
 """Integrand points evaluated at once by the (Ω, ψ) rule."""
 _QUARTER = math.pi / 4
+NARROWEST = 1e-9
+"""Narrowest ranged spin the (Ω, ψ) rule takes, as a fraction of its size (the largest
+magnitude in its support): the density of √(ωx² + ωy²) of a box of width w at distance x from
+the origin is a difference of angles of about x / w times rounding (1e-16), so that below
+1e-9 it keeps fewer than 7 digits and the 1e-9 promised cannot be kept (measured: ωx in
+60:60.000000000001 beside wide ωy, ω_z, T disagreed between orders until the budget was
+spent, 14-30 s). Such a range is refused at once (:func:`_check_widths`)."""
+PLANE_PIECES_PER_SECOND = 100.0
+"""Pieces of :class:`_PlaneInterpolant` fitted a second (measured 66-88 on the 2-core
+machine at load 7; each piece 25 arcs of Gauss–Legendre)."""
 
 
 class _Radial:
@@ -193,6 +204,22 @@ class _PlaneInterpolant:
         self.sd = min(d.sd for d in (dx, dy) if isinstance(d, Normal))
         self.breaks = np.asarray(breaks, dtype=float)
         self.coefs = np.empty((0, 0))  # built on first use (:meth:`_build`)
+        # Bounded before anything is allocated: a narrow normal beside a wide range asks
+        # for (range / 1.5 sd) pieces (1e14 for sd 1e-13: 1 PiB before this bound).
+        v.work_bound(
+            "the exact (Ω, ψ) rule's interpolant of the density of √(ωx² + ωy²), in pieces "
+            f"1.5 sd = {1.5 * self.sd:.3g} rad/s wide,",
+            self.pieces(),
+            self.MAX_PIECES,
+            "pieces",
+            _USE_INSTEAD,
+            rate=PLANE_PIECES_PER_SECOND,
+        )
+
+    def pieces(self) -> float:
+        """Pieces the interpolant starts from (:meth:`_build`), counted without allocating."""
+        gaps = np.diff(self.breaks) / (1.5 * self.sd)
+        return float(np.sum(np.maximum(1.0, np.ceil(gaps))))
 
     def _build(self) -> None:
         ends = _refine_width(self.breaks, 1.5 * self.sd)
@@ -538,8 +565,11 @@ def _polar_seconds(dist: TossDistribution) -> float:
     pieces counted as the plan counts them; 0.2 s more to build a normal plane's interpolant."""
     i1, i3 = dist.moments
     times = _times(dist.flight_time)
+    _check_widths(dist)
     p, ax = _plane(dist.omega_x, dist.omega_y), _axial(dist.omega_z, i3 / i1)
-    setup = 0.2 if isinstance(p.density, _PlaneInterpolant) else 0.0
+    setup = 0.0
+    if isinstance(p.density, _PlaneInterpolant):
+        setup = p.density.pieces() / PLANE_PIECES_PER_SECOND
     orders = sum(n * n for n in POLAR_ORDERS[:2])
     if p.density is None or ax.density is None:
         om_hi = math.hypot(p.hi, ax.hi)
@@ -551,6 +581,34 @@ def _polar_seconds(dist: TossDistribution) -> float:
     panels = edges * curves + edges + 32
     inner = edges + p.graded.size + ax.points.size + 1
     return 1e-3 + setup + panels * inner * orders / POLAR_POINTS_PER_SECOND
+
+
+def _text(x: float) -> str:
+    """A float as typed: the shortest text that reads back to it, no trailing ".0"."""
+    return repr(float(x)).removesuffix(".0")
+
+
+def _check_widths(dist: TossDistribution) -> None:
+    """Refuse at once (ValueError) a ranged spin narrower than :data:`NARROWEST` of its size:
+    the (Ω, ψ) rule's densities lose those digits (a normal spin's width is its support's,
+    mean ± 9 sd)."""
+    for name in _SPINS:
+        d = getattr(dist, name)
+        if d.is_fixed:
+            continue
+        lo, hi = _support(d)
+        size = max(abs(lo), abs(hi))
+        if hi - lo < NARROWEST * size:
+            shown = (
+                f"{_text(lo)}:{_text(hi)}"
+                if isinstance(d, Uniform)
+                else f"normal:{_text(d.mean)},{_text(d.sd)}"
+            )
+            raise ValueError(
+                f"the exact (Ω, ψ) rule cannot resolve {name} = {shown} rad/s: {hi - lo:.3g} "
+                f"rad/s wide, less than {NARROWEST:g} of its size {size:.6g} rad/s; give "
+                f"{name} one value, or {_USE_INSTEAD}"
+            )
 
 
 def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
@@ -586,6 +644,7 @@ def _omega_psi(dist: TossDistribution, ranged: list[str], details: _Details) -> 
     tangent circle smooth. With one of Ω⊥, A fixed the integral is over ψ along one curve.
     Orders :data:`POLAR_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`.
     """
+    _check_widths(dist)
     plan = _PolarPlan(dist)
     details["spin integral"] = plan.kind
     previous, previous_n, change, used = math.nan, 0, math.nan, 0
