@@ -25,7 +25,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, given, reject, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -39,6 +39,12 @@ SURVEY = bool(LOG and os.environ.get("COINFLIGHT_GENERATED_SURVEY"))
 # No single generated command line may take longer than this (the slowest legitimate ones are
 # exact quadratures that give up after their budget, ~25 s, on a loaded machine).
 SECONDS_PER_RUN = int(os.environ.get("COINFLIGHT_GENERATED_SECONDS", "60"))
+# Most work a generated line may ask for, s on the reference machine by the package's own
+# estimates: a third of the time limit, for a machine busier than the reference. The library
+# accepts up to an hour (``MAX_RUN_SECONDS``): `sweep --method grid` over hand,table with two
+# restitutions is 5,000² table landings a row, ~500 s a row at the table's 5e4/s, accepted
+# and far beyond any test. Such lines are discarded (hypothesis' ``reject``) before any work.
+BUDGET_SECONDS = SECONDS_PER_RUN / 3
 
 # Texts no number option should accept, or should accept only with a correct answer.
 HOSTILE_NUMBERS = [
@@ -222,6 +228,45 @@ class _TooSlow(Exception):
     pass
 
 
+class _OverBudget(BaseException):
+    """A line whose work the library accepts but a test may not take. A BaseException, so
+    that no handler of the library turns it into a refusal or an answer."""
+
+
+@contextmanager
+def _work_budget(seconds: float) -> Iterator[None]:
+    """Every work bound of the package (``coinflight._validation.work_bound``, called before
+    any work with the estimate and its rate) first refuses as the library does, then raises
+    :class:`_OverBudget` for an estimate over ``seconds``: the generated lines respect a work
+    budget computed from the package's own rates, whatever the command."""
+    from coinflight import _validation
+
+    original = _validation.work_bound
+
+    def bounded(what, amount, limit, unit, way_on, rate=None):
+        original(what, amount, limit, unit, way_on, rate)  # the library's refusal first
+        if rate:
+            estimate = float(amount) / rate
+        elif unit.startswith("s of"):  # already seconds (sweeps, the server)
+            estimate = float(amount)
+        else:  # bytes, pieces without a rate: not time
+            return
+        if estimate > seconds:
+            raise _OverBudget(f"{what}: about {estimate:.3g} s of work, over {seconds:g} s")
+
+    _validation.work_bound = bounded
+    try:
+        yield
+    finally:
+        _validation.work_bound = original
+
+
+def _run(args: list[str]):
+    """The command line's result, or :class:`_OverBudget` before its work starts."""
+    with _time_limit(SECONDS_PER_RUN), _work_budget(BUDGET_SECONDS):
+        return runner.invoke(app, args)
+
+
 @contextmanager
 def _time_limit(seconds: int) -> Iterator[None]:
     def _raise(signum, frame):  # pragma: no cover - only on a hang
@@ -270,10 +315,12 @@ def _command_line(draw, command: str, out: Path) -> list[str]:
 def _check(args: list[str]) -> None:
     start = time.perf_counter()
     try:
-        with _time_limit(SECONDS_PER_RUN):
-            result = runner.invoke(app, args)
+        result = _run(args)
         _judge(args, result)
         outcome = "ok" if result.exit_code == 0 else f"refused: {result.stderr.strip()[:200]}"
+    except _OverBudget as exc:
+        outcome = f"over the test's work budget: {exc}"
+        reject()
     except (AssertionError, _TooSlow) as exc:
         outcome = f"FAILED: {str(exc).splitlines()[-1][:300]}"
         if not SURVEY:
@@ -315,6 +362,24 @@ def _numbers(payload, key: str = "") -> Iterator[tuple[str, float]]:
             yield from _numbers(v, key)
     elif isinstance(payload, float):
         yield key, payload
+
+
+def test_a_line_over_the_work_budget_is_stopped_before_its_work(tmp_path):
+    # The line that ran past its 60 s limit: the sweep's own bound accepts it (a grid of 5,000²
+    # table landings a row, ~500 s at the table's 5e4/s, under the hour); the test's budget
+    # stops it at the first estimate over budget, the row's, before any row runs.
+    line = ["sweep", "--surface", "hand,table", "--restitution", "0.3,0.6", "--method", "grid",
+            "--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # fmt: skip
+    started = time.perf_counter()
+    with pytest.raises(_OverBudget, match=r"a grid of 5000\^2 .* about 500 s of work, over 20 s"):
+        _run([*line, "--out", str(tmp_path / "s.csv")])
+    assert time.perf_counter() - started < 10
+    assert not (tmp_path / "s.csv").exists()
+    # Within the budget the same line runs as before (a small n), and beyond the library's
+    # own limit it is still the library's one-line refusal (exit 2), not a budget stop.
+    assert _run([*line, "--n", "20", "--out", str(tmp_path / "t.csv")]).exit_code == 0
+    huge = _run([*line, "--n", "99999999999", "--out", str(tmp_path / "u.csv")])
+    assert huge.exit_code == 2 and "more than the limit" in huge.stderr
 
 
 @pytest.mark.slow

@@ -162,7 +162,10 @@ class RunStats:
     """How the last run went: tasks, batches, compute and wall seconds, the overhead
     measured, the overhead per batch its last batches were sized by (``cost``: the measured
     one or the client's CPU per batch observed, the larger), the client process's CPU
-    seconds during the run."""
+    seconds during the run; per finished batch (in the order they finished) its compute
+    seconds (``durations``), its units of work (``units``) and the compute seconds it was
+    sized for (``planned``: its units at the rate measured when it was sent, 0 for the first,
+    timed batches)."""
 
     tasks: int = 0
     batches: int = 0
@@ -172,6 +175,8 @@ class RunStats:
     overhead: float = 0.0
     cost: float = 0.0
     durations: list[float] = field(default_factory=list)
+    units: list[int] = field(default_factory=list)
+    planned: list[float] = field(default_factory=list)
     client_cpu: float = 0.0
 
     @property
@@ -268,6 +273,7 @@ class DaskExecutor:
         done_cpu = 0.0
         pending = distributed.as_completed()
         owner: dict[str, list[int]] = {}
+        planned: dict[str, float] = {}
 
         def submit() -> None:
             nonlocal next_task, remaining
@@ -297,6 +303,7 @@ class DaskExecutor:
             batch = [tasks[i] for i in range(first, next_task)]
             future = self.client.submit(_run_batch, fn, batch, pure=False)
             owner[future.key] = list(range(first, next_task))
+            planned[future.key] = total * done_seconds / done_units if done_seconds > 0 else 0.0
             pending.add(future)
             stats.batches += 1
 
@@ -314,6 +321,8 @@ class DaskExecutor:
                 stats.compute += seconds
                 stats.durations.append(seconds)
                 indices = owner.pop(future.key)
+                stats.units.append(sum(units[i] for i in indices))
+                stats.planned.append(planned.pop(future.key))
                 # every batch counts, a first one that compiled kernels too: a slow batch only
                 # makes the next ones smaller (more overhead), never a worker idle
                 done_seconds += seconds
