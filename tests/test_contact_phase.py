@@ -7,9 +7,10 @@ import math
 import numpy as np
 import pytest
 
+from _kernels import coin_contact
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
-from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING
 from coinflight.core.impact import angular_velocity, contact_point, lowest_depth
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Drag, Surface
@@ -31,16 +32,10 @@ def _contact(
     ending=ROCKING_ENDING,
     corner=0.0,
 ):
-    i1, i3 = coin.moments
-    return Contact.build(
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=float(i1),
-        i3=float(i3),
+    return coin_contact(
+        coin,
         restitution=e,
         friction=mu,
-        drop_height=0.8,
         g=g,
         rest_speed=0.01,
         rolling_resistance=rolling,
@@ -339,19 +334,7 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
         raise AssertionError("the default ending called the contact phase")
 
     land_one = bounce.land_one.py_func
-    i1, i3 = NICKEL.moments
-    c = Contact.build(  # as outcomes.table.land builds it, but for the ending left at its default
-        radius=NICKEL.radius,
-        thickness=NICKEL.thickness,
-        mass=NICKEL.mass,
-        i1=float(i1),
-        i3=float(i3),
-        restitution=0.5,
-        friction=0.3,
-        drop_height=0.8,
-        g=G,
-        rest_speed=bounce.REST_SPEED,
-    )
+    c = coin_contact(NICKEL)  # as outcomes.table.land builds it, the ending left at its default
     assert c.ending == ROCKING_ENDING
     monkeypatch.setitem(land_one.__globals__, "after_impact", bounce.after_impact.py_func)
     monkeypatch.setitem(land_one.__globals__, "rock", rock)

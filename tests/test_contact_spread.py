@@ -13,9 +13,9 @@ from scipy import stats
 from typer.testing import CliRunner
 
 from _cli import one_line_error
+from _kernels import coin_contact
 from coinflight.cli import app
 from coinflight.core import bounce
-from coinflight.core.contact import Contact
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, TruncatedNormal, Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -78,19 +78,7 @@ def test_the_contact_parameters_are_ranged_after_the_toss_parameters():
 
 # --- the kernel: each toss its own e and μ -------------------------------------------------------
 def _contact(coin, e, mu):
-    i1, i3 = coin.moments
-    return Contact.build(
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=i1,
-        i3=i3,
-        restitution=e,
-        friction=mu,
-        drop_height=0.3,
-        g=9.81,
-        rest_speed=bounce.REST_SPEED,
-    )
+    return coin_contact(coin, restitution=e, friction=mu, drop_height=0.3)
 
 
 def test_per_toss_contact_is_the_same_as_one_surface_per_toss():

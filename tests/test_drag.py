@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _kernels import coin_air, coin_contact
 from coinflight import Coin, Flight, Toss
 from coinflight.core import ballistics, bounce, numerical
 from coinflight.core import drag as air_kernels
@@ -24,18 +25,8 @@ G = 9.81
 
 
 def _air(coin=QUARTER, cd=0.0, k=0.0, rho=1.2, projected=True):
-    i1, i3 = coin.moments
-    return air_kernels.Air.build(
-        mass=coin.mass,
-        radius=coin.radius,
-        thickness=coin.thickness,
-        i1=i1,
-        i3=i3,
-        g=G,
-        drag_coefficient=cd,
-        spin_damping=k,
-        air_density=rho,
-        projected=projected,
+    return coin_air(
+        coin, drag_coefficient=cd, spin_damping=k, air_density=rho, g=G, projected=projected
     )
 
 
@@ -91,19 +82,7 @@ def test_zero_air_catch_is_the_hand_catch():
 
 
 def test_zero_air_landing_is_the_vacuum_landing():
-    i1, i3 = NICKEL.moments
-    contact = Contact.build(
-        radius=NICKEL.radius,
-        thickness=NICKEL.thickness,
-        mass=NICKEL.mass,
-        i1=i1,
-        i3=i3,
-        restitution=0.5,
-        friction=0.3,
-        drop_height=0.8,
-        g=G,
-        rest_speed=bounce.REST_SPEED,
-    )
+    contact = coin_contact(NICKEL)
     omega, _ = _tosses(2000, seed=5)
     v0 = np.random.default_rng(6).uniform(1.5, 3.0, 2000)
     sign = np.where(np.arange(2000) % 2 == 0, 1.0, -1.0)
@@ -192,19 +171,7 @@ def test_first_contact_agrees_with_dop853(omega, v0, start):
     # Kutta's rule or RK4 in a step) to the first contact 0.8 m below launch: on 40 tosses of
     # benchmarks/bench_air.py the contact time differs from DOP853 by 3e-7 s (median) and
     # 2.4e-6 s (max), as before these changes (2.9e-7, 2.4e-6).
-    i1, i3 = NICKEL.moments
-    contact = Contact.build(
-        radius=NICKEL.radius,
-        thickness=NICKEL.thickness,
-        mass=NICKEL.mass,
-        i1=i1,
-        i3=i3,
-        restitution=0.5,
-        friction=0.3,
-        drop_height=0.8,
-        g=G,
-        rest_speed=bounce.REST_SPEED,
-    )
+    contact = coin_contact(NICKEL)
     air = _air(NICKEL, cd=1.17)
     want = _reference_contact(NICKEL, air, np.array(omega), v0, start, 0.8)
     got = air_kernels.land(np.array([omega]), v0, start, air, contact, max_bounces=0)

@@ -8,6 +8,7 @@ import numba
 import numpy as np
 import pytest
 
+from _kernels import coin_air, coin_contact
 from coinflight.core import ballistics, bands, precession, sampling, torque_free
 from coinflight.core.contact import Contact
 from coinflight.core.outcome import (
@@ -144,30 +145,8 @@ def test_drag_landing_takes_the_contact_record():
     from coinflight.core import drag
 
     coin = Coin.preset("us-nickel")
-    i1, i3 = coin.moments
-    contact = Contact.build(
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=i1,
-        i3=i3,
-        restitution=0.5,
-        friction=0.3,
-        drop_height=0.8,
-        g=9.81,
-        rest_speed=0.01,
-    )
-    air = drag.Air.build(
-        mass=coin.mass,
-        radius=coin.radius,
-        thickness=coin.thickness,
-        i1=i1,
-        i3=i3,
-        g=9.81,
-        drag_coefficient=1.0,
-        spin_damping=0.0,
-        air_density=1.2,
-    )
+    contact = coin_contact(coin, rest_speed=0.01)
+    air = coin_air(coin, drag_coefficient=1.0)
     face, _, first, settle, status = drag.land(np.array([[40.0, 3.0, 2.0]]), 2.0, 1.0, air, contact)
     assert int(face[0]) in tuple(Face) and int(status[0]) in tuple(Status)
     assert 0.0 < first[0] <= settle[0]
