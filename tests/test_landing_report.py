@@ -178,3 +178,58 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
         land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.ours_rest
     )
     assert c.speed_ratio > 1.0
+    # The 3-D contact ending lands the same tosses with MuJoCo's torsional and rolling friction
+    # as its pivoting and rolling resistance.
+    assert c.contact is not None and c.contact.ending == "contact"
+    assert c.contact.rolling_resistance == mujoco_compare.ROLLING == 1e-4
+    assert c.contact.pivoting_resistance == mujoco_compare.TORSIONAL == 5e-3
+    resisted = Surface(
+        "table",
+        study.DROP_HEIGHT,
+        c.restitution,
+        c.friction,
+        rolling_resistance=1e-4,
+        pivoting_resistance=5e-3,
+        ending="contact",
+    )
+    np.testing.assert_array_equal(
+        land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted).face, c.contact.rest
+    )
+    assert [r.ending for r in c.endings] == ["rocking", "contact"]
+    assert c.agreement(c.contact) == np.mean(c.contact.rest == c.mujoco_rest)
+    assert c.ratio(c.rocking) == c.speed_ratio
+    assert c.settings["condim"] == 6 and c.settings["friction"][1:] == [5e-3, 1e-4]
+
+
+def test_mujoco_contacts_carry_torsional_and_rolling_friction():
+    # MuJoCo ignores its torsional and rolling coefficients below condim 4 and 6 (its default
+    # is 3): the comparison's model must use 6, and its contacts must have 6 dimensions.
+    coin = study.mujoco_tosses().coin
+    m = mujoco_compare.model(coin, 0.3, 0.5)
+    assert list(m.geom_condim) == [6, 6]
+    np.testing.assert_array_equal(m.geom_friction[1], [0.3, 5e-3, 1e-4])
+    d = mujoco.MjData(m)
+    d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 - 1e-5)  # resting flat, just touching
+    mujoco.mj_forward(m, d)
+    assert d.ncon > 0 and all(d.contact[i].dim == 6 for i in range(d.ncon))
+    with pytest.raises(ValueError, match="MuJoCo condim must be 1, 3, 4 or 6, got 5"):
+        mujoco_compare.model(coin, 0.3, 0.5, condim=5)
+
+
+def test_the_report_compares_both_endings_with_mujoco(written):
+    out, r = written
+    if r.mujoco is None:
+        pytest.skip("MuJoCo not run")
+    numbers = json.loads((out / "numbers.json").read_text())["mujoco"]
+    rocking, contact = numbers["endings"]
+    assert (rocking["ending"], contact["ending"]) == ("rocking", "contact")
+    assert contact["rolling_resistance"] == 1e-4 and contact["pivoting_resistance"] == 5e-3
+    assert rocking["rest"] == numbers["coinflight_rest"]
+    c = r.mujoco
+    assert contact["rest"] == c.fractions(c.contact.rest).tolist()
+    p = np.array(contact["rest"])
+    np.testing.assert_allclose(contact["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
+    assert contact["speed_ratio"] == c.mujoco_seconds / c.contact.seconds
+    md = (out / "report.md").read_text()
+    assert "coinflight, 3-D contact ending, at rest" in md
+    assert f"{c.agreement(c.contact):.1%}" in md

@@ -93,7 +93,18 @@ def landing_report(
         c = report.mujoco
         typer.echo(
             f"MuJoCo, {c.n:,} identical tosses: same well at first contact {c.first_agreement:.1%}"
-            f", same face at rest {c.rest_agreement:.1%}; coinflight {c.speed_ratio:,.0f}× faster"
+        )
+        for run in c.endings:
+            p, se = c.fractions(run.rest), c.stderrs(run.rest)
+            typer.echo(
+                f"  {run.ending} ending: same face at rest {c.agreement(run):.1%}; tails, heads, "
+                f"edge {', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}; "
+                f"{c.ratio(run):,.0f}× MuJoCo's speed"
+            )
+        p, se = c.fractions(c.mujoco_rest), c.stderrs(c.mujoco_rest)
+        typer.echo(
+            f"  MuJoCo: tails, heads, edge "
+            f"{', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}"
         )
 
 

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import NDArray
 
 from coinflight.plotting.style import (
     EDGE_COLOR,
@@ -131,45 +132,50 @@ def plot_nickel_band(bands: Sequence[Band]) -> Figure:
 
 def plot_mujoco(c: MujocoComparison) -> Figure:
     """P(tails, heads, edge) of the same tosses in coinflight and MuJoCo, at the first contact
-    and at rest (bars, ±2 s.e.)."""
-    fig = new_figure(figsize=(8.0, 4.2))
+    and at rest (bars, ±2 s.e.); at rest, coinflight with each of its endings (rocking, and
+    the 3-D contact ending when it ran)."""
+    fig = new_figure(figsize=(9.0, 4.2))
     axes = fig.subplots(1, 2, sharey=True)
     names = ("tails", "heads", "edge")
     colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
-    for ax, (title, ours, theirs) in zip(
-        axes,
-        (
-            ("first contact", c.ours_first, c.mujoco_first),
-            ("at rest", c.ours_rest, c.mujoco_rest),
-        ),
-        strict=True,
-    ):
+    Series = list[tuple[NDArray[np.int8], str | None, str]]
+    at_rest: Series = [(c.ours_rest, None, "coinflight, rocking ending")]
+    if c.contact is not None:
+        at_rest.append((c.contact.rest, "..", "coinflight, 3-D contact ending"))
+    at_rest.append((c.mujoco_rest, "//", "MuJoCo"))
+    first: Series = [(c.ours_first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]
+    panels: tuple[tuple[str, Series], ...] = (("first contact", first), ("at rest", at_rest))
+    for ax, (title, series) in zip(axes, panels, strict=True):
         x = np.arange(3)
-        for shift, faces, hatch, label in (
-            (-0.2, ours, None, "coinflight"),
-            (0.2, theirs, "//", "MuJoCo"),
-        ):
+        width = 0.8 / len(series)
+        for k, (faces, hatch, label) in enumerate(series):
             p = c.fractions(faces)
             ax.bar(
-                x + shift,
+                x + (k - (len(series) - 1) / 2) * width,
                 p,
-                width=0.38,
+                width=0.95 * width,
                 color=colours,
                 hatch=hatch,
                 edgecolor="0.2",
-                yerr=2 * np.sqrt(p * (1 - p) / c.n),
+                yerr=2 * c.stderrs(faces),
                 capsize=3,
                 label=label,
             )
         ax.set_xticks(x)
         ax.set_xticklabels(names)
         ax.set_title(title, fontsize="medium")
+        ax.legend(fontsize="x-small")
     axes[0].set_ylabel("fraction of tosses (±2 s.e.)")
-    axes[1].legend(fontsize="small")
+    resist = (
+        ""
+        if c.contact is None
+        else f"; contact ending ℓ_r = {c.contact.rolling_resistance:g} m, ℓ_p = "
+        f"{c.contact.pivoting_resistance:g} m (MuJoCo's rolling, torsional friction)"
+    )
     fig.suptitle(
         f"{c.n:,} identical tosses (seed {c.seed}), e = {c.restitution:g}, μ = "
-        f"{c.friction:g}: coinflight left, MuJoCo right (hatched)",
-        fontsize="medium",
+        f"{c.friction:g}{resist}; bars left to right as in the legends",
+        fontsize="small",
     )
     return fig
 

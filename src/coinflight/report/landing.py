@@ -146,6 +146,20 @@ def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
     return (np.bincount(settled, minlength=3) / len(settled)).tolist()
 
 
+def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str, Any]:
+    return {
+        "ending": run.ending,
+        "rest": c.fractions(run.rest).tolist(),
+        "rest_stderr": c.stderrs(run.rest).tolist(),
+        "rest_agreement": c.agreement(run),
+        "unsettled": run.unsettled,
+        "seconds": run.seconds,
+        "speed_ratio": c.ratio(run),
+        "rolling_resistance": run.rolling_resistance if run.ending == "contact" else None,
+        "pivoting_resistance": run.pivoting_resistance if run.ending == "contact" else None,
+    }
+
+
 def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
     return {
         "n": c.n,
@@ -163,6 +177,8 @@ def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
         "coinflight_seconds": c.ours_seconds,
         "mujoco_seconds": c.mujoco_seconds,
         "speed_ratio": c.speed_ratio,
+        "mujoco_rest_stderr": c.stderrs(c.mujoco_rest).tolist(),
+        "endings": [_ending_numbers(c, run) for run in c.endings],
         "settings": c.settings,
     }
 
@@ -407,6 +423,14 @@ def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
     )
 
 
+def _z_against_mujoco(c: study.MujocoComparison, faces: np.ndarray) -> np.ndarray:
+    """(coinflight − MuJoCo) fractions at rest in their combined binomial standard errors
+    (as if independent samples; the tosses are the same, so this is a scale, not a test)."""
+    se = np.hypot(c.stderrs(faces), c.stderrs(c.mujoco_rest))
+    diff = c.fractions(faces) - c.fractions(c.mujoco_rest)
+    return np.divide(diff, se, out=np.zeros(3), where=se > 0)
+
+
 def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block, ...]:
     head = Heading("The same tosses in MuJoCo")
     if c is None:
@@ -420,9 +444,50 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
 
     moving_edges = int(np.count_nonzero(c.mujoco_moving & (c.mujoco_rest == 2)))
     all_edges = int(np.count_nonzero(c.mujoco_rest == 2))
-
-    ours_rate = c.n / c.ours_seconds
+    contact = c.contact
+    rows = [
+        row("coinflight, first contact", c.ours_first),
+        row("MuJoCo, first contact", c.mujoco_first),
+        row("coinflight, rocking ending, at rest", c.ours_rest),
+    ]
+    if contact is not None:
+        rows.append(row("coinflight, 3-D contact ending, at rest", contact.rest))
+    rows += [
+        row("MuJoCo, at rest", c.mujoco_rest),
+        row(
+            f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
+            c.mujoco_rest[~c.mujoco_moving],
+        ),
+    ]
+    label = {"rocking": "rocking ending (default)", "contact": "3-D contact ending"}
+    agreement = tuple(
+        (
+            label[run.ending],
+            f"{c.agreement(run):.1%}",
+            f"{run.unsettled:,}",
+            ", ".join(f"{z:+.1f}" for z in _z_against_mujoco(c, run.rest)),
+            f"{c.n / run.seconds:,.0f}",
+            f"{c.ratio(run):,.0f}",
+        )
+        for run in c.endings
+    )
     theirs_rate = c.n / c.mujoco_seconds
+    contact_text = (
+        ""
+        if contact is None
+        else (
+            " The same tosses also end in coinflight's experimental 3-D contact phase "
+            '(Surface(ending="contact"): rolling, sliding, pivoting and rocking on the rim, a '
+            "compliant contact, coinflight.core.contact_phase) with rolling resistance ℓ_r = "
+            f"{contact.rolling_resistance:g} m and pivoting resistance ℓ_p = "
+            f"{contact.pivoting_resistance:g} m: MuJoCo's rolling and torsional friction "
+            "coefficients. Both engines bound those torques by a length times the normal force, "
+            "so the lengths carry over one to one; coinflight adds the Coulomb friction spread "
+            "over its contact arc to the pivoting torque (MuJoCo gets it from its several contact "
+            "points), MuJoCo's pyramidal cone lets sliding and torsion share one budget, and "
+            "MuJoCo's friction creeps as a soft constraint (coinflight.studies.mujoco_compare)."
+        )
+    )
     return (
         head,
         Paragraph(
@@ -434,26 +499,35 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
             f"{s['timestep']:g} s, contact solref = ({s['solref'][0]:g} s, damping ratio "
             f"{s['solref'][1]:.3f}: calibrated so that a flat drop at the landing speed rebounds "
             f"at {s['flat_drop_restitution']:.3f}), friction (sliding, torsional, rolling) = "
-            f"{tuple(s['friction'])}, {s['threads']} threads; a toss ends when it can no longer "
+            f"{tuple(s['friction'])} with condim {s.get('condim', 3)} (MuJoCo ignores the "
+            f"torsional and rolling coefficients below 4 and 6), {s.get('cone', 'pyramidal')} "
+            f"friction cone, {s['threads']} threads; a toss ends when it can no longer "
             f"change face (at rest, or in a face's well with less energy than the corner) or "
             f"after {s['settle_limit']:g} s past its first contact "
             f"({c.mujoco_unsettled:,} tosses, most rolling on their edge, were cut there and "
             "counted by the face they showed). No axial spin: MuJoCo's Euler integrator drifts "
             "in the precession phase over a 0.8 m fall (RK4 does not, at four times the cost)."
+            + contact_text
         ),
         Table(
             ("engine, moment", *names),
-            (
-                row("coinflight, first contact", c.ours_first),
-                row("MuJoCo, first contact", c.mujoco_first),
-                row("coinflight, at rest", c.ours_rest),
-                row("MuJoCo, at rest", c.mujoco_rest),
-                row(
-                    f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
-                    c.mujoco_rest[~c.mujoco_moving],
-                ),
-            ),
+            tuple(rows),
             caption="Fractions of the tosses (± s.e.)",
+        ),
+        Table(
+            (
+                "coinflight ending",
+                "same face at rest as MuJoCo",
+                "unsettled",
+                "at rest − MuJoCo, in s.e. (tails, heads, edge)",
+                "tosses/s",
+                "speed ratio to MuJoCo",
+            ),
+            agreement,
+            caption=(
+                f"Against MuJoCo ({theirs_rate:,.2f} tosses/s, {c.mujoco_unsettled:,} cut at "
+                "the settle limit); same tosses, same machine, one run"
+            ),
         ),
         Bullets(
             (
@@ -462,22 +536,29 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "boundary).",
                 f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
                 "their edge when cut; the settled-only row leaves them out.",
-                f"Same face at rest: {c.rest_agreement:.1%}. After several bounces the face at "
-                "rest depends on every detail of each impact, so two contact models agree on "
-                "single tosses little more than chance; the comparison is of the fractions.",
-                f"Speed, same tosses, same machine, one run: coinflight {ours_rate:,.0f} "
-                f"tosses/s, MuJoCo {theirs_rate:,.2f} tosses/s: a ratio of "
-                f"{c.speed_ratio:,.0f}.",
+                "Same face at rest: after several bounces the face at rest depends on every "
+                "detail of each impact, so two contact models agree on single tosses little "
+                "more than chance; the comparison is of the fractions.",
                 "Why the fractions at rest may differ: MuJoCo's contact is soft (a "
                 "spring-damper whose rebound depends on the impact speed and that lets the rim "
-                "sink fractions of a millimetre), its friction cone has torsional and rolling "
-                "resistance, and a coin rolling on its edge keeps rolling for seconds (Euler's "
-                "disk) before it falls flat; coinflight's impacts are instantaneous with one "
-                "restitution and one friction, and its contact phase (being rewritten) has no "
-                "rolling or pivoting resistance.",
+                "sink fractions of a millimetre, so an impact lasts milliseconds and friction "
+                "acts throughout it), its friction creeps, and every contact of a landing is "
+                "the same law from the first impact on; coinflight's impacts are instantaneous "
+                "with one restitution and one friction, and only its last phase differs between "
+                "the endings: the rocking ending hands the coin to a planar rocking block that "
+                "discards spin and precession; the contact ending keeps them and resists "
+                "rolling and pivoting as MuJoCo does. Agreement of the contact ending's "
+                "fractions with MuJoCo's, where the rocking ending's differ, would point at the "
+                "hand-off; a difference both endings share points at the impacts.",
+                "Edges: a coin rolling on its rim stays up while its spin lasts (Euler's disk); "
+                "both engines give the nickel's rim sharp corners, hence a static edge well "
+                "arctan(h/d) = 5.3° wide, which holds a coin that stops rolling upright. Neither "
+                "engine's edge rate is a prediction: it moves with the rolling and pivoting "
+                "resistance and the corner radius, none measured for a coin "
+                "(coinflight.core.contact_phase).",
             )
         ),
-        Image("mujoco.png", "The same tosses in coinflight and MuJoCo."),
+        Image("mujoco.png", "The same tosses in coinflight (both endings) and MuJoCo."),
     )
 
 
