@@ -23,6 +23,8 @@ from coinflight.studies.edge import edge_table
 SEED = 11
 TINY = report.Sizes(
     dead=300,
+    bouncing=200,
+    bouncing_cells=2,
     map_tosses=200,
     map_restitution=2,
     map_friction=2,
@@ -89,6 +91,25 @@ def test_the_numbers_are_the_librarys(written):
         assert band["integrated"] == mc.p_edge
         cells = np.array(band["p_edge_cells"])
         assert band["low"] == cells.min() and band["high"] == cells.max()
+    # Bouncing edges: simulate_edge on the same tosses (part 4) with each cell's e and μ.
+    from coinflight.studies.edge import simulate_edge
+
+    bouncing = numbers["bouncing_edges"]
+    assert (bouncing["restitution"][0], bouncing["restitution"][-1]) == (0.3, 0.6)
+    assert (bouncing["friction"][0], bouncing["friction"][-1]) == (0.05, 0.6)  # presets' union
+    child = streams.child(streams.seed_sequence(SEED), 4)
+    rows = simulate_edge(
+        list(study.RATIOS),
+        TINY.bouncing,
+        child,
+        restitution=bouncing["restitution"][1],
+        friction=bouncing["friction"][0],
+    )
+    cells = np.array(bouncing["p_edge_cells"])
+    assert cells[:, 0, 1].tolist() == [s.p for _, s in rows]
+    assert bouncing["low"] == cells.min(axis=(1, 2)).tolist()
+    assert bouncing["high"] == cells.max(axis=(1, 2)).tolist()
+    assert "only the abstract could be read" in bouncing["hernandez_navarro_pinero"]
     # The text quotes the computed numbers, not others.
     md = (out / "report.md").read_text()
     first = numbers["dead_landings"][0]
@@ -111,6 +132,8 @@ def test_the_report_is_whole_or_nothing(tmp_path, monkeypatch):
     monkeypatch.setattr(style, "save_figure", first_then_fail)
     sizes = report.Sizes(
         dead=50,
+        bouncing=20,
+        bouncing_cells=2,
         map_tosses=20,
         map_restitution=2,
         map_friction=2,

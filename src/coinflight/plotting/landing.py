@@ -22,12 +22,55 @@ from coinflight.studies.landing import (
     DROP_HEIGHT,
     MURRAY_TEARE,
     Band,
+    BouncingEdges,
     ContactMaps,
+    DeadLanding,
     MujocoComparison,
 )
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+
+
+def plot_dead_and_bouncing(
+    dead: Sequence[DeadLanding], bouncing: BouncingEdges | None = None
+) -> Figure:
+    """Yong & Mahadevan's models with the simulated dead landings
+    (:func:`coinflight.plotting.edge.plot_edge`) and, when given, the same tosses bouncing:
+    at each ratio a bar from the lowest to the highest (e, μ) cell, ±2 s.e. at its ends."""
+    from coinflight.plotting.edge import plot_edge
+
+    fig = plot_edge([(d.ratio, d.simulated) for d in dead])
+    if bouncing is None:
+        return fig
+    ax = fig.axes[0]
+    for k, ratio in enumerate(bouncing.ratios):
+        (lo, lo_se), (hi, hi_se) = bouncing.low(k), bouncing.high(k)
+        ax.plot(
+            [ratio + 0.012] * 2,
+            [max(lo - 2 * lo_se, 0.0), hi + 2 * hi_se],
+            color=EDGE_COLOR,
+            linewidth=3,
+            alpha=0.7,
+            solid_capstyle="butt",
+            label=(
+                f"bouncing, e {bouncing.restitution[0]:g}–{bouncing.restitution[-1]:g}, "
+                f"μ {bouncing.friction[0]:g}–{bouncing.friction[-1]:g} (lowest to highest "
+                f"cell ±2 s.e., {bouncing.n:,} tosses a cell)"
+                if k == 0
+                else None
+            ),
+        )
+    legend = ax.get_legend()  # plot_edge's, titled with what was simulated
+    title = legend.get_title().get_text() if legend is not None else ""
+    ax.legend(
+        loc="lower right",
+        fontsize="x-small",
+        title=title or None,
+        title_fontsize="xx-small",
+        alignment="left",
+    )
+    return fig
 
 
 def plot_contact_maps(maps: ContactMaps, coin_name: str = "US nickel") -> Figure:
@@ -165,19 +208,21 @@ def plot_mujoco(c: MujocoComparison) -> Figure:
         ax.set_xticklabels(names)
         ax.set_title(title, fontsize="medium")
         ax.legend(fontsize="x-small")
+    top = max(float(np.max(c.fractions(f))) for _, series in panels for f, _, _ in series)
+    axes[0].set_ylim(0.0, 1.3 * top + 0.02)  # shared: room for the legends above the bars
     axes[0].set_ylabel("fraction of tosses (±2 s.e.)")
     resist = (
         ""
         if c.contact is None
-        else f"; contact ending ℓ_r = {c.contact.rolling_resistance:g} m, ℓ_p = "
+        else f"\ncontact ending ℓ_r = {c.contact.rolling_resistance:g} m, ℓ_p = "
         f"{c.contact.pivoting_resistance:g} m (MuJoCo's rolling, torsional friction)"
     )
     fig.suptitle(
         f"{c.n:,} identical tosses (seed {c.seed}), e = {c.restitution:g}, μ = "
-        f"{c.friction:g}{resist}; bars left to right as in the legends",
+        f"{c.friction:g}; bars left to right as in the legends{resist}",
         fontsize="small",
     )
     return fig
 
 
-__all__ = ["plot_contact_maps", "plot_mujoco", "plot_nickel_band"]
+__all__ = ["plot_contact_maps", "plot_dead_and_bouncing", "plot_mujoco", "plot_nickel_band"]

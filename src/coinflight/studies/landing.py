@@ -1,9 +1,14 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Four questions (issue 11), each a function returning plain values with their seeds:
+Five questions (issue 11), each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
+* :func:`bouncing_edges`: the same tosses bouncing (e and μ over the surface presets' ranges),
+  P(edge) per ratio as a band beside the dead landings and the models. Hernández-Navarro &
+  Piñero (2021, arXiv:2103.10927) derive P(edge) of a partially inelastic bouncing coin in
+  closed form; only their abstract could be read for this project, so their curve is not
+  drawn (see the report's words on what it predicts and whether ours agrees);
 * :func:`contact_maps`: P(same side at rest) and P(edge) over a grid of restitution e and
   friction μ, the same tosses in every cell (common random numbers: the maps show the effect
   of e and μ, not noise);
@@ -65,7 +70,7 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO = 0, 1, 2, 3
+_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING = 0, 1, 2, 3, 4
 
 
 def map_tosses(coin: Coin | None = None) -> TossDistribution:
@@ -145,6 +150,73 @@ def dead_landings(
         )
         for r in rows
     ]
+
+
+# --- bouncing edges ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class BouncingEdges:
+    """Simulated P(edge) of the dead-landing tosses when they bounce, over a grid of e and μ.
+
+    ``edge`` has shape (len(ratios), len(friction), len(restitution)); ``n`` tosses per ratio,
+    the same tosses in every cell (one seed child for all cells).
+    """
+
+    ratios: tuple[float, ...]
+    restitution: NDArray[np.float64]
+    friction: NDArray[np.float64]
+    edge: NDArray[np.float64]
+    n: int
+    seed: int
+
+    def low(self, k: int) -> tuple[float, float]:
+        """(P, s.e.) of ratio ``k``'s lowest cell."""
+        p = float(self.edge[k].min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    def high(self, k: int) -> tuple[float, float]:
+        """(P, s.e.) of ratio ``k``'s highest cell."""
+        p = float(self.edge[k].max())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+
+def bouncing_box() -> tuple[tuple[float, float], tuple[float, float]]:
+    """((e_low, e_high), (μ_low, μ_high)): the union of the surface presets' boxes
+    (:data:`coinflight.studies.presets.SURFACE_PRESETS`)."""
+    from coinflight.studies.presets import SURFACE_PRESETS
+
+    presets = list(SURFACE_PRESETS.values())
+    e = [b for p in presets for b in p.restitution.bounds]
+    mu = [b for p in presets for b in p.friction.bounds]
+    return (min(e), max(e)), (min(mu), max(mu))
+
+
+def bouncing_edges(
+    n: int, seed: streams.SeedLike, ratios: tuple[float, ...] = RATIOS, cells: int = 2
+) -> BouncingEdges:
+    """P(edge) of ``n`` tosses per ratio in the dead-landing setting
+    (:func:`coinflight.studies.edge.simulate_edge`: vigorous planar spins, table
+    :data:`coinflight.studies.edge.SIM_DROP` below), bouncing with restitution and friction
+    on a ``cells`` × ``cells`` grid over :func:`bouncing_box` (ends included), the same
+    tosses in every cell. Planar tosses: the rocking ending discards no spin or precession."""
+    from coinflight.studies.edge import simulate_edge
+
+    n = v.count("tosses per ratio", n, 1, 10**7)
+    cells = v.count("cells per parameter", cells, 2, 20)
+    _bound(
+        f"bouncing edges: {len(ratios)} ratios × {cells}² cells × {n} tosses",
+        len(ratios) * cells * cells * n,
+    )
+    root = streams.seed_sequence(seed)
+    (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
+    e = np.linspace(e_lo, e_hi, cells)
+    mu = np.linspace(mu_lo, mu_hi, cells)
+    edge = np.empty((len(ratios), cells, cells))
+    child = streams.child(root, _BOUNCING)
+    for i, m in enumerate(mu):
+        for j, r in enumerate(e):
+            rows = simulate_edge(list(ratios), n, child, restitution=float(r), friction=float(m))
+            edge[:, i, j] = [s.p for _, s in rows]
+    return BouncingEdges(tuple(ratios), e, mu, edge, n, streams.reported_seed(root))
 
 
 # --- maps over (e, μ) ---------------------------------------------------------------------------
@@ -489,10 +561,13 @@ __all__ = [
     "MURRAY_TEARE",
     "RATIOS",
     "Band",
+    "BouncingEdges",
     "ContactMaps",
     "DeadLanding",
     "EndingRun",
     "MujocoComparison",
+    "bouncing_box",
+    "bouncing_edges",
     "contact_maps",
     "dead_landings",
     "map_tosses",
