@@ -53,8 +53,9 @@ def landing_report(
     mujoco: MujocoTosses = None,
     quiet: Quiet = False,
 ) -> None:
-    """Validate the table landing: dead landings vs Yong & Mahadevan, maps over (e, μ), the US
-    nickel's P(edge) band, MuJoCo; figures, numbers and a report.
+    """Validate the table landing: dead and bouncing landings vs Yong & Mahadevan, maps over
+    (e, μ), the US nickel's P(edge) band, MuJoCo against both endings; figures, numbers and a
+    report.
 
     Example: coinflight landing-report --out landing/ --quick
     """
@@ -67,7 +68,7 @@ def landing_report(
     if mujoco is not None:
         sizes = dataclasses.replace(sizes, mujoco=mujoco)
     report_files(out)  # before minutes of computing, not after
-    with progress_bar(4, "landing report", quiet) as advance:
+    with progress_bar(5, "landing report", quiet) as advance:
 
         def step(_name: str) -> None:
             if advance is not None:

@@ -636,6 +636,10 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "boundary).",
                 f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
                 "their edge when cut; the settled-only row leaves them out.",
+                f"These fractions are for one restitution and one friction (e = "
+                f"{c.restitution:g}, μ = {c.friction:g}): they compare two engines on identical "
+                "tosses and are not a table result to quote; the table's results are the bands "
+                "above.",
                 "Same face at rest: after several bounces the face at rest depends on every "
                 "detail of each impact, so two contact models agree on single tosses little "
                 "more than chance; the comparison is of the fractions.",
