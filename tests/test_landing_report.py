@@ -110,6 +110,21 @@ def test_the_numbers_are_the_librarys(written):
     assert bouncing["low"] == cells.min(axis=(1, 2)).tolist()
     assert bouncing["high"] == cells.max(axis=(1, 2)).tolist()
     assert "only the abstract could be read" in bouncing["hernandez_navarro_pinero"]
+    # The report's words on bouncing are its table's: ratios whose whole band (±2 s.e.) lies
+    # below the dead-landing model are named as such.
+    n_b = TINY.bouncing
+    below = [
+        f"{r:g}"
+        for r, hi, d in zip(
+            bouncing["ratios"], bouncing["high"], numbers["dead_landings"], strict=True
+        )
+        if hi + 2 * math.sqrt(hi * (1 - hi) / n_b) < d["p_edge_dynamic"]
+    ]
+    md_text = (out / "report.md").read_text()
+    if below:
+        assert f"lowers P(edge) below the dead-landing model at h/d = {', '.join(below)}" in md_text
+    else:
+        assert "lowers P(edge) below" not in md_text
     # The text quotes the computed numbers, not others.
     md = (out / "report.md").read_text()
     first = numbers["dead_landings"][0]

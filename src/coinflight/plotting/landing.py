@@ -63,9 +63,10 @@ def plot_dead_and_bouncing(
         )
     legend = ax.get_legend()  # plot_edge's, titled with what was simulated
     title = legend.get_title().get_text() if legend is not None else ""
-    ax.legend(
-        loc="lower right",
-        fontsize="x-small",
+    ax.set_ylim(0.0, 1.4 * ax.get_ylim()[1])  # room above the curves for the legend
+    ax.legend(  # upper left: the bouncing bars reach into plot_edge's lower right corner
+        loc="upper left",
+        fontsize="xx-small",
         title=title or None,
         title_fontsize="xx-small",
         alignment="left",

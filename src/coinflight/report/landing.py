@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -389,6 +389,21 @@ def _dead_section(dead: list[study.DeadLanding]) -> tuple[Block, ...]:
     )
 
 
+def _bouncing_verdict(rows: Sequence[tuple[str, ...]]) -> str:
+    """The table's last column in words: at which ratios the bouncing band lies below, above or
+    across the dynamic model."""
+    groups = {
+        word: [r[0] for r in rows if r[-1] == word] for word in ("below", "above", "overlaps")
+    }
+    words = {
+        "below": "lowers P(edge) below the dead-landing model at h/d = {}",
+        "above": "raises P(edge) above the dead-landing model at h/d = {}",
+        "overlaps": "leaves it within reach of the model at h/d = {}",
+    }
+    parts = [words[w].format(", ".join(r)) for w, r in groups.items() if r]
+    return "; ".join(parts) + ", over the whole (e, μ) band (the table's last column)."
+
+
 def _bouncing_section(dead: list[study.DeadLanding], b: study.BouncingEdges) -> tuple[Block, ...]:
     by_ratio = {d.ratio: d for d in dead}
     rows = []
@@ -437,15 +452,15 @@ def _bouncing_section(dead: list[study.DeadLanding], b: study.BouncingEdges) -> 
             "form. Only their abstract could be read for this project (arXiv v3 and indexing "
             "pages); their formula, its assumptions and their numbers were not, so their curve "
             "is not drawn and no value of theirs is tested here. What the abstract says: the "
-            "prediction is validated against earlier simulations and experiments, with "
-            "'moderate discrepancies arising at the highly inelastic regime', and it differs "
-            "from earlier approximate models (such as the dead-landing models above). So "
-            "their model is meant for e > 0, where a coin bounces several times and its "
-            "landing states mix, and should not be expected to meet Yong & Mahadevan's "
-            "dead-landing curve at e → 0. Whether ours agrees with theirs can only be said "
-            "once their formula is read; the table above is the comparison to make then: it "
-            "gives coinflight's bouncing P(edge) as a band over the unmeasured e and μ, beside "
-            "the dead landings that follow Yong & Mahadevan."
+            "prediction is validated against earlier simulations and experimental data, with "
+            "'moderate discrepancies arising at the highly inelastic regime', and they "
+            "'describe the differences with previous, approximate models' (which ones, the "
+            "abstract does not say). Our reading, not theirs: a model for the partially "
+            "inelastic toss is meant for e > 0, and need not meet Yong & Mahadevan's "
+            "dead-landing curve as e → 0. In coinflight, bouncing "
+            + _bouncing_verdict(rows)
+            + " Whether that agrees with their model can be said only once their formula is "
+            "read; the table is the comparison to make then."
         ),
     )
 
