@@ -12,6 +12,7 @@ from typer.testing import CliRunner
 
 from _images import assert_nontrivial
 from coinflight.cli import app
+from coinflight.core.outcome import Status
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import TableLanding, land
 from coinflight.probability import monte_carlo, streams
@@ -230,9 +231,14 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
         pivoting_resistance=5e-3,
         ending="contact",
     )
-    np.testing.assert_array_equal(
-        land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted).face, c.contact.rest
-    )
+    out = land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted)
+    np.testing.assert_array_equal(out.face, c.contact.rest)
+    assert c.contact.at_impact == np.count_nonzero(out.status == Status.SETTLED_ENERGY)
+    # MuJoCo's restitution is reported at the probe speeds and at the landing speed.
+    by_speed = dict(c.settings["flat_drop_restitution_by_speed"])
+    assert set(mujoco_compare.PROBE_SPEEDS) < set(by_speed) and len(by_speed) == 4
+    landing = max(by_speed)
+    assert by_speed[landing] == c.settings["flat_drop_restitution"]
     assert [r.ending for r in c.endings] == ["rocking", "contact"]
     assert c.agreement(c.contact) == np.mean(c.contact.rest == c.mujoco_rest)
     assert c.ratio(c.rocking) == c.speed_ratio
@@ -268,6 +274,7 @@ def test_the_report_compares_both_endings_with_mujoco(written):
     p = np.array(contact["rest"])
     np.testing.assert_allclose(contact["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
     assert contact["speed_ratio"] == c.mujoco_seconds / c.contact.seconds
+    assert contact["ended_at_impact"] == c.contact.at_impact
     md = (out / "report.md").read_text()
     assert "coinflight, 3-D contact ending, at rest" in md
     assert f"{c.agreement(c.contact):.1%}" in md

@@ -178,6 +178,7 @@ def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str
         "rest_stderr": c.stderrs(run.rest).tolist(),
         "rest_agreement": c.agreement(run),
         "unsettled": run.unsettled,
+        "ended_at_impact": run.at_impact,
         "seconds": run.seconds,
         "speed_ratio": c.ratio(run),
         "rolling_resistance": run.rolling_resistance if run.ending == "contact" else None,
@@ -587,6 +588,26 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
         for run in c.endings
     )
     theirs_rate = c.n / c.mujoco_seconds
+    by_speed = s.get("flat_drop_restitution_by_speed", [])
+    speeds_text = ", ".join(f"{e:.2f} at {v:g} m/s" for v, e in by_speed)
+    impacts = (
+        ""
+        if contact is None
+        else (
+            f"coinflight's two endings give the same face at rest on "
+            f"{float(np.mean(contact.rest == c.ours_rest)):.1%} of the tosses: "
+            f"{contact.at_impact:,} of the {c.n:,} ({contact.at_impact / c.n:.0%}) are decided "
+            "at an impact, before the contact ending starts, by its rigorous test (the coin's "
+            "whole energy below the barrier of its well: nothing can take it out again), so "
+            "the rolling and pivoting resistance never act on them. A difference from MuJoCo "
+            "that both endings share therefore comes from the impacts and the flights between "
+            "them, not from how the landing ends. There the engines differ: coinflight's "
+            f"impacts are instantaneous and restitute with e = {c.restitution:g} at every "
+            "speed, with friction acting only during the impact; MuJoCo's soft contact lasts "
+            "milliseconds, its friction creeps, and its flat-drop restitution, calibrated at "
+            f"the landing speed, is {speeds_text}."
+        )
+    )
     contact_text = (
         ""
         if contact is None
@@ -658,6 +679,7 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "Same face at rest: after several bounces the face at rest depends on every "
                 "detail of each impact, so two contact models agree on single tosses little "
                 "more than chance; the comparison is of the fractions.",
+                *((impacts,) if impacts else ()),
                 "Why the fractions at rest may differ: MuJoCo's contact is soft (a "
                 "spring-damper whose rebound depends on the impact speed and that lets the rim "
                 "sink fractions of a millimetre, so an impact lasts milliseconds and friction "

@@ -386,6 +386,10 @@ class EndingRun:
     rolling_resistance: float = 0.0
     pivoting_resistance: float = 0.0
     """ℓ_r, ℓ_p (m); used by the contact ending only."""
+    at_impact: int = 0
+    """Tosses ended at an impact by the energy test (status SETTLED_ENERGY), before the
+    ending proper starts: with the contact ending, rigorously (the whole energy below the
+    barrier of the coin's well)."""
 
 
 @dataclass(frozen=True)
@@ -410,11 +414,18 @@ class MujocoComparison:
     mujoco_seconds: float
     settings: dict[str, Any]
     contact: EndingRun | None = None
+    ours_at_impact: int = 0
 
     @property
     def rocking(self) -> EndingRun:
         """The default ending's run (the ``ours_*`` fields) as an :class:`EndingRun`."""
-        return EndingRun("rocking", self.ours_rest, self.ours_unsettled, self.ours_seconds)
+        return EndingRun(
+            "rocking",
+            self.ours_rest,
+            self.ours_unsettled,
+            self.ours_seconds,
+            at_impact=self.ours_at_impact,
+        )
 
     @property
     def endings(self) -> tuple[EndingRun, ...]:
@@ -509,6 +520,7 @@ def mujoco_comparison(
             seconds,
             resisted.rolling_resistance,
             resisted.pivoting_resistance,
+            _at_impact(out.status),
         )
     theirs = mujoco_compare.run(
         dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads
@@ -528,6 +540,7 @@ def mujoco_comparison(
         theirs.elapsed,
         theirs.settings(friction),
         contact_run,
+        _at_impact(ours.status),
     )
 
 
@@ -535,6 +548,12 @@ def _unsettled(status: NDArray[np.int8]) -> int:
     from coinflight.core.outcome import Status
 
     return int(np.count_nonzero(status == Status.UNSETTLED))
+
+
+def _at_impact(status: NDArray[np.int8]) -> int:
+    from coinflight.core.outcome import Status
+
+    return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
 
 
 def _timed_landing(

@@ -58,7 +58,7 @@ from __future__ import annotations
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -97,6 +97,10 @@ REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
 """... and turns slower than this (rad/s) is at rest."""
+PROBE_SPEEDS = (0.1, 0.3, 1.0)
+"""Impact speeds, m/s, at which the calibrated contact's flat-drop restitution is also reported
+(MuJoCo's soft contact restitutes differently at different speeds; coinflight's impacts
+restitute with e at every speed)."""
 CHUNK = 64
 """Tosses per MuJoCo rollout call."""
 TOSSES_PER_SECOND = 4.0
@@ -214,6 +218,9 @@ class MujocoRun:
         MuJoCo's version.
     condim : int
         MuJoCo's contact dimension (:data:`CONDIM`).
+    restitution_by_speed : dict
+        Flat-drop restitution of the calibrated contact at :data:`PROBE_SPEEDS` and at the
+        landing speed ({speed m/s: e}).
     """
 
     first: NDArray[np.int8]
@@ -225,6 +232,7 @@ class MujocoRun:
     threads: int
     version: str
     condim: int = CONDIM
+    restitution_by_speed: dict[float, float] = field(default_factory=dict)
 
     def settings(self, friction: float) -> dict[str, Any]:
         """Every setting of the run, for reports (JSON-ready)."""
@@ -236,6 +244,9 @@ class MujocoRun:
             "flat_drop_restitution": self.restitution,
             "friction": [friction, TORSIONAL, ROLLING],
             "condim": self.condim,
+            "flat_drop_restitution_by_speed": [
+                [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
+            ],
             "cone": CONE,
             "settle_limit": SETTLE,
             "rest_speed": REST_SPEED,
@@ -305,6 +316,10 @@ def run(
         calibrated_damping(coin, restitution, landing_speed, g, condim) if restitution > 0 else 1.0
     )
     e_mujoco = flat_drop_restitution(coin, landing_speed, zeta, g, condim=condim)
+    by_speed = {
+        speed: flat_drop_restitution(coin, speed, zeta, g, condim=condim) for speed in PROBE_SPEEDS
+    }
+    by_speed[landing_speed] = e_mujoco
     m = model(coin, friction, zeta, g, condim=condim)
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
@@ -360,6 +375,7 @@ def run(
         workers,
         mujoco.__version__,
         condim,
+        by_speed,
     )
 
 
