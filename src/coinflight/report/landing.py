@@ -589,7 +589,7 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
     )
     theirs_rate = c.n / c.mujoco_seconds
     by_speed = s.get("flat_drop_restitution_by_speed", [])
-    speeds_text = ", ".join(f"{e:.2f} at {v:g} m/s" for v, e in by_speed)
+    speeds_text = ", ".join(f"{e:.2f} at {v:.2g} m/s" for v, e in by_speed)
     impacts = (
         ""
         if contact is None
