@@ -12,6 +12,7 @@ from typer.testing import CliRunner
 
 from _images import assert_nontrivial
 from coinflight.cli import app
+from coinflight.core.outcome import Status
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import TableLanding, land
 from coinflight.probability import monte_carlo, streams
@@ -23,6 +24,8 @@ from coinflight.studies.edge import edge_table
 SEED = 11
 TINY = report.Sizes(
     dead=300,
+    bouncing=200,
+    bouncing_cells=2,
     map_tosses=200,
     map_restitution=2,
     map_friction=2,
@@ -89,6 +92,40 @@ def test_the_numbers_are_the_librarys(written):
         assert band["integrated"] == mc.p_edge
         cells = np.array(band["p_edge_cells"])
         assert band["low"] == cells.min() and band["high"] == cells.max()
+    # Bouncing edges: simulate_edge on the same tosses (part 4) with each cell's e and μ.
+    from coinflight.studies.edge import simulate_edge
+
+    bouncing = numbers["bouncing_edges"]
+    assert (bouncing["restitution"][0], bouncing["restitution"][-1]) == (0.3, 0.6)
+    assert (bouncing["friction"][0], bouncing["friction"][-1]) == (0.05, 0.6)  # presets' union
+    child = streams.child(streams.seed_sequence(SEED), 4)
+    rows = simulate_edge(
+        list(study.RATIOS),
+        TINY.bouncing,
+        child,
+        restitution=bouncing["restitution"][1],
+        friction=bouncing["friction"][0],
+    )
+    cells = np.array(bouncing["p_edge_cells"])
+    assert cells[:, 0, 1].tolist() == [s.p for _, s in rows]
+    assert bouncing["low"] == cells.min(axis=(1, 2)).tolist()
+    assert bouncing["high"] == cells.max(axis=(1, 2)).tolist()
+    assert "only the abstract could be read" in bouncing["hernandez_navarro_pinero"]
+    # The report's words on bouncing are its table's: ratios whose whole band (±2 s.e.) lies
+    # below the dead-landing model are named as such.
+    n_b = TINY.bouncing
+    below = [
+        f"{r:g}"
+        for r, hi, d in zip(
+            bouncing["ratios"], bouncing["high"], numbers["dead_landings"], strict=True
+        )
+        if hi + 2 * math.sqrt(hi * (1 - hi) / n_b) < d["p_edge_dynamic"]
+    ]
+    md_text = (out / "report.md").read_text()
+    if below:
+        assert f"lowers P(edge) below the dead-landing model at h/d = {', '.join(below)}" in md_text
+    else:
+        assert "lowers P(edge) below" not in md_text
     # The text quotes the computed numbers, not others.
     md = (out / "report.md").read_text()
     first = numbers["dead_landings"][0]
@@ -111,6 +148,8 @@ def test_the_report_is_whole_or_nothing(tmp_path, monkeypatch):
     monkeypatch.setattr(style, "save_figure", first_then_fail)
     sizes = report.Sizes(
         dead=50,
+        bouncing=20,
+        bouncing_cells=2,
         map_tosses=20,
         map_restitution=2,
         map_friction=2,
@@ -178,3 +217,64 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
         land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.ours_rest
     )
     assert c.speed_ratio > 1.0
+    # The 3-D contact ending lands the same tosses with MuJoCo's torsional and rolling friction
+    # as its pivoting and rolling resistance.
+    assert c.contact is not None and c.contact.ending == "contact"
+    assert c.contact.rolling_resistance == mujoco_compare.ROLLING == 1e-4
+    assert c.contact.pivoting_resistance == mujoco_compare.TORSIONAL == 5e-3
+    resisted = Surface(
+        "table",
+        study.DROP_HEIGHT,
+        c.restitution,
+        c.friction,
+        rolling_resistance=1e-4,
+        pivoting_resistance=5e-3,
+        ending="contact",
+    )
+    out = land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted)
+    np.testing.assert_array_equal(out.face, c.contact.rest)
+    assert c.contact.at_impact == np.count_nonzero(out.status == Status.SETTLED_ENERGY)
+    # MuJoCo's restitution is reported at the probe speeds and at the landing speed.
+    by_speed = dict(c.settings["flat_drop_restitution_by_speed"])
+    assert set(mujoco_compare.PROBE_SPEEDS) < set(by_speed) and len(by_speed) == 4
+    landing = max(by_speed)
+    assert by_speed[landing] == c.settings["flat_drop_restitution"]
+    assert [r.ending for r in c.endings] == ["rocking", "contact"]
+    assert c.agreement(c.contact) == np.mean(c.contact.rest == c.mujoco_rest)
+    assert c.ratio(c.rocking) == c.speed_ratio
+    assert c.settings["condim"] == 6 and c.settings["friction"][1:] == [5e-3, 1e-4]
+
+
+def test_mujoco_contacts_carry_torsional_and_rolling_friction():
+    # MuJoCo ignores its torsional and rolling coefficients below condim 4 and 6 (its default
+    # is 3): the comparison's model must use 6, and its contacts must have 6 dimensions.
+    coin = study.mujoco_tosses().coin
+    m = mujoco_compare.model(coin, 0.3, 0.5)
+    assert list(m.geom_condim) == [6, 6]
+    np.testing.assert_array_equal(m.geom_friction[1], [0.3, 5e-3, 1e-4])
+    d = mujoco.MjData(m)
+    d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 - 1e-5)  # resting flat, just touching
+    mujoco.mj_forward(m, d)
+    assert d.ncon > 0 and all(d.contact[i].dim == 6 for i in range(d.ncon))
+    with pytest.raises(ValueError, match="MuJoCo condim must be 1, 3, 4 or 6, got 5"):
+        mujoco_compare.model(coin, 0.3, 0.5, condim=5)
+
+
+def test_the_report_compares_both_endings_with_mujoco(written):
+    out, r = written
+    if r.mujoco is None:
+        pytest.skip("MuJoCo not run")
+    numbers = json.loads((out / "numbers.json").read_text())["mujoco"]
+    rocking, contact = numbers["endings"]
+    assert (rocking["ending"], contact["ending"]) == ("rocking", "contact")
+    assert contact["rolling_resistance"] == 1e-4 and contact["pivoting_resistance"] == 5e-3
+    assert rocking["rest"] == numbers["coinflight_rest"]
+    c = r.mujoco
+    assert contact["rest"] == c.fractions(c.contact.rest).tolist()
+    p = np.array(contact["rest"])
+    np.testing.assert_allclose(contact["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
+    assert contact["speed_ratio"] == c.mujoco_seconds / c.contact.seconds
+    assert contact["ended_at_impact"] == c.contact.at_impact
+    md = (out / "report.md").read_text()
+    assert "coinflight, 3-D contact ending, at rest" in md
+    assert f"{c.agreement(c.contact):.1%}" in md

@@ -49,5 +49,6 @@ fig = plot_edge(simulated)
 
 # %%
 # On a hard table a coin also bounces, and bouncing changes the answer (see
-# :doc:`plot_06_table_landing`): Murray & Teare's extrapolation for a US nickel is about one
-# edge in 6,000 tosses.
+# :doc:`plot_06_table_landing`): Murray & Teare's extrapolation from their model for a US
+# nickel is about one edge in 6,000 tosses; coinflight's answer depends on the unmeasured
+# restitution and friction, so it is a band over them (``coinflight landing-report``).

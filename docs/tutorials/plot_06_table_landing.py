@@ -13,7 +13,8 @@ band over plausible e and μ. This tutorial computes that band.
 # One toss onto a table
 # ---------------------
 # A :class:`~coinflight.outcomes.table.Landing` flies the coin exactly (torque-free precession plus
-# ballistics), finds each contact by root finding, applies a Newton-Coulomb impulse and
+# ballistics), finds each contact by root finding, resolves each impact with Stronge's law
+# (friction and the normal impulse together over the impact, energetic restitution) and
 # stops when the coin has settled: heads, tails or edge.
 from coinflight import Coin, Landing, Surface, Toss
 

@@ -53,8 +53,9 @@ def landing_report(
     mujoco: MujocoTosses = None,
     quiet: Quiet = False,
 ) -> None:
-    """Validate the table landing: dead landings vs Yong & Mahadevan, maps over (e, μ), the US
-    nickel's P(edge) band, MuJoCo; figures, numbers and a report.
+    """Validate the table landing: dead and bouncing landings vs Yong & Mahadevan, maps over
+    (e, μ), the US nickel's P(edge) band, MuJoCo against both endings; figures, numbers and a
+    report.
 
     Example: coinflight landing-report --out landing/ --quick
     """
@@ -67,7 +68,7 @@ def landing_report(
     if mujoco is not None:
         sizes = dataclasses.replace(sizes, mujoco=mujoco)
     report_files(out)  # before minutes of computing, not after
-    with progress_bar(4, "landing report", quiet) as advance:
+    with progress_bar(5, "landing report", quiet) as advance:
 
         def step(_name: str) -> None:
             if advance is not None:
@@ -93,7 +94,18 @@ def landing_report(
         c = report.mujoco
         typer.echo(
             f"MuJoCo, {c.n:,} identical tosses: same well at first contact {c.first_agreement:.1%}"
-            f", same face at rest {c.rest_agreement:.1%}; coinflight {c.speed_ratio:,.0f}× faster"
+        )
+        for run in c.endings:
+            p, se = c.fractions(run.rest), c.stderrs(run.rest)
+            typer.echo(
+                f"  {run.ending} ending: same face at rest {c.agreement(run):.1%}; tails, heads, "
+                f"edge {', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}; "
+                f"{c.ratio(run):,.0f}× MuJoCo's speed"
+            )
+        p, se = c.fractions(c.mujoco_rest), c.stderrs(c.mujoco_rest)
+        typer.echo(
+            f"  MuJoCo: tails, heads, edge "
+            f"{', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}"
         )
 
 

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import NDArray
 
 from coinflight.plotting.style import (
     EDGE_COLOR,
@@ -21,12 +22,56 @@ from coinflight.studies.landing import (
     DROP_HEIGHT,
     MURRAY_TEARE,
     Band,
+    BouncingEdges,
     ContactMaps,
+    DeadLanding,
     MujocoComparison,
 )
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+
+
+def plot_dead_and_bouncing(
+    dead: Sequence[DeadLanding], bouncing: BouncingEdges | None = None
+) -> Figure:
+    """Yong & Mahadevan's models with the simulated dead landings
+    (:func:`coinflight.plotting.edge.plot_edge`) and, when given, the same tosses bouncing:
+    at each ratio a bar from the lowest to the highest (e, μ) cell, ±2 s.e. at its ends."""
+    from coinflight.plotting.edge import plot_edge
+
+    fig = plot_edge([(d.ratio, d.simulated) for d in dead])
+    if bouncing is None:
+        return fig
+    ax = fig.axes[0]
+    for k, ratio in enumerate(bouncing.ratios):
+        (lo, lo_se), (hi, hi_se) = bouncing.low(k), bouncing.high(k)
+        ax.plot(
+            [ratio + 0.012] * 2,
+            [max(lo - 2 * lo_se, 0.0), hi + 2 * hi_se],
+            color=EDGE_COLOR,
+            linewidth=3,
+            alpha=0.7,
+            solid_capstyle="butt",
+            label=(
+                f"bouncing, e {bouncing.restitution[0]:g}–{bouncing.restitution[-1]:g}, "
+                f"μ {bouncing.friction[0]:g}–{bouncing.friction[-1]:g} (lowest to highest "
+                f"cell ±2 s.e., {bouncing.n:,} tosses a cell)"
+                if k == 0
+                else None
+            ),
+        )
+    legend = ax.get_legend()  # plot_edge's, titled with what was simulated
+    title = legend.get_title().get_text() if legend is not None else ""
+    ax.set_ylim(0.0, 1.4 * ax.get_ylim()[1])  # room above the curves for the legend
+    ax.legend(  # upper left: the bouncing bars reach into plot_edge's lower right corner
+        loc="upper left",
+        fontsize="xx-small",
+        title=title or None,
+        title_fontsize="xx-small",
+        alignment="left",
+    )
+    return fig
 
 
 def plot_contact_maps(maps: ContactMaps, coin_name: str = "US nickel") -> Figure:
@@ -131,47 +176,54 @@ def plot_nickel_band(bands: Sequence[Band]) -> Figure:
 
 def plot_mujoco(c: MujocoComparison) -> Figure:
     """P(tails, heads, edge) of the same tosses in coinflight and MuJoCo, at the first contact
-    and at rest (bars, ±2 s.e.)."""
-    fig = new_figure(figsize=(8.0, 4.2))
+    and at rest (bars, ±2 s.e.); at rest, coinflight with each of its endings (rocking, and
+    the 3-D contact ending when it ran)."""
+    fig = new_figure(figsize=(9.0, 4.2))
     axes = fig.subplots(1, 2, sharey=True)
     names = ("tails", "heads", "edge")
     colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
-    for ax, (title, ours, theirs) in zip(
-        axes,
-        (
-            ("first contact", c.ours_first, c.mujoco_first),
-            ("at rest", c.ours_rest, c.mujoco_rest),
-        ),
-        strict=True,
-    ):
+    Series = list[tuple[NDArray[np.int8], str | None, str]]
+    at_rest: Series = [(c.ours_rest, None, "coinflight, rocking ending")]
+    if c.contact is not None:
+        at_rest.append((c.contact.rest, "..", "coinflight, 3-D contact ending"))
+    at_rest.append((c.mujoco_rest, "//", "MuJoCo"))
+    first: Series = [(c.ours_first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]
+    panels: tuple[tuple[str, Series], ...] = (("first contact", first), ("at rest", at_rest))
+    for ax, (title, series) in zip(axes, panels, strict=True):
         x = np.arange(3)
-        for shift, faces, hatch, label in (
-            (-0.2, ours, None, "coinflight"),
-            (0.2, theirs, "//", "MuJoCo"),
-        ):
+        width = 0.8 / len(series)
+        for k, (faces, hatch, label) in enumerate(series):
             p = c.fractions(faces)
             ax.bar(
-                x + shift,
+                x + (k - (len(series) - 1) / 2) * width,
                 p,
-                width=0.38,
+                width=0.95 * width,
                 color=colours,
                 hatch=hatch,
                 edgecolor="0.2",
-                yerr=2 * np.sqrt(p * (1 - p) / c.n),
+                yerr=2 * c.stderrs(faces),
                 capsize=3,
                 label=label,
             )
         ax.set_xticks(x)
         ax.set_xticklabels(names)
         ax.set_title(title, fontsize="medium")
+        ax.legend(fontsize="x-small")
+    top = max(float(np.max(c.fractions(f))) for _, series in panels for f, _, _ in series)
+    axes[0].set_ylim(0.0, 1.3 * top + 0.02)  # shared: room for the legends above the bars
     axes[0].set_ylabel("fraction of tosses (±2 s.e.)")
-    axes[1].legend(fontsize="small")
+    resist = (
+        ""
+        if c.contact is None
+        else f"\ncontact ending ℓ_r = {c.contact.rolling_resistance:g} m, ℓ_p = "
+        f"{c.contact.pivoting_resistance:g} m (MuJoCo's rolling, torsional friction)"
+    )
     fig.suptitle(
         f"{c.n:,} identical tosses (seed {c.seed}), e = {c.restitution:g}, μ = "
-        f"{c.friction:g}: coinflight left, MuJoCo right (hatched)",
-        fontsize="medium",
+        f"{c.friction:g}; bars left to right as in the legends{resist}",
+        fontsize="small",
     )
     return fig
 
 
-__all__ = ["plot_contact_maps", "plot_mujoco", "plot_nickel_band"]
+__all__ = ["plot_contact_maps", "plot_dead_and_bouncing", "plot_mujoco", "plot_nickel_band"]

@@ -1,9 +1,14 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Four questions (issue 11), each a function returning plain values with their seeds:
+Five questions (issue 11), each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
+* :func:`bouncing_edges`: the same tosses bouncing (e and μ over the surface presets' ranges),
+  P(edge) per ratio as a band beside the dead landings and the models. Hernández-Navarro &
+  Piñero (2021, arXiv:2103.10927) derive P(edge) of a partially inelastic bouncing coin in
+  closed form; only their abstract could be read for this project, so their curve is not
+  drawn (see the report's words on what it predicts and whether ours agrees);
 * :func:`contact_maps`: P(same side at rest) and P(edge) over a grid of restitution e and
   friction μ, the same tosses in every cell (common random numbers: the maps show the effect
   of e and μ, not noise);
@@ -13,7 +18,14 @@ Four questions (issue 11), each a function returning plain values with their see
   by toss) — a band, not a point, beside Murray & Teare's extrapolated 1 in 6000;
 * :func:`mujoco_comparison`: identical tosses in coinflight and in MuJoCo
   (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
-  of each.
+  of each; coinflight's at-rest faces with both of its endings (the planar rocking hand-off and
+  the experimental 3-D contact phase with MuJoCo's rolling and torsional friction as its
+  rolling and pivoting resistance).
+
+These are validation runs, not predictions: every table number they give depends on the
+restitution and friction (and, for the contact ending, on the rolling and pivoting resistance
+and the rim's corner radius), none measured for a coin. A number quoted from here goes with
+its band over those parameters (:func:`contact_maps`, :func:`nickel_band`).
 
 Nothing here is a hard-coded result: re-running after a change of the contact physics gives
 the new numbers. Every random draw comes from the seed through
@@ -58,7 +70,7 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO = 0, 1, 2, 3
+_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING = 0, 1, 2, 3, 4
 
 
 def map_tosses(coin: Coin | None = None) -> TossDistribution:
@@ -138,6 +150,73 @@ def dead_landings(
         )
         for r in rows
     ]
+
+
+# --- bouncing edges ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class BouncingEdges:
+    """Simulated P(edge) of the dead-landing tosses when they bounce, over a grid of e and μ.
+
+    ``edge`` has shape (len(ratios), len(friction), len(restitution)); ``n`` tosses per ratio,
+    the same tosses in every cell (one seed child for all cells).
+    """
+
+    ratios: tuple[float, ...]
+    restitution: NDArray[np.float64]
+    friction: NDArray[np.float64]
+    edge: NDArray[np.float64]
+    n: int
+    seed: int
+
+    def low(self, k: int) -> tuple[float, float]:
+        """(P, s.e.) of ratio ``k``'s lowest cell."""
+        p = float(self.edge[k].min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    def high(self, k: int) -> tuple[float, float]:
+        """(P, s.e.) of ratio ``k``'s highest cell."""
+        p = float(self.edge[k].max())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+
+def bouncing_box() -> tuple[tuple[float, float], tuple[float, float]]:
+    """((e_low, e_high), (μ_low, μ_high)): the union of the surface presets' boxes
+    (:data:`coinflight.studies.presets.SURFACE_PRESETS`)."""
+    from coinflight.studies.presets import SURFACE_PRESETS
+
+    presets = list(SURFACE_PRESETS.values())
+    e = [b for p in presets for b in p.restitution.bounds]
+    mu = [b for p in presets for b in p.friction.bounds]
+    return (min(e), max(e)), (min(mu), max(mu))
+
+
+def bouncing_edges(
+    n: int, seed: streams.SeedLike, ratios: tuple[float, ...] = RATIOS, cells: int = 2
+) -> BouncingEdges:
+    """P(edge) of ``n`` tosses per ratio in the dead-landing setting
+    (:func:`coinflight.studies.edge.simulate_edge`: vigorous planar spins, table
+    :data:`coinflight.studies.edge.SIM_DROP` below), bouncing with restitution and friction
+    on a ``cells`` × ``cells`` grid over :func:`bouncing_box` (ends included), the same
+    tosses in every cell. Planar tosses: the rocking ending discards no spin or precession."""
+    from coinflight.studies.edge import simulate_edge
+
+    n = v.count("tosses per ratio", n, 1, 10**7)
+    cells = v.count("cells per parameter", cells, 2, 20)
+    _bound(
+        f"bouncing edges: {len(ratios)} ratios × {cells}² cells × {n} tosses",
+        len(ratios) * cells * cells * n,
+    )
+    root = streams.seed_sequence(seed)
+    (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
+    e = np.linspace(e_lo, e_hi, cells)
+    mu = np.linspace(mu_lo, mu_hi, cells)
+    edge = np.empty((len(ratios), cells, cells))
+    child = streams.child(root, _BOUNCING)
+    for i, m in enumerate(mu):
+        for j, r in enumerate(e):
+            rows = simulate_edge(list(ratios), n, child, restitution=float(r), friction=float(m))
+            edge[:, i, j] = [s.p for _, s in rows]
+    return BouncingEdges(tuple(ratios), e, mu, edge, n, streams.reported_seed(root))
 
 
 # --- maps over (e, μ) ---------------------------------------------------------------------------
@@ -294,8 +373,32 @@ def nickel_band(n: int, seed: streams.SeedLike, cells: int = 3) -> list[Band]:
 
 # --- MuJoCo --------------------------------------------------------------------------------------
 @dataclass(frozen=True)
+class EndingRun:
+    """coinflight's faces at rest of the compared tosses with one ending of the landing."""
+
+    ending: str
+    """``"rocking"`` or ``"contact"`` (:class:`~coinflight.model.surface.Surface` ``ending``)."""
+    rest: NDArray[np.int8]
+    unsettled: int
+    """Tosses that had not settled when the simulation stopped (counted by their well)."""
+    seconds: float
+    """Wall time of the landings (compiled before timing), s."""
+    rolling_resistance: float = 0.0
+    pivoting_resistance: float = 0.0
+    """ℓ_r, ℓ_p (m); used by the contact ending only."""
+    at_impact: int = 0
+    """Tosses ended at an impact by the energy test (status SETTLED_ENERGY), before the
+    ending proper starts: with the contact ending, rigorously (the whole energy below the
+    barrier of the coin's well)."""
+
+
+@dataclass(frozen=True)
 class MujocoComparison:
-    """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`."""
+    """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`.
+
+    ``ours_*`` are coinflight's default (rocking) ending; ``contact`` the same tosses with the
+    3-D contact ending (None when not run).
+    """
 
     n: int
     seed: int
@@ -310,6 +413,32 @@ class MujocoComparison:
     mujoco_moving: NDArray[np.bool_]
     mujoco_seconds: float
     settings: dict[str, Any]
+    contact: EndingRun | None = None
+    ours_at_impact: int = 0
+
+    @property
+    def rocking(self) -> EndingRun:
+        """The default ending's run (the ``ours_*`` fields) as an :class:`EndingRun`."""
+        return EndingRun(
+            "rocking",
+            self.ours_rest,
+            self.ours_unsettled,
+            self.ours_seconds,
+            at_impact=self.ours_at_impact,
+        )
+
+    @property
+    def endings(self) -> tuple[EndingRun, ...]:
+        """coinflight's runs: rocking, then contact when it ran."""
+        return (self.rocking,) if self.contact is None else (self.rocking, self.contact)
+
+    def agreement(self, run: EndingRun) -> float:
+        """Fraction of tosses with the same face at rest in ``run`` and in MuJoCo."""
+        return float(np.mean(run.rest == self.mujoco_rest))
+
+    def ratio(self, run: EndingRun) -> float:
+        """``run``'s tosses a second over MuJoCo's (same tosses, same machine, one run)."""
+        return self.mujoco_seconds / run.seconds
 
     @property
     def first_agreement(self) -> float:
@@ -335,6 +464,11 @@ class MujocoComparison:
         """(tails, heads, edge) fractions of face codes."""
         return np.bincount(faces, minlength=3) / self.n
 
+    def stderrs(self, faces: NDArray[np.int8]) -> NDArray[np.float64]:
+        """Binomial standard errors of :meth:`fractions`."""
+        p = self.fractions(faces)
+        return np.sqrt(p * (1.0 - p) / self.n)
+
 
 def mujoco_comparison(
     n: int,
@@ -342,12 +476,23 @@ def mujoco_comparison(
     restitution: float = DEFAULT_RESTITUTION,
     friction: float = DEFAULT_FRICTION,
     threads: int | None = None,
+    contact: bool = True,
 ) -> MujocoComparison:
     """``n`` tosses of :func:`mujoco_tosses` on a table :data:`DROP_HEIGHT` below launch, in
     coinflight (:func:`coinflight.outcomes.table.land`) and in MuJoCo
-    (:func:`coinflight.studies.mujoco_compare.run`); ImportError without MuJoCo."""
-    from coinflight.core.outcome import Status
-    from coinflight.outcomes.table import land
+    (:func:`coinflight.studies.mujoco_compare.run`); ImportError without MuJoCo.
+
+    coinflight lands them twice: with its default ending (planar rocking) and, unless
+    ``contact`` is False, with the 3-D contact ending (``Surface(ending="contact")``) whose
+    rolling and pivoting resistances are MuJoCo's rolling and torsional friction coefficients
+    (:data:`~coinflight.studies.mujoco_compare.ROLLING` = 1e-4 m,
+    :data:`~coinflight.studies.mujoco_compare.TORSIONAL` = 5e-3 m). Both are torques bounded
+    by a length times the normal force, so the lengths carry over one to one; what does not
+    (coinflight's Coulomb friction spread over the contact arc, MuJoCo's pyramidal cone and
+    soft, creeping friction, instantaneous against soft impacts) is listed in
+    :mod:`coinflight.studies.mujoco_compare`. MuJoCo runs with contact dimension
+    :data:`~coinflight.studies.mujoco_compare.CONDIM` (6), without which it ignores both.
+    """
     from coinflight.studies import mujoco_compare
 
     n = v.count("MuJoCo tosses", n, 1, 10**6)
@@ -355,11 +500,28 @@ def mujoco_comparison(
     dist = mujoco_tosses()
     omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
     surface = Surface("table", DROP_HEIGHT, restitution, friction)
-    land(dist.coin, omega[:2], v0[:2], 1.0, dist.g, surface)  # compile before timing
-    t0 = time.perf_counter()
-    ours = land(dist.coin, omega, v0, 1.0, dist.g, surface)
-    ours_seconds = time.perf_counter() - t0
-    first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
+    ours, ours_seconds, first = _timed_landing(dist, omega, v0, surface)
+    contact_run = None
+    if contact:
+        resisted = Surface(
+            "table",
+            DROP_HEIGHT,
+            restitution,
+            friction,
+            rolling_resistance=mujoco_compare.ROLLING,
+            pivoting_resistance=mujoco_compare.TORSIONAL,
+            ending="contact",
+        )
+        out, seconds, _ = _timed_landing(dist, omega, v0, resisted)
+        contact_run = EndingRun(
+            "contact",
+            out.face,
+            _unsettled(out.status),
+            seconds,
+            resisted.rolling_resistance,
+            resisted.pivoting_resistance,
+            _at_impact(out.status),
+        )
     theirs = mujoco_compare.run(
         dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads
     )
@@ -370,14 +532,46 @@ def mujoco_comparison(
         friction,
         first,
         ours.face,
-        int(np.count_nonzero(ours.status == Status.UNSETTLED)),
+        _unsettled(ours.status),
         ours_seconds,
         theirs.first,
         theirs.rest,
         theirs.moving,
         theirs.elapsed,
         theirs.settings(friction),
+        contact_run,
+        _at_impact(ours.status),
     )
+
+
+def _unsettled(status: NDArray[np.int8]) -> int:
+    from coinflight.core.outcome import Status
+
+    return int(np.count_nonzero(status == Status.UNSETTLED))
+
+
+def _at_impact(status: NDArray[np.int8]) -> int:
+    from coinflight.core.outcome import Status
+
+    return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
+
+
+def _timed_landing(
+    dist: TossDistribution,
+    omega: NDArray[np.float64],
+    v0: NDArray[np.float64],
+    surface: Surface,
+) -> tuple[Any, float, NDArray[np.int8]]:
+    """(landing outcome, wall seconds of the landings, faces at first contact) of the tosses
+    on ``surface``; compiled on two tosses before the timing."""
+    from coinflight.outcomes.table import land
+
+    land(dist.coin, omega[:2], v0[:2], 1.0, dist.g, surface)  # compile before timing
+    t0 = time.perf_counter()
+    out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
+    seconds = time.perf_counter() - t0
+    first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
+    return out, seconds, first
 
 
 __all__ = [
@@ -386,9 +580,13 @@ __all__ = [
     "MURRAY_TEARE",
     "RATIOS",
     "Band",
+    "BouncingEdges",
     "ContactMaps",
     "DeadLanding",
+    "EndingRun",
     "MujocoComparison",
+    "bouncing_box",
+    "bouncing_edges",
     "contact_maps",
     "dead_landings",
     "map_tosses",

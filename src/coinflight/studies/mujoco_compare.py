@@ -3,10 +3,13 @@
 MuJoCo (optional: ``pip install 'coinflight[mujoco]'``) integrates the coin as a free cylinder
 over a plane with a fixed time step and its soft contact: a spring-damper in constraint space
 with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documentation,
-"Computation", solver parameters ``solref``), an elliptic-or-pyramidal friction cone with
+"Computation", solver parameters ``solref``), a pyramidal friction cone (its default) with
 sliding, torsional and rolling coefficients. coinflight flies the coin exactly between
 impacts and resolves each impact with its restitution and friction
-(:mod:`coinflight.core.bounce`). What is compared:
+(:mod:`coinflight.core.bounce`); the bounces end in one of two ways (``Surface(ending=...)``):
+the planar rocking hand-off (default) or the 3-D compliant contact phase
+(:mod:`coinflight.core.contact_phase`, with rolling and pivoting resistance). What is
+compared:
 
 * the well the coin is in at its **first contact** (geometry and free flight only: the two
   engines must agree but for tosses within a time step of a boundary);
@@ -21,11 +24,33 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
 * damping ratio calibrated by a flat drop so that MuJoCo's normal restitution at the landing
   speed is coinflight's e (:func:`calibrated_damping`: MuJoCo's impedance makes the linear
   oscillator's ζ = −ln e / sqrt(π² + ln² e) rebound faster than e);
-* sliding friction μ as coinflight's; MuJoCo's default torsional (0.005 m) and rolling
-  (0.0001 m) friction, which coinflight's impact law does not have.
+* sliding friction μ as coinflight's, and MuJoCo's default torsional (:data:`TORSIONAL`,
+  0.005 m) and rolling (:data:`ROLLING`, 0.0001 m) friction, switched on by the contact
+  dimension :data:`CONDIM` = 6. MuJoCo's default ``condim`` is 3, with which both
+  coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
+  regular frictional contact", 4 adds torsional friction, 6 adds rolling friction); the
+  comparison of the last session ran with 3.
+
+How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
+the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
+torque by μ_rolling f_n (elliptic cone: f_1² ≥ Σ f_i²/μ_(i−1)²; the pyramidal cone used here
+by default bounds the same torques along its edges), both coefficients "have units of
+length" ("the diameter of the surface contact patch" and "the depth of the local
+deformation within which energy is dissipated"). coinflight's contact phase resists rolling
+with a torque ℓ_r F_n and pivoting with (μ r_t + ℓ_p) F_n, ℓ_r, ℓ_p lengths
+(:mod:`coinflight.core.contact_phase`): the same form, so ℓ_r = μ_rolling = 1e-4 m and
+ℓ_p = μ_torsional = 5e-3 m (:data:`ROLLING`, :data:`TORSIONAL`). The map is one to one in
+the bound only: (i) coinflight adds the Coulomb friction spread over the contact arc, μ r_t,
+which MuJoCo gets from its several contact points of a cylinder on a plane; (ii) MuJoCo's
+cone is pyramidal, so sliding and torsion share one budget along its edges, where
+coinflight bounds them separately; (iii) MuJoCo's friction is a soft constraint that creeps
+at a rate set by ``solref``, coinflight's a regularised Coulomb law (slip speed
+:data:`coinflight.core.contact_phase.SLIP_SPEED`); (iv) coinflight's impacts are
+instantaneous, MuJoCo's are the same soft contact, and only the last phase of coinflight's
+landing has the resistances at all.
 
 The benchmark ``benchmarks/bench_bounce.py`` and the landing report
-(:mod:`coinflight.report.landing`) both call :func:`compare`.
+(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`.
 """
 
 from __future__ import annotations
@@ -33,7 +58,7 @@ from __future__ import annotations
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -50,9 +75,16 @@ TIMECONST = 1e-3
 """MuJoCo's contact time constant (``solref[0]``), s: at least 2 time steps (its stability
 rule) and short enough for a millimetre-thin coin."""
 TORSIONAL = 0.005
+"""MuJoCo's default torsional friction coefficient, m (``friction="μ 0.005 0.0001"``); the
+pivoting resistance ℓ_p of coinflight's contact ending in the comparison (module notes)."""
 ROLLING = 0.0001
-"""MuJoCo's default torsional and rolling friction coefficients (``friction="μ 0.005 0.0001"``),
-m; coinflight has neither."""
+"""MuJoCo's default rolling friction coefficient, m; the rolling resistance ℓ_r of
+coinflight's contact ending in the comparison (module notes)."""
+CONDIM = 6
+"""MuJoCo's contact dimension: 6 = normal, two sliding, torsional and two rolling directions, so
+that :data:`TORSIONAL` and :data:`ROLLING` act (MuJoCo's default, 3, ignores them)."""
+CONE = "pyramidal"
+"""MuJoCo's friction cone (its default)."""
 INTEGRATOR = "Euler"
 """MuJoCo's default integrator (semi-implicit Euler); RK4 costs four times as much per step."""
 WINDOW = 0.1
@@ -60,11 +92,18 @@ WINDOW = 0.1
 whose face can no longer change are set aside (:func:`_settled`)."""
 SETTLE = 2.0
 """Longest simulated time after the first contact, s; tosses still moving then are counted
-by the face they show and reported as unsettled."""
+by the face they show and reported as unsettled. Long enough for the faces: on the landing
+report's 500 tosses (seed 20261123, e = 0.5, μ = 0.3, condim 6), 10 s gave the same face for
+every toss as 2 s; 31 of the 64 coins on edge were still moving at 10 s, the other 33 at rest
+on their edge."""
 REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
 """... and turns slower than this (rad/s) is at rest."""
+PROBE_SPEEDS = (0.1, 0.3, 1.0)
+"""Impact speeds, m/s, at which the calibrated contact's flat-drop restitution is also reported
+(MuJoCo's soft contact restitutes differently at different speeds; coinflight's impacts
+restitute with e at every speed)."""
 CHUNK = 64
 """Tosses per MuJoCo rollout call."""
 TOSSES_PER_SECOND = 4.0
@@ -81,40 +120,57 @@ def available() -> bool:
     return True
 
 
-def _xml(coin: Coin, friction: float, dampratio: float, g: float, integrator: str) -> str:
+def _xml(
+    coin: Coin, friction: float, dampratio: float, g: float, integrator: str, condim: int
+) -> str:
     friction_text = f"{friction} {TORSIONAL} {ROLLING}"
     solref = f"{TIMECONST} {dampratio}"
+    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}"'
     return f"""
     <mujoco>
-      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"/>
+      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
+              cone="{CONE}"/>
       <worldbody>
-        <geom type="plane" size="5 5 0.1" friction="{friction_text}" solref="{solref}"/>
+        <geom type="plane" size="5 5 0.1" {contact}/>
         <body name="coin" pos="0 0 1">
           <freejoint/>
           <geom type="cylinder" size="{coin.radius} {coin.thickness / 2}" mass="{coin.mass}"
-                friction="{friction_text}" solref="{solref}"/>
+                {contact}/>
         </body>
       </worldbody>
     </mujoco>"""
 
 
 def model(
-    coin: Coin, friction: float, dampratio: float, g: float = 9.81, integrator: str = INTEGRATOR
+    coin: Coin,
+    friction: float,
+    dampratio: float,
+    g: float = 9.81,
+    integrator: str = INTEGRATOR,
+    condim: int = CONDIM,
 ) -> Any:
-    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes)."""
+    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes);
+    ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions)."""
     import mujoco
 
-    return mujoco.MjModel.from_xml_string(_xml(coin, friction, dampratio, g, integrator))
+    if condim not in (1, 3, 4, 6):
+        raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {condim!r}")
+    return mujoco.MjModel.from_xml_string(_xml(coin, friction, dampratio, g, integrator, condim))
 
 
 def flat_drop_restitution(
-    coin: Coin, speed: float, dampratio: float, g: float = 9.81, integrator: str = INTEGRATOR
+    coin: Coin,
+    speed: float,
+    dampratio: float,
+    g: float = 9.81,
+    integrator: str = INTEGRATOR,
+    condim: int = CONDIM,
 ) -> float:
     """MuJoCo's normal restitution: the coin dropped flat at ``speed`` (m/s), without spin;
     its largest upward speed after the impact over ``speed``."""
     import mujoco
 
-    m = model(coin, 0.0, dampratio, g, integrator)
+    m = model(coin, 0.0, dampratio, g, integrator, condim)
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
@@ -125,13 +181,15 @@ def flat_drop_restitution(
     return best / speed
 
 
-def calibrated_damping(coin: Coin, restitution: float, speed: float, g: float = 9.81) -> float:
+def calibrated_damping(
+    coin: Coin, restitution: float, speed: float, g: float = 9.81, condim: int = CONDIM
+) -> float:
     """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`) at
     ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach it."""
     from scipy.optimize import brentq
 
     def excess(z: float) -> float:
-        return flat_drop_restitution(coin, speed, z, g) - restitution
+        return flat_drop_restitution(coin, speed, z, g, condim=condim) - restitution
 
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
@@ -161,6 +219,11 @@ class MujocoRun:
     threads : int
     version : str
         MuJoCo's version.
+    condim : int
+        MuJoCo's contact dimension (:data:`CONDIM`).
+    restitution_by_speed : dict
+        Flat-drop restitution of the calibrated contact at :data:`PROBE_SPEEDS` and at the
+        landing speed ({speed m/s: e}).
     """
 
     first: NDArray[np.int8]
@@ -171,6 +234,8 @@ class MujocoRun:
     elapsed: float
     threads: int
     version: str
+    condim: int = CONDIM
+    restitution_by_speed: dict[float, float] = field(default_factory=dict)
 
     def settings(self, friction: float) -> dict[str, Any]:
         """Every setting of the run, for reports (JSON-ready)."""
@@ -181,6 +246,11 @@ class MujocoRun:
             "solref": [TIMECONST, self.dampratio],
             "flat_drop_restitution": self.restitution,
             "friction": [friction, TORSIONAL, ROLLING],
+            "condim": self.condim,
+            "flat_drop_restitution_by_speed": [
+                [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
+            ],
+            "cone": CONE,
             "settle_limit": SETTLE,
             "rest_speed": REST_SPEED,
             "rest_spin": REST_SPIN,
@@ -220,6 +290,7 @@ def run(
     friction: float,
     g: float = 9.81,
     threads: int | None = None,
+    condim: int = CONDIM,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
     above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings.
@@ -244,9 +315,15 @@ def run(
         TOSSES_PER_SECOND,
     )
     landing_speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * g * drop_height)
-    zeta = calibrated_damping(coin, restitution, landing_speed, g) if restitution > 0 else 1.0
-    e_mujoco = flat_drop_restitution(coin, landing_speed, zeta, g)
-    m = model(coin, friction, zeta, g)
+    zeta = (
+        calibrated_damping(coin, restitution, landing_speed, g, condim) if restitution > 0 else 1.0
+    )
+    e_mujoco = flat_drop_restitution(coin, landing_speed, zeta, g, condim=condim)
+    by_speed = {
+        speed: flat_drop_restitution(coin, speed, zeta, g, condim=condim) for speed in PROBE_SPEEDS
+    }
+    by_speed[landing_speed] = e_mujoco
+    m = model(coin, friction, zeta, g, condim=condim)
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
@@ -300,13 +377,19 @@ def run(
         time.perf_counter() - t0,
         workers,
         mujoco.__version__,
+        condim,
+        by_speed,
     )
 
 
 __all__ = [
+    "CONDIM",
+    "CONE",
     "INTEGRATOR",
+    "ROLLING",
     "TIMECONST",
     "TIMESTEP",
+    "TORSIONAL",
     "MujocoRun",
     "available",
     "calibrated_damping",
