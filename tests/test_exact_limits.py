@@ -170,3 +170,17 @@ def test_exact_agrees_with_monte_carlo_on_random_boxes(low, span, c, wz, t1, dt,
     # 4 s.e. of the exact p (plus one toss): fails about one time in 16,000 by chance.
     n = 200_000
     assert abs(exact - mc.p_heads) <= 4 * math.sqrt(exact * (1 - exact) / n) + 1 / n
+
+
+@pytest.mark.parametrize("sd", [5e-324, 1e-310, 1e-300, 1e-12])
+def test_vanishing_normal_flight_time_sd_is_the_fixed_time(sd):
+    # sd → 0: Φ((t − T)/sd) tends to the step at T, so the normal-T closed form must give the
+    # fixed-T indicator. A subnormal sd once overflowed (t − T)/sd and summed inf − inf = nan
+    # (found by the generated command lines: `convergence --flight-time normal:1,4.94e-324`).
+    from coinflight.model.distributions import Normal
+
+    for wx in (60.0, 75.0, 89.0):
+        fixed = _exact(Fixed(wx), Fixed(1.0))
+        with np.errstate(over="raise", invalid="raise"):  # an underflow to 0 is the limit
+            narrow = _exact(Fixed(wx), Normal(1.0, sd))
+        assert narrow == pytest.approx(fixed, abs=1e-12)

@@ -316,9 +316,11 @@ def same_side_normal_time(
         m0 = np.floor((w * t_low - aa) / TWO_PI)
         count = int(np.max(np.ceil((w * t_high + aa) / TWO_PI) - m0)) + 1
         mm = m0[:, None] + np.arange(count)
-        inv = 1.0 / (w[:, None] * sd)
-        hi = (TWO_PI * mm + aa[:, None]) * inv - mean / sd
-        lo = (TWO_PI * mm - aa[:, None]) * inv - mean / sd
+        # (t − mean)/sd at the band ends t = (2πm ± a)/ω: a subnormal sd overflows to ±inf,
+        # the step function that is the limit sd → 0 of Φ, so the overflow is silenced.
+        with np.errstate(over="ignore"):
+            hi = ((TWO_PI * mm + aa[:, None]) / w[:, None] - mean) / sd
+            lo = ((TWO_PI * mm - aa[:, None]) / w[:, None] - mean) / sd
         out[direct] = np.sum(ndtr(hi) - ndtr(lo), axis=-1)
     return out
 

@@ -195,7 +195,8 @@ class Normal(Distribution):
     def cdf(self, x: ArrayLike) -> FloatArray:
         from scipy.special import ndtr
 
-        return np.asarray(ndtr((_u(x) - self.mean) / self.sd), dtype=float)
+        with np.errstate(over="ignore"):  # a subnormal sd: ±inf, the step that is the limit
+            return np.asarray(ndtr((_u(x) - self.mean) / self.sd), dtype=float)
 
     def scaled(self, factor: float) -> Normal:
         return Normal(self.mean * factor, self.sd * factor)
