@@ -361,10 +361,42 @@ _E1, _E3, _E4 = 71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0
 _E5, _E6, _E7 = -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0
 
 
+MODES = ("free", "one rim", "two rims", "face")
+"""What the coin is doing, as :func:`contact_mode` classes it: off the table (a hop), on one
+rim's arc with less than half the rim pressed (rolling, sliding, pivoting or rocking on a rim
+point), on both rims (the edge band, or two points of a coin rocking across its edge), on its
+face (one rim pressed along more than half its circle: lying flat, spinning or sliding)."""
+
+
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
+def contact_mode(y, c):
+    """The index in :data:`MODES` of what the coin in state y = (z, v, n, L) is doing."""
+    n = (y[4], y[5], y[6])
+    s = math.sqrt(max(0.0, 1.0 - n[2] * n[2]))
+    radius = c.radius - c.corner_radius
+    hh = c.half_thickness - c.corner_radius
+    touching = 0
+    face = False
+    for sigma in (-1.0, 1.0):
+        a = c.corner_radius - y[0] - sigma * hh * n[2]
+        b = radius * s
+        if a + b > 0.0:
+            touching += 1
+            if a >= 0.0:  # the arc covers more than half the rim (cos φ* = −a/b ≤ 0)
+                face = True
+    if touching == 0:
+        return 0
+    if touching == 2:
+        return 2
+    return 3 if face else 1
+
+
+@njit(cache=True)
+def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
-    coin has settled, whichever comes first.
+    coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
+    none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
+    steps taken (for the benchmark).
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -444,6 +476,10 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
                 break
             h *= max(0.2, 0.9 * err**-0.2)
         t += h
+        if stats.shape[0] > 0:
+            mode = contact_mode(new, c)
+            stats[mode, 0] += h
+            stats[mode, 1] += 1.0
         # Keep n a unit vector (the exact flow does).
         size = math.sqrt(new[4] * new[4] + new[5] * new[5] + new[6] * new[6])
         for i in range(10):
@@ -504,19 +540,30 @@ def settle(z, v, n, lm, c):
     zeta = c.damping_ratio
     if c.damping_restitution != c.restitution:
         zeta = damping_ratio(c.restitution)
-    t, _, settled = _integrate(y, math.inf, c, stiffness_of(c), zeta, True, MAX_STEPS)
+    t, _, settled = _integrate(
+        y, math.inf, c, stiffness_of(c), zeta, True, MAX_STEPS, np.empty((0, 2))
+    )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
 
 
 def advance(
-    state: np.ndarray, duration: float, c, *, settle_check: bool = False, max_steps: int = MAX_STEPS
+    state: np.ndarray,
+    duration: float,
+    c,
+    *,
+    settle_check: bool = False,
+    max_steps: int = MAX_STEPS,
+    stats: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
-    when the coin has settled (:func:`settle`), whichever comes first."""
+    when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
+    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode."""
     zeta = damping_ratio(c.restitution)
-    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps)
+    if stats is None:
+        stats = np.empty((0, 2))
+    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats)
 
 
 @njit(cache=True)
