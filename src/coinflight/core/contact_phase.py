@@ -391,12 +391,38 @@ def contact_mode(y, c):
     return 3 if face else 1
 
 
+PROBES = (
+    "energy less horizontal translation",
+    "energy less horizontal translation, face wells only",
+    "tumbling energy, face wells only",
+    "tumbling energy",
+)
+"""Candidate endings looser than the rigorous one, for the benchmark (:func:`_probe_test`):
+the mechanical energy without ½ m v_h², or the tumbling energy (without ½ m v_h² and the spin
+about n, (L·n)²/2I3, as :func:`coinflight.core.bounce.tumbling_energy`), below the barrier m g ρ,
+in any well or in a heads/tails well only."""
+
+
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
+def _probe_test(y, c, stiffness, k):
+    """True when the candidate ending ``PROBES[k]`` holds for the state y."""
+    if k in (1, 2) and abs(y[6]) < c.edge_sine:
+        return False
+    e = energy(y, c, stiffness) - 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+    if k >= 2:
+        ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
+        e -= 0.5 * ln * ln / c.i3
+    return e < c.barrier
+
+
+@njit(cache=True)
+def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats, probe=None):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
     coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
     none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
-    steps taken (for the benchmark).
+    steps taken (for the benchmark); ``probe`` (shape (len(PROBES), 3), −1 where not yet)
+    records for each candidate ending of :data:`PROBES` the step and the time at which it first
+    held and the well the coin was in then.
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -422,6 +448,12 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
     t = 0.0
     _derivative(y, k1, c, stiffness, zeta)
     for step in range(max_steps):
+        if probe is not None:
+            for k in range(probe.shape[0]):
+                if probe[k, 0] < 0.0 and _probe_test(y, c, stiffness, k):
+                    probe[k, 0] = step
+                    probe[k, 1] = t
+                    probe[k, 2] = resting_face(y[6], c.edge_sine)
         if settle:
             free, barrier = free_energy(y, c, stiffness)
             if free < barrier:
@@ -502,6 +534,16 @@ def stiffness_of(c):
 
 
 @njit(cache=True)
+def damping_of(c):
+    """ζ of the contact record's restitution: the one :meth:`coinflight.core.contact.Contact.build`
+    solved for, or, for another e (a toss's own, :func:`coinflight.core.bounce.with_surface`),
+    :func:`tabulated_damping_ratio`."""
+    if c.damping_restitution == c.restitution and c.damping_ratio >= 0.0:
+        return c.damping_ratio
+    return tabulated_damping_ratio(c.restitution)
+
+
+@njit(cache=True)
 def settle(z, v, n, lm, c):
     """Carry the coin on in contact until it cannot leave its well: (face, status, time).
 
@@ -537,11 +579,8 @@ def settle(z, v, n, lm, c):
         free, barrier = free_energy(y, c, stiffness_of(c))
         status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
         return resting_face(n[2], c.edge_sine), status, 0.0
-    zeta = c.damping_ratio
-    if c.damping_restitution != c.restitution:
-        zeta = damping_ratio(c.restitution)
     t, _, settled = _integrate(
-        y, math.inf, c, stiffness_of(c), zeta, True, MAX_STEPS, np.empty((0, 2))
+        y, math.inf, c, stiffness_of(c), damping_of(c), True, MAX_STEPS, np.empty((0, 2))
     )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
@@ -555,15 +594,19 @@ def advance(
     settle_check: bool = False,
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
+    probe: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
     when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
-    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode."""
-    zeta = damping_ratio(c.restitution)
+    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode; ``probe``
+    (shape (len(:data:`PROBES`), 3), filled with −1) records when each candidate ending held."""
+    zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
-    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats)
+    return _integrate(
+        state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats, probe
+    )
 
 
 @njit(cache=True)
@@ -631,3 +674,103 @@ def damping_ratio(restitution):
         else:
             hi = mid
     return 0.5 * (lo + hi)
+
+
+ZETA_TABLE_LOWEST = 0.01
+"""Smallest restitution of :data:`_ZETA_TABLE`; below it :func:`damping_ratio` is solved."""
+_ZETA_TABLE = np.array(
+    [
+        4.388888727213681,
+        4.221400079771877,
+        4.059748558767703,
+        3.9037248976689147,
+        3.7531251643587344,
+        3.6077541296044453,
+        3.467421996847416,
+        3.331947858843793,
+        3.2011562187272924,
+        3.074878061945392,
+        2.952950611125499,
+        2.8352170897952442,
+        2.7215263228595985,
+        2.6117318558318106,
+        2.505694525918421,
+        2.403277899752994,
+        2.3043526785002895,
+        2.208792172259913,
+        2.116475880965738,
+        2.0272872100500754,
+        1.9411136638009094,
+        1.8578469086279665,
+        1.7773826158198394,
+        1.6996203103280902,
+        1.6244632254126299,
+        1.5518174888938803,
+        1.4815936742515041,
+        1.4137053144368514,
+        1.3480682581373595,
+        1.2846028350681489,
+        1.223231183087337,
+        1.1638785833208662,
+        1.1064734682500421,
+        1.050946468857298,
+        0.997230792268812,
+        0.9452621254954408,
+        0.8949785430468142,
+        0.8463204183169135,
+        0.7992303386456183,
+        0.7536530239691319,
+        0.7095351128240996,
+        0.6668248754493242,
+        0.6254734975538345,
+        0.5854325148170854,
+        0.5466566742869481,
+        0.5091015618719124,
+        0.4727242467688124,
+        0.43748397440605347,
+        0.40334119515412814,
+        0.3702575342918304,
+        0.33819656480248694,
+        0.3071228995910036,
+        0.27700246765563685,
+        0.24780225880805018,
+        0.21949066103892045,
+        0.19203748075038574,
+        0.1654131027380985,
+        0.13958927327199921,
+        0.11453882483925559,
+        0.09023548053205088,
+        0.06665387894642594,
+        0.04376956430442336,
+        0.02155919153534347,
+        0.0,
+    ]
+)
+"""ζ = :func:`damping_ratio` (e) at 64 restitutions spaced evenly in ln e from
+ln :data:`ZETA_TABLE_LOWEST` to 0 (computed by that function; tests/test_contact_phase.py checks
+nodes and interpolation)."""
+
+
+@njit(cache=True)
+def tabulated_damping_ratio(restitution):
+    """ζ for the restitution e, interpolated (cubic Lagrange in ln e on :data:`_ZETA_TABLE`):
+    the restitution of the returned ζ (:func:`restitution_of`) is e within 1e-6 e, in ~50 ns
+    instead of the ~28 ms of :func:`damping_ratio`'s bisection, which it calls below
+    :data:`ZETA_TABLE_LOWEST`. For tosses each with its own e (:func:`settle`)."""
+    if restitution >= 1.0:
+        return 0.0
+    if restitution < ZETA_TABLE_LOWEST:
+        return damping_ratio(restitution)
+    count = _ZETA_TABLE.shape[0]
+    lowest = math.log(ZETA_TABLE_LOWEST)
+    spacing = -lowest / (count - 1)
+    u = (math.log(restitution) - lowest) / spacing
+    i = min(max(int(u) - 1, 0), count - 4)
+    total = 0.0
+    for j in range(4):
+        weight = 1.0
+        for k in range(4):
+            if k != j:
+                weight *= (u - (i + k)) / (j - k)
+        total += weight * _ZETA_TABLE[i + j]
+    return total
