@@ -105,6 +105,23 @@ def test_tabulated_damping_ratio_restitutes_with_e():
     assert cp.tabulated_damping_ratio(1.0) == 0.0
 
 
+def test_contact_modes_and_their_statistics():
+    # contact_mode: a coin lying flat is on its face, one tilted 0.6 rad on a rim point, one
+    # standing upright on both rims (its edge band), one lifted 1 mm off the table free; the
+    # statistics of advance() add up to its time and steps.
+    c = _contact(NICKEL)
+    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.0, lift=-1e-7), c)] == "face"
+    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.6, lift=-1e-7), c)] == "one rim"
+    assert cp.MODES[cp.contact_mode(_state(NICKEL, math.pi / 2, lift=-1e-7), c)] == "two rims"
+    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.6, lift=1e-3), c)] == "free"
+    y = _state(NICKEL, 0.3, omega_lab=(0.2, 0.1, 30.0), lift=0.002)
+    stats = np.zeros((len(cp.MODES), 2))
+    t, steps, _ = cp.advance(y, 0.2, c, stats=stats)
+    assert stats[:, 0].sum() == pytest.approx(t, rel=1e-12)
+    assert stats[:, 1].sum() == steps
+    assert stats[0, 1] > 0 and stats[1, 1] > 0  # it fell freely, then met the table on a rim
+
+
 @pytest.mark.parametrize("e", [0.1, 0.3, 0.6, 0.9])
 def test_rim_impact_of_a_coin_restitutes_with_e(e):
     # A frictionless coin tilted 0.6 rad hits on its rim at 2 cm/s, without gravity (which
