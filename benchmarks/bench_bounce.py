@@ -4,6 +4,7 @@
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
+    python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -136,7 +137,9 @@ def contact_rates(n: int, repeats: int = 3) -> None:
     rng = np.random.default_rng(7)
     mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
     land(COIN, omega[:20], v0[:20], 1.0, G, contact)  # compile (or load the cache)
-    land(COIN, omega[:20], v0[:20], 1.0, G, contact, contact={k: v[:20] for k, v in mixture.items()})
+    land(
+        COIN, omega[:20], v0[:20], 1.0, G, contact, contact={k: v[:20] for k, v in mixture.items()}
+    )
     rates = {
         "contact ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, contact), n, repeats),
         "rocking ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE), n, repeats),
@@ -247,7 +250,11 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--nickel", action="store_true")
     parser.add_argument("--contact", type=int, default=0, metavar="N")
+    parser.add_argument("--contact-rates", type=int, default=0, metavar="N")
     args = parser.parse_args()
+    if args.contact_rates:
+        contact_rates(args.contact_rates)
+        return
     if args.contact:
         contact_phase(args.contact)
         return

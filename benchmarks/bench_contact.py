@@ -105,14 +105,17 @@ def composition(y: np.ndarray, c: Contact) -> np.ndarray:
     ln = float(n @ lm)
     lperp2 = float(lm @ lm) - ln * ln
     scale = c.barrier - m * c.g * c.half_thickness
-    return np.array(
-        [
-            0.5 * m * (y[1] ** 2 + y[2] ** 2),
-            0.5 * ln * ln / i3,
-            0.5 * lperp2 / i1,
-            0.5 * m * y[3] ** 2 + m * c.g * (y[0] - c.half_thickness),
-        ]
-    ) / scale
+    return (
+        np.array(
+            [
+                0.5 * m * (y[1] ** 2 + y[2] ** 2),
+                0.5 * ln * ln / i3,
+                0.5 * lperp2 / i1,
+                0.5 * m * y[3] ** 2 + m * c.g * (y[0] - c.half_thickness),
+            ]
+        )
+        / scale
+    )
 
 
 def upper95(k: int, n: int) -> float:
@@ -126,6 +129,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=400)
     parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--corner", type=float, default=0.0, help="rim corner radius a, m")
+    parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME, help="t_c, s")
     args = parser.parse_args()
     rng = np.random.default_rng(args.seed)
     n = args.n
@@ -147,7 +152,7 @@ def main() -> None:
     final = np.full(n, -1)
     t0 = time.perf_counter()
     for k in range(n):
-        c = contact(float(e[k]), float(mu[k]))
+        c = contact(float(e[k]), float(mu[k]), args.corner)._replace(contact_time=args.contact_time)
         y, handed[k] = handoff((omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], c)
         if not handed[k]:
             continue
@@ -164,7 +169,8 @@ def main() -> None:
     h = handed
     print(
         f"{n} vigorous nickel tosses, e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), resistances "
-        f"{DEFAULT_ROLLING_RESISTANCE:g} m; {total:.1f} s wall, load {os.getloadavg()}"
+        f"{DEFAULT_ROLLING_RESISTANCE:g} m, corner radius {args.corner:g} m, t_c "
+        f"{args.contact_time:g} s; {total:.1f} s wall, load {os.getloadavg()}"
     )
     print(
         f"handed to the contact phase: {h.mean():.1%} ({h.sum()}); of those settled "
@@ -173,8 +179,9 @@ def main() -> None:
     tt, ss = times[h].sum(axis=1), steps[h].sum(axis=1)
     print(
         f"per handed toss: simulated time median {np.median(tt):.3f} s (quartiles "
-        f"{np.percentile(tt, 25):.3f}-{np.percentile(tt, 75):.3f}), steps median {np.median(ss):,.0f}"
-        f" (quartiles {np.percentile(ss, 25):,.0f}-{np.percentile(ss, 75):,.0f}), mean step "
+        f"{np.percentile(tt, 25):.3f}-{np.percentile(tt, 75):.3f}), steps median "
+        f"{np.median(ss):,.0f} (quartiles {np.percentile(ss, 25):,.0f}-"
+        f"{np.percentile(ss, 75):,.0f}), mean step "
         f"{tt.sum() / ss.sum() * 1e6:.1f} μs"
     )
     for j, name in enumerate(cp.MODES):
@@ -186,7 +193,7 @@ def main() -> None:
         )
     print(
         f"steps a handed toss: mean {ss.mean():,.0f}; the 10 % longest tosses take "
-        f"{np.sort(ss)[-max(1, len(ss) // 10):].sum() / ss.sum():.0%} of all steps; final wells "
+        f"{np.sort(ss)[-max(1, len(ss) // 10) :].sum() / ss.sum():.0%} of all steps; final wells "
         f"(tails, heads, edge) {np.bincount(final[h], minlength=3)}"
     )
     print("candidate endings (checked after each step; disagreement: its well against the end's):")

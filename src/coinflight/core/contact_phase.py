@@ -7,28 +7,53 @@ that motion on until the coin's energy can no longer take it over the barrier be
 and the next one, and says which well that is.
 
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
-planar rocking of :func:`coinflight.core.bounce.rock`). Measured on 2,000 vigorous tosses of a
-US nickel (``python benchmarks/bench_bounce.py --contact N``, e = 0.5, μ = 0.3, the busy 2-core
-machine): landings carried to rest through this phase run at ~300-800 a second, against
-~27,000-90,000 with rocking and ~170,000 to first contact (issue 11 asks for 50,000): after every
-impact the coin's whole energy is compared with the barrier
-(:func:`coinflight.core.bounce.after_impact`), but only 19-34 % of tosses fall below it before
-the bounces die out (e ∈ [0.2, 0.8], μ ∈ [0.1, 0.5]); the other 66-81 % carry energy into this
-phase (median 2.6 barriers at e = 0.5, μ = 0.3, mostly tumbling and horizontal motion) and are
-integrated for a median 0.3-2.3 s. Chattering on with the impact law instead (a lower rest
-speed) decides no more of them.
+planar rocking of :func:`coinflight.core.bounce.rock`). Speed, ``python
+benchmarks/bench_bounce.py --contact-rates 600`` (600 vigorous tosses of a US nickel, medians of
+3, the shared 2-core machine at load 4.4-7.6, 15:35 UTC), this module against the code before
+:func:`tabulated_damping_ratio` in the same minutes: carried to rest through this phase **287**
+landings a second (before 166) on one surface (e = 0.5, μ = 0.3), **171** (before 34) with each
+toss's own e ~ U(0.2, 0.8) and μ ~ U(0.1, 0.6); the rocking ending 29,900 and 22,100 (before
+16,200 and 18,700: the load), first contact ~700,000. Issue 11 asks for 50,000.
 
-Its edge rates are not credible: a US nickel lands on edge in 4-21 % of those tosses (1-43 %
-over e and μ), against Murray & Teare's 1 in 6,000. The dynamics are not the cause: a thin disc
-rolling on its rim falls below the critical spin of a rolling disc, Ω_c² = m g r I1 / (I3 (I3 +
-m r²)) (O'Reilly 1996), and rolls on upright above it (tests/test_contact_phase.py). The rim is:
-modelled as a flat band with sharp corners, it gives a nickel a static edge well arctan(h/2r) =
-5.3° wide, which holds a coin rolling slowly upright until the rolling resistance stops it,
-where a thin disc falls (the same test). Rounded corners (``Contact.build(corner_radius=a)``,
-experimental and core only: the rim circles are those of a cylinder (r − a, h/2 − a) swept by
-a ball of radius a, the edge well arctan((h/2 − a)/(r − a)) wide, none for a = h/2) take the
-edges away, but how fast depends on a and on the resistances, none of them measured for a
-coin (``python benchmarks/bench_bounce.py --contact N`` prints the table).
+Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
+with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
+phase (their whole energy is above the barrier when the bounces die out), bringing a median
+2.5 barriers (m g ρ − m g h/2) above a face at rest: horizontal translation 0.25-0.37, spin
+about n 0.03, tumbling 0.8, vertical motion and height 0.9 (the coin is tilted on its rim).
+A handed toss is integrated for a median 0.30 s of simulated time and ~760 steps (quartiles
+240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs of CPU each: the 10 % longest tosses take 61 %
+of the steps. By what the coin is doing (:func:`contact_mode`): on both rims (upright in its
+edge band: coins rolling in the sharp rim's edge well for up to ~9 s until the rolling
+resistance stops them) 75 % of the simulated time and 67 % of the steps; on one rim point
+(rolling, sliding, rocking) 17 % and 27 %; hops 7 % and 5 %; lying on the face ~0 %, so a
+sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
+contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
+leave the mean steps within 15 % (1,030 handed tosses). Endings looser than the rigorous one
+(:data:`PROBES`) either save little or end tosses in another well than carrying them on:
+the energy less ½ m v_h² saves 5-8 % of the steps and disagrees on 6 of 226 tosses; the
+tumbling energy saves 42-72 % and disagrees on 23-30 of 226-228 (≥ 7 % at 95 %). None is used.
+The 50,000 a second would need this phase ~300-1,000 times cheaper: a decision at the
+hand-off for nearly every toss, or a constrained (rolling/sliding rim) model integrated with
+steps far longer than the compliant contact's ~0.5 ms; neither is here.
+
+Its edge rates are not credible. Of the handed tosses above (1,030 of 1,500, ``python
+benchmarks/bench_contact.py 1500 --corner a --contact-time t_c``), P(edge) is 0.207 with sharp
+corners (t_c 1 ms; 0.181 at 0.5 ms, 0.078 at 4 ms), 0.187 at a corner radius a = 0.2 mm, 0.175
+at 0.5 mm (0.004 at t_c = 4 ms), 0 at 0.95 mm (a rim without a flat band); the rocking ending
+gives ~1/100-1/1,000 and Murray & Teare 1 in 6,000. The edge rate converges as t_c falls (0.5
+and 1 ms differ by 1.5 standard errors of the difference; 4 ms is too soft), so it is the
+model's, not the numerics': any flat band on the rim holds a coin rolling slowly upright. The
+dynamics are not the cause: a thin disc rolling on its rim falls below the critical spin of a
+rolling disc, Ω_c² = m g r I1 / (I3 (I3 + m r²)) (O'Reilly 1996), and rolls on upright above it
+(tests/test_contact_phase.py). The rim is: modelled as a flat band with sharp corners, it gives
+a nickel a static edge well arctan(h/2r) = 5.3° wide, which holds a coin rolling slowly upright
+until the rolling resistance stops it, where a thin disc falls (the same test). Rounded corners
+(``Contact.build(corner_radius=a)``, experimental and core only: the rim circles are those of a
+cylinder (r − a, h/2 − a) swept by a ball of radius a, the edge well arctan((h/2 − a)/(r − a))
+wide, none for a = h/2) narrow the well but leave it until a ≈ h/2, and how fast the edges go
+depends on a and on the resistances, none of them measured for a coin (``python
+benchmarks/bench_bounce.py --contact N`` prints the table). What a real coin has and this
+model lacks (an uneven table, a rim that is not a perfect band) is not known here.
 
 The state is the height z of the centre of mass, its velocity v, the heads normal n and the
 angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not
