@@ -13,7 +13,10 @@ benchmarks/bench_bounce.py --contact-rates 600`` (600 vigorous tosses of a US ni
 :func:`tabulated_damping_ratio` in the same minutes: carried to rest through this phase **287**
 landings a second (before 166) on one surface (e = 0.5, μ = 0.3), **171** (before 34) with each
 toss's own e ~ U(0.2, 0.8) and μ ~ U(0.1, 0.6); the rocking ending 29,900 and 22,100 (before
-16,200 and 18,700: the load), first contact ~700,000. Issue 11 asks for 50,000.
+16,200 and 18,700: the load), first contact ~700,000. A second such run at load 8 (16:08 UTC):
+143 → 224 on one surface (the load again), 26 → 134 with each toss's own e and μ; so with a
+toss's own e the phase now costs what it costs on one surface (60 % of its rate in both runs,
+18-20 % before). Issue 11 asks for 50,000.
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
