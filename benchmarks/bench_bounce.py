@@ -4,6 +4,7 @@
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
+    python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -129,15 +130,27 @@ def nickel_edge(n: int) -> None:
 
 def contact_rates(n: int, repeats: int = 3) -> None:
     """Tosses a second carried to rest with the 3-D contact ending against the rocking ending
-    and first contact, in one run (medians), and where the contact ending decides them."""
+    and first contact, in one run (medians), on one surface (e = 0.5, μ = 0.3) and with each
+    toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); and where the contact ending decides them."""
     omega, v0 = tosses(n)
     contact = Surface("table", DROP, 0.5, 0.3, ending="contact")
+    rng = np.random.default_rng(7)
+    mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
     land(COIN, omega[:20], v0[:20], 1.0, G, contact)  # compile (or load the cache)
+    land(
+        COIN, omega[:20], v0[:20], 1.0, G, contact, contact={k: v[:20] for k, v in mixture.items()}
+    )
     rates = {
         "contact ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, contact), n, repeats),
         "rocking ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE), n, repeats),
         "first contact": median_rate(
             lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats
+        ),
+        "contact ending, each toss its own e, μ": median_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, contact, contact=mixture), n, repeats
+        ),
+        "rocking ending, each toss its own e, μ": median_rate(
+            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, contact=mixture), n, repeats
         ),
     }
     first = rates["first contact"]
@@ -153,6 +166,13 @@ def contact_rates(n: int, repeats: int = 3) -> None:
             f"{share[Status.SETTLED_CONTACT]:.1%}, unsettled {share[Status.UNSETTLED]:.2%}; "
             f"contact phase {np.median(out.settle_time - out.first_contact):.2f} s after the first "
             f"contact (median); {face_fractions(out.face)}"
+        )
+    for name, surface in (("contact", contact), ("rocking", SURFACE)):
+        out = land(COIN, omega, v0, 1.0, G, surface, contact=mixture)
+        same = np.mean(out.face == HEADS)
+        print(
+            f"  {name} ending, each toss its own e, μ: P(same side) {same:.4f} ± "
+            f"{math.sqrt(same * (1 - same) / n):.4f}, {face_fractions(out.face)}"
         )
 
 
@@ -230,7 +250,11 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--nickel", action="store_true")
     parser.add_argument("--contact", type=int, default=0, metavar="N")
+    parser.add_argument("--contact-rates", type=int, default=0, metavar="N")
     args = parser.parse_args()
+    if args.contact_rates:
+        contact_rates(args.contact_rates)
+        return
     if args.contact:
         contact_phase(args.contact)
         return

@@ -7,28 +7,56 @@ that motion on until the coin's energy can no longer take it over the barrier be
 and the next one, and says which well that is.
 
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
-planar rocking of :func:`coinflight.core.bounce.rock`). Measured on 2,000 vigorous tosses of a
-US nickel (``python benchmarks/bench_bounce.py --contact N``, e = 0.5, μ = 0.3, the busy 2-core
-machine): landings carried to rest through this phase run at ~300-800 a second, against
-~27,000-90,000 with rocking and ~170,000 to first contact (issue 11 asks for 50,000): after every
-impact the coin's whole energy is compared with the barrier
-(:func:`coinflight.core.bounce.after_impact`), but only 19-34 % of tosses fall below it before
-the bounces die out (e ∈ [0.2, 0.8], μ ∈ [0.1, 0.5]); the other 66-81 % carry energy into this
-phase (median 2.6 barriers at e = 0.5, μ = 0.3, mostly tumbling and horizontal motion) and are
-integrated for a median 0.3-2.3 s. Chattering on with the impact law instead (a lower rest
-speed) decides no more of them.
+planar rocking of :func:`coinflight.core.bounce.rock`). Speed, ``python
+benchmarks/bench_bounce.py --contact-rates 600`` (600 vigorous tosses of a US nickel, medians of
+3, the shared 2-core machine at load 4.4-7.6, 15:35 UTC), this module against the code before
+:func:`tabulated_damping_ratio` in the same minutes: carried to rest through this phase **287**
+landings a second (before 166) on one surface (e = 0.5, μ = 0.3), **171** (before 34) with each
+toss's own e ~ U(0.2, 0.8) and μ ~ U(0.1, 0.6); the rocking ending 29,900 and 22,100 (before
+16,200 and 18,700: the load), first contact ~700,000. A second such run at load 8 (16:08 UTC):
+143 → 224 on one surface (the load again), 26 → 134 with each toss's own e and μ; so with a
+toss's own e the phase now costs what it costs on one surface (60 % of its rate in both runs,
+18-20 % before). Issue 11 asks for 50,000.
 
-Its edge rates are not credible: a US nickel lands on edge in 4-21 % of those tosses (1-43 %
-over e and μ), against Murray & Teare's 1 in 6,000. The dynamics are not the cause: a thin disc
-rolling on its rim falls below the critical spin of a rolling disc, Ω_c² = m g r I1 / (I3 (I3 +
-m r²)) (O'Reilly 1996), and rolls on upright above it (tests/test_contact_phase.py). The rim is:
-modelled as a flat band with sharp corners, it gives a nickel a static edge well arctan(h/2r) =
-5.3° wide, which holds a coin rolling slowly upright until the rolling resistance stops it,
-where a thin disc falls (the same test). Rounded corners (``Contact.build(corner_radius=a)``,
-experimental and core only: the rim circles are those of a cylinder (r − a, h/2 − a) swept by
-a ball of radius a, the edge well arctan((h/2 − a)/(r − a)) wide, none for a = h/2) take the
-edges away, but how fast depends on a and on the resistances, none of them measured for a
-coin (``python benchmarks/bench_bounce.py --contact N`` prints the table).
+Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
+with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
+phase (their whole energy is above the barrier when the bounces die out), bringing a median
+2.5 barriers (m g ρ − m g h/2) above a face at rest: horizontal translation 0.25-0.37, spin
+about n 0.03, tumbling 0.8, vertical motion and height 0.9 (the coin is tilted on its rim).
+A handed toss is integrated for a median 0.30 s of simulated time and ~760 steps (quartiles
+240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs of CPU each: the 10 % longest tosses take 61 %
+of the steps. By what the coin is doing (:func:`contact_mode`): on both rims (upright in its
+edge band: coins rolling in the sharp rim's edge well for up to ~9 s until the rolling
+resistance stops them) 75 % of the simulated time and 67 % of the steps; on one rim point
+(rolling, sliding, rocking) 17 % and 27 %; hops 7 % and 5 %; lying on the face ~0 %, so a
+sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
+contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
+leave the mean steps within 15 % (1,030 handed tosses). Endings looser than the rigorous one
+(:data:`PROBES`) either save little or end tosses in another well than carrying them on:
+the energy less ½ m v_h² saves 5-8 % of the steps and disagrees on 6 of 226 tosses; the
+tumbling energy saves 42-72 % and disagrees on 23-30 of 226-228 (≥ 7 % at 95 %). None is used.
+The 50,000 a second would need this phase ~300-1,000 times cheaper: a decision at the
+hand-off for nearly every toss, or a constrained (rolling/sliding rim) model integrated with
+steps far longer than the compliant contact's ~0.5 ms; neither is here.
+
+Its edge rates are not credible. Of the handed tosses above (1,030 of 1,500, ``python
+benchmarks/bench_contact.py 1500 --corner a --contact-time t_c``), P(edge) is 0.207 with sharp
+corners (t_c 1 ms; 0.181 at 0.5 ms, 0.078 at 4 ms), 0.187 at a corner radius a = 0.2 mm, 0.175
+at 0.5 mm (0.004 at t_c = 4 ms), 0 at 0.95 mm (a rim without a flat band); the rocking ending
+gives ~1/100-1/1,000 and Murray & Teare 1 in 6,000. The edge rate converges as t_c falls (0.5
+and 1 ms differ by 1.5 standard errors of the difference; 4 ms is too soft), so it is the
+model's, not the numerics': any flat band on the rim holds a coin rolling slowly upright. The
+dynamics are not the cause: a thin disc rolling on its rim falls below the critical spin of a
+rolling disc, Ω_c² = m g r I1 / (I3 (I3 + m r²)) (O'Reilly 1996), and rolls on upright above it
+(tests/test_contact_phase.py). The rim is: modelled as a flat band with sharp corners, it gives
+a nickel a static edge well arctan(h/2r) = 5.3° wide, which holds a coin rolling slowly upright
+until the rolling resistance stops it, where a thin disc falls (the same test). Rounded corners
+(``Contact.build(corner_radius=a)``, experimental and core only: the rim circles are those of a
+cylinder (r − a, h/2 − a) swept by a ball of radius a, the edge well arctan((h/2 − a)/(r − a))
+wide, none for a = h/2) narrow the well but leave it until a ≈ h/2, and how fast the edges go
+depends on a and on the resistances, none of them measured for a coin (``python
+benchmarks/bench_bounce.py --contact N`` prints the table). What a real coin has and this
+model lacks (an uneven table, a rim that is not a perfect band) is not known here.
 
 The state is the height z of the centre of mass, its velocity v, the heads normal n and the
 angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not
@@ -361,10 +389,68 @@ _E1, _E3, _E4 = 71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0
 _E5, _E6, _E7 = -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0
 
 
+MODES = ("free", "one rim", "two rims", "face")
+"""What the coin is doing, as :func:`contact_mode` classes it: off the table (a hop), on one
+rim's arc with less than half the rim pressed (rolling, sliding, pivoting or rocking on a rim
+point), on both rims (the edge band, or two points of a coin rocking across its edge), on its
+face (one rim pressed along more than half its circle: lying flat, spinning or sliding)."""
+
+
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
+def contact_mode(y, c):
+    """The index in :data:`MODES` of what the coin in state y = (z, v, n, L) is doing."""
+    n = (y[4], y[5], y[6])
+    s = math.sqrt(max(0.0, 1.0 - n[2] * n[2]))
+    radius = c.radius - c.corner_radius
+    hh = c.half_thickness - c.corner_radius
+    touching = 0
+    face = False
+    for sigma in (-1.0, 1.0):
+        a = c.corner_radius - y[0] - sigma * hh * n[2]
+        b = radius * s
+        if a + b > 0.0:
+            touching += 1
+            if a >= 0.0:  # the arc covers more than half the rim (cos φ* = −a/b ≤ 0)
+                face = True
+    if touching == 0:
+        return 0
+    if touching == 2:
+        return 2
+    return 3 if face else 1
+
+
+PROBES = (
+    "energy less horizontal translation",
+    "energy less horizontal translation, face wells only",
+    "tumbling energy, face wells only",
+    "tumbling energy",
+)
+"""Candidate endings looser than the rigorous one, for the benchmark (:func:`_probe_test`):
+the mechanical energy without ½ m v_h², or the tumbling energy (without ½ m v_h² and the spin
+about n, (L·n)²/2I3, as :func:`coinflight.core.bounce.tumbling_energy`), below the barrier m g ρ,
+in any well or in a heads/tails well only."""
+
+
+@njit(cache=True)
+def _probe_test(y, c, stiffness, k):
+    """True when the candidate ending ``PROBES[k]`` holds for the state y."""
+    if k in (1, 2) and abs(y[6]) < c.edge_sine:
+        return False
+    e = energy(y, c, stiffness) - 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+    if k >= 2:
+        ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
+        e -= 0.5 * ln * ln / c.i3
+    return e < c.barrier
+
+
+@njit(cache=True)
+def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats, probe=None):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
-    coin has settled, whichever comes first.
+    coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
+    none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
+    steps taken (for the benchmark); ``probe`` (shape (len(PROBES), 3), −1 where not yet)
+    records for each candidate ending of :data:`PROBES` the step and the time at which it first
+    held and the well the coin was in then.
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -390,6 +476,12 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
     t = 0.0
     _derivative(y, k1, c, stiffness, zeta)
     for step in range(max_steps):
+        if probe is not None:
+            for k in range(probe.shape[0]):
+                if probe[k, 0] < 0.0 and _probe_test(y, c, stiffness, k):
+                    probe[k, 0] = step
+                    probe[k, 1] = t
+                    probe[k, 2] = resting_face(y[6], c.edge_sine)
         if settle:
             free, barrier = free_energy(y, c, stiffness)
             if free < barrier:
@@ -444,6 +536,10 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
                 break
             h *= max(0.2, 0.9 * err**-0.2)
         t += h
+        if stats.shape[0] > 0:
+            mode = contact_mode(new, c)
+            stats[mode, 0] += h
+            stats[mode, 1] += 1.0
         # Keep n a unit vector (the exact flow does).
         size = math.sqrt(new[4] * new[4] + new[5] * new[5] + new[6] * new[6])
         for i in range(10):
@@ -463,6 +559,16 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps):
 def stiffness_of(c):
     """κ = π m / (2 t_c²), N/m per radian of rim (module notes)."""
     return math.pi * c.mass / (2.0 * c.contact_time * c.contact_time)
+
+
+@njit(cache=True)
+def damping_of(c):
+    """ζ of the contact record's restitution: the one :meth:`coinflight.core.contact.Contact.build`
+    solved for, or, for another e (a toss's own, :func:`coinflight.core.bounce.with_surface`),
+    :func:`tabulated_damping_ratio`."""
+    if c.damping_restitution == c.restitution and c.damping_ratio >= 0.0:
+        return c.damping_ratio
+    return tabulated_damping_ratio(c.restitution)
 
 
 @njit(cache=True)
@@ -501,22 +607,34 @@ def settle(z, v, n, lm, c):
         free, barrier = free_energy(y, c, stiffness_of(c))
         status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
         return resting_face(n[2], c.edge_sine), status, 0.0
-    zeta = c.damping_ratio
-    if c.damping_restitution != c.restitution:
-        zeta = damping_ratio(c.restitution)
-    t, _, settled = _integrate(y, math.inf, c, stiffness_of(c), zeta, True, MAX_STEPS)
+    t, _, settled = _integrate(
+        y, math.inf, c, stiffness_of(c), damping_of(c), True, MAX_STEPS, np.empty((0, 2))
+    )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
 
 
 def advance(
-    state: np.ndarray, duration: float, c, *, settle_check: bool = False, max_steps: int = MAX_STEPS
+    state: np.ndarray,
+    duration: float,
+    c,
+    *,
+    settle_check: bool = False,
+    max_steps: int = MAX_STEPS,
+    stats: np.ndarray | None = None,
+    probe: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
-    when the coin has settled (:func:`settle`), whichever comes first."""
-    zeta = damping_ratio(c.restitution)
-    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps)
+    when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
+    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode; ``probe``
+    (shape (len(:data:`PROBES`), 3), filled with −1) records when each candidate ending held."""
+    zeta = damping_of(c)
+    if stats is None:
+        stats = np.empty((0, 2))
+    return _integrate(
+        state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats, probe
+    )
 
 
 @njit(cache=True)
@@ -584,3 +702,103 @@ def damping_ratio(restitution):
         else:
             hi = mid
     return 0.5 * (lo + hi)
+
+
+ZETA_TABLE_LOWEST = 0.01
+"""Smallest restitution of :data:`_ZETA_TABLE`; below it :func:`damping_ratio` is solved."""
+_ZETA_TABLE = np.array(
+    [
+        4.388888727213681,
+        4.221400079771877,
+        4.059748558767703,
+        3.9037248976689147,
+        3.7531251643587344,
+        3.6077541296044453,
+        3.467421996847416,
+        3.331947858843793,
+        3.2011562187272924,
+        3.074878061945392,
+        2.952950611125499,
+        2.8352170897952442,
+        2.7215263228595985,
+        2.6117318558318106,
+        2.505694525918421,
+        2.403277899752994,
+        2.3043526785002895,
+        2.208792172259913,
+        2.116475880965738,
+        2.0272872100500754,
+        1.9411136638009094,
+        1.8578469086279665,
+        1.7773826158198394,
+        1.6996203103280902,
+        1.6244632254126299,
+        1.5518174888938803,
+        1.4815936742515041,
+        1.4137053144368514,
+        1.3480682581373595,
+        1.2846028350681489,
+        1.223231183087337,
+        1.1638785833208662,
+        1.1064734682500421,
+        1.050946468857298,
+        0.997230792268812,
+        0.9452621254954408,
+        0.8949785430468142,
+        0.8463204183169135,
+        0.7992303386456183,
+        0.7536530239691319,
+        0.7095351128240996,
+        0.6668248754493242,
+        0.6254734975538345,
+        0.5854325148170854,
+        0.5466566742869481,
+        0.5091015618719124,
+        0.4727242467688124,
+        0.43748397440605347,
+        0.40334119515412814,
+        0.3702575342918304,
+        0.33819656480248694,
+        0.3071228995910036,
+        0.27700246765563685,
+        0.24780225880805018,
+        0.21949066103892045,
+        0.19203748075038574,
+        0.1654131027380985,
+        0.13958927327199921,
+        0.11453882483925559,
+        0.09023548053205088,
+        0.06665387894642594,
+        0.04376956430442336,
+        0.02155919153534347,
+        0.0,
+    ]
+)
+"""ζ = :func:`damping_ratio` (e) at 64 restitutions spaced evenly in ln e from
+ln :data:`ZETA_TABLE_LOWEST` to 0 (computed by that function; tests/test_contact_phase.py checks
+nodes and interpolation)."""
+
+
+@njit(cache=True)
+def tabulated_damping_ratio(restitution):
+    """ζ for the restitution e, interpolated (cubic Lagrange in ln e on :data:`_ZETA_TABLE`):
+    the restitution of the returned ζ (:func:`restitution_of`) is e within 1e-6 e, in ~50 ns
+    instead of the ~28 ms of :func:`damping_ratio`'s bisection, which it calls below
+    :data:`ZETA_TABLE_LOWEST`. For tosses each with its own e (:func:`settle`)."""
+    if restitution >= 1.0:
+        return 0.0
+    if restitution < ZETA_TABLE_LOWEST:
+        return damping_ratio(restitution)
+    count = _ZETA_TABLE.shape[0]
+    lowest = math.log(ZETA_TABLE_LOWEST)
+    spacing = -lowest / (count - 1)
+    u = (math.log(restitution) - lowest) / spacing
+    i = min(max(int(u) - 1, 0), count - 4)
+    total = 0.0
+    for j in range(4):
+        weight = 1.0
+        for k in range(4):
+            if k != j:
+                weight *= (u - (i + k)) / (j - k)
+        total += weight * _ZETA_TABLE[i + j]
+    return total

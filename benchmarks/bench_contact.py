@@ -1,0 +1,226 @@
+"""Where the 3-D contact ending spends its time (issue 11): a profile of the contact phase.
+
+    python benchmarks/bench_contact.py [N] [--seed S]
+
+For N vigorous tosses of a US nickel (those of ``bench_bounce.py``: ωx ~ U(150, 300),
+ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop), each with its own e ~ U(0.2, 0.8)
+and μ ~ U(0.1, 0.6), the bounces are run exactly as :func:`coinflight.core.bounce.land_one`
+runs them with the contact ending, up to the hand-off to the contact phase; the phase is then
+integrated to its end with :func:`coinflight.core.contact_phase.advance`, recording per toss
+the simulated time and the steps spent in each mode of :data:`~coinflight.core.contact_phase.MODES`
+(off the table, on one rim's arc, on both rims, on the face), and the composition of the
+energy the coin brings in (horizontal translation, spin about n, tumbling, vertical motion and
+height above the face's rest), in barriers m g ρ above the face's rest energy m g h/2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+
+import numpy as np
+from numba import njit
+
+from coinflight import Coin
+from coinflight.core import bounce
+from coinflight.core import contact_phase as cp
+from coinflight.core.contact import CONTACT_ENDING, Contact
+from coinflight.core.impact import angular_velocity, dot, impact, lowest_depth, resting_face
+from coinflight.model.surface import DEFAULT_PIVOTING_RESISTANCE, DEFAULT_ROLLING_RESISTANCE
+
+COIN = Coin.preset("us-nickel")
+G = 9.81
+DROP = 0.8
+
+
+def contact(e: float, mu: float, corner: float = 0.0) -> Contact:
+    i1, i3 = COIN.moments
+    return Contact.build(
+        radius=COIN.radius,
+        thickness=COIN.thickness,
+        mass=COIN.mass,
+        i1=float(i1),
+        i3=float(i3),
+        restitution=e,
+        friction=mu,
+        drop_height=DROP,
+        g=G,
+        rest_speed=bounce.REST_SPEED,
+        rolling_resistance=DEFAULT_ROLLING_RESISTANCE,
+        pivoting_resistance=DEFAULT_PIVOTING_RESISTANCE,
+        ending=CONTACT_ENDING,
+        corner_radius=corner,
+    )
+
+
+@njit(cache=True)
+def handoff(omega_body, start_sign, launch_speed, c):
+    """The state (z, v, n, L) in which :func:`coinflight.core.bounce.land_one` hands the toss to
+    the contact phase, and whether it does (False: it ended at an impact, or did not end)."""
+    radius, hh, i1, i3, g = c.radius, c.half_thickness, c.i1, c.i3, c.g
+    wx, wy, wz = omega_body
+    s = 1.0 if start_sign > 0 else -1.0
+    n = (0.0, 0.0, s)
+    lm = (i1 * wx, s * i1 * wy, s * i3 * wz)
+    v = (0.0, 0.0, launch_speed)
+    z = c.drop_height
+    tau = launch_speed / g
+    y = np.zeros(10)
+    for _ in range(bounce.MAX_IMPACTS):
+        tc, n, approach = bounce.next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh)
+        if tc < 0.0:
+            return y, False
+        norm = math.sqrt(dot(n, n))
+        n = (n[0] / norm, n[1] / norm, n[2] / norm)
+        z = lowest_depth(n[2], radius, hh)
+        v = (v[0], v[1], v[2] - g * tc)
+        if approach >= 0.0:
+            tau = bounce.GRAZE_SKIP
+            continue
+        v, lm, rebound = impact(v, lm, n, radius, hh, c.mass, i1, i3, c.restitution, c.friction)
+        free = bounce.mechanical_energy(v, lm, n, c.mass, i1, i3, g, z)
+        if free < c.barrier:
+            return y, False
+        if rebound < c.rest_speed:
+            y[0] = z
+            y[1], y[2], y[3] = v
+            y[4], y[5], y[6] = n
+            y[7], y[8], y[9] = lm
+            return y, True
+        omega = angular_velocity(lm, n, i1, i3)
+        accel = g + 2.0 * dot(omega, omega) * c.reach
+        tau = rebound / accel
+        if bounce._gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
+            tau = bounce._first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
+    return y, False
+
+
+def composition(y: np.ndarray, c: Contact) -> np.ndarray:
+    """Energy at the hand-off in barriers (m g ρ − m g h/2): horizontal translation, spin about
+    n, tumbling, vertical motion + height above the face's rest m g h/2."""
+    m, i1, i3 = c.mass, c.i1, c.i3
+    n, lm = y[4:7], y[7:10]
+    ln = float(n @ lm)
+    lperp2 = float(lm @ lm) - ln * ln
+    scale = c.barrier - m * c.g * c.half_thickness
+    return (
+        np.array(
+            [
+                0.5 * m * (y[1] ** 2 + y[2] ** 2),
+                0.5 * ln * ln / i3,
+                0.5 * lperp2 / i1,
+                0.5 * m * y[3] ** 2 + m * c.g * (y[0] - c.half_thickness),
+            ]
+        )
+        / scale
+    )
+
+
+def upper95(k: int, n: int) -> float:
+    """One-sided 95 % upper bound of a binomial proportion, k of n (Clopper-Pearson)."""
+    from scipy.stats import beta
+
+    return 1.0 if k >= n else float(beta.ppf(0.95, k + 1, n - k))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=400)
+    parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--corner", type=float, default=0.0, help="rim corner radius a, m")
+    parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME, help="t_c, s")
+    args = parser.parse_args()
+    rng = np.random.default_rng(args.seed)
+    n = args.n
+    omega = np.column_stack(
+        [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    # e on a grid of 0.01 so that Contact.build's cached damping ratio is computed 61 times.
+    e = np.round(rng.uniform(0.2, 0.8, n), 2)
+    mu = rng.uniform(0.1, 0.6, n)
+    modes = len(cp.MODES)
+    times = np.zeros((n, modes))
+    steps = np.zeros((n, modes))
+    energy = np.full((n, 4), np.nan)
+    handed = np.zeros(n, dtype=bool)
+    settled = np.zeros(n, dtype=bool)
+    wall = np.zeros(n)
+    probes = np.full((n, len(cp.PROBES), 3), -1.0)
+    final = np.full(n, -1)
+    t0 = time.perf_counter()
+    for k in range(n):
+        c = contact(float(e[k]), float(mu[k]), args.corner)._replace(contact_time=args.contact_time)
+        y, handed[k] = handoff((omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], c)
+        if not handed[k]:
+            continue
+        energy[k] = composition(y, c)
+        stats = np.zeros((modes, 2))
+        w0 = time.perf_counter()
+        _, _, settled[k] = cp.advance(
+            y, math.inf, c, settle_check=True, stats=stats, probe=probes[k]
+        )
+        wall[k] = time.perf_counter() - w0
+        final[k] = resting_face(y[6], c.edge_sine)
+        times[k], steps[k] = stats[:, 0], stats[:, 1]
+    total = time.perf_counter() - t0
+    h = handed
+    print(
+        f"{n} vigorous nickel tosses, e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), resistances "
+        f"{DEFAULT_ROLLING_RESISTANCE:g} m, corner radius {args.corner:g} m, t_c "
+        f"{args.contact_time:g} s; {total:.1f} s wall, load {os.getloadavg()}"
+    )
+    print(
+        f"handed to the contact phase: {h.mean():.1%} ({h.sum()}); of those settled "
+        f"{settled[h].mean():.1%}; median wall time {np.median(wall[h]) * 1e3:.1f} ms a toss"
+    )
+    tt, ss = times[h].sum(axis=1), steps[h].sum(axis=1)
+    print(
+        f"per handed toss: simulated time median {np.median(tt):.3f} s (quartiles "
+        f"{np.percentile(tt, 25):.3f}-{np.percentile(tt, 75):.3f}), steps median "
+        f"{np.median(ss):,.0f} (quartiles {np.percentile(ss, 25):,.0f}-"
+        f"{np.percentile(ss, 75):,.0f}), mean step "
+        f"{tt.sum() / ss.sum() * 1e6:.1f} μs"
+    )
+    for j, name in enumerate(cp.MODES):
+        print(
+            f"  {name:9s}: time median {np.median(times[h, j]):.3f} s, share of all time "
+            f"{times[h, j].sum() / tt.sum():5.1%}; steps median {np.median(steps[h, j]):,.0f}, "
+            f"share of all steps {steps[h, j].sum() / ss.sum():5.1%}; mean step "
+            f"{times[h, j].sum() / max(steps[h, j].sum(), 1) * 1e6:.1f} μs"
+        )
+    print(
+        f"steps a handed toss: mean {ss.mean():,.0f}; the 10 % longest tosses take "
+        f"{np.sort(ss)[-max(1, len(ss) // 10) :].sum() / ss.sum():.0%} of all steps; final wells "
+        f"(tails, heads, edge) {np.bincount(final[h], minlength=3)}"
+    )
+    print("candidate endings (checked after each step; disagreement: its well against the end's):")
+    for j, name in enumerate(cp.PROBES):
+        p = probes[h, j]
+        fired = p[:, 0] >= 0
+        at = np.where(fired, p[:, 0], ss)
+        differ = int(np.sum(fired & (p[:, 2] != final[h])))
+        m = int(h.sum())
+        print(
+            f"  {name}: holds before the end in {fired.mean():.1%}; steps to it median "
+            f"{np.median(at):,.0f}, mean {at.mean():,.0f} (saves {1 - at.sum() / ss.sum():.1%} "
+            f"of the steps); other well than the end's {differ}/{m} "
+            f"(95 % upper bound {upper95(differ, m):.2%}); at step 0 {np.mean(p[:, 0] == 0):.1%}"
+        )
+    names = ("horizontal translation", "spin about n", "tumbling", "vertical + height")
+    en = energy[h]
+    print(
+        f"energy at the hand-off, in barriers above the face's rest: total median "
+        f"{np.median(en.sum(axis=1)):.2f}"
+    )
+    for j, name in enumerate(names):
+        print(
+            f"  {name:23s}: median {np.median(en[:, j]):.3f}, mean share "
+            f"{np.mean(en[:, j] / en.sum(axis=1)):.1%}"
+        )
+
+
+if __name__ == "__main__":
+    main()
