@@ -108,6 +108,10 @@ TABLE = {
     "--drop-height": _number(0, 1.5),
     "--restitution": _number(0, 1),
     "--friction": _number(0, 1),
+    "--ending": st.sampled_from(["rocking", "contact", "foo", ""]),
+    "--rolling-resistance": _number(0, 0.01),
+    "--pivoting-resistance": _dist(0, 0.01),
+    "--corner-radius": _number(0, 0.001),
 }
 FLIGHT = {"--flight-time": _number(0.2, 1.0), "--launch-speed": _number(1, 5)}
 
@@ -162,6 +166,9 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
         "--start": st.sampled_from(["heads,tails", "tails", "edge", ""]),
         "--surface": st.sampled_from(["hand", "hand,table", "table", "sand", ""]),
         "--restitution": st.sampled_from(["0.3,0.6", "0.5", "2", "nan", ""]),
+        "--ending": st.sampled_from(["rocking,contact", "contact", "foo", ""]),
+        "--rolling-resistance": st.sampled_from(["1e-5,1e-3", "1e-4", "-1", "0.02", ""]),
+        "--corner-radius": st.sampled_from(["0,3e-4", "1e-4", "0.001", "-1", ""]),
         "--method": st.sampled_from(["monte-carlo", "qmc", "grid", "exact", ""]),
         "--n": _count(1, 500),
         "--seed": _count(0, 2**32),

@@ -26,6 +26,34 @@ _SPREAD = (
     " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal "
     "one truncated to the physical range)."
 )
+ENDING_HELP = (
+    "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
+    "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
+    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 300 "
+    "landings a second instead of tens of thousands, and its edge rates depend on the "
+    "unmeasured resistances and corner radius."
+)
+"""--ending's help (command line and sweep)."""
+ROLLING_HELP = (
+    "rolling resistance length ℓ_r, m, 0 to 0.01 (torque ℓ_r F_n against the coin's rolling; "
+    "default 1e-4). Not measured for coins: quote a band over 1e-5 to 1e-3, not a value."
+)
+"""--rolling-resistance's help."""
+PIVOTING_HELP = (
+    "pivoting (drilling) resistance length ℓ_p, m, 0 to 0.01 (torque ℓ_p F_n against the "
+    "coin's spin about the vertical; default 1e-4). Not measured for coins: quote a band over "
+    "1e-5 to 1e-3, not a value."
+)
+"""--pivoting-resistance's help."""
+CORNER_HELP = (
+    "radius of the coin's rounded rim corners, m, 0 to half the thickness (default 0: sharp). "
+    "Used by the contact ending and the face/edge wells of every ending, not by the impacts. "
+    "Not measured for coins (worn coins are rounder): quote a band, not a value."
+)
+"""--corner-radius's help."""
+_SPREAD_RESISTANCE = (
+    " probability: LOW:HIGH or normal:MEAN,SD are read but not yet drawn toss by toss (refused)."
+)
 TABLE = Group(
     {
         "surface": (SurfaceKind, "hand"),
@@ -81,11 +109,55 @@ TABLE = Group(
             ],
             None,
         ),
+        "ending": (
+            Annotated[
+                str | None,
+                option(
+                    "--ending",
+                    metavar="rocking|contact",
+                    panel=SURFACE_PANEL,
+                    help=_TABLE + ENDING_HELP,
+                ),
+            ],
+            None,
+        ),
+        "rolling_resistance": (
+            Annotated[
+                str | None,
+                option(
+                    "--rolling-resistance",
+                    metavar="L",
+                    panel=SURFACE_PANEL,
+                    help="table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE,
+                ),
+            ],
+            None,
+        ),
+        "pivoting_resistance": (
+            Annotated[
+                str | None,
+                option(
+                    "--pivoting-resistance",
+                    metavar="L",
+                    panel=SURFACE_PANEL,
+                    help="table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                ),
+            ],
+            None,
+        ),
+        "corner_radius": (
+            Annotated[
+                float | None,
+                number_option("--corner-radius", "A", SURFACE_PANEL, _TABLE + CORNER_HELP),
+            ],
+            None,
+        ),
     },
     TableArgs,
 )
 TableOptions = Annotated[TableArgs, TABLE]
-"""--surface and the table's --drop-height, --restitution, --friction, as typed."""
+"""--surface and the table's --drop-height, --restitution, --friction, --surface-preset,
+--ending, --rolling-resistance, --pivoting-resistance and --corner-radius, as typed."""
 AIR = Group(
     {
         "drag": (

@@ -11,11 +11,15 @@ The option grammar (also in the command's help and docs/user_guide/sweeps.md):
   product of their lists of numbers; an sd of 0 is a fixed value. A list of numbers is
   comma-separated numbers and FROM:TO:COUNT items (COUNT evenly spaced values from FROM to TO);
 - ``--coin``, ``--start``, ``--surface`` take comma-separated names; ``--drop-height``,
-  ``--restitution`` and ``--friction`` lists of numbers, swept for the table rows only.
+  ``--restitution`` and ``--friction`` lists of numbers, swept for the table rows only;
+  ``--ending`` comma-separated endings (rocking, contact), and ``--rolling-resistance`` and
+  ``--pivoting-resistance`` lists of numbers swept for the contact ending's rows only;
+  ``--corner-radius`` a list of numbers (m) swept over the coins (--surface table only).
 """
 
 from __future__ import annotations
 
+import itertools
 import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
@@ -24,6 +28,7 @@ import typer
 
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
+from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
     COIN_PANEL,
     METHOD_PANEL,
@@ -43,6 +48,7 @@ from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
 
 if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution
     from coinflight.outcomes.base import OutcomeModel
 
@@ -199,8 +205,12 @@ def outcome_models(
     restitution: str | None,
     friction: str | None,
     bounces: int | None,
+    ending: str | None = None,
+    rolling_resistance: str | None = None,
+    pivoting_resistance: str | None = None,
 ) -> list[OutcomeModel]:
-    """The outcome models of --surface and the table's lists (swept for the table only)."""
+    """The outcome models of --surface and the table's lists (swept for the table only; the
+    rolling and pivoting resistances for the contact ending's rows only)."""
     from coinflight.outcomes import SURFACE_KINDS
     from coinflight.outcomes import outcome_model as build_model
     from coinflight.queries.landing import build_surface, check_bounces
@@ -214,9 +224,18 @@ def outcome_models(
         "--restitution": restitution,
         "--friction": friction,
     }
-    given = [flag for flag, text in table.items() if text is not None]
+    contact = {
+        "--rolling-resistance": rolling_resistance,
+        "--pivoting-resistance": pivoting_resistance,
+    }
+    given = [flag for flag, text in {**table, "--ending": ending, **contact}.items()
+             if text is not None]  # fmt: skip
     if given and "table" not in kinds:
         raise ValueError(f"{', '.join(given)} applies to --surface table only")
+    endings = ["rocking"] if ending is None else _names(ending, "--ending")
+    resistances = [
+        [None] if text is None else parse_numbers_list(text, flag) for flag, text in contact.items()
+    ]
     models: list[OutcomeModel] = []
     for kind in dict.fromkeys(kinds):
         if kind != "table":
@@ -227,16 +246,51 @@ def outcome_models(
             [None] if text is None else parse_numbers_list(text, flag)
             for flag, text in table.items()
         ]
-        for d in lists[0]:
-            for e in lists[1]:
-                for mu in lists[2]:
-                    # build_surface reads the options as typed; repr round-trips a float exactly
-                    surface = build_surface(
-                        "table", d, None if e is None else repr(e), None if mu is None else repr(mu)
-                    )
-                    check_bounces(surface, bounces)
-                    models.append(build_model(surface, None, bounces))
+        for the_ending in dict.fromkeys(endings):
+            # the resistances are swept for the contact ending only (build_surface refuses
+            # them with the rocking ending, which has none)
+            ells = resistances if the_ending == "contact" else [[None], [None]]
+            for d, e, mu, rolling, pivoting in itertools.product(*lists, *ells):
+                # build_surface reads the options as typed; repr round-trips a float exactly
+                surface = build_surface(
+                    "table", d, _text(e), _text(mu), ending=the_ending,
+                    rolling_resistance=_text(rolling), pivoting_resistance=_text(pivoting),
+                )  # fmt: skip
+                check_bounces(surface, bounces)
+                models.append(build_model(surface, None, bounces))
+    if "contact" not in endings and any(x is not None for x in contact.values()):
+        flags = [flag for flag, text in contact.items() if text is not None]
+        raise ValueError(
+            f"{', '.join(flags)} applies to --ending contact only (the default rocking ending "
+            "has no rolling or pivoting resistance)"
+        )
     return models
+
+
+def _text(value: float | None) -> str | None:
+    """A swept number as build_surface reads an option (repr round-trips a float exactly)."""
+    return None if value is None else repr(value)
+
+
+def corner_coins(coins: list[Coin], corner_radius: str | None, surfaces: str) -> list[Coin]:
+    """Each coin with each --corner-radius of the list (m; --surface table only), or the coins
+    as they are."""
+    if corner_radius is None:
+        return coins
+    if _names(surfaces, "--surface") != ["table"]:
+        raise ValueError(
+            "--corner-radius applies to --surface table only (a catch in the hand does not read "
+            "it: sweep the table alone)"
+        )
+    radii = parse_numbers_list(corner_radius, "--corner-radius")
+    out = []
+    for coin in coins:
+        for a in dict.fromkeys(radii):
+            try:
+                out.append(coin.with_corner_radius(a))
+            except ValueError as exc:
+                raise ValueError(f"--corner-radius: {coin.name}: {exc}") from None
+    return out
 
 
 Method = Annotated[
@@ -355,6 +409,42 @@ def sweep(
             help="table: the face at the contact after K bounces (default: at rest).",
         ),
     ] = None,
+    ending: Annotated[
+        str | None,
+        option(
+            "--ending",
+            metavar="rocking,contact",
+            panel=SURFACE_PANEL,
+            help="table, comma-separated endings: " + ENDING_HELP,
+        ),
+    ] = None,
+    rolling_resistance: Annotated[
+        str | None,
+        option(
+            "--rolling-resistance",
+            metavar="LIST",
+            panel=SURFACE_PANEL,
+            help="table, contact ending rows: lengths ℓ_r, " + ROLLING_HELP.split(", ", 1)[1],
+        ),
+    ] = None,
+    pivoting_resistance: Annotated[
+        str | None,
+        option(
+            "--pivoting-resistance",
+            metavar="LIST",
+            panel=SURFACE_PANEL,
+            help="table, contact ending rows: lengths ℓ_p, " + PIVOTING_HELP.split(", ", 1)[1],
+        ),
+    ] = None,
+    corner_radius: Annotated[
+        str | None,
+        option(
+            "--corner-radius",
+            metavar="LIST",
+            panel=SURFACE_PANEL,
+            help="--surface table only, swept over every coin: " + CORNER_HELP,
+        ),
+    ] = None,
     method: Method = "exact",
     n: Size = None,
     seed: Seed = None,
@@ -402,11 +492,23 @@ def sweep(
             "give one of --flight-time and --launch-speed (or their -mean and -sd lists)"
         )
     coins = [resolve_coin(name, None, None, None) for name in _names(coin, "--coin")]
+    coins = corner_coins(coins, corner_radius, surface)
     starts = _names(start, "--start")
     for face in starts:
         if face not in ("heads", "tails"):
             raise ValueError(f"--start {start!r}: each face is heads or tails")
-    models = outcome_models(surface, drop_height, restitution, friction, bounces)
+    models = outcome_models(
+        surface, drop_height, restitution, friction, bounces, ending, rolling_resistance,
+        pivoting_resistance,
+    )  # fmt: skip
+    slow = [m for m in models if m.to_dict().get("ending") == "contact"]
+    if slow and n is None and estimator.default_n is not None:
+        raise ValueError(
+            f"with --ending contact each landing is carried through the 3-D contact phase "
+            f"(about {min(m.rate for m in slow):,.0f} tosses per second), so the default size of "
+            f"--method {method} would run for about an hour a row; give --n explicitly "
+            "(e.g. --n 1000)"
+        )
     if method == "exact" and any(not m.closed_form_bands for m in models):
         others = " or ".join(registry.names(seeded=True)) + " or grid"
         raise ValueError(f"--method exact handles --surface hand only; for a table use {others}")

@@ -35,7 +35,7 @@ def toss(
         print_json(toss_payload(query))
         return
     if not query.caught:
-        report_landing(coin, query.toss, query.surface, query.drag, False, bounces)
+        report_landing(query.coin, query.toss, query.surface, query.drag, False, bounces)
         return
     flight = Flight(coin, query.toss)
     out, t = flight.outcome, flight.toss

@@ -65,12 +65,19 @@ class Contact(NamedTuple):
         :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
         :func:`coinflight.core.contact_phase.settle`); a float so the record stays all floats.
     corner_radius : float
-        a ≥ 0, the radius of the rounded corners of the coin's rim, m (experimental, core only):
-        the coin is a cylinder of radius r − a and half-thickness h/2 − a swept by a ball of
-        radius a. The contact phase touches the table with that rounded rim, and ``barrier``
-        and ``edge_sine`` are its wells' (m g (a + ρ′) and (h/2 − a)/ρ′, ρ′ = sqrt((r − a)² +
-        (h/2 − a)²)); the impacts of :mod:`coinflight.core.impact` still meet the sharp
-        cylinder (their contact point differs by at most a (1 − 1/√2)). 0: sharp corners.
+        a ≥ 0, the radius of the rounded corners of the coin's rim, m
+        (:attr:`coinflight.model.coin.Coin.corner_radius`): the coin is a cylinder of radius
+        r − a and half-thickness h/2 − a swept by a ball of radius a. ``barrier`` and
+        ``edge_sine`` are the rounded coin's wells' (m g (a + ρ′) and (h/2 − a)/ρ′,
+        ρ′ = sqrt((r − a)² + (h/2 − a)²)). So the corner radius reaches: the contact phase
+        (:func:`coinflight.core.contact_phase.settle`, which touches the table with the rounded
+        rim); the end of every landing through these two fields
+        (:func:`coinflight.core.bounce.after_impact`'s energy test and every
+        :func:`coinflight.core.impact.resting_face`, with or without air). It does not reach
+        the impact law (:func:`coinflight.core.impact.impact` takes r and h/2, and its contact
+        point is the sharp cylinder's: it differs by at most a (1 − 1/√2)), the search for the
+        next contact in flight, nor the planar rocking ending
+        (:func:`coinflight.core.bounce.rock`). 0: sharp corners.
     """
 
     radius: float

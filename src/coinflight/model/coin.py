@@ -23,6 +23,15 @@ class Coin:
         Mass m, kg.
     name : str
         A label for reports and figure titles.
+    corner_radius : float
+        Radius a of the rounded corners of the rim, m, 0 ≤ a ≤ h/2 (default 0: sharp corners):
+        the coin is then a cylinder of radius r − a and thickness h − 2a swept by a ball of
+        radius a. Not measured for any coin (worn coins are rounder than new ones): carry a
+        band, not a value. Only a table landing reads it
+        (:meth:`coinflight.core.contact.Contact.build`): the 3-D contact ending touches the
+        table with the rounded rim, and every landing's face/edge wells (the energy barrier
+        and the edge angle) are the rounded coin's; the impacts and the planar rocking ending
+        still meet the sharp cylinder (see :class:`coinflight.core.contact.Contact`).
 
     Examples
     --------
@@ -30,12 +39,17 @@ class Coin:
     0.02426
     >>> Coin(radius=0.012, thickness=0.0015, mass=0.005).name
     'custom coin'
+    >>> Coin(radius=0.012, thickness=0.0015, mass=0.005, corner_radius=0.001)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: corner radius must be between 0 and 0.00075 (in m), got 0.001: at most half...
     """
 
     radius: float
     thickness: float
     mass: float
     name: str = field(default="custom coin", compare=False)
+    corner_radius: float = 0.0
 
     def __post_init__(self) -> None:
         odd = []
@@ -45,6 +59,9 @@ class Coin:
             if not quantity.is_usual(value):
                 odd.append((quantity, value))
         v.instance("name", self.name, str, "a string")
+        object.__setattr__(
+            self, "corner_radius", check_corner_radius(self.corner_radius, self.thickness)
+        )
         if odd:
             v.warn_unusual(_unusual_coin(odd), stacklevel=3)
 
@@ -82,24 +99,42 @@ class Coin:
         i1, i3 = principal_moments(self.radius, self.thickness, self.mass)
         return float(i1), float(i3)
 
+    def with_corner_radius(self, corner_radius: float) -> Coin:
+        """The same coin with rim corners rounded to ``corner_radius`` a, m (0 ≤ a ≤ h/2).
+
+        >>> Coin.preset("us-nickel").with_corner_radius(3e-4).corner_radius
+        0.0003
+        """
+        import dataclasses
+
+        return dataclasses.replace(self, corner_radius=corner_radius)
+
     def to_dict(self) -> dict[str, object]:
-        """JSON-ready: name, radius (m), thickness (m), mass (kg).
+        """JSON-ready: name, radius (m), thickness (m), mass (kg) and, when not 0, the corner
+        radius (m; left out for sharp corners, so that the JSON of every other coin, and the
+        random streams of sweep rows keyed on it, stay as they were).
 
         >>> Coin.preset("us-quarter").to_dict()["radius"]
         0.01213
         """
-        return {
+        out: dict[str, object] = {
             "name": self.name,
             "radius": self.radius,
             "thickness": self.thickness,
             "mass": self.mass,
         }
+        if self.corner_radius:
+            out["corner_radius"] = self.corner_radius
+        return out
 
     def describe(self) -> str:
         """One line: name and dimensions in the units people use for coins."""
+        corner = (
+            f", corner radius a = {self.corner_radius * 1e3:.3g} mm" if self.corner_radius else ""
+        )
         return (
             f"{self.name} (d = {self.diameter * 1e3:.2f} mm, h = {self.thickness * 1e3:.2f} mm, "
-            f"m = {self.mass * 1e3:.3f} g)"
+            f"m = {self.mass * 1e3:.3f} g{corner})"
         )
 
 
@@ -113,6 +148,18 @@ THICKNESS = v.Quantity(
 few cm; millimetres given as metres land near 1 m)."""
 MASS = v.Quantity("mass", "kg", 1e-9, 1e6, (1e-4, 1.0), "a coin's mass (0.1 g to 1 kg)")
 """Mass: hard range 1 µg to 1000 t, a warning outside 0.1 g to 1 kg."""
+
+
+def check_corner_radius(value: object, thickness: float, name: str = "corner radius") -> float:
+    """``value`` (m) as a float between 0 and half the ``thickness``, else TypeError or a
+    ValueError naming ``name``, the value and the range."""
+    arr = v.as_float_array(name, value)  # type: ignore[arg-type]
+    if arr.ndim:
+        raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    try:
+        return float(v.in_range(name, arr, 0.0, 0.5 * thickness, "m"))
+    except ValueError as exc:
+        raise ValueError(f"{exc}: at most half the thickness h/2") from None
 
 
 def _unusual_coin(odd: list[tuple[v.Quantity, float]]) -> str:
@@ -148,4 +195,12 @@ PRESETS = MappingProxyType(_presets())
 
 DEFAULT_COIN = "us-quarter"
 
-__all__ = ["DEFAULT_COIN", "MASS", "PRESETS", "RADIUS", "THICKNESS", "Coin"]
+__all__ = [
+    "DEFAULT_COIN",
+    "MASS",
+    "PRESETS",
+    "RADIUS",
+    "THICKNESS",
+    "Coin",
+    "check_corner_radius",
+]

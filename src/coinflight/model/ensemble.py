@@ -21,7 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.model.coin import DEFAULT_COIN, Coin
 from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
-from coinflight.model.surface import contact_distribution
+from coinflight.model.surface import CONTACT_UNITS, contact_distribution
 from coinflight.model.toss import STANDARD_GRAVITY, Start, check_gravity
 
 FloatArray = NDArray[np.float64]
@@ -31,9 +31,13 @@ PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 NO_SPIN = Fixed(0.0)
 """Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
-CONTACT = ("restitution", "friction")
+CONTACT = ("restitution", "friction", "rolling_resistance", "pivoting_resistance")
 """Contact parameters a distribution of tosses may spread (table landings); when set they
-replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`)."""
+replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`). The
+landing kernel takes restitution and friction toss by toss; the rolling and pivoting
+resistances are checked and described here but refused by the table landing until
+:func:`coinflight.core.bounce.land` takes them per toss
+(:attr:`coinflight.outcomes.table.TableLanding.contact_parameters`)."""
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
 # below anything an estimate can resolve, so such draws can never occur in practice.
@@ -68,6 +72,10 @@ class TossDistribution:
         integrates over them. None (default): the surface's single value. A normal one is
         truncated to the physical range (:func:`coinflight.model.surface.contact_distribution`).
         Only table landings take them (the estimators refuse them for other outcome models).
+    rolling_resistance, pivoting_resistance : Distribution or float, keyword only
+        The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of
+        the 3-D contact ending. Checked and described here; the table landing does not yet
+        draw them toss by toss and refuses a distribution (one line) rather than ignore it.
 
     Notes
     -----
@@ -87,6 +95,8 @@ class TossDistribution:
     launch_speed: Distribution | None = field(default=None, compare=False)
     restitution: Distribution | None = None
     friction: Distribution | None = None
+    rolling_resistance: Distribution | None = None
+    pivoting_resistance: Distribution | None = None
 
     if TYPE_CHECKING:  # what callers may pass (numbers become Fixed); the dataclass builds it
 
@@ -103,6 +113,8 @@ class TossDistribution:
             launch_speed: Distribution | float | None = None,
             restitution: Distribution | float | None = None,
             friction: Distribution | float | None = None,
+            rolling_resistance: Distribution | float | None = None,
+            pivoting_resistance: Distribution | float | None = None,
         ) -> None: ...
 
     def __post_init__(self) -> None:
@@ -187,14 +199,15 @@ class TossDistribution:
         self,
         restitution: Distribution | float | None = None,
         friction: Distribution | float | None = None,
+        rolling_resistance: Distribution | float | None = None,
+        pivoting_resistance: Distribution | float | None = None,
     ) -> TossDistribution:
-        """The same tosses with these restitution and friction distributions (None: keep)."""
+        """The same tosses with these contact distributions (:data:`CONTACT`; None: keep)."""
         import dataclasses
 
+        given = (restitution, friction, rolling_resistance, pivoting_resistance)
         changes = {
-            name: value
-            for name, value in (("restitution", restitution), ("friction", friction))
-            if value is not None
+            name: value for name, value in zip(CONTACT, given, strict=True) if value is not None
         }
         return dataclasses.replace(self, **changes) if changes else self  # type: ignore[arg-type]
 
@@ -280,7 +293,8 @@ class TossDistribution:
         for name in PARAMETERS:
             lines.append(f"{name} = {getattr(self, name).describe(UNITS[name])}")
         for name, d in self.contact.items():
-            lines.append(f"{name} = {d.describe()} (toss by toss)")
+            unit = CONTACT_UNITS.get(name, "")
+            lines.append(f"{name} = {d.describe(unit)} (toss by toss)")
         return "\n".join(lines)
 
 

@@ -154,9 +154,18 @@ class Surface:
         return self.kind == "table"
 
 
-CONTACT_RANGES = {"restitution": (0.0, 1.0), "friction": (0.0, math.inf)}
+CONTACT_RANGES = {
+    "restitution": (0.0, 1.0),
+    "friction": (0.0, math.inf),
+    "rolling_resistance": (ROLLING_RESISTANCE.low, ROLLING_RESISTANCE.high),
+    "pivoting_resistance": (PIVOTING_RESISTANCE.low, PIVOTING_RESISTANCE.high),
+}
 """The physical range of each contact parameter a distribution of tosses may spread: e in
-[0, 1] (no contact gives energy back beyond elastic), μ ≥ 0."""
+[0, 1] (no contact gives energy back beyond elastic), μ ≥ 0, the rolling and pivoting
+resistances ℓ_r, ℓ_p in [0, 1 cm] (m; :data:`ROLLING_RESISTANCE`)."""
+
+CONTACT_UNITS = {"rolling_resistance": "m", "pivoting_resistance": "m"}
+"""Units of the contact parameters that have one (for messages and descriptions)."""
 
 
 def contact_distribution(name: str, value: Distribution | float) -> Distribution:
@@ -182,27 +191,29 @@ def contact_distribution(name: str, value: Distribution | float) -> Distribution
     """
     low, high = v.known("contact parameter", name, CONTACT_RANGES)
     dist = as_distribution(value, name)
+    unit = CONTACT_UNITS.get(name, "")
+    words = name.replace("_", " ")  # "rolling resistance", as the Surface names it
     allowed = (
-        f"{name} must be between {low:g} and {high:g}"
+        f"{words} must be between {low:g} and {high:g}{f' {unit}' if unit else ''}"
         if math.isfinite(high)
-        else f"{name} must be non-negative"
+        else f"{words} must be non-negative"
     )
     if isinstance(dist, Fixed):  # one number: the Surface's own check and wording
         if math.isfinite(high):
-            v.in_range(name, dist.value, low, high)
+            v.in_range(words, dist.value, low, high, unit)
         else:
-            v.non_negative(name, dist.value)
+            v.non_negative(words, dist.value)
         return dist
     if isinstance(dist, Normal):
         if not low <= dist.mean <= high:
             raise ValueError(
-                f"{name} {dist.describe()} has its mean outside the physical range; {allowed} "
+                f"{words} {dist.describe(unit)} has its mean outside the physical range; {allowed} "
                 "(a normal one is truncated to the range, so its mean must lie inside)"
             )
         return TruncatedNormal(dist.mean, dist.sd, low, high)
     for end in dist.bounds:
         if not low <= end <= high:
-            raise ValueError(f"{name} {dist.describe()} reaches {end:g}; {allowed}")
+            raise ValueError(f"{words} {dist.describe(unit)} reaches {end:g}; {allowed}")
     return dist
 
 
@@ -246,6 +257,7 @@ class Drag:
 __all__ = [
     "AIR_DENSITY",
     "CONTACT_RANGES",
+    "CONTACT_UNITS",
     "DROP_HEIGHT",
     "Drag",
     "Surface",

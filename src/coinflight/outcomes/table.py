@@ -60,7 +60,15 @@ CONTACT_TOSSES_PER_SECOND = 300.0
 (``Surface(ending="contact")``, e > 0), on the 2-core machine while busy: 301 a second
 measured at e = 0.5, μ = 0.3 under a load of 3.3, 300-800 quieter (``python
 benchmarks/bench_bounce.py --contact N``; 66-81 % of the tosses go through the contact phase,
-for a median 0.3-2.3 s of motion)."""
+for a median 0.3-2.3 s of motion). Re-measured for the command line's ``--ending contact``
+(its rates, the first part of ``--contact 2000``): 466 a second against 45,520 rocking and
+250,691 to first contact in the same run, load 3.5; kept at 300 for a busier machine."""
+
+CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
+"""Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
+e = 0.5, μ = 0.3, C_d = 1.17, 2,000 vigorous tosses of a nickel, median of 3): 164 a second
+under a load of 5-8, against 6,807 with the rocking ending in the same run (helper w-options,
+2026-11-23; the drag-free contact ending ran at 466 a second at a load of 3.5)."""
 
 AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3, C_d = 1.17),
@@ -74,6 +82,17 @@ NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
     "(--drag, --spin-damping): give single values, or drop the air"
 )
 """The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
+
+PER_TOSS = ("restitution", "friction")
+"""The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
+``restitution`` and ``friction`` arrays)."""
+
+NO_RESISTANCE_DISTRIBUTIONS = (
+    "rolling and pivoting resistance distributions are not yet drawn toss by toss (the landing "
+    "kernel takes restitution and friction per toss only): give single values, or sweep them "
+    "(coinflight sweep --rolling-resistance LIST) and quote the band"
+)
+"""The refusal of per-toss rolling and pivoting resistances (one line, CLI and library)."""
 
 
 STATUS_NAMES = (
@@ -188,6 +207,7 @@ def land(
         pivoting_resistance=surface.pivoting_resistance,
         contact_time=surface.contact_time,
         ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
+        corner_radius=coin.corner_radius,
     )
     limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
     per_toss = {} if contact is None else contact
@@ -327,27 +347,34 @@ class TableLanding(OutcomeModel):
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
-        """Restitution and friction may vary toss by toss, except through air (not yet)."""
-        return ("restitution", "friction") if self.drag is None else ()
+        """Restitution and friction (:data:`PER_TOSS`) may vary toss by toss, except through
+        air (not yet); the rolling and pivoting resistances not yet (:attr:`contact_refusal`)."""
+        return PER_TOSS if self.drag is None else ()
 
     @property
     def contact_refusal(self) -> str:  # type: ignore[override]
-        return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG if self.drag is not None else ""
+        if self.drag is not None:
+            return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG
+        return NO_RESISTANCE_DISTRIBUTIONS
 
     @property
     def rate(self) -> float:  # type: ignore[override]
-        """Tosses a second: :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag
-        :data:`AIR_LANDINGS_PER_SECOND`; with the experimental ``ending="contact"``, landings
-        carried to rest (e > 0, no bounce limit) at :data:`CONTACT_TOSSES_PER_SECOND`."""
+        """Tosses a second for the work bounds: :data:`BOUNCING_TOSSES_PER_SECOND`, or with
+        air drag :data:`AIR_LANDINGS_PER_SECOND`; with the experimental ``ending="contact"``
+        (landings carried to rest: e > 0, no bounce limit) :data:`CONTACT_TOSSES_PER_SECOND`,
+        through air :data:`CONTACT_AIR_LANDINGS_PER_SECOND`."""
+        contact = (
+            self.surface.ending == "contact"
+            and self.surface.restitution > 0.0
+            and self.max_bounces is None
+        )
+        if contact:
+            return (
+                CONTACT_TOSSES_PER_SECOND if self.drag is None else CONTACT_AIR_LANDINGS_PER_SECOND
+            )
         if self.drag is not None:
             return AIR_LANDINGS_PER_SECOND
-        if (
-            self.surface.ending != "contact"
-            or self.surface.restitution == 0.0
-            or self.max_bounces is not None
-        ):
-            return BOUNCING_TOSSES_PER_SECOND
-        return CONTACT_TOSSES_PER_SECOND
+        return BOUNCING_TOSSES_PER_SECOND
 
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
@@ -404,37 +431,58 @@ class TableLanding(OutcomeModel):
         return self.settings_for(None)
 
     def describe_for(self, dist: TossDistribution | None) -> str:
-        """One line; the restitution and friction distributions of ``dist``, if any, in place
-        of the surface's values (they replace them toss by toss)."""
+        """One line; the contact distributions of ``dist``, if any, in place of the surface's
+        values (they replace them toss by toss). The experimental contact ending is named, with
+        its resistances, and a rounded rim (the coin's corner radius) when ``dist`` has one."""
         s = self.surface
         spread = {} if dist is None else dist.contact
-        e = spread["restitution"].describe() if "restitution" in spread else f"{s.restitution:g}"
-        mu = spread["friction"].describe() if "friction" in spread else f"{s.friction:g}"
+
+        def text(name: str, unit: str = "") -> str:
+            if name in spread:
+                return spread[name].describe(unit)
+            return f"{getattr(s, name):g}{' ' + unit if unit else ''}"
+
+        ending = ""
+        if s.ending != "rocking":
+            ending = (
+                f", {s.ending} ending: rolling resistance {text('rolling_resistance', 'm')}, "
+                f"pivoting resistance {text('pivoting_resistance', 'm')}"
+            )
+        if dist is not None and dist.coin.corner_radius:
+            ending += f", rim corner radius {dist.coin.corner_radius:g} m"
         return (
             f"landing on a table {s.drop_height:g} m below launch (restitution "
-            f"{e}, friction {mu}), {describe_air(self.drag)}"
+            f"{text('restitution')}, friction {text('friction')}{ending}), "
+            f"{describe_air(self.drag)}"
         )
 
     def settings_for(self, dist: TossDistribution | None) -> dict[str, Any]:
-        """JSON settings; the restitution and friction distributions of ``dist``, if any, as
-        objects (``{"kind": "uniform", ...}``) in place of the surface's numbers."""
+        """JSON settings; the contact distributions of ``dist``, if any, as objects
+        (``{"kind": "uniform", ...}``) in place of the surface's numbers. The contact ending,
+        its resistances (m) and, with ``dist``, the coin's rim corner radius (m) are reported
+        when not the defaults (the rocking ending, sharp corners), so that every other JSON
+        object, and the random stream of a sweep row keyed on it, stays as it was."""
         s = self.surface
         spread = {} if dist is None else dist.contact
+
+        def value(name: str) -> Any:
+            return spread[name].to_dict() if name in spread else getattr(s, name)
+
         out: dict[str, Any] = {
             "surface": s.kind,
             "drop_height": s.drop_height,
-            "restitution": spread["restitution"].to_dict()
-            if "restitution" in spread
-            else s.restitution,
-            "friction": spread["friction"].to_dict() if "friction" in spread else s.friction,
+            "restitution": value("restitution"),
+            "friction": value("friction"),
             "drag": drag_dict(self.drag),
         }
         if self.max_bounces is not None:
             out["max_bounces"] = self.max_bounces
         if s.ending != "rocking":  # the experimental ending, reported; the default unchanged
             out["ending"] = s.ending
-            out["rolling_resistance"] = s.rolling_resistance
-            out["pivoting_resistance"] = s.pivoting_resistance
+            out["rolling_resistance"] = value("rolling_resistance")
+            out["pivoting_resistance"] = value("pivoting_resistance")
+        if dist is not None and dist.coin.corner_radius:
+            out["corner_radius"] = dist.coin.corner_radius
         return out
 
     def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
@@ -445,8 +493,11 @@ class TableLanding(OutcomeModel):
 __all__ = [
     "AIR_LANDINGS_PER_SECOND",
     "BOUNCING_TOSSES_PER_SECOND",
+    "CONTACT_AIR_LANDINGS_PER_SECOND",
     "CONTACT_TOSSES_PER_SECOND",
     "MAX_BOUNCES",
+    "NO_RESISTANCE_DISTRIBUTIONS",
+    "PER_TOSS",
     "STATUS_NAMES",
     "Landing",
     "LandingOutcome",

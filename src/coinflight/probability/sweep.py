@@ -167,12 +167,7 @@ class Case:
         return {
             **{name: getattr(dist, name).to_dict() for name in PARAMETERS},
             "launch_speed": None if speed is None else speed.to_dict(),
-            "coin": {
-                "name": coin.name,
-                "radius": coin.radius,
-                "thickness": coin.thickness,
-                "mass": coin.mass,
-            },
+            "coin": coin.to_dict(),  # name, r, h, m and a rounded rim's corner radius
             "start": dist.start,
             "g": dist.g,
             "model": self.model.to_dict(),

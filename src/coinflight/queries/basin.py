@@ -62,6 +62,12 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
     return float(time_of_flight(v_lo, g)), float(time_of_flight(v_hi, g))
 
 
+MAP_SECONDS = 60.0
+"""Longest map of table landings, s of estimated work at the outcome model's rate (a minute, as
+the grid method's: a 500×500 map at the rocking ending's 50,000 landings a second is 5 s; with
+the 3-D contact ending, about 300 a second, 18,000 cells)."""
+
+
 def basin_query(
     coin: Coin,
     *,
@@ -81,11 +87,23 @@ def basin_query(
 ) -> BasinMap:
     """The map ``coinflight plot basin`` draws, for its options as typed (``executor``: where
     its rows run, as :func:`coinflight.studies.basin.basin_map` takes it)."""
+    from coinflight import _validation as v
+    from coinflight.queries.landing import landing_coin
     from coinflight.studies.basin import basin_map
 
     spin, psi_rad = spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
+    outcome = table_outcome(table, bounces)
+    n_t, n_w = parse_resolution(resolution)
+    if outcome:  # a map of table landings: each cell a landing, at the model's rate
+        v.work_bound(
+            f"a map of {n_t}×{n_w} table landings",
+            n_t * n_w / outcome["outcome"].rate,
+            MAP_SECONDS,
+            "s of work",
+            "use a coarser resolution (e.g. 100x100 with --ending contact)",
+        )
     return basin_map(
-        coin,
+        landing_coin(coin, table),
         time_range(flight_time, launch_speed, g),
         spin,
         omega_y=omega_y,
@@ -95,7 +113,7 @@ def basin_query(
         start=start,
         g=g,
         executor=executor,
-        **table_outcome(*table, bounces),
+        **outcome,
     )
 
 
@@ -106,12 +124,12 @@ def basin_payload(
     boundaries: bool = False,
 ) -> dict[str, Any]:
     """The JSON object of a map (see the module's notes)."""
-    from coinflight.queries.landing import build_surface, surface_payload
+    from coinflight.queries.landing import surface_from, surface_payload
 
     payload = basin.to_dict()
     n_w, n_t = basin.face.shape
     payload["resolution"] = [n_t, n_w]
-    payload.update(surface_payload(build_surface(*table), None))
+    payload.update(surface_payload(surface_from(table), None))
     payload["bounces"] = bounces
     if boundaries:
         if table.surface != "hand":

@@ -1,43 +1,63 @@
 """The landing surface and the air, from the options as typed: built, checked, described
 (the command line's and the web application's one reading of --surface, --drop-height,
---restitution, --friction, --drag, --spin-damping and --bounces)."""
+--restitution, --friction, --ending, --rolling-resistance, --pivoting-resistance,
+--corner-radius, --drag, --spin-damping and --bounces)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from coinflight.queries.values import AirArgs, TableArgs
+
 if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution
     from coinflight.model.surface import Drag, Surface
     from coinflight.outcomes.base import OutcomeModel
 
-CONTACT_FLAGS = {"restitution": "--restitution", "friction": "--friction"}
+CONTACT_FLAGS = {
+    "restitution": "--restitution",
+    "friction": "--friction",
+    "rolling_resistance": "--rolling-resistance",
+    "pivoting_resistance": "--pivoting-resistance",
+}
 """The contact parameters a command line may spread, and their options."""
+
+CONTACT_ONLY = ("--rolling-resistance", "--pivoting-resistance")
+"""Options that only the 3-D contact ending reads (refused with the rocking ending, where they
+would change nothing)."""
 
 
 def contact_spread(
-    restitution: str | None, friction: str | None, surface_preset: str | None = None
+    restitution: str | None,
+    friction: str | None,
+    surface_preset: str | None = None,
+    rolling_resistance: str | None = None,
+    pivoting_resistance: str | None = None,
 ) -> dict[str, Distribution]:
-    """The --restitution and --friction texts as distributions (only those given), each checked
-    against its physical range (:func:`coinflight.model.surface.contact_distribution`: a normal
-    one truncated to it, the rest refused outside it); ValueError naming the option. With
-    --surface-preset, the preset's ranges (:data:`coinflight.studies.presets.SURFACE_PRESETS`)
-    for those not given."""
+    """The --restitution, --friction, --rolling-resistance and --pivoting-resistance texts as
+    distributions (only those given), each checked against its physical range
+    (:func:`coinflight.model.surface.contact_distribution`: a normal one truncated to it, the
+    rest refused outside it); ValueError naming the option. With --surface-preset, the
+    preset's ranges (:data:`coinflight.studies.presets.SURFACE_PRESETS`) for those not given."""
     from coinflight.model.distributions import parse_distribution
-    from coinflight.model.surface import contact_distribution
+    from coinflight.model.surface import CONTACT_UNITS, contact_distribution
 
     out: dict[str, Distribution] = {}
     if surface_preset is not None:
         from coinflight.studies.presets import surface_preset as lookup
 
         out.update(lookup(surface_preset).contact)
-    for name, text in (("restitution", restitution), ("friction", friction)):
+    texts = (restitution, friction, rolling_resistance, pivoting_resistance)
+    for name, text in zip(CONTACT_FLAGS, texts, strict=True):
         if text is None:
             continue
         flag = CONTACT_FLAGS[name]
         try:
-            out[name] = contact_distribution(name, parse_distribution(text, flag))
+            out[name] = contact_distribution(
+                name, parse_distribution(text, flag, CONTACT_UNITS.get(name, ""))
+            )
         except ValueError as exc:
             message = str(exc)
             raise ValueError(
@@ -51,13 +71,18 @@ def single_values(
 ) -> dict[str, float]:
     """The contact parameters of ``spread`` as single numbers; ValueError (one line) for a
     distribution, which only a probability integrates over."""
+    from coinflight.outcomes.table import NO_RESISTANCE_DISTRIBUTIONS, PER_TOSS
+
     ranged = [
         f"{CONTACT_FLAGS[name]} {d.describe()}" for name, d in spread.items() if not d.is_fixed
     ]
+    per_toss = [name for name, d in spread.items() if not d.is_fixed and name in PER_TOSS]
+    if len(per_toss) < len(ranged):
+        raise ValueError(f"{', '.join(ranged)}: {NO_RESISTANCE_DISTRIBUTIONS}")
     if ranged:
         raise ValueError(
-            f"{', '.join(ranged)}: {command} takes a single value; a distribution of restitution "
-            "or friction is for coinflight probability --method monte-carlo, qmc or grid, which "
+            f"{', '.join(ranged)}: {command} takes a single value; a distribution of a contact "
+            "parameter is for coinflight probability --method monte-carlo, qmc or grid, which "
             "integrate over it"
         )
     return {name: d.mean for name, d in spread.items()}
@@ -70,26 +95,56 @@ def build_surface(
     friction: str | None,
     surface_preset: str | None = None,
     ranged: bool = False,
+    *,
+    ending: str | None = None,
+    rolling_resistance: str | None = None,
+    pivoting_resistance: str | None = None,
+    corner_radius: float | None = None,
 ) -> Surface:
     """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table).
 
-    --restitution and --friction must be single numbers, and --surface-preset (ranges) is
-    refused, unless ``ranged`` (the command then reads their distributions with
-    :func:`contact_spread` and passes them with the tosses; the surface keeps its defaults
-    for them).
+    --restitution, --friction, --rolling-resistance and --pivoting-resistance must be single
+    numbers, and --surface-preset (ranges) is refused, unless ``ranged`` (the command then
+    reads their distributions with :func:`contact_spread` and passes them with the tosses; the
+    surface keeps its defaults for them). --ending is rocking (default) or contact; the two
+    resistances apply to --ending contact only. ``corner_radius`` (the coin's, applied by
+    :func:`landing_coin`) is only checked here to belong to a table.
     """
-    from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
+    from coinflight.model.surface import (
+        DEFAULT_FRICTION,
+        DEFAULT_PIVOTING_RESISTANCE,
+        DEFAULT_RESTITUTION,
+        DEFAULT_ROLLING_RESISTANCE,
+        ENDINGS,
+        Surface,
+    )
 
     given = {
         "--drop-height": drop_height,
         "--restitution": restitution,
         "--friction": friction,
         "--surface-preset": surface_preset,
+        "--ending": ending,
+        "--rolling-resistance": rolling_resistance,
+        "--pivoting-resistance": pivoting_resistance,
+        "--corner-radius": corner_radius,
     }
     if kind == "hand":
         extra = [flag for flag, value in given.items() if value is not None]
         if extra:
             raise ValueError(f"{', '.join(extra)} applies to --surface table only")
+    if ending is not None and ending not in ENDINGS:
+        raise ValueError(
+            f"--ending must be {' or '.join(ENDINGS)} (how a table landing ends once its "
+            f"bounces die out), got {ending!r}"
+        )
+    if ending != "contact":
+        extra = [flag for flag in CONTACT_ONLY if given[flag] is not None]
+        if extra:
+            raise ValueError(
+                f"{', '.join(extra)} applies to --ending contact only (the default rocking "
+                "ending has no rolling or pivoting resistance)"
+            )
     if surface_preset is not None and not ranged:
         contact_spread(None, None, surface_preset)  # an unknown name first
         raise ValueError(
@@ -97,7 +152,9 @@ def build_surface(
             "literature's ranges: this command takes single values (--restitution, --friction); "
             "coinflight probability --method monte-carlo, qmc or grid integrates over a preset"
         )
-    spread = contact_spread(restitution, friction, surface_preset)
+    spread = contact_spread(
+        restitution, friction, surface_preset, rolling_resistance, pivoting_resistance
+    )
     fixed = (
         {name: d.mean for name, d in spread.items() if d.is_fixed}
         if ranged
@@ -108,7 +165,59 @@ def build_surface(
         drop_height=0.0 if drop_height is None else drop_height,
         restitution=fixed.get("restitution", DEFAULT_RESTITUTION),
         friction=fixed.get("friction", DEFAULT_FRICTION),
+        rolling_resistance=fixed.get("rolling_resistance", DEFAULT_ROLLING_RESISTANCE),
+        pivoting_resistance=fixed.get("pivoting_resistance", DEFAULT_PIVOTING_RESISTANCE),
+        ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
     )
+
+
+def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
+    """:func:`build_surface` for the table options as typed (every one of them)."""
+    return build_surface(
+        table.surface,
+        table.drop_height,
+        table.restitution,
+        table.friction,
+        table.surface_preset,
+        ranged,
+        ending=table.ending,
+        rolling_resistance=table.rolling_resistance,
+        pivoting_resistance=table.pivoting_resistance,
+        corner_radius=table.corner_radius,
+    )
+
+
+def table_spread(table: TableArgs) -> dict[str, Distribution]:
+    """The contact parameters the table options spread over the tosses (distributions only;
+    single values are in the surface): :func:`contact_spread` of every one of them; ValueError
+    (one line, naming the options) for those the landing does not yet draw toss by toss (the
+    rolling and pivoting resistances, :data:`coinflight.outcomes.table.PER_TOSS`)."""
+    from coinflight.outcomes.table import NO_RESISTANCE_DISTRIBUTIONS, PER_TOSS
+
+    given = contact_spread(
+        table.restitution,
+        table.friction,
+        table.surface_preset,
+        table.rolling_resistance,
+        table.pivoting_resistance,
+    )
+    spread = {name: d for name, d in given.items() if not d.is_fixed}
+    later = [f"{CONTACT_FLAGS[name]} {d.describe()}" for name, d in spread.items()
+             if name not in PER_TOSS]  # fmt: skip
+    if later:
+        raise ValueError(f"{', '.join(later)}: {NO_RESISTANCE_DISTRIBUTIONS}")
+    return spread
+
+
+def landing_coin(coin: Coin, table: TableArgs) -> Coin:
+    """``coin`` with the rim corner radius of --corner-radius (m), if given; ValueError naming
+    the option when it lies outside 0 to h/2 (the coin's own check and wording)."""
+    if table.corner_radius is None:
+        return coin
+    try:
+        return coin.with_corner_radius(table.corner_radius)
+    except ValueError as exc:
+        raise ValueError(f"--corner-radius: {exc}") from None
 
 
 def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | None:
@@ -163,23 +272,15 @@ class LandingChoice:
 
 
 def outcome_model(
-    kind: str,
-    drop_height: float | None,
-    restitution: str | None,
-    friction: str | None,
-    surface_preset: str | None,
-    drag: float | None,
-    spin_damping: float | None,
-    bounces: int | None = None,
-    ranged: bool = False,
+    table: TableArgs, air: AirArgs, bounces: int | None = None, ranged: bool = False
 ) -> LandingChoice | None:
     """None for the plain hand catch; else the surface, drag and outcome model to use
-    (``ranged``: --restitution and --friction may be distributions, read apart with
-    :func:`contact_spread`)."""
+    (``ranged``: the contact parameters may be distributions, read apart with
+    :func:`table_spread`)."""
     from coinflight import outcomes
 
-    the_surface = build_surface(kind, drop_height, restitution, friction, surface_preset, ranged)
-    the_drag = build_drag(drag, spin_damping)
+    the_surface = surface_from(table, ranged)
+    the_drag = build_drag(*air)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces and the_drag is None:
         return None
@@ -188,18 +289,11 @@ def outcome_model(
     )
 
 
-def table_outcome(
-    kind: str,
-    drop_height: float | None,
-    restitution: str | None,
-    friction: str | None,
-    surface_preset: str | None,
-    bounces: int | None,
-) -> dict[str, Any]:
+def table_outcome(table: TableArgs, bounces: int | None) -> dict[str, Any]:
     """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
     from coinflight.outcomes import outcome_model
 
-    the_surface = build_surface(kind, drop_height, restitution, friction, surface_preset)
+    the_surface = surface_from(table)
     check_bounces(the_surface, bounces)
     if not the_surface.bounces:
         return {}

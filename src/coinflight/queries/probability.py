@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from coinflight.queries.landing import LandingChoice, contact_spread, outcome_model
+from coinflight.queries.landing import LandingChoice, landing_coin, outcome_model, table_spread
 from coinflight.queries.values import AirArgs, DistArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -106,6 +106,7 @@ def probability_query(
     from coinflight.probability import registry
 
     estimator = registry.get(method)
+    coin = landing_coin(coin, table)
     if preset is not None:
         dist = preset_tosses(preset, coin, tosses.start, tosses.g, overrides or {})
     else:
@@ -128,19 +129,22 @@ def probability_query(
         raise ValueError(f"--seed applies to {seeded}, not {method}")
     if threads is not None and not estimator.parallel:
         raise ValueError(f"--threads does not apply to the {method} method")
-    landing = outcome_model(*table, *air, ranged=True)
-    # Distributions of e and μ (build_surface refused them for the hand; single values are in
-    # the surface) go with the tosses, drawn toss by toss.
-    given = contact_spread(table.restitution, table.friction, table.surface_preset)
-    spread = {name: d for name, d in given.items() if not d.is_fixed}
+    landing = outcome_model(table, air, ranged=True)
+    # Distributions of the contact parameters (build_surface refused them for the hand; single
+    # values are in the surface) go with the tosses, drawn toss by toss.
+    spread = table_spread(table)
     if spread:
         dist = dist.with_contact(**spread)
-    if landing is not None and landing.drag is not None and estimator.default_n and n is None:
+    if landing is not None and estimator.default_n and n is None:
+        slow = _slow_landing(landing)
         rate = landing.model.rate
-        if _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
+        if slow and _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
             raise ValueError(
-                _DRAG_NEEDS_N.format(
-                    method=method, rate=f"{rate:,.0f}", example=_drag_example(method, dist, rate)
+                _SLOW_NEEDS_N.format(
+                    why=slow,
+                    method=method,
+                    rate=f"{rate:,.0f}",
+                    example=_drag_example(method, dist, rate),
                 )
             )
     if landing is not None:
@@ -204,11 +208,21 @@ def result_warnings(result: Any) -> list[str]:
 
 
 _DRAG_DEFAULT_SECONDS = 60.0
-"""With air, the default size must run within this many seconds, else --n must be given."""
-_DRAG_NEEDS_N = (
-    "with --drag each toss is integrated through air (about {rate} tosses per second), so the "
-    "default size of --method {method} would run for minutes; give --n explicitly, e.g. {example}"
+"""With air or the contact ending, the default size must run within this many seconds, else
+--n must be given."""
+_SLOW_NEEDS_N = (
+    "with {why} (about {rate} tosses per second), so the default size of --method {method} "
+    "would run for minutes; give --n explicitly, e.g. {example}"
 )
+
+
+def _slow_landing(landing: LandingChoice) -> str:
+    """Why each toss of ``landing`` is slow (air, the 3-D contact ending), or "" if not."""
+    if landing.surface.ending == "contact":
+        return "--ending contact each landing is carried through the 3-D contact phase"
+    if landing.drag is not None:
+        return "--drag each toss is integrated through air"
+    return ""
 
 
 def _default_seconds(estimator: Estimator, dist: TossDistribution, model: Any) -> float:

@@ -7,7 +7,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from coinflight.queries.landing import build_drag, build_surface, check_bounces
+from coinflight.queries.landing import build_drag, check_bounces, landing_coin, surface_from
 from coinflight.queries.values import AirArgs, TableArgs, TossArgs, build_toss
 
 if TYPE_CHECKING:
@@ -41,11 +41,11 @@ def toss_query(
     coin: Coin, args: TossArgs, table: TableArgs, air: AirArgs, bounces: int | None
 ) -> TossQuery:
     """The options of ``coinflight toss`` checked in the command line's order (surface, air,
-    bounces, then the toss)."""
-    surface = build_surface(*table)
+    bounces, the coin's corner radius, then the toss)."""
+    surface = surface_from(table)
     drag = build_drag(*air)
     check_bounces(surface, bounces)
-    return TossQuery(coin, build_toss(args), surface, drag, bounces)
+    return TossQuery(landing_coin(coin, table), build_toss(args), surface, drag, bounces)
 
 
 def toss_payload(query: TossQuery) -> dict[str, Any]:

@@ -103,13 +103,19 @@ class DistArgs(NamedTuple):
 
 class TableArgs(NamedTuple):
     """Where the toss ends, as typed: --surface and the table's options (None: not given),
-    --surface-preset last."""
+    --surface-preset, then the contact ending's options: --ending, --rolling-resistance,
+    --pivoting-resistance (texts: a distribution where a probability takes one) and the coin's
+    --corner-radius (m)."""
 
     surface: str
     drop_height: float | None
     restitution: str | None
     friction: str | None
     surface_preset: str | None
+    ending: str | None = None
+    rolling_resistance: str | None = None
+    pivoting_resistance: str | None = None
+    corner_radius: float | None = None
 
 
 class AirArgs(NamedTuple):

@@ -106,7 +106,7 @@ def basin(
         "cells",
         "use a coarser resolution (e.g. 400 or 600x300)",
     )
-    model = table_outcome(*table, bounces).get("outcome")
+    model = table_outcome(table, bounces).get("outcome")
     if model is not None:
         budget(f"a map of {cells:,} table landings", cells / model.rate, time_limit,
                "use a coarser resolution")  # fmt: skip

@@ -112,6 +112,36 @@ Restitution = Annotated[
 Friction = Annotated[
     str | None, _q("table: Coulomb friction coefficient ≥ 0 (probability: also a distribution).")
 ]
+Ending = Annotated[
+    str | None,
+    _q(
+        "table: how a landing ends once its bounces die out: rocking (default; a planar "
+        "hand-off, fast) or contact (the coin in 3-D contact until it cannot leave its well; "
+        "experimental, about 300 landings a second). As --ending."
+    ),
+]
+RollingResistance = Annotated[
+    str | None,
+    _q(
+        "table, ending=contact: rolling resistance length, m, 0 to 0.01 (default 1e-4); not "
+        "measured for coins, quote a band over 1e-5 to 1e-3. As --rolling-resistance."
+    ),
+]
+PivotingResistance = Annotated[
+    str | None,
+    _q(
+        "table, ending=contact: pivoting (drilling) resistance length, m, 0 to 0.01 (default "
+        "1e-4); not measured for coins, quote a band over 1e-5 to 1e-3. As "
+        "--pivoting-resistance."
+    ),
+]
+CornerRadius = Annotated[
+    float | None,
+    _q(
+        "table: radius of the coin's rounded rim corners, m, 0 to half the thickness (default "
+        "0: sharp); not measured for coins, quote a band. As --corner-radius."
+    ),
+]
 Drag = Annotated[float | None, _q("Air drag coefficient C_d ≥ 0 (integrated numerically).")]
 SpinDamping = Annotated[float | None, _q("Damping torque −K ω on the spin, N m s ≥ 0.")]
 Bounces = Annotated[int | None, _q("table: stop at the contact after K bounces.")]
@@ -130,10 +160,24 @@ def table_args(
     drop_height: DropHeight = None,
     restitution: Restitution = None,
     friction: Friction = None,
+    ending: Ending = None,
+    rolling_resistance: RollingResistance = None,
+    pivoting_resistance: PivotingResistance = None,
+    corner_radius: CornerRadius = None,
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
-    return TableArgs(surface, drop_height, restitution, friction, None)
+    return TableArgs(
+        surface,
+        drop_height,
+        restitution,
+        friction,
+        None,
+        ending,
+        rolling_resistance,
+        pivoting_resistance,
+        corner_radius,
+    )
 
 
 def air_args(drag: Drag = None, spin_damping: SpinDamping = None) -> AirArgs:
