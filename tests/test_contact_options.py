@@ -135,7 +135,9 @@ def test_a_rounded_rim_changes_nothing_before_the_landing_ends():
          "no rolling or pivoting resistance)"),
         (["--ending", "rocking", "--pivoting-resistance", "1e-4"], None),
         (["--ending", "contact", "--rolling-resistance", "1e-5:1e-3"],
-         f"--rolling-resistance 1e-05–0.001: {NO_RESISTANCE_DISTRIBUTIONS}"),
+         "--rolling-resistance 1e-05–0.001: this command takes a single value; a distribution "
+         "of a contact parameter is for coinflight probability --method monte-carlo, qmc or grid, "
+         "which integrate over it"),
     ],
 )  # fmt: skip
 def test_bad_contact_options_are_one_line_exit_2(args, message):
@@ -220,9 +222,10 @@ def test_probability_refuses_a_default_size_the_contact_ending_would_run_for_min
     )
 
 
-def test_resistance_distributions_are_checked_then_refused_not_ignored():
-    """The model takes them (checked against 0 to 1 cm, truncated normals); the table landing,
-    whose kernel draws only e and μ per toss, refuses them in one line (library and CLI)."""
+def test_resistance_distributions_are_drawn_toss_by_toss_in_the_contact_ending_only():
+    """The model takes them (checked against 0 to 1 cm, truncated normals); the contact ending
+    draws them toss by toss (tests/test_contact_spread.py: each toss as on its own surface);
+    the rocking ending, which has no resistance, refuses them in one line (library and CLI)."""
     dist = TossDistribution(
         Uniform(150, 300), flight_time=Uniform(0.4, 0.6), rolling_resistance=Uniform(1e-5, 1e-3)
     )
@@ -237,12 +240,17 @@ def test_resistance_distributions_are_checked_then_refused_not_ignored():
     )
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         dist.with_contact(pivoting_resistance=Uniform(0.0, 0.02))  # the range, named
-    model = TableLanding(Surface("table", 0.8, ending="contact"))
+    rocking = TableLanding(Surface("table", 0.8))
     with pytest.raises(ValueError, match=re.escape(NO_RESISTANCE_DISTRIBUTIONS)):
-        estimate(dist, "monte-carlo", n=10, seed=1, model=model)
-    said = one_line_error(*PROBABILITY, "--pivoting-resistance", "normal:1e-4,5e-5", "--n", "10")
-    assert said.startswith("--pivoting-resistance normal(0.0001, sd 5e-05)")
-    assert said.endswith(NO_RESISTANCE_DISTRIBUTIONS)
+        estimate(dist, "monte-carlo", n=10, seed=1, model=rocking)
+    contact = TableLanding(Surface("table", 0.8, ending="contact"))
+    first = estimate(dist, "monte-carlo", n=20, seed=1, model=contact)
+    again = estimate(dist, "monte-carlo", n=20, seed=1, model=contact)
+    assert first.counts == again.counts and sum(first.counts) == 20
+    out = _json(*PROBABILITY, "--pivoting-resistance", "normal:1e-4,5e-5", "--method",
+                "monte-carlo", "--n", "20", "--seed", "3", "-q")  # fmt: skip
+    assert out["pivoting_resistance"]["kind"] == "truncated-normal"  # to 0 to 0.01 m
+    assert sum(out["counts"].values()) == 20
 
 
 def test_the_work_bounds_know_the_contact_endings_rate():

@@ -90,7 +90,9 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
     e = rng.uniform(0.0, 0.9, n)
     mu = rng.uniform(0.0, 1.0, n)
     base = _contact(coin, 0.5, 0.3)
-    assert bounce.with_surface(base, 0.2, 0.7) == base._replace(restitution=0.2, friction=0.7)
+    assert bounce.with_surface(base, 0.2, 0.7, 1e-4, 2e-4) == base._replace(
+        restitution=0.2, friction=0.7, rolling_resistance=1e-4, pivoting_resistance=2e-4
+    )
     together = bounce.land(omega, speed, 1.0, base, restitution=e, friction=mu)
     for k in range(n):
         alone = bounce.land(omega[k : k + 1], speed[k : k + 1], 1.0, _contact(coin, e[k], mu[k]))
@@ -103,6 +105,48 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
     )
     for a, b in zip(plain, same, strict=True):
         np.testing.assert_array_equal(a, b)
+
+
+def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
+    # The 3-D contact ending (the only one the resistances act in): tosses given their own
+    # rolling and pivoting resistance land exactly as each on its own surface.
+    from coinflight.core.contact import CONTACT_ENDING
+
+    coin = Coin.preset("us-nickel")
+    rng = np.random.default_rng(8)
+    n = 24
+    omega = np.column_stack([rng.uniform(150, 300, n), rng.uniform(-5, 5, n), np.full(n, 20.0)])
+    speed = rng.uniform(2.0, 3.0, n)
+    rolling = rng.uniform(1e-5, 1e-3, n)
+    pivoting = rng.uniform(1e-5, 1e-3, n)
+
+    def record(lr, lp):
+        return _contact_ending(coin, CONTACT_ENDING, lr, lp)
+
+    base = record(1e-4, 1e-4)
+    together = bounce.land(
+        omega, speed, 1.0, base, rolling_resistance=rolling, pivoting_resistance=pivoting
+    )
+    settle_differs = 0
+    for k in range(n):
+        alone = bounce.land(
+            omega[k : k + 1], speed[k : k + 1], 1.0, record(rolling[k], pivoting[k])
+        )
+        for a, b in zip(together, alone, strict=True):
+            assert a[k] == b[0]
+        plain = bounce.land(omega[k : k + 1], speed[k : k + 1], 1.0, base)
+        settle_differs += plain[3][0] != alone[3][0]
+    assert settle_differs > 0  # the resistances did reach the kernel (they change settle times)
+
+
+def _contact_ending(coin, ending, rolling, pivoting):
+    return coin_contact(
+        coin,
+        drop_height=0.3,
+        ending=ending,
+        rolling_resistance=float(rolling),
+        pivoting_resistance=float(pivoting),
+    )
 
 
 # --- the estimators integrate over them ------------------------------------------------------

@@ -52,7 +52,8 @@ CORNER_HELP = (
 )
 """--corner-radius's help."""
 _SPREAD_RESISTANCE = (
-    " probability: LOW:HIGH or normal:MEAN,SD are read but not yet drawn toss by toss (refused)."
+    " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal one"
+    " truncated to 0 to 0.01 m), drawn toss by toss."
 )
 TABLE = Group(
     {

@@ -398,9 +398,10 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
 
 
 @njit(cache=True)
-def with_surface(c, restitution, friction):
-    """The contact record ``c`` with this toss's restitution and friction (the other fields
-    as they are): a per-toss surface for distributions of e and μ. The damping ratio of the
+def with_surface(c, restitution, friction, rolling_resistance, pivoting_resistance):
+    """The contact record ``c`` with this toss's restitution, friction and rolling and pivoting
+    resistance (the other fields as they are): a per-toss surface for distributions of what
+    is not measured. The damping ratio of the
     contact phase stays that of the surface's e, with ``damping_restitution`` telling
     :func:`coinflight.core.contact_phase.settle` to recompute it for another e."""
     return Contact(
@@ -417,8 +418,8 @@ def with_surface(c, restitution, friction):
         c.reach,
         c.edge_sine,
         c.barrier,
-        c.rolling_resistance,
-        c.pivoting_resistance,
+        rolling_resistance,
+        pivoting_resistance,
         c.contact_time,
         c.damping_ratio,
         c.damping_restitution,
@@ -431,8 +432,8 @@ def _batch_kernel(parallel: bool) -> Any:
     """The loop over a batch, compiled for numba's threads (parallel) or for the calling thread
     with the GIL released. One source; the closure's ``loop`` keeps the two apart in numba's
     on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables).
-    Each toss lands with its own restitution and friction (``restitution[k]``,
-    ``friction[k]``) on the surface of ``contact``."""
+    Each toss lands with its own restitution, friction and resistances (``restitution[k]``,
+    ``friction[k]``, ``rolling[k]``, ``pivoting[k]``) on the surface of ``contact``."""
     loop = prange if parallel else range
 
     def batch(
@@ -442,6 +443,8 @@ def _batch_kernel(parallel: bool) -> Any:
         contact,
         restitution,
         friction,
+        rolling,
+        pivoting,
         max_bounces,
         face,
         bounces,
@@ -454,7 +457,7 @@ def _batch_kernel(parallel: bool) -> Any:
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
-                with_surface(contact, restitution[k], friction[k]),
+                with_surface(contact, restitution[k], friction[k], rolling[k], pivoting[k]),
                 max_bounces,
             )
             face[k] = f
@@ -480,6 +483,8 @@ def land(
     parallel: bool = True,
     restitution: NDArray[np.float64] | None = None,
     friction: NDArray[np.float64] | None = None,
+    rolling_resistance: NDArray[np.float64] | None = None,
+    pivoting_resistance: NDArray[np.float64] | None = None,
 ) -> tuple[
     NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
 ]:
@@ -505,6 +510,9 @@ def land(
     restitution, friction : ndarray, shape (n,), optional
         Each toss's own coefficient of restitution and of friction (distributions of what is
         not measured); by default the contact's single values.
+    rolling_resistance, pivoting_resistance : ndarray, shape (n,), optional
+        Each toss's own rolling and pivoting resistance, m (used by the contact ending only);
+        by default the contact's single values.
 
     Returns
     -------
@@ -528,9 +536,24 @@ def land(
     status = np.empty(n, dtype=np.int8)
     e = _per_toss(contact.restitution if restitution is None else restitution, n)
     mu = _per_toss(contact.friction if friction is None else friction, n)
+    rolling = contact.rolling_resistance if rolling_resistance is None else rolling_resistance
+    pivoting = contact.pivoting_resistance if pivoting_resistance is None else pivoting_resistance
     kernel = _land_batch if parallel else _land_batch_serial
     kernel(
-        omega, sign, speed, contact, e, mu, int(max_bounces), face, bounces, first, settle, status
+        omega,
+        sign,
+        speed,
+        contact,
+        e,
+        mu,
+        _per_toss(rolling, n),
+        _per_toss(pivoting, n),
+        int(max_bounces),
+        face,
+        bounces,
+        first,
+        settle,
+        status,
     )
     return face, bounces, first, settle, status
 

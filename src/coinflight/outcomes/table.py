@@ -83,14 +83,17 @@ NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
 )
 """The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
 
-PER_TOSS = ("restitution", "friction")
+PER_TOSS = ("restitution", "friction", "rolling_resistance", "pivoting_resistance")
 """The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
-``restitution`` and ``friction`` arrays)."""
+``restitution``, ``friction``, ``rolling_resistance`` and ``pivoting_resistance`` arrays; the
+resistances act in the contact ending only, :data:`RESISTANCES`)."""
+
+RESISTANCES = ("rolling_resistance", "pivoting_resistance")
+"""The contact parameters only the 3-D contact ending (``Surface(ending="contact")``) uses."""
 
 NO_RESISTANCE_DISTRIBUTIONS = (
-    "rolling and pivoting resistance distributions are not yet drawn toss by toss (the landing "
-    "kernel takes restitution and friction per toss only): give single values, or sweep them "
-    "(coinflight sweep --rolling-resistance LIST) and quote the band"
+    "rolling and pivoting resistance act only in the 3-D contact ending (--ending contact, "
+    "Surface(ending='contact')); the rocking ending has none to draw toss by toss"
 )
 """The refusal of per-toss rolling and pivoting resistances (one line, CLI and library)."""
 
@@ -174,8 +177,9 @@ def land(
 
     Without drag this is the parallel event-driven kernel :func:`coinflight.core.bounce.land`;
     with drag the compiled integrator :func:`coinflight.core.drag.land` (the same impacts and
-    endings). ``contact`` gives tosses their own ``restitution`` and/or ``friction`` (arrays of
-    shape (n,), checked by the caller; :meth:`~coinflight.model.ensemble.TossDistribution.
+    endings). ``contact`` gives tosses their own ``restitution``, ``friction``,
+    ``rolling_resistance`` and/or ``pivoting_resistance`` (:data:`PER_TOSS`; arrays of shape
+    (n,), checked by the caller; :meth:`~coinflight.model.ensemble.TossDistribution.
     contact_values`) in place of the surface's; not with drag.
     """
     if not isinstance(surface, Surface):
@@ -236,6 +240,8 @@ def land(
         parallel=parallel,
         restitution=per_toss.get("restitution"),
         friction=per_toss.get("friction"),
+        rolling_resistance=per_toss.get("rolling_resistance"),
+        pivoting_resistance=per_toss.get("pivoting_resistance"),
     )
     return LandingOutcome(face, bounces, first, settle, status)
 
@@ -347,9 +353,14 @@ class TableLanding(OutcomeModel):
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
-        """Restitution and friction (:data:`PER_TOSS`) may vary toss by toss, except through
-        air (not yet); the rolling and pivoting resistances not yet (:attr:`contact_refusal`)."""
-        return PER_TOSS if self.drag is None else ()
+        """Restitution and friction may vary toss by toss, and with the contact ending the
+        rolling and pivoting resistances too (:data:`PER_TOSS`); none through air (not yet:
+        :attr:`contact_refusal`)."""
+        if self.drag is not None:
+            return ()
+        if self.surface.ending == "contact":
+            return PER_TOSS
+        return tuple(name for name in PER_TOSS if name not in RESISTANCES)
 
     @property
     def contact_refusal(self) -> str:  # type: ignore[override]
@@ -498,6 +509,7 @@ __all__ = [
     "MAX_BOUNCES",
     "NO_RESISTANCE_DISTRIBUTIONS",
     "PER_TOSS",
+    "RESISTANCES",
     "STATUS_NAMES",
     "Landing",
     "LandingOutcome",

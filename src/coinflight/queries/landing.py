@@ -71,14 +71,9 @@ def single_values(
 ) -> dict[str, float]:
     """The contact parameters of ``spread`` as single numbers; ValueError (one line) for a
     distribution, which only a probability integrates over."""
-    from coinflight.outcomes.table import NO_RESISTANCE_DISTRIBUTIONS, PER_TOSS
-
     ranged = [
         f"{CONTACT_FLAGS[name]} {d.describe()}" for name, d in spread.items() if not d.is_fixed
     ]
-    per_toss = [name for name, d in spread.items() if not d.is_fixed and name in PER_TOSS]
-    if len(per_toss) < len(ranged):
-        raise ValueError(f"{', '.join(ranged)}: {NO_RESISTANCE_DISTRIBUTIONS}")
     if ranged:
         raise ValueError(
             f"{', '.join(ranged)}: {command} takes a single value; a distribution of a contact "
@@ -189,11 +184,10 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
 
 def table_spread(table: TableArgs) -> dict[str, Distribution]:
     """The contact parameters the table options spread over the tosses (distributions only;
-    single values are in the surface): :func:`contact_spread` of every one of them; ValueError
-    (one line, naming the options) for those the landing does not yet draw toss by toss (the
-    rolling and pivoting resistances, :data:`coinflight.outcomes.table.PER_TOSS`)."""
-    from coinflight.outcomes.table import NO_RESISTANCE_DISTRIBUTIONS, PER_TOSS
-
+    single values are in the surface): :func:`contact_spread` of every one of them. The
+    landing draws them toss by toss (:data:`coinflight.outcomes.table.PER_TOSS`; the rolling
+    and pivoting resistances with --ending contact only, checked by :func:`build_surface` and by
+    the outcome model)."""
     given = contact_spread(
         table.restitution,
         table.friction,
@@ -201,12 +195,7 @@ def table_spread(table: TableArgs) -> dict[str, Distribution]:
         table.rolling_resistance,
         table.pivoting_resistance,
     )
-    spread = {name: d for name, d in given.items() if not d.is_fixed}
-    later = [f"{CONTACT_FLAGS[name]} {d.describe()}" for name, d in spread.items()
-             if name not in PER_TOSS]  # fmt: skip
-    if later:
-        raise ValueError(f"{', '.join(later)}: {NO_RESISTANCE_DISTRIBUTIONS}")
-    return spread
+    return {name: d for name, d in given.items() if not d.is_fixed}
 
 
 def landing_coin(coin: Coin, table: TableArgs) -> Coin:
