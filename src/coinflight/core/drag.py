@@ -54,27 +54,34 @@ rule, three evaluations of the acceleration with Simpson's weights on those stag
 Nørsett & Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., 1993, §II.1, Table
 1.1); elsewhere (a slow spin's longer steps, a light coin near its terminal speed) it is
 classical RK4, four evaluations. For a toss the two differ only through the velocity
-dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step: both sample the attitude's
-time dependence, which dominates the error, at the same stages with the same weights. Both are
-exact for the vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too.
-A step turns the coin by at most ``TURN_STEP`` rad (the projected area changes with the
-attitude), lasts at most ``MAX_STEP`` s and at most ``DRAG_STEP``/(c |v|). In the landing, a
-step that cannot bring any point of the coin to the surface (its centre stays higher than the
-coin's reach, falling at most −min(v_z, 0) h + g h²/2: falling, the drag only slows it) skips
-the contact search.
+dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step. Both are exact for the
+vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too. The face
+drag's share of each step, −c π r² ∫ |n·v| v dt, is not left to the rule's Simpson weights
+(which integrate the kink of |n·v| twice a turn to first order, and the turning attitude with a
+relative error (θ/2)⁴/180 of one sign for a turn θ a step): :func:`kink_integrals` interpolates
+n·v and (n·v) v on the three stages in the basis 1, cos, sin of the turn (exact for a frozen v
+and a uniform turn, Rodrigues' formula), locates the kinks in closed form and integrates piece
+by piece; the step's velocity and height are corrected by the difference. The side's share
+(2 r h |n × v|, 12 % of the face's on a nickel) keeps the rule's weights.
+A step turns the coin by at most ``TURN_STEP`` rad without damping, ``DAMPED_TURN_STEP`` with
+it (the projected area changes with the attitude), lasts at most ``MAX_STEP`` s and at most
+``DRAG_STEP``/(c |v|). In the landing, a step that cannot bring any point of the coin to the
+surface (its centre stays higher than the coin's reach, falling at most −min(v_z, 0) h + g h²/2:
+falling, the drag only slows it) skips the contact search.
 
-Accuracy. The area's |n·v̂| has a kink twice a turn, which the steps sample with errors of either
-sign; against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
-time of 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0 1.5-3 m/s)
-differs by 8e-7 s (median) and 2e-6 s (worst) and n_z by at most 4e-4, and their first contact
-with a table 0.8 m below launch by 3e-7 s (median) and 2.4e-6 s (worst); the same to two digits
-as with RK4 in every step (tests/test_drag.py checks 1e-5 s on a handful). For scale, the drag
-itself moves the catch by ~4e-3 s and a 10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 +
-(√5 − 1)/2) ≈ 0.95 rad keeps the step incommensurate with the half turn, so the kinks fall at
-well spread phases of the steps: at 2π/6.5 they fell at the same phase and the errors added up
-(3e-5 s), and so they did (to 3e-5 s) when the step followed the speed (a step ∝ 1/|v|, which
-would have balanced the errors, drifts slowly through the phases). Steps of 2π/(4 + ...) ≈ 1.37
-rad or 2π/(3 + ...) ≈ 1.74 rad are 1.4 and 1.75 times fewer but double and triple those errors.
+Accuracy. Against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
+time of the first 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0
+1.5-3 m/s, heads up) differs by 3.1e-7 s (median) and 1.4e-6 s (worst) and n_z by at most
+2e-4, and their first contact with a table 0.8 m below launch by 7.7e-7 s (median) and 1.8e-6
+s (worst); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
+integrator, 2.5 times as many steps) 6.1e-7 and 3.2e-6 s (catch), 3.2e-7 and 2.1e-6 s (first
+contact). Against the same integrator with steps of 0.02 rad (itself within 6e-9 s of DOP853)
+the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e-7 at 2.0,
+4.1e-7/9.6e-7 at 2.2, 3.1e-7/1.4e-6 at 2.4, 3.9e-6/1.2e-5 at 3.0; without the kink integrals
+3.2e-7/2.0e-6 at 0.95, 4.4e-6/1.8e-5 at 2.2, 1.3e-4/3.4e-4 at 3.0. ``TURN_STEP`` = 2π/(2 +
+(√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
+phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
+of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
