@@ -277,7 +277,7 @@ def test_kink_integrals_are_exact_for_a_uniform_turn(seed):
     gs = [g(0.0), g(0.5), g(1.0)]
     qs = [tuple(gk * vel) for gk in gs]
     c, s = math.cos(theta / 2), math.sin(theta / 2)
-    got, got_z = air_kernels.kink_integrals(gs[0], gs[1], gs[2], qs[0], qs[1], qs[2], c, s)
+    got, got_z = air_kernels.kink_integrals(gs[0], gs[1], gs[2], qs[0], qs[1], qs[2], c, s, theta)
     want = integral(lambda x: 1.0)
     np.testing.assert_allclose(got, want * vel, rtol=0, atol=1e-12)
     assert got_z == pytest.approx(integral(lambda x: 1.0 - x) * vel[2], abs=1e-12)

@@ -339,7 +339,7 @@ def step(z, v, n, u, t0, h, a0, b0, air):
     rule or RK4, see the module notes) and the Magnus half steps of the attitude (n, u); t0
     counts from the setting of a0, b0."""
     axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
-    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s)
+    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, 2.0 * math.atan2(s, c))
 
 
 @njit(cache=True)
@@ -454,25 +454,25 @@ def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
 
 
 @njit(cache=True)
-def kink_integrals(g0, gm, g2, q0, qm, q2, c, s):
+def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
 
     x is the time in units of the step; g = n·v and the vector Q = (n·v) v are known at the
     stages x = 0, 1/2, 1 (``g0, gm, g2``; ``q0, qm, q2``); ``c, s`` are the cosine and sine of
-    the coin's turn θ/2 over half the step. While the coin turns uniformly about a fixed axis
-    (no damping) and v is frozen, n·v = p + q cos θx + r sin θx exactly (Rodrigues' formula),
-    and so is each component of Q: both are interpolated on the three nodes in the basis 1,
-    cos θx, sin θx, the roots of g found in closed form (p + R cos(θx − δ) = 0, δ = atan2(r, q))
-    and sign(g) Q integrated exactly piece by piece. Only the change of v within the step
-    (gravity, the drag) and, with damping, the turn's non-uniformity are left to the
-    interpolation. This is quadrature of a piecewise-smooth integrand with its breakpoints
-    located (Davis & Rabinowitz, *Methods of Numerical Integration*, 2nd ed., 1984, §2.12)
-    with trigonometric interpolation for the rotation, in place of the Runge-Kutta rule's own
-    Simpson weights (Hairer, Nørsett & Wanner, *Solving Ordinary Differential Equations I*,
-    2nd ed., 1993, §II.1), which integrate the kink of |n·v| to first order only and the
-    turning attitude with a relative error (θ/2)⁴/180 of one sign. Below a turn of
-    ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is used
-    (:func:`kink_weights`).
+    the coin's turn θ/2 over half the step, ``theta`` is θ. While the coin turns uniformly about
+    a fixed axis (no damping) and v is frozen, n·v = p + q cos θx + r sin θx exactly (Rodrigues'
+    formula), and so is each component of Q: both are interpolated on the three nodes in the
+    basis 1, cos θx, sin θx, the roots of g found in closed form (with t = tan(θx/2), p + q cos
+    θx + r sin θx = 0 is a quadratic in t) and sign(g) Q integrated exactly piece by piece. Only
+    the change of v within the step (gravity, the drag) and, with damping, the turn's
+    non-uniformity are left to the interpolation. This is quadrature of a piecewise-smooth
+    integrand with its breakpoints located (Davis & Rabinowitz, *Methods of Numerical
+    Integration*, 2nd ed., 1984, §2.12) with trigonometric interpolation for the rotation, in
+    place of the Runge-Kutta rule's own Simpson weights (Hairer, Nørsett & Wanner, *Solving
+    Ordinary Differential Equations I*, 2nd ed., 1993, §II.1), which integrate the kink of |n·v|
+    to first order only and the turning attitude with a relative error (θ/2)⁴/180 of one sign.
+    Below a turn of ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is
+    used (:func:`kink_weights`).
     """
     if c > TRIG_COS or c <= 0.0:
         w0, w1, w2, m0, m1, m2, _ = kink_weights(g0, gm, g2)
@@ -484,7 +484,6 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s):
             ),
             m0 * q0[2] + m1 * qm[2] + m2 * q2[2],
         )
-    theta = 2.0 * math.atan2(s, c)
     cc = c * c - s * s  # cos θ
     ss = 2.0 * c * s  # sin θ
     # Nodes 0, 1/2, 1: f = p + q, p + q c + r s, p + q C + r S; solved for (p, q, r).
@@ -562,9 +561,10 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s):
 
 
 @njit(cache=True)
-def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
-    """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation`:
-    without damping the same for every step of the same length, so computed once for them.
+def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
+    """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation` and
+    twice its angle ``theta``: without damping the same for every step of the same length, so
+    computed once for them.
 
     Where n·v changes sign within the step (the face's projected area π r² |n·v̂| has its kink
     there), the face drag's share of the step is integrated with :func:`kink_weights` instead
@@ -637,7 +637,7 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
         g2 = dot(n2, vb)
         q0 = (g0 * v[0], g0 * v[1], g0 * v[2])
         q2 = (g2 * vb[0], g2 * vb[1], g2 * vb[2])
-        corrected, corrected_z = kink_integrals(g0, gm, g2, q0, qm, q2, c_half, s_half)
+        corrected, corrected_z = kink_integrals(g0, gm, g2, q0, qm, q2, c_half, s_half, theta)
         # Corrected minus applied face drag (both times −c π r²): velocity and height.
         fd = -air.drag_factor * math.pi * air.radius * air.radius
         a0_ = abs(g0)
@@ -698,13 +698,14 @@ def catch_one(omega_body, start_sign, launch_speed, air):
     z = 0.0
     v = (0.0, 0.0, launch_speed)
     t = 0.0
-    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
     for _ in range(MAX_STEPS):
         h = step_size(v, t, a0, b0, air)
         if h != hc or air.spin_damping > 0.0:
             hc = h
             axis, cr, sr = rotation(n, u, t, 0.5 * h, a0, b0, air)
-        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr)
+            th = 2.0 * math.atan2(sr, cr)
+        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr, th)
         if v1[2] < 0.0 and z1 <= 0.0:
             # Newton on the length of one step from (z, v, n, u) at t: z(τ) = 0, z'(τ) = v_z.
             lo = 0.0
@@ -789,7 +790,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
     first = -1.0
     rising = True  # the contact is looked for from the apex on, as without air
     impacts = 0
-    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
     for _ in range(MAX_STEPS):
         if impacts >= MAX_IMPACTS:
             break
@@ -801,7 +802,8 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+                th = 2.0 * math.atan2(sr, cr)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
             z, v, n, u = z1, v1, n1, u1
             t += h
             tr += h
@@ -830,7 +832,8 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+                th = 2.0 * math.atan2(sr, cr)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
             lm1 = angular_momentum(n1, u1, tr + h, a0, b0, air)
             g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
             if g1 >= -CA_TOLERANCE:
