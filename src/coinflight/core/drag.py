@@ -631,10 +631,13 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
             0.5 * (aa * va[2] + ab * vb[2]),
         )
         vb = vc
-    if air.projected > 0.0:
-        # The face drag's share of the step by kink_integrals in place of the rule's own.
-        g0 = dot(n, v)
-        g2 = dot(n2, vb)
+    g0 = dot(n, v)
+    g2 = dot(n2, vb)
+    # The face drag's share of the step by kink_integrals in place of the rule's own; not for a
+    # short turn (below TRIG_KINK: the quadratic interpolant) in which n·v keeps its sign at the
+    # stages, where both are Simpson's rule.
+    same = (g0 > 0.0) == (gm > 0.0) and (gm > 0.0) == (g2 > 0.0)
+    if air.projected > 0.0 and (c_half <= TRIG_COS or not same):
         q0 = (g0 * v[0], g0 * v[1], g0 * v[2])
         q2 = (g2 * vb[0], g2 * vb[1], g2 * vb[2])
         corrected, corrected_z = kink_integrals(g0, gm, g2, q0, qm, q2, c_half, s_half, theta)
