@@ -1,7 +1,7 @@
 """Speed of tosses through air (issue 11): the compiled integrator against the vacuum models.
 
     python benchmarks/bench_air.py                          # air vs vacuum + SciPy reference
-    python benchmarks/bench_air.py --old-src /path/to/src   # + the previous implementation
+    python benchmarks/bench_air.py --old-src /path/to/src   # + another implementation
     python benchmarks/bench_air.py --quick
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
@@ -18,8 +18,9 @@ and each air case is given as a ratio to its vacuum model timed in the same roun
 - the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
   toss at a time: the previous product path's method and tolerance) on the first tosses,
 - with ``--old-src DIR``: another implementation (``coinflight`` imported from DIR in a
-  subprocess, after one toss of each to compile) on the first ``--old-n`` tosses, hand and
-  table to rest.
+  subprocess with its own numba cache folder, after a few tosses of each to compile) on the
+  same tosses and cases, one round of it in each round of these; e.g. ``--old-src
+  /path/to/main/src`` for the before/after ratios.
 
 The load average is printed before and after: absolute rates on a shared machine vary with it.
 """
@@ -32,6 +33,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -55,17 +57,47 @@ from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.air import catch_with_drag
 from coinflight.outcomes.table import land
 a = json.loads(sys.argv[1])
-omega, v0 = np.array(a["omega"]), np.array(a["v0"])
+rng = np.random.default_rng(a["seed"])
+n = a["n"]
+omega = np.column_stack(
+    [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
+)
+v0 = rng.uniform(1.5, 3.0, n)
 coin = Coin.preset("us-nickel")
 drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
 surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
-catch_with_drag(coin, omega[:1], v0[:1], 1.0, 9.81, drag)  # compile or load the cache
-land(coin, omega[:1], v0[:1], 1.0, 9.81, surface, drag)
-t0 = time.perf_counter(); catch_with_drag(coin, omega, v0, 1.0, 9.81, drag)
-t1 = time.perf_counter(); land(coin, omega, v0, 1.0, 9.81, surface, drag)
-t2 = time.perf_counter()
-print(json.dumps({"hand": len(v0) / (t1 - t0), "table": len(v0) / (t2 - t1)}))
+cases = {
+    "hand": lambda p: catch_with_drag(coin, omega, v0, 1.0, 9.81, drag, parallel=p),
+    "table first contact": lambda p: land(
+        coin, omega, v0, 1.0, 9.81, surface, drag, max_bounces=0, parallel=p
+    ),
+    "table to rest": lambda p: land(coin, omega, v0, 1.0, 9.81, surface, drag, parallel=p),
+}
+for p in (True, False):  # compile or load the cache
+    catch_with_drag(coin, omega[:10], v0[:10], 1.0, 9.81, drag, parallel=p)
+    land(coin, omega[:10], v0[:10], 1.0, 9.81, surface, drag, parallel=p)
+out = {}
+for k, f in cases.items():
+    if a["cpu"]:
+        t0 = time.process_time(); f(False); out[k] = n / (time.process_time() - t0)
+    else:
+        t0 = time.perf_counter(); f(True); out[k] = n / (time.perf_counter() - t0)
+print(json.dumps(out))
 """
+
+
+def _other(args: argparse.Namespace, n: int, cache: str, *, cpu: bool) -> dict[str, float]:
+    """One round of the other implementation's cases (``--old-src``) in a subprocess, its numba
+    cache in ``cache`` (not in its sources): rates a second of wall time, or with ``cpu`` of
+    CPU time in one thread."""
+    payload = json.dumps(
+        {"n": n, "seed": 2026, "cd": args.drag, "k": args.spin_damping, "cpu": cpu}
+    )
+    env = dict(os.environ, PYTHONPATH=args.old_src, NUMBA_CACHE_DIR=cache)
+    out = subprocess.run(
+        [sys.executable, "-c", OLD, payload], env=env, capture_output=True, text=True, check=True
+    )
+    return dict(json.loads(out.stdout))
 
 
 def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
@@ -104,7 +136,6 @@ def main() -> None:
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
     parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
-    parser.add_argument("--old-n", type=int, default=None, help="tosses for it (--reference)")
     args = parser.parse_args()
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
@@ -134,11 +165,17 @@ def main() -> None:
     cases = {("air", k): f for k, f in air_cases.items()}
     cases.update({("vacuum", k): f for k, f in vacuum_cases.items()})
     times: dict[tuple[str, str], list[float]] = {key: [] for key in cases}
-    for _ in range(args.repeats):
-        for key, fn in cases.items():
-            t0 = time.perf_counter()
-            fn()
-            times[key].append(time.perf_counter() - t0)
+    old_rates: dict[str, list[float]] = {name: [] for name in air_cases}
+    with tempfile.TemporaryDirectory() as cache:
+        for _ in range(args.repeats):
+            for key, fn in cases.items():
+                t0 = time.perf_counter()
+                fn()
+                times[key].append(time.perf_counter() - t0)
+            if args.old_src:  # one round of the other implementation in each round of these
+                for name, rate in _other(args, n, cache, cpu=False).items():
+                    old_rates[name].append(rate)
+        old_cpu = _other(args, n, cache, cpu=True) if args.old_src else {}
     rates = {key: n / statistics.median(ts) for key, ts in times.items()}
     for name in air_cases:
         air_rate, vacuum_rate = rates[("air", name)], rates[("vacuum", name)]
@@ -172,29 +209,13 @@ def main() -> None:
         f"compiled / SciPy = {rates[('air', 'hand')] / scipy_rate:,.0f}"
     )
     if args.old_src:
-        old_n = args.old_n or m
-        payload = json.dumps(
-            {
-                "omega": omega[:old_n].tolist(),
-                "v0": v0[:old_n].tolist(),
-                "cd": args.drag,
-                "k": args.spin_damping,
-            }
-        )
-        env = dict(os.environ, PYTHONPATH=args.old_src)
-        out = subprocess.run(
-            [sys.executable, "-c", OLD, payload],
-            env=env,
-            capture_output=True,
-            text=True,
-            check=True,
-        )
-        old = json.loads(out.stdout)
-        for name, key in (("hand", "hand"), ("table", "table to rest")):
+        print(f"  other implementation ({args.old_src}), same tosses, in the same rounds:")
+        for name in air_cases:
+            other = statistics.median(old_rates[name])
             print(
-                f"  other implementation ({args.old_src}), {name} ({old_n} tosses): "
-                f"{old[name]:,.2f}"
-                f" tosses/s; compiled / other = {rates[('air', key)] / old[name]:,.1f}"
+                f"    {name}: {other:,.0f} tosses/s (this one / other = "
+                f"{rates[('air', name)] / other:.2f}); one thread {old_cpu[name]:,.0f} per CPU "
+                f"second (this one / other = {cpu[name] / old_cpu[name]:.2f})"
             )
     print(f"  load average {load_before} before, {os.getloadavg()[0]:.2f} after")
 

@@ -3,6 +3,7 @@ the same equations agrees, and the analytic limits hold (terminal speed, spin de
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 
@@ -119,10 +120,11 @@ HANDFUL = [
 @pytest.mark.parametrize("projected", [True, False])
 @pytest.mark.parametrize(("omega", "flight", "start", "k"), HANDFUL)
 def test_catch_agrees_with_dop853(omega, flight, start, k, projected):
-    # Tolerance: RK4 steps of ~0.95 rad of turn sample the projected area, whose |n·v̂| has a
-    # kink twice a turn; on 40 random tosses the catch time differs from DOP853 (rtol 1e-12) by
-    # 1e-6 s (median), 4e-6 s (max) and n_z by 5e-4 at most. For scale: the drag itself moves
-    # the catch by ~4e-3 s, and a 10 % change of C_d by 4e-4 s.
+    # Tolerance: steps of ~2.4 rad of turn (0.95 with damping), the face drag integrated over
+    # the kinks of |n·v̂| (kink_integrals); on 40 tosses of benchmarks/bench_air.py the catch
+    # time differs from DOP853 (rtol 1e-12) by 3.1e-7 s (median), 1.4e-6 s (max) and n_z by
+    # 2e-4 at most. For scale: the drag itself moves the catch by ~4e-3 s, and a 10 % change of
+    # C_d by 4e-4 s.
     air = _air(cd=1.17, k=k, projected=projected)
     v0 = float(ballistics.launch_speed(flight, G))
     t_ref, nz_ref = _reference(QUARTER, air, omega, v0, start)
@@ -168,9 +170,10 @@ def _reference_contact(coin, air, omega, v0, start, drop):
 )
 def test_first_contact_agrees_with_dop853(omega, v0, start):
     # The landing's flight (the contact search skipped while the coin cannot reach the surface,
-    # Kutta's rule or RK4 in a step) to the first contact 0.8 m below launch: on 40 tosses of
-    # benchmarks/bench_air.py the contact time differs from DOP853 by 3e-7 s (median) and
-    # 2.4e-6 s (max), as before these changes (2.9e-7, 2.4e-6).
+    # Kutta's rule or RK4 in a step, the face drag by kink_integrals) to the first contact 0.8 m
+    # below launch: on 40 tosses of benchmarks/bench_air.py the contact time differs from
+    # DOP853 by 7.7e-7 s (median) and 1.8e-6 s (max) (steps of 0.95 rad with Simpson's weights
+    # for the face drag: 3.2e-7, 2.1e-6).
     contact = coin_contact(NICKEL)
     air = _air(NICKEL, cd=1.17)
     want = _reference_contact(NICKEL, air, np.array(omega), v0, start, 0.8)
@@ -199,11 +202,80 @@ def test_states_agree_with_dop853_with_strong_damping():
     y0 = np.concatenate([[0, 0, 0, 0, 0, v0], omega, [0, 0, 0, 1]])
     sol = solve_ivp(f, (0, 0.6), y0, method="DOP853", t_eval=t, rtol=1e-12, atol=1e-13)
     n_ref = numerical.quaternion_normal(sol.y[9:13].T)
-    # Measured: n within 7e-6 (without the Magnus commutator term 1.4e-3, with its sign
-    # flipped 2.9e-3), z within 2e-5 m (the drag sampled by RK4, as for the catch).
+    # Measured: n within 7.3e-6 (without the Magnus commutator term 1.4e-3, with its sign
+    # flipped 2.9e-3; with the undamped 2.4 rad steps 6.6e-5), z within 5.7e-7 m, v within
+    # 1.4e-6 m/s (2e-5 m before the face drag was integrated over the kinks).
     np.testing.assert_allclose(got[:, 4:7], n_ref, atol=2e-5)
     np.testing.assert_allclose(got[:, 0], sol.y[2], atol=5e-5)
     np.testing.assert_allclose(got[:, 1:4], sol.y[3:6].T, atol=2e-4)
+
+
+# --- the face drag over a kink ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_kink_integrals_are_exact_for_a_uniform_turn(seed):
+    # A frozen v and n turning uniformly by θ over the step: g(x) = n·v = p + q cos θx + r sin θx
+    # exactly, and the quadrature must equal the integral of |g| v (adaptive quad, split at the
+    # roots found by brentq on a fine grid), whatever the number of roots in the step.
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    rng = np.random.default_rng(seed)
+    theta = rng.uniform(0.4, 3.0)
+    p, q, r = rng.normal(size=3) * (0.3, 1.0, 1.0)
+    vel = rng.normal(size=3)
+
+    def g(x):
+        return p + q * math.cos(theta * x) + r * math.sin(theta * x)
+
+    grid = np.linspace(0.0, 1.0, 2001)
+    vals = [g(x) for x in grid]
+    cuts = [0.0]
+    cuts += [brentq(g, grid[i], grid[i + 1]) for i in range(2000) if vals[i] * vals[i + 1] < 0]
+    cuts.append(1.0)
+
+    def integral(weight):
+        return sum(
+            quad(lambda x: abs(g(x)) * weight(x), lo, hi, epsabs=1e-14)[0]
+            for lo, hi in itertools.pairwise(cuts)
+        )
+
+    gs = [g(0.0), g(0.5), g(1.0)]
+    qs = [tuple(gk * vel) for gk in gs]
+    c, s = math.cos(theta / 2), math.sin(theta / 2)
+    got, got_z = air_kernels.kink_integrals(gs[0], gs[1], gs[2], qs[0], qs[1], qs[2], c, s, theta)
+    want = integral(lambda x: 1.0)
+    np.testing.assert_allclose(got, want * vel, rtol=0, atol=1e-12)
+    assert got_z == pytest.approx(integral(lambda x: 1.0 - x) * vel[2], abs=1e-12)
+    # Simpson's weights (the Runge-Kutta rule's own) are off by far more where g changes sign.
+    if len(cuts) > 2:
+        simpson = (abs(gs[0]) + 4 * abs(gs[1]) + abs(gs[2])) / 6
+        assert abs(simpson - want) > 1e-6
+
+
+def test_kink_weights_integrate_piecewise_quadratics():
+    # The quadratic fallback (short turns): exact for sign(g_q) Q_q, g_q and Q_q quadratics.
+    from scipy.integrate import quad
+
+    for g0, g1, g2 in [(1.0, 0.2, -0.8), (0.5, -0.1, 0.4), (-1.0, 0.5, 2.0), (0.3, 0.5, 0.2)]:
+        a, b, c = 2 * g0 - 4 * g1 + 2 * g2, -3 * g0 + 4 * g1 - g2, g0
+        basis = [
+            lambda x: (1 - x) * (1 - 2 * x),
+            lambda x: 4 * x * (1 - x),
+            lambda x: x * (2 * x - 1),
+        ]
+        w = air_kernels.kink_weights(g0, g1, g2)
+        roots = [x.real for x in np.roots([a, b, c]) if abs(x.imag) < 1e-15 and 0 < x.real < 1]
+        for i in range(3):
+
+            def f(x, i=i, a=a, b=b, c=c, basis=basis):
+                return np.sign((a * x + b) * x + c) * basis[i](x)
+
+            want = quad(f, 0, 1, points=roots or None, limit=200)[0]
+            assert w[i] == pytest.approx(want, abs=1e-12)
+            want = quad(lambda x, i=i: (1 - x) * f(x, i), 0, 1, points=roots or None, limit=200)[0]
+            assert w[3 + i] == pytest.approx(want, abs=1e-12)
 
 
 # --- analytic limits ------------------------------------------------------------------------------

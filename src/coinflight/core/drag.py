@@ -54,27 +54,34 @@ rule, three evaluations of the acceleration with Simpson's weights on those stag
 Nørsett & Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., 1993, §II.1, Table
 1.1); elsewhere (a slow spin's longer steps, a light coin near its terminal speed) it is
 classical RK4, four evaluations. For a toss the two differ only through the velocity
-dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step: both sample the attitude's
-time dependence, which dominates the error, at the same stages with the same weights. Both are
-exact for the vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too.
-A step turns the coin by at most ``TURN_STEP`` rad (the projected area changes with the
-attitude), lasts at most ``MAX_STEP`` s and at most ``DRAG_STEP``/(c |v|). In the landing, a
-step that cannot bring any point of the coin to the surface (its centre stays higher than the
-coin's reach, falling at most −min(v_z, 0) h + g h²/2: falling, the drag only slows it) skips
-the contact search.
+dependence of the drag, of relative size (c |v| h)^k, k ≥ 1, per step. Both are exact for the
+vacuum parabola, so C_d = K = 0 reproduces :mod:`coinflight.core.ballistics` too. The face
+drag's share of each step, −c π r² ∫ |n·v| v dt, is not left to the rule's Simpson weights
+(which integrate the kink of |n·v| twice a turn to first order, and the turning attitude with a
+relative error (θ/2)⁴/180 of one sign for a turn θ a step): :func:`kink_integrals` interpolates
+n·v and (n·v) v on the three stages in the basis 1, cos, sin of the turn (exact for a frozen v
+and a uniform turn, Rodrigues' formula), locates the kinks in closed form and integrates piece
+by piece; the step's velocity and height are corrected by the difference. The side's share
+(2 r h |n × v|, 12 % of the face's on a nickel) keeps the rule's weights.
+A step turns the coin by at most ``TURN_STEP`` rad without damping, ``DAMPED_TURN_STEP`` with
+it (the projected area changes with the attitude), lasts at most ``MAX_STEP`` s and at most
+``DRAG_STEP``/(c |v|). In the landing, a step that cannot bring any point of the coin to the
+surface (its centre stays higher than the coin's reach, falling at most −min(v_z, 0) h + g h²/2:
+falling, the drag only slows it) skips the contact search.
 
-Accuracy. The area's |n·v̂| has a kink twice a turn, which the steps sample with errors of either
-sign; against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
-time of 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0 1.5-3 m/s)
-differs by 8e-7 s (median) and 2e-6 s (worst) and n_z by at most 4e-4, and their first contact
-with a table 0.8 m below launch by 3e-7 s (median) and 2.4e-6 s (worst); the same to two digits
-as with RK4 in every step (tests/test_drag.py checks 1e-5 s on a handful). For scale, the drag
-itself moves the catch by ~4e-3 s and a 10 % change of C_d by ~4e-4 s. ``TURN_STEP`` = 2π/(6 +
-(√5 − 1)/2) ≈ 0.95 rad keeps the step incommensurate with the half turn, so the kinks fall at
-well spread phases of the steps: at 2π/6.5 they fell at the same phase and the errors added up
-(3e-5 s), and so they did (to 3e-5 s) when the step followed the speed (a step ∝ 1/|v|, which
-would have balanced the errors, drifts slowly through the phases). Steps of 2π/(4 + ...) ≈ 1.37
-rad or 2π/(3 + ...) ≈ 1.74 rad are 1.4 and 1.75 times fewer but double and triple those errors.
+Accuracy. Against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
+time of the first 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0
+1.5-3 m/s, heads up) differs by 3.1e-7 s (median) and 1.4e-6 s (worst) and n_z by at most
+2e-4, and their first contact with a table 0.8 m below launch by 7.7e-7 s (median) and 1.8e-6
+s (worst); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
+integrator, 2.5 times as many steps) 6.1e-7 and 3.2e-6 s (catch), 3.2e-7 and 2.1e-6 s (first
+contact). Against the same integrator with steps of 0.02 rad (itself within 6e-9 s of DOP853)
+the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e-7 at 2.0,
+4.1e-7/9.6e-7 at 2.2, 3.1e-7/1.4e-6 at 2.4, 3.9e-6/1.2e-5 at 3.0; without the kink integrals
+3.2e-7/2.0e-6 at 0.95, 4.4e-6/1.8e-5 at 2.2, 1.3e-4/3.4e-4 at 3.0. ``TURN_STEP`` = 2π/(2 +
+(√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
+phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
+of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
@@ -113,8 +120,12 @@ from coinflight.core.outcome import Status
 
 FloatArray = NDArray[np.float64]
 
-TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
-"""Largest rotation of the coin in one step, rad (see the notes on accuracy)."""
+TURN_STEP = 2.0 * math.pi / (2.0 + 0.5 * (math.sqrt(5.0) - 1.0))
+"""Largest rotation of the coin in one step without spin damping, rad (see the notes on
+accuracy)."""
+DAMPED_TURN_STEP = 2.0 * math.pi / (6.0 + 0.5 * (math.sqrt(5.0) - 1.0))
+"""Largest rotation in one step with spin damping, rad: the Magnus steps' error grows with
+the turn (at TURN_STEP, n off DOP853 by 7e-5 in the strong-damping test, 7e-6 at this)."""
 MAX_STEP = 1.0 / 64.0
 """Longest step, s."""
 DRAG_STEP = 0.02
@@ -328,13 +339,238 @@ def step(z, v, n, u, t0, h, a0, b0, air):
     rule or RK4, see the module notes) and the Magnus half steps of the attitude (n, u); t0
     counts from the setting of a0, b0."""
     axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
-    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s)
+    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, 2.0 * math.atan2(s, c))
 
 
 @njit(cache=True)
-def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
-    """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation`:
-    without damping the same for every step of the same length, so computed once for them."""
+def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
+    """sign times the integrals over [x0, x1] of the three quadratic Lagrange basis functions
+    on the nodes 0, 1/2, 1 (first three) and of the same times (1 − x) (last three); ``w`` adds."""
+    a = (x0, x1)
+    out = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    for k in range(2):
+        y = a[k]
+        f = sign if k == 1 else -sign
+        y2 = y * y
+        y3 = y2 * y
+        y4 = y3 * y
+        out[0] += f * (2.0 * y3 / 3.0 - 1.5 * y2 + y)
+        out[1] += f * (2.0 * y2 - 4.0 * y3 / 3.0)
+        out[2] += f * (2.0 * y3 / 3.0 - 0.5 * y2)
+        out[3] += f * (-0.5 * y4 + 5.0 * y3 / 3.0 - 2.0 * y2 + y)
+        out[4] += f * (2.0 * y2 - 8.0 * y3 / 3.0 + y4)
+        out[5] += f * (-0.5 * y4 + y3 - 0.5 * y2)
+    return (
+        w[0] + out[0],
+        w[1] + out[1],
+        w[2] + out[2],
+        w[3] + out[3],
+        w[4] + out[4],
+        w[5] + out[5],
+    )
+
+
+@njit(cache=True)
+def kink_weights(g0: float, g1: float, g2: float) -> tuple:
+    """Quadrature weights for the face drag's |n·v| v over a step whose n·v changes sign.
+
+    The step's stages sample g = n·v at x = 0, 1/2, 1 (in units of the step) and the smooth
+    product Q = (n·v) v there. With g and Q replaced by their quadratic interpolants g_q, Q_q on
+    those nodes, ∫₀¹ sign(g_q) Q_q dx = Σ W_i Q_i and ∫₀¹ (1 − x) sign(g_q) Q_q dx = Σ M_i Q_i
+    exactly: the integrals of the Lagrange basis between the roots of g_q (a quadratic), with
+    the sign of g_q on each piece. Without a root in (0, 1) they are Simpson's weights (1/6,
+    2/3, 1/6) and (1/6, 1/3, 0) times the sign, i.e. the Runge-Kutta step's own quadrature of
+    the velocity and (through ∫ (1 − x) a dx) of the position (Hairer, Nørsett & Wanner, *Solving
+    Ordinary Differential Equations I*, 2nd ed., 1993, §II.1); with a root the step's stage
+    values sample a kink, which Simpson's rule integrates to first order only (an error ∝ h²
+    a step, the dominant error of the flight), while this quadrature is exact for piecewise
+    quadratics with the kink at the interpolant's root. The idea is the one of quadrature for
+    piecewise-smooth integrands with located breakpoints (Davis & Rabinowitz, *Methods of
+    Numerical Integration*, 2nd ed., 1984, §2.12).
+
+    Returns (W0, W1, W2, M0, M1, M2, found): found is False (and the weights Simpson's times
+    the sign of g1) when g_q keeps one sign on (0, 1).
+    """
+    c = g0
+    a = 2.0 * g0 - 4.0 * g1 + 2.0 * g2
+    b = -3.0 * g0 + 4.0 * g1 - g2
+    r1 = 2.0
+    r2 = 2.0
+    if a == 0.0:
+        if b != 0.0:
+            r1 = -c / b
+    else:
+        disc = b * b - 4.0 * a * c
+        if disc >= 0.0:
+            q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
+            if q != 0.0:
+                r1 = q / a
+                r2 = c / q
+            else:  # b = 0 and a c = 0 with a ≠ 0: c = 0, a double root at 0
+                r1 = 0.0
+    if not 0.0 < r1 < 1.0:
+        r1 = 2.0
+    if not 0.0 < r2 < 1.0:
+        r2 = 2.0
+    if r2 < r1:
+        r1, r2 = r2, r1
+    s = 1.0 if g1 >= 0.0 else -1.0
+    if r1 > 1.0:
+        return s / 6.0, 2.0 * s / 3.0, s / 6.0, s / 6.0, s / 3.0, 0.0, False
+    w = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    x0 = 0.0
+    for x1 in (r1, r2, 1.0):
+        if x1 > 1.0:
+            continue
+        if x1 > x0:
+            xm = 0.5 * (x0 + x1)
+            w = _piece(x0, x1, 1.0 if (a * xm + b) * xm + c >= 0.0 else -1.0, w)
+            x0 = x1
+    return w[0], w[1], w[2], w[3], w[4], w[5], True
+
+
+TRIG_KINK = 0.3
+"""Steps turning the coin by more than this (rad) interpolate n·v in the basis 1, cos, sin of
+the turn (:func:`kink_integrals`), shorter ones by a quadratic (:func:`kink_weights`)."""
+TRIG_COS = math.cos(0.5 * TRIG_KINK)
+
+
+@njit(cache=True)
+def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
+    """Primitives at x of (1, cos θx, sin θx) and of (1 − x) times them, given cos θx, sin θx:
+    x, sin θx / θ, −cos θx / θ and, with ∫ x cos θx = x sin θx / θ + cos θx / θ² and
+    ∫ x sin θx = −x cos θx / θ + sin θx / θ², those minus the x-weighted ones."""
+    it = 1.0 / theta
+    pc = sx * it
+    ps = -cx * it
+    return (
+        x,
+        pc,
+        ps,
+        x - 0.5 * x * x,
+        pc - x * pc - cx * it * it,
+        ps - x * ps - sx * it * it,
+    )
+
+
+@njit(cache=True)
+def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
+    """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
+
+    x is the time in units of the step; g = n·v and the vector Q = (n·v) v are known at the
+    stages x = 0, 1/2, 1 (``g0, gm, g2``; ``q0, qm, q2``); ``c, s`` are the cosine and sine of
+    the coin's turn θ/2 over half the step, ``theta`` is θ. While the coin turns uniformly about
+    a fixed axis (no damping) and v is frozen, n·v = p + q cos θx + r sin θx exactly (Rodrigues'
+    formula), and so is each component of Q: both are interpolated on the three nodes in the
+    basis 1, cos θx, sin θx, the roots of g found in closed form (with t = tan(θx/2), p + q cos
+    θx + r sin θx = 0 is a quadratic in t) and sign(g) Q integrated exactly piece by piece. Only
+    the change of v within the step (gravity, the drag) and, with damping, the turn's
+    non-uniformity are left to the interpolation. This is quadrature of a piecewise-smooth
+    integrand with its breakpoints located (Davis & Rabinowitz, *Methods of Numerical
+    Integration*, 2nd ed., 1984, §2.12) with trigonometric interpolation for the rotation, in
+    place of the Runge-Kutta rule's own Simpson weights (Hairer, Nørsett & Wanner, *Solving
+    Ordinary Differential Equations I*, 2nd ed., 1993, §II.1), which integrate the kink of |n·v|
+    to first order only and the turning attitude with a relative error (θ/2)⁴/180 of one sign.
+    Below a turn of ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is
+    used (:func:`kink_weights`).
+    """
+    if c > TRIG_COS or c <= 0.0:
+        w0, w1, w2, m0, m1, m2, _ = kink_weights(g0, gm, g2)
+        return (
+            (
+                w0 * q0[0] + w1 * qm[0] + w2 * q2[0],
+                w0 * q0[1] + w1 * qm[1] + w2 * q2[1],
+                w0 * q0[2] + w1 * qm[2] + w2 * q2[2],
+            ),
+            m0 * q0[2] + m1 * qm[2] + m2 * q2[2],
+        )
+    cc = c * c - s * s  # cos θ
+    ss = 2.0 * c * s  # sin θ
+    # Nodes 0, 1/2, 1: f = p + q, p + q c + r s, p + q C + r S; solved for (p, q, r).
+    den = 1.0 / (2.0 * (c - 1.0))
+    rs = 1.0 / s
+    gq = ((g2 - g0) - 2.0 * c * (gm - g0)) * den
+    gr = ((gm - g0) - gq * (c - 1.0)) * rs
+    gp = g0 - gq
+    f0 = _primitives(0.0, 1.0, 0.0, theta)
+    f1 = _primitives(1.0, cc, ss, theta)
+    # Σ over the pieces of sign × (F(end) − F(start)) = sign(g(1)) F(1) − sign(g(0)) F(0)
+    # − 2 Σ sign(g′(x_r)) F(x_r) over the roots x_r (g takes the sign of g′ after a root).
+    s0 = 1.0 if g0 >= 0.0 else -1.0
+    s1 = 1.0 if g2 >= 0.0 else -1.0
+    tot = (
+        s1 * f1[0] - s0 * f0[0],
+        s1 * f1[1] - s0 * f0[1],
+        s1 * f1[2] - s0 * f0[2],
+        s1 * f1[3] - s0 * f0[3],
+        s1 * f1[4] - s0 * f0[4],
+        s1 * f1[5] - s0 * f0[5],
+    )
+    # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
+    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
+    qa = gp - gq
+    qb = gr
+    qc = gp + gq
+    disc = qb * qb - qa * qc
+    if disc > 0.0:
+        root = math.sqrt(disc)
+        qq = -(qb + math.copysign(root, qb))
+        tmax = s / c
+        for k in range(2):
+            if k == 0:
+                if qa == 0.0:
+                    continue
+                t = qq / qa
+            else:
+                if qq == 0.0:
+                    continue
+                t = qc / qq
+            if 0.0 < t < tmax:
+                t2 = t * t
+                inv = 1.0 / (1.0 + t2)
+                cr = (1.0 - t2) * inv
+                sr = 2.0 * t * inv
+                fr = _primitives(2.0 * math.atan(t) / theta, cr, sr, theta)
+                # g takes the sign of g′ ∝ r cos − q sin after a simple root.
+                d = 2.0 if gr * cr - gq * sr < 0.0 else -2.0
+                tot = (
+                    tot[0] + d * fr[0],
+                    tot[1] + d * fr[1],
+                    tot[2] + d * fr[2],
+                    tot[3] + d * fr[3],
+                    tot[4] + d * fr[4],
+                    tot[5] + d * fr[5],
+                )
+    out0 = 0.0
+    out1 = 0.0
+    out2 = 0.0
+    zint = 0.0
+    for k in range(3):
+        q = ((q2[k] - q0[k]) - 2.0 * c * (qm[k] - q0[k])) * den
+        r = ((qm[k] - q0[k]) - q * (c - 1.0)) * rs
+        p = q0[k] - q
+        val = p * tot[0] + q * tot[1] + r * tot[2]
+        if k == 0:
+            out0 = val
+        elif k == 1:
+            out1 = val
+        else:
+            out2 = val
+            zint = p * tot[3] + q * tot[4] + r * tot[5]
+    return (out0, out1, out2), zint
+
+
+@njit(cache=True)
+def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
+    """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation` and
+    twice its angle ``theta``: without damping the same for every step of the same length, so
+    computed once for them.
+
+    Where n·v changes sign within the step (the face's projected area π r² |n·v̂| has its kink
+    there), the face drag's share of the step is integrated with :func:`kink_weights` instead
+    of the Runge-Kutta rule's own weights."""
+    c_half = c
+    s_half = s
     n1 = _rotate(n, axis, c, s)
     if air.spin_damping > 0.0:
         u1 = _rotate(u, axis, c, s)
@@ -363,17 +599,59 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s):
             v[1] + h / 6.0 * (k1[1] + 4.0 * k2[1] + k4[1]),
             v[2] + h / 6.0 * (k1[2] + 4.0 * k2[2] + k4[2]),
         )
-        return z1, v1, n2, u2
-    vb = (v[0] + 0.5 * h * k2[0], v[1] + 0.5 * h * k2[1], v[2] + 0.5 * h * k2[2])
-    k3 = _acceleration(vb, n1, air)
-    vc = (v[0] + h * k3[0], v[1] + h * k3[1], v[2] + h * k3[2])
-    k4 = _acceleration(vc, n2, air)
-    z1 = z + h / 6.0 * (v[2] + 2.0 * va[2] + 2.0 * vb[2] + vc[2])
-    v1 = (
-        v[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
-        v[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
-        v[2] + h / 6.0 * (k1[2] + 2.0 * k2[2] + 2.0 * k3[2] + k4[2]),
-    )
+        gm = dot(n1, va)
+        qm = (gm * va[0], gm * va[1], gm * va[2])
+        am = abs(gm)
+        vm_applied = (am * va[0], am * va[1], am * va[2])
+    else:
+        vb = (v[0] + 0.5 * h * k2[0], v[1] + 0.5 * h * k2[1], v[2] + 0.5 * h * k2[2])
+        k3 = _acceleration(vb, n1, air)
+        vc = (v[0] + h * k3[0], v[1] + h * k3[1], v[2] + h * k3[2])
+        k4 = _acceleration(vc, n2, air)
+        z1 = z + h / 6.0 * (v[2] + 2.0 * va[2] + 2.0 * vb[2] + vc[2])
+        v1 = (
+            v[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
+            v[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
+            v[2] + h / 6.0 * (k1[2] + 2.0 * k2[2] + 2.0 * k3[2] + k4[2]),
+        )
+        # The midpoint's two stages, averaged: Q and g there, and what the rule applied.
+        ga = dot(n1, va)
+        gb = dot(n1, vb)
+        gm = 0.5 * (ga + gb)
+        qm = (
+            0.5 * (ga * va[0] + gb * vb[0]),
+            0.5 * (ga * va[1] + gb * vb[1]),
+            0.5 * (ga * va[2] + gb * vb[2]),
+        )
+        aa = abs(ga)
+        ab = abs(gb)
+        vm_applied = (
+            0.5 * (aa * va[0] + ab * vb[0]),
+            0.5 * (aa * va[1] + ab * vb[1]),
+            0.5 * (aa * va[2] + ab * vb[2]),
+        )
+        vb = vc
+    g0 = dot(n, v)
+    g2 = dot(n2, vb)
+    # The face drag's share of the step by kink_integrals in place of the rule's own; not for a
+    # short turn (below TRIG_KINK: the quadratic interpolant) in which n·v keeps its sign at the
+    # stages, where both are Simpson's rule.
+    same = (g0 > 0.0) == (gm > 0.0) and (gm > 0.0) == (g2 > 0.0)
+    if air.projected > 0.0 and (c_half <= TRIG_COS or not same):
+        q0 = (g0 * v[0], g0 * v[1], g0 * v[2])
+        q2 = (g2 * vb[0], g2 * vb[1], g2 * vb[2])
+        corrected, corrected_z = kink_integrals(g0, gm, g2, q0, qm, q2, c_half, s_half, theta)
+        # Corrected minus applied face drag (both times −c π r²): velocity and height.
+        fd = -air.drag_factor * math.pi * air.radius * air.radius
+        a0_ = abs(g0)
+        a2_ = abs(g2)
+        fv = fd * h
+        v1 = (
+            v1[0] + fv * (corrected[0] - (a0_ * v[0] + 4.0 * vm_applied[0] + a2_ * vb[0]) / 6.0),
+            v1[1] + fv * (corrected[1] - (a0_ * v[1] + 4.0 * vm_applied[1] + a2_ * vb[1]) / 6.0),
+            v1[2] + fv * (corrected[2] - (a0_ * v[2] + 4.0 * vm_applied[2] + a2_ * vb[2]) / 6.0),
+        )
+        z1 = z1 + fv * h * (corrected_z - (a0_ * v[2] + 2.0 * vm_applied[2]) / 6.0)
     return z1, v1, n2, u2
 
 
@@ -389,8 +667,9 @@ def step_size(v, t0, a0, b0, air):
     # Compared squared: the square roots are taken only for a limit that applies.
     h = MAX_STEP
     spin2 = a * a + b * b  # (I1 times how fast the triad turns, rad/s) squared
-    if spin2 * h * h > (TURN_STEP * air.i1) ** 2:
-        h = TURN_STEP * air.i1 / math.sqrt(spin2)
+    turn = TURN_STEP if k == 0.0 else DAMPED_TURN_STEP
+    if spin2 * h * h > (turn * air.i1) ** 2:
+        h = turn * air.i1 / math.sqrt(spin2)
     relax2 = (air.drag_factor * air.max_area) ** 2 * dot(v, v)  # (c A_max |v|)²
     if relax2 * h * h > DRAG_STEP * DRAG_STEP:
         h = DRAG_STEP / math.sqrt(relax2)
@@ -422,13 +701,14 @@ def catch_one(omega_body, start_sign, launch_speed, air):
     z = 0.0
     v = (0.0, 0.0, launch_speed)
     t = 0.0
-    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
     for _ in range(MAX_STEPS):
         h = step_size(v, t, a0, b0, air)
         if h != hc or air.spin_damping > 0.0:
             hc = h
             axis, cr, sr = rotation(n, u, t, 0.5 * h, a0, b0, air)
-        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr)
+            th = 2.0 * math.atan2(sr, cr)
+        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr, th)
         if v1[2] < 0.0 and z1 <= 0.0:
             # Newton on the length of one step from (z, v, n, u) at t: z(τ) = 0, z'(τ) = v_z.
             lo = 0.0
@@ -513,7 +793,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
     first = -1.0
     rising = True  # the contact is looked for from the apex on, as without air
     impacts = 0
-    hc, axis, cr, sr = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0
+    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
     for _ in range(MAX_STEPS):
         if impacts >= MAX_IMPACTS:
             break
@@ -525,7 +805,8 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+                th = 2.0 * math.atan2(sr, cr)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
             z, v, n, u = z1, v1, n1, u1
             t += h
             tr += h
@@ -554,7 +835,8 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             if h != hc or air.spin_damping > 0.0:
                 hc = h
                 axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr)
+                th = 2.0 * math.atan2(sr, cr)
+            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
             lm1 = angular_momentum(n1, u1, tr + h, a0, b0, air)
             g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
             if g1 >= -CA_TOLERANCE:
@@ -762,7 +1044,8 @@ def steps_needed(
     c = air.drag_factor * air.max_area
     v0 = abs(float(launch_speed))
     fall = v0 * v0 / (2.0 * g) + max(float(drop_height), 0.0)
-    turning = max(spin * max(air.i3 / air.i1, 1.0) / TURN_STEP, 1.0 / MAX_STEP)
+    turn = TURN_STEP if air.spin_damping == 0.0 else DAMPED_TURN_STEP
+    turning = max(spin * max(air.i3 / air.i1, 1.0) / turn, 1.0 / MAX_STEP)
     if c > 0.0:
         v_t = math.sqrt(g / c)
         up = v_t / g * math.atan(v0 / v_t)

@@ -30,12 +30,13 @@ if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
     from coinflight.model.toss import Toss
 
-DRAG_TOSSES_PER_SECOND = 3e4
+DRAG_TOSSES_PER_SECOND = 4e4
 """Hand catches through air a second, for the work bounds: a US nickel, ωx 150-300 rad/s,
-C_d = 1.17, 2 threads on the shared 2-core machine (benchmarks/bench_air.py, 100,000 tosses,
-medians of 5: 33,000-45,000 a second under a load of 6-8, 87,000-94,000 per CPU second in one
-thread; 1.2-1.3 times the previous integrator's in the same session). The table landing's rate
-is :data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND`."""
+C_d = 1.17, 2 threads on the shared 2-core machine (``python benchmarks/bench_air.py
+--reference 3 --old-src ...``, 100,000 tosses, medians of 5: 59,500 a second under a load of
+6.5-7.2, 126,000 per CPU second in one thread; 1.26 times the previous integrator's, steps of
+0.95 rad, in the same rounds). The table landing's rate is
+:data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND`."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:
