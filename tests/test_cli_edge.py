@@ -86,6 +86,26 @@ def test_setting_options_reach_the_simulation():
     assert json.loads(out)[0]["simulated"]["successes"] == expected.successes
 
 
+def test_the_contact_ending_reaches_the_simulation():
+    """--ending contact and its resistances reach simulate_edge; dead landings (the default
+    restitution 0) never reach an ending, so they are the rocking ending's bit for bit."""
+    from coinflight.studies.edge import simulate_edge
+
+    args = ["--ratios", "0.1,0.577", "--simulate", "200", "--seed", "4", "--json"]
+    contact = ["--restitution", "0.5", "--ending", "contact", "--rolling-resistance", "1e-3",
+               "--pivoting-resistance", "1e-3"]  # fmt: skip
+    code, out, _ = _run(*args, *contact)
+    assert code == 0
+    expected = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5, ending="contact",
+                             rolling_resistance=1e-3, pivoting_resistance=1e-3)  # fmt: skip
+    got = [row["simulated"]["successes"] for row in json.loads(out)]
+    assert got == [e.successes for _, e in expected]
+    rocking = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5)
+    assert rocking != expected  # the endings differ on bouncing landings
+    dead_contact = _run(*args, "--ending", "contact")[1]
+    assert dead_contact == _run(*args)[1]
+
+
 def test_text_table():
     code, out, _ = _run("--ratios", "0.577,1", "--simulate", "100", "--seed", "5")
     assert code == 0
@@ -108,6 +128,16 @@ def test_text_table():
         (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
+        (["--ending", "contact"], "--ending needs --simulate N"),
+        (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
+        (
+            ["--simulate", "10", "--rolling-resistance", "1e-4"],
+            "rolling resistance applies to the contact ending only",
+        ),
+        (
+            ["--simulate", "10", "--ending", "contact", "--pivoting-resistance", "0.5"],
+            "pivoting resistance must be between 0 and 0.01",
+        ),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args, words):

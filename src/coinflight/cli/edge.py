@@ -9,6 +9,7 @@ import typer
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import _dist
+from coinflight.cli.landing_groups import ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
     OUTPUT_PANEL,
     SURFACE_PANEL,
@@ -78,6 +79,27 @@ DropHeight = Annotated[
         _ONLY + "how far the table lies below the launch height, m (default 0.5).",
     ),
 ]
+Ending = Annotated[
+    str | None,
+    typer.Option(
+        "--ending",
+        metavar="rocking|contact",
+        rich_help_panel=SURFACE_PANEL,
+        help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
+    ),
+]
+RollingResistance = Annotated[
+    float | None,
+    number_option(
+        "--rolling-resistance", "L", SURFACE_PANEL, _ONLY + "--ending contact: " + ROLLING_HELP
+    ),
+]
+PivotingResistance = Annotated[
+    float | None,
+    number_option(
+        "--pivoting-resistance", "L", SURFACE_PANEL, _ONLY + "--ending contact: " + PIVOTING_HELP
+    ),
+]
 SpinX = Annotated[
     str | None, _dist("--omega-x", "With --simulate: spin about the x diameter", "rad/s")
 ]
@@ -104,6 +126,9 @@ def edge(
     restitution: Restitution = None,
     friction: Friction = None,
     drop_height: DropHeight = None,
+    ending: Ending = None,
+    rolling_resistance: RollingResistance = None,
+    pivoting_resistance: PivotingResistance = None,
     omega_x: SpinX = None,
     launch_speed: LaunchSpeed = None,
     g: EdgeGravity = None,
@@ -126,6 +151,9 @@ def edge(
         "--restitution": restitution,
         "--friction": friction,
         "--drop-height": drop_height,
+        "--ending": ending,
+        "--rolling-resistance": rolling_resistance,
+        "--pivoting-resistance": pivoting_resistance,
         "--omega-x": omega_x,
         "--launch-speed": launch_speed,
         "--g": g,
@@ -137,6 +165,9 @@ def edge(
             ("restitution", restitution),
             ("friction", friction),
             ("drop_height", drop_height),
+            ("ending", ending),
+            ("rolling_resistance", rolling_resistance),
+            ("pivoting_resistance", pivoting_resistance),
             ("g", g),
         )
         if value is not None

@@ -116,6 +116,9 @@ def simulate_edge(
     drop_height: float = SIM_DROP,
     spin: Distribution | None = None,
     launch_speed: Distribution | None = None,
+    ending: str = "rocking",
+    rolling_resistance: float | None = None,
+    pivoting_resistance: float | None = None,
     executor: Any = None,
     progress: Callable[[int], None] | None = None,
 ) -> list[tuple[float, BinomialEstimate]]:
@@ -138,7 +141,10 @@ def simulate_edge(
     ``friction`` and ``drop_height`` of the table (:class:`coinflight.model.surface.Surface`);
     ``spin`` (ωx, rad/s) and ``launch_speed`` (v0, m/s) as distributions
     (:mod:`coinflight.model.distributions`, drawn through their ``ppf`` from the same streams);
-    the launch speed must be positive with certainty.
+    the launch speed must be positive with certainty; ``ending`` ("rocking" or the experimental
+    3-D "contact") and, with the contact ending only, its ``rolling_resistance`` and
+    ``pivoting_resistance`` (m; :class:`coinflight.model.surface.Surface`), which act only on
+    landings that bounce (``restitution`` > 0).
 
     ``executor`` (an object with ``map``, or a ``distributed.Client``: :mod:`coinflight.
     probability.distributed`) runs the blocks of :data:`~coinflight.probability.streams.BLOCK`
@@ -150,22 +156,45 @@ def simulate_edge(
     from coinflight.model.distributions import Distribution, Uniform
     from coinflight.model.ensemble import check_launch_speed
     from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import TableLanding
 
     x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
     if x.ndim != 1:
         raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
     n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)
+    resistances = {
+        name: value
+        for name, value in (
+            ("rolling_resistance", rolling_resistance),
+            ("pivoting_resistance", pivoting_resistance),
+        )
+        if value is not None
+    }
+    if resistances and ending != "contact":
+        names = " and ".join(name.replace("_", " ") for name in resistances)
+        verb = "apply" if len(resistances) > 1 else "applies"
+        raise ValueError(
+            f"{names} {verb} to the contact ending only (ending='contact', --ending contact); "
+            "the rocking ending has no rolling or pivoting resistance"
+        )
+    surface = Surface(
+        "table",
+        drop_height=drop_height,
+        restitution=restitution,
+        friction=friction,
+        ending=ending,  # type: ignore[arg-type]  # checked by Surface
+        **resistances,
+    )
+    rate = TableLanding(surface).rate
     v.work_bound(
         f"{len(x)} ratios × {n} tosses",
         len(x) * n,
-        BOUNCING_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+        rate * v.MAX_RUN_SECONDS,
         "tosses",
         "use fewer ratios or tosses",
-        BOUNCING_TOSSES_PER_SECOND,
+        rate,
     )
     streams.check_seed(seed)
-    surface = Surface("table", drop_height=drop_height, restitution=restitution, friction=friction)
     wx = Uniform(*SIM_SPIN) if spin is None else spin
     for name, dist in (("spin", spin), ("launch speed", launch_speed)):
         if dist is not None and not isinstance(dist, Distribution):
@@ -234,7 +263,8 @@ def edge_table(
     Each dict has ``ratio``, ``p_edge_geometric`` and ``p_edge_dynamic``
     (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
     ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
-    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g). Ratios
+    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
+    rolling and pivoting resistance). Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
     ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
