@@ -177,7 +177,7 @@ def contact_rates(n: int, repeats: int = 3) -> None:
 
 
 def rounded_edges(n: int) -> None:
-    """P(edge) of the contact ending over the rim's corner radius a (experimental, core only:
+    """P(edge) of the contact ending over the rim's corner radius a (the coin's corner_radius;
     ``Contact.build(corner_radius=a)``) and the resistances, e = 0.5, μ = 0.3."""
     from coinflight.core import bounce
     from coinflight.core.contact import CONTACT_ENDING, Contact

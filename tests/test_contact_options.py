@@ -32,6 +32,7 @@ from coinflight.outcomes.table import (
     land,
 )
 from coinflight.probability import estimate
+from coinflight.queries.landing import DEAD_CONTACT
 from coinflight.web import create_app
 
 runner = CliRunner()
@@ -134,6 +135,10 @@ def test_a_rounded_rim_changes_nothing_before_the_landing_ends():
          "--rolling-resistance applies to --ending contact only (the default rocking ending has "
          "no rolling or pivoting resistance)"),
         (["--ending", "rocking", "--pivoting-resistance", "1e-4"], None),
+        (["--ending", "contact", "--restitution", "0"], DEAD_CONTACT),
+        (["--ending", "contact", "--bounces", "2"],
+         "--bounces stops each landing at a bounce, before its ending, so --ending contact "
+         "would do nothing: give one of them"),
         (["--ending", "contact", "--rolling-resistance", "1e-5:1e-3"],
          "--rolling-resistance 1e-05–0.001: this command takes a single value; a distribution "
          "of a contact parameter is for coinflight probability --method monte-carlo, qmc or grid, "

@@ -501,7 +501,10 @@ def sweep(
         surface, drop_height, restitution, friction, bounces, ending, rolling_resistance,
         pivoting_resistance,
     )  # fmt: skip
-    slow = [m for m in models if m.to_dict().get("ending") == "contact"]
+    from coinflight.outcomes.table import CONTACT_TOSSES_PER_SECOND
+
+    # rows that reach the 3-D contact phase (a dead or bounce-limited row never does)
+    slow = [m for m in models if m.rate <= CONTACT_TOSSES_PER_SECOND]
     if slow and n is None and estimator.default_n is not None:
         raise ValueError(
             f"with --ending contact each landing is carried through the 3-D contact phase "

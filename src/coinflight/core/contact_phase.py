@@ -51,12 +51,13 @@ rolling disc, Ω_c² = m g r I1 / (I3 (I3 + m r²)) (O'Reilly 1996), and rolls o
 (tests/test_contact_phase.py). The rim is: modelled as a flat band with sharp corners, it gives
 a nickel a static edge well arctan(h/2r) = 5.3° wide, which holds a coin rolling slowly upright
 until the rolling resistance stops it, where a thin disc falls (the same test). Rounded corners
-(``Contact.build(corner_radius=a)``, experimental and core only: the rim circles are those of a
-cylinder (r − a, h/2 − a) swept by a ball of radius a, the edge well arctan((h/2 − a)/(r − a))
-wide, none for a = h/2) narrow the well but leave it until a ≈ h/2, and how fast the edges go
-depends on a and on the resistances, none of them measured for a coin (``python
-benchmarks/bench_bounce.py --contact N`` prints the table). What a real coin has and this
-model lacks (an uneven table, a rim that is not a perfect band) is not known here.
+(``Contact.build(corner_radius=a)``, the coin's ``Coin.corner_radius``: the rim circles are
+those of a cylinder (r − a, h/2 − a) swept by a ball of radius a, the edge well
+arctan((h/2 − a)/(r − a)) wide, none for a = h/2) narrow the well but leave it until a ≈ h/2,
+and how fast the edges go depends on a and on the resistances, none of them measured for a
+coin (``python benchmarks/bench_bounce.py --contact N`` prints the table). What a real coin
+has and this model lacks (an uneven table, a rim that is not a perfect band) is not known
+here.
 
 The state is the height z of the centre of mass, its velocity v, the heads normal n and the
 angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not

@@ -33,10 +33,8 @@ NO_SPIN = Fixed(0.0)
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
 CONTACT = ("restitution", "friction", "rolling_resistance", "pivoting_resistance")
 """Contact parameters a distribution of tosses may spread (table landings); when set they
-replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`). The
-landing kernel takes restitution and friction toss by toss; the rolling and pivoting
-resistances are checked and described here but refused by the table landing until
-:func:`coinflight.core.bounce.land` takes them per toss
+replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`): the
+rolling and pivoting resistances with the 3-D contact ending only, the only one they act in
 (:attr:`coinflight.outcomes.table.TableLanding.contact_parameters`)."""
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
@@ -74,8 +72,8 @@ class TossDistribution:
         Only table landings take them (the estimators refuse them for other outcome models).
     rolling_resistance, pivoting_resistance : Distribution or float, keyword only
         The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of
-        the 3-D contact ending. Checked and described here; the table landing does not yet
-        draw them toss by toss and refuses a distribution (one line) rather than ignore it.
+        the 3-D contact ending, drawn toss by toss with that ending; the rocking ending, which
+        has no resistance, refuses a distribution of them (one line) rather than ignore it.
 
     Notes
     -----

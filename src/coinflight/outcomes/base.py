@@ -131,8 +131,8 @@ def check_contact(dist: TossDistribution, model: OutcomeModel) -> None:
         return
     given = ", ".join(f"{name} {dist.contact[name].describe()}" for name in extra)
     why = model.contact_refusal or (
-        f"{model.name} has no contact with a surface; restitution and friction distributions "
-        "apply to a table landing (surface kind 'table', --surface table)"
+        f"{model.name} has no contact with a surface; contact parameter distributions apply to "
+        "a table landing (surface kind 'table', --surface table)"
     )
     raise ValueError(f"{given}: {why}")
 

@@ -78,8 +78,9 @@ thread)."""
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
-    "restitution and friction distributions are not yet taken by a table landing through air "
-    "(--drag, --spin-damping): give single values, or drop the air"
+    "contact parameter distributions (restitution, friction, rolling and pivoting resistance) "
+    "are not yet taken by a table landing through air (--drag, --spin-damping): give single "
+    "values, or drop the air"
 )
 """The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
 

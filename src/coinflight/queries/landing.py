@@ -83,6 +83,14 @@ def single_values(
     return {name: d.mean for name, d in spread.items()}
 
 
+DEAD_CONTACT = (
+    "--ending contact acts on landings that bounce: with --restitution 0 every landing ends "
+    "dead at its first contact and never reaches it; give a restitution above 0 (or a "
+    "distribution of it), or drop --ending"
+)
+"""The refusal of the contact ending on a dead surface (one line)."""
+
+
 def build_surface(
     kind: str,
     drop_height: float | None,
@@ -167,8 +175,10 @@ def build_surface(
 
 
 def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
-    """:func:`build_surface` for the table options as typed (every one of them)."""
-    return build_surface(
+    """:func:`build_surface` for the table options as typed (every one of them); ValueError
+    (:data:`DEAD_CONTACT`) for the contact ending on a dead surface, which it would never reach
+    (a sweep's grid may hold such a row: it is then a dead landing)."""
+    surface = build_surface(
         table.surface,
         table.drop_height,
         table.restitution,
@@ -180,6 +190,9 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
         pivoting_resistance=table.pivoting_resistance,
         corner_radius=table.corner_radius,
     )
+    if surface.ending == "contact" and surface.restitution == 0.0:
+        raise ValueError(DEAD_CONTACT)
+    return surface
 
 
 def table_spread(table: TableArgs) -> dict[str, Distribution]:
@@ -223,11 +236,17 @@ def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | 
 
 
 def check_bounces(surface: Surface, bounces: int | None) -> None:
-    """--bounces needs a table and a count between 0 and landing.MAX_BOUNCES."""
+    """--bounces needs a table, the default ending (it stops a landing before any ending) and a
+    count between 0 and landing.MAX_BOUNCES."""
     if bounces is None:
         return
     if surface.kind != "table":
         raise ValueError("--bounces applies to --surface table only")
+    if surface.ending == "contact":
+        raise ValueError(
+            "--bounces stops each landing at a bounce, before its ending, so --ending contact "
+            "would do nothing: give one of them"
+        )
     from coinflight.outcomes.table import check_max_bounces
 
     check_max_bounces(bounces, "--bounces")

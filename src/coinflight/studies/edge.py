@@ -177,6 +177,12 @@ def simulate_edge(
             f"{names} {verb} to the contact ending only (ending='contact', --ending contact); "
             "the rocking ending has no rolling or pivoting resistance"
         )
+    if ending == "contact" and restitution == 0.0:
+        raise ValueError(
+            "the contact ending acts on landings that bounce: with restitution 0 (the default) "
+            "every landing ends dead at its first contact and never reaches it; give a "
+            "restitution above 0 (--restitution), or drop the ending"
+        )
     surface = Surface(
         "table",
         drop_height=drop_height,
