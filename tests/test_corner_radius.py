@@ -10,8 +10,9 @@ import math
 import numpy as np
 import pytest
 
+from _kernels import coin_air, coin_contact
 from coinflight import Coin
-from coinflight.core import bounce, impact
+from coinflight.core import bounce, drag, impact
 
 COIN = Coin.preset("us-nickel")
 I1, I3 = COIN.moments
@@ -88,3 +89,27 @@ def test_first_contact_of_a_falling_tilted_coin_is_the_analytic_time(tilt, corne
     sharp_time = (vz0 + math.sqrt(vz0 * vz0 + 2.0 * G * (z0 - sharp))) / G
     # The rounded coin falls a (sin θ + cos θ − 1) further: > 1e-9 s later unless a = 0.
     assert (t - sharp_time > 1e-8) == (a > 0.0)
+
+
+@pytest.mark.parametrize("through_air", [False, True])
+def test_a_rounded_rim_is_touched_no_earlier_in_both_landing_kernels(through_air):
+    """The rounded coin lies inside the sharp cylinder, so in both landing kernels (vacuum:
+    core.bounce; air: core.drag, with its own contact search) the first contact at a = h/2 is
+    never earlier than at a = 0 for the same toss, and later for those landing on the rim."""
+    rng = np.random.default_rng(5)
+    n = 300
+    omega = np.column_stack(
+        [rng.uniform(150, 300, n), rng.uniform(-30, 30, n), rng.uniform(-30, 30, n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    first = []
+    for a in (0.0, HH):
+        contact = coin_contact(COIN, corner_radius=a)
+        if through_air:
+            air = coin_air(COIN, drag_coefficient=1.17)
+            out = drag.land(omega, v0, 1.0, air, contact, max_bounces=0)
+        else:
+            out = bounce.land(omega, v0, np.ones(n), contact, max_bounces=0)
+        first.append(out[2])
+    assert np.all(first[1] >= first[0])
+    assert np.mean(first[1] > first[0]) > 0.5
