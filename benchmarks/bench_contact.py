@@ -60,6 +60,7 @@ def handoff(omega_body, start_sign, launch_speed, c):
     """The state (z, v, n, L) in which :func:`coinflight.core.bounce.land_one` hands the toss to
     the contact phase, and whether it does (False: it ended at an impact, or did not end)."""
     radius, hh, i1, i3, g = c.radius, c.half_thickness, c.i1, c.i3, c.g
+    corner = c.corner_radius
     wx, wy, wz = omega_body
     s = 1.0 if start_sign > 0 else -1.0
     n = (0.0, 0.0, s)
@@ -69,17 +70,19 @@ def handoff(omega_body, start_sign, launch_speed, c):
     tau = launch_speed / g
     y = np.zeros(10)
     for _ in range(bounce.MAX_IMPACTS):
-        tc, n, approach = bounce.next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh)
+        tc, n, approach = bounce.next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
         if tc < 0.0:
             return y, False
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
-        z = lowest_depth(n[2], radius, hh)
+        z = lowest_depth(n[2], radius, hh, corner)
         v = (v[0], v[1], v[2] - g * tc)
         if approach >= 0.0:
             tau = bounce.GRAZE_SKIP
             continue
-        v, lm, rebound = impact(v, lm, n, radius, hh, c.mass, i1, i3, c.restitution, c.friction)
+        v, lm, rebound = impact(
+            v, lm, n, radius, hh, c.mass, i1, i3, c.restitution, c.friction, corner
+        )
         free = bounce.mechanical_energy(v, lm, n, c.mass, i1, i3, g, z)
         if free < c.barrier:
             return y, False
@@ -92,8 +95,8 @@ def handoff(omega_body, start_sign, launch_speed, c):
         omega = angular_velocity(lm, n, i1, i3)
         accel = g + 2.0 * dot(omega, omega) * c.reach
         tau = rebound / accel
-        if bounce._gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
-            tau = bounce._first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
+        if bounce._gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
+            tau = bounce._first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
     return y, False
 
 

@@ -150,26 +150,33 @@ coins = st.builds(
 )
 
 
-def _impulse_and_state(coin, n, v, w, e, mu, kernel=None):
-    """(state before, state after, contact point, approach velocity) of one impact."""
+# A rim's corner radius a as a fraction of h/2 (0: sharp corners, 1: a rim without a flat band).
+corners = st.one_of(st.just(0.0), st.just(1.0), st.floats(0.0, 1.0))
+
+
+def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0):
+    """(state before, state after, contact point, approach velocity) of one impact, the rim's
+    corners rounded with a = ``corner`` × h/2."""
     i1, i3 = coin.moments
     r, hh, m = coin.radius, 0.5 * coin.thickness, coin.mass
+    a = corner * hh
     n = _unit(n)
     wn = sum(a * b for a, b in zip(w, n, strict=True))
     lm = tuple(i1 * wi + (i3 - i1) * wn * ni for wi, ni in zip(w, n, strict=True))
     v = tuple(float(c) for c in v)
-    rc = impact.contact_point(n, r, hh)
+    rc = impact.contact_point(n, r, hh, a)
     u = impact.contact_velocity(v, impact.angular_velocity(lm, n, i1, i3), rc)
     law = impact.impact if kernel is None else kernel
-    v2, lm2, rebound = law(v, lm, n, r, hh, m, i1, i3, e, mu)
+    v2, lm2, rebound = law(v, lm, n, r, hh, m, i1, i3, e, mu, a)
     return (v, lm), (v2, lm2), rc, u, rebound
 
 
-def violations(coin, n, v, w, e, mu, kernel=None):
-    """Names of the impact law's invariants that one impact breaks (empty if none)."""
+def violations(coin, n, v, w, e, mu, kernel=None, corner=0.0):
+    """Names of the impact law's invariants that one impact breaks (empty if none); rim corners
+    rounded with a = ``corner`` × h/2."""
     i1, i3 = coin.moments
     m = coin.mass
-    (v, lm), (v2, lm2), rc, u, rebound = _impulse_and_state(coin, n, v, w, e, mu, kernel)
+    (v, lm), (v2, lm2), rc, u, rebound = _impulse_and_state(coin, n, v, w, e, mu, kernel, corner)
     n = _unit(n)
     bad = []
     before = impact.kinetic_energy(v, lm, n, m, i1, i3)
@@ -204,24 +211,28 @@ def violations(coin, n, v, w, e, mu, kernel=None):
     w=spin,
     e=st.one_of(st.just(0.0), st.just(1.0), st.floats(0.0, 1.0)),
     mu=st.one_of(st.just(0.0), st.floats(0.0, 2.0)),
+    corner=corners,
 )
-def test_impact_law_invariants(coin, n, v, w, e, mu):
+def test_impact_law_invariants(coin, n, v, w, e, mu, corner):
     """Stronge's law (Stronge 2000, ch. 4-5): kinetic energy never grows, |P_t| ≤ μ P_n, the
     normal impulse pushes, the contact point never ends moving into the surface, e = 0 leaves
     it no normal velocity (|u_z'| ≤ 1e-12 m/s), and the impulse acts through the contact point.
-    Any e, μ, coin, orientation and velocities."""
-    assert violations(coin, n, v, w, e, mu) == []
+    Any e, μ, coin, orientation and velocities, and any rim corner radius 0 ≤ a ≤ h/2 (the
+    contact point of the rounded rim, core.impact.contact_point)."""
+    assert violations(coin, n, v, w, e, mu, corner=corner) == []
 
 
 @settings(max_examples=300, deadline=None)
-@given(coin=coins, n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0))
+@given(coin=coins, n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0), corner=corners)
 def test_frictionless_impact_keeps_horizontal_momentum_and_axial_and_vertical_spin(
-    coin, n, v, w, e
+    coin, n, v, w, e, corner
 ):
     """μ = 0: the impulse is vertical and acts at a rim point lying in the plane of n and ẑ, so
     the horizontal momentum, L·n (spin about the coin's axis) and L_z are unchanged, both about
-    the centre of mass and about the vertical through the contact point."""
-    (v, lm), (v2, lm2), rc, _u, _ = _impulse_and_state(coin, n, v, w, e, 0.0)
+    the centre of mass and about the vertical through the contact point. So with rounded
+    corners (any a in [0, h/2]): the contact point, the core rim point less a ẑ, is in that
+    plane too."""
+    (v, lm), (v2, lm2), rc, _u, _ = _impulse_and_state(coin, n, v, w, e, 0.0, corner=corner)
     n = _unit(n)
     assert v2[0] == v[0] and v2[1] == v[1]
     # Rounding of a component is ~2⁻⁵² of the largest angular momentum involved, before or after
@@ -241,10 +252,12 @@ def test_frictionless_impact_keeps_horizontal_momentum_and_axial_and_vertical_sp
 
 
 @settings(max_examples=200, deadline=None)
-@given(coin=coins, n=unit, v=vec, w=spin)
-def test_elastic_frictionless_impact_keeps_energy_exactly(coin, n, v, w):
+@given(coin=coins, n=unit, v=vec, w=spin, corner=corners)
+def test_elastic_frictionless_impact_keeps_energy_exactly(coin, n, v, w, corner):
+    """e = 1, μ = 0: the kinetic energy is conserved and the normal velocity of the contact
+    point reversed, at any rim corner radius a in [0, h/2]."""
     i1, i3 = coin.moments
-    (v, lm), (v2, lm2), _rc, u, rebound = _impulse_and_state(coin, n, v, w, 1.0, 0.0)
+    (v, lm), (v2, lm2), _rc, u, rebound = _impulse_and_state(coin, n, v, w, 1.0, 0.0, corner=corner)
     n = _unit(n)
     before = impact.kinetic_energy(v, lm, n, coin.mass, i1, i3)
     after = impact.kinetic_energy(v2, lm2, n, coin.mass, i1, i3)

@@ -201,28 +201,38 @@ def _well_face(k):
 
 
 @njit(cache=True)
-def _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh):
+def _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner):
+    """(height of the coin's lowest point above the surface, normal) at tau: z − depth(n_z), the
+    depth of the rounded rim (:func:`coinflight.core.impact.lowest_depth`: the cylinder
+    (r − a, h/2 − a) swept by a ball of radius a = ``corner``, as in
+    :mod:`coinflight.core.contact_phase`)."""
     n = precess(n0, lhat, rate, tau)
     z = z0 + vz0 * tau - 0.5 * g * tau * tau
-    return z - lowest_depth(n[2], radius, hh), n
+    return z - lowest_depth(n[2], radius, hh, corner), n
 
 
 @njit(cache=True)
-def _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh):
-    """d(gap)/dt: vertical velocity of the lowest material point (envelope theorem)."""
+def _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh, corner):
+    """d(gap)/dt: vertical velocity of the lowest material point (envelope theorem), the
+    lowest point of the rounded rim (:func:`coinflight.core.impact.contact_point`; the swept
+    ball of :mod:`coinflight.core.contact_phase`)."""
     omega = angular_velocity(angular_momentum, n, i1, i3)
-    rc = contact_point(n, radius, hh)
+    rc = contact_point(n, radius, hh, corner)
     return vz0 - g * tau + cross(omega, rc)[2]
 
 
 @njit(cache=True)
-def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
+def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh, corner):
     """First time ≥ tau at which the coin's lowest point reaches the surface z = 0.
 
     The state (height z0 of the centre of mass above the surface, vertical velocity vz0,
     normal n0, angular momentum L) is given at time 0. Returns (time, normal then, vertical
     velocity of the lowest point then); time is −1 if no contact was found within the step
-    limit.
+    limit. ``corner`` is the rim's corner radius a (0: sharp): the coin is the cylinder
+    (r − a, h/2 − a) swept by a ball of radius a, the geometry of
+    :mod:`coinflight.core.contact_phase` (its lowest point:
+    :func:`coinflight.core.impact.lowest_depth`). It lies inside the sharp cylinder, so the
+    bounds below, written with the sharp cylinder's reach sqrt(r² + h²/4), hold for it.
 
     Notes
     -----
@@ -245,8 +255,8 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
     spin_bound = math.sqrt(w2) * rho
     accel = g + 2.0 * w2 * rho
     max_step = 0.25 * math.pi / (math.sqrt(w2) + 1e-300)
-    gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
-    speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+    gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner)
+    speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh, corner)
     lo = tau
     hi = -1.0
     for _ in range(MAX_STEPS):
@@ -262,8 +272,8 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
         if step < safe:
             step = safe
         tau += step
-        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
-        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner)
+        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh, corner)
         if gap < -CA_TOLERANCE:
             hi = tau
             break
@@ -283,16 +293,20 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh):
         if trial == tau:
             break
         tau = trial
-        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh)
-        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh)
+        gap, n = _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner)
+        speed = _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh, corner)
     return tau, n, speed
 
 
 @njit(cache=True)
 def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
-    """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status)."""
+    """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status).
+
+    The contacts and impacts are those of the rounded rim, corner radius ``c.corner_radius``
+    (:func:`next_contact`, :func:`coinflight.core.impact.impact`)."""
     # The contact record (core.contact.Contact), unpacked once for the loop below.
     radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
+    corner = c.corner_radius
     g, restitution, friction = c.g, c.restitution, c.friction
     rho, edge_sine = c.reach, c.edge_sine
     wx, wy, wz = omega_body
@@ -308,13 +322,13 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     bounces = 0
     first = -1.0
     for _ in range(MAX_IMPACTS):
-        tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh)
+        tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
         if tc < 0.0:
             return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
         t += tc
-        z = lowest_depth(n[2], radius, hh)
+        z = lowest_depth(n[2], radius, hh, corner)
         v = (v[0], v[1], v[2] - g * tc)
         if approach >= 0.0:
             # A graze within CA_TOLERANCE: no impact, fly on from a little later.
@@ -324,7 +338,7 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
             first = t
         if bounces >= max_bounces:
             return resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
-        v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction)
+        v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction, corner)
         face, status, duration = after_impact(z, v, lm, n, rebound, c)
         if status >= 0:
             return face, bounces, first, t + duration, status
@@ -334,8 +348,8 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         # the downward acceleration of any point of the coin; start looking at its peak.
         accel = g + 2.0 * dot(omega, omega) * rho
         tau = rebound / accel
-        if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh) <= 0.0:
-            tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh)
+        if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
+            tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
     return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
 
 
@@ -382,17 +396,19 @@ def _precess_from(n, lm, i1, tau):
 
 
 @njit(cache=True)
-def _gap_after(tau, z, vz, g, n, lm, i1, radius, hh):
+def _gap_after(tau, z, vz, g, n, lm, i1, radius, hh, corner):
+    """Gap under the rounded rim (corner radius ``corner``;
+    :func:`coinflight.core.impact.lowest_depth`) tau after an impact."""
     m = _precess_from(n, lm, i1, tau)
-    return z + vz * tau - 0.5 * g * tau * tau - lowest_depth(m[2], radius, hh)
+    return z + vz * tau - 0.5 * g * tau * tau - lowest_depth(m[2], radius, hh, corner)
 
 
 @njit(cache=True)
-def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh):
+def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh, corner):
     """A time in (0, tau] after an impact where the gap is positive, by halving tau."""
     for _ in range(200):
         tau *= 0.5
-        if _gap_after(tau, z, vz, g, n, lm, i1, radius, hh) > 0.0:
+        if _gap_after(tau, z, vz, g, n, lm, i1, radius, hh, corner) > 0.0:
             return tau
     return tau
 

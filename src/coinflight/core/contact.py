@@ -73,11 +73,13 @@ class Contact(NamedTuple):
         (:func:`coinflight.core.contact_phase.settle`, which touches the table with the rounded
         rim); the end of every landing through these two fields
         (:func:`coinflight.core.bounce.after_impact`'s energy test and every
-        :func:`coinflight.core.impact.resting_face`, with or without air). It does not reach
-        the impact law (:func:`coinflight.core.impact.impact` takes r and h/2, and its contact
-        point is the sharp cylinder's: it differs by at most a (1 − 1/√2)), the search for the
-        next contact in flight, nor the planar rocking ending
-        (:func:`coinflight.core.bounce.rock`). 0: sharp corners.
+        :func:`coinflight.core.impact.resting_face`, with or without air); the impact law
+        (:func:`coinflight.core.impact.impact`, whose contact point is the rounded rim's lowest
+        point) and the search for the next contact in flight
+        (:func:`coinflight.core.bounce.next_contact` and the air kernel of
+        :mod:`coinflight.core.drag`), with or without air. It does not reach the planar
+        rocking ending (:func:`coinflight.core.bounce.rock`). 0: sharp corners, to the last
+        bit what the kernels gave before they took a.
     """
 
     radius: float

@@ -42,7 +42,9 @@ steps far longer than the compliant contact's ~0.5 ms; neither is here.
 Its edge rates are not credible. Of the handed tosses above (1,030 of 1,500, ``python
 benchmarks/bench_contact.py 1500 --corner a --contact-time t_c``), P(edge) is 0.207 with sharp
 corners (t_c 1 ms; 0.181 at 0.5 ms, 0.078 at 4 ms), 0.187 at a corner radius a = 0.2 mm, 0.175
-at 0.5 mm (0.004 at t_c = 4 ms), 0 at 0.95 mm (a rim without a flat band); the rocking ending
+at 0.5 mm (0.004 at t_c = 4 ms), 0 at 0.95 mm (a rim without a flat band; the a > 0 values
+measured while the flight and the impacts still met the sharp cylinder, not re-measured since
+they meet the rounded rim); the rocking ending
 gives ~1/100-1/1,000 and Murray & Teare 1 in 6,000. The edge rate converges as t_c falls (0.5
 and 1 ms differ by 1.5 standard errors of the difference; 4 ms is too soft), so it is the
 model's, not the numerics': any flat band on the rim holds a coin rolling slowly upright. The

@@ -761,11 +761,15 @@ def trajectory(omega_body, start_sign, launch_speed, air, times, out):
 
 
 @njit(cache=True)
-def _gap(z, v, n, lm, air, hh):
-    """(gap under the lowest point, its rate): z − depth(n_z), v_z + (ω × r_c)_z."""
-    gap = z - lowest_depth(n[2], air.radius, hh)
+def _gap(z, v, n, lm, air, hh, corner):
+    """(gap under the lowest point, its rate): z − depth(n_z), v_z + (ω × r_c)_z, for the rim
+    rounded with corner radius ``corner`` (the cylinder (r − a, h/2 − a) swept by a ball of
+    radius a, the geometry of :mod:`coinflight.core.contact_phase`;
+    :func:`coinflight.core.impact.lowest_depth` and
+    :func:`~coinflight.core.impact.contact_point`)."""
+    gap = z - lowest_depth(n[2], air.radius, hh, corner)
     omega = angular_velocity(lm, n, air.i1, air.i3)
-    rc = contact_point(n, air.radius, hh)
+    rc = contact_point(n, air.radius, hh, corner)
     return gap, v[2] + cross(omega, rc)[2]
 
 
@@ -774,15 +778,17 @@ def ending(v, lm, n, rebound, c):
     """(face, status, duration of a contact phase) if the coin has settled after this impact,
     else (−1, −1, 0): :func:`coinflight.core.bounce.after_impact`, the one ending of every
     landing kernel (below the barrier; dead; the bounces died out: rocking or contact phase)."""
-    z = lowest_depth(n[2], c.radius, c.half_thickness)
+    z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
     return after_impact(z, v, lm, n, rebound, c)
 
 
 @njit(cache=True)
 def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
     """One toss from launch through air to rest on the table: (face, bounces, first contact,
-    settle time, status), as :func:`coinflight.core.bounce.land_one`."""
+    settle time, status), as :func:`coinflight.core.bounce.land_one` (the rounded rim's
+    contacts and impacts, corner radius ``c.corner_radius``)."""
     hh = c.half_thickness
+    corner = c.corner_radius
     rho = c.reach
     n, u, a0, b0 = launch_state(omega_body, start_sign, air)
     z = c.drop_height  # height of the centre of mass above the surface
@@ -813,7 +819,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             rising = rising and v[2] > 0.0
             continue
         lm = angular_momentum(n, u, tr, a0, b0, air)
-        gap, speed = _gap(z, v, n, lm, air, hh)
+        gap, speed = _gap(z, v, n, lm, air, hh, corner)
         # The state from which the contact is polished, and the bracket on the step from it.
         zb, vb, nb, ub = z, v, n, u
         z1, v1, n1, u1 = z, v, n, u
@@ -838,7 +844,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
                 th = 2.0 * math.atan2(sr, cr)
             z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
             lm1 = angular_momentum(n1, u1, tr + h, a0, b0, air)
-            g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
+            g1, s1 = _gap(z1, v1, n1, lm1, air, hh, corner)
             if g1 >= -CA_TOLERANCE:
                 z, v, n, u = z1, v1, n1, u1
                 t += h
@@ -868,7 +874,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             tau = trial
             z1, v1, n1, u1 = step(zb, vb, nb, ub, tr0, tau, a0, b0, air)
             lm1 = angular_momentum(n1, u1, tr0 + tau, a0, b0, air)
-            g1, s1 = _gap(z1, v1, n1, lm1, air, hh)
+            g1, s1 = _gap(z1, v1, n1, lm1, air, hh, corner)
         z, v, n, u = z1, v1, n1, u1
         t = t0 + tau
         tr = tr0 + tau
@@ -886,9 +892,9 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             first = t
         if bounces >= max_bounces:
             return resting_face(n[2], c.edge_sine), bounces, first, t, _LIMIT
-        z = lowest_depth(n[2], c.radius, hh)
+        z = lowest_depth(n[2], c.radius, hh, corner)
         v, lm, rebound = impact(
-            v, lm, n, c.radius, hh, c.mass, c.i1, c.i3, c.restitution, c.friction
+            v, lm, n, c.radius, hh, c.mass, c.i1, c.i3, c.restitution, c.friction, corner
         )
         face, status, duration = ending(v, lm, n, rebound, c)
         if status >= 0:
@@ -902,7 +908,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         lift = rebound / (c.g + 2.0 * dot(omega, omega) * rho)
         for _ in range(200):
             z1, v1, n1, u1 = step(z, v, n, u, 0.0, lift, a0, b0, air)
-            if z1 - lowest_depth(n1[2], c.radius, hh) > 0.0:
+            if z1 - lowest_depth(n1[2], c.radius, hh, corner) > 0.0:
                 break
             lift *= 0.5
         z, v, n, u = z1, v1, n1, u1

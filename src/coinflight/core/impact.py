@@ -4,7 +4,12 @@ Scalar kernels on 3-tuples of floats (lab frame, SI units, the surface normal is
 so that numba compiles the same functions for the event-driven simulation of
 :mod:`coinflight.core.bounce`. The coin is a uniform cylinder of radius r and half-thickness
 hh = h/2 whose state is its heads normal n, the velocity v of its centre of mass and its
-angular momentum L about the centre of mass (all lab frame).
+angular momentum L about the centre of mass (all lab frame). Its rim's corners may be rounded
+with a radius a (0 ≤ a ≤ h/2): the coin is then the cylinder (r − a, h/2 − a) swept by a ball
+of radius a, the geometry of :mod:`coinflight.core.contact_phase`
+(:func:`~coinflight.core.contact_phase.rim_contact`); :func:`lowest_depth`,
+:func:`contact_point` and :func:`impact` take a (0 by default: the sharp cylinder, bit for
+bit).
 
 The impact law
 --------------
@@ -96,7 +101,7 @@ def cross(a: Vec, b: Vec) -> Vec:
 
 
 @njit(cache=True)
-def lowest_depth(nz: float, radius: float, half_thickness: float) -> float:
+def lowest_depth(nz: float, radius: float, half_thickness: float, corner: float = 0.0) -> float:
     """Depth of the coin's lowest point below its centre of mass, m.
 
     Notes
@@ -104,33 +109,51 @@ def lowest_depth(nz: float, radius: float, half_thickness: float) -> float:
     The support function of a cylinder along −Z: r sqrt(1 − n_z²) + (h/2)|n_z| (the lowest
     point is on the rim of the lower face; a face when n_z = ±1, the edge when n_z = 0).
     Yong & Mahadevan 2011, §III; REFERENCES §5.
+
+    With rounded rim corners of radius a = ``corner`` (0 ≤ a ≤ h/2), the coin is the cylinder
+    (r − a, h/2 − a) swept by a ball of radius a (the geometry of
+    :mod:`coinflight.core.contact_phase`, :func:`~coinflight.core.contact_phase.rim_contact`);
+    the support function of a Minkowski sum is the sum of the support functions, so the depth
+    is (r − a) sqrt(1 − n_z²) + (h/2 − a)|n_z| + a. With a = 0 it is the sharp cylinder's,
+    to the last bit (subtracting and adding 0.0 is exact).
     """
     s2 = 1.0 - nz * nz
-    return radius * math.sqrt(s2 if s2 > 0.0 else 0.0) + half_thickness * abs(nz)
+    return (
+        (radius - corner) * math.sqrt(s2 if s2 > 0.0 else 0.0)
+        + (half_thickness - corner) * abs(nz)
+        + corner
+    )
 
 
 @njit(cache=True)
-def contact_point(n: Vec, radius: float, half_thickness: float) -> Vec:
+def contact_point(n: Vec, radius: float, half_thickness: float, corner: float = 0.0) -> Vec:
     """Lowest point of the coin relative to its centre of mass, lab frame, m.
 
     r ŵ − sign(n_z) (h/2) n, where ŵ is the unit vector of the coin's plane pointing most
     downwards, (−Z + n_z n)/sqrt(1 − n_z²). A coin lying flat touches with the centre of its
     lower face.
+
+    With rounded rim corners of radius a = ``corner``, the lowest point of the cylinder
+    (r − a, h/2 − a) swept by a ball of radius a (the geometry of
+    :mod:`coinflight.core.contact_phase`, :func:`~coinflight.core.contact_phase.rim_contact`):
+    the core cylinder's lowest rim point, (r − a) ŵ − sign(n_z)(h/2 − a) n, moved down by a,
+    − a Z (the ball's lowest point). Exactly the sharp coin's point for a = 0.
     """
     nz = n[2]
     s2 = 1.0 - nz * nz
     sign = 1.0 if nz >= 0.0 else -1.0
+    hh = half_thickness - corner
     if s2 <= 1e-24:
         return (
-            -sign * half_thickness * n[0],
-            -sign * half_thickness * n[1],
-            -sign * half_thickness * n[2],
+            -sign * hh * n[0],
+            -sign * hh * n[1],
+            -sign * hh * n[2] - corner,
         )
-    k = radius / math.sqrt(s2)
+    k = (radius - corner) / math.sqrt(s2)
     return (
-        k * nz * n[0] - sign * half_thickness * n[0],
-        k * nz * n[1] - sign * half_thickness * n[1],
-        k * (nz * nz - 1.0) - sign * half_thickness * n[2],
+        k * nz * n[0] - sign * hh * n[0],
+        k * nz * n[1] - sign * hh * n[1],
+        k * (nz * nz - 1.0) - sign * hh * n[2] - corner,
     )
 
 
@@ -578,6 +601,7 @@ def impact(
     i3: float,
     restitution: float,
     friction: float,
+    corner: float = 0.0,
 ) -> tuple[Vec, Vec, float]:
     """State just after the coin hits the surface z = const with its lowest point.
 
@@ -593,6 +617,10 @@ def impact(
         The coin (m, m, kg, kg m², kg m²).
     restitution, friction : float
         Stronge's energetic coefficient of restitution e in [0, 1] and Coulomb's μ ≥ 0.
+    corner : float
+        a, the radius of the rim's rounded corners, m (0 ≤ a ≤ h/2; 0: sharp): the impulse acts
+        at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of radius a
+        (:func:`contact_point`; the geometry of :mod:`coinflight.core.contact_phase`).
 
     Returns
     -------
@@ -606,7 +634,7 @@ def impact(
     Stronge's impact in impulse space (:func:`contact_impulse`); see the module notes for the
     law and why the kinetic energy never grows.
     """
-    rc = contact_point(n, radius, half_thickness)
+    rc = contact_point(n, radius, half_thickness, corner)
     omega = angular_velocity(angular_momentum, n, i1, i3)
     u = contact_velocity(v, omega, rc)
     if u[2] >= 0.0:

@@ -28,10 +28,11 @@ class Coin:
         the coin is then a cylinder of radius r − a and thickness h − 2a swept by a ball of
         radius a. Not measured for any coin (worn coins are rounder than new ones): carry a
         band, not a value. Only a table landing reads it
-        (:meth:`coinflight.core.contact.Contact.build`): the 3-D contact ending touches the
-        table with the rounded rim, and every landing's face/edge wells (the energy barrier
-        and the edge angle) are the rounded coin's; the impacts and the planar rocking ending
-        still meet the sharp cylinder (see :class:`coinflight.core.contact.Contact`).
+        (:meth:`coinflight.core.contact.Contact.build`): the flight's contacts, the impacts
+        and the 3-D contact ending touch the table with the rounded rim, and every landing's
+        face/edge wells (the energy barrier and the edge angle) are the rounded coin's; the
+        planar rocking ending still meets the sharp cylinder (see
+        :class:`coinflight.core.contact.Contact`).
 
     Examples
     --------
