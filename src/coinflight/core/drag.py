@@ -567,8 +567,9 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     computed once for them.
 
     Where n·v changes sign within the step (the face's projected area π r² |n·v̂| has its kink
-    there), the face drag's share of the step is integrated with :func:`kink_weights` instead
-    of the Runge-Kutta rule's own weights."""
+    there), the face drag's share of the step is integrated exactly over the kinks
+    (:func:`kink_integrals`; for turns too short or too long for its basis, :func:`kink_weights`)
+    instead of the Runge-Kutta rule's own weights."""
     c_half = c
     s_half = s
     n1 = _rotate(n, axis, c, s)
