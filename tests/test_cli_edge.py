@@ -134,7 +134,9 @@ def test_text_table():
         (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
         (
             ["--simulate", "10", "--rolling-resistance", "1e-4"],
-            "rolling resistance applies to the contact ending only",
+            "rolling resistance 0.0001 m: only the 3-D contact ending (ending='contact', "
+            "--ending contact) has rolling and pivoting resistance, which the rocking ending "
+            "would ignore",
         ),
         (
             [

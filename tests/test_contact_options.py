@@ -5,8 +5,10 @@ sweep and the web API; the corner radius reaching the 3-D contact phase."""
 from __future__ import annotations
 
 import csv
+import dataclasses
 import json
 import math
+import pickle
 import re
 
 import numpy as np
@@ -19,7 +21,13 @@ from coinflight import Coin, Toss
 from coinflight.cli import app
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.model.surface import Drag, Surface
+from coinflight.model.surface import (
+    DEFAULT_PIVOTING_RESISTANCE,
+    DEFAULT_ROLLING_RESISTANCE,
+    ROCKING_HAS_NO_RESISTANCE,
+    Drag,
+    Surface,
+)
 from coinflight.outcomes.table import (
     AIR_LANDINGS_PER_SECOND,
     BOUNCING_TOSSES_PER_SECOND,
@@ -40,6 +48,10 @@ TOSS = ["toss", "--omega", "240", "5", "3", "--flight-time", "0.49"]
 TABLE = ["--surface", "table", "--drop-height", "0.8"]
 CONTACT = [*TABLE, "--ending", "contact"]
 QUARTER_HALF = 0.5 * Coin.preset("us-quarter").thickness  # 0.000875 m
+ROCKING_ONLY = (
+    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
+    "resistance, which the rocking ending would ignore"
+)  # the one wording of a resistance given with the rocking ending, library and command line
 
 
 def _json(*args: str) -> dict:
@@ -120,6 +132,72 @@ def test_a_rounded_rim_touches_the_table_no_earlier_than_the_sharp_one():
     assert np.sum(sharp.face == 2) > 0 and np.sum(round_.face == 2) == 0
 
 
+# --- the resistances belong to the contact ending: one check, in the Surface ------------------
+def test_the_surface_refuses_a_resistance_given_with_the_rocking_ending():
+    """Surface holds the one check (the query, the sweep and simulate_edge rely on it): a
+    resistance the caller gives with the rocking ending, which has none, is refused in one
+    line naming the value; the defaults stay (the contact ending uses them), a copy with
+    another field changed is not refused, and a given value is kept with the contact ending."""
+    with pytest.raises(
+        ValueError, match=f"^{re.escape('rolling resistance 0.0002 m: ' + ROCKING_ONLY)}$"
+    ):
+        Surface("table", 0.8, rolling_resistance=2e-4)
+    said = f"rolling resistance 0.0001 m, pivoting resistance 0 m: {ROCKING_ONLY}"
+    with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):  # even the default's value
+        Surface("table", rolling_resistance=DEFAULT_ROLLING_RESISTANCE, pivoting_resistance=0.0)
+    with pytest.raises(ValueError, match=re.escape(ROCKING_ONLY)):
+        Surface("hand", pivoting_resistance=1e-4)
+    with pytest.raises(
+        ValueError, match=re.escape("pivoting resistance must be between 0 and 0.01")
+    ):
+        Surface("table", pivoting_resistance=0.02)  # the range first, with either ending
+    rocking = Surface("table", 0.8)
+    contact = Surface("table", 0.8, ending="contact")
+    for surface in (rocking, contact):
+        assert surface.rolling_resistance == DEFAULT_ROLLING_RESISTANCE
+        assert surface.pivoting_resistance == DEFAULT_PIVOTING_RESISTANCE
+    assert repr(rocking).count("resistance=0.0001") == 2
+    given = Surface(
+        "table", 0.8, rolling_resistance=2e-4, pivoting_resistance=0.0, ending="contact"
+    )
+    assert (given.rolling_resistance, given.pivoting_resistance) == (2e-4, 0.0)
+    assert contact == Surface("table", 0.8, rolling_resistance=1e-4, ending="contact")
+    for copy in (rocking, pickle.loads(pickle.dumps(rocking))):
+        assert dataclasses.replace(copy, friction=0.1).friction == 0.1
+    assert dataclasses.replace(contact, ending="rocking") == rocking
+    with pytest.raises(ValueError, match=re.escape(ROCKING_ONLY)):
+        dataclasses.replace(given, ending="rocking")
+    # a distribution of them, drawn toss by toss, meets the same words
+    assert NO_RESISTANCE_DISTRIBUTIONS == ROCKING_HAS_NO_RESISTANCE == ROCKING_ONLY
+
+
+@pytest.mark.parametrize(
+    ("args", "said"),
+    [
+        (["toss", *TOSS[1:], *TABLE, "--pivoting-resistance", "0"],
+         f"pivoting resistance 0 m: {ROCKING_ONLY}"),
+        (["probability", "--omega-x", "150:300", "--flight-time", "0.4:0.6", *TABLE,
+          "--rolling-resistance", "1e-5:1e-3", "--method", "monte-carlo", "--n", "10"],
+         f"rolling_resistance 1e-05–0.001: {ROCKING_ONLY}"),
+        (["edge", "--simulate", "10", "--restitution", "0.5", "--pivoting-resistance", "1e-3"],
+         f"pivoting resistance 0.001 m: {ROCKING_ONLY}"),
+    ],
+)  # fmt: skip
+def test_every_command_refuses_a_resistance_with_the_rocking_ending_in_the_surfaces_words(
+    args, said
+):
+    assert one_line_error(*args) == said
+
+
+def test_simulate_edge_refuses_a_resistance_with_the_rocking_ending_in_the_surfaces_words():
+    from coinflight.studies.edge import simulate_edge
+
+    with pytest.raises(
+        ValueError, match=f"^{re.escape('rolling resistance 0.0001 m: ' + ROCKING_ONLY)}$"
+    ):
+        simulate_edge([0.1], 10, 1, restitution=0.5, rolling_resistance=1e-4)
+
+
 # --- the command line ---------------------------------------------------------------------------
 @pytest.mark.parametrize(
     ("args", "message"),
@@ -137,9 +215,7 @@ def test_a_rounded_rim_touches_the_table_no_earlier_than_the_sharp_one():
          "most half the thickness h/2"),
         (["--corner-radius", "-0.0001"], None),
         (["--corner-radius", "nan"], None),
-        (["--rolling-resistance", "1e-4"],
-         "--rolling-resistance applies to --ending contact only (the default rocking ending has "
-         "no rolling or pivoting resistance)"),
+        (["--rolling-resistance", "1e-4"], f"rolling resistance 0.0001 m: {ROCKING_ONLY}"),
         (["--ending", "rocking", "--pivoting-resistance", "1e-4"], None),
         (["--ending", "contact", "--restitution", "0"], DEAD_CONTACT),
         (["--ending", "contact", "--bounces", "2"],
@@ -317,8 +393,8 @@ def test_sweep_over_endings_resistances_and_corner_radii(tmp_path):
     [
         (["--surface", "hand,table", "--corner-radius", "1e-4"],
          "--corner-radius applies to --surface table only"),
-        (["--surface", "table", "--pivoting-resistance", "1e-4"],
-         "--pivoting-resistance applies to --ending contact only"),
+        (["--surface", "table", "--pivoting-resistance", "1e-4,2e-4"],
+         f"pivoting resistance 0.0001 m: {ROCKING_ONLY}"),
         (["--surface", "hand", "--ending", "contact"], "--ending applies to --surface table only"),
         (["--surface", "table", "--ending", "contact,foo"], "--ending must be rocking or contact"),
         (["--surface", "table", "--corner-radius", "0.001"], "--corner-radius: US quarter: corner "

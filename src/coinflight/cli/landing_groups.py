@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -34,21 +34,37 @@ ENDING_HELP = (
     "unmeasured resistances and corner radius."
 )
 """--ending's help (command line and sweep)."""
-ROLLING_HELP = (
-    "rolling resistance length ℓ_r, m, 0 to 0.01 (torque ℓ_r F_n against the coin's rolling; "
-    "default 1e-4). Not measured for coins: quote a band over 1e-5 to 1e-3, not a value."
-)
+
+
+def _resistance_tail(ell: str, against: str) -> str:
+    return (
+        f"m, 0 to 0.01 (torque {ell} F_n against {against}; default 1e-4). Not measured for "
+        "coins: quote a band over 1e-5 to 1e-3, not a value."
+    )
+
+
+ROLLING_TAIL = _resistance_tail("ℓ_r", "the coin's rolling")
+"""--rolling-resistance's help after the name of the length: unit, range, default, unmeasured."""
+PIVOTING_TAIL = _resistance_tail("ℓ_p", "the coin's spin about the vertical")
+"""--pivoting-resistance's help after the name of the length, as :data:`ROLLING_TAIL`."""
+ROLLING_HELP = "rolling resistance length ℓ_r, " + ROLLING_TAIL
 """--rolling-resistance's help."""
-PIVOTING_HELP = (
-    "pivoting (drilling) resistance length ℓ_p, m, 0 to 0.01 (torque ℓ_p F_n against the "
-    "coin's spin about the vertical; default 1e-4). Not measured for coins: quote a band over "
-    "1e-5 to 1e-3, not a value."
-)
+PIVOTING_HELP = "pivoting (drilling) resistance length ℓ_p, " + PIVOTING_TAIL
 """--pivoting-resistance's help."""
+
+
+def resistance_option(which: str, metavar: str, help: str) -> Any:
+    """The --rolling-resistance or --pivoting-resistance option (``which``: rolling or
+    pivoting), read as text (a number, a distribution or a list: the command parses it); the
+    one definition of the table group's and the sweep's."""
+    return option(f"--{which}-resistance", metavar=metavar, panel=SURFACE_PANEL, help=help)
+
+
 CORNER_HELP = (
     "radius of the coin's rounded rim corners, m, 0 to half the thickness (default 0: sharp). "
-    "Used by the contact ending and the face/edge wells of every ending, not by the impacts. "
-    "Not measured for coins (worn coins are rounder): quote a band, not a value."
+    "Used by the impacts, the contact ending and every ending's face/edge wells (not by the "
+    "planar rocking hand-off's motion). Not measured for coins (worn coins are rounder): quote "
+    "a band, not a value."
 )
 """--corner-radius's help."""
 _SPREAD_RESISTANCE = (
@@ -125,11 +141,8 @@ TABLE = Group(
         "rolling_resistance": (
             Annotated[
                 str | None,
-                option(
-                    "--rolling-resistance",
-                    metavar="L",
-                    panel=SURFACE_PANEL,
-                    help="table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE,
+                resistance_option(
+                    "rolling", "L", "table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE
                 ),
             ],
             None,
@@ -137,11 +150,10 @@ TABLE = Group(
         "pivoting_resistance": (
             Annotated[
                 str | None,
-                option(
-                    "--pivoting-resistance",
-                    metavar="L",
-                    panel=SURFACE_PANEL,
-                    help="table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                resistance_option(
+                    "pivoting",
+                    "L",
+                    "table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,

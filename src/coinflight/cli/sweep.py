@@ -28,7 +28,13 @@ import typer
 
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
-from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
+from coinflight.cli.landing_groups import (
+    CORNER_HELP,
+    ENDING_HELP,
+    PIVOTING_TAIL,
+    ROLLING_TAIL,
+    resistance_option,
+)
 from coinflight.cli.options import (
     COIN_PANEL,
     METHOD_PANEL,
@@ -247,9 +253,10 @@ def outcome_models(
             for flag, text in table.items()
         ]
         for the_ending in dict.fromkeys(endings):
-            # the resistances are swept for the contact ending only (build_surface refuses
-            # them with the rocking ending, which has none)
-            ells = resistances if the_ending == "contact" else [[None], [None]]
+            # the resistances are swept over the contact ending's rows only; without such rows
+            # the rocking rows get them, and the surface refuses them in its words
+            swept = the_ending == "contact" or "contact" not in endings
+            ells = resistances if swept else [[None], [None]]
             for d, e, mu, rolling, pivoting in itertools.product(*lists, *ells):
                 # build_surface reads the options as typed; repr round-trips a float exactly
                 surface = build_surface(
@@ -258,12 +265,6 @@ def outcome_models(
                 )  # fmt: skip
                 check_bounces(surface, bounces)
                 models.append(build_model(surface, None, bounces))
-    if "contact" not in endings and any(x is not None for x in contact.values()):
-        flags = [flag for flag, text in contact.items() if text is not None]
-        raise ValueError(
-            f"{', '.join(flags)} applies to --ending contact only (the default rocking ending "
-            "has no rolling or pivoting resistance)"
-        )
     return models
 
 
@@ -420,20 +421,14 @@ def sweep(
     ] = None,
     rolling_resistance: Annotated[
         str | None,
-        option(
-            "--rolling-resistance",
-            metavar="LIST",
-            panel=SURFACE_PANEL,
-            help="table, contact ending rows: lengths ℓ_r, " + ROLLING_HELP.split(", ", 1)[1],
+        resistance_option(
+            "rolling", "LIST", "table, contact ending rows: lengths ℓ_r, " + ROLLING_TAIL
         ),
     ] = None,
     pivoting_resistance: Annotated[
         str | None,
-        option(
-            "--pivoting-resistance",
-            metavar="LIST",
-            panel=SURFACE_PANEL,
-            help="table, contact ending rows: lengths ℓ_p, " + PIVOTING_HELP.split(", ", 1)[1],
+        resistance_option(
+            "pivoting", "LIST", "table, contact ending rows: lengths ℓ_p, " + PIVOTING_TAIL
         ),
     ] = None,
     corner_radius: Annotated[

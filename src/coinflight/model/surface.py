@@ -42,6 +42,31 @@ DEFAULT_PIVOTING_RESISTANCE = 1e-4
 spread over the contact arc: an assumption, as the rolling resistance (band 1e-5 to 1e-3 m;
 MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
+ROCKING_HAS_NO_RESISTANCE = (
+    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
+    "resistance, which the rocking ending would ignore"
+)
+"""The one refusal of a rolling or pivoting resistance given with the rocking ending, after
+what was given (``rolling resistance 0.0002 m: …``; a distribution of them drawn toss by toss
+too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, command line
+and web alike."""
+
+
+class _Unset(float):
+    """A resistance the caller did not give: its default value, marked as such.
+
+    The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`) but
+    keeps the defaults, which the contact ending would use. The mark is a float (the kernels,
+    JSON and ``repr`` see the plain default) that :func:`dataclasses.replace` passes back
+    unchanged, so a copy of a rocking surface with another field changed is not refused.
+    """
+
+    __slots__ = ()
+
+
+_UNSET_ROLLING = _Unset(DEFAULT_ROLLING_RESISTANCE)
+_UNSET_PIVOTING = _Unset(DEFAULT_PIVOTING_RESISTANCE)
+
 ROLLING_RESISTANCE = v.Quantity("rolling resistance", "m", 0.0, 0.01)
 """ℓ_r: 0 to 1 cm (a coin's radius: a torque ℓ F_n above that stops any rolling at once)."""
 PIVOTING_RESISTANCE = v.Quantity("pivoting resistance", "m", 0.0, 0.01)
@@ -92,7 +117,9 @@ class Surface:
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
         (:mod:`coinflight.core.contact_phase`); assumptions, see
-        :data:`DEFAULT_ROLLING_RESISTANCE`.
+        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"``
+        only: the rocking ending has none, and refuses one given to it (ValueError,
+        :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused.
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
@@ -115,14 +142,18 @@ class Surface:
     Traceback (most recent call last):
     ...
     ValueError: restitution must be between 0 and 1, got 1.5
+    >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: rolling resistance 0.0002 m: only the 3-D contact ending (ending='contact', ...
     """
 
     kind: SurfaceKind = "hand"
     drop_height: float = 0.0
     restitution: float = DEFAULT_RESTITUTION
     friction: float = DEFAULT_FRICTION
-    rolling_resistance: float = DEFAULT_ROLLING_RESISTANCE
-    pivoting_resistance: float = DEFAULT_PIVOTING_RESISTANCE
+    rolling_resistance: float = _UNSET_ROLLING
+    pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
     ending: Literal["rocking", "contact"] = "rocking"
 
@@ -140,13 +171,17 @@ class Surface:
             raise TypeError("restitution must be a single number")
         object.__setattr__(self, "restitution", float(e))
         object.__setattr__(self, "friction", _single("friction", self.friction, ""))
-        for name, quantity in (
-            ("rolling_resistance", ROLLING_RESISTANCE),
-            ("pivoting_resistance", PIVOTING_RESISTANCE),
-            ("contact_time", CONTACT_TIME),
-        ):
-            object.__setattr__(self, name, quantity.check(getattr(self, name)))
+        object.__setattr__(self, "contact_time", CONTACT_TIME.check(self.contact_time))
         v.choice("ending", self.ending, ENDINGS)
+        given = []
+        for quantity in (ROLLING_RESISTANCE, PIVOTING_RESISTANCE):
+            name = quantity.name.replace(" ", "_")
+            value = getattr(self, name)
+            if not isinstance(value, _Unset):  # given: checked, and kept as a plain float
+                object.__setattr__(self, name, quantity.check(value))
+                given.append(quantity.describe(getattr(self, name)))
+        if given and self.ending != "contact":
+            raise ValueError(f"{', '.join(given)}: {ROCKING_HAS_NO_RESISTANCE}")
 
     @property
     def bounces(self) -> bool:
@@ -259,6 +294,7 @@ __all__ = [
     "CONTACT_RANGES",
     "CONTACT_UNITS",
     "DROP_HEIGHT",
+    "ROCKING_HAS_NO_RESISTANCE",
     "Drag",
     "Surface",
     "contact_distribution",

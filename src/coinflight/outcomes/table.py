@@ -21,7 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES
 from coinflight.model.coin import Coin
-from coinflight.model.surface import Drag, Surface
+from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, Drag, Surface
 from coinflight.model.toss import Toss
 from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
@@ -92,11 +92,9 @@ resistances act in the contact ending only, :data:`RESISTANCES`)."""
 RESISTANCES = ("rolling_resistance", "pivoting_resistance")
 """The contact parameters only the 3-D contact ending (``Surface(ending="contact")``) uses."""
 
-NO_RESISTANCE_DISTRIBUTIONS = (
-    "rolling and pivoting resistance act only in the 3-D contact ending (--ending contact, "
-    "Surface(ending='contact')); the rocking ending has none to draw toss by toss"
-)
-"""The refusal of per-toss rolling and pivoting resistances (one line, CLI and library)."""
+NO_RESISTANCE_DISTRIBUTIONS = ROCKING_HAS_NO_RESISTANCE
+"""The refusal of per-toss rolling and pivoting resistances with the rocking ending (one line,
+CLI and library): the surface's own wording for a single one."""
 
 
 STATUS_NAMES = (

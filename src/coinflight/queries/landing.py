@@ -24,10 +24,6 @@ CONTACT_FLAGS = {
 }
 """The contact parameters a command line may spread, and their options."""
 
-CONTACT_ONLY = ("--rolling-resistance", "--pivoting-resistance")
-"""Options that only the 3-D contact ending reads (refused with the rocking ending, where they
-would change nothing)."""
-
 
 def contact_spread(
     restitution: str | None,
@@ -110,17 +106,11 @@ def build_surface(
     numbers, and --surface-preset (ranges) is refused, unless ``ranged`` (the command then
     reads their distributions with :func:`contact_spread` and passes them with the tosses; the
     surface keeps its defaults for them). --ending is rocking (default) or contact; the two
-    resistances apply to --ending contact only. ``corner_radius`` (the coin's, applied by
-    :func:`landing_coin`) is only checked here to belong to a table.
+    resistances apply to --ending contact only (the surface refuses them with the rocking
+    ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
+    only checked here to belong to a table.
     """
-    from coinflight.model.surface import (
-        DEFAULT_FRICTION,
-        DEFAULT_PIVOTING_RESISTANCE,
-        DEFAULT_RESTITUTION,
-        DEFAULT_ROLLING_RESISTANCE,
-        ENDINGS,
-        Surface,
-    )
+    from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, ENDINGS, Surface
 
     given = {
         "--drop-height": drop_height,
@@ -141,13 +131,6 @@ def build_surface(
             f"--ending must be {' or '.join(ENDINGS)} (how a table landing ends once its "
             f"bounces die out), got {ending!r}"
         )
-    if ending != "contact":
-        extra = [flag for flag in CONTACT_ONLY if given[flag] is not None]
-        if extra:
-            raise ValueError(
-                f"{', '.join(extra)} applies to --ending contact only (the default rocking "
-                "ending has no rolling or pivoting resistance)"
-            )
     if surface_preset is not None and not ranged:
         contact_spread(None, None, surface_preset)  # an unknown name first
         raise ValueError(
@@ -163,14 +146,16 @@ def build_surface(
         if ranged
         else single_values(spread)
     )
+    from coinflight.outcomes.table import RESISTANCES
+
+    resistances = {name: fixed[name] for name in RESISTANCES if name in fixed}  # those given
     return Surface(
         kind,  # type: ignore[arg-type]
         drop_height=0.0 if drop_height is None else drop_height,
         restitution=fixed.get("restitution", DEFAULT_RESTITUTION),
         friction=fixed.get("friction", DEFAULT_FRICTION),
-        rolling_resistance=fixed.get("rolling_resistance", DEFAULT_ROLLING_RESISTANCE),
-        pivoting_resistance=fixed.get("pivoting_resistance", DEFAULT_PIVOTING_RESISTANCE),
         ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
+        **resistances,
     )
 
 

@@ -170,13 +170,6 @@ def simulate_edge(
         )
         if value is not None
     }
-    if resistances and ending != "contact":
-        names = " and ".join(name.replace("_", " ") for name in resistances)
-        verb = "apply" if len(resistances) > 1 else "applies"
-        raise ValueError(
-            f"{names} {verb} to the contact ending only (ending='contact', --ending contact); "
-            "the rocking ending has no rolling or pivoting resistance"
-        )
     if ending == "contact" and restitution == 0.0:
         raise ValueError(
             "the contact ending acts on landings that bounce: with restitution 0 (the default) "
@@ -189,7 +182,7 @@ def simulate_edge(
         restitution=restitution,
         friction=friction,
         ending=ending,  # type: ignore[arg-type]  # checked by Surface
-        **resistances,
+        **resistances,  # refused by Surface with the rocking ending, which has none
     )
     rate = TableLanding(surface).rate
     v.work_bound(
