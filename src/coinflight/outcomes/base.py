@@ -90,6 +90,11 @@ class OutcomeModel:
         face = self.faces(dist.coin, omega, t, dist.start_sign, dist.g)
         return np.bincount(face, minlength=3).astype(np.int64)
 
+    def rate_for(self, dist: TossDistribution | None) -> float:
+        """:attr:`rate` for the tosses ``dist`` (a model whose speed depends on what the tosses
+        spread, their own contact parameters, says so); the estimators' work bounds use it."""
+        return self.rate
+
     def describe(self) -> str:
         """One line for text output: where the toss ends and the air."""
         return self.name

@@ -57,12 +57,24 @@ e = 0.5, μ = 0.3 (25,000 at e = 0.8, μ = 0.1; 405,000 dead, e = 0) under a loa
 
 CONTACT_TOSSES_PER_SECOND = 300.0
 """Drag-free table landings carried to rest a second with the experimental 3-D contact phase
-(``Surface(ending="contact")``, e > 0), on the 2-core machine while busy: 301 a second
-measured at e = 0.5, μ = 0.3 under a load of 3.3, 300-800 quieter (``python
-benchmarks/bench_bounce.py --contact N``; 66-81 % of the tosses go through the contact phase,
-for a median 0.3-2.3 s of motion). Re-measured for the command line's ``--ending contact``
-(its rates, the first part of ``--contact 2000``): 466 a second against 45,520 rocking and
-250,691 to first contact in the same run, load 3.5; kept at 300 for a busier machine."""
+(``Surface(ending="contact")``, e > 0), all on one surface, on the project's 2-core machine
+(AMD EPYC, 2 threads) while busy: 301 a second measured at e = 0.5, μ = 0.3 under a load of
+3.3, 300-800 quieter (``python benchmarks/bench_bounce.py --contact N``; 66-81 % of the tosses
+go through the contact phase, for a median 0.3-2.3 s of motion). Re-measured for the command
+line's ``--ending contact`` (its rates, the first part of ``--contact 2000``): 466 a second
+against 45,520 rocking and 250,691 to first contact in the same run, load 3.5; 839 a second
+quiet (load 1.4, ``--contact-rates 1000``, 2026-11-23 16:42 UTC); 233 at a load of 5.7
+(``--contact-rates 1000``, 2026-11-23 17:51 UTC). Kept at 300 for a busy machine."""
+
+CONTACT_PER_TOSS_PER_SECOND = 150.0
+"""The same landings when every toss has its own contact parameters (a distribution of e, μ
+or the resistances, drawn toss by toss: each landing then builds its own contact record and
+the contact phase its damping): ``python benchmarks/bench_bounce.py --contact-rates 1000``
+(1,000 vigorous nickel tosses, e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), median of 3, 2 threads) on
+the project's 2-core machine: 425 a second against 839 on one surface quiet (load 1.4,
+2026-11-23 16:42 UTC, the lead), 134-171 loaded (load 3-8, helper, same day), 134 against 233
+at a load of 5.7 (17:51 UTC): 0.51-0.58 of the one-surface rate, so half of
+:data:`CONTACT_TOSSES_PER_SECOND`."""
 
 CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
 """Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
@@ -386,6 +398,19 @@ class TableLanding(OutcomeModel):
             return AIR_LANDINGS_PER_SECOND
         return BOUNCING_TOSSES_PER_SECOND
 
+    def rate_for(self, dist: TossDistribution | None) -> float:
+        """:attr:`rate`, or :data:`CONTACT_PER_TOSS_PER_SECOND` for contact-ending landings
+        whose tosses bring their own contact parameters (``dist.contact``, drawn toss by toss:
+        about half as fast), unless every toss lands dead (e = 0 for all)."""
+        spread = {} if dist is None else dist.contact
+        if not spread or self.drag is not None:  # (air takes no distributions)
+            return self.rate
+        e = spread.get("restitution")
+        bounces = self.surface.restitution > 0.0 if e is None else e.bounds[1] > 0.0
+        if self.surface.ending == "contact" and self.max_bounces is None and bounces:
+            return CONTACT_PER_TOSS_PER_SECOND
+        return self.rate
+
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
     ) -> None:
@@ -504,6 +529,7 @@ __all__ = [
     "AIR_LANDINGS_PER_SECOND",
     "BOUNCING_TOSSES_PER_SECOND",
     "CONTACT_AIR_LANDINGS_PER_SECOND",
+    "CONTACT_PER_TOSS_PER_SECOND",
     "CONTACT_TOSSES_PER_SECOND",
     "MAX_BOUNCES",
     "NO_RESISTANCE_DISTRIBUTIONS",

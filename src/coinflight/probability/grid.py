@@ -163,12 +163,12 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
             f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one (fast band "
             "counting needs a ranged flight time and the hand catch)",
             total,
-            min(MAX_WORK, model.rate * v.MAX_RUN_SECONDS),
+            min(MAX_WORK, model.rate_for(dist) * v.MAX_RUN_SECONDS),
             "configurations",
             _WAY_ON,
-            min(CONFIGURATIONS_PER_SECOND, model.rate),
+            min(CONFIGURATIONS_PER_SECOND, model.rate_for(dist)),
         )
-    return total / min(CONFIGURATIONS_PER_SECOND, model.rate)
+    return total / min(CONFIGURATIONS_PER_SECOND, model.rate_for(dist))
 
 
 def estimate(

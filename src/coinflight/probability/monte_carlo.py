@@ -99,10 +99,13 @@ def _conditional(
     return mean, math.sqrt(var / n)
 
 
-def check_work(n: int, model: OutcomeModel = HAND_CATCH) -> None:
+def check_work(
+    n: int, model: OutcomeModel = HAND_CATCH, dist: TossDistribution | None = None
+) -> None:
     """ValueError naming the time when ``n`` tosses of ``model`` exceed the run limit
-    (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate`` tosses a second)."""
-    check_tosses(NAME, check_count("n", n), model.rate)
+    (:data:`coinflight._validation.MAX_RUN_SECONDS`, at ``model.rate_for(dist)`` tosses a
+    second)."""
+    check_tosses(NAME, check_count("n", n), model.rate_for(dist))
 
 
 def estimate(
@@ -159,7 +162,7 @@ def estimate(
         return _estimate_conditional(
             dist, n, seed, grid_cells, model, executor, threads, chunk_size, progress, t0
         )
-    check_work(n, model)
+    check_work(n, model, dist)
     root = seed_sequence(seed)
     n_blocks = math.ceil(n / BLOCK)
     per_task = max(1, math.ceil(chunk_size / BLOCK))
@@ -225,8 +228,8 @@ def _estimate_conditional(
 
 
 def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
-    check_work(n, model)
-    return n / model.rate
+    check_work(n, model, dist)
+    return n / model.rate_for(dist)
 
 
 def _summary(result: ProbabilityResult) -> str:

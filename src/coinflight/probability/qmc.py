@@ -91,7 +91,10 @@ def _spread(per: np.ndarray) -> tuple[float, float]:
 
 
 def check_work(
-    n: int, replicates: int = DEFAULT_REPLICATES, model: OutcomeModel = HAND_CATCH
+    n: int,
+    replicates: int = DEFAULT_REPLICATES,
+    model: OutcomeModel = HAND_CATCH,
+    dist: TossDistribution | None = None,
 ) -> None:
     """ValueError unless ``n`` is ``replicates`` × a power of two, its points fit Sobol's
     :data:`SOBOL_BITS` bits per scrambling and the run limit
@@ -113,12 +116,13 @@ def check_work(
         f"SciPy's Sobol sequence has {SOBOL_BITS} bits; use n ≤ {replicates} × 2^{SOBOL_BITS} "
         f"= {replicates << SOBOL_BITS}",
     )
-    _runner.check_tosses(NAME, n, rate(model), "use a smaller n (16 × a power of two)")
+    _runner.check_tosses(NAME, n, rate(model, dist), "use a smaller n (16 × a power of two)")
 
 
-def rate(model: OutcomeModel = HAND_CATCH) -> float:
-    """Points a second: the model's tosses and SciPy's scrambled Sobol points together."""
-    return 1.0 / (1.0 / model.rate + 1.0 / SOBOL_POINTS_PER_SECOND)
+def rate(model: OutcomeModel = HAND_CATCH, dist: TossDistribution | None = None) -> float:
+    """Points a second: the model's tosses (of ``dist``) and SciPy's scrambled Sobol points
+    together."""
+    return 1.0 / (1.0 / model.rate_for(dist) + 1.0 / SOBOL_POINTS_PER_SECOND)
 
 
 def estimate(
@@ -145,7 +149,7 @@ def estimate(
     t0 = time.perf_counter()
     n = check_count("n", n)
     replicates = v.count("replicates", replicates, 2, MAX_REPLICATES)
-    check_work(n, replicates, model)
+    check_work(n, replicates, model, dist)
     points = n // replicates
     root = seed_sequence(seed)
     if variance_reduction is not None:
@@ -216,8 +220,8 @@ def _estimate_conditional(
 
 
 def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> float:
-    check_work(n, model=model)
-    return n / rate(model)
+    check_work(n, model=model, dist=dist)
+    return n / rate(model, dist)
 
 
 ESTIMATOR = Estimator(

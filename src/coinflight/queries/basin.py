@@ -63,9 +63,11 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
 
 
 MAP_SECONDS = 60.0
-"""Longest map of table landings, s of estimated work at the outcome model's rate (a minute, as
-the grid method's: a 500×500 map at the rocking ending's 50,000 landings a second is 5 s; with
-the 3-D contact ending, about 300 a second, 18,000 cells)."""
+"""Longest map of table landings a command asks for, s of estimated work at the outcome
+model's rate (a minute, as the grid method's: a 500×500 map at the rocking ending's 50,000
+landings a second is 5 s; with the 3-D contact ending, about 300 a second, 18,000 cells). The
+library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
+waits for its figure or its page gets a minute."""
 
 
 def basin_query(
@@ -109,7 +111,7 @@ def basin_query(
         omega_y=omega_y,
         omega_z=omega_z,
         psi=psi_rad,
-        resolution=parse_resolution(resolution),
+        resolution=(n_t, n_w),
         start=start,
         g=g,
         executor=executor,

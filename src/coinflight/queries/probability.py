@@ -137,7 +137,7 @@ def probability_query(
         dist = dist.with_contact(**spread)
     if landing is not None and estimator.default_n and n is None:
         slow = _slow_landing(landing)
-        rate = landing.model.rate
+        rate = landing.model.rate_for(dist)
         if slow and _default_seconds(estimator, dist, landing.model) > _DRAG_DEFAULT_SECONDS:
             raise ValueError(
                 _SLOW_NEEDS_N.format(

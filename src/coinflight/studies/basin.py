@@ -235,6 +235,14 @@ def basin_map(
     -------
     BasinMap
         ``face`` has shape (resolution[1], resolution[0]).
+
+    Raises
+    ------
+    ValueError
+        Beyond 25 million cells, or, for an outcome model, more tosses than its measured
+        :attr:`~coinflight.outcomes.base.OutcomeModel.rate` lands in
+        :data:`coinflight._validation.MAX_RUN_SECONDS` (an hour: 1.08 million cells with the
+        3-D contact ending), before anything is allocated.
     """
     from coinflight.model.toss import Toss
 
@@ -248,6 +256,15 @@ def basin_map(
         v.in_range("psi", psi, 0.0, math.pi, "rad")
         if omega_y != 0.0 or omega_z != 0.0:
             raise ValueError("give either a fixed psi or fixed omega_y/omega_z, not both")
+    if isinstance(outcome, OutcomeModel):  # each cell a toss, at the model's measured rate
+        v.work_bound(
+            f"a map of {n_t}×{n_w} tosses ({outcome.name})",
+            n_t * n_w,
+            outcome.rate * v.MAX_RUN_SECONDS,
+            "tosses",
+            "use a coarser resolution",
+            outcome.rate,
+        )
     # Validate T, g and start the same way every toss is validated.
     Toss(omega=(w_lo, omega_y, omega_z), flight_time=t_lo, start=start, g=g)  # type: ignore[arg-type]
 
