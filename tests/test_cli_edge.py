@@ -104,6 +104,29 @@ def test_the_contact_ending_reaches_the_simulation():
     assert rocking != expected  # the endings differ on bouncing landings
 
 
+def test_the_corner_radius_reaches_the_simulated_coins():
+    """--corner-radius rounds every ratio's coin (simulate_edge's coins): the same tosses (same
+    seed) change their landings as a grows, and at a = h/2 the coin has no edge band left, so
+    none of its dead landings stands on edge (core.outcome's well of a rounded rim), against
+    the dynamic model's 2 arctan(0.3)/π = 0.186 for the sharp coin."""
+    from coinflight.studies.edge import simulate_edge
+
+    args = ["--ratios", "0.3", "--simulate", "1000", "--seed", "5", "--json"]
+    half = 0.5 * 0.3 * 0.024  # h/2 of the h/d = 0.3 coin, m
+    runs = {}
+    for a in (None, 3e-4, half):
+        code, out, _ = _run(*args, *([] if a is None else ["--corner-radius", repr(a)]))
+        assert code == 0
+        runs[a] = json.loads(out)[0]["simulated"]
+    assert "corner_radius" not in runs[None]  # sharp: the row as it was
+    assert runs[3e-4]["corner_radius"] == 3e-4 and runs[half]["corner_radius"] == half
+    sharp, rounded, flat = (runs[a]["successes"] for a in (None, 3e-4, half))
+    assert abs(sharp / 1000 - 2 * math.atan(0.3) / math.pi) < 4 * math.sqrt(0.186 * 0.814 / 1000)
+    assert flat == 0 < rounded < sharp
+    library = simulate_edge([0.3], 1000, 5, corner_radius=3e-4)
+    assert library[0][1].successes == rounded
+
+
 def test_text_table():
     code, out, _ = _run("--ratios", "0.577,1", "--simulate", "100", "--seed", "5")
     assert code == 0
@@ -127,6 +150,13 @@ def test_text_table():
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
         (["--ending", "contact"], "--ending needs --simulate N"),
+        (["--corner-radius", "1e-4"], "--corner-radius needs --simulate N"),
+        (
+            ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
+            "corner radius must be between 0 and 0.0012 (in m), got 0.002: at most half the "
+            "thickness h/2 of the thinnest coin (h/d = 0.1, h = 0.0024 m)",
+        ),
+        (["--simulate", "10", "--corner-radius", "-1e-4"], "corner radius must be between 0"),
         (
             ["--simulate", "10", "--ending", "contact"],
             "the contact ending acts on landings that bounce: with restitution 0 (the default)",

@@ -9,7 +9,7 @@ import typer
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.groups import _dist
-from coinflight.cli.landing_groups import ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
+from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
     OUTPUT_PANEL,
     SURFACE_PANEL,
@@ -100,6 +100,16 @@ PivotingResistance = Annotated[
         "--pivoting-resistance", "L", SURFACE_PANEL, _ONLY + "--ending contact: " + PIVOTING_HELP
     ),
 ]
+CornerRadius = Annotated[
+    float | None,
+    number_option(
+        "--corner-radius",
+        "A",
+        SURFACE_PANEL,
+        _ONLY + CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's "
+        "thickness (h/d × 24 mm / 2).",
+    ),
+]
 SpinX = Annotated[
     str | None, _dist("--omega-x", "With --simulate: spin about the x diameter", "rad/s")
 ]
@@ -129,6 +139,7 @@ def edge(
     ending: Ending = None,
     rolling_resistance: RollingResistance = None,
     pivoting_resistance: PivotingResistance = None,
+    corner_radius: CornerRadius = None,
     omega_x: SpinX = None,
     launch_speed: LaunchSpeed = None,
     g: EdgeGravity = None,
@@ -154,6 +165,7 @@ def edge(
         "--ending": ending,
         "--rolling-resistance": rolling_resistance,
         "--pivoting-resistance": pivoting_resistance,
+        "--corner-radius": corner_radius,
         "--omega-x": omega_x,
         "--launch-speed": launch_speed,
         "--g": g,
@@ -168,6 +180,7 @@ def edge(
             ("ending", ending),
             ("rolling_resistance", rolling_resistance),
             ("pivoting_resistance", pivoting_resistance),
+            ("corner_radius", corner_radius),
             ("g", g),
         )
         if value is not None

@@ -119,6 +119,7 @@ def simulate_edge(
     ending: str = "rocking",
     rolling_resistance: float | None = None,
     pivoting_resistance: float | None = None,
+    corner_radius: float = 0.0,
     executor: Any = None,
     progress: Callable[[int], None] | None = None,
 ) -> list[tuple[float, BinomialEstimate]]:
@@ -144,7 +145,10 @@ def simulate_edge(
     the launch speed must be positive with certainty; ``ending`` ("rocking" or the experimental
     3-D "contact") and, with the contact ending only, its ``rolling_resistance`` and
     ``pivoting_resistance`` (m; :class:`coinflight.model.surface.Surface`), which act only on
-    landings that bounce (``restitution`` > 0).
+    landings that bounce (``restitution`` > 0); ``corner_radius`` a (m, default 0: sharp), the
+    rounded rim corners of every ratio's coin (:attr:`coinflight.model.coin.Coin.corner_radius`:
+    the impacts, the contact ending and the face/edge wells take it), at most half the thinnest
+    coin's thickness.
 
     ``executor`` (an object with ``map``, or a ``distributed.Client``: :mod:`coinflight.
     probability.distributed`) runs the blocks of :data:`~coinflight.probability.streams.BLOCK`
@@ -162,6 +166,7 @@ def simulate_edge(
     if x.ndim != 1:
         raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
     n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)
+    corner = _corner_radius(corner_radius, float(np.min(x)))
     resistances = {
         name: value
         for name, value in (
@@ -209,7 +214,8 @@ def simulate_edge(
     coins = []
     for ratio in x:
         h = float(ratio) * SIM_DIAMETER
-        coins.append(Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h))  # steel
+        mass = 7800.0 * np.pi * r * r * h  # steel
+        coins.append(Coin(radius=r, thickness=h, mass=mass, corner_radius=corner))
     tasks: list[tuple[Any, ...]]
     if executor is None:  # one ratio at a time, each landing on all of numba's threads
         tasks = [(coin, streams.child(root, i), n, 0, None, wx, v0, g, surface, True)
@@ -231,6 +237,19 @@ def simulate_edge(
         edges = sum(counts[i * per_ratio : (i + 1) * per_ratio])
         out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
+
+
+def _corner_radius(value: object, thinnest: float) -> float:
+    """The simulated coins' corner radius ``value`` (m), checked against the thinnest coin's
+    half thickness (ratio ``thinnest`` × :data:`SIM_DIAMETER` / 2): the coin's own wording,
+    naming that coin."""
+    from coinflight.model.coin import check_corner_radius
+
+    h = thinnest * SIM_DIAMETER
+    try:
+        return check_corner_radius(value, h)
+    except ValueError as exc:
+        raise ValueError(f"{exc} of the thinnest coin (h/d = {thinnest:g}, h = {h:g} m)") from None
 
 
 def _edge_task(args: tuple[Any, ...]) -> int:
@@ -263,7 +282,8 @@ def edge_table(
     (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
     ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
     keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
-    rolling and pivoting resistance). Ratios
+    rolling and pivoting resistance, corner radius) and, for rounded coins, ``corner_radius``
+    (m; left out for sharp corners, so that every other row is as it was). Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
     ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
@@ -294,6 +314,8 @@ def edge_table(
                 "successes": s.successes,
                 "seed": s.seed,
             }
+            if setting.get("corner_radius"):
+                row["simulated"]["corner_radius"] = float(setting["corner_radius"])
     return rows
 
 
