@@ -298,11 +298,36 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh, corn
     return tau, n, speed
 
 
+DIED_OUT = -2
+"""``status`` of :func:`bounce_loop` when the bounces died out (a rebound slower than
+``rest_speed``, e > 0): the landing's ending (:func:`died_out`) takes the state from there."""
+
+
 @njit(cache=True)
 def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status).
 
-    The contacts and impacts are those of the rounded rim, corner radius ``c.corner_radius``
+    The bounces of :func:`bounce_loop`, then, if they died out, the ending of
+    :func:`died_out`."""
+    face, bounces, first, t, status, z, v, n, lm = bounce_loop(
+        omega_body, start_sign, launch_speed, c, max_bounces
+    )
+    if status == DIED_OUT:
+        face, status, duration = died_out(z, v, n, lm, c)
+        return face, bounces, first, t + duration, status
+    return face, bounces, first, t, status
+
+
+@njit(cache=True)
+def bounce_loop(omega_body, start_sign, launch_speed, c, max_bounces):
+    """One toss from launch to the end of its bounces: (face, bounces, first contact, time,
+    status, z, v, n, L).
+
+    ``status`` is a :class:`coinflight.core.outcome.Status` when the landing ended at a contact
+    (face its well), or :data:`DIED_OUT` when the bounces died out with e > 0 (face −1): then
+    (z, v, n, L) is the state after the last impact, which :func:`died_out` (in
+    :func:`land_one`) carries to the end, and ``time`` is that impact's. The contacts and
+    impacts are those of the rounded rim, corner radius ``c.corner_radius``
     (:func:`next_contact`, :func:`coinflight.core.impact.impact`)."""
     # The contact record (core.contact.Contact), unpacked once for the loop below.
     radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
@@ -324,7 +349,7 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     for _ in range(MAX_IMPACTS):
         tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
         if tc < 0.0:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
+            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
         t += tc
@@ -337,11 +362,12 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if first < 0.0:
             first = t
         if bounces >= max_bounces:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
+            face = resting_face(n[2], edge_sine)
+            return face, bounces, first, t, Status.BOUNCE_LIMIT, z, v, n, lm
         v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction, corner)
-        face, status, duration = after_impact(z, v, lm, n, rebound, c)
-        if status >= 0:
-            return face, bounces, first, t + duration, status
+        face, status = impact_verdict(z, v, lm, n, rebound, c)
+        if status != -1:
+            return face, bounces, first, t, status, z, v, n, lm
         omega = angular_velocity(lm, n, i1, i3)
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
@@ -350,7 +376,7 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         tau = rebound / accel
         if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
             tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
-    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
+    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
 
 
 @njit(cache=True)
@@ -358,33 +384,53 @@ def after_impact(z, v, lm, n, rebound, c):
     """How a landing ends after an impact, if it does: (face, status, duration of a contact
     phase, s); status −1 (and face −1) if the coin flies on.
 
-    The one ending of every landing kernel (:func:`land_one`, and through air
-    :func:`coinflight.core.drag.ending`), in this order:
+    The one ending of every landing kernel (:func:`land_one` through :func:`bounce_loop`, and
+    through air :func:`coinflight.core.drag.ending`): :func:`impact_verdict`, and, when the
+    bounces died out, :func:`died_out`.
+    """
+    face, status = impact_verdict(z, v, lm, n, rebound, c)
+    if status == DIED_OUT:
+        return died_out(z, v, n, lm, c)
+    return face, status, 0.0
+
+
+@njit(cache=True)
+def impact_verdict(z, v, lm, n, rebound, c):
+    """(face, status) after an impact, in this order:
 
     * the coin is trapped in its well: with the 3-D contact ending, its whole energy
       (:func:`mechanical_energy`, rigorous: nothing adds energy afterwards) is below the
-      barrier m g sqrt(r² + h²/4); with the rocking ending, its tumbling energy
+      barrier of ``c.barrier``; with the rocking ending, its tumbling energy
       (:func:`tumbling_energy`) is (status SETTLED_ENERGY);
     * e = 0 and the rebound below ``rest_speed``: the surface absorbed it (SETTLED_DEAD);
-    * the bounces died out (rebound below ``rest_speed``): the contact phase
-      (:func:`coinflight.core.contact_phase.settle`, SETTLED_CONTACT or UNSETTLED) or the planar
-      rocking of :func:`rock` (SETTLED_ROCKING), by ``c.ending``.
+    * the bounces died out (rebound below ``rest_speed``): :data:`DIED_OUT` (face −1), for
+      :func:`died_out`;
+    * else the coin flies on: status −1, face −1.
     """
     if c.ending == CONTACT_ENDING:
         free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
     else:
         free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
     if free < c.barrier:
-        return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY, 0.0
+        return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY
     if rebound < c.rest_speed:
         if c.restitution == 0.0:
-            return resting_face(n[2], c.edge_sine), Status.SETTLED_DEAD, 0.0
-        if c.ending == CONTACT_ENDING:
-            return settle(z, v, n, lm, c)
-        omega = angular_velocity(lm, n, c.i1, c.i3)
-        face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g)
-        return face, Status.SETTLED_ROCKING, 0.0
-    return -1, -1, 0.0
+            return resting_face(n[2], c.edge_sine), Status.SETTLED_DEAD
+        return -1, DIED_OUT
+    return -1, -1
+
+
+@njit(cache=True)
+def died_out(z, v, n, lm, c):
+    """The end of a landing whose bounces died out: (face, status, duration, s), by
+    ``c.ending``: the 3-D contact phase (:func:`coinflight.core.contact_phase.settle`,
+    SETTLED_CONTACT or UNSETTLED, its duration) or the planar rocking of :func:`rock`
+    (SETTLED_ROCKING, 0)."""
+    if c.ending == CONTACT_ENDING:
+        return settle(z, v, n, lm, c)
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g)
+    return face, Status.SETTLED_ROCKING, 0.0
 
 
 @njit(cache=True)
