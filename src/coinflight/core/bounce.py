@@ -156,8 +156,9 @@ def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
     Between wells the coin rolls without slipping on one corner's arc: the contact point P,
     below the arc's centre, is the instantaneous centre of rotation, so the kinetic energy is
     ½ I_P φ̇², I_P = I1 + m |CM − P|² = I1 + m (ρ′² + a² + 2 a (U/(m g) − a)) (the centre of
-    mass lies U/(m g) − a above the arc's centre, which lies a above P; the Lagrangian of a
-    body rolling without slip on its convex contour, Glaschke 2016, arXiv:1604.03021, §2),
+    mass lies U/(m g) − a above the arc's centre, which lies a above P: the kinetic energy of a
+    body rolling without slip on its convex contour, rotation about the instantaneous centre;
+    the rocking bodies of Glaschke 2016, arXiv:1604.03021),
     and ½ I_P φ̇² + U is conserved: the coin crosses a barrier when this energy exceeds
     U there, whatever I_P. At the bottom of a well the section lies on its flat band (faces:
     half-length r′, the centre of mass h/2 above it; edge: h′ and r) and the next corner's arc
