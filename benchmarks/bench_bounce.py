@@ -33,7 +33,7 @@ import numpy as np
 from coinflight import Coin
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
-from coinflight.outcomes.table import land
+from coinflight.outcomes.table import contact_record, land
 
 COIN = Coin.preset("us-nickel")
 G = 9.81
@@ -177,33 +177,17 @@ def contact_rates(n: int, repeats: int = 3) -> None:
 
 
 def rounded_edges(n: int) -> None:
-    """P(edge) of the contact ending over the rim's corner radius a (the coin's corner_radius;
-    ``Contact.build(corner_radius=a)``) and the resistances, e = 0.5, μ = 0.3."""
+    """P(edge) of the contact ending over the rim's corner radius a (the coin's corner_radius)
+    and the resistances, e = 0.5, μ = 0.3."""
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, Contact
 
     omega, v0 = tosses(n)
-    i1, i3 = COIN.moments
     print(f"contact ending, {n:,} vigorous tosses per setting, e = 0.5, μ = 0.3: P(edge)")
     for resist in (1e-5, 1e-4, 1e-3):
         row = []
+        surface = Surface("table", DROP, 0.5, 0.3, resist, resist, ending="contact")
         for a in (0.0, 0.3e-3, 0.6e-3, 0.9e-3):
-            c = Contact.build(
-                radius=COIN.radius,
-                thickness=COIN.thickness,
-                mass=COIN.mass,
-                i1=i1,
-                i3=i3,
-                restitution=0.5,
-                friction=0.3,
-                drop_height=DROP,
-                g=G,
-                rest_speed=bounce.REST_SPEED,
-                rolling_resistance=resist,
-                pivoting_resistance=resist,
-                ending=CONTACT_ENDING,
-                corner_radius=a,
-            )
+            c = contact_record(COIN.with_corner_radius(a), surface, G)
             face = bounce.land(omega, v0, np.ones(n), c)[0]
             k = int(np.sum(face == EDGE))
             row.append(f"a = {a * 1e3:.1f} mm: {k / n:.4f} ({k})")

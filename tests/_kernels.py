@@ -1,5 +1,6 @@
-"""A coin's kernel records for the tests of core's landing and air kernels: the keyword lists
-of ``Contact.build`` and ``Air.build`` filled from a :class:`coinflight.Coin` once, here."""
+"""A coin's kernel records for the tests of core's landing and air kernels: the contact record
+through the library's :func:`coinflight.outcomes.table.contact_record` (as every landing builds
+it), and ``Air.build``'s keyword list filled from a :class:`coinflight.Coin` once, here."""
 
 from __future__ import annotations
 
@@ -7,7 +8,9 @@ from typing import Any
 
 from coinflight import Coin
 from coinflight.core import bounce, drag
-from coinflight.core.contact import Contact
+from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import contact_record
 
 G = 9.81
 
@@ -20,24 +23,31 @@ def coin_contact(
     drop_height: float = 0.8,
     g: float = G,
     rest_speed: float = bounce.REST_SPEED,
-    **options: Any,
+    rolling_resistance: float = 0.0,
+    pivoting_resistance: float = 0.0,
+    contact_time: float = 1e-3,
+    ending: float = ROCKING_ENDING,
+    corner_radius: float | None = None,
 ) -> Contact:
-    """``Contact.build`` for ``coin`` (its radius, thickness, mass and moments); ``options``
-    are its other keywords (``rolling_resistance``, ``ending``, ``corner_radius``, …)."""
-    i1, i3 = coin.moments
-    return Contact.build(
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=float(i1),
-        i3=float(i3),
-        restitution=restitution,
-        friction=friction,
-        drop_height=drop_height,
-        g=g,
-        rest_speed=rest_speed,
-        **options,
+    """The contact record of ``coin`` on a table with these values (``ending`` the kernel's
+    code, :data:`~coinflight.core.contact.ROCKING_ENDING` or
+    :data:`~coinflight.core.contact.CONTACT_ENDING`; ``corner_radius``, when given, replaces
+    the coin's), built by :func:`coinflight.outcomes.table.contact_record`."""
+    if ending not in (ROCKING_ENDING, CONTACT_ENDING):
+        raise ValueError(f"ending must be ROCKING_ENDING or CONTACT_ENDING, got {ending}")
+    if corner_radius is not None:
+        coin = coin.with_corner_radius(corner_radius)
+    surface = Surface(
+        "table",
+        drop_height,
+        restitution,
+        friction,
+        rolling_resistance,
+        pivoting_resistance,
+        contact_time=contact_time,
+        ending="contact" if ending == CONTACT_ENDING else "rocking",
     )
+    return contact_record(coin, surface, g, rest_speed=rest_speed)
 
 
 def coin_air(

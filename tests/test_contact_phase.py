@@ -370,7 +370,7 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
     land_one = bounce.land_one.py_func
     c = coin_contact(NICKEL)  # as outcomes.table.land builds it, the ending left at its default
     assert c.ending == ROCKING_ENDING
-    monkeypatch.setitem(land_one.__globals__, "after_impact", bounce.after_impact.py_func)
+    monkeypatch.setitem(land_one.__globals__, "died_out", bounce.died_out.py_func)
     monkeypatch.setitem(land_one.__globals__, "rock", rock)
     monkeypatch.setitem(land_one.__globals__, "settle", settle)
     for k in range(n):

@@ -113,3 +113,120 @@ def test_a_rounded_rim_is_touched_no_earlier_in_both_landing_kernels(through_air
         first.append(out[2])
     assert np.all(first[1] >= first[0])
     assert np.mean(first[1] > first[0]) > 0.5
+
+
+# --- the planar rocking ending on the rounded rim (core.bounce.rock) ----------------------------
+THICK = Coin(radius=0.012, thickness=0.024 / math.sqrt(3), mass=0.005)  # h/d = 1/√3
+
+
+def _rock(coin, phi, phidot, a):
+    """core.bounce.rock for the coin tilted by φ (n = sin φ X + cos φ Z) tipping at φ̇."""
+    n = (math.sin(phi), 0.0, math.cos(phi))
+    i1, _ = coin.moments
+    hh = 0.5 * coin.thickness
+    return bounce.rock(n, (0.0, phidot, 0.0), coin.radius, hh, coin.mass, i1, G, a)
+
+
+def _centre_of_mass(coin, a, phi):
+    """The centre of mass of the section (the rectangle (r − a, h/2 − a) swept by a disc of
+    radius a) rolling without slip on the corner whose centre C is lowest for φ in (0, π/2):
+    C = CM + (r − a) u − (h/2 − a) n, u = (cos φ, −sin φ), and C = (a φ, a) (it rolls)."""
+    r_in, h_in = coin.radius - a, 0.5 * coin.thickness - a
+    n = np.array([math.sin(phi), math.cos(phi)])
+    u = np.array([math.cos(phi), -math.sin(phi)])
+    return np.array([a * phi, a]) - r_in * u + h_in * n
+
+
+def _threshold(coin, a, phi):
+    """φ̇ at which a coin at φ (heads well) tipping away from heads just reaches the barrier:
+    ½ I_P φ̇² = max U − U(φ), with I_P = I1 + m |dCM/dφ|² from the rolling kinematics (finite
+    differences) and the barrier the maximum of m g z_CM over φ (a dense search), not the
+    kernel's closed forms."""
+    i1, _ = coin.moments
+    m = coin.mass
+    d = 1e-6
+    velocity = (_centre_of_mass(coin, a, phi + d) - _centre_of_mass(coin, a, phi - d)) / (2 * d)
+    inertia = float(i1) + m * float(velocity @ velocity)
+    grid = np.linspace(0.0, 0.5 * math.pi, 200_001)
+    heights = [_centre_of_mass(coin, a, p)[1] for p in grid[::1000]]
+    top = int(np.argmax(heights)) * 1000
+    fine = grid[max(0, top - 1000) : top + 1001]
+    barrier = m * G * max(_centre_of_mass(coin, a, p)[1] for p in fine)
+    potential = m * G * _centre_of_mass(coin, a, phi)[1]
+    return math.sqrt(2.0 * (barrier - potential) / inertia), barrier
+
+
+@pytest.mark.parametrize("coin", [COIN, THICK])
+@pytest.mark.parametrize("share", [0.0, 0.3, 0.8, 1.0])
+def test_rocking_crosses_the_rounded_corner_at_the_closed_form_barrier(coin, share):
+    """Energy on the arc: the coin tipping towards its edge passes the barrier m g (a + ρ′),
+    ρ′ = sqrt((r − a)² + (h/2 − a)²) (the Contact record's), exactly when ½ I_P φ̇² + U
+    exceeds it, I_P about the rolling contact point; 1e-6 either side of the threshold."""
+    hh = 0.5 * coin.thickness
+    a = share * hh
+    closed = coin.mass * G * (a + math.hypot(coin.radius - a, hh - a))
+    assert coin_contact(coin, corner_radius=a).barrier == pytest.approx(closed, rel=1e-14)
+    for phi in (0.05, 0.5, 1.0):
+        if phi >= math.atan2(coin.radius - a, hh - a):
+            continue
+        speed, barrier = _threshold(coin, a, phi)
+        assert barrier == pytest.approx(closed, rel=1e-9)
+        assert _rock(coin, phi, speed * (1 - 1e-6), a) == 1  # stays heads
+        over = _rock(coin, phi, speed * (1 + 1e-6), a)
+        # Over the corner: into the edge well, or beyond it (a narrow band's slap may cost less
+        # than the excess); with no edge band (a = h/2) rolling on over the edge to tails.
+        assert over != 1
+        if share == 1.0:
+            assert over == 0
+
+
+def test_rocking_with_corner_radius_half_the_thickness_never_ends_on_edge():
+    """a = h/2: no flat edge band, the edge is the top of the barrier (no well): whatever its
+    tilt and tipping speed the rocking coin ends heads or tails; just below h/2 the narrow edge
+    well still catches some (the same states)."""
+    rng = np.random.default_rng(12)
+    states = np.column_stack([rng.uniform(0.0, math.pi, 3000), rng.uniform(-80.0, 80.0, 3000)])
+    states = [
+        *map(tuple, states),
+        (0.5 * math.pi, 0.0),
+        (0.5 * math.pi, 1.0),
+        (0.5 * math.pi, -1.0),
+    ]
+    for coin in (COIN, THICK):
+        hh = 0.5 * coin.thickness
+        faces = {_rock(coin, phi, phidot, hh) for phi, phidot in states}
+        assert faces == {0, 1}
+        near = [_rock(coin, phi, phidot, 0.9 * hh) for phi, phidot in states]
+        assert 2 in near
+
+
+@pytest.mark.parametrize("coin", [COIN, THICK])
+def test_rounded_rocking_is_mirror_symmetric_and_continuous_at_sharp_corners(coin):
+    """φ → π − φ, φ̇ → −φ̇ swaps heads and tails at any a; a → 0 gives the sharp block's
+    answer (a = 1e-12 h against a = 0, where the kernel is Housner's to the bit)."""
+    rng = np.random.default_rng(13)
+    hh = 0.5 * coin.thickness
+    for phi, phidot in np.column_stack([rng.uniform(0.0, math.pi, 500), rng.uniform(-60, 60, 500)]):
+        for a in (0.25 * hh, 0.75 * hh):
+            face = _rock(coin, phi, phidot, a)
+            assert _rock(coin, math.pi - phi, -phidot, a) == {0: 1, 1: 0, 2: 2}[face]
+        assert _rock(coin, phi, phidot, 1e-12 * hh) == _rock(coin, phi, phidot, 0.0)
+
+
+def test_the_rocking_ending_of_a_landing_takes_the_corner_radius():
+    """Through the landing kernel: a thick coin's rocking ending gives edges with sharp corners
+    and none at a = h/2, where its wells and its rocking have no edge band (with the sharp
+    rocking of before, those rocking coins gave edges)."""
+    rng = np.random.default_rng(14)
+    n = 2000
+    omega = np.column_stack(
+        [rng.uniform(150, 300, n), rng.uniform(-30, 30, n), rng.uniform(-30, 30, n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    sharp = bounce.land(omega, v0, np.ones(n), coin_contact(THICK))
+    half = coin_contact(THICK, corner_radius=0.5 * THICK.thickness)
+    round_ = bounce.land(omega, v0, np.ones(n), half)
+    assert np.sum(sharp[0] == 2) > 50
+    assert not np.any(round_[0] == 2)
+    rocked = round_[4] == bounce.Status.SETTLED_ROCKING
+    assert np.sum(rocked) > 50

@@ -21,7 +21,8 @@ contact time to machine precision (:func:`next_contact`). The impact is
 After every impact :func:`after_impact` decides whether the landing has ended (the one ending
 of the exact and the air landings). The coin has settled when it can no longer cross the
 potential barrier between a face and its edge, m g sqrt(r² + h²/4), the height of its centre
-of mass when balanced on the corner of rim and face (Vulović & Prange 1986; Yong & Mahadevan
+of mass when balanced on the corner of rim and face (m g (a + sqrt((r − a)² + (h/2 − a)²))
+over a corner rounded to radius a) (Vulović & Prange 1986; Yong & Mahadevan
 2011; REFERENCES §4-5): with the rocking ending, when the energy that can turn it over
 (:func:`tumbling_energy`) is below it; with the contact ending, when its whole energy
 (:func:`mechanical_energy`) is, which is rigorous, as no impact or contact force adds energy
@@ -37,6 +38,12 @@ cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not 
 see :mod:`coinflight.core.contact_phase`).
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
+
+Every part of a landing meets the same rim: the cylinder (r − a, h/2 − a) swept by a ball of
+the corner radius a (``Contact.corner_radius``; :func:`coinflight.core.impact.lowest_depth`):
+the flight's contact search, the impacts, the barrier and the edge angle of the wells, the
+contact phase and the rocking of :func:`rock`. With a = 0 (sharp corners) each is, to the bit,
+what it was before it took a.
 """
 
 from __future__ import annotations
@@ -118,7 +125,7 @@ def mechanical_energy(v, angular_momentum, n, mass, i1, i3, g, z):
 
 
 @njit(cache=True)
-def rock(n, omega, radius, hh, mass, i1, g):
+def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
 
     The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
@@ -130,25 +137,51 @@ def rock(n, omega, radius, hh, mass, i1, g):
         Heads normal and angular velocity (lab) when the bounces have died out.
     radius, hh, mass, i1, g : float
         The coin (r, h/2, m, I1) and gravity.
+    corner : float
+        The rim's corner radius a, 0 ≤ a ≤ h/2 (0: sharp corners, Housner's block).
 
     Notes
     -----
     The rocking block of Housner (1963, *Bull. Seismol. Soc. Am.* 53:403): the coin's section
-    in the vertical plane through its normal is a 2r × h rectangle that pivots, without
-    slipping or bouncing, about one corner at a time. Its tilt φ (n = sin φ ê + cos φ Z) sees
-    the potential m g (r |sin φ| + h/2 |cos φ|): wells at heads (φ = 0), edge (±π/2) and tails
-    (π), separated by the corners at height ρ = sqrt(r² + h²/4). Between wells the energy
-    ½ (I1 + m ρ²) φ̇² + U is conserved; at the bottom of a well the next corner lands and the
-    angular velocity is multiplied by (I1 + m ρ² cos γ)/(I1 + m ρ²), γ the angle between the
-    two corners seen from the centre of mass (angular momentum about the new corner is
-    conserved). When that ratio is ≤ 0 (a thin coin slapping flat) the coin stops there.
-    The coin ends in the first well whose barrier its energy cannot pass.
+    in the vertical plane through its normal pivots, without slipping or bouncing, about one
+    corner at a time. With rounded corners the section is the rectangle 2r′ × 2h′ swept by a
+    disc of radius a (r′ = r − a, h′ = h/2 − a: the section of the coin of
+    :func:`coinflight.core.impact.lowest_depth`), flat bands 2r′ (faces) and 2h′ (edge)
+    joined by quarter circles, and the sharp block is a = 0. Its tilt φ
+    (n = sin φ ê + cos φ Z) sees the potential U = m g (a + r′ |sin φ| + h′ |cos φ|) (the
+    height of the centre of mass over the section's lowest point): wells at heads (φ = 0),
+    edge (±π/2) and tails (π), separated by the corners, the centre of mass balanced over a
+    corner's centre, U = m g (a + ρ′), ρ′ = sqrt(r′² + h′²) (:attr:`Contact.barrier
+    <coinflight.core.contact.Contact>`).
+    Between wells the coin rolls without slipping on one corner's arc: the contact point P,
+    below the arc's centre, is the instantaneous centre of rotation, so the kinetic energy is
+    ½ I_P φ̇², I_P = I1 + m |CM − P|² = I1 + m (ρ′² + a² + 2 a (U/(m g) − a)) (the centre of
+    mass lies U/(m g) − a above the arc's centre, which lies a above P: the kinetic energy of a
+    body rolling without slip on its convex contour, rotation about the instantaneous centre;
+    the rocking bodies of Glaschke 2016, arXiv:1604.03021),
+    and ½ I_P φ̇² + U is conserved: the coin crosses a barrier when this energy exceeds
+    U there, whatever I_P. At the bottom of a well the section lies on its flat band (faces:
+    half-length r′, the centre of mass h/2 above it; edge: h′ and r) and the next corner's arc
+    lands: the pivot jumps from one end of the band to the other, and angular momentum about
+    the new pivot P₂ is conserved (Housner 1963) while the old one P₁ lifts, so φ̇ is
+    multiplied by (I1 + m (CM − P₁)·(CM − P₂)) / (I1 + m |CM − P₂|²) =
+    (I1 + m b² cos γ) / (I1 + m b²), b² = r′² + (h/2)² with cos γ = ((h/2)² − r′²)/b² at a
+    face, b² = r² + h′² with cos γ = (r² − h′²)/b² at the edge (γ the angle between the band's
+    ends seen from the centre of mass; Housner's corners at a = 0). The kinetic energy, the
+    same I_P just before and after, goes by the ratio's square. When that ratio is ≤ 0 (a
+    thin coin slapping flat) the coin stops there. The coin ends in the first well whose
+    barrier its energy cannot pass. At a = h/2 the edge band has shrunk to a point
+    (h′ = 0): the edge is the top of the barrier (ratio 1, no well), and the coin never ends
+    on its edge.
     """
-    rho2 = radius * radius + hh * hh
-    rho = math.sqrt(rho2)
-    corner = math.atan2(radius, hh)  # the face/edge barriers at |φ| = corner, π − corner
-    inertia = i1 + mass * rho2
-    barrier = mass * g * rho
+    # The section's inner rectangle (r′, h′) and the corner's centre seen from the centre of
+    # mass; a = 0 leaves every expression as Housner's sharp block computed it, to the bit.
+    r_in = radius - corner
+    h_in = hh - corner
+    rho_in2 = r_in * r_in + h_in * h_in
+    rho_in = math.sqrt(rho_in2)
+    angle = math.atan2(r_in, h_in)  # the face/edge barriers at |φ| = angle, π − angle
+    barrier = mass * g * (corner + rho_in)
     horizontal = math.hypot(n[0], n[1])
     ndot = cross(omega, n)
     if horizontal > 1e-12:
@@ -161,27 +194,36 @@ def rock(n, omega, radius, hh, mass, i1, g):
     phi = math.atan2(horizontal, n[2])  # in [0, π]
     # dφ/dt = ṅ · ∂n/∂φ with ∂n/∂φ = cos φ ê − sin φ Z.
     phidot = (ndot[0] * ex + ndot[1] * ey) * math.cos(phi) - ndot[2] * math.sin(phi)
-    energy = 0.5 * inertia * phidot * phidot + mass * g * (
-        radius * abs(math.sin(phi)) + hh * abs(math.cos(phi))
-    )
+    lift = r_in * abs(math.sin(phi)) + h_in * abs(math.cos(phi))  # CM above the arc's centre
+    inertia = i1 + mass * (rho_in2 + corner * corner + 2.0 * corner * lift)  # about P
+    energy = 0.5 * inertia * phidot * phidot + mass * g * (corner + lift)
     # Wells k = 0 heads (φ = 0), 1 edge (π/2), 2 tails (π), 3 edge (−π/2), in order of φ.
-    if phi < corner:
+    if phi < angle:
         k = 0
-    elif phi > math.pi - corner:
+    elif phi > math.pi - angle:
         k = 2
-    else:
+    elif h_in > 0.0:
         k = 1
+    else:  # a = h/2: no edge well, φ = π/2 is the top of the barrier
+        k = 0 if phi < 0.5 * math.pi else 2
     direction = 1 if phidot >= 0.0 else -1
     towards_centre = (phi - 0.5 * math.pi * k) * phidot < 0.0
     if not towards_centre:
         if energy < barrier:
             return _well_face(k)
         k = (k + direction) % 4
-    cos_face = (hh * hh - radius * radius) / rho2
-    cos_edge = -cos_face
+    # The band's ends seen from the centre of mass at the bottom of a face and of the edge well.
+    face2 = r_in * r_in + hh * hh
+    cos_face = (hh * hh - r_in * r_in) / face2
+    edge2 = radius * radius + h_in * h_in
+    cos_edge = (radius * radius - h_in * h_in) / edge2
     for _ in range(10_000):
-        bottom = mass * g * (hh if k % 2 == 0 else radius)
-        ratio = (i1 + mass * rho2 * (cos_face if k % 2 == 0 else cos_edge)) / inertia
+        if k % 2 == 0:
+            bottom = mass * g * hh
+            ratio = (i1 + mass * face2 * cos_face) / (i1 + mass * face2)
+        else:
+            bottom = mass * g * radius
+            ratio = (i1 + mass * edge2 * cos_edge) / (i1 + mass * edge2)
         if ratio <= 0.0:
             return _well_face(k)
         energy = bottom + (energy - bottom) * ratio * ratio
@@ -298,11 +340,36 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh, corn
     return tau, n, speed
 
 
+DIED_OUT = -2
+"""``status`` of :func:`bounce_loop` when the bounces died out (a rebound slower than
+``rest_speed``, e > 0): the landing's ending (:func:`died_out`) takes the state from there."""
+
+
 @njit(cache=True)
 def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     """One toss from launch to rest; see :func:`land` (returns face, bounces, times, status).
 
-    The contacts and impacts are those of the rounded rim, corner radius ``c.corner_radius``
+    The bounces of :func:`bounce_loop`, then, if they died out, the ending of
+    :func:`died_out`."""
+    face, bounces, first, t, status, z, v, n, lm = bounce_loop(
+        omega_body, start_sign, launch_speed, c, max_bounces
+    )
+    if status == DIED_OUT:
+        face, status, duration = died_out(z, v, n, lm, c)
+        return face, bounces, first, t + duration, status
+    return face, bounces, first, t, status
+
+
+@njit(cache=True)
+def bounce_loop(omega_body, start_sign, launch_speed, c, max_bounces):
+    """One toss from launch to the end of its bounces: (face, bounces, first contact, time,
+    status, z, v, n, L).
+
+    ``status`` is a :class:`coinflight.core.outcome.Status` when the landing ended at a contact
+    (face its well), or :data:`DIED_OUT` when the bounces died out with e > 0 (face −1): then
+    (z, v, n, L) is the state after the last impact, which :func:`died_out` (in
+    :func:`land_one`) carries to the end, and ``time`` is that impact's. The contacts and
+    impacts are those of the rounded rim, corner radius ``c.corner_radius``
     (:func:`next_contact`, :func:`coinflight.core.impact.impact`)."""
     # The contact record (core.contact.Contact), unpacked once for the loop below.
     radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
@@ -324,7 +391,7 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
     for _ in range(MAX_IMPACTS):
         tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
         if tc < 0.0:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
+            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
         t += tc
@@ -337,11 +404,12 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         if first < 0.0:
             first = t
         if bounces >= max_bounces:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.BOUNCE_LIMIT
+            face = resting_face(n[2], edge_sine)
+            return face, bounces, first, t, Status.BOUNCE_LIMIT, z, v, n, lm
         v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction, corner)
-        face, status, duration = after_impact(z, v, lm, n, rebound, c)
-        if status >= 0:
-            return face, bounces, first, t + duration, status
+        face, status = impact_verdict(z, v, lm, n, rebound, c)
+        if status != -1:
+            return face, bounces, first, t, status, z, v, n, lm
         omega = angular_velocity(lm, n, i1, i3)
         bounces += 1
         # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
@@ -350,7 +418,7 @@ def land_one(omega_body, start_sign, launch_speed, c, max_bounces):
         tau = rebound / accel
         if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
             tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
-    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED
+    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
 
 
 @njit(cache=True)
@@ -358,33 +426,53 @@ def after_impact(z, v, lm, n, rebound, c):
     """How a landing ends after an impact, if it does: (face, status, duration of a contact
     phase, s); status −1 (and face −1) if the coin flies on.
 
-    The one ending of every landing kernel (:func:`land_one`, and through air
-    :func:`coinflight.core.drag.ending`), in this order:
+    The one ending of every landing kernel (:func:`land_one` through :func:`bounce_loop`, and
+    through air :func:`coinflight.core.drag.ending`): :func:`impact_verdict`, and, when the
+    bounces died out, :func:`died_out`.
+    """
+    face, status = impact_verdict(z, v, lm, n, rebound, c)
+    if status == DIED_OUT:
+        return died_out(z, v, n, lm, c)
+    return face, status, 0.0
+
+
+@njit(cache=True)
+def impact_verdict(z, v, lm, n, rebound, c):
+    """(face, status) after an impact, in this order:
 
     * the coin is trapped in its well: with the 3-D contact ending, its whole energy
       (:func:`mechanical_energy`, rigorous: nothing adds energy afterwards) is below the
-      barrier m g sqrt(r² + h²/4); with the rocking ending, its tumbling energy
+      barrier of ``c.barrier``; with the rocking ending, its tumbling energy
       (:func:`tumbling_energy`) is (status SETTLED_ENERGY);
     * e = 0 and the rebound below ``rest_speed``: the surface absorbed it (SETTLED_DEAD);
-    * the bounces died out (rebound below ``rest_speed``): the contact phase
-      (:func:`coinflight.core.contact_phase.settle`, SETTLED_CONTACT or UNSETTLED) or the planar
-      rocking of :func:`rock` (SETTLED_ROCKING), by ``c.ending``.
+    * the bounces died out (rebound below ``rest_speed``): :data:`DIED_OUT` (face −1), for
+      :func:`died_out`;
+    * else the coin flies on: status −1, face −1.
     """
     if c.ending == CONTACT_ENDING:
         free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
     else:
         free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
     if free < c.barrier:
-        return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY, 0.0
+        return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY
     if rebound < c.rest_speed:
         if c.restitution == 0.0:
-            return resting_face(n[2], c.edge_sine), Status.SETTLED_DEAD, 0.0
-        if c.ending == CONTACT_ENDING:
-            return settle(z, v, n, lm, c)
-        omega = angular_velocity(lm, n, c.i1, c.i3)
-        face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g)
-        return face, Status.SETTLED_ROCKING, 0.0
-    return -1, -1, 0.0
+            return resting_face(n[2], c.edge_sine), Status.SETTLED_DEAD
+        return -1, DIED_OUT
+    return -1, -1
+
+
+@njit(cache=True)
+def died_out(z, v, n, lm, c):
+    """The end of a landing whose bounces died out: (face, status, duration, s), by
+    ``c.ending``: the 3-D contact phase (:func:`coinflight.core.contact_phase.settle`,
+    SETTLED_CONTACT or UNSETTLED, its duration) or the planar rocking of :func:`rock`
+    (SETTLED_ROCKING, 0)."""
+    if c.ending == CONTACT_ENDING:
+        return settle(z, v, n, lm, c)
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g, c.corner_radius)
+    return face, Status.SETTLED_ROCKING, 0.0
 
 
 @njit(cache=True)

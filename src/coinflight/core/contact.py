@@ -77,9 +77,9 @@ class Contact(NamedTuple):
         (:func:`coinflight.core.impact.impact`, whose contact point is the rounded rim's lowest
         point) and the search for the next contact in flight
         (:func:`coinflight.core.bounce.next_contact` and the air kernel of
-        :mod:`coinflight.core.drag`), with or without air. It does not reach the planar
-        rocking ending (:func:`coinflight.core.bounce.rock`). 0: sharp corners, to the last
-        bit what the kernels gave before they took a.
+        :mod:`coinflight.core.drag`), with or without air; and the planar rocking ending
+        (:func:`coinflight.core.bounce.rock`: the section rocks on round corners, its pivot
+        rolling). 0: sharp corners, to the last bit what the kernels gave before they took a.
     """
 
     radius: float

@@ -32,9 +32,13 @@ resistance stops them) 75 % of the simulated time and 67 % of the steps; on one 
 sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
 contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
 leave the mean steps within 15 % (1,030 handed tosses). Endings looser than the rigorous one
-(:data:`PROBES`) either save little or end tosses in another well than carrying them on:
-the energy less ½ m v_h² saves 5-8 % of the steps and disagrees on 6 of 226 tosses; the
-tumbling energy saves 42-72 % and disagrees on 23-30 of 226-228 (≥ 7 % at 95 %). None is used.
+either save little or end tosses in another well than carrying them on (each checked after
+every step, its well compared with the end's; measured by ``bench_contact.py 300`` as it was
+up to commit 60d1237, when these probes were removed from the integrator): the mechanical
+energy less ½ m v_h² below the barrier saves 5-8 % of the steps and disagrees on 6 of 226
+tosses; the tumbling energy (less ½ m v_h² and (L·n)²/2I3, as
+:func:`coinflight.core.bounce.tumbling_energy`) saves 42-72 % and disagrees on 23-30 of
+226-228 (≥ 7 % at 95 %). None is used.
 The 50,000 a second would need this phase ~300-1,000 times cheaper: a decision at the
 hand-off for nearly every toss, or a constrained (rolling/sliding rim) model integrated with
 steps far longer than the compliant contact's ~0.5 ms; neither is here.
@@ -422,38 +426,12 @@ def contact_mode(y, c):
     return 3 if face else 1
 
 
-PROBES = (
-    "energy less horizontal translation",
-    "energy less horizontal translation, face wells only",
-    "tumbling energy, face wells only",
-    "tumbling energy",
-)
-"""Candidate endings looser than the rigorous one, for the benchmark (:func:`_probe_test`):
-the mechanical energy without ½ m v_h², or the tumbling energy (without ½ m v_h² and the spin
-about n, (L·n)²/2I3, as :func:`coinflight.core.bounce.tumbling_energy`), below the barrier m g ρ,
-in any well or in a heads/tails well only."""
-
-
 @njit(cache=True)
-def _probe_test(y, c, stiffness, k):
-    """True when the candidate ending ``PROBES[k]`` holds for the state y."""
-    if k in (1, 2) and abs(y[6]) < c.edge_sine:
-        return False
-    e = energy(y, c, stiffness) - 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
-    if k >= 2:
-        ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
-        e -= 0.5 * ln * ln / c.i3
-    return e < c.barrier
-
-
-@njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats, probe=None):
+def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
     coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
     none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
-    steps taken (for the benchmark); ``probe`` (shape (len(PROBES), 3), −1 where not yet)
-    records for each candidate ending of :data:`PROBES` the step and the time at which it first
-    held and the well the coin was in then.
+    steps taken (for the benchmark).
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -479,12 +457,6 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats, probe=
     t = 0.0
     _derivative(y, k1, c, stiffness, zeta)
     for step in range(max_steps):
-        if probe is not None:
-            for k in range(probe.shape[0]):
-                if probe[k, 0] < 0.0 and _probe_test(y, c, stiffness, k):
-                    probe[k, 0] = step
-                    probe[k, 1] = t
-                    probe[k, 2] = resting_face(y[6], c.edge_sine)
         if settle:
             free, barrier = free_energy(y, c, stiffness)
             if free < barrier:
@@ -625,19 +597,15 @@ def advance(
     settle_check: bool = False,
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
-    probe: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
     when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
-    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode; ``probe``
-    (shape (len(:data:`PROBES`), 3), filled with −1) records when each candidate ending held."""
+    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode."""
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
-    return _integrate(
-        state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats, probe
-    )
+    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats)
 
 
 @njit(cache=True)

@@ -35,6 +35,7 @@ from coinflight.outcomes.base import (
 )
 
 if TYPE_CHECKING:
+    from coinflight.core.contact import Contact
     from coinflight.model.ensemble import TossDistribution
 
 FloatArray = NDArray[np.float64]
@@ -172,6 +173,40 @@ def check_clears(coin: Coin, apex: FloatArray, surface: Surface) -> None:
         )
 
 
+def contact_record(
+    coin: Coin, surface: Surface, g: float, *, rest_speed: float | None = None
+) -> Contact:
+    """The coin, the surface and gravity as every landing kernel reads them, built once.
+
+    The :class:`coinflight.core.contact.Contact` record of ``coin`` (radius, thickness, mass,
+    moments, corner radius) on ``surface`` (drop height, e, μ, resistances, contact time,
+    ending) under gravity ``g``, m/s²; ``rest_speed`` (m/s) defaults to
+    :data:`coinflight.core.bounce.REST_SPEED`. Nothing is checked here beyond what ``Coin`` and
+    ``Surface`` checked on construction (``g`` is the caller's).
+    """
+    from coinflight.core import bounce
+    from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+
+    i1, i3 = coin.moments
+    return Contact.build(
+        radius=coin.radius,
+        thickness=coin.thickness,
+        mass=coin.mass,
+        i1=i1,
+        i3=i3,
+        restitution=surface.restitution,
+        friction=surface.friction,
+        drop_height=surface.drop_height,
+        g=g,
+        rest_speed=bounce.REST_SPEED if rest_speed is None else rest_speed,
+        rolling_resistance=surface.rolling_resistance,
+        pivoting_resistance=surface.pivoting_resistance,
+        contact_time=surface.contact_time,
+        ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
+        corner_radius=coin.corner_radius,
+    )
+
+
 def land(
     coin: Coin,
     omega: FloatArray,
@@ -199,31 +234,13 @@ def land(
         raise ValueError("a landing needs surface kind 'table'; a hand catch is a Flight")
     if max_bounces is not None:
         check_max_bounces(max_bounces)
-    i1, i3 = coin.moments
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     speed = np.broadcast_to(np.asarray(launch_speed, dtype=float), (omega.shape[0],))
     sign = np.broadcast_to(np.asarray(start_sign, dtype=float), (omega.shape[0],))
     check_clears(coin, speed * speed / (2.0 * g), surface)
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
 
-    record = Contact.build(  # the coin, the surface and gravity, once for every kernel
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=i1,
-        i3=i3,
-        restitution=surface.restitution,
-        friction=surface.friction,
-        drop_height=surface.drop_height,
-        g=g,
-        rest_speed=bounce.REST_SPEED,
-        rolling_resistance=surface.rolling_resistance,
-        pivoting_resistance=surface.pivoting_resistance,
-        contact_time=surface.contact_time,
-        ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
-        corner_radius=coin.corner_radius,
-    )
+    record = contact_record(coin, surface, g)
     limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
     per_toss = {} if contact is None else contact
     if drag is not None and not drag.is_zero:
@@ -539,5 +556,6 @@ __all__ = [
     "Landing",
     "LandingOutcome",
     "TableLanding",
+    "contact_record",
     "land",
 ]
