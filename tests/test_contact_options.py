@@ -360,7 +360,7 @@ def test_the_work_bounds_know_the_contact_endings_rate():
 
 def test_tosses_with_their_own_contact_parameters_are_bounded_at_their_own_rate():
     """Measured (benchmarks/bench_bounce.py --contact-rates 1000, CONTACT_PER_TOSS_PER_SECOND's
-    docstring): with each toss its own e, μ the contact ending lands 0.51-0.58 as many tosses a
+    docstring): with each toss its own e, μ the contact ending lands 0.49-0.58 as many tosses a
     second as on one surface; the bounds take 150 against 300. A spread that cannot reach the
     contact phase (a bounce limit, every toss dead, the rocking ending) keeps the model's rate."""
     from coinflight.probability import grid, monte_carlo, qmc

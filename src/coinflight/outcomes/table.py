@@ -64,8 +64,9 @@ CONTACT_TOSSES_PER_SECOND = 300.0
 go through the contact phase, for a median 0.3-2.3 s of motion). Re-measured for the command
 line's ``--ending contact`` (its rates, the first part of ``--contact 2000``): 466 a second
 against 45,520 rocking and 250,691 to first contact in the same run, load 3.5; 839 a second
-quiet (load 1.4, ``--contact-rates 1000``, 2026-11-23 16:42 UTC); 233 at a load of 5.7
-(``--contact-rates 1000``, 2026-11-23 17:51 UTC). Kept at 300 for a busy machine."""
+quiet (load 1.4, ``--contact-rates 1000``, 2026-11-23 16:42 UTC); 233 at a load of 5.7 and
+180 at 7.8 (``--contact-rates 1000``, 2026-11-23 17:51 and 18:23 UTC). Kept at 300 for a
+busy machine (load about 3)."""
 
 CONTACT_PER_TOSS_PER_SECOND = 150.0
 """The same landings when every toss has its own contact parameters (a distribution of e, μ
@@ -74,8 +75,8 @@ the contact phase its damping): ``python benchmarks/bench_bounce.py --contact-ra
 (1,000 vigorous nickel tosses, e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), median of 3, 2 threads) on
 the project's 2-core machine: 425 a second against 839 on one surface quiet (load 1.4,
 2026-11-23 16:42 UTC, the lead), 134-171 loaded (load 3-8, helper, same day), 134 against 233
-at a load of 5.7 (17:51 UTC): 0.51-0.58 of the one-surface rate, so half of
-:data:`CONTACT_TOSSES_PER_SECOND`."""
+at a load of 5.7 (17:51 UTC), 88 against 180 at 7.8 (18:23 UTC): 0.49-0.58 of the one-surface
+rate, so half of :data:`CONTACT_TOSSES_PER_SECOND`."""
 
 CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
 """Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
