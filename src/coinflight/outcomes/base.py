@@ -196,6 +196,19 @@ def describe_air(drag: Drag | None) -> str:
     return air
 
 
+def coin_body(coin: Coin) -> dict[str, float]:
+    """The coin as the kernels' record builders take it (``Contact.build``, ``Air.build``):
+    ``radius``, ``thickness``, ``mass`` and the principal moments ``i1``, ``i3`` (SI)."""
+    i1, i3 = coin.moments
+    return {
+        "radius": coin.radius,
+        "thickness": coin.thickness,
+        "mass": coin.mass,
+        "i1": float(i1),
+        "i3": float(i3),
+    }
+
+
 def drag_dict(drag: Drag | None) -> dict[str, float] | None:
     """JSON description of the air drag (None: no air)."""
     if drag is None:
@@ -211,6 +224,7 @@ __all__ = [
     "Counts",
     "OutcomeModel",
     "check_contact",
+    "coin_body",
     "describe_air",
     "drag_dict",
     "faces_from_same_side",

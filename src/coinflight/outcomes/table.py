@@ -27,6 +27,7 @@ from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
     FaceArray,
     OutcomeModel,
+    coin_body,
     describe_air,
     drag_dict,
     initial_conditions,
@@ -188,13 +189,8 @@ def contact_record(
     from coinflight.core import bounce
     from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
 
-    i1, i3 = coin.moments
     return Contact.build(
-        radius=coin.radius,
-        thickness=coin.thickness,
-        mass=coin.mass,
-        i1=i1,
-        i3=i3,
+        **coin_body(coin),
         restitution=surface.restitution,
         friction=surface.friction,
         drop_height=surface.drop_height,
