@@ -62,9 +62,9 @@ def resistance_option(which: str, metavar: str, help: str) -> Any:
 
 CORNER_HELP = (
     "radius of the coin's rounded rim corners, m, 0 to half the thickness (default 0: sharp). "
-    "Used by the impacts, the contact ending and every ending's face/edge wells (not by the "
-    "planar rocking hand-off's motion). Not measured for coins (worn coins are rounder): quote "
-    "a band, not a value."
+    "Used by the flight's contacts, the impacts, both endings (the rocking section rolls on "
+    "its round corners) and every ending's face/edge wells. Not measured for coins (worn coins "
+    "are rounder): quote a band, not a value."
 )
 """--corner-radius's help."""
 _SPREAD_RESISTANCE = (
