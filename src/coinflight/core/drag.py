@@ -71,9 +71,12 @@ falling, the drag only slows it) skips the contact search.
 
 Accuracy. Against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
 time of the first 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0
-1.5-3 m/s, heads up) differs by 3.1e-7 s (median) and 1.4e-6 s (worst) and n_z by at most
-2e-4, and their first contact with a table 0.8 m below launch by 7.7e-7 s (median) and 1.8e-6
-s (worst); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
+1.5-3 m/s, heads up) differs by 3.2e-7 s (median) and 7.6e-7 s (worst) and n_z by at most
+2e-4, and their first contact with a table 0.8 m below launch by 7.6e-7 s (median) and 3.3e-6
+s (worst) (``python benchmarks/bench_air.py --accuracy 40 --old-src …``; the previous contact
+search, advancing by steps of the integrator, in the same run: 7.7e-7 and 3.3e-6 s; an earlier
+measurement, with another script, gave 3.1e-7/1.4e-6 s (catch) and 7.7e-7/1.8e-6 s (first
+contact)); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
 integrator, 2.5 times as many steps) 6.1e-7 and 3.2e-6 s (catch), 3.2e-7 and 2.1e-6 s (first
 contact). Against the same integrator with steps of 0.02 rad (itself within 6e-9 s of DOP853)
 the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e-7 at 2.0,
@@ -84,10 +87,32 @@ phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and 
 of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
-is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
-next_contact`: conservative advancement (Mirtich 1996, §3.4) with a second-order bound on the
-gap, then a safeguarded Newton iteration on the length of one step from the bracket's start
-(a step of any length from a state is a smooth function of its length).
+is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
+are the longest above. Near it, without spin damping, the attitude is the vacuum's torque-free
+precession (the steps compute exactly that) and the centre of mass falls at most D τ²/2 below
+the vacuum parabola, D bounding the drag's deceleration: conservative advancement (Mirtich
+1996, §3.4) on that lower bound of the gap (:func:`lower_gap`, :func:`bound_search`; closed-form
+evaluations, not steps of the integrator) gives the step's length, and the coin leaves the
+surface after an impact when the bound says it has (:func:`lift`, no step taken). With damping
+the bound on the gap comes from the current state alone and each advancement is a step. A step
+that ends below the surface brackets the contact, and one that the search stopped while the
+coin approaches starts a safeguarded Newton iteration on the length of one step from that
+step's start (a step of any length from a state is a smooth function of its length), to
+GAP_TOLERANCE.
+
+Cost (``python benchmarks/bench_air.py``'s tosses carried to rest, one thread, per toss, load
+~5): first flight to the table ~11 µs (66 steps of ~2.4 rad, ~170-250 ns each, ~100 ns of which
+are :func:`kink_integrals`), the impacts ~11 µs (8.8 of ~1.3 µs,
+:func:`coinflight.core.impact.impact`, 8.6 segments each on average), the bounce flights ~14 µs
+(7.8 flights: 3 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, plus ~6
+evaluations of the bound; the previous search, advancing by steps of the integrator, took 4.3
+advancing, 1.7 Newton and 1.4 lift steps a flight: the bounce flights took 81 steps a toss,
+now 53).
+
+Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
+after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
+off DOP853 at rtol 1e-12; the second contact from launch (the first flight's error carried
+through the impact) 1.9e-6 s (median) and 3e-4 s (largest), as with the previous search.
 """
 
 from __future__ import annotations
@@ -228,7 +253,7 @@ def projected_area(c: float, radius: float, thickness: float) -> float:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
     """dv/dt: gravity and the quadratic drag c A |v| v, c = ρ C_d / 2m, on the projected area
     A = π r² |n·v̂| + 2 r h sqrt(1 − (n·v̂)²) (or the face area): A |v| = π r² |n·v| + 2 r h
@@ -245,7 +270,7 @@ def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
     return (-k * v[0], -k * v[1], -air.g - k * v[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _decay(rate: float, t0: float, h: float) -> tuple:
     """(e^{−rate t0}, ∫_{t0}^{t0+h} e^{−rate t} dt)."""
     e0 = math.exp(-rate * t0)
@@ -257,7 +282,7 @@ def _decay(rate: float, t0: float, h: float) -> tuple:
     return e0, -e0 * math.expm1(-x) / rate
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
     """x turned about the unit vector ``axis`` by the angle of cosine c and sine s (Rodrigues)."""
     d = dot(axis, x) * (1.0 - c)
@@ -269,7 +294,7 @@ def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rotation(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
     """(axis, cos, sin) of the triad's turn over a step h from t0 (times since a0, b0 were
     set): fourth-order Magnus (see the module notes), exact when K = 0."""
@@ -366,7 +391,7 @@ def cached_step(z, v, n, u, t0, h, a0, b0, air, turned):
     return z1, v1, n1, u1, turned
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     """sign times the integrals over [x0, x1] of the three quadratic Lagrange basis functions
     on the nodes 0, 1/2, 1 (first three) and of the same times (1 − x) (last three); ``w`` adds."""
@@ -394,7 +419,7 @@ def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kink_weights(g0: float, g1: float, g2: float) -> tuple:
     """Quadrature weights for the face drag's |n·v| v over a step whose n·v changes sign.
 
@@ -459,7 +484,7 @@ the turn (:func:`kink_integrals`), shorter ones by a quadratic (:func:`kink_weig
 TRIG_COS = math.cos(0.5 * TRIG_KINK)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
     """Primitives at x of (1, cos θx, sin θx) and of (1 − x) times them, given cos θx, sin θx:
     x, sin θx / θ, −cos θx / θ and, with ∫ x cos θx = x sin θx / θ + cos θx / θ² and
@@ -477,7 +502,7 @@ def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
 
@@ -584,7 +609,7 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     return (out0, out1, out2), zint
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation` and
     twice its angle ``theta``: without damping the same for every step of the same length, so
@@ -680,7 +705,7 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     return z1, v1, n2, u2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_size(v, t0, a0, b0, air):
     """Longest step allowed from this state (TURN_STEP, MAX_STEP, DRAG_STEP, DECAY_STEP)."""
     k = air.spin_damping
@@ -798,7 +823,7 @@ def precession(lm, air):
     return (lm[0] / lmag, lm[1] / lmag, lm[2] / lmag), lmag / air.i1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c):
     """(a lower bound of the gap under the undamped coin τ after the state (z, v, n, L), its
     rate): ``axis`` and ``rate`` its precession (:func:`precession`), ``fall`` = g + D with D
@@ -820,7 +845,7 @@ def lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c):
     return gap, v[2] - fall * tau + cross(omega, rc)[2]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def bound_search(z, v, n, lm, tmin, h, air, c):
     """Longest step from ``tmin`` up to h over which the undamped coin provably stays above
     CA_TOLERANCE: the first τ at which :func:`lower_gap` falls to it, else h.
