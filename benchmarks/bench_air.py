@@ -3,6 +3,7 @@
     python benchmarks/bench_air.py                          # air vs vacuum + SciPy reference
     python benchmarks/bench_air.py --old-src /path/to/src   # + another implementation
     python benchmarks/bench_air.py --quick
+    python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
 rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
@@ -23,6 +24,16 @@ and each air case is given as a ratio to its vacuum model timed in the same roun
   /path/to/main/src`` for the before/after ratios.
 
 The load average is printed before and after: absolute rates on a shared machine vary with it.
+
+With ``--accuracy M`` only the times against DOP853 at rtol 1e-12 on the first M tosses are
+printed (:func:`accuracy`): the catch, the first contact, a bounce flight from the state after
+the reference's first impact, and the second contact; with ``--old-src`` the other
+implementation's on the same tosses. Measured 2026-11-23 (40 tosses, load 3-5): catch 3.2e-7 s
+(median) and 7.6e-7 s (largest), first contact 7.6e-7 and 3.3e-6 s (main: 7.7e-7, 3.3e-6),
+bounce flight 1.7e-10 and 4.7e-6 s, second contact 1.9e-6 and 3e-4 s (main alike). Speed the
+same day (the default run with ``--reference 3 --old-src``, 100,000 tosses, load 5.0 to 3.5):
+hand 129,034 a second (main 127,803), first contact 82,436 (88,351), to rest 26,930 (26,132:
+1.03 times; one thread 26,090 against 24,680 per CPU second, 1.06 times).
 """
 
 from __future__ import annotations
@@ -40,6 +51,7 @@ import numpy as np
 
 from coinflight import Coin
 from coinflight.core import numerical
+from coinflight.core.outcome import Status
 from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.air import catch_with_drag, drag_model
 from coinflight.outcomes.hand import HAND_CATCH
@@ -109,6 +121,139 @@ def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
     return omega, rng.uniform(1.5, 3.0, n)
 
 
+OLD_TIMES = """
+import json, sys
+import numpy as np
+from coinflight import Coin
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.air import catch_with_drag
+from coinflight.outcomes.table import land
+a = json.loads(sys.argv[1])
+omega, v0 = np.array(a["omega"]), np.array(a["v0"])
+coin = Coin.preset("us-nickel")
+drag = Drag(coefficient=a["cd"])
+surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+_, catch = catch_with_drag(coin, omega, v0, 1.0, 9.81, drag)
+first = land(coin, omega, v0, 1.0, 9.81, surface, drag, max_bounces=0)
+second = land(coin, omega, v0, 1.0, 9.81, surface, drag, max_bounces=1)
+out = [list(catch), list(first.first_contact), list(second.settle_time)]
+print(json.dumps([*out, [int(x) for x in second.status]]))
+"""
+
+
+def _reference_contact(f, y0, height, rising):  # type: ignore[no-untyped-def]
+    """(time, state) of the coin's lowest point reaching the surface ``height`` below the
+    centre's start by DOP853 at rtol 1e-12 (``f`` of :func:`coinflight.core.numerical.air_rhs`);
+    ``rising``: not before the apex."""
+    from scipy.integrate import solve_ivp
+
+    from coinflight.core.impact import lowest_depth
+
+    r, hh = COIN.radius, COIN.thickness / 2
+
+    def gap(t, y):  # type: ignore[no-untyped-def]
+        if t == 0.0 or (rising and y[5] > 0.0):
+            return 1.0
+        nz = float(numerical.quaternion_normal(y[9:13])[2])
+        return height + y[2] - lowest_depth(nz, r, hh)
+
+    gap.terminal = True  # type: ignore[attr-defined]
+    gap.direction = -1  # type: ignore[attr-defined]
+    sol = solve_ivp(f, (0, 60), y0, method="DOP853", rtol=1e-12, atol=1e-13, events=gap)
+    return float(sol.t_events[0][0]), np.asarray(sol.y_events[0][0])
+
+
+def accuracy(args: argparse.Namespace, m: int, drag: Drag) -> None:
+    """Times against DOP853 at rtol 1e-12 on the first ``m`` tosses (no spin damping): the
+    catch, the first contact with the table, and a bounce flight (from the state after the
+    reference's first impact, :func:`coinflight.core.impact.impact`, to the next contact,
+    :func:`coinflight.core.drag.bounce_flight`); with ``--old-src`` the other implementation's
+    catch and first contact, and for both the second contact (first flight, impact, bounce
+    flight) against the reference's. Median and largest absolute differences, s."""
+    from scipy.spatial.transform import Rotation
+
+    from coinflight.core import bounce
+    from coinflight.core import drag as drag_kernels
+    from coinflight.core.contact import Contact
+    from coinflight.core.impact import impact, lowest_depth
+
+    omega, v0 = tosses(m)
+    air = drag_model(COIN, drag, G)
+    i1, i3 = COIN.moments
+    contact = Contact.build(
+        radius=COIN.radius, thickness=COIN.thickness, mass=COIN.mass, i1=i1, i3=i3,
+        restitution=SURFACE.restitution, friction=SURFACE.friction,
+        drop_height=SURFACE.drop_height, g=G, rest_speed=bounce.REST_SPEED,
+    )  # fmt: skip
+    inertia = np.array([i1, i1, i3])
+    f = numerical.air_rhs(
+        COIN.mass, COIN.radius, COIN.thickness, inertia, G, air.drag_factor, 0.0, True
+    )
+    ref = {"catch": [], "first contact": [], "bounce flight": [], "second contact": []}
+    got = {"catch": [], "first contact": [], "bounce flight": [], "second contact": []}
+    _, catch = catch_with_drag(COIN, omega, v0, 1.0, G, drag)
+    first = land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0)
+    second = land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=1)
+    second_ref = np.full(m, np.nan)
+    for k in range(m):
+        ref["catch"].append(numerical.air_catch(f, omega[k], v0[k])[0])
+        got["catch"].append(catch[k])
+        y0 = np.concatenate([[0.0, 0.0, 0.0, 0.0, 0.0, v0[k]], omega[k], [0.0, 0.0, 0.0, 1.0]])
+        tc, y = _reference_contact(f, y0, SURFACE.drop_height, True)
+        ref["first contact"].append(tc)
+        got["first contact"].append(first.first_contact[k])
+        # The reference's first impact, then its bounce flight and the kernel's from there.
+        rot = Rotation.from_quat(y[9:13])
+        n = rot.apply([0.0, 0.0, 1.0])
+        z = lowest_depth(float(n[2]), COIN.radius, COIN.thickness / 2)
+        lm = rot.apply(inertia * y[6:9])
+        v1, lm1, rebound = impact(
+            tuple(y[3:6]), tuple(lm), tuple(n), COIN.radius, COIN.thickness / 2, COIN.mass,
+            i1, i3, SURFACE.restitution, SURFACE.friction,
+        )  # fmt: skip
+        if drag_kernels.ending(v1, lm1, tuple(n), rebound, contact)[1] >= 0:
+            continue  # settled at its first impact
+        w1 = rot.inv().apply(np.array(lm1)) / inertia
+        y1 = np.concatenate([[0.0, 0.0, 0.0], v1, w1, y[9:13]])
+        tb, _ = _reference_contact(f, y1, z, False)
+        ref["bounce flight"].append(tb)
+        got["bounce flight"].append(
+            drag_kernels.bounce_flight(z, v1, tuple(n), lm1, rebound, air, contact)[0]
+        )
+        if second.status[k] == int(Status.BOUNCE_LIMIT):
+            second_ref[k] = tc + tb
+            ref["second contact"].append(tc + tb)
+            got["second contact"].append(second.settle_time[k])
+
+    def line(name, a, b):  # type: ignore[no-untyped-def]
+        d = np.abs(np.asarray(a) - np.asarray(b))
+        return f"{name} ({d.size}): median {np.median(d):.2g} s, largest {np.max(d):.2g} s"
+
+    print(f"  against DOP853 (rtol 1e-12), the first {m} tosses:")
+    for name in ref:
+        print("    " + line(name, got[name], ref[name]))
+    if args.old_src:
+        payload = json.dumps({"omega": omega.tolist(), "v0": v0.tolist(), "cd": drag.coefficient})
+        env = dict(os.environ, PYTHONPATH=args.old_src)
+        out = subprocess.run(
+            [sys.executable, "-c", OLD_TIMES, payload],
+            env=env,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        old_catch, old_first, old_second, old_status = json.loads(out.stdout)
+        keep = [
+            k
+            for k in range(m)
+            if np.isfinite(second_ref[k]) and old_status[k] == int(Status.BOUNCE_LIMIT)
+        ]
+        print(f"  other implementation ({args.old_src}), same tosses:")
+        print("    " + line("catch", old_catch, ref["catch"]))
+        print("    " + line("first contact", old_first, ref["first contact"]))
+        print("    " + line("second contact", [old_second[k] for k in keep], second_ref[keep]))
+
+
 def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-def]
     times = []
     for _ in range(repeats):
@@ -136,10 +281,16 @@ def main() -> None:
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
     parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
+    parser.add_argument(
+        "--accuracy", type=int, default=None, help="only: times against DOP853 on this many tosses"
+    )
     args = parser.parse_args()
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
+    if args.accuracy:
+        accuracy(args, args.accuracy, drag)
+        return
     omega, v0 = tosses(n)
     load_before = f"{os.getloadavg()[0]:.2f}"
     print(

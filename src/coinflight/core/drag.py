@@ -71,9 +71,12 @@ falling, the drag only slows it) skips the contact search.
 
 Accuracy. Against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
 time of the first 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0
-1.5-3 m/s, heads up) differs by 3.1e-7 s (median) and 1.4e-6 s (worst) and n_z by at most
-2e-4, and their first contact with a table 0.8 m below launch by 7.7e-7 s (median) and 1.8e-6
-s (worst); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
+1.5-3 m/s, heads up) differs by 3.2e-7 s (median) and 7.6e-7 s (worst) and n_z by at most
+2e-4, and their first contact with a table 0.8 m below launch by 7.6e-7 s (median) and 3.3e-6
+s (worst) (``python benchmarks/bench_air.py --accuracy 40 --old-src …``; the previous contact
+search, advancing by steps of the integrator, in the same run: 7.7e-7 and 3.3e-6 s; an earlier
+measurement, with another script, gave 3.1e-7/1.4e-6 s (catch) and 7.7e-7/1.8e-6 s (first
+contact)); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
 integrator, 2.5 times as many steps) 6.1e-7 and 3.2e-6 s (catch), 3.2e-7 and 2.1e-6 s (first
 contact). Against the same integrator with steps of 0.02 rad (itself within 6e-9 s of DOP853)
 the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e-7 at 2.0,
@@ -84,10 +87,32 @@ phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and 
 of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
-is the coin's lowest point reaching the surface, located as in :func:`coinflight.core.bounce.
-next_contact`: conservative advancement (Mirtich 1996, §3.4) with a second-order bound on the
-gap, then a safeguarded Newton iteration on the length of one step from the bracket's start
-(a step of any length from a state is a smooth function of its length).
+is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
+are the longest above. Near it, without spin damping, the attitude is the vacuum's torque-free
+precession (the steps compute exactly that) and the centre of mass falls at most D τ²/2 below
+the vacuum parabola, D bounding the drag's deceleration: conservative advancement (Mirtich
+1996, §3.4) on that lower bound of the gap (:func:`lower_gap`, :func:`bound_search`; closed-form
+evaluations, not steps of the integrator) gives the step's length, and the coin leaves the
+surface after an impact when the bound says it has (:func:`lift`, no step taken). With damping
+the bound on the gap comes from the current state alone and each advancement is a step. A step
+that ends below the surface brackets the contact, and one that the search stopped while the
+coin approaches starts a safeguarded Newton iteration on the length of one step from that
+step's start (a step of any length from a state is a smooth function of its length), to
+GAP_TOLERANCE.
+
+Cost (``python benchmarks/bench_air.py``'s tosses carried to rest, one thread, per toss, load
+~5): first flight to the table ~11 µs (66 steps of ~2.4 rad, ~170-250 ns each, ~100 ns of which
+are :func:`kink_integrals`), the impacts ~11 µs (8.8 of ~1.3 µs,
+:func:`coinflight.core.impact.impact`, 8.6 segments each on average), the bounce flights ~14 µs
+(7.8 flights: 3 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, plus ~6
+evaluations of the bound; the previous search, advancing by steps of the integrator, took 4.3
+advancing, 1.7 Newton and 1.4 lift steps a flight: the bounce flights took 81 steps a toss,
+now 53).
+
+Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
+after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
+off DOP853 at rtol 1e-12; the second contact from launch (the first flight's error carried
+through the impact) 1.9e-6 s (median) and 3e-4 s (largest), as with the previous search.
 """
 
 from __future__ import annotations
@@ -105,6 +130,7 @@ from coinflight.core.bounce import (
     GRAZE_SKIP,
     MAX_IMPACTS,
     after_impact,
+    precess,
 )
 from coinflight.core.contact import Contact
 from coinflight.core.impact import (
@@ -138,6 +164,8 @@ DECAY_STEP = 0.5
 the coin."""
 FROZEN_TURN = 1e-12
 """Once the spin that remains can turn the coin by less than this (rad), its attitude is frozen."""
+SEARCH_STEPS = 100_000
+"""Steps of :func:`bound_search` at most (it then hands back the length it has reached)."""
 FAR_MARGIN = 1e-6
 """A flight step skips the contact search when the coin stays this far above the surface, m."""
 MAX_STEPS = 1_000_000
@@ -225,7 +253,7 @@ def projected_area(c: float, radius: float, thickness: float) -> float:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
     """dv/dt: gravity and the quadratic drag c A |v| v, c = ρ C_d / 2m, on the projected area
     A = π r² |n·v̂| + 2 r h sqrt(1 − (n·v̂)²) (or the face area): A |v| = π r² |n·v| + 2 r h
@@ -242,7 +270,7 @@ def _acceleration(v: tuple, n: tuple, air: Air) -> tuple:
     return (-k * v[0], -k * v[1], -air.g - k * v[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _decay(rate: float, t0: float, h: float) -> tuple:
     """(e^{−rate t0}, ∫_{t0}^{t0+h} e^{−rate t} dt)."""
     e0 = math.exp(-rate * t0)
@@ -254,7 +282,7 @@ def _decay(rate: float, t0: float, h: float) -> tuple:
     return e0, -e0 * math.expm1(-x) / rate
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
     """x turned about the unit vector ``axis`` by the angle of cosine c and sine s (Rodrigues)."""
     d = dot(axis, x) * (1.0 - c)
@@ -266,7 +294,7 @@ def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rotation(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
     """(axis, cos, sin) of the triad's turn over a step h from t0 (times since a0, b0 were
     set): fourth-order Magnus (see the module notes), exact when K = 0."""
@@ -342,7 +370,28 @@ def step(z, v, n, u, t0, h, a0, b0, air):
     return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, 2.0 * math.atan2(s, c))
 
 
-@njit(cache=True)
+NO_TURN = (-1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0)
+"""The ``turned`` of :func:`cached_step` before a first step: none to reuse."""
+
+
+@njit(cache=True, inline="always")
+def cached_step(z, v, n, u, t0, h, a0, b0, air, turned):
+    """:func:`step`, reusing the first half step's turn of the step before: (z, v, n, u, turned).
+
+    ``turned`` is (h, axis, cos, sin, θ) of the previous step (:data:`NO_TURN` at first): without
+    spin damping a half step's turn depends on its length only (the triad turns about the fixed
+    L at the rate |L|/I1), so it is computed again (:func:`rotation`) only for a new length or
+    with damping, and returned for the next step."""
+    if h != turned[0] or air.spin_damping > 0.0:
+        axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
+        turned = (h, axis, c, s, 2.0 * math.atan2(s, c))
+    z1, v1, n1, u1 = step_turning(
+        z, v, n, u, t0, h, a0, b0, air, turned[1], turned[2], turned[3], turned[4]
+    )
+    return z1, v1, n1, u1, turned
+
+
+@njit(cache=True, error_model="numpy")
 def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     """sign times the integrals over [x0, x1] of the three quadratic Lagrange basis functions
     on the nodes 0, 1/2, 1 (first three) and of the same times (1 − x) (last three); ``w`` adds."""
@@ -370,7 +419,7 @@ def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kink_weights(g0: float, g1: float, g2: float) -> tuple:
     """Quadrature weights for the face drag's |n·v| v over a step whose n·v changes sign.
 
@@ -435,7 +484,7 @@ the turn (:func:`kink_integrals`), shorter ones by a quadratic (:func:`kink_weig
 TRIG_COS = math.cos(0.5 * TRIG_KINK)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
     """Primitives at x of (1, cos θx, sin θx) and of (1 − x) times them, given cos θx, sin θx:
     x, sin θx / θ, −cos θx / θ and, with ∫ x cos θx = x sin θx / θ + cos θx / θ² and
@@ -453,7 +502,7 @@ def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
 
@@ -560,7 +609,7 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     return (out0, out1, out2), zint
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     """:func:`step` given the first half step's turn (axis, cos, sin) of :func:`rotation` and
     twice its angle ``theta``: without damping the same for every step of the same length, so
@@ -656,7 +705,7 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     return z1, v1, n2, u2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_size(v, t0, a0, b0, air):
     """Longest step allowed from this state (TURN_STEP, MAX_STEP, DRAG_STEP, DECAY_STEP)."""
     k = air.spin_damping
@@ -702,14 +751,10 @@ def catch_one(omega_body, start_sign, launch_speed, air):
     z = 0.0
     v = (0.0, 0.0, launch_speed)
     t = 0.0
-    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
+    turned = NO_TURN
     for _ in range(MAX_STEPS):
         h = step_size(v, t, a0, b0, air)
-        if h != hc or air.spin_damping > 0.0:
-            hc = h
-            axis, cr, sr = rotation(n, u, t, 0.5 * h, a0, b0, air)
-            th = 2.0 * math.atan2(sr, cr)
-        z1, v1, n1, u1 = step_turning(z, v, n, u, t, h, a0, b0, air, axis, cr, sr, th)
+        z1, v1, n1, u1, turned = cached_step(z, v, n, u, t, h, a0, b0, air, turned)
         if v1[2] < 0.0 and z1 <= 0.0:
             # Newton on the length of one step from (z, v, n, u) at t: z(τ) = 0, z'(τ) = v_z.
             lo = 0.0
@@ -762,6 +807,76 @@ def trajectory(omega_body, start_sign, launch_speed, air, times, out):
 
 
 @njit(cache=True)
+def drag_slack(v, h, air):
+    """Bound D on the drag's deceleration over a step h from the velocity v: c A_max (|v| + g h)²
+    (the speed grows at most at g, the drag only slows it), m/s²."""
+    vmax = math.sqrt(dot(v, v)) + air.g * h
+    return air.drag_factor * air.max_area * vmax * vmax
+
+
+@njit(cache=True)
+def precession(lm, air):
+    """(L̂, |L|/I1): the axis and rate of the undamped coin's torque-free precession."""
+    lmag = math.sqrt(dot(lm, lm))
+    if lmag == 0.0:
+        return (0.0, 0.0, 1.0), 0.0
+    return (lm[0] / lmag, lm[1] / lmag, lm[2] / lmag), lmag / air.i1
+
+
+@njit(cache=True, error_model="numpy")
+def lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c):
+    """(a lower bound of the gap under the undamped coin τ after the state (z, v, n, L), its
+    rate): ``axis`` and ``rate`` its precession (:func:`precession`), ``fall`` = g + D with D
+    bounding the drag's deceleration (:func:`drag_slack`).
+
+    Without spin damping the attitude is the torque-free precession of the vacuum
+    (:func:`coinflight.core.bounce.precess`, what the steps compute to rounding), and the centre
+    of mass falls at most D τ²/2 below the vacuum parabola: the gap is at least
+    z + v_z τ − (g + D) τ²/2 − depth(n_z(τ)) (:func:`coinflight.core.impact.lowest_depth`, the
+    rounded rim); its rate is v_z − (g + D) τ plus the lowest point's (envelope theorem)."""
+    m = precess(n, axis, rate, tau)
+    gap = (
+        z
+        + (v[2] - 0.5 * fall * tau) * tau
+        - lowest_depth(m[2], air.radius, c.half_thickness, c.corner_radius)
+    )
+    omega = angular_velocity(lm, m, air.i1, air.i3)
+    rc = contact_point(m, air.radius, c.half_thickness, c.corner_radius)
+    return gap, v[2] - fall * tau + cross(omega, rc)[2]
+
+
+@njit(cache=True, error_model="numpy")
+def bound_search(z, v, n, lm, tmin, h, air, c):
+    """Longest step from ``tmin`` up to h over which the undamped coin provably stays above
+    CA_TOLERANCE: the first τ at which :func:`lower_gap` falls to it, else h.
+
+    Conservative advancement (Mirtich 1996, §3.4) on the lower bound: each step at least the
+    one that provably cannot close it (the bound falls at most at its downward speed plus
+    |ω| ρ, accelerating at g + D), and as far as its Taylor bound (downward acceleration at most
+    g + D + 2 |ω|² ρ) stays positive, as the search with damping in :func:`next_contact`. The
+    bound costs a closed-form precession, not a step of the integrator."""
+    axis, rate = precession(lm, air)
+    fall = air.g + drag_slack(v, h, air)
+    omega = angular_velocity(lm, n, air.i1, air.i3)
+    w2 = dot(omega, omega)  # constant in torque-free motion
+    spin = math.sqrt(w2) * c.reach
+    accel = fall + 2.0 * w2 * c.reach
+    tau = tmin
+    for _ in range(SEARCH_STEPS):
+        gap, speed = lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c)
+        if gap <= CA_TOLERANCE:
+            return tau
+        vz = v[2] - fall * tau
+        a = (-vz if vz < 0.0 else 0.0) + spin
+        safe = 2.0 * gap / (a + math.sqrt(a * a + 2.0 * fall * gap))
+        taylor = (speed + math.sqrt(speed * speed + 2.0 * accel * gap)) / accel
+        tau += taylor if taylor > safe else safe
+        if tau >= h:
+            return h
+    return tau
+
+
+@njit(cache=True)
 def _gap(z, v, n, lm, air, hh, corner):
     """(gap under the lowest point, its rate): z − depth(n_z), v_z + (ω × r_c)_z, for the rim
     rounded with corner radius ``corner`` (the cylinder (r − a, h/2 − a) swept by a ball of
@@ -784,38 +899,67 @@ def ending(v, lm, n, rebound, c):
 
 
 @njit(cache=True)
-def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
-    """One toss from launch through air to rest on the table: (face, bounces, first contact,
-    settle time, status), as :func:`coinflight.core.bounce.land_one` (the rounded rim's
-    contacts and impacts, corner radius ``c.corner_radius``)."""
+def lift(z, v, n, u, lm, a0, b0, rebound, air, c):
+    """Leave the surface after an impact: (tmin, z, v, n, u, tr), the coin provably above it
+    ``tmin`` after the state returned, tr after the impact.
+
+    The gap first grows like rebound τ − A τ²/2 (A bounds the downward acceleration of any point
+    of the coin): the peak of that, halved until the gap is positive, as
+    :func:`coinflight.core.bounce.land_one`. Without spin damping the gap is judged by its
+    lower bound (:func:`lower_gap`, no step taken: the state is the impact's, tmin > 0, and the
+    next step starts the search there); with damping by steps of the integrator (tmin = 0)."""
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    tau = rebound / (c.g + 2.0 * dot(omega, omega) * c.reach)
+    if air.spin_damping == 0.0:
+        h = step_size(v, 0.0, a0, b0, air)
+        tau = tau if tau < h else h
+        fall = air.g + drag_slack(v, h, air)
+        axis, rate = precession(lm, air)
+        for _ in range(200):
+            if lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c)[0] > 0.0:
+                break
+            tau *= 0.5
+        return tau, z, v, n, u, 0.0
+    z1, v1, n1, u1 = z, v, n, u
+    for _ in range(200):
+        z1, v1, n1, u1 = step(z, v, n, u, 0.0, tau, a0, b0, air)
+        if z1 - lowest_depth(n1[2], c.radius, c.half_thickness, c.corner_radius) > 0.0:
+            break
+        tau *= 0.5
+    return 0.0, z1, v1, n1, u1, tau
+
+
+@njit(cache=True)
+def next_contact(z, v, n, u, tr, a0, b0, tmin, rising, air, c, budget):
+    """Fly from (z, v, n, u), tr after a0, b0 were set, to the coin's next touch of the surface:
+    (elapsed time, z, v, n, u, tr, L, the lowest point's vertical velocity, steps taken); the
+    elapsed time is −1 after ``budget`` steps without a touch.
+
+    ``rising``: from the launch, no contact is looked for before the apex (as without air).
+    ``tmin`` > 0: the state is an impact's and the coin is above the surface from tmin on
+    (:func:`lift`). Far from the surface (its centre higher than the coin's reach even after
+    falling −min(v_z, 0) h + g h²/2 in the step: falling, the drag only slows it) the steps are
+    the integrator's longest; near it, a step's length is also limited by the contact search:
+    without damping the search on the gap's lower bound (:func:`bound_search`), with damping
+    conservative advancement with the bound on the gap from this state alone (Mirtich 1996,
+    §3.4). A step that ends below the surface brackets the contact, which a safeguarded Newton
+    iteration on the length of one step from the bracket's start then polishes to
+    GAP_TOLERANCE (a step of any length from a state is a smooth function of its length; Newton
+    inside the bracket, else bisection, as :func:`coinflight.core.bounce.next_contact`)."""
     hh = c.half_thickness
     corner = c.corner_radius
     rho = c.reach
-    n, u, a0, b0 = launch_state(omega_body, start_sign, air)
-    z = c.drop_height  # height of the centre of mass above the surface
-    v = (0.0, 0.0, launch_speed)
-    t = 0.0  # since launch
-    tr = 0.0  # since a0, b0 were set (launch or the last impact)
-    bounces = 0
-    first = -1.0
-    rising = True  # the contact is looked for from the apex on, as without air
-    impacts = 0
-    hc, axis, cr, sr, th = -1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
-    for _ in range(MAX_STEPS):
-        if impacts >= MAX_IMPACTS:
-            break
+    elapsed = 0.0
+    turned = NO_TURN
+    for steps in range(budget):
         h = step_size(v, tr, a0, b0, air)
         # Rising from the launch, or so high above the surface that no point of the coin can
-        # reach it within the step (the centre falls by at most −min(v_z, 0) h + g h²/2: the
-        # drag never pulls it down while it falls), fly on without the contact search.
-        if rising or z - rho + h * (min(v[2], 0.0) - 0.5 * air.g * h) > FAR_MARGIN:
-            if h != hc or air.spin_damping > 0.0:
-                hc = h
-                axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-                th = 2.0 * math.atan2(sr, cr)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
-            z, v, n, u = z1, v1, n1, u1
-            t += h
+        # reach it within the step, fly on without the contact search.
+        if tmin == 0.0 and (
+            rising or z - rho + h * (min(v[2], 0.0) - 0.5 * air.g * h) > FAR_MARGIN
+        ):
+            z, v, n, u, turned = cached_step(z, v, n, u, tr, h, a0, b0, air, turned)
+            elapsed += h
             tr += h
             rising = rising and v[2] > 0.0
             continue
@@ -826,39 +970,45 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         z1, v1, n1, u1 = z, v, n, u
         tau, lo, hi, bracketed = 0.0, 0.0, 0.0, False
         g1, s1, lm1 = gap, speed, lm
-        if gap > CA_TOLERANCE:
-            # Conservative advancement: no point of the coin falls faster than |v_z| + |Ω| ρ
-            # nor accelerates downwards faster than g + c v² + 2 |Ω|² ρ.
-            spin = math.sqrt(dot(lm, lm)) / air.i1
-            omega = angular_velocity(lm, n, air.i1, air.i3)
-            w2 = dot(omega, omega)
-            a = (-v[2] if v[2] < 0.0 else 0.0) + spin * rho
-            accel = air.g + air.drag_factor * air.max_area * dot(v, v) + 2.0 * w2 * rho
-            safe = 2.0 * gap / (a + math.sqrt(a * a + 2.0 * accel * gap))
-            taylor = (speed + math.sqrt(speed * speed + 2.0 * accel * gap)) / accel
-            trial = taylor if taylor > safe else safe
-            if trial < h:
-                h = trial
-            if h != hc or air.spin_damping > 0.0:
-                hc = h
-                axis, cr, sr = rotation(n, u, tr, 0.5 * h, a0, b0, air)
-                th = 2.0 * math.atan2(sr, cr)
-            z1, v1, n1, u1 = step_turning(z, v, n, u, tr, h, a0, b0, air, axis, cr, sr, th)
+        longest = h
+        if gap > CA_TOLERANCE or tmin > 0.0:
+            if air.spin_damping == 0.0:
+                lo = tmin  # above the surface there (lift)
+                h = bound_search(z, v, n, lm, tmin, h, air, c)
+                tmin = 0.0
+            else:
+                # No point of the coin falls faster than |v_z| + |Ω| ρ nor accelerates
+                # downwards faster than g + c v² + 2 |Ω|² ρ.
+                spin = math.sqrt(dot(lm, lm)) / air.i1
+                omega = angular_velocity(lm, n, air.i1, air.i3)
+                w2 = dot(omega, omega)
+                a = (-v[2] if v[2] < 0.0 else 0.0) + spin * rho
+                accel = air.g + air.drag_factor * air.max_area * dot(v, v) + 2.0 * w2 * rho
+                safe = 2.0 * gap / (a + math.sqrt(a * a + 2.0 * accel * gap))
+                taylor = (speed + math.sqrt(speed * speed + 2.0 * accel * gap)) / accel
+                trial = taylor if taylor > safe else safe
+                if trial < h:
+                    h = trial
+            z1, v1, n1, u1, turned = cached_step(z, v, n, u, tr, h, a0, b0, air, turned)
             lm1 = angular_momentum(n1, u1, tr + h, a0, b0, air)
             g1, s1 = _gap(z1, v1, n1, lm1, air, hh, corner)
-            if g1 >= -CA_TOLERANCE:
+            if g1 < -CA_TOLERANCE:
+                tau, hi, bracketed = h, h, True
+            elif g1 > CA_TOLERANCE and s1 < 0.0 and h < longest:
+                tau = h  # stopped by the search, approaching: Newton on from the step's start
+            else:
                 z, v, n, u = z1, v1, n1, u1
-                t += h
+                elapsed += h
                 tr += h
                 if g1 > CA_TOLERANCE:
                     continue
                 zb, vb, nb, ub = z, v, n, u  # within the band above the surface: polish
-            else:
-                tau, hi, bracketed = h, h, True
-        # Safeguarded Newton on the length τ of one step from (zb, vb, nb, ub) at t (Newton
-        # inside the bracket once there is one, else bisection; as bounce.next_contact).
-        t0 = t
+                lo = 0.0
+        # Safeguarded Newton on the length τ of one step from (zb, vb, nb, ub): inside the
+        # bracket once there is one; before it, while approaching and within the longest step
+        # (beyond it, the state reached is taken and the flight goes on).
         tr0 = tr
+        fly_on = False
         for _ in range(100):
             if abs(g1) <= GAP_TOLERANCE or (not bracketed and s1 >= 0.0):
                 break
@@ -870,18 +1020,67 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             trial = tau - g1 / s1 if s1 < 0.0 else 0.5 * (lo + hi)
             if bracketed and not (lo < trial < hi):
                 trial = 0.5 * (lo + hi)
+            if not bracketed and trial > longest:
+                fly_on = True
+                break
             if trial == tau:
                 break
             tau = trial
             z1, v1, n1, u1 = step(zb, vb, nb, ub, tr0, tau, a0, b0, air)
             lm1 = angular_momentum(n1, u1, tr0 + tau, a0, b0, air)
             g1, s1 = _gap(z1, v1, n1, lm1, air, hh, corner)
-        z, v, n, u = z1, v1, n1, u1
-        t = t0 + tau
-        tr = tr0 + tau
-        lm = lm1
-        speed = s1
-        # At the surface (within the tolerances).
+        if fly_on or (g1 > CA_TOLERANCE and s1 >= 0.0):
+            # Above the surface (not at a touch): fly on from there.
+            z, v, n, u = z1, v1, n1, u1
+            elapsed += tau
+            tr = tr0 + tau
+            continue
+        return elapsed + tau, z1, v1, n1, u1, tr0 + tau, lm1, s1, steps + 1
+    return -1.0, z, v, n, u, tr, angular_momentum(n, u, tr, a0, b0, air), 0.0, budget
+
+
+@njit(cache=True)
+def bounce_flight(z, v, n, lm, rebound, air, c):
+    """The flight after an impact that left the coin at (z, v, n, L) with the contact point
+    rising at ``rebound``: (duration, z, v, n, L, the lowest point's vertical velocity) at its
+    next touch of the surface (duration −1 after MAX_STEPS steps), as :func:`land_one` flies
+    it (:func:`lift`, :func:`next_contact`)."""
+    a0, b0, u = split(lm, n)
+    tmin, z, v, n, u, tr = lift(z, v, n, u, lm, a0, b0, rebound, air, c)
+    dt, z, v, n, u, tr, lm, speed, _ = next_contact(
+        z, v, n, u, tr, a0, b0, tmin, False, air, c, MAX_STEPS
+    )
+    return (tr if dt >= 0.0 else -1.0), z, v, n, lm, speed
+
+
+@njit(cache=True)
+def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
+    """One toss from launch through air to rest on the table: (face, bounces, first contact,
+    settle time, status), as :func:`coinflight.core.bounce.land_one` (the rounded rim's
+    contacts and impacts, corner radius ``c.corner_radius``): flights by :func:`next_contact`,
+    impacts by :func:`coinflight.core.impact.impact`, the ending by :func:`ending`, the coin
+    leaving the surface by :func:`lift`."""
+    n, u, a0, b0 = launch_state(omega_body, start_sign, air)
+    z = c.drop_height  # height of the centre of mass above the surface
+    v = (0.0, 0.0, launch_speed)
+    t = 0.0  # since launch
+    tr = 0.0  # since a0, b0 were set (launch or the last impact)
+    tmin = 0.0
+    bounces = 0
+    first = -1.0
+    rising = True  # the contact is looked for from the apex on, as without air
+    budget = MAX_STEPS
+    impacts = 0
+    while impacts < MAX_IMPACTS:
+        dt, z, v, n, u, tr, lm, speed, steps = next_contact(
+            z, v, n, u, tr, a0, b0, tmin, rising, air, c, budget
+        )
+        budget -= steps
+        if dt < 0.0:
+            break
+        t += dt
+        rising = False
+        tmin = 0.0
         if speed >= 0.0:
             # A graze: no impact, fly on from a little later.
             z, v, n, u = step(z, v, n, u, tr, GRAZE_SKIP, a0, b0, air)
@@ -893,28 +1092,27 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
             first = t
         if bounces >= max_bounces:
             return resting_face(n[2], c.edge_sine), bounces, first, t, _LIMIT
-        z = lowest_depth(n[2], c.radius, hh, corner)
+        z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
         v, lm, rebound = impact(
-            v, lm, n, c.radius, hh, c.mass, c.i1, c.i3, c.restitution, c.friction, corner
+            v,
+            lm,
+            n,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            c.restitution,
+            c.friction,
+            c.corner_radius,
         )
         face, status, duration = ending(v, lm, n, rebound, c)
         if status >= 0:
             return face, bounces, first, t + duration, status
         bounces += 1
         a0, b0, u = split(lm, n)
-        tr = 0.0
-        hc = -1.0
-        # Leave the surface: first try the peak of rebound τ − A τ²/2, then halve.
-        omega = angular_velocity(lm, n, c.i1, c.i3)
-        lift = rebound / (c.g + 2.0 * dot(omega, omega) * rho)
-        for _ in range(200):
-            z1, v1, n1, u1 = step(z, v, n, u, 0.0, lift, a0, b0, air)
-            if z1 - lowest_depth(n1[2], c.radius, hh, corner) > 0.0:
-                break
-            lift *= 0.5
-        z, v, n, u = z1, v1, n1, u1
-        t += lift
-        tr = lift
+        tmin, z, v, n, u, tr = lift(z, v, n, u, lm, a0, b0, rebound, air, c)
+        t += tr
     return resting_face(n[2], c.edge_sine), bounces, first, t, _UNSETTLED
 
 

@@ -35,8 +35,12 @@ DRAG_TOSSES_PER_SECOND = 4e4
 C_d = 1.17, 2 threads on the shared 2-core machine (``python benchmarks/bench_air.py
 --reference 3 --old-src ...``, 100,000 tosses, medians of 5: 59,500 a second under a load of
 6.5-7.2, 126,000 per CPU second in one thread; 1.26 times the previous integrator's, steps of
-0.95 rad, in the same rounds). The table landing's rate is
-:data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND`."""
+0.95 rad, in the same rounds). Re-measured 2026-11-23 (``python benchmarks/bench_air.py
+--reference 3 --old-src ...``, same tosses): 129,000 a second at a load of 3.5-5, 118,000 per CPU
+second in one thread; 182,000 a second on the quiet machine (load about 1); kept at 40,000 for a
+busy one. The table landing's rate is
+:data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND` (26,900 a second carried to rest in
+the same run, load 3.5-5)."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:
