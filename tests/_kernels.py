@@ -45,9 +45,9 @@ def coin_contact(
         rolling_resistance,
         pivoting_resistance,
         contact_time=contact_time,
-        ending="contact" if ending == CONTACT_ENDING else "rocking",
+        ending="contact",  # the rocking Surface refuses resistances: the code is set below
     )
-    return contact_record(coin, surface, g, rest_speed=rest_speed)
+    return contact_record(coin, surface, g, rest_speed=rest_speed)._replace(ending=float(ending))
 
 
 def coin_air(

@@ -157,6 +157,11 @@ def test_text_table():
             "thickness h/2 of the thinnest coin (h/d = 0.1, h = 0.0024 m)",
         ),
         (["--simulate", "10", "--corner-radius", "-1e-4"], "corner radius must be between 0"),
+        (  # coins thicker than wide (h/d = 2): the bound is the radius, 12 mm, not h/2
+            ["--ratios", "2", "--simulate", "10", "--corner-radius", "0.02"],
+            "corner radius must be between 0 and 0.012 (in m), got 0.02: at most the radius r "
+            "(a coin thicker than wide) of the thinnest coin (h/d = 2, h = 0.048 m)",
+        ),
         (
             ["--simulate", "10", "--ending", "contact"],
             "the contact ending acts on landings that bounce: with restitution 0 (the default)",

@@ -6,6 +6,7 @@ its lowest point. The impact law's invariants at any a are in tests/test_impact.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -230,3 +231,22 @@ def test_the_rocking_ending_of_a_landing_takes_the_corner_radius():
     assert not np.any(round_[0] == 2)
     rocked = round_[4] == bounce.Status.SETTLED_ROCKING
     assert np.sum(rocked) > 50
+
+
+@pytest.mark.parametrize(
+    ("radius", "thickness", "bound", "why"),
+    [
+        (0.0106, 0.00195, 0.000975, "at most half the thickness h/2"),  # a nickel: h/2 < r
+        (0.012, 0.048, 0.012, "at most the radius r (a coin thicker than wide)"),  # h/d = 2
+    ],
+)
+def test_the_corner_radius_is_bounded_by_the_smaller_of_half_thickness_and_radius(
+    radius, thickness, bound, why
+):
+    """The rounded coin is the cylinder (r − a, h/2 − a) swept by a ball of radius a: both must
+    be ≥ 0, so a ≤ min(h/2, r). At the bound the coin is accepted (a = r = h/2 would be a
+    sphere); just above it, refused with a line naming the value, the range and the reason."""
+    coin = Coin(radius=radius, thickness=thickness, mass=0.005, corner_radius=bound)
+    assert coin.corner_radius == bound
+    with pytest.raises(ValueError, match=rf"got {1.01 * bound:g}: {re.escape(why)}"):
+        Coin(radius=radius, thickness=thickness, mass=0.005, corner_radius=1.01 * bound)

@@ -61,7 +61,8 @@ def resistance_option(which: str, metavar: str, help: str) -> Any:
 
 
 CORNER_HELP = (
-    "radius of the coin's rounded rim corners, m, 0 to half the thickness (default 0: sharp). "
+    "radius of the coin's rounded rim corners, m, 0 to half the thickness (or the radius if "
+    "smaller; default 0: sharp). "
     "Used by the flight's contacts, the impacts, both endings (the rocking section rolls on "
     "its round corners) and every ending's face/edge wells. Not measured for coins (worn coins "
     "are rounder): quote a band, not a value."

@@ -138,7 +138,7 @@ def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
     radius, hh, mass, i1, g : float
         The coin (r, h/2, m, I1) and gravity.
     corner : float
-        The rim's corner radius a, 0 ≤ a ≤ h/2 (0: sharp corners, Housner's block).
+        The rim's corner radius a, 0 ≤ a ≤ min(h/2, r) (0: sharp corners, Housner's block).
 
     Notes
     -----

@@ -5,8 +5,8 @@ so that numba compiles the same functions for the event-driven simulation of
 :mod:`coinflight.core.bounce`. The coin is a uniform cylinder of radius r and half-thickness
 hh = h/2 whose state is its heads normal n, the velocity v of its centre of mass and its
 angular momentum L about the centre of mass (all lab frame). Its rim's corners may be rounded
-with a radius a (0 ≤ a ≤ h/2): the coin is then the cylinder (r − a, h/2 − a) swept by a ball
-of radius a, the geometry of :mod:`coinflight.core.contact_phase`
+with a radius a (0 ≤ a ≤ min(h/2, r)): the coin is then the cylinder (r − a, h/2 − a) swept
+by a ball of radius a, the geometry of :mod:`coinflight.core.contact_phase`
 (:func:`~coinflight.core.contact_phase.rim_contact`); :func:`lowest_depth`,
 :func:`contact_point` and :func:`impact` take a (0 by default: the sharp cylinder, bit for
 bit).
@@ -110,8 +110,8 @@ def lowest_depth(nz: float, radius: float, half_thickness: float, corner: float 
     point is on the rim of the lower face; a face when n_z = ±1, the edge when n_z = 0).
     Yong & Mahadevan 2011, §III; REFERENCES §5.
 
-    With rounded rim corners of radius a = ``corner`` (0 ≤ a ≤ h/2), the coin is the cylinder
-    (r − a, h/2 − a) swept by a ball of radius a (the geometry of
+    With rounded rim corners of radius a = ``corner`` (0 ≤ a ≤ min(h/2, r)), the coin is the
+    cylinder (r − a, h/2 − a) swept by a ball of radius a (the geometry of
     :mod:`coinflight.core.contact_phase`, :func:`~coinflight.core.contact_phase.rim_contact`);
     the support function of a Minkowski sum is the sum of the support functions, so the depth
     is (r − a) sqrt(1 − n_z²) + (h/2 − a)|n_z| + a. With a = 0 it is the sharp cylinder's,
@@ -618,9 +618,9 @@ def impact(
     restitution, friction : float
         Stronge's energetic coefficient of restitution e in [0, 1] and Coulomb's μ ≥ 0.
     corner : float
-        a, the radius of the rim's rounded corners, m (0 ≤ a ≤ h/2; 0: sharp): the impulse acts
-        at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of radius a
-        (:func:`contact_point`; the geometry of :mod:`coinflight.core.contact_phase`).
+        a, the radius of the rim's rounded corners, m (0 ≤ a ≤ min(h/2, r); 0: sharp): the
+        impulse acts at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of
+        radius a (:func:`contact_point`; the geometry of :mod:`coinflight.core.contact_phase`).
 
     Returns
     -------

@@ -24,9 +24,9 @@ class Coin:
     name : str
         A label for reports and figure titles.
     corner_radius : float
-        Radius a of the rounded corners of the rim, m, 0 ≤ a ≤ h/2 (default 0: sharp corners):
-        the coin is then a cylinder of radius r − a and thickness h − 2a swept by a ball of
-        radius a. Not measured for any coin (worn coins are rounder than new ones): carry a
+        Radius a of the rounded corners of the rim, m, 0 ≤ a ≤ min(h/2, r) (default 0: sharp
+        corners): the coin is then a cylinder of radius r − a and thickness h − 2a swept by a
+        ball of radius a. Not measured for any coin (worn coins are rounder than new ones): carry a
         band, not a value. Only a table landing reads it
         (:meth:`coinflight.core.contact.Contact.build`): the flight's contacts, the impacts
         and the 3-D contact ending touch the table with the rounded rim, and every landing's
@@ -61,7 +61,9 @@ class Coin:
                 odd.append((quantity, value))
         v.instance("name", self.name, str, "a string")
         object.__setattr__(
-            self, "corner_radius", check_corner_radius(self.corner_radius, self.thickness)
+            self,
+            "corner_radius",
+            check_corner_radius(self.corner_radius, self.thickness, self.radius),
         )
         if odd:
             v.warn_unusual(_unusual_coin(odd), stacklevel=3)
@@ -101,7 +103,7 @@ class Coin:
         return float(i1), float(i3)
 
     def with_corner_radius(self, corner_radius: float) -> Coin:
-        """The same coin with rim corners rounded to ``corner_radius`` a, m (0 ≤ a ≤ h/2).
+        """The same coin with rim corners rounded to ``corner_radius`` a, m (0 ≤ a ≤ min(h/2, r)).
 
         >>> Coin.preset("us-nickel").with_corner_radius(3e-4).corner_radius
         0.0003
@@ -151,16 +153,22 @@ MASS = v.Quantity("mass", "kg", 1e-9, 1e6, (1e-4, 1.0), "a coin's mass (0.1 g to
 """Mass: hard range 1 µg to 1000 t, a warning outside 0.1 g to 1 kg."""
 
 
-def check_corner_radius(value: object, thickness: float, name: str = "corner radius") -> float:
-    """``value`` (m) as a float between 0 and half the ``thickness``, else TypeError or a
+def check_corner_radius(
+    value: object, thickness: float, radius: float, name: str = "corner radius"
+) -> float:
+    """``value`` (m) as a float between 0 and the smaller of half the ``thickness`` and the
+    ``radius`` (a rim corner rounded by a is the cylinder (r − a, h/2 − a) swept by a ball of
+    radius a, which needs both to be ≥ 0; a = r = h/2 is a sphere), else TypeError or a
     ValueError naming ``name``, the value and the range."""
     arr = v.as_float_array(name, value)  # type: ignore[arg-type]
     if arr.ndim:
         raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    half = 0.5 * thickness
+    why = "half the thickness h/2" if half <= radius else "the radius r (a coin thicker than wide)"
     try:
-        return float(v.in_range(name, arr, 0.0, 0.5 * thickness, "m"))
+        return float(v.in_range(name, arr, 0.0, min(half, radius), "m"))
     except ValueError as exc:
-        raise ValueError(f"{exc}: at most half the thickness h/2") from None
+        raise ValueError(f"{exc}: at most {why}") from None
 
 
 def _unusual_coin(odd: list[tuple[v.Quantity, float]]) -> str:

@@ -241,13 +241,13 @@ def simulate_edge(
 
 def _corner_radius(value: object, thinnest: float) -> float:
     """The simulated coins' corner radius ``value`` (m), checked against the thinnest coin's
-    half thickness (ratio ``thinnest`` × :data:`SIM_DIAMETER` / 2): the coin's own wording,
-    naming that coin."""
+    half thickness (ratio ``thinnest`` × :data:`SIM_DIAMETER` / 2) and the coins' radius
+    :data:`SIM_DIAMETER` / 2: the coin's own wording, naming that coin."""
     from coinflight.model.coin import check_corner_radius
 
     h = thinnest * SIM_DIAMETER
     try:
-        return check_corner_radius(value, h)
+        return check_corner_radius(value, h, 0.5 * SIM_DIAMETER)
     except ValueError as exc:
         raise ValueError(f"{exc} of the thinnest coin (h/d = {thinnest:g}, h = {h:g} m)") from None
 

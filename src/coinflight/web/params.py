@@ -138,8 +138,9 @@ PivotingResistance = Annotated[
 CornerRadius = Annotated[
     float | None,
     _q(
-        "table: radius of the coin's rounded rim corners, m, 0 to half the thickness (default "
-        "0: sharp); not measured for coins, quote a band. As --corner-radius."
+        "table: radius of the coin's rounded rim corners, m, 0 to half the thickness (or the "
+        "radius if smaller; default 0: sharp); not measured for coins, quote a band. As "
+        "--corner-radius."
     ),
 ]
 Drag = Annotated[float | None, _q("Air drag coefficient C_d ≥ 0 (integrated numerically).")]
