@@ -179,7 +179,7 @@ def test_the_surface_refuses_a_resistance_given_with_the_rocking_ending():
          f"pivoting resistance 0 m: {ROCKING_ONLY}"),
         (["probability", "--omega-x", "150:300", "--flight-time", "0.4:0.6", *TABLE,
           "--rolling-resistance", "1e-5:1e-3", "--method", "monte-carlo", "--n", "10"],
-         f"rolling_resistance 1e-05–0.001: {ROCKING_ONLY}"),
+         f"rolling resistance 1e-05–0.001 m: {ROCKING_ONLY}"),
         (["edge", "--simulate", "10", "--restitution", "0.5", "--pivoting-resistance", "1e-3"],
          f"pivoting resistance 0.001 m: {ROCKING_ONLY}"),
     ],
@@ -275,7 +275,7 @@ def test_help_says_what_each_option_does_its_units_default_and_that_it_is_unmeas
     for words in (
         "--ending", "rocking (default)", "--rolling-resistance", "rolling resistance length ℓ_r, "
         "m, 0 to 0.01", "default 1e-4). Not measured for coins", "--pivoting-resistance",
-        "--corner-radius", "rim corners, m, 0 to half the thickness (default 0: sharp)",
+        "--corner-radius", "rim corners, m, 0 to half the thickness (or the radius if smaller;",
         "Not measured for coins (worn coins are rounder): quote a band",
     ):  # fmt: skip
         assert words in text, words

@@ -24,6 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core.outcome import FACE_NAMES
+from coinflight.model.surface import CONTACT_UNITS
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
@@ -134,7 +135,11 @@ def check_contact(dist: TossDistribution, model: OutcomeModel) -> None:
     extra = [name for name in dist.contact if name not in model.contact_parameters]
     if not extra:
         return
-    given = ", ".join(f"{name} {dist.contact[name].describe()}" for name in extra)
+    given = ", ".join(
+        " ".join([name.replace("_", " "), dist.contact[name].describe()])
+        + (f" {CONTACT_UNITS[name]}" if name in CONTACT_UNITS else "")
+        for name in extra
+    )
     why = model.contact_refusal or (
         f"{model.name} has no contact with a surface; contact parameter distributions apply to "
         "a table landing (surface kind 'table', --surface table)"
