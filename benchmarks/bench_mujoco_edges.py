@@ -13,7 +13,13 @@ P(tails, heads, edge) at rest with standard errors (all tosses; among the tosses
 hands to its contact phase; MuJoCo's settled ones only), the tosses still moving in MuJoCo at
 the limit, which tosses end on edge in each engine, and how long the edge-enders take to come
 to rest in each (simulated seconds after the first contact: MuJoCo to within its 0.1 s window;
-coinflight's bounces plus its contact phase, from ``bench_contact.handoff``).
+coinflight's bounces plus its contact phase, from ``bench_contact.handoff``), and how long
+they stood on their rim.
+
+``--from-handoff`` also starts MuJoCo from coinflight's own state at the hand-off to its
+contact phase (:func:`coinflight.studies.mujoco_compare.run_from`; the impacts left out, the
+contact phases compared alone); ``--handoff-only`` does only that (no MuJoCo flights), with
+``--handoff-integrator`` (default ``--integrator``).
 """
 
 from __future__ import annotations
@@ -84,6 +90,120 @@ def coinflight_times(
     return times, upright
 
 
+def from_handoff(
+    e: float,
+    mu: float,
+    handed_by_land: np.ndarray,
+    omega: np.ndarray,
+    v0: np.ndarray,
+    args: argparse.Namespace,
+) -> tuple[np.ndarray, mujoco_compare.MujocoRun]:
+    """coinflight's handed tosses started in MuJoCo from coinflight's own hand-off state
+    (:func:`bench_contact.handoff`; the contact phase alone, the impacts left out): (indices of
+    the tosses, MuJoCo's run)."""
+    import bench_contact
+    from coinflight.core.impact import angular_velocity
+
+    c = bench_contact.contact(e, mu)
+    idx, states = [], []
+    for k in np.flatnonzero(handed_by_land):
+        y, handed = bench_contact.handoff(tuple(omega[k]), 1.0, v0[k], c)
+        if handed:
+            idx.append(k)
+            states.append(y.copy())
+    y = np.array(states).reshape(-1, 10)
+    w = np.array([angular_velocity(tuple(s[7:10]), tuple(s[4:7]), c.i1, c.i3) for s in y])
+    speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * 9.81 * study.DROP_HEIGHT)
+    run = mujoco_compare.run_from(
+        study.EDGE_TOSSES[args.tosses]().coin,
+        y[:, 0],
+        y[:, 1:4],
+        y[:, 4:7],
+        w.reshape(-1, 3),
+        e,
+        mu,
+        speed,
+        threads=args.threads,
+        limit=args.limit,
+        torsional=study.EDGE_RESISTANCE,
+        rolling=study.EDGE_RESISTANCE,
+        integrator=args.handoff_integrator or args.integrator,
+    )
+    return np.array(idx, dtype=int), run
+
+
+def handoff_report(
+    e: float,
+    mu: float,
+    handed: np.ndarray,
+    ours_all: np.ndarray,
+    omega: np.ndarray,
+    v0: np.ndarray,
+    args: argparse.Namespace,
+) -> dict[str, np.ndarray]:
+    """Print the hand-off comparison; its per-toss arrays."""
+    idx, hr = from_handoff(e, mu, handed, omega, v0, args)
+    ours = ours_all[idx]
+
+    def frac(faces: np.ndarray) -> str:
+        k = max(len(faces), 1)
+        p = np.bincount(faces, minlength=3) / k
+        return pm(p, np.sqrt(p * (1 - p) / k))
+
+    print(
+        f"  from coinflight's hand-off state ({len(idx)} tosses; MuJoCo {hr.integrator}, "
+        f"{hr.elapsed:.0f} s wall, {hr.steps:,} steps)"
+    )
+    print(f"    coinflight             : {frac(ours)}")
+    print(f"    MuJoCo                 : {frac(hr.rest)}")
+    ours_e, theirs_e = ours == EDGE, hr.rest == EDGE
+    print(
+        f"    on edge: both {np.count_nonzero(ours_e & theirs_e)}, coinflight only "
+        f"{np.count_nonzero(ours_e & ~theirs_e)}, MuJoCo only "
+        f"{np.count_nonzero(~ours_e & theirs_e)}; same face {np.mean(ours == hr.rest):.1%}"
+        f"; MuJoCo moving at the limit {hr.unsettled}"
+    )
+    print(f"    upright time, MuJoCo edges          : {spread(hr.edge_time[theirs_e])}")
+    print(f"    upright time, MuJoCo, cf's edges    : {spread(hr.edge_time[ours_e])}")
+    print(f"    upright time, MuJoCo, all > 0       : {spread(hr.edge_time[hr.edge_time > 0])}")
+    print(f"    time to rest, MuJoCo                : {spread(hr.rest_time)}")
+    return {
+        "ho_index": idx,
+        "ho_rest": hr.rest,
+        "ho_moving": hr.moving,
+        "ho_time": hr.rest_time,
+        "ho_upright": hr.edge_time,
+    }
+
+
+def handoff_only(args: argparse.Namespace, pairs: tuple[tuple[float, ...], ...]) -> None:
+    """coinflight's contact ending and MuJoCo from coinflight's hand-off states only."""
+    from coinflight.core.outcome import Status
+
+    dist = study.EDGE_TOSSES[args.tosses]()
+    omega, v0 = study._draw(dist, args.n, streams.child(streams.seed_sequence(args.seed), 5))
+    print(
+        f"{args.n} {args.tosses} tosses (seed {args.seed}), from coinflight's hand-off states "
+        f"only; load {os.getloadavg()[0]:.1f}"
+    )
+    for e, mu in pairs:
+        surface = Surface(
+            "table",
+            study.DROP_HEIGHT,
+            e,
+            mu,
+            rolling_resistance=study.EDGE_RESISTANCE,
+            pivoting_resistance=study.EDGE_RESISTANCE,
+            ending="contact",
+        )
+        out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
+        handed = out.status != Status.SETTLED_ENERGY
+        print(f"\ne = {e:g}, μ = {mu:g}: handed {handed.sum()} ({handed.mean():.1%})")
+        extra = handoff_report(e, mu, handed, out.face, omega, v0, args)
+        if args.save:
+            np.savez(f"{args.save}-handoff-e{e:g}-mu{mu:g}.npz", **extra)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=200)
@@ -93,9 +213,23 @@ def main() -> None:
     parser.add_argument("--limit", type=float, default=mujoco_compare.SETTLE)
     parser.add_argument("--integrator", default=study.EDGE_INTEGRATOR)
     parser.add_argument("--threads", type=int, default=None)
+    parser.add_argument(
+        "--from-handoff",
+        action="store_true",
+        help="also start MuJoCo from coinflight's hand-off state (the contact phase alone)",
+    )
+    parser.add_argument(
+        "--handoff-only",
+        action="store_true",
+        help="only coinflight and MuJoCo from coinflight's hand-off states (no MuJoCo flights)",
+    )
+    parser.add_argument("--handoff-integrator", default=None, help="default: --integrator")
     parser.add_argument("--save", default=None, help="write per-toss arrays to SAVE-e…-mu….npz")
     args = parser.parse_args()
     pairs = tuple(tuple(float(x) for x in p.split(",")) for p in args.pairs)
+    if args.handoff_only:
+        handoff_only(args, pairs)
+        return
     load0 = os.getloadavg()
     t0 = time.perf_counter()
     cpu0 = time.process_time()
@@ -166,6 +300,11 @@ def main() -> None:
         print(
             f"  upright time, cf faces > 1 s     : {spread(up_ours[(up_ours > 1.0) & ~ours_edge])}"
         )
+        extra: dict[str, np.ndarray] = {}
+        if args.from_handoff:
+            extra = handoff_report(
+                cell.restitution, cell.friction, h, cell.coinflight.rest, omega, v0, args
+            )
         if args.save:
             np.savez(
                 f"{args.save}-e{cell.restitution:g}-mu{cell.friction:g}.npz",
@@ -181,6 +320,7 @@ def main() -> None:
                 mj_moving=r.moving,
                 mj_time=r.rest_time,
                 mj_upright=r.edge_time,
+                **extra,
             )
 
 

@@ -121,3 +121,31 @@ def test_mujoco_work_is_bounded_before_it_starts():
         study.edge_check(3, seed=1, pairs=((0.0, 0.3),))
     with pytest.raises(ValueError, match="tosses must be one of vigorous, report, got 'x'"):
         study.edge_check(3, seed=1, tosses="x")
+
+
+def test_run_from_places_coins_as_given():
+    # Lab-frame states (coinflight's hand-off form): a coin face-down at rest (the quaternion
+    # for n = −z, the one special case), and one upright rolling along x at 0.5 m/s (spin u / r
+    # about its axis n = y): tails at once, and on its edge still rolling at a 0.3 s limit.
+    r, hh = NICKEL.radius, NICKEL.thickness / 2
+    u = 0.5
+    run = mujoco_compare.run_from(
+        NICKEL,
+        [hh + 1e-5, r + 1e-5],
+        [[0.0, 0.0, 0.0], [u, 0.0, 0.0]],
+        [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+        [[0.0, 0.0, 0.0], [0.0, u / r, 0.0]],
+        0.5,
+        0.3,
+        3.0,
+        threads=1,
+        limit=0.3,
+    )
+    assert run.first.tolist() == [0, EDGE] and run.rest.tolist() == [0, EDGE]
+    assert run.moving.tolist() == [False, True]
+    q = mujoco_compare._quaternion_to(np.array([[0.0, 0.0, -1.0], [0.6, 0.0, 0.8]]))
+    m = np.empty(9)
+    mujoco.mju_quat2Mat(m, q[1])
+    np.testing.assert_allclose(m.reshape(3, 3)[:, 2], [0.6, 0.0, 0.8], atol=1e-15)
+    mujoco.mju_quat2Mat(m, q[0])
+    np.testing.assert_allclose(m.reshape(3, 3)[:, 2], [0.0, 0.0, -1.0], atol=1e-15)

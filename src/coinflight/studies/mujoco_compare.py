@@ -49,8 +49,27 @@ at a rate set by ``solref``, coinflight's a regularised Coulomb law (slip speed
 instantaneous, MuJoCo's are the same soft contact, and only the last phase of coinflight's
 landing has the resistances at all.
 
+Carried to rest. Each toss runs until its face can no longer change (:func:`_settled`: at rest
+now and :data:`REST_CHECK` s before, or in a face's well with less energy than the corner),
+checked at the end of every :data:`WINDOW`, or until :data:`SETTLE` s past its first contact;
+up to :data:`POOL` tosses share MuJoCo's threaded rollouts and a settled toss leaves the pool at
+once, so the cost is the steps each toss needs (a coin rolling on its rim for seconds costs
+seconds, a coin that lands flat a window). Tosses still moving at the limit are counted
+(:attr:`MujocoRun.moving`) and reported, never dropped. :attr:`MujocoRun.rest_time` and
+:attr:`MujocoRun.edge_time` say how long each toss took to settle and how long it stood on its
+rim. The work is bounded before anything runs (:func:`seconds_estimate`).
+
+Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
+tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
+contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
+a step). The landing report's comparison has no axial spin and keeps Euler; the edge check
+(:func:`coinflight.studies.landing.edge_check`), whose tosses precess, runs RK4. Started from
+coinflight's hand-off states, where there is no flight to drift in, Euler and RK4 give the same
+faces at rest (104 tosses: no edge in either).
+
 The benchmark ``benchmarks/bench_bounce.py`` and the landing report
-(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`.
+(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`;
+``benchmarks/bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
 """
 
 from __future__ import annotations
@@ -517,6 +536,69 @@ def _carry(
     return _Carried(first, rest, moving, rest_time, edge_time, steps)
 
 
+def _calibrated(
+    coin: Coin,
+    restitution: float,
+    friction: float,
+    speed: float,
+    g: float,
+    condim: int,
+    torsional: float,
+    rolling: float,
+    integrator: str,
+) -> tuple[Any, float, float, dict[float, float]]:
+    """(model, damping ratio, flat-drop restitution at ``speed``, restitution by speed): the
+    contact's damping calibrated so that a flat drop at ``speed`` rebounds at e."""
+    zeta = (
+        calibrated_damping(coin, restitution, speed, g, condim, integrator)
+        if restitution > 0
+        else 1.0
+    )
+    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim)
+    by_speed = {
+        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim)
+        for probe in PROBE_SPEEDS
+    }
+    by_speed[speed] = e_mujoco
+    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling)
+    return m, zeta, e_mujoco, by_speed
+
+
+def _finish(
+    carried: _Carried,
+    t0: float,
+    workers: int,
+    calibration: tuple[Any, float, float, dict[float, float]],
+    condim: int,
+    limit: float,
+    torsional: float,
+    rolling: float,
+    integrator: str,
+) -> MujocoRun:
+    import mujoco
+
+    _, zeta, e_mujoco, by_speed = calibration
+    return MujocoRun(
+        carried.first,
+        carried.rest,
+        carried.moving,
+        zeta,
+        e_mujoco,
+        time.perf_counter() - t0,
+        workers,
+        mujoco.__version__,
+        condim,
+        by_speed,
+        carried.rest_time,
+        limit,
+        torsional,
+        rolling,
+        carried.steps,
+        integrator,
+        carried.edge_time,
+    )
+
+
 def run(
     coin: Coin,
     omega: NDArray[np.float64],
@@ -552,41 +634,81 @@ def run(
     flight = vmax / g + math.sqrt(2.0 * (drop_height + vmax * vmax / (2.0 * g)) / g)
     bound([n], limit, integrator)
     landing_speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * g * drop_height)
-    zeta = (
-        calibrated_damping(coin, restitution, landing_speed, g, condim, integrator)
-        if restitution > 0
-        else 1.0
+    calibration = _calibrated(
+        coin, restitution, friction, landing_speed, g, condim, torsional, rolling, integrator
     )
-    e_mujoco = flat_drop_restitution(coin, landing_speed, zeta, g, integrator, condim)
-    by_speed = {
-        speed: flat_drop_restitution(coin, speed, zeta, g, integrator, condim)
-        for speed in PROBE_SPEEDS
-    }
-    by_speed[landing_speed] = e_mujoco
-    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling)
+    m = calibration[0]
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
     initial = _launch_states(m, datas[0], omega, v0, drop_height)
     carried = _carry(m, datas, initial, v0 / g, coin, g, limit, flight + 0.5)
-    return MujocoRun(
-        carried.first,
-        carried.rest,
-        carried.moving,
-        zeta,
-        e_mujoco,
-        time.perf_counter() - t0,
-        workers,
-        mujoco.__version__,
-        condim,
-        by_speed,
-        carried.rest_time,
-        limit,
-        torsional,
-        rolling,
-        carried.steps,
-        integrator,
-        carried.edge_time,
+    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
+
+
+def _quaternion_to(n: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Unit quaternions (scalar first) of the shortest rotations taking the body z axis onto the
+    unit vectors ``n`` (k, 3); about x for n = −z."""
+    w = 1.0 + n[:, 2]
+    q = np.column_stack([w, -n[:, 1], n[:, 0], np.zeros(len(n))])  # (1 + z·n, z × n)
+    flip = w < 1e-12
+    q[flip] = (0.0, 1.0, 0.0, 0.0)
+    return q / np.linalg.norm(q, axis=1, keepdims=True)
+
+
+def run_from(
+    coin: Coin,
+    height: NDArray[np.float64],
+    velocity: NDArray[np.float64],
+    normal: NDArray[np.float64],
+    omega: NDArray[np.float64],
+    restitution: float,
+    friction: float,
+    calibration_speed: float,
+    g: float = 9.81,
+    threads: int | None = None,
+    condim: int = CONDIM,
+    *,
+    limit: float = SETTLE,
+    torsional: float = TORSIONAL,
+    rolling: float = ROLLING,
+    integrator: str = INTEGRATOR,
+) -> MujocoRun:
+    """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
+    heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
+    (coinflight's state at its hand-off to the contact phase, for example), carried as in
+    :func:`run` (the first contact is their first touch of the plane; the contact damping
+    calibrated at ``calibration_speed``, m/s)."""
+    import mujoco
+
+    t0 = time.perf_counter()
+    z = np.asarray(height, dtype=float).reshape(-1)
+    vel = np.asarray(velocity, dtype=float).reshape(-1, 3)
+    nrm = np.asarray(normal, dtype=float).reshape(-1, 3)
+    nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
+    w_lab = np.asarray(omega, dtype=float).reshape(-1, 3)
+    check_limit(limit)
+    bound([len(z)], limit, integrator)
+    calibration = _calibrated(
+        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator
     )
+    m = calibration[0]
+    workers = threads or os.cpu_count() or 1
+    datas = [mujoco.MjData(m) for _ in range(workers)]
+    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
+    initial = np.empty((len(z), mujoco.mj_stateSize(m, spec)))
+    quats = _quaternion_to(nrm)
+    data = datas[0]
+    rot = np.empty(9)
+    for k in range(len(z)):
+        mujoco.mj_resetData(m, data)
+        data.qpos[:3] = (0.0, 0.0, z[k])
+        data.qpos[3:7] = quats[k]
+        mujoco.mju_quat2Mat(rot, quats[k])
+        data.qvel[:3] = vel[k]
+        data.qvel[3:6] = rot.reshape(3, 3).T @ w_lab[k]  # body frame
+        mujoco.mj_getState(m, data, initial[k], spec)
+    carried = _carry(m, datas, initial, np.zeros(len(z)), coin, g, limit, 1.0)
+    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
 
 
 __all__ = [
@@ -606,5 +728,6 @@ __all__ = [
     "flat_drop_restitution",
     "model",
     "run",
+    "run_from",
     "seconds_estimate",
 ]
