@@ -131,12 +131,16 @@ POOL = 128
 """Tosses rolled out together (MuJoCo's threads share them); a toss that settles leaves the pool
 and the next one takes its place."""
 STEPS_PER_SECOND = 2.0e5
-"""MuJoCo steps of one coin a wall second, all threads (for the work bound; measured: see
-:func:`seconds_estimate`)."""
+"""MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
+214,000 (64 of the landing report's tosses, load 0.7); RK4 35,600 and 39,000 at load 4-6 (the
+edge check's 2 × 1,500 tosses, 2026-11-23), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
 MEAN_CONTACT = 1.0
-"""Mean simulated time after the first contact of a toss that settles, s (for the work bound)."""
+"""Mean simulated time after the first contact of a toss that settles, s (for the work bound;
+measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
+both with the tosses still rolling at 20 s, 0.1-0.7 % of them)."""
 MOVING_SHARE = 0.1
-"""Share of the tosses still moving at a limit of several seconds (for the work bound)."""
+"""Share of the limit added to :data:`MEAN_CONTACT` for the tosses that roll long (for the work
+bound): 3 s expected after the first contact at the 20 s limit (measured 1.4-2.7 s)."""
 FLIGHT = 0.7
 """Longest flight of the compared tosses, launch to first contact, s (v0 ≤ 3 m/s, 0.8 m drop;
 for the work bound)."""
