@@ -1,6 +1,6 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Five questions (issue 11), each a function returning plain values with their seeds:
+Six questions (issue 11), each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
@@ -20,7 +20,12 @@ Five questions (issue 11), each a function returning plain values with their see
   (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
   of each; coinflight's at-rest faces with both of its endings (the planar rocking hand-off and
   the experimental 3-D contact phase with MuJoCo's rolling and torsional friction as its
-  rolling and pivoting resistance).
+  rolling and pivoting resistance);
+* :func:`edge_check`: are the 3-D contact ending's edges coinflight's alone? The same vigorous
+  tosses (axial spin) in the contact ending and in MuJoCo (sharp rims, the same resistances),
+  P(tails, heads, edge) at rest, which tosses end on edge in each, how long they stand
+  (``benchmarks/bench_mujoco_edges.py``; the measured answer is in
+  :mod:`coinflight.core.contact_phase`'s notes: MuJoCo leaves about ten times fewer on edge).
 
 These are validation runs, not predictions: every table number they give depends on the
 restitution and friction (and, for the contact ending, on the rolling and pivoting resistance
