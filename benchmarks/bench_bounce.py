@@ -104,12 +104,14 @@ def bench_mujoco(m: int) -> None:
     print(
         f"MuJoCo {s['mujoco']} ({s['integrator']}, dt = {s['timestep']:g} s, {s['threads']} "
         f"threads), {m} tosses: {m / c.mujoco_seconds:,.1f} tosses/s; coinflight "
-        f"{m / c.ours_seconds:,.0f} tosses/s on the same tosses: ratio {c.speed_ratio:,.0f}"
+        f"{m / c.rocking.seconds:,.0f} tosses/s on the same tosses: ratio "
+        f"{c.ratio(c.rocking):,.0f}"
     )
     print(
         f"  agreement with coinflight: first contact {c.first_agreement:.1%}, at rest "
-        f"{c.rest_agreement:.1%}; MuJoCo at rest: {face_fractions(c.mujoco_rest)}, "
-        f"coinflight: {face_fractions(c.ours_rest)}"
+        f"{c.agreement(c.rocking):.1%}; MuJoCo at rest: {face_fractions(c.mujoco_rest)} "
+        f"({c.mujoco_unsettled} still moving at {c.mujoco.limit:g} s), coinflight: "
+        f"{face_fractions(c.rocking.rest)}"
     )
 
 

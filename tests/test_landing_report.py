@@ -32,6 +32,7 @@ TINY = report.Sizes(
     band_tosses=500,
     band_cells=2,
     mujoco=3,
+    mujoco_edges=2,
 )
 
 
@@ -214,9 +215,9 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
     root = streams.child(streams.seed_sequence(3), 3)
     omega, v0 = study._draw(study.mujoco_tosses(), 6, root)
     np.testing.assert_array_equal(
-        land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.ours_rest
+        land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.rocking.rest
     )
-    assert c.speed_ratio > 1.0
+    assert c.ratio(c.rocking) > 1.0
     # The 3-D contact ending lands the same tosses with MuJoCo's torsional and rolling friction
     # as its pivoting and rolling resistance.
     assert c.contact is not None and c.contact.ending == "contact"
@@ -241,7 +242,8 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
     assert by_speed[landing] == c.settings["flat_drop_restitution"]
     assert [r.ending for r in c.endings] == ["rocking", "contact"]
     assert c.agreement(c.contact) == np.mean(c.contact.rest == c.mujoco_rest)
-    assert c.ratio(c.rocking) == c.speed_ratio
+    assert c.ratio(c.rocking) == c.mujoco_seconds / c.rocking.seconds
+    assert c.mujoco_unsettled == int(c.mujoco.moving.sum()) and c.mujoco.limit == 20.0
     assert c.settings["condim"] == 6 and c.settings["friction"][1:] == [5e-3, 1e-4]
 
 
@@ -278,3 +280,19 @@ def test_the_report_compares_both_endings_with_mujoco(written):
     md = (out / "report.md").read_text()
     assert "coinflight, 3-D contact ending, at rest" in md
     assert f"{c.agreement(c.contact):.1%}" in md
+
+
+def test_the_report_shows_the_edge_check_in_both_engines(written):
+    out, r = written
+    if r.edges is None:
+        pytest.skip("MuJoCo not run")
+    numbers = json.loads((out / "numbers.json").read_text())["mujoco_edges"]
+    (cell,) = r.edges.cells
+    (written_cell,) = numbers["cells"]
+    assert numbers["n"] == TINY.mujoco_edges == cell.n and numbers["integrator"] == "RK4"
+    assert written_cell["handed"] == int(cell.handed.sum())
+    assert written_cell["mujoco_rest"][0] == cell.fractions(cell.mujoco.rest)[0].tolist()
+    assert sum(written_cell["edges_both_coinflight_only_mujoco_only"]) <= cell.n
+    assert written_cell["mujoco_moving"] == int(cell.mujoco.moving.sum())
+    md = (out / "report.md").read_text()
+    assert "## Edges in both engines" in md and "MuJoCo, settled only" in md

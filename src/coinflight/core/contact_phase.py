@@ -65,6 +65,42 @@ coin (``python benchmarks/bench_bounce.py --contact N`` prints the table). What 
 has and this model lacks (an uneven table, a rim that is not a perfect band) is not known
 here.
 
+An independent engine does not give these edges. ``python benchmarks/bench_mujoco_edges.py 1500
+--pairs 0.5,0.3 0.5,0.6`` (:func:`coinflight.studies.landing.edge_check`, seed 2026; the project
+machine's 2 cores shared, load 4-6, 2026-11-23 17:51-18:32 UTC: 2,406 s wall, 1,226 s of CPU)
+lands the same 1,500 vigorous tosses here (sharp corners, ℓ_r = ℓ_p = 1e-4 m) and in MuJoCo 3.17
+(a sharp cylinder, condim 6, rolling and torsional friction 1e-4 m: the same lengths, a torque
+bounded by a length times the normal force; pyramidal cone, RK4 at 0.1 ms, contact time constant
+1 ms, damping calibrated to e by a flat drop; each toss carried to rest or 20 s past its first
+contact). Same well at the first contact 99.3 %. P(edge) among the tosses handed to this phase,
+here against MuJoCo on the same tosses: **0.123 ± 0.010 against 0.012 ± 0.003** (e 0.5, μ 0.3;
+1,077 handed) and **0.439 ± 0.015 against 0.043 ± 0.006** (μ 0.6; 1,067); of all tosses 0.088
+against 0.011 and 0.312 against 0.035 (MuJoCo: 2 and 11 tosses still moving at 20 s, counted by
+their well). On edge in both engines 2 and 23 tosses, here only 130 and 445, in MuJoCo only 14
+and 30. MuJoCo's edge-enders stand on their rim at least as long as ours (median 14.6 and 10.9 s
+upright, against 6.7 and 7.9 s here): both engines hold a coin that rolls upright in the flat
+band until the rolling resistance stops it, but MuJoCo brings about ten times fewer coins there.
+Started from this phase's own hand-off states (the impacts left out; ``--handoff-only``, 600
+tosses, seed 2026, 446 handed, e 0.5, μ 0.3, load 2), MuJoCo again leaves 0.013 ± 0.005 on edge
+where this phase leaves 0.110 ± 0.015 (MuJoCo 6 of 446 with Euler and with RK4 alike, in 23 and
+175 s; this phase 49; the same face on 66-68 %; on 104 of these, Euler or RK4, a pyramidal or
+elliptic cone, a time constant of 1 or 0.5 ms, a stiffer impedance or no-slip friction all leave
+0 or 1 on edge against 8 here). The rim is not the difference: MuJoCo's cylinder has the same
+static edge well (two contact points; a coin tilted 5° from upright comes back, at 6° it falls)
+and agrees with this phase on a coin rolling upright (0.1, 0.3, 1 m/s: upright 1.7, 5.0, 16.6 s
+in MuJoCo, 1.2, 4.4, 15.8 s here to the end of its settle test). So the edge rate is not the
+sharp rim's in both engines: it is this contact model's, in how it turns a wobbling, sliding
+coin on its rim into an upright roller (in the one toss traced from the hand-off, a coin landing
+near upright rolls here within 25 ms, while in MuJoCo it slides and falls flat); its regularised
+friction (:data:`SLIP_SPEED`) and the arc's damping are the first suspects, not yet tested. On
+the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
+0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
+their whole energy below the barrier), 10 in MuJoCo (0.025 ± 0.008 with RK4, 0.018 ± 0.007 with
+Euler), 8 of them tosses this model ends at an impact, standing on their rim for seconds (median
+8.4 s): there the engines differ at the impacts (instantaneous here, soft there), not in this
+phase. MuJoCo's soft contact is no measurement either: which engine is closer to a coin is not
+known, and the contact ending's edge rates are to be quoted, if at all, beside MuJoCo's.
+
 The state is the height z of the centre of mass, its velocity v, the heads normal n and the
 angular momentum L about the centre of mass (lab frame, SI); the spin angle about n does not
 enter the contact of a cylinder with a plane, and neither does the horizontal position.

@@ -183,11 +183,11 @@ def plot_mujoco(c: MujocoComparison) -> Figure:
     names = ("tails", "heads", "edge")
     colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
     Series = list[tuple[NDArray[np.int8], str | None, str]]
-    at_rest: Series = [(c.ours_rest, None, "coinflight, rocking ending")]
+    at_rest: Series = [(c.rocking.rest, None, "coinflight, rocking ending")]
     if c.contact is not None:
         at_rest.append((c.contact.rest, "..", "coinflight, 3-D contact ending"))
     at_rest.append((c.mujoco_rest, "//", "MuJoCo"))
-    first: Series = [(c.ours_first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]
+    first: Series = [(c.first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]
     panels: tuple[tuple[str, Series], ...] = (("first contact", first), ("at rest", at_rest))
     for ax, (title, series) in zip(axes, panels, strict=True):
         x = np.arange(3)

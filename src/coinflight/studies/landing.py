@@ -1,6 +1,6 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Five questions (issue 11), each a function returning plain values with their seeds:
+Six questions (issue 11), each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
@@ -20,7 +20,12 @@ Five questions (issue 11), each a function returning plain values with their see
   (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
   of each; coinflight's at-rest faces with both of its endings (the planar rocking hand-off and
   the experimental 3-D contact phase with MuJoCo's rolling and torsional friction as its
-  rolling and pivoting resistance).
+  rolling and pivoting resistance);
+* :func:`edge_check`: are the 3-D contact ending's edges coinflight's alone? The same vigorous
+  tosses (axial spin) in the contact ending and in MuJoCo (sharp rims, the same resistances),
+  P(tails, heads, edge) at rest, which tosses end on edge in each, how long they stand
+  (``benchmarks/bench_mujoco_edges.py``; the measured answer is in
+  :mod:`coinflight.core.contact_phase`'s notes: MuJoCo leaves about ten times fewer on edge).
 
 These are validation runs, not predictions: every table number they give depends on the
 restitution and friction (and, for the contact ending, on the rolling and pivoting resistance
@@ -44,6 +49,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight import _validation as v
+from coinflight.core.outcome import EDGE
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -70,7 +76,7 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING = 0, 1, 2, 3, 4
+_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES = 0, 1, 2, 3, 4, 5
 
 
 def map_tosses(coin: Coin | None = None) -> TossDistribution:
@@ -396,41 +402,46 @@ class EndingRun:
 class MujocoComparison:
     """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`.
 
-    ``ours_*`` are coinflight's default (rocking) ending; ``contact`` the same tosses with the
-    3-D contact ending (None when not run).
+    ``rocking`` and ``contact`` are coinflight's two endings of the same tosses, one shape
+    (:class:`EndingRun`; ``contact`` None when not run); ``first`` coinflight's wells at the
+    first contact; ``mujoco`` MuJoCo's run (faces at the first contact and at the end, the
+    tosses still moving at its limit, how long each took to settle).
     """
 
     n: int
     seed: int
     restitution: float
     friction: float
-    ours_first: NDArray[np.int8]
-    ours_rest: NDArray[np.int8]
-    ours_unsettled: int
-    ours_seconds: float
-    mujoco_first: NDArray[np.int8]
-    mujoco_rest: NDArray[np.int8]
-    mujoco_moving: NDArray[np.bool_]
-    mujoco_seconds: float
+    first: NDArray[np.int8]
+    rocking: EndingRun
+    mujoco: Any  # mujoco_compare.MujocoRun (a module importable without MuJoCo)
     settings: dict[str, Any]
     contact: EndingRun | None = None
-    ours_at_impact: int = 0
-
-    @property
-    def rocking(self) -> EndingRun:
-        """The default ending's run (the ``ours_*`` fields) as an :class:`EndingRun`."""
-        return EndingRun(
-            "rocking",
-            self.ours_rest,
-            self.ours_unsettled,
-            self.ours_seconds,
-            at_impact=self.ours_at_impact,
-        )
 
     @property
     def endings(self) -> tuple[EndingRun, ...]:
         """coinflight's runs: rocking, then contact when it ran."""
         return (self.rocking,) if self.contact is None else (self.rocking, self.contact)
+
+    @property
+    def mujoco_first(self) -> NDArray[np.int8]:
+        """MuJoCo's wells at the first contact."""
+        return np.asarray(self.mujoco.first)
+
+    @property
+    def mujoco_rest(self) -> NDArray[np.int8]:
+        """MuJoCo's faces at the end (the moving tosses by the well they were in)."""
+        return np.asarray(self.mujoco.rest)
+
+    @property
+    def mujoco_moving(self) -> NDArray[np.bool_]:
+        """MuJoCo tosses still moving at its settle limit (most rolling on their edge)."""
+        return np.asarray(self.mujoco.moving)
+
+    @property
+    def mujoco_seconds(self) -> float:
+        """MuJoCo's wall time, s."""
+        return float(self.mujoco.elapsed)
 
     def agreement(self, run: EndingRun) -> float:
         """Fraction of tosses with the same face at rest in ``run`` and in MuJoCo."""
@@ -443,22 +454,12 @@ class MujocoComparison:
     @property
     def first_agreement(self) -> float:
         """Fraction of tosses in the same well at the first contact."""
-        return float(np.mean(self.ours_first == self.mujoco_first))
-
-    @property
-    def rest_agreement(self) -> float:
-        """Fraction of tosses with the same face at rest."""
-        return float(np.mean(self.ours_rest == self.mujoco_rest))
+        return float(np.mean(self.first == self.mujoco_first))
 
     @property
     def mujoco_unsettled(self) -> int:
-        """MuJoCo tosses cut at the settle limit (most rolling on their edge)."""
+        """MuJoCo tosses still moving at the settle limit (most rolling on their edge)."""
         return int(np.count_nonzero(self.mujoco_moving))
-
-    @property
-    def speed_ratio(self) -> float:
-        """coinflight's tosses a second over MuJoCo's (same tosses, same machine, one run)."""
-        return self.mujoco_seconds / self.ours_seconds
 
     def fractions(self, faces: NDArray[np.int8]) -> NDArray[np.float64]:
         """(tails, heads, edge) fractions of face codes."""
@@ -477,10 +478,13 @@ def mujoco_comparison(
     friction: float = DEFAULT_FRICTION,
     threads: int | None = None,
     contact: bool = True,
+    limit: float | None = None,
 ) -> MujocoComparison:
     """``n`` tosses of :func:`mujoco_tosses` on a table :data:`DROP_HEIGHT` below launch, in
     coinflight (:func:`coinflight.outcomes.table.land`) and in MuJoCo
-    (:func:`coinflight.studies.mujoco_compare.run`); ImportError without MuJoCo.
+    (:func:`coinflight.studies.mujoco_compare.run`, each toss carried until it settles or
+    ``limit`` s past its first contact, default
+    :data:`~coinflight.studies.mujoco_compare.SETTLE`); ImportError without MuJoCo.
 
     coinflight lands them twice: with its default ending (planar rocking) and, unless
     ``contact`` is False, with the 3-D contact ending (``Surface(ending="contact")``) whose
@@ -496,11 +500,14 @@ def mujoco_comparison(
     from coinflight.studies import mujoco_compare
 
     n = v.count("MuJoCo tosses", n, 1, 10**6)
+    limit = mujoco_compare.SETTLE if limit is None else limit
+    mujoco_compare.check_limit(limit)
+    mujoco_compare.bound([n], limit)
     root = streams.seed_sequence(seed)
     dist = mujoco_tosses()
     omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
     surface = Surface("table", DROP_HEIGHT, restitution, friction)
-    ours, ours_seconds, first = _timed_landing(dist, omega, v0, surface)
+    rocking, first, _ = _ending_run(dist, omega, v0, surface)
     contact_run = None
     if contact:
         resisted = Surface(
@@ -512,18 +519,9 @@ def mujoco_comparison(
             pivoting_resistance=mujoco_compare.TORSIONAL,
             ending="contact",
         )
-        out, seconds, _ = _timed_landing(dist, omega, v0, resisted)
-        contact_run = EndingRun(
-            "contact",
-            out.face,
-            _unsettled(out.status),
-            seconds,
-            resisted.rolling_resistance,
-            resisted.pivoting_resistance,
-            _at_impact(out.status),
-        )
+        contact_run, _, _ = _ending_run(dist, omega, v0, resisted)
     theirs = mujoco_compare.run(
-        dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads
+        dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads, limit=limit
     )
     return MujocoComparison(
         n,
@@ -531,16 +529,210 @@ def mujoco_comparison(
         restitution,
         friction,
         first,
-        ours.face,
-        _unsettled(ours.status),
-        ours_seconds,
-        theirs.first,
-        theirs.rest,
-        theirs.moving,
-        theirs.elapsed,
+        rocking,
+        theirs,
         theirs.settings(friction),
         contact_run,
-        _at_impact(ours.status),
+    )
+
+
+# --- edges in both engines -----------------------------------------------------------------------
+EDGE_SPIN = (-30.0, 30.0)
+"""Spin about the second diameter and about the normal of the edge check's vigorous tosses,
+rad/s, uniform (those of ``benchmarks/bench_contact.py``: the axial spin keeps coins rolling on
+their rim after the bounces)."""
+EDGE_PAIRS = ((0.5, 0.3),)
+"""(e, μ) of the edge check by default (MuJoCo's contact damping is calibrated per e)."""
+EDGE_RESISTANCE = 1e-4
+"""Rolling and pivoting resistance of the edge check, m: coinflight's defaults
+(:data:`coinflight.model.surface.DEFAULT_ROLLING_RESISTANCE`, ``DEFAULT_PIVOTING_RESISTANCE``),
+MuJoCo's rolling and torsional friction coefficients (mapped one to one,
+:mod:`coinflight.studies.mujoco_compare`)."""
+EDGE_INTEGRATOR = "RK4"
+"""MuJoCo's integrator of the edge check: with an axial spin the coin precesses in flight, and
+MuJoCo's default semi-implicit Euler drifts there (200 vigorous tosses, seed 7: the same well
+at the first contact as coinflight's exact flight for 68 % with Euler, 73 % with implicit or
+implicitfast, 98 % with RK4, at 3.5 times Euler's cost a step)."""
+
+
+def edge_tosses(coin: Coin | None = None) -> TossDistribution:
+    """The edge check's vigorous tosses (``benchmarks/bench_contact.py``'s): ωx ~ U(:data:`SPIN`),
+    ωy, ωz ~ U(:data:`EDGE_SPIN`), v0 ~ U(:data:`LAUNCH_SPEED`), heads up."""
+    return TossDistribution(
+        Uniform(*SPIN),
+        Uniform(*EDGE_SPIN),
+        Uniform(*EDGE_SPIN),
+        coin=coin if coin is not None else Coin.preset(COIN),
+        launch_speed=Uniform(*LAUNCH_SPEED),
+    )
+
+
+EDGE_TOSSES = {"vigorous": edge_tosses, "report": mujoco_tosses}
+"""The edge check's toss sets: ``"vigorous"`` (:func:`edge_tosses`, axial spin) and
+``"report"`` (:func:`mujoco_tosses`, the landing report's, no axial spin)."""
+
+
+@dataclass(frozen=True)
+class EdgeCell:
+    """One (e, μ) of :func:`edge_check`: the same tosses in both engines.
+
+    Attributes
+    ----------
+    restitution, friction : float
+    coinflight : EndingRun
+        coinflight's contact ending (sharp corners), faces at rest.
+    handed : ndarray of bool
+        coinflight's tosses handed to the contact phase (the rest ended at an impact, their
+        whole energy below the barrier of their well).
+    first : ndarray of int8
+        coinflight's wells at the first contact.
+    mujoco : MujocoRun
+        The same tosses in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`).
+    """
+
+    restitution: float
+    friction: float
+    coinflight: EndingRun
+    handed: NDArray[np.bool_]
+    first: NDArray[np.int8]
+    mujoco: Any  # mujoco_compare.MujocoRun
+
+    @property
+    def n(self) -> int:
+        return len(self.handed)
+
+    def fractions(
+        self, faces: NDArray[np.int8], among: NDArray[np.bool_] | None = None
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """(tails, heads, edge) fractions of ``faces`` (among the tosses ``among``, default
+        all) and their binomial standard errors."""
+        chosen = faces if among is None else faces[among]
+        k = max(len(chosen), 1)
+        p = np.bincount(chosen, minlength=3) / k
+        return p, np.sqrt(p * (1.0 - p) / k)
+
+    @property
+    def edges(self) -> tuple[int, int, int]:
+        """Tosses on edge at the end in both engines, in coinflight only, in MuJoCo only."""
+        ours, theirs = self.coinflight.rest == EDGE, self.mujoco.rest == EDGE
+        return (
+            int(np.count_nonzero(ours & theirs)),
+            int(np.count_nonzero(ours & ~theirs)),
+            int(np.count_nonzero(~ours & theirs)),
+        )
+
+    @property
+    def first_agreement(self) -> float:
+        """Fraction of tosses in the same well at the first contact in both engines."""
+        return float(np.mean(self.first == self.mujoco.first))
+
+    @property
+    def rest_agreement(self) -> float:
+        """Fraction of tosses with the same face at the end in both engines."""
+        return float(np.mean(self.coinflight.rest == self.mujoco.rest))
+
+
+@dataclass(frozen=True)
+class EdgeCheck:
+    """P(tails, heads, edge) at rest of the same tosses in coinflight's contact ending and in
+    MuJoCo, per (e, μ); see :func:`edge_check`."""
+
+    tosses: str
+    n: int
+    seed: int
+    rolling_resistance: float
+    pivoting_resistance: float
+    limit: float
+    integrator: str
+    cells: tuple[EdgeCell, ...]
+    seconds: float
+
+
+def edge_check(
+    n: int,
+    seed: streams.SeedLike,
+    pairs: tuple[tuple[float, float], ...] = EDGE_PAIRS,
+    *,
+    tosses: str = "vigorous",
+    limit: float | None = None,
+    resistance: float = EDGE_RESISTANCE,
+    integrator: str = EDGE_INTEGRATOR,
+    threads: int | None = None,
+) -> EdgeCheck:
+    """Are the contact ending's edges coinflight's, or does an independent engine give them too?
+
+    ``n`` tosses (:data:`EDGE_TOSSES` ``[tosses]``, from ``seed``), for each (e, μ) of
+    ``pairs``: in coinflight with the 3-D contact ending (``Surface(ending="contact")``, the
+    nickel's sharp corners, rolling and pivoting resistance ``resistance``) and in MuJoCo (a
+    sharp cylinder, condim 6, rolling and torsional friction ``resistance``, the contact
+    damping calibrated to e, ``integrator``, each toss carried until it settles or ``limit`` s
+    past its first contact, default :data:`~coinflight.studies.mujoco_compare.SETTLE`; the
+    tosses still moving then are counted, :attr:`MujocoRun.moving`). The work is bounded before
+    anything runs. ImportError without MuJoCo.
+    """
+    from coinflight.core.outcome import Status
+    from coinflight.studies import mujoco_compare
+
+    t0 = time.perf_counter()
+    n = v.count("edge-check tosses", n, 1, 10**6)
+    if tosses not in EDGE_TOSSES:
+        raise ValueError(f"tosses must be one of {', '.join(EDGE_TOSSES)}, got {tosses!r}")
+    pairs = tuple((float(e), float(mu)) for e, mu in pairs)
+    if not pairs:
+        raise ValueError("the edge check needs at least one (restitution, friction) pair")
+    for e, mu in pairs:
+        Surface("table", DROP_HEIGHT, e, mu)  # the surface's own checks of e and μ
+        if e <= 0.0:
+            raise ValueError(f"the edge check needs restitution > 0 (MuJoCo's contact), got {e}")
+    resistance = float(resistance)
+    if not (math.isfinite(resistance) and resistance >= 0.0):
+        raise ValueError(f"resistance must be a length ≥ 0 m, got {resistance!r}")
+    limit = mujoco_compare.SETTLE if limit is None else limit
+    mujoco_compare.check_limit(limit)
+    mujoco_compare.bound([n] * len(pairs), limit, integrator)
+    root = streams.seed_sequence(seed)
+    dist = EDGE_TOSSES[tosses]()
+    if dist.coin.corner_radius != 0.0:  # pragma: no cover - the preset is sharp
+        raise ValueError("the edge check compares sharp rims")
+    omega, v0 = _draw(dist, n, streams.child(root, _EDGES))
+    cells = []
+    for e, mu in pairs:
+        surface = Surface(
+            "table",
+            DROP_HEIGHT,
+            e,
+            mu,
+            rolling_resistance=resistance,
+            pivoting_resistance=resistance,
+            ending="contact",
+        )
+        ours, first, status = _ending_run(dist, omega, v0, surface)
+        handed = status != Status.SETTLED_ENERGY
+        theirs = mujoco_compare.run(
+            dist.coin,
+            omega,
+            v0,
+            DROP_HEIGHT,
+            e,
+            mu,
+            dist.g,
+            threads,
+            limit=limit,
+            torsional=resistance,
+            rolling=resistance,
+            integrator=integrator,
+        )
+        cells.append(EdgeCell(e, mu, ours, handed, first, theirs))
+    return EdgeCheck(
+        tosses,
+        n,
+        streams.reported_seed(root),
+        resistance,
+        resistance,
+        limit,
+        integrator,
+        tuple(cells),
+        time.perf_counter() - t0,
     )
 
 
@@ -556,14 +748,14 @@ def _at_impact(status: NDArray[np.int8]) -> int:
     return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
 
 
-def _timed_landing(
+def _ending_run(
     dist: TossDistribution,
     omega: NDArray[np.float64],
     v0: NDArray[np.float64],
     surface: Surface,
-) -> tuple[Any, float, NDArray[np.int8]]:
-    """(landing outcome, wall seconds of the landings, faces at first contact) of the tosses
-    on ``surface``; compiled on two tosses before the timing."""
+) -> tuple[EndingRun, NDArray[np.int8], NDArray[np.int8]]:
+    """(coinflight's run of the tosses on ``surface``, wells at the first contact, statuses);
+    the landings compiled on two tosses before the timing."""
     from coinflight.outcomes.table import land
 
     land(dist.coin, omega[:2], v0[:2], 1.0, dist.g, surface)  # compile before timing
@@ -571,24 +763,40 @@ def _timed_landing(
     out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
     seconds = time.perf_counter() - t0
     first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
-    return out, seconds, first
+    contact = surface.ending == "contact"
+    run = EndingRun(
+        surface.ending,
+        out.face,
+        _unsettled(out.status),
+        seconds,
+        surface.rolling_resistance if contact else 0.0,
+        surface.pivoting_resistance if contact else 0.0,
+        _at_impact(out.status),
+    )
+    return run, first, out.status
 
 
 __all__ = [
     "COIN",
     "DROP_HEIGHT",
+    "EDGE_PAIRS",
+    "EDGE_TOSSES",
     "MURRAY_TEARE",
     "RATIOS",
     "Band",
     "BouncingEdges",
     "ContactMaps",
     "DeadLanding",
+    "EdgeCell",
+    "EdgeCheck",
     "EndingRun",
     "MujocoComparison",
     "bouncing_box",
     "bouncing_edges",
     "contact_maps",
     "dead_landings",
+    "edge_check",
+    "edge_tosses",
     "map_tosses",
     "mujoco_comparison",
     "mujoco_tosses",

@@ -49,8 +49,27 @@ at a rate set by ``solref``, coinflight's a regularised Coulomb law (slip speed
 instantaneous, MuJoCo's are the same soft contact, and only the last phase of coinflight's
 landing has the resistances at all.
 
+Carried to rest. Each toss runs until its face can no longer change (:func:`_settled`: at rest
+now and :data:`REST_CHECK` s before, or in a face's well with less energy than the corner),
+checked at the end of every :data:`WINDOW`, or until :data:`SETTLE` s past its first contact;
+up to :data:`POOL` tosses share MuJoCo's threaded rollouts and a settled toss leaves the pool at
+once, so the cost is the steps each toss needs (a coin rolling on its rim for seconds costs
+seconds, a coin that lands flat a window). Tosses still moving at the limit are counted
+(:attr:`MujocoRun.moving`) and reported, never dropped. :attr:`MujocoRun.rest_time` and
+:attr:`MujocoRun.edge_time` say how long each toss took to settle and how long it stood on its
+rim. The work is bounded before anything runs (:func:`seconds_estimate`).
+
+Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
+tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
+contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
+a step). The landing report's comparison has no axial spin and keeps Euler; the edge check
+(:func:`coinflight.studies.landing.edge_check`), whose tosses precess, runs RK4. Started from
+coinflight's hand-off states, where there is no flight to drift in, Euler and RK4 give the same
+faces at rest (104 tosses: no edge in either).
+
 The benchmark ``benchmarks/bench_bounce.py`` and the landing report
-(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`.
+(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`;
+``benchmarks/bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
 """
 
 from __future__ import annotations
@@ -88,27 +107,43 @@ CONE = "pyramidal"
 INTEGRATOR = "Euler"
 """MuJoCo's default integrator (semi-implicit Euler); RK4 costs four times as much per step."""
 WINDOW = 0.1
-"""After the first contact, the tosses are advanced in windows of this many seconds, and those
-whose face can no longer change are set aside (:func:`_settled`)."""
-SETTLE = 2.0
-"""Longest simulated time after the first contact, s; tosses still moving then are counted
-by the face they show and reported as unsettled. Long enough for the faces: on the landing
-report's 500 tosses (seed 20261123, e = 0.5, μ = 0.3, condim 6), 10 s gave the same face for
-every toss as 2 s; 31 of the 64 coins on edge were still moving at 10 s, the other 33 at rest
-on their edge."""
+"""The tosses are advanced in windows of this many seconds; at the end of each, those whose face
+can no longer change leave the run (:func:`_settled`), so each toss costs the steps it needs."""
+SETTLE = 20.0
+"""Longest simulated time after the first contact, s; tosses still moving then are counted by
+the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. At 2 s
+(the previous limit) 1,296 of the landing report's 10⁴ tosses were still moving, most rolling
+on their edge; coins rolling on the sharp rim roll for seconds (the limit's effect is measured
+by :func:`coinflight.studies.landing.edge_check` and ``benchmarks/bench_mujoco_edges.py``)."""
 REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
-"""... and turns slower than this (rad/s) is at rest."""
+"""... and turns slower than this (rad/s) is at rest ..."""
+REST_CHECK = 0.01
+"""... at the end of a window and this many seconds before it (a coin at the turning point of a
+rock is not at rest: falling from its edge, it turns faster than :data:`REST_SPIN` within
+10 ms)."""
 PROBE_SPEEDS = (0.1, 0.3, 1.0)
 """Impact speeds, m/s, at which the calibrated contact's flat-drop restitution is also reported
 (MuJoCo's soft contact restitutes differently at different speeds; coinflight's impacts
 restitute with e at every speed)."""
-CHUNK = 64
-"""Tosses per MuJoCo rollout call."""
-TOSSES_PER_SECOND = 4.0
-"""MuJoCo tosses a second on the busy 2-core machine (measured: 64 tosses in 14.7 s; for the
-work bound)."""
+POOL = 128
+"""Tosses rolled out together (MuJoCo's threads share them); a toss that settles leaves the pool
+and the next one takes its place."""
+STEPS_PER_SECOND = 2.0e5
+"""MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
+214,000 (64 of the landing report's tosses, load 0.7); RK4 35,600 and 39,000 at load 4-6 (the
+edge check's 2 × 1,500 tosses, 2026-11-23), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
+MEAN_CONTACT = 1.0
+"""Mean simulated time after the first contact of a toss that settles, s (for the work bound;
+measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
+both with the tosses still rolling at 20 s, 0.1-0.7 % of them)."""
+MOVING_SHARE = 0.1
+"""Share of the limit added to :data:`MEAN_CONTACT` for the tosses that roll long (for the work
+bound): 3 s expected after the first contact at the 20 s limit (measured 1.4-2.7 s)."""
+FLIGHT = 0.7
+"""Longest flight of the compared tosses, launch to first contact, s (v0 ≤ 3 m/s, 0.8 m drop;
+for the work bound)."""
 
 
 def available() -> bool:
@@ -121,9 +156,16 @@ def available() -> bool:
 
 
 def _xml(
-    coin: Coin, friction: float, dampratio: float, g: float, integrator: str, condim: int
+    coin: Coin,
+    friction: float,
+    dampratio: float,
+    g: float,
+    integrator: str,
+    condim: int,
+    torsional: float,
+    rolling: float,
 ) -> str:
-    friction_text = f"{friction} {TORSIONAL} {ROLLING}"
+    friction_text = f"{friction} {torsional} {rolling}"
     solref = f"{TIMECONST} {dampratio}"
     contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}"'
     return f"""
@@ -148,14 +190,18 @@ def model(
     g: float = 9.81,
     integrator: str = INTEGRATOR,
     condim: int = CONDIM,
+    torsional: float = TORSIONAL,
+    rolling: float = ROLLING,
 ) -> Any:
     """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes);
-    ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions)."""
+    ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions); ``torsional`` and ``rolling`` the
+    friction coefficients (m) of both geoms (MuJoCo takes the larger of the two geoms')."""
     import mujoco
 
     if condim not in (1, 3, 4, 6):
         raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {condim!r}")
-    return mujoco.MjModel.from_xml_string(_xml(coin, friction, dampratio, g, integrator, condim))
+    xml = _xml(coin, friction, dampratio, g, integrator, condim, torsional, rolling)
+    return mujoco.MjModel.from_xml_string(xml)
 
 
 def flat_drop_restitution(
@@ -182,14 +228,19 @@ def flat_drop_restitution(
 
 
 def calibrated_damping(
-    coin: Coin, restitution: float, speed: float, g: float = 9.81, condim: int = CONDIM
+    coin: Coin,
+    restitution: float,
+    speed: float,
+    g: float = 9.81,
+    condim: int = CONDIM,
+    integrator: str = INTEGRATOR,
 ) -> float:
     """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`) at
     ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach it."""
     from scipy.optimize import brentq
 
     def excess(z: float) -> float:
-        return flat_drop_restitution(coin, speed, z, g, condim=condim) - restitution
+        return flat_drop_restitution(coin, speed, z, g, integrator, condim) - restitution
 
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
@@ -208,10 +259,16 @@ class MujocoRun:
     Attributes
     ----------
     first, rest : ndarray of int8
-        Face codes (TAILS 0, HEADS 1, EDGE 2) at the first contact and at rest.
+        Face codes (TAILS 0, HEADS 1, EDGE 2) at the first contact and at the end: at rest (or
+        trapped in a face's well, :func:`_settled`), or, for the ``moving`` tosses, the well
+        they were in at the limit.
     moving : ndarray of bool
-        Tosses whose face could still change after :data:`SETTLE` s (most of them rolling on
-        their edge; counted by the face they show then).
+        Tosses still able to change face ``limit`` s after their first contact (most of them
+        rolling on their edge); never dropped: counted, and reported beside the settled ones.
+    rest_time : ndarray
+        Simulated time from the first contact to the end of each toss, s: to the end of the
+        :data:`WINDOW` in which it was found settled (so to within a window), or ``limit`` for
+        the moving ones.
     dampratio, restitution : float
         The calibrated damping ratio and the flat-drop restitution it gives.
     elapsed : float
@@ -224,6 +281,17 @@ class MujocoRun:
     restitution_by_speed : dict
         Flat-drop restitution of the calibrated contact at :data:`PROBE_SPEEDS` and at the
         landing speed ({speed m/s: e}).
+    limit : float
+        Longest simulated time after the first contact, s.
+    torsional, rolling : float
+        MuJoCo's torsional and rolling friction coefficients, m.
+    steps : int
+        MuJoCo steps taken in all (the cost: each toss stops at the window in which it settled).
+    integrator : str
+        MuJoCo's integrator (:data:`INTEGRATOR` unless asked otherwise).
+    edge_time : ndarray
+        Simulated time after the first contact spent in the edge band (the heads normal within
+        arctan(h/d) of the horizontal: upright on the rim, rolling or standing), s.
     """
 
     first: NDArray[np.int8]
@@ -236,49 +304,303 @@ class MujocoRun:
     version: str
     condim: int = CONDIM
     restitution_by_speed: dict[float, float] = field(default_factory=dict)
+    rest_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
+    limit: float = SETTLE
+    torsional: float = TORSIONAL
+    rolling: float = ROLLING
+    steps: int = 0
+    integrator: str = INTEGRATOR
+    edge_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
+
+    @property
+    def unsettled(self) -> int:
+        """Tosses still moving at the limit."""
+        return int(np.count_nonzero(self.moving))
 
     def settings(self, friction: float) -> dict[str, Any]:
         """Every setting of the run, for reports (JSON-ready)."""
         return {
             "mujoco": self.version,
-            "integrator": INTEGRATOR,
+            "integrator": self.integrator,
             "timestep": TIMESTEP,
             "solref": [TIMECONST, self.dampratio],
             "flat_drop_restitution": self.restitution,
-            "friction": [friction, TORSIONAL, ROLLING],
+            "friction": [friction, self.torsional, self.rolling],
             "condim": self.condim,
             "flat_drop_restitution_by_speed": [
                 [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
             ],
             "cone": CONE,
-            "settle_limit": SETTLE,
+            "settle_limit": self.limit,
+            "settle_window": WINDOW,
             "rest_speed": REST_SPEED,
             "rest_spin": REST_SPIN,
             "threads": self.threads,
+            "steps": self.steps,
         }
 
 
-def _settled(
-    states: NDArray[np.float64], coin: Coin, g: float, edge_sine: float
-) -> NDArray[np.bool_]:
-    """Tosses whose face can no longer change: at rest (:data:`REST_SPEED`, :data:`REST_SPIN`),
-    or in a face's well with less total energy than the coin balanced on its corner, m g ρ
-    (energy never grows: it can no longer reach the corner; Vulović & Prange 1986)."""
+def _energy(states: NDArray[np.float64], coin: Coin, g: float) -> NDArray[np.float64]:
+    """Mechanical energy (kinetic + m g z) of MuJoCo states (mjSTATE_FULLPHYSICS rows), J."""
     i1, i3 = coin.moments
-    v_lin = states[:, 8:11]
-    w_body = states[:, 11:14]  # a free joint's angular velocity is in the body frame
-    speed = np.linalg.norm(v_lin, axis=1)
-    spin = np.linalg.norm(w_body, axis=1)
-    energy = (
-        0.5 * coin.mass * speed**2
-        + 0.5 * (i1 * (w_body[:, 0] ** 2 + w_body[:, 1] ** 2) + i3 * w_body[:, 2] ** 2)
-        + coin.mass * g * states[:, 3]
+    v_lin = states[..., 8:11]
+    w_body = states[..., 11:14]  # a free joint's angular velocity is in the body frame
+    return (
+        0.5 * coin.mass * np.sum(v_lin**2, axis=-1)
+        + 0.5 * (i1 * (w_body[..., 0] ** 2 + w_body[..., 1] ** 2) + i3 * w_body[..., 2] ** 2)
+        + coin.mass * g * states[..., 3]
     )
-    q = states[:, 4:8]
-    nz = 1.0 - 2.0 * (q[:, 1] ** 2 + q[:, 2] ** 2)
+
+
+def _at_rest(states: NDArray[np.float64]) -> NDArray[np.bool_]:
+    speed = np.linalg.norm(states[..., 8:11], axis=-1)
+    spin = np.linalg.norm(states[..., 11:14], axis=-1)
+    return (speed < REST_SPEED) & (spin < REST_SPIN)
+
+
+def _normal_z(states: NDArray[np.float64]) -> NDArray[np.float64]:
+    """n_z of the heads normal: R(q)[2, 2] of the free joint's quaternion (scalar first)."""
+    return 1.0 - 2.0 * (states[..., 5] ** 2 + states[..., 6] ** 2)
+
+
+def _settled(
+    states: NDArray[np.float64],
+    coin: Coin,
+    g: float,
+    edge_sine: float,
+    before: NDArray[np.float64] | None = None,
+) -> NDArray[np.bool_]:
+    """Tosses whose face can no longer change: at rest (:data:`REST_SPEED`, :data:`REST_SPIN`;
+    with ``before``, the states :data:`REST_CHECK` s earlier, at rest then too, so that a coin
+    at the turning point of a rock is not taken for one at rest), or in a face's well with less
+    total energy than the coin balanced on its corner, m g ρ (energy never grows: it can no
+    longer reach the corner; Vulović & Prange 1986)."""
     reach = math.hypot(coin.radius, coin.thickness / 2)
-    trapped = (energy < coin.mass * g * reach) & (np.abs(nz) > edge_sine)
-    return trapped | ((speed < REST_SPEED) & (spin < REST_SPIN))
+    energy = _energy(states, coin, g)
+    trapped = (energy < coin.mass * g * reach) & (np.abs(_normal_z(states)) > edge_sine)
+    rest = _at_rest(states)
+    if before is not None:
+        rest &= _at_rest(before)
+    return trapped | rest
+
+
+def _contact_gap(states: NDArray[np.float64], coin: Coin) -> NDArray[np.float64]:
+    """Height of the sharp cylinder's lowest point above the plane, m."""
+    nz = _normal_z(states)
+    r, hh = coin.radius, coin.thickness / 2
+    return states[..., 3] - r * np.sqrt(np.clip(1.0 - nz * nz, 0.0, 1.0)) - hh * np.abs(nz)
+
+
+INTEGRATOR_COST = {"Euler": 1.0, "implicitfast": 1.2, "implicit": 1.5, "RK4": 4.0}
+"""Cost of a step with each of MuJoCo's integrators over Euler's (for the work bound; RK4
+evaluates the dynamics four times; measured 3.5, 1.5 and 1.1 on 200 tosses)."""
+
+
+def check_limit(limit: float) -> None:
+    """ValueError unless ``limit`` (the settle limit, s) is a positive finite number."""
+    if not (isinstance(limit, (int, float)) and math.isfinite(limit) and limit > 0.0):
+        raise ValueError(f"the MuJoCo settle limit must be a positive number of s, got {limit!r}")
+
+
+def seconds_estimate(
+    n: int, limit: float, integrator: str = INTEGRATOR, flight: float = FLIGHT
+) -> float:
+    """Expected wall seconds of ``n`` MuJoCo tosses carried up to ``limit`` s past their first
+    contact: ``n`` (``flight`` + the expected simulated time after the first contact,
+    min(``limit``, :data:`MEAN_CONTACT` + :data:`MOVING_SHARE` ``limit``)) in steps of
+    :data:`TIMESTEP` at :data:`STEPS_PER_SECOND` / :data:`INTEGRATOR_COST`. An estimate, not a
+    worst case (every toss rolling to the limit would cost ``limit`` / (:data:`MEAN_CONTACT` +
+    :data:`MOVING_SHARE` ``limit``) times more)."""
+    simulated = flight + min(limit, MEAN_CONTACT + MOVING_SHARE * limit)
+    rate = STEPS_PER_SECOND / INTEGRATOR_COST.get(integrator, 4.0)
+    return n * simulated / TIMESTEP / rate
+
+
+def bound(runs: list[int], limit: float, integrator: str = INTEGRATOR) -> None:
+    """The work bound of MuJoCo runs of ``runs`` tosses each (:func:`seconds_estimate`), before
+    anything is allocated or computed."""
+    seconds = sum(seconds_estimate(n, limit, integrator) for n in runs)
+    v.work_bound(
+        f"{sum(runs)} MuJoCo tosses carried up to {limit:g} s past their first contact",
+        seconds,
+        v.MAX_RUN_SECONDS,
+        "s",
+        "use fewer tosses or a shorter settle limit",
+    )
+
+
+def _launch_states(
+    m: Any, data: Any, omega: NDArray[np.float64], v0: NDArray[np.float64], drop_height: float
+) -> NDArray[np.float64]:
+    """MuJoCo states (mjSTATE_FULLPHYSICS) of the tosses at launch: heads up, ``drop_height``
+    above the plane, ω in the body frame."""
+    import mujoco
+
+    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
+    states = np.empty((len(v0), mujoco.mj_stateSize(m, spec)))
+    for k in range(len(v0)):
+        mujoco.mj_resetData(m, data)
+        data.qpos[:3] = (0.0, 0.0, drop_height)
+        data.qpos[3:7] = (1.0, 0.0, 0.0, 0.0)  # heads up (scalar first)
+        data.qvel[:3] = (0.0, 0.0, v0[k])
+        data.qvel[3:6] = omega[k]  # free joint: angular velocity in the body frame
+        mujoco.mj_getState(m, data, states[k], spec)
+    return states
+
+
+@dataclass
+class _Carried:
+    first: NDArray[np.int8]
+    rest: NDArray[np.int8]
+    moving: NDArray[np.bool_]
+    rest_time: NDArray[np.float64]
+    edge_time: NDArray[np.float64]
+    steps: int
+
+
+def _carry(
+    m: Any,
+    datas: list[Any],
+    initial: NDArray[np.float64],
+    apex: NDArray[np.float64],
+    coin: Coin,
+    g: float,
+    limit: float,
+    flight_limit: float,
+    pool: int = POOL,
+) -> _Carried:
+    """Each toss from ``initial`` until it has settled (:func:`_settled`, checked at the end of
+    every :data:`WINDOW`) or ``limit`` s after its first contact (the first step after
+    ``apex`` s at which the sharp cylinder touches the plane; a toss not down by
+    ``flight_limit`` s counts as moving). Up to ``pool`` tosses are rolled out together in
+    MuJoCo's threads; a settled toss leaves the pool at once and the next one takes its place,
+    so the cost is the steps each toss needs."""
+    from mujoco import rollout
+
+    from coinflight.core.impact import resting_face
+
+    n = len(initial)
+    dt = float(m.opt.timestep)
+    r, hh = coin.radius, coin.thickness / 2
+    edge_sine = hh / math.hypot(r, hh)
+    window = round(WINDOW / dt)
+    check = round(REST_CHECK / dt)
+    first = np.full(n, -1, dtype=np.int8)
+    rest = np.full(n, -1, dtype=np.int8)
+    moving = np.zeros(n, dtype=bool)
+    rest_time = np.full(n, np.nan)
+    edge_time = np.zeros(n)
+    steps = 0
+    queue = 0
+    active = np.empty(0, dtype=np.int64)
+    states = np.empty((0, initial.shape[1]))
+    clock = np.empty(0)  # simulated time since the start of each active toss
+    touched = np.empty(0)  # its first contact (nan before)
+    while queue < n or len(active):
+        if len(active) < pool and queue < n:
+            new = np.arange(queue, min(n, queue + pool - len(active)))
+            queue = int(new[-1]) + 1
+            active = np.concatenate([active, new])
+            states = np.concatenate([states, initial[new]])
+            clock = np.concatenate([clock, np.zeros(len(new))])
+            touched = np.concatenate([touched, np.full(len(new), np.nan)])
+        traj, _ = rollout.rollout(m, datas, states, nstep=window)
+        steps += len(active) * window
+        times = clock[:, None] + dt * np.arange(1, window + 1)
+        falling = np.flatnonzero(np.isnan(touched))
+        if len(falling):
+            sub = traj[falling]
+            hit = (_contact_gap(sub, coin) <= 0.0) & (times[falling] > apex[active[falling], None])
+            down = hit.any(axis=1)
+            j = np.argmax(hit, axis=1)
+            for f in np.flatnonzero(down):
+                k = falling[f]
+                touched[k] = times[k, j[f]]
+                first[active[k]] = resting_face(float(_normal_z(sub[f, j[f]])), edge_sine)
+        upright = (np.abs(_normal_z(traj)) < edge_sine) & (times > touched[:, None])
+        edge_time[active] += dt * np.count_nonzero(upright, axis=1)
+        states = np.ascontiguousarray(traj[:, -1, :])
+        clock = clock + window * dt
+        after = clock - touched  # nan before the first contact
+        done = np.zeros(len(active), dtype=bool)
+        landed = ~np.isnan(touched)
+        settled = landed & _settled(states, coin, g, edge_sine, traj[:, -1 - check, :])
+        late = landed & ~settled & (after >= limit - 0.5 * dt)
+        lost = ~landed & (clock >= flight_limit)
+        done = settled | late | lost
+        for k in np.flatnonzero(done):
+            toss = active[k]
+            rest[toss] = resting_face(float(_normal_z(states[k])), edge_sine)
+            moving[toss] = not settled[k]
+            rest_time[toss] = after[k] if landed[k] else np.nan
+            if not landed[k]:
+                first[toss] = rest[toss]
+        keep = ~done
+        active, states, clock, touched = active[keep], states[keep], clock[keep], touched[keep]
+    return _Carried(first, rest, moving, rest_time, edge_time, steps)
+
+
+def _calibrated(
+    coin: Coin,
+    restitution: float,
+    friction: float,
+    speed: float,
+    g: float,
+    condim: int,
+    torsional: float,
+    rolling: float,
+    integrator: str,
+) -> tuple[Any, float, float, dict[float, float]]:
+    """(model, damping ratio, flat-drop restitution at ``speed``, restitution by speed): the
+    contact's damping calibrated so that a flat drop at ``speed`` rebounds at e."""
+    zeta = (
+        calibrated_damping(coin, restitution, speed, g, condim, integrator)
+        if restitution > 0
+        else 1.0
+    )
+    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim)
+    by_speed = {
+        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim)
+        for probe in PROBE_SPEEDS
+    }
+    by_speed[speed] = e_mujoco
+    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling)
+    return m, zeta, e_mujoco, by_speed
+
+
+def _finish(
+    carried: _Carried,
+    t0: float,
+    workers: int,
+    calibration: tuple[Any, float, float, dict[float, float]],
+    condim: int,
+    limit: float,
+    torsional: float,
+    rolling: float,
+    integrator: str,
+) -> MujocoRun:
+    import mujoco
+
+    _, zeta, e_mujoco, by_speed = calibration
+    return MujocoRun(
+        carried.first,
+        carried.rest,
+        carried.moving,
+        zeta,
+        e_mujoco,
+        time.perf_counter() - t0,
+        workers,
+        mujoco.__version__,
+        condim,
+        by_speed,
+        carried.rest_time,
+        limit,
+        torsional,
+        rolling,
+        carried.steps,
+        integrator,
+        carried.edge_time,
+    )
 
 
 def run(
@@ -291,95 +613,106 @@ def run(
     g: float = 9.81,
     threads: int | None = None,
     condim: int = CONDIM,
+    *,
+    limit: float = SETTLE,
+    torsional: float = TORSIONAL,
+    rolling: float = ROLLING,
+    integrator: str = INTEGRATOR,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
     above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings.
 
-    ImportError when MuJoCo is not installed.
+    Each toss is carried until it has settled (:func:`_settled`) or ``limit`` s past its first
+    contact, whichever comes first; those still moving at the limit are counted
+    (:attr:`MujocoRun.moving`), never dropped. The work (:func:`seconds_estimate`) is bounded
+    before anything is computed. ImportError when MuJoCo is not installed.
     """
     import mujoco
-    from mujoco import rollout
-
-    from coinflight.core.impact import resting_face
 
     t0 = time.perf_counter()
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
     n = len(v0)
-    v.work_bound(
-        f"{n} MuJoCo tosses",
-        n,
-        TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
-        "tosses",
-        "use fewer tosses",
-        TOSSES_PER_SECOND,
-    )
+    check_limit(limit)
+    vmax = float(v0.max()) if n else 0.0
+    flight = vmax / g + math.sqrt(2.0 * (drop_height + vmax * vmax / (2.0 * g)) / g)
+    bound([n], limit, integrator)
     landing_speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * g * drop_height)
-    zeta = (
-        calibrated_damping(coin, restitution, landing_speed, g, condim) if restitution > 0 else 1.0
+    calibration = _calibrated(
+        coin, restitution, friction, landing_speed, g, condim, torsional, rolling, integrator
     )
-    e_mujoco = flat_drop_restitution(coin, landing_speed, zeta, g, condim=condim)
-    by_speed = {
-        speed: flat_drop_restitution(coin, speed, zeta, g, condim=condim) for speed in PROBE_SPEEDS
-    }
-    by_speed[landing_speed] = e_mujoco
-    m = model(coin, friction, zeta, g, condim=condim)
+    m = calibration[0]
+    workers = threads or os.cpu_count() or 1
+    datas = [mujoco.MjData(m) for _ in range(workers)]
+    initial = _launch_states(m, datas[0], omega, v0, drop_height)
+    carried = _carry(m, datas, initial, v0 / g, coin, g, limit, flight + 0.5)
+    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
+
+
+def _quaternion_to(n: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Unit quaternions (scalar first) of the shortest rotations taking the body z axis onto the
+    unit vectors ``n`` (k, 3); about x for n = −z."""
+    w = 1.0 + n[:, 2]
+    q = np.column_stack([w, -n[:, 1], n[:, 0], np.zeros(len(n))])  # (1 + z·n, z × n)
+    flip = w < 1e-12
+    q[flip] = (0.0, 1.0, 0.0, 0.0)
+    return q / np.linalg.norm(q, axis=1, keepdims=True)
+
+
+def run_from(
+    coin: Coin,
+    height: NDArray[np.float64],
+    velocity: NDArray[np.float64],
+    normal: NDArray[np.float64],
+    omega: NDArray[np.float64],
+    restitution: float,
+    friction: float,
+    calibration_speed: float,
+    g: float = 9.81,
+    threads: int | None = None,
+    condim: int = CONDIM,
+    *,
+    limit: float = SETTLE,
+    torsional: float = TORSIONAL,
+    rolling: float = ROLLING,
+    integrator: str = INTEGRATOR,
+) -> MujocoRun:
+    """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
+    heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
+    (coinflight's state at its hand-off to the contact phase, for example), carried as in
+    :func:`run` (the first contact is their first touch of the plane; the contact damping
+    calibrated at ``calibration_speed``, m/s)."""
+    import mujoco
+
+    t0 = time.perf_counter()
+    z = np.asarray(height, dtype=float).reshape(-1)
+    vel = np.asarray(velocity, dtype=float).reshape(-1, 3)
+    nrm = np.asarray(normal, dtype=float).reshape(-1, 3)
+    nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
+    w_lab = np.asarray(omega, dtype=float).reshape(-1, 3)
+    check_limit(limit)
+    bound([len(z)], limit, integrator)
+    calibration = _calibrated(
+        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator
+    )
+    m = calibration[0]
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
-    size = mujoco.mj_stateSize(m, spec)
-    r, hh = coin.radius, coin.thickness / 2
-    edge_sine = hh / math.hypot(r, hh)
-    dt = m.opt.timestep
-    first = np.empty(n, dtype=np.int8)
-    rest = np.empty(n, dtype=np.int8)
-    still = np.zeros(n, dtype=bool)
+    initial = np.empty((len(z), mujoco.mj_stateSize(m, spec)))
+    quats = _quaternion_to(nrm)
     data = datas[0]
-    for a in range(0, n, CHUNK):
-        idx = np.arange(a, min(a + CHUNK, n))
-        states = np.empty((len(idx), size))
-        for j, k in enumerate(idx):
-            mujoco.mj_resetData(m, data)
-            data.qpos[:3] = (0.0, 0.0, drop_height)
-            data.qpos[3:7] = (1.0, 0.0, 0.0, 0.0)  # heads up (scalar first)
-            data.qvel[:3] = (0.0, 0.0, v0[k])
-            data.qvel[3:6] = omega[k]  # free joint: angular velocity in the body frame
-            mujoco.mj_getState(m, data, states[j], spec)
-        # The fall: from launch to a little after the latest first contact.
-        vmax = float(v0[idx].max())
-        fall = vmax / g + math.sqrt(2.0 * (drop_height + vmax * vmax / (2.0 * g)) / g) + 0.05
-        traj, _ = rollout.rollout(m, datas, states, nstep=int(fall / dt))
-        nz = 1.0 - 2.0 * (traj[:, :, 5] ** 2 + traj[:, :, 6] ** 2)  # R(q)[2, 2]
-        gap = traj[:, :, 3] - r * np.sqrt(np.clip(1.0 - nz * nz, 0.0, 1.0)) - hh * np.abs(nz)
-        for j, k in enumerate(idx):
-            apex = int(v0[k] / g / dt)
-            hit = apex + int(np.argmax(gap[j, apex:] <= 0.0))
-            first[k] = resting_face(float(nz[j, hit]), edge_sine)
-        states = np.ascontiguousarray(traj[:, -1, :])
-        moving = np.arange(len(idx))
-        for _ in range(math.ceil(SETTLE / WINDOW)):
-            traj, _ = rollout.rollout(m, datas, states[moving], nstep=int(WINDOW / dt))
-            states[moving] = traj[:, -1, :]
-            moving = moving[~_settled(states[moving], coin, g, edge_sine)]
-            if not len(moving):
-                break
-        still[idx[moving]] = True
-        q = states[:, 4:8]
-        nz_end = 1.0 - 2.0 * (q[:, 1] ** 2 + q[:, 2] ** 2)
-        for j, k in enumerate(idx):
-            rest[k] = resting_face(float(nz_end[j]), edge_sine)
-    return MujocoRun(
-        first,
-        rest,
-        still,
-        zeta,
-        e_mujoco,
-        time.perf_counter() - t0,
-        workers,
-        mujoco.__version__,
-        condim,
-        by_speed,
-    )
+    rot = np.empty(9)
+    for k in range(len(z)):
+        mujoco.mj_resetData(m, data)
+        data.qpos[:3] = (0.0, 0.0, z[k])
+        data.qpos[3:7] = quats[k]
+        mujoco.mju_quat2Mat(rot, quats[k])
+        data.qvel[:3] = vel[k]
+        data.qvel[3:6] = rot.reshape(3, 3).T @ w_lab[k]  # body frame
+        mujoco.mj_getState(m, data, initial[k], spec)
+    carried = _carry(m, datas, initial, np.zeros(len(z)), coin, g, limit, 1.0)
+    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
 
 
 __all__ = [
@@ -387,13 +720,18 @@ __all__ = [
     "CONE",
     "INTEGRATOR",
     "ROLLING",
+    "SETTLE",
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",
     "MujocoRun",
     "available",
+    "bound",
     "calibrated_damping",
+    "check_limit",
     "flat_drop_restitution",
     "model",
     "run",
+    "run_from",
+    "seconds_estimate",
 ]

@@ -1,0 +1,328 @@
+"""Edges in two engines: coinflight's 3-D contact ending against MuJoCo, the same tosses.
+
+    python benchmarks/bench_mujoco_edges.py [N] [--pairs 0.5,0.3 0.5,0.6] [--seed S]
+        [--tosses vigorous|report] [--limit 20] [--integrator RK4] [--threads T]
+
+N tosses (default 200) of :func:`coinflight.studies.landing.edge_check`: by default the
+vigorous tosses of ``bench_contact.py`` (ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~
+U(1.5, 3) m/s, a US nickel 0.8 m above the table), for each (e, μ) in coinflight with the 3-D
+contact ending (sharp corners, rolling and pivoting resistance 1e-4 m) and in MuJoCo (a sharp
+cylinder, condim 6, rolling and torsional friction 1e-4 m, damping calibrated to e, RK4, each
+toss carried until it settles or ``--limit`` s past its first contact). Prints, per (e, μ),
+P(tails, heads, edge) at rest with standard errors (all tosses; among the tosses coinflight
+hands to its contact phase; MuJoCo's settled ones only), the tosses still moving in MuJoCo at
+the limit, which tosses end on edge in each engine, and how long the edge-enders take to come
+to rest in each (simulated seconds after the first contact: MuJoCo to within its 0.1 s window;
+coinflight's bounces plus its contact phase, from ``bench_contact.handoff``), and how long
+they stood on their rim.
+
+``--from-handoff`` also starts MuJoCo from coinflight's own state at the hand-off to its
+contact phase (:func:`coinflight.studies.mujoco_compare.run_from`; the impacts left out, the
+contact phases compared alone); ``--handoff-only`` does only that (no MuJoCo flights), with
+``--handoff-integrator`` (default ``--integrator``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+
+import numpy as np
+
+from coinflight.core import contact_phase as cp
+from coinflight.core.outcome import EDGE
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import land
+from coinflight.probability import streams
+from coinflight.studies import landing as study
+from coinflight.studies import mujoco_compare
+
+NAMES = ("tails", "heads", "edge")
+
+
+def pm(p: np.ndarray, se: np.ndarray) -> str:
+    return ", ".join(f"{x:.4f} ± {e:.4f}" for x, e in zip(p, se, strict=True))
+
+
+def spread(t: np.ndarray) -> str:
+    t = t[np.isfinite(t)]
+    if not len(t):
+        return "none"
+    q1, q2, q3 = np.percentile(t, (25, 50, 75))
+    return f"median {q2:.2f} s (quartiles {q1:.2f}-{q3:.2f}, max {t.max():.2f}; {len(t)} tosses)"
+
+
+def coinflight_times(
+    check: study.EdgeCheck, cell: study.EdgeCell, omega: np.ndarray, v0: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Simulated seconds from the first contact to the end of coinflight's contact ending
+    (the bounces, last impact − first contact, plus the contact phase, run again from the
+    hand-off, :func:`bench_contact.handoff`, to its end), and of those in the contact phase
+    on both rims (upright in the edge band, :data:`coinflight.core.contact_phase.MODES`)."""
+    import bench_contact
+
+    assert check.rolling_resistance == bench_contact.DEFAULT_ROLLING_RESISTANCE
+    assert check.pivoting_resistance == bench_contact.DEFAULT_PIVOTING_RESISTANCE
+    dist = study.EDGE_TOSSES[check.tosses]()
+    surface = Surface(
+        "table",
+        study.DROP_HEIGHT,
+        cell.restitution,
+        cell.friction,
+        rolling_resistance=check.rolling_resistance,
+        pivoting_resistance=check.pivoting_resistance,
+        ending="contact",
+    )
+    out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
+    times = np.asarray(out.settle_time - out.first_contact, dtype=float)
+    upright = np.zeros(len(times))
+    c = bench_contact.contact(cell.restitution, cell.friction)
+    two_rims = cp.MODES.index("two rims")
+    for k in np.flatnonzero(cell.handed):
+        y, handed = bench_contact.handoff(tuple(omega[k]), 1.0, v0[k], c)
+        if handed:
+            stats = np.zeros((len(cp.MODES), 2))
+            elapsed, _, _ = cp.advance(y, math.inf, c, settle_check=True, stats=stats)
+            times[k] += elapsed
+            upright[k] = stats[two_rims, 0]
+    return times, upright
+
+
+def from_handoff(
+    e: float,
+    mu: float,
+    handed_by_land: np.ndarray,
+    omega: np.ndarray,
+    v0: np.ndarray,
+    args: argparse.Namespace,
+) -> tuple[np.ndarray, mujoco_compare.MujocoRun]:
+    """coinflight's handed tosses started in MuJoCo from coinflight's own hand-off state
+    (:func:`bench_contact.handoff`; the contact phase alone, the impacts left out): (indices of
+    the tosses, MuJoCo's run)."""
+    import bench_contact
+    from coinflight.core.impact import angular_velocity
+
+    c = bench_contact.contact(e, mu)
+    idx, states = [], []
+    for k in np.flatnonzero(handed_by_land):
+        y, handed = bench_contact.handoff(tuple(omega[k]), 1.0, v0[k], c)
+        if handed:
+            idx.append(k)
+            states.append(y.copy())
+    y = np.array(states).reshape(-1, 10)
+    w = np.array([angular_velocity(tuple(s[7:10]), tuple(s[4:7]), c.i1, c.i3) for s in y])
+    speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * 9.81 * study.DROP_HEIGHT)
+    run = mujoco_compare.run_from(
+        study.EDGE_TOSSES[args.tosses]().coin,
+        y[:, 0],
+        y[:, 1:4],
+        y[:, 4:7],
+        w.reshape(-1, 3),
+        e,
+        mu,
+        speed,
+        threads=args.threads,
+        limit=args.limit,
+        torsional=study.EDGE_RESISTANCE,
+        rolling=study.EDGE_RESISTANCE,
+        integrator=args.handoff_integrator or args.integrator,
+    )
+    return np.array(idx, dtype=int), run
+
+
+def handoff_report(
+    e: float,
+    mu: float,
+    handed: np.ndarray,
+    ours_all: np.ndarray,
+    omega: np.ndarray,
+    v0: np.ndarray,
+    args: argparse.Namespace,
+) -> dict[str, np.ndarray]:
+    """Print the hand-off comparison; its per-toss arrays."""
+    idx, hr = from_handoff(e, mu, handed, omega, v0, args)
+    ours = ours_all[idx]
+
+    def frac(faces: np.ndarray) -> str:
+        k = max(len(faces), 1)
+        p = np.bincount(faces, minlength=3) / k
+        return pm(p, np.sqrt(p * (1 - p) / k))
+
+    print(
+        f"  from coinflight's hand-off state ({len(idx)} tosses; MuJoCo {hr.integrator}, "
+        f"{hr.elapsed:.0f} s wall, {hr.steps:,} steps)"
+    )
+    print(f"    coinflight             : {frac(ours)}")
+    print(f"    MuJoCo                 : {frac(hr.rest)}")
+    ours_e, theirs_e = ours == EDGE, hr.rest == EDGE
+    print(
+        f"    on edge: both {np.count_nonzero(ours_e & theirs_e)}, coinflight only "
+        f"{np.count_nonzero(ours_e & ~theirs_e)}, MuJoCo only "
+        f"{np.count_nonzero(~ours_e & theirs_e)}; same face {np.mean(ours == hr.rest):.1%}"
+        f"; MuJoCo moving at the limit {hr.unsettled}"
+    )
+    print(f"    upright time, MuJoCo edges          : {spread(hr.edge_time[theirs_e])}")
+    print(f"    upright time, MuJoCo, cf's edges    : {spread(hr.edge_time[ours_e])}")
+    print(f"    upright time, MuJoCo, all > 0       : {spread(hr.edge_time[hr.edge_time > 0])}")
+    print(f"    time to rest, MuJoCo                : {spread(hr.rest_time)}")
+    return {
+        "ho_index": idx,
+        "ho_rest": hr.rest,
+        "ho_moving": hr.moving,
+        "ho_time": hr.rest_time,
+        "ho_upright": hr.edge_time,
+    }
+
+
+def handoff_only(args: argparse.Namespace, pairs: tuple[tuple[float, ...], ...]) -> None:
+    """coinflight's contact ending and MuJoCo from coinflight's hand-off states only."""
+    from coinflight.core.outcome import Status
+
+    dist = study.EDGE_TOSSES[args.tosses]()
+    omega, v0 = study._draw(dist, args.n, streams.child(streams.seed_sequence(args.seed), 5))
+    print(
+        f"{args.n} {args.tosses} tosses (seed {args.seed}), from coinflight's hand-off states "
+        f"only; load {os.getloadavg()[0]:.1f}"
+    )
+    for e, mu in pairs:
+        surface = Surface(
+            "table",
+            study.DROP_HEIGHT,
+            e,
+            mu,
+            rolling_resistance=study.EDGE_RESISTANCE,
+            pivoting_resistance=study.EDGE_RESISTANCE,
+            ending="contact",
+        )
+        out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
+        handed = out.status != Status.SETTLED_ENERGY
+        print(f"\ne = {e:g}, μ = {mu:g}: handed {handed.sum()} ({handed.mean():.1%})")
+        extra = handoff_report(e, mu, handed, out.face, omega, v0, args)
+        if args.save:
+            np.savez(f"{args.save}-handoff-e{e:g}-mu{mu:g}.npz", **extra)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=200)
+    parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--pairs", nargs="+", default=["0.5,0.3"], help="e,μ pairs")
+    parser.add_argument("--tosses", choices=sorted(study.EDGE_TOSSES), default="vigorous")
+    parser.add_argument("--limit", type=float, default=mujoco_compare.SETTLE)
+    parser.add_argument("--integrator", default=study.EDGE_INTEGRATOR)
+    parser.add_argument("--threads", type=int, default=None)
+    parser.add_argument(
+        "--from-handoff",
+        action="store_true",
+        help="also start MuJoCo from coinflight's hand-off state (the contact phase alone)",
+    )
+    parser.add_argument(
+        "--handoff-only",
+        action="store_true",
+        help="only coinflight and MuJoCo from coinflight's hand-off states (no MuJoCo flights)",
+    )
+    parser.add_argument("--handoff-integrator", default=None, help="default: --integrator")
+    parser.add_argument("--save", default=None, help="write per-toss arrays to SAVE-e…-mu….npz")
+    args = parser.parse_args()
+    pairs = tuple(tuple(float(x) for x in p.split(",")) for p in args.pairs)
+    if args.handoff_only:
+        handoff_only(args, pairs)
+        return
+    load0 = os.getloadavg()
+    t0 = time.perf_counter()
+    cpu0 = time.process_time()
+    check = study.edge_check(
+        args.n,
+        args.seed,
+        pairs,  # type: ignore[arg-type]
+        tosses=args.tosses,
+        limit=args.limit,
+        integrator=args.integrator,
+        threads=args.threads,
+    )
+    wall, cpu = time.perf_counter() - t0, time.process_time() - cpu0
+    dist = study.EDGE_TOSSES[check.tosses]()
+    omega, v0 = study._draw(dist, check.n, streams.child(streams.seed_sequence(check.seed), 5))
+    print(
+        f"{check.n} {check.tosses} tosses (seed {check.seed}), resistances "
+        f"{check.rolling_resistance:g} m, MuJoCo {check.integrator}, condim "
+        f"{mujoco_compare.CONDIM}, limit {check.limit:g} s past first contact; "
+        f"{wall:.0f} s wall, {cpu:.0f} s CPU, load {load0[0]:.1f} -> {os.getloadavg()[0]:.1f}"
+    )
+    for cell in check.cells:
+        r = cell.mujoco
+        h = cell.handed
+        print(
+            f"\ne = {cell.restitution:g}, μ = {cell.friction:g}: MuJoCo {r.elapsed:.0f} s wall "
+            f"({r.steps:,} steps, {r.steps / r.elapsed:,.0f}/s; damping ratio "
+            f"{r.dampratio:.3f}, flat-drop e {r.restitution:.3f}); coinflight "
+            f"{cell.coinflight.seconds:.2f} s; handed to the contact phase {h.sum()} "
+            f"({h.mean():.1%})"
+        )
+        print(f"  P({', '.join(NAMES)}) ± s.e.")
+        print(f"  coinflight, all          : {pm(*cell.fractions(cell.coinflight.rest))}")
+        print(f"  MuJoCo, all              : {pm(*cell.fractions(r.rest))}")
+        print(f"  coinflight, handed       : {pm(*cell.fractions(cell.coinflight.rest, h))}")
+        print(f"  MuJoCo, cf's handed      : {pm(*cell.fractions(r.rest, h))}")
+        print(f"  MuJoCo, cf's not handed  : {pm(*cell.fractions(r.rest, ~h))}")
+        print(f"  MuJoCo, settled only     : {pm(*cell.fractions(r.rest, ~r.moving))}")
+        moving_edge = int(np.count_nonzero(r.moving & (r.rest == EDGE)))
+        print(
+            f"  MuJoCo still moving at {r.limit:g} s: {r.unsettled} ({moving_edge} on edge); "
+            f"coinflight unsettled {cell.coinflight.unsettled}"
+        )
+        both, ours, theirs = cell.edges
+        print(
+            f"  on edge: both {both}, coinflight only {ours}, MuJoCo only {theirs}; same well at "
+            f"first contact {cell.first_agreement:.1%}, same face at the end "
+            f"{cell.rest_agreement:.1%}"
+        )
+        t_ours, up_ours = coinflight_times(check, cell, omega, v0)
+        ours_edge = cell.coinflight.rest == EDGE
+        print(f"  time to rest, MuJoCo edges     : {spread(r.rest_time[r.rest == EDGE])}")
+        print(f"  time to rest, MuJoCo faces     : {spread(r.rest_time[r.rest != EDGE])}")
+        print(f"  time to rest, coinflight edges : {spread(t_ours[ours_edge])}")
+        print(f"  time to rest, coinflight faces : {spread(t_ours[~ours_edge])}")
+        rolled = r.edge_time > 1.0
+        print(
+            f"  upright on the rim > 1 s: MuJoCo {rolled.sum()} tosses (of which end on edge "
+            f"{np.count_nonzero(rolled & (r.rest == EDGE))}), coinflight "
+            f"{np.count_nonzero(up_ours > 1.0)} (on edge "
+            f"{np.count_nonzero((up_ours > 1.0) & ours_edge)})"
+        )
+        print(
+            f"  upright time, MuJoCo faces > 1 s : {spread(r.edge_time[rolled & (r.rest != EDGE)])}"
+        )
+        print(f"  upright time, MuJoCo edges       : {spread(r.edge_time[r.rest == EDGE])}")
+        print(f"  upright time, coinflight edges   : {spread(up_ours[ours_edge])}")
+        print(
+            f"  upright time, cf faces > 1 s     : {spread(up_ours[(up_ours > 1.0) & ~ours_edge])}"
+        )
+        extra: dict[str, np.ndarray] = {}
+        if args.from_handoff:
+            extra = handoff_report(
+                cell.restitution, cell.friction, h, cell.coinflight.rest, omega, v0, args
+            )
+        if args.save:
+            np.savez(
+                f"{args.save}-e{cell.restitution:g}-mu{cell.friction:g}.npz",
+                omega=omega,
+                v0=v0,
+                handed=cell.handed,
+                cf_rest=cell.coinflight.rest,
+                cf_first=cell.first,
+                cf_time=t_ours,
+                cf_upright=up_ours,
+                mj_rest=r.rest,
+                mj_first=r.first,
+                mj_moving=r.moving,
+                mj_time=r.rest_time,
+                mj_upright=r.edge_time,
+                **extra,
+            )
+
+
+if __name__ == "__main__":
+    main()
