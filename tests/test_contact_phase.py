@@ -529,3 +529,37 @@ def test_fully_rounded_rim_has_no_edge_well():
         # and it does lie on that face (with a = h/2 every tilt but upright reads as a face).
         cp.advance(y, 1.0, c)
         assert (y[6] > 0.999) if face == HEADS else (abs(y[6]) < c.edge_sine)
+
+
+def test_upright_coin_sliding_in_its_plane_rolls_at_two_thirds_of_its_speed():
+    """Coulomb friction at the rim, the closed form of a sliding disc (e.g. Goldstein's ball
+    and disc problems): a coin standing upright in its edge band, sliding along its plane at v0
+    without turning, slips at u = v − ω r decelerating at μ g (1 + m r²/I3) until it rolls at
+    v0 / (1 + I3/(m r²)), after a time v0 / (μ g (1 + m r²/I3)); the friction's work
+    μ m g × (the slip distance) is the energy lost. Fails if friction acts at the wrong point
+    (no torque: no rolling), with the wrong sign, or by more than μ F_n."""
+    mu, v0 = 0.3, 0.3
+    c = _contact(NICKEL, e=0.5, mu=mu)
+    kappa = cp.stiffness_of(c)
+    y = _state(NICKEL, 0.5 * math.pi, v=(0.0, v0, 0.0))  # n = X, sliding along Y
+    y[0] = NICKEL.radius - G * (c.contact_time / math.pi) ** 2  # resting on its band
+    i1, i3 = (float(x) for x in NICKEL.moments)
+    m, r = NICKEL.mass, NICKEL.radius
+    ratio = m * r * r / i3
+    rate = mu * G * (1.0 + ratio)
+    t_slip = v0 / rate
+    e0 = cp.energy(y, c, kappa)
+    cp.advance(y, 0.5 * t_slip, c)
+    w = angular_velocity(tuple(y[7:10]), tuple(y[4:7]), i1, i3)
+    slip = y[2] + w[0] * r  # contact point velocity along Y: v + ω × (−r Z)
+    assert slip == pytest.approx(0.5 * v0, rel=0.02)
+    assert y[2] == pytest.approx(v0 - mu * G * 0.5 * t_slip, rel=0.01)
+    cp.advance(y, 1.5 * t_slip, c)
+    w = angular_velocity(tuple(y[7:10]), tuple(y[4:7]), i1, i3)
+    rolling = v0 / (1.0 + 1.0 / ratio)
+    assert y[2] == pytest.approx(rolling, rel=0.01)
+    assert -w[0] * r == pytest.approx(rolling, rel=0.01)
+    assert abs(y[6]) < 1e-3  # still upright
+    lost = e0 - cp.energy(y, c, kappa)
+    work = mu * m * G * v0 * v0 / (2.0 * rate)  # μ m g ∫ u dt, u falling linearly to 0
+    assert lost == pytest.approx(work, rel=0.02)
