@@ -19,7 +19,10 @@ they stood on their rim.
 ``--from-handoff`` also starts MuJoCo from coinflight's own state at the hand-off to its
 contact phase (:func:`coinflight.studies.mujoco_compare.run_from`; the impacts left out, the
 contact phases compared alone); ``--handoff-only`` does only that (no MuJoCo flights), with
-``--handoff-integrator`` (default ``--integrator``).
+``--handoff-integrator`` (default ``--integrator``), ``--condim`` (MuJoCo's contact dimension,
+default 6; 3: sliding friction only, no rolling or torsional friction sharing its cone) and
+``--resistance-factor`` (MuJoCo's rolling and torsional friction times 1e-4 m; coinflight's
+stay 1e-4 m).
 """
 
 from __future__ import annotations
@@ -125,8 +128,9 @@ def from_handoff(
         speed,
         threads=args.threads,
         limit=args.limit,
-        torsional=study.EDGE_RESISTANCE,
-        rolling=study.EDGE_RESISTANCE,
+        condim=args.condim,
+        torsional=study.EDGE_RESISTANCE * args.resistance_factor,
+        rolling=study.EDGE_RESISTANCE * args.resistance_factor,
         integrator=args.handoff_integrator or args.integrator,
     )
     return np.array(idx, dtype=int), run
@@ -224,6 +228,18 @@ def main() -> None:
         help="only coinflight and MuJoCo from coinflight's hand-off states (no MuJoCo flights)",
     )
     parser.add_argument("--handoff-integrator", default=None, help="default: --integrator")
+    parser.add_argument(
+        "--condim",
+        type=int,
+        default=mujoco_compare.CONDIM,
+        help="MuJoCo's contact dimension from the hand-off (3: sliding friction only)",
+    )
+    parser.add_argument(
+        "--resistance-factor",
+        type=float,
+        default=1.0,
+        help="MuJoCo's rolling and torsional friction from the hand-off, times 1e-4 m",
+    )
     parser.add_argument("--save", default=None, help="write per-toss arrays to SAVE-e…-mu….npz")
     args = parser.parse_args()
     pairs = tuple(tuple(float(x) for x in p.split(",")) for p in args.pairs)

@@ -91,9 +91,34 @@ and agrees with this phase on a coin rolling upright (0.1, 0.3, 1 m/s: upright 1
 in MuJoCo, 1.2, 4.4, 15.8 s here to the end of its settle test). So the edge rate is not the
 sharp rim's in both engines: it is this contact model's, in how it turns a wobbling, sliding
 coin on its rim into an upright roller (in the one toss traced from the hand-off, a coin landing
-near upright rolls here within 25 ms, while in MuJoCo it slides and falls flat); its regularised
-friction (:data:`SLIP_SPEED`) and the arc's damping are the first suspects, not yet tested. On
-the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
+near upright rolls here within 25 ms, while in MuJoCo it slides and falls flat).
+Why, measured (2026-11-23, 19:00-19:20 UTC, load 1-4): this model's numerics are cleared and no
+bug was found. From the same 446 hand-off states, ``python benchmarks/bench_edge_sensitivity.py
+600`` with one parameter changed, this phase leaves on edge 49 (0.110 ± 0.015) by default; with
+:data:`SLIP_SPEED` × 3, 0.3, 0.1, 0.03: 44, 47, 51, 53 (× 0.01, every 2nd toss: 23 of 223, 16 of
+them stopped by MAX_STEPS and counted by their well), so the regularised friction is converged
+to its Coulomb limit, not a viscous sticking; t_c 0.25, 0.5, 2 ms: 47, 43, 67; the damping ratio
+× 0, 0.5, 2, 4: 35 (12 unsettled), 58, 43, 41; μ 0.1, 0.6, 1: 29, 91, 111; resistances 1e-6 m:
+55 (47 stopped by MAX_STEPS). The energy never grows (112 of these tosses, 0.6 s each sampled
+every 1 ms: the largest rise 1e-14 of the energy), and an upright coin sliding in its plane
+comes to roll at the closed-form speed, time and friction work (tests/test_contact_phase.py).
+Part of the gap is MuJoCo's: its condim 6 puts sliding, rolling and torsional friction in one
+cone, so a coin that rolls while it slides is braked by less than μ F_n; with condim 3 (sliding
+friction only; ``python benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3``) MuJoCo
+leaves 17 of the 446 on edge (0.038 ± 0.009; 25 still moving at 20 s), with condim 6 and
+resistances 1e-6 m (``--resistance-factor 0.01``) 10; at μ 0.6 from the same states 27 with
+condim 3, against 94 here with resistances 1e-6 m: a factor ~3.5 remains at both μ, with each
+engine's friction plain Coulomb. The hand-off states are mid-impact (the coins hop again), where
+the two soft contacts differ most: single oblique rim impacts of a spinning nickel (``python
+benchmarks/bench_rim_impacts.py 200``: tilt 9-80°, ω 50-300 rad/s, μ 0.3) leave this phase's
+velocity within a median 0.06 m/s of Stronge's rigid impact
+(:func:`coinflight.core.impact.impact`, the bounces' law; 0.03 at t_c 0.25 ms) and MuJoCo's
+within 0.15 m/s; their angular momenta differ from the rigid law's by a median 20 % of I1 ω here
+(10 % at t_c 0.25 ms: one impact of a fast-spinning coin is not converged in t_c, though the
+edge count above is) and 15 % in MuJoCo. The remaining factor is not explained: the next suspect
+is how each soft contact restitutes the impacts of a spinning coin on its rim.
+
+On the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
 0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
 their whole energy below the barrier), 10 in MuJoCo (0.025 ± 0.008 with RK4, 0.018 ± 0.007 with
 Euler), 8 of them tosses this model ends at an impact, standing on their rim for seconds (median
