@@ -10,7 +10,8 @@ lowest rim point at the table and approaching it (faster than 0.05 m/s); e 0.5 (
 damping calibrated by a flat drop at 2 m/s), resistances 1e-4 m. Each state is compared 3 ms
 after the touch (the rigid law followed by 3 ms of flight); an impact still or again in
 contact then, in either soft engine, is drawn again. Prints the medians and 90th percentiles of
-the velocity's distance to the rigid law's, m/s, and of the angular momentum's, in I1 ω.
+the velocity's distance to the rigid law's, m/s, and of the angular momentum's, in I1 ω, and
+the mean fraction of the kinetic energy each law takes (gravity's 3 ms added back).
 """
 
 from __future__ import annotations
@@ -43,7 +44,14 @@ def main() -> None:
     data = mujoco.MjData(model)
     rot = np.empty(9)
     rng = np.random.default_rng(args.seed)
-    dist: dict[str, list[tuple[float, float]]] = {"contact phase": [], "MuJoCo": []}
+    dist: dict[str, list[tuple[float, float, float]]] = {"contact phase": [], "MuJoCo": []}
+    lost_rigid = []
+
+    def kinetic(v: np.ndarray, lm: np.ndarray, n: np.ndarray) -> float:
+        return float(
+            0.5 * c.mass * v @ v + 0.5 * (lm @ lm / c.i1 + (1 / c.i3 - 1 / c.i1) * (lm @ n) ** 2)
+        )
+
     while len(dist["MuJoCo"]) < args.n:
         tilt, azimuth = rng.uniform(0.15, 1.4), rng.uniform(0.0, 2.0 * math.pi)
         n = np.array(
@@ -86,25 +94,34 @@ def main() -> None:
         wl, nm = frame @ data.qvel[3:6], frame[:, 2]
         lm_mj = c.i1 * wl + (c.i3 - c.i1) * (wl @ nm) * nm
         scale = c.i1 * float(np.linalg.norm(w))
+        fall = np.array([0.0, 0.0, g * span])
+        e0 = kinetic(v, lm, n)
+        lost_rigid.append(1.0 - kinetic(rigid_v + fall, rigid_l, n) / e0)
         dist["contact phase"].append(
             (
                 float(np.linalg.norm(y[1:4] - rigid_v)),
                 float(np.linalg.norm(y[7:10] - rigid_l)) / scale,
+                1.0 - kinetic(y[1:4] + fall, y[7:10], y[4:7]) / e0,
             )
         )
         dist["MuJoCo"].append(
             (
                 float(np.linalg.norm(data.qvel[:3] - rigid_v)),
                 float(np.linalg.norm(lm_mj - rigid_l)) / scale,
+                1.0 - kinetic(data.qvel[:3] + fall, lm_mj, nm) / e0,
             )
         )
-    print(f"{args.n} rim impacts, e 0.5, μ {mu:g}, t_c {args.contact_time:g} s (seed {args.seed})")
+    print(
+        f"{args.n} rim impacts, e 0.5, μ {mu:g}, t_c {args.contact_time:g} s (seed {args.seed}); "
+        f"kinetic energy lost, mean: rigid {np.mean(lost_rigid):.3f}"
+    )
     for name, rows in dist.items():
         r = np.array(rows)
         print(
             f"  {name:13s} against the rigid law: velocity median {np.median(r[:, 0]):.3f} m/s "
             f"(90 % {np.percentile(r[:, 0], 90):.3f}), angular momentum median "
-            f"{np.median(r[:, 1]):.3f} I1 ω (90 % {np.percentile(r[:, 1], 90):.3f})"
+            f"{np.median(r[:, 1]):.3f} I1 ω (90 % {np.percentile(r[:, 1], 90):.3f}); kinetic "
+            f"energy lost, mean {np.mean(r[:, 2]):.3f}"
         )
 
 

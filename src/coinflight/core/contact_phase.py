@@ -92,7 +92,7 @@ in MuJoCo, 1.2, 4.4, 15.8 s here to the end of its settle test). So the edge rat
 sharp rim's in both engines: it is this contact model's, in how it turns a wobbling, sliding
 coin on its rim into an upright roller (in the one toss traced from the hand-off, a coin landing
 near upright rolls here within 25 ms, while in MuJoCo it slides and falls flat).
-Why, measured (2026-11-23, 19:00-19:20 UTC, load 1-4): this model's numerics are cleared and no
+Why, measured (2026-11-23, 19:00-19:26 UTC, load 1-4): this model's numerics are cleared and no
 bug was found. From the same 446 hand-off states, ``python benchmarks/bench_edge_sensitivity.py
 600`` with one parameter changed, this phase leaves on edge 49 (0.110 ± 0.015) by default; with
 :data:`SLIP_SPEED` × 3, 0.3, 0.1, 0.03: 44, 47, 51, 53 (× 0.01, every 2nd toss: 23 of 223, 16 of
@@ -107,16 +107,19 @@ cone, so a coin that rolls while it slides is braked by less than μ F_n; with c
 friction only; ``python benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3``) MuJoCo
 leaves 17 of the 446 on edge (0.038 ± 0.009; 25 still moving at 20 s), with condim 6 and
 resistances 1e-6 m (``--resistance-factor 0.01``) 10; at μ 0.6 from the same states 27 with
-condim 3, against 94 here with resistances 1e-6 m: a factor ~3.5 remains at both μ, with each
-engine's friction plain Coulomb. The hand-off states are mid-impact (the coins hop again), where
-the two soft contacts differ most: single oblique rim impacts of a spinning nickel (``python
-benchmarks/bench_rim_impacts.py 200``: tilt 9-80°, ω 50-300 rad/s, μ 0.3) leave this phase's
-velocity within a median 0.06 m/s of Stronge's rigid impact
-(:func:`coinflight.core.impact.impact`, the bounces' law; 0.03 at t_c 0.25 ms) and MuJoCo's
-within 0.15 m/s; their angular momenta differ from the rigid law's by a median 20 % of I1 ω here
-(10 % at t_c 0.25 ms: one impact of a fast-spinning coin is not converged in t_c, though the
-edge count above is) and 15 % in MuJoCo. The remaining factor is not explained: the next suspect
-is how each soft contact restitutes the impacts of a spinning coin on its rim.
+condim 3, against 94 here with resistances 1e-6 m: a factor ~3.5 remains at both μ, with no
+resistance in play in either engine. The hand-off states are mid-impact (the coins hop again),
+and there the two soft contacts part: oblique rim impacts of a spinning nickel (``python
+benchmarks/bench_rim_impacts.py 200 --friction μ``: tilt 9-80°, ω 50-300 rad/s, e 0.5), compared
+3 ms after the touch with Stronge's rigid impact (:func:`coinflight.core.impact.impact`, the law
+of the bounces). Frictionless, MuJoCo follows the rigid law closely (velocity within a median
+0.025 m/s, angular momentum 5 % of I1 ω; kinetic energy lost 0.269 against 0.264) and this phase
+less so (0.064 m/s, 13 %, 0.276: a fast-spinning coin turns during a 1 ms contact; at t_c 0.25
+ms less than half of it); with μ 0.3 this phase stays as close (0.061 m/s, 20 %; energy lost
+0.449 against the rigid 0.426) while MuJoCo moves away (0.146 m/s, 15 %) and takes less energy
+(0.371): its friction in a short rim impact does less work than Coulomb's, as in the traced
+toss, where its coin keeps sliding. That is the lead for the factor ~3.5 left (not yet measured
+toss by toss): MuJoCo's soft friction in impacts, not this phase's numerics.
 
 On the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
 0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
