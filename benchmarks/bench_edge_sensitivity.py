@@ -10,13 +10,15 @@ again by that phase alone with one parameter changed: ``SLIP_SPEED`` times F (th
 regularisation of Coulomb's friction; F → 0 is the Coulomb limit), the contact time t_c, the
 damping ratio ζ times D, μ, the resistances. Prints P(edge) among the handed tosses.
 SLIP_SPEED is a constant compiled into the numba kernels: a factor other than 1 compiles them
-afresh into a temporary cache (the package's own cache is not touched).
+afresh into a temporary cache, removed at the end (the package's own cache is not touched).
 """
 
 from __future__ import annotations
 
 import argparse
+import atexit
 import os
+import shutil
 import tempfile
 import time
 
@@ -33,7 +35,9 @@ def main() -> None:
     parser.add_argument("--stride", type=int, default=1, help="every K-th handed toss")
     args = parser.parse_args()
     if args.slip_factor != 1.0:
-        os.environ["NUMBA_CACHE_DIR"] = tempfile.mkdtemp(prefix="coinflight-slip-")
+        cache = tempfile.mkdtemp(prefix="coinflight-slip-")
+        atexit.register(shutil.rmtree, cache, True)
+        os.environ["NUMBA_CACHE_DIR"] = cache
     import numpy as np
 
     from coinflight.core import contact_phase as cp
