@@ -92,7 +92,7 @@ in MuJoCo, 1.2, 4.4, 15.8 s here to the end of its settle test). So the edge rat
 sharp rim's in both engines: it is this contact model's, in how it turns a wobbling, sliding
 coin on its rim into an upright roller (in the one toss traced from the hand-off, a coin landing
 near upright rolls here within 25 ms, while in MuJoCo it slides and falls flat).
-Why, measured (2026-11-23, 19:00-19:26 UTC, load 1-4): this model's numerics are cleared and no
+Why, measured (2026-11-23, 19:00-19:29 UTC, load 1-4): this model's numerics are cleared and no
 bug was found. From the same 446 hand-off states, ``python benchmarks/bench_edge_sensitivity.py
 600`` with one parameter changed, this phase leaves on edge 49 (0.110 ± 0.015) by default; with
 :data:`SLIP_SPEED` × 3, 0.3, 0.1, 0.03: 44, 47, 51, 53 (× 0.01, every 2nd toss: 23 of 223, 16 of
@@ -105,14 +105,14 @@ comes to roll at the closed-form speed, time and friction work (tests/test_conta
 Part of the gap is MuJoCo's: its condim 6 puts sliding, rolling and torsional friction in one
 cone, so a coin that rolls while it slides is braked by less than μ F_n; with condim 3 (sliding
 friction only; ``python benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3``) MuJoCo
-leaves 23 of the 446 on edge (0.052 ± 0.011; 32 still moving at 20 s, counted by their well; 17
-with its damping calibrated at 2.9 m/s instead of the tosses' mean, 25 moving), with condim 6
-and resistances 1e-6 m (``--resistance-factor 0.01``) 10; at μ 0.6 from the same states 27 with
-condim 3 (calibrated at 2.9 m/s), against 94 here with resistances 1e-6 m: a factor 2.4-3.5
-remains, with no resistance in play in either engine. The hand-off states are mid-impact (the
-coins hop again), and there the two soft contacts part: oblique rim impacts of a spinning nickel
-(``python benchmarks/bench_rim_impacts.py 200 --friction μ``: tilt 9-80°, ω 50-300 rad/s, e
-0.5), compared 3 ms after the touch with Stronge's rigid impact
+leaves 23 of the 446 on edge (0.052 ± 0.011; 32 still moving at 20 s, counted by their well; 17,
+25 moving, with its damping calibrated at 4.556 m/s instead of 4.548: the tosses are chaotic),
+with condim 6 and resistances 1e-6 m (``--resistance-factor 0.01``) 10; at μ 0.6 from the same
+states 27 with condim 3 (calibrated at 4.556 m/s), against 94 here with resistances 1e-6 m: a
+factor 2.4-3.5 remains, with no resistance in play in either engine. The hand-off states are
+mid-impact (the coins hop again), and there the two soft contacts part: oblique rim impacts of a
+spinning nickel (``python benchmarks/bench_rim_impacts.py 200 --friction μ``: tilt 9-80°, ω
+50-300 rad/s, e 0.5), compared 3 ms after the touch with Stronge's rigid impact
 (:func:`coinflight.core.impact.impact`, the law of the bounces). Frictionless, MuJoCo follows
 the rigid law closely (velocity within a median 0.025 m/s, angular momentum 5 % of I1 ω; kinetic
 energy lost 0.269 against 0.264) and this phase less so (0.064 m/s, 13 %, 0.276: a fast-spinning
