@@ -107,21 +107,21 @@ cone, so a coin that rolls while it slides is braked by less than μ F_n; with c
 friction only; ``python benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3``) MuJoCo
 leaves 23 of the 446 on edge (0.052 ± 0.011; 32 still moving at 20 s, counted by their well; 17,
 25 moving, with its damping calibrated at 4.556 m/s instead of 4.548: the tosses are chaotic),
-with condim 6 and resistances 1e-6 m (``--resistance-factor 0.01``) 10; at μ 0.6 from the same
-states 27 with condim 3 (calibrated at 4.556 m/s), against 94 here with resistances 1e-6 m: a
-factor 2.4-3.5 remains, with no resistance in play in either engine. The hand-off states are
-mid-impact (the coins hop again), and there the two soft contacts part: oblique rim impacts of a
-spinning nickel (``python benchmarks/bench_rim_impacts.py 200 --friction μ``: tilt 9-80°, ω
-50-300 rad/s, e 0.5), compared 3 ms after the touch with Stronge's rigid impact
-(:func:`coinflight.core.impact.impact`, the law of the bounces). Frictionless, MuJoCo follows
-the rigid law closely (velocity within a median 0.025 m/s, angular momentum 5 % of I1 ω; kinetic
-energy lost 0.269 against 0.264) and this phase less so (0.064 m/s, 13 %, 0.276: a fast-spinning
-coin turns during a 1 ms contact; at t_c 0.25 ms less than half of it); with μ 0.3 this phase
-stays as close (0.061 m/s, 20 %; energy lost 0.449 against the rigid 0.426) while MuJoCo moves
-away (0.146 m/s, 15 %) and takes less energy (0.371): its friction in a short rim impact does
-less work than Coulomb's, as in the traced toss, where its coin keeps sliding. That is the lead
-for the factor left (not yet measured toss by toss): MuJoCo's soft friction in impacts, not this
-phase's numerics.
+with condim 6 and resistances 1e-6 m (``--resistance-factor 0.01``, calibrated at 4.556 m/s) 10;
+at μ 0.6 from the same states 27 with condim 3 (calibrated at 4.556 m/s), against 94 here with
+resistances 1e-6 m: a factor 2.4-3.5 remains, with no resistance in play in either engine. The
+hand-off states are mid-impact (the coins hop again), and there the two soft contacts part:
+oblique rim impacts of a spinning nickel (``python benchmarks/bench_rim_impacts.py 200
+--friction μ``: tilt 9-80°, ω 50-300 rad/s, e 0.5), compared 3 ms after the touch with Stronge's
+rigid impact (:func:`coinflight.core.impact.impact`, the law of the bounces). Frictionless,
+MuJoCo follows the rigid law closely (velocity within a median 0.025 m/s, angular momentum 5 %
+of I1 ω; kinetic energy lost 0.269 against 0.264) and this phase less so (0.064 m/s, 13 %,
+0.276: a fast-spinning coin turns during a 1 ms contact; at t_c 0.25 ms less than half of it);
+with μ 0.3 this phase stays as close (0.061 m/s, 20 %; energy lost 0.449 against the rigid
+0.426) while MuJoCo moves away (0.146 m/s, 15 %) and takes less energy (0.371): its friction in
+a short rim impact does less work than Coulomb's, as in the traced toss, where its coin keeps
+sliding. That is the lead for the factor left (not yet measured toss by toss): MuJoCo's soft
+friction in impacts, not this phase's numerics.
 
 On the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
 0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
