@@ -5,6 +5,7 @@ its lowest point. The impact law's invariants at any a are in tests/test_impact.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -120,12 +121,16 @@ def test_a_rounded_rim_is_touched_no_earlier_in_both_landing_kernels(through_air
 THICK = Coin(radius=0.012, thickness=0.024 / math.sqrt(3), mass=0.005)  # h/d = 1/√3
 
 
+@functools.lru_cache(maxsize=64)
+def _record(coin, a):
+    """The contact record of ``coin`` with corner radius a (the one the landings build)."""
+    return coin_contact(coin, corner_radius=a, g=G)
+
+
 def _rock(coin, phi, phidot, a):
     """core.bounce.rock for the coin tilted by φ (n = sin φ X + cos φ Z) tipping at φ̇."""
     n = (math.sin(phi), 0.0, math.cos(phi))
-    i1, _ = coin.moments
-    hh = 0.5 * coin.thickness
-    return bounce.rock(n, (0.0, phidot, 0.0), coin.radius, hh, coin.mass, i1, G, a)
+    return bounce.rock(n, (0.0, phidot, 0.0), _record(coin, a))
 
 
 def _centre_of_mass(coin, a, phi):
