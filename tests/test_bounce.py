@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
+from _kernels import coin_contact
 from coinflight import Coin, Flight, Toss
 from coinflight.core import bounce
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
@@ -169,8 +170,7 @@ def test_bad_input(call, match):
 
 def _rock(coin, phi, phidot):
     n = (math.sin(phi), 0.0, math.cos(phi))
-    i1, _ = coin.moments
-    return bounce.rock(n, (0.0, phidot, 0.0), coin.radius, coin.thickness / 2, coin.mass, i1, G)
+    return bounce.rock(n, (0.0, phidot, 0.0), coin_contact(coin, g=G))
 
 
 def test_rocking_ends_in_the_well_it_cannot_leave():

@@ -135,6 +135,16 @@ def test_text_table():
     assert lines[1].split()[:3] == ["0.577", "0.4998", "0.3332"]
     assert lines[2].split()[:3] == ["1", "0.7071", "0.5000"]
     assert lines[-1] == "seed 5"
+    assert not any(line.startswith("corner radius") for line in lines)  # sharp: not said
+
+
+def test_text_table_says_the_corner_radius_as_the_json_does():
+    args = ("--ratios", "0.3", "--simulate", "50", "--seed", "5", "--corner-radius", "3e-4")
+    code, out, _ = _run(*args)
+    assert code == 0
+    assert out.splitlines()[-2:] == ["corner radius 0.0003 m", "seed 5"]
+    code, js, _ = _run(*args, "--json")
+    assert json.loads(js)[0]["simulated"]["corner_radius"] == 3e-4
 
 
 @pytest.mark.parametrize(
@@ -153,13 +163,18 @@ def test_text_table():
         (["--corner-radius", "1e-4"], "--corner-radius needs --simulate N"),
         (
             ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
-            "corner radius must be between 0 and 0.0012 (in m), got 0.002: at most half the "
+            "--corner-radius: corner radius must be between 0 and 0.0012 (in m), got 0.002: at "
+            "most half the "
             "thickness h/2 of the thinnest coin (h/d = 0.1, h = 0.0024 m)",
         ),
-        (["--simulate", "10", "--corner-radius", "-1e-4"], "corner radius must be between 0"),
+        (
+            ["--simulate", "10", "--corner-radius", "-1e-4"],
+            "--corner-radius: corner radius must be between 0",
+        ),
         (  # coins thicker than wide (h/d = 2): the bound is the radius, 12 mm, not h/2
             ["--ratios", "2", "--simulate", "10", "--corner-radius", "0.02"],
-            "corner radius must be between 0 and 0.012 (in m), got 0.02: at most the radius r "
+            "--corner-radius: corner radius must be between 0 and 0.012 (in m), got 0.02: at "
+            "most the radius r "
             "(a coin thicker than wide) of the thinnest coin (h/d = 2, h = 0.048 m)",
         ),
         (

@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 from coinflight import Coin, Toss
 from coinflight.cli import app
 from coinflight.core.bounce import MAX_IMPACTS
-from coinflight.model.surface import Surface
+from coinflight.model.surface import TABLE_ONLY, Surface
 from coinflight.outcomes.table import Landing
 
 TOSS = ["toss", "--omega", "240", "5", "3", "--flight-time", "0.49"]
@@ -101,8 +101,8 @@ def test_hand_without_drag_is_unchanged():
         (["--spin-damping", "-1"], "spin damping must be between 0 and 0.001 (in N m s)"),
         (["--surface", "table", "--drop-height", "-0.3"], "surface above the launch point"),
         (["--surface", "sand"], "surface must be one of hand, table"),
-        (["--restitution", "0.5"], "--restitution applies to --surface table only"),
-        (["--bounces", "2"], "--bounces applies to --surface table only"),
+        (["--restitution", "0.5"], f"--restitution {TABLE_ONLY}"),
+        (["--bounces", "2"], f"--bounces {TABLE_ONLY}"),
         (["--surface", "table", "--restitution", "abc"], "is not a number"),
     ],
 )

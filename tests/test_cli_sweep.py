@@ -20,6 +20,7 @@ from coinflight.cli.sweep import parse_dists, parse_numbers_list
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
+from coinflight.model.surface import TABLE_ONLY
 from coinflight.outcomes import outcome_model
 from coinflight.probability import estimate
 from coinflight.probability import sweep as sweep_module
@@ -246,7 +247,7 @@ def test_work_and_rows_are_bounded_before_anything_runs():
         (["--omega-x-mean", "1:2:0", "--omega-x-sd", "1"], "COUNT a whole number 1–10000"),
         (["--omega-x-mean", "80", "--omega-x-sd", "-1"], "standard deviation must be ≥ 0"),
         (["--omega-x", "90:60"], "--omega-x '90:60'"),
-        (["--restitution", "0.5"], "--restitution applies to --surface table only"),
+        (["--restitution", "0.5"], f"--restitution {TABLE_ONLY}"),
         (["--surface", "sand"], "--surface 'sand': choose among hand, table"),
         (["--surface", "table"], "--method exact handles --surface hand only"),
         (["--coin", "us-quarter,,eur-1"], "--coin 'us-quarter,,eur-1': give comma-separated"),

@@ -25,8 +25,10 @@ from coinflight.model.surface import (
     DEFAULT_PIVOTING_RESISTANCE,
     DEFAULT_ROLLING_RESISTANCE,
     ROCKING_HAS_NO_RESISTANCE,
+    TABLE_ONLY,
     Drag,
     Surface,
+    _Unset,
 )
 from coinflight.outcomes.table import (
     AIR_LANDINGS_PER_SECOND,
@@ -146,12 +148,15 @@ def test_the_surface_refuses_a_resistance_given_with_the_rocking_ending():
     said = f"rolling resistance 0.0001 m, pivoting resistance 0 m: {ROCKING_ONLY}"
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):  # even the default's value
         Surface("table", rolling_resistance=DEFAULT_ROLLING_RESISTANCE, pivoting_resistance=0.0)
-    with pytest.raises(ValueError, match=re.escape(ROCKING_ONLY)):
-        Surface("hand", pivoting_resistance=1e-4)
     with pytest.raises(
         ValueError, match=re.escape("pivoting resistance must be between 0 and 0.01")
     ):
         Surface("table", pivoting_resistance=0.02)  # the range first, with either ending
+    # a default is range-checked too (the mark of a default is a float: nothing else bypasses)
+    with pytest.raises(ValueError, match=re.escape("rolling resistance must be between 0 and")):
+        Surface("table", ending="contact", rolling_resistance=_Unset(5.0))
+    with pytest.raises(ValueError, match=re.escape("pivoting resistance must be between 0 and")):
+        Surface("table", pivoting_resistance=_Unset(-1.0))
     rocking = Surface("table", 0.8)
     contact = Surface("table", 0.8, ending="contact")
     for surface in (rocking, contact):
@@ -239,7 +244,30 @@ def test_bad_contact_options_are_one_line_exit_2(args, message):
 )
 def test_contact_options_belong_to_the_table(args):
     flag = args[0]
-    assert one_line_error(*TOSS, *args) == f"{flag} applies to --surface table only"
+    assert one_line_error(*TOSS, *args) == f"{flag} {TABLE_ONLY}"
+
+
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"pivoting_resistance": 1e-4}, "pivoting resistance 0.0001 m"),
+        ({"ending": "contact"}, "ending 'contact'"),
+        (
+            {"ending": "contact", "rolling_resistance": 0.0},
+            "ending 'contact', rolling resistance 0 m",
+        ),
+    ],
+)
+def test_a_catch_in_the_hand_refuses_the_tables_options_in_the_command_lines_words(options, said):
+    """A hand catch has no contact phase: a resistance or the contact ending given to it is
+    refused (not kept unused), in one line naming what was given, with the words of the
+    command line's refusal of --ending with --surface hand (TABLE_ONLY)."""
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        Surface("hand", **options)
+    assert Surface("hand").ending == "rocking"  # the defaults are no refusal
+    assert one_line_error(*TOSS, "--surface", "hand", "--ending", "contact") == (
+        f"--ending {TABLE_ONLY}"
+    )
 
 
 def test_toss_json_reports_the_contact_ending_and_equals_the_library():
@@ -450,7 +478,7 @@ def test_sweep_over_endings_resistances_and_corner_radii(tmp_path):
          "--corner-radius applies to --surface table only"),
         (["--surface", "table", "--pivoting-resistance", "1e-4,2e-4"],
          f"pivoting resistance 0.0001 m: {ROCKING_ONLY}"),
-        (["--surface", "hand", "--ending", "contact"], "--ending applies to --surface table only"),
+        (["--surface", "hand", "--ending", "contact"], f"--ending {TABLE_ONLY}"),
         (["--surface", "table", "--ending", "contact,foo"], "--ending must be rocking or contact"),
         (["--surface", "table", "--corner-radius", "0.001"], "--corner-radius: US quarter: corner "
          "radius must be between 0 and 0.000875"),

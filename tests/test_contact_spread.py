@@ -19,7 +19,7 @@ from coinflight.core import bounce
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, TruncatedNormal, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.model.surface import Drag, Surface, contact_distribution
+from coinflight.model.surface import TABLE_ONLY, Drag, Surface, contact_distribution
 from coinflight.outcomes.table import TableLanding
 from coinflight.probability import estimate
 
@@ -361,7 +361,7 @@ def test_cli_surface_preset_integrates_over_the_ranges_and_is_replaced_by_given_
                 "--surface-preset",
                 "coin-on-wood",
             ],
-            "--surface-preset applies to --surface table only",
+            f"--surface-preset {TABLE_ONLY}",
         ),
     ],
 )

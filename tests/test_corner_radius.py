@@ -5,6 +5,7 @@ its lowest point. The impact law's invariants at any a are in tests/test_impact.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -120,12 +121,16 @@ def test_a_rounded_rim_is_touched_no_earlier_in_both_landing_kernels(through_air
 THICK = Coin(radius=0.012, thickness=0.024 / math.sqrt(3), mass=0.005)  # h/d = 1/√3
 
 
+@functools.lru_cache(maxsize=64)
+def _record(coin, a):
+    """The contact record of ``coin`` with corner radius a (the one the landings build)."""
+    return coin_contact(coin, corner_radius=a, g=G)
+
+
 def _rock(coin, phi, phidot, a):
     """core.bounce.rock for the coin tilted by φ (n = sin φ X + cos φ Z) tipping at φ̇."""
     n = (math.sin(phi), 0.0, math.cos(phi))
-    i1, _ = coin.moments
-    hh = 0.5 * coin.thickness
-    return bounce.rock(n, (0.0, phidot, 0.0), coin.radius, hh, coin.mass, i1, G, a)
+    return bounce.rock(n, (0.0, phidot, 0.0), _record(coin, a))
 
 
 def _centre_of_mass(coin, a, phi):
@@ -212,6 +217,64 @@ def test_rounded_rocking_is_mirror_symmetric_and_continuous_at_sharp_corners(coi
             face = _rock(coin, phi, phidot, a)
             assert _rock(coin, math.pi - phi, -phidot, a) == {0: 1, 1: 0, 2: 2}[face]
         assert _rock(coin, phi, phidot, 1e-12 * hh) == _rock(coin, phi, phidot, 0.0)
+
+
+def _housner_ratio(coin, a, well):
+    """φ̇ after / φ̇ before when the band of a well lands (Housner 1963), from angular momentum
+    about the new pivot P₂, conserved: before, the section turns about the old pivot P₁ at the
+    other end of the band, CM velocity φ̇ ẑ × (CM − P₁), so H = φ̇ (I1 + m (CM − P₁)·(CM − P₂));
+    after, about P₂, H = φ̇′ (I1 + m |CM − P₂|²). A face band has ends ±r′ below the centre
+    of mass at h/2, the edge band ±h′ at r (r′ = r − a, h′ = h/2 − a): the closed forms
+    (I1 + m (h²/4 − r′²)) / (I1 + m (r′² + h²/4)) and (I1 + m (r² − h′²)) / (I1 + m (r² + h′²))."""
+    i1, _ = coin.moments
+    m, r, hh = coin.mass, coin.radius, 0.5 * coin.thickness
+    half, height = (r - a, hh) if well == "face" else (hh - a, r)
+    old = np.array([half, height])  # CM − P₁
+    new = np.array([-half, height])  # CM − P₂
+    ratio = (i1 + m * float(old @ new)) / (i1 + m * float(new @ new))
+    closed = (
+        (i1 + m * (hh**2 - (r - a) ** 2)) / (i1 + m * ((r - a) ** 2 + hh**2))
+        if well == "face"
+        else (i1 + m * (r**2 - (hh - a) ** 2)) / (i1 + m * (r**2 + (hh - a) ** 2))
+    )
+    assert ratio == pytest.approx(closed, rel=1e-14)
+    return ratio
+
+
+@pytest.mark.parametrize("share", [0.0, 0.3, 0.8])
+@pytest.mark.parametrize("well", ["face", "edge"])
+def test_rocking_slap_on_a_band_costs_housners_ratio_at_any_corner_radius(well, share):
+    """The coin rolls on its corner into a well, towards its centre, so the band lands at once
+    (heads: φ = angle/2, φ̇ < 0; edge: φ halfway between the corner and π/2, φ̇ > 0). Its energy
+    E (½ I_P φ̇² + U, I_P and U from the rolling kinematics, not the kernel's closed forms)
+    becomes bottom + (E − bottom) ratio² (bottom: m g h/2 at a face, m g r at the edge), and
+    the coin leaves the well exactly when that exceeds the barrier m g (a + ρ′): the threshold
+    E* = bottom + (barrier − bottom) / ratio², 1e-6 in φ̇ either side. A wrong r′ or h′ in the
+    kernel's ratio (at a > 0) moves it by far more. Beyond it the coin crosses the next corner
+    and the next band's slap stops it in the next well: edge after heads, tails after edge."""
+    # A ratio > 0 (a thinner coin's face ratio is ≤ 0 at a = 0: it stops at once): a coin as
+    # thick as wide at a face, h/d = 1/√3 at the edge.
+    coin = Coin(radius=0.012, thickness=0.024, mass=0.005) if well == "face" else THICK
+    i1, _ = coin.moments
+    m, r, hh = coin.mass, coin.radius, 0.5 * coin.thickness
+    a = share * hh
+    angle = math.atan2(r - a, hh - a)
+    phi, sign, bottom, stays, leaves = (
+        (0.5 * angle, -1.0, m * G * hh, 1, 2)
+        if well == "face"
+        else (0.5 * (angle + 0.5 * math.pi), 1.0, m * G * r, 2, 0)
+    )
+    barrier = m * G * (a + math.hypot(r - a, hh - a))
+    ratio = _housner_ratio(coin, a, well)
+    assert 0.0 < ratio < 1.0
+    target = bottom + (barrier - bottom) / ratio**2
+    d = 1e-6
+    velocity = (_centre_of_mass(coin, a, phi + d) - _centre_of_mass(coin, a, phi - d)) / (2 * d)
+    inertia = float(i1) + m * float(velocity @ velocity)
+    potential = m * G * _centre_of_mass(coin, a, phi)[1]
+    speed = math.sqrt(2.0 * (target - potential) / inertia)
+    assert _rock(coin, phi, sign * speed * (1 - 1e-6), a) == stays
+    assert _rock(coin, phi, sign * speed * (1 + 1e-6), a) == leaves
 
 
 def test_the_rocking_ending_of_a_landing_takes_the_corner_radius():

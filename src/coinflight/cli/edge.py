@@ -192,6 +192,14 @@ def edge(
     if simulate is None and cluster.scheduler is not None:
         raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
     x = parse_numbers(ratios, "--ratios", TABLE_RATIOS)
+    if corner_radius is not None:  # named as toss names it ("--corner-radius: corner radius …")
+        from coinflight.studies.edge import check_ratios, simulated_corner_radius
+
+        check_ratios(x)
+        try:
+            simulated_corner_radius(corner_radius, x)
+        except ValueError as exc:
+            raise ValueError(f"--corner-radius: {exc}") from None
     with cluster.executor() as executor:
         rows = edge_table(x, simulate, the_seed, executor=executor, **setting)
     if json:
@@ -210,6 +218,8 @@ def edge(
             line += f"  {s['p_edge']:>9.4f}  {s['stderr']:>7.4f}  {count:>{width}}"
         typer.echo(line)
     if simulate is not None:
+        if corner_radius:  # rounded rims: said, as the JSON rows say it
+            typer.echo(f"corner radius {corner_radius:g} m")
         typer.echo(f"seed {rows[0]['simulated']['seed']}")
 
 

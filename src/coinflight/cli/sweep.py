@@ -237,7 +237,9 @@ def outcome_models(
     given = [flag for flag, text in {**table, "--ending": ending, **contact}.items()
              if text is not None]  # fmt: skip
     if given and "table" not in kinds:
-        raise ValueError(f"{', '.join(given)} applies to --surface table only")
+        from coinflight.model.surface import TABLE_ONLY
+
+        raise ValueError(f"{', '.join(given)} {TABLE_ONLY}")
     endings = ["rocking"] if ending is None else _names(ending, "--ending")
     resistances = [
         [None] if text is None else parse_numbers_list(text, flag) for flag, text in contact.items()

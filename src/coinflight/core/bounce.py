@@ -125,7 +125,7 @@ def mechanical_energy(v, angular_momentum, n, mass, i1, i3, g, z):
 
 
 @njit(cache=True)
-def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
+def rock(n, omega, c):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
 
     The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
@@ -135,10 +135,11 @@ def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
     ----------
     n, omega : tuple of 3 floats
         Heads normal and angular velocity (lab) when the bounces have died out.
-    radius, hh, mass, i1, g : float
-        The coin (r, h/2, m, I1) and gravity.
-    corner : float
-        The rim's corner radius a, 0 ≤ a ≤ min(h/2, r) (0: sharp corners, Housner's block).
+    c : Contact
+        The contact record (:class:`coinflight.core.contact.Contact`): the coin (r, h/2, m,
+        I1), gravity, the rim's corner radius a, 0 ≤ a ≤ min(h/2, r) (0: sharp corners,
+        Housner's block), and the barrier m g (a + ρ′) between the wells, read from the
+        record (computed once, by :meth:`Contact.build <coinflight.core.contact.Contact>`).
 
     Notes
     -----
@@ -174,14 +175,15 @@ def rock(n, omega, radius, hh, mass, i1, g, corner=0.0):
     (h′ = 0): the edge is the top of the barrier (ratio 1, no well), and the coin never ends
     on its edge.
     """
+    radius, hh, mass, i1, g = c.radius, c.half_thickness, c.mass, c.i1, c.g
+    corner = c.corner_radius
+    barrier = c.barrier  # m g (a + ρ′), the record's
     # The section's inner rectangle (r′, h′) and the corner's centre seen from the centre of
     # mass; a = 0 leaves every expression as Housner's sharp block computed it, to the bit.
     r_in = radius - corner
     h_in = hh - corner
     rho_in2 = r_in * r_in + h_in * h_in
-    rho_in = math.sqrt(rho_in2)
     angle = math.atan2(r_in, h_in)  # the face/edge barriers at |φ| = angle, π − angle
-    barrier = mass * g * (corner + rho_in)
     horizontal = math.hypot(n[0], n[1])
     ndot = cross(omega, n)
     if horizontal > 1e-12:
@@ -471,7 +473,7 @@ def died_out(z, v, n, lm, c):
     if c.ending == CONTACT_ENDING:
         return settle(z, v, n, lm, c)
     omega = angular_velocity(lm, n, c.i1, c.i3)
-    face = rock(n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.g, c.corner_radius)
+    face = rock(n, omega, c)
     return face, Status.SETTLED_ROCKING, 0.0
 
 

@@ -51,6 +51,14 @@ what was given (``rolling resistance 0.0002 m: …``; a distribution of them dra
 too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, command line
 and web alike."""
 
+TABLE_ONLY = (
+    "applies to --surface table only (Surface kind 'table'): a catch in the hand has no bounce, "
+    "rocking or contact phase"
+)
+"""The one refusal of a table's option given to a catch in the hand, after what was given
+(``--ending applies to …`` on the command line, ``ending 'contact', rolling resistance
+0.0001 m applies to …`` from :class:`Surface`)."""
+
 
 class _Unset(float):
     """A resistance the caller did not give: its default value, marked as such.
@@ -119,7 +127,13 @@ class Surface:
         (:mod:`coinflight.core.contact_phase`); assumptions, see
         :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"``
         only: the rocking ending has none, and refuses one given to it (ValueError,
-        :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused.
+        :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch in the hand
+        (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A default is
+        range-checked as a given value is, but marked as not given: ``Surface("table",
+        ending="contact")`` equals ``Surface("table", rolling_resistance=1e-4,
+        ending="contact")``, yet ``dataclasses.replace(..., ending="rocking")`` accepts the
+        first (its resistances are defaults, which the rocking ending keeps unused) and refuses
+        the second (a resistance given).
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
@@ -177,9 +191,13 @@ class Surface:
         for quantity in (ROLLING_RESISTANCE, PIVOTING_RESISTANCE):
             name = quantity.name.replace(" ", "_")
             value = getattr(self, name)
-            if not isinstance(value, _Unset):  # given: checked, and kept as a plain float
-                object.__setattr__(self, name, quantity.check(value))
-                given.append(quantity.describe(getattr(self, name)))
+            checked = quantity.check(value)  # a default too (the _Unset mark is a float)
+            if not isinstance(value, _Unset):  # given: kept as a plain float
+                object.__setattr__(self, name, checked)
+                given.append(quantity.describe(checked))
+        if self.kind == "hand" and (given or self.ending != "rocking"):
+            ending = [f"ending {self.ending!r}"] if self.ending != "rocking" else []
+            raise ValueError(f"{', '.join(ending + given)} {TABLE_ONLY}")
         if given and self.ending != "contact":
             raise ValueError(f"{', '.join(given)}: {ROCKING_HAS_NO_RESISTANCE}")
 
@@ -295,6 +313,7 @@ __all__ = [
     "CONTACT_UNITS",
     "DROP_HEIGHT",
     "ROCKING_HAS_NO_RESISTANCE",
+    "TABLE_ONLY",
     "Drag",
     "Surface",
     "contact_distribution",

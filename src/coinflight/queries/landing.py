@@ -110,7 +110,13 @@ def build_surface(
     ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
     only checked here to belong to a table.
     """
-    from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, ENDINGS, Surface
+    from coinflight.model.surface import (
+        DEFAULT_FRICTION,
+        DEFAULT_RESTITUTION,
+        ENDINGS,
+        TABLE_ONLY,
+        Surface,
+    )
 
     given = {
         "--drop-height": drop_height,
@@ -125,7 +131,7 @@ def build_surface(
     if kind == "hand":
         extra = [flag for flag, value in given.items() if value is not None]
         if extra:
-            raise ValueError(f"{', '.join(extra)} applies to --surface table only")
+            raise ValueError(f"{', '.join(extra)} {TABLE_ONLY}")
     if ending is not None and ending not in ENDINGS:
         raise ValueError(
             f"--ending must be {' or '.join(ENDINGS)} (how a table landing ends once its "
@@ -225,8 +231,10 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     count between 0 and landing.MAX_BOUNCES."""
     if bounces is None:
         return
+    from coinflight.model.surface import TABLE_ONLY
+
     if surface.kind != "table":
-        raise ValueError("--bounces applies to --surface table only")
+        raise ValueError(f"--bounces {TABLE_ONLY}")
     if surface.ending == "contact":
         raise ValueError(
             "--bounces stops each landing at a bounce, before its ending, so --ending contact "

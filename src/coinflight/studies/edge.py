@@ -162,9 +162,7 @@ def simulate_edge(
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import TableLanding
 
-    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
-    if x.ndim != 1:
-        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    x = check_ratios(ratios)
     n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)
     corner = _corner_radius(corner_radius, float(np.min(x)))
     resistances = {
@@ -239,6 +237,20 @@ def simulate_edge(
     return out
 
 
+def check_ratios(ratios: ArrayLike) -> NDArray[np.float64]:
+    """The ratios h/d as a 1-D array, each inside :data:`SIM_RATIOS`, else ValueError."""
+    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
+    if x.ndim != 1:
+        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    return x
+
+
+def simulated_corner_radius(value: object, ratios: ArrayLike) -> float:
+    """The corner radius ``value`` (m) of the simulated coins of these ratios, checked as
+    :func:`simulate_edge` checks it (the thinnest coin bounds it), else ValueError."""
+    return _corner_radius(value, float(np.min(check_ratios(ratios))))
+
+
 def _corner_radius(value: object, thinnest: float) -> float:
     """The simulated coins' corner radius ``value`` (m), checked against the thinnest coin's
     half thickness (ratio ``thinnest`` × :data:`SIM_DIAMETER` / 2) and the coins' radius
@@ -292,9 +304,7 @@ def edge_table(
     >>> [round(row["p_edge_dynamic"], 4) for row in edge_table([0.577, 1.0])]
     [0.3332, 0.5]
     """
-    x = np.atleast_1d(v.in_range("thickness/diameter ratio", ratios, *SIM_RATIOS))
-    if x.ndim != 1:
-        raise ValueError(f"ratios must be a list of numbers, got shape {x.shape}")
+    x = check_ratios(ratios)
     if n is None and (setting or seed is not None):
         given = ", ".join(["seed"] * (seed is not None) + sorted(setting))
         raise ValueError(f"{given} set the simulation: give the number of tosses n as well")
@@ -321,8 +331,10 @@ def edge_table(
 
 __all__ = [
     "MODELS",
+    "check_ratios",
     "edge_probability",
     "edge_table",
     "ratio_for",
     "simulate_edge",
+    "simulated_corner_radius",
 ]

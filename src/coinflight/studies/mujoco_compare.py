@@ -86,6 +86,8 @@ from numpy.typing import NDArray
 from coinflight import _validation as v
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from coinflight.model.coin import Coin
 
 TIMESTEP = 1e-4
@@ -568,20 +570,38 @@ def _calibrated(
     return m, zeta, e_mujoco, by_speed
 
 
-def _finish(
-    carried: _Carried,
-    t0: float,
-    workers: int,
-    calibration: tuple[Any, float, float, dict[float, float]],
+def _rollout(
+    coin: Coin,
+    n: int,
+    restitution: float,
+    friction: float,
+    calibration_speed: float,
+    g: float,
+    threads: int | None,
     condim: int,
     limit: float,
     torsional: float,
     rolling: float,
     integrator: str,
+    states: Callable[[Any, Any], NDArray[np.float64]],
+    clocks: NDArray[np.float64],
+    horizon: float,
 ) -> MujocoRun:
+    """What :func:`run` and :func:`run_from` share: the limit and the work bound checked
+    before anything is computed, the model calibrated at ``calibration_speed`` (m/s), one
+    MjData per worker, the ``n`` initial ``states(model, data)`` carried (:func:`_carry`, from
+    ``clocks`` s, for at most ``horizon`` s before a first contact) and the run reported."""
     import mujoco
 
-    _, zeta, e_mujoco, by_speed = calibration
+    t0 = time.perf_counter()
+    check_limit(limit)
+    bound([n], limit, integrator)
+    m, zeta, e_mujoco, by_speed = _calibrated(
+        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator
+    )
+    workers = threads or os.cpu_count() or 1
+    datas = [mujoco.MjData(m) for _ in range(workers)]
+    carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, limit, horizon)
     return MujocoRun(
         carried.first,
         carried.rest,
@@ -627,26 +647,18 @@ def run(
     (:attr:`MujocoRun.moving`), never dropped. The work (:func:`seconds_estimate`) is bounded
     before anything is computed. ImportError when MuJoCo is not installed.
     """
-    import mujoco
-
-    t0 = time.perf_counter()
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
     n = len(v0)
-    check_limit(limit)
     vmax = float(v0.max()) if n else 0.0
     flight = vmax / g + math.sqrt(2.0 * (drop_height + vmax * vmax / (2.0 * g)) / g)
-    bound([n], limit, integrator)
-    landing_speed = math.sqrt(float(np.mean(v0)) ** 2 + 2.0 * g * drop_height)
-    calibration = _calibrated(
-        coin, restitution, friction, landing_speed, g, condim, torsional, rolling, integrator
-    )
-    m = calibration[0]
-    workers = threads or os.cpu_count() or 1
-    datas = [mujoco.MjData(m) for _ in range(workers)]
-    initial = _launch_states(m, datas[0], omega, v0, drop_height)
-    carried = _carry(m, datas, initial, v0 / g, coin, g, limit, flight + 0.5)
-    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
+    mean = float(np.mean(v0)) if n else 0.0
+    landing_speed = math.sqrt(mean**2 + 2.0 * g * drop_height)
+    return _rollout(
+        coin, n, restitution, friction, landing_speed, g, threads, condim, limit, torsional,
+        rolling, integrator, lambda m, data: _launch_states(m, data, omega, v0, drop_height),
+        v0 / g, flight + 0.5,
+    )  # fmt: skip
 
 
 def _quaternion_to(n: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -682,26 +694,33 @@ def run_from(
     (coinflight's state at its hand-off to the contact phase, for example), carried as in
     :func:`run` (the first contact is their first touch of the plane; the contact damping
     calibrated at ``calibration_speed``, m/s)."""
-    import mujoco
-
-    t0 = time.perf_counter()
     z = np.asarray(height, dtype=float).reshape(-1)
     vel = np.asarray(velocity, dtype=float).reshape(-1, 3)
     nrm = np.asarray(normal, dtype=float).reshape(-1, 3)
     nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
     w_lab = np.asarray(omega, dtype=float).reshape(-1, 3)
-    check_limit(limit)
-    bound([len(z)], limit, integrator)
-    calibration = _calibrated(
-        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator
-    )
-    m = calibration[0]
-    workers = threads or os.cpu_count() or 1
-    datas = [mujoco.MjData(m) for _ in range(workers)]
+    return _rollout(
+        coin, len(z), restitution, friction, calibration_speed, g, threads, condim, limit,
+        torsional, rolling, integrator, lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab),
+        np.zeros(len(z)), 1.0,
+    )  # fmt: skip
+
+
+def _placed_states(
+    m: Any,
+    data: Any,
+    z: NDArray[np.float64],
+    vel: NDArray[np.float64],
+    nrm: NDArray[np.float64],
+    w_lab: NDArray[np.float64],
+) -> NDArray[np.float64]:
+    """MuJoCo states (mjSTATE_FULLPHYSICS) of coins placed as :func:`run_from` gives them
+    (centre height, lab velocity, unit heads normal, lab angular velocity)."""
+    import mujoco
+
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
     initial = np.empty((len(z), mujoco.mj_stateSize(m, spec)))
     quats = _quaternion_to(nrm)
-    data = datas[0]
     rot = np.empty(9)
     for k in range(len(z)):
         mujoco.mj_resetData(m, data)
@@ -711,8 +730,7 @@ def run_from(
         data.qvel[:3] = vel[k]
         data.qvel[3:6] = rot.reshape(3, 3).T @ w_lab[k]  # body frame
         mujoco.mj_getState(m, data, initial[k], spec)
-    carried = _carry(m, datas, initial, np.zeros(len(z)), coin, g, limit, 1.0)
-    return _finish(carried, t0, workers, calibration, condim, limit, torsional, rolling, integrator)
+    return initial
 
 
 __all__ = [
