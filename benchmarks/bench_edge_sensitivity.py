@@ -45,23 +45,12 @@ def main() -> None:
     cp.SLIP_SPEED *= args.slip_factor  # before any kernel is compiled
     import bench_contact
     from coinflight.core.outcome import EDGE, HEADS, Status
-    from coinflight.model.surface import Surface
     from coinflight.outcomes.table import land
-    from coinflight.probability import streams
     from coinflight.studies import landing as study
 
     e, mu = 0.5, 0.3
-    dist = study.EDGE_TOSSES["vigorous"]()
-    omega, v0 = study._draw(dist, args.n, streams.child(streams.seed_sequence(args.seed), 5))
-    surface = Surface(
-        "table",
-        study.DROP_HEIGHT,
-        e,
-        mu,
-        rolling_resistance=study.EDGE_RESISTANCE,
-        pivoting_resistance=study.EDGE_RESISTANCE,
-        ending="contact",
-    )
+    dist, omega, v0 = study.edge_draw(args.n, args.seed)
+    surface = study.edge_surface(e, mu)
     out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
     handed = out.status != Status.SETTLED_ENERGY
     c = bench_contact.contact(e, mu)

@@ -38,7 +38,6 @@ from coinflight.core import contact_phase as cp
 from coinflight.core.outcome import EDGE
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import land
-from coinflight.probability import streams
 from coinflight.studies import landing as study
 from coinflight.studies import mujoco_compare
 
@@ -184,22 +183,13 @@ def handoff_only(args: argparse.Namespace, pairs: tuple[tuple[float, ...], ...])
     """coinflight's contact ending and MuJoCo from coinflight's hand-off states only."""
     from coinflight.core.outcome import Status
 
-    dist = study.EDGE_TOSSES[args.tosses]()
-    omega, v0 = study._draw(dist, args.n, streams.child(streams.seed_sequence(args.seed), 5))
+    dist, omega, v0 = study.edge_draw(args.n, args.seed, args.tosses)
     print(
         f"{args.n} {args.tosses} tosses (seed {args.seed}), from coinflight's hand-off states "
         f"only; load {os.getloadavg()[0]:.1f}"
     )
     for e, mu in pairs:
-        surface = Surface(
-            "table",
-            study.DROP_HEIGHT,
-            e,
-            mu,
-            rolling_resistance=study.EDGE_RESISTANCE,
-            pivoting_resistance=study.EDGE_RESISTANCE,
-            ending="contact",
-        )
+        surface = study.edge_surface(e, mu)
         out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
         handed = out.status != Status.SETTLED_ENERGY
         print(f"\ne = {e:g}, μ = {mu:g}: handed {handed.sum()} ({handed.mean():.1%})")
@@ -259,8 +249,7 @@ def main() -> None:
         threads=args.threads,
     )
     wall, cpu = time.perf_counter() - t0, time.process_time() - cpu0
-    dist = study.EDGE_TOSSES[check.tosses]()
-    omega, v0 = study._draw(dist, check.n, streams.child(streams.seed_sequence(check.seed), 5))
+    _, omega, v0 = study.edge_draw(check.n, check.seed, check.tosses)
     print(
         f"{check.n} {check.tosses} tosses (seed {check.seed}), resistances "
         f"{check.rolling_resistance:g} m, MuJoCo {check.integrator}, condim "

@@ -648,6 +648,32 @@ class EdgeCheck:
     seconds: float
 
 
+def edge_draw(
+    n: int, seed: streams.SeedLike, tosses: str = "vigorous"
+) -> tuple[TossDistribution, NDArray[np.float64], NDArray[np.float64]]:
+    """The edge check's ``n`` tosses of kind ``tosses`` (:data:`EDGE_TOSSES`) from ``seed`` (an
+    integer, or the root SeedSequence itself, so that a fresh seed is drawn once): (distribution,
+    ω (n, 3) rad/s, v0 (n,) m/s), the same stream :func:`edge_check` draws (benchmarks that
+    start from these tosses call this, not a copy of the stream's number)."""
+    dist = EDGE_TOSSES[tosses]()
+    omega, v0 = _draw(dist, n, streams.child(streams.seed_sequence(seed), _EDGES))
+    return dist, omega, v0
+
+
+def edge_surface(e: float, mu: float, resistance: float = EDGE_RESISTANCE) -> Surface:
+    """The edge check's table: restitution ``e``, friction ``mu``, rolling and pivoting
+    resistance ``resistance`` (m), the 3-D contact ending, dropped from :data:`DROP_HEIGHT`."""
+    return Surface(
+        "table",
+        DROP_HEIGHT,
+        e,
+        mu,
+        rolling_resistance=resistance,
+        pivoting_resistance=resistance,
+        ending="contact",
+    )
+
+
 def edge_check(
     n: int,
     seed: streams.SeedLike,
@@ -691,21 +717,12 @@ def edge_check(
     mujoco_compare.check_limit(limit)
     mujoco_compare.bound([n] * len(pairs), limit, integrator)
     root = streams.seed_sequence(seed)
-    dist = EDGE_TOSSES[tosses]()
+    dist, omega, v0 = edge_draw(n, root, tosses)
     if dist.coin.corner_radius != 0.0:  # pragma: no cover - the preset is sharp
         raise ValueError("the edge check compares sharp rims")
-    omega, v0 = _draw(dist, n, streams.child(root, _EDGES))
     cells = []
     for e, mu in pairs:
-        surface = Surface(
-            "table",
-            DROP_HEIGHT,
-            e,
-            mu,
-            rolling_resistance=resistance,
-            pivoting_resistance=resistance,
-            ending="contact",
-        )
+        surface = edge_surface(e, mu, resistance)
         ours, first, status = _ending_run(dist, omega, v0, surface)
         handed = status != Status.SETTLED_ENERGY
         theirs = mujoco_compare.run(
@@ -796,6 +813,8 @@ __all__ = [
     "contact_maps",
     "dead_landings",
     "edge_check",
+    "edge_draw",
+    "edge_surface",
     "edge_tosses",
     "map_tosses",
     "mujoco_comparison",
