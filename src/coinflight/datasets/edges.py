@@ -7,7 +7,8 @@ beside this module; the provenance of each row is in ``README.md``) into frozen
 What is here, and what is not (searched 2026-11-23, see ``README.md``):
 
 - ``standup_maths_2018``: hand flips, 1,000 per cylinder, at h/d = 1/(2√2) and 1/√3. Only the
-  edge fractions are known (from secondary notes), not the counts: weak provenance.
+  edge fractions (0.132, 0.410) are known, from a secondary table, not the counts: weak
+  provenance.
 - ``murray_teare_1993``: the US nickel's "about 1 in 6000", a model extrapolation
   (``kind="extrapolated"``), not a measurement.
 - Not here because their numbers could not be read: Murray & Teare's own drop experiments,
@@ -18,7 +19,7 @@ Examples
 --------
 >>> rows = edge_experiments(kind="measured")
 >>> [(r.source, round(r.ratio, 3), r.n, r.fraction) for r in rows]
-[('standup_maths_2018', 0.354, 1000, 0.13), ('standup_maths_2018', 0.577, 1000, 0.41)]
+[('standup_maths_2018', 0.354, 1000, 0.132), ('standup_maths_2018', 0.577, 1000, 0.41)]
 """
 
 from __future__ import annotations
@@ -40,7 +41,8 @@ KINDS: tuple[str, ...] = ("measured", "extrapolated")
 EDGE_SOURCES: dict[str, str] = {
     "standup_maths_2018": (
         "Parker, M. and Hunt, H. (2018). How thick is a three-sided coin? Stand-up Maths "
-        "(YouTube video). Numbers taken from secondary descriptions; the video was not read."
+        "(YouTube video). Fractions as tabulated in the README of github.com/iaroslav-ai/"
+        "coin-experiment (2018); the video was not read."
     ),
     "murray_teare_1993": (
         "Murray, D. B. and Teare, S. W. (1993). Probability of a tossed coin landing on edge. "
