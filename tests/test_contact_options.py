@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 
 from _cli import one_line_error
 from coinflight import Coin, Toss
+from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -43,7 +44,6 @@ from coinflight.outcomes.table import (
     land,
 )
 from coinflight.probability import estimate
-from coinflight.queries.landing import DEAD_CONTACT
 from coinflight.web import create_app
 
 runner = CliRunner()
@@ -237,6 +237,30 @@ def test_bad_contact_options_are_one_line_exit_2(args, message):
     said = one_line_error(*TOSS, *TABLE, *args)
     if message is not None:
         assert said == message
+
+
+def test_the_contact_ending_on_a_dead_surface_is_refused_in_one_wording_everywhere():
+    """--ending contact with restitution 0 (which no landing would reach): the command line
+    (toss, probability, edge with its default dead landings) exits 2 with the one line of
+    _validation.DEAD_CONTACT, and the library (simulate_edge) raises ValueError with the same
+    words; a positive restitution, or the rocking ending, is no refusal."""
+    from coinflight.studies.edge import simulate_edge
+
+    assert DEAD_CONTACT.startswith("the 3-D contact ending (ending='contact', --ending contact)")
+    for args in (
+        [*TOSS, *CONTACT, "--restitution", "0"],
+        ["probability", "--omega-x", "150:300", "--flight-time", "0.4:0.6", *CONTACT,
+         "--restitution", "0", "--method", "monte-carlo", "--n", "10"],
+        ["edge", "--simulate", "10", "--ending", "contact"],  # its default restitution is 0
+        ["edge", "--simulate", "10", "--ending", "contact", "--restitution", "0"],
+    ):  # fmt: skip
+        assert one_line_error(*args) == DEAD_CONTACT
+    for restitution in (0.0, 0):
+        with pytest.raises(ValueError, match=f"^{re.escape(DEAD_CONTACT)}$"):
+            simulate_edge([0.1], 10, 1, restitution=restitution, ending="contact")
+    with pytest.raises(ValueError, match=f"^{re.escape(DEAD_CONTACT)}$"):
+        simulate_edge([0.1], 10, 1, ending="contact")  # the dead default
+    assert len(simulate_edge([0.1], 2, 1, restitution=0.0)) == 1  # the rocking ending: dead ok
 
 
 @pytest.mark.parametrize(
@@ -534,6 +558,7 @@ def test_the_api_gives_the_command_lines_object(client):
         ("ending=contact&rolling_resistance=-1", ["--ending", "contact", "--rolling-resistance",
                                                   "-1"]),
         ("pivoting_resistance=1e-4", ["--pivoting-resistance", "1e-4"]),
+        ("ending=contact&restitution=0", ["--ending", "contact", "--restitution", "0"]),
     ],
 )  # fmt: skip
 def test_the_api_refuses_in_the_command_lines_words(client, query, args):

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from coinflight import _validation as v
 from coinflight.queries.values import AirArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -77,14 +78,6 @@ def single_values(
             "integrate over it"
         )
     return {name: d.mean for name, d in spread.items()}
-
-
-DEAD_CONTACT = (
-    "--ending contact acts on landings that bounce: with --restitution 0 every landing ends "
-    "dead at its first contact and never reaches it; give a restitution above 0 (or a "
-    "distribution of it), or drop --ending"
-)
-"""The refusal of the contact ending on a dead surface (one line)."""
 
 
 def build_surface(
@@ -167,8 +160,9 @@ def build_surface(
 
 def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
     """:func:`build_surface` for the table options as typed (every one of them); ValueError
-    (:data:`DEAD_CONTACT`) for the contact ending on a dead surface, which it would never reach
-    (a sweep's grid may hold such a row: it is then a dead landing)."""
+    (:data:`coinflight._validation.DEAD_CONTACT`) for the contact ending on a dead surface,
+    which it would never reach (a sweep's grid may hold such a row: it is then a dead
+    landing)."""
     surface = build_surface(
         table.surface,
         table.drop_height,
@@ -181,8 +175,7 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
         pivoting_resistance=table.pivoting_resistance,
         corner_radius=table.corner_radius,
     )
-    if surface.ending == "contact" and surface.restitution == 0.0:
-        raise ValueError(DEAD_CONTACT)
+    v.no_dead_contact(surface.ending, surface.restitution)
     return surface
 
 
