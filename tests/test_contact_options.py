@@ -294,6 +294,66 @@ def test_a_catch_in_the_hand_refuses_the_tables_options_in_the_command_lines_wor
     )
 
 
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"restitution": 0.5}, "restitution 0.5"),  # the default's value, given: refused
+        ({"friction": 0.3}, "friction 0.3"),
+        ({"restitution": 0.0, "friction": 1.0}, "restitution 0, friction 1"),
+        ({"friction": 0.2, "ending": "contact", "rolling_resistance": 1e-3},
+         "ending 'contact', friction 0.2, rolling resistance 0.001 m"),
+    ],
+)  # fmt: skip
+def test_a_catch_in_the_hand_refuses_a_restitution_or_friction_given_to_it(options, said):
+    """A restitution or friction given to a catch in the hand (which has no contact) is refused
+    as the command line refuses --restitution with --surface hand (TABLE_ONLY), not kept unused;
+    the defaults are marked as not given: a hand surface, and a copy or pickle of it, is no
+    refusal, and a table's defaults equal the same values given."""
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        Surface("hand", **options)
+    hand = Surface("hand")
+    for copy in (
+        hand,
+        pickle.loads(pickle.dumps(hand)),
+        dataclasses.replace(hand, ending="rocking"),
+    ):
+        assert (copy.restitution, copy.friction) == (0.5, 0.3)
+    given = Surface("table", 0.8, restitution=0.5, friction=0.3)
+    assert Surface("table", 0.8) == given and repr(Surface("table", 0.8)) == repr(given)
+    said = "restitution 0.5, friction 0.3 " + TABLE_ONLY
+    with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
+        dataclasses.replace(given, kind="hand")  # a value given stays given in a copy
+    assert dataclasses.replace(Surface("table"), kind="hand") == hand  # the defaults do not
+
+
+def test_the_command_line_refuses_a_restitution_or_friction_with_the_hand():
+    """coinflight toss --surface hand --restitution/--friction: exit 2, one line; without them
+    the hand's toss is unchanged (its JSON has no contact parameter)."""
+    for flag, value in (("--restitution", "0.5"), ("--friction", "0.3")):
+        said = one_line_error(*TOSS, "--surface", "hand", flag, value)
+        assert said == f"{flag} {TABLE_ONLY}"
+    out = _json(*TOSS, "--surface", "hand")
+    assert "restitution" not in out and "friction" not in out
+
+
+def test_a_tables_default_restitution_and_friction_land_as_the_same_values_given():
+    """The marked defaults reach the kernels as the plain numbers: the same landings, bit for
+    bit, as with restitution 0.5 and friction 0.3 given (both endings)."""
+    rng = np.random.default_rng(5)
+    omega = np.column_stack([rng.uniform(150, 300, 200), rng.uniform(-30, 30, (200, 2))])
+    v0 = rng.uniform(1.5, 3.0, 200)
+    coin = Coin.preset("us-nickel")
+    for ending in ("rocking", "contact"):
+        default = land(coin, omega[:40] if ending == "contact" else omega,
+                       v0[:40] if ending == "contact" else v0, 1.0, 9.81,
+                       Surface("table", 0.8, ending=ending))  # fmt: skip
+        given = land(coin, omega[:40] if ending == "contact" else omega,
+                     v0[:40] if ending == "contact" else v0, 1.0, 9.81,
+                     Surface("table", 0.8, 0.5, 0.3, ending=ending))  # fmt: skip
+        for name in ("face", "status", "bounces", "first_contact", "settle_time"):
+            np.testing.assert_array_equal(getattr(default, name), getattr(given, name))
+
+
 def test_toss_json_reports_the_contact_ending_and_equals_the_library():
     out = _json(
         *TOSS, *CONTACT, "--coin", "us-nickel", "--rolling-resistance", "2e-4",

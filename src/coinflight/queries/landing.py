@@ -103,13 +103,7 @@ def build_surface(
     ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
     only checked here to belong to a table.
     """
-    from coinflight.model.surface import (
-        DEFAULT_FRICTION,
-        DEFAULT_RESTITUTION,
-        ENDINGS,
-        TABLE_ONLY,
-        Surface,
-    )
+    from coinflight.model.surface import ENDINGS, TABLE_ONLY, Surface
 
     given = {
         "--drop-height": drop_height,
@@ -145,16 +139,16 @@ def build_surface(
         if ranged
         else single_values(spread)
     )
-    from coinflight.outcomes.table import RESISTANCES
+    from coinflight.outcomes.table import PER_TOSS
 
-    resistances = {name: fixed[name] for name in RESISTANCES if name in fixed}  # those given
+    # only the contact parameters given: the surface keeps its defaults marked as not given
+    # (a catch in the hand refuses a given one; the rocking ending a given resistance)
+    given_values = {name: fixed[name] for name in PER_TOSS if name in fixed}
     return Surface(
         kind,  # type: ignore[arg-type]
         drop_height=0.0 if drop_height is None else drop_height,
-        restitution=fixed.get("restitution", DEFAULT_RESTITUTION),
-        friction=fixed.get("friction", DEFAULT_FRICTION),
         ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
-        **resistances,
+        **given_values,
     )
 
 
