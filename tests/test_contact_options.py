@@ -417,8 +417,9 @@ def test_probability_with_the_contact_ending_is_reproducible_from_its_seed():
 def test_probability_refuses_a_default_size_the_contact_ending_would_run_for_minutes():
     said = one_line_error(*PROBABILITY, "--method", "monte-carlo")
     assert said.startswith(
-        "with --ending contact each landing is carried through the 3-D contact phase (about 300 "
-        "tosses per second), so the default size of --method monte-carlo would run for minutes"
+        "with --ending contact each landing is carried through the 3-D contact phase (about "
+        f"{CONTACT_TOSSES_PER_SECOND:,.0f} tosses per second), so the default size of --method "
+        "monte-carlo would run for minutes"
     )
 
 
