@@ -8,6 +8,7 @@ import math
 import pytest
 from typer.testing import CliRunner
 
+from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.studies.edge import edge_probability
 
@@ -179,7 +180,7 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         ),
         (
             ["--simulate", "10", "--ending", "contact"],
-            "the contact ending acts on landings that bounce: with restitution 0 (the default)",
+            DEAD_CONTACT,
         ),
         (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
         (

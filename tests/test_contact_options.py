@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 
 from _cli import one_line_error
 from coinflight import Coin, Toss
+from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -43,7 +44,6 @@ from coinflight.outcomes.table import (
     land,
 )
 from coinflight.probability import estimate
-from coinflight.queries.landing import DEAD_CONTACT
 from coinflight.web import create_app
 
 runner = CliRunner()
@@ -239,6 +239,30 @@ def test_bad_contact_options_are_one_line_exit_2(args, message):
         assert said == message
 
 
+def test_the_contact_ending_on_a_dead_surface_is_refused_in_one_wording_everywhere():
+    """--ending contact with restitution 0 (which no landing would reach): the command line
+    (toss, probability, edge with its default dead landings) exits 2 with the one line of
+    _validation.DEAD_CONTACT, and the library (simulate_edge) raises ValueError with the same
+    words; a positive restitution, or the rocking ending, is no refusal."""
+    from coinflight.studies.edge import simulate_edge
+
+    assert DEAD_CONTACT.startswith("the 3-D contact ending (ending='contact', --ending contact)")
+    for args in (
+        [*TOSS, *CONTACT, "--restitution", "0"],
+        ["probability", "--omega-x", "150:300", "--flight-time", "0.4:0.6", *CONTACT,
+         "--restitution", "0", "--method", "monte-carlo", "--n", "10"],
+        ["edge", "--simulate", "10", "--ending", "contact"],  # its default restitution is 0
+        ["edge", "--simulate", "10", "--ending", "contact", "--restitution", "0"],
+    ):  # fmt: skip
+        assert one_line_error(*args) == DEAD_CONTACT
+    for restitution in (0.0, 0):
+        with pytest.raises(ValueError, match=f"^{re.escape(DEAD_CONTACT)}$"):
+            simulate_edge([0.1], 10, 1, restitution=restitution, ending="contact")
+    with pytest.raises(ValueError, match=f"^{re.escape(DEAD_CONTACT)}$"):
+        simulate_edge([0.1], 10, 1, ending="contact")  # the dead default
+    assert len(simulate_edge([0.1], 2, 1, restitution=0.0)) == 1  # the rocking ending: dead ok
+
+
 @pytest.mark.parametrize(
     "args", [["--ending", "contact"], ["--corner-radius", "1e-4"], ["--rolling-resistance", "0"]]
 )
@@ -268,6 +292,66 @@ def test_a_catch_in_the_hand_refuses_the_tables_options_in_the_command_lines_wor
     assert one_line_error(*TOSS, "--surface", "hand", "--ending", "contact") == (
         f"--ending {TABLE_ONLY}"
     )
+
+
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"restitution": 0.5}, "restitution 0.5"),  # the default's value, given: refused
+        ({"friction": 0.3}, "friction 0.3"),
+        ({"restitution": 0.0, "friction": 1.0}, "restitution 0, friction 1"),
+        ({"friction": 0.2, "ending": "contact", "rolling_resistance": 1e-3},
+         "ending 'contact', friction 0.2, rolling resistance 0.001 m"),
+    ],
+)  # fmt: skip
+def test_a_catch_in_the_hand_refuses_a_restitution_or_friction_given_to_it(options, said):
+    """A restitution or friction given to a catch in the hand (which has no contact) is refused
+    as the command line refuses --restitution with --surface hand (TABLE_ONLY), not kept unused;
+    the defaults are marked as not given: a hand surface, and a copy or pickle of it, is no
+    refusal, and a table's defaults equal the same values given."""
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        Surface("hand", **options)
+    hand = Surface("hand")
+    for copy in (
+        hand,
+        pickle.loads(pickle.dumps(hand)),
+        dataclasses.replace(hand, ending="rocking"),
+    ):
+        assert (copy.restitution, copy.friction) == (0.5, 0.3)
+    given = Surface("table", 0.8, restitution=0.5, friction=0.3)
+    assert Surface("table", 0.8) == given and repr(Surface("table", 0.8)) == repr(given)
+    said = "restitution 0.5, friction 0.3 " + TABLE_ONLY
+    with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
+        dataclasses.replace(given, kind="hand")  # a value given stays given in a copy
+    assert dataclasses.replace(Surface("table"), kind="hand") == hand  # the defaults do not
+
+
+def test_the_command_line_refuses_a_restitution_or_friction_with_the_hand():
+    """coinflight toss --surface hand --restitution/--friction: exit 2, one line; without them
+    the hand's toss is unchanged (its JSON has no contact parameter)."""
+    for flag, value in (("--restitution", "0.5"), ("--friction", "0.3")):
+        said = one_line_error(*TOSS, "--surface", "hand", flag, value)
+        assert said == f"{flag} {TABLE_ONLY}"
+    out = _json(*TOSS, "--surface", "hand")
+    assert "restitution" not in out and "friction" not in out
+
+
+def test_a_tables_default_restitution_and_friction_land_as_the_same_values_given():
+    """The marked defaults reach the kernels as the plain numbers: the same landings, bit for
+    bit, as with restitution 0.5 and friction 0.3 given (both endings)."""
+    rng = np.random.default_rng(5)
+    omega = np.column_stack([rng.uniform(150, 300, 200), rng.uniform(-30, 30, (200, 2))])
+    v0 = rng.uniform(1.5, 3.0, 200)
+    coin = Coin.preset("us-nickel")
+    for ending in ("rocking", "contact"):
+        default = land(coin, omega[:40] if ending == "contact" else omega,
+                       v0[:40] if ending == "contact" else v0, 1.0, 9.81,
+                       Surface("table", 0.8, ending=ending))  # fmt: skip
+        given = land(coin, omega[:40] if ending == "contact" else omega,
+                     v0[:40] if ending == "contact" else v0, 1.0, 9.81,
+                     Surface("table", 0.8, 0.5, 0.3, ending=ending))  # fmt: skip
+        for name in ("face", "status", "bounces", "first_contact", "settle_time"):
+            np.testing.assert_array_equal(getattr(default, name), getattr(given, name))
 
 
 def test_toss_json_reports_the_contact_ending_and_equals_the_library():
@@ -333,8 +417,9 @@ def test_probability_with_the_contact_ending_is_reproducible_from_its_seed():
 def test_probability_refuses_a_default_size_the_contact_ending_would_run_for_minutes():
     said = one_line_error(*PROBABILITY, "--method", "monte-carlo")
     assert said.startswith(
-        "with --ending contact each landing is carried through the 3-D contact phase (about 300 "
-        "tosses per second), so the default size of --method monte-carlo would run for minutes"
+        "with --ending contact each landing is carried through the 3-D contact phase (about "
+        f"{CONTACT_TOSSES_PER_SECOND:,.0f} tosses per second), so the default size of --method "
+        "monte-carlo would run for minutes"
     )
 
 
@@ -370,15 +455,15 @@ def test_resistance_distributions_are_drawn_toss_by_toss_in_the_contact_ending_o
 
 
 def test_the_work_bounds_know_the_contact_endings_rate():
-    """Measured (benchmarks/bench_bounce.py --contact, this session, load 3.5): 466 landings a
-    second drag-free with the contact ending against 45,520 rocking; through air 164 against
-    6,807 (load 5-8). The bounds take 300 and 150 a second."""
+    """Measured (benchmarks/bench_bounce.py --contact-rates, the constants' docstrings): the
+    contact ending lands 180-230 a second drag-free at a load of 6-10, through air 164 at 5-8;
+    the bounds take 150 and 150 a second (at or below the loaded rates)."""
     table = Surface("table", 0.8)
     contact = Surface("table", 0.8, ending="contact")
     drag = Drag(coefficient=1.17)
     assert TableLanding(table).rate == BOUNCING_TOSSES_PER_SECOND
     assert TableLanding(table, drag).rate == AIR_LANDINGS_PER_SECOND
-    assert TableLanding(contact).rate == CONTACT_TOSSES_PER_SECOND == 300.0
+    assert TableLanding(contact).rate == CONTACT_TOSSES_PER_SECOND == 150.0
     assert TableLanding(contact, drag).rate == CONTACT_AIR_LANDINGS_PER_SECOND == 150.0
     # a bounce limit or a dead landing never reaches the contact phase
     assert TableLanding(contact, max_bounces=3).rate == BOUNCING_TOSSES_PER_SECOND
@@ -388,8 +473,8 @@ def test_the_work_bounds_know_the_contact_endings_rate():
 
 def test_tosses_with_their_own_contact_parameters_are_bounded_at_their_own_rate():
     """Measured (benchmarks/bench_bounce.py --contact-rates 1000, CONTACT_PER_TOSS_PER_SECOND's
-    docstring): with each toss its own e, μ the contact ending lands 0.49-0.58 as many tosses a
-    second as on one surface; the bounds take 150 against 300. A spread that cannot reach the
+    docstring): with each toss its own e, μ the contact ending lands 0.49-0.62 as many tosses a
+    second as on one surface; the bounds take 75 against 150. A spread that cannot reach the
     contact phase (a bounce limit, every toss dead, the rocking ending) keeps the model's rate."""
     from coinflight.probability import grid, monte_carlo, qmc
 
@@ -397,7 +482,7 @@ def test_tosses_with_their_own_contact_parameters_are_bounded_at_their_own_rate(
     own_e = tosses.with_contact(restitution=Uniform(0.2, 0.8))
     own_ell = tosses.with_contact(rolling_resistance=Uniform(1e-5, 1e-3))
     contact = TableLanding(Surface("table", 0.8, ending="contact"))
-    assert CONTACT_PER_TOSS_PER_SECOND == 150.0
+    assert CONTACT_PER_TOSS_PER_SECOND == 75.0
     assert contact.rate_for(tosses) == contact.rate_for(None) == CONTACT_TOSSES_PER_SECOND
     assert contact.rate_for(own_e) == contact.rate_for(own_ell) == CONTACT_PER_TOSS_PER_SECOND
     dead = TableLanding(Surface("table", 0.8, restitution=0.0, ending="contact"))
@@ -405,44 +490,44 @@ def test_tosses_with_their_own_contact_parameters_are_bounded_at_their_own_rate(
     assert dead.rate_for(own_ell) == BOUNCING_TOSSES_PER_SECOND  # every toss lands dead
     for fast in (TableLanding(Surface("table", 0.8)), TableLanding(contact.surface, max_bounces=2)):
         assert fast.rate_for(own_e) == BOUNCING_TOSSES_PER_SECOND
-    # 720,000 tosses: 40 min on one surface, 80 min (beyond the hour) each with its own e
-    n = 720_000
+    # 360,000 tosses: 40 min on one surface, 80 min (beyond the hour) each with its own e
+    n = 360_000
     monte_carlo.check_work(n, contact, tosses)
-    with pytest.raises(ValueError, match=re.escape("about 80 min at 1.5e+02 tosses/s")):
+    with pytest.raises(ValueError, match=re.escape("about 80 min at 75 tosses/s")):
         monte_carlo.check_work(n, contact, own_e)
-    assert monte_carlo.ESTIMATOR.work(own_e, 1000, contact) == pytest.approx(1000 / 150.0)
+    assert monte_carlo.ESTIMATOR.work(own_e, 1000, contact) == pytest.approx(1000 / 75.0)
     assert qmc.rate(contact, own_e) < qmc.rate(contact, tosses) / 1.99
-    with pytest.raises(ValueError, match=re.escape("(about 1.2e+02 min at 1.5e+02 tosses/s)")):
-        qmc.check_work(16 * 2**16, model=contact, dist=own_e)  # 1,048,576 points
-    qmc.check_work(16 * 2**16, model=contact, dist=tosses)  # 58 min at 300 a second
-    assert grid.check_work(own_e, 10, contact) == pytest.approx(10**3 / 150.0)
+    with pytest.raises(ValueError, match=re.escape("(about 1.2e+02 min at 75 tosses/s)")):
+        qmc.check_work(8 * 2**16, model=contact, dist=own_e)  # 524,288 points
+    qmc.check_work(8 * 2**16, model=contact, dist=tosses)  # 58 min at 150 a second
+    assert grid.check_work(own_e, 10, contact) == pytest.approx(10**3 / 75.0)
     said = one_line_error(*PROBABILITY, "--restitution", "0.3:0.6", "--method", "monte-carlo")
-    assert "(about 150 tosses per second)" in said, said
+    assert "(about 75 tosses per second)" in said, said
 
 
 def test_a_map_of_contact_landings_is_bounded_by_its_rate(tmp_path):
     said = one_line_error(
         "plot", "basin", *CONTACT, "--out", tmp_path / "map.png"
-    )  # 500×500 cells at 300 a second: 833 s
+    )  # 500×500 cells at 150 a second: 1,667 s
     assert said.startswith("a map of 500×500 table landings")
     assert not (tmp_path / "map.png").exists()
 
 
 def test_the_library_bounds_a_map_of_contact_landings_before_allocating_it():
     """studies.basin_map refuses, at the model's rate, a map beyond an hour (5000×5000 contact
-    landings would be 23 h); the commands keep their own minute (queries.basin.MAP_SECONDS)."""
+    landings would be 46 h); the commands keep their own minute (queries.basin.MAP_SECONDS)."""
     from coinflight.studies.basin import basin_map
 
     model = TableLanding(Surface("table", 0.8, ending="contact"))
     said = (
-        "a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about 23 h at 3e+02 "
-        "tosses/s), more than the limit of 1.08e+06 tosses (about 60 min); use a coarser "
+        "a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about 46 h at 1.5e+02 "
+        "tosses/s), more than the limit of 5.4e+05 tosses (about 60 min); use a coarser "
         "resolution"
     )
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         basin_map(Coin.preset("us-nickel"), resolution=(5000, 5000), outcome=model)
-    with pytest.raises(ValueError, match=re.escape("more than the limit of 1.08e+06")):
-        basin_map(Coin.preset("us-nickel"), resolution=(1040, 1040), outcome=model)
+    with pytest.raises(ValueError, match=re.escape("more than the limit of 5.4e+05")):
+        basin_map(Coin.preset("us-nickel"), resolution=(735, 735), outcome=model)
     one = basin_map(Coin.preset("us-nickel"), (0.4, 0.5), (150, 300), resolution=(1, 2),
                     outcome=model)  # fmt: skip
     assert one.face.shape == (2, 1)
@@ -534,6 +619,7 @@ def test_the_api_gives_the_command_lines_object(client):
         ("ending=contact&rolling_resistance=-1", ["--ending", "contact", "--rolling-resistance",
                                                   "-1"]),
         ("pivoting_resistance=1e-4", ["--pivoting-resistance", "1e-4"]),
+        ("ending=contact&restitution=0", ["--ending", "contact", "--restitution", "0"]),
     ],
 )  # fmt: skip
 def test_the_api_refuses_in_the_command_lines_words(client, query, args):

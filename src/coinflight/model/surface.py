@@ -61,17 +61,20 @@ TABLE_ONLY = (
 
 
 class _Unset(float):
-    """A resistance the caller did not give: its default value, marked as such.
+    """A contact parameter the caller did not give: its default value, marked as such.
 
-    The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`) but
-    keeps the defaults, which the contact ending would use. The mark is a float (the kernels,
-    JSON and ``repr`` see the plain default) that :func:`dataclasses.replace` passes back
-    unchanged, so a copy of a rocking surface with another field changed is not refused.
+    The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`),
+    and a catch in the hand a restitution, friction or resistance given to it
+    (:data:`TABLE_ONLY`), but both keep the defaults. The mark is a float (the kernels, JSON,
+    ``repr`` and pickling see the plain default) that :func:`dataclasses.replace` passes back
+    unchanged, so a copy of a surface with another field changed is not refused.
     """
 
     __slots__ = ()
 
 
+_UNSET_RESTITUTION = _Unset(DEFAULT_RESTITUTION)
+_UNSET_FRICTION = _Unset(DEFAULT_FRICTION)
 _UNSET_ROLLING = _Unset(DEFAULT_ROLLING_RESISTANCE)
 _UNSET_PIVOTING = _Unset(DEFAULT_PIVOTING_RESISTANCE)
 
@@ -118,9 +121,13 @@ class Surface:
         How far the surface lies below the launch height of the centre of mass, m (≥ 0; a
         surface above the launch point is not allowed). Only for ``"table"``.
     restitution : float
-        Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1].
+        Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1]
+        (default :data:`DEFAULT_RESTITUTION`).
     friction : float
-        Coulomb friction coefficient μ ≥ 0 of the coin on the surface.
+        Coulomb friction coefficient μ ≥ 0 of the coin on the surface (default
+        :data:`DEFAULT_FRICTION`). Both for ``"table"`` only: a catch in the hand, which has no
+        contact, refuses either given to it (ValueError, :data:`TABLE_ONLY`), and keeps the
+        defaults (marked as not given, as the resistances' below).
     rolling_resistance, pivoting_resistance : float
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
@@ -156,6 +163,10 @@ class Surface:
     Traceback (most recent call last):
     ...
     ValueError: restitution must be between 0 and 1, got 1.5
+    >>> Surface("hand", restitution=0.7)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: restitution 0.7 applies to --surface table only (Surface kind 'table'): ...
     >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -164,8 +175,8 @@ class Surface:
 
     kind: SurfaceKind = "hand"
     drop_height: float = 0.0
-    restitution: float = DEFAULT_RESTITUTION
-    friction: float = DEFAULT_FRICTION
+    restitution: float = _UNSET_RESTITUTION
+    friction: float = _UNSET_FRICTION
     rolling_resistance: float = _UNSET_ROLLING
     pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
@@ -180,26 +191,30 @@ class Surface:
                 f"got {float(height)!r}: a surface above the launch point is not allowed"
             )
         object.__setattr__(self, "drop_height", DROP_HEIGHT.check(self.drop_height))
+        given = []  # the contact parameters the caller gave (not the marked defaults)
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)
         if e.ndim:
             raise TypeError("restitution must be a single number")
-        object.__setattr__(self, "restitution", float(e))
-        object.__setattr__(self, "friction", _single("friction", self.friction, ""))
+        mu = _single("friction", self.friction, "")
+        for name, checked in (("restitution", float(e)), ("friction", mu)):
+            if not isinstance(getattr(self, name), _Unset):  # given: kept as a plain float
+                object.__setattr__(self, name, checked)
+                given.append(f"{name} {checked:g}")
         object.__setattr__(self, "contact_time", CONTACT_TIME.check(self.contact_time))
         v.choice("ending", self.ending, ENDINGS)
-        given = []
+        resistances = []
         for quantity in (ROLLING_RESISTANCE, PIVOTING_RESISTANCE):
             name = quantity.name.replace(" ", "_")
             value = getattr(self, name)
             checked = quantity.check(value)  # a default too (the _Unset mark is a float)
             if not isinstance(value, _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
-                given.append(quantity.describe(checked))
-        if self.kind == "hand" and (given or self.ending != "rocking"):
+                resistances.append(quantity.describe(checked))
+        if self.kind == "hand" and (given or resistances or self.ending != "rocking"):
             ending = [f"ending {self.ending!r}"] if self.ending != "rocking" else []
-            raise ValueError(f"{', '.join(ending + given)} {TABLE_ONLY}")
-        if given and self.ending != "contact":
-            raise ValueError(f"{', '.join(given)}: {ROCKING_HAS_NO_RESISTANCE}")
+            raise ValueError(f"{', '.join(ending + given + resistances)} {TABLE_ONLY}")
+        if resistances and self.ending != "contact":
+            raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
 
     @property
     def bounces(self) -> bool:

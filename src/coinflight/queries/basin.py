@@ -64,8 +64,8 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
 
 MAP_SECONDS = 60.0
 """Longest map of table landings a command asks for, s of estimated work at the outcome
-model's rate (a minute, as the grid method's: a 500×500 map at the rocking ending's 50,000
-landings a second is 5 s; with the 3-D contact ending, about 300 a second, 18,000 cells). The
+model's rate (a minute, as the grid method's: a 500×500 map at the rocking ending's 20,000
+landings a second is 12.5 s; with the 3-D contact ending, 150 a second, 9,000 cells). The
 library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
 waits for its figure or its page gets a minute."""
 

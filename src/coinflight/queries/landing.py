@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from coinflight import _validation as v
 from coinflight.queries.values import AirArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -79,14 +80,6 @@ def single_values(
     return {name: d.mean for name, d in spread.items()}
 
 
-DEAD_CONTACT = (
-    "--ending contact acts on landings that bounce: with --restitution 0 every landing ends "
-    "dead at its first contact and never reaches it; give a restitution above 0 (or a "
-    "distribution of it), or drop --ending"
-)
-"""The refusal of the contact ending on a dead surface (one line)."""
-
-
 def build_surface(
     kind: str,
     drop_height: float | None,
@@ -110,13 +103,7 @@ def build_surface(
     ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
     only checked here to belong to a table.
     """
-    from coinflight.model.surface import (
-        DEFAULT_FRICTION,
-        DEFAULT_RESTITUTION,
-        ENDINGS,
-        TABLE_ONLY,
-        Surface,
-    )
+    from coinflight.model.surface import ENDINGS, TABLE_ONLY, Surface
 
     given = {
         "--drop-height": drop_height,
@@ -152,23 +139,24 @@ def build_surface(
         if ranged
         else single_values(spread)
     )
-    from coinflight.outcomes.table import RESISTANCES
+    from coinflight.outcomes.table import PER_TOSS
 
-    resistances = {name: fixed[name] for name in RESISTANCES if name in fixed}  # those given
+    # only the contact parameters given: the surface keeps its defaults marked as not given
+    # (a catch in the hand refuses a given one; the rocking ending a given resistance)
+    given_values = {name: fixed[name] for name in PER_TOSS if name in fixed}
     return Surface(
         kind,  # type: ignore[arg-type]
         drop_height=0.0 if drop_height is None else drop_height,
-        restitution=fixed.get("restitution", DEFAULT_RESTITUTION),
-        friction=fixed.get("friction", DEFAULT_FRICTION),
         ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
-        **resistances,
+        **given_values,
     )
 
 
 def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
     """:func:`build_surface` for the table options as typed (every one of them); ValueError
-    (:data:`DEAD_CONTACT`) for the contact ending on a dead surface, which it would never reach
-    (a sweep's grid may hold such a row: it is then a dead landing)."""
+    (:data:`coinflight._validation.DEAD_CONTACT`) for the contact ending on a dead surface,
+    which it would never reach (a sweep's grid may hold such a row: it is then a dead
+    landing)."""
     surface = build_surface(
         table.surface,
         table.drop_height,
@@ -181,8 +169,7 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
         pivoting_resistance=table.pivoting_resistance,
         corner_radius=table.corner_radius,
     )
-    if surface.ending == "contact" and surface.restitution == 0.0:
-        raise ValueError(DEAD_CONTACT)
+    v.no_dead_contact(surface.ending, surface.restitution)
     return surface
 
 

@@ -173,12 +173,7 @@ def simulate_edge(
         )
         if value is not None
     }
-    if ending == "contact" and restitution == 0.0:
-        raise ValueError(
-            "the contact ending acts on landings that bounce: with restitution 0 (the default) "
-            "every landing ends dead at its first contact and never reaches it; give a "
-            "restitution above 0 (--restitution), or drop the ending"
-        )
+    v.no_dead_contact(ending, restitution)
     surface = Surface(
         "table",
         drop_height=drop_height,
