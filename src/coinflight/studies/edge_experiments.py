@@ -246,6 +246,43 @@ class EdgeExperiments:
     elapsed: float
     points: int = 2
 
+    HEADER = (
+        "experiment",
+        "h/d",
+        "measured (95 % CI)",
+        "ending",
+        "model band: low – high (± s.e.)",
+        "centre ± s.e.",
+        "cells × n",
+        "measured vs band",
+        "gap",
+    )
+    """Column names of :meth:`table`."""
+
+    def table(self) -> list[tuple[str, ...]]:
+        """One row per experiment and ending (columns :attr:`HEADER`), as text: the driver's
+        and the landing report's table."""
+        rows = []
+        for c in self.comparisons:
+            obs = c.experiment.observed
+            lo, hi = obs.ci95
+            for b in c.bands:
+                rows.append(
+                    (
+                        c.experiment.label,
+                        f"{c.experiment.ratio:g}",
+                        f"{obs.p:.3f} ({lo:.3f}–{hi:.3f}), {c.experiment.edges}/{c.experiment.n}",
+                        b.ending,
+                        f"{b.low.p:.3f} ± {b.low.stderr:.3f} – "
+                        f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
+                        f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
+                        f"{len(b.cells)} × {b.centre.n:,}",
+                        b.verdict(obs),
+                        f"{b.gap(obs):+.3f}",
+                    )
+                )
+        return rows
+
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready: every cell of every band, the measured fractions and the verdicts."""
 
