@@ -10,12 +10,20 @@ bartos2023
     doi:10.1080/01621459.2025.2516210): 48 people, 350,757 flips, 178,078 on the side they
     started. The table as distributed with the ``metadat`` R package (``dat.bartos2023``),
     copied unchanged.
+
+thick_coin_edges
+    Published edge landings of thick coins (cylinders), one record per reported point, each
+    with its source, setting and how it was read: :func:`edge_experiments` (in
+    :mod:`coinflight.datasets.edges`) returns them as frozen :class:`EdgeExperiment` records.
+    Not a :data:`DATASETS` entry: it is not a table of same-side counts.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from importlib.resources import files
+
+from coinflight.datasets.edges import EDGE_SOURCES, EdgeExperiment, edge_experiments
 
 
 @dataclass(frozen=True)
@@ -73,4 +81,11 @@ DATASETS: dict[str, Dataset] = {
 DEFAULT_DATASET = "bartos2023"
 """The dataset ``coinflight data`` analyses when given neither ``--dataset`` nor ``--counts``."""
 
-__all__ = ["DATASETS", "DEFAULT_DATASET", "Dataset"]
+__all__ = [
+    "DATASETS",
+    "DEFAULT_DATASET",
+    "EDGE_SOURCES",
+    "Dataset",
+    "EdgeExperiment",
+    "edge_experiments",
+]
