@@ -159,6 +159,44 @@ class Experiment:
         return BinomialEstimate(self.edges, self.n)
 
 
+SOURCE_SETTINGS: Mapping[str, str] = MappingProxyType({"standup_maths_2018": "hand-table"})
+"""The setting that simulates each source of :mod:`coinflight.datasets.edges` (our reading of
+its description): Stand-up Maths' hand flips (Parker & Hunt 2018) onto a table."""
+
+
+def from_dataset(records: Sequence[Any]) -> tuple[list[Experiment], list[str]]:
+    """The records of :func:`coinflight.datasets.edge_experiments` that can be compared, as
+    :class:`Experiment` s, and one line for each one left out (why).
+
+    Kept: ``kind == "measured"`` with a number of throws and a source in
+    :data:`SOURCE_SETTINGS`. A record giving the fraction but not the count gets edges =
+    round(fraction × n) (exact for a fraction printed to 1/n).
+    """
+    kept: list[Experiment] = []
+    left: list[str] = []
+    for r in records:
+        what = f"{r.source} h/d {r.ratio:g}"
+        if r.kind != "measured":
+            left.append(f"{what}: {r.kind}, not a measurement")
+        elif r.n is None:
+            left.append(f"{what}: no number of throws")
+        elif r.source not in SOURCE_SETTINGS:
+            left.append(f"{what}: no setting simulates this source yet")
+        else:
+            edges = r.edges if r.edges is not None else round(r.fraction * r.n)
+            kept.append(
+                Experiment(
+                    f"{r.source} h/d {r.ratio:.3f}",
+                    r.ratio,
+                    r.n,
+                    edges,
+                    SOURCE_SETTINGS[r.source],
+                    r.citation,
+                )
+            )
+    return kept, left
+
+
 @dataclass(frozen=True)
 class Cell:
     """P(edge) at one point of the unmeasured parameters' box (``parameters``: name → value,
@@ -524,6 +562,7 @@ __all__ = [
     "HAND_DROP",
     "RESISTANCE",
     "SETTINGS",
+    "SOURCE_SETTINGS",
     "Band",
     "Cell",
     "Comparison",
@@ -533,5 +572,6 @@ __all__ = [
     "box_cells",
     "edge_experiments",
     "experiment_box",
+    "from_dataset",
     "setting",
 ]
