@@ -33,8 +33,37 @@ What does not scale: the numerical thresholds in m/s (the rocking hand-off below
 time (a time, unchanged, so the same stiffness relative to the flight): both far below the
 landing's own speeds (≈ 3 m/s).
 
-Measured (see :func:`edge_experiments`; ``python benchmarks/bench_edge_experiments.py``):
-filled in below from the runs of 2026-11-23.
+Measured (2026-11-23, 20:42–20:50 UTC, the shared 2-core machine at load 10–12:
+``python benchmarks/bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
+the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-up Maths' hand
+flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
+corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
+
+==========  ======================  =========================  =========================
+h/d         measured (95 %)         rocking band               contact band
+==========  ======================  =========================  =========================
+0.354       0.132 (0.112–0.154)     0.021 ± 0.001 – 0.095 ±   0.023 ± 0.002 – 0.110 ±
+                                    0.001: above by 0.037      0.005: inside (gap 0.022,
+                                                               the interval overlaps the
+                                                               top + 2 s.e.)
+0.577       0.410 (0.380–0.441)     0.114 ± 0.001 – 0.204 ±   0.099 ± 0.005 – 0.206 ±
+                                    0.001: above by 0.206      0.006: above by 0.204
+==========  ======================  =========================  =========================
+
+So the bouncing landing puts *fewer* thick cylinders on edge than the no-bounce dynamic model
+(0.216 and 0.333 there; :func:`coinflight.studies.edge.edge_probability`), the measured points
+lie *above* the whole band, and at h/d = 0.577 by a factor of two, far beyond both errors.
+The highest cells are at the box's corner of low restitution (0.3) and friction (0.05), small
+cylinder (20 mm) and high release (0.5 m); the lowest near the centre: P(edge) is not
+monotonic in e and μ (the same tosses, e 0.3/0.45/0.6 → 0.19/0.12/0.12 at μ 0.325, h/d 0.577),
+so a grid's band is a lower bound of the model's spread. Landing dead (e = 0) gives the dynamic
+model (tested), which is still below 0.41 at h/d = 0.577. Candidate reasons for the miss:
+the setting (the human coin-toss preset's spin, 38 rev/s, may not be how people flip a
+cylinder; no axial spin; unknown size, material, release and surface; a soft table top or
+cloth would land them deader), the parameters (restitution of wood or plastic on a table
+below 0.3, a rounded rim), the model (the planar rocking hand-off; the contact ending, whose
+edges differ from MuJoCo's elsewhere), and the data (fractions from a secondary table, the
+video not read).
 """
 
 from __future__ import annotations
@@ -300,7 +329,7 @@ class EdgeExperiments:
     def table(self) -> list[tuple[str, ...]]:
         """One row per experiment and ending (columns :attr:`HEADER`), as text: the driver's
         and the landing report's table."""
-        rows = []
+        rows: list[tuple[str, ...]] = []
         for c in self.comparisons:
             obs = c.experiment.observed
             lo, hi = obs.ci95
