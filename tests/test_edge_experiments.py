@@ -185,3 +185,19 @@ def test_dead_landing_reproduces_the_dynamic_model(diameter):
         (cell,) = c.rocking.cells
         model = float(edge_probability(c.experiment.ratio))
         assert abs(cell.p - model) <= 3 * math.sqrt(model * (1 - model) / cell.n)
+
+
+def test_mujoco_check_same_tosses_in_three_engines():
+    from coinflight.studies import mujoco_compare
+
+    if not mujoco_compare.available():
+        pytest.skip("MuJoCo (the optional extra) is not installed")
+    from coinflight.studies.edge_experiments import mujoco_check
+
+    check = mujoco_check(THIN, 3, 5)
+    assert check.parameters["drop_height"] == pytest.approx(sum(HAND_DROP) / 2)
+    for est in (check.rocking, check.contact, check.mujoco):
+        assert est.n == 3 and est.seed == 5
+    assert 0 <= check.mujoco_moving <= 3
+    with pytest.raises(ValueError, match="tosses of the MuJoCo check"):
+        mujoco_check(THIN, 0)

@@ -586,6 +586,95 @@ def edge_experiments(
     )
 
 
+@dataclass(frozen=True)
+class EngineCheck:
+    """The same ``n`` tosses of one setting at one point of the box in coinflight (both
+    endings) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
+    MuJoCo's tosses still moving at its limit, and the point (``parameters``)."""
+
+    label: str
+    parameters: Mapping[str, float]
+    rocking: BinomialEstimate
+    contact: BinomialEstimate
+    mujoco: BinomialEstimate
+    mujoco_moving: int
+    mujoco_seconds: float
+
+
+def mujoco_check(
+    experiment: Experiment,
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    restitution: float = 0.45,
+    friction: float = 0.325,
+    drop_height: float | None = None,
+    resistance: float = 1e-4,
+    g: float = 9.81,
+) -> EngineCheck:
+    """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
+    :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
+    from the seed's child 0, release ``drop_height``, default the middle of the setting's
+    range) landed on one table (e, μ; rolling and pivoting, MuJoCo's rolling and torsional,
+    resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
+    otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
+    past its first contact). ImportError without MuJoCo; its work bounded by
+    :func:`coinflight.studies.mujoco_compare.run`."""
+    from coinflight.core.outcome import EDGE
+    from coinflight.model.coin import Coin
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import land
+    from coinflight.studies import mujoco_compare
+    from coinflight.studies.edge import SIM_DIAMETER
+
+    v.instance("experiment", experiment, Experiment, "an Experiment")
+    n = v.count("tosses of the MuJoCo check", n, 1, 100_000)
+    the_setting = setting(experiment.setting)
+    drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
+    root = streams.seed_sequence(seed)
+    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, 2)), axis=1)
+    omega = np.zeros((n, 3))
+    omega[:, 0] = the_setting.spin.ppf(u[0])
+    v0 = np.asarray(the_setting.launch_speed.ppf(u[1]), dtype=float)
+    r = 0.5 * SIM_DIAMETER
+    h = experiment.ratio * SIM_DIAMETER
+    coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # as simulate_edge's
+    seed_int = streams.reported_seed(root)
+
+    def edges(faces: Any) -> BinomialEstimate:
+        return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
+
+    ours = {}
+    for ending in ("rocking", "contact"):
+        extra = (
+            {"rolling_resistance": resistance, "pivoting_resistance": resistance}
+            if ending == "contact"
+            else {}
+        )
+        table = Surface("table", drop, restitution, friction, ending=ending, **extra)
+        ours[ending] = edges(land(coin, omega, v0, 1.0, g, table).face)
+    run = mujoco_compare.run(
+        coin, omega, v0, drop, restitution, friction, g, torsional=resistance, rolling=resistance
+    )
+    return EngineCheck(
+        experiment.label,
+        MappingProxyType(
+            {
+                "restitution": restitution,
+                "friction": friction,
+                "diameter": SIM_DIAMETER,
+                "drop_height": drop,
+                "resistance": resistance,
+            }
+        ),
+        ours["rocking"],
+        ours["contact"],
+        edges(run.rest),
+        int(np.count_nonzero(run.moving)),
+        float(run.elapsed),
+    )
+
+
 __all__ = [
     "HAND_DIAMETER",
     "HAND_DROP",
@@ -596,11 +685,13 @@ __all__ = [
     "Cell",
     "Comparison",
     "EdgeExperiments",
+    "EngineCheck",
     "Experiment",
     "Setting",
     "box_cells",
     "edge_experiments",
     "experiment_box",
     "from_dataset",
+    "mujoco_check",
     "setting",
 ]
