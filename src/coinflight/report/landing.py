@@ -932,7 +932,8 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
     )
     settings = sorted({c.setting.description for c in x.comparisons})
     box = x.comparisons[0].box if x.comparisons else {}
-    ranges = "; ".join(f"{k} {lo:g}–{hi:g}" for k, (lo, hi) in box.items())
+    unit = {"diameter": " m", "drop_height": " m (release above the table)", "resistance": " m"}
+    ranges = "; ".join(f"{k} {lo:g}–{hi:g}{unit.get(k, '')}" for k, (lo, hi) in box.items())
     return (
         Heading("Thick cylinders against experiments"),
         Paragraph(
@@ -947,8 +948,10 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             "per cell, corners and centre. The same tosses in every cell; sizes other than "
             f"{SIM_DIAMETER * 1000:g} mm by similarity (lengths × k, g × k, times unchanged). "
             "A measured 95 % (Wilson) interval wholly above the highest cell + 2 s.e. is "
-            "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. No parameter was "
-            "tuned to the data."
+            "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. The band's ends "
+            "are its extreme cells, so their noise widens it (the highest of tens of noisy "
+            "cells lies a few s.e. above their mean): read it at the full report's sizes, "
+            "not --quick's. No parameter was tuned to the data."
         ),
         Table(x.HEADER, tuple(x.table())),
         Bullets(tuple(findings)),

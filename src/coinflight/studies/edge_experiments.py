@@ -39,16 +39,11 @@ the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-u
 flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
 corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
 
-==========  ======================  =========================  =========================
-h/d         measured (95 %)         rocking band               contact band
-==========  ======================  =========================  =========================
-0.354       0.132 (0.112–0.154)     0.021 ± 0.001 – 0.095 ±   0.023 ± 0.002 – 0.110 ±
-                                    0.001: above by 0.037      0.005: inside (gap 0.022,
-                                                               the interval overlaps the
-                                                               top + 2 s.e.)
-0.577       0.410 (0.380–0.441)     0.114 ± 0.001 – 0.204 ±   0.099 ± 0.005 – 0.206 ±
-                                    0.001: above by 0.206      0.006: above by 0.204
-==========  ======================  =========================  =========================
+- h/d 0.354, measured 0.132 (95 %: 0.112–0.154). Rocking band 0.021 ± 0.001 – 0.095 ±
+  0.001: the measurement is above it by 0.037. Contact band 0.023 ± 0.002 – 0.110 ± 0.005:
+  "inside" (the measured interval reaches the top cell + 2 s.e.; gap 0.022).
+- h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
+  contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
 
 So the bouncing landing puts *fewer* thick cylinders on edge than the no-bounce dynamic model
 (0.216 and 0.333 there; :func:`coinflight.studies.edge.edge_probability`), the measured points
