@@ -45,6 +45,15 @@ corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
 - h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
   contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
 
+An independent engine on the same tosses (:func:`mujoco_check`, ``python
+benchmarks/bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
+21:15–21:25 UTC, load 9–11; 2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
+e 0.45, μ 0.325, resistances 1e-4 m, MuJoCo condim 6, Euler, every toss settled): P(edge) at
+h/d 0.354 rocking 0.025 ± 0.003, contact 0.025 ± 0.003, MuJoCo 0.024 ± 0.003; at h/d 0.577
+rocking 0.134 ± 0.008, contact 0.129 ± 0.007, MuJoCo 0.116 ± 0.007. MuJoCo agrees with both
+endings here (within 2 s.e.; planar tosses), and is as far from the measured 0.132 and 0.410:
+the miss is not one engine's contact law.
+
 So the bouncing landing puts *fewer* thick cylinders on edge than the no-bounce dynamic model
 (0.216 and 0.333 there; :func:`coinflight.studies.edge.edge_probability`), the measured points
 lie *above* the whole band, and at h/d = 0.577 by a factor of two, far beyond both errors.
@@ -56,8 +65,8 @@ model (tested), which is still below 0.41 at h/d = 0.577. Candidate reasons for 
 the setting (the human coin-toss preset's spin, 38 rev/s, may not be how people flip a
 cylinder; no axial spin; unknown size, material, release and surface; a soft table top or
 cloth would land them deader), the parameters (restitution of wood or plastic on a table
-below 0.3, a rounded rim), the model (the planar rocking hand-off; the contact ending, whose
-edges differ from MuJoCo's elsewhere), and the data (fractions from a secondary table, the
+below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in both coinflight
+and MuJoCo, which agree here), and the data (fractions from a secondary table, the
 video not read).
 """
 
