@@ -33,6 +33,9 @@ TINY = report.Sizes(
     band_cells=2,
     mujoco=3,
     mujoco_edges=2,
+    experiments=60,
+    experiments_contact=2,
+    experiments_points=2,
 )
 
 
@@ -56,6 +59,23 @@ def test_every_file_is_written_and_the_figures_are_drawn(written):
     for name in figures:
         assert f"]({name})" in md  # every figure is shown in the report
     assert "<table>" in (out / "report.html").read_text()
+
+
+def test_thick_cylinders_section_is_the_studys(written):
+    out, _ = written
+    numbers = json.loads((out / "numbers.json").read_text())["edge_experiments"]
+    # the study with the report's child for this question (part 6) of the seed
+    again, left = study.thick_experiments(
+        TINY.experiments, SEED, TINY.experiments_contact, TINY.experiments_points
+    )
+    expected = json.loads(json.dumps({**again.to_dict(), "left_out": left}))
+    numbers.pop("elapsed"), expected.pop("elapsed")
+    assert numbers == expected and numbers["seed"] == SEED
+    assert len(numbers["experiments"]) >= 1
+    md = (out / "report.md").read_text()
+    assert "## Thick cylinders against experiments" in md
+    for row in again.table():
+        assert row[-2] in {"inside", "above", "below"} and row[0] in md
 
 
 def test_the_numbers_are_the_librarys(written):

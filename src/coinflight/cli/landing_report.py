@@ -88,6 +88,15 @@ def landing_report(
             f"US nickel on {b.preset}: P(edge) {b.low[0]:.2e} to {b.high[0]:.2e} over the "
             f"literature's (e, μ); integrated {b.integrated.p:.2e} ± {b.integrated.stderr:.1e}"
         )
+    if report.experiments is not None:
+        for point in report.experiments.comparisons:
+            obs = point.experiment.observed
+            for band in point.bands:
+                typer.echo(
+                    f"{point.experiment.label}: measured {obs.p:.3f}, {band.ending} ending "
+                    f"{band.low.p:.3f} to {band.high.p:.3f} over the unmeasured parameters: "
+                    f"{band.verdict(obs)}"
+                )
     if report.mujoco is None:
         typer.echo(report.mujoco_note)
     else:

@@ -43,7 +43,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -56,6 +56,9 @@ from coinflight.model.ensemble import TossDistribution
 from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
+
+if TYPE_CHECKING:
+    from coinflight.studies.edge_experiments import EdgeExperiments
 
 DROP_HEIGHT = 0.8
 """The table lies this far below the launch point, m (as in the issue's measurements)."""
@@ -76,7 +79,7 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES = 0, 1, 2, 3, 4, 5
+_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES, _EXPERIMENTS = 0, 1, 2, 3, 4, 5, 6
 
 
 def map_tosses(coin: Coin | None = None) -> TossDistribution:
@@ -793,6 +796,27 @@ def _ending_run(
     return run, first, out.status
 
 
+# --- thick cylinders against experiments ------------------------------------------------------
+def thick_experiments(
+    n: int, seed: streams.SeedLike, contact: int = 0, points: int = 2
+) -> tuple[EdgeExperiments, list[str]]:
+    """The measured thick-cylinder edge fractions shipped with coinflight
+    (:func:`coinflight.datasets.edge_experiments`, those a setting simulates:
+    :func:`coinflight.studies.edge_experiments.from_dataset`) beside the model's band
+    (:func:`coinflight.studies.edge_experiments.edge_experiments`: ``n`` rocking tosses per
+    cell, ``points`` values per parameter, ``contact`` contact-ending tosses per cell), from the
+    seed's child for this question. Returns (EdgeExperiments, the records left out and why)."""
+    from coinflight.datasets import edge_experiments as dataset
+    from coinflight.studies.edge_experiments import edge_experiments, from_dataset
+
+    records, left = from_dataset(dataset())
+    root = streams.seed_sequence(seed)
+    result = edge_experiments(
+        records, n, streams.child(root, _EXPERIMENTS), contact=contact, points=points
+    )
+    return result, left
+
+
 __all__ = [
     "COIN",
     "DROP_HEIGHT",
@@ -820,4 +844,5 @@ __all__ = [
     "mujoco_comparison",
     "mujoco_tosses",
     "nickel_band",
+    "thick_experiments",
 ]

@@ -1,0 +1,79 @@
+"""Thick cylinders against experiments: the measured edge fractions beside the model's band.
+
+    python benchmarks/bench_edge_experiments.py [N] [--contact M] [--points P] [--seed S]
+        [--json FILE] [--mujoco K]
+
+The measured points of :func:`coinflight.datasets.edge_experiments` (those a setting of
+:mod:`coinflight.studies.edge_experiments` simulates) each simulated with N tosses per cell of
+the rocking ending (P values per unmeasured parameter, default 3: corners, mid-points and the
+centre) and M per cell of the 3-D contact ending (corners and centre); prints the table (band
+against the measured 95 % interval), the time, and the records left out and why. With
+``--mujoco K``: K tosses of each point at the box's centre (24 mm cylinder) in coinflight's two
+endings and in MuJoCo (:func:`coinflight.studies.edge_experiments.mujoco_check`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import time
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=2_000, help="rocking tosses per cell")
+    parser.add_argument("--contact", type=int, default=200, help="contact tosses per cell")
+    parser.add_argument("--points", type=int, default=3, help="values per parameter (rocking)")
+    parser.add_argument("--seed", type=int, default=2018)
+    parser.add_argument("--json", metavar="FILE", help="write every cell as JSON")
+    parser.add_argument("--mujoco", type=int, default=0, metavar="K", help="MuJoCo check size")
+    args = parser.parse_args()
+
+    from coinflight.datasets import edge_experiments as dataset
+    from coinflight.studies.edge_experiments import edge_experiments, from_dataset, mujoco_check
+
+    records, left = from_dataset(dataset())
+    load = os.getloadavg()[0]
+    t0 = time.perf_counter()
+    result = edge_experiments(
+        records, args.n, args.seed, contact=args.contact, points=args.points, progress=print
+    )
+    wall = time.perf_counter() - t0
+    print(
+        f"\n{len(records)} experiments; {args.n:,} rocking tosses per cell ({args.points} points "
+        f"per parameter), {args.contact:,} contact-ending tosses per cell (corners and centre); "
+        f"seed {result.seed}; {wall:.0f} s wall; load {load:.1f} → {os.getloadavg()[0]:.1f}"
+    )
+    widths = [max(len(str(r[i])) for r in [result.HEADER, *result.table()]) for i in range(9)]
+    for row in [result.HEADER, *result.table()]:
+        print(" | ".join(str(x).ljust(w) for x, w in zip(row, widths, strict=True)))
+    for c in result.comparisons:
+        print(f"\n{c.experiment.label}: {c.setting.description}")
+        for band in c.bands:
+            for name, cell in (("low", band.low), ("high", band.high)):
+                where = ", ".join(f"{k} {x:.3g}" for k, x in cell.parameters.items())
+                print(f"  {band.ending} {name}: {cell.p:.4f} ± {cell.stderr:.4f} at {where}")
+    for line in left:
+        print(f"left out: {line}")
+    for x in records if args.mujoco else ():
+        check = mujoco_check(x, args.mujoco, args.seed)
+        where = ", ".join(f"{k} {val:.3g}" for k, val in check.parameters.items())
+        print(f"\nMuJoCo check, {x.label}, {args.mujoco} tosses at {where}:")
+        for name, est in (
+            ("coinflight rocking", check.rocking),
+            ("coinflight contact", check.contact),
+            ("MuJoCo", check.mujoco),
+        ):
+            print(f"  {name}: P(edge) {est.p:.3f} ± {est.stderr:.3f}")
+        print(
+            f"  MuJoCo still moving at its limit: {check.mujoco_moving}; "
+            f"{check.mujoco_seconds:.0f} s"
+        )
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(result.to_dict(), f, indent=1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,701 @@
+"""Thick cylinders against experiments: measured edge fractions beside the table landing's band.
+
+For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
+describes) the study simulates that setting with
+:func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
+the two endings) and returns P(edge) as a **band** over what nobody measured: the restitution
+e and friction μ over the surface presets' box (:func:`coinflight.studies.landing.
+bouncing_box`), the cylinder's diameter and the table's drop when the source does not give
+them, and, for the experimental 3-D contact ending, the rolling and pivoting resistance. The
+band's cells are the box's corners and its centre; each reports p, s.e. and n. The measured
+fraction with its 95 % (Wilson) interval is then *inside*, *above* or *below* that band. No
+parameter is tuned to the data: the result is whatever it is.
+
+Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
+
+``hand-table``
+    A person flips the cylinder onto a table: spin about a diameter and launch speed of the
+    project's human toss (:func:`coinflight.studies.presets.human`: ωx ~ Normal(238.8, 23.9)
+    rad/s, v0 ~ Normal(2.4, 0.24) m/s, DHM via Keller, REFERENCES §2), released
+    :data:`HAND_DROP` m above the table (our assumption: a hand over a table, seated to
+    standing), the diameter :data:`HAND_DIAMETER` m when the source does not give it (our
+    assumption: coin-sized to a large draughts piece). The preset's axial spin ωz is left out:
+    :func:`~coinflight.studies.edge.simulate_edge` spins the coin about a diameter only.
+
+How a cylinder of another size is simulated. ``simulate_edge`` lands coins of one diameter,
+:data:`coinflight.studies.edge.SIM_DIAMETER` (d₀ = 24 mm). A rigid body with Coulomb friction
+and a restitution coefficient has no length scale of its own, so a cylinder of diameter D is
+the d₀ coin in a scaled world: lengths × k = d₀/D, times unchanged (so spins unchanged),
+speeds and accelerations × k: g → k g, drop → k H, v0 → k v0, resistance lengths → k ℓ
+(dimensional analysis; every impact and the rocking ending's wells are homogeneous in these).
+What does not scale: the numerical thresholds in m/s (the rocking hand-off below a rebound of
+0.01 m/s becomes 0.01/k m/s of the real cylinder) and the contact ending's compliant contact
+time (a time, unchanged, so the same stiffness relative to the flight): both far below the
+landing's own speeds (≈ 3 m/s).
+
+Measured (2026-11-23, 20:42–20:50 UTC, the shared 2-core machine at load 10–12:
+``python benchmarks/bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
+the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-up Maths' hand
+flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
+corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
+
+- h/d 0.354, measured 0.132 (95 %: 0.112–0.154). Rocking band 0.021 ± 0.001 – 0.095 ±
+  0.001: the measurement is above it by 0.037. Contact band 0.023 ± 0.002 – 0.110 ± 0.005:
+  "inside" (the measured interval reaches the top cell + 2 s.e.; gap 0.022).
+- h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
+  contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
+
+An independent engine on the same tosses (:func:`mujoco_check`, ``python
+benchmarks/bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
+21:15–21:25 UTC, load 9–11; 2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
+e 0.45, μ 0.325, resistances 1e-4 m, MuJoCo condim 6, Euler, every toss settled): P(edge) at
+h/d 0.354 rocking 0.025 ± 0.003, contact 0.025 ± 0.003, MuJoCo 0.024 ± 0.003; at h/d 0.577
+rocking 0.134 ± 0.008, contact 0.129 ± 0.007, MuJoCo 0.116 ± 0.007. MuJoCo agrees with both
+endings here (within 2 s.e.; planar tosses), and is as far from the measured 0.132 and 0.410:
+the miss is not one engine's contact law.
+
+So the bouncing landing puts *fewer* thick cylinders on edge than the no-bounce dynamic model
+(0.216 and 0.333 there; :func:`coinflight.studies.edge.edge_probability`), the measured points
+lie *above* the whole band, and at h/d = 0.577 by a factor of two, far beyond both errors.
+The highest cells are at the box's corner of low restitution (0.3) and friction (0.05), small
+cylinder (20 mm) and high release (0.5 m); the lowest near the centre: P(edge) is not
+monotonic in e and μ (the same tosses, e 0.3/0.45/0.6 → 0.19/0.12/0.12 at μ 0.325, h/d 0.577),
+so a grid's band is a lower bound of the model's spread. Landing dead (e = 0) gives the dynamic
+model (tested), which is still below 0.41 at h/d = 0.577. Candidate reasons for the miss:
+the setting (the human coin-toss preset's spin, 38 rev/s, may not be how people flip a
+cylinder; no axial spin; unknown size, material, release and surface; a soft table top or
+cloth would land them deader), the parameters (restitution of wood or plastic on a table
+below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in both coinflight
+and MuJoCo, which agree here), and the data (fractions from a secondary table, the
+video not read).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any, Literal
+
+import numpy as np
+
+from coinflight import _validation as v
+from coinflight.model.distributions import Distribution
+from coinflight.probability import streams
+from coinflight.probability.result import BinomialEstimate
+
+Verdict = Literal["inside", "above", "below"]
+
+HAND_DROP = (0.2, 0.5)
+"""Height of the releasing hand above the table, m (our assumption, no source gives it)."""
+HAND_DIAMETER = (0.02, 0.05)
+"""Diameter of a hand-flipped cylinder when the source does not give it, m (our assumption)."""
+RESISTANCE = (1e-5, 1e-3)
+"""Rolling and pivoting resistance of the contact ending, m, both the same value in a cell
+(nobody measured them for a coin; :class:`coinflight.model.surface.Surface`); the band's centre
+is their geometric mean."""
+MAX_TOSSES = 10**7
+"""Most tosses per cell (the work bound limits the whole run as well)."""
+
+
+@dataclass(frozen=True)
+class Setting:
+    """How the throws of an experiment were made, as far as its source says.
+
+    Attributes
+    ----------
+    name : str
+    description : str
+        One sentence, with the sources of each number.
+    spin : Distribution
+        Spin about a diameter, rad/s (the scale of the real cylinder: unchanged by size).
+    launch_speed : Distribution
+        Upward launch speed of the real cylinder, m/s (positive with certainty).
+    drop_height : (float, float)
+        The table lies this far below the release, m: a range (its ends are band cells) or
+        equal ends for a height the source gives.
+    diameter : (float, float)
+        Diameter of the cylinder when the record does not give it, m.
+    """
+
+    name: str
+    description: str
+    spin: Distribution
+    launch_speed: Distribution
+    drop_height: tuple[float, float]
+    diameter: tuple[float, float]
+
+
+def _hand_table() -> Setting:
+    from coinflight.studies.presets import HUMAN_LAUNCH_SPEED, HUMAN_SPIN, human
+
+    toss = human()
+    assert toss.launch_speed is not None  # the preset is built from its launch speed
+    return Setting(
+        "hand-table",
+        f"flipped by hand onto a table: ωx and v0 of the human toss preset "
+        f"(ωx ~ N({HUMAN_SPIN:.1f}, {0.1 * HUMAN_SPIN:.1f}) rad/s, v0 ~ N({HUMAN_LAUNCH_SPEED:g}, "
+        f"{0.1 * HUMAN_LAUNCH_SPEED:g}) m/s: DHM via Keller), released {HAND_DROP[0]:g}–"
+        f"{HAND_DROP[1]:g} m above the table (our assumption)",
+        toss.omega_x,
+        toss.launch_speed,
+        HAND_DROP,
+        HAND_DIAMETER,
+    )
+
+
+SETTINGS: Mapping[str, Callable[[], Setting]] = MappingProxyType({"hand-table": _hand_table})
+"""Settings by name, each a factory (see the module notes for every number)."""
+
+
+def setting(name: str) -> Setting:
+    """The setting ``name`` (a key of :data:`SETTINGS`), else a ValueError listing them."""
+    return v.known("experiment setting", name, SETTINGS)()
+
+
+@dataclass(frozen=True)
+class Experiment:
+    """One measured edge fraction: ``edges`` of ``n`` throws of cylinders of ratio h/d.
+
+    ``setting`` names a :data:`SETTINGS` entry; ``diameter`` and ``drop_height`` (m) are the
+    source's when it gives them (else None: the setting's range is a band dimension);
+    ``label`` and ``source`` say where the numbers come from.
+    """
+
+    label: str
+    ratio: float
+    n: int
+    edges: int
+    setting: str
+    source: str = ""
+    diameter: float | None = None
+    drop_height: float | None = None
+
+    def __post_init__(self) -> None:
+        from coinflight.studies.edge import check_ratios
+
+        check_ratios(self.ratio)
+        v.count("throws of an experiment", self.n, 1)
+        v.count("edges of an experiment", self.edges, 0, self.n)
+        v.known("experiment setting", self.setting, SETTINGS)
+        for name in ("diameter", "drop_height"):
+            value = getattr(self, name)
+            if value is not None and not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{name} of an experiment must be positive (m), got {value!r}")
+
+    @property
+    def observed(self) -> BinomialEstimate:
+        """The measured fraction (its ``ci95`` is the Wilson 95 % interval)."""
+        return BinomialEstimate(self.edges, self.n)
+
+
+SOURCE_SETTINGS: Mapping[str, str] = MappingProxyType({"standup_maths_2018": "hand-table"})
+"""The setting that simulates each source of :mod:`coinflight.datasets.edges` (our reading of
+its description): Stand-up Maths' hand flips (Parker & Hunt 2018) onto a table."""
+
+
+def from_dataset(records: Sequence[Any]) -> tuple[list[Experiment], list[str]]:
+    """The records of :func:`coinflight.datasets.edge_experiments` that can be compared, as
+    :class:`Experiment` s, and one line for each one left out (why).
+
+    Kept: ``kind == "measured"`` with a number of throws and a source in
+    :data:`SOURCE_SETTINGS`. A record giving the fraction but not the count gets edges =
+    round(fraction × n) (exact for a fraction printed to 1/n).
+    """
+    kept: list[Experiment] = []
+    left: list[str] = []
+    for r in records:
+        what = f"{r.source} h/d {r.ratio:g}"
+        if r.kind != "measured":
+            left.append(f"{what}: {r.kind}, not a measurement")
+        elif r.n is None:
+            left.append(f"{what}: no number of throws")
+        elif r.source not in SOURCE_SETTINGS:
+            left.append(f"{what}: no setting simulates this source yet")
+        else:
+            edges = r.edges if r.edges is not None else round(r.fraction * r.n)
+            kept.append(
+                Experiment(
+                    f"{r.source} h/d {r.ratio:.3f}",
+                    r.ratio,
+                    r.n,
+                    edges,
+                    SOURCE_SETTINGS[r.source],
+                    r.citation,
+                )
+            )
+    return kept, left
+
+
+@dataclass(frozen=True)
+class Cell:
+    """P(edge) at one point of the unmeasured parameters' box (``parameters``: name → value,
+    SI units, the real cylinder's)."""
+
+    parameters: Mapping[str, float]
+    estimate: BinomialEstimate
+
+    @property
+    def p(self) -> float:
+        return self.estimate.p
+
+    @property
+    def stderr(self) -> float:
+        return self.estimate.stderr
+
+    @property
+    def n(self) -> int:
+        return self.estimate.n
+
+
+@dataclass(frozen=True)
+class Band:
+    """P(edge) of one ending over the box: its cells (corners first, the centre last)."""
+
+    ending: str
+    cells: tuple[Cell, ...]
+
+    @property
+    def low(self) -> Cell:
+        """The cell of lowest P(edge)."""
+        return min(self.cells, key=lambda c: c.p)
+
+    @property
+    def high(self) -> Cell:
+        """The cell of highest P(edge)."""
+        return max(self.cells, key=lambda c: c.p)
+
+    @property
+    def centre(self) -> Cell:
+        """The box's centre."""
+        return self.cells[-1]
+
+    def verdict(self, observed: BinomialEstimate) -> Verdict:
+        """``"above"`` when the measured 95 % interval lies above the band's top (its highest
+        cell + 2 s.e.), ``"below"`` when it lies below the band's bottom (lowest cell − 2 s.e.),
+        else ``"inside"`` (they overlap)."""
+        lo, hi = observed.ci95
+        if lo > self.high.p + 2.0 * self.high.stderr:
+            return "above"
+        if hi < self.low.p - 2.0 * self.low.stderr:
+            return "below"
+        return "inside"
+
+    def gap(self, observed: BinomialEstimate) -> float:
+        """Measured fraction minus the nearest end of the band (0 inside [low, high])."""
+        p = observed.p
+        return max(0.0, p - self.high.p) - max(0.0, self.low.p - p)
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """One experiment beside its simulated bands (``contact`` None when not simulated)."""
+
+    experiment: Experiment
+    setting: Setting
+    rocking: Band
+    contact: Band | None
+    box: Mapping[str, tuple[float, float]] = field(default_factory=dict)
+    """The ranges of the widest box simulated (the contact ending's when it ran)."""
+
+    @property
+    def bands(self) -> tuple[Band, ...]:
+        return (self.rocking,) if self.contact is None else (self.rocking, self.contact)
+
+
+@dataclass(frozen=True)
+class EdgeExperiments:
+    """What :func:`edge_experiments` computed: one :class:`Comparison` per experiment."""
+
+    comparisons: tuple[Comparison, ...]
+    n: int
+    contact_n: int
+    seed: int
+    elapsed: float
+    points: int = 2
+
+    HEADER = (
+        "experiment",
+        "h/d",
+        "measured (95 % CI)",
+        "ending",
+        "model band: low – high (± s.e.)",
+        "centre ± s.e.",
+        "cells × n",
+        "measured vs band",
+        "gap",
+    )
+    """Column names of :meth:`table`."""
+
+    def table(self) -> list[tuple[str, ...]]:
+        """One row per experiment and ending (columns :attr:`HEADER`), as text: the driver's
+        and the landing report's table."""
+        rows: list[tuple[str, ...]] = []
+        for c in self.comparisons:
+            obs = c.experiment.observed
+            lo, hi = obs.ci95
+            for b in c.bands:
+                rows.append(
+                    (
+                        c.experiment.label,
+                        f"{c.experiment.ratio:g}",
+                        f"{obs.p:.3f} ({lo:.3f}–{hi:.3f}), {c.experiment.edges}/{c.experiment.n}",
+                        b.ending,
+                        f"{b.low.p:.3f} ± {b.low.stderr:.3f} – "
+                        f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
+                        f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
+                        f"{len(b.cells)} × {b.centre.n:,}",
+                        b.verdict(obs),
+                        f"{b.gap(obs):+.3f}",
+                    )
+                )
+        return rows
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: every cell of every band, the measured fractions and the verdicts."""
+
+        def band(b: Band, obs: BinomialEstimate) -> dict[str, Any]:
+            return {
+                "ending": b.ending,
+                "low": b.low.p,
+                "low_stderr": b.low.stderr,
+                "high": b.high.p,
+                "high_stderr": b.high.stderr,
+                "verdict": b.verdict(obs),
+                "gap": b.gap(obs),
+                "cells": [
+                    {**dict(c.parameters), "p_edge": c.p, "stderr": c.stderr, "n": c.n}
+                    for c in b.cells
+                ],
+            }
+
+        return {
+            "seed": self.seed,
+            "n": self.n,
+            "contact_n": self.contact_n,
+            "points": self.points,
+            "elapsed": self.elapsed,
+            "experiments": [
+                {
+                    "label": c.experiment.label,
+                    "source": c.experiment.source,
+                    "ratio": c.experiment.ratio,
+                    "n": c.experiment.n,
+                    "edges": c.experiment.edges,
+                    "fraction": c.experiment.observed.p,
+                    "ci95": list(c.experiment.observed.ci95),
+                    "setting": c.setting.name,
+                    "setting_description": c.setting.description,
+                    "box": {k: list(r) for k, r in c.box.items()},
+                    "bands": [band(b, c.experiment.observed) for b in c.bands],
+                }
+                for c in self.comparisons
+            ],
+        }
+
+
+def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> list[dict[str, float]]:
+    """The cells of the box ``ranges`` (name → (low, high)): ``points`` values per parameter,
+    ends included (2: the corners), every combination, and the box's centre last when it is
+    not among them. A range of equal ends is one value. The values are evenly spaced, except
+    ``resistance``'s (geometric: the range spans two decades), whose centre is the geometric
+    mean."""
+    points = v.count("points per parameter", points, 2, 9)
+    names = list(ranges)
+
+    def values(name: str, lo: float, hi: float) -> list[float]:
+        if lo == hi:
+            return [float(lo)]
+        if name == "resistance":
+            return [float(x) for x in np.geomspace(lo, hi, points)]
+        return [float(x) for x in np.linspace(lo, hi, points)]
+
+    axes = [values(k, lo, hi) for k, (lo, hi) in ranges.items()]
+    cells = [dict(zip(names, corner, strict=True)) for corner in itertools.product(*axes)]
+    centre = {
+        k: a[len(a) // 2] if len(a) % 2 else math.nan for k, a in zip(names, axes, strict=True)
+    }
+    if any(math.isnan(c) for c in centre.values()):
+        centre = {
+            k: math.sqrt(lo * hi) if k == "resistance" else 0.5 * (lo + hi)
+            for k, (lo, hi) in ranges.items()
+        }
+        cells.append(centre)
+    else:  # odd points: the centre is a grid cell; put it last
+        cells.remove(centre)
+        cells.append(centre)
+    return cells
+
+
+def experiment_box(
+    experiment: Experiment,
+    the_setting: Setting,
+    ending: str,
+    restitution: tuple[float, float] | None = None,
+    friction: tuple[float, float] | None = None,
+) -> dict[str, tuple[float, float]]:
+    """The unmeasured parameters' ranges for one experiment and ending: e and μ (default the
+    surface presets' box, :func:`coinflight.studies.landing.bouncing_box`), the diameter and
+    the drop (the record's when it gives them, else the setting's), and with the contact
+    ending the resistance (:data:`RESISTANCE`)."""
+    from coinflight.studies.landing import bouncing_box
+
+    e_box, mu_box = bouncing_box()
+    d = experiment.diameter
+    h = experiment.drop_height
+    out = {
+        "restitution": e_box if restitution is None else restitution,
+        "friction": mu_box if friction is None else friction,
+        "diameter": the_setting.diameter if d is None else (d, d),
+        "drop_height": the_setting.drop_height if h is None else (h, h),
+    }
+    if ending == "contact":
+        out["resistance"] = RESISTANCE
+    return out
+
+
+def edge_experiments(
+    experiments: Sequence[Experiment],
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    contact: int = 0,
+    points: int = 2,
+    restitution: tuple[float, float] | None = None,
+    friction: tuple[float, float] | None = None,
+    g: float = 9.81,
+    progress: Callable[[str], None] | None = None,
+) -> EdgeExperiments:
+    """Each experiment's setting simulated over the unmeasured parameters' box, both endings.
+
+    Parameters
+    ----------
+    experiments : sequence of Experiment
+        The measured points (data are an argument: none is written in this module).
+    n : int
+        Tosses per cell with the rocking ending (corners and centre of
+        :func:`experiment_box`).
+    seed : int, optional
+        Every draw: experiment i takes child i, the same tosses in every cell and both endings
+        (common random numbers; the contact ending's ``contact`` tosses are the first of the
+        rocking ending's, :func:`~coinflight.studies.edge.simulate_edge`'s prefix property).
+    contact : int
+        Tosses per cell with the 3-D contact ending (0: not simulated).
+    points : int
+        Values per parameter of the rocking ending's box (2: corners and centre, as the
+        contact ending's always; 3: a 3 × 3 × … grid). The landing's P(edge) is not monotonic
+        in e and μ (module notes), so more points widen the band towards its true extent.
+    restitution, friction : (float, float), optional
+        Replace the surface presets' ranges (e.g. (0, 0) and a sticking friction for the
+        dead-landing check; the contact ending needs restitution above 0).
+    g : float
+        Gravitational acceleration of the real throws, m/s².
+    progress : callable, optional
+        Called with a short text after each band.
+
+    Raises
+    ------
+    ValueError
+        Before anything runs: no experiments, sizes out of range, or the whole run above the
+        work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at the landing rates of
+        :mod:`coinflight.outcomes.table`).
+    """
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
+    from coinflight.studies.edge import SIM_DIAMETER, simulate_edge
+
+    items = tuple(experiments)
+    if not items:
+        raise ValueError("give at least one experiment")
+    for item in items:
+        v.instance("experiment", item, Experiment, "an Experiment")
+    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
+    contact = v.count("contact-ending tosses per cell", contact, 0, n)
+    streams.check_seed(seed)
+    if contact and restitution is not None and min(restitution) <= 0.0:
+        raise ValueError(
+            f"the contact ending acts on landings that bounce: restitution {restitution} "
+            "reaches 0; give a range above 0, or contact = 0"
+        )
+    settings = {name: setting(name) for name in {x.setting for x in items}}
+    boxes = [
+        {
+            ending: experiment_box(x, settings[x.setting], ending, restitution, friction)
+            for ending in ("rocking", "contact")
+        }
+        for x in items
+    ]
+    points = v.count("points per parameter", points, 2, 9)
+    rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
+    contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
+    seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
+        CONTACT_TOSSES_PER_SECOND
+    )
+    v.work_bound(
+        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking and "
+        f"{contact_tosses:,} contact-ending tosses",
+        seconds,
+        v.MAX_RUN_SECONDS,
+        "s",
+        "use fewer tosses per cell (n, contact)",
+    )
+    t0 = time.perf_counter()
+    root = streams.seed_sequence(seed)
+    comparisons = []
+    for i, (x, box) in enumerate(zip(items, boxes, strict=True)):
+        the_setting = settings[x.setting]
+        child = streams.child(root, i)
+        bands: dict[str, Band] = {}
+        for ending, size in (("rocking", n), ("contact", contact)):
+            if size == 0:
+                continue
+            cells = []
+            for point in box_cells(box[ending], points if ending == "rocking" else 2):
+                k = SIM_DIAMETER / point["diameter"]  # the scaled world (module notes)
+                length = point.get("resistance")
+                resist = None if length is None else k * length
+                ((_, estimate),) = simulate_edge(
+                    [x.ratio],
+                    size,
+                    child,
+                    g=k * g,
+                    restitution=point["restitution"],
+                    friction=point["friction"],
+                    drop_height=k * point["drop_height"],
+                    spin=the_setting.spin,
+                    launch_speed=the_setting.launch_speed.scaled(k),
+                    ending=ending,
+                    rolling_resistance=resist,
+                    pivoting_resistance=resist,
+                )
+                cells.append(Cell(MappingProxyType(point), estimate))
+            bands[ending] = Band(ending, tuple(cells))
+            if progress is not None:
+                progress(f"{x.label}: {ending}")
+        widest = box["contact" if contact else "rocking"]
+        comparisons.append(
+            Comparison(
+                x, the_setting, bands["rocking"], bands.get("contact"), MappingProxyType(widest)
+            )
+        )
+    return EdgeExperiments(
+        tuple(comparisons),
+        n,
+        contact,
+        streams.reported_seed(root),
+        time.perf_counter() - t0,
+        points,
+    )
+
+
+@dataclass(frozen=True)
+class EngineCheck:
+    """The same ``n`` tosses of one setting at one point of the box in coinflight (both
+    endings) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
+    MuJoCo's tosses still moving at its limit, and the point (``parameters``)."""
+
+    label: str
+    parameters: Mapping[str, float]
+    rocking: BinomialEstimate
+    contact: BinomialEstimate
+    mujoco: BinomialEstimate
+    mujoco_moving: int
+    mujoco_seconds: float
+
+
+def mujoco_check(
+    experiment: Experiment,
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    restitution: float = 0.45,
+    friction: float = 0.325,
+    drop_height: float | None = None,
+    resistance: float = 1e-4,
+    g: float = 9.81,
+) -> EngineCheck:
+    """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
+    :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
+    from the seed's child 0, release ``drop_height``, default the middle of the setting's
+    range) landed on one table (e, μ; rolling and pivoting, MuJoCo's rolling and torsional,
+    resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
+    otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
+    past its first contact). ImportError without MuJoCo; its work bounded by
+    :func:`coinflight.studies.mujoco_compare.run`."""
+    from coinflight.core.outcome import EDGE
+    from coinflight.model.coin import Coin
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import land
+    from coinflight.studies import mujoco_compare
+    from coinflight.studies.edge import SIM_DIAMETER
+
+    v.instance("experiment", experiment, Experiment, "an Experiment")
+    n = v.count("tosses of the MuJoCo check", n, 1, 100_000)
+    the_setting = setting(experiment.setting)
+    drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
+    root = streams.seed_sequence(seed)
+    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, 2)), axis=1)
+    omega = np.zeros((n, 3))
+    omega[:, 0] = the_setting.spin.ppf(u[0])
+    v0 = np.asarray(the_setting.launch_speed.ppf(u[1]), dtype=float)
+    r = 0.5 * SIM_DIAMETER
+    h = experiment.ratio * SIM_DIAMETER
+    coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # as simulate_edge's
+    seed_int = streams.reported_seed(root)
+
+    def edges(faces: Any) -> BinomialEstimate:
+        return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
+
+    ours = {}
+    for ending in ("rocking", "contact"):
+        extra = (
+            {"rolling_resistance": resistance, "pivoting_resistance": resistance}
+            if ending == "contact"
+            else {}
+        )
+        table = Surface("table", drop, restitution, friction, ending=ending, **extra)
+        ours[ending] = edges(land(coin, omega, v0, 1.0, g, table).face)
+    run = mujoco_compare.run(
+        coin, omega, v0, drop, restitution, friction, g, torsional=resistance, rolling=resistance
+    )
+    return EngineCheck(
+        experiment.label,
+        MappingProxyType(
+            {
+                "restitution": restitution,
+                "friction": friction,
+                "diameter": SIM_DIAMETER,
+                "drop_height": drop,
+                "resistance": resistance,
+            }
+        ),
+        ours["rocking"],
+        ours["contact"],
+        edges(run.rest),
+        int(np.count_nonzero(run.moving)),
+        float(run.elapsed),
+    )
+
+
+__all__ = [
+    "HAND_DIAMETER",
+    "HAND_DROP",
+    "RESISTANCE",
+    "SETTINGS",
+    "SOURCE_SETTINGS",
+    "Band",
+    "Cell",
+    "Comparison",
+    "EdgeExperiments",
+    "EngineCheck",
+    "Experiment",
+    "Setting",
+    "box_cells",
+    "edge_experiments",
+    "experiment_box",
+    "from_dataset",
+    "mujoco_check",
+    "setting",
+]
