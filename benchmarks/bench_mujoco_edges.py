@@ -22,7 +22,10 @@ contact phases compared alone); ``--handoff-only`` does only that (no MuJoCo fli
 ``--handoff-integrator`` (default ``--integrator``), ``--condim`` (MuJoCo's contact dimension,
 default 6; 3: sliding friction only, no rolling or torsional friction sharing its cone) and
 ``--resistance-factor`` (MuJoCo's rolling and torsional friction times 1e-4 m; coinflight's
-stay 1e-4 m).
+stay 1e-4 m), and MuJoCo's friction made harder than its default
+(:class:`coinflight.studies.mujoco_compare.FrictionSolver`): ``--cone elliptic``,
+``--impratio R`` (friction impedance R times the normal's), ``--noslip K`` (K no-slip
+iterations after the main solver).
 """
 
 from __future__ import annotations
@@ -131,8 +134,14 @@ def from_handoff(
         torsional=study.EDGE_RESISTANCE * args.resistance_factor,
         rolling=study.EDGE_RESISTANCE * args.resistance_factor,
         integrator=args.handoff_integrator or args.integrator,
+        solver=solver_of(args),
     )
     return np.array(idx, dtype=int), run
+
+
+def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
+    """MuJoCo's friction solver from ``--cone``, ``--impratio``, ``--noslip``."""
+    return mujoco_compare.FrictionSolver(args.cone, args.impratio, args.noslip)
 
 
 def handoff_report(
@@ -155,6 +164,7 @@ def handoff_report(
 
     print(
         f"  from coinflight's hand-off state ({len(idx)} tosses; MuJoCo {hr.integrator}, "
+        f"condim {hr.condim}, {hr.solver}, damping ratio {hr.dampratio:.4f}; "
         f"{hr.elapsed:.0f} s wall, {hr.steps:,} steps)"
     )
     print(f"    coinflight             : {frac(ours)}")
@@ -230,9 +240,28 @@ def main() -> None:
         default=1.0,
         help="MuJoCo's rolling and torsional friction from the hand-off, times 1e-4 m",
     )
+    parser.add_argument(
+        "--cone",
+        choices=mujoco_compare.CONES,
+        default=mujoco_compare.CONE,
+        help="MuJoCo's friction cone from the hand-off",
+    )
+    parser.add_argument(
+        "--impratio",
+        type=float,
+        default=1.0,
+        help="MuJoCo's frictional-to-normal impedance ratio from the hand-off (elliptic cone)",
+    )
+    parser.add_argument(
+        "--noslip",
+        type=int,
+        default=0,
+        help="MuJoCo's no-slip iterations from the hand-off (0: none)",
+    )
     parser.add_argument("--save", default=None, help="write per-toss arrays to SAVE-e…-mu….npz")
     args = parser.parse_args()
     pairs = tuple(tuple(float(x) for x in p.split(",")) for p in args.pairs)
+    solver_of(args)  # bad values refused before anything runs
     if args.handoff_only:
         handoff_only(args, pairs)
         return
