@@ -42,15 +42,20 @@ soft contact and a fast-wobbling rim touch and leave within a step or two)."""
 
 
 def ours_trace(y0: np.ndarray, c, span: float, dt: float) -> dict[str, np.ndarray]:  # type: ignore[no-untyped-def]
-    """coinflight's contact phase from y0 sampled every dt: t, v (k, 3), n, ω, z, F_n."""
+    """coinflight's contact phase from y0 sampled every dt: t, v (k, 3), n, ω, z, F_n; and
+    the friction checked at every sample in contact: ``cone`` = horizontal force / (μ F_n),
+    ``against`` = cosine between it and the slip of the material point at the centre of
+    pressure (one rim touching, slip above 10 v_ε; −1 when it opposes the slip; nan else)."""
     from coinflight.core import contact_phase as cp
-    from coinflight.core.impact import angular_velocity
+    from coinflight.core.impact import angular_velocity, cross
 
     y = y0.copy()
     k = round(span / dt) + 1
     out = {name: np.zeros((k, 3)) for name in ("v", "n", "w")}
     out["z"] = np.zeros(k)
     out["fn"] = np.zeros(k)
+    out["cone"] = np.full(k, np.nan)
+    out["against"] = np.full(k, np.nan)
     deriv = np.empty(10)
     stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
     for i in range(k):
@@ -62,6 +67,23 @@ def ours_trace(y0: np.ndarray, c, span: float, dt: float) -> dict[str, np.ndarra
         out["n"][i] = y[4:7]
         out["w"][i] = angular_velocity(tuple(y[7:10]), tuple(y[4:7]), c.i1, c.i3)
         out["fn"][i] = c.mass * (deriv[3] + c.g)
+        ft = c.mass * deriv[1:3]
+        if out["fn"][i] > 0.0 and c.friction > 0.0:
+            out["cone"][i] = math.hypot(*ft) / (c.friction * out["fn"][i])
+            w = tuple(out["w"][i])
+            rims = [
+                cp.rim_contact(
+                    sigma, y[0], tuple(y[1:4]), tuple(y[4:7]), w, c.radius, c.half_thickness,
+                    c.mass, c.i1, c.i3, stiff, zeta, c.corner_radius,
+                )
+                for sigma in (-1.0, 1.0)
+            ]  # fmt: skip
+            touching = [r for r in rims if r[0] > 0.0]
+            if len(touching) == 1:
+                u = y[1:3] + np.array(cross(w, touching[0][1]))[:2]
+                slip = math.hypot(*u)
+                if slip > 10.0 * cp.SLIP_SPEED:
+                    out["against"][i] = float(ft @ u) / (math.hypot(*ft) * slip)
     out["t"] = dt * np.arange(k)
     return out
 
@@ -245,8 +267,12 @@ def main() -> None:
         f"{run.dampratio:.4f}; load {os.getloadavg()[0]:.1f}"
     )
     rows = []
+    cone_max, against_max, checked = 0.0, -1.0, 0
     for idx in range(len(sample)):
         ours = ours_trace(ys[idx], c, args.span, dt)
+        cone_max = max(cone_max, float(np.nanmax(ours["cone"], initial=0.0)))
+        against_max = max(against_max, float(np.nanmax(ours["against"], initial=-1.0)))
+        checked += int(np.count_nonzero(np.isfinite(ours["cone"])))
         theirs = mujoco_trace(m, d, initial[idx], args.span)
         eps_o, eps_m = episodes(ours, c, mu), episodes(theirs, c, mu)
         gap = np.abs(tilt(ours["n"]) - tilt(theirs["n"]))
@@ -320,6 +346,11 @@ def main() -> None:
         f"{len(sample)} ({int((mj_e & ours_e).sum())} of coinflight's {int(ours_e.sum())} "
         f"edges; {int(run.unsettled)} still moving at {args.limit:g} s); whole run "
         f"{time.perf_counter() - t0:.0f} s"
+    )
+    print(
+        f"coinflight's friction on {checked:,} sampled contact states: largest horizontal force "
+        f"/ (μ F_n) {cone_max:.6f}; largest cosine to the slip at the centre of pressure (one "
+        f"rim, slip > 10 v_ε) {against_max:.9f} (−1: opposing it)"
     )
     groups = {
         "coinflight edge": ours_e,
