@@ -3,6 +3,7 @@
 (:mod:`coinflight.core.contact_phase`) and MuJoCo (needs the ``mujoco`` extra).
 
     python benchmarks/bench_rim_impacts.py [N] [--friction MU] [--contact-time T] [--seed S]
+        [--condim 6] [--cone pyramidal|elliptic] [--impratio R] [--noslip K]
 
 N impacts (default 100): tilt ~ U(0.15, 1.4) rad, a random azimuth, v_h ~ N(0, 0.3) m/s per
 axis, v_z ~ −U(0.3, 1.5) m/s, ω of magnitude U(50, 300) rad/s in a random direction, the
@@ -11,7 +12,13 @@ damping calibrated by a flat drop at 2 m/s), resistances 1e-4 m. Each state is c
 after the touch (the rigid law followed by 3 ms of flight); an impact still or again in
 contact then, in either soft engine, is drawn again. Prints the medians and 90th percentiles of
 the velocity's distance to the rigid law's, m/s, and of the angular momentum's, in I1 ω, and
-the mean fraction of the kinetic energy each law takes (gravity's 3 ms added back).
+the mean fraction of the kinetic energy each law takes (gravity's 3 ms added back), and the
+mean ratio of the horizontal to μ times the vertical impulse the table gave (from the momentum:
+1 for an impact that slides one way throughout) and the vertical impulse J_n over the rigid
+law's. ``--condim``, ``--cone``, ``--impratio``,
+``--noslip``: MuJoCo's contact dimension and friction solver
+(:class:`coinflight.studies.mujoco_compare.FrictionSolver`; impratio > 1 with the elliptic
+cone and the no-slip pass make its friction harder).
 """
 
 from __future__ import annotations
@@ -36,16 +43,27 @@ def main() -> None:
     parser.add_argument("--friction", type=float, default=0.3)
     parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--condim", type=int, default=6)
+    parser.add_argument("--cone", choices=mc.CONES, default=mc.CONE)
+    parser.add_argument("--impratio", type=float, default=1.0)
+    parser.add_argument("--noslip", type=int, default=0)
     args = parser.parse_args()
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip)
     mu, g, span = args.friction, 9.81, 0.003
     c = bench_contact.contact(0.5, mu)._replace(contact_time=args.contact_time)
     coin = study.EDGE_TOSSES["vigorous"]().coin
-    model = mc._calibrated(coin, 0.5, mu, 2.0, g, 6, 1e-4, 1e-4, "RK4")[0]
+    model = mc._calibrated(coin, 0.5, mu, 2.0, g, args.condim, 1e-4, 1e-4, "RK4", solver)[0]
     data = mujoco.MjData(model)
     rot = np.empty(9)
     rng = np.random.default_rng(args.seed)
-    dist: dict[str, list[tuple[float, float, float]]] = {"contact phase": [], "MuJoCo": []}
+    dist: dict[str, list[tuple[float, ...]]] = {"contact phase": [], "MuJoCo": []}
     lost_rigid = []
+    ratio_rigid = []
+
+    def ratio(v_before: np.ndarray, v_after: np.ndarray) -> float:
+        """Horizontal / (μ vertical) impulse of the table from the momentum over ``span``."""
+        dv = v_after - v_before
+        return float(math.hypot(dv[0], dv[1]) / (mu * (dv[2] + g * span))) if mu > 0 else 0.0
 
     def kinetic(v: np.ndarray, lm: np.ndarray, n: np.ndarray) -> float:
         return float(
@@ -97,11 +115,15 @@ def main() -> None:
         fall = np.array([0.0, 0.0, g * span])
         e0 = kinetic(v, lm, n)
         lost_rigid.append(1.0 - kinetic(rigid_v + fall, rigid_l, n) / e0)
+        ratio_rigid.append(ratio(v, rigid_v))
+        jn_rigid = rigid_v[2] - v[2] + g * span
         dist["contact phase"].append(
             (
                 float(np.linalg.norm(y[1:4] - rigid_v)),
                 float(np.linalg.norm(y[7:10] - rigid_l)) / scale,
                 1.0 - kinetic(y[1:4] + fall, y[7:10], y[4:7]) / e0,
+                ratio(v, y[1:4]),
+                (y[3] - v[2] + g * span) / jn_rigid,
             )
         )
         dist["MuJoCo"].append(
@@ -109,11 +131,14 @@ def main() -> None:
                 float(np.linalg.norm(data.qvel[:3] - rigid_v)),
                 float(np.linalg.norm(lm_mj - rigid_l)) / scale,
                 1.0 - kinetic(data.qvel[:3] + fall, lm_mj, nm) / e0,
+                ratio(v, np.array(data.qvel[:3])),
+                (data.qvel[2] - v[2] + g * span) / jn_rigid,
             )
         )
     print(
         f"{args.n} rim impacts, e 0.5, μ {mu:g}, t_c {args.contact_time:g} s (seed {args.seed}); "
-        f"kinetic energy lost, mean: rigid {np.mean(lost_rigid):.3f}"
+        f"MuJoCo condim {args.condim}, {solver}; kinetic energy lost, mean: rigid "
+        f"{np.mean(lost_rigid):.3f}; J_t/(μ J_n) mean rigid {np.mean(ratio_rigid):.3f}"
     )
     for name, rows in dist.items():
         r = np.array(rows)
@@ -121,7 +146,9 @@ def main() -> None:
             f"  {name:13s} against the rigid law: velocity median {np.median(r[:, 0]):.3f} m/s "
             f"(90 % {np.percentile(r[:, 0], 90):.3f}), angular momentum median "
             f"{np.median(r[:, 1]):.3f} I1 ω (90 % {np.percentile(r[:, 1], 90):.3f}); kinetic "
-            f"energy lost, mean {np.mean(r[:, 2]):.3f}"
+            f"energy lost, mean {np.mean(r[:, 2]):.3f}; J_t/(μ J_n) mean {np.mean(r[:, 3]):.3f}, "
+            f"J_n / the rigid law's: median {np.median(r[:, 4]):.3f} (quartiles "
+            f"{np.percentile(r[:, 4], 25):.3f}-{np.percentile(r[:, 4], 75):.3f})"
         )
 
 
