@@ -297,6 +297,15 @@ def main() -> None:
 
         jn_o, jt_o = sums(bo)
         jn_m, jt_m = sums(bm)
+        all_jn_o, all_jt_o = sums(eps_o)
+        all_jn_m, all_jt_m = sums(eps_m)
+
+        def hop(tr: dict[str, np.ndarray]) -> float:
+            depth = c.radius * np.sqrt(1 - tr["n"][:, 2] ** 2) + c.half_thickness * np.abs(
+                tr["n"][:, 2]
+            )
+            return float(np.max(tr["z"] - depth))
+
         first_o = eps_o[0] if eps_o else None
         first_m = eps_m[0] if eps_m else None
         rows.append(
@@ -334,6 +343,14 @@ def main() -> None:
                 "ke_end_m": energy_m[-1] / energy_m[0],
                 "ke_part_o": energy_o[parted[0]] / energy_o[0] if len(parted) else math.nan,
                 "ke_part_m": energy_m[parted[0]] / energy_m[0] if len(parted) else math.nan,
+                "span_ratio_o": all_jt_o / (mu * all_jn_o) if all_jn_o > 0 else math.nan,
+                "span_ratio_m": all_jt_m / (mu * all_jn_m) if all_jn_m > 0 else math.nan,
+                "span_jn_o": all_jn_o,
+                "span_jn_m": all_jn_m,
+                "hop_o": hop(ours) * 1e3,
+                "hop_m": hop(theirs) * 1e3,
+                "first_len_o": first_o["length"] * 1e3 if first_o else math.nan,
+                "first_len_m": first_m["length"] * 1e3 if first_m else math.nan,
                 "contact_o": float(np.mean(ours["fn"] > 0)),
                 "contact_m": float(np.mean(theirs["fn"] > 0)),
             }
@@ -360,6 +377,7 @@ def main() -> None:
     }
     keys = (
         ("t_part", "parted at (s, tilts 10° apart)", None),
+        ("first_len_o", "1st episode length (ms)", "first_len_m"),
         ("first_jn_o", "1st episode J_n (mN s)", "first_jn_m"),
         ("first_jt_o", "1st episode J_t (mN s)", "first_jt_m"),
         ("first_ratio_o", "1st episode J_t/(μ J_n)", "first_ratio_m"),
@@ -374,8 +392,11 @@ def main() -> None:
         ("ke_end_o", f"kinetic energy at {args.span:g} s / start", "ke_end_m"),
         ("tilt_end_o", f"tilt at {args.span:g} s (deg)", "tilt_end_m"),
         ("contact_o", "share of samples in contact", "contact_m"),
+        ("span_jn_o", f"sum J_n over {args.span:g} s (mN s)", "span_jn_m"),
+        ("span_ratio_o", f"sum J_t / (μ sum J_n) over {args.span:g} s", "span_ratio_m"),
+        ("hop_o", f"highest hop of the lowest point in {args.span:g} s (mm)", "hop_m"),
     )
-    scale = {"first_jn_o": 1e3, "first_jt_o": 1e3, "jn_o": 1e3, "jt_o": 1e3}
+    scale = {"first_jn_o": 1e3, "first_jt_o": 1e3, "jn_o": 1e3, "jt_o": 1e3, "span_jn_o": 1e3}
     for gname, mask in groups.items():
         print(f"\n{gname} ({int(mask.sum())} tosses): median coinflight | MuJoCo")
         for ko, label, km in keys:

@@ -18,7 +18,9 @@ mean ratio of the horizontal to μ times the vertical impulse the table gave (fr
 law's. ``--condim``, ``--cone``, ``--impratio``,
 ``--noslip``: MuJoCo's contact dimension and friction solver
 (:class:`coinflight.studies.mujoco_compare.FrictionSolver`; impratio > 1 with the elliptic
-cone and the no-slip pass make its friction harder).
+cone and the no-slip pass make its friction harder). ``--release``: each impact followed in
+both soft engines until its contact ends, and the lowest point's normal velocity then over its
+approach speed (:func:`release_rebound`).
 """
 
 from __future__ import annotations
@@ -27,6 +29,99 @@ import argparse
 import math
 
 import numpy as np
+
+
+def release_rebound(args: argparse.Namespace, solver) -> None:  # type: ignore[no-untyped-def]
+    """``--release``: the same kind of impacts, each soft engine followed until its contact
+    ends (coinflight's phase every 10 μs, MuJoCo every step); the lowest point's normal velocity
+    then over its approach speed (the kinematic restitution the impact ends with), against the
+    rigid law's (Stronge's energetic e, whose kinematic ratio falls below e with friction)."""
+    import mujoco
+
+    import bench_contact
+    from coinflight.core import contact_phase as cp
+    from coinflight.core import impact as im
+    from coinflight.studies import landing as study
+    from coinflight.studies import mujoco_compare as mc
+
+    g, mu = 9.81, args.friction
+    c = bench_contact.contact(0.5, mu)._replace(contact_time=args.contact_time)
+    coin = study.EDGE_TOSSES["vigorous"]().coin
+    model = mc._calibrated(coin, 0.5, mu, 2.0, g, args.condim, 1e-4, 1e-4, "RK4", solver)[0]
+    data = mujoco.MjData(model)
+    rot = np.empty(9)
+    rng = np.random.default_rng(args.seed)
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    deriv = np.empty(10)
+
+    def normal(v: np.ndarray, w: np.ndarray, n: np.ndarray) -> float:
+        rc = np.array(im.contact_point(tuple(n), c.radius, c.half_thickness))
+        return float((v + np.cross(w, rc))[2])
+
+    rows = []
+    while len(rows) < args.n:
+        tilt, azimuth = rng.uniform(0.15, 1.4), rng.uniform(0.0, 2.0 * math.pi)
+        n = np.array(
+            [
+                math.sin(tilt) * math.cos(azimuth),
+                math.sin(tilt) * math.sin(azimuth),
+                math.cos(tilt),
+            ]
+        )
+        v = np.array([*rng.normal(0.0, 0.3, 2), -rng.uniform(0.3, 1.5)])
+        w = rng.normal(0.0, 1.0, 3)
+        w *= rng.uniform(50.0, 300.0) / np.linalg.norm(w)
+        lm = c.i1 * w + (c.i3 - c.i1) * (w @ n) * n
+        u0 = normal(v, w, n)
+        if u0 >= -0.05:
+            continue
+        v1, l1, _ = im.impact(
+            tuple(v), tuple(lm), tuple(n), c.radius, c.half_thickness, c.mass, c.i1, c.i3, 0.5, mu
+        )
+        w1 = np.array(im.angular_velocity(l1, tuple(n), c.i1, c.i3))
+        rigid = normal(np.array(v1), w1, n) / -u0
+        z = im.lowest_depth(n[2], c.radius, c.half_thickness)
+        y = np.array([z, *v, *n, *lm])
+        touched, ours = False, math.nan
+        for _ in range(2000):
+            cp.advance(y, 1e-5, c)
+            cp._derivative(y, deriv, c, stiff, zeta)
+            if c.mass * (deriv[3] + g) > 0.0:
+                touched = True
+            elif touched:
+                wl = np.array(im.angular_velocity(tuple(y[7:10]), tuple(y[4:7]), c.i1, c.i3))
+                ours = normal(y[1:4], wl, y[4:7]) / -u0
+                break
+        q = mc._quaternion_to(n[None])[0]
+        mujoco.mj_resetData(model, data)
+        data.qpos[:3] = (0.0, 0.0, z)
+        data.qpos[3:7] = q
+        mujoco.mju_quat2Mat(rot, q)
+        data.qvel[:3] = v
+        data.qvel[3:6] = rot.reshape(3, 3).T @ w
+        touched, theirs = False, math.nan
+        for _ in range(200):
+            mujoco.mj_step(model, data)
+            mujoco.mj_forward(model, data)
+            if data.ncon:
+                touched = True
+            elif touched:
+                mujoco.mju_quat2Mat(rot, data.qpos[3:7])
+                frame = rot.reshape(3, 3)
+                theirs = normal(np.array(data.qvel[:3]), frame @ data.qvel[3:6], frame[:, 2])
+                theirs /= -u0
+                break
+        if math.isfinite(ours) and math.isfinite(theirs):
+            rows.append((rigid, ours, theirs))
+    r = np.array(rows)
+    print(
+        f"{args.n} rim impacts, e 0.5, μ {mu:g}, t_c {args.contact_time:g} s (seed {args.seed}); "
+        f"MuJoCo condim {args.condim}, {solver}; the lowest point's normal velocity when the "
+        "contact ends over its approach speed, median (quartiles):"
+    )
+    for j, name in enumerate(("rigid law (energetic e)", "contact phase", "MuJoCo")):
+        q1, q2, q3 = np.percentile(r[:, j], (25, 50, 75))
+        print(f"  {name:24s}: {q2:.3f} ({q1:.3f}-{q3:.3f})")
 
 
 def main() -> None:
@@ -47,8 +142,14 @@ def main() -> None:
     parser.add_argument("--cone", choices=mc.CONES, default=mc.CONE)
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
+    parser.add_argument(
+        "--release", action="store_true", help="the kinematic restitution at the contact's end"
+    )
     args = parser.parse_args()
     solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip)
+    if args.release:
+        release_rebound(args, solver)
+        return
     mu, g, span = args.friction, 9.81, 0.003
     c = bench_contact.contact(0.5, mu)._replace(contact_time=args.contact_time)
     coin = study.EDGE_TOSSES["vigorous"]().coin
