@@ -59,6 +59,18 @@ seconds, a coin that lands flat a window). Tosses still moving at the limit are 
 :attr:`MujocoRun.edge_time` say how long each toss took to settle and how long it stood on its
 rim. The work is bounded before anything runs (:func:`seconds_estimate`).
 
+Harder friction. MuJoCo's friction is a soft constraint (it creeps below its limit and builds
+up over the contact's time constant); :class:`FrictionSolver` selects MuJoCo's documented ways
+to make it harder than the normal direction without changing μ: the elliptic cone with
+``impratio`` > 1, and the no-slip pass (``noslip_iterations``). They answer whether MuJoCo's
+soft friction is why it leaves fewer coins on edge than coinflight's contact ending: it is not
+(``benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
+10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
+friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
+impact its friction impulse is already as close to μ J_n as the rigid law's
+(``benchmarks/bench_rim_impacts.py``); what differs there is its normal impulse once friction
+acts (see the benchmarks' notes).
+
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
 tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
 contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
