@@ -25,7 +25,8 @@ default 6; 3: sliding friction only, no rolling or torsional friction sharing it
 stay 1e-4 m), and MuJoCo's friction made harder than its default
 (:class:`coinflight.studies.mujoco_compare.FrictionSolver`): ``--cone elliptic``,
 ``--impratio R`` (friction impedance R times the normal's), ``--noslip K`` (K no-slip
-iterations after the main solver).
+iterations after the main solver); ``--mujoco-restitution E``: MuJoCo's contact damping
+calibrated to E instead of the pair's e (coinflight keeps e).
 """
 
 from __future__ import annotations
@@ -125,7 +126,7 @@ def from_handoff(
         y[:, 1:4],
         y[:, 4:7],
         w.reshape(-1, 3),
-        e,
+        e if args.mujoco_restitution is None else args.mujoco_restitution,
         mu,
         speed,
         threads=args.threads,
@@ -257,6 +258,12 @@ def main() -> None:
         type=int,
         default=0,
         help="MuJoCo's no-slip iterations from the hand-off (0: none)",
+    )
+    parser.add_argument(
+        "--mujoco-restitution",
+        type=float,
+        default=None,
+        help="MuJoCo's contact calibrated to this e from the hand-off (default: the pair's e)",
     )
     parser.add_argument("--save", default=None, help="write per-toss arrays to SAVE-e…-mu….npz")
     args = parser.parse_args()
