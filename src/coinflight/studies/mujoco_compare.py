@@ -68,8 +68,8 @@ soft friction is why it leaves fewer coins on edge than coinflight's contact end
 10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
 friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
 impact its friction impulse is already as close to μ J_n as the rigid law's
-(``benchmarks/bench_rim_impacts.py``); what differs there is its normal impulse once friction
-acts (see the benchmarks' notes).
+(``benchmarks/bench_rim_impacts.py``). What differs is the normal contact (MuJoCo's coins hop
+off the rim where coinflight's stay on it; the benchmarks' notes).
 
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
 tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
