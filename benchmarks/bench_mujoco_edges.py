@@ -48,7 +48,8 @@ where it was: the factor left between the engines is not MuJoCo's soft friction.
 larger rebound MuJoCo's rim impacts have once friction acts (``bench_rim_impacts.py
 --release``: the contact point leaves at 0.53 of its approach speed against 0.48 in the rigid
 law and coinflight's phase, at e 0.5): with its contact calibrated to e 0.45
-(``--mujoco-restitution 0.45``, which by scaling, not measured, brings that rebound to ~0.48) MuJoCo leaves 19 on edge.
+(``--mujoco-restitution 0.45``, which by scaling, not measured, brings that rebound to ~0.48)
+MuJoCo leaves 19 on edge.
 Toss by toss (``bench_edge_trace.py``) the two part within ~30 ms of the hand-off: MuJoCo kicks
 the coin off its rim in 0.8 ms where coinflight's compliant rim keeps it pressed for ~9 ms, and
 MuJoCo's coins then hop (6 % of the first 0.1 s in contact, against 51 %) where coinflight's
