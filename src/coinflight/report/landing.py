@@ -891,7 +891,17 @@ def _edges_section(check: study.EdgeCheck) -> tuple[Block, ...]:
                 "well arctan(h/d) = 5.3° wide for the nickel. Where MuJoCo leaves as many "
                 "coins on edge as coinflight, the edge rate is the sharp rim's (both engines'); "
                 "where it leaves fewer, the difference lies in the engines' contact laws "
-                "(coinflight.core.contact_phase's module notes). Neither is a prediction: the "
+                "(coinflight.core.contact_phase's module notes). Measured from coinflight's own "
+                "hand-off states (benchmarks/bench_mujoco_edges.py --handoff-only, "
+                "bench_edge_trace.py, bench_rim_impacts.py): about half of the gap is MuJoCo's "
+                "shared friction budget at condim 6; the rest is not MuJoCo's soft friction "
+                "(made hard with the elliptic cone and impratio, or the no-slip pass, it leaves "
+                "as few coins on edge, and its friction impulse in a rim impact is as close to "
+                "μ J_n as the rigid law's), nor its larger rebound in rim impacts once friction "
+                "acts (calibrated to a lower e, it leaves as few). The two part within ~30 ms of "
+                "the hand-off in the normal contact: MuJoCo kicks the coin off its rim in under a "
+                "millisecond and its coins hop, where coinflight's compliant rim keeps them "
+                "pressed on the table and they roll up. Neither is a prediction: the "
                 "rolling and pivoting resistance and the corner radius are not measured for a "
                 "coin.",
             )

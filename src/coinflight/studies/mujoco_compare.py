@@ -59,6 +59,18 @@ seconds, a coin that lands flat a window). Tosses still moving at the limit are 
 :attr:`MujocoRun.edge_time` say how long each toss took to settle and how long it stood on its
 rim. The work is bounded before anything runs (:func:`seconds_estimate`).
 
+Harder friction. MuJoCo's friction is a soft constraint (it creeps below its limit and builds
+up over the contact's time constant); :class:`FrictionSolver` selects MuJoCo's documented ways
+to make it harder than the normal direction without changing μ: the elliptic cone with
+``impratio`` > 1, and the no-slip pass (``noslip_iterations``). They answer whether MuJoCo's
+soft friction is why it leaves fewer coins on edge than coinflight's contact ending: it is not
+(``benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
+10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
+friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
+impact its friction impulse is already as close to μ J_n as the rigid law's
+(``benchmarks/bench_rim_impacts.py``). What differs is the normal contact (MuJoCo's coins hop
+off the rim where coinflight's stay on it; the benchmarks' notes).
+
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
 tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
 contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
@@ -148,6 +160,77 @@ FLIGHT = 0.7
 for the work bound)."""
 
 
+CONES = ("pyramidal", "elliptic")
+"""MuJoCo's friction cones (``option/cone``)."""
+MAX_NOSLIP_ITERATIONS = 1000
+"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass)."""
+
+
+@dataclass(frozen=True)
+class FrictionSolver:
+    """How hard MuJoCo makes its friction: the cone, ``impratio`` and the no-slip pass.
+
+    MuJoCo's friction is a soft constraint like its normal force: within the cone it is a
+    spring-damper in constraint space that lets a contact creep, and in a short impact it
+    builds up over the contact's time constant rather than at once. Its documented ways to
+    make friction harder than the normal direction, without changing μ (MuJoCo 3.17,
+    ``mjOption`` in ``mjmodel.h``; documentation, XML reference, ``option``):
+
+    * ``impratio``, "the ratio of frictional-to-normal constraint impedance": the friction
+      dimensions' impedance is the normal's times it, so friction is stiffer (less slip in a
+      contact that should stick) for values above 1. Documented for the **elliptic** cone; with
+      the pyramidal cone its edges mix the normal and frictional directions and MuJoCo advises
+      against large values.
+    * ``noslip_iterations``: a post-processing pass after the main solver (a projected
+      Gauss-Seidel on the friction dimensions only, with the normal forces fixed) that removes
+      the slip the soft-constraint model lets through; 0 (default) switches it off.
+
+    Attributes
+    ----------
+    cone : str
+        ``"pyramidal"`` (MuJoCo's default, :data:`CONE`) or ``"elliptic"``.
+    impratio : float
+        Ratio of frictional-to-normal impedance, > 0 (MuJoCo's default 1).
+    noslip_iterations : int
+        No-slip iterations, 0 to :data:`MAX_NOSLIP_ITERATIONS` (MuJoCo's default 0).
+    """
+
+    cone: str = CONE
+    impratio: float = 1.0
+    noslip_iterations: int = 0
+
+    def __post_init__(self) -> None:
+        v.choice("MuJoCo cone", self.cone, CONES)
+        ratio = self.impratio
+        if not (
+            isinstance(ratio, (int, float))
+            and not isinstance(ratio, bool)
+            and math.isfinite(ratio)
+            and ratio > 0.0
+        ):
+            raise ValueError(f"MuJoCo impratio must be a positive number, got {ratio!r}")
+        v.count("MuJoCo noslip_iterations", self.noslip_iterations, 0, MAX_NOSLIP_ITERATIONS)
+
+    def option(self) -> str:
+        """The attributes of MuJoCo's ``<option>`` element for these settings."""
+        return (
+            f'cone="{self.cone}" impratio="{self.impratio!r}" '
+            f'noslip_iterations="{self.noslip_iterations}"'
+        )
+
+    def settings(self) -> dict[str, Any]:
+        """JSON-ready: cone, impratio, noslip_iterations."""
+        return {
+            "cone": self.cone,
+            "impratio": self.impratio,
+            "noslip_iterations": self.noslip_iterations,
+        }
+
+
+DEFAULT_SOLVER = FrictionSolver()
+"""MuJoCo's defaults: pyramidal cone, impratio 1, no no-slip pass (the comparison's settings)."""
+
+
 def available() -> bool:
     """True when MuJoCo can be imported."""
     try:
@@ -166,6 +249,7 @@ def _xml(
     condim: int,
     torsional: float,
     rolling: float,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> str:
     friction_text = f"{friction} {torsional} {rolling}"
     solref = f"{TIMECONST} {dampratio}"
@@ -173,7 +257,7 @@ def _xml(
     return f"""
     <mujoco>
       <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
-              cone="{CONE}"/>
+              {solver.option()}/>
       <worldbody>
         <geom type="plane" size="5 5 0.1" {contact}/>
         <body name="coin" pos="0 0 1">
@@ -194,15 +278,18 @@ def model(
     condim: int = CONDIM,
     torsional: float = TORSIONAL,
     rolling: float = ROLLING,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> Any:
     """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes);
     ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions); ``torsional`` and ``rolling`` the
-    friction coefficients (m) of both geoms (MuJoCo takes the larger of the two geoms')."""
+    friction coefficients (m) of both geoms (MuJoCo takes the larger of the two geoms');
+    ``solver`` the friction cone, impratio and no-slip pass (:class:`FrictionSolver`)."""
     import mujoco
 
     if condim not in (1, 3, 4, 6):
         raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {condim!r}")
-    xml = _xml(coin, friction, dampratio, g, integrator, condim, torsional, rolling)
+    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
+    xml = _xml(coin, friction, dampratio, g, integrator, condim, torsional, rolling, solver)
     return mujoco.MjModel.from_xml_string(xml)
 
 
@@ -213,12 +300,14 @@ def flat_drop_restitution(
     g: float = 9.81,
     integrator: str = INTEGRATOR,
     condim: int = CONDIM,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> float:
     """MuJoCo's normal restitution: the coin dropped flat at ``speed`` (m/s), without spin;
-    its largest upward speed after the impact over ``speed``."""
+    its largest upward speed after the impact over ``speed`` (with the friction ``solver``'s
+    cone and impedances, so that the calibration is that of the compared model)."""
     import mujoco
 
-    m = model(coin, 0.0, dampratio, g, integrator, condim)
+    m = model(coin, 0.0, dampratio, g, integrator, condim, solver=solver)
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
@@ -236,13 +325,14 @@ def calibrated_damping(
     g: float = 9.81,
     condim: int = CONDIM,
     integrator: str = INTEGRATOR,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> float:
     """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`) at
     ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach it."""
     from scipy.optimize import brentq
 
     def excess(z: float) -> float:
-        return flat_drop_restitution(coin, speed, z, g, integrator, condim) - restitution
+        return flat_drop_restitution(coin, speed, z, g, integrator, condim, solver) - restitution
 
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
@@ -294,6 +384,8 @@ class MujocoRun:
     edge_time : ndarray
         Simulated time after the first contact spent in the edge band (the heads normal within
         arctan(h/d) of the horizontal: upright on the rim, rolling or standing), s.
+    solver : FrictionSolver
+        MuJoCo's friction cone, impratio and no-slip iterations.
     """
 
     first: NDArray[np.int8]
@@ -313,6 +405,7 @@ class MujocoRun:
     steps: int = 0
     integrator: str = INTEGRATOR
     edge_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
+    solver: FrictionSolver = DEFAULT_SOLVER
 
     @property
     def unsettled(self) -> int:
@@ -332,7 +425,7 @@ class MujocoRun:
             "flat_drop_restitution_by_speed": [
                 [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
             ],
-            "cone": CONE,
+            **self.solver.settings(),
             "settle_limit": self.limit,
             "settle_window": WINDOW,
             "rest_speed": REST_SPEED,
@@ -552,21 +645,22 @@ def _calibrated(
     torsional: float,
     rolling: float,
     integrator: str,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> tuple[Any, float, float, dict[float, float]]:
     """(model, damping ratio, flat-drop restitution at ``speed``, restitution by speed): the
     contact's damping calibrated so that a flat drop at ``speed`` rebounds at e."""
     zeta = (
-        calibrated_damping(coin, restitution, speed, g, condim, integrator)
+        calibrated_damping(coin, restitution, speed, g, condim, integrator, solver)
         if restitution > 0
         else 1.0
     )
-    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim)
+    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim, solver)
     by_speed = {
-        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim)
+        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim, solver)
         for probe in PROBE_SPEEDS
     }
     by_speed[speed] = e_mujoco
-    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling)
+    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling, solver)
     return m, zeta, e_mujoco, by_speed
 
 
@@ -586,6 +680,7 @@ def _rollout(
     states: Callable[[Any, Any], NDArray[np.float64]],
     clocks: NDArray[np.float64],
     horizon: float,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
     """What :func:`run` and :func:`run_from` share: the limit and the work bound checked
     before anything is computed, the model calibrated at ``calibration_speed`` (m/s), one
@@ -595,10 +690,12 @@ def _rollout(
 
     t0 = time.perf_counter()
     check_limit(limit)
+    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
     bound([n], limit, integrator)
     m, zeta, e_mujoco, by_speed = _calibrated(
-        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator
-    )
+        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator,
+        solver,
+    )  # fmt: skip
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
     carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, limit, horizon)
@@ -620,6 +717,7 @@ def _rollout(
         carried.steps,
         integrator,
         carried.edge_time,
+        solver,
     )
 
 
@@ -638,6 +736,7 @@ def run(
     torsional: float = TORSIONAL,
     rolling: float = ROLLING,
     integrator: str = INTEGRATOR,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
     above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings.
@@ -645,7 +744,8 @@ def run(
     Each toss is carried until it has settled (:func:`_settled`) or ``limit`` s past its first
     contact, whichever comes first; those still moving at the limit are counted
     (:attr:`MujocoRun.moving`), never dropped. The work (:func:`seconds_estimate`) is bounded
-    before anything is computed. ImportError when MuJoCo is not installed.
+    before anything is computed. ``solver`` makes MuJoCo's friction harder than its default
+    (:class:`FrictionSolver`). ImportError when MuJoCo is not installed.
     """
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
@@ -657,7 +757,7 @@ def run(
     return _rollout(
         coin, n, restitution, friction, landing_speed, g, threads, condim, limit, torsional,
         rolling, integrator, lambda m, data: _launch_states(m, data, omega, v0, drop_height),
-        v0 / g, flight + 0.5,
+        v0 / g, flight + 0.5, solver,
     )  # fmt: skip
 
 
@@ -688,6 +788,7 @@ def run_from(
     torsional: float = TORSIONAL,
     rolling: float = ROLLING,
     integrator: str = INTEGRATOR,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
     """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
     heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
@@ -702,7 +803,7 @@ def run_from(
     return _rollout(
         coin, len(z), restitution, friction, calibration_speed, g, threads, condim, limit,
         torsional, rolling, integrator, lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab),
-        np.zeros(len(z)), 1.0,
+        np.zeros(len(z)), 1.0, solver,
     )  # fmt: skip
 
 
@@ -736,12 +837,16 @@ def _placed_states(
 __all__ = [
     "CONDIM",
     "CONE",
+    "CONES",
+    "DEFAULT_SOLVER",
     "INTEGRATOR",
+    "MAX_NOSLIP_ITERATIONS",
     "ROLLING",
     "SETTLE",
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",
+    "FrictionSolver",
     "MujocoRun",
     "available",
     "bound",
