@@ -239,6 +239,16 @@ RTOL = 1e-7
 """Relative tolerance of the step-size control."""
 MAX_STEP = 1e-3
 """Longest step, s (also at most a sixteenth of a turn)."""
+UPRIGHT_DECISION = True
+"""Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
+:func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
+rest, to the bit the integration before this decision."""
+UPRIGHT_MARGIN = 0.5
+"""Share of each bound of :func:`upright_decided` the coin may use: the band's restoring moment
+m g h′ against the turn's overturning moment, μ N against the friction the turn and the
+rolling resistance need, and the lean barrier against the energy of the tilt and bounce
+oscillations. The rest is the margin for what the rigid wheel of the proof leaves out (the
+contact's compliance, the regularised friction, the yaw driven by a lean rate)."""
 
 
 @njit(cache=True)
@@ -450,6 +460,85 @@ def free_energy(y, c, stiffness):
     return e, up if nz > 0.0 else down
 
 
+@njit(cache=True)
+def static_depth(c, stiffness):
+    """d_s, m: how deep an upright coin at rest sinks into the table (module notes, "Upright
+    rollers"), both rims' arcs in the parabolic approximation of the rim, 1 − cos φ ≈ φ²/2:
+    each carries F = (4√2/3) κ d^(3/2) / sqrt(r − a) = m g / 2. The exact arc carries more at
+    a depth (its penetration d − (r − a)(1 − cos φ) is the larger), so the true depth is
+    smaller than d_s and m g (r − d_s) is below the least potential energy (gravity and
+    springs) of an upright coin."""
+    radius = c.radius - c.corner_radius
+    weight = c.mass * c.g
+    return (3.0 * weight * math.sqrt(radius) / (8.0 * math.sqrt(2.0) * stiffness)) ** (2.0 / 3.0)
+
+
+@njit(cache=True)
+def upright_decided(y, c, stiffness, zeta):
+    """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
+    and stays there until it is at rest (module notes, "Upright rollers"): it will end on edge.
+
+    In this order (cheap tests first): a band (h′ = h/2 − a > 0) and friction (μ > 0); the
+    turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
+    of the band's m g h′; the friction the turn and the rolling resistance need,
+    sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
+    both rims pressed (:func:`rim_contact`, with the damper: the force they exert now); the
+    band's middle not slipping (the horizontal velocity of its lowest point below
+    :data:`SLIP_SPEED`); and the energy of the oscillations (the whole energy less the rolling
+    and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)² + ½ I1 (ω·ŵ)², t̂ the horizontal unit
+    vector across n, and less m g (r − d_s), :func:`static_depth`) at most that share of the
+    lean barrier ΔV(M, ω_z) (the notes).
+    """
+    hb = c.half_thickness - c.corner_radius  # h′: half the flat band
+    if hb <= 0.0 or c.friction <= 0.0:
+        return False
+    mass, i1, i3, g, radius = c.mass, c.i1, c.i3, c.g, c.radius
+    weight = mass * g
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    across = math.sqrt(n[0] * n[0] + n[1] * n[1])
+    if across < 0.5:
+        return False  # not near upright (two rims touch only within the band's tilt)
+    omega = angular_velocity(lm, n, i1, i3)
+    spin = dot(omega, n)
+    yaw = abs(omega[2])
+    vh = math.sqrt(v[0] * v[0] + v[1] * v[1])
+    moment = (i3 * abs(spin) + mass * radius * vh) * yaw
+    if moment > UPRIGHT_MARGIN * weight * hb:
+        return False
+    resist = mass * c.rolling_resistance * weight * radius / (i3 + mass * radius * radius)
+    turn = mass * vh * yaw
+    if math.sqrt(turn * turn + resist * resist) > UPRIGHT_MARGIN * c.friction * weight:
+        return False
+    for sigma in (-1.0, 1.0):
+        fn, _, _, _ = rim_contact(
+            sigma, y[0], v, n, omega, radius, c.half_thickness, mass, i1, i3, stiffness, zeta,
+            c.corner_radius,
+        )
+        if fn <= 0.0:
+            return False
+    s, w = _tangent_basis(n)
+    core = radius - c.corner_radius  # r − a, the rim circle's radius
+    low = (core * w[0], core * w[1], core * w[2] - c.corner_radius)  # the band middle's lowest
+    u = cross(omega, low)
+    ux, uy = v[0] + u[0], v[1] + u[1]
+    if ux * ux + uy * uy > SLIP_SPEED * SLIP_SPEED:
+        return False
+    t = (-n[1] / across, n[0] / across, 0.0)
+    vt = dot(v, t)
+    ww = dot(omega, w)
+    rolling = 0.5 * mass * vt * vt + 0.5 * i3 * spin * spin + 0.5 * i1 * ww * ww
+    wobble = energy(y, c, stiffness) - rolling - weight * (radius - static_depth(c, stiffness))
+    # The lean barrier: the coin pivoting on one corner (the pivot rolling on the corner's
+    # arc), restoring moment m g (h′ cos θ − (r − a) sin θ) − M − (I3 − I1) ω_z² sin θ cos θ.
+    reach = math.sqrt(core * core + hb * hb)
+    tip = math.acos(moment / (weight * reach)) - math.acos(hb / reach)
+    barrier = weight * (hb * math.sin(tip) + core * (math.cos(tip) - 1.0)) - moment * tip
+    barrier -= 0.5 * max(i3 - i1, 0.0) * yaw * yaw * math.sin(tip) ** 2
+    return barrier > 0.0 and wobble <= UPRIGHT_MARGIN * barrier
+
+
 # Dormand-Prince 5(4) (Hairer, Nørsett & Wanner, Solving ODEs I, table II.5.2).
 _A21 = 1.0 / 5.0
 _A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
@@ -493,11 +582,15 @@ def contact_mode(y, c):
 
 
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
+def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
-    coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
-    none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
-    steps taken (for the benchmark).
+    coin has settled, whichever comes first; with ``settle`` and ``decide``, a coin for which
+    :func:`upright_decided` holds has settled too (on edge). ``stats`` (shape (len(MODES), 2),
+    or (0, 2) for none) accumulates, per :func:`contact_mode` at the end of each step, the time
+    and the steps taken (for the benchmark); with one more row (shape (len(MODES) + 1, 2),
+    filled with −1 by the caller), that row receives (time, steps) when
+    :func:`upright_decided` first holds, with or without ``decide`` (so a run carried to rest
+    says where the decision would have ended it; the test runs at every step then).
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -522,11 +615,21 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
     h = contact_time / 20.0
     t = 0.0
     _derivative(y, k1, c, stiffness, zeta)
+    modes = len(MODES)
+    probe = stats.shape[0] > modes
     for step in range(max_steps):
         if settle:
             free, barrier = free_energy(y, c, stiffness)
             if free < barrier:
                 return t, step, True
+            if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
+                y, c, stiffness, zeta
+            ):
+                if probe and stats[modes, 1] < 0.0:
+                    stats[modes, 0] = t
+                    stats[modes, 1] = step
+                if decide:
+                    return t, step, True
         if t >= duration:
             return t, step, False
         lm = (y[7], y[8], y[9])
@@ -633,7 +736,9 @@ def settle(z, v, n, lm, c):
     status : Status
         SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
     time : float
-        Duration of the contact phase, s.
+        Duration of the contact phase, s: until the energy test or, for a coin ended upright by
+        :func:`upright_decided` (:data:`UPRIGHT_DECISION`; status SETTLED_CONTACT as well), until
+        that decision, not until it is at rest.
     """
     y = np.empty(10)
     y[0] = z
@@ -649,7 +754,15 @@ def settle(z, v, n, lm, c):
         status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
         return resting_face(n[2], c.edge_sine), status, 0.0
     t, _, settled = _integrate(
-        y, math.inf, c, stiffness_of(c), damping_of(c), True, MAX_STEPS, np.empty((0, 2))
+        y,
+        math.inf,
+        c,
+        stiffness_of(c),
+        damping_of(c),
+        True,
+        UPRIGHT_DECISION,
+        MAX_STEPS,
+        np.empty((0, 2)),
     )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
@@ -661,17 +774,24 @@ def advance(
     c,
     *,
     settle_check: bool = False,
+    decide: bool = False,
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
-    when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
-    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode."""
+    when the coin has settled by its energy (or, with ``decide`` too, when
+    :func:`upright_decided` holds, as :func:`settle` with :data:`UPRIGHT_DECISION`), whichever
+    comes first. ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time
+    and steps spent in each mode; with one more row filled with −1 (shape
+    (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
+    :func:`upright_decided` first held, decided or not (with ``settle_check``)."""
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
-    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats)
+    return _integrate(
+        state, duration, c, stiffness_of(c), zeta, settle_check, decide, max_steps, stats
+    )
 
 
 @njit(cache=True)
