@@ -464,10 +464,10 @@ def free_energy(y, c, stiffness):
 def static_depth(c, stiffness):
     """d_s, m: how deep an upright coin at rest sinks into the table (module notes, "Upright
     rollers"), both rims' arcs in the parabolic approximation of the rim, 1 − cos φ ≈ φ²/2:
-    each carries F = (4√2/3) κ d^(3/2) / sqrt(r − a) = m g / 2. The exact arc carries more at
-    a depth (its penetration d − (r − a)(1 − cos φ) is the larger), so the true depth is
-    smaller than d_s and m g (r − d_s) is below the least potential energy (gravity and
-    springs) of an upright coin."""
+    each carries F = (4√2/3) κ d^(3/2) / sqrt(r − a) = m g / 2 and stores (2/5) F d. The exact
+    arc's penetration d − (r − a)(1 − cos φ) is the larger at every φ, so its springs store more
+    at every depth, and the least potential energy (gravity and springs) of an upright coin is
+    at least that of the approximation, m g (r − d_s) + (2/5) m g d_s = m g (r − (3/5) d_s)."""
     radius = c.radius - c.corner_radius
     weight = c.mass * c.g
     return (3.0 * weight * math.sqrt(radius) / (8.0 * math.sqrt(2.0) * stiffness)) ** (2.0 / 3.0)
@@ -486,8 +486,8 @@ def upright_decided(y, c, stiffness, zeta):
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); and the energy of the oscillations (the whole energy less the rolling
     and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)² + ½ I1 (ω·ŵ)², t̂ the horizontal unit
-    vector across n, and less m g (r − d_s), :func:`static_depth`) at most that share of the
-    lean barrier ΔV(M, ω_z) (the notes).
+    vector across n, and less the least potential energy upright m g (r − (3/5) d_s),
+    :func:`static_depth`) at most that share of the lean barrier ΔV(M, ω_z) (the notes).
     """
     hb = c.half_thickness - c.corner_radius  # h′: half the flat band
     if hb <= 0.0 or c.friction <= 0.0:
@@ -529,7 +529,8 @@ def upright_decided(y, c, stiffness, zeta):
     vt = dot(v, t)
     ww = dot(omega, w)
     rolling = 0.5 * mass * vt * vt + 0.5 * i3 * spin * spin + 0.5 * i1 * ww * ww
-    wobble = energy(y, c, stiffness) - rolling - weight * (radius - static_depth(c, stiffness))
+    floor = weight * (radius - 0.6 * static_depth(c, stiffness))  # least potential, upright
+    wobble = energy(y, c, stiffness) - rolling - floor
     # The lean barrier: the coin pivoting on one corner (the pivot rolling on the corner's
     # arc), restoring moment m g (h′ cos θ − (r − a) sin θ) − M − (I3 − I1) ω_z² sin θ cos θ.
     reach = math.sqrt(core * core + hb * hb)
