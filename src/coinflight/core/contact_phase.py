@@ -460,6 +460,11 @@ def free_energy(y, c, stiffness):
     return e, up if nz > 0.0 else down
 
 
+SINGLE_RIM_DEPTH = 2.0 ** (2.0 / 3.0)
+"""How much deeper one rim sinks carrying the whole weight than each of two carrying half of it
+(F ∝ d^(3/2) on a short arc): the depth on the lean's ridge is this times :func:`static_depth`."""
+
+
 @njit(cache=True)
 def static_depth(c, stiffness):
     """d_s, m: how deep an upright coin at rest sinks into the table (module notes, "Upright
@@ -467,7 +472,10 @@ def static_depth(c, stiffness):
     each carries F = (4√2/3) κ d^(3/2) / sqrt(r − a) = m g / 2 and stores (2/5) F d. The exact
     arc's penetration d − (r − a)(1 − cos φ) is the larger at every φ, so its springs store more
     at every depth, and the least potential energy (gravity and springs) of an upright coin is
-    at least that of the approximation, m g (r − d_s) + (2/5) m g d_s = m g (r − (3/5) d_s)."""
+    at least that of the approximation, m g (r − d_s) + (2/5) m g d_s = m g (r − (3/5) d_s);
+    so is, with the depth d_1 = 2^(2/3) d_s of one rim carrying m g alone, that of a coin on one
+    rim whose rigid centre height is H: m g (H − (3/5) d_1) (the other rim's springs, dropped,
+    only add)."""
     radius = c.radius - c.corner_radius
     weight = c.mass * c.g
     return (3.0 * weight * math.sqrt(radius) / (8.0 * math.sqrt(2.0) * stiffness)) ** (2.0 / 3.0)
@@ -484,10 +492,11 @@ def upright_decided(y, c, stiffness, zeta):
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
     both rims pressed (:func:`rim_contact`, with the damper: the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
-    :data:`SLIP_SPEED`); and the energy of the oscillations (the whole energy less the rolling
-    and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)² + ½ I1 (ω·ŵ)², t̂ the horizontal unit
-    vector across n, and less the least potential energy upright m g (r − (3/5) d_s),
-    :func:`static_depth`) at most that share of the lean barrier ΔV(M, ω_z) (the notes).
+    :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
+    coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
+    + ½ I1 (ω·ŵ)², t̂ the horizontal unit vector across n) above the least potential energy
+    upright, m g (r − (3/5) d_s) (:func:`static_depth`), by at most that share of the ridge's
+    height above it (the notes).
     """
     hb = c.half_thickness - c.corner_radius  # h′: half the flat band
     if hb <= 0.0 or c.friction <= 0.0:
@@ -529,15 +538,22 @@ def upright_decided(y, c, stiffness, zeta):
     vt = dot(v, t)
     ww = dot(omega, w)
     rolling = 0.5 * mass * vt * vt + 0.5 * i3 * spin * spin + 0.5 * i1 * ww * ww
-    floor = weight * (radius - 0.6 * static_depth(c, stiffness))  # least potential, upright
-    wobble = energy(y, c, stiffness) - rolling - floor
-    # The lean barrier: the coin pivoting on one corner (the pivot rolling on the corner's
-    # arc), restoring moment m g (h′ cos θ − (r − a) sin θ) − M − (I3 − I1) ω_z² sin θ cos θ.
+    free = energy(y, c, stiffness) - rolling
+    # The ridge of the lean: the coin on one rim at the tilt θ* where the restoring moment
+    # m g (h′ cos θ − (r − a) sin θ) of the rigid pivot meets M, sunk to the depth at which that
+    # rim alone carries m g, the turn's work M (θ* + θ_now) and the spin's (I3 − I1) ω_z²
+    # sin²θ* / 2 taken off (the notes).
+    depth = static_depth(c, stiffness)
+    floor = weight * (radius - 0.6 * depth)  # least potential energy upright, at most
     reach = math.sqrt(core * core + hb * hb)
     tip = math.acos(moment / (weight * reach)) - math.acos(hb / reach)
-    barrier = weight * (hb * math.sin(tip) + core * (math.cos(tip) - 1.0)) - moment * tip
-    barrier -= 0.5 * max(i3 - i1, 0.0) * yaw * yaw * math.sin(tip) ** 2
-    return barrier > 0.0 and wobble <= UPRIGHT_MARGIN * barrier
+    lean = math.asin(min(abs(n[2]), 1.0))
+    if lean >= tip:
+        return False
+    ridge = weight * (core * math.cos(tip) + hb * math.sin(tip) + c.corner_radius)
+    ridge -= 0.6 * weight * SINGLE_RIM_DEPTH * depth + moment * (tip + lean)
+    ridge -= 0.5 * max(i3 - i1, 0.0) * yaw * yaw * math.sin(tip) ** 2
+    return ridge > floor and free <= floor + UPRIGHT_MARGIN * (ridge - floor)
 
 
 # Dormand-Prince 5(4) (Hairer, Nørsett & Wanner, Solving ODEs I, table II.5.2).
