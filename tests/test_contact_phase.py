@@ -568,9 +568,7 @@ def test_upright_coin_sliding_in_its_plane_rolls_at_two_thirds_of_its_speed():
 def _roller(coin, c, speed, yaw):
     """A coin upright in its edge band (n = X, on both rims at the static depth), rolling
     without slip along Y at ``speed`` and turning at ``yaw`` rad/s about the vertical."""
-    y = _state(
-        coin, 0.5 * math.pi, v=(0.0, speed, 0.0), omega_lab=(-speed / coin.radius, 0.0, yaw)
-    )
+    y = _state(coin, 0.5 * math.pi, v=(0.0, speed, 0.0), omega_lab=(-speed / coin.radius, 0.0, yaw))
     y[0] = coin.radius - cp.static_depth(c, cp.stiffness_of(c))
     return y
 
@@ -627,8 +625,9 @@ def test_upright_roller_needing_more_than_mu_n_is_not_decided():
 
 
 def test_upright_roller_not_decided_without_a_band_friction_or_both_rims():
-    # No band (a = h/2), no friction, one rim lifted (tilted 0.05 rad: the rims sink ~30 μm, so smaller tilts keep both pressed) or the coin sliding in
-    # its plane (0.3 m/s, not rolling): not decided.
+    # No band (a = h/2), no friction, one rim lifted (tilted 0.05 rad: the rims sink ~30 μm,
+    # so smaller tilts keep both pressed) or the coin sliding in its plane (0.3 m/s, not
+    # rolling): not decided.
     base = dict(e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
     c = _contact(NICKEL, **{**base, "corner": NICKEL.thickness / 2})
     assert not _decided(_roller(NICKEL, c, 0.3, 0.0), c)
