@@ -39,6 +39,8 @@ energy less ½ m v_h² below the barrier saves 5-8 % of the steps and disagrees 
 tosses; the tumbling energy (less ½ m v_h² and (L·n)²/2I3, as
 :func:`coinflight.core.bounce.tumbling_energy`) saves 42-72 % and disagrees on 23-30 of
 226-228 (≥ 7 % at 95 %). None is used.
+(These figures are without the upright rollers' decision, "Upright rollers" below, which
+ends the coins rolling upright in the band early and makes the landings 3-8× faster.)
 The 50,000 a second would need this phase ~300-1,000 times cheaper: a decision at the
 hand-off for nearly every toss, or a constrained (rolling/sliding rim) model integrated with
 steps far longer than the compliant contact's ~0.5 ms; neither is here.
@@ -271,6 +273,10 @@ corner (``--corner 5e-4``): 119 of 1,062 (120 on edge), 419 of 1,017 (420), 159 
 0 disagreements. A looser bound was not safe: before the ridge took the rims' compliance
 (the rigid barrier above the compliant floor), a 0.5 mm corner gave 2 disagreements in 708
 decisions (coins decided while already leaning slowly over a corner they then passed).
+Beyond these settings (the same tosses, the decision probed as above, 21:15-21:19 UTC): t_c
+2 ms (the rims sink 2.5× deeper) 125 and 416 decided at μ 0.3 and 0.6, ℓ_r = ℓ_p = 1e-3 m 89,
+248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
+longer) 56 and 187, each time 0 disagreements; 91 % and 98 % of the steps saved at 1e-5 m.
 The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
 margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
 every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,
@@ -281,7 +287,10 @@ Through the whole landing (bounces and this phase, :func:`coinflight.core.bounce
 2026-11-23 20:58-21:04 UTC, the shared 2-core machine at load 8-10): carried to rest **660
 tosses a second with the decision against 213 without** (3.1×) at e 0.5, μ 0.3; 477 against 57
 (8.4×) at μ 0.6; 588 against 161 (3.6×) with each toss's own e and μ; the faces of all 3 × 1,000
-tosses identical with and without it (83, 296 and 116 on edge), and their statuses too. Issue
+tosses identical with and without it (83, 296 and 116 on edge), and their statuses too. With
+:data:`UPRIGHT_DECISION` False the landings are those of the code before the decision to the
+bit (face, bounces, first contact, settle time and status of the same 3 × 1,000 tosses,
+against main at e38e887). Issue
 11's 50,000 a second stays out of reach: what is left is the tosses that do not end upright
 (one-rim rolling, rocking and hops) and the phase's steps before a roller is decided.
 """
