@@ -255,7 +255,7 @@ v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on), :func:`settle` ends such a 
   m g (H(θ*) − (3/5) 2^(2/3) d_s) (the exact arc is stiffer than its parabola: lower bounds),
   and a coin whose energy free to lean (the whole energy less ½ m (v·t̂)² + ½ I3 ω² +
   ½ I1 ψ'²) is below the ridge less the work of M from its present tilt cannot pass it.
-  With a 0.5 mm corner the compliant band holds a coin by only 0.6 μm of height; at a = h/2
+  With a 0.5 mm corner the compliant band holds a coin by only about 0.6 μm of height; at a = h/2
   there is no band and no decision; μ = 0 neither.
 
 **What is proven and what is measured.** The bounds are the rigid wheel's, taken
