@@ -5,6 +5,7 @@
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
     python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
+    python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -178,6 +179,93 @@ def contact_rates(n: int, repeats: int = 3) -> None:
         )
 
 
+UPRIGHT_SURFACES = {"e 0.5, μ 0.3": (0.5, 0.3), "e 0.5, μ 0.6": (0.5, 0.6), "own e, μ": None}
+"""The surfaces of :func:`upright_decision` (None: each toss's own e ~ U(0.2, 0.8),
+μ ~ U(0.1, 0.6), as :func:`contact_rates`)."""
+
+
+def _upright_child(n: int, setting: str, out: str) -> None:
+    """One round of :func:`upright_decision` in this process: the contact ending with the
+    upright decision ``setting`` ("on" or "off"), each surface timed once, the rates printed as
+    JSON and the faces and statuses saved to ``out`` (an .npz)."""
+    import json
+
+    from coinflight.core import contact_phase
+
+    # Before anything compiles: numba reads the global when it compiles settle (the parent
+    # gives the "off" child its own numba cache directory, whose key ignores globals).
+    contact_phase.UPRIGHT_DECISION = setting == "on"
+    omega, v0 = tosses(n)
+    rng = np.random.default_rng(7)
+    mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+    rates, arrays = {}, {}
+    for name, pair in UPRIGHT_SURFACES.items():
+        e, mu = pair or (0.5, 0.3)
+        surface = Surface("table", DROP, e, mu, ending="contact")
+        own = mixture if pair is None else None
+        part = None if own is None else {k: v[:20] for k, v in own.items()}
+        land(COIN, omega[:20], v0[:20], 1.0, G, surface, contact=part)  # compile or load
+        t0 = time.perf_counter()
+        out_ = land(COIN, omega, v0, 1.0, G, surface, contact=own)
+        rates[name] = n / (time.perf_counter() - t0)
+        arrays[f"{name} face"] = out_.face
+        arrays[f"{name} status"] = out_.status
+    np.savez(out, **arrays)
+    print(json.dumps(rates))
+
+
+def upright_decision(n: int, rounds: int = 3) -> None:
+    """Tosses a second carried to rest by the contact ending with
+    :func:`coinflight.core.contact_phase.upright_decided` on and off, and the faces they give.
+
+    numba compiles a module's global as a constant and its on-disk cache ignores a changed
+    global, so each setting runs in a child process of its own ("off": UPRIGHT_DECISION set to
+    False before numba compiles, in its own numba cache directory); the rounds alternate the two
+    settings, so that the ratio is taken over the same minutes (medians over the rounds). The
+    faces of every toss are compared between the settings (the decision must not change any)."""
+    import json
+    import subprocess
+    import sys
+    import tempfile
+
+    rates: dict[str, dict[str, list[float]]] = {"on": {}, "off": {}}
+    with tempfile.TemporaryDirectory() as tmp:
+        env = dict(os.environ)
+        for r in range(rounds):
+            for setting in ("on", "off"):
+                child_env = dict(env)
+                if setting == "off":
+                    child_env["NUMBA_CACHE_DIR"] = os.path.join(tmp, "numba-off")
+                out = os.path.join(tmp, f"{setting}-{r}.npz")
+                done = subprocess.run(
+                    [sys.executable, __file__, "--upright-child", setting, str(n), out],
+                    env=child_env,
+                    capture_output=True,
+                    text=True,
+                    check=True,
+                )
+                line = done.stdout.strip().splitlines()[-1]
+                for name, rate in json.loads(line).items():
+                    rates[setting].setdefault(name, []).append(rate)
+        on = np.load(os.path.join(tmp, "on-0.npz"))
+        off = np.load(os.path.join(tmp, "off-0.npz"))
+        print(
+            f"{n:,} vigorous tosses, contact ending carried to rest, upright decision on/off, "
+            f"{rounds} rounds alternated, medians; load {os.getloadavg()}"
+        )
+        for name in UPRIGHT_SURFACES:
+            a, b = statistics.median(rates["on"][name]), statistics.median(rates["off"][name])
+            faces = on[f"{name} face"], off[f"{name} face"]
+            differ = int(np.count_nonzero(faces[0] != faces[1]))
+            edges = int(np.count_nonzero(faces[1] == EDGE))
+            same_status = bool(np.array_equal(on[f"{name} status"], off[f"{name} status"]))
+            print(
+                f"  {name}: on {a:,.0f} tosses/s, off {b:,.0f} tosses/s (ratio {a / b:.2f}); "
+                f"faces differing {differ} of {n} ({edges} on edge without the decision); "
+                f"statuses identical {same_status}"
+            )
+
+
 def rounded_edges(n: int) -> None:
     """P(edge) of the contact ending over the rim's corner radius a (the coin's corner_radius)
     and the resistances, e = 0.5, μ = 0.3."""
@@ -237,7 +325,17 @@ def main() -> None:
     parser.add_argument("--nickel", action="store_true")
     parser.add_argument("--contact", type=int, default=0, metavar="N")
     parser.add_argument("--contact-rates", type=int, default=0, metavar="N")
+    parser.add_argument("--upright", type=int, default=0, metavar="N")
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--upright-child", nargs=3, metavar=("SETTING", "N", "OUT"))
     args = parser.parse_args()
+    if args.upright_child:
+        setting, count, out = args.upright_child
+        _upright_child(int(count), setting, out)
+        return
+    if args.upright:
+        upright_decision(args.upright, args.rounds)
+        return
     if args.contact_rates:
         contact_rates(args.contact_rates)
         return

@@ -13,6 +13,13 @@ the simulated time and the steps spent in each mode of :data:`~coinflight.core.c
 energy the coin brings in (horizontal translation, spin about n, tumbling, vertical motion and
 height above the face's rest), in barriers m g ρ above the face's rest energy m g h/2. (The
 looser candidate endings it once measured are recorded in :mod:`coinflight.core.contact_phase`.)
+
+Each phase is carried to rest without the upright roller's decision
+(:func:`coinflight.core.contact_phase.upright_decided`), while the integrator records where it
+would have ended the toss; the benchmark then counts the tosses it decides, those among them
+that do not end on edge at rest (disagreements; the decision is adopted only at 0), and the
+steps and simulated time it saves. ``--pairs 0.5,0.3 0.5,0.6`` runs the same tosses on those
+surfaces (e, μ) instead of each toss's own.
 """
 
 from __future__ import annotations
@@ -93,7 +100,17 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=2026)
     parser.add_argument("--corner", type=float, default=0.0, help="rim corner radius a, m")
     parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME, help="t_c, s")
+    parser.add_argument(
+        "--pairs", nargs="*", default=[], metavar="E,MU", help="surfaces (e, μ) to run instead"
+    )
     args = parser.parse_args()
+    surfaces = [tuple(float(x) for x in pair.split(",")) for pair in args.pairs] or [None]
+    for surface in surfaces:
+        profile(args, surface)
+
+
+def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None:
+    """The profile of ``args.n`` tosses on ``surface`` (e, μ), or each with its own e, μ."""
     rng = np.random.default_rng(args.seed)
     n = args.n
     omega = np.column_stack(
@@ -103,6 +120,8 @@ def main() -> None:
     # e on a grid of 0.01 so that Contact.build's cached damping ratio is computed 61 times.
     e = np.round(rng.uniform(0.2, 0.8, n), 2)
     mu = rng.uniform(0.1, 0.6, n)
+    if surface is not None:
+        e[:], mu[:] = surface
     modes = len(cp.MODES)
     times = np.zeros((n, modes))
     steps = np.zeros((n, modes))
@@ -111,6 +130,7 @@ def main() -> None:
     settled = np.zeros(n, dtype=bool)
     wall = np.zeros(n)
     final = np.full(n, -1)
+    decided = np.full((n, 2), -1.0)  # (time, steps) where upright_decided first held
     t0 = time.perf_counter()
     for k in range(n):
         c = contact(float(e[k]), float(mu[k]), args.corner)._replace(contact_time=args.contact_time)
@@ -118,16 +138,19 @@ def main() -> None:
         if not handed[k]:
             continue
         energy[k] = composition(y, c)
-        stats = np.zeros((modes, 2))
+        stats = np.zeros((modes + 1, 2))
+        stats[modes] = -1.0
         w0 = time.perf_counter()
         _, _, settled[k] = cp.advance(y, math.inf, c, settle_check=True, stats=stats)
         wall[k] = time.perf_counter() - w0
         final[k] = resting_face(y[6], c.edge_sine)
-        times[k], steps[k] = stats[:, 0], stats[:, 1]
+        times[k], steps[k] = stats[:modes, 0], stats[:modes, 1]
+        decided[k] = stats[modes]
     total = time.perf_counter() - t0
     h = handed
+    kind = "e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)" if surface is None else f"e = {e[0]}, μ = {mu[0]}"
     print(
-        f"{n} vigorous nickel tosses, e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), resistances "
+        f"{n} vigorous nickel tosses, {kind}, resistances "
         f"{DEFAULT_ROLLING_RESISTANCE:g} m, corner radius {args.corner:g} m, t_c "
         f"{args.contact_time:g} s; {total:.1f} s wall, load {os.getloadavg()}"
     )
@@ -154,6 +177,16 @@ def main() -> None:
         f"steps a handed toss: mean {ss.mean():,.0f}; the 10 % longest tosses take "
         f"{np.sort(ss)[-max(1, len(ss) // 10) :].sum() / ss.sum():.0%} of all steps; final wells "
         f"(tails, heads, edge) {np.bincount(final[h], minlength=3)}"
+    )
+    hit = h & (decided[:, 1] >= 0)
+    wrong = hit & (final != 2)
+    saved = (ss[hit[h]] - decided[hit, 1]).sum()
+    print(
+        f"upright decision (margin {cp.UPRIGHT_MARGIN}): would end {hit.sum()} of {h.sum()} "
+        f"handed tosses ({np.sum(h & (final == 2))} end on edge at rest); disagreements (not "
+        f"on edge at rest) {wrong.sum()} {np.flatnonzero(wrong).tolist()}; steps saved "
+        f"{saved:,.0f} of {ss.sum():,.0f} ({saved / ss.sum():.1%}), simulated time saved "
+        f"{(tt[hit[h]] - decided[hit, 0]).sum():,.1f} of {tt.sum():,.1f} s"
     )
     names = ("horizontal translation", "spin about n", "tumbling", "vertical + height")
     en = energy[h]

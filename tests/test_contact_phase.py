@@ -563,3 +563,108 @@ def test_upright_coin_sliding_in_its_plane_rolls_at_two_thirds_of_its_speed():
     lost = e0 - cp.energy(y, c, kappa)
     work = mu * m * G * v0 * v0 / (2.0 * rate)  # μ m g ∫ u dt, u falling linearly to 0
     assert lost == pytest.approx(work, rel=0.02)
+
+
+def _roller(coin, c, speed, yaw):
+    """A coin upright in its edge band (n = X, on both rims at the static depth), rolling
+    without slip along Y at ``speed`` and turning at ``yaw`` rad/s about the vertical."""
+    y = _state(coin, 0.5 * math.pi, v=(0.0, speed, 0.0), omega_lab=(-speed / coin.radius, 0.0, yaw))
+    y[0] = coin.radius - cp.static_depth(c, cp.stiffness_of(c))
+    return y
+
+
+def _decided(y, c):
+    return cp.upright_decided(y, c, cp.stiffness_of(c), cp.damping_of(c))
+
+
+def _band_moment(coin, speed, yaw):
+    """The turn's overturning moment over the band's m g h/2 (sharp corners): gyroscopic
+    I3 ω ψ' with ω = v/r, and centripetal m v ψ' at the centre's height r (O'Reilly 1996)."""
+    i3 = float(coin.moments[1])
+    moment = (i3 * speed / coin.radius + coin.mass * coin.radius * speed) * yaw
+    return moment / (coin.mass * G * coin.thickness / 2)
+
+
+@pytest.mark.parametrize(("speed", "yaw"), [(0.3, 0.0), (0.8, 0.1), (0.1, 0.5), (0.0, 0.0)])
+def test_upright_roller_is_decided_on_edge_and_integration_agrees(speed, yaw):
+    # Rolling upright in its band with a turn well inside the band's moment and μ N, at rest or
+    # not: decided at once (settle: edge, settled, no time), and carried on to rest without
+    # the decision it does end on edge.
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
+    y = _roller(NICKEL, c, speed, yaw)
+    assert _band_moment(NICKEL, speed, yaw) < cp.UPRIGHT_MARGIN
+    assert _decided(y, c)
+    f, status, t = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
+    assert (f, status, t) == (EDGE, Status.SETTLED_CONTACT, 0.0)
+    _, _, settled = cp.advance(y, math.inf, c, settle_check=True)
+    assert settled
+    assert abs(y[6]) < c.edge_sine
+
+
+@pytest.mark.parametrize("share", [1.05, 0.9, 1.01 * cp.UPRIGHT_MARGIN])
+def test_upright_roller_turning_beyond_the_bands_moment_is_not_decided(share):
+    # The same roller turning so that the overturning moment exceeds the band's m g h/2 (1.05),
+    # or is within it but beyond the margin, is left to the integration.
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
+    speed = 0.3
+    yaw = share / _band_moment(NICKEL, speed, 1.0)
+    assert _band_moment(NICKEL, speed, yaw) == pytest.approx(share)
+    assert not _decided(_roller(NICKEL, c, speed, yaw), c)
+    assert _decided(_roller(NICKEL, c, speed, 0.98 * cp.UPRIGHT_MARGIN / share * yaw), c)
+
+
+def test_upright_roller_needing_more_than_mu_n_is_not_decided():
+    # A turn the band could hold (moment 0.6 of the margin) but whose centripetal force
+    # m v ψ' exceeds μ m g (μ = 0.015): not decided; with μ = 0.3 the same state is.
+    speed = 0.3
+    yaw = 0.6 * cp.UPRIGHT_MARGIN / _band_moment(NICKEL, speed, 1.0)
+    assert speed * yaw > 0.015 * G
+    for mu, decided in ((0.015, False), (0.3, True)):
+        c = _contact(NICKEL, e=0.5, mu=mu, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
+        assert _decided(_roller(NICKEL, c, speed, yaw), c) == decided
+
+
+def test_upright_roller_not_decided_without_a_band_friction_or_both_rims():
+    # No band (a = h/2), no friction, one rim lifted (tilted 0.05 rad: the rims sink ~30 μm,
+    # so smaller tilts keep both pressed) or the coin sliding in its plane (0.3 m/s, not
+    # rolling): not decided.
+    base = dict(e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
+    c = _contact(NICKEL, **{**base, "corner": NICKEL.thickness / 2})
+    assert not _decided(_roller(NICKEL, c, 0.3, 0.0), c)
+    c = _contact(NICKEL, **{**base, "mu": 0.0})
+    assert not _decided(_roller(NICKEL, c, 0.3, 0.0), c)
+    c = _contact(NICKEL, **base)
+    y = _roller(NICKEL, c, 0.3, 0.0)
+    tilted = _state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.3, 0.0))
+    tilted[0] = y[0]
+    tilted[7:10] = y[7:10]
+    assert not _decided(tilted, c)
+    sliding = _state(NICKEL, 0.5 * math.pi, v=(0.0, 0.3, 0.0))
+    sliding[0] = y[0]
+    assert not _decided(sliding, c)
+
+
+def test_upright_decision_off_is_the_integration_to_the_bit():
+    # A toss that lands and comes to roll upright: with the decision the phase stops where
+    # upright_decided first holds; without it, the same steps to that point give the same state
+    # to the bit (the decision only stops), the probe row records that point, and it goes on
+    # to rest on edge.
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
+    start = _state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.4, -0.05), lift=1e-4)
+    start[7:10] = _roller(NICKEL, c, 0.4, 2.0)[7:10]
+    on = start.copy()
+    t_on, steps_on, settled = cp.advance(on, math.inf, c, settle_check=True, decide=True)
+    assert settled and abs(on[6]) < c.edge_sine
+    assert _decided(on, c)
+    off = start.copy()
+    t_off, steps_off, _ = cp.advance(off, math.inf, c, max_steps=steps_on)
+    assert steps_off == steps_on
+    assert t_off == t_on
+    assert np.array_equal(on, off)
+    stats = np.zeros((len(cp.MODES) + 1, 2))
+    stats[-1] = -1.0
+    rest = start.copy()
+    t_rest, steps_rest, settled = cp.advance(rest, math.inf, c, settle_check=True, stats=stats)
+    assert settled and abs(rest[6]) < c.edge_sine
+    assert tuple(stats[-1]) == (t_on, steps_on)
+    assert steps_rest > steps_on and t_rest > t_on

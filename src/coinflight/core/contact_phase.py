@@ -39,6 +39,8 @@ energy less ½ m v_h² below the barrier saves 5-8 % of the steps and disagrees 
 tosses; the tumbling energy (less ½ m v_h² and (L·n)²/2I3, as
 :func:`coinflight.core.bounce.tumbling_energy`) saves 42-72 % and disagrees on 23-30 of
 226-228 (≥ 7 % at 95 %). None is used.
+(These figures are without the upright rollers' decision, "Upright rollers" below, which
+ends the coins rolling upright in the band early and makes the landings 3-8× faster.)
 The 50,000 a second would need this phase ~300-1,000 times cheaper: a decision at the
 hand-off for nearly every toss, or a constrained (rolling/sliding rim) model integrated with
 steps far longer than the compliant contact's ~0.5 ms; neither is here.
@@ -213,6 +215,84 @@ coin at rest is below the barrier of its well, so it has settled too. After MAX_
 (a coin rolling on its edge with no rolling resistance would roll for ever) the toss is
 unsettled, with the well it was in; so is at once a coin with nothing to dissipate its
 energy (e = 1, μ = 0, no resistances) above its barrier.
+
+Upright rollers (the early decision)
+------------------------------------
+Most of this phase's steps go to coins rolling upright in the flat band of the rim, on both
+rims, until the rolling resistance stops them (above: 75 % of the simulated time, 67 % of the
+steps). The energy test cannot end them early: their rolling energy, ½ (m + I3/r²) v², is far
+above the band's barrier m g (ρ − r) ≈ m g h²/8r (45 μm of height for a nickel, passed by
+v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on), :func:`settle` ends such a coin on edge
+(status SETTLED_CONTACT, time the decision's) as soon as :func:`upright_decided` holds:
+
+* **The turn a band holds.** Upright (n horizontal), rolling without slip at v = r ω (ω = ω·n)
+  and turning at ψ' = ω_z, the coin's angular momentum about its centre I3 ω n + I1 ψ' Z turns
+  at the rate I3 ω ψ' about t̂, the horizontal axis across n (the gyroscopic moment), and the
+  centre's acceleration has the centripetal part v ψ' along n, whose friction force m v ψ'
+  acts r below the centre. To keep the lean at zero, the two rims, h′ = h/2 − a either side of
+  the middle (a the corner radius), must give (N₊ − N₋) h′ = (I3 ω + m r v) ψ' =
+  (I3 + m r²) v ψ' / r = M, the steady turning of a rolling disc at zero lean (O'Reilly,
+  Nonlinear Dyn. 10:287, 1996); both rims stay pressed while M < N h′ with N = m g, and the
+  turn holds without slipping while m v ψ' (with the force m ℓ_r m g r / (I3 + m r²) the
+  rolling resistance takes from the rolling) stays below μ N.
+* **They only fall.** The rolling resistance brakes ω at the constant rate
+  ℓ_r m g / (I3 + m r²) (a torque bounded by a length times the normal force, as in Le Saux,
+  Leine & Glocker, J. Nonlinear Sci. 15:27, 2005; smaller below its regularisation), and ψ'
+  is braked by the pivoting torque (μ r_t + ℓ_p) N and, on both rims, by their opposite
+  longitudinal slips ±h′ψ' (a wheel of width h cannot turn without a rim slipping). So v and
+  ψ' fall monotonically to zero, and with them M and the friction needed: what holds with a
+  margin now holds to rest.
+* **The lean's ridge.** Leaning by θ onto one rim (its pivot rolling on the corner's arc), the
+  rigid coin's centre rises to H(θ) = (r − a) cos θ + h′ sin θ + a while M does the work M θ
+  and the yaw's centrifugal moment (I3 − I1) ψ'² sin θ cos θ (tilting raises the moment of
+  inertia about the vertical) ½ (I3 − I1) ψ'² sin² θ; the restoring moment
+  m g (h′ cos θ − (r − a) sin θ) meets M at θ* = arccos(M / (m g ρ′)) − arccos(h′ / ρ′),
+  ρ′ = sqrt((r − a)² + h′²). The compliant rims sink: each arc carries
+  F = (4√2/3) κ d^(3/2) / sqrt(r − a) and stores (2/5) F d, so upright each rim sinks d_s
+  (2F = m g, :func:`static_depth`: 30 μm for a nickel at t_c = 1 ms, beside the rigid
+  barrier's 45 μm of height, or 11 μm with a 0.5 mm corner), one rim alone 2^(2/3) d_s. The
+  least potential energy upright is at least m g (r − (3/5) d_s), on the ridge
+  m g (H(θ*) − (3/5) 2^(2/3) d_s) (the exact arc is stiffer than its parabola: lower bounds),
+  and a coin whose energy free to lean (the whole energy less ½ m (v·t̂)² + ½ I3 ω² +
+  ½ I1 ψ'²) is below the ridge less the work of M from its present tilt cannot pass it.
+  With a 0.5 mm corner the compliant band holds a coin by only about 0.6 μm of height; at a = h/2
+  there is no band and no decision; μ = 0 neither.
+
+**What is proven and what is measured.** The bounds are the rigid wheel's, taken
+quasi-statically: they do not bound the lean the gyroscopic coupling can drive from a lean
+rate, the compliant contact's tilt and bounce beyond their energy, or the regularised
+friction's creep. So :data:`UPRIGHT_MARGIN` asks each of them to hold with half to spare, and
+the decision is adopted on measurement, not on proof: ``python benchmarks/bench_contact.py 1500
+--pairs 0.5,0.3 0.5,0.6`` and the same without ``--pairs`` (each toss its own e ~ U(0.2, 0.8),
+μ ~ U(0.1, 0.6)), which carry every handed toss to rest while recording where the decision
+would have ended it (2026-11-23, 20:55-21:00 UTC, load 5-8): it would end 118 of 1,061
+handed tosses (122 end on edge) at e 0.5, μ 0.3, 411 of 1,028 (412) at μ 0.6 and 208 of 1,030
+(213) with each toss's own e and μ, and **every one of them ends on edge at rest (0
+disagreements)**; the steps saved, 52 %, 85 % and 70 % of all the phase's steps. With a 0.5 mm
+corner (``--corner 5e-4``): 119 of 1,062 (120 on edge), 419 of 1,017 (420), 159 of 1,041 (168),
+0 disagreements. A looser bound was not safe: before the ridge took the rims' compliance
+(the rigid barrier above the compliant floor), a 0.5 mm corner gave 2 disagreements in 708
+decisions (coins decided while already leaning slowly over a corner they then passed).
+Beyond these settings (the same tosses, the decision probed as above, 21:15-21:19 UTC): t_c
+2 ms (the rims sink 2.5× deeper) 125 and 416 decided at μ 0.3 and 0.6, ℓ_r = ℓ_p = 1e-3 m 89,
+248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
+longer) 56 and 187, each time 0 disagreements; 91 % and 98 % of the steps saved at 1e-5 m.
+The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
+margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
+every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,
+85.4 % and 69.8 %.
+Through the whole landing (bounces and this phase, :func:`coinflight.core.bounce.land`),
+``python benchmarks/bench_bounce.py --upright 1000 --rounds 3`` (the tosses of
+``--contact-rates``; each setting in a child process of its own, rounds alternated, medians;
+2026-11-23 20:58-21:04 UTC, the shared 2-core machine at load 8-10): carried to rest **660
+tosses a second with the decision against 213 without** (3.1×) at e 0.5, μ 0.3; 477 against 57
+(8.4×) at μ 0.6; 588 against 161 (3.6×) with each toss's own e and μ; the faces of all 3 × 1,000
+tosses identical with and without it (83, 296 and 116 on edge), and their statuses too. With
+:data:`UPRIGHT_DECISION` False the landings are those of the code before the decision to the
+bit (face, bounces, first contact, settle time and status of the same 3 × 1,000 tosses,
+against main at e38e887). Issue
+11's 50,000 a second stays out of reach: what is left is the tosses that do not end upright
+(one-rim rolling, rocking and hops) and the phase's steps before a roller is decided.
 """
 
 from __future__ import annotations
@@ -239,6 +319,16 @@ RTOL = 1e-7
 """Relative tolerance of the step-size control."""
 MAX_STEP = 1e-3
 """Longest step, s (also at most a sixteenth of a turn)."""
+UPRIGHT_DECISION = True
+"""Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
+:func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
+rest, to the bit the integration before this decision."""
+UPRIGHT_MARGIN = 0.5
+"""Share of each bound of :func:`upright_decided` the coin may use: the band's restoring moment
+m g h′ against the turn's overturning moment, μ N against the friction the turn and the
+rolling resistance need, and the lean barrier against the energy of the tilt and bounce
+oscillations. The rest is the margin for what the rigid wheel of the proof leaves out (the
+contact's compliance, the regularised friction, the yaw driven by a lean rate)."""
 
 
 @njit(cache=True)
@@ -450,6 +540,113 @@ def free_energy(y, c, stiffness):
     return e, up if nz > 0.0 else down
 
 
+SINGLE_RIM_DEPTH = 2.0 ** (2.0 / 3.0)
+"""How much deeper one rim sinks carrying the whole weight than each of two carrying half of it
+(F ∝ d^(3/2) on a short arc): the depth on the lean's ridge is this times :func:`static_depth`."""
+
+
+@njit(cache=True)
+def static_depth(c, stiffness):
+    """d_s, m: how deep an upright coin at rest sinks into the table (module notes, "Upright
+    rollers"), both rims' arcs in the parabolic approximation of the rim, 1 − cos φ ≈ φ²/2:
+    each carries F = (4√2/3) κ d^(3/2) / sqrt(r − a) = m g / 2 and stores (2/5) F d. The exact
+    arc's penetration d − (r − a)(1 − cos φ) is the larger at every φ, so its springs store more
+    at every depth, and the least potential energy (gravity and springs) of an upright coin is
+    at least that of the approximation, m g (r − d_s) + (2/5) m g d_s = m g (r − (3/5) d_s);
+    so is, with the depth d_1 = 2^(2/3) d_s of one rim carrying m g alone, that of a coin on one
+    rim whose rigid centre height is H: m g (H − (3/5) d_1) (the other rim's springs, dropped,
+    only add)."""
+    radius = c.radius - c.corner_radius
+    weight = c.mass * c.g
+    return (3.0 * weight * math.sqrt(radius) / (8.0 * math.sqrt(2.0) * stiffness)) ** (2.0 / 3.0)
+
+
+@njit(cache=True)
+def upright_decided(y, c, stiffness, zeta):
+    """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
+    and stays there until it is at rest (module notes, "Upright rollers"): it will end on edge.
+
+    In this order (cheap tests first): a band (h′ = h/2 − a > 0) and friction (μ > 0); the
+    turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
+    of the band's m g h′; the friction the turn and the rolling resistance need,
+    sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
+    both rims pressed (:func:`rim_contact`, with the damper: the force they exert now); the
+    band's middle not slipping (the horizontal velocity of its lowest point below
+    :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
+    coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
+    + ½ I1 (ω·ŵ)², t̂ the horizontal unit vector across n) above the least potential energy
+    upright, m g (r − (3/5) d_s) (:func:`static_depth`), by at most that share of the ridge's
+    height above it (the notes).
+    """
+    hb = c.half_thickness - c.corner_radius  # h′: half the flat band
+    if hb <= 0.0 or c.friction <= 0.0:
+        return False
+    mass, i1, i3, g, radius = c.mass, c.i1, c.i3, c.g, c.radius
+    weight = mass * g
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    across = math.sqrt(n[0] * n[0] + n[1] * n[1])
+    if across < 0.5:
+        return False  # not near upright (two rims touch only within the band's tilt)
+    omega = angular_velocity(lm, n, i1, i3)
+    spin = dot(omega, n)
+    yaw = abs(omega[2])
+    vh = math.sqrt(v[0] * v[0] + v[1] * v[1])
+    moment = (i3 * abs(spin) + mass * radius * vh) * yaw
+    if moment > UPRIGHT_MARGIN * weight * hb:
+        return False
+    resist = mass * c.rolling_resistance * weight * radius / (i3 + mass * radius * radius)
+    turn = mass * vh * yaw
+    if math.sqrt(turn * turn + resist * resist) > UPRIGHT_MARGIN * c.friction * weight:
+        return False
+    for sigma in (-1.0, 1.0):
+        fn, _, _, _ = rim_contact(
+            sigma,
+            y[0],
+            v,
+            n,
+            omega,
+            radius,
+            c.half_thickness,
+            mass,
+            i1,
+            i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
+        )
+        if fn <= 0.0:
+            return False
+    _, w = _tangent_basis(n)
+    core = radius - c.corner_radius  # r − a, the rim circle's radius
+    low = (core * w[0], core * w[1], core * w[2] - c.corner_radius)  # the band middle's lowest
+    u = cross(omega, low)
+    ux, uy = v[0] + u[0], v[1] + u[1]
+    if ux * ux + uy * uy > SLIP_SPEED * SLIP_SPEED:
+        return False
+    t = (-n[1] / across, n[0] / across, 0.0)
+    vt = dot(v, t)
+    ww = dot(omega, w)
+    rolling = 0.5 * mass * vt * vt + 0.5 * i3 * spin * spin + 0.5 * i1 * ww * ww
+    free = energy(y, c, stiffness) - rolling
+    # The ridge of the lean: the coin on one rim at the tilt θ* where the restoring moment
+    # m g (h′ cos θ − (r − a) sin θ) of the rigid pivot meets M, sunk to the depth at which that
+    # rim alone carries m g, the turn's work M (θ* + θ_now) and the spin's (I3 − I1) ω_z²
+    # sin²θ* / 2 taken off (the notes).
+    depth = static_depth(c, stiffness)
+    floor = weight * (radius - 0.6 * depth)  # least potential energy upright, at most
+    reach = math.sqrt(core * core + hb * hb)
+    tip = math.acos(moment / (weight * reach)) - math.acos(hb / reach)
+    lean = math.asin(min(abs(n[2]), 1.0))
+    if lean >= tip:
+        return False
+    ridge = weight * (core * math.cos(tip) + hb * math.sin(tip) + c.corner_radius)
+    ridge -= 0.6 * weight * SINGLE_RIM_DEPTH * depth + moment * (tip + lean)
+    ridge -= 0.5 * max(i3 - i1, 0.0) * yaw * yaw * math.sin(tip) ** 2
+    return ridge > floor and free <= floor + UPRIGHT_MARGIN * (ridge - floor)
+
+
 # Dormand-Prince 5(4) (Hairer, Nørsett & Wanner, Solving ODEs I, table II.5.2).
 _A21 = 1.0 / 5.0
 _A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
@@ -493,11 +690,15 @@ def contact_mode(y, c):
 
 
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
+def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
-    coin has settled, whichever comes first. ``stats`` (shape (len(MODES), 2), or (0, 2) for
-    none) accumulates, per :func:`contact_mode` at the end of each step, the time and the
-    steps taken (for the benchmark).
+    coin has settled, whichever comes first; with ``settle`` and ``decide``, a coin for which
+    :func:`upright_decided` holds has settled too (on edge). ``stats`` (shape (len(MODES), 2),
+    or (0, 2) for none) accumulates, per :func:`contact_mode` at the end of each step, the time
+    and the steps taken (for the benchmark); with one more row (shape (len(MODES) + 1, 2),
+    filled with −1 by the caller), that row receives (time, steps) when
+    :func:`upright_decided` first holds, with or without ``decide`` (so a run carried to rest
+    says where the decision would have ended it; the test runs at every step then).
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -522,11 +723,21 @@ def _integrate(y, duration, c, stiffness, zeta, settle, max_steps, stats):
     h = contact_time / 20.0
     t = 0.0
     _derivative(y, k1, c, stiffness, zeta)
+    modes = len(MODES)
+    probe = stats.shape[0] > modes
     for step in range(max_steps):
         if settle:
             free, barrier = free_energy(y, c, stiffness)
             if free < barrier:
                 return t, step, True
+            if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
+                y, c, stiffness, zeta
+            ):
+                if probe and stats[modes, 1] < 0.0:
+                    stats[modes, 0] = t
+                    stats[modes, 1] = step
+                if decide:
+                    return t, step, True
         if t >= duration:
             return t, step, False
         lm = (y[7], y[8], y[9])
@@ -633,7 +844,9 @@ def settle(z, v, n, lm, c):
     status : Status
         SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
     time : float
-        Duration of the contact phase, s.
+        Duration of the contact phase, s: until the energy test or, for a coin ended upright by
+        :func:`upright_decided` (:data:`UPRIGHT_DECISION`; status SETTLED_CONTACT as well), until
+        that decision, not until it is at rest.
     """
     y = np.empty(10)
     y[0] = z
@@ -649,7 +862,15 @@ def settle(z, v, n, lm, c):
         status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
         return resting_face(n[2], c.edge_sine), status, 0.0
     t, _, settled = _integrate(
-        y, math.inf, c, stiffness_of(c), damping_of(c), True, MAX_STEPS, np.empty((0, 2))
+        y,
+        math.inf,
+        c,
+        stiffness_of(c),
+        damping_of(c),
+        True,
+        UPRIGHT_DECISION,
+        MAX_STEPS,
+        np.empty((0, 2)),
     )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
@@ -661,17 +882,24 @@ def advance(
     c,
     *,
     settle_check: bool = False,
+    decide: bool = False,
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
-    when the coin has settled (:func:`settle`), whichever comes first. ``stats``, an array of
-    shape (len(:data:`MODES`), 2), accumulates the time and steps spent in each mode."""
+    when the coin has settled by its energy (or, with ``decide`` too, when
+    :func:`upright_decided` holds, as :func:`settle` with :data:`UPRIGHT_DECISION`), whichever
+    comes first. ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time
+    and steps spent in each mode; with one more row filled with −1 (shape
+    (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
+    :func:`upright_decided` first held, decided or not (with ``settle_check``)."""
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
-    return _integrate(state, duration, c, stiffness_of(c), zeta, settle_check, max_steps, stats)
+    return _integrate(
+        state, duration, c, stiffness_of(c), zeta, settle_check, decide, max_steps, stats
+    )
 
 
 @njit(cache=True)
