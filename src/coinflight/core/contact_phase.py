@@ -122,8 +122,22 @@ of I1 ω; kinetic energy lost 0.269 against 0.264) and this phase less so (0.064
 with μ 0.3 this phase stays as close (0.061 m/s, 20 %; energy lost 0.449 against the rigid
 0.426) while MuJoCo moves away (0.146 m/s, 15 %) and takes less energy (0.371): its friction in
 a short rim impact does less work than Coulomb's, as in the traced toss, where its coin keeps
-sliding. That is the lead for the factor left (not yet measured toss by toss): MuJoCo's soft
-friction in impacts, not this phase's numerics.
+sliding. That lead was tested and **ruled out** (2026-11-23, 21:00-22:05 UTC, load 7-14): made
+Coulomb-hard (``bench_mujoco_edges.py 600 --handoff-only --condim 3`` with ``--cone elliptic
+--impratio 10`` or ``100``, or ``--noslip 20``) MuJoCo leaves 22, 23 and 21 of the 446 on edge
+(19 with its contact calibrated to e 0.45), not this phase's 49; per rim impact its friction
+impulse is as large relative to μ J_n as the rigid law's (J_t/(μ J_n) 0.888, rigid 0.862, here
+0.857; ``bench_rim_impacts.py 200 --condim 3``), its normal impulse ~12 % larger once friction
+acts. Toss by toss (``python benchmarks/bench_edge_trace.py 600 --per-group 30``: 30 of this
+phase's edge tosses and 30 matched others, 0.1 s at 0.1 ms) the engines part in the **normal
+contact**: the first contact from the hand-off lasts a median 9.1 ms here (normal impulse 3.4 mN
+s) and 0.8 ms in MuJoCo (0.5 mN s), the coin is in contact 51 % of the first 0.1 s here and 6 %
+there (4.5 short episodes before the tilts part, ~30 ms in): MuJoCo's coin hops and slides on
+its rim, this phase keeps it pressed long enough for friction to turn sliding into rolling. The
+friction here is within μ F_n (largest 0.999996 μ F_n on 29,370 traced states) and opposes the
+slip at the centre of pressure (tests/test_contact_friction.py). Which normal contact is closer
+to a coin's (MuJoCo's ``solimp`` softness at first touch, this phase's d^(3/2) rim law) is
+not known.
 
 On the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
 0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
