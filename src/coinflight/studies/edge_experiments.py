@@ -467,6 +467,7 @@ def edge_experiments(
     restitution: tuple[float, float] | None = None,
     friction: tuple[float, float] | None = None,
     g: float = 9.81,
+    psi: float | Literal["human"] | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> EdgeExperiments:
     """Each experiment's setting simulated over the unmeasured parameters' box, both endings.
@@ -493,6 +494,11 @@ def edge_experiments(
         dead-landing check; the contact ending needs restitution above 0).
     g : float
         Gravitational acceleration of the real throws, m/s².
+    psi : float or "human", optional
+        A wobble as well (:func:`axial_spin`): the precession cone angle ψ in degrees (0 < ψ
+        ≤ 90; 90 is no axial spin), or ``"human"`` for the human toss preset's spread of ψ
+        about 82°; default none (planar tosses). The same for every cell; each cell's
+        parameters then include ``psi`` (degrees, the typical ψ).
     progress : callable, optional
         Called with a short text after each band.
 
@@ -504,7 +510,7 @@ def edge_experiments(
         :mod:`coinflight.outcomes.table`).
     """
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
-    from coinflight.studies.edge import SIM_DIAMETER, simulate_edge
+    from coinflight.studies.edge import simulate_edge
 
     items = tuple(experiments)
     if not items:
@@ -528,6 +534,8 @@ def edge_experiments(
         for x in items
     ]
     points = v.count("points per parameter", points, 2, 9)
+    if psi is not None:
+        axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
     rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
     contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
     seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
@@ -547,30 +555,32 @@ def edge_experiments(
     for i, (x, box) in enumerate(zip(items, boxes, strict=True)):
         the_setting = settings[x.setting]
         child = streams.child(root, i)
+        wz = None if psi is None else axial_spin(x.ratio, the_setting.spin, psi)
+        extra = {} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}
         bands: dict[str, Band] = {}
         for ending, size in (("rocking", n), ("contact", contact)):
             if size == 0:
                 continue
             cells = []
             for point in box_cells(box[ending], points if ending == "rocking" else 2):
-                k = SIM_DIAMETER / point["diameter"]  # the scaled world (module notes)
-                length = point.get("resistance")
-                resist = None if length is None else k * length
+                resist = point.get("resistance")
                 ((_, estimate),) = simulate_edge(
                     [x.ratio],
                     size,
                     child,
-                    g=k * g,
+                    g=g,
                     restitution=point["restitution"],
                     friction=point["friction"],
-                    drop_height=k * point["drop_height"],
+                    drop_height=point["drop_height"],
                     spin=the_setting.spin,
-                    launch_speed=the_setting.launch_speed.scaled(k),
+                    launch_speed=the_setting.launch_speed,
                     ending=ending,
                     rolling_resistance=resist,
                     pivoting_resistance=resist,
+                    diameter=point["diameter"],
+                    axial_spin=wz,
                 )
-                cells.append(Cell(MappingProxyType(point), estimate))
+                cells.append(Cell(MappingProxyType({**point, **extra}), estimate))
             bands[ending] = Band(ending, tuple(cells))
             if progress is not None:
                 progress(f"{x.label}: {ending}")
@@ -588,6 +598,45 @@ def edge_experiments(
         time.perf_counter() - t0,
         points,
     )
+
+
+HUMAN_PSI_DEGREES = 82.05
+"""The human toss preset's typical cone angle ψ, degrees (:data:`coinflight.studies.presets.
+HUMAN_PSI`, fitted there to coins' same-side rate; a cylinder's ψ is not measured)."""
+
+
+def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distribution:
+    """The axial spin ωz (rad/s) that tilts a cylinder of ratio h/d spinning at ``spin`` (ωx,
+    its median) onto a precession cone of angle ψ: ωz = (I1/I3) ωx cot ψ (Diaconis, Holmes &
+    Montgomery 2007, §2; :func:`coinflight.core.precession.axial_spin`), I1/I3 the uniform
+    cylinder's (independent of its size and mass).
+
+    ``psi``: degrees, 0 < ψ ≤ 90, one ωz (a :class:`~coinflight.model.distributions.Fixed`;
+    ψ then varies a little with each toss's ωx), or ``"human"``: the human toss preset's
+    relation (:func:`coinflight.studies.presets.human`: ωz ~ Normal(μ, μ/2) with μ at ψ0 =
+    82.05°, so the same spread of ψ as the preset's coins).
+    """
+    from coinflight.core import precession
+    from coinflight.model.coin import Coin
+    from coinflight.model.distributions import Fixed, Normal
+    from coinflight.studies.presets import HUMAN_COT_PSI_RELATIVE_SD
+
+    v.instance("spin", spin, Distribution, "a distribution")
+    if psi == "human":
+        degrees, spread = HUMAN_PSI_DEGREES, HUMAN_COT_PSI_RELATIVE_SD
+    elif isinstance(psi, str):
+        raise ValueError(f"psi must be a cone angle in degrees or 'human', got {psi!r}")
+    else:
+        degrees, spread = v.number("psi", psi, "degrees"), 0.0
+        if not 0.0 < degrees <= 90.0:
+            raise ValueError(f"psi must be above 0 and at most 90 degrees, got {degrees:g}")
+    from coinflight.studies.edge import SIM_DIAMETER
+
+    r, h = 0.5 * SIM_DIAMETER, float(ratio) * SIM_DIAMETER
+    i1, i3 = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h).moments
+    wx = float(np.asarray(spin.ppf(np.asarray([0.5])))[0])
+    wz = 0.0 if degrees == 90.0 else float(precession.axial_spin(wx, math.radians(degrees), i1, i3))
+    return Normal(wz, spread * wz) if spread else Fixed(wz)
 
 
 @dataclass(frozen=True)
@@ -682,6 +731,7 @@ def mujoco_check(
 __all__ = [
     "HAND_DIAMETER",
     "HAND_DROP",
+    "HUMAN_PSI_DEGREES",
     "RESISTANCE",
     "SETTINGS",
     "SOURCE_SETTINGS",
@@ -692,6 +742,7 @@ __all__ = [
     "EngineCheck",
     "Experiment",
     "Setting",
+    "axial_spin",
     "box_cells",
     "edge_experiments",
     "experiment_box",
