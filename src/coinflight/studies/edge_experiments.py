@@ -639,6 +639,112 @@ def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distributi
     return Normal(wz, spread * wz) if spread else Fixed(wz)
 
 
+WOBBLE_PSI: tuple[float | str, ...] = (90.0, "human", 80.0, 70.0, 60.0, 45.0)
+"""The cone angles of :func:`wobble_sweep`, degrees (90: planar, no axial spin; "human": the
+preset's spread about 82°): a stated sweep, not a fit."""
+
+WOBBLE_CELLS: tuple[Mapping[str, float], ...] = (
+    MappingProxyType(
+        {"restitution": 0.45, "friction": 0.325, "diameter": 0.024, "drop_height": 0.35}
+    ),
+    MappingProxyType({"restitution": 0.3, "friction": 0.05, "diameter": 0.02, "drop_height": 0.5}),
+    MappingProxyType({"restitution": 0.6, "friction": 0.6, "diameter": 0.05, "drop_height": 0.2}),
+)
+"""The settings of :func:`wobble_sweep`: the hand-table box's centre (e, μ; a 24 mm cylinder
+as :func:`mujoco_check`'s, released 0.35 m up) and two opposite corners: the one of the
+planar band's highest P(edge) and the one facing it."""
+
+
+@dataclass(frozen=True)
+class WobbleRow:
+    """P(edge) of one experiment's setting with cone angle ``psi`` (degrees or "human") at
+    ``parameters``, by ``ending``."""
+
+    label: str
+    ratio: float
+    psi: float | str
+    ending: str
+    parameters: Mapping[str, float]
+    estimate: BinomialEstimate
+
+
+def wobble_sweep(
+    experiments: Sequence[Experiment],
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    contact: int = 0,
+    psis: Sequence[float | str] = WOBBLE_PSI,
+    cells: Sequence[Mapping[str, float]] = WOBBLE_CELLS,
+    resistance: float = 1e-4,
+    g: float = 9.81,
+    progress: Callable[[str], None] | None = None,
+) -> list[WobbleRow]:
+    """P(edge) of each experiment's setting with a wobble: for each cone angle ψ of ``psis``
+    (:func:`axial_spin`) and each cell of ``cells`` (restitution, friction, diameter,
+    drop_height), ``n`` tosses with the rocking ending and ``contact`` (0: none) with the 3-D
+    contact ending (rolling and pivoting resistance ``resistance`` m).
+
+    Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
+    cell lands the same ωx and v0 (common random numbers; ψ changes ωz only), and ψ = 90 with
+    the rocking ending gives that function's counts at the same cell. Work bounded before it
+    runs, as :func:`edge_experiments`.
+    """
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
+    from coinflight.studies.edge import simulate_edge
+
+    items = tuple(experiments)
+    if not items:
+        raise ValueError("give at least one experiment")
+    for item in items:
+        v.instance("experiment", item, Experiment, "an Experiment")
+    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
+    contact = v.count("contact-ending tosses per cell", contact, 0, n)
+    streams.check_seed(seed)
+    settings = {name: setting(name) for name in {x.setting for x in items}}
+    spins = {
+        x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
+    }
+    runs = len(items) * len(psis) * len(cells)
+    v.work_bound(
+        f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)",
+        runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND),
+        v.MAX_RUN_SECONDS,
+        "s",
+        "use fewer tosses per cell (n, contact)",
+    )
+    root = streams.seed_sequence(seed)
+    rows = []
+    for i, x in enumerate(items):
+        the_setting = settings[x.setting]
+        for psi, wz in zip(psis, spins[x.label], strict=True):
+            for cell in cells:
+                for ending, size in (("rocking", n), ("contact", contact)):
+                    if size == 0:
+                        continue
+                    resist = resistance if ending == "contact" else None
+                    ((_, estimate),) = simulate_edge(
+                        [x.ratio],
+                        size,
+                        streams.child(root, i),
+                        g=g,
+                        restitution=cell["restitution"],
+                        friction=cell["friction"],
+                        drop_height=cell["drop_height"],
+                        diameter=cell["diameter"],
+                        spin=the_setting.spin,
+                        launch_speed=the_setting.launch_speed,
+                        axial_spin=wz,
+                        ending=ending,
+                        rolling_resistance=resist,
+                        pivoting_resistance=resist,
+                    )
+                    rows.append(WobbleRow(x.label, x.ratio, psi, ending, cell, estimate))
+                    if progress is not None:
+                        progress(f"{x.label} ψ {psi} {ending} {dict(cell)}: {estimate.p:.4f}")
+    return rows
+
+
 @dataclass(frozen=True)
 class EngineCheck:
     """The same ``n`` tosses of one setting at one point of the box in coinflight (both
@@ -664,6 +770,7 @@ def mujoco_check(
     drop_height: float | None = None,
     resistance: float = 1e-4,
     g: float = 9.81,
+    psi: float | Literal["human"] | None = None,
 ) -> EngineCheck:
     """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
     :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
@@ -671,8 +778,10 @@ def mujoco_check(
     range) landed on one table (e, μ; rolling and pivoting, MuJoCo's rolling and torsional,
     resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
-    past its first contact). ImportError without MuJoCo; its work bounded by
-    :func:`coinflight.studies.mujoco_compare.run`."""
+    past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
+    row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it, so the
+    tosses are those of :func:`wobble_sweep` at this cell). ImportError without MuJoCo; its
+    work bounded by :func:`coinflight.studies.mujoco_compare.run`."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.coin import Coin
     from coinflight.model.surface import Surface
@@ -685,9 +794,13 @@ def mujoco_check(
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
     root = streams.seed_sequence(seed)
-    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, 2)), axis=1)
+    wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
+    k = 2 if wz is None else 3
+    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, k)), axis=1)
     omega = np.zeros((n, 3))
     omega[:, 0] = the_setting.spin.ppf(u[0])
+    if wz is not None:
+        omega[:, 2] = wz.ppf(u[2])
     v0 = np.asarray(the_setting.launch_speed.ppf(u[1]), dtype=float)
     r = 0.5 * SIM_DIAMETER
     h = experiment.ratio * SIM_DIAMETER
@@ -718,6 +831,7 @@ def mujoco_check(
                 "diameter": SIM_DIAMETER,
                 "drop_height": drop,
                 "resistance": resistance,
+                **({} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}),
             }
         ),
         ours["rocking"],
@@ -735,6 +849,8 @@ __all__ = [
     "RESISTANCE",
     "SETTINGS",
     "SOURCE_SETTINGS",
+    "WOBBLE_CELLS",
+    "WOBBLE_PSI",
     "Band",
     "Cell",
     "Comparison",
@@ -742,6 +858,7 @@ __all__ = [
     "EngineCheck",
     "Experiment",
     "Setting",
+    "WobbleRow",
     "axial_spin",
     "box_cells",
     "edge_experiments",
@@ -749,4 +866,5 @@ __all__ = [
     "from_dataset",
     "mujoco_check",
     "setting",
+    "wobble_sweep",
 ]
