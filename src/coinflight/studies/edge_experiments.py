@@ -86,6 +86,7 @@ from coinflight import _validation as v
 from coinflight.model.distributions import Distribution
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
+from coinflight.studies.presets import HUMAN_PSI
 
 Verdict = Literal["inside", "above", "below"]
 
@@ -600,7 +601,7 @@ def edge_experiments(
     )
 
 
-HUMAN_PSI_DEGREES = 82.05
+HUMAN_PSI_DEGREES = math.degrees(HUMAN_PSI)
 """The human toss preset's typical cone angle ψ, degrees (:data:`coinflight.studies.presets.
 HUMAN_PSI`, fitted there to coins' same-side rate; a cylinder's ψ is not measured)."""
 
