@@ -780,8 +780,8 @@ def mujoco_check(
     resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
     past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
-    row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it, so the
-    tosses are those of :func:`wobble_sweep` at this cell). ImportError without MuJoCo; its
+    row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
+    same ωx and v0 as without it). ImportError without MuJoCo; its
     work bounded by :func:`coinflight.studies.mujoco_compare.run`."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.coin import Coin
