@@ -658,8 +658,9 @@ def edge_experiments(
 
 
 HUMAN_PSI_DEGREES = math.degrees(HUMAN_PSI)
-"""The human toss preset's typical cone angle ψ, degrees (:data:`coinflight.studies.presets.
-HUMAN_PSI`, fitted there to coins' same-side rate; a cylinder's ψ is not measured)."""
+"""The human toss preset's typical cone angle ψ, degrees
+(:data:`~coinflight.studies.presets.HUMAN_PSI`, fitted there to coins' same-side rate; a
+cylinder's ψ is not measured)."""
 
 
 def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distribution:
