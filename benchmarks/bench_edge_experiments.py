@@ -1,7 +1,7 @@
 """Thick cylinders against experiments: the measured edge fractions beside the model's band.
 
     python benchmarks/bench_edge_experiments.py [N] [--contact M] [--points P] [--seed S]
-        [--json FILE] [--mujoco K]
+        [--json FILE] [--mujoco K] [--psi PSI] [--wobble]
 
 The measured points of :func:`coinflight.datasets.edge_experiments` (those a setting of
 :mod:`coinflight.studies.edge_experiments` simulates) each simulated with N tosses per cell of
@@ -9,7 +9,11 @@ the rocking ending (P values per unmeasured parameter, default 3: corners, mid-p
 centre) and M per cell of the 3-D contact ending (corners and centre); prints the table (band
 against the measured 95 % interval), the time, and the records left out and why. With
 ``--mujoco K``: K tosses of each point at the box's centre (24 mm cylinder) in coinflight's two
-endings and in MuJoCo (:func:`coinflight.studies.edge_experiments.mujoco_check`).
+endings and in MuJoCo (:func:`coinflight.studies.edge_experiments.mujoco_check`). With
+``--psi PSI`` (degrees, or "human") every toss wobbles on a precession cone of angle PSI
+(:func:`coinflight.studies.edge_experiments.axial_spin`). With ``--wobble``: instead of the
+band, the sweep of :func:`coinflight.studies.edge_experiments.wobble_sweep` (N rocking and M
+contact tosses per ψ and cell) as a table of P(edge) ± s.e.
 """
 
 from __future__ import annotations
@@ -28,7 +32,13 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=2018)
     parser.add_argument("--json", metavar="FILE", help="write every cell as JSON")
     parser.add_argument("--mujoco", type=int, default=0, metavar="K", help="MuJoCo check size")
+    parser.add_argument("--psi", default=None, help="cone angle, degrees, or 'human'")
+    parser.add_argument("--wobble", action="store_true", help="the ψ sweep instead of the band")
     args = parser.parse_args()
+    psi = None if args.psi is None else args.psi if args.psi == "human" else float(args.psi)
+    if args.wobble:
+        wobble(args)
+        return
 
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset, mujoco_check
@@ -37,7 +47,13 @@ def main() -> None:
     load = os.getloadavg()[0]
     t0 = time.perf_counter()
     result = edge_experiments(
-        records, args.n, args.seed, contact=args.contact, points=args.points, progress=print
+        records,
+        args.n,
+        args.seed,
+        contact=args.contact,
+        points=args.points,
+        psi=psi,
+        progress=print,
     )
     wall = time.perf_counter() - t0
     print(
@@ -57,7 +73,7 @@ def main() -> None:
     for line in left:
         print(f"left out: {line}")
     for x in records if args.mujoco else ():
-        check = mujoco_check(x, args.mujoco, args.seed)
+        check = mujoco_check(x, args.mujoco, args.seed, psi=psi)
         where = ", ".join(f"{k} {val:.3g}" for k, val in check.parameters.items())
         print(f"\nMuJoCo check, {x.label}, {args.mujoco} tosses at {where}:")
         for name, est in (
@@ -73,6 +89,48 @@ def main() -> None:
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump(result.to_dict(), f, indent=1)
+
+
+def wobble(args: argparse.Namespace) -> None:
+    """The ψ sweep: one line per experiment, ψ, ending and cell."""
+    from coinflight.datasets import edge_experiments as dataset
+    from coinflight.studies.edge_experiments import from_dataset, wobble_sweep
+
+    records, _ = from_dataset(dataset())
+    load = os.getloadavg()[0]
+    t0 = time.perf_counter()
+    rows = wobble_sweep(records, args.n, args.seed, contact=args.contact)
+    wall = time.perf_counter() - t0
+    print(
+        f"wobble sweep; {args.n:,} rocking and {args.contact:,} contact-ending tosses per cell; "
+        f"seed {args.seed}; {wall:.0f} s wall; load {load:.1f} → {os.getloadavg()[0]:.1f}"
+    )
+    for x in records:
+        print(f"\n{x.label}: measured {x.observed.p:.3f}")
+        for r in rows:
+            if r.label == x.label:
+                cell = ", ".join(f"{k} {val:g}" for k, val in r.parameters.items())
+                print(
+                    f"  ψ {r.psi!s:>6} {r.ending:8} {cell}: "
+                    f"{r.estimate.p:.4f} ± {r.estimate.stderr:.4f} (n {r.estimate.n:,})"
+                )
+    if args.json:
+        out = [
+            {
+                "label": r.label,
+                "ratio": r.ratio,
+                "psi": r.psi,
+                "ending": r.ending,
+                **dict(r.parameters),
+                "p_edge": r.estimate.p,
+                "stderr": r.estimate.stderr,
+                "n": r.estimate.n,
+                "seed": r.estimate.seed,
+            }
+            for r in rows
+        ]
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(out, f, indent=1)
 
 
 if __name__ == "__main__":

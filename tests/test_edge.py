@@ -139,3 +139,106 @@ def test_dead_landings_follow_the_dynamic_model(ratio):
     ((_, point),) = simulate_edge([ratio], 20_000, 3)
     model = float(edge_probability(ratio, "dynamic"))
     assert abs(point.p - model) < 3 * math.sqrt(model * (1 - model) / point.n)
+
+
+def _tosses_of(ratio, n, seed, *, diameter=0.024, axial_spin=None, start=1.0, **surface):
+    """simulate_edge's tosses rebuilt from its documented streams (ratio 0 of the seed: child 0,
+    ωx and v0 from rows 0 and 1 of each block, ωz from row 2) and landed by the table: faces.
+    ``start`` -1 launches them tails up (simulate_edge's start heads up)."""
+    from coinflight.model.coin import Coin
+    from coinflight.model.distributions import Uniform
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import land
+    from coinflight.probability import streams
+    from coinflight.studies.edge import SIM_LAUNCH_SPEED, SIM_SPIN
+
+    k = 2 if axial_spin is None else 3
+    root = streams.child(streams.seed_sequence(seed), 0)
+    u = np.concatenate(list(streams.unit_cube(root, n, k)), axis=1)
+    omega = np.zeros((n, 3))
+    omega[:, 0] = Uniform(*SIM_SPIN).ppf(u[0])
+    if axial_spin is not None:
+        omega[:, 2] = axial_spin.ppf(u[2])
+    r, h = diameter / 2, ratio * diameter
+    coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)
+    table = Surface("table", **{"drop_height": 0.5, "restitution": 0.0, **surface})
+    return land(coin, omega, Uniform(*SIM_LAUNCH_SPEED).ppf(u[1]), start, 9.81, table).face
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [{}, {"restitution": 0.45, "drop_height": 0.35}, {"diameter": 0.04, "restitution": 0.3}],
+)
+def test_simulate_edge_tosses_are_its_documented_streams(kwargs):
+    # Without axial_spin the tosses are the two-row streams simulate_edge drew before the
+    # keyword existed (so every earlier result is the same, bit for bit); with it, the same ωx
+    # and v0 and a third row for ωz.
+    from coinflight.core.outcome import EDGE
+    from coinflight.model.distributions import Fixed, Normal
+    from coinflight.studies.edge import simulate_edge
+
+    surface = {k: val for k, val in kwargs.items() if k != "diameter"}
+    d = kwargs.get("diameter", 0.024)
+    for wz in (None, Normal(20.0, 10.0)):
+        ((_, est),) = simulate_edge([0.5], 3000, 11, axial_spin=wz, **kwargs)
+        faces = _tosses_of(0.5, 3000, 11, diameter=d, axial_spin=wz, **surface)
+        assert est.successes == int(np.count_nonzero(faces == EDGE))
+    planar = simulate_edge([0.3, 0.5], 2000, 4, **kwargs)
+    assert simulate_edge([0.3, 0.5], 2000, 4, axial_spin=Fixed(0.0), **kwargs) == planar
+    assert simulate_edge([0.3, 0.5], 2000, 4, axial_spin=Fixed(40.0), **kwargs) != planar
+
+
+def test_dead_landing_heads_tails_symmetry_with_and_without_axial_spin():
+    # Dead landings (e = 0) of simulate_edge's setting, 2·10⁴ tosses launched heads up.
+    # Planar (no axial spin): heads and tails equally likely among the tosses off edge, within
+    # 3 s.e. of the difference. Precessing (ωz ~ N(60, 30) rad/s, ψ ≈ 70° at h/d 0.5): NOT
+    # equally likely, and rightly so: the normal stays on a cone about the fixed angular
+    # momentum, which starts tilted ψ from the upward normal, so the launch face is up more of
+    # the time (Diaconis, Holmes & Montgomery 2007's same-side bias), and the edge band takes
+    # more of the down side. The symmetry that holds is the mirror one: the same tosses
+    # launched tails up land with heads and tails swapped, toss by toss. P(edge) is printed,
+    # not asserted: nothing says a precessing toss must follow Yong & Mahadevan's planar
+    # formula.
+    from coinflight.core.outcome import EDGE, HEADS, TAILS
+    from coinflight.model.distributions import Normal
+    from coinflight.studies.edge import simulate_edge
+
+    planar = _tosses_of(0.5, 20_000, 2024)
+    heads, tails = (int(np.count_nonzero(planar == f)) for f in (HEADS, TAILS))
+    assert abs(heads - tails) <= 3 * math.sqrt(heads + tails)  # sd of heads − tails: √off
+
+    wz = Normal(60.0, 30.0)
+    up = _tosses_of(0.5, 20_000, 2024, axial_spin=wz)
+    down = _tosses_of(0.5, 20_000, 2024, axial_spin=wz, start=-1.0)
+    assert np.array_equal(up == EDGE, down == EDGE)
+    assert np.array_equal(up == HEADS, down == TAILS)
+    heads, tails = (int(np.count_nonzero(up == f)) for f in (HEADS, TAILS))
+    assert heads - tails > 3 * math.sqrt(heads + tails)  # the launch face is favoured
+    ((_, est),) = simulate_edge([0.5], 20_000, 2024, axial_spin=wz)
+    assert est.successes == int(np.count_nonzero(up == EDGE))
+    print(
+        f"dead landing, h/d 0.5, ωz ~ N(60, 30) rad/s: P(edge) {est.p:.4f} ± {est.stderr:.4f}, "
+        f"heads {heads}, tails {tails}"
+    )
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "words"),
+    [
+        ({"diameter": -0.02}, ValueError, "coin diameter must be positive and finite"),
+        ({"diameter": 0.0}, ValueError, "coin diameter must be positive and finite"),
+        ({"diameter": [0.02, 0.03]}, TypeError, "coin diameter must be a single number"),
+        ({"diameter": "big"}, TypeError, "coin diameter must be a number"),
+        ({"axial_spin": 30.0}, TypeError, "axial spin must be a distribution, got float"),
+        (
+            {"diameter": 0.01, "corner_radius": 0.002},
+            ValueError,
+            r"corner radius must be between 0 and 0\.0015.*h = 0\.003 m",
+        ),
+    ],
+)
+def test_simulate_edge_refuses_bad_size_and_axial_spin(kwargs, error, words):
+    from coinflight.studies.edge import simulate_edge
+
+    with pytest.raises(error, match=words):
+        simulate_edge([0.3], 10, 1, **kwargs)

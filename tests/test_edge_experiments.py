@@ -173,7 +173,7 @@ def test_bad_records():
 
 # Yong & Mahadevan 2011 (REFERENCES §5): a vigorous planar toss landing dead lands on edge with
 # P = 2 arctan(h/d)/π. The hand-table setting with restitution 0 and sticking friction is such a
-# toss, for a cylinder of any size (the similarity the study uses for sizes): within 3 s.e.
+# toss, for a cylinder of any size (simulate_edge's diameter): within 3 s.e.
 @pytest.mark.parametrize("diameter", [0.02, 0.05])
 def test_dead_landing_reproduces_the_dynamic_model(diameter):
     records = [
@@ -201,3 +201,67 @@ def test_mujoco_check_same_tosses_in_three_engines():
     assert 0 <= check.mujoco_moving <= 3
     with pytest.raises(ValueError, match="tosses of the MuJoCo check"):
         mujoco_check(THIN, 0)
+
+
+def test_axial_spin_puts_the_normal_on_the_stated_cone():
+    # ωz = (I1/I3) ωx cot ψ (Diaconis, Holmes & Montgomery 2007, §2), I1/I3 of a uniform
+    # cylinder = (3r² + h²)/12 ÷ r²/2 = (3 + 4 (h/d)²)/6; ωx the hand setting's median.
+    from coinflight.model.distributions import Fixed, Normal
+    from coinflight.studies.edge_experiments import axial_spin
+    from coinflight.studies.presets import HUMAN_COT_PSI_RELATIVE_SD, HUMAN_PSI, HUMAN_SPIN
+
+    spin = setting("hand-table").spin
+    for ratio in (0.354, 0.577):
+        ratio_i = (3 + 4 * ratio**2) / 6
+        for psi in (80.0, 60.0, 45.0):
+            wz = axial_spin(ratio, spin, psi)
+            assert isinstance(wz, Fixed)
+            expected = ratio_i * HUMAN_SPIN / math.tan(math.radians(psi))
+            assert wz.value == pytest.approx(expected, rel=1e-4)  # moments printed to 5 digits
+        assert axial_spin(ratio, spin, 90.0) == Fixed(0.0)
+        human = axial_spin(ratio, spin, "human")
+        assert isinstance(human, Normal)
+        mean = ratio_i * HUMAN_SPIN / math.tan(HUMAN_PSI)
+        assert human.mean == pytest.approx(mean, rel=1e-4)
+        assert human.sd == pytest.approx(HUMAN_COT_PSI_RELATIVE_SD * human.mean)
+
+
+@pytest.mark.parametrize(
+    ("psi", "error", "words"),
+    [
+        (0.0, ValueError, "psi must be above 0 and at most 90 degrees, got 0"),
+        (95.0, ValueError, "psi must be above 0 and at most 90 degrees, got 95"),
+        ("coin", ValueError, "psi must be a cone angle in degrees or 'human', got 'coin'"),
+        (float("nan"), ValueError, "psi must be finite"),
+    ],
+)
+def test_psi_refused_before_work(psi, error, words):
+    from coinflight.studies.edge_experiments import wobble_sweep
+
+    with pytest.raises(error, match=words):
+        edge_experiments([THIN], 10, psi=psi)
+    with pytest.raises(error, match=words):
+        wobble_sweep([THIN], 10, psis=[psi])
+
+
+def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
+    # Common random numbers: ψ = 90 (no axial spin) at a cell gives edge_experiments' count at
+    # that cell, toss for toss; a wobble changes it; every row names its ψ and cell.
+    from coinflight.studies.edge_experiments import wobble_sweep
+
+    band = edge_experiments([THIN], 3000, 9, contact=0)
+    centre = band.comparisons[0].rocking.centre
+    cell = dict(centre.parameters)
+    assert cell == pytest.approx(
+        {"restitution": 0.45, "friction": 0.325, "diameter": 0.035, "drop_height": 0.35}
+    )
+    rows = wobble_sweep([THIN], 3000, 9, psis=[90.0, 60.0], cells=[cell])
+    assert [(r.psi, r.ending, dict(r.parameters)) for r in rows] == [
+        (90.0, "rocking", cell),
+        (60.0, "rocking", cell),
+    ]
+    assert rows[0].estimate.successes == centre.estimate.successes
+    assert rows[1].estimate.successes != rows[0].estimate.successes
+    wobbling = edge_experiments([THIN], 3000, 9, contact=0, psi=60.0).comparisons[0].rocking
+    assert wobbling.centre.parameters["psi"] == 60.0
+    assert wobbling.centre.estimate.successes == rows[1].estimate.successes

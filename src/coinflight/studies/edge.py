@@ -120,6 +120,8 @@ def simulate_edge(
     rolling_resistance: float | None = None,
     pivoting_resistance: float | None = None,
     corner_radius: float = 0.0,
+    diameter: float = SIM_DIAMETER,
+    axial_spin: Distribution | None = None,
     executor: Any = None,
     progress: Callable[[int], None] | None = None,
 ) -> list[tuple[float, BinomialEstimate]]:
@@ -148,7 +150,13 @@ def simulate_edge(
     landings that bounce (``restitution`` > 0); ``corner_radius`` a (m, default 0: sharp), the
     rounded rim corners of every ratio's coin (:attr:`coinflight.model.coin.Coin.corner_radius`:
     the impacts, the contact ending and the face/edge wells take it), at most half the thinnest
-    coin's thickness.
+    coin's thickness; ``diameter`` (m, default :data:`SIM_DIAMETER`) the coins' diameter d
+    (each ratio's thickness is ratio × d); ``axial_spin`` (ωz, rad/s, a distribution; default
+    none: ωz = 0, planar tosses) a spin about the coin's axis as well, so that the normal
+    precesses on a cone of angle ψ, cot ψ = I3 ωz / (I1 ωx) (Diaconis, Holmes & Montgomery
+    2007, §2; :func:`coinflight.core.precession.axial_spin`). ωz is drawn from a third stream
+    of each block (the unit cube's third coordinate), so ωx and v0 are the same draws with or
+    without it, and without it every result is what it was before the keyword existed.
 
     ``executor`` (an object with ``map``, or a ``distributed.Client``: :mod:`coinflight.
     probability.distributed`) runs the blocks of :data:`~coinflight.probability.streams.BLOCK`
@@ -164,7 +172,8 @@ def simulate_edge(
 
     x = check_ratios(ratios)
     n = v.count("number of tosses", n, 1, MAX_SIM_TOSSES)
-    corner = _corner_radius(corner_radius, float(np.min(x)))
+    d = check_diameter(diameter)
+    corner = _corner_radius(corner_radius, float(np.min(x)), d)
     resistances = {
         name: value
         for name, value in (
@@ -193,7 +202,7 @@ def simulate_edge(
     )
     streams.check_seed(seed)
     wx = Uniform(*SIM_SPIN) if spin is None else spin
-    for name, dist in (("spin", spin), ("launch speed", launch_speed)):
+    for name, dist in (("spin", spin), ("launch speed", launch_speed), ("axial spin", axial_spin)):
         if dist is not None and not isinstance(dist, Distribution):
             raise TypeError(f"{name} must be a distribution, got {type(dist).__name__}")
     v0 = check_launch_speed(
@@ -202,22 +211,22 @@ def simulate_edge(
     from coinflight.probability._runner import check_runner, executor_or_threads, run_tasks
 
     check_runner(executor, None, progress)
-    r = 0.5 * SIM_DIAMETER
+    r = 0.5 * d
     root = streams.seed_sequence(seed)
     coins = []
     for ratio in x:
-        h = float(ratio) * SIM_DIAMETER
+        h = float(ratio) * d
         mass = 7800.0 * np.pi * r * r * h  # steel
         coins.append(Coin(radius=r, thickness=h, mass=mass, corner_radius=corner))
     tasks: list[tuple[Any, ...]]
     if executor is None:  # one ratio at a time, each landing on all of numba's threads
-        tasks = [(coin, streams.child(root, i), n, 0, None, wx, v0, g, surface, True)
+        tasks = [(coin, streams.child(root, i), n, 0, None, wx, v0, axial_spin, g, surface, True)
                  for i, coin in enumerate(coins)]  # fmt: skip
         sizes = [n] * len(coins)
     else:  # one task per block of tosses, each in one thread of its worker
         blocks = -(-n // streams.BLOCK)
         tasks = [
-            (coin, streams.child(root, i), n, b, b + 1, wx, v0, g, surface, False)
+            (coin, streams.child(root, i), n, b, b + 1, wx, v0, axial_spin, g, surface, False)
             for i, coin in enumerate(coins)
             for b in range(blocks)
         ]
@@ -240,21 +249,31 @@ def check_ratios(ratios: ArrayLike) -> NDArray[np.float64]:
     return x
 
 
-def simulated_corner_radius(value: object, ratios: ArrayLike) -> float:
-    """The corner radius ``value`` (m) of the simulated coins of these ratios, checked as
-    :func:`simulate_edge` checks it (the thinnest coin bounds it), else ValueError."""
-    return _corner_radius(value, float(np.min(check_ratios(ratios))))
+def check_diameter(value: object) -> float:
+    """The simulated coins' diameter ``value`` (m): one positive finite number, else
+    TypeError or ValueError naming it."""
+    d = v.number("coin diameter", value, "m")
+    return float(v.positive("coin diameter", d, "m"))
 
 
-def _corner_radius(value: object, thinnest: float) -> float:
+def simulated_corner_radius(
+    value: object, ratios: ArrayLike, diameter: float = SIM_DIAMETER
+) -> float:
+    """The corner radius ``value`` (m) of the simulated coins of these ratios and ``diameter``
+    (m), checked as :func:`simulate_edge` checks it (the thinnest coin bounds it), else
+    ValueError."""
+    return _corner_radius(value, float(np.min(check_ratios(ratios))), check_diameter(diameter))
+
+
+def _corner_radius(value: object, thinnest: float, diameter: float = SIM_DIAMETER) -> float:
     """The simulated coins' corner radius ``value`` (m), checked against the thinnest coin's
-    half thickness (ratio ``thinnest`` × :data:`SIM_DIAMETER` / 2) and the coins' radius
-    :data:`SIM_DIAMETER` / 2: the coin's own wording, naming that coin."""
+    half thickness (ratio ``thinnest`` × ``diameter`` / 2) and the coins' radius
+    ``diameter`` / 2: the coin's own wording, naming that coin."""
     from coinflight.model.coin import check_corner_radius
 
-    h = thinnest * SIM_DIAMETER
+    h = thinnest * diameter
     try:
-        return check_corner_radius(value, h, 0.5 * SIM_DIAMETER)
+        return check_corner_radius(value, h, 0.5 * diameter)
     except ValueError as exc:
         raise ValueError(f"{exc} of the thinnest coin (h/d = {thinnest:g}, h = {h:g} m)") from None
 
@@ -263,11 +282,16 @@ def _edge_task(args: tuple[Any, ...]) -> int:
     """Tosses on edge among blocks ``first`` to ``last`` of one ratio's stream."""
     from coinflight.outcomes.table import land
 
-    coin, stream, n, first, last, wx, v0, g, surface, parallel = args
+    coin, stream, n, first, last, wx, v0, wz, g, surface, parallel = args
     edges = 0
-    for u in streams.unit_cube(stream, n, 2, first_block=first, last_block=last):
+    # Row r of each block comes from its own generator (streams.block_generators): a third
+    # row for ωz leaves the rows of ωx and v0 as they are.
+    k = 2 if wz is None else 3
+    for u in streams.unit_cube(stream, n, k, first_block=first, last_block=last):
         omega = np.zeros((u.shape[1], 3))
         omega[:, 0] = wx.ppf(u[0])
+        if wz is not None:
+            omega[:, 2] = wz.ppf(u[2])
         speed = v0.ppf(u[1])
         face = land(coin, omega, speed, 1.0, g, surface, parallel=parallel).face
         edges += int(np.sum(face == EDGE))
@@ -289,8 +313,9 @@ def edge_table(
     (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
     ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
     keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
-    rolling and pivoting resistance, corner radius) and, for rounded coins, ``corner_radius``
-    (m; left out for sharp corners, so that every other row is as it was). Ratios
+    rolling and pivoting resistance, corner radius, diameter, axial spin) and, for rounded
+    coins, ``corner_radius`` (m; left out for sharp corners, so that every other row is as it
+    was). Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
     ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
@@ -326,6 +351,7 @@ def edge_table(
 
 __all__ = [
     "MODELS",
+    "check_diameter",
     "check_ratios",
     "edge_probability",
     "edge_table",

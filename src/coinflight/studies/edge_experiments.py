@@ -19,19 +19,26 @@ Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
     rad/s, v0 ~ Normal(2.4, 0.24) m/s, DHM via Keller, REFERENCES §2), released
     :data:`HAND_DROP` m above the table (our assumption: a hand over a table, seated to
     standing), the diameter :data:`HAND_DIAMETER` m when the source does not give it (our
-    assumption: coin-sized to a large draughts piece). The preset's axial spin ωz is left out:
-    :func:`~coinflight.studies.edge.simulate_edge` spins the coin about a diameter only.
+    assumption: coin-sized to a large draughts piece). By default the tosses are planar (no
+    axial spin ωz); ``psi`` adds the wobble of a precessing toss (below).
 
-How a cylinder of another size is simulated. ``simulate_edge`` lands coins of one diameter,
-:data:`coinflight.studies.edge.SIM_DIAMETER` (d₀ = 24 mm). A rigid body with Coulomb friction
-and a restitution coefficient has no length scale of its own, so a cylinder of diameter D is
-the d₀ coin in a scaled world: lengths × k = d₀/D, times unchanged (so spins unchanged),
-speeds and accelerations × k: g → k g, drop → k H, v0 → k v0, resistance lengths → k ℓ
-(dimensional analysis; every impact and the rocking ending's wells are homogeneous in these).
-What does not scale: the numerical thresholds in m/s (the rocking hand-off below a rebound of
-0.01 m/s becomes 0.01/k m/s of the real cylinder) and the contact ending's compliant contact
-time (a time, unchanged, so the same stiffness relative to the flight): both far below the
-landing's own speeds (≈ 3 m/s).
+A cylinder of diameter D is simulated at that size (``simulate_edge``'s ``diameter``). Until
+2026-11-23 the study landed the 24 mm coin in a world scaled by k = 24 mm / D (g, drop, v0
+and resistance lengths × k: dimensional similarity); the direct size agrees with it in all 34
+rocking cells of ``bench_edge_experiments.py 20000 --contact 0 --points 2 --seed 2018`` (same
+tosses, every difference within 0.93 s.e.; 2026-11-23 21:55 UTC, load 1–2), and every number
+below was measured with one or the other, as dated.
+
+Wobble (:func:`axial_spin`, :func:`wobble_sweep`). A hand-flipped thick cylinder probably
+does not spin about a diameter only: with an axial spin ωz its normal precesses on a cone of
+angle ψ about the angular momentum, cot ψ = I3 ωz / (I1 ωx) (Diaconis, Holmes & Montgomery
+2007, §2), the launch face up more of the flight, and it lands at a more random orientation
+("volumetric" rotation, Gaek & Sukhov 2024, arXiv:2401.03557). ``psi="human"`` takes the human
+toss preset's relation (ωz ~ Normal(μ, μ/2), μ at ψ0 = 82.05°, fitted there to *coins'*
+same-side rate); a number is one ψ at the median ωx. **A cylinder's ψ is not measured**: the
+sweep below states ψ, it does not fit it. Caveats of the endings with a wobble: the rocking
+ending discards the spin and the precession at its hand-off (planar rocking), and the 3-D
+contact ending is experimental (rims that roll upright can stop upright).
 
 Measured (2026-11-23, 20:42–20:50 UTC, the shared 2-core machine at load 10–12:
 ``python benchmarks/bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
@@ -68,6 +75,55 @@ cloth would land them deader), the parameters (restitution of wood or plastic on
 below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in both coinflight
 and MuJoCo, which agree here), and the data (fractions from a secondary table, the
 video not read).
+
+The wobble, measured (2026-11-23, 21:57–22:03 UTC, load 0.7 → 6.6, 335 s wall: ``python
+benchmarks/bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
+ωx and v0 draws at every ψ and cell; P(edge) ± s.e., rocking 50,000 / contact 500 tosses;
+cells: C the box's centre e 0.45, μ 0.325, 24 mm, 0.35 m drop; A the planar band's high
+corner e 0.3, μ 0.05, 20 mm, 0.5 m; B the opposite corner e 0.6, μ 0.6, 50 mm, 0.2 m; ψ
+in degrees, 90 = no axial spin, human = the preset's spread about 82°):
+
+=======  ====  ====  =========  =========  =========  =========  =========  =========
+ending   h/d   cell  ψ 90       human      ψ 80       ψ 70       ψ 60       ψ 45
+=======  ====  ====  =========  =========  =========  =========  =========  =========
+rocking  .354  C     .031±.001  .069±.001  .068±.001  .041±.001  .049±.001  .036±.001
+rocking  .354  A     .095±.001  .103±.001  .123±.001  .033±.001  .023±.001  .010±.000
+rocking  .354  B     .057±.001  .125±.001  .102±.001  .074±.001  .071±.001  .057±.001
+rocking  .577  C     .137±.002  .322±.002  .330±.002  .267±.002  .232±.002  .175±.002
+rocking  .577  A     .203±.002  .329±.002  .341±.002  .212±.002  .140±.002  .092±.001
+rocking  .577  B     .173±.002  .381±.002  .334±.002  .281±.002  .255±.002  .249±.002
+contact  .354  C     .030±.008  .186±.017  .178±.017  .116±.014  .076±.012  .046±.009
+contact  .354  A     .100±.013  .346±.021  .430±.022  .028±.007  0 of 500   0 of 500
+contact  .354  B     .052±.010  .446±.022  .450±.022  .322±.021  .258±.020  .214±.018
+contact  .577  C     .118±.014  .442±.022  .480±.022  .340±.021  .200±.018  .050±.010
+contact  .577  A     .210±.018  .570±.022  .572±.022  .030±.008  0 of 500   0 of 500
+contact  .577  B     .152±.016  .736±.020  .734±.020  .636±.022  .612±.022  .488±.022
+=======  ====  ====  =========  =========  =========  =========  =========  =========
+
+Measured: 0.132 (0.112–0.154) at h/d 0.354, 0.410 (0.380–0.441) at 0.577.
+
+An independent engine on wobbling tosses (:func:`mujoco_check` with ``psi``, 400 tosses at
+cell C, the seed 2018's child 0, 2026-11-23 22:02–22:13 UTC, load 6–8; one toss of the ψ 70
+run at h/d 0.354 hit a MuJoCo instability warning): with the human ψ, P(edge) at h/d 0.354
+rocking 0.072 ± 0.013, contact 0.205 ± 0.020, MuJoCo 0.158 ± 0.018; at 0.577 rocking
+0.295 ± 0.023, contact 0.480 ± 0.025, MuJoCo 0.410 ± 0.025. With ψ 70: at 0.354 rocking
+0.045 ± 0.010, contact 0.102 ± 0.015, MuJoCo 0.035 ± 0.009; at 0.577 rocking 0.268 ± 0.022,
+contact 0.370 ± 0.024, MuJoCo 0.185 ± 0.019. With a wobble the endings no longer agree with
+MuJoCo (planar they did): MuJoCo lies between them for the human ψ, below both for ψ 70.
+
+So the hypothesis holds in direction and in size for a *slight* wobble. ψ 80–82° (the coin
+preset's, taken as it is) doubles P(edge) at h/d 0.577 in every cell (rocking 0.32–0.38, from
+0.14–0.20 planar; contact 0.44–0.74) and lifts it at 0.354 (rocking 0.07–0.12, contact
+0.19–0.45); MuJoCo at the box's centre gives 0.158 ± 0.018 and 0.410 ± 0.025, both within
+1.3 s.e. of the measured 0.132 and 0.410 (the agreement at 0.577 to three digits is chance:
+nothing was tuned, and the engines' spread at one cell is 0.30–0.48). It is not "more wobble,
+more random": a larger wobble (ψ 45–70°, a fast axial spin, gyroscopically stiff) lowers
+P(edge) again, to zero in the contact ending on low friction, and MuJoCo agrees at ψ 70. The
+size of the effect depends on the ending far beyond the errors (the rocking ending drops the
+precession at its hand-off; the contact ending is experimental), and the ψ of a hand-flipped
+cylinder is not measured (the human preset's is fitted to coins): the wobble is a sufficient
+explanation of the miss, not a demonstrated one. What would settle it: ψ read from the filmed
+flips, and MuJoCo over the whole box with a wobble.
 """
 
 from __future__ import annotations
@@ -86,6 +142,7 @@ from coinflight import _validation as v
 from coinflight.model.distributions import Distribution
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
+from coinflight.studies.presets import HUMAN_PSI
 
 Verdict = Literal["inside", "above", "below"]
 
@@ -467,6 +524,7 @@ def edge_experiments(
     restitution: tuple[float, float] | None = None,
     friction: tuple[float, float] | None = None,
     g: float = 9.81,
+    psi: float | Literal["human"] | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> EdgeExperiments:
     """Each experiment's setting simulated over the unmeasured parameters' box, both endings.
@@ -493,6 +551,11 @@ def edge_experiments(
         dead-landing check; the contact ending needs restitution above 0).
     g : float
         Gravitational acceleration of the real throws, m/s².
+    psi : float or "human", optional
+        A wobble as well (:func:`axial_spin`): the precession cone angle ψ in degrees (0 < ψ
+        ≤ 90; 90 is no axial spin), or ``"human"`` for the human toss preset's spread of ψ
+        about 82°; default none (planar tosses). The same for every cell; each cell's
+        parameters then include ``psi`` (degrees, the typical ψ).
     progress : callable, optional
         Called with a short text after each band.
 
@@ -504,7 +567,7 @@ def edge_experiments(
         :mod:`coinflight.outcomes.table`).
     """
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
-    from coinflight.studies.edge import SIM_DIAMETER, simulate_edge
+    from coinflight.studies.edge import simulate_edge
 
     items = tuple(experiments)
     if not items:
@@ -528,6 +591,8 @@ def edge_experiments(
         for x in items
     ]
     points = v.count("points per parameter", points, 2, 9)
+    if psi is not None:
+        axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
     rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
     contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
     seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
@@ -547,30 +612,32 @@ def edge_experiments(
     for i, (x, box) in enumerate(zip(items, boxes, strict=True)):
         the_setting = settings[x.setting]
         child = streams.child(root, i)
+        wz = None if psi is None else axial_spin(x.ratio, the_setting.spin, psi)
+        extra = {} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}
         bands: dict[str, Band] = {}
         for ending, size in (("rocking", n), ("contact", contact)):
             if size == 0:
                 continue
             cells = []
             for point in box_cells(box[ending], points if ending == "rocking" else 2):
-                k = SIM_DIAMETER / point["diameter"]  # the scaled world (module notes)
-                length = point.get("resistance")
-                resist = None if length is None else k * length
+                resist = point.get("resistance")
                 ((_, estimate),) = simulate_edge(
                     [x.ratio],
                     size,
                     child,
-                    g=k * g,
+                    g=g,
                     restitution=point["restitution"],
                     friction=point["friction"],
-                    drop_height=k * point["drop_height"],
+                    drop_height=point["drop_height"],
                     spin=the_setting.spin,
-                    launch_speed=the_setting.launch_speed.scaled(k),
+                    launch_speed=the_setting.launch_speed,
                     ending=ending,
                     rolling_resistance=resist,
                     pivoting_resistance=resist,
+                    diameter=point["diameter"],
+                    axial_spin=wz,
                 )
-                cells.append(Cell(MappingProxyType(point), estimate))
+                cells.append(Cell(MappingProxyType({**point, **extra}), estimate))
             bands[ending] = Band(ending, tuple(cells))
             if progress is not None:
                 progress(f"{x.label}: {ending}")
@@ -588,6 +655,152 @@ def edge_experiments(
         time.perf_counter() - t0,
         points,
     )
+
+
+HUMAN_PSI_DEGREES = math.degrees(HUMAN_PSI)
+"""The human toss preset's typical cone angle ψ, degrees
+(:data:`~coinflight.studies.presets.HUMAN_PSI`, fitted there to coins' same-side rate; a
+cylinder's ψ is not measured)."""
+
+
+def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distribution:
+    """The axial spin ωz (rad/s) that tilts a cylinder of ratio h/d spinning at ``spin`` (ωx,
+    its median) onto a precession cone of angle ψ: ωz = (I1/I3) ωx cot ψ (Diaconis, Holmes &
+    Montgomery 2007, §2; :func:`coinflight.core.precession.axial_spin`), I1/I3 the uniform
+    cylinder's (independent of its size and mass).
+
+    ``psi``: degrees, 0 < ψ ≤ 90, one ωz (a :class:`~coinflight.model.distributions.Fixed`;
+    ψ then varies a little with each toss's ωx), or ``"human"``: the human toss preset's
+    relation (:func:`coinflight.studies.presets.human`: ωz ~ Normal(μ, μ/2) with μ at ψ0 =
+    82.05°, so the same spread of ψ as the preset's coins).
+    """
+    from coinflight.core import precession
+    from coinflight.model.coin import Coin
+    from coinflight.model.distributions import Fixed, Normal
+    from coinflight.studies.presets import HUMAN_COT_PSI_RELATIVE_SD
+
+    v.instance("spin", spin, Distribution, "a distribution")
+    if psi == "human":
+        degrees, spread = HUMAN_PSI_DEGREES, HUMAN_COT_PSI_RELATIVE_SD
+    elif isinstance(psi, str):
+        raise ValueError(f"psi must be a cone angle in degrees or 'human', got {psi!r}")
+    else:
+        degrees, spread = v.number("psi", psi, "degrees"), 0.0
+        if not 0.0 < degrees <= 90.0:
+            raise ValueError(f"psi must be above 0 and at most 90 degrees, got {degrees:g}")
+    from coinflight.studies.edge import SIM_DIAMETER
+
+    r, h = 0.5 * SIM_DIAMETER, float(ratio) * SIM_DIAMETER
+    i1, i3 = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h).moments
+    wx = float(np.asarray(spin.ppf(np.asarray([0.5])))[0])
+    wz = 0.0 if degrees == 90.0 else float(precession.axial_spin(wx, math.radians(degrees), i1, i3))
+    return Normal(wz, spread * wz) if spread else Fixed(wz)
+
+
+WOBBLE_PSI: tuple[float | str, ...] = (90.0, "human", 80.0, 70.0, 60.0, 45.0)
+"""The cone angles of :func:`wobble_sweep`, degrees (90: planar, no axial spin; "human": the
+preset's spread about 82°): a stated sweep, not a fit."""
+
+WOBBLE_CELLS: tuple[Mapping[str, float], ...] = (
+    MappingProxyType(
+        {"restitution": 0.45, "friction": 0.325, "diameter": 0.024, "drop_height": 0.35}
+    ),
+    MappingProxyType({"restitution": 0.3, "friction": 0.05, "diameter": 0.02, "drop_height": 0.5}),
+    MappingProxyType({"restitution": 0.6, "friction": 0.6, "diameter": 0.05, "drop_height": 0.2}),
+)
+"""The settings of :func:`wobble_sweep`: the hand-table box's centre (e, μ; a 24 mm cylinder
+as :func:`mujoco_check`'s, released 0.35 m up) and two opposite corners: the one of the
+planar band's highest P(edge) and the one facing it."""
+
+
+@dataclass(frozen=True)
+class WobbleRow:
+    """P(edge) of one experiment's setting with cone angle ``psi`` (degrees or "human") at
+    ``parameters``, by ``ending``."""
+
+    label: str
+    ratio: float
+    psi: float | str
+    ending: str
+    parameters: Mapping[str, float]
+    estimate: BinomialEstimate
+
+
+def wobble_sweep(
+    experiments: Sequence[Experiment],
+    n: int,
+    seed: streams.SeedLike = None,
+    *,
+    contact: int = 0,
+    psis: Sequence[float | str] = WOBBLE_PSI,
+    cells: Sequence[Mapping[str, float]] = WOBBLE_CELLS,
+    resistance: float = 1e-4,
+    g: float = 9.81,
+    progress: Callable[[str], None] | None = None,
+) -> list[WobbleRow]:
+    """P(edge) of each experiment's setting with a wobble: for each cone angle ψ of ``psis``
+    (:func:`axial_spin`) and each cell of ``cells`` (restitution, friction, diameter,
+    drop_height), ``n`` tosses with the rocking ending and ``contact`` (0: none) with the 3-D
+    contact ending (rolling and pivoting resistance ``resistance`` m).
+
+    Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
+    cell lands the same ωx and v0 (common random numbers; ψ changes ωz only), and ψ = 90 with
+    the rocking ending gives that function's counts at the same cell. Work bounded before it
+    runs, as :func:`edge_experiments`.
+    """
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
+    from coinflight.studies.edge import simulate_edge
+
+    items = tuple(experiments)
+    if not items:
+        raise ValueError("give at least one experiment")
+    for item in items:
+        v.instance("experiment", item, Experiment, "an Experiment")
+    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
+    contact = v.count("contact-ending tosses per cell", contact, 0, n)
+    streams.check_seed(seed)
+    settings = {name: setting(name) for name in {x.setting for x in items}}
+    spins = {
+        x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
+    }
+    runs = len(items) * len(psis) * len(cells)
+    v.work_bound(
+        f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)",
+        runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND),
+        v.MAX_RUN_SECONDS,
+        "s",
+        "use fewer tosses per cell (n, contact)",
+    )
+    root = streams.seed_sequence(seed)
+    rows = []
+    for i, x in enumerate(items):
+        the_setting = settings[x.setting]
+        for psi, wz in zip(psis, spins[x.label], strict=True):
+            for cell in cells:
+                for ending, size in (("rocking", n), ("contact", contact)):
+                    if size == 0:
+                        continue
+                    resist = resistance if ending == "contact" else None
+                    ((_, estimate),) = simulate_edge(
+                        [x.ratio],
+                        size,
+                        streams.child(root, i),
+                        g=g,
+                        restitution=cell["restitution"],
+                        friction=cell["friction"],
+                        drop_height=cell["drop_height"],
+                        diameter=cell["diameter"],
+                        spin=the_setting.spin,
+                        launch_speed=the_setting.launch_speed,
+                        axial_spin=wz,
+                        ending=ending,
+                        rolling_resistance=resist,
+                        pivoting_resistance=resist,
+                    )
+                    rows.append(WobbleRow(x.label, x.ratio, psi, ending, cell, estimate))
+                    if progress is not None:
+                        progress(f"{x.label} ψ {psi} {ending} {dict(cell)}: {estimate.p:.4f}")
+    return rows
 
 
 @dataclass(frozen=True)
@@ -615,6 +828,7 @@ def mujoco_check(
     drop_height: float | None = None,
     resistance: float = 1e-4,
     g: float = 9.81,
+    psi: float | Literal["human"] | None = None,
 ) -> EngineCheck:
     """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
     :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
@@ -622,8 +836,10 @@ def mujoco_check(
     range) landed on one table (e, μ; rolling and pivoting, MuJoCo's rolling and torsional,
     resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
-    past its first contact). ImportError without MuJoCo; its work bounded by
-    :func:`coinflight.studies.mujoco_compare.run`."""
+    past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
+    row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
+    same ωx and v0 as without it). ImportError without MuJoCo; its
+    work bounded by :func:`coinflight.studies.mujoco_compare.run`."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.coin import Coin
     from coinflight.model.surface import Surface
@@ -636,9 +852,13 @@ def mujoco_check(
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
     root = streams.seed_sequence(seed)
-    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, 2)), axis=1)
+    wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
+    k = 2 if wz is None else 3
+    u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, k)), axis=1)
     omega = np.zeros((n, 3))
     omega[:, 0] = the_setting.spin.ppf(u[0])
+    if wz is not None:
+        omega[:, 2] = wz.ppf(u[2])
     v0 = np.asarray(the_setting.launch_speed.ppf(u[1]), dtype=float)
     r = 0.5 * SIM_DIAMETER
     h = experiment.ratio * SIM_DIAMETER
@@ -669,6 +889,7 @@ def mujoco_check(
                 "diameter": SIM_DIAMETER,
                 "drop_height": drop,
                 "resistance": resistance,
+                **({} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}),
             }
         ),
         ours["rocking"],
@@ -682,9 +903,12 @@ def mujoco_check(
 __all__ = [
     "HAND_DIAMETER",
     "HAND_DROP",
+    "HUMAN_PSI_DEGREES",
     "RESISTANCE",
     "SETTINGS",
     "SOURCE_SETTINGS",
+    "WOBBLE_CELLS",
+    "WOBBLE_PSI",
     "Band",
     "Cell",
     "Comparison",
@@ -692,10 +916,13 @@ __all__ = [
     "EngineCheck",
     "Experiment",
     "Setting",
+    "WobbleRow",
+    "axial_spin",
     "box_cells",
     "edge_experiments",
     "experiment_box",
     "from_dataset",
     "mujoco_check",
     "setting",
+    "wobble_sweep",
 ]
