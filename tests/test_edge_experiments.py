@@ -146,7 +146,7 @@ def test_record_gives_size_and_drop():
         (
             {"n": 10, "contact": 2, "restitution": (0.0, 0.5)},
             ValueError,
-            "the contact ending acts on landings that bounce",
+            "contact ending .* acts on landings that bounce",
         ),
         ({"n": 10, "seed": -1}, ValueError, "seed must be a non-negative integer"),
     ],
@@ -265,3 +265,28 @@ def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
     wobbling = edge_experiments([THIN], 3000, 9, contact=0, psi=60.0).comparisons[0].rocking
     assert wobbling.centre.parameters["psi"] == 60.0
     assert wobbling.centre.estimate.successes == rows[1].estimate.successes
+
+
+def test_from_dataset_marks_counts_derived_from_a_fraction():
+    """The shipped Stand-up Maths rows give a fraction, not a count: the study's count is
+    round(fraction × n) and says so (≈ in the table, edges_derived in the JSON)."""
+    from coinflight.datasets import edge_experiments as records
+    from coinflight.studies.edge_experiments import from_dataset
+
+    kept, left = from_dataset(records())
+    assert kept and all(x.edges_derived for x in kept)
+    assert {x.edges for x in kept} == {round(r.fraction * r.n) for r in records("measured")}
+    assert left  # the nickel's extrapolation is not a measurement
+    given = Experiment("counted", 0.3, 200, 20, "hand-table", "test record")
+    assert not given.edges_derived
+    r = edge_experiments(kept[:1], 20, 3, contact=0)
+    assert r.table()[0][2].endswith(f"≈{kept[0].edges}/{kept[0].n}")
+    assert r.to_dict()["experiments"][0]["edges_derived"] is True
+
+
+def test_contact_with_a_dead_restitution_range_is_refused_in_the_one_wording():
+    from coinflight._validation import DEAD_CONTACT
+
+    with pytest.raises(ValueError) as err:
+        edge_experiments([THIN], 10, 1, contact=2, restitution=(0.0, 0.5))
+    assert str(err.value) == DEAD_CONTACT

@@ -20,6 +20,7 @@ from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 
 if TYPE_CHECKING:
+    from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution
 
 EdgeModel = Literal["geometric", "dynamic"]
@@ -164,7 +165,6 @@ def simulate_edge(
     are the same as without it, bit for bit. ``progress`` is called with the tosses of each
     finished task.
     """
-    from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution, Uniform
     from coinflight.model.ensemble import check_launch_speed
     from coinflight.model.surface import Surface
@@ -211,13 +211,8 @@ def simulate_edge(
     from coinflight.probability._runner import check_runner, executor_or_threads, run_tasks
 
     check_runner(executor, None, progress)
-    r = 0.5 * d
     root = streams.seed_sequence(seed)
-    coins = []
-    for ratio in x:
-        h = float(ratio) * d
-        mass = 7800.0 * np.pi * r * r * h  # steel
-        coins.append(Coin(radius=r, thickness=h, mass=mass, corner_radius=corner))
+    coins = [cylinder(float(ratio), d, corner) for ratio in x]
     tasks: list[tuple[Any, ...]]
     if executor is None:  # one ratio at a time, each landing on all of numba's threads
         tasks = [(coin, streams.child(root, i), n, 0, None, wx, v0, axial_spin, g, surface, True)
@@ -239,6 +234,22 @@ def simulate_edge(
         edges = sum(counts[i * per_ratio : (i + 1) * per_ratio])
         out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
     return out
+
+
+SIM_DENSITY = 7800.0
+"""Density of the simulated cylinders, kg/m³ (steel); uniform, so it sets the mass, not the
+outcome (the torque-free flight, the impacts and the wells scale with it)."""
+
+
+def cylinder(ratio: float, diameter: float = SIM_DIAMETER, corner_radius: float = 0.0) -> Coin:
+    """The simulated cylinder of thickness/diameter ``ratio``: ``diameter`` m across, uniform
+    density :data:`SIM_DENSITY`, rim corners rounded by ``corner_radius`` m; the one coin of
+    :func:`simulate_edge` and of :mod:`coinflight.studies.edge_experiments`."""
+    from coinflight.model.coin import Coin
+
+    r, h = 0.5 * diameter, float(ratio) * diameter
+    return Coin(radius=r, thickness=h, mass=SIM_DENSITY * np.pi * r * r * h,
+                corner_radius=corner_radius)  # fmt: skip
 
 
 def check_ratios(ratios: ArrayLike) -> NDArray[np.float64]:

@@ -230,6 +230,9 @@ class Experiment:
     source: str = ""
     diameter: float | None = None
     drop_height: float | None = None
+    edges_derived: bool = False
+    """True when the source gives only the fraction and ``edges`` is round(fraction × n),
+    not a count (shown as "≈" in the table, ``edges_derived`` in the JSON)."""
 
     def __post_init__(self) -> None:
         from coinflight.studies.edge import check_ratios
@@ -260,7 +263,8 @@ def from_dataset(records: Sequence[Any]) -> tuple[list[Experiment], list[str]]:
 
     Kept: ``kind == "measured"`` with a number of throws and a source in
     :data:`SOURCE_SETTINGS`. A record giving the fraction but not the count gets edges =
-    round(fraction × n) (exact for a fraction printed to 1/n).
+    round(fraction × n), marked ``edges_derived`` (exact only if the fraction was printed to
+    1/n, which the source does not say).
     """
     kept: list[Experiment] = []
     left: list[str] = []
@@ -273,7 +277,8 @@ def from_dataset(records: Sequence[Any]) -> tuple[list[Experiment], list[str]]:
         elif r.source not in SOURCE_SETTINGS:
             left.append(f"{what}: no setting simulates this source yet")
         else:
-            edges = r.edges if r.edges is not None else round(r.fraction * r.n)
+            derived = r.edges is None
+            edges = round(r.fraction * r.n) if derived else r.edges
             kept.append(
                 Experiment(
                     f"{r.source} h/d {r.ratio:.3f}",
@@ -282,6 +287,7 @@ def from_dataset(records: Sequence[Any]) -> tuple[list[Experiment], list[str]]:
                     edges,
                     SOURCE_SETTINGS[r.source],
                     r.citation,
+                    edges_derived=derived,
                 )
             )
     return kept, left
@@ -399,7 +405,9 @@ class EdgeExperiments:
                     (
                         c.experiment.label,
                         f"{c.experiment.ratio:g}",
-                        f"{obs.p:.3f} ({lo:.3f}–{hi:.3f}), {c.experiment.edges}/{c.experiment.n}",
+                        f"{obs.p:.3f} ({lo:.3f}–{hi:.3f}), "
+                        f"{'≈' if c.experiment.edges_derived else ''}"
+                        f"{c.experiment.edges}/{c.experiment.n}",
                         b.ending,
                         f"{b.low.p:.3f} ± {b.low.stderr:.3f} – "
                         f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
@@ -442,6 +450,7 @@ class EdgeExperiments:
                     "ratio": c.experiment.ratio,
                     "n": c.experiment.n,
                     "edges": c.experiment.edges,
+                    "edges_derived": c.experiment.edges_derived,
                     "fraction": c.experiment.observed.p,
                     "ci95": list(c.experiment.observed.ci95),
                     "setting": c.setting.name,
@@ -577,11 +586,8 @@ def edge_experiments(
     n = v.count("tosses per cell", n, 1, MAX_TOSSES)
     contact = v.count("contact-ending tosses per cell", contact, 0, n)
     streams.check_seed(seed)
-    if contact and restitution is not None and min(restitution) <= 0.0:
-        raise ValueError(
-            f"the contact ending acts on landings that bounce: restitution {restitution} "
-            "reaches 0; give a range above 0, or contact = 0"
-        )
+    if contact and restitution is not None:
+        v.no_dead_contact("contact", float(min(restitution)))
     settings = {name: setting(name) for name in {x.setting for x in items}}
     boxes = [
         {
@@ -675,7 +681,6 @@ def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distributi
     82.05°, so the same spread of ψ as the preset's coins).
     """
     from coinflight.core import precession
-    from coinflight.model.coin import Coin
     from coinflight.model.distributions import Fixed, Normal
     from coinflight.studies.presets import HUMAN_COT_PSI_RELATIVE_SD
 
@@ -688,10 +693,9 @@ def axial_spin(ratio: float, spin: Distribution, psi: float | str) -> Distributi
         degrees, spread = v.number("psi", psi, "degrees"), 0.0
         if not 0.0 < degrees <= 90.0:
             raise ValueError(f"psi must be above 0 and at most 90 degrees, got {degrees:g}")
-    from coinflight.studies.edge import SIM_DIAMETER
+    from coinflight.studies.edge import cylinder
 
-    r, h = 0.5 * SIM_DIAMETER, float(ratio) * SIM_DIAMETER
-    i1, i3 = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h).moments
+    i1, i3 = cylinder(ratio).moments
     wx = float(np.asarray(spin.ppf(np.asarray([0.5])))[0])
     wz = 0.0 if degrees == 90.0 else float(precession.axial_spin(wx, math.radians(degrees), i1, i3))
     return Normal(wz, spread * wz) if spread else Fixed(wz)
@@ -841,11 +845,10 @@ def mujoco_check(
     same ωx and v0 as without it). ImportError without MuJoCo; its
     work bounded by :func:`coinflight.studies.mujoco_compare.run`."""
     from coinflight.core.outcome import EDGE
-    from coinflight.model.coin import Coin
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import land
     from coinflight.studies import mujoco_compare
-    from coinflight.studies.edge import SIM_DIAMETER
+    from coinflight.studies.edge import SIM_DIAMETER, cylinder
 
     v.instance("experiment", experiment, Experiment, "an Experiment")
     n = v.count("tosses of the MuJoCo check", n, 1, 100_000)
@@ -860,9 +863,7 @@ def mujoco_check(
     if wz is not None:
         omega[:, 2] = wz.ppf(u[2])
     v0 = np.asarray(the_setting.launch_speed.ppf(u[1]), dtype=float)
-    r = 0.5 * SIM_DIAMETER
-    h = experiment.ratio * SIM_DIAMETER
-    coin = Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)  # as simulate_edge's
+    coin = cylinder(experiment.ratio)  # simulate_edge's
     seed_int = streams.reported_seed(root)
 
     def edges(faces: Any) -> BinomialEstimate:
