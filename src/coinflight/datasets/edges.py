@@ -25,7 +25,6 @@ Examples
 from __future__ import annotations
 
 import csv
-import io
 import math
 from dataclasses import dataclass
 from importlib.resources import files
@@ -34,6 +33,9 @@ from coinflight import _validation as v
 
 EDGE_FILE = "thick_coin_edges.txt"
 """The file inside :mod:`coinflight.datasets` holding the rows."""
+
+COLUMNS = ("source", "ratio", "n", "edges", "fraction", "kind", "setting", "how_read")
+"""The CSV header of :data:`EDGE_FILE`, in order."""
 
 KINDS: tuple[str, ...] = ("measured", "extrapolated")
 """What a row's number is: a count of real throws, or a model's extrapolation."""
@@ -99,32 +101,75 @@ class EdgeExperiment:
         return math.sqrt(self.fraction * (1.0 - self.fraction) / self.n)
 
 
-def _optional_int(text: str) -> int | None:
-    return int(text) if text.strip() else None
+def _number(name: str, text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError(f"{name} must be a number, got {text!r}") from None
 
 
-def parse_edge_experiments(text: str) -> tuple[EdgeExperiment, ...]:
+def _whole(name: str, text: str) -> int | None:
+    if not text.strip():
+        return None
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"{name} must be an integer, got {text!r}") from None
+
+
+def _record(row: dict[str, str]) -> EdgeExperiment:
+    """One row's record, each number checked in :mod:`coinflight._validation`'s words."""
+    n = _whole("n", row["n"])
+    if n is not None:
+        v.count("n", n, minimum=1)
+    edges = _whole("edges", row["edges"])
+    if edges is not None:
+        v.count("edges", edges, minimum=0, maximum=n)  # at most the throws, when known
+    record = EdgeExperiment(
+        source=row["source"],
+        ratio=float(v.positive("ratio", _number("ratio", row["ratio"]))),
+        n=n,
+        edges=edges,
+        fraction=float(v.in_range("fraction", _number("fraction", row["fraction"]), 0.0, 1.0)),
+        kind=row["kind"],
+        setting=row["setting"],
+        how_read=row["how_read"],
+    )
+    v.choice("edge dataset source", record.source, EDGE_SOURCES)
+    v.choice("edge dataset kind", record.kind, KINDS)
+    return record
+
+
+def parse_edge_experiments(text: str, where: str = EDGE_FILE) -> tuple[EdgeExperiment, ...]:
     """The records of a text in the layout of ``thick_coin_edges.txt``.
 
     Lines starting with ``#`` are comments; then a CSV header
-    (source, ratio, n, edges, fraction, kind, setting, how_read) and one row per point.
+    (source, ratio, n, edges, fraction, kind, setting, how_read) and one row per point. A row
+    that does not read is refused in one line naming ``where`` (the file), its line and the
+    value: a ratio h/d must be positive, n at least 1, edges between 0 and n, a fraction between
+    0 and 1 (``thick_coin_edges.txt line 8: fraction must be between 0 and 1, got 1.5``).
     """
-    body = "\n".join(line for line in text.splitlines() if not line.startswith("#"))
+    lines = ("" if line.startswith("#") else line for line in text.splitlines())
+    reader = csv.reader(lines)
+    header: list[str] | None = None
     rows = []
-    for row in csv.DictReader(io.StringIO(body)):
-        record = EdgeExperiment(
-            source=row["source"],
-            ratio=float(row["ratio"]),
-            n=_optional_int(row["n"]),
-            edges=_optional_int(row["edges"]),
-            fraction=float(row["fraction"]),
-            kind=row["kind"],
-            setting=row["setting"],
-            how_read=row["how_read"],
-        )
-        v.choice("edge dataset source", record.source, EDGE_SOURCES)
-        v.choice("edge dataset kind", record.kind, KINDS)
-        rows.append(record)
+    for values in reader:
+        if not values:  # a comment or a blank line
+            continue
+        if header is None:
+            header = values
+            if tuple(header) != COLUMNS:
+                raise ValueError(
+                    f"{where} line {reader.line_num}: the header must be {','.join(COLUMNS)}, "
+                    f"got {','.join(header)!r}"
+                )
+            continue
+        try:
+            if len(values) != len(header):
+                raise ValueError(f"a row must have {len(header)} fields, got {len(values)}")
+            rows.append(_record(dict(zip(header, values, strict=True))))
+        except (TypeError, ValueError) as err:
+            raise ValueError(f"{where} line {reader.line_num}: {err}") from None
     return tuple(rows)
 
 
@@ -145,6 +190,7 @@ def edge_experiments(kind: str | None = None) -> tuple[EdgeExperiment, ...]:
 
 
 __all__ = [
+    "COLUMNS",
     "EDGE_FILE",
     "EDGE_SOURCES",
     "KINDS",

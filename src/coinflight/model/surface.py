@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Literal
 
 from coinflight import _validation as v
@@ -65,9 +65,11 @@ class _Unset(float):
 
     The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`),
     and a catch in the hand a restitution, friction or resistance given to it
-    (:data:`TABLE_ONLY`), but both keep the defaults. The mark is a float (the kernels, JSON,
-    ``repr`` and pickling see the plain default) that :func:`dataclasses.replace` passes back
-    unchanged, so a copy of a surface with another field changed is not refused.
+    (:data:`TABLE_ONLY`), but both keep the defaults. The mark is a float (the kernels and JSON
+    see the plain default) that :func:`dataclasses.replace`, pickling and
+    :func:`dataclasses.asdict` (its deep copy keeps the subclass) pass back unchanged, so a copy
+    of a surface, or one rebuilt from its fields, is not refused; ``repr`` leaves the marked
+    defaults out (:meth:`Surface.__repr__`), so its text rebuilds the surface too.
     """
 
     __slots__ = ()
@@ -215,6 +217,26 @@ class Surface:
             raise ValueError(f"{', '.join(ending + given + resistances)} {TABLE_ONLY}")
         if resistances and self.ending != "contact":
             raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
+
+    def __repr__(self) -> str:
+        """The call that rebuilds this surface: every field but the defaults not given.
+
+        A default marked as not given (restitution, friction, the resistances) is left out, as
+        the caller left it out: shown as a number it would be given back, and refused by a catch
+        in the hand or the rocking ending. ``eval(repr(s))`` equals ``s`` and refuses what ``s``
+        refuses (in :func:`dataclasses.replace`), no more.
+
+        >>> Surface("hand")
+        Surface(kind='hand', drop_height=0.0, contact_time=0.001, ending='rocking')
+        >>> Surface("table", 0.8, friction=0.2)
+        Surface(kind='table', drop_height=0.8, friction=0.2, contact_time=0.001, ending='rocking')
+        """
+        given = (
+            f"{field.name}={getattr(self, field.name)!r}"
+            for field in fields(self)
+            if not isinstance(getattr(self, field.name), _Unset)
+        )
+        return f"{type(self).__name__}({', '.join(given)})"
 
     @property
     def bounces(self) -> bool:
