@@ -24,6 +24,14 @@ import os
 import time
 
 
+def _write_json(path: str, obj: object) -> None:
+    """``obj`` as JSON at ``path``, whole or not at all (the project's one way to write)."""
+    from coinflight._files import replacing_all
+
+    with replacing_all([path]) as (temp,):
+        temp.write_text(json.dumps(obj, indent=1), encoding="utf-8")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=2_000, help="rocking tosses per cell")
@@ -87,8 +95,7 @@ def main() -> None:
             f"{check.mujoco_seconds:.0f} s"
         )
     if args.json:
-        with open(args.json, "w", encoding="utf-8") as f:
-            json.dump(result.to_dict(), f, indent=1)
+        _write_json(args.json, result.to_dict())
 
 
 def wobble(args: argparse.Namespace) -> None:
@@ -129,8 +136,7 @@ def wobble(args: argparse.Namespace) -> None:
             }
             for r in rows
         ]
-        with open(args.json, "w", encoding="utf-8") as f:
-            json.dump(out, f, indent=1)
+        _write_json(args.json, out)
 
 
 if __name__ == "__main__":
