@@ -32,6 +32,15 @@ def test_the_solver_reaches_the_model():
     assert m.opt.noslip_iterations == 0 and mc.FrictionSolver() == mc.DEFAULT_SOLVER
 
 
+def test_numpy_numbers_reach_the_model_as_numbers():
+    solver = mc.FrictionSolver("elliptic", np.float64(10.0), np.int64(5))
+    assert type(solver.impratio) is float and type(solver.noslip_iterations) is int
+    assert 'impratio="10.0"' in solver.option() and "np." not in solver.option()
+    m = mc.model(NICKEL, 0.3, 0.5, condim=3, solver=solver)
+    assert m.opt.impratio == 10.0 and m.opt.noslip_iterations == 5
+    assert solver == mc.FrictionSolver("elliptic", 10.0, 5)
+
+
 @pytest.mark.parametrize(
     ("kwargs", "error", "words"),
     [

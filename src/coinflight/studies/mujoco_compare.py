@@ -221,7 +221,12 @@ class FrictionSolver:
             and ratio > 0.0
         ):
             raise ValueError(f"MuJoCo impratio must be a positive number, got {ratio!r}")
-        v.count("MuJoCo noslip_iterations", self.noslip_iterations, 0, MAX_NOSLIP_ITERATIONS)
+        iterations = v.count(
+            "MuJoCo noslip_iterations", self.noslip_iterations, 0, MAX_NOSLIP_ITERATIONS
+        )
+        # Plain Python numbers: NumPy's would reach MuJoCo's XML as "np.float64(10.0)".
+        object.__setattr__(self, "impratio", float(ratio))
+        object.__setattr__(self, "noslip_iterations", iterations)
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
