@@ -950,7 +950,9 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             "The measured edge fractions shipped with coinflight (coinflight.datasets."
             "edge_experiments; their provenance is weak: fractions read from a secondary table) "
             "beside the table landing's P(edge) for the same kind of throw "
-            f"(coinflight.studies.edge_experiments, seed {x.seed}). Setting: "
+            "(coinflight.studies.edge_experiments; its tosses come from child "
+            f"{study.EXPERIMENTS_CHILD} of seed {x.seed}: coinflight.studies.landing."
+            "thick_experiments with this seed reproduces them). Setting: "
             + "; ".join(settings)
             + f". Unmeasured, carried as a band: {ranges} (the resistance only with the contact "
             f"ending). Rocking ending: {x.n:,} tosses per cell, {x.points} values per parameter "
