@@ -893,8 +893,10 @@ def _edges_section(check: study.EdgeCheck) -> tuple[Block, ...]:
                 "where it leaves fewer, the difference lies in the engines' contact laws "
                 "(coinflight.core.contact_phase's module notes). Measured from coinflight's own "
                 "hand-off states (benchmarks/bench_mujoco_edges.py --handoff-only, "
-                "bench_edge_trace.py, bench_rim_impacts.py): about half of the gap is MuJoCo's "
-                "shared friction budget at condim 6; the rest is not MuJoCo's soft friction "
+                "bench_edge_trace.py, bench_rim_impacts.py; one point, not a band: vigorous "
+                "US-nickel tosses, e 0.5, μ 0.3, rolling and pivoting resistance 1e-4 m, sharp "
+                "corners, t_c 1 ms): about half of the gap is MuJoCo's shared friction budget "
+                "at condim 6; the rest is not MuJoCo's soft friction "
                 "(made hard with the elliptic cone and impratio, or the no-slip pass, it leaves "
                 "as few coins on edge, and its friction impulse in a rim impact is as close to "
                 "μ J_n as the rigid law's), nor its larger rebound in rim impacts once friction "
@@ -976,7 +978,9 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 f"the resistance {RESISTANCE[0]:g}–{RESISTANCE[1]:g} m and a rounded rim, not "
                 "varied here, may lie outside the ranges taken), and the model (the rocking "
                 "ending's planar hand-off; the contact ending's edges are about ten times "
-                "MuJoCo's on vigorous nickel tosses, section 'Edges in both engines')."
+                "MuJoCo's on vigorous US-nickel tosses at one point, e 0.5, μ 0.3 and 0.6, "
+                "resistance 1e-4 m, sharp corners, t_c 1 ms, MuJoCo condim 6: section 'Edges in "
+                "both engines')."
             )
             if missed
             else "Every measured point lies within the model's band with both endings; the band "
