@@ -17,6 +17,7 @@ from coinflight.model.surface import Surface
 from coinflight.outcomes.table import TableLanding, land
 from coinflight.probability import monte_carlo, streams
 from coinflight.report import landing as report
+from coinflight.report.document import Paragraph
 from coinflight.studies import landing as study
 from coinflight.studies import mujoco_compare
 from coinflight.studies.edge import edge_table
@@ -76,6 +77,26 @@ def test_thick_cylinders_section_is_the_studys(written):
     assert "## Thick cylinders against experiments" in md
     for row in again.table():
         assert row[-2] in {"inside", "above", "below"} and row[0] in md
+
+
+def test_the_thick_cylinders_seed_printed_reproduces_the_numbers():
+    import re
+
+    from coinflight.datasets import edge_experiments as dataset
+    from coinflight.studies.edge_experiments import edge_experiments, from_dataset
+
+    x, left = study.thick_experiments(60, SEED, 0, 2)
+    blocks = report._experiments_section(x, tuple(left))
+    text = " ".join(b.text for b in blocks if isinstance(b, Paragraph))
+    found = re.search(r"child (\d+) of seed (\d+)", text)
+    assert found, text
+    child, seed = int(found[1]), int(found[2])
+    records, _ = from_dataset(dataset())
+    root = streams.seed_sequence(seed)
+    again = edge_experiments(records, 60, streams.child(root, child), points=2)
+    assert again.table() == x.table()
+    # The report's seed alone draws other tosses: the child is what reproduces them.
+    assert edge_experiments(records, 60, seed, points=2).table() != x.table()
 
 
 def test_the_numbers_are_the_librarys(written):

@@ -10,6 +10,7 @@ import math
 import numpy as np
 import pytest
 
+from coinflight import _validation
 from coinflight.model.coin import Coin
 from coinflight.studies import mujoco_compare as mc
 
@@ -31,6 +32,15 @@ def test_the_solver_reaches_the_model():
     assert m.opt.noslip_iterations == 0 and mc.FrictionSolver() == mc.DEFAULT_SOLVER
 
 
+def test_numpy_numbers_reach_the_model_as_numbers():
+    solver = mc.FrictionSolver("elliptic", np.float64(10.0), np.int64(5))
+    assert type(solver.impratio) is float and type(solver.noslip_iterations) is int
+    assert 'impratio="10.0"' in solver.option() and "np." not in solver.option()
+    m = mc.model(NICKEL, 0.3, 0.5, condim=3, solver=solver)
+    assert m.opt.impratio == 10.0 and m.opt.noslip_iterations == 5
+    assert solver == mc.FrictionSolver("elliptic", 10.0, 5)
+
+
 @pytest.mark.parametrize(
     ("kwargs", "error", "words"),
     [
@@ -42,14 +52,37 @@ def test_the_solver_reaches_the_model():
         ({"impratio": 0.0}, ValueError, "MuJoCo impratio must be a positive number, got 0.0"),
         ({"impratio": math.inf}, ValueError, "MuJoCo impratio must be a positive number, got inf"),
         ({"impratio": True}, ValueError, "MuJoCo impratio must be a positive number, got True"),
-        ({"noslip_iterations": -1}, ValueError, "between 0 and 1000, got -1"),
-        ({"noslip_iterations": 1001}, ValueError, "between 0 and 1000, got 1001"),
+        ({"noslip_iterations": -1}, ValueError, "between 0 and 100, got -1"),
+        (
+            {"noslip_iterations": 101},
+            ValueError,
+            "MuJoCo noslip_iterations must be between 0 and 100, got 101",
+        ),
         ({"noslip_iterations": 2.0}, TypeError, "MuJoCo noslip_iterations must be an integer"),
     ],
 )
 def test_bad_solver_values_are_refused_in_one_line(kwargs, error, words):
-    with pytest.raises(error, match=words.replace("(", r"\(").replace(")", r"\)")):
+    with pytest.raises(error, match=words.replace("(", r"\(").replace(")", r"\)")) as caught:
         mc.FrictionSolver(**kwargs)
+    assert "\n" not in str(caught.value)
+
+
+def test_a_harder_solver_raises_the_work_estimate():
+    # Measured factors (benchmarks/bench_mujoco_edges.py's notes, 446 hand-off states): elliptic
+    # impratio 10 1,154 s, impratio 100 2,493 s (2.2 times), 20 no-slip iterations 2,195 s (1.9).
+    base = mc.seconds_estimate(1000, 20.0)
+    assert mc.seconds_estimate(1000, 20.0, solver=mc.FrictionSolver("elliptic", 10.0)) == base
+    hard = mc.seconds_estimate(1000, 20.0, solver=mc.FrictionSolver("elliptic", 100.0))
+    assert hard == pytest.approx(2.2 * base, rel=1e-12)
+    noslip = mc.seconds_estimate(1000, 20.0, solver=mc.FrictionSolver(noslip_iterations=20))
+    assert noslip == pytest.approx(1.9 * base, rel=1e-12)
+    # The bound sees the solver: a run the default solver may do, the hardest may not.
+    n = int(_validation.MAX_RUN_SECONDS / (base / 1000) * 0.9)
+    mc.bound([n], 20.0)
+    hardest = mc.FrictionSolver("elliptic", 100.0, mc.MAX_NOSLIP_ITERATIONS)
+    with pytest.raises(ValueError, match="MuJoCo tosses") as caught:
+        mc.bound([n], 20.0, solver=hardest)
+    assert "\n" not in str(caught.value)
 
 
 def test_a_solver_must_be_a_friction_solver():

@@ -80,6 +80,9 @@ MURRAY_TEARE = 1.0 / 6000.0
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
 _DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES, _EXPERIMENTS = 0, 1, 2, 3, 4, 5, 6
+EXPERIMENTS_CHILD = _EXPERIMENTS
+"""The child of the report's seed the thick-cylinder comparison (:func:`thick_experiments`)
+draws its tosses from."""
 
 
 def map_tosses(coin: Coin | None = None) -> TossDistribution:
@@ -822,6 +825,7 @@ __all__ = [
     "DROP_HEIGHT",
     "EDGE_PAIRS",
     "EDGE_TOSSES",
+    "EXPERIMENTS_CHILD",
     "MURRAY_TEARE",
     "RATIOS",
     "Band",

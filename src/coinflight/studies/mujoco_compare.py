@@ -162,8 +162,20 @@ for the work bound)."""
 
 CONES = ("pyramidal", "elliptic")
 """MuJoCo's friction cones (``option/cone``)."""
-MAX_NOSLIP_ITERATIONS = 1000
-"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass)."""
+MAX_NOSLIP_ITERATIONS = 100
+"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). 20 already left
+MuJoCo's edge count where it was (``benchmarks/bench_mujoco_edges.py``'s notes) and cost 1.9
+times a run without them (:data:`NOSLIP_COST`); 100 would cost about 5.5 times, more is work
+without a question it answers."""
+IMPRATIO_COST = 1.2
+"""Extra cost of a MuJoCo step per decade of ``impratio`` above 10 (for the work bound; a
+stiffer friction needs more solver iterations). Measured (``benchmarks/bench_mujoco_edges.py
+600 --handoff-only --condim 3``, 446 hand-off states, RK4, load 7-14): elliptic impratio 10
+1,154 s wall (no slower than default friction, 1,606 s), impratio 100 2,493 s: 2.2 times."""
+NOSLIP_COST = 0.045
+"""Extra cost of a MuJoCo step per no-slip iteration (for the work bound; each is one more
+sweep over the friction dimensions). Measured as :data:`IMPRATIO_COST`: 20 iterations 2,195 s
+wall against 1,154 s, 1.9 times, i.e. 0.045 per iteration."""
 
 
 @dataclass(frozen=True)
@@ -209,7 +221,12 @@ class FrictionSolver:
             and ratio > 0.0
         ):
             raise ValueError(f"MuJoCo impratio must be a positive number, got {ratio!r}")
-        v.count("MuJoCo noslip_iterations", self.noslip_iterations, 0, MAX_NOSLIP_ITERATIONS)
+        iterations = v.count(
+            "MuJoCo noslip_iterations", self.noslip_iterations, 0, MAX_NOSLIP_ITERATIONS
+        )
+        # Plain Python numbers: NumPy's would reach MuJoCo's XML as "np.float64(10.0)".
+        object.__setattr__(self, "impratio", float(ratio))
+        object.__setattr__(self, "noslip_iterations", iterations)
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
@@ -225,6 +242,13 @@ class FrictionSolver:
             "impratio": self.impratio,
             "noslip_iterations": self.noslip_iterations,
         }
+
+    def cost(self) -> float:
+        """Cost of a MuJoCo step with these settings over one with MuJoCo's defaults (for the
+        work bound): (1 + :data:`IMPRATIO_COST` max(0, log10(impratio / 10))) (1 +
+        :data:`NOSLIP_COST` noslip_iterations); the cone alone costs nothing measurable."""
+        stiffer = 1.0 + IMPRATIO_COST * max(0.0, math.log10(self.impratio / 10.0))
+        return stiffer * (1.0 + NOSLIP_COST * self.noslip_iterations)
 
 
 DEFAULT_SOLVER = FrictionSolver()
@@ -498,23 +522,33 @@ def check_limit(limit: float) -> None:
 
 
 def seconds_estimate(
-    n: int, limit: float, integrator: str = INTEGRATOR, flight: float = FLIGHT
+    n: int,
+    limit: float,
+    integrator: str = INTEGRATOR,
+    flight: float = FLIGHT,
+    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> float:
     """Expected wall seconds of ``n`` MuJoCo tosses carried up to ``limit`` s past their first
     contact: ``n`` (``flight`` + the expected simulated time after the first contact,
     min(``limit``, :data:`MEAN_CONTACT` + :data:`MOVING_SHARE` ``limit``)) in steps of
-    :data:`TIMESTEP` at :data:`STEPS_PER_SECOND` / :data:`INTEGRATOR_COST`. An estimate, not a
-    worst case (every toss rolling to the limit would cost ``limit`` / (:data:`MEAN_CONTACT` +
-    :data:`MOVING_SHARE` ``limit``) times more)."""
+    :data:`TIMESTEP` at :data:`STEPS_PER_SECOND` / :data:`INTEGRATOR_COST`, times the friction
+    solver's cost (:meth:`FrictionSolver.cost`). An estimate, not a worst case (every toss
+    rolling to the limit would cost ``limit`` / (:data:`MEAN_CONTACT` + :data:`MOVING_SHARE`
+    ``limit``) times more)."""
     simulated = flight + min(limit, MEAN_CONTACT + MOVING_SHARE * limit)
     rate = STEPS_PER_SECOND / INTEGRATOR_COST.get(integrator, 4.0)
-    return n * simulated / TIMESTEP / rate
+    return n * simulated / TIMESTEP / rate * solver.cost()
 
 
-def bound(runs: list[int], limit: float, integrator: str = INTEGRATOR) -> None:
-    """The work bound of MuJoCo runs of ``runs`` tosses each (:func:`seconds_estimate`), before
-    anything is allocated or computed."""
-    seconds = sum(seconds_estimate(n, limit, integrator) for n in runs)
+def bound(
+    runs: list[int],
+    limit: float,
+    integrator: str = INTEGRATOR,
+    solver: FrictionSolver = DEFAULT_SOLVER,
+) -> None:
+    """The work bound of MuJoCo runs of ``runs`` tosses each (:func:`seconds_estimate`, with
+    ``solver``'s cost), before anything is allocated or computed."""
+    seconds = sum(seconds_estimate(n, limit, integrator, solver=solver) for n in runs)
     v.work_bound(
         f"{sum(runs)} MuJoCo tosses carried up to {limit:g} s past their first contact",
         seconds,
@@ -691,7 +725,7 @@ def _rollout(
     t0 = time.perf_counter()
     check_limit(limit)
     v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
-    bound([n], limit, integrator)
+    bound([n], limit, integrator, solver)
     m, zeta, e_mujoco, by_speed = _calibrated(
         coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator,
         solver,
