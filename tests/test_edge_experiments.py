@@ -290,3 +290,21 @@ def test_contact_with_a_dead_restitution_range_is_refused_in_the_one_wording():
     with pytest.raises(ValueError) as err:
         edge_experiments([THIN], 10, 1, contact=2, restitution=(0.0, 0.5))
     assert str(err.value) == DEAD_CONTACT
+
+
+def test_mujoco_check_is_bounded_and_refuses_a_dead_contact_before_any_landing(monkeypatch):
+    """Both endings' landings and MuJoCo's run counted before anything runs (a landing that
+    started would fail this test), and the contact ending on a dead table refused."""
+    from coinflight._validation import DEAD_CONTACT
+    from coinflight.outcomes import table
+    from coinflight.studies.edge_experiments import mujoco_check
+
+    def never(*args, **kwargs):
+        raise AssertionError("a landing ran before the work bound")
+
+    monkeypatch.setattr(table, "land", never)
+    with pytest.raises(ValueError, match="more than the limit"):
+        mujoco_check(THIN, 100_000, 1)
+    with pytest.raises(ValueError) as err:
+        mujoco_check(THIN, 10, 1, restitution=0.0)
+    assert str(err.value) == DEAD_CONTACT

@@ -842,11 +842,12 @@ def mujoco_check(
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
     past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
     row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
-    same ωx and v0 as without it). ImportError without MuJoCo; its
-    work bounded by :func:`coinflight.studies.mujoco_compare.run`."""
+    same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work (both
+    endings at their landing rates, MuJoCo by :func:`coinflight.studies.mujoco_compare.
+    seconds_estimate`) bounded before anything runs."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import land
+    from coinflight.outcomes.table import TableLanding, land
     from coinflight.studies import mujoco_compare
     from coinflight.studies.edge import SIM_DIAMETER, cylinder
 
@@ -854,6 +855,25 @@ def mujoco_check(
     n = v.count("tosses of the MuJoCo check", n, 1, 100_000)
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
+    v.no_dead_contact("contact", restitution)  # the contact ending runs here
+    tables = {}
+    for ending in ("rocking", "contact"):
+        extra = (
+            {"rolling_resistance": resistance, "pivoting_resistance": resistance}
+            if ending == "contact"
+            else {}
+        )
+        tables[ending] = Surface("table", drop, restitution, friction, ending=ending, **extra)
+    # Bounded before anything runs: both endings' landings at their rates, and MuJoCo's.
+    seconds = sum(n / TableLanding(t).rate for t in tables.values())
+    seconds += mujoco_compare.seconds_estimate(n, mujoco_compare.SETTLE)
+    v.work_bound(
+        f"the MuJoCo check: {n} tosses in both endings and in MuJoCo",
+        seconds,
+        v.MAX_RUN_SECONDS,
+        "s",
+        "use fewer tosses",
+    )
     root = streams.seed_sequence(seed)
     wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
     k = 2 if wz is None else 3
@@ -869,15 +889,7 @@ def mujoco_check(
     def edges(faces: Any) -> BinomialEstimate:
         return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
 
-    ours = {}
-    for ending in ("rocking", "contact"):
-        extra = (
-            {"rolling_resistance": resistance, "pivoting_resistance": resistance}
-            if ending == "contact"
-            else {}
-        )
-        table = Surface("table", drop, restitution, friction, ending=ending, **extra)
-        ours[ending] = edges(land(coin, omega, v0, 1.0, g, table).face)
+    ours = {ending: edges(land(coin, omega, v0, 1.0, g, t).face) for ending, t in tables.items()}
     run = mujoco_compare.run(
         coin, omega, v0, drop, restitution, friction, g, torsional=resistance, rolling=resistance
     )
