@@ -236,8 +236,9 @@ Most of this phase's steps go to coins rolling upright in the flat band of the r
 rims, until the rolling resistance stops them (above: 75 % of the simulated time, 67 % of the
 steps). The energy test cannot end them early: their rolling energy, ½ (m + I3/r²) v², is far
 above the band's barrier m g (ρ − r) ≈ m g h²/8r (45 μm of height for a nickel, passed by
-v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on), :func:`settle` ends such a coin on edge
-(status SETTLED_CONTACT, time the decision's) as soon as :func:`upright_decided` holds:
+v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on; a compile-time constant), :func:`settle`
+ends such a coin on edge (status SETTLED_CONTACT, time the decision's) as soon as
+:func:`upright_decided` holds:
 
 * **The turn a band holds.** Upright (n horizontal), rolling without slip at v = r ω (ω = ω·n)
   and turning at ψ' = ω_z, the coin's angular momentum about its centre I3 ω n + I1 ψ' Z turns
@@ -336,7 +337,12 @@ MAX_STEP = 1e-3
 UPRIGHT_DECISION = True
 """Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
 :func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
-rest, to the bit the integration before this decision."""
+rest, to the bit the integration before this decision. A compile-time constant, not a run-time
+switch: numba compiles :func:`settle` (cache=True) with the value this global had then, and its
+on-disk cache ignores a later change, so setting it takes effect only after editing this source
+and deleting ``src/coinflight/core/__pycache__`` (or in a process with a numba cache directory
+of its own, as ``benchmarks/bench_bounce.py --upright`` does). At run time a coin is carried on
+past the decision by :func:`advance` with ``decide=False`` (an argument, read at every call)."""
 UPRIGHT_MARGIN = 0.5
 """Share of each bound of :func:`upright_decided` the coin may use: the band's restoring moment
 m g h′ against the turn's overturning moment, μ N against the friction the turn and the
@@ -859,8 +865,8 @@ def settle(z, v, n, lm, c):
         SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
     time : float
         Duration of the contact phase, s: until the energy test or, for a coin ended upright by
-        :func:`upright_decided` (:data:`UPRIGHT_DECISION`; status SETTLED_CONTACT as well), until
-        that decision, not until it is at rest.
+        :func:`upright_decided` (:data:`UPRIGHT_DECISION`, a compile-time constant; status
+        SETTLED_CONTACT as well), until that decision, not until it is at rest.
     """
     y = np.empty(10)
     y[0] = z
@@ -904,8 +910,10 @@ def advance(
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
     when the coin has settled by its energy (or, with ``decide`` too, when
     :func:`upright_decided` holds, as :func:`settle` with :data:`UPRIGHT_DECISION`), whichever
-    comes first. ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time
-    and steps spent in each mode; with one more row filled with −1 (shape
+    comes first. ``decide`` is read at every call: ``decide=False`` is the run-time way to carry
+    a coin on past the upright decision (:data:`UPRIGHT_DECISION` is fixed when numba
+    compiles). ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time and
+    steps spent in each mode; with one more row filled with −1 (shape
     (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
     :func:`upright_decided` first held, decided or not (with ``settle_check``)."""
     zeta = damping_of(c)
