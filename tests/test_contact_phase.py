@@ -573,8 +573,8 @@ def _roller(coin, c, speed, yaw):
     return y
 
 
-def _decided(y, c):
-    return cp.upright_decided(y, c, cp.stiffness_of(c), cp.damping_of(c))
+def _decided(y, c, budget=cp.MAX_STEPS * cp.MAX_STEP):
+    return cp.upright_decided(y, c, cp.stiffness_of(c), cp.damping_of(c), budget)
 
 
 def _band_moment(coin, speed, yaw):
@@ -622,6 +622,33 @@ def test_upright_roller_needing_more_than_mu_n_is_not_decided():
     for mu, decided in ((0.015, False), (0.3, True)):
         c = _contact(NICKEL, e=0.5, mu=mu, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
         assert _decided(_roller(NICKEL, c, speed, yaw), c) == decided
+
+
+def test_upright_roller_without_rolling_resistance_is_not_decided_and_settle_carries_it_on():
+    # ℓ_r = 0 (allowed by Surface): the roller never stops rolling, so it is not decided and
+    # settle gives what carrying it on gives: UNSETTLED after MAX_STEPS, with the same time.
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=0.0, pivoting=1e-4, ending=CONTACT_ENDING)
+    y = _roller(NICKEL, c, 0.3, 0.0)
+    assert not _decided(y, c)
+    f, status, t = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
+    on = y.copy()
+    t_on, steps, settled = cp.advance(on, math.inf, c, settle_check=True)
+    assert (steps, settled) == (cp.MAX_STEPS, False)
+    assert (f, status, t) == (EDGE, Status.UNSETTLED, t_on)
+
+
+def test_upright_roller_rolling_longer_than_the_step_budget_is_not_decided():
+    # The rolling resistance brakes ω = v/r at ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
+    # _derivative): a roller whose time to stop exceeds the time the steps left can cover is
+    # not decided, one within it is (2 % either side of the predicted time).
+    rolling, speed = 1e-4, 0.3
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=rolling, pivoting=1e-4, ending=CONTACT_ENDING)
+    i3 = float(NICKEL.moments[1])
+    m, r = NICKEL.mass, NICKEL.radius
+    stop = (speed / r) * (i3 + m * r * r) / (rolling * m * G)
+    y = _roller(NICKEL, c, speed, 0.0)
+    assert not _decided(y, c, 0.98 * stop)
+    assert _decided(y, c, 1.02 * stop)
 
 
 def test_upright_roller_not_decided_without_a_band_friction_or_both_rims():

@@ -271,7 +271,8 @@ ends such a coin on edge (status SETTLED_CONTACT, time the decision's) as soon a
   and a coin whose energy free to lean (the whole energy less ½ m (v·t̂)² + ½ I3 ω² +
   ½ I1 ψ'²) is below the ridge less the work of M from its present tilt cannot pass it.
   With a 0.5 mm corner the compliant band holds a coin by only about 0.6 μm of height; at a = h/2
-  there is no band and no decision; μ = 0 neither.
+  there is no band and no decision; μ = 0 neither, nor ℓ_r = 0 or a roller that would roll
+  longer than the steps left can cover (carried on, it would end UNSETTLED after MAX_STEPS).
 
 **What is proven and what is measured.** The bounds are the rigid wheel's, taken
 quasi-statically: they do not bound the lean the gyroscopic coupling can drive from a lean
@@ -582,7 +583,7 @@ def static_depth(c, stiffness):
 
 
 @njit(cache=True)
-def upright_decided(y, c, stiffness, zeta):
+def upright_decided(y, c, stiffness, zeta, budget):
     """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
     and stays there until it is at rest (module notes, "Upright rollers"): it will end on edge.
 
@@ -597,9 +598,17 @@ def upright_decided(y, c, stiffness, zeta):
     + ½ I1 (ω·ŵ)², t̂ the horizontal unit vector across n) above the least potential energy
     upright, m g (r − (3/5) d_s) (:func:`static_depth`), by at most that share of the ridge's
     height above it (the notes).
+
+    First of all, the coin must come to rest within ``budget`` s (the time the integration's
+    remaining steps can cover at most, (steps left) × :data:`MAX_STEP` in :func:`_integrate`):
+    with no rolling resistance (ℓ_r ≤ 0) it never stops rolling, and otherwise the resistance
+    brakes ω = v/r at most at the rate ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
+    :func:`_derivative`, N = m g on the two rims, weaker below its regularisation), so it rolls
+    at least (v/r) (I3 + m r²) / (ℓ_r m g). A roller that carried on would end UNSETTLED after
+    :data:`MAX_STEPS` is not decided, so that the decision changes no status.
     """
     hb = c.half_thickness - c.corner_radius  # h′: half the flat band
-    if hb <= 0.0 or c.friction <= 0.0:
+    if hb <= 0.0 or c.friction <= 0.0 or c.rolling_resistance <= 0.0:
         return False
     mass, i1, i3, g, radius = c.mass, c.i1, c.i3, c.g, c.radius
     weight = mass * g
@@ -613,6 +622,9 @@ def upright_decided(y, c, stiffness, zeta):
     spin = dot(omega, n)
     yaw = abs(omega[2])
     vh = math.sqrt(v[0] * v[0] + v[1] * v[1])
+    brake = c.rolling_resistance * weight / (i3 + mass * radius * radius)  # dω/dt, rad/s²
+    if vh / radius > brake * budget:
+        return False  # rolls longer than the steps left can reach
     moment = (i3 * abs(spin) + mass * radius * vh) * yaw
     if moment > UPRIGHT_MARGIN * weight * hb:
         return False
@@ -751,7 +763,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
             if free < barrier:
                 return t, step, True
             if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
-                y, c, stiffness, zeta
+                y, c, stiffness, zeta, (max_steps - step) * MAX_STEP
             ):
                 if probe and stats[modes, 1] < 0.0:
                     stats[modes, 0] = t
