@@ -695,3 +695,21 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     assert settled and abs(rest[6]) < c.edge_sine
     assert tuple(stats[-1]) == (t_on, steps_on)
     assert steps_rest > steps_on and t_rest > t_on
+
+
+def test_contact_ending_describe_says_its_time_is_the_decisions():
+    # The contact ending's settle_time is when the outcome was decided (at rest, below the
+    # barrier, or an upright roller decided on edge, possibly still rolling): describe() says
+    # so, with the settle_time it reports.
+    from coinflight import Toss
+    from coinflight.outcomes.table import Landing
+
+    surface = Surface(
+        "table", 0.5, 0.3, ending="contact", rolling_resistance=1e-4, pivoting_resistance=1e-4
+    )
+    landing = Landing(NICKEL, Toss((240.0, 5.0, 3.0), 0.49), surface)
+    out = landing.to_dict()
+    assert out["status"] == "settled in contact"
+    text = landing.describe()
+    assert f"decided at t = {out['settle_time']:.4f} s" in text
+    assert "rolling upright in its edge band; settled in contact" in text
