@@ -136,7 +136,7 @@ def test_rim_impact_of_a_coin_restitutes_with_e(e):
         return y[3] + np.cross(w, rc)[2]
 
     before = normal_speed(y)
-    for _ in range(400):
+    for _ in range(1000):
         cp.advance(y, 1e-4, c)
         if y[0] > lowest_depth(y[6], r, hh):  # off the table again
             break
@@ -713,3 +713,43 @@ def test_contact_ending_describe_says_its_time_is_the_decisions():
     text = landing.describe()
     assert f"decided at t = {out['settle_time']:.4f} s" in text
     assert "rolling upright in its edge band; settled in contact" in text
+
+
+def test_decided_upright_rollers_carried_on_end_on_edge_at_rest():
+    # States chosen to stress the decision (seed 2026): turns using 0.4-0.5 of the band's
+    # moment m g h′, lean rates up to ±1 rad/s, tilts up to ±0.01 rad, sharp or 0.5 mm
+    # corners, 0.3-1 m/s, e ~ U(0.2, 0.8), μ ~ U(0.3, 0.6), ℓ_r = ℓ_p = 3e-3 m (short rolls).
+    # Each state upright_decided takes is carried on without the decision (decide=False):
+    # every one must come to rest, on edge (the decision is a measured predictor, not a proof).
+    rng = np.random.default_rng(2026)
+    i3 = float(NICKEL.moments[1])
+    m, r = NICKEL.mass, NICKEL.radius
+    decided = 0
+    for _ in range(1000):
+        corner = float(rng.choice([0.0, 5e-4]))
+        c = _contact(
+            NICKEL,
+            e=rng.uniform(0.2, 0.8),
+            mu=rng.uniform(0.3, 0.6),
+            rolling=3e-3,
+            pivoting=3e-3,
+            ending=CONTACT_ENDING,
+            corner=corner,
+        )
+        hb = NICKEL.thickness / 2 - corner
+        speed = rng.uniform(0.3, 1.0)
+        share = rng.uniform(0.4, 0.5)
+        yaw = share * m * G * hb / ((i3 / r + m * r) * speed) * rng.choice([-1.0, 1.0])
+        lean_rate = rng.uniform(-1.0, 1.0)
+        tilt = 0.5 * math.pi + rng.uniform(-0.01, 0.01)
+        y = _state(NICKEL, tilt, v=(0.0, speed, 0.0), omega_lab=(-speed / r, lean_rate, yaw))
+        y[0] = r - cp.static_depth(c, cp.stiffness_of(c))
+        if not _decided(y, c):
+            continue
+        decided += 1
+        _, _, settled = cp.advance(y, math.inf, c, settle_check=True, decide=False)
+        assert settled, (decided, speed, yaw, lean_rate, corner)
+        assert abs(y[6]) < c.edge_sine, (decided, speed, yaw, lean_rate, corner)
+        if decided == 30:
+            break
+    assert decided == 30
