@@ -179,14 +179,15 @@ def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None
         f"(tails, heads, edge) {np.bincount(final[h], minlength=3)}"
     )
     hit = h & (decided[:, 1] >= 0)
-    wrong = hit & (final != 2)
+    # A decided toss that, carried on, did not settle (stopped by MAX_STEPS) disagrees too.
+    wrong = hit & ((final != 2) | ~settled)
     saved = (ss[hit[h]] - decided[hit, 1]).sum()
     print(
         f"upright decision (margin {cp.UPRIGHT_MARGIN}): would end {hit.sum()} of {h.sum()} "
-        f"handed tosses ({np.sum(h & (final == 2))} end on edge at rest); disagreements (not "
-        f"on edge at rest) {wrong.sum()} {np.flatnonzero(wrong).tolist()}; steps saved "
-        f"{saved:,.0f} of {ss.sum():,.0f} ({saved / ss.sum():.1%}), simulated time saved "
-        f"{(tt[hit[h]] - decided[hit, 0]).sum():,.1f} of {tt.sum():,.1f} s"
+        f"handed tosses ({np.sum(h & (final == 2) & settled)} end on edge at rest); "
+        f"disagreements (not on edge at rest) {wrong.sum()} {np.flatnonzero(wrong).tolist()}; "
+        f"steps saved {saved:,.0f} of {ss.sum():,.0f} ({saved / ss.sum():.1%}), "
+        f"simulated time saved {(tt[hit[h]] - decided[hit, 0]).sum():,.1f} of {tt.sum():,.1f} s"
     )
     names = ("horizontal translation", "spin about n", "tumbling", "vertical + height")
     en = energy[h]

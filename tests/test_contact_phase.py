@@ -136,7 +136,7 @@ def test_rim_impact_of_a_coin_restitutes_with_e(e):
         return y[3] + np.cross(w, rc)[2]
 
     before = normal_speed(y)
-    for _ in range(400):
+    for _ in range(1000):
         cp.advance(y, 1e-4, c)
         if y[0] > lowest_depth(y[6], r, hh):  # off the table again
             break
@@ -573,8 +573,8 @@ def _roller(coin, c, speed, yaw):
     return y
 
 
-def _decided(y, c):
-    return cp.upright_decided(y, c, cp.stiffness_of(c), cp.damping_of(c))
+def _decided(y, c, budget=cp.MAX_STEPS * cp.MAX_STEP):
+    return cp.upright_decided(y, c, cp.stiffness_of(c), cp.damping_of(c), budget)
 
 
 def _band_moment(coin, speed, yaw):
@@ -624,6 +624,33 @@ def test_upright_roller_needing_more_than_mu_n_is_not_decided():
         assert _decided(_roller(NICKEL, c, speed, yaw), c) == decided
 
 
+def test_upright_roller_without_rolling_resistance_is_not_decided_and_settle_carries_it_on():
+    # ℓ_r = 0 (allowed by Surface): the roller never stops rolling, so it is not decided and
+    # settle gives what carrying it on gives: UNSETTLED after MAX_STEPS, with the same time.
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=0.0, pivoting=1e-4, ending=CONTACT_ENDING)
+    y = _roller(NICKEL, c, 0.3, 0.0)
+    assert not _decided(y, c)
+    f, status, t = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
+    on = y.copy()
+    t_on, steps, settled = cp.advance(on, math.inf, c, settle_check=True)
+    assert (steps, settled) == (cp.MAX_STEPS, False)
+    assert (f, status, t) == (EDGE, Status.UNSETTLED, t_on)
+
+
+def test_upright_roller_rolling_longer_than_the_step_budget_is_not_decided():
+    # The rolling resistance brakes ω = v/r at ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
+    # _derivative): a roller whose time to stop exceeds the time the steps left can cover is
+    # not decided, one within it is (2 % either side of the predicted time).
+    rolling, speed = 1e-4, 0.3
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=rolling, pivoting=1e-4, ending=CONTACT_ENDING)
+    i3 = float(NICKEL.moments[1])
+    m, r = NICKEL.mass, NICKEL.radius
+    stop = (speed / r) * (i3 + m * r * r) / (rolling * m * G)
+    y = _roller(NICKEL, c, speed, 0.0)
+    assert not _decided(y, c, 0.98 * stop)
+    assert _decided(y, c, 1.02 * stop)
+
+
 def test_upright_roller_not_decided_without_a_band_friction_or_both_rims():
     # No band (a = h/2), no friction, one rim lifted (tilted 0.05 rad: the rims sink ~30 μm,
     # so smaller tilts keep both pressed) or the coin sliding in its plane (0.3 m/s, not
@@ -668,3 +695,61 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     assert settled and abs(rest[6]) < c.edge_sine
     assert tuple(stats[-1]) == (t_on, steps_on)
     assert steps_rest > steps_on and t_rest > t_on
+
+
+def test_contact_ending_describe_says_its_time_is_the_decisions():
+    # The contact ending's settle_time is when the outcome was decided (at rest, below the
+    # barrier, or an upright roller decided on edge, possibly still rolling): describe() says
+    # so, with the settle_time it reports.
+    from coinflight import Toss
+    from coinflight.outcomes.table import Landing
+
+    surface = Surface(
+        "table", 0.5, 0.3, ending="contact", rolling_resistance=1e-4, pivoting_resistance=1e-4
+    )
+    landing = Landing(NICKEL, Toss((240.0, 5.0, 3.0), 0.49), surface)
+    out = landing.to_dict()
+    assert out["status"] == "settled in contact"
+    text = landing.describe()
+    assert f"decided at t = {out['settle_time']:.4f} s" in text
+    assert "rolling upright in its edge band; settled in contact" in text
+
+
+def test_decided_upright_rollers_carried_on_end_on_edge_at_rest():
+    # States chosen to stress the decision (seed 2026): turns using 0.4-0.5 of the band's
+    # moment m g h′, lean rates up to ±1 rad/s, tilts up to ±0.01 rad, sharp or 0.5 mm
+    # corners, 0.3-1 m/s, e ~ U(0.2, 0.8), μ ~ U(0.3, 0.6), ℓ_r = ℓ_p = 3e-3 m (short rolls).
+    # Each state upright_decided takes is carried on without the decision (decide=False):
+    # every one must come to rest, on edge (the decision is a measured predictor, not a proof).
+    rng = np.random.default_rng(2026)
+    i3 = float(NICKEL.moments[1])
+    m, r = NICKEL.mass, NICKEL.radius
+    decided = 0
+    for _ in range(1000):
+        corner = float(rng.choice([0.0, 5e-4]))
+        c = _contact(
+            NICKEL,
+            e=rng.uniform(0.2, 0.8),
+            mu=rng.uniform(0.3, 0.6),
+            rolling=3e-3,
+            pivoting=3e-3,
+            ending=CONTACT_ENDING,
+            corner=corner,
+        )
+        hb = NICKEL.thickness / 2 - corner
+        speed = rng.uniform(0.3, 1.0)
+        share = rng.uniform(0.4, 0.5)
+        yaw = share * m * G * hb / ((i3 / r + m * r) * speed) * rng.choice([-1.0, 1.0])
+        lean_rate = rng.uniform(-1.0, 1.0)
+        tilt = 0.5 * math.pi + rng.uniform(-0.01, 0.01)
+        y = _state(NICKEL, tilt, v=(0.0, speed, 0.0), omega_lab=(-speed / r, lean_rate, yaw))
+        y[0] = r - cp.static_depth(c, cp.stiffness_of(c))
+        if not _decided(y, c):
+            continue
+        decided += 1
+        _, _, settled = cp.advance(y, math.inf, c, settle_check=True, decide=False)
+        assert settled, (decided, speed, yaw, lean_rate, corner)
+        assert abs(y[6]) < c.edge_sine, (decided, speed, yaw, lean_rate, corner)
+        if decided == 30:
+            break
+    assert decided == 30

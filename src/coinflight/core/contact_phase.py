@@ -236,8 +236,9 @@ Most of this phase's steps go to coins rolling upright in the flat band of the r
 rims, until the rolling resistance stops them (above: 75 % of the simulated time, 67 % of the
 steps). The energy test cannot end them early: their rolling energy, ½ (m + I3/r²) v², is far
 above the band's barrier m g (ρ − r) ≈ m g h²/8r (45 μm of height for a nickel, passed by
-v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on), :func:`settle` ends such a coin on edge
-(status SETTLED_CONTACT, time the decision's) as soon as :func:`upright_decided` holds:
+v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on; a compile-time constant), :func:`settle`
+ends such a coin on edge (status SETTLED_CONTACT, time the decision's) as soon as
+:func:`upright_decided` holds:
 
 * **The turn a band holds.** Upright (n horizontal), rolling without slip at v = r ω (ω = ω·n)
   and turning at ψ' = ω_z, the coin's angular momentum about its centre I3 ω n + I1 ψ' Z turns
@@ -270,7 +271,8 @@ v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on), :func:`settle` ends such a 
   and a coin whose energy free to lean (the whole energy less ½ m (v·t̂)² + ½ I3 ω² +
   ½ I1 ψ'²) is below the ridge less the work of M from its present tilt cannot pass it.
   With a 0.5 mm corner the compliant band holds a coin by only about 0.6 μm of height; at a = h/2
-  there is no band and no decision; μ = 0 neither.
+  there is no band and no decision; μ = 0 neither, nor ℓ_r = 0 or a roller that would roll
+  longer than the steps left can cover (carried on, it would end UNSETTLED after MAX_STEPS).
 
 **What is proven and what is measured.** The bounds are the rigid wheel's, taken
 quasi-statically: they do not bound the lean the gyroscopic coupling can drive from a lean
@@ -336,7 +338,12 @@ MAX_STEP = 1e-3
 UPRIGHT_DECISION = True
 """Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
 :func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
-rest, to the bit the integration before this decision."""
+rest, to the bit the integration before this decision. A compile-time constant, not a run-time
+switch: numba compiles :func:`settle` (cache=True) with the value this global had then, and its
+on-disk cache ignores a later change, so setting it takes effect only after editing this source
+and deleting ``src/coinflight/core/__pycache__`` (or in a process with a numba cache directory
+of its own, as ``benchmarks/bench_bounce.py --upright`` does). At run time a coin is carried on
+past the decision by :func:`advance` with ``decide=False`` (an argument, read at every call)."""
 UPRIGHT_MARGIN = 0.5
 """Share of each bound of :func:`upright_decided` the coin may use: the band's restoring moment
 m g h′ against the turn's overturning moment, μ N against the friction the turn and the
@@ -576,9 +583,11 @@ def static_depth(c, stiffness):
 
 
 @njit(cache=True)
-def upright_decided(y, c, stiffness, zeta):
+def upright_decided(y, c, stiffness, zeta, budget):
     """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
-    and stays there until it is at rest (module notes, "Upright rollers"): it will end on edge.
+    and the rigid wheel's bounds hold with :data:`UPRIGHT_MARGIN` to spare (module notes,
+    "Upright rollers"): a measured predictor of ending on edge (0 disagreements in 737
+    decisions, ``benchmarks/bench_contact.py``), not a proof that it stays upright to rest.
 
     In this order (cheap tests first): a band (h′ = h/2 − a > 0) and friction (μ > 0); the
     turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
@@ -591,9 +600,17 @@ def upright_decided(y, c, stiffness, zeta):
     + ½ I1 (ω·ŵ)², t̂ the horizontal unit vector across n) above the least potential energy
     upright, m g (r − (3/5) d_s) (:func:`static_depth`), by at most that share of the ridge's
     height above it (the notes).
+
+    First of all, the coin must come to rest within ``budget`` s (the time the integration's
+    remaining steps can cover at most, (steps left) × :data:`MAX_STEP` in :func:`_integrate`):
+    with no rolling resistance (ℓ_r ≤ 0) it never stops rolling, and otherwise the resistance
+    brakes ω = v/r at most at the rate ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
+    :func:`_derivative`, N = m g on the two rims, weaker below its regularisation), so it rolls
+    at least (v/r) (I3 + m r²) / (ℓ_r m g). A roller that carried on would end UNSETTLED after
+    :data:`MAX_STEPS` is not decided, so that the decision changes no status.
     """
     hb = c.half_thickness - c.corner_radius  # h′: half the flat band
-    if hb <= 0.0 or c.friction <= 0.0:
+    if hb <= 0.0 or c.friction <= 0.0 or c.rolling_resistance <= 0.0:
         return False
     mass, i1, i3, g, radius = c.mass, c.i1, c.i3, c.g, c.radius
     weight = mass * g
@@ -607,6 +624,9 @@ def upright_decided(y, c, stiffness, zeta):
     spin = dot(omega, n)
     yaw = abs(omega[2])
     vh = math.sqrt(v[0] * v[0] + v[1] * v[1])
+    brake = c.rolling_resistance * weight / (i3 + mass * radius * radius)  # dω/dt, rad/s²
+    if vh / radius > brake * budget:
+        return False  # rolls longer than the steps left can reach
     moment = (i3 * abs(spin) + mass * radius * vh) * yaw
     if moment > UPRIGHT_MARGIN * weight * hb:
         return False
@@ -745,7 +765,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
             if free < barrier:
                 return t, step, True
             if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
-                y, c, stiffness, zeta
+                y, c, stiffness, zeta, (max_steps - step) * MAX_STEP
             ):
                 if probe and stats[modes, 1] < 0.0:
                     stats[modes, 0] = t
@@ -859,8 +879,8 @@ def settle(z, v, n, lm, c):
         SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
     time : float
         Duration of the contact phase, s: until the energy test or, for a coin ended upright by
-        :func:`upright_decided` (:data:`UPRIGHT_DECISION`; status SETTLED_CONTACT as well), until
-        that decision, not until it is at rest.
+        :func:`upright_decided` (:data:`UPRIGHT_DECISION`, a compile-time constant; status
+        SETTLED_CONTACT as well), until that decision, not until it is at rest.
     """
     y = np.empty(10)
     y[0] = z
@@ -904,8 +924,10 @@ def advance(
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
     when the coin has settled by its energy (or, with ``decide`` too, when
     :func:`upright_decided` holds, as :func:`settle` with :data:`UPRIGHT_DECISION`), whichever
-    comes first. ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time
-    and steps spent in each mode; with one more row filled with −1 (shape
+    comes first. ``decide`` is read at every call: ``decide=False`` is the run-time way to carry
+    a coin on past the upright decision (:data:`UPRIGHT_DECISION` is fixed when numba
+    compiles). ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time and
+    steps spent in each mode; with one more row filled with −1 (shape
     (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
     :func:`upright_decided` first held, decided or not (with ``settle_check``)."""
     zeta = damping_of(c)

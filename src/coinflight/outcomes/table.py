@@ -150,7 +150,12 @@ class LandingOutcome:
     first_contact : ndarray
         Time of the first contact with the surface since launch, s.
     settle_time : ndarray
-        Time of the last impact, s.
+        Time since launch at which the landing ended, s: the last impact for the bounce and
+        rocking endings; for the contact ending, the time the outcome was decided (the coin at
+        rest, its energy below its well's barrier, or a coin rolling upright in its edge band
+        decided on edge by :func:`coinflight.core.contact_phase.upright_decided`, which may
+        still roll at up to about 1 m/s then; status "settled in contact" in all three); for an
+        unsettled toss, when it was stopped.
     status : ndarray of int8
         Why the landing ended (:data:`STATUS_NAMES`).
     """
@@ -371,6 +376,14 @@ class Landing:
                 f"lands on the table at t = {first:.4f} s and has NOT settled after {bounces} "
                 f"impacts (status unsettled, stopped at t = {settle:.4f} s): the face up then "
                 f"was {out.face_name.upper()}, not a resting face"
+            )
+        if out.status_name == "settled in contact":
+            # The contact ending's time is the decision's: at rest, below the barrier, or an
+            # upright roller decided on edge (contact_phase.upright_decided) still rolling.
+            return (
+                f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
+                f"{out.face_name.upper()} (decided at t = {settle:.4f} s: at rest, below its "
+                f"well's barrier, or rolling upright in its edge band; {out.status_name})"
             )
         return (
             f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
