@@ -582,6 +582,15 @@ def static_depth(c, stiffness):
     return (3.0 * weight * math.sqrt(radius) / (8.0 * math.sqrt(2.0) * stiffness)) ** (2.0 / 3.0)
 
 
+BUDGET_STEP = 1e-4
+"""Seconds a step of :func:`_integrate` is taken to cover when :func:`upright_decided` asks
+whether the steps left can carry a roller to rest: below the mean step measured in upright
+rolling (~0.6 ms: ~1,600 steps a simulated second at t_c 1 ms, 2026-11-23), so that a roller
+which would run out of :data:`MAX_STEPS` is not decided (the decision changes no status);
+:data:`MAX_STEP` (1 ms) was too loose (rollers of 250–400 s decided). A contact time far below
+1 ms shortens the steps below this."""
+
+
 @njit(cache=True)
 def upright_decided(y, c, stiffness, zeta, budget):
     """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
@@ -602,7 +611,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
     height above it (the notes).
 
     First of all, the coin must come to rest within ``budget`` s (the time the integration's
-    remaining steps can cover at most, (steps left) × :data:`MAX_STEP` in :func:`_integrate`):
+    remaining steps can cover, (steps left) × :data:`BUDGET_STEP` in :func:`_integrate`):
     with no rolling resistance (ℓ_r ≤ 0) it never stops rolling, and otherwise the resistance
     brakes ω = v/r at most at the rate ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
     :func:`_derivative`, N = m g on the two rims, weaker below its regularisation), so it rolls
@@ -765,7 +774,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
             if free < barrier:
                 return t, step, True
             if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
-                y, c, stiffness, zeta, (max_steps - step) * MAX_STEP
+                y, c, stiffness, zeta, (max_steps - step) * BUDGET_STEP
             ):
                 if probe and stats[modes, 1] < 0.0:
                     stats[modes, 0] = t

@@ -46,7 +46,10 @@ class Status(IntEnum):
     SETTLED_CONTACT = 5
     """The bounces died out; the coin then rolled, slid, pivoted and rocked in contact with the
     surface, in 3-D (:mod:`coinflight.core.contact_phase`, the experimental ending
-    ``Surface(ending="contact")``), until its energy could no longer take it out of its well."""
+    ``Surface(ending="contact")``), until it was at rest, its energy could no longer take it
+    out of its well, or it rolled upright in its edge band within the limits of
+    :func:`coinflight.core.contact_phase.upright_decided` (a measured predictor, not a proof;
+    the coin may still be rolling then)."""
 
     @property
     def label(self) -> str:
