@@ -523,6 +523,23 @@ def experiment_box(
     return out
 
 
+def _checked(
+    experiments: Sequence[Experiment], n: int, contact: int, seed: streams.SeedLike
+) -> tuple[tuple[Experiment, ...], int, int, dict[str, Setting]]:
+    """The arguments :func:`edge_experiments` and :func:`wobble_sweep` share, checked: the
+    experiments (at least one), tosses per cell, contact-ending tosses, the seed; and the
+    experiments' settings by name."""
+    items = tuple(experiments)
+    if not items:
+        raise ValueError("give at least one experiment")
+    for item in items:
+        v.instance("experiment", item, Experiment, "an Experiment")
+    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
+    contact = v.count("contact-ending tosses per cell", contact, 0, n)
+    streams.check_seed(seed)
+    return items, n, contact, {name: setting(name) for name in {x.setting for x in items}}
+
+
 def edge_experiments(
     experiments: Sequence[Experiment],
     n: int,
@@ -578,17 +595,9 @@ def edge_experiments(
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
     from coinflight.studies.edge import simulate_edge
 
-    items = tuple(experiments)
-    if not items:
-        raise ValueError("give at least one experiment")
-    for item in items:
-        v.instance("experiment", item, Experiment, "an Experiment")
-    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
-    contact = v.count("contact-ending tosses per cell", contact, 0, n)
-    streams.check_seed(seed)
+    items, n, contact, settings = _checked(experiments, n, contact, seed)
     if contact and restitution is not None:
         v.no_dead_contact("contact", float(min(restitution)))
-    settings = {name: setting(name) for name in {x.setting for x in items}}
     boxes = [
         {
             ending: experiment_box(x, settings[x.setting], ending, restitution, friction)
@@ -755,15 +764,7 @@ def wobble_sweep(
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
     from coinflight.studies.edge import simulate_edge
 
-    items = tuple(experiments)
-    if not items:
-        raise ValueError("give at least one experiment")
-    for item in items:
-        v.instance("experiment", item, Experiment, "an Experiment")
-    n = v.count("tosses per cell", n, 1, MAX_TOSSES)
-    contact = v.count("contact-ending tosses per cell", contact, 0, n)
-    streams.check_seed(seed)
-    settings = {name: setting(name) for name in {x.setting for x in items}}
+    items, n, contact, settings = _checked(experiments, n, contact, seed)
     spins = {
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
     }
