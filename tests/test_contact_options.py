@@ -324,10 +324,59 @@ def test_a_catch_in_the_hand_refuses_a_restitution_or_friction_given_to_it(optio
         "Surface(kind='table', drop_height=0.8, restitution=0.5, friction=0.3, "
         "contact_time=0.001, ending='rocking')"
     )
-    said = "restitution 0.5, friction 0.3 " + TABLE_ONLY
+    said = "drop height 0.8 m, restitution 0.5, friction 0.3 " + TABLE_ONLY
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         dataclasses.replace(given, kind="hand")  # a value given stays given in a copy
     assert dataclasses.replace(Surface("table"), kind="hand") == hand  # the defaults do not
+
+
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"drop_height": 0.8}, "drop height 0.8 m"),
+        ({"drop_height": 0.0}, "drop height 0 m"),  # the default's value, given: refused
+        ({"drop_height": 0.3, "friction": 0.2}, "drop height 0.3 m, friction 0.2"),
+    ],
+)
+def test_a_catch_in_the_hand_refuses_a_drop_height_and_a_copy_does_not_carry_one(options, said):
+    """A catch in the hand is at the launch height (Stefan & Cheche): a drop height given to it
+    is refused in the TABLE_ONLY words, not kept unused, and ``dataclasses.replace(table,
+    kind="hand")`` refuses a table's drop height given rather than carry it silently; the
+    default (0 m, marked as not given) is no refusal, and a table left at it lands as one given
+    0 m."""
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        Surface("hand", **options)
+    table = Surface("table", **options)
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        dataclasses.replace(table, kind="hand")
+    hand = dataclasses.replace(Surface("table"), kind="hand")
+    assert hand == Surface("hand") and hand.drop_height == 0.0
+    assert type(hand.drop_height) is _Unset and "drop_height" not in repr(hand)
+    assert Surface("table") == Surface("table", drop_height=0.0)
+    assert type(Surface("table", drop_height=0.0).drop_height) is float  # given: a plain float
+    # the command line and the web page refuse it in one line, before the surface is built
+    assert one_line_error(*TOSS, "--surface", "hand", "--drop-height", "0.8") == (
+        f"--drop-height {TABLE_ONLY}"
+    )
+    with TestClient(create_app()) as web:
+        response = web.get("/api/toss?omega=240,5,3&flight_time=0.49&surface=hand&drop_height=0.8")
+    assert response.status_code == 422
+    assert response.json() == {"detail": f"--drop-height {TABLE_ONLY}"}
+
+
+def test_a_table_at_the_default_drop_height_lands_as_one_given_it():
+    """The marked default drop height reaches the kernels as 0 m: the same landings, faces and
+    JSON as with drop_height=0.0 given (a table level with the launch point)."""
+    coin = Coin.preset("us-quarter")
+    rng = np.random.default_rng(11)
+    omega = np.column_stack([rng.uniform(150, 300, 100), rng.uniform(-30, 30, (100, 2))])
+    flight = rng.uniform(0.4, 0.6, 100)
+    default, given = (TableLanding(Surface("table", **kw)) for kw in ({}, {"drop_height": 0.0}))
+    np.testing.assert_array_equal(
+        default.faces(coin, omega, flight, 1, 9.81), given.faces(coin, omega, flight, 1, 9.81)
+    )
+    assert default.to_dict() == given.to_dict()
+    assert json.dumps(default.to_dict()) == json.dumps(given.to_dict())
 
 
 @pytest.mark.parametrize(
