@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 
 from _cli import one_line_error
 from coinflight import Coin, Toss
+from coinflight import _validation as v
 from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.model.distributions import Uniform
@@ -603,15 +604,19 @@ def test_the_library_bounds_a_map_of_contact_landings_before_allocating_it():
     from coinflight.studies.basin import basin_map
 
     model = TableLanding(Surface("table", 0.8, ending="contact"))
+    rate = CONTACT_TOSSES_PER_SECOND  # the contact ending's measured rate, the model's
+    assert model.rate == rate
+    limit = rate * v.MAX_RUN_SECONDS  # an hour of landings at that rate
     said = (
-        "a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about 46 h at 1.5e+02 "
-        "tosses/s), more than the limit of 5.4e+05 tosses (about 60 min); use a coarser "
-        "resolution"
+        f"a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about "
+        f"{v.duration(2.5e7 / rate)} at {rate:.2g} tosses/s), more than the limit of "
+        f"{limit:.3g} tosses (about 60 min); use a coarser resolution"
     )
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         basin_map(Coin.preset("us-nickel"), resolution=(5000, 5000), outcome=model)
-    with pytest.raises(ValueError, match=re.escape("more than the limit of 5.4e+05")):
-        basin_map(Coin.preset("us-nickel"), resolution=(735, 735), outcome=model)
+    side = math.isqrt(int(limit)) + 1  # the smallest square map beyond the limit
+    with pytest.raises(ValueError, match=re.escape(f"more than the limit of {limit:.3g}")):
+        basin_map(Coin.preset("us-nickel"), resolution=(side, side), outcome=model)
     one = basin_map(Coin.preset("us-nickel"), (0.4, 0.5), (150, 300), resolution=(1, 2),
                     outcome=model)  # fmt: skip
     assert one.face.shape == (2, 1)
