@@ -19,9 +19,12 @@ contact tosses per ψ and cell) as a table of P(edge) ± s.e.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import importlib.util
 import json
 import os
 import time
+from collections.abc import Iterator
 
 
 def _write_json(path: str, obj: object) -> None:
@@ -32,6 +35,36 @@ def _write_json(path: str, obj: object) -> None:
         temp.write_text(json.dumps(obj, indent=1), encoding="utf-8")
 
 
+def _psi(text: str) -> float | str:
+    """--psi as a number of degrees, or the word as typed (the study refuses any but "human",
+    in its words)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def _mujoco_count(text: str) -> int:
+    """--mujoco K: a whole number ≥ 0 (0: no check), refused here rather than after the run."""
+    try:
+        k = int(text)
+    except ValueError:
+        k = -1
+    if k < 0:
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 0 (0: no check), got {text!r}")
+    return k
+
+
+@contextlib.contextmanager
+def _one_line(parser: argparse.ArgumentParser) -> Iterator[None]:
+    """The library's refusal of a bad input (ValueError or TypeError, checked before any work
+    runs) as one line and exit 2, as the command line gives it, instead of a traceback."""
+    try:
+        yield
+    except (ValueError, TypeError) as exc:
+        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=2_000, help="rocking tosses per cell")
@@ -39,14 +72,20 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=3, help="values per parameter (rocking)")
     parser.add_argument("--seed", type=int, default=2018)
     parser.add_argument("--json", metavar="FILE", help="write every cell as JSON")
-    parser.add_argument("--mujoco", type=int, default=0, metavar="K", help="MuJoCo check size")
-    parser.add_argument("--psi", default=None, help="cone angle, degrees, or 'human'")
+    parser.add_argument(
+        "--mujoco", type=_mujoco_count, default=0, metavar="K", help="MuJoCo check size"
+    )
+    parser.add_argument("--psi", type=_psi, default=None, help="cone angle, degrees, or 'human'")
     parser.add_argument("--wobble", action="store_true", help="the ψ sweep instead of the band")
     args = parser.parse_args()
-    psi = None if args.psi is None else args.psi if args.psi == "human" else float(args.psi)
+    psi = args.psi
     if args.wobble:
-        wobble(args)
+        if psi is not None:
+            parser.error("--psi is one cone angle for the band; --wobble sweeps its own")
+        wobble(args, parser)
         return
+    if args.mujoco and importlib.util.find_spec("mujoco") is None:
+        parser.error("--mujoco needs MuJoCo (pip install 'coinflight[mujoco]')")
 
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset, mujoco_check
@@ -54,15 +93,16 @@ def main() -> None:
     records, left = from_dataset(dataset())
     load = os.getloadavg()[0]
     t0 = time.perf_counter()
-    result = edge_experiments(
-        records,
-        args.n,
-        args.seed,
-        contact=args.contact,
-        points=args.points,
-        psi=psi,
-        progress=print,
-    )
+    with _one_line(parser):  # every input is checked before the first toss
+        result = edge_experiments(
+            records,
+            args.n,
+            args.seed,
+            contact=args.contact,
+            points=args.points,
+            psi=psi,  # type: ignore[arg-type]  # a word but "human": refused in the study's words
+            progress=print,
+        )
     wall = time.perf_counter() - t0
     print(
         f"\n{len(records)} experiments; {args.n:,} rocking tosses per cell ({args.points} points "
@@ -81,7 +121,8 @@ def main() -> None:
     for line in left:
         print(f"left out: {line}")
     for x in records if args.mujoco else ():
-        check = mujoco_check(x, args.mujoco, args.seed, psi=psi)
+        with _one_line(parser):  # checked (and its work bounded) before MuJoCo runs
+            check = mujoco_check(x, args.mujoco, args.seed, psi=psi)  # type: ignore[arg-type]
         where = ", ".join(f"{k} {val:.3g}" for k, val in check.parameters.items())
         print(f"\nMuJoCo check, {x.label}, {args.mujoco} tosses at {where}:")
         for name, est in (
@@ -98,7 +139,7 @@ def main() -> None:
         _write_json(args.json, result.to_dict())
 
 
-def wobble(args: argparse.Namespace) -> None:
+def wobble(args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
     """The ψ sweep: one line per experiment, ψ, ending and cell."""
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import from_dataset, wobble_sweep
@@ -106,7 +147,8 @@ def wobble(args: argparse.Namespace) -> None:
     records, _ = from_dataset(dataset())
     load = os.getloadavg()[0]
     t0 = time.perf_counter()
-    rows = wobble_sweep(records, args.n, args.seed, contact=args.contact)
+    with _one_line(parser):  # every input is checked before the first toss
+        rows = wobble_sweep(records, args.n, args.seed, contact=args.contact)
     wall = time.perf_counter() - t0
     print(
         f"wobble sweep; {args.n:,} rocking and {args.contact:,} contact-ending tosses per cell; "

@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 
 from _cli import one_line_error
 from coinflight import Coin, Toss
+from coinflight import _validation as v
 from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.model.distributions import Uniform
@@ -324,10 +325,59 @@ def test_a_catch_in_the_hand_refuses_a_restitution_or_friction_given_to_it(optio
         "Surface(kind='table', drop_height=0.8, restitution=0.5, friction=0.3, "
         "contact_time=0.001, ending='rocking')"
     )
-    said = "restitution 0.5, friction 0.3 " + TABLE_ONLY
+    said = "drop height 0.8 m, restitution 0.5, friction 0.3 " + TABLE_ONLY
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         dataclasses.replace(given, kind="hand")  # a value given stays given in a copy
     assert dataclasses.replace(Surface("table"), kind="hand") == hand  # the defaults do not
+
+
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"drop_height": 0.8}, "drop height 0.8 m"),
+        ({"drop_height": 0.0}, "drop height 0 m"),  # the default's value, given: refused
+        ({"drop_height": 0.3, "friction": 0.2}, "drop height 0.3 m, friction 0.2"),
+    ],
+)
+def test_a_catch_in_the_hand_refuses_a_drop_height_and_a_copy_does_not_carry_one(options, said):
+    """A catch in the hand is at the launch height (Stefan & Cheche): a drop height given to it
+    is refused in the TABLE_ONLY words, not kept unused, and ``dataclasses.replace(table,
+    kind="hand")`` refuses a table's drop height given rather than carry it silently; the
+    default (0 m, marked as not given) is no refusal, and a table left at it lands as one given
+    0 m."""
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        Surface("hand", **options)
+    table = Surface("table", **options)
+    with pytest.raises(ValueError, match=f"^{re.escape(said + ' ' + TABLE_ONLY)}$"):
+        dataclasses.replace(table, kind="hand")
+    hand = dataclasses.replace(Surface("table"), kind="hand")
+    assert hand == Surface("hand") and hand.drop_height == 0.0
+    assert type(hand.drop_height) is _Unset and "drop_height" not in repr(hand)
+    assert Surface("table") == Surface("table", drop_height=0.0)
+    assert type(Surface("table", drop_height=0.0).drop_height) is float  # given: a plain float
+    # the command line and the web page refuse it in one line, before the surface is built
+    assert one_line_error(*TOSS, "--surface", "hand", "--drop-height", "0.8") == (
+        f"--drop-height {TABLE_ONLY}"
+    )
+    with TestClient(create_app()) as web:
+        response = web.get("/api/toss?omega=240,5,3&flight_time=0.49&surface=hand&drop_height=0.8")
+    assert response.status_code == 422
+    assert response.json() == {"detail": f"--drop-height {TABLE_ONLY}"}
+
+
+def test_a_table_at_the_default_drop_height_lands_as_one_given_it():
+    """The marked default drop height reaches the kernels as 0 m: the same landings, faces and
+    JSON as with drop_height=0.0 given (a table level with the launch point)."""
+    coin = Coin.preset("us-quarter")
+    rng = np.random.default_rng(11)
+    omega = np.column_stack([rng.uniform(150, 300, 100), rng.uniform(-30, 30, (100, 2))])
+    flight = rng.uniform(0.4, 0.6, 100)
+    default, given = (TableLanding(Surface("table", **kw)) for kw in ({}, {"drop_height": 0.0}))
+    np.testing.assert_array_equal(
+        default.faces(coin, omega, flight, 1, 9.81), given.faces(coin, omega, flight, 1, 9.81)
+    )
+    assert default.to_dict() == given.to_dict()
+    assert json.dumps(default.to_dict()) == json.dumps(given.to_dict())
 
 
 @pytest.mark.parametrize(
@@ -554,15 +604,19 @@ def test_the_library_bounds_a_map_of_contact_landings_before_allocating_it():
     from coinflight.studies.basin import basin_map
 
     model = TableLanding(Surface("table", 0.8, ending="contact"))
+    rate = CONTACT_TOSSES_PER_SECOND  # the contact ending's measured rate, the model's
+    assert model.rate == rate
+    limit = rate * v.MAX_RUN_SECONDS  # an hour of landings at that rate
     said = (
-        "a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about 46 h at 1.5e+02 "
-        "tosses/s), more than the limit of 5.4e+05 tosses (about 60 min); use a coarser "
-        "resolution"
+        f"a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about "
+        f"{v.duration(2.5e7 / rate)} at {rate:.2g} tosses/s), more than the limit of "
+        f"{limit:.3g} tosses (about 60 min); use a coarser resolution"
     )
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         basin_map(Coin.preset("us-nickel"), resolution=(5000, 5000), outcome=model)
-    with pytest.raises(ValueError, match=re.escape("more than the limit of 5.4e+05")):
-        basin_map(Coin.preset("us-nickel"), resolution=(735, 735), outcome=model)
+    side = math.isqrt(int(limit)) + 1  # the smallest square map beyond the limit
+    with pytest.raises(ValueError, match=re.escape(f"more than the limit of {limit:.3g}")):
+        basin_map(Coin.preset("us-nickel"), resolution=(side, side), outcome=model)
     one = basin_map(Coin.preset("us-nickel"), (0.4, 0.5), (150, 300), resolution=(1, 2),
                     outcome=model)  # fmt: skip
     assert one.face.shape == (2, 1)

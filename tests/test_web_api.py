@@ -221,7 +221,11 @@ def test_probability_bad_values_are_one_line_422_in_the_command_lines_words(
 def test_probability_work_beyond_the_servers_budget_is_refused_before_it_starts(client):
     """A size the command line would run (within its hour) but this server would not answer in
     time: refused at once, with the estimate, the limit and the way on."""
-    n = 10**9  # 40 s at 2.5e7 tosses/s: within the CLI's hour, beyond half of 30 s
+    from coinflight._validation import MAX_RUN_SECONDS
+    from coinflight.outcomes.hand import HAND_CATCH
+
+    n = round(40 * HAND_CATCH.rate)  # 40 s at the hand catch's rate: the one the bound uses
+    assert n / HAND_CATCH.rate < MAX_RUN_SECONDS  # within the CLI's hour, beyond half of 30 s
     started = time.perf_counter()
     detail = api_error(client, f"/api/probability?flight_time=0.6:0.9&method=monte-carlo&n={n}")
     assert time.perf_counter() - started < 5

@@ -52,19 +52,19 @@ too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, co
 and web alike."""
 
 TABLE_ONLY = (
-    "applies to --surface table only (Surface kind 'table'): a catch in the hand has no bounce, "
-    "rocking or contact phase"
+    "applies to --surface table only (Surface kind 'table'): a catch in the hand is at the "
+    "launch height and has no bounce, rocking or contact phase"
 )
 """The one refusal of a table's option given to a catch in the hand, after what was given
-(``--ending applies to …`` on the command line, ``ending 'contact', rolling resistance
-0.0001 m applies to …`` from :class:`Surface`)."""
+(``--ending applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5 applies
+to …`` from :class:`Surface`)."""
 
 
 class _Unset(float):
     """A contact parameter the caller did not give: its default value, marked as such.
 
     The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`),
-    and a catch in the hand a restitution, friction or resistance given to it
+    and a catch in the hand a drop height, restitution, friction or resistance given to it
     (:data:`TABLE_ONLY`), but both keep the defaults. The mark is a float (the kernels and JSON
     see the plain default) that :func:`dataclasses.replace`, pickling and
     :func:`dataclasses.asdict` (its deep copy keeps the subclass) pass back unchanged, so a copy
@@ -75,6 +75,7 @@ class _Unset(float):
     __slots__ = ()
 
 
+_UNSET_DROP = _Unset(0.0)
 _UNSET_RESTITUTION = _Unset(DEFAULT_RESTITUTION)
 _UNSET_FRICTION = _Unset(DEFAULT_FRICTION)
 _UNSET_ROLLING = _Unset(DEFAULT_ROLLING_RESISTANCE)
@@ -121,7 +122,10 @@ class Surface:
         falls onto a hard horizontal surface, bounces and settles heads, tails or on its edge.
     drop_height : float
         How far the surface lies below the launch height of the centre of mass, m (≥ 0; a
-        surface above the launch point is not allowed). Only for ``"table"``.
+        surface above the launch point is not allowed; default 0). Only for ``"table"``: a
+        catch in the hand is at the launch height by definition (Stefan & Cheche), so it refuses
+        one given to it (ValueError, :data:`TABLE_ONLY`), as a restitution or friction, and
+        ``dataclasses.replace(table, kind="hand")`` refuses a table's drop height given.
     restitution : float
         Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1]
         (default :data:`DEFAULT_RESTITUTION`).
@@ -176,7 +180,7 @@ class Surface:
     """
 
     kind: SurfaceKind = "hand"
-    drop_height: float = 0.0
+    drop_height: float = _UNSET_DROP
     restitution: float = _UNSET_RESTITUTION
     friction: float = _UNSET_FRICTION
     rolling_resistance: float = _UNSET_ROLLING
@@ -192,8 +196,11 @@ class Surface:
                 f"drop height must be ≥ 0 m (how far the surface lies below the launch point), "
                 f"got {float(height)!r}: a surface above the launch point is not allowed"
             )
-        object.__setattr__(self, "drop_height", DROP_HEIGHT.check(self.drop_height))
-        given = []  # the contact parameters the caller gave (not the marked defaults)
+        drop = DROP_HEIGHT.check(self.drop_height)
+        given = []  # the table's parameters the caller gave (not the marked defaults)
+        if not isinstance(self.drop_height, _Unset):  # given: kept as a plain float
+            object.__setattr__(self, "drop_height", drop)
+            given.append(DROP_HEIGHT.describe(drop))
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)
         if e.ndim:
             raise TypeError("restitution must be a single number")
@@ -221,13 +228,13 @@ class Surface:
     def __repr__(self) -> str:
         """The call that rebuilds this surface: every field but the defaults not given.
 
-        A default marked as not given (restitution, friction, the resistances) is left out, as
-        the caller left it out: shown as a number it would be given back, and refused by a catch
-        in the hand or the rocking ending. ``eval(repr(s))`` equals ``s`` and refuses what ``s``
-        refuses (in :func:`dataclasses.replace`), no more.
+        A default marked as not given (drop height, restitution, friction, the resistances) is
+        left out, as the caller left it out: shown as a number it would be given back, and
+        refused by a catch in the hand or the rocking ending. ``eval(repr(s))`` equals ``s``
+        and refuses what ``s`` refuses (in :func:`dataclasses.replace`), no more.
 
         >>> Surface("hand")
-        Surface(kind='hand', drop_height=0.0, contact_time=0.001, ending='rocking')
+        Surface(kind='hand', contact_time=0.001, ending='rocking')
         >>> Surface("table", 0.8, friction=0.2)
         Surface(kind='table', drop_height=0.8, friction=0.2, contact_time=0.001, ending='rocking')
         """

@@ -144,9 +144,10 @@ def build_surface(
     # only the contact parameters given: the surface keeps its defaults marked as not given
     # (a catch in the hand refuses a given one; the rocking ending a given resistance)
     given_values = {name: fixed[name] for name in PER_TOSS if name in fixed}
+    if drop_height is not None:  # else the default, marked as not given (0 m below launch)
+        given_values["drop_height"] = drop_height
     return Surface(
         kind,  # type: ignore[arg-type]
-        drop_height=0.0 if drop_height is None else drop_height,
         ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
         **given_values,
     )
