@@ -77,11 +77,7 @@ def same_side_given_spins(
     t = dist.flight_time
     if isinstance(t, Normal):
         return bands.same_side_normal_time(perp2, axial2, t.mean, t.sd)
-    turns = ~bands.never_turns_over(axial2, perp2)
-    p2 = np.where(turns, perp2, 1.0)
-    x2 = np.where(turns, axial2, 0.0)
-    wp = np.sqrt(p2 + x2)
-    a = bands.half_width(x2 / p2)
+    turns, wp, a = bands.precession_bands(perp2, axial2)
     if isinstance(t, Uniform):
         inside = bands.time_average_uniform(wp, a, t.low, t.high)
     else:
