@@ -10,6 +10,8 @@ as in CI); what CliRunner can show is tested through it.
 from __future__ import annotations
 
 import os
+import resource
+import shutil
 import signal
 import subprocess
 import sys
@@ -37,8 +39,11 @@ COMMANDS = [
 IDS = [" ".join(argv) for argv in COMMANDS]
 
 
+_STARTED: list[subprocess.Popen[str]] = []
+
+
 def _coinflight(argv, cwd, **kwargs):
-    return subprocess.Popen(
+    proc = subprocess.Popen(
         [sys.executable, "-m", "coinflight", *argv],
         cwd=cwd,
         env=ENV,
@@ -46,6 +51,21 @@ def _coinflight(argv, cwd, **kwargs):
         text=True,
         **kwargs,
     )
+    _STARTED.append(proc)
+    return proc
+
+
+@pytest.fixture(autouse=True)
+def _no_command_left_running():
+    """Each command a test started is ended and its pipes closed when the test ends, even
+    when it failed (a timeout): one left running, or an open pipe, would be reported as a
+    ResourceWarning (an error here) in whatever later test the garbage collector ran in."""
+    yield
+    while _STARTED:
+        proc = _STARTED.pop()
+        if proc.poll() is None:
+            proc.kill()
+        proc.communicate()  # reaps it and closes its pipes
 
 
 @pytest.fixture
@@ -127,49 +147,80 @@ def test_bad_input_with_stderr_on_a_full_disk_still_exits_2(folder):
     assert (proc.returncode, proc.stdout) == (2, b"")
 
 
-def _busy(pid: int, timeout: float = 60.0) -> None:
-    """Wait until process ``pid`` has loaded numba: its command is computing (Linux /proc)."""
-    maps = Path(f"/proc/{pid}/maps")
-    deadline = time.monotonic() + timeout
+WAIT = 600.0
+"""Seconds any one wait below may take before the test gives up (a generous bound, not a
+timing: on a loaded machine start-up alone took tens of seconds; each wait ends on its
+condition)."""
+
+AFTER_CTRL_C = 5.0
+"""CPU seconds the command may spend after Ctrl-C: the chunk in hand (a million tosses, ~0.02 s)
+and the way out, not the rest of the run. CPU time, not wall time, so a busy machine does not
+stretch it; the runs below would take minutes of CPU (10^10 tosses: ~150 s at the 6.7e7 tosses
+per CPU second measured with --threads 1, 2026-11-23)."""
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User and system CPU time of process ``pid`` so far (Linux /proc/PID/stat)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _start_up_cpu(argv: list[str], folder: Path) -> float:
+    """CPU seconds the command takes from start to end at a tiny size, run twice: the first
+    fills numba's cache (a fresh clone compiles), so that neither the second, measured, nor
+    the interrupted run below compiles anything."""
+    for _ in range(2):
+        before = _children_cpu()
+        proc = _coinflight(argv, folder, stdout=subprocess.PIPE)
+        _, err = proc.communicate(timeout=WAIT)
+        assert proc.returncode == 0, err
+    return _children_cpu() - before
+
+
+def _computing(proc: subprocess.Popen[str], start_up: float) -> float:
+    """Wait until ``proc`` has spent more CPU than its whole tiny run (``start_up``, with a
+    margin): it is past its start-up and computing. Its CPU seconds then."""
+    deadline = time.monotonic() + WAIT
     while time.monotonic() < deadline:
-        try:
-            if "numba" in maps.read_text():
-                time.sleep(0.5)
-                return
-        except OSError:
-            pass
+        assert proc.poll() is None, "the command ended before it was interrupted"
+        used = _cpu_seconds(proc.pid)
+        if used > 1.25 * start_up + 0.5:
+            return used
         time.sleep(0.05)
-    raise AssertionError("the command did not start computing")
+    raise AssertionError(f"the command did not start computing within {WAIT:g} s")
 
 
-@pytest.mark.skipif(not Path("/proc/self/maps").exists(), reason="needs Linux /proc")
+def _probability(n: int) -> list[str]:
+    return ["probability", "--method", "monte-carlo", "--n", str(n), "--threads", "1"]
+
+
+def _convergence(n: int) -> list[str]:
+    return ["convergence", "--methods", "monte-carlo", "--event-sizes", f"100,{n}",
+            "--threads", "2", "--out", "out/conv"]  # fmt: skip
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs Linux /proc")
 @pytest.mark.parametrize(
-    "argv",
-    [
-        ["probability", "--method", "monte-carlo", "--n", "1000000000", "--threads", "1"],
-        [
-            "convergence",
-            "--methods",
-            "monte-carlo",
-            "--event-sizes",
-            "100,1000000000",
-            "--threads",
-            "2",
-            "--out",
-            "out/conv",
-        ],
-    ],
-    ids=["probability", "convergence"],
+    "command", [_probability, _convergence], ids=["probability", "convergence"]
 )
-def test_ctrl_c_is_one_line_exit_130_and_no_output(folder, argv):
-    argv = [*argv, "--omega-x", "60:90", "--flight-time", "0.6:0.9", "--seed", "1", "-q"]
-    proc = _coinflight(argv, folder, stdout=subprocess.PIPE)
-    _busy(proc.pid)
-    started = time.monotonic()
+def test_ctrl_c_is_one_line_exit_130_and_no_output(folder, command):
+    """Ctrl-C while the command computes: one line, exit 130, nothing written, and only the
+    chunk in hand finished (in CPU seconds), not the rest of the run."""
+    common = ["--omega-x", "60:90", "--flight-time", "0.6:0.9", "--seed", "1", "-q"]
+    start_up = _start_up_cpu([*command(1000), *common], folder)
+    shutil.rmtree(folder / "out", ignore_errors=True)  # the tiny run's figure and table
+    before = _children_cpu()
+    proc = _coinflight([*command(10**10), *common], folder, stdout=subprocess.PIPE)
+    at_ctrl_c = _computing(proc, start_up)
     proc.send_signal(signal.SIGINT)
-    out, err = proc.communicate(timeout=60)
+    out, err = proc.communicate(timeout=WAIT)
     assert (proc.returncode, out, err) == (130, "", "coinflight: interrupted\n")
-    assert time.monotonic() - started < 20  # the chunk in hand, not the whole run
+    assert _children_cpu() - before - at_ctrl_c < AFTER_CTRL_C  # the chunk in hand only
     assert sorted(p.name for p in folder.rglob("*")) == ["counts.txt"]  # nor staging
 
 

@@ -17,6 +17,7 @@ from coinflight.model.distributions import (
     Uniform,
     as_distribution,
     parse_distribution,
+    unit_cube_values,
 )
 from coinflight.model.ensemble import PARAMETERS, TossDistribution
 
@@ -168,3 +169,18 @@ def test_bad_start_and_g():
         TossDistribution(80.0, 0, 0, 0.7, start="edge")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="g"):
         TossDistribution(80.0, 0, 0, 0.7, g=-1.0)
+
+
+def test_unit_cube_values_take_each_ranged_row_and_repeat_a_fixed_mean():
+    """The ranged distributions read their own row of u (in the order given), through their
+    inverse CDF; a fixed one is its value at every point."""
+    u = np.array([[0.1, 0.5, 0.9], [0.25, 0.5, 0.75]])
+    got = unit_cube_values(
+        {"a": Uniform(0.0, 10.0), "b": Fixed(3.0), "c": Normal(0.0, 1.0)}, ("c", "a"), u
+    )
+    assert list(got) == ["a", "b", "c"]
+    np.testing.assert_allclose(got["a"], [2.5, 5.0, 7.5], rtol=1e-15)  # row 1: u of "a"
+    np.testing.assert_array_equal(got["b"], [3.0, 3.0, 3.0])
+    # Φ⁻¹(0.1), Φ⁻¹(0.5), Φ⁻¹(0.9) (row 0: u of "c"); ±1.2815515655446004 (scipy.special.ndtri)
+    np.testing.assert_allclose(got["c"], [-1.2815515655446004, 0.0, 1.2815515655446004],
+                               rtol=1e-12, atol=1e-15)  # fmt: skip

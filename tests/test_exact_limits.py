@@ -184,3 +184,16 @@ def test_vanishing_normal_flight_time_sd_is_the_fixed_time(sd):
         with np.errstate(over="raise", invalid="raise"):  # an underflow to 0 is the limit
             narrow = _exact(Fixed(wx), Normal(1.0, sd))
         assert narrow == pytest.approx(fixed, abs=1e-12)
+
+
+def test_precession_bands_are_the_rate_and_half_width_of_each_spin():
+    """ωp = √(Ω⊥² + axial²) and a = arccos(−cot²ψ), cot²ψ = axial²/Ω⊥² (Diaconis, Holmes &
+    Montgomery 2007, section 2): ψ = 60° has cot²ψ = 1/3; ψ ≤ 45° and no tumbling never turn
+    over (their ωp, a are placeholders the callers replace)."""
+    perp2 = np.array([3.0, 100.0, 1.0, 0.0])
+    axial2 = np.array([1.0, 0.0, 1.0, 4.0])  # ψ 60°, flat spin, ψ 45°, spin about the normal
+    turns, wp, a = bands.precession_bands(perp2, axial2)
+    np.testing.assert_array_equal(turns, [True, True, False, False])
+    np.testing.assert_allclose(wp[:2], [2.0, 10.0], rtol=1e-15)
+    np.testing.assert_allclose(a[:2], [math.acos(-1.0 / 3.0), math.pi / 2], rtol=1e-15)
+    assert np.all(np.isfinite(wp)) and np.all(np.isfinite(a))

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 from typer.testing import CliRunner
 
-from _web_server import serving
+from _web_server import WAIT, serving
 from coinflight.cli import app as cli_app
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
 from coinflight.web import create_app
@@ -544,14 +544,14 @@ def test_coinflight_serve_answers_over_http_on_loopback():
             "with --port (0: any free port)\n"
         )
         server.process.send_signal(signal.SIGINT)
-        assert server.process.wait(timeout=20) in (0, 130)
+        assert server.process.wait(timeout=WAIT) in (0, 130)
 
 
 def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
-    with serving("--host", "0.0.0.0", "--port", "0") as server:
+    with serving("--host", "0.0.0.0", "--port", "0") as server:  # answering: started
         assert server.url.startswith("http://0.0.0.0:")
         server.process.send_signal(signal.SIGINT)
-        server.process.wait(timeout=20)
+        assert server.process.wait(timeout=WAIT) in (0, 130)
         warning = server.process.stderr.read().splitlines()[0]
     assert warning.startswith("coinflight: warning: --host 0.0.0.0 serves coinflight to every ")
     result = cli.invoke(cli_app, ["serve", "--port", "70000"])

@@ -52,6 +52,25 @@ def half_width(cot2_psi: Any) -> Any:
     return np.arccos(-np.minimum(cot2_psi, 1.0))
 
 
+def precession_bands(
+    perp2: ArrayLike, axial2: ArrayLike
+) -> tuple[NDArray[np.bool_], FloatArray, FloatArray]:
+    """Where each spin turns the coin over, and its band's rate ωp and half-width a.
+
+    Spins given as Ω⊥² = ωx² + ωy² (``perp2``) and ((I3/I1) ω_z)² (``axial2``): ``turns`` is
+    False where the coin never turns over (:func:`never_turns_over`), ωp = √(Ω⊥² + axial²) the
+    rate of n(T)·n0 = cos²ψ + sin²ψ cos(ωp T), a = :func:`half_width` (cot²ψ = axial²/Ω⊥²)
+    (Diaconis, Holmes & Montgomery 2007, section 2). Where the coin never turns over ωp and a
+    are finite placeholders (those of Ω⊥ = 1, no axial spin), for the caller to replace.
+    """
+    perp2 = np.asarray(perp2, dtype=float)
+    axial2 = np.asarray(axial2, dtype=float)
+    turns = ~never_turns_over(axial2, perp2)
+    p2 = np.where(turns, perp2, 1.0)
+    x2 = np.where(turns, axial2, 0.0)
+    return turns, np.sqrt(p2 + x2), half_width(x2 / p2)
+
+
 def phase_measure(u: ArrayLike, a: ArrayLike = np.pi / 2) -> FloatArray:
     """Measure F(u) of {s ∈ [0, u] : s mod 2π within a of 0} (u ≥ 0), rad.
 
@@ -239,13 +258,7 @@ def same_side_over_times(
     The same sum as the fixed-spin closed form in T, for arrays of spins at once; the caller
     bounds its work (about ωp (t_high − t_low) / 2π + 3 terms a spin).
     """
-    perp2 = np.asarray(perp2, dtype=float)
-    axial2 = np.asarray(axial2, dtype=float)
-    turns = ~never_turns_over(axial2, perp2)
-    p2 = np.where(turns, perp2, 1.0)
-    x2 = np.where(turns, axial2, 0.0)
-    wp = np.sqrt(p2 + x2)
-    a = half_width(x2 / p2)
+    turns, wp, a = precession_bands(perp2, axial2)
     m0 = np.floor((wp * t_low - a) / TWO_PI)
     count = int(np.max(np.ceil((wp * t_high + a) / TWO_PI) - m0, initial=0.0)) + 1
     m = m0[..., None] + np.arange(count)
@@ -288,15 +301,9 @@ def same_side_normal_time(
     """
     from scipy.special import ndtr
 
-    perp2 = np.asarray(perp2, dtype=float)
-    axial2 = np.asarray(axial2, dtype=float)
-    turns = ~never_turns_over(axial2, perp2)
-    p2 = np.where(turns, perp2, 1.0)
-    x2 = np.where(turns, axial2, 0.0)
-    wp = np.sqrt(p2 + x2)
-    a = half_width(x2 / p2)
+    turns, wp, a = precession_bands(perp2, axial2)
     sigma = wp * sd
-    out = np.ones(np.broadcast(perp2, axial2).shape)
+    out = np.ones(turns.shape)
     series = turns & (sigma >= WRAPPED_SIGMA)
     if np.any(series):
         where = np.flatnonzero(series)

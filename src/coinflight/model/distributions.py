@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -349,6 +350,26 @@ def _in(unit: str) -> str:
     return f", in {unit}" if unit else ""
 
 
+def unit_cube_values(
+    dists: Mapping[str, Distribution], ranged: Sequence[str], u: NDArray[np.float64]
+) -> dict[str, NDArray[np.float64]]:
+    """Each distribution's values at points of the unit cube, by name.
+
+    ``u`` has one row per name of ``ranged`` (in that order) and one column per point; a
+    ranged distribution takes the inverse CDF of its row (``ppf``), one not in ``ranged`` (a
+    fixed one) its mean, repeated. The one mapping of the estimators' (quasi-)random points
+    to tosses (:meth:`coinflight.model.ensemble.TossDistribution.values`, its contact
+    parameters, the conditional-on-spin mode's spins).
+    """
+    n = u.shape[1]
+    return {
+        name: np.asarray(d.ppf(u[ranged.index(name)]), dtype=float)
+        if name in ranged
+        else np.full(n, d.mean)
+        for name, d in dists.items()
+    }
+
+
 __all__ = [
     "Distribution",
     "Fixed",
@@ -357,4 +378,5 @@ __all__ = [
     "Uniform",
     "as_distribution",
     "parse_distribution",
+    "unit_cube_values",
 ]

@@ -20,7 +20,13 @@ from numpy.typing import NDArray
 from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.model.coin import DEFAULT_COIN, Coin
-from coinflight.model.distributions import Distribution, Fixed, Normal, as_distribution
+from coinflight.model.distributions import (
+    Distribution,
+    Fixed,
+    Normal,
+    as_distribution,
+    unit_cube_values,
+)
 from coinflight.model.surface import CONTACT_UNITS, contact_distribution
 from coinflight.model.toss import STANDARD_GRAVITY, Start, check_gravity
 
@@ -253,15 +259,8 @@ class TossDistribution:
         ranged = self.ranged
         if u.ndim != 2 or u.shape[0] != len(ranged):
             raise ValueError(f"u must have shape ({len(ranged)}, n), got {u.shape}")
-        n = u.shape[1]
-        out = []
-        for name in PARAMETERS:
-            dist: Distribution = getattr(self, name)
-            if name in ranged:
-                out.append(np.asarray(dist.ppf(u[ranged.index(name)]), dtype=float))
-            else:
-                out.append(np.full(n, dist.mean))
-        return out[0], out[1], out[2], out[3]
+        out = unit_cube_values({name: getattr(self, name) for name in PARAMETERS}, ranged, u)
+        return out["omega_x"], out["omega_y"], out["omega_z"], out["flight_time"]
 
     def contact_values(self, u: FloatArray) -> dict[str, FloatArray]:
         """The contact parameters this distribution sets, for points of the unit cube.
@@ -269,15 +268,7 @@ class TossDistribution:
         ``u`` as for :meth:`values`; returns {name: array of shape (n,)} for each parameter of
         :attr:`contact` (a fixed one repeated).
         """
-        u = np.asarray(u, dtype=float)
-        ranged = self.ranged
-        n = u.shape[1]
-        return {
-            name: np.asarray(d.ppf(u[ranged.index(name)]), dtype=float)
-            if name in ranged
-            else np.full(n, d.mean)
-            for name, d in self.contact.items()
-        }
+        return unit_cube_values(self.contact, self.ranged, np.asarray(u, dtype=float))
 
     def sample(
         self, rng: np.random.Generator, n: int

@@ -21,7 +21,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core import bands
-from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
+from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform, unit_cube_values
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability.result import ProbabilityResult
 from coinflight.probability.streams import reported_seed
@@ -77,11 +77,7 @@ def same_side_given_spins(
     t = dist.flight_time
     if isinstance(t, Normal):
         return bands.same_side_normal_time(perp2, axial2, t.mean, t.sd)
-    turns = ~bands.never_turns_over(axial2, perp2)
-    p2 = np.where(turns, perp2, 1.0)
-    x2 = np.where(turns, axial2, 0.0)
-    wp = np.sqrt(p2 + x2)
-    a = bands.half_width(x2 / p2)
+    turns, wp, a = bands.precession_bands(perp2, axial2)
     if isinstance(t, Uniform):
         inside = bands.time_average_uniform(wp, a, t.low, t.high)
     else:
@@ -92,16 +88,8 @@ def same_side_given_spins(
 
 def spins_from_unit(dist: TossDistribution, u: FloatArray) -> tuple[FloatArray, ...]:
     """Spins (wx, wy, wz) for points ``u`` of shape (len(ranged_spins), m) of the unit cube."""
-    ranged = ranged_spins(dist)
-    m = u.shape[1]
-    out = []
-    for name in SPINS:
-        d: Distribution = getattr(dist, name)
-        if name in ranged:
-            out.append(np.asarray(d.ppf(u[ranged.index(name)]), dtype=float))
-        else:
-            out.append(np.full(m, d.mean))
-    return tuple(out)
+    spins = {name: getattr(dist, name) for name in SPINS}
+    return tuple(unit_cube_values(spins, ranged_spins(dist), u).values())
 
 
 def same_side_at(dist: TossDistribution, u: FloatArray) -> FloatArray:
