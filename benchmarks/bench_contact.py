@@ -48,16 +48,17 @@ G = 9.81
 DROP = 0.8
 
 
-def contact(e: float, mu: float, corner: float = 0.0) -> Contact:
+def contact(e: float, mu: float, corner: float = 0.0, resistance: float | None = None) -> Contact:
     """The nickel's contact record (corner radius ``corner``, m) on a table with the contact
-    ending and the default resistances."""
+    ending and rolling and pivoting resistance ``resistance`` (m; default the surface's
+    defaults)."""
     surface = Surface(
         "table",
         DROP,
         e,
         mu,
-        DEFAULT_ROLLING_RESISTANCE,
-        DEFAULT_PIVOTING_RESISTANCE,
+        DEFAULT_ROLLING_RESISTANCE if resistance is None else resistance,
+        DEFAULT_PIVOTING_RESISTANCE if resistance is None else resistance,
         ending="contact",
     )
     return contact_record(COIN.with_corner_radius(corner), surface, G)
@@ -101,6 +102,9 @@ def main() -> None:
     parser.add_argument("--corner", type=float, default=0.0, help="rim corner radius a, m")
     parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME, help="t_c, s")
     parser.add_argument(
+        "--resistance", type=float, default=None, help="ℓ_r = ℓ_p, m (default the surface's)"
+    )
+    parser.add_argument(
         "--pairs", nargs="*", default=[], metavar="E,MU", help="surfaces (e, μ) to run instead"
     )
     args = parser.parse_args()
@@ -133,7 +137,9 @@ def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None
     decided = np.full((n, 2), -1.0)  # (time, steps) where upright_decided first held
     t0 = time.perf_counter()
     for k in range(n):
-        c = contact(float(e[k]), float(mu[k]), args.corner)._replace(contact_time=args.contact_time)
+        c = contact(float(e[k]), float(mu[k]), args.corner, args.resistance)._replace(
+            contact_time=args.contact_time
+        )
         y, handed[k] = handoff((omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], c)
         if not handed[k]:
             continue
@@ -151,7 +157,7 @@ def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None
     kind = "e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)" if surface is None else f"e = {e[0]}, μ = {mu[0]}"
     print(
         f"{n} vigorous nickel tosses, {kind}, resistances "
-        f"{DEFAULT_ROLLING_RESISTANCE:g} m, corner radius {args.corner:g} m, t_c "
+        f"{c.rolling_resistance:g} m, corner radius {args.corner:g} m, t_c "
         f"{args.contact_time:g} s; {total:.1f} s wall, load {os.getloadavg()}"
     )
     print(

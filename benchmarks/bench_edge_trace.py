@@ -1,7 +1,8 @@
 """Toss by toss: where coinflight's contact ending and MuJoCo part on the same hand-off states.
 
     python benchmarks/bench_edge_trace.py [N] [--per-group K] [--span 0.1] [--condim 3]
-        [--cone pyramidal|elliptic] [--impratio R] [--noslip K] [--seed S]
+        [--cone pyramidal|elliptic] [--impratio R] [--noslip K]
+        [--solimp D0,DMAX,WIDTH] [--seed S]
 
 From the hand-off states of ``bench_mujoco_edges.py --handoff-only`` (N vigorous nickel tosses,
 default 600, seed 2026, e 0.5, μ 0.3, resistances 1e-4 m), K tosses (default 30) that end on
@@ -227,10 +228,14 @@ def main() -> None:
     parser.add_argument("--cone", choices=mc.CONES, default=mc.CONE)
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
+    parser.add_argument(
+        "--solimp", default=",".join(str(x) for x in mc.SOLIMP), help="MuJoCo's d0,dmax,width"
+    )
     parser.add_argument("--limit", type=float, default=mc.SETTLE)
     parser.add_argument("--save", default=None, help="write the episode tables to SAVE.npz")
     args = parser.parse_args()
-    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip)
+    solimp = tuple(float(x) for x in args.solimp.split(","))
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
     e, mu = args.restitution, args.friction
     t0 = time.perf_counter()
     dist, omega, v0 = study.edge_draw(args.n, args.seed, "vigorous")

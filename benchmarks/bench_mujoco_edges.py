@@ -170,8 +170,9 @@ def from_handoff(
 
 
 def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
-    """MuJoCo's friction solver from ``--cone``, ``--impratio``, ``--noslip``."""
-    return mujoco_compare.FrictionSolver(args.cone, args.impratio, args.noslip)
+    """MuJoCo's friction solver from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``."""
+    solimp = tuple(float(x) for x in args.solimp.split(","))
+    return mujoco_compare.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
 
 
 def handoff_report(
@@ -287,6 +288,11 @@ def main() -> None:
         type=int,
         default=0,
         help="MuJoCo's no-slip iterations from the hand-off (0: none)",
+    )
+    parser.add_argument(
+        "--solimp",
+        default=",".join(str(x) for x in mujoco_compare.SOLIMP),
+        help="MuJoCo's impedance d0,dmax,width (m) from the hand-off (default MuJoCo's)",
     )
     parser.add_argument(
         "--mujoco-restitution",

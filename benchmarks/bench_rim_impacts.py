@@ -4,6 +4,7 @@
 
     python benchmarks/bench_rim_impacts.py [N] [--friction MU] [--contact-time T] [--seed S]
         [--condim 6] [--cone pyramidal|elliptic] [--impratio R] [--noslip K]
+        [--solimp D0,DMAX,WIDTH]
 
 N impacts (default 100): tilt ~ U(0.15, 1.4) rad, a random azimuth, v_h ~ N(0, 0.3) m/s per
 axis, v_z ~ −U(0.3, 1.5) m/s, ω of magnitude U(50, 300) rad/s in a random direction, the
@@ -162,10 +163,14 @@ def main() -> None:
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
     parser.add_argument(
+        "--solimp", default=",".join(str(x) for x in mc.SOLIMP), help="MuJoCo's d0,dmax,width"
+    )
+    parser.add_argument(
         "--release", action="store_true", help="the kinematic restitution at the contact's end"
     )
     args = parser.parse_args()
-    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip)
+    solimp = tuple(float(x) for x in args.solimp.split(","))
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
     if args.release:
         release_rebound(args, solver)
         return

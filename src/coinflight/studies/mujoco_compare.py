@@ -178,6 +178,41 @@ sweep over the friction dimensions). Measured as :data:`IMPRATIO_COST`: 20 itera
 wall against 1,154 s, 1.9 times, i.e. 0.045 per iteration."""
 
 
+SOLIMP = (0.9, 0.95, 0.001)
+"""MuJoCo's default ``solimp`` (d0, dmax, width in m; midpoint 0.5 and power 2 not set here)."""
+MIN_IMPEDANCE = 1e-4
+"""Smallest impedance MuJoCo takes (its mjMINIMP; smaller values are clamped to it)."""
+MAX_IMPEDANCE = 0.9999
+"""Largest impedance MuJoCo takes (its mjMAXIMP)."""
+
+
+def _checked_solimp(solimp: Any) -> tuple[float, float, float]:
+    """(d0, dmax, width) as plain floats; ValueError in one line unless three numbers with d0
+    and dmax within [MIN_IMPEDANCE, MAX_IMPEDANCE] and width positive and finite."""
+    words = (
+        f"MuJoCo solimp must be three numbers (d0, dmax within [{MIN_IMPEDANCE:g}, "
+        f"{MAX_IMPEDANCE:g}], width > 0 m), got {solimp!r}"
+    )
+    try:
+        values = tuple(solimp)
+    except TypeError:
+        raise ValueError(words) from None
+    if len(values) != 3 or not all(
+        isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
+        for x in values
+    ):
+        raise ValueError(words)
+    d0, dmax, width = (float(x) for x in values)
+    if not (
+        MIN_IMPEDANCE <= d0 <= MAX_IMPEDANCE
+        and MIN_IMPEDANCE <= dmax <= MAX_IMPEDANCE
+        and math.isfinite(width)
+        and width > 0.0
+    ):
+        raise ValueError(words)
+    return d0, dmax, width
+
+
 @dataclass(frozen=True)
 class FrictionSolver:
     """How hard MuJoCo makes its friction: the cone, ``impratio`` and the no-slip pass.
@@ -197,6 +232,16 @@ class FrictionSolver:
       Gauss-Seidel on the friction dimensions only, with the normal forces fixed) that removes
       the slip the soft-constraint model lets through; 0 (default) switches it off.
 
+    It also carries the contact's impedance ``solimp`` (of the normal direction as of the
+    friction's), which the calibration of the damping sees as it sees the rest: how soft
+    MuJoCo's contact is at first touch. MuJoCo solves its constraint so that the contact's
+    acceleration is a_1 = (1 − d) a_0 − d (b v + k r) (a_0 the unconstrained acceleration, b
+    and k from ``solref``; documentation, "Computation", Solver parameters), the impedance
+    d(r) rising from d0 at zero penetration r to dmax at r = ``width``: a low d0 makes the first
+    touch soft (a weak spring and damper, and a share 1 − d of the unconstrained acceleration
+    let through), much as coinflight's rim law, whose stiffness grows from zero as the rim
+    sinks (F ∝ d^(3/2)).
+
     Attributes
     ----------
     cone : str
@@ -205,11 +250,16 @@ class FrictionSolver:
         Ratio of frictional-to-normal impedance, > 0 (MuJoCo's default 1).
     noslip_iterations : int
         No-slip iterations, 0 to :data:`MAX_NOSLIP_ITERATIONS` (MuJoCo's default 0).
+    solimp : tuple of 3 floats
+        (d0, dmax, width) of both geoms' ``solimp``: impedances within
+        [:data:`MIN_IMPEDANCE`, :data:`MAX_IMPEDANCE`] (MuJoCo's clamp) and a width > 0, m
+        (MuJoCo's default :data:`SOLIMP`; its midpoint 0.5 and power 2 kept).
     """
 
     cone: str = CONE
     impratio: float = 1.0
     noslip_iterations: int = 0
+    solimp: tuple[float, float, float] = SOLIMP
 
     def __post_init__(self) -> None:
         v.choice("MuJoCo cone", self.cone, CONES)
@@ -227,6 +277,7 @@ class FrictionSolver:
         # Plain Python numbers: NumPy's would reach MuJoCo's XML as "np.float64(10.0)".
         object.__setattr__(self, "impratio", float(ratio))
         object.__setattr__(self, "noslip_iterations", iterations)
+        object.__setattr__(self, "solimp", _checked_solimp(self.solimp))
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
@@ -235,12 +286,17 @@ class FrictionSolver:
             f'noslip_iterations="{self.noslip_iterations}"'
         )
 
+    def contact(self) -> str:
+        """The ``solimp`` attribute of both geoms for these settings."""
+        return 'solimp="{!r} {!r} {!r}"'.format(*self.solimp)
+
     def settings(self) -> dict[str, Any]:
-        """JSON-ready: cone, impratio, noslip_iterations."""
+        """JSON-ready: cone, impratio, noslip_iterations, solimp."""
         return {
             "cone": self.cone,
             "impratio": self.impratio,
             "noslip_iterations": self.noslip_iterations,
+            "solimp": list(self.solimp),
         }
 
     def cost(self) -> float:
@@ -252,7 +308,8 @@ class FrictionSolver:
 
 
 DEFAULT_SOLVER = FrictionSolver()
-"""MuJoCo's defaults: pyramidal cone, impratio 1, no no-slip pass (the comparison's settings)."""
+"""MuJoCo's defaults: pyramidal cone, impratio 1, no no-slip pass, ``solimp`` 0.9 0.95 0.001
+(the comparison's settings)."""
 
 
 def available() -> bool:
@@ -277,7 +334,7 @@ def _xml(
 ) -> str:
     friction_text = f"{friction} {torsional} {rolling}"
     solref = f"{TIMECONST} {dampratio}"
-    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}"'
+    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}" {solver.contact()}'
     return f"""
     <mujoco>
       <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
@@ -877,6 +934,7 @@ __all__ = [
     "MAX_NOSLIP_ITERATIONS",
     "ROLLING",
     "SETTLE",
+    "SOLIMP",
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",
