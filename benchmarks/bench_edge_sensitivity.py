@@ -2,7 +2,7 @@
 
     python benchmarks/bench_edge_sensitivity.py [N] [--seed S] [--slip-factor F]
         [--contact-time T] [--damping-factor D] [--friction MU] [--resistance L] [--stride K]
-        [--exponent 1|1.5] [--no-decision]
+        [--exponent 1|1.5] [--no-decision] [--trace K]
 
 The N vigorous tosses of ``bench_mujoco_edges.py --handoff-only`` (seed 2026, a US nickel, e 0.5,
 μ 0.3, rolling and pivoting resistance 1e-4 m) are landed with the contact ending; the states in
@@ -16,7 +16,11 @@ tosses. SLIP_SPEED is a constant compiled into the numba kernels, and the expone
 compiled function: either compiles them afresh into a temporary cache, removed at the end (the
 package's own cache is not touched). With ``--exponent 1`` or ``--no-decision`` each toss is
 carried to rest (:func:`coinflight.core.contact_phase.advance`, ``decide=False``; the upright
-decision bounds the rims' sinking with the 3/2 law).
+decision bounds the rims' sinking with the 3/2 law). ``--trace K``: every K-th carried toss is
+also sampled over its first 0.1 s from the hand-off at 0.1 ms (``bench_edge_trace.ours_trace``
+and ``episodes``, as that benchmark does for 60 tosses): medians of the first contact
+episode's length and normal impulse, the share of samples in contact and the number of
+episodes, for the tosses that end on edge and the others.
 """
 
 from __future__ import annotations
@@ -43,6 +47,7 @@ def main() -> None:
     parser.add_argument(
         "--no-decision", action="store_true", help="carry every toss to rest (no upright decision)"
     )
+    parser.add_argument("--trace", type=int, default=0, help="trace every K-th toss (0: none)")
     args = parser.parse_args()
     import normal_law
 
@@ -83,8 +88,10 @@ def main() -> None:
         damping_restitution=c.restitution,
     )
     t0 = time.perf_counter()
-    faces, unsettled = [], 0
-    for y in states[:: args.stride]:
+    faces, unsettled, traced = [], 0, []
+    for i, y in enumerate(states[:: args.stride]):
+        if args.trace and i % args.trace == 0:
+            traced.append((i, first_contacts(y, c)))
         if carry:
             _, _, settled = cp.advance(y, math.inf, c, settle_check=True)
             face = resting_face(y[6], c.edge_sine)
@@ -105,6 +112,29 @@ def main() -> None:
         f"{unsettled} (counted by their well); {time.perf_counter() - t0:.0f} s, load "
         f"{os.getloadavg()[0]:.1f}"
     )
+    if traced:
+        edge = np.array([f[i] == EDGE for i, _ in traced])
+        rows = np.array([row for _, row in traced])
+        for name, mask in (("on edge", edge), ("not on edge", ~edge), ("all", edge | ~edge)):
+            q = np.nanmedian(rows[mask], axis=0) if mask.any() else np.full(4, np.nan)
+            print(
+                f"  traced, {name} ({int(mask.sum())}): first episode {q[0] * 1e3:.2f} ms, J_n "
+                f"{q[1] * 1e3:.2f} mN s; in contact {q[2]:.0%} of the first 0.1 s, {q[3]:.0f} "
+                "episodes (medians)"
+            )
+
+
+def first_contacts(y, c) -> tuple[float, float, float, float]:  # type: ignore[no-untyped-def]
+    """The first 0.1 s from the state y sampled at 0.1 ms (``bench_edge_trace``): the first
+    contact episode's length (s) and normal impulse (N s), the share of samples in contact, the
+    number of episodes."""
+    import bench_edge_trace as trace
+
+    tr = trace.ours_trace(y, c, 0.1, 1e-4)
+    eps = trace.episodes(tr, c, c.friction)
+    if not eps:
+        return 0.0, 0.0, float((tr["fn"] > 0).mean()), 0.0
+    return eps[0]["length"], eps[0]["jn"], float((tr["fn"] > 0).mean()), float(len(eps))
 
 
 if __name__ == "__main__":

@@ -51,6 +51,92 @@ import math
 import numpy as np
 
 
+def draw(rng: np.random.Generator, c) -> tuple[np.ndarray, ...]:  # type: ignore[no-untyped-def]
+    """One random rim impact (module notes): heads normal n (tilt ~ U(0.15, 1.4) rad, a random
+    azimuth), velocity v (v_h ~ N(0, 0.3) m/s per axis, v_z ~ −U(0.3, 1.5) m/s), angular
+    velocity ω (magnitude ~ U(50, 300) rad/s, a random direction) and angular momentum L of the
+    coin of the contact record ``c``; the caller keeps it only if the lowest rim point
+    approaches the table."""
+    tilt, azimuth = rng.uniform(0.15, 1.4), rng.uniform(0.0, 2.0 * math.pi)
+    n = np.array(
+        [math.sin(tilt) * math.cos(azimuth), math.sin(tilt) * math.sin(azimuth), math.cos(tilt)]
+    )
+    v = np.array([*rng.normal(0.0, 0.3, 2), -rng.uniform(0.3, 1.5)])
+    w = rng.normal(0.0, 1.0, 3)
+    w *= rng.uniform(50.0, 300.0) / np.linalg.norm(w)
+    lm = c.i1 * w + (c.i3 - c.i1) * (w @ n) * n
+    return n, v, w, lm
+
+
+def converge(args: argparse.Namespace) -> None:
+    """``--converge T1,T2,...``: does this phase's rim impact converge to the rigid law as
+    t_c → 0? The same N impacts (``--seed``) for every t_c, each followed until its contact
+    ends (sampled every t_c/50: the rims' force has been positive and is zero again, up to 30
+    ms; those still in contact then are counted, not compared), against Stronge's impact
+    followed by the same time of free fall: the velocity's distance, the angular momentum's (in
+    I1 ω), the normal impulse's ratio, medians and 90th percentiles, and the contact's length."""
+    import bench_contact
+    from coinflight.core import contact_phase as cp
+    from coinflight.core import impact as im
+
+    g, mu = 9.81, args.friction
+    c0 = bench_contact.contact(0.5, mu, resistance=args.resistance)
+    rng = np.random.default_rng(args.seed)
+    impacts = []
+    while len(impacts) < args.n:
+        n, v, w, lm = draw(rng, c0)
+        rc = im.contact_point(tuple(n), c0.radius, c0.half_thickness)
+        if im.contact_velocity(tuple(v), tuple(w), rc)[2] < -0.05:
+            impacts.append((n, v, w, lm))
+    print(
+        f"{args.n} rim impacts (seed {args.seed}), e 0.5, μ {mu:g}, resistances "
+        f"{c0.rolling_resistance:g} m: this "
+        "phase followed to the end of its contact, against the rigid law (medians, 90 %):"
+    )
+    deriv = np.empty(10)
+    for tc in (float(x) for x in args.converge.split(",")):
+        c = c0._replace(contact_time=tc)
+        stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+        rows, stuck = [], 0
+        for n, v, w, lm in impacts:
+            v1, l1, _ = im.impact(
+                tuple(v), tuple(lm), tuple(n), c.radius, c.half_thickness, c.mass, c.i1, c.i3,
+                0.5, mu,
+            )  # fmt: skip
+            y = np.array([im.lowest_depth(n[2], c.radius, c.half_thickness), *v, *n, *lm])
+            touched, t, dt, ended = False, 0.0, tc / 50.0, False
+            while t < 0.03:
+                cp.advance(y, dt, c)
+                t += dt
+                cp._derivative(y, deriv, c, stiff, zeta)
+                if c.mass * (deriv[3] + g) > 0.0:
+                    touched = True
+                elif touched:
+                    ended = True
+                    break
+            if not ended:
+                stuck += 1
+                continue
+            fall = np.array([0.0, 0.0, g * t])
+            scale = c.i1 * float(np.linalg.norm(w))
+            rows.append(
+                (
+                    float(np.linalg.norm(y[1:4] + fall - np.array(v1))),
+                    float(np.linalg.norm(y[7:10] - np.array(l1))) / scale,
+                    (y[3] + g * t - v[2]) / (v1[2] - v[2]),
+                    t,
+                )
+            )
+        r = np.array(rows)
+        p50, p90 = np.median(r, axis=0), np.percentile(r, 90, axis=0)
+        print(
+            f"  t_c {tc * 1e3:6.3f} ms: velocity {p50[0]:.4f} m/s ({p90[0]:.4f}), angular "
+            f"momentum {p50[1]:.4f} I1 ω ({p90[1]:.4f}), J_n / rigid {p50[2]:.4f} (quartiles "
+            f"{np.percentile(r[:, 2], 25):.4f}-{np.percentile(r[:, 2], 75):.4f}), contact "
+            f"{p50[3] * 1e3:.3f} ms ({p90[3] * 1e3:.3f}); still in contact at 30 ms: {stuck}"
+        )
+
+
 def release_rebound(args: argparse.Namespace, solver) -> None:  # type: ignore[no-untyped-def]
     """``--release``: the same kind of impacts, each soft engine followed until its contact
     ends (coinflight's phase every 10 μs, MuJoCo every step); the lowest point's normal velocity
@@ -80,18 +166,7 @@ def release_rebound(args: argparse.Namespace, solver) -> None:  # type: ignore[n
 
     rows = []
     while len(rows) < args.n:
-        tilt, azimuth = rng.uniform(0.15, 1.4), rng.uniform(0.0, 2.0 * math.pi)
-        n = np.array(
-            [
-                math.sin(tilt) * math.cos(azimuth),
-                math.sin(tilt) * math.sin(azimuth),
-                math.cos(tilt),
-            ]
-        )
-        v = np.array([*rng.normal(0.0, 0.3, 2), -rng.uniform(0.3, 1.5)])
-        w = rng.normal(0.0, 1.0, 3)
-        w *= rng.uniform(50.0, 300.0) / np.linalg.norm(w)
-        lm = c.i1 * w + (c.i3 - c.i1) * (w @ n) * n
+        n, v, w, lm = draw(rng, c)
         u0 = normal(v, w, n)
         if u0 >= -0.05:
             continue
@@ -168,7 +243,16 @@ def main() -> None:
     parser.add_argument(
         "--release", action="store_true", help="the kinematic restitution at the contact's end"
     )
+    parser.add_argument(
+        "--converge", default=None, metavar="T1,T2,...", help="t_c values, s (this phase only)"
+    )
+    parser.add_argument(
+        "--resistance", type=float, default=1e-4, help="this phase's ℓ_r = ℓ_p in --converge, m"
+    )
     args = parser.parse_args()
+    if args.converge:
+        converge(args)
+        return
     solimp = tuple(float(x) for x in args.solimp.split(","))
     solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
     if args.release:
@@ -183,6 +267,7 @@ def main() -> None:
     rng = np.random.default_rng(args.seed)
     dist: dict[str, list[tuple[float, ...]]] = {"contact phase": [], "MuJoCo": []}
     lost_rigid = []
+    redrawn = [0, 0]  # still or again in contact at 3 ms: in this phase, in MuJoCo
     ratio_rigid = []
 
     def ratio(v_before: np.ndarray, v_after: np.ndarray) -> float:
@@ -196,18 +281,7 @@ def main() -> None:
         )
 
     while len(dist["MuJoCo"]) < args.n:
-        tilt, azimuth = rng.uniform(0.15, 1.4), rng.uniform(0.0, 2.0 * math.pi)
-        n = np.array(
-            [
-                math.sin(tilt) * math.cos(azimuth),
-                math.sin(tilt) * math.sin(azimuth),
-                math.cos(tilt),
-            ]
-        )
-        v = np.array([*rng.normal(0.0, 0.3, 2), -rng.uniform(0.3, 1.5)])
-        w = rng.normal(0.0, 1.0, 3)
-        w *= rng.uniform(50.0, 300.0) / np.linalg.norm(w)
-        lm = c.i1 * w + (c.i3 - c.i1) * (w @ n) * n
+        n, v, w, lm = draw(rng, c)
         rc = im.contact_point(tuple(n), c.radius, c.half_thickness)
         if im.contact_velocity(tuple(v), tuple(w), rc)[2] >= -0.05:
             continue
@@ -220,6 +294,7 @@ def main() -> None:
         y = np.array([z, *v, *n, *lm])
         cp.advance(y, span, c)
         if y[0] < im.lowest_depth(y[6], c.radius, c.half_thickness) + 1e-6:
+            redrawn[0] += 1
             continue
         q = mc._quaternion_to(n[None])[0]
         mujoco.mj_resetData(model, data)
@@ -231,6 +306,7 @@ def main() -> None:
         while data.time < span - 1e-9:
             mujoco.mj_step(model, data)
         if data.ncon:
+            redrawn[1] += 1
             continue
         mujoco.mju_quat2Mat(rot, data.qpos[3:7])
         frame = rot.reshape(3, 3)
@@ -263,7 +339,8 @@ def main() -> None:
     print(
         f"{args.n} rim impacts, e 0.5, μ {mu:g}, t_c {args.contact_time:g} s (seed {args.seed}); "
         f"MuJoCo condim {args.condim}, {solver}; kinetic energy lost, mean: rigid "
-        f"{np.mean(lost_rigid):.3f}; J_t/(μ J_n) mean rigid {np.mean(ratio_rigid):.3f}"
+        f"{np.mean(lost_rigid):.3f}; J_t/(μ J_n) mean rigid {np.mean(ratio_rigid):.3f}; "
+        f"drawn again (in contact at 3 ms): this phase {redrawn[0]}, MuJoCo {redrawn[1]}"
     )
     for name, rows in dist.items():
         r = np.array(rows)
