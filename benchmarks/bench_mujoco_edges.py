@@ -170,9 +170,16 @@ def from_handoff(
 
 
 def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
-    """MuJoCo's friction solver from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``."""
+    """MuJoCo's solver settings from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``,
+    ``--timeconst``."""
     solimp = tuple(float(x) for x in args.solimp.split(","))
-    return mujoco_compare.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
+    return mujoco_compare.FrictionSolver(
+        args.cone,
+        args.impratio,
+        args.noslip,
+        solimp,  # type: ignore[arg-type]
+        args.timeconst,
+    )
 
 
 def handoff_report(
@@ -293,6 +300,12 @@ def main() -> None:
         "--solimp",
         default=",".join(str(x) for x in mujoco_compare.SOLIMP),
         help="MuJoCo's impedance d0,dmax,width (m) from the hand-off (default MuJoCo's)",
+    )
+    parser.add_argument(
+        "--timeconst",
+        type=float,
+        default=mujoco_compare.TIMECONST,
+        help="MuJoCo's contact time constant solref[0] from the hand-off, s",
     )
     parser.add_argument(
         "--mujoco-restitution",

@@ -191,3 +191,19 @@ def test_a_soft_first_touch_lengthens_a_slow_rim_contact():
     default = contact_steps(mc.DEFAULT_SOLVER)
     soft = contact_steps(mc.FrictionSolver(solimp=(0.1, 0.95, 3e-5)))
     assert 0 < default < soft
+
+
+def test_timeconst_reaches_the_model_and_the_settings():
+    m = mc.model(NICKEL, 0.3, 0.25)
+    assert np.all(m.geom_solref == [[mc.TIMECONST, 0.25]] * 2)
+    slow = mc.FrictionSolver(timeconst=np.float64(4e-3))
+    assert type(slow.timeconst) is float
+    m = mc.model(NICKEL, 0.3, 0.25, solver=slow)
+    assert np.all(m.geom_solref == [[4e-3, 0.25]] * 2)
+    assert slow.settings()["timeconst"] == 4e-3
+
+
+@pytest.mark.parametrize("tau", [1e-4, 0.2, math.nan, True, "1e-3"])
+def test_bad_timeconst_is_refused_in_one_line(tau):
+    with pytest.raises(ValueError, match=r"MuJoCo timeconst must be between 0\.0002 and 0\.1 s"):
+        mc.FrictionSolver(timeconst=tau)

@@ -232,15 +232,15 @@ class FrictionSolver:
       Gauss-Seidel on the friction dimensions only, with the normal forces fixed) that removes
       the slip the soft-constraint model lets through; 0 (default) switches it off.
 
-    It also carries the contact's impedance ``solimp`` (of the normal direction as of the
-    friction's), which the calibration of the damping sees as it sees the rest: how soft
-    MuJoCo's contact is at first touch. MuJoCo solves its constraint so that the contact's
-    acceleration is a_1 = (1 − d) a_0 − d (b v + k r) (a_0 the unconstrained acceleration, b
-    and k from ``solref``; documentation, "Computation", Solver parameters), the impedance
-    d(r) rising from d0 at zero penetration r to dmax at r = ``width``: a low d0 makes the first
-    touch soft (a weak spring and damper, and a share 1 − d of the unconstrained acceleration
-    let through), much as coinflight's rim law, whose stiffness grows from zero as the rim
-    sinks (F ∝ d^(3/2)).
+    It also carries the contact's time constant (``solref[0]``) and impedance ``solimp`` (of
+    the normal direction as of the friction's), which the calibration of the damping sees as it
+    sees the rest: how long MuJoCo's contact lasts, and how soft it is at first touch. MuJoCo
+    solves its constraint so that the contact's acceleration is a_1 = (1 − d) a_0 − d (b v +
+    k r) (a_0 the unconstrained acceleration, b and k from ``solref``; documentation,
+    "Computation", Solver parameters), the impedance d(r) rising from d0 at zero penetration r
+    to dmax at r = ``width``: a low d0 makes the first touch soft (a weak spring and damper, and
+    a share 1 − d of the unconstrained acceleration let through), much as coinflight's rim law,
+    whose stiffness grows from zero as the rim sinks (F ∝ d^(3/2)).
 
     Attributes
     ----------
@@ -254,12 +254,16 @@ class FrictionSolver:
         (d0, dmax, width) of both geoms' ``solimp``: impedances within
         [:data:`MIN_IMPEDANCE`, :data:`MAX_IMPEDANCE`] (MuJoCo's clamp) and a width > 0, m
         (MuJoCo's default :data:`SOLIMP`; its midpoint 0.5 and power 2 kept).
+    timeconst : float
+        The contact's time constant ``solref[0]``, s: at least 2 :data:`TIMESTEP` (MuJoCo's
+        stability rule) and at most 0.1 s (default :data:`TIMECONST`).
     """
 
     cone: str = CONE
     impratio: float = 1.0
     noslip_iterations: int = 0
     solimp: tuple[float, float, float] = SOLIMP
+    timeconst: float = TIMECONST
 
     def __post_init__(self) -> None:
         v.choice("MuJoCo cone", self.cone, CONES)
@@ -278,6 +282,16 @@ class FrictionSolver:
         object.__setattr__(self, "impratio", float(ratio))
         object.__setattr__(self, "noslip_iterations", iterations)
         object.__setattr__(self, "solimp", _checked_solimp(self.solimp))
+        tau = self.timeconst
+        if not (
+            isinstance(tau, (int, float, np.integer, np.floating))
+            and not isinstance(tau, bool)
+            and 2.0 * TIMESTEP <= tau <= 0.1
+        ):
+            raise ValueError(
+                f"MuJoCo timeconst must be between {2.0 * TIMESTEP:g} and 0.1 s, got {tau!r}"
+            )
+        object.__setattr__(self, "timeconst", float(tau))
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
@@ -291,12 +305,13 @@ class FrictionSolver:
         return 'solimp="{!r} {!r} {!r}"'.format(*self.solimp)
 
     def settings(self) -> dict[str, Any]:
-        """JSON-ready: cone, impratio, noslip_iterations, solimp."""
+        """JSON-ready: cone, impratio, noslip_iterations, solimp, timeconst."""
         return {
             "cone": self.cone,
             "impratio": self.impratio,
             "noslip_iterations": self.noslip_iterations,
             "solimp": list(self.solimp),
+            "timeconst": self.timeconst,
         }
 
     def cost(self) -> float:
@@ -333,7 +348,7 @@ def _xml(
     solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> str:
     friction_text = f"{friction} {torsional} {rolling}"
-    solref = f"{TIMECONST} {dampratio}"
+    solref = f"{solver.timeconst!r} {dampratio}"
     contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}" {solver.contact()}'
     return f"""
     <mujoco>
@@ -393,7 +408,7 @@ def flat_drop_restitution(
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
     best = -speed
-    for _ in range(int(5 * TIMECONST / TIMESTEP) + 100):
+    for _ in range(int(5 * solver.timeconst / TIMESTEP) + 100):
         mujoco.mj_step(m, d)
         best = max(best, float(d.qvel[2]))
     return best / speed
@@ -418,8 +433,8 @@ def calibrated_damping(
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
         raise ValueError(
-            f"MuJoCo's contact (time constant {TIMECONST:g} s) cannot rebound at restitution "
-            f"{restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
+            f"MuJoCo's contact (time constant {solver.timeconst:g} s) cannot rebound at "
+            f"restitution {restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
             f"{excess(lo) + restitution:.3g}"
         )
     return float(brentq(excess, lo, hi, xtol=1e-4))
@@ -499,7 +514,7 @@ class MujocoRun:
             "mujoco": self.version,
             "integrator": self.integrator,
             "timestep": TIMESTEP,
-            "solref": [TIMECONST, self.dampratio],
+            "solref": [self.solver.timeconst, self.dampratio],
             "flat_drop_restitution": self.restitution,
             "friction": [friction, self.torsional, self.rolling],
             "condim": self.condim,
