@@ -5,9 +5,10 @@
         [--exponent 1|1.5] [--no-decision] [--trace K]
 
 The N vigorous tosses of ``bench_mujoco_edges.py --handoff-only`` (seed 2026, a US nickel, e 0.5,
-μ 0.3, rolling and pivoting resistance 1e-4 m) are landed with the contact ending; the states in
-which the bounces hand them to :mod:`coinflight.core.contact_phase` are then carried to rest
-again by that phase alone with one parameter changed: ``SLIP_SPEED`` times F (the
+μ 0.3, rolling and pivoting resistance 1e-4 m) bounce as the contact ending's landings do
+(``bench_contact.handoff``); the states in which the bounces hand them to
+:mod:`coinflight.core.contact_phase` (446 of 600) are then carried to rest by that phase alone
+with one parameter changed: ``SLIP_SPEED`` times F (the
 regularisation of Coulomb's friction; F → 0 is the Coulomb limit), the contact time t_c, the
 damping ratio ζ times D, μ, the resistances, or the exponent p of the rim's normal law
 (``--exponent 1``: F ∝ d0 as MuJoCo's, instead of the default d0^(3/2); ``normal_law.py``,
