@@ -19,7 +19,17 @@ Each phase is carried to rest without the upright roller's decision
 would have ended the toss; the benchmark then counts the tosses it decides, those among them
 that do not end on edge at rest (disagreements; the decision is adopted only at 0), and the
 steps and simulated time it saves. ``--pairs 0.5,0.3 0.5,0.6`` runs the same tosses on those
-surfaces (e, μ) instead of each toss's own.
+surfaces (e, μ) instead of each toss's own; ``--resistance L`` sets ℓ_r = ℓ_p (default the
+surface's, 1e-4 m).
+
+Since 2026-11-23 a decided toss that, carried on, does not settle (stopped by MAX_STEPS)
+counts as a disagreement; before, it counted as agreeing. Re-measured that way at ℓ 1e-5 m,
+where rollers roll ten times longer (2026-11-23, 23:33-00:40 UTC, load 5-14): ``python
+benchmarks/bench_contact.py 600 --pairs 0.5,0.3 0.5,0.6 --resistance 1e-5`` decides 56 of 429
+handed tosses (57 end on edge at rest) and 178 of 446 (182; 6 handed tosses unsettled, none of
+them decided), 0 disagreements; ``1500 --pairs 0.5,0.3 0.5,0.6 --resistance 1e-5`` 120 of
+1,061 (122) and 416 of 1,028 (421), 0 disagreements; and ``1500 --resistance 1e-5`` (each
+toss its own e, μ) OWN_1500.
 """
 
 from __future__ import annotations
