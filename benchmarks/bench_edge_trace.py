@@ -38,7 +38,12 @@ still moving at 20 s, counted by their well). Medians, coinflight | MuJoCo, all 
   is kicked off the table (its J_n 3.4 | 0.5 mN s);
 * in contact for **51 % | 6 %** of the first 0.1 s (65 % | 8 %): MuJoCo's coins hop (1 | 4.5
   episodes before parting), ours stay on the rim; the total vertical impulse over 0.1 s is the
-  same (4.8 | 4.5 mN s; 4.8 | 4.7);
+  same (4.8 | 4.5 mN s; 4.8 | 4.7). Why (measured since, ``bench_edge_sensitivity.py --trace``
+  and :mod:`coinflight.studies.mujoco_compare`'s notes): not coinflight's soft rim law, since
+  with a linear one whose impacts last 0.75 ms the first contact still lasts a median 15 ms (9
+  ms for the edge-enders; 76 % of the first 0.1 s in contact) and frictionless 28 ms: the coin
+  slides on its rim, pressed by its weight; MuJoCo's sliding contacts move apart (a flat coin
+  sliding at 0.5 m/s with μ 0.3 is in contact 7 % of 30 ms there, 100 % here);
 * the friction is no weaker in MuJoCo: its horizontal impulse over 0.1 s is 0.73 | 0.62 of
   μ times the vertical one (0.72 | 0.60), per episode before parting 0.85 | 0.67: MuJoCo's short
   contacts slide, ours last long enough to turn sliding into rolling;

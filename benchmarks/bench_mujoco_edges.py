@@ -91,7 +91,7 @@ Coulomb's law says. A coin sliding on its rim from a hand-off state is so kicked
 coinflight's stays on the rim until friction turns the slide into a roll, and rolls up. The lift
 shrinks with a softer MuJoCo contact (time constant 4 ms: upward speed 12 against 32 mm/s, in
 contact 29 %), and MuJoCo's edges rise a little (27 against 22, within the noise); no MuJoCo
-setting removes the lift. CONDIM1_SENTENCE
+setting removes the lift.
 """
 
 from __future__ import annotations

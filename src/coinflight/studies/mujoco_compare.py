@@ -76,20 +76,23 @@ Why the engines part (measured; the benchmarks' notes). Not the normal law: neit
 hand-off states on edge against 49), nor its stiffness (t_c 0.25 ms: 47-49), nor MuJoCo's
 impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
 0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
-convex soft-contact model gives up strict complementarity, so that "the only way to initiate
-slip is to generate some motion in the normal direction" (documentation, "Computation", Soft
-contact model). Measured: a nickel lying flat and sliding at 0.5 m/s with μ 0.3 hops in MuJoCo
-(in contact 7 % of 30 ms, lifted up to 54 μm, upward speed up to 32 mm/s; a sphere alike, 6 %),
+convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
+is to generate some motion in the normal direction" (documentation, "Computation", "Physical
+realism and soft contacts", which calls the effect numerically small). Measured, it is not
+small here: a nickel lying flat and sliding at 0.5 m/s with μ 0.3 hops in MuJoCo (in contact
+7 % of 30 ms, lifted up to 54 μm, upward speed up to 32 mm/s; a sliding sphere alike, 6 %),
 decelerating as Coulomb's law says, and stays on the table frictionless (89-100 %); in
 coinflight's contact phase it stays on the table (100 %) with the same deceleration (0.412
-against MuJoCo's 0.408 m/s after 30 ms). The lift grows with MuJoCo's stiffness (time constant
-0.2 ms: up to ~1 mm) and shrinks with its softness (4 ms: 12 mm/s, in contact 29 %), and is
-not removed by the elliptic cone with impratio 100 or the no-slip pass. A coin sliding on its
-rim from the hand-off is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in
-contact) where coinflight's keeps sliding on it until friction turns the slide into a roll.
-With MuJoCo's time constant 4 ms (``timeconst``) it leaves 27 of the 446 on edge (0.061 ±
-0.011) against 22 at 1 ms: the softer contact that lifts less puts a few more coins on edge,
-within the noise. CONDIM1_SENTENCE
+against MuJoCo's 0.408 m/s after 30 ms). The elliptic cone with impratio 100 and the no-slip
+pass leave the lift as it is; a softer contact (time constant 4 ms) shrinks it (upward speed
+12 mm/s, in contact 29 %) without removing it. So a coin sliding on its rim from the hand-off
+is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in contact), where
+coinflight's keeps sliding on it, pressed by its weight, until friction turns the slide into a
+roll. With MuJoCo's time constant 4 ms (``timeconst``) 27 of the 446 end on edge (0.061 ±
+0.011) against 22 at 1 ms: the contact that lifts less puts a few more coins on edge, within
+the noise. A rigid coin sliding flat on a table stays on it (Coulomb's law, the normal force
+shifting under it), as coinflight's does; which engine is closer to a real coin sliding on its
+rim is not measured.
 
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
 tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
