@@ -86,12 +86,13 @@ Where they part is MuJoCo's sliding contact, which moves apart
 "the only way to initiate slip is to generate some motion in the normal direction"): a flat
 nickel sliding at 0.5 m/s with μ 0.3 is in contact 7 % of 30 ms in MuJoCo, lifted up to 54 μm
 (a sphere 6 %), 89 % frictionless, and 100 % in coinflight's phase, both decelerating as
-Coulomb's law says. A coin sliding on its rim from a hand-off state is so kicked off in MuJoCo
-(its 0.8 ms first contact, 6 % of the first 0.1 s in contact, ``bench_edge_trace.py``) where
-coinflight's stays on the rim until friction turns the slide into a roll, and rolls up. The lift
-shrinks with a softer MuJoCo contact (time constant 4 ms: upward speed 12 against 32 mm/s, in
-contact 29 %), and MuJoCo's edges rise a little (27 against 22, within the noise); no MuJoCo
-setting removes the lift.
+Coulomb's law says; a nickel leaning 60° on its rim and sliding at 0.3 m/s along it, 6 % of
+10 ms in MuJoCo (88 % frictionless), 100 % in coinflight's. A coin sliding on its rim from a
+hand-off state is so kicked off in MuJoCo (its 0.8 ms first contact, 6 % of the first 0.1 s in
+contact, ``bench_edge_trace.py``) where coinflight's stays on the rim until friction turns the
+slide into a roll, and rolls up. The lift shrinks with a softer MuJoCo contact (time constant
+4 ms: upward speed 12 against 32 mm/s, in contact 29 %), and MuJoCo's edges rise a little (27
+against 22, within the noise); no MuJoCo setting tried removes the lift.
 """
 
 from __future__ import annotations

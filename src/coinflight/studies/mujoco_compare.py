@@ -85,7 +85,9 @@ decelerating as Coulomb's law says, and stays on the table frictionless (89-100 
 coinflight's contact phase it stays on the table (100 %) with the same deceleration (0.412
 against MuJoCo's 0.408 m/s after 30 ms). The elliptic cone with impratio 100 and the no-slip
 pass leave the lift as it is; a softer contact (time constant 4 ms) shrinks it (upward speed
-12 mm/s, in contact 29 %) without removing it. So a coin sliding on its rim from the hand-off
+12 mm/s, in contact 29 %) without removing it. On the rim alike: a nickel leaning 60° on
+its rim, set sliding at 0.3 m/s along it, is in contact 6 % of the first 10 ms in MuJoCo (88 %
+frictionless) and 100 % in coinflight's phase. So a coin sliding on its rim from the hand-off
 is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in contact), where
 coinflight's keeps sliding on it, pressed by its weight, until friction turns the slide into a
 roll. With MuJoCo's time constant 4 ms (``timeconst``) 27 of the 446 end on edge (0.061 ±
