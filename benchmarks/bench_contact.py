@@ -19,7 +19,20 @@ Each phase is carried to rest without the upright roller's decision
 would have ended the toss; the benchmark then counts the tosses it decides, those among them
 that do not end on edge at rest (disagreements; the decision is adopted only at 0), and the
 steps and simulated time it saves. ``--pairs 0.5,0.3 0.5,0.6`` runs the same tosses on those
-surfaces (e, μ) instead of each toss's own.
+surfaces (e, μ) instead of each toss's own; ``--resistance L`` sets ℓ_r = ℓ_p (default the
+surface's, 1e-4 m).
+
+Since 2026-11-23 a decided toss that, carried on, does not settle (stopped by MAX_STEPS)
+counts as a disagreement; before, it counted as agreeing. Re-measured that way at ℓ 1e-5 m,
+where rollers roll ten times longer (2026-11-23, 23:33-00:07 UTC, load 5-14): ``python
+benchmarks/bench_contact.py 600 --pairs 0.5,0.3 0.5,0.6 --resistance 1e-5`` decides 56 of 429
+handed tosses (57 end on edge at rest) and 178 of 446 (182; 6 handed tosses unsettled, none of
+them decided), 0 disagreements; ``1500 --pairs 0.5,0.3 0.5,0.6 --resistance 1e-5`` 120 of
+1,061 (122) and 416 of 1,028 (421), and ``1500 --resistance 1e-5`` (each toss its own e, μ)
+191 of 1,030 (195): 0 disagreements in these 727 decisions (254, 1,033 and 195 s wall; at μ
+0.6 4 of the 1,028 handed tosses unsettled, none of them decided). The "0 in 737" at the default
+1e-4 m was counted the old way and is not re-run here; there the rollers stop within ~15 s, far
+inside MAX_STEPS.
 """
 
 from __future__ import annotations
@@ -48,16 +61,17 @@ G = 9.81
 DROP = 0.8
 
 
-def contact(e: float, mu: float, corner: float = 0.0) -> Contact:
+def contact(e: float, mu: float, corner: float = 0.0, resistance: float | None = None) -> Contact:
     """The nickel's contact record (corner radius ``corner``, m) on a table with the contact
-    ending and the default resistances."""
+    ending and rolling and pivoting resistance ``resistance`` (m; default the surface's
+    defaults)."""
     surface = Surface(
         "table",
         DROP,
         e,
         mu,
-        DEFAULT_ROLLING_RESISTANCE,
-        DEFAULT_PIVOTING_RESISTANCE,
+        DEFAULT_ROLLING_RESISTANCE if resistance is None else resistance,
+        DEFAULT_PIVOTING_RESISTANCE if resistance is None else resistance,
         ending="contact",
     )
     return contact_record(COIN.with_corner_radius(corner), surface, G)
@@ -101,6 +115,9 @@ def main() -> None:
     parser.add_argument("--corner", type=float, default=0.0, help="rim corner radius a, m")
     parser.add_argument("--contact-time", type=float, default=cp.CONTACT_TIME, help="t_c, s")
     parser.add_argument(
+        "--resistance", type=float, default=None, help="ℓ_r = ℓ_p, m (default the surface's)"
+    )
+    parser.add_argument(
         "--pairs", nargs="*", default=[], metavar="E,MU", help="surfaces (e, μ) to run instead"
     )
     args = parser.parse_args()
@@ -133,7 +150,9 @@ def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None
     decided = np.full((n, 2), -1.0)  # (time, steps) where upright_decided first held
     t0 = time.perf_counter()
     for k in range(n):
-        c = contact(float(e[k]), float(mu[k]), args.corner)._replace(contact_time=args.contact_time)
+        c = contact(float(e[k]), float(mu[k]), args.corner, args.resistance)._replace(
+            contact_time=args.contact_time
+        )
         y, handed[k] = handoff((omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], c)
         if not handed[k]:
             continue
@@ -151,7 +170,7 @@ def profile(args: argparse.Namespace, surface: tuple[float, ...] | None) -> None
     kind = "e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)" if surface is None else f"e = {e[0]}, μ = {mu[0]}"
     print(
         f"{n} vigorous nickel tosses, {kind}, resistances "
-        f"{DEFAULT_ROLLING_RESISTANCE:g} m, corner radius {args.corner:g} m, t_c "
+        f"{c.rolling_resistance:g} m, corner radius {args.corner:g} m, t_c "
         f"{args.contact_time:g} s; {total:.1f} s wall, load {os.getloadavg()}"
     )
     print(

@@ -1,7 +1,8 @@
 """Toss by toss: where coinflight's contact ending and MuJoCo part on the same hand-off states.
 
     python benchmarks/bench_edge_trace.py [N] [--per-group K] [--span 0.1] [--condim 3]
-        [--cone pyramidal|elliptic] [--impratio R] [--noslip K] [--seed S]
+        [--cone pyramidal|elliptic] [--impratio R] [--noslip K]
+        [--solimp D0,DMAX,WIDTH] [--seed S]
 
 From the hand-off states of ``bench_mujoco_edges.py --handoff-only`` (N vigorous nickel tosses,
 default 600, seed 2026, e 0.5, μ 0.3, resistances 1e-4 m), K tosses (default 30) that end on
@@ -37,7 +38,12 @@ still moving at 20 s, counted by their well). Medians, coinflight | MuJoCo, all 
   is kicked off the table (its J_n 3.4 | 0.5 mN s);
 * in contact for **51 % | 6 %** of the first 0.1 s (65 % | 8 %): MuJoCo's coins hop (1 | 4.5
   episodes before parting), ours stay on the rim; the total vertical impulse over 0.1 s is the
-  same (4.8 | 4.5 mN s; 4.8 | 4.7);
+  same (4.8 | 4.5 mN s; 4.8 | 4.7). Why (measured since, ``bench_edge_sensitivity.py --trace``
+  and :mod:`coinflight.studies.mujoco_compare`'s notes): not coinflight's soft rim law, since
+  with a linear one whose impacts last 0.75 ms the first contact still lasts a median 15 ms (9
+  ms for the edge-enders; 76 % of the first 0.1 s in contact) and frictionless 28 ms: the coin
+  slides on its rim, pressed by its weight; MuJoCo's sliding contacts move apart (a flat coin
+  sliding at 0.5 m/s with μ 0.3 is in contact 7 % of 30 ms there, 100 % here);
 * the friction is no weaker in MuJoCo: its horizontal impulse over 0.1 s is 0.73 | 0.62 of
   μ times the vertical one (0.72 | 0.60), per episode before parting 0.85 | 0.67: MuJoCo's short
   contacts slide, ours last long enough to turn sliding into rolling;
@@ -227,10 +233,14 @@ def main() -> None:
     parser.add_argument("--cone", choices=mc.CONES, default=mc.CONE)
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
+    parser.add_argument(
+        "--solimp", default=",".join(str(x) for x in mc.SOLIMP), help="MuJoCo's d0,dmax,width"
+    )
     parser.add_argument("--limit", type=float, default=mc.SETTLE)
     parser.add_argument("--save", default=None, help="write the episode tables to SAVE.npz")
     args = parser.parse_args()
-    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip)
+    solimp = tuple(float(x) for x in args.solimp.split(","))
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
     e, mu = args.restitution, args.friction
     t0 = time.perf_counter()
     dist, omega, v0 = study.edge_draw(args.n, args.seed, "vigorous")

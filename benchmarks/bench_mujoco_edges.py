@@ -26,7 +26,9 @@ stay 1e-4 m), and MuJoCo's friction made harder than its default
 (:class:`coinflight.studies.mujoco_compare.FrictionSolver`): ``--cone elliptic``,
 ``--impratio R`` (friction impedance R times the normal's), ``--noslip K`` (K no-slip
 iterations after the main solver); ``--mujoco-restitution E``: MuJoCo's contact damping
-calibrated to E instead of the pair's e (coinflight keeps e).
+calibrated to E instead of the pair's e (coinflight keeps e); ``--solimp D0,DMAX,WIDTH`` and
+``--timeconst T``: MuJoCo's impedance ramp and contact time constant (its damping calibrated
+again for e).
 
 Is the gap at condim 3 MuJoCo's soft friction? (2026-11-23, 20:36-21:45 UTC, load 7-14; ``600
 --handoff-only --condim 3`` with the options below, MuJoCo RK4, limit 20 s; 446 hand-off states,
@@ -56,6 +58,41 @@ MuJoCo's coins then hop (6 % of the first 0.1 s in contact, against 51 %) where 
 stay on the rim and roll up. The factor left lies in that normal contact; not yet pinned to a
 parameter (coinflight's t_c 0.25 ms leaves 47 on edge, ``bench_edge_sensitivity.py``; MuJoCo's
 ``solimp``, which sets how soft its contact is at first touch, is untried).
+
+MuJoCo's normal contact changed (2026-11-23, 23:39-00:10 UTC, load 8-14; ``600 --handoff-only
+--condim 3 --handoff-integrator Euler`` with the options below, limit 20 s; the same 446
+hand-off states; Euler, which from these states gives RK4's faces at ~1/4 of its cost):
+
+=============================================  ==========================  ======
+MuJoCo normal contact (condim 3, Euler)        on edge                     moving
+=============================================  ==========================  ======
+default (solimp 0.9 0.95 0.001, τ 1 ms)        22, 0.049 ± 0.010           27
+soft first touch, ``--solimp 0.1,0.95,3e-5``   19, 0.043 ± 0.010           25
+``--solimp 0.5,0.95,0.001``                    20, 0.045 ± 0.010           24
+``--timeconst 4e-3`` (softer, longer contacts) 27, 0.061 ± 0.011           28
+=============================================  ==========================  ======
+
+(353, 217, 359, 165 s wall.) The soft first touch makes MuJoCo's slow contacts press as
+coinflight's do (a nickel dropped upright on its rim at 0.01 m/s stays 4.6 ms in contact and
+does not rebound, against 0.8 ms and 0.34 of its speed by default; at 0.1 m/s 0.9 ms, 0.43;
+coinflight's 3/2 law 5.7 ms, 0.18), yet leaves its edge count where it was: MuJoCo's
+impedance does not move it toward coinflight's 49 (0.110 ± 0.015). Nor does coinflight's
+normal law move toward MuJoCo: a linear rim law (``bench_edge_sensitivity.py --exponent 1``,
+impacts of 0.75 ms as MuJoCo's) leaves 47, and 49 at t_c 0.25 ms. The gap is not in the normal
+law's shape, stiffness or first-touch softness of either engine (that run's notes).
+
+Where they part is MuJoCo's sliding contact, which moves apart
+(:mod:`coinflight.studies.mujoco_compare`'s notes, "Why the engines part"; its documentation:
+"the only way to initiate slip is to generate some motion in the normal direction"): a flat
+nickel sliding at 0.5 m/s with μ 0.3 is in contact 7 % of 30 ms in MuJoCo, lifted up to 54 μm
+(a sphere 6 %), 89 % frictionless, and 100 % in coinflight's phase, both decelerating as
+Coulomb's law says; a nickel leaning 60° on its rim and sliding at 0.3 m/s along it, 6 % of
+10 ms in MuJoCo (88 % frictionless), 100 % in coinflight's. A coin sliding on its rim from a
+hand-off state is so kicked off in MuJoCo (its 0.8 ms first contact, 6 % of the first 0.1 s in
+contact, ``bench_edge_trace.py``) where coinflight's stays on the rim until friction turns the
+slide into a roll, and rolls up. The lift shrinks with a softer MuJoCo contact (time constant
+4 ms: upward speed 12 against 32 mm/s, in contact 29 %), and MuJoCo's edges rise a little (27
+against 22, within the noise); no MuJoCo setting tried removes the lift.
 """
 
 from __future__ import annotations
@@ -170,8 +207,16 @@ def from_handoff(
 
 
 def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
-    """MuJoCo's friction solver from ``--cone``, ``--impratio``, ``--noslip``."""
-    return mujoco_compare.FrictionSolver(args.cone, args.impratio, args.noslip)
+    """MuJoCo's solver settings from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``,
+    ``--timeconst``."""
+    solimp = tuple(float(x) for x in args.solimp.split(","))
+    return mujoco_compare.FrictionSolver(
+        args.cone,
+        args.impratio,
+        args.noslip,
+        solimp,  # type: ignore[arg-type]
+        args.timeconst,
+    )
 
 
 def handoff_report(
@@ -287,6 +332,17 @@ def main() -> None:
         type=int,
         default=0,
         help="MuJoCo's no-slip iterations from the hand-off (0: none)",
+    )
+    parser.add_argument(
+        "--solimp",
+        default=",".join(str(x) for x in mujoco_compare.SOLIMP),
+        help="MuJoCo's impedance d0,dmax,width (m) from the hand-off (default MuJoCo's)",
+    )
+    parser.add_argument(
+        "--timeconst",
+        type=float,
+        default=mujoco_compare.TIMECONST,
+        help="MuJoCo's contact time constant solref[0] from the hand-off, s",
     )
     parser.add_argument(
         "--mujoco-restitution",

@@ -68,8 +68,33 @@ soft friction is why it leaves fewer coins on edge than coinflight's contact end
 10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
 friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
 impact its friction impulse is already as close to μ J_n as the rigid law's
-(``benchmarks/bench_rim_impacts.py``). What differs is the normal contact (MuJoCo's coins hop
-off the rim where coinflight's stay on it; the benchmarks' notes).
+(``benchmarks/bench_rim_impacts.py``). What differs is that MuJoCo's coins hop off the rim
+where coinflight's stay on it (the benchmarks' notes), and why is below.
+
+Why the engines part (measured; the benchmarks' notes). Not the normal law: neither its shape
+(coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
+hand-off states on edge against 49), nor its stiffness (t_c 0.25 ms: 47-49), nor MuJoCo's
+impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
+0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
+convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
+is to generate some motion in the normal direction" (documentation, "Computation", "Physical
+realism and soft contacts", which calls the effect numerically small). Measured, it is not
+small here: a nickel lying flat and sliding at 0.5 m/s with μ 0.3 hops in MuJoCo (in contact
+7 % of 30 ms, lifted up to 54 μm, upward speed up to 32 mm/s; a sliding sphere alike, 6 %),
+decelerating as Coulomb's law says, and stays on the table frictionless (89-100 %); in
+coinflight's contact phase it stays on the table (100 %) with the same deceleration (0.412
+against MuJoCo's 0.408 m/s after 30 ms). The elliptic cone with impratio 100 and the no-slip
+pass leave the lift as it is; a softer contact (time constant 4 ms) shrinks it (upward speed
+12 mm/s, in contact 29 %) without removing it. On the rim alike: a nickel leaning 60° on
+its rim, set sliding at 0.3 m/s along it, is in contact 6 % of the first 10 ms in MuJoCo (88 %
+frictionless) and 100 % in coinflight's phase. So a coin sliding on its rim from the hand-off
+is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in contact), where
+coinflight's keeps sliding on it, pressed by its weight, until friction turns the slide into a
+roll. With MuJoCo's time constant 4 ms (``timeconst``) 27 of the 446 end on edge (0.061 ±
+0.011) against 22 at 1 ms: the contact that lifts less puts a few more coins on edge, within
+the noise. A rigid coin sliding flat on a table stays on it (Coulomb's law, the normal force
+shifting under it), as coinflight's does; which engine is closer to a real coin sliding on its
+rim is not measured.
 
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
 tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
@@ -178,6 +203,41 @@ sweep over the friction dimensions). Measured as :data:`IMPRATIO_COST`: 20 itera
 wall against 1,154 s, 1.9 times, i.e. 0.045 per iteration."""
 
 
+SOLIMP = (0.9, 0.95, 0.001)
+"""MuJoCo's default ``solimp`` (d0, dmax, width in m; midpoint 0.5 and power 2 not set here)."""
+MIN_IMPEDANCE = 1e-4
+"""Smallest impedance MuJoCo takes (its mjMINIMP; smaller values are clamped to it)."""
+MAX_IMPEDANCE = 0.9999
+"""Largest impedance MuJoCo takes (its mjMAXIMP)."""
+
+
+def _checked_solimp(solimp: Any) -> tuple[float, float, float]:
+    """(d0, dmax, width) as plain floats; ValueError in one line unless three numbers with d0
+    and dmax within [MIN_IMPEDANCE, MAX_IMPEDANCE] and width positive and finite."""
+    words = (
+        f"MuJoCo solimp must be three numbers (d0, dmax within [{MIN_IMPEDANCE:g}, "
+        f"{MAX_IMPEDANCE:g}], width > 0 m), got {solimp!r}"
+    )
+    try:
+        values = tuple(solimp)
+    except TypeError:
+        raise ValueError(words) from None
+    if len(values) != 3 or not all(
+        isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
+        for x in values
+    ):
+        raise ValueError(words)
+    d0, dmax, width = (float(x) for x in values)
+    if not (
+        MIN_IMPEDANCE <= d0 <= MAX_IMPEDANCE
+        and MIN_IMPEDANCE <= dmax <= MAX_IMPEDANCE
+        and math.isfinite(width)
+        and width > 0.0
+    ):
+        raise ValueError(words)
+    return d0, dmax, width
+
+
 @dataclass(frozen=True)
 class FrictionSolver:
     """How hard MuJoCo makes its friction: the cone, ``impratio`` and the no-slip pass.
@@ -197,6 +257,16 @@ class FrictionSolver:
       Gauss-Seidel on the friction dimensions only, with the normal forces fixed) that removes
       the slip the soft-constraint model lets through; 0 (default) switches it off.
 
+    It also carries the contact's time constant (``solref[0]``) and impedance ``solimp`` (of
+    the normal direction as of the friction's), which the calibration of the damping sees as it
+    sees the rest: how long MuJoCo's contact lasts, and how soft it is at first touch. MuJoCo
+    solves its constraint so that the contact's acceleration is a_1 = (1 − d) a_0 − d (b v +
+    k r) (a_0 the unconstrained acceleration, b and k from ``solref``; documentation,
+    "Computation", Solver parameters), the impedance d(r) rising from d0 at zero penetration r
+    to dmax at r = ``width``: a low d0 makes the first touch soft (a weak spring and damper, and
+    a share 1 − d of the unconstrained acceleration let through), much as coinflight's rim law,
+    whose stiffness grows from zero as the rim sinks (F ∝ d^(3/2)).
+
     Attributes
     ----------
     cone : str
@@ -205,11 +275,20 @@ class FrictionSolver:
         Ratio of frictional-to-normal impedance, > 0 (MuJoCo's default 1).
     noslip_iterations : int
         No-slip iterations, 0 to :data:`MAX_NOSLIP_ITERATIONS` (MuJoCo's default 0).
+    solimp : tuple of 3 floats
+        (d0, dmax, width) of both geoms' ``solimp``: impedances within
+        [:data:`MIN_IMPEDANCE`, :data:`MAX_IMPEDANCE`] (MuJoCo's clamp) and a width > 0, m
+        (MuJoCo's default :data:`SOLIMP`; its midpoint 0.5 and power 2 kept).
+    timeconst : float
+        The contact's time constant ``solref[0]``, s: at least 2 :data:`TIMESTEP` (MuJoCo's
+        stability rule) and at most 0.1 s (default :data:`TIMECONST`).
     """
 
     cone: str = CONE
     impratio: float = 1.0
     noslip_iterations: int = 0
+    solimp: tuple[float, float, float] = SOLIMP
+    timeconst: float = TIMECONST
 
     def __post_init__(self) -> None:
         v.choice("MuJoCo cone", self.cone, CONES)
@@ -227,6 +306,17 @@ class FrictionSolver:
         # Plain Python numbers: NumPy's would reach MuJoCo's XML as "np.float64(10.0)".
         object.__setattr__(self, "impratio", float(ratio))
         object.__setattr__(self, "noslip_iterations", iterations)
+        object.__setattr__(self, "solimp", _checked_solimp(self.solimp))
+        tau = self.timeconst
+        if not (
+            isinstance(tau, (int, float, np.integer, np.floating))
+            and not isinstance(tau, bool)
+            and 2.0 * TIMESTEP <= tau <= 0.1
+        ):
+            raise ValueError(
+                f"MuJoCo timeconst must be between {2.0 * TIMESTEP:g} and 0.1 s, got {tau!r}"
+            )
+        object.__setattr__(self, "timeconst", float(tau))
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
@@ -235,12 +325,18 @@ class FrictionSolver:
             f'noslip_iterations="{self.noslip_iterations}"'
         )
 
+    def contact(self) -> str:
+        """The ``solimp`` attribute of both geoms for these settings."""
+        return 'solimp="{!r} {!r} {!r}"'.format(*self.solimp)
+
     def settings(self) -> dict[str, Any]:
-        """JSON-ready: cone, impratio, noslip_iterations."""
+        """JSON-ready: cone, impratio, noslip_iterations, solimp, timeconst."""
         return {
             "cone": self.cone,
             "impratio": self.impratio,
             "noslip_iterations": self.noslip_iterations,
+            "solimp": list(self.solimp),
+            "timeconst": self.timeconst,
         }
 
     def cost(self) -> float:
@@ -252,7 +348,8 @@ class FrictionSolver:
 
 
 DEFAULT_SOLVER = FrictionSolver()
-"""MuJoCo's defaults: pyramidal cone, impratio 1, no no-slip pass (the comparison's settings)."""
+"""MuJoCo's defaults: pyramidal cone, impratio 1, no no-slip pass, ``solimp`` 0.9 0.95 0.001
+(the comparison's settings)."""
 
 
 def available() -> bool:
@@ -276,8 +373,8 @@ def _xml(
     solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> str:
     friction_text = f"{friction} {torsional} {rolling}"
-    solref = f"{TIMECONST} {dampratio}"
-    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}"'
+    solref = f"{solver.timeconst!r} {dampratio}"
+    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}" {solver.contact()}'
     return f"""
     <mujoco>
       <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
@@ -336,7 +433,7 @@ def flat_drop_restitution(
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
     best = -speed
-    for _ in range(int(5 * TIMECONST / TIMESTEP) + 100):
+    for _ in range(int(5 * solver.timeconst / TIMESTEP) + 100):
         mujoco.mj_step(m, d)
         best = max(best, float(d.qvel[2]))
     return best / speed
@@ -361,8 +458,8 @@ def calibrated_damping(
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
         raise ValueError(
-            f"MuJoCo's contact (time constant {TIMECONST:g} s) cannot rebound at restitution "
-            f"{restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
+            f"MuJoCo's contact (time constant {solver.timeconst:g} s) cannot rebound at "
+            f"restitution {restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
             f"{excess(lo) + restitution:.3g}"
         )
     return float(brentq(excess, lo, hi, xtol=1e-4))
@@ -442,7 +539,7 @@ class MujocoRun:
             "mujoco": self.version,
             "integrator": self.integrator,
             "timestep": TIMESTEP,
-            "solref": [TIMECONST, self.dampratio],
+            "solref": [self.solver.timeconst, self.dampratio],
             "flat_drop_restitution": self.restitution,
             "friction": [friction, self.torsional, self.rolling],
             "condim": self.condim,
@@ -877,6 +974,7 @@ __all__ = [
     "MAX_NOSLIP_ITERATIONS",
     "ROLLING",
     "SETTLE",
+    "SOLIMP",
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",

@@ -1,0 +1,151 @@
+"""A benchmark-only knob: the exponent of the contact phase's normal law (no change to defaults).
+
+The contact phase (:mod:`coinflight.core.contact_phase`) presses each rim on the table with a
+linear spring per radian of rim, κ d(φ), whose sum over a short arc is Hertz-like: F ∝ d0^(3/2)
+in the depth d0 of the rim's lowest point (a curved rim on a plane), with the damping of Tsuji,
+Tanaka & Ishida (1992). MuJoCo's contact is linear in the depth. To ask whether that exponent is
+why the two engines part, :func:`use_exponent` swaps the phase's ``rim_contact`` for a family
+of laws with the same geometry, before any kernel is compiled (into a temporary numba cache,
+removed at exit; the package's cache is not touched):
+
+* the elastic energy of a rim is U_p = C (U_a)^β, β = 2 (p + 1)/5, U_a the default arc's
+  energy κ ∫ d²/2 dφ. Its force and moment are λ times the arc's (λ = C β U_a^(β−1)): the same
+  centre of pressure, and a potential, so the law is conservative and the energy test of the
+  phase stays exact. On a short arc, U_a = (8√2/15) κ d0^(5/2) / sqrt(B) (B = r s), so
+  F = K_p d0^p: p = 3/2 is the default law (left in place); for p = 1 C is set so
+  that an upright rim (B = r) has K_1 = 2πκ = π² m / t_c², the face's stiffness: a coin upright
+  on its rim point (effective mass m) sinks for t_c, as a coin dropped flat does. (Tilted, the
+  stiffness grows as B^(−2/5); a face flat on the table gets F ∝ d^(3/5): a benchmark knob,
+  not a model of a face.)
+* the damping is the default arc's with ζ_p (:func:`damping_ratio`: the dimensionless law
+  x'' = −x^p − 2 ζ sqrt(p x^(p−1)) x' of :func:`coinflight.core.contact_phase.restitution_of`
+  restitutes with e) and scaled by sqrt((2p/3) λ), so that on a short arc it is
+  2 ζ_p sqrt(K_t m_eff) ḋ0 with K_t = dF/dd0 = p F / d0, as the default's is for p = 3/2.
+
+The upright decision (:func:`coinflight.core.contact_phase.upright_decided`) bounds the
+rims' sinking with the 3/2 law: with another exponent the tosses are carried to rest by
+:func:`coinflight.core.contact_phase.advance` with ``decide=False``.
+
+Checked (2026-11-23, by hand, not a test): p = 1 gives F = 2πκ d0 on an upright rim to four
+digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six. A nickel
+dropped upright on both rims (frictionless, t_c 1 ms) stays in contact 0.76 ms at 0.1 m/s and
+0.74 ms at 1 m/s with p = 1 (rebound 0.38, 0.40 of its speed), 5.7 and 3.0 ms with p = 3/2
+(0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebound
+two rims at ~0.4 rather than e = 0.5 is the phase's own: each rim's damper is sized for the
+effective mass at its own arc, as if it carried the coin alone, so two rims pressed together
+are damped √2 times harder. Not changed here.)
+"""
+
+from __future__ import annotations
+
+import atexit
+import math
+import os
+import shutil
+import tempfile
+
+EXPONENTS = (1.0, 1.5)
+"""Exponents the knob accepts: the linear law and the default (3/2)."""
+
+
+def fresh_cache() -> None:
+    """Compile numba kernels into a temporary cache directory (removed at exit), before any
+    is compiled: a patched global is then read by the compiler, not a cached kernel."""
+    cache = tempfile.mkdtemp(prefix="coinflight-law-")
+    atexit.register(shutil.rmtree, cache, True)
+    os.environ["NUMBA_CACHE_DIR"] = cache
+
+
+def damping_ratio(restitution: float, exponent: float) -> float:
+    """ζ for which the dimensionless law of exponent p restitutes with e (bisection on
+    :func:`coinflight.core.contact_phase.restitution_of`, which falls as ζ grows)."""
+    from coinflight.core import contact_phase as cp
+
+    if restitution >= 1.0:
+        return 0.0
+    lo, hi = 0.0, 1.0
+    while cp.restitution_of(hi, exponent) > restitution:
+        lo, hi = hi, 2.0 * hi
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        if cp.restitution_of(mid, exponent) > restitution:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def use_exponent(exponent: float) -> None:
+    """Make the contact phase's rim law F ∝ d0^p (module notes); call before any kernel of
+    :mod:`coinflight.core.contact_phase` is compiled, after :func:`fresh_cache`. p = 3/2 leaves
+    everything as it is."""
+    if exponent not in EXPONENTS:
+        raise ValueError(f"exponent must be one of {EXPONENTS}, got {exponent!r}")
+    if exponent == 1.5:
+        return
+    from numba import njit
+
+    from coinflight.core import contact_phase as cp
+    from coinflight.core.impact import _coupling, cross
+
+    basis = cp._tangent_basis
+    beta = 2.0 * (exponent + 1.0) / 5.0
+    scale = math.sqrt(2.0 * exponent / 3.0)
+
+    @njit(cache=True)
+    def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):  # type: ignore[no-untyped-def]
+        # The default's arc sums (contact_phase.rim_contact), the law changed where marked.
+        s, w = basis(n)
+        radius -= corner
+        hh -= corner
+        a = corner - z - sigma * hh * n[2]
+        b = radius * s
+        if a + b <= 0.0:
+            return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
+        phi = math.pi if a >= b else math.acos(-a / b)
+        sp = math.sin(phi)
+        cp_ = math.cos(phi)
+        i0 = 2.0 * phi
+        ic = 2.0 * sp
+        icc = phi + sp * cp_
+        elastic = stiffness * (a * i0 + b * ic)
+        moment = stiffness * (a * ic + b * icc)
+        ua = 0.5 * stiffness * (a * a * i0 + 2.0 * a * b * ic + b * b * icc)
+        if ua <= 0.0:
+            return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
+        # Changed: U_p = C U_a^β, its force and moment λ times the arc's (module notes).
+        k_arc = 8.0 * math.sqrt(2.0) * stiffness / (15.0 * math.sqrt(radius))
+        c = 2.0 * math.pi * stiffness / ((exponent + 1.0) * k_arc**beta)
+        energy = c * ua**beta
+        lam = c * beta * ua ** (beta - 1.0)
+        elastic *= lam
+        moment *= lam
+        wn = cross(omega, n)
+        ww = cross(omega, w)
+        a0 = -(v[2] + sigma * hh * wn[2])
+        a1 = -radius * ww[2]
+        k = radius * sp / phi
+        centroid = (
+            sigma * hh * n[0] + k * w[0],
+            sigma * hh * n[1] + k * w[1],
+            sigma * hh * n[2] + k * w[2] - corner,
+        )
+        up = (0.0, 0.0, 1.0)
+        m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
+        # Changed: the damper times sqrt((2p/3) λ) (ζ is ζ_p, from the record).
+        gamma = scale * math.sqrt(lam) * zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
+        force = elastic + gamma * (a0 * i0 + a1 * ic)
+        if force <= 0.0:
+            return 0.0, (0.0, 0.0, 0.0), 0.0, energy
+        moment += gamma * (a0 * ic + a1 * icc)
+        kq = radius * moment / force
+        q = (
+            sigma * hh * n[0] + kq * w[0],
+            sigma * hh * n[1] + kq * w[1],
+            sigma * hh * n[2] + kq * w[2] - corner,
+        )
+        ratio = sp / phi
+        pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
+        return force, q, pivot, energy
+
+    cp.rim_contact = rim_contact
