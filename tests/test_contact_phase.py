@@ -145,23 +145,37 @@ def test_rim_impact_of_a_coin_restitutes_with_e(e):
 
 def test_no_dissipation_conserves_energy_and_momenta():
     # e = 1, μ = 0, no resistances: a tilted, spinning coin dropped on its rim bounces and
-    # rocks for half a second. Energy to 1e-4 (the step control's error over ~1000 steps and a
-    # dozen contacts); L_z and L·n are conserved by the frictionless contact (no torque about
-    # the vertical or the normal): L_z, a linear invariant of the Runge-Kutta steps, to
+    # rocks for half a second. Energy to the step control's error over ~1000 steps and a dozen
+    # contacts: it drifts up by ~1e-4 of itself, a different amount for every drop (the
+    # motion is chaotic), so eight drops are checked, their median within 2e-4 and each within
+    # 5e-4 (measured on 40 such drops, seed 5: median 1.08e-4, largest 2.3e-4; before the
+    # stepper kept first-same-as-last across n's renormalisation, 1.18e-4 and 4.3e-4. This test
+    # had asserted 1e-4 on the first drop alone, which the code before met there, 6.1e-5, and
+    # missed on 28 of the 40). L_z and L·n are conserved by the frictionless contact (no torque
+    # about the vertical or the normal): L_z, a linear invariant of the Runge-Kutta steps, to
     # rounding, L·n (quadratic) to the step control's errors (RTOL = 1e-7 a step; 1e-6 of
     # |L| allowed over the run).
     c = _contact(NICKEL, e=1.0, mu=0.0)
-    i1, i3 = (float(x) for x in NICKEL.moments)
-    y = _state(NICKEL, 0.3, omega_lab=(0.2, 0.1, 30.0), lift=0.002)
+    i1, _ = (float(x) for x in NICKEL.moments)
     kappa = cp.stiffness_of(c)
-    e0, ln0, lz0 = cp.energy(y, c, kappa), y[4:7] @ y[7:10], y[9]
-    t, steps, _ = cp.advance(y, 0.5, c)
-    assert t == pytest.approx(0.5)
-    assert cp.energy(y, c, kappa) == pytest.approx(e0, rel=1e-4)
-    scale = i1 * 30.0
-    assert abs(y[4:7] @ y[7:10] - ln0) < 10 * cp.RTOL * scale
-    assert abs(y[9] - lz0) < 1e-12 * scale
-    del i3, steps
+    rng = np.random.default_rng(5)
+    drifts = []
+    for k in range(8):
+        if k == 0:
+            tilt, spin = 0.3, (0.2, 0.1, 30.0)
+        else:
+            tilt = rng.uniform(0.2, 0.6)
+            spin = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(20.0, 40.0))
+        y = _state(NICKEL, tilt, omega_lab=spin, lift=0.002)
+        e0, ln0, lz0 = cp.energy(y, c, kappa), y[4:7] @ y[7:10], y[9]
+        t, _, _ = cp.advance(y, 0.5, c)
+        assert t == pytest.approx(0.5)
+        drifts.append(abs(cp.energy(y, c, kappa) - e0) / e0)
+        scale = i1 * spin[2]
+        assert abs(y[4:7] @ y[7:10] - ln0) < 10 * cp.RTOL * scale
+        assert abs(y[9] - lz0) < 1e-12 * scale
+    assert np.median(drifts) < 2e-4
+    assert max(drifts) < 5e-4
 
 
 @pytest.mark.parametrize("e", [0.2, 0.7])
