@@ -7,16 +7,46 @@ that motion on until the coin's energy can no longer take it over the barrier be
 and the next one, and says which well that is.
 
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
-planar rocking of :func:`coinflight.core.bounce.rock`). Speed, ``python
-benchmarks/bench_bounce.py --contact-rates 600`` (600 vigorous tosses of a US nickel, medians of
-3, the shared 2-core machine at load 4.4-7.6, 15:35 UTC), this module against the code before
-:func:`tabulated_damping_ratio` in the same minutes: carried to rest through this phase **287**
-landings a second (before 166) on one surface (e = 0.5, μ = 0.3), **171** (before 34) with each
-toss's own e ~ U(0.2, 0.8) and μ ~ U(0.1, 0.6); the rocking ending 29,900 and 22,100 (before
-16,200 and 18,700: the load), first contact ~700,000. A second such run at load 8 (16:08 UTC):
-143 → 224 on one surface (the load again), 26 → 134 with each toss's own e and μ; so with a
-toss's own e the phase now costs what it costs on one surface (60 % of its rate in both runs,
-18-20 % before). Issue 11 asks for 50,000.
+planar rocking of :func:`coinflight.core.bounce.rock`).
+
+**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). ``python
+benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (300 vigorous tosses of a US
+nickel, e = 0.5, μ = 0.3; three rounds alternated with the code before the changes below,
+main at 6061499, run in a subprocess; medians; the shared 2-core machine at load 10.6,
+2026-11-23 23:56 UTC): carried to rest **783 landings a second against 562 before** (1.39×;
+per CPU second in one thread 1,426 against 1,125, 1.27×), and with each toss's own
+e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) 664 against 505 (1.32×; one thread 1,331 against 1,013,
+1.31×); faces differing on 0 and 1 of the 300 tosses, statuses on none. Quiet (load 1.7,
+23:18 UTC) the code before did 2,185 a second; this code was not measured quiet. So 50,000 is
+still ~20× away.
+
+Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5): 213 are handed to
+this phase, which takes 98 % of the landings' CPU time; a handed toss takes a mean 823 steps
+(median 605, largest 3,725; the 10 % longest hold 28 % of the steps): on one rim 73 % of the
+steps (59 % of the simulated time, a mean step of 0.37 ms), hops 20 % (36 %, 0.85 ms:
+:data:`MAX_STEP` holds them), on both rims 7 % (5 %), on the face ~0. A step was ~1.45 μs of
+CPU (load 8-12): 12 % of the trial steps rejected (20,865 against 175,365 accepted) and a
+seventh evaluation of the derivative after n's renormalisation in 96 % of the steps made ~7.7
+evaluations per accepted step, ~90 ns each in contact (~50 ns in flight); the energy test
+after each step ~210 ns (both rims' spring sums); the stepper's own arithmetic ~150 ns
+(measured with a trivial derivative); :func:`upright_decided` ~30 ns. Nothing is allocated on
+the heap per step (the stage arrays once per toss, vectors as tuples). Now a step is ~1.1 μs
+(1.3×): the energy test skips the springs when the rest of the energy already reaches the
+barrier (:func:`below_barrier`, decisions identical to the bit), the stepper keeps first same
+as last across the renormalisation (six evaluations a step), the derivative builds the tangent
+basis once for both rims. Before and after on 3 × 2,000 tosses (e 0.5, μ 0.3; e 0.5, μ 0.6;
+each toss its own e, μ): faces differ on 6, 0 and 3, statuses on none; a change of the inputs
+by one ulp (ωx) flips 2, 0 and 6 faces (1 status) of the code before: the changes move
+outcomes no more than rounding does. Tried and not kept: a PI step-size control (β = 0.04:
+38 % fewer rejections, 6 % more steps, no faster); numba's "numpy" error model (no change).
+The batch's threads take the contact ending's tosses one at a time
+(:func:`coinflight.core.bounce.land`; equal blocks of these 300 tosses leave the larger 3.4 %
+over half, more when another process holds a core). What is left is the number of steps, held
+by the stiffness of the compliant contact and of the regularised friction (the explicit
+stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
+the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
+steps), not a cheaper step. The figures below, to "Upright rollers", are from before the
+upright decision and these changes.
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
@@ -24,10 +54,11 @@ phase (their whole energy is above the barrier when the bounces die out), bringi
 2.5 barriers (m g ρ − m g h/2) above a face at rest: horizontal translation 0.25-0.37, spin
 about n 0.03, tumbling 0.8, vertical motion and height 0.9 (the coin is tilted on its rim).
 A handed toss is integrated for a median 0.30 s of simulated time and ~760 steps (quartiles
-240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs of CPU each: the 10 % longest tosses take 61 %
-of the steps. By what the coin is doing (:func:`contact_mode`): on both rims (upright in its
-edge band: coins rolling in the sharp rim's edge well for up to ~9 s until the rolling
-resistance stops them) 75 % of the simulated time and 67 % of the steps; on one rim point
+240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs each as measured then (~1.45 μs of CPU before
+the changes above, ~1.1 μs after them): the 10 % longest tosses take 61 % of the steps. By what
+the coin is doing (:func:`contact_mode`): on both rims (upright in its edge band: coins rolling
+in the sharp rim's edge well for up to ~9 s until the rolling resistance stops them) 75 % of
+the simulated time and 67 % of the steps; on one rim point
 (rolling, sliding, rocking) 17 % and 27 %; hops 7 % and 5 %; lying on the face ~0 %, so a
 sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
 contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
