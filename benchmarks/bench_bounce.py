@@ -5,7 +5,7 @@
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
     python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
-    python benchmarks/bench_bounce.py --contact-rates N --old-src DIR  # + another implementation
+    python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
