@@ -16,7 +16,11 @@ main at 6061499, run in a subprocess; medians; the shared 2-core machine at load
 2026-11-23 23:56 UTC): carried to rest **783 landings a second against 562 before** (1.39×;
 per CPU second in one thread 1,426 against 1,125, 1.27×), and with each toss's own
 e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) 664 against 505 (1.32×; one thread 1,331 against 1,013,
-1.31×); faces differing on 0 and 1 of the 300 tosses, statuses on none. Quiet (load 1.7,
+1.31×); faces differing on 0 and 1 of the 300 tosses, statuses on none. A second run,
+``--contact-rates 600`` (00:31 UTC, load 9.8 falling to 6.1 during it): 1,184 against 1,098
+(1.08×) and 1,331 against 1,027 (1.30×), per CPU second in one thread 1.24× and 1.36×; faces
+differing on 1 and 1 of 600. The wall-clock ratios move with the load, the one-thread ratios
+(1.24-1.36×) less. Quiet (load 1.7,
 23:18 UTC) the code before did 2,185 a second; this code was not measured quiet. So 50,000 is
 still ~20× away.
 
