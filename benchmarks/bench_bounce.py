@@ -5,6 +5,7 @@
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
     python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
+    python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
@@ -131,35 +132,154 @@ def nickel_edge(n: int) -> None:
         )
 
 
-def contact_rates(n: int, repeats: int = 3) -> None:
+CONTACT_CASES = ("contact ending", "contact ending, each toss its own e, μ")
+"""The cases :func:`contact_rates` times against another implementation (``--old-src``)."""
+
+OLD_CONTACT = """
+import json, sys, time
+import numpy as np
+from coinflight import Coin
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import land
+a = json.loads(sys.argv[1])
+rng = np.random.default_rng(a["seed"])
+n = a["n"]
+omega = np.column_stack([rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n),
+                         rng.uniform(-30.0, 30.0, n)])
+v0 = rng.uniform(1.5, 3.0, n)
+rng = np.random.default_rng(7)
+mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+coin = Coin.preset("us-nickel")
+contact = Surface("table", 0.8, 0.5, 0.3, ending="contact")
+cases = {
+    "contact ending": lambda p: land(coin, omega, v0, 1.0, 9.81, contact, parallel=p),
+    "contact ending, each toss its own e, μ": lambda p: land(
+        coin, omega, v0, 1.0, 9.81, contact, contact=mixture, parallel=p),
+}
+for p in (True, False):  # compile or load the cache
+    land(coin, omega[:20], v0[:20], 1.0, 9.81, contact, parallel=p)
+    land(coin, omega[:20], v0[:20], 1.0, 9.81, contact, parallel=p,
+         contact={k: v[:20] for k, v in mixture.items()})
+out, arrays = {"wall": {}, "cpu": {}}, {}
+for k, f in cases.items():
+    t0 = time.perf_counter(); r = f(True); out["wall"][k] = n / (time.perf_counter() - t0)
+    t0 = time.process_time(); f(False); out["cpu"][k] = n / (time.process_time() - t0)
+    arrays[k + " face"], arrays[k + " status"] = r.face, r.status
+if a["save"]:
+    np.savez(a["save"], **arrays)
+print(json.dumps(out))
+"""
+"""One round of :data:`CONTACT_CASES` in another implementation (run with ``python -c``, its
+``src`` on PYTHONPATH): the same tosses as :func:`tosses` and :func:`contact_rates`."""
+
+
+def _other_contact(old_src: str, n: int, cache: str, save: str = "") -> dict:
+    """Rates of :data:`OLD_CONTACT` in a subprocess (its numba cache in ``cache``, not in its
+    sources): ``{"wall": tosses a second of wall time (all threads), "cpu": per CPU second in
+    one thread (parallel=False)}``, each a dict by case; with ``save`` its faces and statuses
+    written there (.npz)."""
+    import json
+    import subprocess
+    import sys
+
+    payload = json.dumps({"n": n, "seed": 2026, "save": save})
+    env = dict(os.environ, PYTHONPATH=old_src, NUMBA_CACHE_DIR=cache)
+    done = subprocess.run(
+        [sys.executable, "-c", OLD_CONTACT, payload],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    return dict(json.loads(done.stdout.strip().splitlines()[-1]))
+
+
+def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
+    """Tosses per CPU second of ``fn`` (one thread: on a shared machine the wall clock also
+    counts the time other processes hold the cores)."""
+    t0 = time.process_time()
+    fn()
+    return n / (time.process_time() - t0)
+
+
+def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     """Tosses a second carried to rest with the 3-D contact ending against the rocking ending
     and first contact, in one run (medians), on one surface (e = 0.5, μ = 0.3) and with each
-    toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); and where the contact ending decides them."""
+    toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); and where the contact ending decides them.
+
+    With ``old_src`` (the ``src`` folder of another coinflight, e.g. a checkout of main) the
+    contact ending's cases (:data:`CONTACT_CASES`) are timed in that implementation too, in a
+    subprocess, one round of it in each round of these (so the ratio is taken over the same
+    minutes: medians of the rounds), then once each per CPU second in one thread; and the faces
+    and statuses of the same tosses are compared between the two."""
+    import tempfile
+
     omega, v0 = tosses(n)
     contact = Surface("table", DROP, 0.5, 0.3, ending="contact")
     rng = np.random.default_rng(7)
     mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
-    land(COIN, omega[:20], v0[:20], 1.0, G, contact)  # compile (or load the cache)
-    land(
-        COIN, omega[:20], v0[:20], 1.0, G, contact, contact={k: v[:20] for k, v in mixture.items()}
-    )
-    rates = {
-        "contact ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, contact), n, repeats),
-        "rocking ending": median_rate(lambda: land(COIN, omega, v0, 1.0, G, SURFACE), n, repeats),
-        "first contact": median_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0), n, repeats
+    for parallel in (True, False):  # compile (or load the cache)
+        land(COIN, omega[:20], v0[:20], 1.0, G, contact, parallel=parallel)
+        part = {k: v[:20] for k, v in mixture.items()}
+        land(COIN, omega[:20], v0[:20], 1.0, G, contact, contact=part, parallel=parallel)
+    cases = {
+        "contact ending": lambda: land(COIN, omega, v0, 1.0, G, contact),
+        "rocking ending": lambda: land(COIN, omega, v0, 1.0, G, SURFACE),
+        "first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0),
+        "contact ending, each toss its own e, μ": lambda: land(
+            COIN, omega, v0, 1.0, G, contact, contact=mixture
         ),
-        "contact ending, each toss its own e, μ": median_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, contact, contact=mixture), n, repeats
-        ),
-        "rocking ending, each toss its own e, μ": median_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, contact=mixture), n, repeats
+        "rocking ending, each toss its own e, μ": lambda: land(
+            COIN, omega, v0, 1.0, G, SURFACE, contact=mixture
         ),
     }
+    own = {
+        "contact ending": lambda p: land(COIN, omega, v0, 1.0, G, contact, parallel=p),
+        "contact ending, each toss its own e, μ": lambda p: land(
+            COIN, omega, v0, 1.0, G, contact, contact=mixture, parallel=p
+        ),
+    }
+    load_before = os.getloadavg()
+    times: dict[str, list[float]] = {name: [] for name in cases}
+    cpu: dict[str, list[float]] = {name: [] for name in CONTACT_CASES}
+    other: dict[str, dict[str, list[float]]] = {"wall": {}, "cpu": {}}
+    with tempfile.TemporaryDirectory() as cache:
+        saved = os.path.join(cache, "other.npz")
+        for r in range(repeats):
+            for name, fn in cases.items():
+                t0 = time.perf_counter()
+                fn()
+                times[name].append(time.perf_counter() - t0)
+            if old_src:  # one round of the other implementation in each round of these
+                for name in CONTACT_CASES:
+                    cpu[name].append(cpu_rate(lambda f=own[name]: f(False), n))
+                rates = _other_contact(old_src, n, cache, save=saved if r == 0 else "")
+                for kind, by_case in rates.items():
+                    for name, rate in by_case.items():
+                        other[kind].setdefault(name, []).append(rate)
+        old_out = dict(np.load(saved)) if old_src else {}
+    rates = {name: n / statistics.median(ts) for name, ts in times.items()}
     first = rates["first contact"]
-    print(f"{n:,} vigorous tosses, e = 0.5, μ = 0.3, median of {repeats}, load {os.getloadavg()}")
+    print(f"{n:,} vigorous tosses, e = 0.5, μ = 0.3, median of {repeats}, load {load_before}")
     for name, rate in rates.items():
         print(f"  {name}: {rate:,.0f} tosses/s ({rate / first:.2e} of first contact)")
+    if old_src:
+        print(f"  other implementation ({old_src}), same tosses, in the same rounds (medians):")
+        for name in CONTACT_CASES:
+            that = statistics.median(other["wall"][name])
+            here_cpu = statistics.median(cpu[name])
+            that_cpu = statistics.median(other["cpu"][name])
+            out = own[name](True)
+            differ = int(np.count_nonzero(out.face != old_out[name + " face"]))
+            status = int(np.count_nonzero(out.status != old_out[name + " status"]))
+            print(
+                f"    {name}: {that:,.0f} tosses/s (this one / other = "
+                f"{rates[name] / that:.2f}); one thread {here_cpu:,.0f} against "
+                f"{that_cpu:,.0f} per CPU second (this one / other = "
+                f"{here_cpu / that_cpu:.2f}); faces differing {differ} of {n}, statuses "
+                f"{status}"
+            )
+    print(f"  load average {load_before[0]:.2f} before, {os.getloadavg()[0]:.2f} after")
     for e, mu in ((0.5, 0.3), (0.2, 0.5), (0.8, 0.1)):
         out = land(COIN, omega, v0, 1.0, G, Surface("table", DROP, e, mu, ending="contact"))
         share = np.bincount(out.status, minlength=len(Status)) / n
@@ -328,6 +448,7 @@ def main() -> None:
     parser.add_argument("--upright", type=int, default=0, metavar="N")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--upright-child", nargs=3, metavar=("SETTING", "N", "OUT"))
+    parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
     args = parser.parse_args()
     if args.upright_child:
         setting, count, out = args.upright_child
@@ -337,7 +458,7 @@ def main() -> None:
         upright_decision(args.upright, args.rounds)
         return
     if args.contact_rates:
-        contact_rates(args.contact_rates)
+        contact_rates(args.contact_rates, args.rounds, args.old_src)
         return
     if args.contact:
         contact_phase(args.contact)

@@ -145,23 +145,37 @@ def test_rim_impact_of_a_coin_restitutes_with_e(e):
 
 def test_no_dissipation_conserves_energy_and_momenta():
     # e = 1, μ = 0, no resistances: a tilted, spinning coin dropped on its rim bounces and
-    # rocks for half a second. Energy to 1e-4 (the step control's error over ~1000 steps and a
-    # dozen contacts); L_z and L·n are conserved by the frictionless contact (no torque about
-    # the vertical or the normal): L_z, a linear invariant of the Runge-Kutta steps, to
+    # rocks for half a second. Energy to the step control's error over ~1000 steps and a dozen
+    # contacts: it drifts up by ~1e-4 of itself, a different amount for every drop (the
+    # motion is chaotic), so eight drops are checked, their median within 2e-4 and each within
+    # 5e-4 (measured on 40 such drops, seed 5: median 1.08e-4, largest 2.3e-4; before the
+    # stepper kept first-same-as-last across n's renormalisation, 1.18e-4 and 4.3e-4. This test
+    # had asserted 1e-4 on the first drop alone, which the code before met there, 6.1e-5, and
+    # missed on 28 of the 40). L_z and L·n are conserved by the frictionless contact (no torque
+    # about the vertical or the normal): L_z, a linear invariant of the Runge-Kutta steps, to
     # rounding, L·n (quadratic) to the step control's errors (RTOL = 1e-7 a step; 1e-6 of
     # |L| allowed over the run).
     c = _contact(NICKEL, e=1.0, mu=0.0)
-    i1, i3 = (float(x) for x in NICKEL.moments)
-    y = _state(NICKEL, 0.3, omega_lab=(0.2, 0.1, 30.0), lift=0.002)
+    i1, _ = (float(x) for x in NICKEL.moments)
     kappa = cp.stiffness_of(c)
-    e0, ln0, lz0 = cp.energy(y, c, kappa), y[4:7] @ y[7:10], y[9]
-    t, steps, _ = cp.advance(y, 0.5, c)
-    assert t == pytest.approx(0.5)
-    assert cp.energy(y, c, kappa) == pytest.approx(e0, rel=1e-4)
-    scale = i1 * 30.0
-    assert abs(y[4:7] @ y[7:10] - ln0) < 10 * cp.RTOL * scale
-    assert abs(y[9] - lz0) < 1e-12 * scale
-    del i3, steps
+    rng = np.random.default_rng(5)
+    drifts = []
+    for k in range(8):
+        if k == 0:
+            tilt, spin = 0.3, (0.2, 0.1, 30.0)
+        else:
+            tilt = rng.uniform(0.2, 0.6)
+            spin = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(20.0, 40.0))
+        y = _state(NICKEL, tilt, omega_lab=spin, lift=0.002)
+        e0, ln0, lz0 = cp.energy(y, c, kappa), y[4:7] @ y[7:10], y[9]
+        t, _, _ = cp.advance(y, 0.5, c)
+        assert t == pytest.approx(0.5)
+        drifts.append(abs(cp.energy(y, c, kappa) - e0) / e0)
+        scale = i1 * spin[2]
+        assert abs(y[4:7] @ y[7:10] - ln0) < 10 * cp.RTOL * scale
+        assert abs(y[9] - lz0) < 1e-12 * scale
+    assert np.median(drifts) < 2e-4
+    assert max(drifts) < 5e-4
 
 
 @pytest.mark.parametrize("e", [0.2, 0.7])
@@ -753,3 +767,70 @@ def test_decided_upright_rollers_carried_on_end_on_edge_at_rest():
         if decided == 30:
             break
     assert decided == 30
+
+
+def test_energy_test_shortcut_decides_as_the_whole_energy():
+    # below_barrier (the test after every step) skips the springs' energies when the rest of
+    # the energy already reaches the barrier; it must decide as free_energy's free < barrier on
+    # every state, with friction (barrier m g ρ) and frictionless (the 3-D corner barrier).
+    # States around the barrier, pressed into the table by up to 20 μm and tilted every way,
+    # so that both the shortcut and the full sum are taken and both answers occur.
+    rng = np.random.default_rng(11)
+    i1, _ = (float(x) for x in NICKEL.moments)
+    taken = {"shortcut": 0, "full": 0, "below": 0, "above": 0}
+    for mu in (0.3, 0.0):
+        c = _contact(NICKEL, e=0.5, mu=mu)
+        kappa = cp.stiffness_of(c)
+        for _ in range(4000):
+            tilt = rng.uniform(0.0, math.pi)
+            speed = rng.uniform(0.0, 0.3) * rng.choice([0.0, 1.0])
+            spin = rng.uniform(-20.0, 20.0, 3) * rng.choice([0.0, 0.3, 1.0])
+            y = _state(NICKEL, tilt, v=rng.normal(0.0, speed, 3), omega_lab=spin)
+            y[0] -= rng.uniform(0.0, 2e-5)
+            free, barrier = cp.free_energy(y, c, kappa)
+            decided = cp.below_barrier(y, c, kappa)
+            assert decided == (free < barrier)
+            motion = cp._motion_energy(y, c)
+            if mu == 0.0:
+                motion -= 0.5 * c.mass * (y[1] ** 2 + y[2] ** 2)
+            taken["shortcut" if motion >= barrier else "full"] += 1
+            taken["below" if decided else "above"] += 1
+    assert min(taken.values()) > 100, taken
+    del i1
+
+
+@pytest.mark.parametrize(
+    ("tilt", "v", "omega"),
+    [
+        (0.8, (0.2, 0.0, -0.2), (3.0, 10.0, 15.0)),  # one rim, sliding and spinning
+        (1.4, (0.1, 0.05, -0.1), (0.0, 0.0, 8.0)),  # near the edge band, yawing
+        (1.55, (0.3, 0.0, 0.0), (0.0, -25.0, 2.0)),  # upright, rolling
+    ],
+)
+def test_integration_agrees_with_a_tight_reference_of_the_same_equations(tilt, v, omega):
+    # The stepper (Dormand-Prince 5(4) at RTOL, first same as last across n's renormalisation,
+    # the derivative of _rim) against SciPy's DOP853 at rtol 1e-12 on the same right-hand side
+    # (cp._derivative), 20 ms from a coin touching the table: every component within 1e-3 of
+    # the step control's scales (the largest difference measured 2e-5 here, up to 3.6e-4 on a
+    # coin dropped flat 1 mm: the contact's kinks, its onset and the d^(3/2) law, lower the
+    # order; the code before the first-same-as-last change differed from the reference alike).
+    from scipy.integrate import solve_ivp
+
+    c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4)
+    kappa, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    i1, _ = (float(x) for x in NICKEL.moments)
+    y0 = _state(NICKEL, tilt, v=v, omega_lab=omega)
+
+    def rhs(_t, y):
+        out = np.empty(10)
+        cp._derivative(np.ascontiguousarray(y), out, c, kappa, zeta)
+        return out
+
+    speed = max(math.sqrt(G * c.reach), 0.01)
+    scale = np.array([c.reach, *(3 * [speed]), 1.0, 1.0, 1.0, *(3 * [i1 * speed / c.reach])])
+    y = y0.copy()
+    t, steps, _ = cp.advance(y, 0.02, c)
+    assert t == pytest.approx(0.02) and steps > 10
+    ref = solve_ivp(rhs, (0.0, 0.02), y0, method="DOP853", rtol=1e-12, atol=1e-14 * scale)
+    assert ref.success
+    assert np.max(np.abs(y - ref.y[:, -1]) / scale) < 1e-3

@@ -7,16 +7,50 @@ that motion on until the coin's energy can no longer take it over the barrier be
 and the next one, and says which well that is.
 
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
-planar rocking of :func:`coinflight.core.bounce.rock`). Speed, ``python
-benchmarks/bench_bounce.py --contact-rates 600`` (600 vigorous tosses of a US nickel, medians of
-3, the shared 2-core machine at load 4.4-7.6, 15:35 UTC), this module against the code before
-:func:`tabulated_damping_ratio` in the same minutes: carried to rest through this phase **287**
-landings a second (before 166) on one surface (e = 0.5, μ = 0.3), **171** (before 34) with each
-toss's own e ~ U(0.2, 0.8) and μ ~ U(0.1, 0.6); the rocking ending 29,900 and 22,100 (before
-16,200 and 18,700: the load), first contact ~700,000. A second such run at load 8 (16:08 UTC):
-143 → 224 on one surface (the load again), 26 → 134 with each toss's own e and μ; so with a
-toss's own e the phase now costs what it costs on one surface (60 % of its rate in both runs,
-18-20 % before). Issue 11 asks for 50,000.
+planar rocking of :func:`coinflight.core.bounce.rock`).
+
+**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). ``python
+benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (300 vigorous tosses of a US
+nickel, e = 0.5, μ = 0.3; three rounds alternated with the code before the changes below,
+main at 6061499, run in a subprocess; medians; the shared 2-core machine at load 10.6,
+2026-11-23 23:56 UTC): carried to rest **783 landings a second against 562 before** (1.39×;
+per CPU second in one thread 1,426 against 1,125, 1.27×), and with each toss's own
+e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) 664 against 505 (1.32×; one thread 1,331 against 1,013,
+1.31×); faces differing on 0 and 1 of the 300 tosses, statuses on none. A second run,
+``--contact-rates 600`` (00:31 UTC, load 9.8 falling to 6.1 during it): 1,184 against 1,098
+(1.08×) and 1,331 against 1,027 (1.30×), per CPU second in one thread 1.24× and 1.36×; faces
+differing on 1 and 1 of 600. The wall-clock ratios move with the load, the one-thread ratios
+(1.24-1.36×) less. Quiet (load 1.7,
+23:18 UTC) the code before did 2,185 a second; this code was not measured quiet. So 50,000 is
+still ~20× away.
+
+Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5): 213 are handed to
+this phase, which takes 98 % of the landings' CPU time; a handed toss takes a mean 823 steps
+(median 605, largest 3,725; the 10 % longest hold 28 % of the steps): on one rim 73 % of the
+steps (59 % of the simulated time, a mean step of 0.37 ms), hops 20 % (36 %, 0.85 ms:
+:data:`MAX_STEP` holds them), on both rims 7 % (5 %), on the face ~0. A step was ~1.45 μs of
+CPU (load 8-12): 12 % of the trial steps rejected (20,865 against 175,365 accepted) and a
+seventh evaluation of the derivative after n's renormalisation in 96 % of the steps made ~7.7
+evaluations per accepted step, ~90 ns each in contact (~50 ns in flight); the energy test
+after each step ~210 ns (both rims' spring sums); the stepper's own arithmetic ~150 ns
+(measured with a trivial derivative); :func:`upright_decided` ~30 ns. Nothing is allocated on
+the heap per step (the stage arrays once per toss, vectors as tuples). Now a step is ~1.1 μs
+(1.3×): the energy test skips the springs when the rest of the energy already reaches the
+barrier (:func:`below_barrier`, decisions identical to the bit), the stepper keeps first same
+as last across the renormalisation (six evaluations a step), the derivative builds the tangent
+basis once for both rims. Before and after on 3 × 2,000 tosses (e 0.5, μ 0.3; e 0.5, μ 0.6;
+each toss its own e, μ): faces differ on 6, 0 and 3, statuses on none; a change of the inputs
+by one ulp (ωx) flips 2, 0 and 6 faces (1 status) of the code before: the changes move
+outcomes no more than rounding does. Tried and not kept: a PI step-size control (β = 0.04:
+38 % fewer rejections, 6 % more steps, no faster); numba's "numpy" error model (no change).
+The batch's threads take the contact ending's tosses one at a time
+(:func:`coinflight.core.bounce.land`; equal blocks of these 300 tosses leave the larger 3.4 %
+over half, more when another process holds a core). What is left is the number of steps, held
+by the stiffness of the compliant contact and of the regularised friction (the explicit
+stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
+the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
+steps), not a cheaper step. The figures below, to "Upright rollers", are from before the
+upright decision and these changes.
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
@@ -24,10 +58,11 @@ phase (their whole energy is above the barrier when the bounces die out), bringi
 2.5 barriers (m g ρ − m g h/2) above a face at rest: horizontal translation 0.25-0.37, spin
 about n 0.03, tumbling 0.8, vertical motion and height 0.9 (the coin is tilted on its rim).
 A handed toss is integrated for a median 0.30 s of simulated time and ~760 steps (quartiles
-240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs of CPU each: the 10 % longest tosses take 61 %
-of the steps. By what the coin is doing (:func:`contact_mode`): on both rims (upright in its
-edge band: coins rolling in the sharp rim's edge well for up to ~9 s until the rolling
-resistance stops them) 75 % of the simulated time and 67 % of the steps; on one rim point
+240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs each as measured then (~1.45 μs of CPU before
+the changes above, ~1.1 μs after them): the 10 % longest tosses take 61 % of the steps. By what
+the coin is doing (:func:`contact_mode`): on both rims (upright in its edge band: coins rolling
+in the sharp rim's edge well for up to ~9 s until the rolling resistance stops them) 75 % of
+the simulated time and 67 % of the steps; on one rim point
 (rolling, sliding, rocking) 17 % and 27 %; hops 7 % and 5 %; lying on the face ~0 %, so a
 sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
 contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
@@ -401,15 +436,27 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         Elastic energy of the arc, κ ∫ d²/2 dφ, J.
     """
     s, w = _tangent_basis(n)
+    return _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner)
+
+
+@njit(cache=True)
+def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):
+    """:func:`rim_contact` with the coin's tangent basis (s, ŵ) of :func:`_tangent_basis` given
+    (it depends on n alone: :func:`_derivative` computes it once for both rims). The arc's
+    half-angle φ* = arccos(−A/B), sin φ* = sqrt((1 − cos φ*)(1 + cos φ*)) (accurate for a
+    short arc, where 1 − cos² φ* would cancel)."""
     radius -= corner
     hh -= corner
     a = corner - z - sigma * hh * n[2]
     b = radius * s
     if a + b <= 0.0:
         return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
-    phi = math.pi if a >= b else math.acos(-a / b)
-    sp = math.sin(phi)
-    cp = math.cos(phi)
+    if a >= b:
+        phi, sp, cp = math.pi, 0.0, -1.0
+    else:
+        cp = -a / b
+        phi = math.acos(cp)
+        sp = math.sqrt((1.0 - cp) * (1.0 + cp))
     i0 = 2.0 * phi  # ∫ dφ over the arc
     ic = 2.0 * sp  # ∫ cos φ dφ
     icc = phi + sp * cp  # ∫ cos² φ dφ
@@ -461,9 +508,24 @@ def _derivative(y, out, c, stiffness, zeta):
     tx, ty, tz = 0.0, 0.0, 0.0
     # The lower rim first: the same sums, in the same order, for the mirror toss (n → −n).
     lower = -1.0 if n[2] >= 0.0 else 1.0
+    s, w = _tangent_basis(n)
     for sigma in (lower, -lower):
-        fn, q, rt, _ = rim_contact(
-            sigma, y[0], v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, c.corner_radius
+        fn, q, rt, _ = _rim(
+            sigma,
+            y[0],
+            v,
+            n,
+            omega,
+            s,
+            w,
+            radius,
+            hh,
+            mass,
+            i1,
+            i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
         )
         if fn <= 0.0:
             continue
@@ -507,19 +569,38 @@ def _derivative(y, out, c, stiffness, zeta):
 @njit(cache=True)
 def energy(y, c, stiffness):
     """Mechanical energy of the state y = (z, v, n, L): ½ m v² + ½ L·ω + m g z + the springs', J."""
+    return _with_springs(_motion_energy(y, c), y, c, stiffness)
+
+
+@njit(cache=True)
+def _motion_energy(y, c):
+    """½ m v² + ½ L·ω + m g z of the state y, J: :func:`energy` without the springs'."""
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
     lm = (y[7], y[8], y[9])
     omega = angular_velocity(lm, n, c.i1, c.i3)
-    e = 0.5 * c.mass * dot(v, v) + 0.5 * dot(lm, omega) + c.mass * c.g * y[0]
+    return 0.5 * c.mass * dot(v, v) + 0.5 * dot(lm, omega) + c.mass * c.g * y[0]
+
+
+@njit(cache=True)
+def _with_springs(e, y, c, stiffness):
+    """e plus the elastic energy of both rims' arcs (:func:`rim_contact`), added in the order of
+    :func:`energy`, J."""
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    omega = angular_velocity(lm, n, c.i1, c.i3)
     lower = -1.0 if n[2] >= 0.0 else 1.0
+    s, w = _tangent_basis(n)
     for sigma in (lower, -lower):
-        _, _, _, spring = rim_contact(
+        _, _, _, spring = _rim(
             sigma,
             y[0],
             v,
             n,
             omega,
+            s,
+            w,
             c.radius,
             c.half_thickness,
             c.mass,
@@ -540,16 +621,17 @@ def _corner_energy(ln, lz, nz, c):
 
 
 @njit(cache=True)
-def free_energy(y, c, stiffness):
-    """(energy that can lift the coin, barrier of its well), J (module notes, "ending").
+def _dissipative(c):
+    """Whether anything but the normal damping dissipates (friction or a resistance)."""
+    return c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0
 
-    With friction or resistances: the mechanical energy and m g ρ. Frictionless: the energy
-    less ½ m v_h² and the least energy on the corners of the well at the conserved L·n, L_z.
-    """
-    e = energy(y, c, stiffness)
-    if c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0:
-        return e, c.barrier
-    e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+
+@njit(cache=True)
+def _barrier(y, c):
+    """The barrier of :func:`free_energy`, J: m g ρ with friction or resistances, else the least
+    energy on the corners of the well at the conserved L·n, L_z."""
+    if _dissipative(c):
+        return c.barrier
     ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
     lz = y[9]
     nz = y[6]
@@ -557,8 +639,44 @@ def free_energy(y, c, stiffness):
     up = _corner_energy(ln, lz, corner, c)
     down = _corner_energy(ln, lz, -corner, c)
     if abs(nz) < corner:
-        return e, min(up, down)
-    return e, up if nz > 0.0 else down
+        return min(up, down)
+    return up if nz > 0.0 else down
+
+
+@njit(cache=True)
+def free_energy(y, c, stiffness):
+    """(energy that can lift the coin, barrier of its well), J (module notes, "ending").
+
+    With friction or resistances: the mechanical energy and m g ρ. Frictionless: the energy
+    less ½ m v_h² and the least energy on the corners of the well at the conserved L·n, L_z.
+    """
+    e = energy(y, c, stiffness)
+    if not _dissipative(c):
+        e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+    return e, _barrier(y, c)
+
+
+@njit(cache=True)
+def below_barrier(y, c, stiffness):
+    """``free < barrier`` of :func:`free_energy`, decided alike to the bit, but without the
+    springs' energy (two :func:`rim_contact` sums) when the rest of the energy already reaches
+    the barrier: the springs' energies are ≥ 0 and rounded addition and subtraction are
+    monotonic, so adding them cannot bring the sum below it. The test :func:`_integrate` makes
+    after every step (~10 % of a step's time before this shortcut)."""
+    e = _motion_energy(y, c)
+    barrier = _barrier(y, c)
+    dissipative = _dissipative(c)
+    if dissipative:
+        if e >= barrier:
+            return False
+    else:
+        horizontal = 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+        if e - horizontal >= barrier:
+            return False
+    e = _with_springs(e, y, c, stiffness)
+    if not dissipative:
+        e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+    return e < barrier
 
 
 SINGLE_RIM_DEPTH = 2.0 ** (2.0 / 3.0)
@@ -770,8 +888,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     probe = stats.shape[0] > modes
     for step in range(max_steps):
         if settle:
-            free, barrier = free_energy(y, c, stiffness)
-            if free < barrier:
+            if below_barrier(y, c, stiffness):
                 return t, step, True
             if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
                 y, c, stiffness, zeta, (max_steps - step) * BUDGET_STEP
@@ -842,8 +959,9 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
         y[4] /= size
         y[5] /= size
         y[6] /= size
-        if size != 1.0:
-            _derivative(y, k7, c, stiffness, zeta)
+        # First same as last: k7, the derivative at the step's end before n's renormalisation
+        # (a change of |n| by ~1e-16, below the step's error; re-evaluating it cost a seventh
+        # derivative in 96 % of the steps).
         for i in range(10):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
