@@ -84,7 +84,9 @@ the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e
 3.2e-7/2.0e-6 at 0.95, 4.4e-6/1.8e-5 at 2.2, 1.3e-4/3.4e-4 at 3.0. ``TURN_STEP`` = 2π/(2 +
 (√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
 phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
-of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
+of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses. Re-measured 2026-11-24
+after :func:`kink_integrals` was rewritten (node weights, roots tested without dividing; the
+same integrals up to rounding): every figure of ``--accuracy 40`` the same to two digits.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
@@ -100,14 +102,17 @@ coin approaches starts a safeguarded Newton iteration on the length of one step 
 step's start (a step of any length from a state is a smooth function of its length), to
 GAP_TOLERANCE.
 
-Cost (``python benchmarks/bench_air.py``'s tosses carried to rest, one thread, per toss, load
-~5): first flight to the table ~11 µs (66 steps of ~2.4 rad, ~170-250 ns each, ~100 ns of which
-are :func:`kink_integrals`), the impacts ~11 µs (8.8 of ~1.3 µs,
-:func:`coinflight.core.impact.impact`, 8.6 segments each on average), the bounce flights ~14 µs
-(7.8 flights: 3 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, plus ~6
-evaluations of the bound; the previous search, advancing by steps of the integrator, took 4.3
-advancing, 1.7 Newton and 1.4 lift steps a flight: the bounce flights took 81 steps a toss,
-now 53).
+Cost (``python benchmarks/bench_air.py --profile 20000``: cycle counts around the phases of a
+copy of :func:`land_one`, one thread, 2026-11-24, load ~6: 38.5 µs of CPU a toss carried to
+rest): the first flight 28 % (66.6 steps of ~2.4 rad, ~140 ns each, ~85 ns of which are
+:func:`kink_integrals`, ~60 of those its roots: a square root, a division, an arctangent and
+sign-dependent branches per kink), the bounce flights 34 % (7.8 a toss, 34.8 steps in all:
+3.0 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, ~80-200 ns a step,
+plus 7.1 evaluations of the gap's lower bound, 1.4 of them in :func:`lift`), the impacts 36 %
+(8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the ending 1 % (the
+rocking hand-off, 55 % of the tosses). The steps are allocation-free (tuples of scalars) and
+run on numba's threads, one toss per iteration. The impacts are those of the vacuum's landing:
+a toss carried to rest through air costs the flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
