@@ -4,6 +4,7 @@
     python benchmarks/bench_air.py --old-src /path/to/src   # + another implementation
     python benchmarks/bench_air.py --quick
     python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
+    python benchmarks/bench_air.py --profile 20000          # where a landing's time goes
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
 rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
@@ -25,6 +26,10 @@ and each air case is given as a ratio to its vacuum model timed in the same roun
 
 The load average is printed before and after: absolute rates on a shared machine vary with it.
 
+With ``--profile N`` only the shares of a landing carried to rest spent in its phases (first
+flight, bounce flights, impacts, endings, lifts), timed by the processor's cycle counter around
+each phase of a copy of :func:`coinflight.core.drag.land_one` in one thread (:func:`profile`).
+
 With ``--accuracy M`` only the times against DOP853 at rtol 1e-12 on the first M tosses are
 printed (:func:`accuracy`): the catch, the first contact, a bounce flight from the state after
 the reference's first impact, and the second contact; with ``--old-src`` the other
@@ -34,6 +39,17 @@ bounce flight 1.7e-10 and 4.7e-6 s, second contact 1.9e-6 and 3e-4 s (main alike
 same day (the default run with ``--reference 3 --old-src``, 100,000 tosses, load 5.0 to 3.5):
 hand 129,034 a second (main 127,803), first contact 82,436 (88,351), to rest 26,930 (26,132:
 1.03 times; one thread 26,090 against 24,680 per CPU second, 1.06 times).
+
+Measured 2026-11-24 (the kink integrals' rewrite, ``--reference 3 --old-src`` main's src,
+100,000 tosses, medians of 5, load 10.5 before and 10.7 after, the machine shared by five other
+sessions): hand 79,658 a second (main 64,546), first contact 53,269 (41,008), to rest 14,969
+(12,230); at that load the wall-clock ratios (1.22-1.30) are mostly noise: per CPU second in
+one thread 120,901, 84,231 and 25,217 against 113,238, 78,787 and 23,766 (1.06-1.07 times),
+and an interleaved A/B of one thread each (7 rounds of 10,000 tosses, load 13) gave 1.03-1.05
+times. Issue 11's 100,000 a second on 2 cores is therefore met by the first contact only on a
+quiet machine (twice the one-thread rate: ~170,000), not carried to rest (~50,000 quiet):
+there a toss costs ~40 µs of one core, a third of it the 8.8 impacts the vacuum landing has
+too (``--profile``; the shares in :mod:`coinflight.core.drag`'s notes on cost).
 """
 
 from __future__ import annotations
@@ -254,6 +270,102 @@ def accuracy(args: argparse.Namespace, m: int, drag: Drag) -> None:
         print("    " + line("second contact", [old_second[k] for k in keep], second_ref[keep]))
 
 
+def profile(n: int) -> None:
+    """Shares of the time of ``n`` landings carried to rest through air (one thread) in their
+    phases, and the steps and impacts a toss: a copy of :func:`coinflight.core.drag.land_one`
+    (its grazes and impacts as there) with the cycle counter (LLVM's ``readcyclecounter``) read
+    around each phase."""
+    from llvmlite import ir
+    from numba import njit, types
+    from numba.core import cgutils
+    from numba.extending import intrinsic
+
+    from coinflight.core import drag as d
+    from coinflight.core.bounce import GRAZE_SKIP, MAX_IMPACTS
+    from coinflight.core.impact import impact, lowest_depth
+    from coinflight.outcomes.table import contact_record
+
+    @intrinsic
+    def cycles(typingctx):  # type: ignore[no-untyped-def]
+        def codegen(context, builder, signature, args):  # type: ignore[no-untyped-def]
+            fnty = ir.FunctionType(ir.IntType(64), [])
+            fn = cgutils.get_or_insert_function(builder.module, fnty, "llvm.readcyclecounter")
+            return builder.call(fn, [])
+
+        return types.uint64(), codegen
+
+    @njit
+    def one(omega, launch_speed, air, c, acc):  # type: ignore[no-untyped-def]
+        # acc: cycles of the first flight, bounce flights, impacts, endings, lifts; impacts,
+        # steps of the first flight, of the bounce flights
+        n, u, a0, b0 = d.launch_state(omega, 1.0, air)
+        z, v, tr, tmin = c.drop_height, (0.0, 0.0, launch_speed), 0.0, 0.0
+        rising, budget, impacts = True, d.MAX_STEPS, 0
+        while impacts < MAX_IMPACTS:
+            t0 = cycles()
+            dt, z, v, n, u, tr, lm, speed, steps = d.next_contact(
+                z, v, n, u, tr, a0, b0, tmin, rising, air, c, budget
+            )
+            k = 0 if impacts == 0 else 1
+            acc[k] += cycles() - t0
+            acc[6 + k] += steps
+            budget -= steps
+            if dt < 0.0:
+                return
+            rising, tmin = False, 0.0
+            if speed >= 0.0:
+                z, v, n, u = d.step(z, v, n, u, tr, GRAZE_SKIP, a0, b0, air)
+                tr += GRAZE_SKIP
+                continue
+            impacts += 1
+            z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
+            t0 = cycles()
+            v, lm, rebound = impact(
+                v, lm, n, c.radius, c.half_thickness, c.mass, c.i1, c.i3, c.restitution,
+                c.friction, c.corner_radius,
+            )  # fmt: skip
+            t1 = cycles()
+            status = d.ending(v, lm, n, rebound, c)[1]
+            t2 = cycles()
+            acc[2] += t1 - t0
+            acc[3] += t2 - t1
+            acc[5] += 1
+            if status >= 0:
+                return
+            a0, b0, u = d.split(lm, n)
+            t0 = cycles()
+            tmin, z, v, n, u, tr = d.lift(z, v, n, u, lm, a0, b0, rebound, air, c)
+            acc[4] += cycles() - t0
+
+    @njit
+    def run(omega, v0, air, c, acc):  # type: ignore[no-untyped-def]
+        for k in range(omega.shape[0]):
+            one((omega[k, 0], omega[k, 1], omega[k, 2]), v0[k], air, c, acc)
+
+    omega, v0 = tosses(n)
+    air = drag_model(COIN, Drag(coefficient=1.17), G)
+    c = contact_record(COIN, SURFACE, G)
+    acc = np.zeros(8, dtype=np.uint64)
+    run(omega[:10], v0[:10], air, c, acc)  # compile
+    acc[:] = 0
+    load = os.getloadavg()[0]
+    t0 = time.process_time()
+    run(omega, v0, air, c, acc)
+    cpu = time.process_time() - t0
+    total = float(acc[:5].sum())
+    print(
+        f"{n:,} landings carried to rest through air, one thread: "
+        f"{cpu / n * 1e6:.1f} µs of CPU a toss"
+    )
+    for k, name in enumerate(["first flight", "bounce flights", "impacts", "endings", "lifts"]):
+        print(f"  {name}: {acc[k] / total:.1%}")
+    print(
+        f"  a toss: {acc[5] / n:.2f} impacts, {acc[6] / n:.1f} steps in the first flight, "
+        f"{acc[7] / n:.1f} in the bounce flights"
+    )
+    print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
+
+
 def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-def]
     times = []
     for _ in range(repeats):
@@ -284,7 +396,13 @@ def main() -> None:
     parser.add_argument(
         "--accuracy", type=int, default=None, help="only: times against DOP853 on this many tosses"
     )
+    parser.add_argument(
+        "--profile", type=int, default=None, help="only: shares of the phases of this many landings"
+    )
     args = parser.parse_args()
+    if args.profile:
+        profile(args.profile)
+        return
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)

@@ -84,7 +84,9 @@ the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e
 3.2e-7/2.0e-6 at 0.95, 4.4e-6/1.8e-5 at 2.2, 1.3e-4/3.4e-4 at 3.0. ``TURN_STEP`` = 2π/(2 +
 (√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
 phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
-of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses.
+of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses. Re-measured 2026-11-24
+after :func:`kink_integrals` was rewritten (node weights, roots tested without dividing; the
+same integrals up to rounding): every figure of ``--accuracy 40`` the same to two digits.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
@@ -100,14 +102,17 @@ coin approaches starts a safeguarded Newton iteration on the length of one step 
 step's start (a step of any length from a state is a smooth function of its length), to
 GAP_TOLERANCE.
 
-Cost (``python benchmarks/bench_air.py``'s tosses carried to rest, one thread, per toss, load
-~5): first flight to the table ~11 µs (66 steps of ~2.4 rad, ~170-250 ns each, ~100 ns of which
-are :func:`kink_integrals`), the impacts ~11 µs (8.8 of ~1.3 µs,
-:func:`coinflight.core.impact.impact`, 8.6 segments each on average), the bounce flights ~14 µs
-(7.8 flights: 3 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, plus ~6
-evaluations of the bound; the previous search, advancing by steps of the integrator, took 4.3
-advancing, 1.7 Newton and 1.4 lift steps a flight: the bounce flights took 81 steps a toss,
-now 53).
+Cost (``python benchmarks/bench_air.py --profile 20000``: cycle counts around the phases of a
+copy of :func:`land_one`, one thread, 2026-11-24, load ~6: 38.5 µs of CPU a toss carried to
+rest): the first flight 28 % (66.6 steps of ~2.4 rad, ~140 ns each, ~85 ns of which are
+:func:`kink_integrals`, ~60 of those its roots: a square root, a division, an arctangent and
+sign-dependent branches per kink), the bounce flights 34 % (7.8 a toss, 34.8 steps in all:
+3.0 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, ~80-200 ns a step,
+plus 7.1 evaluations of the gap's lower bound, 1.4 of them in :func:`lift`), the impacts 36 %
+(8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the ending 1 % (the
+rocking hand-off, 55 % of the tosses). The steps are allocation-free (tuples of scalars) and
+run on numba's threads, one toss per iteration. The impacts are those of the vacuum's landing:
+a toss carried to rest through air costs the flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
@@ -296,8 +301,8 @@ def _rotate(x: tuple, axis: tuple, c: float, s: float) -> tuple:
 
 @njit(cache=True, error_model="numpy")
 def rotation(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
-    """(axis, cos, sin) of the triad's turn over a step h from t0 (times since a0, b0 were
-    set): fourth-order Magnus (see the module notes), exact when K = 0."""
+    """(axis, cos, sin, angle) of the triad's turn over a step h from t0 (times since a0, b0
+    were set): fourth-order Magnus (see the module notes), exact when K = 0."""
     k = air.spin_damping
     if k == 0.0:
         ta = a0 * h / air.i1  # ∫ a/I1 dt, along n
@@ -324,14 +329,16 @@ def rotation(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air:
     )
     angle = math.sqrt(dot(theta, theta))
     if angle == 0.0:
-        return (0.0, 0.0, 1.0), 1.0, 0.0
-    return (theta[0] / angle, theta[1] / angle, theta[2] / angle), math.cos(angle), math.sin(angle)
+        return (0.0, 0.0, 1.0), 1.0, 0.0, 0.0
+    inv = 1.0 / angle
+    axis = (theta[0] * inv, theta[1] * inv, theta[2] * inv)
+    return axis, math.cos(angle), math.sin(angle), angle
 
 
 @njit(cache=True)
 def turn(n: tuple, u: tuple, t0: float, h: float, a0: float, b0: float, air: Air) -> tuple:
     """The triad (n, u) after a step h from t0 (:func:`rotation`)."""
-    axis, c, s = rotation(n, u, t0, h, a0, b0, air)
+    axis, c, s, _ = rotation(n, u, t0, h, a0, b0, air)
     return _rotate(n, axis, c, s), _rotate(u, axis, c, s)
 
 
@@ -366,8 +373,8 @@ def step(z, v, n, u, t0, h, a0, b0, air):
     """One step of length h of the centre of mass (height z, velocity v: Kutta's third-order
     rule or RK4, see the module notes) and the Magnus half steps of the attitude (n, u); t0
     counts from the setting of a0, b0."""
-    axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
-    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, 2.0 * math.atan2(s, c))
+    axis, c, s, angle = rotation(n, u, t0, 0.5 * h, a0, b0, air)
+    return step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, 2.0 * angle)
 
 
 NO_TURN = (-1.0, (0.0, 0.0, 1.0), 1.0, 0.0, 0.0)
@@ -383,39 +390,45 @@ def cached_step(z, v, n, u, t0, h, a0, b0, air, turned):
     L at the rate |L|/I1), so it is computed again (:func:`rotation`) only for a new length or
     with damping, and returned for the next step."""
     if h != turned[0] or air.spin_damping > 0.0:
-        axis, c, s = rotation(n, u, t0, 0.5 * h, a0, b0, air)
-        turned = (h, axis, c, s, 2.0 * math.atan2(s, c))
+        axis, c, s, angle = rotation(n, u, t0, 0.5 * h, a0, b0, air)
+        turned = (h, axis, c, s, 2.0 * angle)
     z1, v1, n1, u1 = step_turning(
         z, v, n, u, t0, h, a0, b0, air, turned[1], turned[2], turned[3], turned[4]
     )
     return z1, v1, n1, u1, turned
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
+def _lagrange_primitives(y: float) -> tuple:
+    """Primitives at y of the three quadratic Lagrange basis functions on the nodes 0, 1/2, 1
+    and of the same times (1 − x)."""
+    y2 = y * y
+    y3 = y2 * y
+    y4 = y3 * y
+    return (
+        2.0 * y3 / 3.0 - 1.5 * y2 + y,
+        2.0 * y2 - 4.0 * y3 / 3.0,
+        2.0 * y3 / 3.0 - 0.5 * y2,
+        -0.5 * y4 + 5.0 * y3 / 3.0 - 2.0 * y2 + y,
+        2.0 * y2 - 8.0 * y3 / 3.0 + y4,
+        -0.5 * y4 + y3 - 0.5 * y2,
+    )
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     """sign times the integrals over [x0, x1] of the three quadratic Lagrange basis functions
-    on the nodes 0, 1/2, 1 (first three) and of the same times (1 − x) (last three); ``w`` adds."""
-    a = (x0, x1)
-    out = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
-    for k in range(2):
-        y = a[k]
-        f = sign if k == 1 else -sign
-        y2 = y * y
-        y3 = y2 * y
-        y4 = y3 * y
-        out[0] += f * (2.0 * y3 / 3.0 - 1.5 * y2 + y)
-        out[1] += f * (2.0 * y2 - 4.0 * y3 / 3.0)
-        out[2] += f * (2.0 * y3 / 3.0 - 0.5 * y2)
-        out[3] += f * (-0.5 * y4 + 5.0 * y3 / 3.0 - 2.0 * y2 + y)
-        out[4] += f * (2.0 * y2 - 8.0 * y3 / 3.0 + y4)
-        out[5] += f * (-0.5 * y4 + y3 - 0.5 * y2)
+    on the nodes 0, 1/2, 1 (first three) and of the same times (1 − x) (last three); ``w`` adds.
+    (Scalars only: no array or list is allocated.)"""
+    f0 = _lagrange_primitives(x0)
+    f1 = _lagrange_primitives(x1)
     return (
-        w[0] + out[0],
-        w[1] + out[1],
-        w[2] + out[2],
-        w[3] + out[3],
-        w[4] + out[4],
-        w[5] + out[5],
+        w[0] + sign * (f1[0] - f0[0]),
+        w[1] + sign * (f1[1] - f0[1]),
+        w[2] + sign * (f1[2] - f0[2]),
+        w[3] + sign * (f1[3] - f0[3]),
+        w[4] + sign * (f1[4] - f0[4]),
+        w[5] + sign * (f1[5] - f0[5]),
     )
 
 
@@ -484,12 +497,11 @@ the turn (:func:`kink_integrals`), shorter ones by a quadratic (:func:`kink_weig
 TRIG_COS = math.cos(0.5 * TRIG_KINK)
 
 
-@njit(cache=True, error_model="numpy")
-def _primitives(x: float, cx: float, sx: float, theta: float) -> tuple:
-    """Primitives at x of (1, cos θx, sin θx) and of (1 − x) times them, given cos θx, sin θx:
-    x, sin θx / θ, −cos θx / θ and, with ∫ x cos θx = x sin θx / θ + cos θx / θ² and
-    ∫ x sin θx = −x cos θx / θ + sin θx / θ², those minus the x-weighted ones."""
-    it = 1.0 / theta
+@njit(cache=True, error_model="numpy", inline="always")
+def _primitives(x: float, cx: float, sx: float, it: float) -> tuple:
+    """Primitives at x of (1, cos θx, sin θx) and of (1 − x) times them, given cos θx, sin θx
+    and it = 1/θ: x, sin θx / θ, −cos θx / θ and, with ∫ x cos θx = x sin θx / θ + cos θx / θ²
+    and ∫ x sin θx = −x cos θx / θ + sin θx / θ², those minus the x-weighted ones."""
     pc = sx * it
     ps = -cx * it
     return (
@@ -541,8 +553,9 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     gq = ((g2 - g0) - 2.0 * c * (gm - g0)) * den
     gr = ((gm - g0) - gq * (c - 1.0)) * rs
     gp = g0 - gq
-    f0 = _primitives(0.0, 1.0, 0.0, theta)
-    f1 = _primitives(1.0, cc, ss, theta)
+    it = 1.0 / theta
+    f0 = _primitives(0.0, 1.0, 0.0, it)
+    f1 = _primitives(1.0, cc, ss, it)
     # Σ over the pieces of sign × (F(end) − F(start)) = sign(g(1)) F(1) − sign(g(0)) F(0)
     # − 2 Σ sign(g′(x_r)) F(x_r) over the roots x_r (g takes the sign of g′ after a root).
     s0 = 1.0 if g0 >= 0.0 else -1.0
@@ -564,22 +577,17 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     if disc > 0.0:
         root = math.sqrt(disc)
         qq = -(qb + math.copysign(root, qb))
-        tmax = s / c
         for k in range(2):
-            if k == 0:
-                if qa == 0.0:
-                    continue
-                t = qq / qa
-            else:
-                if qq == 0.0:
-                    continue
-                t = qc / qq
-            if 0.0 < t < tmax:
+            # The roots qq/qa and qc/qq; 0 < t < s/c (c, s > 0) tested without dividing.
+            num = qq if k == 0 else qc
+            dnm = qa if k == 0 else qq
+            if num * dnm > 0.0 and abs(num) * c < abs(dnm) * s:
+                t = num / dnm
                 t2 = t * t
                 inv = 1.0 / (1.0 + t2)
                 cr = (1.0 - t2) * inv
                 sr = 2.0 * t * inv
-                fr = _primitives(2.0 * math.atan(t) / theta, cr, sr, theta)
+                fr = _primitives(2.0 * math.atan(t) * it, cr, sr, it)
                 # g takes the sign of g′ ∝ r cos − q sin after a simple root.
                 d = 2.0 if gr * cr - gq * sr < 0.0 else -2.0
                 tot = (
@@ -590,23 +598,28 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
                     tot[4] + d * fr[4],
                     tot[5] + d * fr[5],
                 )
-    out0 = 0.0
-    out1 = 0.0
-    out2 = 0.0
-    zint = 0.0
-    for k in range(3):
-        q = ((q2[k] - q0[k]) - 2.0 * c * (qm[k] - q0[k])) * den
-        r = ((qm[k] - q0[k]) - q * (c - 1.0)) * rs
-        p = q0[k] - q
-        val = p * tot[0] + q * tot[1] + r * tot[2]
-        if k == 0:
-            out0 = val
-        elif k == 1:
-            out1 = val
-        else:
-            out2 = val
-            zint = p * tot[3] + q * tot[4] + r * tot[5]
-    return (out0, out1, out2), zint
+    # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
+    # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
+    # in the node values: weights on the nodes, once for the three components.
+    two_c = 2.0 * c
+    ca = (tot[1] - tot[0] - (c - 1.0) * rs * tot[2]) * den
+    cb = rs * tot[2]
+    w0 = tot[0] - cb + ca * (two_c - 1.0)
+    wm = cb - two_c * ca
+    w2 = ca
+    ma = (tot[4] - tot[3] - (c - 1.0) * rs * tot[5]) * den
+    mb = rs * tot[5]
+    m0 = tot[3] - mb + ma * (two_c - 1.0)
+    mm = mb - two_c * ma
+    m2 = ma
+    return (
+        (
+            w0 * q0[0] + wm * qm[0] + w2 * q2[0],
+            w0 * q0[1] + wm * qm[1] + w2 * q2[1],
+            w0 * q0[2] + wm * qm[2] + w2 * q2[2],
+        ),
+        m0 * q0[2] + mm * qm[2] + m2 * q2[2],
+    )
 
 
 @njit(cache=True, error_model="numpy")
@@ -624,7 +637,7 @@ def step_turning(z, v, n, u, t0, h, a0, b0, air, axis, c, s, theta):
     n1 = _rotate(n, axis, c, s)
     if air.spin_damping > 0.0:
         u1 = _rotate(u, axis, c, s)
-        axis, c, s = rotation(n1, u1, t0 + 0.5 * h, 0.5 * h, a0, b0, air)
+        axis, c, s, _ = rotation(n1, u1, t0 + 0.5 * h, 0.5 * h, a0, b0, air)
         n2 = _rotate(n1, axis, c, s)
         u2 = _rotate(u1, axis, c, s)
     else:  # the second half turn is the first again: u turns by twice its angle at once

@@ -40,7 +40,9 @@ C_d = 1.17, 2 threads on the shared 2-core machine (``python benchmarks/bench_ai
 second in one thread; 182,000 a second on the quiet machine (load about 1); kept at 40,000 for a
 busy one. The table landing's rate is
 :data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND` (26,900 a second carried to rest in
-the same run, load 3.5-5)."""
+the same run, load 3.5-5). Re-measured 2026-11-24 after the kink integrals' rewrite (same
+command, load 10.5): 79,658 a second (main 64,546 in the same rounds; 1.06 times per CPU second
+in one thread, 120,901 against 113,238, the wall-clock ratio being mostly the load's)."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:
