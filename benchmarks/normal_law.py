@@ -48,12 +48,17 @@ EXPONENTS = (1.0, 1.5)
 """Exponents the knob accepts: the linear law and the default (3/2)."""
 
 
+_CACHE: list[str] = []
+"""The temporary cache :func:`fresh_cache` made, if it was called."""
+
+
 def fresh_cache() -> None:
     """Compile numba kernels into a temporary cache directory (removed at exit), before any
     is compiled: a patched global is then read by the compiler, not a cached kernel."""
     cache = tempfile.mkdtemp(prefix="coinflight-law-")
     atexit.register(shutil.rmtree, cache, True)
     os.environ["NUMBA_CACHE_DIR"] = cache
+    _CACHE.append(cache)
 
 
 def damping_ratio(restitution: float, exponent: float) -> float:
@@ -76,35 +81,66 @@ def damping_ratio(restitution: float, exponent: float) -> float:
 
 
 def use_exponent(exponent: float) -> None:
-    """Make the contact phase's rim law F ∝ d0^p (module notes); call before any kernel of
-    :mod:`coinflight.core.contact_phase` is compiled, after :func:`fresh_cache`. p = 3/2 leaves
-    everything as it is."""
+    """Make the contact phase's rim law F ∝ d0^p (module notes): patches ``contact_phase._rim``,
+    through which :func:`~coinflight.core.contact_phase.rim_contact`, the derivative and the
+    energy all go. Call after :func:`fresh_cache`, before any kernel of
+    :mod:`coinflight.core.contact_phase` is compiled. p = 3/2 leaves everything as it is."""
     if exponent not in EXPONENTS:
         raise ValueError(f"exponent must be one of {EXPONENTS}, got {exponent!r}")
     if exponent == 1.5:
         return
+    from coinflight.core import contact_phase as cp
+
+    if not _fresh(cp):
+        raise RuntimeError(
+            "use_exponent needs fresh_cache() first, before any kernel of contact_phase is "
+            "imported or compiled"
+        )
+    cp._rim = rim_law(exponent)
+
+
+def _fresh(module) -> bool:  # type: ignore[no-untyped-def]
+    """Whether every numba kernel of ``module`` caches into :func:`fresh_cache`'s directory (the
+    module was imported after it) and none is compiled yet (a patched global still reaches
+    them, and nothing patched is written into the package's own cache)."""
+    cache = os.environ.get("NUMBA_CACHE_DIR")
+    if cache not in _CACHE:
+        return False
+    kernels = [
+        f
+        for f in vars(module).values()
+        if hasattr(f, "signatures") and f.py_func.__module__ == module.__name__
+    ]
+    return all(
+        not f.signatures and f._cache._cache_path.startswith(str(cache)) for f in kernels
+    )
+
+
+def rim_law(exponent: float):  # type: ignore[no-untyped-def]
+    """The kernel of ``contact_phase._rim`` (the same signature) with the law F ∝ d0^p: its body
+    copied, the law changed where marked (module notes)."""
     from numba import njit
 
-    from coinflight.core import contact_phase as cp
     from coinflight.core.impact import _coupling, cross
 
-    basis = cp._tangent_basis
     beta = 2.0 * (exponent + 1.0) / 5.0
     scale = math.sqrt(2.0 * exponent / 3.0)
 
     @njit(cache=True)
-    def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):  # type: ignore[no-untyped-def]
-        # The default's arc sums (contact_phase.rim_contact), the law changed where marked.
-        s, w = basis(n)
+    def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):  # type: ignore[no-untyped-def]
+        # The default's arc sums (contact_phase._rim), the law changed where marked.
         radius -= corner
         hh -= corner
         a = corner - z - sigma * hh * n[2]
         b = radius * s
         if a + b <= 0.0:
             return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
-        phi = math.pi if a >= b else math.acos(-a / b)
-        sp = math.sin(phi)
-        cp_ = math.cos(phi)
+        if a >= b:
+            phi, sp, cp_ = math.pi, 0.0, -1.0
+        else:
+            cp_ = -a / b
+            phi = math.acos(cp_)
+            sp = math.sqrt((1.0 - cp_) * (1.0 + cp_))
         i0 = 2.0 * phi
         ic = 2.0 * sp
         icc = phi + sp * cp_
@@ -148,4 +184,4 @@ def use_exponent(exponent: float) -> None:
         pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
         return force, q, pivot, energy
 
-    cp.rim_contact = rim_contact
+    return _rim
