@@ -111,9 +111,7 @@ def _fresh(module) -> bool:  # type: ignore[no-untyped-def]
         for f in vars(module).values()
         if hasattr(f, "signatures") and f.py_func.__module__ == module.__name__
     ]
-    return all(
-        not f.signatures and f._cache._cache_path.startswith(str(cache)) for f in kernels
-    )
+    return all(not f.signatures and f._cache._cache_path.startswith(str(cache)) for f in kernels)
 
 
 def rim_law(exponent: float):  # type: ignore[no-untyped-def]

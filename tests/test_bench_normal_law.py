@@ -30,8 +30,12 @@ def _run(code: str, tmp_path: Path, fresh: bool = True) -> str:
     env["PYTHONPATH"] = os.pathsep.join([str(BENCH), env.get("PYTHONPATH", "")])
     env.pop("NUMBA_CACHE_DIR", None)
     run = subprocess.run(
-        [sys.executable, "-c", PRELUDE.format(fresh="normal_law.fresh_cache()" if fresh else "")
-            + textwrap.dedent(code)],
+        [
+            sys.executable,
+            "-c",
+            PRELUDE.format(fresh="normal_law.fresh_cache()" if fresh else "")
+            + textwrap.dedent(code),
+        ],
         capture_output=True,
         text=True,
         timeout=600,
@@ -84,7 +88,8 @@ def test_the_copy_keeps_the_rims_geometry(tmp_path):
             n = rng.normal(size=3)
             n /= np.linalg.norm(n)
             s, w = cp._tangent_basis(tuple(n))
-            z = (r * math.sqrt(1 - n[2] ** 2) + c.half_thickness * abs(n[2])) * rng.uniform(0.9, 1.01)
+            lowest = r * math.sqrt(1 - n[2] ** 2) + c.half_thickness * abs(n[2])
+            z = lowest * rng.uniform(0.9, 1.01)
             args = (float(rng.choice([-1.0, 1.0])), z, tuple(rng.normal(size=3) * 0.3), tuple(n),
                     tuple(rng.normal(size=3) * 50), s, w, c.radius, c.half_thickness, c.mass,
                     c.i1, c.i3, kappa)
