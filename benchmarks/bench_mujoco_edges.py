@@ -209,13 +209,8 @@ def from_handoff(
 def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
     """MuJoCo's solver settings from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``,
     ``--timeconst``."""
-    solimp = tuple(float(x) for x in args.solimp.split(","))
     return mujoco_compare.FrictionSolver(
-        args.cone,
-        args.impratio,
-        args.noslip,
-        solimp,  # type: ignore[arg-type]
-        args.timeconst,
+        args.cone, args.impratio, args.noslip, args.solimp, args.timeconst
     )
 
 
@@ -284,6 +279,8 @@ def handoff_only(args: argparse.Namespace, pairs: tuple[tuple[float, ...], ...])
 
 
 def main() -> None:
+    import mujoco_args
+
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=200)
     parser.add_argument("--seed", type=int, default=2026)
@@ -335,12 +332,13 @@ def main() -> None:
     )
     parser.add_argument(
         "--solimp",
+        type=mujoco_args.solimp,
         default=",".join(str(x) for x in mujoco_compare.SOLIMP),
         help="MuJoCo's impedance d0,dmax,width (m) from the hand-off (default MuJoCo's)",
     )
     parser.add_argument(
         "--timeconst",
-        type=float,
+        type=mujoco_args.timeconst,
         default=mujoco_compare.TIMECONST,
         help="MuJoCo's contact time constant solref[0] from the hand-off, s",
     )
