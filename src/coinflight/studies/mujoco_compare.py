@@ -213,10 +213,13 @@ MAX_IMPEDANCE = 0.9999
 
 def _checked_solimp(solimp: Any) -> tuple[float, float, float]:
     """(d0, dmax, width) as plain floats; ValueError in one line unless three numbers with d0
-    and dmax within [MIN_IMPEDANCE, MAX_IMPEDANCE] and width positive and finite."""
+    and dmax within [MIN_IMPEDANCE, MAX_IMPEDANCE] and width positive and finite (the one
+    wording, in :mod:`coinflight._validation`'s words for a range and a positive number: a
+    bool inside a tuple is refused, which :func:`~coinflight._validation.as_float_array` would
+    take as a number)."""
     words = (
-        f"MuJoCo solimp must be three numbers (d0, dmax within [{MIN_IMPEDANCE:g}, "
-        f"{MAX_IMPEDANCE:g}], width > 0 m), got {solimp!r}"
+        f"MuJoCo solimp must be three numbers: d0 and dmax between {MIN_IMPEDANCE:g} and "
+        f"{MAX_IMPEDANCE:g}, width positive and finite (in m), got {solimp!r}"
     )
     try:
         values = tuple(solimp)
@@ -307,16 +310,9 @@ class FrictionSolver:
         object.__setattr__(self, "impratio", float(ratio))
         object.__setattr__(self, "noslip_iterations", iterations)
         object.__setattr__(self, "solimp", _checked_solimp(self.solimp))
-        tau = self.timeconst
-        if not (
-            isinstance(tau, (int, float, np.integer, np.floating))
-            and not isinstance(tau, bool)
-            and 2.0 * TIMESTEP <= tau <= 0.1
-        ):
-            raise ValueError(
-                f"MuJoCo timeconst must be between {2.0 * TIMESTEP:g} and 0.1 s, got {tau!r}"
-            )
-        object.__setattr__(self, "timeconst", float(tau))
+        name = "MuJoCo timeconst"
+        tau = v.number(name, v.in_range(name, self.timeconst, 2.0 * TIMESTEP, 0.1, "s"), "s")
+        object.__setattr__(self, "timeconst", tau)
 
     def option(self) -> str:
         """The attributes of MuJoCo's ``<option>`` element for these settings."""
