@@ -4,17 +4,20 @@ The contact phase (:mod:`coinflight.core.contact_phase`) presses each rim on the
 linear spring per radian of rim, κ d(φ), whose sum over a short arc is Hertz-like: F ∝ d0^(3/2)
 in the depth d0 of the rim's lowest point (a curved rim on a plane), with the damping of Tsuji,
 Tanaka & Ishida (1992). MuJoCo's contact is linear in the depth. To ask whether that exponent is
-why the two engines part, :func:`use_exponent` swaps the phase's ``rim_contact`` for a family
-of laws with the same geometry, before any kernel is compiled (into a temporary numba cache,
-removed at exit; the package's cache is not touched):
+why the two engines part, :func:`use_exponent` swaps the phase's ``_rim`` (the kernel that
+``rim_contact``, the derivative and the energy all call) for a family of laws with the same
+geometry, before any kernel is compiled (into a temporary numba cache, removed at exit; the
+package's cache is not touched):
 
 * the elastic energy of a rim is U_p = C (U_a)^β, β = 2 (p + 1)/5, U_a the default arc's
   energy κ ∫ d²/2 dφ. Its force and moment are λ times the arc's (λ = C β U_a^(β−1)): the same
   centre of pressure, and a potential, so the law is conservative and the energy test of the
   phase stays exact. On a short arc, U_a = (8√2/15) κ d0^(5/2) / sqrt(B) (B = r s), so
   F = K_p d0^p: p = 3/2 is the default law (left in place); for p = 1 C is set so
-  that an upright rim (B = r) has K_1 = 2πκ = π² m / t_c², the face's stiffness: a coin upright
-  on its rim point (effective mass m) sinks for t_c, as a coin dropped flat does. (Tilted, the
+  that an upright rim (B = r) has K_1 = 2πκ = π² m / t_c², the face's stiffness: a coin on
+  one upright rim point (effective mass m) would sink for t_c, as a coin dropped flat does.
+  Upright, a sharp coin touches with both rims, so its stiffness is 2 K_1 and the contact
+  lasts ~t_c/√2 (undamped; 0.76 and 0.74 ms measured, damped, below). (Tilted, the
   stiffness grows as B^(−2/5); a face flat on the table gets F ∝ d^(3/5): a benchmark knob,
   not a model of a face.)
 * the damping is the default arc's with ζ_p (:func:`damping_ratio`: the dimensionless law
@@ -27,7 +30,9 @@ rims' sinking with the 3/2 law: with another exponent the tosses are carried to 
 :func:`coinflight.core.contact_phase.advance` with ``decide=False``.
 
 Checked (2026-11-23, by hand, not a test): p = 1 gives F = 2πκ d0 on an upright rim to four
-digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six. A nickel
+digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six
+(tests/test_bench_normal_law.py checks both rims' 2 × 2πκ d0 at 1 μm through the phase's
+derivative, and the copy's geometry against ``_rim``'s). A nickel
 dropped upright on both rims (frictionless, t_c 1 ms) stays in contact 0.76 ms at 0.1 m/s and
 0.74 ms at 1 m/s with p = 1 (rebound 0.38, 0.40 of its speed), 5.7 and 3.0 ms with p = 3/2
 (0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebound
