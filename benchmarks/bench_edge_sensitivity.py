@@ -4,40 +4,44 @@
         [--contact-time T] [--damping-factor D] [--friction MU] [--resistance L] [--stride K]
         [--exponent 1|1.5] [--no-decision] [--trace K]
 
-The N vigorous tosses of ``bench_mujoco_edges.py --handoff-only`` (seed 2026, a US nickel, e 0.5,
-μ 0.3, rolling and pivoting resistance 1e-4 m) bounce as the contact ending's landings do
+The N vigorous tosses of ``bench_mujoco_edges.py --handoff-only`` (seed 2026, a US nickel, e
+0.5, μ 0.3, rolling and pivoting resistance 1e-4 m) bounce as the contact ending's landings do
 (``bench_contact.handoff``); the states in which the bounces hand them to
 :mod:`coinflight.core.contact_phase` (446 of 600) are then carried to rest by that phase alone
-with one parameter changed: ``SLIP_SPEED`` times F (the
-regularisation of Coulomb's friction; F → 0 is the Coulomb limit), the contact time t_c, the
-damping ratio ζ times D, μ, the resistances, or the exponent p of the rim's normal law
-(``--exponent 1``: F ∝ d0 as MuJoCo's, instead of the default d0^(3/2); ``normal_law.py``,
-a benchmark-only knob, its damping ζ_p set for the same e). Prints P(edge) among the handed
-tosses. SLIP_SPEED is a constant compiled into the numba kernels, and the exponent swaps a
-compiled function: either compiles them afresh into a temporary cache, removed at the end (the
-package's own cache is not touched). With ``--exponent 1`` or ``--no-decision`` each toss is
-carried to rest (:func:`coinflight.core.contact_phase.advance`, ``decide=False``; the upright
-decision bounds the rims' sinking with the 3/2 law). ``--trace K``: every K-th carried toss is
-also sampled over its first 0.1 s from the hand-off at 0.1 ms (``bench_edge_trace.ours_trace``
-and ``episodes``, as that benchmark does for 60 tosses): medians of the first contact
-episode's length and normal impulse, the share of samples in contact and the number of
-episodes, for the tosses that end on edge and the others.
+with one parameter changed: ``SLIP_SPEED`` times F (the regularisation of Coulomb's friction; F
+→ 0 is the Coulomb limit), the contact time t_c, the damping ratio ζ times D, μ, the
+resistances, or the exponent p of the rim's normal law (``--exponent 1``: F ∝ d0 as MuJoCo's,
+instead of the default d0^(3/2); ``normal_law.py``, a benchmark-only knob, its damping ζ_p set
+for the same e). Prints P(edge) among the handed tosses. SLIP_SPEED is a constant compiled into
+the numba kernels, and the exponent swaps a kernel (``contact_phase._rim``): either compiles
+them afresh into a temporary cache, removed at the end (the package's own cache is not touched).
+With ``--exponent 1`` or ``--no-decision`` each toss is carried to rest
+(:func:`coinflight.core.contact_phase.advance`, ``decide=False``; the upright decision bounds
+the rims' sinking with the 3/2 law). ``--trace K``: every K-th carried toss is also sampled over
+its first 0.1 s from the hand-off at 0.1 ms (``bench_edge_trace.ours_trace`` and ``episodes``,
+as that benchmark does for 60 tosses): medians of the first contact episode's length and normal
+impulse, the share of samples in contact and the number of episodes, for the tosses that end on
+edge and the others.
 
-Measured (446 hand-off states, 2026-11-23 23:36-00:05 UTC, load 7-14): on edge by default 49
-(0.110 ± 0.015); with a linear rim law (``--exponent 1``: K_1 = 2πκ, ζ_p 0.2553 for e 0.5; a
-nickel dropped upright on its rim at 0.1 and 1 m/s stays in contact 0.76 and 0.74 ms, as
-MuJoCo's 0.8 ms, where the 3/2 law holds it 5.7 and 3.0 ms) **47** (0.105 ± 0.015), and 49 at
-t_c 0.25 ms (0.110 ± 0.015; the 3/2 law at 0.25 ms: 47, earlier). ``--trace 1``, medians over
-all 446 (edge-enders in brackets): the first contact from the hand-off lasts 29 ms (10 ms)
-with the 3/2 law and 15 ms (9 ms) with the linear one, the coin is in contact 90 % (68 %) and
-76 % (64 %) of the first 0.1 s. So the long first contact is not a slow impact of a soft law
-(a law whose impacts last 0.75 ms keeps it): the coin stays on its rim, sliding and rolling,
-as a rigid coin pressed by gravity does. Frictionless (``--friction 0 --trace 2``) it stays
-there too (28 ms, 85 %): friction does not press it. What makes MuJoCo's coins hop is
-MuJoCo's: its sliding contacts move apart (``bench_mujoco_edges.py``'s notes). The exponent,
-the stiffness (t_c) and, in MuJoCo, the impedance's first touch leave the edge counts where
-they were; the normal law is not where the engines part.
-"""
+Measured (446 hand-off states, 2026-11-24 00:39-00:44 UTC, load 2-4, each run 0-32 s; the same
+counts as first measured 2026-11-23 23:36-00:05 UTC on the code before the contact phase's
+speed-up, but for the 3/2 law at 0.25 ms, then 47): on edge by default 49 (0.110 ± 0.015), with
+the upright decision and carried to rest without it (``--no-decision``) alike (heads 0.475 in
+both; not compared toss by toss); with a linear rim law (``--exponent 1``, always carried to
+rest: K_1 = 2πκ, ζ_p 0.2553 for e 0.5; a nickel dropped upright on both rims at 0.1 and 1 m/s
+stays in contact 0.76 and 0.74 ms, as MuJoCo's 0.8 ms, where the 3/2 law holds it 5.7 and 3.0
+ms) **47** (0.105 ± 0.015) against those 49; at t_c 0.25 ms 49 (0.110 ± 0.015) with the linear
+law against the 3/2 law's 48 (0.108 ± 0.015, with the decision and without alike). ``--trace 1``
+(the 3/2 law with ``--no-decision``), medians over all 446 (edge-enders in brackets): the first
+contact from the hand-off lasts 29 ms (10 ms) with the 3/2 law and 15 ms (9 ms) with the linear
+one, the coin is in contact 90 % (68 %) and 76 % (64 %) of the first 0.1 s. So the long first
+contact is not a slow impact of a soft law (a law whose impacts last 0.75 ms keeps it): the coin
+stays on its rim, sliding and rolling, as a rigid coin pressed by gravity does. Frictionless
+(``--friction 0 --trace 2``) it stays there too (28 ms, 85 %): friction does not press it. What
+makes MuJoCo's coins hop is MuJoCo's: its sliding contacts move apart
+(``bench_mujoco_edges.py``'s notes). The exponent, the stiffness (t_c) and, in MuJoCo, the
+impedance's first touch leave the edge counts where they were; the normal law is not where the
+engines part."""
 
 from __future__ import annotations
 

@@ -216,6 +216,7 @@ def main() -> None:
     import mujoco
 
     import bench_contact
+    import mujoco_args
     from coinflight.core.impact import angular_velocity
     from coinflight.core.outcome import EDGE, Status
     from coinflight.outcomes.table import land
@@ -234,13 +235,15 @@ def main() -> None:
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
     parser.add_argument(
-        "--solimp", default=",".join(str(x) for x in mc.SOLIMP), help="MuJoCo's d0,dmax,width"
+        "--solimp",
+        type=mujoco_args.solimp,
+        default=",".join(str(x) for x in mc.SOLIMP),
+        help="MuJoCo's d0,dmax,width",
     )
     parser.add_argument("--limit", type=float, default=mc.SETTLE)
     parser.add_argument("--save", default=None, help="write the episode tables to SAVE.npz")
     args = parser.parse_args()
-    solimp = tuple(float(x) for x in args.solimp.split(","))
-    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, args.solimp)
     e, mu = args.restitution, args.friction
     t0 = time.perf_counter()
     dist, omega, v0 = study.edge_draw(args.n, args.seed, "vigorous")

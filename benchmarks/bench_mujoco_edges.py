@@ -56,7 +56,8 @@ Toss by toss (``bench_edge_trace.py``) the two part within ~30 ms of the hand-of
 the coin off its rim in 0.8 ms where coinflight's compliant rim keeps it pressed for ~9 ms, and
 MuJoCo's coins then hop (6 % of the first 0.1 s in contact, against 51 %) where coinflight's
 stay on the rim and roll up. The factor left lies in that normal contact; not yet pinned to a
-parameter (coinflight's t_c 0.25 ms leaves 47 on edge, ``bench_edge_sensitivity.py``; MuJoCo's
+parameter (coinflight's t_c 0.25 ms leaves 47 on edge, ``bench_edge_sensitivity.py``; 48
+re-measured since; MuJoCo's
 ``solimp``, which sets how soft its contact is at first touch, is untried).
 
 MuJoCo's normal contact changed (2026-11-23, 23:39-00:10 UTC, load 8-14; ``600 --handoff-only
@@ -78,7 +79,9 @@ does not rebound, against 0.8 ms and 0.34 of its speed by default; at 0.1 m/s 0.
 coinflight's 3/2 law 5.7 ms, 0.18), yet leaves its edge count where it was: MuJoCo's
 impedance does not move it toward coinflight's 49 (0.110 ± 0.015). Nor does coinflight's
 normal law move toward MuJoCo: a linear rim law (``bench_edge_sensitivity.py --exponent 1``,
-impacts of 0.75 ms as MuJoCo's) leaves 47, and 49 at t_c 0.25 ms. The gap is not in the normal
+impacts of 0.75 ms as MuJoCo's) leaves 47 against the 3/2 law's 49 (both carried to rest
+without the upright decision, which changes none of the 49), and 49 against 48 at t_c 0.25
+ms. The gap is not in the normal
 law's shape, stiffness or first-touch softness of either engine (that run's notes).
 
 Where they part is MuJoCo's sliding contact, which moves apart
@@ -209,13 +212,8 @@ def from_handoff(
 def solver_of(args: argparse.Namespace) -> mujoco_compare.FrictionSolver:
     """MuJoCo's solver settings from ``--cone``, ``--impratio``, ``--noslip``, ``--solimp``,
     ``--timeconst``."""
-    solimp = tuple(float(x) for x in args.solimp.split(","))
     return mujoco_compare.FrictionSolver(
-        args.cone,
-        args.impratio,
-        args.noslip,
-        solimp,  # type: ignore[arg-type]
-        args.timeconst,
+        args.cone, args.impratio, args.noslip, args.solimp, args.timeconst
     )
 
 
@@ -284,6 +282,8 @@ def handoff_only(args: argparse.Namespace, pairs: tuple[tuple[float, ...], ...])
 
 
 def main() -> None:
+    import mujoco_args
+
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("n", type=int, nargs="?", default=200)
     parser.add_argument("--seed", type=int, default=2026)
@@ -335,12 +335,13 @@ def main() -> None:
     )
     parser.add_argument(
         "--solimp",
+        type=mujoco_args.solimp,
         default=",".join(str(x) for x in mujoco_compare.SOLIMP),
         help="MuJoCo's impedance d0,dmax,width (m) from the hand-off (default MuJoCo's)",
     )
     parser.add_argument(
         "--timeconst",
-        type=float,
+        type=mujoco_args.timeconst,
         default=mujoco_compare.TIMECONST,
         help="MuJoCo's contact time constant solref[0] from the hand-off, s",
     )

@@ -23,7 +23,8 @@ cone and the no-slip pass make its friction harder). ``--release``: each impact 
 both soft engines until its contact ends, and the lowest point's normal velocity then over its
 approach speed (:func:`release_rebound`). ``--converge T1,T2,...``: this phase alone, the same
 N impacts for every t_c, each followed to the end of its contact (:func:`converge`);
-``--resistance L`` its ℓ_r = ℓ_p there (default 1e-4 m).
+``--resistance L`` its ℓ_r = ℓ_p there (default 1e-4 m) and ``--slip-factor F`` its
+SLIP_SPEED times F (both refused without ``--converge``).
 
 Does a rim impact of this phase converge to the rigid law as t_c → 0? (2026-11-23,
 23:40-23:57 UTC, load 8-14; ``python benchmarks/bench_rim_impacts.py 200 --friction μ
@@ -269,6 +270,7 @@ def main() -> None:
     import mujoco
 
     import bench_contact
+    import mujoco_args
     from coinflight.core import contact_phase as cp
     from coinflight.core import impact as im
     from coinflight.studies import landing as study
@@ -284,7 +286,10 @@ def main() -> None:
     parser.add_argument("--impratio", type=float, default=1.0)
     parser.add_argument("--noslip", type=int, default=0)
     parser.add_argument(
-        "--solimp", default=",".join(str(x) for x in mc.SOLIMP), help="MuJoCo's d0,dmax,width"
+        "--solimp",
+        type=mujoco_args.solimp,
+        default=",".join(str(x) for x in mc.SOLIMP),
+        help="MuJoCo's d0,dmax,width",
     )
     parser.add_argument(
         "--release", action="store_true", help="the kinematic restitution at the contact's end"
@@ -293,17 +298,20 @@ def main() -> None:
         "--converge", default=None, metavar="T1,T2,...", help="t_c values, s (this phase only)"
     )
     parser.add_argument(
-        "--resistance", type=float, default=1e-4, help="this phase's ℓ_r = ℓ_p in --converge, m"
+        "--resistance", type=float, default=None, help="this phase's ℓ_r = ℓ_p in --converge, m"
     )
     parser.add_argument(
-        "--slip-factor", type=float, default=1.0, help="SLIP_SPEED times F in --converge"
+        "--slip-factor", type=float, default=None, help="SLIP_SPEED times F in --converge"
     )
     args = parser.parse_args()
+    if not args.converge and (args.resistance is not None or args.slip_factor is not None):
+        parser.error("--slip-factor and --resistance are for --converge only")
     if args.converge:
+        args.resistance = 1e-4 if args.resistance is None else args.resistance
+        args.slip_factor = 1.0 if args.slip_factor is None else args.slip_factor
         converge(args)
         return
-    solimp = tuple(float(x) for x in args.solimp.split(","))
-    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, solimp)  # type: ignore[arg-type]
+    solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, args.solimp)
     if args.release:
         release_rebound(args, solver)
         return

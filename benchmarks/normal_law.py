@@ -4,17 +4,20 @@ The contact phase (:mod:`coinflight.core.contact_phase`) presses each rim on the
 linear spring per radian of rim, κ d(φ), whose sum over a short arc is Hertz-like: F ∝ d0^(3/2)
 in the depth d0 of the rim's lowest point (a curved rim on a plane), with the damping of Tsuji,
 Tanaka & Ishida (1992). MuJoCo's contact is linear in the depth. To ask whether that exponent is
-why the two engines part, :func:`use_exponent` swaps the phase's ``rim_contact`` for a family
-of laws with the same geometry, before any kernel is compiled (into a temporary numba cache,
-removed at exit; the package's cache is not touched):
+why the two engines part, :func:`use_exponent` swaps the phase's ``_rim`` (the kernel that
+``rim_contact``, the derivative and the energy all call) for a family of laws with the same
+geometry, before any kernel is compiled (into a temporary numba cache, removed at exit; the
+package's cache is not touched):
 
 * the elastic energy of a rim is U_p = C (U_a)^β, β = 2 (p + 1)/5, U_a the default arc's
   energy κ ∫ d²/2 dφ. Its force and moment are λ times the arc's (λ = C β U_a^(β−1)): the same
   centre of pressure, and a potential, so the law is conservative and the energy test of the
   phase stays exact. On a short arc, U_a = (8√2/15) κ d0^(5/2) / sqrt(B) (B = r s), so
   F = K_p d0^p: p = 3/2 is the default law (left in place); for p = 1 C is set so
-  that an upright rim (B = r) has K_1 = 2πκ = π² m / t_c², the face's stiffness: a coin upright
-  on its rim point (effective mass m) sinks for t_c, as a coin dropped flat does. (Tilted, the
+  that an upright rim (B = r) has K_1 = 2πκ = π² m / t_c², the face's stiffness: a coin on
+  one upright rim point (effective mass m) would sink for t_c, as a coin dropped flat does.
+  Upright, a sharp coin touches with both rims, so its stiffness is 2 K_1 and the contact
+  lasts ~t_c/√2 (undamped; 0.76 and 0.74 ms measured, damped, below). (Tilted, the
   stiffness grows as B^(−2/5); a face flat on the table gets F ∝ d^(3/5): a benchmark knob,
   not a model of a face.)
 * the damping is the default arc's with ζ_p (:func:`damping_ratio`: the dimensionless law
@@ -27,7 +30,9 @@ rims' sinking with the 3/2 law: with another exponent the tosses are carried to 
 :func:`coinflight.core.contact_phase.advance` with ``decide=False``.
 
 Checked (2026-11-23, by hand, not a test): p = 1 gives F = 2πκ d0 on an upright rim to four
-digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six. A nickel
+digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad to six
+(tests/test_bench_normal_law.py checks both rims' 2 × 2πκ d0 at 1 μm through the phase's
+derivative, and the copy's geometry against ``_rim``'s). A nickel
 dropped upright on both rims (frictionless, t_c 1 ms) stays in contact 0.76 ms at 0.1 m/s and
 0.74 ms at 1 m/s with p = 1 (rebound 0.38, 0.40 of its speed), 5.7 and 3.0 ms with p = 3/2
 (0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebound
@@ -48,12 +53,17 @@ EXPONENTS = (1.0, 1.5)
 """Exponents the knob accepts: the linear law and the default (3/2)."""
 
 
+_CACHE: list[str] = []
+"""The temporary cache :func:`fresh_cache` made, if it was called."""
+
+
 def fresh_cache() -> None:
     """Compile numba kernels into a temporary cache directory (removed at exit), before any
     is compiled: a patched global is then read by the compiler, not a cached kernel."""
     cache = tempfile.mkdtemp(prefix="coinflight-law-")
     atexit.register(shutil.rmtree, cache, True)
     os.environ["NUMBA_CACHE_DIR"] = cache
+    _CACHE.append(cache)
 
 
 def damping_ratio(restitution: float, exponent: float) -> float:
@@ -76,35 +86,64 @@ def damping_ratio(restitution: float, exponent: float) -> float:
 
 
 def use_exponent(exponent: float) -> None:
-    """Make the contact phase's rim law F ∝ d0^p (module notes); call before any kernel of
-    :mod:`coinflight.core.contact_phase` is compiled, after :func:`fresh_cache`. p = 3/2 leaves
-    everything as it is."""
+    """Make the contact phase's rim law F ∝ d0^p (module notes): patches ``contact_phase._rim``,
+    through which :func:`~coinflight.core.contact_phase.rim_contact`, the derivative and the
+    energy all go. Call after :func:`fresh_cache`, before any kernel of
+    :mod:`coinflight.core.contact_phase` is compiled. p = 3/2 leaves everything as it is."""
     if exponent not in EXPONENTS:
         raise ValueError(f"exponent must be one of {EXPONENTS}, got {exponent!r}")
     if exponent == 1.5:
         return
+    from coinflight.core import contact_phase as cp
+
+    if not _fresh(cp):
+        raise RuntimeError(
+            "use_exponent needs fresh_cache() first, before any kernel of contact_phase is "
+            "imported or compiled"
+        )
+    cp._rim = rim_law(exponent)
+
+
+def _fresh(module) -> bool:  # type: ignore[no-untyped-def]
+    """Whether every numba kernel of ``module`` caches into :func:`fresh_cache`'s directory (the
+    module was imported after it) and none is compiled yet (a patched global still reaches
+    them, and nothing patched is written into the package's own cache)."""
+    cache = os.environ.get("NUMBA_CACHE_DIR")
+    if cache not in _CACHE:
+        return False
+    kernels = [
+        f
+        for f in vars(module).values()
+        if hasattr(f, "signatures") and f.py_func.__module__ == module.__name__
+    ]
+    return all(not f.signatures and f._cache._cache_path.startswith(str(cache)) for f in kernels)
+
+
+def rim_law(exponent: float):  # type: ignore[no-untyped-def]
+    """The kernel of ``contact_phase._rim`` (the same signature) with the law F ∝ d0^p: its body
+    copied, the law changed where marked (module notes)."""
     from numba import njit
 
-    from coinflight.core import contact_phase as cp
     from coinflight.core.impact import _coupling, cross
 
-    basis = cp._tangent_basis
     beta = 2.0 * (exponent + 1.0) / 5.0
     scale = math.sqrt(2.0 * exponent / 3.0)
 
     @njit(cache=True)
-    def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):  # type: ignore[no-untyped-def]
-        # The default's arc sums (contact_phase.rim_contact), the law changed where marked.
-        s, w = basis(n)
+    def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):  # type: ignore[no-untyped-def]
+        # The default's arc sums (contact_phase._rim), the law changed where marked.
         radius -= corner
         hh -= corner
         a = corner - z - sigma * hh * n[2]
         b = radius * s
         if a + b <= 0.0:
             return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
-        phi = math.pi if a >= b else math.acos(-a / b)
-        sp = math.sin(phi)
-        cp_ = math.cos(phi)
+        if a >= b:
+            phi, sp, cp_ = math.pi, 0.0, -1.0
+        else:
+            cp_ = -a / b
+            phi = math.acos(cp_)
+            sp = math.sqrt((1.0 - cp_) * (1.0 + cp_))
         i0 = 2.0 * phi
         ic = 2.0 * sp
         icc = phi + sp * cp_
@@ -148,4 +187,4 @@ def use_exponent(exponent: float) -> None:
         pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
         return force, q, pivot, energy
 
-    cp.rim_contact = rim_contact
+    return _rim

@@ -203,10 +203,22 @@ def test_timeconst_reaches_the_model_and_the_settings():
     assert slow.settings()["timeconst"] == 4e-3
 
 
-@pytest.mark.parametrize("tau", [1e-4, 0.2, math.nan, True, "1e-3"])
+@pytest.mark.parametrize("tau", [1e-4, 0.2, math.nan, math.inf])
 def test_bad_timeconst_is_refused_in_one_line(tau):
-    with pytest.raises(ValueError, match=r"MuJoCo timeconst must be between 0\.0002 and 0\.1 s"):
+    # _validation's wording for a range (v.in_range).
+    with pytest.raises(
+        ValueError, match=r"MuJoCo timeconst must be between 0\.0002 and 0\.1 \(in s\), got"
+    ):
         mc.FrictionSolver(timeconst=tau)
+
+
+@pytest.mark.parametrize("tau", [True, "1e-3", (1e-3, 2e-3)])
+def test_a_timeconst_that_is_not_one_number_is_refused(tau):
+    # _validation's wordings for a value that is no number (a bool, a string) or several.
+    words = r"MuJoCo timeconst must be (a number or an array of numbers|a single number), got"
+    with pytest.raises(TypeError, match=words) as caught:
+        mc.FrictionSolver(timeconst=tau)
+    assert "\n" not in str(caught.value)
 
 
 def _flat_slide_in_mujoco(friction):

@@ -170,9 +170,13 @@ s) and 0.8 ms in MuJoCo (0.5 mN s), the coin is in contact 51 % of the first 0.1
 there (4.5 short episodes before the tilts part, ~30 ms in): MuJoCo's coin hops and slides on
 its rim, this phase keeps it pressed long enough for friction to turn sliding into rolling. The
 friction here is within μ F_n (largest 0.999996 μ F_n on 29,370 traced states) and opposes the
-slip at the centre of pressure (tests/test_contact_friction.py). Which normal contact is closer
-to a coin's (MuJoCo's ``solimp`` softness at first touch, this phase's d^(3/2) rim law) is
-not known.
+slip at the centre of pressure (tests/test_contact_friction.py). The normal law's shape and
+softness are not what parts them (:mod:`coinflight.studies.mujoco_compare`'s notes, "Why the
+engines part", measured): this phase with a linear rim law, or MuJoCo with a soft first touch
+(``solimp``), leaves its edge count where it was; what differs is that MuJoCo's sliding contact
+lifts the coin off the table (a flat nickel sliding at 0.5 m/s with μ 0.3 is in contact 7 % of
+30 ms there, 100 % here), where this phase keeps it pressed by its weight, as a rigid coin
+sliding on a table is.
 
 On the landing report's tosses (no axial spin; ``--tosses report``, 400 tosses, seed 2026, e 0.5, μ
 0.3, resistances 1e-4 m) it goes the other way: no edge here (85 % of them end at an impact,
@@ -327,7 +331,8 @@ decisions (coins decided while already leaning slowly over a corner they then pa
 Beyond these settings (the same tosses, the decision probed as above, 21:15-21:19 UTC): t_c
 2 ms (the rims sink 2.5× deeper) 125 and 416 decided at μ 0.3 and 0.6, ℓ_r = ℓ_p = 1e-3 m 89,
 248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
-longer) 56 and 187, each time 0 disagreements; 91 % and 98 % of the steps saved at 1e-5 m.
+longer) 56 and 178 (as re-measured, ``bench_contact.py``'s notes), each time 0 disagreements;
+91 % and 98 % of the steps saved at 1e-5 m.
 The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
 margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
 every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,

@@ -1,0 +1,80 @@
+"""The MuJoCo benchmarks' ``--solimp`` and ``--timeconst`` (benchmarks/mujoco_args.py) and
+bench_rim_impacts.py's ``--converge``-only options: a bad value is one line naming it, in
+FrictionSolver's words, exit 2 and no traceback, before anything is simulated."""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from coinflight.studies import mujoco_compare as mc
+
+pytest.importorskip("mujoco")
+
+BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
+
+
+def _words(**setting):  # type: ignore[no-untyped-def]
+    """FrictionSolver's own refusal of the setting."""
+    with pytest.raises((TypeError, ValueError)) as refused:
+        mc.FrictionSolver(**setting)
+    return str(refused.value)
+
+
+def test_the_helpers_build_through_friction_solver(monkeypatch):
+    monkeypatch.syspath_prepend(str(BENCH))
+    import mujoco_args
+
+    assert mujoco_args.solimp("0.1,0.95,3e-5") == (0.1, 0.95, 3e-5)
+    assert mujoco_args.timeconst("4e-3") == 4e-3
+    for text, setting in (
+        ("abc", {"solimp": "abc"}),
+        ("0.9,1,0.001", {"solimp": (0.9, 1.0, 0.001)}),
+        ("0.9,0.95", {"solimp": (0.9, 0.95)}),
+    ):
+        with pytest.raises(argparse.ArgumentTypeError) as refused:
+            mujoco_args.solimp(text)
+        assert str(refused.value) == _words(**setting)
+    for text, tau in (("0", 0.0), ("1", 1.0), ("nan", float("nan")), ("soon", "soon")):
+        with pytest.raises(argparse.ArgumentTypeError) as refused:
+            mujoco_args.timeconst(text)
+        assert str(refused.value) == _words(timeconst=tau)
+
+
+@pytest.mark.parametrize(
+    ("script", "args", "said"),
+    [
+        ("bench_mujoco_edges.py", ["--solimp", "abc"], "argument --solimp: "),
+        ("bench_mujoco_edges.py", ["--solimp", "0.9,1,0.001"], "argument --solimp: "),
+        ("bench_mujoco_edges.py", ["--timeconst", "0"], "argument --timeconst: "),
+        ("bench_edge_trace.py", ["--solimp", "0.9,1,0.001"], "argument --solimp: "),
+        ("bench_rim_impacts.py", ["--solimp", "abc"], "argument --solimp: "),
+        ("bench_rim_impacts.py", ["--resistance", "1e-3"], "--slip-factor and --resistance"),
+        ("bench_rim_impacts.py", ["--slip-factor", "3"], "--slip-factor and --resistance"),
+    ],
+)
+def test_bad_mujoco_settings_are_one_line_and_exit_2(script, args, said, tmp_path):
+    run = subprocess.run(
+        [sys.executable, str(BENCH / script), "2", *args],
+        capture_output=True,
+        text=True,
+        timeout=300,  # start-up and imports only: every input is checked before a toss
+        cwd=tmp_path,
+    )
+    assert run.returncode == 2, run.stderr
+    assert run.stdout == ""
+    assert "Traceback" not in run.stderr
+    last = run.stderr.strip().splitlines()[-1]  # argparse's own errors print the usage first
+    assert last.startswith(f"{script}: error: {said}"), run.stderr
+    if said.startswith("argument"):
+        value = args[1]
+        if args[0] == "--timeconst":
+            expected = _words(timeconst=float(value))
+        else:
+            pieces = value.split(",")
+            expected = _words(solimp=tuple(map(float, pieces)) if value != "abc" else value)
+        assert last == f"{script}: error: {said}{expected}"
