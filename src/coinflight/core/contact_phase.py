@@ -43,9 +43,7 @@ each toss its own e, μ): faces differ on 6, 0 and 3, statuses on none; a change
 by one ulp (ωx) flips 2, 0 and 6 faces (1 status) of the code before: the changes move
 outcomes no more than rounding does. Tried and not kept: a PI step-size control (β = 0.04:
 38 % fewer rejections, 6 % more steps, no faster); numba's "numpy" error model (no change).
-The batch's threads take the contact ending's tosses one at a time
-(:func:`coinflight.core.bounce.land`; equal blocks of these 300 tosses leave the larger 3.4 %
-over half, more when another process holds a core). What is left is the number of steps, held
+What is left is the number of steps, held
 by the stiffness of the compliant contact and of the regularised friction (the explicit
 stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
 the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
