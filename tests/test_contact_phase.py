@@ -799,6 +799,66 @@ def test_energy_test_shortcut_decides_as_the_whole_energy():
     del i1
 
 
+def _arc_energy_closed_form(y, coin, stiffness):
+    """The lower rim's elastic energy by rim_contact's closed form, ½ κ (a² i0 + 2ab ic +
+    b² icc), without its clamp at 0 (corner radius 0)."""
+    hh = coin.thickness / 2
+    a = -y[0] + hh * y[6]
+    b = coin.radius * math.sqrt(1.0 - y[6] ** 2)
+    cos = -a / b
+    phi = math.acos(cos)
+    sin = math.sqrt((1.0 - cos) * (1.0 + cos))
+    terms = a * a * 2.0 * phi + 2.0 * a * b * 2.0 * sin + b * b * (phi + sin * cos)
+    return 0.5 * stiffness * terms
+
+
+def test_energy_test_shortcut_holds_where_the_springs_closed_form_is_negative():
+    # below_barrier's shortcut is exact because the springs' energies are ≥ 0; their closed
+    # form cancels on a short arc (a coin pressed 1e-11 to 1e-10 m into the table), where it is
+    # negative by rounding, so rim_contact clamps it at 0. Built here: such an arc, and the rest
+    # of the energy on the barrier (the least vertical speed that reaches it), so that a
+    # negative spring energy would bring the whole energy below the barrier (free < barrier)
+    # while the shortcut says not below. κ = 1e9 N/m (a stiffer contact) makes the negative
+    # closed form, ~3e-24 J per N/m here, larger than the barrier's rounding (~1e-19 J).
+    c = _contact(NICKEL, e=0.5, mu=0.3)
+    kappa = 1e9
+    base = _state(NICKEL, 1.2)
+    closed = {}
+    for depth in np.logspace(-11, -9.5, 60):
+        y = base.copy()
+        y[0] -= depth
+        closed[depth] = _arc_energy_closed_form(y, NICKEL, kappa)
+    depth = min(closed, key=closed.get)
+    assert closed[depth] < -1e-16  # the closed form is negative, above the rounding below
+    y = base.copy()
+    y[0] -= depth
+    rest = cp._motion_energy(y, c)
+    barrier = c.barrier
+    assert rest < barrier
+    y[3] = math.sqrt(2.0 * (barrier - rest) / c.mass)
+    while cp._motion_energy(y, c) < barrier:
+        y[3] = np.nextafter(y[3], np.inf)
+    assert cp._motion_energy(y, c) - barrier < -closed[depth] / 100  # on the barrier
+    free, at = cp.free_energy(y, c, kappa)
+    assert at == barrier and free >= barrier
+    assert not cp.below_barrier(y, c, kappa)
+    spring = cp.rim_contact(
+        -1.0,
+        y[0],
+        (y[1], y[2], y[3]),
+        (y[4], y[5], y[6]),
+        (0.0, 0.0, 0.0),
+        NICKEL.radius,
+        NICKEL.thickness / 2,
+        c.mass,
+        c.i1,
+        c.i3,
+        kappa,
+        0.0,
+    )[3]
+    assert spring == 0.0
+
+
 @pytest.mark.parametrize(
     ("tilt", "v", "omega"),
     [

@@ -441,8 +441,9 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
 def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):
     """:func:`rim_contact` with the coin's tangent basis (s, ŵ) of :func:`_tangent_basis` given
     (it depends on n alone: :func:`_derivative` computes it once for both rims). The arc's
-    half-angle φ* = arccos(−A/B), sin φ* = sqrt((1 − cos φ*)(1 + cos φ*)) (accurate for a
-    short arc, where 1 − cos² φ* would cancel)."""
+    half-angle φ* = arccos(−A/B), its sine from its cosine, sin φ* = sqrt((1 − cos φ*)(1 +
+    cos φ*)): one sine and cosine fewer than from φ*, and exactly 0 at φ* = π. The arc's
+    elastic energy is clamped at 0 (its closed form cancels on a short arc)."""
     radius -= corner
     hh -= corner
     a = corner - z - sigma * hh * n[2]
@@ -460,7 +461,9 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
     icc = phi + sp * cp  # ∫ cos² φ dφ
     elastic = stiffness * (a * i0 + b * ic)
     moment = stiffness * (a * ic + b * icc)  # ∫ κ d cos φ dφ
-    energy = 0.5 * stiffness * (a * a * i0 + 2.0 * a * b * ic + b * b * icc)
+    # ≥ 0 as the integral of a square; the closed form cancels on a short arc (down to
+    # −5e-20 J measured), clamped so that below_barrier's shortcut holds to the bit.
+    energy = max(0.0, 0.5 * stiffness * (a * a * i0 + 2.0 * a * b * ic + b * b * icc))
     # Penetration rate, its even part: ḋ = a0 + a1 cos φ (+ a2 sin φ, left out).
     wn = cross(omega, n)
     ww = cross(omega, w)
@@ -658,9 +661,11 @@ def free_energy(y, c, stiffness):
 def below_barrier(y, c, stiffness):
     """``free < barrier`` of :func:`free_energy`, decided alike to the bit, but without the
     springs' energy (two :func:`rim_contact` sums) when the rest of the energy already reaches
-    the barrier: the springs' energies are ≥ 0 and rounded addition and subtraction are
-    monotonic, so adding them cannot bring the sum below it. The test :func:`_integrate` makes
-    after every step (~10 % of a step's time before this shortcut)."""
+    the barrier: the springs' energies are ≥ 0 (:func:`rim_contact` clamps its energy at 0,
+    where the closed form's cancellation on a short arc gives down to −5e-20 J) and rounded
+    addition and subtraction are monotonic, so adding them cannot bring the sum below it. The
+    test :func:`_integrate` makes after every step (~10 % of a step's time before this
+    shortcut)."""
     e = _motion_energy(y, c)
     barrier = _barrier(y, c)
     dissipative = _dissipative(c)
@@ -849,7 +854,7 @@ def contact_mode(y, c):
 
 
 @njit(cache=True)
-def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats):
+def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats, rtol):
     """Advance y in place for ``duration`` s (math.inf: no limit) or, if ``settle``, until the
     coin has settled, whichever comes first; with ``settle`` and ``decide``, a coin for which
     :func:`upright_decided` holds has settled too (on edge). ``stats`` (shape (len(MODES), 2),
@@ -857,7 +862,8 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     and the steps taken (for the benchmark); with one more row (shape (len(MODES) + 1, 2),
     filled with −1 by the caller), that row receives (time, steps) when
     :func:`upright_decided` first holds, with or without ``decide`` (so a run carried to rest
-    says where the decision would have ended it; the test runs at every step then).
+    says where the decision would have ended it; the test runs at every step then). ``rtol``
+    is the step control's relative tolerance (:data:`RTOL` but in tests).
 
     Returns (time advanced, accepted steps, settled).
     """
@@ -938,7 +944,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
                     + _E6 * k6[i]
                     + _E7 * k7[i]
                 )
-                tol = RTOL * (scale[i] + max(abs(y[i]), abs(new[i])))
+                tol = rtol * (scale[i] + max(abs(y[i]), abs(new[i])))
                 r = abs(e) / tol
                 if r > err:
                     err = r
@@ -958,8 +964,8 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
         y[5] /= size
         y[6] /= size
         # First same as last: k7, the derivative at the step's end before n's renormalisation
-        # (a change of |n| by ~1e-16, below the step's error; re-evaluating it cost a seventh
-        # derivative in 96 % of the steps).
+        # (a change of |n| by ≲1e-10 at RTOL 1e-7, measured, far below the step's tolerance
+        # ~2e-7; re-evaluating it cost a seventh derivative in 96 % of the steps).
         for i in range(10):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
@@ -1030,6 +1036,7 @@ def settle(z, v, n, lm, c):
         UPRIGHT_DECISION,
         MAX_STEPS,
         np.empty((0, 2)),
+        RTOL,
     )
     face = resting_face(y[6], c.edge_sine)
     return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
@@ -1044,6 +1051,7 @@ def advance(
     decide: bool = False,
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
+    rtol: float = RTOL,
 ) -> tuple[float, int, bool]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
     studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
@@ -1054,12 +1062,13 @@ def advance(
     compiles). ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time and
     steps spent in each mode; with one more row filled with −1 (shape
     (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
-    :func:`upright_decided` first held, decided or not (with ``settle_check``)."""
+    :func:`upright_decided` first held, decided or not (with ``settle_check``). ``rtol``: the
+    step control's relative tolerance (:data:`RTOL`; another for tests of the stepper)."""
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
     return _integrate(
-        state, duration, c, stiffness_of(c), zeta, settle_check, decide, max_steps, stats
+        state, duration, c, stiffness_of(c), zeta, settle_check, decide, max_steps, stats, rtol
     )
 
 
