@@ -9,22 +9,23 @@ and the next one, and says which well that is.
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
 planar rocking of :func:`coinflight.core.bounce.rock`).
 
-**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). ``python
-benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (300 vigorous tosses of a US
-nickel, e = 0.5, μ = 0.3; three rounds alternated with the code before the changes below,
-main at 6061499, run in a subprocess; medians; the shared 2-core machine at load 10.6,
-2026-11-23 23:56 UTC): carried to rest **783 landings a second against 562 before** (1.39×;
-per CPU second in one thread 1,426 against 1,125, 1.27×), and with each toss's own
-e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) 664 against 505 (1.32×; one thread 1,331 against 1,013,
-1.31×); faces differing on 0 and 1 of the 300 tosses, statuses on none. A second run,
-``--contact-rates 600`` (00:31 UTC, load 9.8 falling to 6.1 during it): 1,184 against 1,098
-(1.08×) and 1,331 against 1,027 (1.30×), per CPU second in one thread 1.24× and 1.36×; faces
-differing on 1 and 1 of 600. The wall-clock ratios move with the load, the one-thread ratios
-(1.24-1.36×) less. Quiet (load 1.7,
-23:18 UTC) the code before did 2,185 a second; this code was not measured quiet. So 50,000 is
-still ~20× away.
+**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). The
+changes below (first same as last, the energy test's shortcut, one tangent basis) make a
+landing with this ending 1.24-1.39× cheaper per CPU second in one thread, measured with
+``python benchmarks/bench_bounce.py --contact-rates N --old-src DIR`` (vigorous tosses of a US
+nickel, e = 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); rounds
+alternated with the code before, main at 6061499, in a subprocess; medians of the rounds;
+the shared 2-core machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×;
+600 tosses at load 9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9
+1.31×, 1.39× and 1.34×. Faces differed on 0-1 tosses of each run, statuses on none. The
+wall-clock rates with both threads move with the other processes' load (1.08-1.39× in the
+first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 against 1,098 at 9.8-6.1)
+and are not the measure of the change. Quiet (load 1.7, 23:18 UTC) the code before did 2,185
+a second; this code was not measured quiet. So 50,000 is still ~20× away.
 
-Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5): 213 are handed to
+Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
+ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
+``stats`` gives them, the costs per step by timing the pieces alone): 213 are handed to
 this phase, which takes 98 % of the landings' CPU time; a handed toss takes a mean 823 steps
 (median 605, largest 3,725; the 10 % longest hold 28 % of the steps): on one rim 73 % of the
 steps (59 % of the simulated time, a mean step of 0.37 ms), hops 20 % (36 %, 0.85 ms:
@@ -35,15 +36,16 @@ evaluations per accepted step, ~90 ns each in contact (~50 ns in flight); the en
 after each step ~210 ns (both rims' spring sums); the stepper's own arithmetic ~150 ns
 (measured with a trivial derivative); :func:`upright_decided` ~30 ns. Nothing is allocated on
 the heap per step (the stage arrays once per toss, vectors as tuples). Now a step is ~1.1 μs
-(1.3×): the energy test skips the springs when the rest of the energy already reaches the
-barrier (:func:`below_barrier`, decisions identical to the bit), the stepper keeps first same
-as last across the renormalisation (six evaluations a step), the derivative builds the tangent
-basis once for both rims. Before and after on 3 × 2,000 tosses (e 0.5, μ 0.3; e 0.5, μ 0.6;
-each toss its own e, μ): faces differ on 6, 0 and 3, statuses on none; a change of the inputs
-by one ulp (ωx) flips 2, 0 and 6 faces (1 status) of the code before: the changes move
-outcomes no more than rounding does. Tried and not kept: a PI step-size control (β = 0.04:
-38 % fewer rejections, 6 % more steps, no faster); numba's "numpy" error model (no change).
-What is left is the number of steps, held
+(derived from the one-thread ratio ~1.3×, not measured itself): the energy test skips the
+springs when the rest of the energy already reaches the barrier (:func:`below_barrier`,
+decisions identical to the bit), the stepper keeps first same as last across the
+renormalisation (six evaluations a step), the derivative builds the tangent basis once for both
+rims. Before and after on 3 × 2,000 tosses (e 0.5, μ 0.3; e 0.5, μ 0.6; each toss its own e,
+μ): faces differ on 6, 0 and 3, statuses on none; a change of the inputs by one ulp (ωx) flips
+2, 0 and 6 faces (1 status) of the code before: the changes move outcomes no more than rounding
+does. Tried and not kept: a PI step-size control (β = 0.04: 38 % fewer rejections, 6 % more
+steps, no faster); numba's "numpy" error model (no change). What is left is the number of
+steps, held
 by the stiffness of the compliant contact and of the regularised friction (the explicit
 stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
 the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
@@ -57,7 +59,8 @@ phase (their whole energy is above the barrier when the bounces die out), bringi
 about n 0.03, tumbling 0.8, vertical motion and height 0.9 (the coin is tilted on its rim).
 A handed toss is integrated for a median 0.30 s of simulated time and ~760 steps (quartiles
 240-1,900), a mean of 2,500-3,000 steps, ~3-5 μs each as measured then (~1.45 μs of CPU before
-the changes above, ~1.1 μs after them): the 10 % longest tosses take 61 % of the steps. By what
+the changes above, ~1.1 μs after them, derived): the 10 % longest tosses take 61 % of the
+steps. By what
 the coin is doing (:func:`contact_mode`): on both rims (upright in its edge band: coins rolling
 in the sharp rim's edge well for up to ~9 s until the rolling resistance stops them) 75 % of
 the simulated time and 67 % of the steps; on one rim point
