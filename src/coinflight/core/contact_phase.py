@@ -17,7 +17,9 @@ nickel, e = 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)
 alternated with the code before, main at 6061499, in a subprocess; medians of the rounds;
 the shared 2-core machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×;
 600 tosses at load 9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9
-1.31×, 1.39× and 1.34×. Faces differed on 0-1 tosses of each run, statuses on none. The
+1.31×, 1.39× and 1.34×; with the review's fixes (the arc's energy clamped at 0, the
+step tolerance a run-time argument, no chunk size), 300 tosses at load 4.2-4.8 (00:57 UTC)
+1.27× and 1.33×. Faces differed on 0-1 tosses of each run, statuses on none. The
 wall-clock rates with both threads move with the other processes' load (1.08-1.39× in the
 first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 against 1,098 at 9.8-6.1)
 and are not the measure of the change. Quiet (load 1.7, 23:18 UTC) the code before did 2,185
