@@ -37,10 +37,13 @@ from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record, land
 
-COIN = Coin.preset("us-nickel")
+COIN_PRESET = "us-nickel"
+COIN = Coin.preset(COIN_PRESET)
 G = 9.81
 DROP = 0.8
 SURFACE = Surface("table", drop_height=DROP, restitution=0.5, friction=0.3)
+CONTACT = Surface("table", DROP, 0.5, 0.3, ending="contact")
+"""The contact ending's surface of :func:`contact_rates` (and of :data:`OLD_CONTACT`)."""
 
 
 def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
@@ -142,23 +145,21 @@ from coinflight import Coin
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import land
 a = json.loads(sys.argv[1])
-rng = np.random.default_rng(a["seed"])
-n = a["n"]
-omega = np.column_stack([rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n),
-                         rng.uniform(-30.0, 30.0, n)])
-v0 = rng.uniform(1.5, 3.0, n)
-rng = np.random.default_rng(7)
-mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
-coin = Coin.preset("us-nickel")
-contact = Surface("table", 0.8, 0.5, 0.3, ending="contact")
+given = np.load(a["inputs"])
+omega, v0 = given["omega"], given["v0"]
+mixture = {"restitution": given["restitution"], "friction": given["friction"]}
+n = len(v0)
+coin = Coin.preset(a["coin"])
+g = a["g"]
+contact = Surface("table", a["drop"], a["restitution"], a["friction"], ending="contact")
 cases = {
-    "contact ending": lambda p: land(coin, omega, v0, 1.0, 9.81, contact, parallel=p),
+    "contact ending": lambda p: land(coin, omega, v0, 1.0, g, contact, parallel=p),
     "contact ending, each toss its own e, μ": lambda p: land(
-        coin, omega, v0, 1.0, 9.81, contact, contact=mixture, parallel=p),
+        coin, omega, v0, 1.0, g, contact, contact=mixture, parallel=p),
 }
 for p in (True, False):  # compile or load the cache
-    land(coin, omega[:20], v0[:20], 1.0, 9.81, contact, parallel=p)
-    land(coin, omega[:20], v0[:20], 1.0, 9.81, contact, parallel=p,
+    land(coin, omega[:20], v0[:20], 1.0, g, contact, parallel=p)
+    land(coin, omega[:20], v0[:20], 1.0, g, contact, parallel=p,
          contact={k: v[:20] for k, v in mixture.items()})
 out, arrays = {"wall": {}, "cpu": {}}, {}
 for k, f in cases.items():
@@ -170,19 +171,31 @@ if a["save"]:
 print(json.dumps(out))
 """
 """One round of :data:`CONTACT_CASES` in another implementation (run with ``python -c``, its
-``src`` on PYTHONPATH): the same tosses as :func:`tosses` and :func:`contact_rates`."""
+``src`` on PYTHONPATH), on the tosses :func:`contact_rates` gives it in an .npz (ω, v0 and each
+toss's e, μ) and the surface's values in its JSON argument."""
 
 
-def _other_contact(old_src: str, n: int, cache: str, save: str = "") -> dict:
+def _other_contact(old_src: str, inputs: str, cache: str, save: str = "") -> dict:
     """Rates of :data:`OLD_CONTACT` in a subprocess (its numba cache in ``cache``, not in its
-    sources): ``{"wall": tosses a second of wall time (all threads), "cpu": per CPU second in
-    one thread (parallel=False)}``, each a dict by case; with ``save`` its faces and statuses
-    written there (.npz)."""
+    sources) on the tosses in ``inputs`` (.npz: omega, v0, restitution, friction): ``{"wall":
+    tosses a second of wall time (all threads), "cpu": per CPU second in one thread
+    (parallel=False)}``, each a dict by case; with ``save`` its faces and statuses written
+    there (.npz)."""
     import json
     import subprocess
     import sys
 
-    payload = json.dumps({"n": n, "seed": 2026, "save": save})
+    payload = json.dumps(
+        {
+            "inputs": inputs,
+            "save": save,
+            "coin": COIN_PRESET,
+            "g": G,
+            "drop": DROP,
+            "restitution": CONTACT.restitution,
+            "friction": CONTACT.friction,
+        }
+    )
     env = dict(os.environ, PYTHONPATH=old_src, NUMBA_CACHE_DIR=cache)
     done = subprocess.run(
         [sys.executable, "-c", OLD_CONTACT, payload],
@@ -215,7 +228,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     import tempfile
 
     omega, v0 = tosses(n)
-    contact = Surface("table", DROP, 0.5, 0.3, ending="contact")
+    contact = CONTACT
     rng = np.random.default_rng(7)
     mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
     for parallel in (True, False):  # compile (or load the cache)
@@ -245,6 +258,8 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     other: dict[str, dict[str, list[float]]] = {"wall": {}, "cpu": {}}
     with tempfile.TemporaryDirectory() as cache:
         saved = os.path.join(cache, "other.npz")
+        inputs = os.path.join(cache, "tosses.npz")
+        np.savez(inputs, omega=omega, v0=v0, **mixture)
         for r in range(repeats):
             for name, fn in cases.items():
                 t0 = time.perf_counter()
@@ -253,7 +268,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
             if old_src:  # one round of the other implementation in each round of these
                 for name in CONTACT_CASES:
                     cpu[name].append(cpu_rate(lambda f=own[name]: f(False), n))
-                rates = _other_contact(old_src, n, cache, save=saved if r == 0 else "")
+                rates = _other_contact(old_src, inputs, cache, save=saved if r == 0 else "")
                 for kind, by_case in rates.items():
                     for name, rate in by_case.items():
                         other[kind].setdefault(name, []).append(rate)

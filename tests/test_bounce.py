@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import math
+import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -215,3 +218,44 @@ def test_benchmark_labels_heads_and_tails_by_the_face_codes():
 
     face = np.array([HEADS, HEADS, TAILS, HEADS, EDGE], dtype=np.int8)
     assert face_fractions(face) == "P(heads, tails, edge) = (0.6000, 0.2000, 2.00e-01)"
+
+
+_FORK_AFTER_SERIAL = """
+import os, sys
+import numpy as np
+from _kernels import coin_contact
+from coinflight import Coin
+from coinflight.core import bounce
+from coinflight.core.contact import CONTACT_ENDING
+
+c = coin_contact(Coin.preset("us-nickel"), drop_height=0.3, ending=CONTACT_ENDING)
+rng = np.random.default_rng(3)
+omega = np.column_stack([rng.uniform(150, 300, 8), rng.uniform(-5, 5, 8), np.full(8, 20.0)])
+speed = rng.uniform(2.0, 3.0, 8)
+serial = bounce.land(omega, speed, 1.0, c, parallel=False)
+pid = os.fork()
+if pid == 0:
+    together = bounce.land(omega, speed, 1.0, c, parallel=True)
+    same = all(np.array_equal(a, b) for a, b in zip(serial, together))
+    os._exit(0 if same else 3)
+sys.exit(os.waitstatus_to_exitcode(os.waitpid(pid, 0)[1]))
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork() as on Linux")
+def test_parallel_landing_in_a_child_forked_after_a_serial_one():
+    # A serial landing must not start numba's threading layer: a process forked after it that
+    # runs the parallel kernel was killed with GNU OpenMP ("Terminating: fork() called from a
+    # process already using GNU OpenMP", SIGTERM) when land() entered numba's
+    # parallel_chunksize (which starts the layer) for parallel=False too. The child's parallel
+    # landing must end (exit 0) with the serial one's results.
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p)}
+    run = subprocess.run(
+        [sys.executable, "-c", _FORK_AFTER_SERIAL],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=900,
+        check=False,
+    )
+    assert run.returncode == 0, (run.returncode, run.stderr[-2000:])

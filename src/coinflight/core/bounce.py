@@ -52,7 +52,7 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit, parallel_chunksize, prange
+from numba import njit, prange
 from numpy.typing import NDArray
 
 from coinflight.core.contact import CONTACT_ENDING, Contact
@@ -645,30 +645,22 @@ def land(
     rolling = contact.rolling_resistance if rolling_resistance is None else rolling_resistance
     pivoting = contact.pivoting_resistance if pivoting_resistance is None else pivoting_resistance
     kernel = _land_batch if parallel else _land_batch_serial
-    # The contact ending's tosses cost from ~1 μs (decided at an impact) to tens of ms (carried
-    # through the contact phase): its threads take tosses one at a time as they come free
-    # (dynamic scheduling) instead of numba's default equal blocks, which a heavy-tailed batch
-    # or a thread held up by another process leaves unbalanced (300 vigorous tosses: the larger
-    # of two equal blocks holds 3.4 % more than half the steps; each toss is independent, so
-    # the results are the same). The other endings keep the blocks (~1 μs a toss).
-    chunk = 1 if parallel and contact.ending == CONTACT_ENDING else 0
-    with parallel_chunksize(chunk):
-        kernel(
-            omega,
-            sign,
-            speed,
-            contact,
-            e,
-            mu,
-            _per_toss(rolling, n),
-            _per_toss(pivoting, n),
-            int(max_bounces),
-            face,
-            bounces,
-            first,
-            settle,
-            status,
-        )
+    kernel(
+        omega,
+        sign,
+        speed,
+        contact,
+        e,
+        mu,
+        _per_toss(rolling, n),
+        _per_toss(pivoting, n),
+        int(max_bounces),
+        face,
+        bounces,
+        first,
+        settle,
+        status,
+    )
     return face, bounces, first, settle, status
 
 
