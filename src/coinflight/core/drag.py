@@ -514,6 +514,24 @@ def _primitives(x: float, cx: float, sx: float, it: float) -> tuple:
     )
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _add_root(tot: tuple, t: float, it: float, after: float) -> tuple:
+    """``tot`` − 2 ``after`` times :func:`_primitives` at the root x = 2 arctan(t)/θ of g
+    (t = tan(θx/2), it = 1/θ), where g takes the sign ``after``."""
+    t2 = t * t
+    inv = 1.0 / (1.0 + t2)
+    fr = _primitives(2.0 * math.atan(t) * it, (1.0 - t2) * inv, 2.0 * t * inv, it)
+    d = -2.0 * after
+    return (
+        tot[0] + d * fr[0],
+        tot[1] + d * fr[1],
+        tot[2] + d * fr[2],
+        tot[3] + d * fr[3],
+        tot[4] + d * fr[4],
+        tot[5] + d * fr[5],
+    )
+
+
 @njit(cache=True, error_model="numpy")
 def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
@@ -533,9 +551,12 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     Ordinary Differential Equations I*, 2nd ed., 1993, §II.1), which integrate the kink of |n·v|
     to first order only and the turning attitude with a relative error (θ/2)⁴/180 of one sign.
     Below a turn of ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is
-    used (:func:`kink_weights`).
+    used (:func:`kink_weights`). The roots counted in the step always agree in parity with the
+    signs of g just inside its ends (of the slope where a node is 0): a root within rounding of
+    an end, put on the wrong side of it by the test, is moved across it, so that it changes the
+    integral by rounding only, not by twice a piece's weight.
     """
-    if c > TRIG_COS or c <= 0.0:
+    if c > TRIG_COS or c <= 0.0 or s <= 0.0:
         w0, w1, w2, m0, m1, m2, _ = kink_weights(g0, gm, g2)
         return (
             (
@@ -556,10 +577,72 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     it = 1.0 / theta
     f0 = _primitives(0.0, 1.0, 0.0, it)
     f1 = _primitives(1.0, cc, ss, it)
-    # Σ over the pieces of sign × (F(end) − F(start)) = sign(g(1)) F(1) − sign(g(0)) F(0)
-    # − 2 Σ sign(g′(x_r)) F(x_r) over the roots x_r (g takes the sign of g′ after a root).
-    s0 = 1.0 if g0 >= 0.0 else -1.0
-    s1 = 1.0 if g2 >= 0.0 else -1.0
+    # Σ over the pieces of sign × (F(end) − F(start)) = s1 F(1) − s0 F(0) − 2 Σ σ_r F(x_r)
+    # over the roots x_r in (0, 1), σ_r the sign of g after x_r. The end signs are those of g
+    # just inside the step: of g0, g2 or, where a node is 0, of the slope there (of gm if that
+    # is 0 too), so that a root at an end is not counted.
+    if g0 > 0.0:
+        s0 = 1.0
+    elif g0 < 0.0:
+        s0 = -1.0
+    elif gr != 0.0:
+        s0 = 1.0 if gr > 0.0 else -1.0  # g′(0) ∝ r
+    else:
+        s0 = 1.0 if gm >= 0.0 else -1.0
+    if g2 > 0.0:
+        s1 = 1.0
+    elif g2 < 0.0:
+        s1 = -1.0
+    elif gr * cc != gq * ss:  # g′(1) ∝ r cos θ − q sin θ; g before 1 has its opposite sign
+        s1 = -1.0 if gr * cc > gq * ss else 1.0
+    else:
+        s1 = 1.0 if gm >= 0.0 else -1.0
+    # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
+    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
+    qa = gp - gq
+    qb = gr
+    qc = gp + gq
+    disc = qb * qb - qa * qc
+    ta = 0.0
+    tb = 0.0
+    has_a = False
+    has_b = False
+    in_a = False
+    in_b = False
+    if disc > 0.0:
+        qq = -(qb + math.copysign(math.sqrt(disc), qb))
+        # The roots qq/qa and qc/qq; 0 < t < s/c (c, s > 0) tested without dividing.
+        if qa != 0.0:
+            has_a = True
+            ta = qq / qa
+            in_a = qq * qa > 0.0 and abs(qq) * c < abs(qa) * s
+        if qq != 0.0:
+            has_b = True
+            tb = qc / qq
+            in_b = qc * qq > 0.0 and abs(qc) * c < abs(qq) * s
+    if (in_a != in_b) == (s0 == s1):
+        # The number of roots disagrees with the end signs: a root within rounding of an end
+        # was put on the wrong side of it. The root nearest an end is moved across it (onto
+        # the end if brought in); without a root, g changes sign at the end where it is smaller.
+        da = math.inf
+        db = math.inf
+        if has_a:
+            xa = 2.0 * math.atan(ta) * it
+            da = min(abs(xa), abs(1.0 - xa))
+        if has_b:
+            xb = 2.0 * math.atan(tb) * it
+            db = min(abs(xb), abs(1.0 - xb))
+        if da == math.inf and db == math.inf:
+            if abs(g0) <= abs(g2):
+                s0 = s1
+            else:
+                s1 = s0
+        elif da <= db:
+            in_a = not in_a
+            ta = min(max(ta, 0.0), s / c)
+        else:
+            in_b = not in_b
+            tb = min(max(tb, 0.0), s / c)
     tot = (
         s1 * f1[0] - s0 * f0[0],
         s1 * f1[1] - s0 * f0[1],
@@ -568,36 +651,14 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         s1 * f1[4] - s0 * f0[4],
         s1 * f1[5] - s0 * f0[5],
     )
-    # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
-    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
-    qa = gp - gq
-    qb = gr
-    qc = gp + gq
-    disc = qb * qb - qa * qc
-    if disc > 0.0:
-        root = math.sqrt(disc)
-        qq = -(qb + math.copysign(root, qb))
-        for k in range(2):
-            # The roots qq/qa and qc/qq; 0 < t < s/c (c, s > 0) tested without dividing.
-            num = qq if k == 0 else qc
-            dnm = qa if k == 0 else qq
-            if num * dnm > 0.0 and abs(num) * c < abs(dnm) * s:
-                t = num / dnm
-                t2 = t * t
-                inv = 1.0 / (1.0 + t2)
-                cr = (1.0 - t2) * inv
-                sr = 2.0 * t * inv
-                fr = _primitives(2.0 * math.atan(t) * it, cr, sr, it)
-                # g takes the sign of g′ ∝ r cos − q sin after a simple root.
-                d = 2.0 if gr * cr - gq * sr < 0.0 else -2.0
-                tot = (
-                    tot[0] + d * fr[0],
-                    tot[1] + d * fr[1],
-                    tot[2] + d * fr[2],
-                    tot[3] + d * fr[3],
-                    tot[4] + d * fr[4],
-                    tot[5] + d * fr[5],
-                )
+    # g alternates in sign from s0 across the roots, in their order (t increases with x).
+    if in_a and in_b:
+        tot = _add_root(tot, min(ta, tb), it, -s0)
+        tot = _add_root(tot, max(ta, tb), it, s0)
+    elif in_a:
+        tot = _add_root(tot, ta, it, -s0)
+    elif in_b:
+        tot = _add_root(tot, tb, it, -s0)
     # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
     # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
     # in the node values: weights on the nodes, once for the three components.
