@@ -28,7 +28,13 @@ The load average is printed before and after: absolute rates on a shared machine
 
 With ``--profile N`` only the shares of a landing carried to rest spent in its phases (first
 flight, bounce flights, impacts, endings, lifts), timed by the processor's cycle counter around
-each phase of a copy of :func:`coinflight.core.drag.land_one` in one thread (:func:`profile`).
+each phase of a copy of :func:`coinflight.core.drag.land_one` in one thread (:func:`profile`),
+``--repeats`` runs (median and range), with the drag of ``--drag`` and ``--spin-damping``; the
+copy's impacts and endings are checked toss by toss against ``land_one`` itself. The shares
+are of the timed phases (the graze steps, ``lowest_depth`` and ``split`` are not timed); the
+cycle counter runs on while the thread is switched out, so on a loaded machine each phase
+carries some of other processes' time (the printout gives the timed cycles against the CPU
+time); the times a step are the phases' shares of the CPU time.
 
 With ``--accuracy M`` only the times against DOP853 at rtol 1e-12 on the first M tosses are
 printed (:func:`accuracy`): the catch, the first contact, a bounce flight from the state after
@@ -270,11 +276,16 @@ def accuracy(args: argparse.Namespace, m: int, drag: Drag) -> None:
         print("    " + line("second contact", [old_second[k] for k in keep], second_ref[keep]))
 
 
-def profile(n: int) -> None:
+def profile(n: int, drag: Drag, runs: int) -> None:
     """Shares of the time of ``n`` landings carried to rest through air (one thread) in their
     phases, and the steps and impacts a toss: a copy of :func:`coinflight.core.drag.land_one`
     (its grazes and impacts as there) with the cycle counter (LLVM's ``readcyclecounter``) read
-    around each phase."""
+    around each phase, ``runs`` times (median and range printed). The copy's impacts and endings
+    are checked against the real :func:`coinflight.core.drag.land_one` on the same tosses (an
+    error if any toss differs). The shares are of the timed phases only (the graze steps,
+    ``lowest_depth`` before an impact and ``split`` after it are not timed), and the cycle
+    counter keeps running while the thread is switched out: on a loaded machine every phase
+    includes some of other processes' time, in proportion to its own length."""
     from llvmlite import ir
     from numba import njit, types
     from numba.core import cgutils
@@ -284,6 +295,8 @@ def profile(n: int) -> None:
     from coinflight.core.bounce import GRAZE_SKIP, MAX_IMPACTS
     from coinflight.core.impact import impact, lowest_depth
     from coinflight.outcomes.table import contact_record
+
+    unsettled = int(Status.UNSETTLED)
 
     @intrinsic
     def cycles(typingctx):  # type: ignore[no-untyped-def]
@@ -295,9 +308,14 @@ def profile(n: int) -> None:
         return types.uint64(), codegen
 
     @njit
+    def now():  # type: ignore[no-untyped-def]
+        return cycles()
+
+    @njit
     def one(omega, launch_speed, air, c, acc):  # type: ignore[no-untyped-def]
         # acc: cycles of the first flight, bounce flights, impacts, endings, lifts; impacts,
-        # steps of the first flight, of the bounce flights
+        # steps of the first flight, of the bounce flights; bounce flights. Returns (impacts,
+        # status) as land_one's.
         n, u, a0, b0 = d.launch_state(omega, 1.0, air)
         z, v, tr, tmin = c.drop_height, (0.0, 0.0, launch_speed), 0.0, 0.0
         rising, budget, impacts = True, d.MAX_STEPS, 0
@@ -309,9 +327,10 @@ def profile(n: int) -> None:
             k = 0 if impacts == 0 else 1
             acc[k] += cycles() - t0
             acc[6 + k] += steps
+            acc[8] += k
             budget -= steps
             if dt < 0.0:
-                return
+                return impacts, unsettled
             rising, tmin = False, 0.0
             if speed >= 0.0:
                 z, v, n, u = d.step(z, v, n, u, tr, GRAZE_SKIP, a0, b0, air)
@@ -331,38 +350,88 @@ def profile(n: int) -> None:
             acc[3] += t2 - t1
             acc[5] += 1
             if status >= 0:
-                return
+                return impacts, status
             a0, b0, u = d.split(lm, n)
             t0 = cycles()
             tmin, z, v, n, u, tr = d.lift(z, v, n, u, lm, a0, b0, rebound, air, c)
             acc[4] += cycles() - t0
+        return impacts, unsettled
 
     @njit
-    def run(omega, v0, air, c, acc):  # type: ignore[no-untyped-def]
+    def run(omega, v0, air, c, acc, impacts, status):  # type: ignore[no-untyped-def]
         for k in range(omega.shape[0]):
-            one((omega[k, 0], omega[k, 1], omega[k, 2]), v0[k], air, c, acc)
+            impacts[k], status[k] = one((omega[k, 0], omega[k, 1], omega[k, 2]), v0[k], air, c, acc)
+
+    @njit
+    def real(omega, v0, air, c, impacts, status):  # type: ignore[no-untyped-def]
+        for k in range(omega.shape[0]):
+            _, b, _, _, st = d.land_one(
+                (omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], air, c, 1_000_000_000
+            )
+            impacts[k] = b + (0 if st == unsettled else 1)  # the impact that ended it
+            status[k] = st
 
     omega, v0 = tosses(n)
-    air = drag_model(COIN, Drag(coefficient=1.17), G)
+    air = drag_model(COIN, drag, G)
     c = contact_record(COIN, SURFACE, G)
-    acc = np.zeros(8, dtype=np.uint64)
-    run(omega[:10], v0[:10], air, c, acc)  # compile
-    acc[:] = 0
+    acc = np.zeros(9, dtype=np.uint64)
+    impacts, status = np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
+    run(omega[:10], v0[:10], air, c, acc, impacts[:10], status[:10])  # compile
+    want_impacts, want_status = np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
+    real(omega, v0, air, c, want_impacts, want_status)
     load = os.getloadavg()[0]
-    t0 = time.process_time()
-    run(omega, v0, air, c, acc)
-    cpu = time.process_time() - t0
-    total = float(acc[:5].sum())
+    shares, cpus, rates = [], [], []
+    for _ in range(runs):
+        acc[:] = 0
+        c0, w0, t0 = now(), time.perf_counter(), time.process_time()
+        run(omega, v0, air, c, acc, impacts, status)
+        cpus.append(time.process_time() - t0)
+        rates.append((now() - c0) / (time.perf_counter() - w0))  # cycles a wall second
+        shares.append(acc[:5] / float(acc[:5].sum()))
+    bad = np.flatnonzero((impacts != want_impacts) | (status != want_status))
+    if bad.size:
+        k = int(bad[0])
+        sys.exit(
+            f"profile: the copy of land_one differs from land_one on {bad.size} of {n} tosses "
+            f"(toss {k}: {impacts[k]} impacts, status {status[k]}; land_one {want_impacts[k]}, "
+            f"{want_status[k]})"
+        )
     print(
-        f"{n:,} landings carried to rest through air, one thread: "
-        f"{cpu / n * 1e6:.1f} µs of CPU a toss"
+        f"{n:,} landings carried to rest through air (C_d = {drag.coefficient:g}, K = "
+        f"{drag.spin_damping:g} N m s), one thread, {runs} runs: "
+        f"{statistics.median(cpus) / n * 1e6:.1f} µs of CPU a toss (median; "
+        f"{min(cpus) / n * 1e6:.1f}-{max(cpus) / n * 1e6:.1f}); impacts and endings of every "
+        f"toss as land_one's"
     )
+    print("  shares of the timed phases (median, range over the runs):")
     for k, name in enumerate(["first flight", "bounce flights", "impacts", "endings", "lifts"]):
-        print(f"  {name}: {acc[k] / total:.1%}")
+        col = [float(s[k]) for s in shares]
+        print(f"    {name}: {statistics.median(col):.1%} ({min(col):.1%}-{max(col):.1%})")
+    rate = statistics.median(rates)
+    first_steps, bounce_steps, flights = (float(x) for x in acc[6:9])
     print(
-        f"  a toss: {acc[5] / n:.2f} impacts, {acc[6] / n:.1f} steps in the first flight, "
-        f"{acc[7] / n:.1f} in the bounce flights"
+        f"  a toss (last run): {acc[5] / n:.2f} impacts, {flights / n:.2f} bounce flights, "
+        f"{first_steps / n:.1f} steps in the first flight, {bounce_steps / n:.1f} in the bounce "
+        f"flights"
     )
+    # The cycle counter runs on while the thread is switched out: the timed phases' cycles
+    # against the CPU time show how much of them is other processes' time. The times a step are
+    # the phase's share of the CPU time, on the assumption that it is spread alike.
+    cpu_toss = cpus[-1] / n
+    timed_toss = float(acc[:5].sum()) / rate / n
+    first, bounce, impact_share = (float(shares[-1][k]) for k in range(3))
+    print(
+        f"  last run: the timed phases {timed_toss * 1e6:.1f} µs a toss by the cycle counter "
+        f"({rate / 1e9:.2f} GHz against the wall clock), {cpu_toss * 1e6:.1f} µs of CPU in all; "
+        f"as shares of the CPU time: {first * cpu_toss / first_steps * n * 1e9:.0f} ns a step "
+        f"of the first flight, {bounce * cpu_toss / max(bounce_steps, 1.0) * n * 1e9:.0f} ns a "
+        f"step of the bounce flights (with their evaluations of the gap's lower bound), "
+        f"{impact_share * cpu_toss / max(float(acc[5]), 1.0) * n * 1e9:.0f} ns an impact"
+    )
+    ends = ", ".join(
+        f"{Status(s).label} {np.mean(want_status == s):.1%}" for s in np.unique(want_status)
+    )
+    print(f"  endings: {ends}")
     print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
 
 
@@ -388,7 +457,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="fewer tosses")
     parser.add_argument("--n", type=int, default=None, help="tosses for the compiled kernels")
-    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--repeats", type=int, default=5, help="rounds (runs of --profile)")
     parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
@@ -400,12 +469,16 @@ def main() -> None:
         "--profile", type=int, default=None, help="only: shares of the phases of this many landings"
     )
     args = parser.parse_args()
-    if args.profile:
-        profile(args.profile)
-        return
+    for name, value in (("--profile", args.profile), ("--repeats", args.repeats)):
+        if value is not None and value < 1:  # one line, exit code 2
+            print(f"bench_air.py: {name} must be a positive integer, got {value}", file=sys.stderr)
+            sys.exit(2)
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
+    if args.profile is not None:
+        profile(args.profile, drag, args.repeats)
+        return
     if args.accuracy:
         accuracy(args, args.accuracy, drag)
         return
