@@ -5,6 +5,7 @@
     python benchmarks/bench_air.py --quick
     python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
     python benchmarks/bench_air.py --profile 20000          # where a landing's time goes
+    python benchmarks/bench_air.py --ab 7 --old-src DIR     # one-thread A/B, 7 rounds
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
 rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
@@ -451,6 +452,38 @@ def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
     return n / (time.process_time() - t0)
 
 
+def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
+    """Interleaved A/B in one thread against ``--old-src``: in each of ``rounds`` rounds this
+    implementation's three cases, then the other's (:func:`_other`, a subprocess), as tosses per
+    CPU second of one thread (the machine's other load excluded as far as CPU time does);
+    prints each case's ratio, this one / other, median and range over the rounds."""
+    omega, v0 = tosses(n)
+    cases = {
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False),
+        "table first contact": lambda: land(
+            COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=False
+        ),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False),
+    }
+    catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=False)  # compile
+    land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=False)
+    load = os.getloadavg()[0]
+    ratios: dict[str, list[float]] = {name: [] for name in cases}
+    with tempfile.TemporaryDirectory() as cache:
+        for _ in range(rounds):
+            mine = {name: cpu_rate(fn, n) for name, fn in cases.items()}
+            other = _other(args, n, cache, cpu=True)
+            for name in cases:
+                ratios[name].append(mine[name] / other[name])
+    print(
+        f"interleaved A/B, one thread, {rounds} rounds of {n:,} tosses, this one / "
+        f"{args.old_src} per CPU second (median, range):"
+    )
+    for name, r in ratios.items():
+        print(f"  {name}: {statistics.median(r):.3f} ({min(r):.3f}-{max(r):.3f})")
+    print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
+
+
 def main() -> None:
     import numba
 
@@ -468,8 +501,21 @@ def main() -> None:
     parser.add_argument(
         "--profile", type=int, default=None, help="only: shares of the phases of this many landings"
     )
+    parser.add_argument(
+        "--ab",
+        type=int,
+        default=None,
+        help="only: this many rounds of an interleaved one-thread A/B against --old-src",
+    )
     args = parser.parse_args()
-    for name, value in (("--profile", args.profile), ("--repeats", args.repeats)):
+    if args.ab is not None and not args.old_src:
+        print("bench_air.py: --ab needs --old-src (the implementation to compare)", file=sys.stderr)
+        sys.exit(2)
+    for name, value in (
+        ("--profile", args.profile),
+        ("--repeats", args.repeats),
+        ("--ab", args.ab),
+    ):
         if value is not None and value < 1:  # one line, exit code 2
             print(f"bench_air.py: {name} must be a positive integer, got {value}", file=sys.stderr)
             sys.exit(2)
@@ -478,6 +524,9 @@ def main() -> None:
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
     if args.profile is not None:
         profile(args.profile, drag, args.repeats)
+        return
+    if args.ab is not None:
+        ab(args, args.n or 10_000, drag, args.ab)
         return
     if args.accuracy:
         accuracy(args, args.accuracy, drag)
