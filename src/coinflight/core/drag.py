@@ -85,8 +85,10 @@ the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e
 (√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
 phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
 of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses. Re-measured 2026-11-24
-after :func:`kink_integrals` was rewritten (node weights, roots tested without dividing; the
-same integrals up to rounding): every figure of ``--accuracy 40`` the same to two digits.
+after :func:`kink_integrals` was rewritten and its root count made to agree with the end signs
+(``--accuracy 40 --old-src`` main's src at 6061499, in one run, load 3.7-3.9): catch 3.2e-7 s
+(median) and 7.6e-7 s (worst), first contact 7.6e-7 and 3.3e-6 s, second contact 1.9e-6 and 3e-4
+s; main's the same to two digits on each.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
@@ -102,17 +104,22 @@ coin approaches starts a safeguarded Newton iteration on the length of one step 
 step's start (a step of any length from a state is a smooth function of its length), to
 GAP_TOLERANCE.
 
-Cost (``python benchmarks/bench_air.py --profile 20000``: cycle counts around the phases of a
-copy of :func:`land_one`, one thread, 2026-11-24, load ~6: 38.5 µs of CPU a toss carried to
-rest): the first flight 28 % (66.6 steps of ~2.4 rad, ~140 ns each, ~85 ns of which are
-:func:`kink_integrals`, ~60 of those its roots: a square root, a division, an arctangent and
-sign-dependent branches per kink), the bounce flights 34 % (7.8 a toss, 34.8 steps in all:
-3.0 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, ~80-200 ns a step,
-plus 7.1 evaluations of the gap's lower bound, 1.4 of them in :func:`lift`), the impacts 36 %
-(8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the ending 1 % (the
-rocking hand-off, 55 % of the tosses). The steps are allocation-free (tuples of scalars) and
-run on numba's threads, one toss per iteration. The impacts are those of the vacuum's landing:
-a toss carried to rest through air costs the flights' ~100 steps on top of them.
+Cost (``python benchmarks/bench_air.py --profile 20000``, 5 runs, one thread, 2026-11-24, load
+4.0-4.2: the processor's cycle counter around the phases of a copy of :func:`land_one`, whose
+impacts and endings it checks toss by toss against :func:`land_one`): 36.3 µs of CPU a toss
+carried to rest; of the timed phases (medians of the 5 runs, their range in brackets) the first
+flight 31 % (30-32 %; 66.6 steps of ~2.4 rad), the bounce flights 36 % (35-38 %; 7.8 a toss,
+34.8 steps in all, with the evaluations of the gap's lower bound), the impacts 30 % (28-31 %;
+8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the endings 1 % (the
+rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by those shares: ~165
+ns a step of the first flight, ~380 ns a step of the bounce flights, ~1.3 µs an impact. Other
+runs of the same profile at loads of 4-6 gave 28-34 % (first flight), 34-35 % (bounce flights)
+and 28-36 % (impacts): the shares move by a few points from run to run, and the cycle counter
+runs on while the thread is switched out, so each phase also carries some of other processes'
+time (51 µs of cycles a toss against the 36.3 µs of CPU in the run above). The steps are
+allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
+impacts are those of the vacuum's landing: a toss carried to rest through air costs the
+flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
