@@ -610,46 +610,42 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     qb = gr
     qc = gp + gq
     disc = qb * qb - qa * qc
-    ta = 0.0
-    tb = 0.0
-    has_a = False
-    has_b = False
-    in_a = False
-    in_b = False
+    # The roots na/da and nb/db (0/0: none); 0 < t < s/c (c, s > 0) tested without dividing.
+    na = 0.0
+    da = 0.0
+    nb = 0.0
+    db = 0.0
     if disc > 0.0:
         qq = -(qb + math.copysign(math.sqrt(disc), qb))
-        # The roots qq/qa and qc/qq; 0 < t < s/c (c, s > 0) tested without dividing.
-        if qa != 0.0:
-            has_a = True
-            ta = qq / qa
-            in_a = qq * qa > 0.0 and abs(qq) * c < abs(qa) * s
-        if qq != 0.0:
-            has_b = True
-            tb = qc / qq
-            in_b = qc * qq > 0.0 and abs(qc) * c < abs(qq) * s
+        na = qq
+        da = qa
+        nb = qc
+        db = qq
+    in_a = na * da > 0.0 and abs(na) * c < abs(da) * s
+    in_b = nb * db > 0.0 and abs(nb) * c < abs(db) * s
     if (in_a != in_b) == (s0 == s1):
         # The number of roots disagrees with the end signs: a root within rounding of an end
         # was put on the wrong side of it. The root nearest an end is moved across it (onto
         # the end if brought in); without a root, g changes sign at the end where it is smaller.
-        da = math.inf
-        db = math.inf
-        if has_a:
-            xa = 2.0 * math.atan(ta) * it
-            da = min(abs(xa), abs(1.0 - xa))
-        if has_b:
-            xb = 2.0 * math.atan(tb) * it
-            db = min(abs(xb), abs(1.0 - xb))
-        if da == math.inf and db == math.inf:
+        ea = math.inf
+        eb = math.inf
+        if da != 0.0:
+            xa = 2.0 * math.atan(na / da) * it
+            ea = min(abs(xa), abs(1.0 - xa))
+        if db != 0.0:
+            xb = 2.0 * math.atan(nb / db) * it
+            eb = min(abs(xb), abs(1.0 - xb))
+        if ea == math.inf and eb == math.inf:
             if abs(g0) <= abs(g2):
                 s0 = s1
             else:
                 s1 = s0
-        elif da <= db:
+        elif ea <= eb:
             in_a = not in_a
-            ta = min(max(ta, 0.0), s / c)
+            na, da = min(max(na / da, 0.0), s / c), 1.0
         else:
             in_b = not in_b
-            tb = min(max(tb, 0.0), s / c)
+            nb, db = min(max(nb / db, 0.0), s / c), 1.0
     tot = (
         s1 * f1[0] - s0 * f0[0],
         s1 * f1[1] - s0 * f0[1],
@@ -660,12 +656,14 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     )
     # g alternates in sign from s0 across the roots, in their order (t increases with x).
     if in_a and in_b:
+        ta = na / da
+        tb = nb / db
         tot = _add_root(tot, min(ta, tb), it, -s0)
         tot = _add_root(tot, max(ta, tb), it, s0)
     elif in_a:
-        tot = _add_root(tot, ta, it, -s0)
+        tot = _add_root(tot, na / da, it, -s0)
     elif in_b:
-        tot = _add_root(tot, tb, it, -s0)
+        tot = _add_root(tot, nb / db, it, -s0)
     # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
     # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
     # in the node values: weights on the nodes, once for the three components.
