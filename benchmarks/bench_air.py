@@ -49,14 +49,21 @@ hand 129,034 a second (main 127,803), first contact 82,436 (88,351), to rest 26,
 
 Measured 2026-11-24 (the kink integrals' rewrite, ``--reference 3 --old-src`` main's src,
 100,000 tosses, medians of 5, load 10.5 before and 10.7 after, the machine shared by five other
-sessions): hand 79,658 a second (main 64,546), first contact 53,269 (41,008), to rest 14,969
-(12,230); at that load the wall-clock ratios (1.22-1.30) are mostly noise: per CPU second in
-one thread 120,901, 84,231 and 25,217 against 113,238, 78,787 and 23,766 (1.06-1.07 times),
-and an interleaved A/B of one thread each (7 rounds of 10,000 tosses, load 13) gave 1.03-1.05
-times. Issue 11's 100,000 a second on 2 cores is therefore met by the first contact only on a
-quiet machine (twice the one-thread rate: ~170,000), not carried to rest (~50,000 quiet):
-there a toss costs ~40 µs of one core, a third of it the 8.8 impacts the vacuum landing has
-too (``--profile``; the shares in :mod:`coinflight.core.drag`'s notes on cost).
+sessions): 1.03-1.07 times main's rates (CPU time, one thread: 120,901, 84,231 and 25,217
+tosses per CPU second against 113,238, 78,787 and 23,766, 1.06-1.07 times; an interleaved A/B
+of one thread each, 7 rounds of 10,000 tosses at load 13, 1.03-1.05 times, the method of
+``--ab``). The wall-clock rates, hand 79,658 a second (main 64,546), first contact 53,269
+(41,008), to rest 14,969 (12,230), have ratios of 1.22-1.30 that are mostly the load's.
+``--ab 7 --n 30000 --old-src`` main's src after the root count's fix (load 3.7-4.0): medians
+1.08 (hand), 1.09 (first contact), 1.05 (to rest), single rounds 0.91-1.40; against the fix's
+parent 1.06, 1.05 and 1.02 (rounds 1.00-1.07, load 3.8-4.0); a first version of the fix that
+divided for every root, not only for those counted, was 0.97-0.98 times its parent and
+1.00-1.02 times main (load 4-5). Issue 11's 100,000 a second on 2 cores is therefore met by
+the first contact only on a quiet machine (estimated, not measured: twice the one-thread rate,
+~170,000), not carried to rest (estimated likewise, ~50,000 quiet; 51,915 measured quiet on
+2026-11-23 before the rewrite): there a toss costs ~36-40 µs of one core, 28-36 % of it the
+8.8 impacts the vacuum landing has too (``--profile``; the shares in
+:mod:`coinflight.core.drag`'s notes on cost).
 """
 
 from __future__ import annotations
