@@ -105,21 +105,22 @@ step's start (a step of any length from a state is a smooth function of its leng
 GAP_TOLERANCE.
 
 Cost (``python benchmarks/bench_air.py --profile 20000``, 5 runs, one thread, 2026-11-24, load
-4.0-4.2: the processor's cycle counter around the phases of a copy of :func:`land_one`, whose
-impacts and endings it checks toss by toss against :func:`land_one`): 36.3 µs of CPU a toss
+3.9-3.6: the processor's cycle counter around the phases of a copy of :func:`land_one`, whose
+impacts and endings it checks toss by toss against :func:`land_one`): 34.9 µs of CPU a toss
 carried to rest; of the timed phases (medians of the 5 runs, their range in brackets) the first
-flight 31 % (30-32 %; 66.6 steps of ~2.4 rad), the bounce flights 36 % (35-38 %; 7.8 a toss,
-34.8 steps in all, with the evaluations of the gap's lower bound), the impacts 30 % (28-31 %;
-8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the endings 1 % (the
-rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by those shares: ~165
-ns a step of the first flight, ~380 ns a step of the bounce flights, ~1.3 µs an impact. Other
-runs of the same profile at loads of 4-6 gave 28-34 % (first flight), 34-35 % (bounce flights)
-and 28-36 % (impacts): the shares move by a few points from run to run, and the cycle counter
-runs on while the thread is switched out, so each phase also carries some of other processes'
-time (51 µs of cycles a toss against the 36.3 µs of CPU in the run above). The steps are
-allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
-impacts are those of the vacuum's landing: a toss carried to rest through air costs the
-flights' ~100 steps on top of them.
+flight 30 % (30.1-30.3 %; 66.6 steps of ~2.4 rad), the bounce flights 34 % (34.3-34.5 %; 7.8 a
+toss, 34.8 steps in all, with the evaluations of the gap's lower bound), the impacts 32 %
+(32.3-32.6 %; 8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the
+endings 1 % (the rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by
+those shares: ~160 ns a step of the first flight, ~340 ns a step of the bounce flights, ~1.3 µs
+an impact. The shares move by a few points from run to run: at loads of 4-6 other runs gave
+28-34 % (first flight), 34-38 % (bounce flights) and 28-36 % (impacts), single runs of a set
+of 5 up to 3 points off their median. The cycle counter runs on while the thread is switched
+out, so on a loaded machine each phase also carries some of other processes' time (in the run
+above the timed phases' cycles, 34.5 µs a toss, matched the CPU time; in one at load 4.1, 51 µs
+against 36.3 µs). The steps are allocation-free (tuples of scalars) and run on numba's
+threads, one toss per iteration. The impacts are those of the vacuum's landing: a toss carried
+to rest through air costs the flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
