@@ -113,14 +113,16 @@ toss, 34.8 steps in all, with the evaluations of the gap's lower bound), the imp
 (32.3-32.6 %; 8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the
 endings 1 % (the rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by
 those shares: ~160 ns a step of the first flight, ~340 ns a step of the bounce flights, ~1.3 µs
-an impact. The shares move by a few points from run to run: at loads of 4-6 other runs gave
-28-34 % (first flight), 34-38 % (bounce flights) and 28-36 % (impacts), single runs of a set
-of 5 up to 3 points off their median. The cycle counter runs on while the thread is switched
-out, so on a loaded machine each phase also carries some of other processes' time (in the run
-above the timed phases' cycles, 34.5 µs a toss, matched the CPU time; in one at load 4.1, 51 µs
-against 36.3 µs). The steps are allocation-free (tuples of scalars) and run on numba's
-threads, one toss per iteration. The impacts are those of the vacuum's landing: a toss carried
-to rest through air costs the flights' ~100 steps on top of them.
+an impact. The shares move by a few points from run to run: first flight, bounce flights and
+impacts 31, 36 and 30 % in another run of 5 at load 4.1 (single runs up to 2 points off the
+median), 31-34, 34-35 and 28-32 % in a reviewer's runs at load 4, 28, 34 and 36 % in an
+earlier run at load ~6 (``--profile 2000`` with 3 runs: single runs up to 6 points off). The
+cycle counter runs on while the thread is switched out, so on a loaded machine each phase also
+carries some of other processes' time (in the run above the timed phases' cycles, 34.5 µs a
+toss, matched the CPU time; in the one at load 4.1, 51 µs against 36.3 µs). The steps are
+allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
+impacts are those of the vacuum's landing: a toss carried to rest through air costs the
+flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
