@@ -116,10 +116,11 @@ those shares: ~160 ns a step of the first flight, ~340 ns a step of the bounce f
 an impact. The shares move by a few points from run to run: first flight, bounce flights and
 impacts 31, 36 and 30 % in another run of 5 at load 4.1 (single runs up to 2 points off the
 median), 31-34, 34-35 and 28-32 % in a reviewer's runs at load 4, 28, 34 and 36 % in an
-earlier run at load ~6 (``--profile 2000`` with 3 runs: single runs up to 6 points off). The
-cycle counter runs on while the thread is switched out, so on a loaded machine each phase also
-carries some of other processes' time (in the run above the timed phases' cycles, 34.5 µs a
-toss, matched the CPU time; in the one at load 4.1, 51 µs against 36.3 µs). The steps are
+earlier single run at load ~6; with 2,000 tosses (``--profile 2000``, 3 runs) single runs were
+up to 6 points off their median. The cycle counter runs on while the thread is switched out,
+so on a loaded machine each phase also carries some of other processes' time (in the run above
+the timed phases' cycles, 34.5 µs a toss, matched the CPU time; in the one at load 4.1, 51 µs
+against 36.3 µs). The steps are
 allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
 impacts are those of the vacuum's landing: a toss carried to rest through air costs the
 flights' ~100 steps on top of them.
