@@ -5,6 +5,7 @@
     python benchmarks/bench_air.py --quick
     python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
     python benchmarks/bench_air.py --profile 20000          # where a landing's time goes
+    python benchmarks/bench_air.py --ab 7 --old-src DIR     # one-thread A/B, 7 rounds
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
 rad/s, v0 ~ U(1.5, 3) m/s) in air: C_d = 1.17, ρ = 1.2 kg/m³, spin damping K (default 0). Rates
@@ -28,7 +29,13 @@ The load average is printed before and after: absolute rates on a shared machine
 
 With ``--profile N`` only the shares of a landing carried to rest spent in its phases (first
 flight, bounce flights, impacts, endings, lifts), timed by the processor's cycle counter around
-each phase of a copy of :func:`coinflight.core.drag.land_one` in one thread (:func:`profile`).
+each phase of a copy of :func:`coinflight.core.drag.land_one` in one thread (:func:`profile`),
+``--repeats`` runs (median and range), with the drag of ``--drag`` and ``--spin-damping``; the
+copy's impacts and endings are checked toss by toss against ``land_one`` itself. The shares
+are of the timed phases (the graze steps, ``lowest_depth`` and ``split`` are not timed); the
+cycle counter runs on while the thread is switched out, so on a loaded machine each phase
+carries some of other processes' time (the printout gives the timed cycles against the CPU
+time); the times a step are the phases' shares of the CPU time.
 
 With ``--accuracy M`` only the times against DOP853 at rtol 1e-12 on the first M tosses are
 printed (:func:`accuracy`): the catch, the first contact, a bounce flight from the state after
@@ -42,14 +49,21 @@ hand 129,034 a second (main 127,803), first contact 82,436 (88,351), to rest 26,
 
 Measured 2026-11-24 (the kink integrals' rewrite, ``--reference 3 --old-src`` main's src,
 100,000 tosses, medians of 5, load 10.5 before and 10.7 after, the machine shared by five other
-sessions): hand 79,658 a second (main 64,546), first contact 53,269 (41,008), to rest 14,969
-(12,230); at that load the wall-clock ratios (1.22-1.30) are mostly noise: per CPU second in
-one thread 120,901, 84,231 and 25,217 against 113,238, 78,787 and 23,766 (1.06-1.07 times),
-and an interleaved A/B of one thread each (7 rounds of 10,000 tosses, load 13) gave 1.03-1.05
-times. Issue 11's 100,000 a second on 2 cores is therefore met by the first contact only on a
-quiet machine (twice the one-thread rate: ~170,000), not carried to rest (~50,000 quiet):
-there a toss costs ~40 µs of one core, a third of it the 8.8 impacts the vacuum landing has
-too (``--profile``; the shares in :mod:`coinflight.core.drag`'s notes on cost).
+sessions): 1.03-1.07 times main's rates (CPU time, one thread: 120,901, 84,231 and 25,217
+tosses per CPU second against 113,238, 78,787 and 23,766, 1.06-1.07 times; an interleaved A/B
+of one thread each, 7 rounds of 10,000 tosses at load 13, 1.03-1.05 times, the method of
+``--ab``). The wall-clock rates, hand 79,658 a second (main 64,546), first contact 53,269
+(41,008), to rest 14,969 (12,230), have ratios of 1.22-1.30 that are mostly the load's.
+``--ab 7 --n 30000 --old-src`` main's src after the root count's fix (load 3.7-4.0): medians
+1.08 (hand), 1.09 (first contact), 1.05 (to rest), single rounds 0.91-1.40; against the fix's
+parent 1.06, 1.05 and 1.02 (rounds 1.00-1.07, load 3.8-4.0); a first version of the fix that
+divided for every root, not only for those counted, was 0.97-0.98 times its parent and
+1.00-1.02 times main (load 4-5). Issue 11's 100,000 a second on 2 cores is therefore met by
+the first contact only on a quiet machine (estimated, not measured: twice the one-thread rate,
+~170,000), not carried to rest (estimated likewise, ~50,000 quiet; 51,915 measured quiet on
+2026-11-23 before the rewrite): there a toss costs ~36-40 µs of one core, 28-36 % of it the
+8.8 impacts the vacuum landing has too (``--profile``; the shares in
+:mod:`coinflight.core.drag`'s notes on cost).
 """
 
 from __future__ import annotations
@@ -270,11 +284,16 @@ def accuracy(args: argparse.Namespace, m: int, drag: Drag) -> None:
         print("    " + line("second contact", [old_second[k] for k in keep], second_ref[keep]))
 
 
-def profile(n: int) -> None:
+def profile(n: int, drag: Drag, runs: int) -> None:
     """Shares of the time of ``n`` landings carried to rest through air (one thread) in their
     phases, and the steps and impacts a toss: a copy of :func:`coinflight.core.drag.land_one`
     (its grazes and impacts as there) with the cycle counter (LLVM's ``readcyclecounter``) read
-    around each phase."""
+    around each phase, ``runs`` times (median and range printed). The copy's impacts and endings
+    are checked against the real :func:`coinflight.core.drag.land_one` on the same tosses (an
+    error if any toss differs). The shares are of the timed phases only (the graze steps,
+    ``lowest_depth`` before an impact and ``split`` after it are not timed), and the cycle
+    counter keeps running while the thread is switched out: on a loaded machine every phase
+    includes some of other processes' time, in proportion to its own length."""
     from llvmlite import ir
     from numba import njit, types
     from numba.core import cgutils
@@ -284,6 +303,8 @@ def profile(n: int) -> None:
     from coinflight.core.bounce import GRAZE_SKIP, MAX_IMPACTS
     from coinflight.core.impact import impact, lowest_depth
     from coinflight.outcomes.table import contact_record
+
+    unsettled = int(Status.UNSETTLED)
 
     @intrinsic
     def cycles(typingctx):  # type: ignore[no-untyped-def]
@@ -295,9 +316,14 @@ def profile(n: int) -> None:
         return types.uint64(), codegen
 
     @njit
+    def now():  # type: ignore[no-untyped-def]
+        return cycles()
+
+    @njit
     def one(omega, launch_speed, air, c, acc):  # type: ignore[no-untyped-def]
         # acc: cycles of the first flight, bounce flights, impacts, endings, lifts; impacts,
-        # steps of the first flight, of the bounce flights
+        # steps of the first flight, of the bounce flights; bounce flights. Returns (impacts,
+        # status) as land_one's.
         n, u, a0, b0 = d.launch_state(omega, 1.0, air)
         z, v, tr, tmin = c.drop_height, (0.0, 0.0, launch_speed), 0.0, 0.0
         rising, budget, impacts = True, d.MAX_STEPS, 0
@@ -309,9 +335,10 @@ def profile(n: int) -> None:
             k = 0 if impacts == 0 else 1
             acc[k] += cycles() - t0
             acc[6 + k] += steps
+            acc[8] += k
             budget -= steps
             if dt < 0.0:
-                return
+                return impacts, unsettled
             rising, tmin = False, 0.0
             if speed >= 0.0:
                 z, v, n, u = d.step(z, v, n, u, tr, GRAZE_SKIP, a0, b0, air)
@@ -331,38 +358,88 @@ def profile(n: int) -> None:
             acc[3] += t2 - t1
             acc[5] += 1
             if status >= 0:
-                return
+                return impacts, status
             a0, b0, u = d.split(lm, n)
             t0 = cycles()
             tmin, z, v, n, u, tr = d.lift(z, v, n, u, lm, a0, b0, rebound, air, c)
             acc[4] += cycles() - t0
+        return impacts, unsettled
 
     @njit
-    def run(omega, v0, air, c, acc):  # type: ignore[no-untyped-def]
+    def run(omega, v0, air, c, acc, impacts, status):  # type: ignore[no-untyped-def]
         for k in range(omega.shape[0]):
-            one((omega[k, 0], omega[k, 1], omega[k, 2]), v0[k], air, c, acc)
+            impacts[k], status[k] = one((omega[k, 0], omega[k, 1], omega[k, 2]), v0[k], air, c, acc)
+
+    @njit
+    def real(omega, v0, air, c, impacts, status):  # type: ignore[no-untyped-def]
+        for k in range(omega.shape[0]):
+            _, b, _, _, st = d.land_one(
+                (omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], air, c, 1_000_000_000
+            )
+            impacts[k] = b + (0 if st == unsettled else 1)  # the impact that ended it
+            status[k] = st
 
     omega, v0 = tosses(n)
-    air = drag_model(COIN, Drag(coefficient=1.17), G)
+    air = drag_model(COIN, drag, G)
     c = contact_record(COIN, SURFACE, G)
-    acc = np.zeros(8, dtype=np.uint64)
-    run(omega[:10], v0[:10], air, c, acc)  # compile
-    acc[:] = 0
+    acc = np.zeros(9, dtype=np.uint64)
+    impacts, status = np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
+    run(omega[:10], v0[:10], air, c, acc, impacts[:10], status[:10])  # compile
+    want_impacts, want_status = np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
+    real(omega, v0, air, c, want_impacts, want_status)
     load = os.getloadavg()[0]
-    t0 = time.process_time()
-    run(omega, v0, air, c, acc)
-    cpu = time.process_time() - t0
-    total = float(acc[:5].sum())
+    shares, cpus, rates = [], [], []
+    for _ in range(runs):
+        acc[:] = 0
+        c0, w0, t0 = now(), time.perf_counter(), time.process_time()
+        run(omega, v0, air, c, acc, impacts, status)
+        cpus.append(time.process_time() - t0)
+        rates.append((now() - c0) / (time.perf_counter() - w0))  # cycles a wall second
+        shares.append(acc[:5] / float(acc[:5].sum()))
+    bad = np.flatnonzero((impacts != want_impacts) | (status != want_status))
+    if bad.size:
+        k = int(bad[0])
+        sys.exit(
+            f"profile: the copy of land_one differs from land_one on {bad.size} of {n} tosses "
+            f"(toss {k}: {impacts[k]} impacts, status {status[k]}; land_one {want_impacts[k]}, "
+            f"{want_status[k]})"
+        )
     print(
-        f"{n:,} landings carried to rest through air, one thread: "
-        f"{cpu / n * 1e6:.1f} µs of CPU a toss"
+        f"{n:,} landings carried to rest through air (C_d = {drag.coefficient:g}, K = "
+        f"{drag.spin_damping:g} N m s), one thread, {runs} runs: "
+        f"{statistics.median(cpus) / n * 1e6:.1f} µs of CPU a toss (median; "
+        f"{min(cpus) / n * 1e6:.1f}-{max(cpus) / n * 1e6:.1f}); impacts and endings of every "
+        f"toss as land_one's"
     )
+    print("  shares of the timed phases (median, range over the runs):")
     for k, name in enumerate(["first flight", "bounce flights", "impacts", "endings", "lifts"]):
-        print(f"  {name}: {acc[k] / total:.1%}")
+        col = [float(s[k]) for s in shares]
+        print(f"    {name}: {statistics.median(col):.1%} ({min(col):.1%}-{max(col):.1%})")
+    rate = statistics.median(rates)
+    first_steps, bounce_steps, flights = (float(x) for x in acc[6:9])
     print(
-        f"  a toss: {acc[5] / n:.2f} impacts, {acc[6] / n:.1f} steps in the first flight, "
-        f"{acc[7] / n:.1f} in the bounce flights"
+        f"  a toss (last run): {acc[5] / n:.2f} impacts, {flights / n:.2f} bounce flights, "
+        f"{first_steps / n:.1f} steps in the first flight, {bounce_steps / n:.1f} in the bounce "
+        f"flights"
     )
+    # The cycle counter runs on while the thread is switched out: the timed phases' cycles
+    # against the CPU time show how much of them is other processes' time. The times a step are
+    # the phase's share of the CPU time, on the assumption that it is spread alike.
+    cpu_toss = cpus[-1] / n
+    timed_toss = float(acc[:5].sum()) / rate / n
+    first, bounce, impact_share = (float(shares[-1][k]) for k in range(3))
+    print(
+        f"  last run: the timed phases {timed_toss * 1e6:.1f} µs a toss by the cycle counter "
+        f"({rate / 1e9:.2f} GHz against the wall clock), {cpu_toss * 1e6:.1f} µs of CPU in all; "
+        f"as shares of the CPU time: {first * cpu_toss / first_steps * n * 1e9:.0f} ns a step "
+        f"of the first flight, {bounce * cpu_toss / max(bounce_steps, 1.0) * n * 1e9:.0f} ns a "
+        f"step of the bounce flights (with their evaluations of the gap's lower bound), "
+        f"{impact_share * cpu_toss / max(float(acc[5]), 1.0) * n * 1e9:.0f} ns an impact"
+    )
+    ends = ", ".join(
+        f"{Status(s).label} {np.mean(want_status == s):.1%}" for s in np.unique(want_status)
+    )
+    print(f"  endings: {ends}")
     print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
 
 
@@ -382,13 +459,45 @@ def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
     return n / (time.process_time() - t0)
 
 
+def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
+    """Interleaved A/B in one thread against ``--old-src``: in each of ``rounds`` rounds this
+    implementation's three cases, then the other's (:func:`_other`, a subprocess), as tosses per
+    CPU second of one thread (the machine's other load excluded as far as CPU time does);
+    prints each case's ratio, this one / other, median and range over the rounds."""
+    omega, v0 = tosses(n)
+    cases = {
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False),
+        "table first contact": lambda: land(
+            COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=False
+        ),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False),
+    }
+    catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=False)  # compile
+    land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=False)
+    load = os.getloadavg()[0]
+    ratios: dict[str, list[float]] = {name: [] for name in cases}
+    with tempfile.TemporaryDirectory() as cache:
+        for _ in range(rounds):
+            mine = {name: cpu_rate(fn, n) for name, fn in cases.items()}
+            other = _other(args, n, cache, cpu=True)
+            for name in cases:
+                ratios[name].append(mine[name] / other[name])
+    print(
+        f"interleaved A/B, one thread, {rounds} rounds of {n:,} tosses, this one / "
+        f"{args.old_src} per CPU second (median, range):"
+    )
+    for name, r in ratios.items():
+        print(f"  {name}: {statistics.median(r):.3f} ({min(r):.3f}-{max(r):.3f})")
+    print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
+
+
 def main() -> None:
     import numba
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="fewer tosses")
     parser.add_argument("--n", type=int, default=None, help="tosses for the compiled kernels")
-    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--repeats", type=int, default=5, help="rounds (runs of --profile)")
     parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
     parser.add_argument("--drag", type=float, default=1.17, help="C_d")
@@ -399,13 +508,33 @@ def main() -> None:
     parser.add_argument(
         "--profile", type=int, default=None, help="only: shares of the phases of this many landings"
     )
+    parser.add_argument(
+        "--ab",
+        type=int,
+        default=None,
+        help="only: this many rounds of an interleaved one-thread A/B against --old-src",
+    )
     args = parser.parse_args()
-    if args.profile:
-        profile(args.profile)
-        return
+    if args.ab is not None and not args.old_src:
+        print("bench_air.py: --ab needs --old-src (the implementation to compare)", file=sys.stderr)
+        sys.exit(2)
+    for name, value in (
+        ("--profile", args.profile),
+        ("--repeats", args.repeats),
+        ("--ab", args.ab),
+    ):
+        if value is not None and value < 1:  # one line, exit code 2
+            print(f"bench_air.py: {name} must be a positive integer, got {value}", file=sys.stderr)
+            sys.exit(2)
     n = args.n or (20_000 if args.quick else 100_000)
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
+    if args.profile is not None:
+        profile(args.profile, drag, args.repeats)
+        return
+    if args.ab is not None:
+        ab(args, args.n or 10_000, drag, args.ab)
+        return
     if args.accuracy:
         accuracy(args, args.accuracy, drag)
         return

@@ -214,45 +214,113 @@ def test_states_agree_with_dop853_with_strong_damping():
 # --- the face drag over a kink ---------------------------------------------------------------
 
 
-@pytest.mark.parametrize("seed", range(6))
-def test_kink_integrals_are_exact_for_a_uniform_turn(seed):
-    # A frozen v and n turning uniformly by θ over the step: g(x) = n·v = p + q cos θx + r sin θx
-    # exactly, and the quadrature must equal the integral of |g| v (adaptive quad, split at the
-    # roots found by brentq on a fine grid), whatever the number of roots in the step.
+def _trig_basis(theta, x):
+    return np.array([1.0, math.cos(theta * x), math.sin(theta * x)])
+
+
+def _split_quadrature(theta, gcoef, qcoef):
+    """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx) for g = gcoef · (1, cos θx, sin θx) and the
+    components of Q = qcoef · (1, cos θx, sin θx): adaptive quad (SciPy) on the pieces between
+    the roots of g, found by brentq on a grid of 2000 intervals, the sign taken at each piece's
+    midpoint (a piece within rounding of an end weighs nothing)."""
     from scipy.integrate import quad
     from scipy.optimize import brentq
 
-    rng = np.random.default_rng(seed)
-    theta = rng.uniform(0.4, 3.0)
-    p, q, r = rng.normal(size=3) * (0.3, 1.0, 1.0)
-    vel = rng.normal(size=3)
-
     def g(x):
-        return p + q * math.cos(theta * x) + r * math.sin(theta * x)
+        return float(gcoef @ _trig_basis(theta, x))
 
     grid = np.linspace(0.0, 1.0, 2001)
     vals = [g(x) for x in grid]
     cuts = [0.0]
     cuts += [brentq(g, grid[i], grid[i + 1]) for i in range(2000) if vals[i] * vals[i + 1] < 0]
     cuts.append(1.0)
+    got = np.zeros(3)
+    got_z = 0.0
+    for lo, hi in itertools.pairwise(cuts):
+        sign = 1.0 if g(0.5 * (lo + hi)) >= 0.0 else -1.0
+        for i in range(3):
+            got[i] += sign * quad(lambda x, i=i: qcoef[i] @ _trig_basis(theta, x), lo, hi)[0]
+        got_z += sign * quad(lambda x: (1 - x) * (qcoef[2] @ _trig_basis(theta, x)), lo, hi)[0]
+    return got, got_z, len(cuts) - 2
 
-    def integral(weight):
-        return sum(
-            quad(lambda x: abs(g(x)) * weight(x), lo, hi, epsabs=1e-14)[0]
-            for lo, hi in itertools.pairwise(cuts)
-        )
 
-    gs = [g(0.0), g(0.5), g(1.0)]
-    qs = [tuple(gk * vel) for gk in gs]
+def _coefficients(theta, nodes):
+    """The (p, q, r) of p + q cos θx + r sin θx through the values at x = 0, 1/2, 1."""
+    return np.linalg.solve(np.array([_trig_basis(theta, x) for x in (0.0, 0.5, 1.0)]), nodes)
+
+
+def _kink_case(name):
+    """(θ, g's coefficients, Q's coefficients (rows: components), g's nodes or None)."""
+    rng = np.random.default_rng(KINK_CASES.index(name))  # seeds 0, 1, ... in the list's order
+    nodes = None
+    if name.startswith("seed"):
+        theta = rng.uniform(0.4, 3.0)
+        gcoef = rng.normal(size=3) * (0.3, 1.0, 1.0)
+    elif name.startswith("theta"):
+        theta = float(name[5:])
+        gcoef = rng.normal(size=3) * (0.3, 1.0, 1.0)
+    elif name == "two roots 3.1":  # −0.5 + cos θ(x − 1/2): roots at x ≈ 0.16 and 0.84
+        theta = 3.1
+        gcoef = np.array([-0.5, math.cos(theta / 2), math.sin(theta / 2)])
+    elif name == "two roots 2.0":  # −0.8 + cos θ(x − 1/2): roots at x ≈ 0.18 and 0.82
+        theta = 2.0
+        gcoef = np.array([-0.8, math.cos(theta / 2), math.sin(theta / 2)])
+    elif name.startswith("g0 = 0"):  # p + q = 0 exactly; g falls (r < 0) or rises after 0
+        theta = 0.35 if "0.35" in name else 1.3
+        gcoef = np.array([0.7, -0.7, -0.9 if "falls" in name else 0.9])
+    elif name == "one root 0.301":
+        theta = 0.301
+        nodes = np.array([0.3, -0.05, -0.4])
+    elif name == "g2 = 0 from below":
+        theta = 1.0
+        nodes = np.array([-0.5, -0.3, 0.0])
+    elif name == "g2 = 0 from above":
+        theta = 1.0
+        nodes = np.array([0.5, 0.8, 0.0])
+    else:  # "g2 = 1e-300": a root within rounding of x = 1 (found by a reviewer)
+        theta = 0.30000000000030064
+        nodes = np.array([0.8767217118289935, 0.9452622266421788, 1e-300])
+    if nodes is not None:
+        gcoef = _coefficients(theta, nodes)
+    qcoef = rng.normal(size=(3, 3))
+    return theta, gcoef, qcoef, nodes
+
+
+KINK_CASES = [f"seed{k}" for k in range(6)] + ["theta0.301", "theta0.35", "theta3.1"]
+KINK_CASES += ["one root 0.301", "two roots 3.1", "two roots 2.0", "g0 = 0, falls", "g0 = 0, rises"]
+KINK_CASES += ["g0 = 0, falls, 0.35", "g2 = 0 from below", "g2 = 0 from above", "g2 = 1e-300"]
+
+
+@pytest.mark.parametrize("name", KINK_CASES)
+def test_kink_integrals_are_exact_for_a_uniform_turn(name):
+    # A frozen v and n turning uniformly by θ over the step: g = n·v and each component of Q
+    # are p + q cos θx + r sin θx exactly (Q's components independent of g and of each other, so
+    # every node weight is checked), and the quadrature must equal the split quadrature of
+    # sign(g) Q, whatever the number of roots in the step, with g = 0 at a node, or with a root
+    # within rounding of an end (where the side the root was counted on once changed the
+    # result by O(1): for the last case a z-integral of 20.3 in place of −0.561, with another Q).
+    theta, gcoef, qcoef, nodes = _kink_case(name)
+    if nodes is None:
+        nodes = np.array([gcoef @ _trig_basis(theta, x) for x in (0.0, 0.5, 1.0)])
+    qs = [tuple(qcoef @ _trig_basis(theta, x)) for x in (0.0, 0.5, 1.0)]
     c, s = math.cos(theta / 2), math.sin(theta / 2)
-    got, got_z = air_kernels.kink_integrals(gs[0], gs[1], gs[2], qs[0], qs[1], qs[2], c, s, theta)
-    want = integral(lambda x: 1.0)
-    np.testing.assert_allclose(got, want * vel, rtol=0, atol=1e-12)
-    assert got_z == pytest.approx(integral(lambda x: 1.0 - x) * vel[2], abs=1e-12)
+    assert c <= air_kernels.TRIG_COS  # the trigonometric basis, not the quadratic fallback
+    got, got_z = air_kernels.kink_integrals(
+        nodes[0], nodes[1], nodes[2], qs[0], qs[1], qs[2], c, s, theta
+    )
+    want, want_z, roots = _split_quadrature(theta, gcoef, qcoef)
+    if name.startswith(("one root", "two roots")):
+        assert roots == (2 if name.startswith("two") else 1)
+    # Measured: at most 1.1e-13 (seed4, θ = 2.85), 9e-16 at θ = 0.30.
+    tol = 1e-12
+    np.testing.assert_allclose(got, want, rtol=0, atol=tol)
+    assert got_z == pytest.approx(want_z, abs=tol)
     # Simpson's weights (the Runge-Kutta rule's own) are off by far more where g changes sign.
-    if len(cuts) > 2:
-        simpson = (abs(gs[0]) + 4 * abs(gs[1]) + abs(gs[2])) / 6
-        assert abs(simpson - want) > 1e-6
+    if roots:
+        signs = np.sign(nodes)
+        simpson = signs[0] * np.array(qs[0]) + 4 * signs[1] * np.array(qs[1])
+        simpson = (simpson + signs[2] * np.array(qs[2])) / 6
+        assert np.max(np.abs(simpson - want)) > 1e-6
 
 
 def test_kink_weights_integrate_piecewise_quadratics():

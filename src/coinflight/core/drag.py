@@ -85,8 +85,10 @@ the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e
 (√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
 phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
 of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses. Re-measured 2026-11-24
-after :func:`kink_integrals` was rewritten (node weights, roots tested without dividing; the
-same integrals up to rounding): every figure of ``--accuracy 40`` the same to two digits.
+after :func:`kink_integrals` was rewritten and its root count made to agree with the end signs
+(``--accuracy 40 --old-src`` main's src at 6061499, in one run, load 3.7-3.9): catch 3.2e-7 s
+(median) and 7.6e-7 s (worst), first contact 7.6e-7 and 3.3e-6 s, second contact 1.9e-6 and 3e-4
+s; main's the same to two digits on each.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
@@ -102,17 +104,26 @@ coin approaches starts a safeguarded Newton iteration on the length of one step 
 step's start (a step of any length from a state is a smooth function of its length), to
 GAP_TOLERANCE.
 
-Cost (``python benchmarks/bench_air.py --profile 20000``: cycle counts around the phases of a
-copy of :func:`land_one`, one thread, 2026-11-24, load ~6: 38.5 µs of CPU a toss carried to
-rest): the first flight 28 % (66.6 steps of ~2.4 rad, ~140 ns each, ~85 ns of which are
-:func:`kink_integrals`, ~60 of those its roots: a square root, a division, an arctangent and
-sign-dependent branches per kink), the bounce flights 34 % (7.8 a toss, 34.8 steps in all:
-3.0 far steps, 1.4 steps to the search's end and 2.4 Newton steps each, ~80-200 ns a step,
-plus 7.1 evaluations of the gap's lower bound, 1.4 of them in :func:`lift`), the impacts 36 %
-(8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the ending 1 % (the
-rocking hand-off, 55 % of the tosses). The steps are allocation-free (tuples of scalars) and
-run on numba's threads, one toss per iteration. The impacts are those of the vacuum's landing:
-a toss carried to rest through air costs the flights' ~100 steps on top of them.
+Cost (``python benchmarks/bench_air.py --profile 20000``, 5 runs, one thread, 2026-11-24, load
+3.9-3.6: the processor's cycle counter around the phases of a copy of :func:`land_one`, whose
+impacts and endings it checks toss by toss against :func:`land_one`): 34.9 µs of CPU a toss
+carried to rest; of the timed phases (medians of the 5 runs, their range in brackets) the first
+flight 30 % (30.1-30.3 %; 66.6 steps of ~2.4 rad), the bounce flights 34 % (34.3-34.5 %; 7.8 a
+toss, 34.8 steps in all, with the evaluations of the gap's lower bound), the impacts 32 %
+(32.3-32.6 %; 8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the
+endings 1 % (the rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by
+those shares: ~160 ns a step of the first flight, ~340 ns a step of the bounce flights, ~1.3 µs
+an impact. The shares move by a few points from run to run: first flight, bounce flights and
+impacts 31, 36 and 30 % in another run of 5 at load 4.1 (single runs up to 2 points off the
+median), 31-34, 34-35 and 28-32 % in a reviewer's runs at load 4, 28, 34 and 36 % in an
+earlier single run at load ~6; with 2,000 tosses (``--profile 2000``, 3 runs) single runs were
+up to 6 points off their median. The cycle counter runs on while the thread is switched out,
+so on a loaded machine each phase also carries some of other processes' time (in the run above
+the timed phases' cycles, 34.5 µs a toss, matched the CPU time; in the one at load 4.1, 51 µs
+against 36.3 µs). The steps are
+allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
+impacts are those of the vacuum's landing: a toss carried to rest through air costs the
+flights' ~100 steps on top of them.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
@@ -514,6 +525,24 @@ def _primitives(x: float, cx: float, sx: float, it: float) -> tuple:
     )
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _add_root(tot: tuple, t: float, it: float, after: float) -> tuple:
+    """``tot`` − 2 ``after`` times :func:`_primitives` at the root x = 2 arctan(t)/θ of g
+    (t = tan(θx/2), it = 1/θ), where g takes the sign ``after``."""
+    t2 = t * t
+    inv = 1.0 / (1.0 + t2)
+    fr = _primitives(2.0 * math.atan(t) * it, (1.0 - t2) * inv, 2.0 * t * inv, it)
+    d = -2.0 * after
+    return (
+        tot[0] + d * fr[0],
+        tot[1] + d * fr[1],
+        tot[2] + d * fr[2],
+        tot[3] + d * fr[3],
+        tot[4] + d * fr[4],
+        tot[5] + d * fr[5],
+    )
+
+
 @njit(cache=True, error_model="numpy")
 def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     """(∫₀¹ sign(g) Q dx, ∫₀¹ (1 − x) sign(g) Q_z dx): the face drag's share of a step.
@@ -533,9 +562,12 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     Ordinary Differential Equations I*, 2nd ed., 1993, §II.1), which integrate the kink of |n·v|
     to first order only and the turning attitude with a relative error (θ/2)⁴/180 of one sign.
     Below a turn of ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is
-    used (:func:`kink_weights`).
+    used (:func:`kink_weights`). The roots counted in the step always agree in parity with the
+    signs of g just inside its ends (of the slope where a node is 0): a root within rounding of
+    an end, put on the wrong side of it by the test, is moved across it, so that it changes the
+    integral by rounding only, not by twice a piece's weight.
     """
-    if c > TRIG_COS or c <= 0.0:
+    if c > TRIG_COS or c <= 0.0 or s <= 0.0:
         w0, w1, w2, m0, m1, m2, _ = kink_weights(g0, gm, g2)
         return (
             (
@@ -556,10 +588,68 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     it = 1.0 / theta
     f0 = _primitives(0.0, 1.0, 0.0, it)
     f1 = _primitives(1.0, cc, ss, it)
-    # Σ over the pieces of sign × (F(end) − F(start)) = sign(g(1)) F(1) − sign(g(0)) F(0)
-    # − 2 Σ sign(g′(x_r)) F(x_r) over the roots x_r (g takes the sign of g′ after a root).
-    s0 = 1.0 if g0 >= 0.0 else -1.0
-    s1 = 1.0 if g2 >= 0.0 else -1.0
+    # Σ over the pieces of sign × (F(end) − F(start)) = s1 F(1) − s0 F(0) − 2 Σ σ_r F(x_r)
+    # over the roots x_r in (0, 1), σ_r the sign of g after x_r. The end signs are those of g
+    # just inside the step: of g0, g2 or, where a node is 0, of the slope there (of gm if that
+    # is 0 too), so that a root at an end is not counted.
+    if g0 > 0.0:
+        s0 = 1.0
+    elif g0 < 0.0:
+        s0 = -1.0
+    elif gr != 0.0:
+        s0 = 1.0 if gr > 0.0 else -1.0  # g′(0) ∝ r
+    else:
+        s0 = 1.0 if gm >= 0.0 else -1.0
+    if g2 > 0.0:
+        s1 = 1.0
+    elif g2 < 0.0:
+        s1 = -1.0
+    elif gr * cc != gq * ss:  # g′(1) ∝ r cos θ − q sin θ; g before 1 has its opposite sign
+        s1 = -1.0 if gr * cc > gq * ss else 1.0
+    else:
+        s1 = 1.0 if gm >= 0.0 else -1.0
+    # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
+    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
+    qa = gp - gq
+    qb = gr
+    qc = gp + gq
+    disc = qb * qb - qa * qc
+    # The roots na/da and nb/db (0/0: none); 0 < t < s/c (c, s > 0) tested without dividing.
+    na = 0.0
+    da = 0.0
+    nb = 0.0
+    db = 0.0
+    if disc > 0.0:
+        qq = -(qb + math.copysign(math.sqrt(disc), qb))
+        na = qq
+        da = qa
+        nb = qc
+        db = qq
+    in_a = na * da > 0.0 and abs(na) * c < abs(da) * s
+    in_b = nb * db > 0.0 and abs(nb) * c < abs(db) * s
+    if (in_a != in_b) == (s0 == s1):
+        # The number of roots disagrees with the end signs: a root within rounding of an end
+        # was put on the wrong side of it. The root nearest an end is moved across it (onto
+        # the end if brought in); without a root, g changes sign at the end where it is smaller.
+        ea = math.inf
+        eb = math.inf
+        if da != 0.0:
+            xa = 2.0 * math.atan(na / da) * it
+            ea = min(abs(xa), abs(1.0 - xa))
+        if db != 0.0:
+            xb = 2.0 * math.atan(nb / db) * it
+            eb = min(abs(xb), abs(1.0 - xb))
+        if ea == math.inf and eb == math.inf:
+            if abs(g0) <= abs(g2):
+                s0 = s1
+            else:
+                s1 = s0
+        elif ea <= eb:
+            in_a = not in_a
+            na, da = min(max(na / da, 0.0), s / c), 1.0
+        else:
+            in_b = not in_b
+            nb, db = min(max(nb / db, 0.0), s / c), 1.0
     tot = (
         s1 * f1[0] - s0 * f0[0],
         s1 * f1[1] - s0 * f0[1],
@@ -568,36 +658,16 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         s1 * f1[4] - s0 * f0[4],
         s1 * f1[5] - s0 * f0[5],
     )
-    # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
-    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
-    qa = gp - gq
-    qb = gr
-    qc = gp + gq
-    disc = qb * qb - qa * qc
-    if disc > 0.0:
-        root = math.sqrt(disc)
-        qq = -(qb + math.copysign(root, qb))
-        for k in range(2):
-            # The roots qq/qa and qc/qq; 0 < t < s/c (c, s > 0) tested without dividing.
-            num = qq if k == 0 else qc
-            dnm = qa if k == 0 else qq
-            if num * dnm > 0.0 and abs(num) * c < abs(dnm) * s:
-                t = num / dnm
-                t2 = t * t
-                inv = 1.0 / (1.0 + t2)
-                cr = (1.0 - t2) * inv
-                sr = 2.0 * t * inv
-                fr = _primitives(2.0 * math.atan(t) * it, cr, sr, it)
-                # g takes the sign of g′ ∝ r cos − q sin after a simple root.
-                d = 2.0 if gr * cr - gq * sr < 0.0 else -2.0
-                tot = (
-                    tot[0] + d * fr[0],
-                    tot[1] + d * fr[1],
-                    tot[2] + d * fr[2],
-                    tot[3] + d * fr[3],
-                    tot[4] + d * fr[4],
-                    tot[5] + d * fr[5],
-                )
+    # g alternates in sign from s0 across the roots, in their order (t increases with x).
+    if in_a and in_b:
+        ta = na / da
+        tb = nb / db
+        tot = _add_root(tot, min(ta, tb), it, -s0)
+        tot = _add_root(tot, max(ta, tb), it, s0)
+    elif in_a:
+        tot = _add_root(tot, na / da, it, -s0)
+    elif in_b:
+        tot = _add_root(tot, nb / db, it, -s0)
     # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
     # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
     # in the node values: weights on the nodes, once for the three components.

@@ -40,9 +40,14 @@ C_d = 1.17, 2 threads on the shared 2-core machine (``python benchmarks/bench_ai
 second in one thread; 182,000 a second on the quiet machine (load about 1); kept at 40,000 for a
 busy one. The table landing's rate is
 :data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND` (26,900 a second carried to rest in
-the same run, load 3.5-5). Re-measured 2026-11-24 after the kink integrals' rewrite (same
-command, load 10.5): 79,658 a second (main 64,546 in the same rounds; 1.06 times per CPU second
-in one thread, 120,901 against 113,238, the wall-clock ratio being mostly the load's)."""
+the same run, load 3.5-5). After the kink integrals' rewrite (2026-11-24) the
+hand catch is 1.03-1.07 times main's rate (CPU time, one thread: 1.06 in the same command's
+run, 120,901 against 113,238 tosses per CPU second; an interleaved A/B of one thread each, 7
+rounds of 10,000 tosses at a load of 13, 1.03-1.05); that run's wall-clock rates at a load of
+10.5, 79,658 a second against main's 64,546, are mostly the load's. The A/B is ``python
+benchmarks/bench_air.py --ab 7 --n 30000 --old-src ...``; after the root count's fix it gave
+a median of 1.08 against main (rounds 1.07-1.40, load 3.7-4.0) and 1.06 against the fix's
+parent (rounds 1.04-1.06); single rounds scatter widely, so read it to a few percent only."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:
