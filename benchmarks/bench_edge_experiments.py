@@ -24,7 +24,7 @@ import importlib.util
 import json
 import os
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 
 def _write_json(path: str, obj: object) -> None:
@@ -56,12 +56,24 @@ def _mujoco_count(text: str) -> int:
 
 
 @contextlib.contextmanager
-def _one_line(parser: argparse.ArgumentParser) -> Iterator[None]:
-    """The library's refusal of a bad input (ValueError or TypeError, checked before any work
-    runs) as one line and exit 2, as the command line gives it, instead of a traceback."""
+def _one_line(parser: argparse.ArgumentParser) -> Iterator[Callable[[str], None]]:
+    """The library's refusal of a bad input (ValueError or TypeError) as one line and exit 2,
+    as the command line gives it, instead of a traceback; gives the study's ``progress``
+    (printing). The studies call it first once every input is checked and the work bounded,
+    before any toss: a ValueError or TypeError after that is a fault of the run, not a refusal
+    of the input, and keeps its traceback."""
+    started = False
+
+    def progress(text: str) -> None:
+        nonlocal started
+        started = True
+        print(text, flush=True)
+
     try:
-        yield
+        yield progress
     except (ValueError, TypeError) as exc:
+        if started:
+            raise
         parser.exit(2, f"{parser.prog}: error: {exc}\n")
 
 
@@ -93,7 +105,7 @@ def main() -> None:
     records, left = from_dataset(dataset())
     load = os.getloadavg()[0]
     t0 = time.perf_counter()
-    with _one_line(parser):  # every input is checked before the first toss
+    with _one_line(parser) as progress:  # every input is checked before the first toss
         result = edge_experiments(
             records,
             args.n,
@@ -101,7 +113,7 @@ def main() -> None:
             contact=args.contact,
             points=args.points,
             psi=psi,  # type: ignore[arg-type]  # a word but "human": refused in the study's words
-            progress=print,
+            progress=progress,
         )
     wall = time.perf_counter() - t0
     print(
@@ -121,8 +133,14 @@ def main() -> None:
     for line in left:
         print(f"left out: {line}")
     for x in records if args.mujoco else ():
-        with _one_line(parser):  # checked (and its work bounded) before MuJoCo runs
-            check = mujoco_check(x, args.mujoco, args.seed, psi=psi)  # type: ignore[arg-type]
+        with _one_line(parser) as progress:  # checked (and its work bounded) before a toss
+            check = mujoco_check(
+                x,
+                args.mujoco,
+                args.seed,
+                psi=psi,  # type: ignore[arg-type]
+                progress=progress,
+            )
         where = ", ".join(f"{k} {val:.3g}" for k, val in check.parameters.items())
         print(f"\nMuJoCo check, {x.label}, {args.mujoco} tosses at {where}:")
         for name, est in (
@@ -147,8 +165,8 @@ def wobble(args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
     records, _ = from_dataset(dataset())
     load = os.getloadavg()[0]
     t0 = time.perf_counter()
-    with _one_line(parser):  # every input is checked before the first toss
-        rows = wobble_sweep(records, args.n, args.seed, contact=args.contact)
+    with _one_line(parser) as progress:  # every input is checked before the first toss
+        rows = wobble_sweep(records, args.n, args.seed, contact=args.contact, progress=progress)
     wall = time.perf_counter() - t0
     print(
         f"wobble sweep; {args.n:,} rocking and {args.contact:,} contact-ending tosses per cell; "

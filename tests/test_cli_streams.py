@@ -10,7 +10,6 @@ as in CI); what CliRunner can show is tested through it.
 from __future__ import annotations
 
 import os
-import resource
 import shutil
 import signal
 import subprocess
@@ -165,9 +164,21 @@ def _cpu_seconds(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def _children_cpu() -> float:
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
+def _finished(proc: subprocess.Popen[str]) -> tuple[str, str, float]:
+    """Wait for ``proc`` to end and reap it with ``os.wait4``, whose usage is that process's own
+    CPU seconds (user + system, its threads' included; it starts no processes), not
+    RUSAGE_CHILDREN's sum over every child this test process has reaped. Its standard output and
+    error (small: they wait in the pipes, under a pipe's buffer), and those seconds."""
+    deadline = time.monotonic() + WAIT
+    while True:
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+        if pid == proc.pid:
+            break
+        assert time.monotonic() < deadline, f"the command did not end within {WAIT:g} s"
+        time.sleep(0.05)
+    proc.returncode = os.waitstatus_to_exitcode(status)  # reaped here, so Popen cannot
+    out, err = proc.communicate(timeout=WAIT)  # what it wrote; closes the pipes
+    return out, err, usage.ru_utime + usage.ru_stime
 
 
 def _start_up_cpu(argv: list[str], folder: Path) -> float:
@@ -175,11 +186,10 @@ def _start_up_cpu(argv: list[str], folder: Path) -> float:
     fills numba's cache (a fresh clone compiles), so that neither the second, measured, nor
     the interrupted run below compiles anything."""
     for _ in range(2):
-        before = _children_cpu()
         proc = _coinflight(argv, folder, stdout=subprocess.PIPE)
-        _, err = proc.communicate(timeout=WAIT)
+        _, err, cpu = _finished(proc)
         assert proc.returncode == 0, err
-    return _children_cpu() - before
+    return cpu
 
 
 def _computing(proc: subprocess.Popen[str], start_up: float) -> float:
@@ -214,13 +224,12 @@ def test_ctrl_c_is_one_line_exit_130_and_no_output(folder, command):
     common = ["--omega-x", "60:90", "--flight-time", "0.6:0.9", "--seed", "1", "-q"]
     start_up = _start_up_cpu([*command(1000), *common], folder)
     shutil.rmtree(folder / "out", ignore_errors=True)  # the tiny run's figure and table
-    before = _children_cpu()
     proc = _coinflight([*command(10**10), *common], folder, stdout=subprocess.PIPE)
     at_ctrl_c = _computing(proc, start_up)
     proc.send_signal(signal.SIGINT)
-    out, err = proc.communicate(timeout=WAIT)
+    out, err, at_end = _finished(proc)
     assert (proc.returncode, out, err) == (130, "", "coinflight: interrupted\n")
-    assert _children_cpu() - before - at_ctrl_c < AFTER_CTRL_C  # the chunk in hand only
+    assert at_end - at_ctrl_c < AFTER_CTRL_C  # the chunk in hand only
     assert sorted(p.name for p in folder.rglob("*")) == ["counts.txt"]  # nor staging
 
 

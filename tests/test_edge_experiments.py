@@ -244,6 +244,41 @@ def test_psi_refused_before_work(psi, error, words):
         wobble_sweep([THIN], 10, psis=[psi])
 
 
+def test_progress_is_called_first_once_checked_and_before_any_toss(monkeypatch):
+    # The contract a caller relies on to tell a refused input (before the first progress call)
+    # from a fault of the run (after it): bench_edge_experiments.py's one-line errors.
+    import coinflight.outcomes.table as table
+    import coinflight.studies.edge as edge
+    from coinflight.studies import mujoco_compare
+    from coinflight.studies.edge_experiments import mujoco_check, wobble_sweep
+
+    def no_toss(*_args, **_kwargs):
+        raise AssertionError("a toss ran")
+
+    monkeypatch.setattr(edge, "simulate_edge", no_toss)
+    monkeypatch.setattr(table, "land", no_toss)
+    runs = [
+        lambda said: edge_experiments([THIN], 10, 1, contact=2, progress=said.append),
+        lambda said: wobble_sweep([THIN], 10, 1, progress=said.append),
+    ]
+    if mujoco_compare.available():
+        runs.append(lambda said: mujoco_check(THIN, 3, 1, psi=80.0, progress=said.append))
+    for run in runs:
+        said: list[str] = []
+        with pytest.raises(AssertionError, match="a toss ran"):
+            run(said)
+        assert len(said) == 1 and said[0].endswith(" s")  # the size and its time, no more
+    said = []
+    with pytest.raises(ValueError, match="psi must be above 0"):
+        edge_experiments([THIN], 10, progress=said.append, psi=0.0)
+    with pytest.raises(ValueError, match="psi must be above 0"):
+        wobble_sweep([THIN], 10, psis=[0.0], progress=said.append)
+    if mujoco_compare.available():
+        with pytest.raises(ValueError, match="psi must be above 0"):
+            mujoco_check(THIN, 3, 1, psi=0.0, progress=said.append)
+    assert said == []  # a refusal comes before it
+
+
 def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
     # Common random numbers: ψ = 90 (no axial spin) at a cell gives edge_experiments' count at
     # that cell, toss for toss; a wobble changes it; every row names its ψ and cell.

@@ -223,14 +223,17 @@ def test_probability_work_beyond_the_servers_budget_is_refused_before_it_starts(
     time: refused at once, with the estimate, the limit and the way on."""
     from coinflight._validation import MAX_RUN_SECONDS
     from coinflight.outcomes.hand import HAND_CATCH
+    from coinflight.web.endpoints import BUDGET_SHARE
+    from coinflight.web.runner import DEFAULT_TIME_LIMIT  # the client's: create_app()'s default
 
     n = round(40 * HAND_CATCH.rate)  # 40 s at the hand catch's rate: the one the bound uses
-    assert n / HAND_CATCH.rate < MAX_RUN_SECONDS  # within the CLI's hour, beyond half of 30 s
+    # Beyond the server's budget (half of its 30 s), within the command line's hour.
+    assert BUDGET_SHARE * DEFAULT_TIME_LIMIT < n / HAND_CATCH.rate <= MAX_RUN_SECONDS
     started = time.perf_counter()
     detail = api_error(client, f"/api/probability?flight_time=0.6:0.9&method=monte-carlo&n={n}")
     assert time.perf_counter() - started < 5
     assert detail.startswith(f"monte-carlo with n = {n} is 40 s of estimated work, more than ")
-    assert "use a smaller n (this server answers within 30 s)" in detail
+    assert f"use a smaller n (this server answers within {DEFAULT_TIME_LIMIT:g} s)" in detail
 
 
 # --- /api/basin, /api/bias, /api/data ----------------------------------------------------------

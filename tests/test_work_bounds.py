@@ -5,14 +5,16 @@ points, boundary curves, bounces, drag integrations) is checked against a stated
 function, :func:`coinflight._validation.work_bound`, whose refusal names the request, the
 estimate (with its time at the measured rate), the limit and the way on. Each reported case is
 here, in the library and through the command line (exit 2, one line, no traceback); "before
-allocating" is checked with tracemalloc: the peak of a refusal is far below the would-be size.
+allocating" is checked with tracemalloc: the peak of a refusal is far below the would-be size;
+"before any work" by the functions doing the work, made to fail the test if called (not by a
+clock: the machine is shared).
 """
 
 from __future__ import annotations
 
 import time
 import tracemalloc
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 import pytest
@@ -23,7 +25,7 @@ from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability import estimate
+from coinflight.probability import _runner, estimate
 
 runner = CliRunner()
 FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
@@ -32,18 +34,38 @@ HUGE = [2**63, 99999999999999999999999, 2**2000]
 MB = 2**20
 
 
-def refused_cheaply(call: Callable[[], object], match: str, peak_mb: float = 16.0) -> str:
-    """``call()`` raises ValueError matching ``match`` within 2 s and a tracemalloc peak below
-    ``peak_mb`` MB (the refused requests would allocate GBs); the message."""
-    tracemalloc.start()
-    start = time.perf_counter()
-    try:
-        with pytest.raises(ValueError, match=match) as info:
-            call()
-        _, peak = tracemalloc.get_traced_memory()
-    finally:
-        tracemalloc.stop()
-    assert time.perf_counter() - start < 2.0
+RUNS_TASKS = ((_runner, "completed"),)
+"""Where the tasks of every estimator and study run (:func:`coinflight.probability._runner.
+run_tasks` calls it): the tosses, grid bands and map stripes."""
+
+
+def refused_cheaply(
+    call: Callable[[], object],
+    match: str,
+    never: Sequence[tuple[object, str]],
+    peak_mb: float = 16.0,
+) -> str:
+    """``call()`` raises ValueError matching ``match`` before any of ``never`` runs (each
+    ``(owner, name)`` a function doing the work, replaced by one failing the test if called;
+    none: the work is the allocation), with a tracemalloc peak below ``peak_mb`` MB (the
+    refused requests would allocate GBs); the message."""
+
+    def ran(where: str) -> Callable[..., object]:
+        def fail(*_args: object, **_kwargs: object) -> object:
+            raise AssertionError(f"{where} ran before the refusal")
+
+        return fail
+
+    with pytest.MonkeyPatch.context() as patch:
+        for owner, name in never:
+            patch.setattr(owner, name, ran(f"{getattr(owner, '__name__', owner)}.{name}"))
+        tracemalloc.start()
+        try:
+            with pytest.raises(ValueError, match=match) as info:
+                call()
+            _, peak = tracemalloc.get_traced_memory()
+        finally:
+            tracemalloc.stop()
     assert peak < peak_mb * MB, f"peak {peak / MB:.1f} MB before refusing"
     return str(info.value)
 
@@ -83,7 +105,7 @@ def test_duration_reads_as_a_person_would_say_it(seconds, text):
 
 @pytest.mark.parametrize("n", [10**9, 10**12, *HUGE])
 def test_grid_refuses_before_allocating(n):
-    message = refused_cheaply(lambda: estimate(FIG_2A, "grid", n=n), "bytes of nodes")
+    message = refused_cheaply(lambda: estimate(FIG_2A, "grid", n=n), "bytes of nodes", RUNS_TASKS)
     assert f"a grid of n = {n} cells per parameter" in message
     assert "more than the limit of 1.07e+09 bytes of nodes" in message
     assert "monte-carlo or qmc" in message
@@ -108,7 +130,7 @@ def test_grid_brute_force_with_table_landings_is_bounded_by_their_rate():
 
     model = TableLanding(Surface("table", drop_height=0.3))
     message = refused_cheaply(
-        lambda: estimate(FIG_2A, "grid", n=10**5, model=model), "configurations"
+        lambda: estimate(FIG_2A, "grid", n=10**5, model=model), "configurations", RUNS_TASKS
     )
     cells = float(10**5) ** 2  # n per axis, two axes
     rate = BOUNCING_TOSSES_PER_SECOND  # the time quoted at the rocking landings' rate
@@ -125,7 +147,9 @@ def test_monte_carlo_counts_are_bounded_by_time(n):
     its text): the limit is an hour of tosses at that rate."""
     from coinflight.outcomes.hand import HAND_CATCH
 
-    message = refused_cheaply(lambda: estimate(FIG_2A, "monte-carlo", n=n, seed=1), "tosses")
+    message = refused_cheaply(
+        lambda: estimate(FIG_2A, "monte-carlo", n=n, seed=1), "tosses", RUNS_TASKS
+    )
     assert message.startswith(f"monte-carlo with n = {n} is ")
     rate = HAND_CATCH.rate
     limit = f"{rate * v.MAX_RUN_SECONDS:.3g} tosses (about {v.duration(v.MAX_RUN_SECONDS)})"
@@ -139,7 +163,9 @@ def test_monte_carlo_limit_follows_the_outcome_model():
 
     model = TableLanding(Surface("table", drop_height=0.3), Drag(coefficient=1.0))
     message = refused_cheaply(
-        lambda: estimate(FIG_2A, "monte-carlo", n=10**8, seed=1, model=model), "tosses"
+        lambda: estimate(FIG_2A, "monte-carlo", n=10**8, seed=1, model=model),
+        "tosses",
+        RUNS_TASKS,
     )
     rate = AIR_LANDINGS_PER_SECOND  # the limit and time follow the landings through air
     took = f"(about {v.duration(1e8 / rate)} at {rate:.2g} tosses/s)"
@@ -148,7 +174,9 @@ def test_monte_carlo_limit_follows_the_outcome_model():
 
 @pytest.mark.parametrize("n", [16 << 31, 2**63])
 def test_qmc_points_fit_sobols_bits(n):
-    message = refused_cheaply(lambda: estimate(FIG_2A, "qmc", n=n, seed=1), "points per")
+    message = refused_cheaply(
+        lambda: estimate(FIG_2A, "qmc", n=n, seed=1), "points per", RUNS_TASKS
+    )
     assert "more than the limit of 1.07e+09 points per scrambling" in message
     assert "use n ≤ 16 × 2^30 = 17179869184" in message
     assert "bits`" not in message  # SciPy's own words never reach the user
@@ -168,6 +196,7 @@ def test_qmc_replicates_are_bounded_before_seeding():
     refused_cheaply(
         lambda: estimate(FIG_2A, "qmc", n=2**30, replicates=2**30, seed=1),
         "replicates must be between 2 and 1024, got 1073741824",
+        RUNS_TASKS,
     )
 
 
@@ -192,7 +221,7 @@ def test_convergence_checks_every_size_before_computing(sizes, match):
         for m, key in [("grid", "grid_sizes"), ("monte-carlo", "event_sizes"), ("qmc", "qmc_sizes")]
         if key in sizes
     ]
-    refused_cheaply(lambda: convergence(FIG_2A, methods, **sizes), match)
+    refused_cheaply(lambda: convergence(FIG_2A, methods, **sizes), match, RUNS_TASKS)
 
 
 # --- figures and animation (reported: animate --omega 1e9 allocated 33 GiB) -------------------
@@ -201,10 +230,13 @@ def test_convergence_checks_every_size_before_computing(sizes, match):
 def test_animation_refuses_too_many_turns_before_drawing():
     import mpl_toolkits.mplot3d.art3d  # noqa: F401  (imported before timing)
 
+    from coinflight.model.toss import Flight
+    from coinflight.plotting import animation
     from coinflight.plotting.animation import animate_toss
 
     toss = Toss(omega=(1e9, 0.0, 0.0), flight_time=0.7)
-    message = refused_cheaply(lambda: animate_toss(QUARTER, toss), "points")
+    drawing = [(Flight, "at"), (animation, "new_figure")]  # the frames' states, the figure
+    message = refused_cheaply(lambda: animate_toss(QUARTER, toss), "points", drawing)
     assert "the n·Z curve of a toss turning 1.11e+08 times (40 points a turn)" in message
     with pytest.raises(ValueError, match="frames must be between 2 and 2000, got 99999"):
         animate_toss(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7), frames=99999)
@@ -214,13 +246,15 @@ def test_plot_toss_refuses_too_many_turns_and_panels():
     import matplotlib.gridspec  # noqa: F401  (imported before timing)
 
     from coinflight.model.toss import Flight
+    from coinflight.plotting import toss as toss_plot
     from coinflight.plotting.toss import plot_toss
 
     warm = Flight(QUARTER, Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7))
     warm.catch, warm.outcome  # noqa: B018  (compiled and imported before timing)
 
     fast = Toss(omega=(2.2e-308, 1e-320, 1e9), flight_time=0.521912)  # the generated case
-    message = refused_cheaply(lambda: plot_toss(QUARTER, fast), "points")
+    drawing = [(toss_plot, "normal_path"), (toss_plot, "new_figure")]  # the path, the figure
+    message = refused_cheaply(lambda: plot_toss(QUARTER, fast), "points", drawing)
     assert "the path of the normal over" in message
     many = Toss(omega=(80.0, 0.0, 0.0), flight_time=np.linspace(0.5, 0.9, 101))
     with pytest.raises(ValueError, match=r"number of panels \(flight times\) must be between 1 "):
@@ -231,7 +265,7 @@ def test_basin_boundaries_are_bounded():
     from coinflight.studies.basin import basin_map
 
     basin = basin_map(QUARTER, spin=(-1e9, 1e9), flight_time=(0.6, 0.9), resolution=(4, 4))
-    message = refused_cheaply(basin.boundaries, "curves")
+    message = refused_cheaply(basin.boundaries, "curves", [])  # the work: the curves' arrays
     assert "more than the limit of 2e+03 curves" in message
     assert "--no-boundaries" in message
 
@@ -241,9 +275,14 @@ def test_basin_boundaries_are_bounded():
 
 @pytest.mark.parametrize("n", HUGE)
 def test_same_side_simulation_is_bounded(n):
+    from coinflight.probability import streams
     from coinflight.studies.bias import simulate_same_side
 
-    message = refused_cheaply(lambda: simulate_same_side(45.0, n, 0, degrees=True), "tosses")
+    message = refused_cheaply(
+        lambda: simulate_same_side(45.0, n, 0, degrees=True),
+        "tosses",
+        [(streams, "unit_cube")],  # the tosses' draws
+    )
     assert "more than the limit of 1.44e+10 tosses (about 60 min)" in message
 
 
@@ -257,7 +296,9 @@ def test_edge_simulation_is_bounded():
         simulate_edge([0.3], 2.5, 1)  # type: ignore[arg-type]
     with pytest.raises(ValueError, match=r"ratio must be between 0\.001 and 100, got 1e"):
         simulate_edge([0.3, 1e308], 10, 1)
-    message = refused_cheaply(lambda: simulate_edge(np.full(100, 0.3), 10**7, 1), "tosses")
+    message = refused_cheaply(
+        lambda: simulate_edge(np.full(100, 0.3), 10**7, 1), "tosses", RUNS_TASKS
+    )
     assert "100 ratios × 10000000 tosses is 1e+09 tosses" in message
 
 
@@ -292,6 +333,7 @@ def test_any_spin_damping_on_a_tiny_coin_ends_quickly():
 
 @pytest.mark.filterwarnings("ignore::coinflight._validation.PlausibilityWarning")
 def test_a_fall_too_slow_to_integrate_is_refused_before_any_work():
+    from coinflight.core import drag
     from coinflight.model.surface import Drag
     from coinflight.outcomes.air import catch_with_drag
 
@@ -299,6 +341,7 @@ def test_a_fall_too_slow_to_integrate_is_refused_before_any_work():
     message = refused_cheaply(
         lambda: catch_with_drag(leaf, np.array([[80.0, 0.0, 0.0]]), 3.43, 1.0, 9.81, Drag(10.0)),
         "integration steps a toss",
+        [(drag, "catch")],  # the integrator
     )
     assert "air drag C_d = 10" in message and "use a smaller C_d" in message
 

@@ -583,7 +583,8 @@ def edge_experiments(
         about 82°; default none (planar tosses). The same for every cell; each cell's
         parameters then include ``psi`` (degrees, the typical ψ).
     progress : callable, optional
-        Called with a short text after each band.
+        Called with a short text first once every input is checked and the work bounded,
+        before any toss (the run's size), then after each band.
 
     Raises
     ------
@@ -613,14 +614,13 @@ def edge_experiments(
     seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
         CONTACT_TOSSES_PER_SECOND
     )
-    v.work_bound(
+    what = (
         f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking and "
-        f"{contact_tosses:,} contact-ending tosses",
-        seconds,
-        v.MAX_RUN_SECONDS,
-        "s",
-        "use fewer tosses per cell (n, contact)",
+        f"{contact_tosses:,} contact-ending tosses"
     )
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, contact)")
+    if progress is not None:
+        progress(f"{what}, about {v.duration(seconds)}")
     t0 = time.perf_counter()
     root = streams.seed_sequence(seed)
     comparisons = []
@@ -759,7 +759,8 @@ def wobble_sweep(
     Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
     cell lands the same ωx and v0 (common random numbers; ψ changes ωz only), and ψ = 90 with
     the rocking ending gives that function's counts at the same cell. Work bounded before it
-    runs, as :func:`edge_experiments`.
+    runs, as :func:`edge_experiments`; ``progress`` is called first once every input is checked,
+    before any toss (the run's size), then after each cell and ending.
     """
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
     from coinflight.studies.edge import simulate_edge
@@ -769,13 +770,11 @@ def wobble_sweep(
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
     }
     runs = len(items) * len(psis) * len(cells)
-    v.work_bound(
-        f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)",
-        runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND),
-        v.MAX_RUN_SECONDS,
-        "s",
-        "use fewer tosses per cell (n, contact)",
-    )
+    what = f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)"
+    seconds = runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND)
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, contact)")
+    if progress is not None:
+        progress(f"{what}, about {v.duration(seconds)}")
     root = streams.seed_sequence(seed)
     rows = []
     for i, x in enumerate(items):
@@ -834,6 +833,7 @@ def mujoco_check(
     resistance: float = 1e-4,
     g: float = 9.81,
     psi: float | Literal["human"] | None = None,
+    progress: Callable[[str], None] | None = None,
 ) -> EngineCheck:
     """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
     :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
@@ -845,7 +845,8 @@ def mujoco_check(
     row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
     same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work (both
     endings at their landing rates, MuJoCo by :func:`coinflight.studies.mujoco_compare.
-    seconds_estimate`) bounded before anything runs."""
+    seconds_estimate`) bounded before anything runs; ``progress``, if given, is called once
+    every input is checked and the work bounded, before any toss (the check's size)."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import TableLanding, land
@@ -857,6 +858,8 @@ def mujoco_check(
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
     v.no_dead_contact("contact", restitution)  # the contact ending runs here
+    streams.check_seed(seed)
+    wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
     tables = {}
     for ending in ("rocking", "contact"):
         extra = (
@@ -868,15 +871,11 @@ def mujoco_check(
     # Bounded before anything runs: both endings' landings at their rates, and MuJoCo's.
     seconds = sum(n / TableLanding(t).rate for t in tables.values())
     seconds += mujoco_compare.seconds_estimate(n, mujoco_compare.SETTLE)
-    v.work_bound(
-        f"the MuJoCo check: {n} tosses in both endings and in MuJoCo",
-        seconds,
-        v.MAX_RUN_SECONDS,
-        "s",
-        "use fewer tosses",
-    )
+    what = f"the MuJoCo check: {n} tosses in both endings and in MuJoCo"
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses")
+    if progress is not None:
+        progress(f"{what}, about {v.duration(seconds)}")
     root = streams.seed_sequence(seed)
-    wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
     k = 2 if wz is None else 3
     u = np.concatenate(list(streams.unit_cube(streams.child(root, 0), n, k)), axis=1)
     omega = np.zeros((n, 3))
