@@ -54,7 +54,14 @@ def serving(*args: str, timeout: float = WAIT) -> Iterator[Server]:
     command = [sys.executable, "-m", "coinflight", "serve", *(args or ("--port", "0"))]
     env = {**os.environ, "PYTHONUNBUFFERED": "1"}
     proc = subprocess.Popen(
-        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env
+        command,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+        # Ctrl-C acts as at a terminal even when pytest was started with SIGINT ignored (a
+        # background job of a shell without job control; Python keeps it ignored).
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     try:
         line = _line(proc.stdout, timeout)

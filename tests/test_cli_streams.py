@@ -41,13 +41,22 @@ IDS = [" ".join(argv) for argv in COMMANDS]
 _STARTED: list[subprocess.Popen[str]] = []
 
 
-def _coinflight(argv, cwd, **kwargs):
+def _coinflight(argv, cwd, preexec_fn=None, **kwargs):
+    def start():
+        # Ctrl-C acts as at a terminal even when pytest itself was started with SIGINT
+        # ignored (a background job of a shell without job control): Python keeps an
+        # ignored SIGINT ignored, and these tests would wait for a Ctrl-C never acted on.
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+        if preexec_fn is not None:
+            preexec_fn()
+
     proc = subprocess.Popen(
         [sys.executable, "-m", "coinflight", *argv],
         cwd=cwd,
         env=ENV,
         stderr=subprocess.PIPE,
         text=True,
+        preexec_fn=start,
         **kwargs,
     )
     _STARTED.append(proc)
