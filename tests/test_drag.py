@@ -265,7 +265,7 @@ def _kink_case(name):
     elif name == "two roots 2.0":  # −0.8 + cos θ(x − 1/2): roots at x ≈ 0.18 and 0.82
         theta = 2.0
         gcoef = np.array([-0.8, math.cos(theta / 2), math.sin(theta / 2)])
-    elif name.startswith("g0 = 0"):  # p + q = 0 exactly; g falls (r < 0) or rises after 0
+    elif name.startswith("g0 = 0,"):  # p + q = 0 exactly; g falls (r < 0) or rises after 0
         theta = 0.35 if "0.35" in name else 1.3
         gcoef = np.array([0.7, -0.7, -0.9 if "falls" in name else 0.9])
     elif name == "one root 0.301":
@@ -277,6 +277,10 @@ def _kink_case(name):
     elif name == "g2 = 0 from above":
         theta = 1.0
         nodes = np.array([0.5, 0.8, 0.0])
+    elif name.startswith("g0 = 0 and g2"):  # cos θx − 1 + tan(θ/2) sin θx: > 0 inside
+        theta = 1.0 if name.endswith("= 0") else 0.5  # (found by a reviewer: sign flipped)
+        mid = (1.0 - math.cos(theta / 2)) / math.cos(theta / 2)
+        nodes = np.array([0.0, mid, 0.0 if name.endswith("= 0") else -1e-300])
     else:  # "g2 = 1e-300": a root within rounding of x = 1 (found by a reviewer)
         theta = 0.30000000000030064
         nodes = np.array([0.8767217118289935, 0.9452622266421788, 1e-300])
@@ -289,6 +293,7 @@ def _kink_case(name):
 KINK_CASES = [f"seed{k}" for k in range(6)] + ["theta0.301", "theta0.35", "theta3.1"]
 KINK_CASES += ["one root 0.301", "two roots 3.1", "two roots 2.0", "g0 = 0, falls", "g0 = 0, rises"]
 KINK_CASES += ["g0 = 0, falls, 0.35", "g2 = 0 from below", "g2 = 0 from above", "g2 = 1e-300"]
+KINK_CASES += ["g0 = 0 and g2 = 0", "g0 = 0 and g2 = -1e-300"]
 
 
 @pytest.mark.parametrize("name", KINK_CASES)

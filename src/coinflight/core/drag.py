@@ -631,12 +631,14 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         # The number of roots disagrees with the end signs: a root within rounding of an end
         # was put on the wrong side of it. The root nearest an end is moved across it (onto
         # the end if brought in); without a root, g changes sign at the end where it is smaller.
+        # A root exactly at x = 0 (a numerator of exactly 0: g0 = 0, whose side s0 already
+        # took from the slope) is no candidate: it would always be the nearest.
         ea = math.inf
         eb = math.inf
-        if da != 0.0:
+        if da != 0.0 and na != 0.0:
             xa = 2.0 * math.atan(na / da) * it
             ea = min(abs(xa), abs(1.0 - xa))
-        if db != 0.0:
+        if db != 0.0 and nb != 0.0:
             xb = 2.0 * math.atan(nb / db) * it
             eb = min(abs(xb), abs(1.0 - xb))
         if ea == math.inf and eb == math.inf:
