@@ -540,6 +540,29 @@ def _checked(
     return items, n, contact, {name: setting(name) for name in {x.setting for x in items}}
 
 
+def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
+    """One cell's landing checked as :func:`~coinflight.studies.edge.simulate_edge` will check
+    it (g, diameter, the table's e, μ, drop and resistances, no dead contact), so that a refusal
+    comes before ``progress`` is first called and any toss runs."""
+    from coinflight.model.surface import Surface
+    from coinflight.model.toss import check_gravity
+    from coinflight.studies.edge import check_diameter
+
+    check_gravity(g)
+    check_diameter(point["diameter"])
+    v.no_dead_contact(ending, point["restitution"])
+    resist = point.get("resistance")
+    extra = {} if resist is None else {"rolling_resistance": resist, "pivoting_resistance": resist}
+    Surface(
+        "table",
+        drop_height=point["drop_height"],
+        restitution=point["restitution"],
+        friction=point["friction"],
+        ending=ending,  # type: ignore[arg-type]  # "rocking" or "contact"
+        **extra,
+    )
+
+
 def edge_experiments(
     experiments: Sequence[Experiment],
     n: int,
@@ -609,6 +632,10 @@ def edge_experiments(
     points = v.count("points per parameter", points, 2, 9)
     if psi is not None:
         axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
+    for box in boxes:
+        for ending, size, k in (("rocking", n, points), ("contact", contact, 2)):
+            for point in box_cells(box[ending], k) if size else ():
+                _cell_checked(point, ending, g)
     rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
     contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
     seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
@@ -769,6 +796,11 @@ def wobble_sweep(
     spins = {
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
     }
+    for cell in cells:
+        for ending, size in (("rocking", n), ("contact", contact)):
+            if size:
+                extra = {"resistance": resistance} if ending == "contact" else {}
+                _cell_checked({**cell, **extra}, ending, g)
     runs = len(items) * len(psis) * len(cells)
     what = f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)"
     seconds = runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND)
@@ -849,6 +881,7 @@ def mujoco_check(
     every input is checked and the work bounded, before any toss (the check's size)."""
     from coinflight.core.outcome import EDGE
     from coinflight.model.surface import Surface
+    from coinflight.model.toss import check_gravity
     from coinflight.outcomes.table import TableLanding, land
     from coinflight.studies import mujoco_compare
     from coinflight.studies.edge import SIM_DIAMETER, cylinder
@@ -858,6 +891,7 @@ def mujoco_check(
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
     v.no_dead_contact("contact", restitution)  # the contact ending runs here
+    check_gravity(g)
     streams.check_seed(seed)
     wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
     tables = {}
