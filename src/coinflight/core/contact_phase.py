@@ -1073,7 +1073,8 @@ def advance(
     steps spent in each mode; with one more row filled with −1 (shape
     (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
     :func:`upright_decided` first held, decided or not (with ``settle_check``). ``rtol``: the
-    step control's relative tolerance (:data:`RTOL`; another for tests of the stepper)."""
+    step control's relative tolerance (:data:`RTOL`; another for tests of the stepper; it must
+    be positive and finite, not checked here: 0 or NaN rejects every step up to ``max_steps``)."""
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))

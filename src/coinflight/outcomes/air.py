@@ -41,7 +41,9 @@ second in one thread; 182,000 a second on the quiet machine (load about 1); kept
 busy one. The table landing's rate is
 :data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND` (26,900 a second carried to rest in
 the same run, load 3.5-5). After the kink integrals' rewrite (2026-11-24) the
-hand catch is 1.03-1.07 times main's rate (CPU time, one thread: 1.06 in the same command's
+hand catch is 1.03-1.08 times main's rate, within the A/B's resolution of about 5 % (below:
+its order is fixed within a round and only the other side warms up in parallel) (CPU time,
+one thread: 1.06 in the same command's
 run, 120,901 against 113,238 tosses per CPU second; an interleaved A/B of one thread each, 7
 rounds of 10,000 tosses at a load of 13, 1.03-1.05); that run's wall-clock rates at a load of
 10.5, 79,658 a second against main's 64,546, are mostly the load's. The A/B is ``python
