@@ -59,10 +59,11 @@ of one thread each, 7 rounds of 10,000 tosses at load 13, 1.03-1.05 times, the m
 parent 1.06, 1.05 and 1.02 (rounds 1.00-1.07, load 3.8-4.0); a first version of the fix that
 divided for every root, not only for those counted, was 0.97-0.98 times its parent and
 1.00-1.02 times main (load 4-5). Issue 11's 100,000 a second on 2 cores is therefore met by
-the first contact only on a quiet machine (estimated, not measured: twice the one-thread rate,
-~170,000), not carried to rest (estimated likewise, ~50,000 quiet; 51,915 measured quiet on
-2026-11-23 before the rewrite): there a toss costs ~36-40 µs of one core, 28-36 % of it the
-8.8 impacts the vacuum landing has too (``--profile``; the shares in
+the hand catch and the first contact on a quiet machine, not carried to rest: measured quiet
+(``--n 30000 --repeats 3 --reference 3 --old-src`` against 6061499, 2026-11-24 01:47 UTC, load
+1.4-1.8) hand 252,136 a second, first contact 176,315, to rest 54,791 (vacuum 112,591), each
+1.02-1.03 times the code before (one thread 1.02-1.03): carried to rest a toss costs ~36-40 µs
+of one core, 28-36 % of it the 8.8 impacts the vacuum landing has too (``--profile``; the shares in
 :mod:`coinflight.core.drag`'s notes on cost).
 """
 

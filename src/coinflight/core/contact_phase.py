@@ -22,8 +22,10 @@ step tolerance a run-time argument, no chunk size), 300 tosses at load 4.2-4.8 (
 1.27× and 1.33×. Faces differed on 0-1 tosses of each run, statuses on none. The
 wall-clock rates with both threads move with the other processes' load (1.08-1.39× in the
 first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 against 1,098 at 9.8-6.1)
-and are not the measure of the change. Quiet (load 1.7, 23:18 UTC) the code before did 2,185
-a second; this code was not measured quiet. So 50,000 is still ~20× away.
+and are not the measure of the change. Quiet (load 1.4-1.8, 2026-11-24 01:46 UTC, the same
+command, 300 tosses, against the code before at 6061499): **2,954 a second against 2,245**
+(1.32×; one thread 1.29×), each toss its own e, μ 2,645 against 2,018 (1.31×; 1.34×); faces
+differing on 0 and 1 of 300. So 50,000 is still ~17× away.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
