@@ -301,7 +301,9 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
         print(
             f"  e = {e}, μ = {mu}: decided at an impact (whole energy below the barrier) "
             f"{share[Status.SETTLED_ENERGY]:.1%}, in the contact phase "
-            f"{share[Status.SETTLED_CONTACT]:.1%}, unsettled {share[Status.UNSETTLED]:.2%}; "
+            f"{share[Status.SETTLED_CONTACT] + share[Status.DECIDED_UPRIGHT]:.1%} (of which "
+            f"decided upright {share[Status.DECIDED_UPRIGHT]:.1%}), unsettled "
+            f"{share[Status.UNSETTLED]:.2%}; "
             f"contact phase {np.median(out.settle_time - out.first_contact):.2f} s after the first "
             f"contact (median); {face_fractions(out.face)}"
         )
@@ -357,7 +359,9 @@ def upright_decision(n: int, rounds: int = 3) -> None:
     global, so each setting runs in a child process of its own ("off": UPRIGHT_DECISION set to
     False before numba compiles, in its own numba cache directory); the rounds alternate the two
     settings, so that the ratio is taken over the same minutes (medians over the rounds). The
-    faces of every toss are compared between the settings (the decision must not change any)."""
+    faces of every toss are compared between the settings (the decision must not change any),
+    and the statuses: identical but where the decision ended the coin (DECIDED_UPRIGHT with it,
+    SETTLED_CONTACT without)."""
     import json
     import subprocess
     import sys
@@ -393,11 +397,14 @@ def upright_decision(n: int, rounds: int = 3) -> None:
             faces = on[f"{name} face"], off[f"{name} face"]
             differ = int(np.count_nonzero(faces[0] != faces[1]))
             edges = int(np.count_nonzero(faces[1] == EDGE))
-            same_status = bool(np.array_equal(on[f"{name} status"], off[f"{name} status"]))
+            decided = on[f"{name} status"] == Status.DECIDED_UPRIGHT
+            carried = np.where(decided, np.int8(Status.SETTLED_CONTACT), on[f"{name} status"])
+            same_status = bool(np.array_equal(carried, off[f"{name} status"]))
             print(
                 f"  {name}: on {a:,.0f} tosses/s, off {b:,.0f} tosses/s (ratio {a / b:.2f}); "
                 f"faces differing {differ} of {n} ({edges} on edge without the decision); "
-                f"statuses identical {same_status}"
+                f"{int(decided.sum())} decided upright; statuses identical but those "
+                f"{same_status}"
             )
 
 
@@ -442,7 +449,8 @@ def contact_phase(n: int) -> None:
             print(
                 f"  e = 0.5, μ = {mu:.1f}, rolling = pivoting = {resist:.0e} m: P(same side) = "
                 f"{same:.3f} ± {se:.3f}, edge {np.mean(out.face == EDGE):.4f}, contact phase "
-                f"{np.mean(out.status == Status.SETTLED_CONTACT):.1%}, unsettled "
+                f"{np.mean(out.status == Status.SETTLED_CONTACT):.1%}, decided upright "
+                f"{np.mean(out.status == Status.DECIDED_UPRIGHT):.1%}, unsettled "
                 f"{np.mean(out.status == Status.UNSETTLED):.2%}, {rate:,.0f} tosses/s"
             )
     omega = np.column_stack([rng.uniform(150.0, 300.0, n), np.zeros(n), np.zeros(n)])

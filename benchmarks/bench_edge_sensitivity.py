@@ -117,7 +117,7 @@ def main() -> None:
             face = resting_face(y[6], c.edge_sine)
         else:
             face, status, _ = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
-            settled = status == Status.SETTLED_CONTACT
+            settled = status != Status.UNSETTLED
         faces.append(face)
         unsettled += int(not settled)
     f = np.array(faces)

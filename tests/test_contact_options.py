@@ -102,14 +102,15 @@ def test_the_corner_radius_reaches_the_contact_phase():
     omega, v0 = _vigorous(300, seed=11)
     sharp = land(nickel, omega, v0, 1.0, 9.81, surface)
     round_ = land(nickel.with_corner_radius(0.5 * nickel.thickness), omega, v0, 1.0, 9.81, surface)
-    in_contact = STATUS_NAMES.index("settled in contact")
-    assert np.mean(sharp.status == in_contact) > 0.5  # the contact phase decides most of them
-    assert np.mean(round_.status == in_contact) > 0.5
+    # The contact phase ends most of them (by its energy test, or upright by its decision).
+    phase = [STATUS_NAMES.index("settled in contact"), STATUS_NAMES.index("decided upright")]
+    assert np.mean(np.isin(sharp.status, phase)) > 0.5
+    assert np.mean(np.isin(round_.status, phase)) > 0.5
     edges_sharp = int(np.sum(sharp.face == 2))
     # 300 tosses at the sharp rim's ≥ 6.5 %: ≥ 19 expected; 5 is more than 4 s.d. below.
     assert edges_sharp >= 5, edges_sharp
     assert int(np.sum(round_.face == 2)) == 0
-    both = (sharp.status == in_contact) & (round_.status == in_contact)
+    both = np.isin(sharp.status, phase) & np.isin(round_.status, phase)
     differ = np.abs(sharp.settle_time[both] - round_.settle_time[both]) > 1e-6
     assert np.mean(differ) > 0.5  # not only the final reading of the face: the motion
 

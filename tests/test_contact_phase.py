@@ -619,16 +619,23 @@ def _band_moment(coin, speed, yaw):
 @pytest.mark.parametrize(("speed", "yaw"), [(0.3, 0.0), (0.8, 0.1), (0.1, 0.5), (0.0, 0.0)])
 def test_upright_roller_is_decided_on_edge_and_integration_agrees(speed, yaw):
     # Rolling upright in its band with a turn well inside the band's moment and μ N, at rest or
-    # not: decided at once (settle: edge, settled, no time), and carried on to rest without
-    # the decision it does end on edge.
+    # not: decided at once (settle: edge, no time; status DECIDED_UPRIGHT for a roller, but
+    # SETTLED_CONTACT at rest, where the energy test, taken first, already holds), and carried
+    # on to rest without the decision it does end on edge, settled by its energy.
     c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
     y = _roller(NICKEL, c, speed, yaw)
     assert _band_moment(NICKEL, speed, yaw) < cp.UPRIGHT_MARGIN
     assert _decided(y, c)
+    at_rest = speed == 0.0
+    assert cp.below_barrier(y, c, cp.stiffness_of(c)) == at_rest
     f, status, t = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), c)
-    assert (f, status, t) == (EDGE, Status.SETTLED_CONTACT, 0.0)
-    _, _, settled = cp.advance(y, math.inf, c, settle_check=True)
-    assert settled
+    expected = Status.SETTLED_CONTACT if at_rest else Status.DECIDED_UPRIGHT
+    assert (f, status, t) == (EDGE, expected, 0.0)
+    assert status is expected  # numba returns the IntEnum member, not a bare integer
+    decided = cp.advance(y.copy(), math.inf, c, settle_check=True, decide=True)
+    assert decided == (0.0, 0, cp.Ending.SETTLED if at_rest else cp.Ending.DECIDED)
+    _, _, ending = cp.advance(y, math.inf, c, settle_check=True)
+    assert ending is cp.Ending.SETTLED
     assert abs(y[6]) < c.edge_sine
 
 
@@ -712,7 +719,7 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     start[7:10] = _roller(NICKEL, c, 0.4, 2.0)[7:10]
     on = start.copy()
     t_on, steps_on, settled = cp.advance(on, math.inf, c, settle_check=True, decide=True)
-    assert settled and abs(on[6]) < c.edge_sine
+    assert settled is cp.Ending.DECIDED and abs(on[6]) < c.edge_sine
     assert _decided(on, c)
     off = start.copy()
     t_off, steps_off, _ = cp.advance(off, math.inf, c, max_steps=steps_on)
@@ -723,15 +730,16 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     stats[-1] = -1.0
     rest = start.copy()
     t_rest, steps_rest, settled = cp.advance(rest, math.inf, c, settle_check=True, stats=stats)
-    assert settled and abs(rest[6]) < c.edge_sine
+    assert settled is cp.Ending.SETTLED and abs(rest[6]) < c.edge_sine
     assert tuple(stats[-1]) == (t_on, steps_on)
     assert steps_rest > steps_on and t_rest > t_on
 
 
 def test_contact_ending_describe_says_its_time_is_the_decisions():
-    # The contact ending's settle_time is when the outcome was decided (at rest, below the
-    # barrier, or an upright roller decided on edge, possibly still rolling): describe() says
-    # so, with the settle_time it reports.
+    # The contact ending's settle_time is when the outcome was decided (at rest or below the
+    # barrier: "settled in contact"; an upright roller decided on edge, possibly still rolling:
+    # "decided upright"): describe() says which, with the settle_time it reports. The two
+    # tosses found by a scan of ωx and T (drop 0.5 m, e 0.3, μ 0.3, ℓ_r = ℓ_p = 1e-4 m).
     from coinflight import Toss
     from coinflight.outcomes.table import Landing
 
@@ -743,7 +751,14 @@ def test_contact_ending_describe_says_its_time_is_the_decisions():
     assert out["status"] == "settled in contact"
     text = landing.describe()
     assert f"decided at t = {out['settle_time']:.4f} s" in text
-    assert "rolling upright in its edge band; settled in contact" in text
+    assert "at rest or below its well's barrier; settled in contact" in text
+    landing = Landing(NICKEL, Toss((220.0, 5.0, 3.0), 0.48), surface)
+    out = landing.to_dict()
+    assert (out["outcome"], out["status"]) == ("edge", "decided upright")
+    assert int(landing.outcome.status) == Status.DECIDED_UPRIGHT
+    text = landing.describe()
+    assert f"decided at t = {out['settle_time']:.4f} s while rolling upright" in text
+    assert "a measured predictor of ending on edge, not a proof; decided upright" in text
 
 
 def test_decided_upright_rollers_carried_on_end_on_edge_at_rest():

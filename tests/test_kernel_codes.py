@@ -26,11 +26,12 @@ from coinflight.core.outcome import (
 def test_codes_keep_their_integers_and_names():
     # The integers stored in every face/status array since the first release (core/bounce.py,
     # core/impact.py, outcomes/table.py before issue 9); code 5, "settled in contact", is the
-    # experimental 3-D contact phase (issue 11, Surface(ending="contact")).
+    # experimental 3-D contact phase (issue 11, Surface(ending="contact")), code 6, "decided
+    # upright", the same phase's upright roller ended on edge by its measured predictor.
     assert [int(f) for f in Face] == [0, 1, 2]
     assert (TAILS, HEADS, EDGE) == (0, 1, 2)
     assert FACE_NAMES == ("tails", "heads", "edge")
-    assert [int(s) for s in Status] == [0, 1, 2, 3, 4, 5]
+    assert [int(s) for s in Status] == [0, 1, 2, 3, 4, 5, 6]
     assert [s.name for s in Status] == [
         "SETTLED_ENERGY",
         "SETTLED_DEAD",
@@ -38,9 +39,10 @@ def test_codes_keep_their_integers_and_names():
         "UNSETTLED",
         "SETTLED_ROCKING",
         "SETTLED_CONTACT",
+        "DECIDED_UPRIGHT",
     ]
     released = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
-    assert (*released, "settled in contact") == STATUS_NAMES
+    assert (*released, "settled in contact", "decided upright") == STATUS_NAMES
     assert FACE_NAMES[Face.EDGE] == Face.EDGE.label == "edge"
     assert STATUS_NAMES.index("unsettled") == Status.UNSETTLED
     faces = face_from_alignment([0.5, -0.5], [1.0, 1.0])

@@ -22,7 +22,7 @@ from coinflight.cli.options import (
 from coinflight.cli.presets import given_toss_options
 from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
-from coinflight.queries.probability import result_warnings
+from coinflight.queries.probability import result_notes, result_warnings
 
 if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
@@ -150,6 +150,8 @@ def _report(
     if landing is not None and landing.surface.bounces:
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
+    for note in result_notes(result):
+        typer.echo(note)
     for warning in result_warnings(result):
         typer.echo(f"warning: {warning}")
     typer.echo(_method_line(result))

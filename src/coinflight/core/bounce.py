@@ -34,8 +34,9 @@ one rim point while it tips), the end is chosen by the record's ``ending`` flag
 :func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
 contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
 and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
-cannot leave its well (status SETTLED_CONTACT; slow, and its edge rates are not yet credible:
-see :mod:`coinflight.core.contact_phase`).
+cannot leave its well (status SETTLED_CONTACT, or DECIDED_UPRIGHT for a coin rolling upright
+that :func:`coinflight.core.contact_phase.upright_decided` ends on edge, a measured predictor;
+slow, and its edge rates are not yet credible: see :mod:`coinflight.core.contact_phase`).
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 
@@ -468,8 +469,8 @@ def impact_verdict(z, v, lm, n, rebound, c):
 def died_out(z, v, n, lm, c):
     """The end of a landing whose bounces died out: (face, status, duration, s), by
     ``c.ending``: the 3-D contact phase (:func:`coinflight.core.contact_phase.settle`,
-    SETTLED_CONTACT or UNSETTLED, its duration) or the planar rocking of :func:`rock`
-    (SETTLED_ROCKING, 0)."""
+    SETTLED_CONTACT, DECIDED_UPRIGHT or UNSETTLED, its duration) or the planar rocking of
+    :func:`rock` (SETTLED_ROCKING, 0)."""
     if c.ending == CONTACT_ENDING:
         return settle(z, v, n, lm, c)
     omega = angular_velocity(lm, n, c.i1, c.i3)

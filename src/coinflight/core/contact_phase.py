@@ -281,8 +281,9 @@ rims, until the rolling resistance stops them (above: 75 % of the simulated time
 steps). The energy test cannot end them early: their rolling energy, ½ (m + I3/r²) v², is far
 above the band's barrier m g (ρ − r) ≈ m g h²/8r (45 μm of height for a nickel, passed by
 v ≈ 2.4 cm/s). With :data:`UPRIGHT_DECISION` (on; a compile-time constant), :func:`settle`
-ends such a coin on edge (status SETTLED_CONTACT, time the decision's) as soon as
-:func:`upright_decided` holds:
+ends such a coin on edge (status DECIDED_UPRIGHT, :class:`coinflight.core.outcome.Status`,
+so that a count of outcomes can tell the predicted ones from the coins carried to rest; time the
+decision's) as soon as :func:`upright_decided` holds:
 
 * **The turn a band holds.** Upright (n horizontal), rolling without slip at v = r ω (ω = ω·n)
   and turning at ψ' = ω_z, the coin's angular momentum about its centre I3 ω n + I1 ψ' Z turns
@@ -348,7 +349,8 @@ Through the whole landing (bounces and this phase, :func:`coinflight.core.bounce
 2026-11-23 20:58-21:04 UTC, the shared 2-core machine at load 8-10): carried to rest **660
 tosses a second with the decision against 213 without** (3.1×) at e 0.5, μ 0.3; 477 against 57
 (8.4×) at μ 0.6; 588 against 161 (3.6×) with each toss's own e and μ; the faces of all 3 × 1,000
-tosses identical with and without it (83, 296 and 116 on edge), and their statuses too. With
+tosses identical with and without it (83, 296 and 116 on edge), and their statuses too (then
+the decided tosses were SETTLED_CONTACT; they are DECIDED_UPRIGHT since, the one difference). With
 :data:`UPRIGHT_DECISION` False the landings are those of the code before the decision to the
 bit (face, bounces, first contact, settle time and status of the same 3 × 1,000 tosses,
 against main at e38e887). Issue
@@ -359,6 +361,7 @@ against main at e38e887). Issue
 from __future__ import annotations
 
 import math
+from enum import IntEnum
 
 import numpy as np
 from numba import njit
@@ -389,6 +392,22 @@ on-disk cache ignores a later change, so setting it takes effect only after edit
 and deleting ``src/coinflight/core/__pycache__`` (or in a process with a numba cache directory
 of its own, as ``benchmarks/bench_bounce.py --upright`` does). At run time a coin is carried on
 past the decision by :func:`advance` with ``decide=False`` (an argument, read at every call)."""
+
+
+class Ending(IntEnum):
+    """How :func:`_integrate` (and :func:`advance`) stopped: false when the coin has not
+    settled, true when it has, and which way (numba compiles the members as their integers)."""
+
+    RUNNING = 0
+    """Not settled: the duration or the step limit ran out first."""
+    SETTLED = 1
+    """Its energy can no longer take it out of its well (at rest or below its barrier):
+    status SETTLED_CONTACT in :func:`settle`."""
+    DECIDED = 2
+    """Ended on edge by :func:`upright_decided` (a measured predictor, not a proof; the coin
+    may still be rolling): status DECIDED_UPRIGHT in :func:`settle`."""
+
+
 UPRIGHT_MARGIN = 0.5
 """Share of each bound of :func:`upright_decided` the coin may use: the band's restoring moment
 m g h′ against the turn's overturning moment, μ N against the friction the turn and the
@@ -719,7 +738,8 @@ BUDGET_STEP = 1e-4
 """Seconds a step of :func:`_integrate` is taken to cover when :func:`upright_decided` asks
 whether the steps left can carry a roller to rest: below the mean step measured in upright
 rolling (~0.6 ms: ~1,600 steps a simulated second at t_c 1 ms, 2026-11-23), so that a roller
-which would run out of :data:`MAX_STEPS` is not decided (the decision changes no status);
+which would run out of :data:`MAX_STEPS` is not decided (the decision turns no UNSETTLED toss
+into a settled one);
 :data:`MAX_STEP` (1 ms) was too loose (rollers of 250–400 s decided). A contact time far below
 1 ms shortens the steps below this."""
 
@@ -749,7 +769,8 @@ def upright_decided(y, c, stiffness, zeta, budget):
     brakes ω = v/r at most at the rate ℓ_r m g / (I3 + m r²) (the torque ℓ_r F_n of
     :func:`_derivative`, N = m g on the two rims, weaker below its regularisation), so it rolls
     at least (v/r) (I3 + m r²) / (ℓ_r m g). A roller that carried on would end UNSETTLED after
-    :data:`MAX_STEPS` is not decided, so that the decision changes no status.
+    :data:`MAX_STEPS` is not decided, so that the decision turns no UNSETTLED toss into a
+    decided one.
     """
     hb = c.half_thickness - c.corner_radius  # h′: half the flat band
     if hb <= 0.0 or c.friction <= 0.0 or c.rolling_resistance <= 0.0:
@@ -877,7 +898,8 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     says where the decision would have ended it; the test runs at every step then). ``rtol``
     is the step control's relative tolerance (:data:`RTOL` but in tests).
 
-    Returns (time advanced, accepted steps, settled).
+    Returns (time advanced, accepted steps, :class:`Ending`): RUNNING (not settled), SETTLED
+    (by the energy test) or DECIDED (by :func:`upright_decided`, with ``decide``).
     """
     k1 = np.empty(10)
     k2 = np.empty(10)
@@ -905,7 +927,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     for step in range(max_steps):
         if settle:
             if below_barrier(y, c, stiffness):
-                return t, step, True
+                return t, step, Ending.SETTLED
             if (decide or (probe and stats[modes, 1] < 0.0)) and upright_decided(
                 y, c, stiffness, zeta, (max_steps - step) * BUDGET_STEP
             ):
@@ -913,9 +935,9 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
                     stats[modes, 0] = t
                     stats[modes, 1] = step
                 if decide:
-                    return t, step, True
+                    return t, step, Ending.DECIDED
         if t >= duration:
-            return t, step, False
+            return t, step, Ending.RUNNING
         lm = (y[7], y[8], y[9])
         n = (y[4], y[5], y[6])
         omega = angular_velocity(lm, n, c.i1, c.i3)
@@ -981,7 +1003,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
         for i in range(10):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
-    return t, max_steps, False
+    return t, max_steps, Ending.RUNNING
 
 
 @njit(cache=True)
@@ -1019,11 +1041,13 @@ def settle(z, v, n, lm, c):
     face : int
         TAILS 0, HEADS 1, EDGE 2: the well the coin cannot leave.
     status : Status
-        SETTLED_CONTACT, or UNSETTLED after :data:`MAX_STEPS` steps.
+        SETTLED_CONTACT (the energy test: at rest or below its well's barrier),
+        DECIDED_UPRIGHT (ended on edge by :func:`upright_decided`, :data:`UPRIGHT_DECISION`, a
+        compile-time constant: a measured predictor, not a proof), or UNSETTLED after
+        :data:`MAX_STEPS` steps.
     time : float
         Duration of the contact phase, s: until the energy test or, for a coin ended upright by
-        :func:`upright_decided` (:data:`UPRIGHT_DECISION`, a compile-time constant; status
-        SETTLED_CONTACT as well), until that decision, not until it is at rest.
+        :func:`upright_decided`, until that decision, not until it is at rest.
     """
     y = np.empty(10)
     y[0] = z
@@ -1038,7 +1062,7 @@ def settle(z, v, n, lm, c):
         free, barrier = free_energy(y, c, stiffness_of(c))
         status = Status.SETTLED_CONTACT if free < barrier else Status.UNSETTLED
         return resting_face(n[2], c.edge_sine), status, 0.0
-    t, _, settled = _integrate(
+    t, _, ended = _integrate(
         y,
         math.inf,
         c,
@@ -1051,7 +1075,11 @@ def settle(z, v, n, lm, c):
         RTOL,
     )
     face = resting_face(y[6], c.edge_sine)
-    return face, (Status.SETTLED_CONTACT if settled else Status.UNSETTLED), t
+    if ended == Ending.DECIDED:
+        return face, Status.DECIDED_UPRIGHT, t
+    if ended == Ending.SETTLED:
+        return face, Status.SETTLED_CONTACT, t
+    return face, Status.UNSETTLED, t
 
 
 def advance(
@@ -1064,15 +1092,17 @@ def advance(
     max_steps: int = MAX_STEPS,
     stats: np.ndarray | None = None,
     rtol: float = RTOL,
-) -> tuple[float, int, bool]:
+) -> tuple[float, int, Ending]:
     """Advance ``state`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) in place (for tests and
-    studies): (time, steps, settled), stopping after ``duration`` s or, with ``settle_check``,
+    studies): (time, steps, ending), stopping after ``duration`` s or, with ``settle_check``,
     when the coin has settled by its energy (or, with ``decide`` too, when
     :func:`upright_decided` holds, as :func:`settle` with :data:`UPRIGHT_DECISION`), whichever
     comes first. ``decide`` is read at every call: ``decide=False`` is the run-time way to carry
     a coin on past the upright decision (:data:`UPRIGHT_DECISION` is fixed when numba
-    compiles). ``stats``, an array of shape (len(:data:`MODES`), 2), accumulates the time and
-    steps spent in each mode; with one more row filled with −1 (shape
+    compiles). ``ending`` (:class:`Ending`) is false when the coin has not settled, else
+    SETTLED (the energy test) or DECIDED (the upright decision, the case :func:`settle`
+    reports as DECIDED_UPRIGHT). ``stats``, an array of shape (len(:data:`MODES`), 2),
+    accumulates the time and steps spent in each mode; with one more row filled with −1 (shape
     (len(:data:`MODES`) + 1, 2)) it also receives the (time, steps) at which
     :func:`upright_decided` first held, decided or not (with ``settle_check``). ``rtol``: the
     step control's relative tolerance (:data:`RTOL`; another for tests of the stepper; it must
@@ -1080,9 +1110,10 @@ def advance(
     zeta = damping_of(c)
     if stats is None:
         stats = np.empty((0, 2))
-    return _integrate(
+    t, steps, ended = _integrate(
         state, duration, c, stiffness_of(c), zeta, settle_check, decide, max_steps, stats, rtol
     )
+    return t, steps, Ending(ended)
 
 
 @njit(cache=True)

@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from coinflight import _validation as v
 from coinflight.core import ballistics
-from coinflight.core.outcome import FACE_NAMES
+from coinflight.core.outcome import FACE_NAMES, STATUS_NAMES, Status
 from coinflight.model.coin import Coin
 from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, Drag, Surface
 from coinflight.model.toss import Toss
@@ -126,15 +126,11 @@ NO_RESISTANCE_DISTRIBUTIONS = ROCKING_HAS_NO_RESISTANCE
 CLI and library): the surface's own wording for a single one."""
 
 
-STATUS_NAMES = (
-    "settled",
-    "landed dead",
-    "bounce limit",
-    "unsettled",
-    "settled rocking",
-    "settled in contact",
-)
-"""Why a landing ended, by the status codes of :mod:`coinflight.core.bounce`."""
+DECIDED_UPRIGHT_TALLY = "decided_upright"
+"""The tally (:attr:`TableLanding.tallies`, the estimators' ``details``) of the tosses the
+contact ending ended on edge by its upright decision (status DECIDED_UPRIGHT,
+:class:`coinflight.core.outcome.Status`: a measured predictor, not a proof); counted in the
+edge count as well. Only with ``Surface(ending="contact")``, the one ending that decides so."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -152,12 +148,14 @@ class LandingOutcome:
     settle_time : ndarray
         Time since launch at which the landing ended, s: the last impact for the bounce and
         rocking endings; for the contact ending, the time the outcome was decided (the coin at
-        rest, its energy below its well's barrier, or a coin rolling upright in its edge band
-        decided on edge by :func:`coinflight.core.contact_phase.upright_decided`, which may
-        still roll at up to about 1 m/s then; status "settled in contact" in all three); for an
-        unsettled toss, when it was stopped.
+        rest or its energy below its well's barrier, status "settled in contact"; or a coin
+        rolling upright in its edge band decided on edge by
+        :func:`coinflight.core.contact_phase.upright_decided`, which may still roll at up to
+        about 1 m/s then, status "decided upright"); for an unsettled toss, when it was
+        stopped.
     status : ndarray of int8
-        Why the landing ended (:data:`STATUS_NAMES`).
+        Why the landing ended (:class:`coinflight.core.outcome.Status`; its names
+        :data:`~coinflight.core.outcome.STATUS_NAMES`).
     """
 
     face: NDArray[np.int8]
@@ -378,12 +376,19 @@ class Landing:
                 f"was {out.face_name.upper()}, not a resting face"
             )
         if out.status_name == "settled in contact":
-            # The contact ending's time is the decision's: at rest, below the barrier, or an
-            # upright roller decided on edge (contact_phase.upright_decided) still rolling.
+            # The contact ending's time is the decision's: at rest or below the barrier.
             return (
                 f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
-                f"{out.face_name.upper()} (decided at t = {settle:.4f} s: at rest, below its "
-                f"well's barrier, or rolling upright in its edge band; {out.status_name})"
+                f"{out.face_name.upper()} (decided at t = {settle:.4f} s: at rest or below its "
+                f"well's barrier; {out.status_name})"
+            )
+        if out.status_name == "decided upright":
+            # An upright roller ended on edge by contact_phase.upright_decided, still rolling.
+            return (
+                f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
+                f"{out.face_name.upper()} (decided at t = {settle:.4f} s while rolling upright "
+                "in its edge band, by the upright decision: a measured predictor of ending on "
+                f"edge, not a proof; {out.status_name})"
             )
         return (
             f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
@@ -395,13 +400,22 @@ class TableLanding(OutcomeModel):
     """Outcome model for the probability estimators: the tosses land on ``surface``.
 
     Plugs into :func:`coinflight.probability.estimate` (``model=TableLanding(surface)``);
-    counts (tails, heads, edge) and, as an extra tally, the tosses that had not settled when the
-    simulation stopped (counted by the face they showed then).
+    counts (tails, heads, edge) and, as extra tallies, the tosses that had not settled when the
+    simulation stopped (counted by the face they showed then) and, with the contact ending, the
+    tosses it ended on edge by its upright decision (:data:`DECIDED_UPRIGHT_TALLY`, counted as
+    edge too).
     """
 
     name = "table landing"
     can_end_on_edge = True
-    tallies = ("unsettled",)
+
+    @property
+    def tallies(self) -> tuple[str, ...]:  # type: ignore[override]
+        """``("unsettled",)``, and ``"decided_upright"`` (:data:`DECIDED_UPRIGHT_TALLY`) with the
+        contact ending: the estimators report each in ``details`` (count and fraction)."""
+        if self.surface.ending == "contact":
+            return ("unsettled", DECIDED_UPRIGHT_TALLY)
+        return ("unsettled",)
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
@@ -482,7 +496,8 @@ class TableLanding(OutcomeModel):
         return out.face.reshape(shape)
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n)."""
+        """(tails, heads, edge, unsettled[, decided upright]) counts for unit-cube points
+        ``u``, (len(ranged), n): :attr:`tallies`."""
         omega, t = initial_conditions(dist, u)
         out = land(
             dist.coin,
@@ -497,8 +512,10 @@ class TableLanding(OutcomeModel):
             contact=dist.contact_values(u) if dist.contact else None,
         )
         faces = np.bincount(out.face, minlength=3).astype(np.int64)
-        unsettled = np.count_nonzero(out.status == STATUS_NAMES.index("unsettled"))
-        return np.append(faces, unsettled)
+        tallies = [np.count_nonzero(out.status == Status.UNSETTLED)]
+        if self.surface.ending == "contact":
+            tallies.append(np.count_nonzero(out.status == Status.DECIDED_UPRIGHT))
+        return np.append(faces, tallies)
 
     def describe(self) -> str:
         return self.describe_for(None)
@@ -572,6 +589,7 @@ __all__ = [
     "CONTACT_AIR_LANDINGS_PER_SECOND",
     "CONTACT_PER_TOSS_PER_SECOND",
     "CONTACT_TOSSES_PER_SECOND",
+    "DECIDED_UPRIGHT_TALLY",
     "MAX_BOUNCES",
     "NO_RESISTANCE_DISTRIBUTIONS",
     "PER_TOSS",

@@ -207,6 +207,22 @@ def result_warnings(result: Any) -> list[str]:
     ]
 
 
+def result_notes(result: Any) -> list[str]:
+    """What the text output says beside the result: the tosses the contact ending ended on
+    edge by its upright decision (``details["decided_upright"]``, status "decided upright"),
+    when there are any; the JSON carries the count and fraction in ``details``."""
+    decided = int(result.details.get("decided_upright", 0))
+    if not decided:
+        return []
+    n = sum(result.counts) if result.counts is not None else result.samples
+    return [
+        f"decided upright: {decided:,} of {n:,} tosses "
+        f"({100 * result.details['decided_upright_fraction']:.3g} %) were ended on edge by the "
+        "contact ending's upright decision while still rolling (status 'decided upright', a "
+        "measured predictor of ending on edge, not a proof); they are counted in P(edge)"
+    ]
+
+
 _DRAG_DEFAULT_SECONDS = 60.0
 """With air or the contact ending, the default size must run within this many seconds, else
 --n must be given."""
@@ -256,6 +272,7 @@ __all__ = [
     "preset_tosses",
     "probability_payload",
     "probability_query",
+    "result_notes",
     "result_warnings",
     "run",
 ]
