@@ -458,6 +458,76 @@ def test_toss_json_reports_the_contact_ending_and_equals_the_library():
     assert out["status"] in ("settled in contact", "settled")
 
 
+def test_toss_json_says_decided_upright_where_the_decision_ended_the_landing():
+    """A toss the contact ending ends on edge by its upright decision (found by a scan of ωx
+    and T): --json's status is "decided upright", the text says it was a prediction; the same
+    toss on the rocking ending has no such status."""
+    toss = ["toss", "--omega", "220", "5", "3", "--flight-time", "0.48", "--coin", "us-nickel"]
+    table = ["--surface", "table", "--drop-height", "0.5", "--restitution", "0.3"]
+    resist = ["--rolling-resistance", "1e-4", "--pivoting-resistance", "1e-4"]
+    out = _json(*toss, *table, "--ending", "contact", *resist)
+    assert (out["outcome"], out["status"]) == ("edge", "decided upright")
+    result = runner.invoke(app, [*toss, *table, "--ending", "contact", *resist])
+    assert result.exit_code == 0, result.output
+    assert "by the upright decision: a measured predictor" in result.stdout
+    assert _json(*toss, *table)["status"] != "decided upright"
+
+
+def _probability(*extra: str) -> list[str]:
+    return [
+        "probability", "--coin", "us-nickel", "--omega-x", "150:300", "--omega-y", "-30:30",
+        "--omega-z", "-30:30", "--flight-time", "0.4:0.6", "--surface", "table",
+        "--friction", "0.6", "--method", "monte-carlo", "--n", "120", "--seed", "3", *extra,
+    ]  # fmt: skip
+
+
+def test_probability_reports_the_decided_upright_tosses_apart():
+    """The contact ending's estimate counts the tosses its upright decision ended
+    (details.decided_upright and its fraction, --json; one line of text), within the edges;
+    the same count as the landings' statuses; the rocking ending adds no key."""
+    out = _json(*_probability("--ending", "contact"))
+    details = out["details"]
+    decided = details["decided_upright"]
+    assert 0 < decided <= out["counts"]["edge"]
+    assert details["decided_upright_fraction"] == decided / 120
+    assert "unsettled" in details
+    result = runner.invoke(app, _probability("--ending", "contact"))
+    assert result.exit_code == 0, result.output
+    assert f"decided upright: {decided:,} of 120 tosses" in result.stdout
+    rocking = _json(*_probability())
+    assert "decided_upright" not in rocking["details"]
+    assert "decided upright" not in runner.invoke(app, _probability()).stdout
+
+
+
+def test_the_decided_upright_tally_counts_the_status():
+    """TableLanding.count's tallies (unsettled, decided upright) are the counts of those
+    statuses among the same tosses landed directly; only the contact ending has the second."""
+    from coinflight.core.outcome import Status
+    from coinflight.outcomes.base import initial_conditions
+
+    nickel = Coin.preset("us-nickel")
+    dist = TossDistribution(
+        coin=nickel,
+        omega_x=Uniform(150.0, 300.0),
+        omega_y=Uniform(-30.0, 30.0),
+        omega_z=Uniform(-30.0, 30.0),
+        flight_time=Uniform(0.4, 0.6),
+    )
+    u = np.random.default_rng(8).random((len(dist.ranged), 80))
+    surface = Surface("table", 0.8, 0.5, 0.6, ending="contact")
+    model = TableLanding(surface)
+    assert model.tallies == ("unsettled", "decided_upright")
+    counts = model.count(dist, u)
+    omega, t = initial_conditions(dist, u)
+    out = land(nickel, omega, 0.5 * dist.g * t, dist.start_sign, dist.g, surface)
+    expected = [*np.bincount(out.face, minlength=3), np.sum(out.status == Status.UNSETTLED)]
+    expected.append(np.sum(out.status == Status.DECIDED_UPRIGHT))
+    assert counts.tolist() == expected and expected[-1] > 0
+    rocking = TableLanding(Surface("table", 0.8, 0.5, 0.6))
+    assert rocking.tallies == ("unsettled",) and len(rocking.count(dist, u)) == 4
+
+
 def test_the_default_json_is_unchanged():
     """The rocking ending and sharp corners add no key to a table toss's JSON."""
     out = _json(*TOSS, *TABLE)

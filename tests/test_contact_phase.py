@@ -735,6 +735,57 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     assert steps_rest > steps_on and t_rest > t_on
 
 
+def test_decided_upright_is_the_status_exactly_where_the_decision_ended_the_phase():
+    # Seeded vigorous tosses (μ 0.6, where a quarter of the handed coins end upright): a
+    # landing's status is DECIDED_UPRIGHT exactly where the phase's probe row says
+    # upright_decided first held (the handed state rebuilt by bounce_loop and carried on with
+    # the decision, advance(decide=True)), all of them on edge, and every other handed coin
+    # SETTLED_CONTACT. Carried on to rest without the decision (decide=False), a decided coin
+    # settles by its energy (Ending.SETTLED: never DECIDED without decide), on edge, at a later
+    # time; its face and the landing's other fields are those of the decided run.
+    from coinflight.core import bounce
+    from coinflight.outcomes.table import contact_record
+
+    surface = Surface("table", 0.8, 0.5, 0.6, ending="contact")
+    n = 60
+    rng = np.random.default_rng(11)
+    omega = np.column_stack(
+        [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
+    )
+    v0 = rng.uniform(1.5, 3.0, n)
+    out = land(NICKEL, omega, v0, 1.0, G, surface)
+    c = contact_record(NICKEL, surface, G)
+    fired = np.zeros(n, dtype=bool)
+    handed = np.zeros(n, dtype=bool)
+    for k in range(n):
+        *_, status, z, v, nn, lm = bounce.bounce_loop(
+            tuple(omega[k]), 1.0, v0[k], c, bounce.MAX_IMPACTS
+        )
+        if status != bounce.DIED_OUT:
+            assert out.status[k] == status
+            continue
+        handed[k] = True
+        y = np.array([z, *v, *nn, *lm])
+        stats = np.zeros((len(cp.MODES) + 1, 2))
+        stats[-1] = -1.0
+        on = y.copy()
+        t_on, steps_on, ending = cp.advance(
+            on, math.inf, c, settle_check=True, decide=True, stats=stats
+        )
+        fired[k] = stats[-1, 1] >= 0.0
+        assert (ending is cp.Ending.DECIDED) == fired[k]
+        if fired[k]:
+            assert tuple(stats[-1]) == (t_on, steps_on)
+            _, _, carried = cp.advance(y, math.inf, c, settle_check=True, decide=False)
+            assert carried is cp.Ending.SETTLED
+            assert abs(y[6]) < c.edge_sine
+    decided = out.status == Status.DECIDED_UPRIGHT
+    np.testing.assert_array_equal(decided, fired)
+    assert 5 <= decided.sum() < handed.sum()  # both kinds occur (measured: 16 of 43 handed)
+    assert np.all(out.face[decided] == EDGE)
+    assert np.all(out.status[handed & ~decided] == Status.SETTLED_CONTACT)
+
+
 def test_contact_ending_describe_says_its_time_is_the_decisions():
     # The contact ending's settle_time is when the outcome was decided (at rest or below the
     # barrier: "settled in contact"; an upright roller decided on edge, possibly still rolling:

@@ -73,6 +73,31 @@ def test_numba_compiles_members_as_their_integers():
     assert _well(0.05, 0.1) is Face.EDGE  # a member comes back to Python as the member
 
 
+@numba.njit(cache=False)
+def _ending(decided: bool, settled: bool) -> Status:
+    # As contact_phase.settle picks its status (a member returned from every branch).
+    if decided:
+        return Status.DECIDED_UPRIGHT
+    if settled:
+        return Status.SETTLED_CONTACT
+    return Status.UNSETTLED
+
+
+def test_numba_compiles_the_decided_upright_member():
+    # Code 6 compiles like the others: returned as the member, stored as its integer.
+    assert _ending(True, True) is Status.DECIDED_UPRIGHT
+    assert _ending(False, True) is Status.SETTLED_CONTACT
+    assert _ending(False, False) is Status.UNSETTLED
+    status = np.empty(1, dtype=np.int8)
+    _store(status)
+    assert status.tolist() == [6] and Status(int(status[0])).label == "decided upright"
+
+
+@numba.njit(cache=False)
+def _store(status: np.ndarray) -> None:
+    status[0] = _ending(True, False)
+
+
 def test_never_turns_over_is_the_sign_of_the_alignment():
     # n(t)·n0 = cos²ψ + sin²ψ cos(ωp t) (DHM 2007): negative somewhere in a turn iff cot²ψ < 1.
     rng = np.random.default_rng(9)
