@@ -499,7 +499,6 @@ def test_probability_reports_the_decided_upright_tosses_apart():
     assert "decided upright" not in runner.invoke(app, _probability()).stdout
 
 
-
 def test_the_decided_upright_tally_counts_the_status():
     """TableLanding.count's tallies (unsettled, decided upright) are the counts of those
     statuses among the same tosses landed directly; only the contact ending has the second."""

@@ -9,13 +9,14 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
-from coinflight.core.outcome import EDGE
+from coinflight.core.outcome import EDGE, Status
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 
@@ -25,6 +26,18 @@ if TYPE_CHECKING:
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
+
+
+@dataclass(frozen=True)
+class EdgeEstimate(BinomialEstimate):
+    """The tosses on edge of one ratio (:func:`simulate_edge`): a
+    :class:`~coinflight.probability.result.BinomialEstimate` whose ``decided_upright`` counts
+    the edges the experimental contact ending ended by its upright decision (status
+    DECIDED_UPRIGHT, :class:`coinflight.core.outcome.Status`: a measured predictor of ending on
+    edge, not a proof; the coin may still be rolling); 0 with the rocking ending, which has no
+    such decision."""
+
+    decided_upright: int = 0
 
 
 def edge_probability(ratio: ArrayLike, model: EdgeModel = "dynamic") -> NDArray[np.float64]:
@@ -125,7 +138,7 @@ def simulate_edge(
     axial_spin: Distribution | None = None,
     executor: Any = None,
     progress: Callable[[int], None] | None = None,
-) -> list[tuple[float, BinomialEstimate]]:
+) -> list[tuple[float, EdgeEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
     Each ratio gets ``n`` tosses of a coin of diameter :data:`SIM_DIAMETER` and thickness
@@ -134,7 +147,9 @@ def simulate_edge(
     table :data:`SIM_DROP` m below: the setting of Yong & Mahadevan's dynamic model, which the
     points should follow.
 
-    Returns (ratio, estimate) pairs, the estimate counting the tosses on edge. Ratio i draws
+    Returns (ratio, estimate) pairs, the estimate (:class:`EdgeEstimate`) counting the tosses
+    on edge and, with the contact ending, those of them its upright decision ended
+    (``decided_upright``). Ratio i draws
     from child i of the seed's ``SeedSequence`` through
     :func:`coinflight.probability.streams.unit_cube` (spin and launch speed each from its own
     stream), so the points are independent, a run of n tosses is the first n of a longer run,
@@ -231,8 +246,9 @@ def simulate_edge(
     per_ratio = len(tasks) // len(coins)
     out = []
     for i, ratio in enumerate(x):
-        edges = sum(counts[i * per_ratio : (i + 1) * per_ratio])
-        out.append((float(ratio), BinomialEstimate(edges, n, streams.reported_seed(root))))
+        edges, decided = (int(k) for k in sum(counts[i * per_ratio : (i + 1) * per_ratio]))
+        estimate = EdgeEstimate(edges, n, streams.reported_seed(root), decided)
+        out.append((float(ratio), estimate))
     return out
 
 
@@ -289,12 +305,13 @@ def _corner_radius(value: object, thinnest: float, diameter: float = SIM_DIAMETE
         raise ValueError(f"{exc} of the thinnest coin (h/d = {thinnest:g}, h = {h:g} m)") from None
 
 
-def _edge_task(args: tuple[Any, ...]) -> int:
-    """Tosses on edge among blocks ``first`` to ``last`` of one ratio's stream."""
+def _edge_task(args: tuple[Any, ...]) -> NDArray[np.int64]:
+    """(tosses on edge, of them decided upright) among blocks ``first`` to ``last`` of one
+    ratio's stream."""
     from coinflight.outcomes.table import land
 
     coin, stream, n, first, last, wx, v0, wz, g, surface, parallel = args
-    edges = 0
+    counts = np.zeros(2, dtype=np.int64)
     # Row r of each block comes from its own generator (streams.block_generators): a third
     # row for ωz leaves the rows of ωx and v0 as they are.
     k = 2 if wz is None else 3
@@ -304,9 +321,10 @@ def _edge_task(args: tuple[Any, ...]) -> int:
         if wz is not None:
             omega[:, 2] = wz.ppf(u[2])
         speed = v0.ppf(u[1])
-        face = land(coin, omega, speed, 1.0, g, surface, parallel=parallel).face
-        edges += int(np.sum(face == EDGE))
-    return edges
+        out = land(coin, omega, speed, 1.0, g, surface, parallel=parallel)
+        counts[0] += int(np.sum(out.face == EDGE))
+        counts[1] += int(np.sum(out.status == Status.DECIDED_UPRIGHT))
+    return counts
 
 
 def edge_table(
@@ -326,7 +344,9 @@ def edge_table(
     keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
     rolling and pivoting resistance, corner radius, diameter, axial spin) and, for rounded
     coins, ``corner_radius`` (m; left out for sharp corners, so that every other row is as it
-    was). Ratios
+    was) and, with the contact ending (``ending="contact"``), ``decided_upright`` and
+    ``decided_upright_fraction``: the edges its upright decision ended (status "decided
+    upright", a measured predictor, not a proof), counted and as a share of ``n``. Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
     ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
@@ -357,11 +377,16 @@ def edge_table(
             }
             if setting.get("corner_radius"):
                 row["simulated"]["corner_radius"] = float(setting["corner_radius"])
+            if setting.get("ending") == "contact":
+                decided = s.decided_upright
+                row["simulated"]["decided_upright"] = decided
+                row["simulated"]["decided_upright_fraction"] = decided / s.n
     return rows
 
 
 __all__ = [
     "MODELS",
+    "EdgeEstimate",
     "check_diameter",
     "check_ratios",
     "edge_probability",
