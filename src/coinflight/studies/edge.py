@@ -246,7 +246,8 @@ def simulate_edge(
     per_ratio = len(tasks) // len(coins)
     out = []
     for i, ratio in enumerate(x):
-        edges, decided = (int(k) for k in sum(counts[i * per_ratio : (i + 1) * per_ratio]))
+        part = np.asarray(counts[i * per_ratio : (i + 1) * per_ratio]).sum(axis=0)
+        edges, decided = int(part[0]), int(part[1])
         estimate = EdgeEstimate(edges, n, streams.reported_seed(root), decided)
         out.append((float(ratio), estimate))
     return out
