@@ -276,6 +276,8 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
     out = land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted)
     np.testing.assert_array_equal(out.face, c.contact.rest)
     assert c.contact.at_impact == np.count_nonzero(out.status == Status.SETTLED_ENERGY)
+    assert c.contact.decided_upright == np.count_nonzero(out.status == Status.DECIDED_UPRIGHT)
+    assert c.rocking.decided_upright == 0
     # MuJoCo's restitution is reported at the probe speeds and at the landing speed.
     by_speed = dict(c.settings["flat_drop_restitution_by_speed"])
     assert set(mujoco_compare.PROBE_SPEEDS) < set(by_speed) and len(by_speed) == 4
@@ -318,8 +320,13 @@ def test_the_report_compares_both_endings_with_mujoco(written):
     np.testing.assert_allclose(contact["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
     assert contact["speed_ratio"] == c.mujoco_seconds / c.contact.seconds
     assert contact["ended_at_impact"] == c.contact.at_impact
+    assert contact["decided_upright"] == c.contact.decided_upright
+    assert rocking["decided_upright"] == 0
     md = (out / "report.md").read_text()
     assert "coinflight, 3-D contact ending, at rest" in md
+    assert "decided upright (predicted on edge)" in md
+    share = c.contact.decided_upright / c.n
+    assert f"{c.contact.decided_upright:,} ({share:.1%})" in md
     assert f"{c.agreement(c.contact):.1%}" in md
 
 
@@ -335,5 +342,7 @@ def test_the_report_shows_the_edge_check_in_both_engines(written):
     assert written_cell["mujoco_rest"][0] == cell.fractions(cell.mujoco.rest)[0].tolist()
     assert sum(written_cell["edges_both_coinflight_only_mujoco_only"]) <= cell.n
     assert written_cell["mujoco_moving"] == int(cell.mujoco.moving.sum())
+    assert written_cell["coinflight_decided_upright"] == cell.coinflight.decided_upright
     md = (out / "report.md").read_text()
+    assert f"of coinflight's edges {cell.coinflight.decided_upright:,} decided upright" in md
     assert "## Edges in both engines" in md and "MuJoCo, settled only" in md

@@ -202,6 +202,7 @@ def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str
         "rest_agreement": c.agreement(run),
         "unsettled": run.unsettled,
         "ended_at_impact": run.at_impact,
+        "decided_upright": run.decided_upright,
         "seconds": run.seconds,
         "speed_ratio": c.ratio(run),
         "rolling_resistance": run.rolling_resistance if run.ending == "contact" else None,
@@ -266,6 +267,7 @@ def _edge_numbers(check: study.EdgeCheck) -> dict[str, Any]:
                 "mujoco_moving": r.unsettled,
                 "mujoco_moving_on_edge": int(np.count_nonzero(r.moving & (r.rest == 2))),
                 "coinflight_unsettled": cell.coinflight.unsettled,
+                "coinflight_decided_upright": cell.coinflight.decided_upright,
                 "edges_both_coinflight_only_mujoco_only": [both, ours, theirs],
                 "first_agreement": cell.first_agreement,
                 "rest_agreement": cell.rest_agreement,
@@ -698,6 +700,9 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
             label[run.ending],
             f"{c.agreement(run):.1%}",
             f"{run.unsettled:,}",
+            f"{run.decided_upright:,} ({run.decided_upright / c.n:.1%})"
+            if run.ending == "contact"
+            else "-",
             ", ".join(f"{z:+.1f}" for z in _z_against_mujoco(c, run.rest)),
             f"{c.n / run.seconds:,.0f}",
             f"{c.ratio(run):,.0f}",
@@ -773,6 +778,7 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "coinflight ending",
                 "same face at rest as MuJoCo",
                 "unsettled",
+                "decided upright (predicted on edge)",
                 "at rest − MuJoCo, in s.e. (tails, heads, edge)",
                 "tosses/s",
                 "speed ratio to MuJoCo",
@@ -855,7 +861,10 @@ def _edges_section(check: study.EdgeCheck) -> tuple[Block, ...]:
         up = r.edge_time
         bullets.append(
             f"{tag}: on edge at the end in both engines {both}, in coinflight only {ours}, in "
-            f"MuJoCo only {theirs}; same well at the first contact {cell.first_agreement:.1%}, "
+            f"MuJoCo only {theirs}; of coinflight's edges "
+            f"{cell.coinflight.decided_upright:,} decided upright (ended while still rolling by "
+            "its upright decision, a measured predictor, not carried to rest); same well at "
+            f"the first contact {cell.first_agreement:.1%}, "
             f"same face at the end {cell.rest_agreement:.1%}. MuJoCo: {r.unsettled:,} tosses "
             f"still moving {r.limit:g} s after their first contact ({moving_edge:,} on edge); "
             f"{int(np.count_nonzero(up > 1.0)):,} spent more than 1 s upright on the rim, "

@@ -402,6 +402,10 @@ class EndingRun:
     """Tosses ended at an impact by the energy test (status SETTLED_ENERGY), before the
     ending proper starts: with the contact ending, rigorously (the whole energy below the
     barrier of the coin's well)."""
+    decided_upright: int = 0
+    """Tosses the contact ending ended on edge by its upright decision (status DECIDED_UPRIGHT:
+    a measured predictor, not a proof; the coin may still be rolling); 0 with the rocking
+    ending."""
 
 
 @dataclass(frozen=True)
@@ -771,6 +775,12 @@ def _at_impact(status: NDArray[np.int8]) -> int:
     return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
 
 
+def _decided_upright(status: NDArray[np.int8]) -> int:
+    from coinflight.core.outcome import Status
+
+    return int(np.count_nonzero(status == Status.DECIDED_UPRIGHT))
+
+
 def _ending_run(
     dist: TossDistribution,
     omega: NDArray[np.float64],
@@ -795,6 +805,7 @@ def _ending_run(
         surface.rolling_resistance if contact else 0.0,
         surface.pivoting_resistance if contact else 0.0,
         _at_impact(out.status),
+        _decided_upright(out.status),
     )
     return run, first, out.status
 
