@@ -1,0 +1,150 @@
+"""How the contact phase restitutes a coin dropped on its rim: on both rims (upright), on one
+rim (tilted) and flat on its face, against the surface's e.
+
+    python benchmarks/bench_two_rims.py [--restitution E,E,...] [--heights H,H,...]
+        [--contact-time T,T,...] [--corner A]
+
+A US nickel (sharp corners unless ``--corner``), frictionless and with no resistances (so
+that nothing but the normal law acts: an upright or flat drop has no tangential motion
+anyway), at rest in the air, its lowest point just touching the table, falling at
+v = sqrt(2 g H) for each drop height H (default 1 mm, 1 cm, 10 cm, 50 cm) and each e (default
+0.2, 0.35, 0.5, 0.65, 0.8), with gravity. The contact phase
+(:func:`coinflight.core.contact_phase.advance`) carries it in steps of t_c/100 until the
+table's force on it, m (a_z + g), falls to zero after it has pushed: the contact's end. The
+rebound is then the lowest point's upward normal velocity over its approach speed (for the
+upright and flat coin, the centre's), the kinematic restitution, which for a frictionless
+impact equals Stronge's energetic e. Printed per case: the rebound ratio for each H and e,
+and the contact's duration.
+
+The upright coin is also compared with what the damper sizing predicts: each rim's damper is
+γ = ζ sqrt(K_t m_eff) with m_eff = 1/K_zz, the effective mass of that rim's contact point alone
+(1/m + (h/2)²/I1 upright: nearly the whole coin), ζ solved for e on one contact
+(:func:`coinflight.core.contact_phase.damping_ratio`); two rims pressed together then form one
+contact of stiffness 2 K_t on the mass m, damped by 2 γ: a damping ratio
+ζ sqrt(2 m_eff / m), not ζ, whose restitution is
+:func:`coinflight.core.contact_phase.restitution_of` (ζ sqrt(2 m_eff/m), 3/2), printed as
+"predicted".
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+from coinflight import Coin
+from coinflight.core import contact_phase as cp
+from coinflight.core import impact as im
+from coinflight.model.surface import Surface
+from coinflight.outcomes.table import contact_record
+
+G = 9.81
+HEIGHTS = (1e-3, 1e-2, 0.1, 0.5)
+RESTITUTIONS = (0.2, 0.35, 0.5, 0.65, 0.8)
+TILTS = {"upright, both rims": 0.5 * math.pi, "one rim, tilted 45°": 0.25 * math.pi, "flat": 0.0}
+"""The drops: the angle of the heads normal from the vertical."""
+
+
+def record(restitution: float, contact_time: float = cp.CONTACT_TIME, corner: float = 0.0):  # type: ignore[no-untyped-def]
+    """The contact record of a frictionless, unresisted nickel on a table with this e."""
+    coin = Coin.preset("us-nickel")
+    if corner:
+        coin = coin.with_corner_radius(corner)
+    surface = Surface(
+        "table",
+        0.8,
+        restitution,
+        0.0,
+        rolling_resistance=0.0,
+        pivoting_resistance=0.0,
+        contact_time=contact_time,
+        ending="contact",
+    )
+    return contact_record(coin, surface, G)
+
+
+def drop(c, tilt: float, speed: float) -> tuple[float, float]:  # type: ignore[no-untyped-def]
+    """(rebound ratio, contact duration in s) of a coin with its normal ``tilt`` rad from the
+    vertical, not turning, its lowest point touching the table at ``speed`` m/s downwards.
+
+    Followed in steps of t_c/100 until the table's force falls to zero after it has pushed;
+    NaN if it has not released after 100 t_c."""
+    n = (math.sin(tilt), 0.0, math.cos(tilt))
+    z = im.lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
+    y = np.array([z, 0.0, 0.0, -speed, *n, 0.0, 0.0, 0.0])
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    deriv = np.empty(10)
+    dt = c.contact_time / 100.0
+    touched = False
+    for k in range(10_000):
+        cp.advance(y, dt, c)
+        cp._derivative(y, deriv, c, stiff, zeta)
+        if c.mass * (deriv[3] + c.g) > 0.0:
+            touched = True
+        elif touched:
+            nn = (y[4], y[5], y[6])
+            w = im.angular_velocity((y[7], y[8], y[9]), nn, c.i1, c.i3)
+            rc = im.contact_point(nn, c.radius, c.half_thickness, c.corner_radius)
+            up = y[3] + im.cross(w, rc)[2]
+            return up / speed, (k + 1) * dt
+    return math.nan, math.nan
+
+
+def predicted_upright(c) -> float:  # type: ignore[no-untyped-def]
+    """The upright coin's restitution predicted by the damper sizing (module notes)."""
+    hb = c.half_thickness - c.corner_radius
+    m_eff = 1.0 / (1.0 / c.mass + hb * hb / c.i1)
+    zeta = cp.damping_of(c) * math.sqrt(2.0 * m_eff / c.mass)
+    return cp.restitution_of(zeta, 1.5)
+
+
+def table(
+    restitutions: tuple[float, ...], heights: tuple[float, ...], contact_time: float, corner: float
+) -> dict[str, np.ndarray]:
+    """The rebound ratios, case → array (len(restitutions), len(heights)), and durations."""
+    out: dict[str, np.ndarray] = {}
+    for name, tilt in TILTS.items():
+        ratio = np.empty((len(restitutions), len(heights)))
+        duration = np.empty_like(ratio)
+        for i, e in enumerate(restitutions):
+            c = record(e, contact_time, corner)
+            for j, h in enumerate(heights):
+                ratio[i, j], duration[i, j] = drop(c, tilt, math.sqrt(2.0 * G * h))
+        out[name] = ratio
+        out[name + " duration"] = duration
+    return out
+
+
+def _floats(text: str) -> tuple[float, ...]:
+    return tuple(float(x) for x in text.split(","))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--restitution", type=_floats, default=RESTITUTIONS)
+    parser.add_argument("--heights", type=_floats, default=HEIGHTS)
+    parser.add_argument("--contact-time", type=_floats, default=(cp.CONTACT_TIME,))
+    parser.add_argument("--corner", type=float, default=0.0)
+    args = parser.parse_args()
+    heights = ", ".join(f"{h:g}" for h in args.heights)
+    for tc in args.contact_time:
+        print(
+            f"US nickel, corner radius {args.corner:g} m, frictionless, t_c {tc:g} s; rebound "
+            f"ratio at drop heights {heights} m (and contact durations, ms)"
+        )
+        rows = table(args.restitution, args.heights, tc, args.corner)
+        for name in TILTS:
+            print(f"  {name}:")
+            for i, e in enumerate(args.restitution):
+                ratios = "  ".join(f"{x:.3f}" for x in rows[name][i])
+                ms = "  ".join(f"{1e3 * x:.2f}" for x in rows[name + " duration"][i])
+                extra = ""
+                if name.startswith("upright"):
+                    c = record(e, tc, args.corner)
+                    extra = f"; predicted {predicted_upright(c):.3f}"
+                print(f"    e {e:g}: {ratios}  ({ms} ms){extra}")
+
+
+if __name__ == "__main__":
+    main()
