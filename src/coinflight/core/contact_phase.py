@@ -279,10 +279,11 @@ contact-ending number quoted (its edge rates, the decision's measured 0 disagree
 comparisons with MuJoCo) would need re-measuring. An indication, from a scratch copy not kept
 (both rims' dampers scaled by 1/√2 when both press, which corrects the bounce, 0.504 at
 e 0.5, but not the rocking mode; the tosses of ``bench_bounce.py``, seed 11, 600 each): the
-faces of 22, 23, 17 and 27 of the 408, 416, 402 and 408 handed tosses changed (e 0.5 with μ 0.3;
-μ 0.6; each toss's own e, μ; resistances 1e-5 m), 3-7 % of them against the 0-0.3 % a one-ulp
-change of the input flips (above), while the edges went 51 → 52, 164 → 160, 79 → 78 and 42 → 44 (within their
-binomial spread) and the decided ones 48 → 50, 162 → 159, 76 → 73, 41 → 44.
+faces of 22, 23, 17 and 27 of the 408, 416, 402 and 408 handed tosses changed (e 0.5 with
+μ 0.3; μ 0.6; each toss's own e, μ; resistances 1e-5 m), 3-7 % of them against the 0-0.3 % a
+one-ulp change of the input flips (above), while the edges went 51 → 52, 164 → 160, 79 → 78
+and 42 → 44 (within their binomial spread) and the decided ones 48 → 50, 162 → 159, 76 → 73,
+41 → 44.
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
