@@ -121,7 +121,10 @@ def main() -> None:
         f"per parameter), {args.contact:,} contact-ending tosses per cell (corners and centre); "
         f"seed {result.seed}; {wall:.0f} s wall; load {load:.1f} → {os.getloadavg()[0]:.1f}"
     )
-    widths = [max(len(str(r[i])) for r in [result.HEADER, *result.table()]) for i in range(9)]
+    widths = [
+        max(len(str(r[i])) for r in [result.HEADER, *result.table()])
+        for i in range(len(result.HEADER))
+    ]
     for row in [result.HEADER, *result.table()]:
         print(" | ".join(str(x).ljust(w) for x, w in zip(row, widths, strict=True)))
     for c in result.comparisons:
@@ -150,6 +153,11 @@ def main() -> None:
         ):
             print(f"  {name}: P(edge) {est.p:.3f} ± {est.stderr:.3f}")
         print(
+            f"  coinflight contact: {check.contact_decided_upright} of its "
+            f"{check.contact.successes} edges decided upright (ended still rolling by the "
+            "upright decision, a measured predictor, not carried to rest)"
+        )
+        print(
             f"  MuJoCo still moving at its limit: {check.mujoco_moving}; "
             f"{check.mujoco_seconds:.0f} s"
         )
@@ -177,9 +185,11 @@ def wobble(args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
         for r in rows:
             if r.label == x.label:
                 cell = ", ".join(f"{k} {val:g}" for k, val in r.parameters.items())
+                decided = getattr(r.estimate, "decided_upright", 0)
                 print(
                     f"  ψ {r.psi!s:>6} {r.ending:8} {cell}: "
                     f"{r.estimate.p:.4f} ± {r.estimate.stderr:.4f} (n {r.estimate.n:,})"
+                    + (f", {decided:,} decided upright" if r.ending == "contact" else "")
                 )
     if args.json:
         out = [
@@ -193,6 +203,9 @@ def wobble(args: argparse.Namespace, parser: argparse.ArgumentParser) -> None:
                 "stderr": r.estimate.stderr,
                 "n": r.estimate.n,
                 "seed": r.estimate.seed,
+                "decided_upright": getattr(r.estimate, "decided_upright", 0)
+                if r.ending == "contact"
+                else None,
             }
             for r in rows
         ]

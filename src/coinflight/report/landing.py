@@ -974,7 +974,10 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. The band's ends "
             "are its extreme cells, so their noise widens it (the highest of tens of noisy "
             "cells lies a few s.e. above their mean): read it at the full report's sizes, "
-            "not --quick's. No parameter was tuned to the data."
+            "not --quick's. No parameter was tuned to the data. 'Decided upright of edges' "
+            "counts, in the contact band's lowest, highest and centre cells, the edges its "
+            "upright decision ended while the cylinder still rolled (a measured predictor of "
+            "ending on edge, not carried to rest; every cell's count is in numbers.json)."
         ),
         Table(x.HEADER, tuple(x.table())),
         Bullets(tuple(findings)),

@@ -313,6 +313,13 @@ class Cell:
     def n(self) -> int:
         return self.estimate.n
 
+    @property
+    def decided_upright(self) -> int:
+        """Of the edges, those the contact ending's upright decision ended (status "decided
+        upright": a measured predictor of ending on edge, not carried to rest;
+        :class:`coinflight.studies.edge.EdgeEstimate`); 0 for an estimate without the count."""
+        return int(getattr(self.estimate, "decided_upright", 0))
+
 
 @dataclass(frozen=True)
 class Band:
@@ -388,6 +395,7 @@ class EdgeExperiments:
         "model band: low – high (± s.e.)",
         "centre ± s.e.",
         "cells × n",
+        "decided upright of edges (low, high, centre)",
         "measured vs band",
         "gap",
     )
@@ -413,6 +421,12 @@ class EdgeExperiments:
                         f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
                         f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
                         f"{len(b.cells)} × {b.centre.n:,}",
+                        ", ".join(
+                            f"{cell.decided_upright:,}/{cell.estimate.successes:,}"
+                            for cell in (b.low, b.high, b.centre)
+                        )
+                        if b.ending == "contact"
+                        else "-",
                         b.verdict(obs),
                         f"{b.gap(obs):+.3f}",
                     )
@@ -423,6 +437,7 @@ class EdgeExperiments:
         """JSON-ready: every cell of every band, the measured fractions and the verdicts."""
 
         def band(b: Band, obs: BinomialEstimate) -> dict[str, Any]:
+            contact = b.ending == "contact"  # only it has the upright decision
             return {
                 "ending": b.ending,
                 "low": b.low.p,
@@ -432,7 +447,13 @@ class EdgeExperiments:
                 "verdict": b.verdict(obs),
                 "gap": b.gap(obs),
                 "cells": [
-                    {**dict(c.parameters), "p_edge": c.p, "stderr": c.stderr, "n": c.n}
+                    {
+                        **dict(c.parameters),
+                        "p_edge": c.p,
+                        "stderr": c.stderr,
+                        "n": c.n,
+                        "decided_upright": c.decided_upright if contact else None,
+                    }
                     for c in b.cells
                 ],
             }
@@ -843,7 +864,9 @@ def wobble_sweep(
 class EngineCheck:
     """The same ``n`` tosses of one setting at one point of the box in coinflight (both
     endings) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
-    MuJoCo's tosses still moving at its limit, and the point (``parameters``)."""
+    MuJoCo's tosses still moving at its limit, the point (``parameters``) and, of the contact
+    ending's edges, those its upright decision ended (``contact_decided_upright``: status
+    "decided upright", a measured predictor of ending on edge, not carried to rest)."""
 
     label: str
     parameters: Mapping[str, float]
@@ -852,6 +875,7 @@ class EngineCheck:
     mujoco: BinomialEstimate
     mujoco_moving: int
     mujoco_seconds: float
+    contact_decided_upright: int = 0
 
 
 def mujoco_check(
@@ -879,7 +903,7 @@ def mujoco_check(
     endings at their landing rates, MuJoCo by :func:`coinflight.studies.mujoco_compare.
     seconds_estimate`) bounded before anything runs; ``progress``, if given, is called once
     every input is checked and the work bounded, before any toss (the check's size)."""
-    from coinflight.core.outcome import EDGE
+    from coinflight.core.outcome import EDGE, Status
     from coinflight.model.surface import Surface
     from coinflight.model.toss import check_gravity
     from coinflight.outcomes.table import TableLanding, land
@@ -923,7 +947,9 @@ def mujoco_check(
     def edges(faces: Any) -> BinomialEstimate:
         return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
 
-    ours = {ending: edges(land(coin, omega, v0, 1.0, g, t).face) for ending, t in tables.items()}
+    landed = {ending: land(coin, omega, v0, 1.0, g, t) for ending, t in tables.items()}
+    ours = {ending: edges(out.face) for ending, out in landed.items()}
+    decided = int(np.count_nonzero(landed["contact"].status == Status.DECIDED_UPRIGHT))
     run = mujoco_compare.run(
         coin, omega, v0, drop, restitution, friction, g, torsional=resistance, rolling=resistance
     )
@@ -944,6 +970,7 @@ def mujoco_check(
         edges(run.rest),
         int(np.count_nonzero(run.moving)),
         float(run.elapsed),
+        decided,
     )
 
 
