@@ -138,15 +138,43 @@ def test_the_edges_decided_upright_are_counted_apart():
     assert int(np.sum(out.face == 2)) == simulated["successes"]
     assert int(np.sum(out.status == Status.DECIDED_UPRIGHT)) == decided
     args = ["--ratios", "0.1,0.3", "--simulate", "50", "--seed", "4", "--restitution", "0.5"]
-    code, js, _ = _run(*args, "--ending", "contact", "--json")
-    assert code == 0
-    assert all(row["simulated"]["decided_upright"] >= 0 for row in json.loads(js))
-    code, js, _ = _run(*args, "--json")
+    _, js, _ = _run(*args, "--json")
     assert not any("decided_upright" in row["simulated"] for row in json.loads(js))
-    code, out, _ = _run(*args, "--ending", "contact")
+
+
+def test_the_decided_upright_column_and_json_are_the_librarys_count(monkeypatch):
+    """The command's decided-upright count (--json and the text column) is simulate_edge's for
+    the same tosses, on a case where it is not 0. The command has no axial-spin option and
+    planar spins decide no coin upright (measured: 0 of 6 x 300 tosses, e 0.3-0.8, mu
+    0.05-1), so simulate_edge is wrapped to add test_cli_edge's axial spin draws."""
+    import coinflight.studies.edge as edge_study
+    from coinflight.model.distributions import Uniform
+
+    real = edge_study.simulate_edge
+    spin = dict(spin=Uniform(150.0, 300.0), axial_spin=Uniform(-40.0, 40.0))
+
+    def wobbling(*args, **kw):
+        return real(*args, **{**kw, **spin})
+
+    monkeypatch.setattr(edge_study, "simulate_edge", wobbling)
+    args = ["--ratios", "0.092,0.2", "--simulate", "60", "--seed", "4", "--restitution", "0.5",
+            "--friction", "0.6", "--ending", "contact"]  # fmt: skip
+    expected = real([0.092, 0.2], 60, 4, restitution=0.5, friction=0.6, ending="contact",
+                    **spin)  # fmt: skip
+    counts = [e.decided_upright for _, e in expected]
+    assert all(c > 0 for c in counts)
+    code, js, _ = _run(*args, "--json")
     assert code == 0
-    assert out.splitlines()[0].endswith("decided upright")
-    assert out.splitlines()[-2].startswith("decided upright: edges the contact ending's")
+    rows = json.loads(js)
+    assert [row["simulated"]["decided_upright"] for row in rows] == counts
+    fractions = [row["simulated"]["decided_upright_fraction"] for row in rows]
+    assert fractions == [c / 60 for c in counts]
+    code, out, _ = _run(*args)
+    assert code == 0
+    lines = out.splitlines()
+    assert lines[0].endswith("decided upright")
+    assert [int(line.split()[-1].replace(",", "")) for line in lines[1:3]] == counts
+    assert lines[-2].startswith("decided upright: edges the contact ending's")
 
 
 def test_the_corner_radius_reaches_the_simulated_coins():
