@@ -285,11 +285,18 @@ class SweepResults(ProbabilityResults):
         as numbers (``omega_x.kind``, ``omega_x.low``, … ``omega_x.mean``), the coin's
         dimensions, the outcome model's fields (``surface``, ``restitution``, …), the row's
         ``stream`` (seeded methods) and ``key``. ``p_edge`` is empty where the surface cannot
-        leave a coin on its edge (the hand); the method's details are left out."""
+        leave a coin on its edge (the hand). Of the method's details only the outcome model's
+        tallies are kept (:attr:`coinflight.outcomes.base.OutcomeModel.tallies`: ``unsettled``,
+        with the contact ending ``decided_upright``, each with its ``_fraction``), as columns
+        of their own, empty in the table for rows whose model has none."""
         rows = []
         seeded = registry.get(self.method).seeded
         for row, case, key in zip(super().to_dicts(), self.cases, self.keys, strict=True):
             out = {k: x for k, x in row.items() if not k.startswith("details.")}
+            for name in case.model.tallies:  # the tallies, as columns of their own
+                for column in (name, f"{name}_fraction"):
+                    if f"details.{column}" in row:
+                        out[column] = row[f"details.{column}"]
             inputs = case.inputs()
             for name in (*PARAMETERS, "launch_speed"):
                 dist = inputs[name]
