@@ -195,6 +195,7 @@ def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
 
 
 def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str, Any]:
+    contact = run.ending == "contact"  # only it has the upright decision and the resistances
     return {
         "ending": run.ending,
         "rest": c.fractions(run.rest).tolist(),
@@ -202,11 +203,12 @@ def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str
         "rest_agreement": c.agreement(run),
         "unsettled": run.unsettled,
         "ended_at_impact": run.at_impact,
-        "decided_upright": run.decided_upright,
+        "decided_upright": run.decided_upright if contact else None,
+        "decided_upright_fraction": run.decided_upright / c.n if contact else None,
         "seconds": run.seconds,
         "speed_ratio": c.ratio(run),
-        "rolling_resistance": run.rolling_resistance if run.ending == "contact" else None,
-        "pivoting_resistance": run.pivoting_resistance if run.ending == "contact" else None,
+        "rolling_resistance": run.rolling_resistance if contact else None,
+        "pivoting_resistance": run.pivoting_resistance if contact else None,
     }
 
 
