@@ -156,7 +156,8 @@ class Surface:
         speed). ``"rocking"`` (default): the planar Housner rocking hand-off of
         :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
         the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
-        phase of :mod:`coinflight.core.contact_phase` (status "settled in contact");
+        phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
+        "decided upright" for a coin its upright decision ended on edge);
         **experimental**: slow (tens to hundreds of landings a second instead of tens of
         thousands), and its edge rates are not yet credible (coins that roll upright on a
         sharp-cornered rim stop upright; see :mod:`coinflight.core.contact_phase`).
