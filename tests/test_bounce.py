@@ -259,3 +259,18 @@ def test_parallel_landing_in_a_child_forked_after_a_serial_one():
         check=False,
     )
     assert run.returncode == 0, (run.returncode, run.stderr[-2000:])
+
+
+def test_bench_bounce_compares_statuses_with_decided_coins_as_settled_in_contact():
+    # bench_bounce.py --old-src and --upright compare statuses with runs whose decided coins
+    # are SETTLED_CONTACT: only DECIDED_UPRIGHT is mapped, every other status kept.
+    import numpy as np
+    from benchmarks.bench_bounce import as_undecided
+
+    from coinflight.core.outcome import Status
+
+    status = np.array([int(s) for s in Status], dtype=np.int8)
+    mapped = as_undecided(status)
+    assert mapped.dtype == status.dtype
+    expected = [Status.SETTLED_CONTACT if s == Status.DECIDED_UPRIGHT else s for s in Status]
+    assert mapped.tolist() == [int(s) for s in expected]
