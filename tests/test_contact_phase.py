@@ -385,7 +385,12 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
     surface = Surface("table", 0.8, 0.5, 0.3)
     out = land(NICKEL, omega, v0, 1.0, G, surface)
     assert np.any(out.status == Status.SETTLED_ROCKING)
-    assert not np.any(out.status == Status.SETTLED_CONTACT)
+    # neither of the contact ending's statuses: carried to rest in contact, decided upright
+    contact_statuses = [Status.SETTLED_CONTACT, Status.DECIDED_UPRIGHT]
+    assert not np.any(np.isin(out.status, contact_statuses))
+    # ... which the contact ending gives these tosses (measured: 26 settled, 5 decided of 40)
+    by_contact = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.5, 0.3, ending="contact"))
+    assert all(np.any(by_contact.status == s) for s in contact_statuses)
 
     rocked = []
     planar_rocking = bounce.rock
