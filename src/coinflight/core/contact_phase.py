@@ -264,10 +264,11 @@ the prediction 0.132, 0.257, 0.399, 0.560, 0.737, and the same at t_c = 1 ms, 0.
 and a face to the linear law's :func:`restitution_of` (ζ, 1) (0.527 at e 0.5).
 ``tests/test_bench_two_rims.py`` pins these. The same sizing leaves the pair's rocking mode
 (the rims in antiphase, inertia I1 on 2 K_t h′²) damped at ζ sqrt(2 m_eff h′²/I1) = 0.25 ζ
-for a nickel in the linearised pair, **0.29 ζ measured** (the decay of a small lean oscillation
-of an upright nickel resting on both rims, the same script: 0.193, 0.111, 0.068, 0.040, 0.020
-at e 0.2, 0.35, 0.5, 0.65, 0.8, against ζ 0.668, 0.382, 0.233, 0.137, 0.068): under-damped,
-about the restitution 0.82 where the surface says 0.5.
+for a nickel in the linearised pair, **0.29 ζ measured** at t_c 1 ms (the decay of a small lean
+oscillation of an upright nickel resting on both rims, the same script: 0.193, 0.111, 0.068,
+0.040, 0.020 at e 0.2, 0.35, 0.5, 0.65, 0.8, against ζ 0.668, 0.382, 0.233, 0.137, 0.068) and
+0.256 ζ at t_c 62.5 μs, the linearised value as the contact shortens: under-damped, about the
+restitution 0.82 where the surface says 0.5.
 *A fix* would size the pair's damping together whenever both rims press: with M the 2 × 2 mass
 matrix of the two arcs' centroids (the inverse of their 2 × 2 collision matrix, Stronge 2000,
 eq 5.7, for two points) and K_t = diag(2 φ₁ κ, 2 φ₂ κ), the damping matrix
@@ -276,14 +277,11 @@ dissipative), which is the present 2 ζ sqrt(K_t m_eff) when one rim touches. *W
 move:* every contact-ending outcome of a coin that spends time on both rims (7 % of the
 phase's steps, the upright rollers and the coins the upright decision ends), so every
 contact-ending number quoted (its edge rates, the decision's measured 0 disagreements, the
-comparisons with MuJoCo) would need re-measuring. An indication, from a scratch copy not kept
-(both rims' dampers scaled by 1/√2 when both press, which corrects the bounce, 0.504 at
-e 0.5, but not the rocking mode; the tosses of ``bench_bounce.py``, seed 11, 600 each): the
-faces of 22, 23, 17 and 27 of the 408, 416, 402 and 408 handed tosses changed (e 0.5 with
-μ 0.3; μ 0.6; each toss's own e, μ; resistances 1e-5 m), 3-7 % of them against the 0-0.3 % a
-one-ulp change of the input flips (above), while the edges went 51 → 52, 164 → 160, 79 → 78
-and 42 → 44 (within their binomial spread) and the decided ones 48 → 50, 162 → 159, 76 → 73,
-41 → 44.
+comparisons with MuJoCo) would need re-measuring. A scratch copy not kept in the repository
+(both rims' dampers scaled by 1/√2 when both press, which corrects the bounce but not the
+rocking mode) changed the faces of more handed tosses than a one-ulp change of the input
+flips (above), with the edge and decided counts within their binomial spread; as it cannot be
+re-run from here, its numbers are not quoted.
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
