@@ -13,63 +13,23 @@ clock: the machine is shared).
 from __future__ import annotations
 
 import tracemalloc
-from collections.abc import Callable, Sequence
 
 import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 from _cli import one_line_error
+from _work import MB, RUNS_TASKS, command_work, never_run, refused_cheaply
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability import _runner, estimate
+from coinflight.probability import estimate
 
 runner = CliRunner()
 FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 QUARTER = Coin(radius=0.01213, thickness=0.00175, mass=0.00567)  # REFERENCES §7, in SI
 HUGE = [2**63, 99999999999999999999999, 2**2000]
-MB = 2**20
-
-
-RUNS_TASKS = ((_runner, "completed"),)
-"""Where the tasks of every estimator and study run (:func:`coinflight.probability._runner.
-run_tasks` calls it): the tosses, grid bands and map stripes."""
-
-
-def _ran(where: str) -> Callable[..., object]:
-    """A stand-in for the function ``where`` that fails the test if called."""
-
-    def fail(*_args: object, **_kwargs: object) -> object:
-        raise AssertionError(f"{where} ran before the refusal")
-
-    return fail
-
-
-def refused_cheaply(
-    call: Callable[[], object],
-    match: str,
-    never: Sequence[tuple[object, str]],
-    peak_mb: float = 16.0,
-) -> str:
-    """``call()`` raises ValueError matching ``match`` before any of ``never`` runs (each
-    ``(owner, name)`` a function doing the work, replaced by one failing the test if called;
-    none: the work is the allocation), with a tracemalloc peak below ``peak_mb`` MB (the
-    refused requests would allocate GBs); the message."""
-
-    with pytest.MonkeyPatch.context() as patch:
-        for owner, name in never:
-            patch.setattr(owner, name, _ran(f"{getattr(owner, '__name__', owner)}.{name}"))
-        tracemalloc.start()
-        try:
-            with pytest.raises(ValueError, match=match) as info:
-                call()
-            _, peak = tracemalloc.get_traced_memory()
-        finally:
-            tracemalloc.stop()
-    assert peak < peak_mb * MB, f"peak {peak / MB:.1f} MB before refusing"
-    return str(info.value)
 
 
 # --- the one refusal --------------------------------------------------------------------------
@@ -465,21 +425,7 @@ def test_reported_command_lines_end_in_one_line(args, expected, tmp_path, monkey
     # Refused before any work: what would do it (every estimator's, study's and map's tasks,
     # the bias study's draws, the flights through air, any figure, a movie's frames included)
     # fails the test if called (not a clock: the machine is shared).
-    from matplotlib.figure import Figure
-
-    from coinflight.core import drag
-    from coinflight.probability import streams
-
-    work = [
-        *RUNS_TASKS,
-        (streams, "unit_cube"),
-        (drag, "catch"),
-        (drag, "land"),
-        (Figure, "__init__"),
-    ]
-    for owner, name in work:
-        where = f"{getattr(owner, '__name__', owner)}.{name}"
-        monkeypatch.setattr(owner, name, _ran(where))
+    never_run(monkeypatch, command_work())
     monkeypatch.chdir(tmp_path)
     assert expected in one_line_error(*args)
     assert not list(tmp_path.iterdir())  # nothing written
