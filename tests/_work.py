@@ -20,17 +20,22 @@ run_tasks` calls it): the tosses, grid bands and map stripes."""
 
 def command_work() -> list[tuple[object, str]]:
     """What does the work of any command: every estimator's, study's and map's tasks, the bias
-    study's draws, the flights through air, any figure (a movie's frames included)."""
+    study's draws, the flights through air, a map's grid and its catches in the hand, any
+    figure (a movie's frames included)."""
     from matplotlib.figure import Figure
 
     from coinflight.core import drag
+    from coinflight.outcomes.hand import HandCatch
     from coinflight.probability import streams
+    from coinflight.studies import basin
 
     return [
         *RUNS_TASKS,
         (streams, "unit_cube"),
         (drag, "catch"),
         (drag, "land"),
+        (basin, "midpoints"),
+        (HandCatch, "faces"),
         (Figure, "__init__"),
     ]
 

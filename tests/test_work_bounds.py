@@ -12,6 +12,7 @@ clock: the machine is shared).
 
 from __future__ import annotations
 
+import math
 import tracemalloc
 
 import numpy as np
@@ -230,6 +231,69 @@ def test_basin_boundaries_are_bounded():
     message = refused_cheaply(basin.boundaries, "curves", [])  # the work: the curves' arrays
     assert "more than the limit of 2e+03 curves" in message
     assert "--no-boundaries" in message
+
+
+def test_basin_boundaries_are_refused_before_the_map(tmp_path, monkeypatch):
+    # A wide range was refused only when drawn, after its map (a regression there would hang,
+    # not fail): now before it, the map's grid and its catches made to fail if they run.
+    from coinflight.outcomes.hand import HandCatch
+    from coinflight.queries.basin import basin_query
+    from coinflight.queries.values import TableArgs
+    from coinflight.studies import basin
+
+    the_map = [(basin, "midpoints"), (HandCatch, "faces")]
+    wide = {"spin": (-1e9, 1e9), "flight_time": (0.6, 0.9), "resolution": (500, 500)}
+    message = refused_cheaply(
+        lambda: basin.basin_map(QUARTER, **wide, boundaries=True), "curves", the_map
+    )
+    drawn = basin.basin_map(QUARTER, **{**wide, "resolution": (2, 2)})
+    assert message == refused_cheaply(drawn.boundaries, "curves", [])  # the same words
+    # The web's boundaries on a table: refused before its map too.
+    table = TableArgs("table", 0.3, None, None, None)
+    words = "the analytic boundaries belong to the catch in the hand"
+    refused_cheaply(
+        lambda: basin_query(QUARTER, omega_x="60:90", table=table, boundaries=True),
+        words,
+        [*the_map, *RUNS_TASKS],
+    )
+    # The command line: one line, nothing drawn or computed.
+    never_run(monkeypatch, command_work())
+    monkeypatch.chdir(tmp_path)
+    assert "--no-boundaries" in one_line_error("plot", "basin", "--omega-x", "-1e9:1e9",
+                                               "--out", "b.png")  # fmt: skip
+    assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize(
+    ("spin", "psi", "omega_z"),
+    [
+        ((60.0, 6900.0), None, 0.0),
+        ((60.0, 6980.0), None, 0.0),  # just over the limit: 2 × (999 + 2) curves
+        ((-6980.0, 10.0), None, 0.0),
+        ((-50.0, 6850.0), None, 500.0),
+        ((-50.0, 6975.0), None, 3000.0),
+        ((0.0, 6950.0), None, 1e5),  # never turns over: no curves
+        ((1.0, 6950.0), math.radians(80.0), 0.0),
+        ((1.0, 7100.0), math.radians(80.0), 0.0),
+        ((1.0, 9e9), math.radians(30.0), 0.0),  # ψ < 45°: no curves
+    ],
+)
+def test_basin_boundaries_checked_before_the_map_as_when_drawn(spin, psi, omega_z):
+    # The check from the box alone (its spin axis' ends) refuses exactly the maps whose
+    # boundaries refuse when drawn, at the limit too.
+    from coinflight.studies import basin
+
+    box = {"flight_time": (0.6, 0.9), "spin": spin, "psi": psi, "omega_z": omega_z}
+    drawn = basin.basin_map(QUARTER, **box, resolution=(2, 2))
+    try:
+        curves = len(drawn.boundaries())
+    except ValueError as exc:
+        with pytest.raises(ValueError) as info:
+            basin.check_boundaries(QUARTER, **box)
+        assert str(info.value) == str(exc)
+    else:
+        basin.check_boundaries(QUARTER, **box)
+        assert curves <= basin.MAX_BOUNDARIES
 
 
 # --- counts of bias and edge simulations, bounces -------------------------------------------
