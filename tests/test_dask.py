@@ -14,9 +14,9 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from tests._cli import one_line_error
 from typer.testing import CliRunner
 
+from _cli import one_line_error
 from coinflight.cli import app
 from coinflight.model.distributions import Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
