@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+from pathlib import Path
+
 from typer.testing import CliRunner
 
 from coinflight.cli import app
@@ -18,3 +22,22 @@ def one_line_error(*args: object) -> str:
     assert len(lines) == 1, result.stderr
     assert lines[0].startswith("coinflight: error: ")
     return lines[0].removeprefix("coinflight: error: ")
+
+
+def script_error(script: Path, args: list[str], cwd: Path) -> str:
+    """Run a benchmark script with ``args`` (in ``cwd``); assert exit 2, nothing on stdout,
+    no traceback, and a last stderr line ``SCRIPT: error: ...`` (argparse's own errors print
+    the usage first); the message after that prefix."""
+    run = subprocess.run(
+        [sys.executable, str(script), *args],
+        capture_output=True,
+        text=True,
+        timeout=300,  # start-up and imports only: every input is checked before a toss
+        cwd=cwd,
+    )
+    assert run.returncode == 2, run.stderr
+    assert run.stdout == ""
+    assert "Traceback" not in run.stderr
+    last = run.stderr.strip().splitlines()[-1]
+    assert last.startswith(f"{script.name}: error: "), run.stderr
+    return last.removeprefix(f"{script.name}: error: ")

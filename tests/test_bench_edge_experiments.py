@@ -3,12 +3,12 @@
 
 from __future__ import annotations
 
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from _cli import script_error
 from coinflight.model.distributions import Fixed
 from coinflight.studies.edge_experiments import axial_spin
 
@@ -35,18 +35,7 @@ def _study_words(psi: float | str) -> str:
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args, said, tmp_path):
-    run = subprocess.run(
-        [sys.executable, str(SCRIPT), "10", "--contact", "2", *args],
-        capture_output=True,
-        text=True,
-        timeout=300,  # start-up and imports only: every input is checked before a toss
-        cwd=tmp_path,
-    )
-    assert run.returncode == 2, run.stderr
-    assert run.stdout == ""
-    assert "Traceback" not in run.stderr
-    last = run.stderr.strip().splitlines()[-1]  # argparse's own errors print the usage first
-    assert last.startswith(f"{SCRIPT.name}: error: {said()}"), run.stderr
+    assert script_error(SCRIPT, ["10", "--contact", "2", *args], tmp_path).startswith(said())
 
 
 # A fault during the run (a ValueError or TypeError raised once the inputs were accepted) is not

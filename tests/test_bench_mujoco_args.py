@@ -5,12 +5,11 @@ FrictionSolver's words, exit 2 and no traceback, before anything is simulated.""
 from __future__ import annotations
 
 import argparse
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from _cli import script_error
 from coinflight.studies import mujoco_compare as mc
 
 pytest.importorskip("mujoco")
@@ -58,18 +57,8 @@ def test_the_helpers_build_through_friction_solver(monkeypatch):
     ],
 )
 def test_bad_mujoco_settings_are_one_line_and_exit_2(script, args, said, tmp_path):
-    run = subprocess.run(
-        [sys.executable, str(BENCH / script), "2", *args],
-        capture_output=True,
-        text=True,
-        timeout=300,  # start-up and imports only: every input is checked before a toss
-        cwd=tmp_path,
-    )
-    assert run.returncode == 2, run.stderr
-    assert run.stdout == ""
-    assert "Traceback" not in run.stderr
-    last = run.stderr.strip().splitlines()[-1]  # argparse's own errors print the usage first
-    assert last.startswith(f"{script}: error: {said}"), run.stderr
+    message = script_error(BENCH / script, ["2", *args], tmp_path)
+    assert message.startswith(said), message
     if said.startswith("argument"):
         value = args[1]
         if args[0] == "--timeconst":
@@ -77,4 +66,4 @@ def test_bad_mujoco_settings_are_one_line_and_exit_2(script, args, said, tmp_pat
         else:
             pieces = value.split(",")
             expected = _words(solimp=tuple(map(float, pieces)) if value != "abc" else value)
-        assert last == f"{script}: error: {said}{expected}"
+        assert message == f"{said}{expected}"

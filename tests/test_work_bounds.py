@@ -12,64 +12,25 @@ clock: the machine is shared).
 
 from __future__ import annotations
 
+import math
 import tracemalloc
-from collections.abc import Callable, Sequence
 
 import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 from _cli import one_line_error
+from _work import MB, RUNS_TASKS, command_work, never_run, refused_cheaply
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability import _runner, estimate
+from coinflight.probability import estimate
 
 runner = CliRunner()
 FIG_2A = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))  # Stefan & Cheche Fig 2a
 QUARTER = Coin(radius=0.01213, thickness=0.00175, mass=0.00567)  # REFERENCES §7, in SI
 HUGE = [2**63, 99999999999999999999999, 2**2000]
-MB = 2**20
-
-
-RUNS_TASKS = ((_runner, "completed"),)
-"""Where the tasks of every estimator and study run (:func:`coinflight.probability._runner.
-run_tasks` calls it): the tosses, grid bands and map stripes."""
-
-
-def _ran(where: str) -> Callable[..., object]:
-    """A stand-in for the function ``where`` that fails the test if called."""
-
-    def fail(*_args: object, **_kwargs: object) -> object:
-        raise AssertionError(f"{where} ran before the refusal")
-
-    return fail
-
-
-def refused_cheaply(
-    call: Callable[[], object],
-    match: str,
-    never: Sequence[tuple[object, str]],
-    peak_mb: float = 16.0,
-) -> str:
-    """``call()`` raises ValueError matching ``match`` before any of ``never`` runs (each
-    ``(owner, name)`` a function doing the work, replaced by one failing the test if called;
-    none: the work is the allocation), with a tracemalloc peak below ``peak_mb`` MB (the
-    refused requests would allocate GBs); the message."""
-
-    with pytest.MonkeyPatch.context() as patch:
-        for owner, name in never:
-            patch.setattr(owner, name, _ran(f"{getattr(owner, '__name__', owner)}.{name}"))
-        tracemalloc.start()
-        try:
-            with pytest.raises(ValueError, match=match) as info:
-                call()
-            _, peak = tracemalloc.get_traced_memory()
-        finally:
-            tracemalloc.stop()
-    assert peak < peak_mb * MB, f"peak {peak / MB:.1f} MB before refusing"
-    return str(info.value)
 
 
 # --- the one refusal --------------------------------------------------------------------------
@@ -272,6 +233,69 @@ def test_basin_boundaries_are_bounded():
     assert "--no-boundaries" in message
 
 
+def test_basin_boundaries_are_refused_before_the_map(tmp_path, monkeypatch):
+    # A wide range was refused only when drawn, after its map (a regression there would hang,
+    # not fail): now before it, the map's grid and its catches made to fail if they run.
+    from coinflight.outcomes.hand import HandCatch
+    from coinflight.queries.basin import basin_query
+    from coinflight.queries.values import TableArgs
+    from coinflight.studies import basin
+
+    the_map = [(basin, "midpoints"), (HandCatch, "faces")]
+    wide = {"spin": (-1e9, 1e9), "flight_time": (0.6, 0.9), "resolution": (500, 500)}
+    message = refused_cheaply(
+        lambda: basin.basin_map(QUARTER, **wide, boundaries=True), "curves", the_map
+    )
+    drawn = basin.basin_map(QUARTER, **{**wide, "resolution": (2, 2)})
+    assert message == refused_cheaply(drawn.boundaries, "curves", [])  # the same words
+    # The web's boundaries on a table: refused before its map too.
+    table = TableArgs("table", 0.3, None, None, None)
+    words = "the analytic boundaries belong to the catch in the hand"
+    refused_cheaply(
+        lambda: basin_query(QUARTER, omega_x="60:90", table=table, boundaries=True),
+        words,
+        [*the_map, *RUNS_TASKS],
+    )
+    # The command line: one line, nothing drawn or computed.
+    never_run(monkeypatch, command_work())
+    monkeypatch.chdir(tmp_path)
+    assert "--no-boundaries" in one_line_error("plot", "basin", "--omega-x", "-1e9:1e9",
+                                               "--out", "b.png")  # fmt: skip
+    assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize(
+    ("spin", "psi", "omega_z"),
+    [
+        ((60.0, 6900.0), None, 0.0),
+        ((60.0, 6980.0), None, 0.0),  # just over the limit: 2 × (999 + 2) curves
+        ((-6980.0, 10.0), None, 0.0),
+        ((-50.0, 6850.0), None, 500.0),
+        ((-50.0, 6975.0), None, 3000.0),
+        ((0.0, 6950.0), None, 1e5),  # never turns over: no curves
+        ((1.0, 6950.0), math.radians(80.0), 0.0),
+        ((1.0, 7100.0), math.radians(80.0), 0.0),
+        ((1.0, 9e9), math.radians(30.0), 0.0),  # ψ < 45°: no curves
+    ],
+)
+def test_basin_boundaries_checked_before_the_map_as_when_drawn(spin, psi, omega_z):
+    # The check from the box alone (its spin axis' ends) refuses exactly the maps whose
+    # boundaries refuse when drawn, at the limit too.
+    from coinflight.studies import basin
+
+    box = {"flight_time": (0.6, 0.9), "spin": spin, "psi": psi, "omega_z": omega_z}
+    drawn = basin.basin_map(QUARTER, **box, resolution=(2, 2))
+    try:
+        curves = len(drawn.boundaries())
+    except ValueError as exc:
+        with pytest.raises(ValueError) as info:
+            basin.check_boundaries(QUARTER, **box)
+        assert str(info.value) == str(exc)
+    else:
+        basin.check_boundaries(QUARTER, **box)
+        assert curves <= basin.MAX_BOUNDARIES
+
+
 # --- counts of bias and edge simulations, bounces -------------------------------------------
 
 
@@ -465,21 +489,7 @@ def test_reported_command_lines_end_in_one_line(args, expected, tmp_path, monkey
     # Refused before any work: what would do it (every estimator's, study's and map's tasks,
     # the bias study's draws, the flights through air, any figure, a movie's frames included)
     # fails the test if called (not a clock: the machine is shared).
-    from matplotlib.figure import Figure
-
-    from coinflight.core import drag
-    from coinflight.probability import streams
-
-    work = [
-        *RUNS_TASKS,
-        (streams, "unit_cube"),
-        (drag, "catch"),
-        (drag, "land"),
-        (Figure, "__init__"),
-    ]
-    for owner, name in work:
-        where = f"{getattr(owner, '__name__', owner)}.{name}"
-        monkeypatch.setattr(owner, name, _ran(where))
+    never_run(monkeypatch, command_work())
     monkeypatch.chdir(tmp_path)
     assert expected in one_line_error(*args)
     assert not list(tmp_path.iterdir())  # nothing written

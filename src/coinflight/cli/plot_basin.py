@@ -142,6 +142,8 @@ def plot_basin(
             table=table,
             bounces=bounces,
             executor=executor,
+            # their number bounded before the map (the table's maps are drawn without them)
+            boundaries=boundaries and table.surface == "hand",
         )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")

@@ -443,6 +443,25 @@ def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
     )
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def one_sign(g0: float, gm: float, g2: float) -> float:
+    """The sign of g = n·v over a step in which no root of its interpolant was found, from its
+    values at the stages x = 0, 1/2, 1: that of the one largest in size. If g has no root in
+    the step, all three share it; a root may also have been missed by rounding, but only
+    within rounding of an end (where g is then tiny) or as two roots within rounding of each
+    other (a discriminant rounded below 0: g tiny between them), and then g keeps the sign
+    of its largest node on all but a rounding-sized part of the step. (Taking g1's sign
+    there, or an end's, once gave the whole step the wrong sign: an O(1) error in its drag
+    integral.)"""
+    if abs(g0) >= abs(gm) and abs(g0) >= abs(g2):
+        big = g0
+    elif abs(gm) >= abs(g2):
+        big = gm
+    else:
+        big = g2
+    return 1.0 if big >= 0.0 else -1.0
+
+
 @njit(cache=True, error_model="numpy")
 def kink_weights(g0: float, g1: float, g2: float) -> tuple:
     """Quadrature weights for the face drag's |n·v| v over a step whose n·v changes sign.
@@ -462,7 +481,9 @@ def kink_weights(g0: float, g1: float, g2: float) -> tuple:
     Numerical Integration*, 2nd ed., 1984, §2.12).
 
     Returns (W0, W1, W2, M0, M1, M2, found): found is False (and the weights Simpson's times
-    the sign of g1) when g_q keeps one sign on (0, 1).
+    the sign of :func:`one_sign`) when no root of g_q is found in (0, 1). Each piece between the
+    roots found takes g_q's sign at its middle, so that a root within rounding of an end, put
+    on either side of it, changes the weights by rounding only (as in :func:`kink_integrals`).
     """
     c = g0
     a = 2.0 * g0 - 4.0 * g1 + 2.0 * g2
@@ -487,8 +508,8 @@ def kink_weights(g0: float, g1: float, g2: float) -> tuple:
         r2 = 2.0
     if r2 < r1:
         r1, r2 = r2, r1
-    s = 1.0 if g1 >= 0.0 else -1.0
     if r1 > 1.0:
+        s = one_sign(g0, g1, g2)
         return s / 6.0, 2.0 * s / 3.0, s / 6.0, s / 6.0, s / 3.0, 0.0, False
     w = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     x0 = 0.0
@@ -526,13 +547,12 @@ def _primitives(x: float, cx: float, sx: float, it: float) -> tuple:
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _add_root(tot: tuple, t: float, it: float, after: float) -> tuple:
-    """``tot`` − 2 ``after`` times :func:`_primitives` at the root x = 2 arctan(t)/θ of g
-    (t = tan(θx/2), it = 1/θ), where g takes the sign ``after``."""
+def _add_root(tot: tuple, t: float, it: float, d: float) -> tuple:
+    """``tot`` + ``d`` times :func:`_primitives` at the root x = 2 arctan(t)/θ of g
+    (t = tan(θx/2), it = 1/θ), ``d`` the sign of g before it minus the sign after it."""
     t2 = t * t
     inv = 1.0 / (1.0 + t2)
     fr = _primitives(2.0 * math.atan(t) * it, (1.0 - t2) * inv, 2.0 * t * inv, it)
-    d = -2.0 * after
     return (
         tot[0] + d * fr[0],
         tot[1] + d * fr[1],
@@ -562,10 +582,13 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     Ordinary Differential Equations I*, 2nd ed., 1993, §II.1), which integrate the kink of |n·v|
     to first order only and the turning attitude with a relative error (θ/2)⁴/180 of one sign.
     Below a turn of ``TRIG_KINK`` the basis is ill-conditioned: the quadratic interpolant is
-    used (:func:`kink_weights`). The roots counted in the step always agree in parity with the
-    signs of g just inside its ends (of the slope where a node is 0): a root within rounding of
-    an end, put on the wrong side of it by the test, is moved across it, so that it changes the
-    integral by rounding only, not by twice a piece's weight.
+    used (:func:`kink_weights`). Each piece between the roots found takes g's sign at its middle
+    (in t), and a step without a root found the sign of :func:`one_sign`: a root within rounding
+    of an end, put on either side of it, or two roots within rounding of each other, change
+    the integral by rounding only, not by twice a piece's weight. (The previous rule, the
+    roots counted made to agree in parity with the signs of g just inside the ends and the root
+    nearest an end moved across it, moved the wrong root where both lie within rounding of
+    the ends.)
     """
     if c > TRIG_COS or c <= 0.0 or s <= 0.0:
         w0, w1, w2, m0, m1, m2, _ = kink_weights(g0, gm, g2)
@@ -588,28 +611,10 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
     it = 1.0 / theta
     f0 = _primitives(0.0, 1.0, 0.0, it)
     f1 = _primitives(1.0, cc, ss, it)
-    # Σ over the pieces of sign × (F(end) − F(start)) = s1 F(1) − s0 F(0) − 2 Σ σ_r F(x_r)
-    # over the roots x_r in (0, 1), σ_r the sign of g after x_r. The end signs are those of g
-    # just inside the step: of g0, g2 or, where a node is 0, of the slope there (of gm if that
-    # is 0 too), so that a root at an end is not counted.
-    if g0 > 0.0:
-        s0 = 1.0
-    elif g0 < 0.0:
-        s0 = -1.0
-    elif gr != 0.0:
-        s0 = 1.0 if gr > 0.0 else -1.0  # g′(0) ∝ r
-    else:
-        s0 = 1.0 if gm >= 0.0 else -1.0
-    if g2 > 0.0:
-        s1 = 1.0
-    elif g2 < 0.0:
-        s1 = -1.0
-    elif gr * cc != gq * ss:  # g′(1) ∝ r cos θ − q sin θ; g before 1 has its opposite sign
-        s1 = -1.0 if gr * cc > gq * ss else 1.0
-    else:
-        s1 = 1.0 if gm >= 0.0 else -1.0
+    # Σ over the pieces of sign × (F(end) − F(start)) = σ_last F(1) − σ_first F(0)
+    # + Σ (σ before x_r − σ after x_r) F(x_r) over the roots x_r in (0, 1) found.
     # Roots: with t = tan(θx/2), p + q cos + r sin = 0 is (p − q) t² + 2 r t + (p + q) = 0
-    # (the half-angle substitution), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
+    # (the half-angle substitution: (1 + t²) g), and 0 < θx < θ < π is 0 < t < tan(θ/2) = s/c.
     qa = gp - gq
     qb = gr
     qc = gp + gq
@@ -627,49 +632,44 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         db = qq
     in_a = na * da > 0.0 and abs(na) * c < abs(da) * s
     in_b = nb * db > 0.0 and abs(nb) * c < abs(db) * s
-    if (in_a != in_b) == (s0 == s1):
-        # The number of roots disagrees with the end signs: a root within rounding of an end
-        # was put on the wrong side of it. The root nearest an end is moved across it (onto
-        # the end if brought in); without a root, g changes sign at the end where it is smaller.
-        # A root exactly at x = 0 (a numerator of exactly 0: g0 = 0, whose side s0 already
-        # took from the slope) is no candidate: it would always be the nearest.
-        ea = math.inf
-        eb = math.inf
-        if da != 0.0 and na != 0.0:
-            xa = 2.0 * math.atan(na / da) * it
-            ea = min(abs(xa), abs(1.0 - xa))
-        if db != 0.0 and nb != 0.0:
-            xb = 2.0 * math.atan(nb / db) * it
-            eb = min(abs(xb), abs(1.0 - xb))
-        if ea == math.inf and eb == math.inf:
-            if abs(g0) <= abs(g2):
-                s0 = s1
-            else:
-                s1 = s0
-        elif ea <= eb:
-            in_a = not in_a
-            na, da = min(max(na / da, 0.0), s / c), 1.0
+    if in_a or in_b:
+        # The roots found in order, each piece's sign that of (1 + t²) g at its middle in t.
+        if in_a and in_b:
+            ta = min(na / da, nb / db)
+            tb = max(na / da, nb / db)
         else:
-            in_b = not in_b
-            nb, db = min(max(nb / db, 0.0), s / c), 1.0
-    tot = (
-        s1 * f1[0] - s0 * f0[0],
-        s1 * f1[1] - s0 * f0[1],
-        s1 * f1[2] - s0 * f0[2],
-        s1 * f1[3] - s0 * f0[3],
-        s1 * f1[4] - s0 * f0[4],
-        s1 * f1[5] - s0 * f0[5],
-    )
-    # g alternates in sign from s0 across the roots, in their order (t increases with x).
-    if in_a and in_b:
-        ta = na / da
-        tb = nb / db
-        tot = _add_root(tot, min(ta, tb), it, -s0)
-        tot = _add_root(tot, max(ta, tb), it, s0)
-    elif in_a:
-        tot = _add_root(tot, na / da, it, -s0)
-    elif in_b:
-        tot = _add_root(tot, nb / db, it, -s0)
+            ta = na / da if in_a else nb / db
+            tb = ta
+        t_end = s / c
+        m = 0.5 * ta
+        first = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
+        m = 0.5 * (tb + t_end)
+        last = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
+        tot = (
+            last * f1[0] - first * f0[0],
+            last * f1[1] - first * f0[1],
+            last * f1[2] - first * f0[2],
+            last * f1[3] - first * f0[3],
+            last * f1[4] - first * f0[4],
+            last * f1[5] - first * f0[5],
+        )
+        if in_a and in_b:
+            m = 0.5 * (ta + tb)
+            middle = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
+            tot = _add_root(tot, ta, it, first - middle)
+            tot = _add_root(tot, tb, it, middle - last)
+        else:
+            tot = _add_root(tot, ta, it, first - last)
+    else:
+        sg = one_sign(g0, gm, g2)
+        tot = (
+            sg * f1[0] - sg * f0[0],
+            sg * f1[1] - sg * f0[1],
+            sg * f1[2] - sg * f0[2],
+            sg * f1[3] - sg * f0[3],
+            sg * f1[4] - sg * f0[4],
+            sg * f1[5] - sg * f0[5],
+        )
     # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
     # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
     # in the node values: weights on the nodes, once for the three components.

@@ -86,14 +86,19 @@ def basin_query(
     table: TableArgs = HAND,
     bounces: int | None = None,
     executor: Any = None,
+    boundaries: bool = False,
 ) -> BasinMap:
     """The map ``coinflight plot basin`` draws, for its options as typed (``executor``: where
-    its rows run, as :func:`coinflight.studies.basin.basin_map` takes it)."""
+    its rows run, as :func:`coinflight.studies.basin.basin_map` takes it; ``boundaries``: its
+    analytic boundaries will be drawn, which only the catch in the hand has, their number
+    bounded before the map is computed)."""
     from coinflight import _validation as v
     from coinflight.queries.landing import landing_coin
     from coinflight.studies.basin import basin_map
 
     spin, psi_rad = spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
+    if boundaries:
+        _catch_only(table)
     outcome = table_outcome(table, bounces)
     n_t, n_w = parse_resolution(resolution)
     if outcome:  # a map of table landings: each cell a landing, at the model's rate
@@ -115,8 +120,16 @@ def basin_query(
         start=start,
         g=g,
         executor=executor,
+        boundaries=boundaries,
         **outcome,
     )
+
+
+def _catch_only(table: TableArgs) -> None:
+    """ValueError unless the map is of the catch in the hand (the analytic boundaries' own)."""
+    if table.surface != "hand":
+        raise ValueError("the analytic boundaries belong to the catch in the hand; leave out "
+                         "--boundaries with --surface table")  # fmt: skip
 
 
 def basin_payload(
@@ -134,9 +147,7 @@ def basin_payload(
     payload.update(surface_payload(surface_from(table), None))
     payload["bounces"] = bounces
     if boundaries:
-        if table.surface != "hand":
-            raise ValueError("the analytic boundaries belong to the catch in the hand; leave out "
-                             "--boundaries with --surface table")  # fmt: skip
+        _catch_only(table)
         payload["boundaries"] = [
             {"flight_time": [None if math.isnan(x) else float(x) for x in t], "spin": w.tolist()}
             for t, w in basin.boundaries(n_points=200)

@@ -150,32 +150,13 @@ class BasinMap:
         lo, hi = self.spin_range
         t_lo, t_hi = self.flight_time_range
         w = np.linspace(lo, hi, n_points)
-        if self.axis == "precession":
-            assert self.psi is not None
-            rate = w
-            cot2 = np.full_like(w, (math.cos(self.psi) / math.sin(self.psi)) ** 2)
-        else:
-            i1, i3 = self.coin.moments
-            perp2 = w * w + self.omega_y**2
-            axial = i3 / i1 * self.omega_z
-            rate = np.sqrt(perp2 + axial * axial)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                cot2 = np.where(perp2 > 0, axial * axial / perp2, np.inf)
+        rate, cot2 = _along_spins(self.coin, w, self.psi, self.omega_y, self.omega_z)
         valid = (cot2 <= 1.0) & (rate > 0)
         if not np.any(valid):
             return []
         widths = half_width(cot2)
         curves: list[tuple[FloatArray, FloatArray]] = []
-        top = float(np.max(rate[valid]))
-        k_max = int(top * t_hi / (2 * math.pi)) + 1
-        v.work_bound(
-            f"drawing the analytic boundaries of a map up to {top:.3g} rad/s × {t_hi:.3g} s",
-            2 * (k_max + 1),
-            MAX_BOUNDARIES,
-            "curves",
-            "draw the map without them (--no-boundaries, boundaries=False) or map smaller spins "
-            "or flight times",
-        )
+        k_max = _bound_boundaries(float(np.max(rate[valid])), t_hi)
         for k in range(k_max + 1):
             for sign in (-1.0, 1.0):
                 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -184,6 +165,58 @@ class BasinMap:
                 if np.any(inside):
                     curves.append((np.where(inside, t, np.nan), w))
         return curves
+
+
+def _along_spins(
+    coin: Coin, w: FloatArray, psi: float | None, omega_y: float, omega_z: float
+) -> tuple[FloatArray, FloatArray]:
+    """Precession rate ωp and cot²ψ at the spins ``w`` of a map's axis (the precession rate
+    itself with ``psi`` fixed, else ωx0 with ``omega_y``, ``omega_z``), as
+    :meth:`BasinMap.boundaries` takes them."""
+    if psi is not None:
+        return w, np.full_like(w, (math.cos(psi) / math.sin(psi)) ** 2)
+    i1, i3 = coin.moments
+    perp2 = w * w + omega_y**2
+    axial = i3 / i1 * omega_z
+    rate = np.sqrt(perp2 + axial * axial)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cot2 = np.where(perp2 > 0, axial * axial / perp2, np.inf)
+    return rate, cot2
+
+
+def _bound_boundaries(top: float, t_hi: float) -> int:
+    """The last band index k of the boundaries up to precession rate ``top`` and flight time
+    ``t_hi``; ValueError, before any curve is made, beyond :data:`MAX_BOUNDARIES` curves."""
+    k_max = int(top * t_hi / (2 * math.pi)) + 1
+    v.work_bound(
+        f"drawing the analytic boundaries of a map up to {top:.3g} rad/s × {t_hi:.3g} s",
+        2 * (k_max + 1),
+        MAX_BOUNDARIES,
+        "curves",
+        "draw the map without them (--no-boundaries, boundaries=False) or map smaller spins "
+        "or flight times",
+    )
+    return k_max
+
+
+def check_boundaries(
+    coin: Coin,
+    flight_time: tuple[float, float],
+    spin: tuple[float, float],
+    *,
+    omega_y: float = 0.0,
+    omega_z: float = 0.0,
+    psi: float | None = None,
+) -> None:
+    """ValueError unless the map's analytic boundaries (:meth:`BasinMap.boundaries`) are at
+    most :data:`MAX_BOUNDARIES` curves, from the box alone (before its map is computed), in
+    the words :meth:`BasinMap.boundaries` refuses them with. The fastest precession over the
+    spin axis is at one of its ends (ωp and cot²ψ are monotone in the spin's size), which
+    every sampling of the axis includes."""
+    rate, cot2 = _along_spins(coin, np.array(spin, dtype=float), psi, omega_y, omega_z)
+    valid = (cot2 <= 1.0) & (rate > 0)
+    if np.any(valid):
+        _bound_boundaries(float(np.max(rate[valid])), flight_time[1])
 
 
 def basin_map(
@@ -199,6 +232,7 @@ def basin_map(
     g: float = 9.81,
     outcome: OutcomeModel | OutcomeFunction = HAND_CATCH,
     executor: Any = None,
+    boundaries: bool = False,
 ) -> BasinMap:
     """Heads/tails map over a box of flight times and spins.
 
@@ -230,6 +264,9 @@ def basin_map(
         cells), e.g. on a Dask cluster (:mod:`coinflight.probability.distributed`); the map is
         the same as without it. ``outcome`` must then pickle (a model, or a module-level
         function). Default: the whole grid in one call, in this process.
+    boundaries : bool
+        The map's analytic boundaries will be drawn (:meth:`BasinMap.boundaries`): their
+        number is bounded (:func:`check_boundaries`) before the map is computed.
 
     Returns
     -------
@@ -242,7 +279,8 @@ def basin_map(
         Beyond 25 million cells, or, for an outcome model, more tosses than its measured
         :attr:`~coinflight.outcomes.base.OutcomeModel.rate` lands in
         :data:`coinflight._validation.MAX_RUN_SECONDS` (an hour: 1.08 million cells with the
-        3-D contact ending), before anything is allocated.
+        3-D contact ending), or, with ``boundaries``, beyond :data:`MAX_BOUNDARIES` curves,
+        before anything is allocated.
     """
     from coinflight.model.toss import Toss
 
@@ -267,6 +305,10 @@ def basin_map(
         )
     # Validate T, g and start the same way every toss is validated.
     Toss(omega=(w_lo, omega_y, omega_z), flight_time=t_lo, start=start, g=g)  # type: ignore[arg-type]
+    if boundaries:
+        check_boundaries(
+            coin, (t_lo, t_hi), (w_lo, w_hi), omega_y=omega_y, omega_z=omega_z, psi=psi
+        )
 
     t = midpoints(t_lo, t_hi, n_t)
     w = midpoints(w_lo, w_hi, n_w)

@@ -110,7 +110,9 @@ def basin(
     if model is not None:
         budget(f"a map of {cells:,} table landings", cells / model.rate, time_limit,
                "use a coarser resolution")  # fmt: skip
-    the_map = basin_query(coin.resolve(), table=table, bounces=bounces, **options)
+    the_map = basin_query(
+        coin.resolve(), table=table, bounces=bounces, boundaries=boundaries, **options
+    )
     return basin_payload(the_map, table, bounces, boundaries)
 
 
