@@ -106,20 +106,178 @@ def draw(rng: np.random.Generator, c) -> tuple[np.ndarray, ...]:  # type: ignore
     return n, v, w, lm
 
 
+def slip_class(u0: np.ndarray, k: tuple[float, ...], mu: float, pz: float) -> str:
+    """How the rigid law's slip goes over the impact (a diagnostic of :func:`converge`):
+    ``"slide"`` (it slides throughout, its direction possibly turning), ``"stick"`` (the slip
+    comes to rest and the cone holds it) or ``"reverse"`` (it comes to rest and slides on, on
+    the ray of Batlle 1996). The sliding flow du_t/dp = K_tt (−μ û) + K_tz of
+    :mod:`coinflight.core.impact` (Stronge 2000, ch. 5) is followed in 2,000 RK4 steps of the
+    normal impulse up to the rigid law's P_z; "at rest" is a slip below 1 % of the impact speed
+    (the law itself only gives the impulse at the end, not the slip on the way)."""
+    if mu == 0.0:
+        return "frictionless"
+    ktt = np.array([[k[0], k[1]], [k[1], k[3]]])
+    ktz = np.array([k[2], k[4]])
+    steps = 2000
+    h, tol = pz / steps, 1e-2 * float(np.linalg.norm(u0))
+    u = np.array(u0[:2], dtype=float)
+
+    def rate(x: np.ndarray) -> np.ndarray:
+        return ktt @ (-mu * x / np.linalg.norm(x)) + ktz
+
+    for _ in range(steps):
+        if np.linalg.norm(u) < tol:
+            holds = np.linalg.norm(np.linalg.solve(ktt, ktz)) <= mu
+            return "stick" if holds else "reverse"
+        k1 = rate(u)
+        k2 = rate(u + 0.5 * h * k1)
+        k3 = rate(u + 0.5 * h * k2)
+        k4 = rate(u + h * k3)
+        u = u + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+    return "slide"
+
+
+def frozen_limit(  # type: ignore[no-untyped-def]
+    n: np.ndarray,
+    v: np.ndarray,
+    lm: np.ndarray,
+    c,
+    zeta: float,
+    coupled: bool = False,
+    slip_speed: float | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """This phase's own rigid limit of one rim impact: (v, L) after it.
+
+    As t_c → 0 the coin does not turn during the contact, so the contact point's velocity is
+    u = u0 + K P (K the collision matrix at the lowest rim point, :mod:`coinflight.core.impact`)
+    and the phase's law at that point is all that is left: a short arc's force K_h d^(3/2)
+    with the damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = (3/2) K_h d^(1/2), m_eff = 1/K_zz (the
+    frictionless effective mass, as :func:`coinflight.core.contact_phase.rim_contact` sizes it),
+    clipped at zero, and friction −μ F_n u_t / sqrt(u_t² + v_ε²) at the same point
+    (v_ε = ``slip_speed``, by default :data:`~coinflight.core.contact_phase.SLIP_SPEED`).
+    The result does not depend on K_h (it sets the time scale only), so it is integrated with
+    K_h = 1 (SciPy's RK45, rtol 1e-10) until the force vanishes in restitution. ``coupled``:
+    m_eff = 1/(K_zz − μ K_zt·û0), the normal effective mass of a contact sliding in the
+    direction û0 (not what the phase does; with it a slide in a fixed direction restitutes with
+    e, as Stronge's law does)."""
+    from scipy.integrate import solve_ivp
+
+    from coinflight.core import contact_phase as cp
+    from coinflight.core import impact as im
+
+    mu, radius, hh = c.friction, c.radius, c.half_thickness
+    rc = im.contact_point(tuple(n), radius, hh)
+    w = im.angular_velocity(tuple(lm), tuple(n), c.i1, c.i3)
+    u0 = np.array(im.contact_velocity(tuple(v), w, rc))
+    kx = im.collision_matrix(rc, tuple(n), c.mass, c.i1, c.i3)
+    kmat = np.array([[kx[0], kx[1], kx[2]], [kx[1], kx[3], kx[4]], [kx[2], kx[4], kx[5]]])
+    m_eff = 1.0 / kx[5]
+    if coupled and mu > 0.0:
+        uh = u0[:2] / math.hypot(u0[0], u0[1])
+        m_eff = 1.0 / (kx[5] - mu * (kx[2] * uh[0] + kx[4] * uh[1]))
+    eps = cp.SLIP_SPEED if slip_speed is None else slip_speed
+
+    def normal(d: float, rate: float) -> float:
+        if d <= 0.0:
+            return 0.0
+        return max(0.0, d**1.5 + 2.0 * zeta * math.sqrt(1.5 * math.sqrt(d) * m_eff) * rate)
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        f = normal(y[0], -y[3])
+        ft = -mu * f * y[1:3] / math.sqrt(y[1] ** 2 + y[2] ** 2 + eps**2)
+        force = np.array([ft[0], ft[1], f])
+        return np.concatenate(([-y[3]], kmat @ force, force))
+
+    def released(t: float, y: np.ndarray) -> float:
+        return normal(y[0], -y[3]) if y[3] > 0.0 else 1.0
+
+    released.terminal, released.direction = True, -1  # type: ignore[attr-defined]
+    span = 50.0 * c.mass**0.4 * abs(u0[2]) ** -0.2  # ~30 contact durations
+    y0 = np.concatenate(([0.0], u0, [0.0, 0.0, 0.0]))
+    sol = solve_ivp(
+        rhs, (0.0, span), y0, rtol=1e-10, atol=1e-14, events=released, max_step=span / 2000
+    )
+    impulse = sol.y[4:7, -1]
+    return v + impulse / c.mass, lm + np.cross(rc, impulse)
+
+
+def straight_slide_restitution(
+    k: tuple[float, ...], direction: np.ndarray, mu: float, zeta: float
+) -> float:
+    """The kinematic restitution this phase's rim law gives, as t_c → 0, to an impact that
+    slides in the fixed direction ``direction`` throughout: the normal motion of the contact
+    point is that of the damped Hertz law of :func:`frozen_limit` with the mass
+    1/(K_zz − μ K_zt·û) while its damper is sized for 1/K_zz, so its damping ratio is
+    ζ sqrt(1 − μ K_zt·û / K_zz) and its restitution
+    :func:`coinflight.core.contact_phase.restitution_of` of that (Stronge's law: e itself)."""
+    from coinflight.core import contact_phase as cp
+
+    ratio = 1.0 - mu * (k[2] * direction[0] + k[4] * direction[1]) / k[5]
+    return float(cp.restitution_of(zeta * math.sqrt(ratio), 1.5))
+
+
+def _drill_patch(factor: float) -> None:
+    """Scale the arc's pivoting radius r_t (the Coulomb friction spread over the arc, μ r_t F_n
+    about the vertical) by ``factor`` in the phase's kernels: ``contact_phase._rim`` is wrapped
+    before any kernel using it is compiled, into the fresh numba cache :func:`main` made (the
+    package's cache is not touched). A benchmark-only knob (``--drill-factor``)."""
+    from numba import njit
+
+    from coinflight.core import contact_phase as cp
+
+    inner = cp._rim
+
+    @njit(cache=False)
+    def scaled(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):  # type: ignore[no-untyped-def]
+        f, q, rt, e = inner(
+            sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner
+        )
+        return f, q, rt * factor, e
+
+    cp._rim = scaled
+
+
+def follow(y: np.ndarray, c, span: float = 0.03) -> tuple[float, bool]:  # type: ignore[no-untyped-def]
+    """Follow the state y = (z, v, n, L) of a coin touching the table (in place) with the
+    contact phase of the contact record ``c`` until its contact ends, sampled every t_c/50:
+    the rims' force has been positive and is zero again. (time, whether it ended within
+    ``span`` s)."""
+    from coinflight.core import contact_phase as cp
+
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    deriv = np.empty(10)
+    touched, t, dt = False, 0.0, c.contact_time / 50.0
+    while t < span:
+        cp.advance(y, dt, c)
+        t += dt
+        cp._derivative(y, deriv, c, stiff, zeta)
+        if c.mass * (deriv[3] + c.g) > 0.0:
+            touched = True
+        elif touched:
+            return t, True
+    return t, False
+
+
 def converge(args: argparse.Namespace) -> None:
     """``--converge T1,T2,...``: does this phase's rim impact converge to the rigid law as
     t_c → 0? The same N impacts (``--seed``) for every t_c, each followed until its contact
     ends (sampled every t_c/50: the rims' force has been positive and is zero again, up to 30
     ms; those still in contact then are counted, not compared), against Stronge's impact
     followed by the same time of free fall: the velocity's distance, the angular momentum's (in
-    I1 ω), the normal impulse's ratio, medians and 90th percentiles, and the contact's length."""
+    I1 ω) and its vertical part's, the normal impulse's ratio, medians and 90th percentiles,
+    and the contact's length; then the same distances to this phase's own t_c → 0 limit
+    (:func:`frozen_limit`, followed by the same free fall), and, first, that limit's distance
+    to the rigid law, by how the rigid law's slip goes (:func:`slip_class`) and by J_t/(μ J_n)."""
     import bench_contact
     from coinflight.core import contact_phase as cp
     from coinflight.core import impact as im
 
     cp.SLIP_SPEED *= args.slip_factor  # before any kernel reading it is compiled (main)
+    if args.drill_factor != 1.0:
+        _drill_patch(args.drill_factor)
     g, mu = 9.81, args.friction
     c0 = bench_contact.contact(0.5, mu, resistance=args.resistance)
+    zeta = cp.damping_of(c0)
     rng = np.random.default_rng(args.seed)
     impacts = []
     while len(impacts) < args.n:
@@ -129,50 +287,93 @@ def converge(args: argparse.Namespace) -> None:
             impacts.append((n, v, w, lm))
     print(
         f"{args.n} rim impacts (seed {args.seed}), e 0.5, μ {mu:g}, resistances "
-        f"{c0.rolling_resistance:g} m, SLIP_SPEED {cp.SLIP_SPEED:g} m/s: this "
-        "phase followed to the end of its contact, against the rigid law (medians, 90 %):"
+        f"{c0.rolling_resistance:g} m, SLIP_SPEED {cp.SLIP_SPEED:g} m/s, arc's pivoting radius "
+        f"× {args.drill_factor:g}: this phase followed to the end of its contact, against the "
+        "rigid law (medians, 90 %):"
     )
-    deriv = np.empty(10)
+    rigid, limit, kinds, share = [], [], [], []
+    for n, v, w, lm in impacts:
+        v1, l1, _ = im.impact(
+            tuple(v), tuple(lm), tuple(n), c0.radius, c0.half_thickness, c0.mass, c0.i1, c0.i3,
+            0.5, mu,
+        )  # fmt: skip
+        rigid.append((np.array(v1), np.array(l1)))
+        limit.append(frozen_limit(n, v, lm, c0, zeta))
+        rc = im.contact_point(tuple(n), c0.radius, c0.half_thickness)
+        u0 = np.array(im.contact_velocity(tuple(v), tuple(w), rc))
+        k = im.collision_matrix(rc, tuple(n), c0.mass, c0.i1, c0.i3)
+        pz = c0.mass * (v1[2] - v[2])
+        kinds.append(slip_class(u0, k, mu, pz))
+        share.append(math.hypot(v1[0] - v[0], v1[1] - v[1]) / (mu * (v1[2] - v[2])) if mu else 1.0)
+    scales = [c0.i1 * float(np.linalg.norm(w)) for _, _, w, _ in impacts]
+    floor = np.array(
+        [
+            (
+                float(np.linalg.norm(lv - rv)),
+                float(np.linalg.norm(ll - rl)) / sc,
+                (lv[2] - v[2]) / (rv[2] - v[2]),
+            )
+            for (lv, ll), (rv, rl), sc, (_, v, _, _) in zip(
+                limit, rigid, scales, impacts, strict=True
+            )
+        ]
+    )
+    kinds_a, share_a = np.array(kinds), np.array(share)
+    groups = [(f"slip: {k}", kinds_a == k) for k in ("frictionless", "slide", "stick", "reverse")]
+    if mu > 0.0:
+        groups += [
+            ("J_t/(μ J_n) ≥ 0.999", share_a >= 0.999),
+            ("0.95-0.999", (share_a >= 0.95) & (share_a < 0.999)),
+            ("< 0.95", share_a < 0.95),
+        ]
+    print("  this phase's t_c → 0 limit against the rigid law (medians):")
+    for name, sel in groups:
+        if sel.any():
+            f50 = np.median(floor[sel], axis=0)
+            print(
+                f"    {name:22s} {int(sel.sum()):4d} impacts: velocity {f50[0]:.4f} m/s, angular "
+                f"momentum {f50[1]:.4f} I1 ω, J_n / rigid {f50[2]:.4f}"
+            )
     for tc in (float(x) for x in args.converge.split(",")):
         c = c0._replace(contact_time=tc)
-        stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
-        rows, stuck = [], 0
-        for n, v, w, lm in impacts:
-            v1, l1, _ = im.impact(
-                tuple(v), tuple(lm), tuple(n), c.radius, c.half_thickness, c.mass, c.i1, c.i3,
-                0.5, mu,
-            )  # fmt: skip
+        rows, own, stuck = [], [], 0
+        for (n, v, _, lm), (v1, l1), (vl, ll), scale in zip(
+            impacts, rigid, limit, scales, strict=True
+        ):
             y = np.array([im.lowest_depth(n[2], c.radius, c.half_thickness), *v, *n, *lm])
-            touched, t, dt, ended = False, 0.0, tc / 50.0, False
-            while t < 0.03:
-                cp.advance(y, dt, c)
-                t += dt
-                cp._derivative(y, deriv, c, stiff, zeta)
-                if c.mass * (deriv[3] + g) > 0.0:
-                    touched = True
-                elif touched:
-                    ended = True
-                    break
+            t, ended = follow(y, c)
             if not ended:
                 stuck += 1
                 continue
             fall = np.array([0.0, 0.0, g * t])
-            scale = c.i1 * float(np.linalg.norm(w))
             rows.append(
                 (
-                    float(np.linalg.norm(y[1:4] + fall - np.array(v1))),
-                    float(np.linalg.norm(y[7:10] - np.array(l1))) / scale,
+                    float(np.linalg.norm(y[1:4] + fall - v1)),
+                    float(np.linalg.norm(y[7:10] - l1)) / scale,
+                    abs(y[9] - l1[2]) / scale,
                     (y[3] + g * t - v[2]) / (v1[2] - v[2]),
                     t,
                 )
             )
-        r = np.array(rows)
+            own.append(
+                (
+                    float(np.linalg.norm(y[1:4] + fall - vl)),
+                    float(np.linalg.norm(y[7:10] - ll)) / scale,
+                    abs(y[9] - ll[2]) / scale,
+                )
+            )
+        r, o = np.array(rows), np.array(own)
         p50, p90 = np.median(r, axis=0), np.percentile(r, 90, axis=0)
+        o50 = np.median(o, axis=0)
         print(
             f"  t_c {tc * 1e3:6.3f} ms: velocity {p50[0]:.4f} m/s ({p90[0]:.4f}), angular "
-            f"momentum {p50[1]:.4f} I1 ω ({p90[1]:.4f}), J_n / rigid {p50[2]:.4f} (quartiles "
-            f"{np.percentile(r[:, 2], 25):.4f}-{np.percentile(r[:, 2], 75):.4f}), contact "
-            f"{p50[3] * 1e3:.3f} ms ({p90[3] * 1e3:.3f}); still in contact at 30 ms: {stuck}"
+            f"momentum {p50[1]:.4f} I1 ω ({p90[1]:.4f}; vertical part {p50[2]:.4f}), J_n / rigid "
+            f"{p50[3]:.4f} (quartiles {np.percentile(r[:, 3], 25):.4f}-"
+            f"{np.percentile(r[:, 3], 75):.4f}), contact {p50[4] * 1e3:.3f} ms "
+            f"({p90[4] * 1e3:.3f}); still in contact at 30 ms: {stuck}; to its own limit: "
+            f"velocity {o50[0]:.4f} m/s, angular momentum {o50[1]:.4f} I1 ω (vertical part "
+            f"{o50[2]:.4f})",
+            flush=True,
         )
 
 
@@ -263,7 +464,9 @@ def main() -> None:
     # set before numba is imported (the package's cache is not touched).
     pre = argparse.ArgumentParser(add_help=False)
     pre.add_argument("--slip-factor", type=float, default=1.0)
-    if pre.parse_known_args()[0].slip_factor != 1.0:
+    pre.add_argument("--drill-factor", type=float, default=1.0)
+    known = pre.parse_known_args()[0]
+    if known.slip_factor != 1.0 or known.drill_factor != 1.0:
         import normal_law
 
         normal_law.fresh_cache()
@@ -303,12 +506,20 @@ def main() -> None:
     parser.add_argument(
         "--slip-factor", type=float, default=None, help="SLIP_SPEED times F in --converge"
     )
+    parser.add_argument(
+        "--drill-factor",
+        type=float,
+        default=None,
+        help="the arc's pivoting radius times F in --converge (a benchmark-only knob)",
+    )
     args = parser.parse_args()
-    if not args.converge and (args.resistance is not None or args.slip_factor is not None):
-        parser.error("--slip-factor and --resistance are for --converge only")
+    knobs = (args.resistance, args.slip_factor, args.drill_factor)
+    if not args.converge and any(x is not None for x in knobs):
+        parser.error("--slip-factor, --drill-factor and --resistance are for --converge only")
     if args.converge:
         args.resistance = 1e-4 if args.resistance is None else args.resistance
         args.slip_factor = 1.0 if args.slip_factor is None else args.slip_factor
+        args.drill_factor = 1.0 if args.drill_factor is None else args.drill_factor
         converge(args)
         return
     solver = mc.FrictionSolver(args.cone, args.impratio, args.noslip, args.solimp)
