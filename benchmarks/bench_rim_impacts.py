@@ -143,7 +143,7 @@ def frozen_limit(  # type: ignore[no-untyped-def]
     lm: np.ndarray,
     c,
     zeta: float,
-    coupled: bool = False,
+    sliding_mass: bool = True,
     slip_speed: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """This phase's own rigid limit of one rim impact: (v, L) after it.
@@ -151,15 +151,14 @@ def frozen_limit(  # type: ignore[no-untyped-def]
     As t_c → 0 the coin does not turn during the contact, so the contact point's velocity is
     u = u0 + K P (K the collision matrix at the lowest rim point, :mod:`coinflight.core.impact`)
     and the phase's law at that point is all that is left: a short arc's force K_h d^(3/2)
-    with the damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = (3/2) K_h d^(1/2), m_eff = 1/K_zz (the
-    frictionless effective mass, as :func:`coinflight.core.contact_phase.rim_contact` sizes it),
-    clipped at zero, and friction −μ F_n u_t / sqrt(u_t² + v_ε²) at the same point
-    (v_ε = ``slip_speed``, by default :data:`~coinflight.core.contact_phase.SLIP_SPEED`).
-    The result does not depend on K_h (it sets the time scale only), so it is integrated with
-    K_h = 1 (SciPy's RK45, rtol 1e-10) until the force vanishes in restitution. ``coupled``:
-    m_eff = 1/(K_zz − μ K_zt·û0), the normal effective mass of a contact sliding in the
-    direction û0 (not what the phase does; with it a slide in a fixed direction restitutes with
-    e, as Stronge's law does)."""
+    with the damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = (3/2) K_h d^(1/2), clipped at zero, and
+    friction F_t = −μ F_n u_t / sqrt(u_t² + v_ε²) at the same point (v_ε = ``slip_speed``, by
+    default :data:`~coinflight.core.contact_phase.SLIP_SPEED`). m_eff is the normal effective
+    mass friction leaves, 1/(K_zz + K_zt·F_t/F_n) (:func:`coinflight.core.contact_phase.
+    _sliding_damping`, its floor too); with ``sliding_mass`` False the frictionless 1/K_zz,
+    the phase's damper before 2026-11-24 (for the measurements of its notes). The result does
+    not depend on K_h (it sets the time scale only), so it is integrated with K_h = 1 (SciPy's
+    RK45, rtol 1e-10) until the force vanishes in restitution."""
     from scipy.integrate import solve_ivp
 
     from coinflight.core import contact_phase as cp
@@ -171,25 +170,23 @@ def frozen_limit(  # type: ignore[no-untyped-def]
     u0 = np.array(im.contact_velocity(tuple(v), w, rc))
     kx = im.collision_matrix(rc, tuple(n), c.mass, c.i1, c.i3)
     kmat = np.array([[kx[0], kx[1], kx[2]], [kx[1], kx[3], kx[4]], [kx[2], kx[4], kx[5]]])
-    m_eff = 1.0 / kx[5]
-    if coupled and mu > 0.0:
-        uh = u0[:2] / math.hypot(u0[0], u0[1])
-        m_eff = 1.0 / (kx[5] - mu * (kx[2] * uh[0] + kx[4] * uh[1]))
     eps = cp.SLIP_SPEED if slip_speed is None else slip_speed
 
-    def normal(d: float, rate: float) -> float:
-        if d <= 0.0:
-            return 0.0
-        return max(0.0, d**1.5 + 2.0 * zeta * math.sqrt(1.5 * math.sqrt(d) * m_eff) * rate)
-
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
-        f = normal(y[0], -y[3])
-        ft = -mu * f * y[1:3] / math.sqrt(y[1] ** 2 + y[2] ** 2 + eps**2)
-        force = np.array([ft[0], ft[1], f])
+        share = -mu * y[1:3] / math.sqrt(y[1] ** 2 + y[2] ** 2 + eps**2)  # F_t / F_n
+        ratio = 1.0
+        if sliding_mass:
+            ratio = max(1.0 + (kx[2] * share[0] + kx[4] * share[1]) / kx[5], cp.SLIDING_MASS_FLOOR)
+        d, rate = y[0], -y[3]
+        f = 0.0
+        if d > 0.0:
+            damper = 2.0 * zeta * math.sqrt(1.5 * math.sqrt(d) / (kx[5] * ratio)) * rate
+            f = max(0.0, d**1.5 + damper)
+        force = np.array([share[0] * f, share[1] * f, f])
         return np.concatenate(([-y[3]], kmat @ force, force))
 
     def released(t: float, y: np.ndarray) -> float:
-        return normal(y[0], -y[3]) if y[3] > 0.0 else 1.0
+        return rhs(t, y)[6] if y[3] > 0.0 else 1.0
 
     released.terminal, released.direction = True, -1  # type: ignore[attr-defined]
     span = 50.0 * c.mass**0.4 * abs(u0[2]) ** -0.2  # ~30 contact durations
@@ -204,12 +201,13 @@ def frozen_limit(  # type: ignore[no-untyped-def]
 def straight_slide_restitution(
     k: tuple[float, ...], direction: np.ndarray, mu: float, zeta: float
 ) -> float:
-    """The kinematic restitution this phase's rim law gives, as t_c → 0, to an impact that
-    slides in the fixed direction ``direction`` throughout: the normal motion of the contact
-    point is that of the damped Hertz law of :func:`frozen_limit` with the mass
-    1/(K_zz − μ K_zt·û) while its damper is sized for 1/K_zz, so its damping ratio is
-    ζ sqrt(1 − μ K_zt·û / K_zz) and its restitution
-    :func:`coinflight.core.contact_phase.restitution_of` of that (Stronge's law: e itself)."""
+    """The kinematic restitution the phase's rim law gave before 2026-11-24 (its damper sized
+    for the frictionless mass 1/K_zz: :func:`frozen_limit` with ``sliding_mass`` False), as
+    t_c → 0, to an impact sliding in the fixed direction ``direction`` throughout: the normal
+    motion of the contact point is that of the damped Hertz law with the mass
+    1/(K_zz − μ K_zt·û), so its damping ratio is ζ sqrt(1 − μ K_zt·û / K_zz) and its
+    restitution :func:`coinflight.core.contact_phase.restitution_of` of that (Stronge's law,
+    and the phase now: e itself)."""
     from coinflight.core import contact_phase as cp
 
     ratio = 1.0 - mu * (k[2] * direction[0] + k[4] * direction[1]) / k[5]

@@ -54,10 +54,13 @@ def _forces(y, c):
     n, lm = tuple(y[4:7]), tuple(y[7:10])
     omega = angular_velocity(lm, n, c.i1, c.i3)
     rims = []
+    s, w = cp._tangent_basis(n)
     for sigma in (-1.0, 1.0):
+        # each rim's damper as the derivative sizes it: for the normal mass friction leaves
+        damping = cp._sliding_damping(sigma, y[0], tuple(y[1:4]), n, omega, s, w, c, zeta)
         fn, q, rt, _ = cp.rim_contact(
             sigma, y[0], tuple(y[1:4]), n, omega, c.radius, c.half_thickness, c.mass, c.i1,
-            c.i3, stiff, zeta, c.corner_radius,
+            c.i3, stiff, damping, c.corner_radius,
         )  # fmt: skip
         if fn > 0.0:
             rims.append((fn, np.array(q), rt))
@@ -137,12 +140,16 @@ def test_a_coin_rolling_without_slip_feels_no_friction():
     y = _state(tilt, 0.0, 1e-5, (0.0, 0.0, 0.0), omega)
     _, _, rims, w = _forces(y, c)
     ((_, q, _),) = rims
-    v = -np.array(cross(tuple(w), tuple(q)))
-    v[2] = 0.0
-    y = _state(tilt, 0.0, 1e-5, v, omega)
-    force, _, rims, _ = _forces(y, c)
-    ((fn, q2, _),) = rims
-    np.testing.assert_allclose(q2, q, atol=1e-12)  # q does not depend on v_h
+    # q depends on v_h only through the damper's size for a sliding rim (ζ / sqrt(ρ), module
+    # notes, "Restitution"): nm at this depth, so v = −ω × q(v) is found in a few steps.
+    for _ in range(6):
+        v = -np.array(cross(tuple(w), tuple(q)))
+        v[2] = 0.0
+        y = _state(tilt, 0.0, 1e-5, v, omega)
+        force, _, rims, _ = _forces(y, c)
+        ((fn, q2, _),) = rims
+        q, moved = q2, float(np.max(np.abs(q2 - q)))
+    assert moved < 1e-15
     assert float(np.hypot(*force[:2])) < 1e-9 * fn
     assert n[2] > 0.0
 
