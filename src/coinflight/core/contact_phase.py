@@ -608,10 +608,13 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     "Restitution"): ζ / sqrt(ρ), ρ = 1 + K_zt·(F_t/F_n) / K_zz at the rim's lowest point (the
     rigid law's contact point, :func:`coinflight.core.impact.contact_point`), F_t/F_n =
     −μ u_t / sqrt(u_t² + v_ε²) the regularised friction's share there, ρ at least
-    :data:`SLIDING_MASS_FLOOR`; ζ itself for a rim off the table."""
+    :data:`SLIDING_MASS_FLOOR`; ζ itself for a rim off the table or pressed all round (a face
+    flat on the table, whose force acts at its centre: there K_zt·F_t/F_n ≤ 0.075 μ K_zz at a
+    rim point of a nickel, and the rim law is not the face's slap, :func:`restitution_of`)."""
     corner = c.corner_radius
     core, hh = c.radius - corner, c.half_thickness - corner
-    if corner - z - sigma * hh * n[2] + core * s <= 0.0:  # _rim's test: no arc
+    a, b = corner - z - sigma * hh * n[2], core * s  # _rim's d(φ) = a + b cos φ
+    if a + b <= 0.0 or a >= b:  # no arc, or the whole circle: no lowest point
         return zeta
     rc = (
         sigma * hh * n[0] + core * w[0],
