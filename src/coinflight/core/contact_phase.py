@@ -432,9 +432,13 @@ rates: on 2,000 seeded tosses carried to rest (``bench_bounce.py``'s vigorous to
 contact ending, resistances 1e-4 m; against main at 507692d, 02:28 UTC) faces differ on 119,
 126 and 89 (e 0.5 with μ 0.3, μ 0.6, and each toss its own e, μ), all of them tosses this
 phase decides (1,423, 1,407, 1,402 of the 2,000), statuses on none; on edge 152 against 164,
-599 against 595, 269 against 278. The damper's size costs a step ~10 % (one thread, per CPU
-second: 0.87× and 0.91× main's landings carried to rest, ``bench_bounce.py --contact-rates
-300 --old-src``, load 3-4).
+599 against 595, 269 against 278 (paired, 16 in and 28 out, 41 and 37, 14 and 23: McNemar p
+≈ 0.07, 0.7, 0.14). The upright decision still ends only coins that end on edge at rest
+(``bench_contact.py 300 --pairs 0.5,0.3 0.5,0.6``: 27 of 213 handed at μ 0.3, 0
+disagreements). The steps are the same (a handed toss: mean 1,802 against 1,762, median 639
+against 636); each costs more, the damper's size computed at every derivative: main's
+landings carried to rest per CPU second in one thread were 1.10-1.30× these in two runs of
+``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy).
 """
 
 from __future__ import annotations
