@@ -15,8 +15,8 @@ direction, so the rigid law's impulse is known in closed form):
 * the arc's drilling friction μ r_t F_n has r_t ∝ sqrt(depth), so its angular impulse vanishes
   only as the square root of the rim's depth.
 
-The benchmark (``benchmarks/bench_rim_impacts.py``) is imported from its folder, as
-tests/test_bench_*.py do; nothing is written.
+The benchmark (``benchmarks/bench_rim_impacts.py``) is imported in process from its folder
+(put on sys.path; importing it patches nothing); nothing is written.
 """
 
 from __future__ import annotations
