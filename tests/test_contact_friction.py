@@ -175,3 +175,34 @@ def test_two_rims_stay_within_the_cone_together():
             assert math.isclose(force[2], total, rel_tol=1e-12, abs_tol=1e-14 * c.mass * c.g)
             assert float(np.hypot(*force[:2])) <= 0.4 * total * (1.0 + 1e-12)
     assert checked > 50
+
+
+def test_sliding_damper_is_continuous_as_the_arc_closes():
+    # A rim whose arc becomes the whole circle (a coin coming flat, the face's rim all pressed):
+    # the damper sized for the sliding normal mass (cp._sliding_damping) is taken at the arc's
+    # centroid, which moves continuously to the face's centre, so the damping and the force do
+    # not jump at a = b (they did by 1-4 % when ρ was taken at the lowest rim point and set to
+    # 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding 1 m/s either way, sinking 0.5 m/s.
+    c = _contact(1.0)
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    corner = c.corner_radius
+    core, hh = c.radius - corner, c.half_thickness - corner
+    tilt = 0.02
+    n = (math.sin(tilt), 0.0, math.cos(tilt))
+    s, w = cp._tangent_basis(n)
+    b = core * s
+    for vx in (1.0, -1.0):
+        v, omega = (vx, 0.0, -0.5), (0.0, 0.0, 0.0)
+        sides = []
+        for a in (b * (1.0 - 1e-9), b * (1.0 + 1e-9)):
+            z = corner - a + hh * n[2]  # σ = −1: a = corner − z + (h/2 − corner) n_z
+            damping = cp._sliding_damping(-1.0, z, v, n, omega, s, w, c, zeta)
+            fn = cp.rim_contact(
+                -1.0, z, v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiff,
+                damping, corner,
+            )[0]  # fmt: skip
+            sides.append((damping, fn))
+        (d0, f0), (d1, f1) = sides
+        assert abs(d0 / zeta - 1.0) > 1e-4  # friction does size this damper
+        assert math.isclose(d0, d1, rel_tol=1e-5)  # the arc opens as sqrt(b − a)
+        assert math.isclose(f0, f1, rel_tol=1e-4)

@@ -240,8 +240,8 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   1/K_zz restitutes a sliding impact with e′ ≠ e (0.46-0.54 at the start of the benchmark's
   200 random rim impacts, e = 0.5, μ = 0.3), where Stronge's law restitutes it with e (module
   notes, "Convergence of a rim impact"). Each rim's ζ is therefore taken as ζ / sqrt(ρ),
-  ρ = 1 + K_zt·(F_t/F_n) / K_zz at the rim's lowest point with the regularised friction's
-  share F_t/F_n (:func:`_sliding_damping`; ρ ≥ :data:`SLIDING_MASS_FLOOR`), so a rim impact
+  ρ = 1 + K_zt·(F_t/F_n) / K_zz at the centroid of the rim's arc (where the damper's m_eff
+  is taken) with the regularised friction's share F_t/F_n (:func:`_sliding_damping`; ρ ≥ :data:`SLIDING_MASS_FLOOR`), so a rim impact
   sliding one way restitutes with e, as Stronge's law does (a slip of fixed direction leaves
   the normal velocity linear in the normal impulse, so the energetic coefficient is the
   kinematic one: Stronge 2000, ch. 4). A face slap (linear, Kelvin-Voigt
@@ -549,6 +549,30 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
 
 
 @njit(cache=True)
+def _arc(a, b):
+    """(φ*, sin φ*, cos φ*) of the arc d(φ) = a + b cos φ > 0 (a + b > 0): φ* = arccos(−a/b),
+    π for the whole circle (a ≥ b); the sine from the cosine, sqrt((1 − cos φ*)(1 + cos φ*)),
+    exactly 0 at φ* = π."""
+    if a >= b:
+        return math.pi, 0.0, -1.0
+    cp = -a / b
+    return math.acos(cp), math.sqrt((1.0 - cp) * (1.0 + cp)), cp
+
+
+@njit(cache=True)
+def _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp):
+    """The centroid of rim σ's arc of half-angle φ* relative to the centre of mass, m: σ (h/2) n
+    + r (sin φ*/φ*) ŵ − a Z (``radius``, ``hh`` those of the core cylinder, a = ``corner``); the
+    face's centre less a Z for the whole circle."""
+    k = radius * sp / phi
+    return (
+        sigma * hh * n[0] + k * w[0],
+        sigma * hh * n[1] + k * w[1],
+        sigma * hh * n[2] + k * w[2] - corner,
+    )
+
+
+@njit(cache=True)
 def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):
     """:func:`rim_contact` with the coin's tangent basis (s, ŵ) of :func:`_tangent_basis` given
     (it depends on n alone: :func:`_derivative` computes it once for both rims). The arc's
@@ -561,12 +585,7 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
     b = radius * s
     if a + b <= 0.0:
         return 0.0, (0.0, 0.0, 0.0), 0.0, 0.0
-    if a >= b:
-        phi, sp, cp = math.pi, 0.0, -1.0
-    else:
-        cp = -a / b
-        phi = math.acos(cp)
-        sp = math.sqrt((1.0 - cp) * (1.0 + cp))
+    phi, sp, cp = _arc(a, b)
     i0 = 2.0 * phi  # ∫ dφ over the arc
     ic = 2.0 * sp  # ∫ cos φ dφ
     icc = phi + sp * cp  # ∫ cos² φ dφ
@@ -581,12 +600,7 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
     a0 = -(v[2] + sigma * hh * wn[2])
     a1 = -radius * ww[2]
     # Damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = 2 φ κ, m_eff at the arc's centroid.
-    k = radius * sp / phi
-    centroid = (
-        sigma * hh * n[0] + k * w[0],
-        sigma * hh * n[1] + k * w[1],
-        sigma * hh * n[2] + k * w[2] - corner,
-    )
+    centroid = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
     up = (0.0, 0.0, 1.0)
     m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
     gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
@@ -609,22 +623,27 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
 @njit(cache=True)
 def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     """ζ of rim σ's damper for the normal effective mass its friction leaves (module notes,
-    "Restitution"): ζ / sqrt(ρ), ρ = 1 + K_zt·(F_t/F_n) / K_zz at the rim's lowest point (the
-    rigid law's contact point, :func:`coinflight.core.impact.contact_point`), F_t/F_n =
-    −μ u_t / sqrt(u_t² + v_ε²) the regularised friction's share there, ρ at least
-    :data:`SLIDING_MASS_FLOOR`; ζ itself for a rim off the table or pressed all round (a face
-    flat on the table, whose force acts at its centre: there K_zt·F_t/F_n ≤ 0.075 μ K_zz at a
-    rim point of a nickel, and the rim law is not the face's slap, :func:`restitution_of`)."""
+    "Restitution"): ζ / sqrt(ρ), ρ = 1 + K_zt·(F_t/F_n) / K_zz with the mobility K, the slip
+    u_t and F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) (the regularised friction's share) all taken at
+    the centroid of the rim's arc, the point whose normal mass 1/K_zz :func:`_rim` sizes the
+    damper for (friction acts at the centre of pressure q, which depends on the damper's own
+    force; q and the centroid lie on one line, both tend to the lowest point for a short arc
+    and to the face's centre as the arc closes, so ρ is continuous as the arc becomes the whole
+    circle, near 1 for a coin flat on the table); ρ at least :data:`SLIDING_MASS_FLOOR`; ζ
+    itself for a rim off the table.
+
+    ρ ≤ 0 where μ K_zt·u_t/sqrt(u_t² + v_ε²) ≥ K_zz: friction then drives the contact into the
+    table faster than the normal force pushes it out, a Painlevé-type jam. This needs μ above μ* = K_zz / max over slip directions of
+    K_zt·û (for a nickel μ* ≈ 1.12 at a tilt near 61°; the floor 0.1 already bites from μ ≈
+    1.008). The range μ > 1 has not been validated against Stronge's law (the benchmark's
+    impacts are at μ ≤ 1)."""
     corner = c.corner_radius
     core, hh = c.radius - corner, c.half_thickness - corner
     a, b = corner - z - sigma * hh * n[2], core * s  # _rim's d(φ) = a + b cos φ
-    if a + b <= 0.0 or a >= b:  # no arc, or the whole circle: no lowest point
+    if a + b <= 0.0:  # no arc
         return zeta
-    rc = (
-        sigma * hh * n[0] + core * w[0],
-        sigma * hh * n[1] + core * w[1],
-        sigma * hh * n[2] + core * w[2] - corner,
-    )
+    phi, sp, _ = _arc(a, b)
+    rc = _arc_centroid(sigma, n, w, core, hh, corner, phi, sp)
     u = cross(omega, rc)
     ux, uy = v[0] + u[0], v[1] + u[1]
     # K b·Z = b·Z/m + (rc × b)·I⁻¹(rc × Z) (impact._coupling), I⁻¹(rc × Z) shared by b = Z, u_t.
