@@ -645,15 +645,26 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     phi, sp, _ = _arc(a, b)
     rc = _arc_centroid(sigma, n, w, core, hh, corner, phi, sp)
     u = cross(omega, rc)
-    ux, uy = v[0] + u[0], v[1] + u[1]
-    # K b·Z = b·Z/m + (rc × b)·I⁻¹(rc × Z) (impact._coupling), I⁻¹(rc × Z) shared by b = Z, u_t.
+    # K b·Z = b·Z/m + (rc × b)·I⁻¹(rc × Z) (impact._coupling), I⁻¹(rc × Z) shared by b = Z, x, y.
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
     turn = inverse_inertia_apply(arm, n, c.i1, c.i3)
     kzz = 1.0 / c.mass + dot(arm, turn)
-    kzu = dot(cross(rc, (ux, uy, 0.0)), turn)  # K_zt·u_t
-    share = c.friction / math.sqrt(ux * ux + uy * uy + SLIP_SPEED * SLIP_SPEED)
-    ratio = 1.0 - share * kzu / kzz
-    return zeta / math.sqrt(max(ratio, SLIDING_MASS_FLOOR))
+    kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
+    kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
+    ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], c.friction, SLIP_SPEED)
+    return zeta / math.sqrt(ratio)
+
+
+@njit(cache=True)
+def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
+    """ρ = max(1 + K_zt·(F_t/F_n) / K_zz, :data:`SLIDING_MASS_FLOOR`) of a contact point
+    whose collision matrix has the normal row (K_zx, K_zy, K_zz) (1/kg) and whose slip is
+    (u_x, u_y) (m/s), F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) the regularised friction's share
+    (v_ε = ``slip_speed``): the ratio of the normal effective mass's inverse with that friction,
+    K_zz + K_zt·F_t/F_n, to the frictionless K_zz (Stronge 2000, eq 5.7 and ch. 4), as
+    :func:`_sliding_damping` sizes a rim's damper with it."""
+    share = friction / math.sqrt(ux * ux + uy * uy + slip_speed * slip_speed)
+    return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
 
 
 @njit(cache=True)
