@@ -898,7 +898,8 @@ def upright_decided(y, c, stiffness, zeta, budget):
     turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
     of the band's m g h′; the friction the turn and the rolling resistance need,
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
-    both rims pressed (:func:`rim_contact`, with the damper: the force they exert now); the
+    both rims pressed (:func:`rim_contact`, with each rim's damper as :func:`_derivative` sizes
+    it, :func:`_sliding_damping`: the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
     coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
@@ -939,25 +940,30 @@ def upright_decided(y, c, stiffness, zeta, budget):
     turn = mass * vh * yaw
     if math.sqrt(turn * turn + resist * resist) > UPRIGHT_MARGIN * c.friction * weight:
         return False
+    s, w = _tangent_basis(n)
     for sigma in (-1.0, 1.0):
-        fn, _, _, _ = rim_contact(
+        damping = zeta
+        if c.friction > 0.0:  # each rim's damper as _derivative sizes it
+            damping = _sliding_damping(sigma, y[0], v, n, omega, s, w, c, zeta)
+        fn, _, _, _ = _rim(
             sigma,
             y[0],
             v,
             n,
             omega,
+            s,
+            w,
             radius,
             c.half_thickness,
             mass,
             i1,
             i3,
             stiffness,
-            zeta,
+            damping,
             c.corner_radius,
         )
         if fn <= 0.0:
             return False
-    _, w = _tangent_basis(n)
     core = radius - c.corner_radius  # r − a, the rim circle's radius
     low = (core * w[0], core * w[1], core * w[2] - c.corner_radius)  # the band middle's lowest
     u = cross(omega, low)
