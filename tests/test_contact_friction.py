@@ -63,7 +63,7 @@ def _expected_damping(sigma, y, c, zeta):
     rc = sigma * hh * n + core * math.sin(phi) / phi * down / s - np.array([0, 0, corner])
     omega = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
     u = v + np.cross(omega, rc)
-    kxx, kxy, kxz, kyy, kyz, kzz = collision_matrix(tuple(rc), tuple(n), c.mass, c.i1, c.i3)
+    _, _, kxz, _, kyz, kzz = collision_matrix(tuple(rc), tuple(n), c.mass, c.i1, c.i3)
     rho = 1.0 - c.friction * (kxz * u[0] + kyz * u[1]) / (kzz * math.hypot(u[0], u[1], 5e-3))
     return zeta / math.sqrt(max(rho, 0.1))
 

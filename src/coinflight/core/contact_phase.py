@@ -54,7 +54,11 @@ by the stiffness of the compliant contact and of the regularised friction (the e
 stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
 the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
 steps), not a cheaper step. The figures below, to "Upright rollers", are from before the
-upright decision and these changes.
+upright decision and these changes. All figures of these notes not dated otherwise (the
+costs, edge rates and MuJoCo comparisons below, the upright decision's counts) were measured
+before the sliding-mass damper (2026-11-24, "Restitution"), which moves single landings as a
+change of the dynamics does ("Convergence of a rim impact": faces of 2,000 tosses, edges not
+significantly).
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
@@ -241,12 +245,12 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   200 random rim impacts, e = 0.5, μ = 0.3), where Stronge's law restitutes it with e (module
   notes, "Convergence of a rim impact"). Each rim's ζ is therefore taken as ζ / sqrt(ρ),
   ρ = 1 + K_zt·(F_t/F_n) / K_zz at the centroid of the rim's arc (where the damper's m_eff
-  is taken) with the regularised friction's share F_t/F_n (:func:`_sliding_damping`; ρ ≥ :data:`SLIDING_MASS_FLOOR`), so a rim impact
-  sliding one way restitutes with e, as Stronge's law does (a slip of fixed direction leaves
-  the normal velocity linear in the normal impulse, so the energetic coefficient is the
-  kinematic one: Stronge 2000, ch. 4). A face slap (linear, Kelvin-Voigt
-  clipped at zero force: Schwager & Pöschel, Granular Matter 9:465, 2007) restitutes with a
-  slightly different e (:func:`restitution_of`).
+  is taken) with the regularised friction's share F_t/F_n (:func:`_sliding_damping`; ρ ≥
+  :data:`SLIDING_MASS_FLOOR`), so a rim impact sliding one way restitutes with e, as Stronge's law
+  does (a slip of fixed direction leaves the normal velocity linear in the normal impulse, so the
+  energetic coefficient is the kinematic one: Stronge 2000, ch. 4). A face slap (linear,
+  Kelvin-Voigt clipped at zero force: Schwager & Pöschel, Granular Matter 9:465, 2007) restitutes
+  with a slightly different e (:func:`restitution_of`).
 * **Friction.** Coulomb's, regularised (a linear slope below :data:`SLIP_SPEED`, as in
   MuJoCo's soft contacts and Leine's regularised Euler-disk models), at the arc's centre of
   pressure: F_t = −μ F_n u_t / sqrt(|u_t|² + v_ε²), u_t the horizontal velocity of the coin's
@@ -390,19 +394,21 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
   found by the frozen limit and by switching each off:
 
   1. **A floor, not slow convergence** (a defect, fixed): the phase converged at order 4/5 to
-     its own limit (0.084 ... 0.0054 m/s from it), but that limit was not Stronge's: 0.0058
-     m/s, J_n +0.9 % (medians; 0.0048 m/s, J_n +1.3 % on the impacts sliding one way). The
-     normal motion of a sliding contact point has the mass 1/(K_zz + K_zt·F_t/F_n) while the
-     damper was sized for 1/K_zz, so it restituted with e′ ≠ e (see "Restitution" above; a
-     planar sliding impact at e 0.5: e′ = 0.5457, J_n 3.0 % above Stronge's at any t_c). The
-     median of a first-order term plus that floor looked like half order. Not the stick/slip
-     transition: by the rigid law's slip, 179 of the 200 impacts slide throughout (their
-     direction turning), 15 stick, 6 reverse, and the sliding ones carried the floor; not the
-     friction's regularisation (the limit with v_ε × 0.01, and the phase with
+     its own limit (0.084 ... 0.0054 m/s from it), but that limit was not Stronge's: 0.0061
+     m/s (0.00613: ``frozen_limit(..., sliding_mass=False)``), J_n +0.9 % (medians; 0.0048
+     m/s, J_n +1.3 % on the impacts sliding one way). The normal motion of a sliding contact point
+     has the mass 1/(K_zz + K_zt·F_t/F_n) while the damper was sized for 1/K_zz, so it restituted
+     with e′ ≠ e (see "Restitution" above; a planar sliding impact at e 0.5: e′ = 0.5457, J_n 3.0 %
+     above Stronge's at any t_c). The median of a first-order term plus that floor looked like half
+     order. Not the stick/slip transition: by the rigid law's slip, 179 of the 200 impacts slide
+     throughout (their direction turning), 15 stick, 6 reverse, and the sliding ones carried the
+     floor; not the friction's regularisation (the limit with v_ε × 0.01, and the phase with
      :data:`SLIP_SPEED` × 0.1, unchanged to the third digit); not the integrator (the frozen
      limit is integrated apart, at rtol 1e-10; the phase at :data:`RTOL`/100 moves a planar
      sliding impact by 4e-6 m/s at t_c 0.125 and 0.031 ms). Two rims touching in one impact
-     were not examined: the floor is accounted for without them.
+     were not examined: the floor is accounted for without them (and each rim's ρ uses its
+     own single-contact K, the two contacts' coupled normal mass ignored, for upright rollers
+     too: :func:`_sliding_damping`).
   2. **The arc's pivoting friction** (physics of the compliant model, kept): μ r_t F_n about
      the vertical, r_t ≈ r φ*/√3 ∝ sqrt(depth) ∝ t_c^(2/5), so its angular impulse vanishes
      only as t_c^(2/5): the vertical part of the angular-momentum error, 0.118, 0.081, 0.060,
@@ -412,31 +418,42 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      softness's, like the resistances' ℓ F_n (which do not vanish at all: with ℓ_r = ℓ_p =
      1e-4 m the angular momentum stays 0.046 I1 ω from the rigid law at 0.031 ms).
 
-* μ 0.3 now (the damper for the sliding mass, :func:`_sliding_damping`): the limit is
-  Stronge's law to 0.0005 m/s (median; 0.00002 on the impacts sliding one way, 0.0019 on those
-  whose slip turns by more than J_t/(μ J_n) < 0.95, 0.003 on those that stick or reverse,
-  where a viscous damper and Stronge's energetic coefficient still part), and the phase
-  converges to it as the frictionless one does: velocity 0.083, 0.047, 0.028, 0.016, 0.0093,
+* μ 0.3 now (the damper for the sliding mass, :func:`_sliding_damping`, ρ at the arc's
+  centroid; ``--converge`` prints these): the limit is Stronge's law to 0.00056 m/s (median
+  of the 200; 90th percentile 0.0043, largest 0.030 m/s, 1.6 % of the lowest point's approach
+  speed, on an impact whose slip turns), 0.00002 on the 19 sliding one way (J_t/(μ J_n) ≥
+  0.999), 0.0019 (90 % 0.0079) on the 84 whose slip turns most (J_t/(μ J_n) < 0.95), 0.003
+  on those that stick or reverse, where a viscous damper and Stronge's energetic coefficient
+  still part. "Restitutes with e" holds for a slip much faster than :data:`SLIP_SPEED`: below
+  it the regularised friction is weaker than Coulomb's and the limit parts from the rigid
+  law (a planar sliding impact scaled down, its slip ~20 v_ε: J_n 0.990 of Stronge's; ~2 v_ε:
+  0.90). The phase converges to the limit as the frictionless one does (measured with ρ at
+  the lowest rim point, 2026-11-24 before 03:20 UTC; at 1 ms with ρ at the centroid and
+  resistances 1e-4 m: 0.082 m/s, J_n 1.053): velocity 0.083, 0.047, 0.028, 0.016, 0.0093,
   0.0058 m/s, J_n 1.051, 1.027, 1.014, 1.008, 1.005, 1.003 of the rigid law's; without the
   arc's pivoting friction the angular momentum 0.12 ... 0.0092 I1 ω (frictionless 0.0090),
   with it 0.20, 0.13, 0.088, 0.062, 0.043, 0.031 I1 ω (the t_c^(2/5) above). At the default
   t_c = 1 ms a rim impact is still 0.083 m/s and 0.20 I1 ω from the rigid law, J_n +5 %: the
   phase's impacts are not converged at its default softness, as they were not before.
-* μ 0.6 now: more impacts stick (63 of 200; 127 slide throughout, 10 reverse), and the limit
-  is 0.0056 m/s from Stronge's on those that stick (0.0013 on the sliding ones); the phase
-  0.102, 0.057, 0.036, 0.023, 0.016, 0.011 m/s from the rigid law (0.0086 from its own limit
-  at 0.031 ms).
+* μ 0.6 (ρ at the lowest rim point, before 03:20 UTC): more impacts stick (63 of 200; 127 slide
+  throughout, 10 reverse), and the limit is 0.0056 m/s from Stronge's on those that stick (0.0013 on
+  the sliding ones); the phase 0.102, 0.057, 0.036, 0.023, 0.016, 0.011 m/s from the rigid law
+  (0.0086 from its own limit at 0.031 ms).
 
 The fix moves outcomes as a change of the dynamics does in this chaotic phase, not the edge
 rates: on 2,000 seeded tosses carried to rest (``bench_bounce.py``'s vigorous tosses, the
-contact ending, resistances 1e-4 m; against main at 507692d, 02:28 UTC) faces differ on 119,
-126 and 89 (e 0.5 with μ 0.3, μ 0.6, and each toss its own e, μ), all of them tosses this
-phase decides (1,423, 1,407, 1,402 of the 2,000), statuses on none; on edge 152 against 164,
-599 against 595, 269 against 278 (paired, 16 in and 28 out, 41 and 37, 14 and 23: McNemar p
-≈ 0.07, 0.7, 0.14). The upright decision still ends only coins that end on edge at rest
-(``bench_contact.py 300 --pairs 0.5,0.3 0.5,0.6``: 27 of 213 handed at μ 0.3, 0
-disagreements). The steps are the same (a handed toss: mean 1,802 against 1,762, median 639
-against 636); each costs more, the damper's size computed at every derivative: main's
+contact ending, resistances 1e-4 m; against main at 507692d, 02:28 UTC; ρ at the arc's
+centroid and the upright decision's rims with their sliding-mass dampers, 03:30 UTC, load
+6-10) faces differ on 126, 125 and 92 (e 0.5 with μ 0.3, μ 0.6, and each toss its own e, μ),
+all of them tosses this phase decides (1,423, 1,407, 1,402 of the 2,000), statuses on none;
+on edge 152 against 164, 597 against 595, 268 against 278 (paired, 16 in and 28 out, 36 and
+34, 15 and 25: McNemar p 0.10, 0.90, 0.15). With ρ at the lowest rim point (02:50 UTC) they
+were 119, 126, 89 and 152, 599, 269: the two kernels differ on 52, 77, 52 faces, as chaos
+moves them. The upright decision still ends only coins that end on edge at rest
+(``bench_contact.py 300 --pairs 0.5,0.3 0.5,0.6``, its rims' force with these dampers: 27 of
+213 handed at μ 0.3, 89 of 207 at μ 0.6, 0 disagreements, 03:30 UTC). The steps are the same
+(a handed toss at μ 0.3: mean 1,787 now, 1,802 with ρ at the lowest point, 1,762 on main;
+median 639 against 636); each costs more, the damper's size computed at every derivative: main's
 landings carried to rest per CPU second in one thread were 1.10-1.30× these in two runs of
 ``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy).
 """
@@ -478,7 +495,9 @@ frictionless one that :func:`_sliding_damping` sizes the damper for (ρ ≤ 0 wo
 whose friction drives it into the table, where no mass fits; the damper is then at most
 sqrt(10) times its frictionless size). At the start of the 200 random rim impacts of
 ``benchmarks/bench_rim_impacts.py`` (seed 1; the slip's direction then): ρ in 0.75-1.27 at
-μ = 0.3, 0.50-1.54 at μ = 0.6, 0.17-1.89 at μ = 1."""
+μ = 0.3, 0.50-1.54 at μ = 0.6, 0.17-1.89 at μ = 1 (ρ at the lowest rim point then). ρ ≤ 0
+needs μ above μ* = K_zz / max K_zt·û, 1.12 for a nickel (near a tilt of 61°), and the floor
+bites from μ ≈ 1.008; μ above 1 is not validated (:func:`_sliding_damping`)."""
 UPRIGHT_DECISION = True
 """Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
 :func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
@@ -633,10 +652,15 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     itself for a rim off the table.
 
     ρ ≤ 0 where μ K_zt·u_t/sqrt(u_t² + v_ε²) ≥ K_zz: friction then drives the contact into the
-    table faster than the normal force pushes it out, a Painlevé-type jam. This needs μ above μ* = K_zz / max over slip directions of
-    K_zt·û (for a nickel μ* ≈ 1.12 at a tilt near 61°; the floor 0.1 already bites from μ ≈
-    1.008). The range μ > 1 has not been validated against Stronge's law (the benchmark's
-    impacts are at μ ≤ 1)."""
+    table faster than the normal force pushes it out, a Painlevé-type jam. This needs μ above
+    μ* = K_zz / max over slip directions of K_zt·û (for a nickel μ* ≈ 1.12 at a tilt near 61°; the
+    floor 0.1 already bites from μ ≈ 1.008). The range μ > 1 has not been validated against
+    Stronge's law (the benchmark's impacts are at μ ≤ 1).
+
+    Each rim's ρ uses that rim's own single-contact K: when both rims are pressed (an impact
+    across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
+    normal mass is ignored, and the damper is not the one that restitutes such an impact with
+    e (not examined: the rigid law has one contact point)."""
     corner = c.corner_radius
     core, hh = c.radius - corner, c.half_thickness - corner
     a, b = corner - z - sigma * hh * n[2], core * s  # _rim's d(φ) = a + b cos φ
