@@ -152,3 +152,18 @@ def test_arc_pivot_radius_grows_as_the_square_root_of_the_depth():
     s = math.sqrt(1.0 - n[2] ** 2)
     phi = math.sqrt(2.0 * 1e-6 / (c.radius * s))
     assert radii[1] == pytest.approx(c.radius * phi / math.sqrt(3.0), rel=1e-3)
+
+
+def test_slip_class_follows_the_rigid_laws_slip():
+    # The planar impact slides throughout at μ 0.3 (Stronge's J_t = μ J_n); at μ 2 its slip
+    # comes to rest within the impact (J_t < μ J_n) and the cone holds it (|K_tt⁻¹ K_tz| ≤ μ):
+    # slip_class's terminal event (the slip below 1 % of the impact speed) has to fire.
+    for mu, expected in ((0.3, "slide"), (2.0, "stick")):
+        c, n, v, w, lm = planar(mu)
+        p = rigid_impulse(c, n, v, lm, mu)
+        rc = im.contact_point(tuple(n), c.radius, c.half_thickness)
+        u0 = np.array(im.contact_velocity(tuple(v), tuple(w), rc))
+        k = im.collision_matrix(rc, tuple(n), c.mass, c.i1, c.i3)
+        assert rim.slip_class(u0, k, mu, p[2]) == expected
+        sliding = math.isclose(math.hypot(p[0], p[1]), mu * p[2], rel_tol=1e-6)
+        assert sliding == (expected == "slide")
