@@ -44,6 +44,10 @@ def test_the_helpers_build_through_friction_solver(monkeypatch):
         assert str(refused.value) == _words(timeconst=tau)
 
 
+CONVERGE_ONLY = "--slip-factor, --drill-factor and --resistance"
+"""The start of bench_rim_impacts.py's refusal of its ``--converge``-only options alone."""
+
+
 @pytest.mark.parametrize(
     ("script", "args", "said"),
     [
@@ -52,8 +56,21 @@ def test_the_helpers_build_through_friction_solver(monkeypatch):
         ("bench_mujoco_edges.py", ["--timeconst", "0"], "argument --timeconst: "),
         ("bench_edge_trace.py", ["--solimp", "0.9,1,0.001"], "argument --solimp: "),
         ("bench_rim_impacts.py", ["--solimp", "abc"], "argument --solimp: "),
-        ("bench_rim_impacts.py", ["--resistance", "1e-3"], "--slip-factor and --resistance"),
-        ("bench_rim_impacts.py", ["--slip-factor", "3"], "--slip-factor and --resistance"),
+        (
+            "bench_rim_impacts.py",
+            ["--resistance", "1e-3"],
+            "--slip-factor, --drill-factor and --resistance",
+        ),
+        (
+            "bench_rim_impacts.py",
+            ["--slip-factor", "3"],
+            "--slip-factor, --drill-factor and --resistance",
+        ),
+        (
+            "bench_rim_impacts.py",
+            ["--drill-factor", "0"],
+            "--slip-factor, --drill-factor and --resistance",
+        ),
     ],
 )
 def test_bad_mujoco_settings_are_one_line_and_exit_2(script, args, said, tmp_path):

@@ -22,7 +22,7 @@ from _kernels import coin_contact
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
 from coinflight.core.contact import CONTACT_ENDING
-from coinflight.core.impact import angular_velocity, cross, lowest_depth
+from coinflight.core.impact import angular_velocity, collision_matrix, cross, lowest_depth
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")
@@ -45,6 +45,29 @@ def _state(tilt, azimuth, depth, v, omega):
     return np.array([z, *v, *n, *lm])
 
 
+def _expected_damping(sigma, y, c, zeta):
+    """Rim σ's damping ratio for the normal mass its friction leaves, computed apart from
+    cp._sliding_damping: ζ/sqrt(max(ρ, 0.1)), ρ = 1 − μ K_zt·u_t / (K_zz sqrt(u_t² + v_ε²)),
+    K the collision matrix (impact.collision_matrix, Stronge 2000 eq 5.7) and u the material
+    velocity at the centroid of the rim's arc (its half-angle φ* = arccos(−a/b) of the arc
+    d(φ) = a + b cos φ > 0; the whole circle when a ≥ b)."""
+    z, v, n, lm = y[0], np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
+    corner = c.corner_radius
+    core, hh = c.radius - corner, c.half_thickness - corner
+    down = np.array([0.0, 0.0, -1.0]) + n[2] * n  # the coin plane's most downward direction
+    s = float(np.linalg.norm(down))
+    a, b = corner - z - sigma * hh * n[2], core * s
+    if a + b <= 0.0:
+        return zeta
+    phi = math.pi if a >= b else math.acos(-a / b)
+    rc = sigma * hh * n + core * math.sin(phi) / phi * down / s - np.array([0, 0, corner])
+    omega = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
+    u = v + np.cross(omega, rc)
+    _, _, kxz, _, kyz, kzz = collision_matrix(tuple(rc), tuple(n), c.mass, c.i1, c.i3)
+    rho = 1.0 - c.friction * (kxz * u[0] + kyz * u[1]) / (kzz * math.hypot(u[0], u[1], 5e-3))
+    return zeta / math.sqrt(max(rho, 0.1))
+
+
 def _forces(y, c):
     """(total contact force (3,), torque (3,), [(F_n, q, r_t) per touching rim], ω)."""
     out = np.empty(10)
@@ -55,9 +78,11 @@ def _forces(y, c):
     omega = angular_velocity(lm, n, c.i1, c.i3)
     rims = []
     for sigma in (-1.0, 1.0):
+        # each rim's damper for the normal mass friction leaves, computed apart
+        damping = _expected_damping(sigma, y, c, zeta)
         fn, q, rt, _ = cp.rim_contact(
             sigma, y[0], tuple(y[1:4]), n, omega, c.radius, c.half_thickness, c.mass, c.i1,
-            c.i3, stiff, zeta, c.corner_radius,
+            c.i3, stiff, damping, c.corner_radius,
         )  # fmt: skip
         if fn > 0.0:
             rims.append((fn, np.array(q), rt))
@@ -137,12 +162,16 @@ def test_a_coin_rolling_without_slip_feels_no_friction():
     y = _state(tilt, 0.0, 1e-5, (0.0, 0.0, 0.0), omega)
     _, _, rims, w = _forces(y, c)
     ((_, q, _),) = rims
-    v = -np.array(cross(tuple(w), tuple(q)))
-    v[2] = 0.0
-    y = _state(tilt, 0.0, 1e-5, v, omega)
-    force, _, rims, _ = _forces(y, c)
-    ((fn, q2, _),) = rims
-    np.testing.assert_allclose(q2, q, atol=1e-12)  # q does not depend on v_h
+    # q depends on v_h only through the damper's size for a sliding rim (ζ / sqrt(ρ), module
+    # notes, "Restitution"): nm at this depth, so v = −ω × q(v) is found in a few steps.
+    for _ in range(6):
+        v = -np.array(cross(tuple(w), tuple(q)))
+        v[2] = 0.0
+        y = _state(tilt, 0.0, 1e-5, v, omega)
+        force, _, rims, _ = _forces(y, c)
+        ((fn, q2, _),) = rims
+        q, moved = q2, float(np.max(np.abs(q2 - q)))
+    assert moved < 1e-15
     assert float(np.hypot(*force[:2])) < 1e-9 * fn
     assert n[2] > 0.0
 
@@ -168,3 +197,74 @@ def test_two_rims_stay_within_the_cone_together():
             assert math.isclose(force[2], total, rel_tol=1e-12, abs_tol=1e-14 * c.mass * c.g)
             assert float(np.hypot(*force[:2])) <= 0.4 * total * (1.0 + 1e-12)
     assert checked > 50
+
+
+def test_sliding_damper_is_continuous_as_the_arc_closes():
+    # A rim whose arc becomes the whole circle (a coin coming flat, the face's rim all pressed):
+    # the damper sized for the sliding normal mass (cp._sliding_damping) is taken at the arc's
+    # centroid, which moves continuously to the face's centre, so the damping and the force do
+    # not jump at a = b (they did by 1-4 % when ρ was taken at the lowest rim point and set to
+    # 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding 1 m/s either way, sinking 0.5 m/s.
+    c = _contact(1.0)
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    corner = c.corner_radius
+    core, hh = c.radius - corner, c.half_thickness - corner
+    tilt = 0.02
+    n = (math.sin(tilt), 0.0, math.cos(tilt))
+    s, w = cp._tangent_basis(n)
+    b = core * s
+    for vx in (1.0, -1.0):
+        v, omega = (vx, 0.0, -0.5), (0.0, 0.0, 0.0)
+        sides = []
+        for a in (b * (1.0 - 1e-9), b * (1.0 + 1e-9)):
+            z = corner - a + hh * n[2]  # σ = −1: a = corner − z + (h/2 − corner) n_z
+            damping = cp._sliding_damping(-1.0, z, v, n, omega, s, w, c, zeta)
+            fn = cp.rim_contact(
+                -1.0, z, v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiff,
+                damping, corner,
+            )[0]  # fmt: skip
+            sides.append((damping, fn))
+        (d0, f0), (d1, f1) = sides
+        assert abs(d0 / zeta - 1.0) > 1e-4  # friction does size this damper
+        assert math.isclose(d0, d1, rel_tol=1e-5)  # the arc opens as sqrt(b − a)
+        assert math.isclose(f0, f1, rel_tol=1e-4)
+
+
+def _damping(y, c, sigma=-1.0):
+    n = tuple(y[4:7])
+    s, w = cp._tangent_basis(n)
+    omega = angular_velocity(tuple(y[7:10]), n, c.i1, c.i3)
+    return cp._sliding_damping(sigma, y[0], tuple(y[1:4]), n, omega, s, w, c, cp.damping_of(c))
+
+
+def test_sliding_damper_is_sized_for_the_collision_matrix_normal_mass():
+    # A non-planar rim impact (tilt 1 rad towards azimuth 0.7) sliding one way along y, at
+    # 1 m/s and at 3 mm/s (below v_ε the friction's share falls linearly): ζ/sqrt(ρ),
+    # ρ = 1 − μ K_zt·û |u|/sqrt(u² + v_ε²) / K_zz with K from impact.collision_matrix at the
+    # arc's centroid; a shallow arc, so the centroid is near the lowest point.
+    c = _contact(0.8)
+    zeta = cp.damping_of(c)
+    for speed in (1.0, 3e-3, -1.0):
+        y = _state(1.0, 0.7, 1e-7, (0.0, speed, -0.5), (0.0, 0.0, 0.0))
+        expected = _expected_damping(-1.0, y, c, zeta)
+        assert abs(expected / zeta - 1.0) > 0.02  # the slip along y does move the damper
+        assert math.isclose(_damping(y, c), expected, rel_tol=1e-12)
+
+
+def test_sliding_damper_floor_holds_where_friction_jams_the_contact():
+    # μ above 1.008 = 0.9 μ*, μ* = K_zz / max K_zt·û (≈ 1.12 for a nickel, near tilt 61°):
+    # sliding at 1 m/s along the directions whose friction drives the contact into the table,
+    # ρ < 0.1 and the damper is its floor, ζ/sqrt(0.1) (cp.SLIDING_MASS_FLOOR); below it the
+    # damper is the formula's.
+    for mu in (1.02, 1.5):
+        c = _contact(mu)
+        zeta = cp.damping_of(c)
+        sizes = []
+        for angle in np.linspace(0.0, 2 * math.pi, 721):
+            v = (math.cos(angle), math.sin(angle), -0.5)
+            y = _state(math.radians(61.0), 0.3, 1e-7, v, (0.0, 0.0, 0.0))
+            sizes.append((_damping(y, c), _expected_damping(-1.0, y, c, zeta)))
+        got, expected = np.array(sizes).T
+        floored = np.isclose(got, zeta / math.sqrt(0.1), rtol=1e-12)
+        assert floored.any() and not floored.all()
+        np.testing.assert_allclose(got, expected, rtol=1e-12)
