@@ -1,0 +1,133 @@
+"""The rigid one-rim contact against the compliant contact phase: steps and CPU per simulated second.
+
+    python benchmarks/bench_rigid.py [N] [--rounds R] [--seed S] [--e E] [--mu MU]
+                                     [--resistance L] [--contact-time T] [--duration D]
+
+The states are those the bounces hand to the contact phase (:func:`bench_contact.handoff` on
+the vigorous nickel tosses of ``bench_bounce.py --contact-rates``, :func:`bench_bounce.tosses`),
+on one surface (e, μ, ℓ_r = ℓ_p). Each is put on the rigid contact (its lowest rim point
+touching, the rebound speed of at most ``rest_speed`` at the contact removed: ``advance_rigid``
+with ``approach = rest_speed`` and no time), then run by
+:func:`coinflight.core.rigid_contact.advance_rigid` until it stops (lift-off, second rim, face,
+Painlevé, the energy below the well's barrier as the contact phase's ending, or
+``--duration``): that time T is the toss's stretch in one-rim modes. The compliant
+phase (:func:`coinflight.core.contact_phase.advance`, no settle test) runs the same state for
+the same T. Both are timed in CPU seconds (one thread: ``NUMBA_NUM_THREADS=1`` is set here),
+``--rounds`` times each, alternated; the medians of the rounds are quoted, per simulated second
+summed over the tosses, and their ratio.
+
+Measured (2026-11-24, the project machine, 2 CPUs AMD EPYC shared with other sessions):
+see the closing note of the session; the command and the load (``os.getloadavg``) are printed
+with every run.
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("NUMBA_NUM_THREADS", "1")  # before numba is imported
+
+import argparse  # noqa: E402
+import statistics  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=300, help="tosses (default 300)")
+    parser.add_argument("--rounds", type=int, default=3, help="timed rounds of each engine")
+    parser.add_argument("--seed", type=int, default=2026, help="seed of the tosses")
+    parser.add_argument("--e", type=float, default=0.5, help="restitution of the bounces")
+    parser.add_argument("--mu", type=float, default=0.3, help="friction μ")
+    parser.add_argument("--resistance", type=float, default=1e-4, help="ℓ_r = ℓ_p, m")
+    parser.add_argument("--contact-time", type=float, default=1e-3, help="t_c of the compliant, s")
+    parser.add_argument("--duration", type=float, default=1.0, help="longest rigid run, s")
+    args = parser.parse_args()
+    if args.n < 1 or args.rounds < 1:
+        parser.error("N and --rounds must be at least 1")
+    if not args.duration > 0.0 or not args.contact_time > 0.0:
+        parser.error("--duration and --contact-time must be positive")
+
+    import bench_bounce
+    import bench_contact
+
+    from coinflight.core import contact_phase as cp
+    from coinflight.core import rigid_contact as rc
+
+    c = bench_contact.contact(args.e, args.mu, resistance=args.resistance)._replace(
+        contact_time=args.contact_time
+    )
+    omega, v0 = bench_bounce.tosses(args.n, args.seed)
+    states = []
+    for k in range(args.n):
+        y, handed = bench_contact.handoff(tuple(omega[k]), 1.0, v0[k], c)
+        if handed:
+            run = rc.advance_rigid(y, c, 0.0, approach=c.rest_speed)  # onto the constraint
+            if run.reason == rc.DURATION:
+                states.append(y.copy())
+    # The one-rim stretch of each state, and the rigid run's counts.
+    spans = np.zeros(len(states))
+    reasons = np.zeros(len(rc.REASON_NAMES), dtype=int)
+    rigid_steps = np.zeros(len(states))
+    rolling = np.zeros(len(states))
+    for k, y0 in enumerate(states):
+        y = y0.copy()
+        run = rc.advance_rigid(y, c, args.duration, settle=True)
+        spans[k] = run.time
+        reasons[run.reason] += 1
+        rigid_steps[k] = run.steps + run.rejected + run.event_steps
+        rolling[k] = run.rolling_time
+    use = spans > 0.0
+    states = [s for s, u in zip(states, use, strict=True) if u]
+    spans = spans[use]
+    compliant_steps = np.zeros(len(states))
+    for k, y0 in enumerate(states):
+        y = y0.copy()
+        _, compliant_steps[k], _ = cp.advance(y, spans[k], c)
+    total = float(spans.sum())
+
+    def rigid() -> None:
+        for k, y0 in enumerate(states):
+            rc.advance_rigid(y0.copy(), c, spans[k] * (1.0 + 1e-12), settle=True)
+
+    def compliant() -> None:
+        for k, y0 in enumerate(states):
+            cp.advance(y0.copy(), spans[k], c)
+
+    cpu = {"rigid": [], "compliant": []}
+    for _ in range(args.rounds):
+        for name, fn in (("rigid", rigid), ("compliant", compliant)):
+            t0 = time.process_time()
+            fn()
+            cpu[name].append(time.process_time() - t0)
+    rigid_cpu = statistics.median(cpu["rigid"]) / total
+    compliant_cpu = statistics.median(cpu["compliant"]) / total
+    print(
+        f"{args.n} vigorous nickel tosses (seed {args.seed}), e {args.e}, μ {args.mu}, "
+        f"ℓ {args.resistance:g} m, compliant t_c {args.contact_time:g} s; "
+        f"NUMBA_NUM_THREADS={os.environ['NUMBA_NUM_THREADS']}; load {os.getloadavg()}"
+    )
+    print(
+        f"handed and in one-rim contact: {len(states)}; one-rim time per toss median "
+        f"{np.median(spans) * 1e3:.1f} ms (total {total:.3f} s), rolling "
+        f"{rolling.sum() / total:.0%} of it"
+    )
+    print("rigid runs stopped by: " + ", ".join(
+        f"{name} {count}" for name, count in zip(rc.REASON_NAMES, reasons, strict=True) if count
+    ))
+    print(
+        f"steps per simulated second: rigid {rigid_steps[use].sum() / total:,.0f} (accepted, "
+        f"rejected and event steps), compliant {compliant_steps.sum() / total:,.0f} (accepted)"
+    )
+    print(
+        f"CPU per simulated second (median of {args.rounds} rounds): rigid "
+        f"{rigid_cpu * 1e3:.2f} ms, compliant {compliant_cpu * 1e3:.2f} ms: "
+        f"the rigid contact {compliant_cpu / rigid_cpu:.1f}x faster"
+    )
+    print(f"rounds (CPU s): rigid {cpu['rigid']}, compliant {cpu['compliant']}")
+
+
+if __name__ == "__main__":
+    main()
