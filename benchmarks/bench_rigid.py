@@ -2,6 +2,7 @@
 
     python benchmarks/bench_rigid.py [N] [--rounds R] [--seed S] [--e E] [--mu MU]
                                      [--resistance L] [--contact-time T] [--duration D]
+                                     [--rtol TOL]
 
 The states are those the bounces hand to the contact phase (:func:`bench_contact.handoff` on
 the vigorous nickel tosses of ``bench_bounce.py --contact-rates``, :func:`bench_bounce.tosses`),
@@ -16,9 +17,13 @@ the same T. Both are timed in CPU seconds (one thread: ``NUMBA_NUM_THREADS=1`` i
 ``--rounds`` times each, alternated; the medians of the rounds are quoted, per simulated second
 summed over the tosses, and their ratio.
 
-Measured (2026-11-24, the project machine, 2 CPUs AMD EPYC shared with other sessions):
-see the closing note of the session; the command and the load (``os.getloadavg``) are printed
-with every run.
+Measured (2026-11-24 02:33 UTC, the project machine, 2 CPUs AMD EPYC shared with other
+sessions, load 3.5-3.9): ``python benchmarks/bench_rigid.py 300 --rounds 5``: 213 handed
+states, 23.1 s of one-rim time; rigid 2,496 steps and 4.43 ms of CPU a simulated second,
+compliant 3,016 and 3.11 ms: **the rigid contact 0.70× as fast** (lift-off stretches 12,001
+against 5,583 steps a second, below-barrier stretches 1,935 against 3,142). ``--mu 0.6``:
+0.89× (coins rolling the whole second: 749 against 2,388 steps a second). ``--rtol 1e-6``:
+0.45×. Where the rigid steps go: :mod:`coinflight.core.rigid_contact`, "Speed".
 """
 
 from __future__ import annotations
@@ -44,11 +49,14 @@ def main() -> None:
     parser.add_argument("--resistance", type=float, default=1e-4, help="ℓ_r = ℓ_p, m")
     parser.add_argument("--contact-time", type=float, default=1e-3, help="t_c of the compliant, s")
     parser.add_argument("--duration", type=float, default=1.0, help="longest rigid run, s")
+    parser.add_argument("--rtol", type=float, default=None, help="rigid step tolerance (RTOL)")
     args = parser.parse_args()
     if args.n < 1 or args.rounds < 1:
         parser.error("N and --rounds must be at least 1")
     if not args.duration > 0.0 or not args.contact_time > 0.0:
         parser.error("--duration and --contact-time must be positive")
+    if args.rtol is not None and not 0.0 < args.rtol < 1.0:
+        parser.error("--rtol must be in (0, 1)")
 
     import bench_bounce
     import bench_contact
@@ -56,6 +64,7 @@ def main() -> None:
     from coinflight.core import contact_phase as cp
     from coinflight.core import rigid_contact as rc
 
+    rtol = rc.RTOL if args.rtol is None else args.rtol
     c = bench_contact.contact(args.e, args.mu, resistance=args.resistance)._replace(
         contact_time=args.contact_time
     )
@@ -70,18 +79,22 @@ def main() -> None:
     # The one-rim stretch of each state, and the rigid run's counts.
     spans = np.zeros(len(states))
     reasons = np.zeros(len(rc.REASON_NAMES), dtype=int)
+    ends = np.zeros(len(states), dtype=int)
     rigid_steps = np.zeros(len(states))
     rolling = np.zeros(len(states))
     for k, y0 in enumerate(states):
         y = y0.copy()
-        run = rc.advance_rigid(y, c, args.duration, settle=True)
+        run = rc.advance_rigid(y, c, args.duration, settle=True, rtol=rtol)
         spans[k] = run.time
         reasons[run.reason] += 1
+        ends[k] = run.reason
         rigid_steps[k] = run.steps + run.rejected + run.event_steps
         rolling[k] = run.rolling_time
     use = spans > 0.0
     states = [s for s, u in zip(states, use, strict=True) if u]
     spans = spans[use]
+    ends = ends[use]
+    rigid_steps = rigid_steps[use]
     compliant_steps = np.zeros(len(states))
     for k, y0 in enumerate(states):
         y = y0.copy()
@@ -90,7 +103,7 @@ def main() -> None:
 
     def rigid() -> None:
         for k, y0 in enumerate(states):
-            rc.advance_rigid(y0.copy(), c, spans[k] * (1.0 + 1e-12), settle=True)
+            rc.advance_rigid(y0.copy(), c, spans[k] * (1.0 + 1e-12), settle=True, rtol=rtol)
 
     def compliant() -> None:
         for k, y0 in enumerate(states):
@@ -106,7 +119,7 @@ def main() -> None:
     compliant_cpu = statistics.median(cpu["compliant"]) / total
     print(
         f"{args.n} vigorous nickel tosses (seed {args.seed}), e {args.e}, μ {args.mu}, "
-        f"ℓ {args.resistance:g} m, compliant t_c {args.contact_time:g} s; "
+        f"ℓ {args.resistance:g} m, compliant t_c {args.contact_time:g} s, rigid rtol {rtol:g}; "
         f"NUMBA_NUM_THREADS={os.environ['NUMBA_NUM_THREADS']}; load {os.getloadavg()}"
     )
     print(
@@ -118,9 +131,17 @@ def main() -> None:
         f"{name} {count}" for name, count in zip(rc.REASON_NAMES, reasons, strict=True) if count
     ))
     print(
-        f"steps per simulated second: rigid {rigid_steps[use].sum() / total:,.0f} (accepted, "
+        f"steps per simulated second: rigid {rigid_steps.sum() / total:,.0f} (accepted, "
         f"rejected and event steps), compliant {compliant_steps.sum() / total:,.0f} (accepted)"
     )
+    for reason in np.unique(ends):
+        mine = ends == reason
+        span = float(spans[mine].sum())
+        print(
+            f"  runs ending by {rc.REASON_NAMES[reason]}: {mine.sum()}, {span:.3f} s; steps a "
+            f"simulated second rigid {rigid_steps[mine].sum() / span:,.0f}, compliant "
+            f"{compliant_steps[mine].sum() / span:,.0f}"
+        )
     print(
         f"CPU per simulated second (median of {args.rounds} rounds): rigid "
         f"{rigid_cpu * 1e3:.2f} ms, compliant {compliant_cpu * 1e3:.2f} ms: "

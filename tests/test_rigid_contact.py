@@ -294,3 +294,43 @@ def test_compliant_contact_converges_to_the_rigid_one_as_contact_time_falls(mu, 
         cp.advance(compliant, run.time, c)
         diffs.append(_difference(y, compliant, c))
     assert diffs[1] < diffs[0] and diffs[2] < ratio * diffs[1]
+
+
+def test_hand_off_states_run_without_energy_gain_or_failure():
+    # The states the bounces hand to the contact phase (vigorous nickel tosses, e 0.5, μ 0.3,
+    # resistances 1e-4 m, as benchmarks/bench_rigid.py draws them): each put on the rigid
+    # contact (its rebound of at most rest_speed removed) and run up to 0.3 s with the energy
+    # ending. Nothing here adds energy (friction and the resistances take it; the projections
+    # and the stick impulses remove a little): the energy at the end is at most the start's
+    # (plus 1e-9 of it), and no run fails its steps or runs out of them (the hand-off states
+    # include fast tumbling coins nearly flat, which once divided by zero).
+    from coinflight.core import bounce
+    from coinflight.core.contact import CONTACT_ENDING
+
+    c = coin_contact(
+        NICKEL, friction=0.3, rolling_resistance=1e-4, pivoting_resistance=1e-4,
+        ending=CONTACT_ENDING,
+    )
+    rng = np.random.default_rng(7)
+    omega = np.column_stack(
+        [rng.uniform(150, 300, 60), rng.uniform(-30, 30, 60), rng.uniform(-30, 30, 60)]
+    )
+    v0 = rng.uniform(1.5, 3.0, 60)
+    reasons = set()
+    runs = 0
+    for k in range(60):
+        *_, status, z, v, n, lm = bounce.bounce_loop(
+            tuple(omega[k]), 1.0, v0[k], c, bounce.MAX_IMPACTS
+        )
+        if status != bounce.DIED_OUT:
+            continue
+        y = np.array([z, *v, *n, *lm])
+        if rc.advance_rigid(y, c, 0.0, approach=c.rest_speed).reason != rc.DURATION:
+            continue
+        e0 = rc.energy(y, c)
+        run = rc.advance_rigid(y, c, 0.3, settle=True)
+        runs += 1
+        reasons.add(run.reason)
+        assert rc.energy(y, c) <= e0 * (1.0 + 1e-9)
+        assert run.reason not in (rc.STEP_FAILED, rc.MAX_STEPS_REACHED)
+    assert runs >= 30 and len(reasons) >= 3
