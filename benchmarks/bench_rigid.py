@@ -1,4 +1,4 @@
-"""The rigid one-rim contact against the compliant contact phase: steps and CPU per simulated second.
+"""The rigid one-rim contact against the compliant phase: steps and CPU per simulated second.
 
     python benchmarks/bench_rigid.py [N] [--rounds R] [--seed S] [--e E] [--mu MU]
                                      [--resistance L] [--contact-time T] [--duration D]
@@ -32,11 +32,11 @@ import os
 
 os.environ.setdefault("NUMBA_NUM_THREADS", "1")  # before numba is imported
 
-import argparse  # noqa: E402
-import statistics  # noqa: E402
-import time  # noqa: E402
+import argparse
+import statistics
+import time
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 
 def main() -> None:
@@ -60,7 +60,6 @@ def main() -> None:
 
     import bench_bounce
     import bench_contact
-
     from coinflight.core import contact_phase as cp
     from coinflight.core import rigid_contact as rc
 
@@ -127,9 +126,12 @@ def main() -> None:
         f"{np.median(spans) * 1e3:.1f} ms (total {total:.3f} s), rolling "
         f"{rolling.sum() / total:.0%} of it"
     )
-    print("rigid runs stopped by: " + ", ".join(
-        f"{name} {count}" for name, count in zip(rc.REASON_NAMES, reasons, strict=True) if count
-    ))
+    print(
+        "rigid runs stopped by: "
+        + ", ".join(
+            f"{name} {count}" for name, count in zip(rc.REASON_NAMES, reasons, strict=True) if count
+        )
+    )
     print(
         f"steps per simulated second: rigid {rigid_steps.sum() / total:,.0f} (accepted, "
         f"rejected and event steps), compliant {compliant_steps.sum() / total:,.0f} (accepted)"

@@ -231,8 +231,12 @@ def test_painleve_paradox_is_detected_and_not_integrated():
     # inconsistent (reported at once), with μ 0.9 it slides.
     tilt = 1.05
     n = (math.sin(tilt), 0.0, math.cos(tilt))
-    k = collision_matrix(contact_point(n, NICKEL.radius, NICKEL.thickness / 2), n, NICKEL.mass,
-                         *(float(x) for x in NICKEL.moments))
+    k = collision_matrix(
+        contact_point(n, NICKEL.radius, NICKEL.thickness / 2),
+        n,
+        NICKEL.mass,
+        *(float(x) for x in NICKEL.moments),
+    )
     assert 1.0 < k[5] / k[2] < 1.25
     for mu, reason in ((1.5, rc.PAINLEVE), (0.9, rc.DURATION)):
         c = coin_contact(NICKEL, friction=mu)
@@ -308,7 +312,10 @@ def test_hand_off_states_run_without_energy_gain_or_failure():
     from coinflight.core.contact import CONTACT_ENDING
 
     c = coin_contact(
-        NICKEL, friction=0.3, rolling_resistance=1e-4, pivoting_resistance=1e-4,
+        NICKEL,
+        friction=0.3,
+        rolling_resistance=1e-4,
+        pivoting_resistance=1e-4,
         ending=CONTACT_ENDING,
     )
     rng = np.random.default_rng(7)

@@ -124,7 +124,7 @@ phase alone does not give the 17× issue 11 needs.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numba import njit
@@ -170,6 +170,9 @@ from coinflight.core.impact import (
     dot,
     inverse_inertia_apply,
 )
+
+if TYPE_CHECKING:
+    from coinflight.core.contact import Contact
 
 FREE = 0
 """Mode: off the table (the run stops: lift-off)."""
@@ -277,9 +280,7 @@ def _resistance(omega, c):
     eps = SLIP_SPEED / c.radius
     tx, ty, tz = 0.0, 0.0, 0.0
     if c.rolling_resistance > 0.0:
-        k = -c.rolling_resistance / math.sqrt(
-            omega[0] * omega[0] + omega[1] * omega[1] + eps * eps
-        )
+        k = -c.rolling_resistance / math.sqrt(omega[0] * omega[0] + omega[1] * omega[1] + eps * eps)
         tx, ty = k * omega[0], k * omega[1]
     if c.pivoting_resistance > 0.0:
         tz = -c.pivoting_resistance * omega[2] / math.sqrt(omega[2] * omega[2] + eps * eps)
@@ -371,9 +372,7 @@ def _ray(w, b, mu):
         normal = -b[2] / coef
         if normal <= 0.0:
             break
-        ex, ey = _ray_direction(
-            w[0], w[1], w[4], w[2] + b[0] / normal, w[5] + b[1] / normal, mu
-        )
+        ex, ey = _ray_direction(w[0], w[1], w[4], w[2] + b[0] / normal, w[5] + b[1] / normal, mu)
         if not (math.isfinite(ex) and math.isfinite(ey)):
             break
         change = abs(ex - dx) + abs(ey - dy)
@@ -438,7 +437,8 @@ def _events(y, c, mode, dx, dy, sx, sy, floor, band):
     """Event functions at y, each positive while nothing happens: (lift-off, slip start or
     stop, Painlevé, second rim, face). (sx, sy): the slip direction at the step's start;
     ``floor``: the slip below which it has stopped (:data:`SLIP_FLOOR`; 0 for a step starting
-    below it, a slide starting from rest, whose stop is its reversal); ``band``: n_z's sign at the start (0: no band, no second-rim event)."""
+    below it, a slide starting from rest, whose stop is its reversal); ``band``: n_z's sign at
+    the start (0: no band, no second-rim event)."""
     f, coef, _, _ = _force(y, c, mode, dx, dy)
     nz = y[6]
     second = nz * band if band != 0.0 else 1.0
@@ -769,7 +769,7 @@ class RigidRun(NamedTuple):
 
 def advance_rigid(
     y: np.ndarray,
-    c,  # type: ignore[no-untyped-def]
+    c: Contact,
     duration: float,
     *,
     settle: bool = False,
