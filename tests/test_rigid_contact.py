@@ -341,3 +341,26 @@ def test_hand_off_states_run_without_energy_gain_or_failure():
         assert rc.energy(y, c) <= e0 * (1.0 + 1e-9)
         assert run.reason not in (rc.STEP_FAILED, rc.MAX_STEPS_REACHED)
     assert runs >= 30 and len(reasons) >= 3
+
+
+@pytest.mark.parametrize("rate", [2.0, 5.0, 10.0])
+def test_coin_tipping_to_upright_stops_when_the_other_rim_touches(rate):
+    # A nickel leaning 1.45 rad from flat, rolling (μ 1) as it tips towards upright at
+    # ``rate`` rad/s: its other rim reaches the table when n_z crosses 0 (the band contact,
+    # not built): the run stops there, located within 1e-10 of n_z = 0.
+    c = coin_contact(NICKEL, friction=1.0)
+    y = _state(c, 1.45, omega=(0.0, rate, 0.0), rolling=True)
+    run = rc.advance_rigid(y, c, 0.2)
+    assert run.reason == rc.SECOND_RIM and 0.0 < run.time < 0.2
+    assert abs(y[6]) < 1e-10
+
+
+@pytest.mark.parametrize("tilt", [0.2, 0.5])
+def test_coin_falling_flat_stops_when_its_face_comes_down(tilt):
+    # A nickel at rest leaning on its rim falls towards its face; the run stops at
+    # s = FACE_SINE (located within 1e-10), before the face's slap (not built).
+    c = coin_contact(NICKEL, friction=1.0)
+    y = _state(c, tilt)
+    run = rc.advance_rigid(y, c, 1.0)
+    assert run.reason == rc.FACE and 0.0 < run.time < 1.0
+    assert math.sqrt(1.0 - y[6] ** 2) == pytest.approx(rc.FACE_SINE, abs=1e-10)
