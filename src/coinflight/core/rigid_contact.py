@@ -388,10 +388,15 @@ def _ray(w, b, mu):
 def _force(y, c, mode, dx, dy):
     """(F, c_N, ŝ): the contact force of the mode (ŝ the slip direction used; (dx, dy) below
     :data:`STICK_SPEED`)."""
-    if mode == ROLLING:
-        return rolling_force(y, c), 1.0, 0.0, 0.0
     w, b, _, _, _, u = constraint_terms(y, c)
-    mu = c.friction
+    return _contact_force(w, b, u, c.friction, mode, dx, dy)
+
+
+@njit(cache=True)
+def _contact_force(w, b, u, mu, mode, dx, dy):
+    """:func:`_force` from the terms of :func:`constraint_terms`."""
+    if mode == ROLLING:
+        return _solve3(w, (-b[0], -b[1], -b[2])), 1.0, 0.0, 0.0
     slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
     if slip > SLIP_FLOOR:
         dx, dy = u[0] / slip, u[1] / slip
@@ -413,12 +418,9 @@ def _force(y, c, mode, dx, dy):
 def _derivative(y, out, c, mode, dx, dy):
     """dy/dt of y = (z, v, n, L) in ``mode`` (ROLLING or SLIDING along the slip, or (dx, dy) at a
     slip below :data:`STICK_SPEED`)."""
-    f, _, _, _ = _force(y, c, mode, dx, dy)
+    w, b, rho, omega, tau, u = constraint_terms(y, c)
+    f, _, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
     n = (y[4], y[5], y[6])
-    lm = (y[7], y[8], y[9])
-    omega = angular_velocity(lm, n, c.i1, c.i3)
-    rho, _, _, _, _, _ = _basis(n, c)
-    tau = _resistance(omega, c)
     torque = cross(rho, f)
     nd = cross(omega, n)
     m = c.mass
@@ -441,14 +443,14 @@ def _events(y, c, mode, dx, dy, sx, sy, floor, band):
     ``floor``: the slip below which it has stopped (:data:`SLIP_FLOOR`; 0 for a step starting
     below it, a slide starting from rest, whose stop is its reversal); ``band``: n_z's sign at
     the start (0: no band, no second-rim event)."""
-    f, coef, _, _ = _force(y, c, mode, dx, dy)
+    w, b, _, _, _, u = constraint_terms(y, c)
+    f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
     nz = y[6]
     second = nz * band if band != 0.0 else 1.0
     face = math.sqrt(max(0.0, 1.0 - nz * nz)) - FACE_SINE
     if mode == ROLLING:
         cone = c.friction * f[2] - math.sqrt(f[0] * f[0] + f[1] * f[1])
         return f[2], cone, 1.0, second, face
-    _, _, _, _, _, u = constraint_terms(y, c)
     along = u[0] * sx + u[1] * sy
     slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
     stop = min(along, slip - floor)
@@ -628,10 +630,14 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # derivative (an axisymmetric coin), and the tumbling is the step control's.
         h = min(h, MAX_STEP, duration - t)
         # The slip's direction at the step's start (SLIDING), for its stop event.
-        _, _, _, _, _, u = constraint_terms(y, c)
-        slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
-        sx, sy = (u[0] / slip, u[1] / slip) if slip > STICK_SPEED else (dx, dy)
-        floor = SLIP_FLOOR if slip > SLIP_FLOOR else 0.0
+        sx, sy, floor = dx, dy, 0.0
+        if mode == SLIDING:
+            _, _, _, _, _, u = constraint_terms(y, c)
+            slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
+            if slip > STICK_SPEED:
+                sx, sy = u[0] / slip, u[1] / slip
+            if slip > SLIP_FLOOR:
+                floor = SLIP_FLOOR
         err = math.inf
         for _ in range(60):
             _step(y, h, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new)
