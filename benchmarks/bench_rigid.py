@@ -17,13 +17,13 @@ the same T. Both are timed in CPU seconds (one thread: ``NUMBA_NUM_THREADS=1`` i
 ``--rounds`` times each, alternated; the medians of the rounds are quoted, per simulated second
 summed over the tosses, and their ratio.
 
-Measured (2026-11-24 02:33 UTC, the project machine, 2 CPUs AMD EPYC shared with other
-sessions, load 3.5-3.9): ``python benchmarks/bench_rigid.py 300 --rounds 5``: 213 handed
-states, 23.1 s of one-rim time; rigid 2,496 steps and 4.43 ms of CPU a simulated second,
-compliant 3,016 and 3.11 ms: **the rigid contact 0.70× as fast** (lift-off stretches 12,001
-against 5,583 steps a second, below-barrier stretches 1,935 against 3,142). ``--mu 0.6``:
-0.89× (coins rolling the whole second: 749 against 2,388 steps a second). ``--rtol 1e-6``:
-0.45×. Where the rigid steps go: :mod:`coinflight.core.rigid_contact`, "Speed".
+Measured (2026-11-24, the project machine, 2 CPUs AMD EPYC shared with other sessions):
+``python benchmarks/bench_rigid.py 300 --rounds 5`` (02:55 UTC, load 6.5-7.7): 213 handed
+states, 23.1 s of one-rim time; rigid 2,496 steps and 3.77 ms of CPU a simulated second,
+compliant 3,016 and 3.16 ms: **the rigid contact 0.84× as fast** (lift-off stretches 12,001
+against 5,583 steps a second, below-barrier stretches 1,935 against 3,142). ``--mu 0.6``
+(02:57 UTC): 3.22 against 3.43 ms, 1.07× (coins rolling the whole second: 749 against 2,388
+steps a second). Where the rigid steps go: :mod:`coinflight.core.rigid_contact`, "Speed".
 """
 
 from __future__ import annotations

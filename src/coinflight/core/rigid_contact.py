@@ -102,24 +102,26 @@ decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
 
 Speed (measured; issue 11's target not reached)
 -----------------------------------------------
-``python benchmarks/bench_rigid.py 300 --rounds 5`` (2026-11-24 02:33 UTC, the project machine,
-2 CPUs AMD EPYC shared, load 3.5-3.9, one thread): of 300 vigorous nickel tosses (e 0.5, μ 0.3,
+``python benchmarks/bench_rigid.py 300 --rounds 5`` (2026-11-24 02:55 UTC, the project machine,
+2 CPUs AMD EPYC shared, load 6.5-7.7, one thread): of 300 vigorous nickel tosses (e 0.5, μ 0.3,
 ℓ_r = ℓ_p = 1e-4 m) 213 are handed to the contact phase; run rigid from those states until a
 stop, they spend a median 16 ms in one-rim modes (23.1 s in all, 61 % of it rolling), and end
 by lift-off 105, below the barrier 81, second rim 21, face 1, the 1 s limit 5. The same
 stretches through the compliant phase: **rigid 2,496 steps a simulated second (accepted,
-rejected and event steps) against 3,016, CPU 4.43 ms against 3.11 ms a simulated second: the
-rigid contact is 0.70× as fast** (a rigid step ~1.8 μs, ~1.0 μs compliant). With μ 0.6 (91 %
-rolling) 2,225 against 2,988 steps, 0.89×; on the coins that roll for the whole second, 749
-against 2,388 steps a second (3.2× fewer). With RTOL 1e-6 it is slower (0.45×: more stick-slip
+rejected and event steps) against 3,016, CPU 3.77 ms against 3.16 ms a simulated second: the
+rigid contact is 0.84× as fast** (a rigid step ~1.5 μs, ~1.0 μs compliant; 0.70× before the
+derivative reused its terms and kept first same as last, 02:33 UTC, load 3.5-3.9). With μ 0.6
+(``--mu 0.6``, 91 % rolling, 02:57 UTC) 2,224 against 2,988 steps, 3.22 against 3.43 ms:
+1.07×; on the coins that roll for the whole second, 749 against 2,388 steps a second (3.2×
+fewer). With RTOL 1e-6 it was slower (0.45× before those changes: more stick-slip
 switching). Why the premise (steps of the wobble's ~30 ms) does not hold, measured on single
 tosses: (1) the handed coins spin: one precessing at ω_z ≈ 110 rad/s takes steps of ~0.5 ms
 at RTOL 1e-8, its motion's own time scale; (2) stick-slip transitions at the cone's boundary
 slide at slips of 10 μm/s-1 mm/s whose direction turns fast (~15 μs steps, 80-220 steps per
 2.5 ms); (3) half the stretches end within milliseconds in a lift-off (12,000 steps a
-simulated second there, events located by bisection). Left for the next session: a cheaper
-step (the event functions re-solve the forces after each step), a slip-direction treatment
-that does not follow the slip's turning at small slips, and the hops in closed form; this
+simulated second there, events located by bisection). Left for the next session: a
+slip-direction treatment that does not follow the slip's turning at small slips, cheaper
+event location (bisection to :data:`EVENT_TIME` now), and the hops in closed form; this
 phase alone does not give the 17× issue 11 needs.
 """
 
