@@ -687,11 +687,14 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             if mode == ROLLING:
                 counts[6] += hi
             ev = _events(y, c, mode, dx, dy, sx, sy, floor, band)
+            if ev[3] < 0.0:
+                # Just past n_z = 0 (within EVENT_TIME): the projection would put the state on
+                # the other rim (_basis takes the lower one by n_z's sign) by a plastic impulse
+                # there. Left unprojected: on the first rim to within the step's drift.
+                return t, mode, SECOND_RIM
             gap, drift = _project(y, c, SLIDING)
             counts[4] = max(counts[4], gap)
             counts[5] = max(counts[5], drift)
-            if ev[3] < 0.0:
-                return t, mode, SECOND_RIM
             if ev[4] < 0.0:
                 return t, mode, FACE
             if ev[2] <= 0.0:
