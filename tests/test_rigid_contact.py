@@ -251,6 +251,33 @@ def test_slip_starts_along_the_ray_where_it_grows():
     assert len(off) >= 5 and max(off) > 1.0
 
 
+def test_a_slide_the_cone_cannot_stop_reverses():
+    # A nickel leaning 0.9 rad sliding at 0.01 m/s in the plane of n and Z, μ 0.5: the slip
+    # along +x falls to 0 at ~47.6 ms, where the rolling force lies outside the cone (the stick
+    # test fails): it slides on, the other way. Planar Coulomb sliding along ±x gives
+    # m Δv_x = ∓μ ∫N dt, m Δv_z = ∫N dt − m g Δt, so Δv_x = ∓μ (g Δt + Δv_z) over each ms
+    # (the slip's sign at its start), and it never rolls; two switches (the stop below
+    # SLIP_FLOOR, where the stick test fails, then the reversal itself).
+    mu = 0.5
+    c = coin_contact(NICKEL, friction=mu)
+    y = _state(c, 0.9, v=(0.01, 0.0, 0.0))
+    switches = 0
+    for k in range(50):
+        before = y.copy()
+        _, _, _, _, _, u = rc.constraint_terms(y, c)
+        run = rc.advance_rigid(y, c, 1e-3)
+        assert (run.mode, run.reason, run.rolling_time) == (rc.SLIDING, rc.DURATION, 0.0)
+        switches += run.switches
+        if run.switches == 0:
+            sign = 1.0 if u[0] > 0.0 else -1.0
+            expected = before[1] - sign * mu * (G * 1e-3 + y[3] - before[3])
+            assert y[1] == pytest.approx(expected, abs=1e-9)
+        else:
+            assert k == 47  # the reversal, in the 48th ms
+    _, _, _, _, _, u = rc.constraint_terms(y, c)
+    assert switches == 2 and u[0] < -1e-3
+
+
 def test_rolling_that_needs_more_than_mu_n_slides():
     # The steady rolling of the first test at μ 2 needs |F_h| = m Ω |v| (Ω 8 rad/s, tilt 0.5),
     # 1.03 μ N at μ = 1: started rolling, the stick test fails and it slides from the start.
