@@ -334,6 +334,23 @@ def test_a_state_approaching_the_table_needs_an_impact_first():
     assert np.array_equal(y[1:], before[1:])
 
 
+def test_settle_stops_when_the_energy_falls_below_the_barrier():
+    # A nickel rolling steadily at tilt 0.8, Ω 12 rad/s (μ 2), resistances 1e-3 m: its energy
+    # starts above the barrier m g ρ (the contact phase's ending) and the resistances take it
+    # below in ~0.35 s: the run stops at the first accepted step below it, and the step before
+    # it is above (the same run one step short).
+    c = coin_contact(NICKEL, friction=2.0, rolling_resistance=1e-3, pivoting_resistance=1e-3)
+    y = _steady(c, 0.8, 12.0)
+    start = y.copy()
+    assert rc.energy(y, c) > 2.0 * c.barrier
+    run = rc.advance_rigid(y, c, 1.0, settle=True)
+    assert run.reason == rc.BELOW_BARRIER and 0.1 < run.time < 1.0
+    assert rc.energy(y, c) < c.barrier
+    before = rc.advance_rigid(start, c, 1.0, settle=True, max_steps=run.steps - 1)
+    assert before.reason == rc.MAX_STEPS_REACHED
+    assert rc.energy(start, c) >= c.barrier
+
+
 def test_settle_stops_below_the_barrier():
     # A slowly rolling coin with resistances: its energy is below m g ρ from the start.
     c = coin_contact(NICKEL, friction=0.5, rolling_resistance=1e-4, pivoting_resistance=1e-4)

@@ -162,8 +162,8 @@ from coinflight.core.contact_phase import (
     _E7,
     SLIP_SPEED,
     _barrier,
-    _dissipative,
     _motion_energy,
+    _motion_free_energy,
 )
 from coinflight.core.impact import (
     _ray_direction,
@@ -537,10 +537,8 @@ def below_barrier(y, c):
     :func:`coinflight.core.contact_phase.below_barrier` with no springs (frictionless and
     without resistances, the horizontal kinetic energy is not free and the barrier is the least
     corner energy at the conserved L·n, L_z)."""
-    e = _motion_energy(y, c)
-    if not _dissipative(c):
-        e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
-    return e < _barrier(y, c)
+    _, free = _motion_free_energy(y, c)
+    return free < _barrier(y, c)
 
 
 @njit(cache=True)
