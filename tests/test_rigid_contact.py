@@ -67,15 +67,24 @@ def test_steady_rolling_in_a_circle_is_a_stationary_solution(coin, tilt, precess
 
 
 def test_steady_spin_of_a_thin_disc_is_the_classical_relation():
-    # A disc of no thickness (ρ = (r cos α, 0, −r sin α)): ψ' = −(m r² Ω² s c + m g r c +
-    # Ω² (I3 − I1) s c) / (Ω s (I3 + m r²)) (the rolling disk; O'Reilly 1996, §5).
+    # The steady rolling of a thin disc in the literature's form (O'Reilly 1996, §5; Cushman,
+    # Hermans & Kemppainen 1995; α the disc's angle to the table, here the tilt of n from Z):
+    # (I3 + m r²) ω3 Ω sin α − I1 Ω² sin α cos α + m g r cos α = 0, ω3 = ψ' + Ω cos α the spin
+    # about n. Solved for ψ' and compared.
     disc = _disc(friction=2.0)
     m, r, i1, i3 = disc.mass, disc.radius, disc.i1, disc.i3
     for tilt, omega in [(0.4, 7.0), (1.1, -12.0)]:
         s, co = math.sin(tilt), math.cos(tilt)
-        expected = -(m * r * r * omega**2 * s * co + m * G * r * co + omega**2 * (i3 - i1) * s * co)
-        expected /= omega * s * (i3 + m * r * r)
+        w3 = (i1 * omega**2 * s * co - m * G * r * co) / ((i3 + m * r * r) * omega * s)
+        expected = w3 - omega * co
         assert rc.steady_spin(tilt, omega, disc) == pytest.approx(expected, rel=1e-6)
+    # Its centre fixed (ω3 = 0: ψ' = −Ω cos α, v = 0; Moffatt 2000, Nature 404:833, the end of
+    # Euler's disk): Ω² = m g r / (I1 sin α) = 4 g / (r sin α) for a thin disc (I1 = m r²/4).
+    for tilt in (0.3, 0.9):
+        omega = math.sqrt(4.0 * G / (r * math.sin(tilt)))
+        assert rc.steady_spin(tilt, omega, disc) == pytest.approx(-omega * math.cos(tilt), rel=1e-9)
+        y = _steady(disc, tilt, omega)
+        assert np.abs(y[1:4]).max() < 1e-12 * omega * r
 
 
 DISC = Coin(radius=0.01, thickness=2e-4, mass=0.005)
