@@ -295,6 +295,24 @@ def test_slip_starts_along_the_ray_where_it_grows():
     assert len(off) >= 5 and max(off) > 1.0
 
 
+def test_friction_on_a_small_slip_never_does_positive_work():
+    # Below SLIP_FLOOR a slip the cone cannot stop slides along the ray (SLIP_FLOOR's notes),
+    # but not when the slip points against it: the friction there opposes the slip. A steady
+    # rolling state outside the cone (μ 1, as in the test below) given slips of 5 μm/s at angles
+    # round the ray: the sliding force's power on the slip, F_h·u_h, is never positive.
+    c = coin_contact(NICKEL, friction=1.0)
+    base = _steady(c, 0.5, 8.0)
+    ray = np.array(rc.slip_start(base, c))
+    for angle in np.linspace(0.0, 2.0 * math.pi, 13)[:-1]:
+        y = base.copy()
+        turn = np.array([[math.cos(angle), -math.sin(angle)], [math.sin(angle), math.cos(angle)]])
+        y[1:3] += 5e-6 * turn @ ray  # the centre's velocity moves the contact point's alike
+        _, _, _, _, _, u = rc.constraint_terms(y, c)
+        f, coef, _, _ = rc._force(y, c, rc.SLIDING, 0.0, 0.0)
+        assert coef > 0.0 and f[2] > 0.0
+        assert f[0] * u[0] + f[1] * u[1] <= 0.0
+
+
 def test_a_slide_the_cone_cannot_stop_reverses():
     # A nickel leaning 0.9 rad sliding at 0.01 m/s in the plane of n and Z, μ 0.5: the slip
     # along +x falls to 0 at ~47.6 ms, where the rolling force lies outside the cone (the stick

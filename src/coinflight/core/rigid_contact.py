@@ -6,7 +6,9 @@ along the rim (contact time t_c, 1 ms by default) and friction is regularised; t
 stepper is held by their stiffness to steps of ~0.4 ms whatever the motion. Here the coin and
 the table are rigid: while the coin touches at one rim point the gap there stays 0, the contact
 force is whatever keeps it so (and, rolling, keeps the point from slipping), and the steps are
-set by the motion's own time scales (the wobble, ~sqrt(r/g) ≈ 30 ms for a nickel).
+set by the motion's own time scales, not by a stiffness. The premise was that these are the
+wobble's (~sqrt(r/g) ≈ 30 ms for a nickel); measured, they are much shorter on the states the
+bounces hand over (spin, stick-slip, lift-offs: "Speed" below).
 
 **Built this session (the first piece):** the one-rim modes ROLLING and SLIDING, their
 transitions located as events, lift-off, Painlevé's paradox detected, the stops at a second
@@ -229,18 +231,20 @@ STICK_SPEED = 1e-9
 """A slip below this speed, m/s, has stopped (the stick test follows)."""
 FACE_SINE = 1e-2
 """s = sqrt(1 − n_z²) below which the face is taken to reach the table (the run stops): a
-nickel's far rim point is then 2 r s ≈ 0.4 mm above the table, and the contact point runs round
+nickel's far rim point is then 2 r s ≈ 0.21 mm above the table, and the contact point runs round
 the rim at ~ω/s (the end of Euler's disk), which steps cannot follow cheaply; the face's impact
 and contact are next session's."""
 SLIP_FLOOR = 1e-5
 """A small slip, m/s. Below it a slip that the cone could not stop (the rolling force is
 outside it) slides along the ray of :func:`slip_start` instead of its own direction: a slide
 starting at the cone's boundary grows from 0 with a direction the step control would follow
-with ~10⁴ steps a millisecond (measured: 8,129 steps in 5 ms). Friction keeps its size μ N;
-only its direction, over a slip below 10 μm/s, is the ray's. And a slip falling below it has
-stopped (the event; then the stick test, and if it holds the projection removes the rest of
-the slip, at most this, by an impulse): a stopping slip's direction turns at ~(u̇_h)/|u_h|
-as it vanishes, which cost ~600 steps in 0.1 μs in a measured hand-off state."""
+with very short steps. Friction keeps its size μ N; only its direction, over a slip below
+10 μm/s, is the ray's, except when the slip points against the ray: friction then opposes the
+slip itself (along the ray it would do positive work, up to μ N SLIP_FLOOR). And a slip
+falling below it has stopped (the event; then the stick test, and if it holds the projection
+removes the rest of the slip, at most this, by an impulse): a stopping slip's direction turns
+at ~(u̇_h)/|u_h| as it vanishes, which the step control would follow with steps shrinking with
+it."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
 
@@ -407,6 +411,10 @@ def _contact_force(w, b, u, mu, mode, dx, dy):
         f = _solve3(w, (-b[0], -b[1], -b[2]))
         if f[2] < 0.0 or math.sqrt(f[0] * f[0] + f[1] * f[1]) > mu * f[2]:
             dx, dy = _ray(w, b, mu)
+            if slip > 0.0 and u[0] * dx + u[1] * dy < 0.0:
+                # Never along the slip's opposite: friction on a slip against the ray would do
+                # positive work; it opposes the slip itself there.
+                dx, dy = u[0] / slip, u[1] / slip
         elif slip > STICK_SPEED:
             dx, dy = u[0] / slip, u[1] / slip
     coef = w[8] - mu * (w[6] * dx + w[7] * dy)
@@ -626,8 +634,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             return t, mode, DURATION
         if accepted >= max_steps:
             return t, mode, MAX_STEPS_REACHED
-        # No limit by the turn (as contact_phase's): the spin about n does not enter the state's
-        # derivative (an axisymmetric coin), and the tumbling is the step control's.
+        # No limit by the turn (as contact_phase's): the state has no body-fixed angle to resolve
+        # (an axisymmetric coin), and the tumbling is the step control's.
         h = min(h, MAX_STEP, duration - t)
         # The slip's direction at the step's start (SLIDING), for its stop event.
         sx, sy, floor = dx, dy, 0.0
