@@ -18,12 +18,12 @@ the same T. Both are timed in CPU seconds (one thread: ``NUMBA_NUM_THREADS=1`` i
 summed over the tosses, and their ratio.
 
 Measured (2026-11-24, the project machine, 2 CPUs AMD EPYC shared with other sessions):
-``python benchmarks/bench_rigid.py 300 --rounds 5`` (02:55 UTC, load 6.5-7.7): 213 handed
-states, 23.1 s of one-rim time; rigid 2,496 steps and 3.77 ms of CPU a simulated second,
-compliant 3,016 and 3.16 ms: **the rigid contact 0.84× as fast** (lift-off stretches 12,001
-against 5,583 steps a second, below-barrier stretches 1,935 against 3,142). ``--mu 0.6``
-(02:57 UTC): 3.22 against 3.43 ms, 1.07× (coins rolling the whole second: 749 against 2,388
-steps a second). Where the rigid steps go: :mod:`coinflight.core.rigid_contact`, "Speed".
+``python benchmarks/bench_rigid.py 300 --rounds 3`` (03:39 UTC, load 6.2): 213 handed states,
+23.1 s of one-rim time; accepted steps a simulated second (the compliant phase's count) rigid
+1,915, compliant 3,016 (the rigid run also rejected 270 and spent 393 locating events); CPU
+4.28 ms against 3.12 ms a simulated second: **the rigid contact 0.73× as fast** (lift-off
+stretches 7,097 against 5,583 accepted steps a second, below-barrier stretches 1,612 against
+3,142). Where the rigid steps go: :mod:`coinflight.core.rigid_contact`, "Speed".
 """
 
 from __future__ import annotations

@@ -83,20 +83,23 @@ rolling and drilling stick adds two more stick conditions and their events (a co
 rolling but keeps sliding, and the reverse), left for next session. Below ω_ε the torque is
 a viscous one, time scale I1 ω_ε/(ℓ F_z) (~14 ms for a nickel at ℓ = 1e-4 m and F_z = m g):
 not what holds the steps (the benchmark's handed states take about as many accepted steps a
-simulated second with ℓ = 0: 2,205 against 1,885 at 1e-4 m, measured, on other trajectories).
+simulated second with ℓ = 0: ``bench_rigid.py 300 --rounds 1 --resistance 0``, 03:37 UTC,
+2,241, against 1,915 at the default 1e-4 m, on other trajectories).
 
 Integration
 -----------
 Dormand-Prince 5(4) with adaptive steps (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.5; the
-coefficients of :mod:`coinflight.core.contact_phase`). Written here, not shared with
-:func:`coinflight.core.contact_phase._integrate`: that loop is specialised to its derivative
-(numba compiles it per function), and sharing it would mean passing the derivative as a
-first-class function, which numba compiles differently, with no promise that the compliant
-phase stays the same to the bit. This stepper also differs: it stops at events, and projects
-after every step. The projection keeps the flow on its constraints: n renormalised; z set so
-the gap is 0; u_z (SLIDING) or u (ROLLING) set to 0 by the impulse at the contact point that
-does it with least kinetic energy (P = −u_z/K_zz Z or P = −K⁻¹ u: Gauss's principle). The
-largest gap and constraint speed removed are reported (the drift; tests bound it).
+coefficients of :mod:`coinflight.core.contact_phase`). A second copy of that stepper, on
+purpose, not shared with :func:`coinflight.core.contact_phase._integrate`: that loop is
+specialised to its derivative (numba compiles it per function), and sharing it would mean
+passing the derivative as a first-class function, which numba compiles differently (and does not
+keep in its on-disk cache, ``cache=True``, which both modules rely on to start fast), with no
+promise that the compliant phase stays the same to the bit. This stepper also differs: it stops
+at events, and projects after every step. The projection keeps the flow on its constraints: n
+renormalised; z set so the gap is 0; u_z (SLIDING) or u (ROLLING) set to 0 by the impulse at the
+contact point that does it with least kinetic energy (P = −u_z/K_zz Z or P = −K⁻¹ u: Gauss's
+principle). The largest gap and constraint speed removed are reported (the drift; tests bound
+it).
 
 The ending: with ``settle``, the run stops when the coin's energy (no springs here: kinetic
 plus m g z) is below its well's barrier, as :func:`coinflight.core.contact_phase.below_barrier`
@@ -104,27 +107,30 @@ decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
 
 Speed (measured; issue 11's target not reached)
 -----------------------------------------------
-``python benchmarks/bench_rigid.py 300 --rounds 5`` (2026-11-24 02:55 UTC, the project machine,
-2 CPUs AMD EPYC shared, load 6.5-7.7, one thread): of 300 vigorous nickel tosses (e 0.5, μ 0.3,
-ℓ_r = ℓ_p = 1e-4 m) 213 are handed to the contact phase; run rigid from those states until a
-stop, they spend a median 16 ms in one-rim modes (23.1 s in all, 61 % of it rolling), and end
-by lift-off 105, below the barrier 81, second rim 21, face 1, the 1 s limit 5. The same
-stretches through the compliant phase: **rigid 2,496 steps a simulated second (accepted,
-rejected and event steps) against 3,016, CPU 3.77 ms against 3.16 ms a simulated second: the
-rigid contact is 0.84× as fast** (a rigid step ~1.5 μs, ~1.0 μs compliant; 0.70× before the
-derivative reused its terms and kept first same as last, 02:33 UTC, load 3.5-3.9). With μ 0.6
-(``--mu 0.6``, 91 % rolling, 02:57 UTC) 2,224 against 2,988 steps, 3.22 against 3.43 ms:
-1.07×; on the coins that roll for the whole second, 749 against 2,388 steps a second (3.2×
-fewer). With RTOL 1e-6 it was slower (0.45× before those changes: more stick-slip
-switching). Why the premise (steps of the wobble's ~30 ms) does not hold, measured on single
-tosses: (1) the handed coins spin: one precessing at ω_z ≈ 110 rad/s takes steps of ~0.5 ms
-at RTOL 1e-8, its motion's own time scale; (2) stick-slip transitions at the cone's boundary
-slide at slips of 10 μm/s-1 mm/s whose direction turns fast (~15 μs steps, 80-220 steps per
-2.5 ms); (3) half the stretches end within milliseconds in a lift-off (12,000 steps a
-simulated second there, events located by bisection). Left for the next session: a
-slip-direction treatment that does not follow the slip's turning at small slips, cheaper
-event location (bisection to :data:`EVENT_TIME` now), and the hops in closed form; this
-phase alone does not give the 17× issue 11 needs.
+``python benchmarks/bench_rigid.py 300 --rounds 3`` (2026-11-24 03:39 UTC, the project machine,
+2 CPUs AMD EPYC shared, load 6.2, one thread, seed 2026): of 300 vigorous nickel tosses (e 0.5,
+μ 0.3, ℓ_r = ℓ_p = 1e-4 m) 213 are handed to the contact phase; run rigid from those states
+until a stop, they spend a median 16 ms in one-rim modes (23.1 s in all, 61 % of it rolling),
+and end by lift-off 105, below the barrier 81, second rim 21, face 1, the 1 s limit 5. The same
+stretches through the compliant phase: **accepted steps a simulated second, counted alike, rigid
+1,915 against 3,016** (the rigid run also rejects 270 and spends 393 locating events a simulated
+second), **CPU 4.28 ms against 3.12 ms a simulated second: the rigid contact is 0.73× as fast**
+(a rigid step dearer: its derivative solves the constraint, and events are bisected). Before
+friction on a slip below SLIP_FLOOR was kept from pointing along the slip (03:34 UTC, load
+5.1-6.2, same command): 1,885 accepted, 218 rejected, 3.81 against 3.17 ms, 0.83×; the earlier
+figures (0.84× at μ 0.3 and 1.07× at ``--mu 0.6``, 02:55-02:57 UTC, steps counted as accepted +
+rejected + event) predate both changes (at μ 0.6 the coins that rolled for the whole second took
+749 against 2,388 steps a second, all of the rigid run's steps counted). With RTOL 1e-6 it was
+slower (0.45× before those changes: more stick-slip switching). Why the premise (steps of the
+wobble's ~30 ms) does not hold, measured on single tosses: (1) the handed coins spin: one
+precessing at ω_z ≈ 110 rad/s takes steps of ~0.5 ms at RTOL 1e-8, its motion's own time scale;
+(2) stick-slip transitions at the cone's boundary slide at slips of 10 μm/s-1 mm/s whose
+direction turns fast (~15 μs steps, 80-220 steps per 2.5 ms); (3) half the stretches end within
+milliseconds in a lift-off (7,097 accepted steps a simulated second there in the 03:39 run,
+events located by bisection). Left for the next session: a slip-direction treatment that does
+not follow the slip's turning at small slips, cheaper event location (bisection to
+:data:`EVENT_TIME` now), and the hops in closed form; this phase alone does not give the 17×
+issue 11 needs.
 """
 
 from __future__ import annotations
