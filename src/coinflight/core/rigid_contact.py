@@ -115,12 +115,12 @@ and end by lift-off 105, below the barrier 81, second rim 21, face 1, the 1 s li
 stretches through the compliant phase: **accepted steps a simulated second, counted alike, rigid
 1,915 against 3,016** (the rigid run also rejects 270 and spends 393 locating events a simulated
 second), **CPU 4.28 ms against 3.12 ms a simulated second: the rigid contact is 0.73× as fast**
-(a rigid step dearer: its derivative solves the constraint, and events are bisected). Before
-friction on a slip below SLIP_FLOOR was kept from pointing along the slip (03:34 UTC, load
-5.1-6.2, same command): 1,885 accepted, 218 rejected, 3.81 against 3.17 ms, 0.83×; the earlier
-figures (0.84× at μ 0.3 and 1.07× at ``--mu 0.6``, 02:55-02:57 UTC, steps counted as accepted +
-rejected + event) predate both changes (at μ 0.6 the coins that rolled for the whole second took
-749 against 2,388 steps a second, all of the rigid run's steps counted). With RTOL 1e-6 it was
+(~1.7 μs a rigid step of any kind, ~1.0 μs compliant). Before friction on a slip below
+SLIP_FLOOR pointing against the ray was made to oppose the slip (03:34 UTC, load 5.1-6.2, same
+command): 1,885 accepted, 218 rejected, 3.81 against 3.17 ms, 0.83×; the earlier figures (0.84×
+at μ 0.3 and 1.07× at ``--mu 0.6``, 02:55-02:57 UTC, steps counted as accepted + rejected +
+event) predate both changes (at μ 0.6 the coins that rolled for the whole second took 749
+against 2,388 steps a second, all of the rigid run's steps counted). With RTOL 1e-6 it was
 slower (0.45× before those changes: more stick-slip switching). Why the premise (steps of the
 wobble's ~30 ms) does not hold, measured on single tosses: (1) the handed coins spin: one
 precessing at ω_z ≈ 110 rad/s takes steps of ~0.5 ms at RTOL 1e-8, its motion's own time scale;
