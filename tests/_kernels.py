@@ -4,6 +4,7 @@ it), and ``Air.build``'s keyword list filled from a :class:`coinflight.Coin` onc
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from coinflight import Coin
@@ -73,3 +74,12 @@ def coin_air(
         air_density=air_density,
         **options,
     )
+
+
+def critical_spin(coin: Coin, g: float = G) -> float:
+    """Ω_c of a disc rolling upright on a knife edge: upright rolling is stable for Ω > Ω_c,
+    Ω_c² = m g r I1 / (I3 (I3 + m r²)) (Routh; O'Reilly, Nonlinear Dyn. 10:287, 1996;
+    g / 3r for a thin uniform disc). Shared by the compliant and the rigid contact's tests."""
+    i1, i3 = (float(x) for x in coin.moments)
+    m, r = coin.mass, coin.radius
+    return math.sqrt(m * g * r * i1 / (i3 * (i3 + m * r * r)))

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from _kernels import coin_contact
+from _kernels import coin_contact, critical_spin
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
 from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING
@@ -415,19 +415,10 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
     assert len(rocked) == np.count_nonzero(out.status == Status.SETTLED_ROCKING)
 
 
-def _critical_spin(coin):
-    """Ω_c of a disc rolling upright on a knife edge: upright rolling is stable for Ω > Ω_c,
-    Ω_c² = m g r I1 / (I3 (I3 + m r²)) (Routh; O'Reilly, Nonlinear Dyn. 10:287, 1996;
-    g / 3r for a thin uniform disc)."""
-    i1, i3 = (float(x) for x in coin.moments)
-    m, r = coin.mass, coin.radius
-    return math.sqrt(m * G * r * i1 / (i3 * (i3 + m * r * r)))
-
-
 def _rolling(coin, ratio, tilt):
     """A coin rolling without slip on its rim, its plane tilted by ``tilt`` from the vertical,
     spinning at ``ratio`` times the critical Ω_c (no rolling or pivoting resistance)."""
-    spin = ratio * _critical_spin(coin)
+    spin = ratio * critical_spin(coin)
     return _state(
         coin,
         math.pi / 2 - tilt,
@@ -452,7 +443,7 @@ def test_thin_rolling_disc_falls_below_the_critical_speed_and_stays_up_above():
     # within 0.3 s); at twice the critical spin it rolls on upright, its tilt never above the
     # 2° it started with (plus 10 %) over 0.3 s, ~3 turns.
     disc = Coin(radius=0.01, thickness=0.0002, mass=0.005)
-    assert _critical_spin(disc) == pytest.approx(math.sqrt(G / (3 * disc.radius)), rel=1e-3)
+    assert critical_spin(disc) == pytest.approx(math.sqrt(G / (3 * disc.radius)), rel=1e-3)
     c = _contact(disc, e=0.5, mu=1.0)
     start = math.sin(math.radians(2.0))
     assert _largest_tilt(disc, _rolling(disc, 0.5, math.radians(2.0)), 0.3, c) > 0.5

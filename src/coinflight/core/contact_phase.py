@@ -838,6 +838,18 @@ def _motion_energy(y, c):
 
 
 @njit(cache=True)
+def _motion_free_energy(y, c):
+    """(e, f): :func:`_motion_energy` and its part that :func:`free_energy` sets against the
+    barrier without springs: all of it with friction or resistances, else less the horizontal
+    kinetic energy (conserved, not free). Shared with
+    :func:`coinflight.core.rigid_contact.below_barrier`."""
+    e = _motion_energy(y, c)
+    if _dissipative(c):
+        return e, e
+    return e, e - 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+
+
+@njit(cache=True)
 def _with_springs(e, y, c, stiffness):
     """e plus the elastic energy of both rims' arcs (:func:`rim_contact`), added in the order of
     :func:`energy`, J."""
@@ -920,18 +932,12 @@ def below_barrier(y, c, stiffness):
     addition and subtraction are monotonic, so adding them cannot bring the sum below it. The
     test :func:`_integrate` makes after every step (~10 % of a step's time before this
     shortcut)."""
-    e = _motion_energy(y, c)
+    e, free = _motion_free_energy(y, c)
     barrier = _barrier(y, c)
-    dissipative = _dissipative(c)
-    if dissipative:
-        if e >= barrier:
-            return False
-    else:
-        horizontal = 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
-        if e - horizontal >= barrier:
-            return False
+    if free >= barrier:
+        return False
     e = _with_springs(e, y, c, stiffness)
-    if not dissipative:
+    if not _dissipative(c):
         e -= 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
     return e < barrier
 
