@@ -433,6 +433,45 @@ def test_kink_weights_equal_the_exact_split_quadrature(nodes):
         assert np.max(np.abs(simpson - want)) > 1.0
 
 
+@pytest.mark.parametrize("scale", [1e-300, 2.0**-1070, 1e300])
+@pytest.mark.parametrize(
+    "nodes",
+    [(-1.77, -0.019, 1.94), (1.0, 0.2, -0.8), (-1.0, 0.5, 2.0), (0.5, -0.1, 0.4), (0.3, 0.5, 0.2)],
+)
+def test_kink_weights_do_not_depend_on_the_size_of_g(nodes, scale):
+    # g's roots and signs are those of any multiple of it: nodes of 1e-300 (b² − 4ac underflows
+    # to 0, and the roots of (-1.77, -0.019, 1.94) × 1e-300 were missed: Simpson's weights, off
+    # by O(1)), near the smallest subnormal or of 1e300 (b² overflows) give the weights of the
+    # same nodes of order 1, bit for bit (scaled by a power of two), and the exact split's.
+    tiny = tuple(scale * g for g in nodes)
+    want, narrow = _exact_quadratic_split(*tiny)
+    got = air_kernels.kink_weights(*tiny)
+    np.testing.assert_allclose(got[:6], want, rtol=0, atol=1e-12 + 2 * narrow)
+    if scale != 2.0**-1070:  # there the nodes themselves are rounded to a few bits
+        big = max(abs(g) for g in tiny)
+        unit = tuple(g * 2.0 ** -math.frexp(big)[1] for g in tiny)
+        assert got == air_kernels.kink_weights(*unit)
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e300])
+@pytest.mark.parametrize("name", ["one root 0.301", "two roots 3.1", "two roots 2.0"])
+def test_kink_integrals_do_not_depend_on_the_size_of_g(name, scale):
+    # As for the quadratic: g = n·v scaled by 1e-300 (b² − ac underflowed: no root found, an O(1)
+    # error) or 1e300 (it overflowed) gives the split quadrature of g itself.
+    theta, gcoef, qcoef, nodes = _kink_case(name)
+    nodes = np.array([scale * (gcoef @ _trig_basis(theta, x)) for x in (0.0, 0.5, 1.0)])
+    qs = [tuple(qcoef @ _trig_basis(theta, x)) for x in (0.0, 0.5, 1.0)]
+    c, s = math.cos(theta / 2), math.sin(theta / 2)
+    assert c <= air_kernels.TRIG_COS
+    got, got_z = air_kernels.kink_integrals(
+        nodes[0], nodes[1], nodes[2], qs[0], qs[1], qs[2], c, s, theta
+    )
+    want, want_z, roots = _split_quadrature(theta, gcoef, qcoef)
+    assert roots == (2 if name.startswith("two") else 1)
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-12)
+    assert got_z == pytest.approx(want_z, abs=1e-12)
+
+
 # --- analytic limits ------------------------------------------------------------------------------
 
 

@@ -267,3 +267,19 @@ def test_figure_without_suffix_is_png_and_svg(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.png", "f.svg"]
     assert f"wrote {tmp_path / 'f.png'}" in result.stdout
     assert f"wrote {tmp_path / 'f.svg'}" in result.stdout
+
+
+def test_the_analytic_boundaries_are_drawn_on_the_catch_in_the_hand_only():
+    # One rule for the command line and the web: drawn when asked for on the catch in the hand;
+    # a table's map is drawn without them (the command line) and a request for them on a
+    # table refused (the library, the web), in one line.
+    from coinflight.queries.basin import HAND, basin_query, draws_boundaries
+    from coinflight.queries.values import TableArgs
+
+    table = TableArgs("table", None, None, None, None)
+    assert draws_boundaries(HAND, True)
+    assert not draws_boundaries(HAND, False)
+    assert not draws_boundaries(table, True)
+    assert not draws_boundaries(table, False)
+    with pytest.raises(ValueError, match="belong to the catch in the hand"):
+        basin_query(QUARTER, resolution="2", table=table, boundaries=True)

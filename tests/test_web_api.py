@@ -305,6 +305,41 @@ def test_basin_bad_values_and_sizes_are_refused(client, query, message):
     assert api_error(client, f"/api/basin?{query}") == message
 
 
+def test_basin_boundaries_beyond_their_limit_are_refused_before_the_map(client, in_process):
+    """The web's map asks for its analytic boundaries: too many curves are refused from the box
+    alone, before the map's grid (made to fail the test if called) is laid out, in the library's
+    words."""
+    from coinflight.outcomes.hand import HandCatch
+    from coinflight.studies import basin
+
+    in_process.setattr(basin, "midpoints", never_called("the map's grid"))
+    in_process.setattr(HandCatch, "faces", never_called("the map's catches"))
+    detail = api_error(
+        client, "/api/basin?omega_x=60:100000&flight_time=0.6:0.9&resolution=10&boundaries=true"
+    )
+    # bands k = 0 .. int(1e5 × 0.9 / 2π) + 1 = 14,325, two curves each: 28,650 curves
+    assert detail == (
+        "drawing the analytic boundaries of a map up to 1e+05 rad/s × 0.9 s is 2.86e+04 curves, "
+        "more than the limit of 2e+03 curves; draw the map without them (--no-boundaries, "
+        "boundaries=False) or map smaller spins or flight times"
+    )
+
+
+def test_basin_boundaries_on_a_table_are_refused_before_the_map(client, in_process):
+    """Only the catch in the hand has analytic boundaries: asked for on a table, the request is
+    refused before the map's grid (made to fail the test if called) is laid out."""
+    from coinflight.outcomes.hand import HandCatch
+    from coinflight.studies import basin
+
+    in_process.setattr(basin, "midpoints", never_called("the map's grid"))
+    in_process.setattr(HandCatch, "faces", never_called("the map's catches"))
+    detail = api_error(client, "/api/basin?surface=table&resolution=10&boundaries=true")
+    assert detail == (
+        "the analytic boundaries belong to the catch in the hand; leave out --boundaries with "
+        "--surface table"
+    )
+
+
 @pytest.mark.parametrize(
     "args",
     [

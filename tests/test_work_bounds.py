@@ -13,6 +13,7 @@ clock: the machine is shared).
 from __future__ import annotations
 
 import math
+import re
 import tracemalloc
 
 import numpy as np
@@ -294,6 +295,33 @@ def test_basin_boundaries_checked_before_the_map_as_when_drawn(spin, psi, omega_
     else:
         basin.check_boundaries(QUARTER, **box)
         assert curves <= basin.MAX_BOUNDARIES
+
+
+@pytest.mark.parametrize(("band", "allowed"), [(998.5, True), (999.001, False)])
+def test_basin_boundaries_at_their_limit(band, allowed):
+    # The fastest spin ω = band × 2π / T_hi: bands k = 0 .. int(ω T_hi / 2π) + 1, two curves
+    # each; band 998.5 is exactly the limit (k up to 999: 2,000 curves), accepted by the check
+    # and when drawn; past band 999 one more band (2,002 curves), refused by both.
+    from coinflight.studies import basin
+
+    top = band * 2 * math.pi / 0.9
+    curves = 2 * (int(top * 0.9 / (2 * math.pi)) + 2)
+    assert curves == (basin.MAX_BOUNDARIES if allowed else basin.MAX_BOUNDARIES + 2)
+    box = {"flight_time": (0.6, 0.9), "spin": (60.0, top)}
+    drawn = basin.basin_map(QUARTER, **box, resolution=(2, 2))
+    if allowed:
+        basin.check_boundaries(QUARTER, **box)
+        basin.basin_map(QUARTER, **box, resolution=(2, 2), boundaries=True)
+        assert 0 < len(drawn.boundaries()) <= basin.MAX_BOUNDARIES
+    else:
+        words = f"is {curves:.3g} curves, more than the limit of {basin.MAX_BOUNDARIES:.3g} curves"
+        for refused in (
+            lambda: basin.check_boundaries(QUARTER, **box),
+            lambda: basin.basin_map(QUARTER, **box, resolution=(2, 2), boundaries=True),
+            drawn.boundaries,
+        ):
+            with pytest.raises(ValueError, match=re.escape(words)):
+                refused()
 
 
 # --- counts of bias and edge simulations, bounces -------------------------------------------

@@ -123,7 +123,7 @@ def plot_basin(
     """
     from coinflight.plotting.basin import plot_basin as draw
     from coinflight.plotting.style import figure_paths, save_figure
-    from coinflight.queries.basin import basin_query
+    from coinflight.queries.basin import basin_query, draws_boundaries
 
     figure_paths(out, "--out")  # before the map is computed, not after
     with cluster.executor() as executor:
@@ -143,7 +143,7 @@ def plot_basin(
             bounces=bounces,
             executor=executor,
             # their number bounded before the map (the table's maps are drawn without them)
-            boundaries=boundaries and table.surface == "hand",
+            boundaries=draws_boundaries(table, boundaries),
         )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
@@ -152,7 +152,7 @@ def plot_basin(
         ending = table_title(table.drop_height, table.restitution, table.friction, bounces)
         figure = draw(basin, ending=ending, boundaries=False)
     else:
-        figure = draw(basin, boundaries=boundaries)
+        figure = draw(basin, boundaries=draws_boundaries(table, boundaries))
     echo_written(save_figure(figure, out, dpi=dpi))
 
 

@@ -444,15 +444,33 @@ def _piece(x0: float, x1: float, sign: float, w: tuple) -> tuple:
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def unit_scaled(g0: float, g1: float, g2: float) -> tuple:
+    """``g0, g1, g2`` times the power of two that brings the largest in size into [1/2, 1)
+    (unchanged if all are 0 or one is not finite): their roots and signs are the same, and the
+    scaling is exact (Goldberg, "What every computer scientist should know about floating-point
+    arithmetic", ACM Computing Surveys 23, 1991, §1.2: a power of two changes the exponent only),
+    so that b² − 4ac formed from them neither underflows nor overflows (nodes of 1e-300 once
+    made it 0 and lost a root). Where the products of the unscaled nodes stay normal numbers
+    (every ordinary step) the roots found from the scaled ones are the same bit for bit."""
+    big = max(abs(g0), abs(g1), abs(g2))
+    if big == 0.0 or not big < math.inf:
+        return g0, g1, g2
+    e = -math.frexp(big)[1]
+    return math.ldexp(g0, e), math.ldexp(g1, e), math.ldexp(g2, e)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def one_sign(g0: float, gm: float, g2: float) -> float:
     """The sign of g = n·v over a step in which no root of its interpolant was found, from its
     values at the stages x = 0, 1/2, 1: that of the one largest in size. If g has no root in
-    the step, all three share it; a root may also have been missed by rounding, but only
-    within rounding of an end (where g is then tiny) or as two roots within rounding of each
-    other (a discriminant rounded below 0: g tiny between them), and then g keeps the sign
-    of its largest node on all but a rounding-sized part of the step. (Taking g1's sign
-    there, or an end's, once gave the whole step the wrong sign: an O(1) error in its drag
-    integral.)"""
+    the step, all three share it; a root may also have been missed by rounding, but, with the
+    nodes scaled to order 1 first (:func:`unit_scaled`, so that the discriminant neither
+    underflows nor overflows), only within rounding of an end (where g is then tiny) or as two
+    roots within rounding of each other (a discriminant rounded below 0: g tiny between
+    them), and then g keeps the sign of its largest node on all but a rounding-sized part of
+    the step. (Taking g1's sign there, or an end's, once gave the whole step the wrong sign:
+    an O(1) error in its drag integral. Unscaled nodes of 1e-300 made the discriminant 0
+    where it is not, and missed two roots far apart.)"""
     if abs(g0) >= abs(gm) and abs(g0) >= abs(g2):
         big = g0
     elif abs(gm) >= abs(g2):
@@ -485,6 +503,7 @@ def kink_weights(g0: float, g1: float, g2: float) -> tuple:
     roots found takes g_q's sign at its middle, so that a root within rounding of an end, put
     on either side of it, changes the weights by rounding only (as in :func:`kink_integrals`).
     """
+    g0, g1, g2 = unit_scaled(g0, g1, g2)
     c = g0
     a = 2.0 * g0 - 4.0 * g1 + 2.0 * g2
     b = -3.0 * g0 + 4.0 * g1 - g2
@@ -600,6 +619,7 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
             ),
             m0 * q0[2] + m1 * qm[2] + m2 * q2[2],
         )
+    g0, gm, g2 = unit_scaled(g0, gm, g2)  # the roots' b² − ac of order 1, and the same roots
     cc = c * c - s * s  # cos θ
     ss = 2.0 * c * s  # sin θ
     # Nodes 0, 1/2, 1: f = p + q, p + q c + r s, p + q C + r S; solved for (p, q, r).

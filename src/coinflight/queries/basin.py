@@ -97,8 +97,7 @@ def basin_query(
     from coinflight.studies.basin import basin_map
 
     spin, psi_rad = spin_box(omega_x, omega_y, omega_z, psi, precession_rate)
-    if boundaries:
-        _catch_only(table)
+    _catch_only(table, boundaries)
     outcome = table_outcome(table, bounces)
     n_t, n_w = parse_resolution(resolution)
     if outcome:  # a map of table landings: each cell a landing, at the model's rate
@@ -125,9 +124,17 @@ def basin_query(
     )
 
 
-def _catch_only(table: TableArgs) -> None:
-    """ValueError unless the map is of the catch in the hand (the analytic boundaries' own)."""
-    if table.surface != "hand":
+def draws_boundaries(table: TableArgs, boundaries: bool) -> bool:
+    """Whether a map's analytic boundaries are drawn: asked for (``boundaries``) and the map is
+    of the catch in the hand, the only one that has them. The command line draws a table's
+    map without them; a request that asks for them on a table is refused (the web)."""
+    return boundaries and table.surface == "hand"
+
+
+def _catch_only(table: TableArgs, boundaries: bool) -> None:
+    """ValueError if the analytic boundaries are asked for and the map is not of the catch in
+    the hand (their own: :func:`draws_boundaries`)."""
+    if boundaries and not draws_boundaries(table, boundaries):
         raise ValueError("the analytic boundaries belong to the catch in the hand; leave out "
                          "--boundaries with --surface table")  # fmt: skip
 
@@ -146,8 +153,8 @@ def basin_payload(
     payload["resolution"] = [n_t, n_w]
     payload.update(surface_payload(surface_from(table), None))
     payload["bounces"] = bounces
+    _catch_only(table, boundaries)
     if boundaries:
-        _catch_only(table)
         payload["boundaries"] = [
             {"flight_time": [None if math.isnan(x) else float(x) for x in t], "spin": w.tolist()}
             for t, w in basin.boundaries(n_points=200)
@@ -155,4 +162,4 @@ def basin_payload(
     return payload
 
 
-__all__ = ["basin_payload", "basin_query", "spin_box", "time_range"]
+__all__ = ["basin_payload", "basin_query", "draws_boundaries", "spin_box", "time_range"]
