@@ -25,7 +25,14 @@ first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 again
 and are not the measure of the change. Quiet (load 1.4-1.8, 2026-11-24 01:46 UTC, the same
 command, 300 tosses, against the code before at 6061499): **2,954 a second against 2,245**
 (1.32×; one thread 1.29×), each toss its own e, μ 2,645 against 2,018 (1.31×; 1.34×); faces
-differing on 0 and 1 of 300. So 50,000 is still ~17× away.
+differing on 0 and 1 of 300. So 50,000 was then ~17× away. The sliding-mass damper
+(2026-11-24, "Restitution") makes each derivative dearer: quiet (load 0.8-1.1, 2026-11-24
+04:25 UTC, the same command against main at 507692d, before it, and at 51e4b64, before it
+but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×; one thread
+969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599 (0.68×;
+0.69×); against 51e4b64 0.67× and 0.67-0.69× alike, so the cost is the damper's (or the rigid
+contact's shared energy helper, merged with it; not separated). Faces differing on 21 and 10
+of 300. 50,000 is now ~25× away.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
