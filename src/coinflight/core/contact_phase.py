@@ -30,9 +30,10 @@ differing on 0 and 1 of 300. So 50,000 was then ~17× away. The sliding-mass dam
 04:25 UTC, the same command against main at 507692d, before it, and at 51e4b64, before it
 but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×; one thread
 969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599 (0.68×;
-0.69×); against 51e4b64 0.67× and 0.67-0.69× alike, so the cost is the damper's (or the rigid
-contact's shared energy helper, merged with it; not separated). Faces differing on 21 and 10
-of 300. 50,000 is now ~25× away.
+0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper alone
+merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
+rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300
+against 507692d. 50,000 is now ~25× away.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
