@@ -1,0 +1,332 @@
+"""How far the contact ending's outcomes are set by its step tolerance (issue 11).
+
+    python benchmarks/bench_tolerance.py [N] [--seed S] [--tolerances 1e-5,1e-6,1e-7,1e-8,1e-9]
+        [--extra 1e-10 --subset M]
+
+The same seeded vigorous tosses of a US nickel as ``bench_bounce.py`` (``bench_bounce.tosses``:
+ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop, heads up) land on
+three surfaces with the contact ending: e 0.5 μ 0.3, e 0.5 μ 0.6, and each toss its own
+e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (drawn as ``bench_bounce.contact_rates`` draws them, seed 7,
+and applied with :func:`coinflight.core.bounce.with_surface`, as ``land`` does). Each toss's
+bounces run once (:func:`bench_contact.handoff`; they do not depend on the contact phase's
+tolerance); a toss handed to the contact phase is then carried to its end by
+:func:`coinflight.core.contact_phase.advance` (``settle_check``, ``decide`` as
+:data:`~coinflight.core.contact_phase.UPRIGHT_DECISION`: what ``settle`` does) at each step
+tolerance ``rtol``, one thread, timed per toss in CPU time. At the default
+:data:`~coinflight.core.contact_phase.RTOL` the faces and statuses are checked equal to
+``land``'s on the same tosses (the script stops if not).
+
+Per tolerance: the faces (heads, tails, edge) and statuses (settled at an impact, settled in
+contact, decided upright, unsettled) of all N tosses, each fraction with its binomial standard
+error; against the tightest tolerance of the list: the tosses whose face differs (count, share
+of the handed tosses with a 95 % Wilson interval), the statuses that differ, and each face
+fraction's difference in units of its standard error (the two runs' errors added in quadrature,
+as for independent samples) with the two-proportion test's p (SciPy's ``chi2_contingency``,
+no continuity correction) and, since the runs are paired, McNemar's exact p on the discordant
+pairs (``binomtest``); steps, CPU time and simulated time per handed toss (medians).
+
+The chaos baseline: each handed state, every component multiplied by 1 + 1e-12 N(0, 1) (seed
+``S + 1``), is carried on at the tightest and at the default tolerance; its faces are compared
+with the unperturbed run's at that tolerance. When the default disagrees with the tightest
+about as often as a 1e-12 nudge does, per-toss faces are not numerically determined at any
+practical tolerance, and only the ensemble's fractions mean anything. ``--extra 1e-10
+--subset M`` also runs the first M tosses at 1e-10 and compares the tightest of the list with it
+there.
+
+Measured: see the end of this docstring (filled in from the run quoted there).
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("NUMBA_NUM_THREADS", "1")  # before numba is imported
+
+import argparse
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+SETTINGS: dict[str, tuple[float, float] | None] = {
+    "e 0.5, μ 0.3": (0.5, 0.3),
+    "e 0.5, μ 0.6": (0.5, 0.6),
+    "own e, μ": None,
+}
+"""The surfaces (e, μ); None: each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)."""
+TOLERANCES = (1e-5, 1e-6, 1e-7, 1e-8, 1e-9)
+NUDGE = 1e-12
+"""Relative size of the chaos baseline's perturbation of each handed state's components."""
+
+FACES = ("tails", "heads", "edge")  # the codes TAILS 0, HEADS 1, EDGE 2
+# Status codes of coinflight.core.outcome.Status grouped for the tables.
+STATUSES = {"impact": (0, 1, 2), "contact": (5,), "decided": (6,), "unsettled": (3,)}
+
+
+@dataclass
+class Run:
+    """Outcomes of N tosses at one tolerance (non-handed tosses: their bounces' outcome)."""
+
+    face: np.ndarray
+    status: np.ndarray
+    steps: np.ndarray
+    cpu: np.ndarray
+    time: np.ndarray
+
+
+def disagreements(a: np.ndarray, b: np.ndarray, among: np.ndarray | None = None) -> int:
+    """How many entries of ``a`` and ``b`` (paired) differ, among ``among`` (a mask) if given."""
+    differ = np.asarray(a) != np.asarray(b)
+    if among is not None:
+        differ &= np.asarray(among, dtype=bool)
+    return int(np.count_nonzero(differ))
+
+
+def discordant(a: np.ndarray, b: np.ndarray) -> tuple[int, int]:
+    """McNemar's discordant pairs of two paired boolean arrays: (a and not b, b and not a)."""
+    a = np.asarray(a, dtype=bool)
+    b = np.asarray(b, dtype=bool)
+    return int(np.count_nonzero(a & ~b)), int(np.count_nonzero(b & ~a))
+
+
+def mcnemar_p(a: np.ndarray, b: np.ndarray) -> float:
+    """McNemar's exact two-sided p for equal marginal shares of two paired boolean arrays (the
+    discordant pairs as Binomial(b + c, 1/2), McNemar 1947; SciPy's ``binomtest``); 1 when no
+    pair is discordant."""
+    from scipy.stats import binomtest
+
+    k, j = discordant(a, b)
+    return 1.0 if k + j == 0 else float(binomtest(k, k + j, 0.5).pvalue)
+
+
+def two_proportions(k1: int, k2: int, n: int) -> tuple[float, float, float]:
+    """Two shares k1/n and k2/n as independent samples: (difference, its standard error
+    sqrt(p1 q1/n + p2 q2/n), two-sided p of the two-proportion test). The p is SciPy's
+    ``chi2_contingency`` without continuity correction on the 2×2 table (the pooled
+    two-proportion z test squared); 1 when k1 = k2 (also when both are 0 or n, where the
+    table has an empty margin)."""
+    from scipy.stats import chi2_contingency
+
+    p1, p2 = k1 / n, k2 / n
+    se = math.sqrt(p1 * (1 - p1) / n + p2 * (1 - p2) / n)
+    if k1 == k2:
+        return 0.0, se, 1.0
+    table = np.array([[k1, n - k1], [k2, n - k2]])
+    p = float(chi2_contingency(table, correction=False).pvalue)
+    return p1 - p2, se, p
+
+
+def nudged(y: np.ndarray, rng: np.random.Generator, size: float = NUDGE) -> np.ndarray:
+    """``y`` with each component multiplied by 1 + size N(0, 1) (a relative perturbation; the
+    unit normal n = y[4:7] renormalised)."""
+    out = np.asarray(y, dtype=float) * (1.0 + size * rng.standard_normal(len(y)))
+    out[4:7] /= np.linalg.norm(out[4:7])
+    return out
+
+
+def share(k: int, n: int) -> str:
+    """'k/n = p ± s.e.'."""
+    p = k / n
+    return f"{p:.4f} ± {math.sqrt(p * (1 - p) / n):.4f}"
+
+
+def mixture(n: int) -> dict[str, np.ndarray]:
+    """Each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), drawn as ``bench_bounce.contact_rates``
+    draws them (seed 7), in ``land``'s ``contact`` form."""
+    rng = np.random.default_rng(7)
+    return {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+
+
+def records(n: int, setting: tuple[float, float] | None):  # type: ignore[no-untyped-def]
+    """The contact record of each of ``n`` tosses on ``setting`` (as ``bench_bounce`` lands
+    them: one surface, or its e 0.5 μ 0.3 surface with each toss's own e, μ)."""
+    import bench_bounce
+    import bench_contact
+    from coinflight.core import bounce
+
+    if setting is not None:
+        c = bench_contact.contact(*setting)
+        return [c] * n
+    base = bench_contact.contact(bench_bounce.CONTACT.restitution, bench_bounce.CONTACT.friction)
+    own = mixture(n)
+    e, mu = own["restitution"], own["friction"]
+    rolling, pivoting = base.rolling_resistance, base.pivoting_resistance
+    return [bounce.with_surface(base, e[k], mu[k], rolling, pivoting) for k in range(n)]
+
+
+def carry(states, cs, handed, base_face, base_status, rtol) -> Run:  # type: ignore[no-untyped-def]
+    """Every handed state carried to its end at ``rtol`` (what ``contact_phase.settle`` does)."""
+    from coinflight.core import contact_phase as cp
+    from coinflight.core.impact import resting_face
+    from coinflight.core.outcome import Status
+
+    n = len(cs)
+    run = Run(base_face.copy(), base_status.copy(), np.zeros(n), np.zeros(n), np.zeros(n))
+    status_of = {
+        cp.Ending.SETTLED: Status.SETTLED_CONTACT,
+        cp.Ending.DECIDED: Status.DECIDED_UPRIGHT,
+        cp.Ending.RUNNING: Status.UNSETTLED,
+    }
+    for k in np.flatnonzero(handed):
+        y = states[k].copy()
+        c = cs[k]
+        t0 = time.process_time()
+        t, steps, ended = cp.advance(
+            y, math.inf, c, settle_check=True, decide=cp.UPRIGHT_DECISION, rtol=rtol
+        )
+        run.cpu[k] = time.process_time() - t0
+        run.face[k] = resting_face(y[6], c.edge_sine)
+        run.status[k] = status_of[ended]
+        run.steps[k], run.time[k] = steps, t
+    return run
+
+
+def report_run(name: str, run: Run, handed: np.ndarray, ref: Run | None) -> None:
+    """One tolerance's line: faces, statuses, cost and, against ``ref``, the disagreements."""
+    n, h = len(run.face), handed
+    faces = ", ".join(f"{f} {share(int(np.sum(run.face == j)), n)}" for j, f in enumerate(FACES))
+    counts = {s: int(np.isin(run.status, codes).sum()) for s, codes in STATUSES.items()}
+    print(
+        f"  {name}: {faces}; statuses {counts}; per handed toss median "
+        f"{np.median(run.steps[h]):,.0f} steps (mean {run.steps[h].mean():,.0f}), "
+        f"{np.median(run.cpu[h]) * 1e3:.2f} ms CPU "
+        f"(total {run.cpu[h].sum():.1f} s), settles after {np.median(run.time[h]):.3f} s "
+        f"(90 % {np.percentile(run.time[h], 90):.3f} s)"
+    )
+    if ref is None:
+        return
+    from coinflight.probability.result import wilson_interval
+
+    k, m = disagreements(run.face, ref.face, h), int(h.sum())
+    lo, hi = wilson_interval(k, m)
+    st = disagreements(run.status, ref.status, h)
+    tests = []
+    for j, f in enumerate(FACES):
+        a, b = run.face == j, ref.face == j
+        diff, se, p = two_proportions(int(a.sum()), int(b.sum()), n)
+        z = diff / se if se > 0 else 0.0
+        tests.append(f"{f} {diff:+.4f} ({z:+.1f} s.e., p {p:.2f}, McNemar {mcnemar_p(a, b):.2f})")
+    print(
+        f"    against the tightest: faces differ on {k} of {m} handed ({k / m:.1%}, 95 % "
+        f"{lo:.1%}-{hi:.1%}), statuses on {st}; fractions " + "; ".join(tests)
+    )
+
+
+def study(
+    n: int,
+    seed: int,
+    name: str,
+    setting: tuple[float, float] | None,
+    tolerances: Sequence[float],
+    extra: float | None,
+    subset: int,
+    nudges: Sequence[float] = (),
+) -> dict[str, float]:
+    """The tolerance study of ``n`` tosses on one setting; returns the headline counts."""
+    import bench_bounce
+    import bench_contact
+    from coinflight.core import bounce
+    from coinflight.core import contact_phase as cp
+    from coinflight.outcomes.table import land
+    from coinflight.probability.result import wilson_interval
+
+    omega, v0 = bench_bounce.tosses(n, seed)
+    cs = records(n, setting)
+    states = np.zeros((n, 10))
+    handed = np.zeros(n, dtype=bool)
+    base_face = np.full(n, -1)
+    base_status = np.full(n, -1)
+    for k in range(n):
+        w = (omega[k, 0], omega[k, 1], omega[k, 2])
+        states[k], handed[k] = bench_contact.handoff(w, 1.0, v0[k], cs[k])
+        if not handed[k]:
+            out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
+            base_face[k], base_status[k] = out[0], out[4]
+    tight = min(tolerances)
+    first = int(np.flatnonzero(handed)[0]) if handed.any() else 0
+    cp.advance(states[first].copy(), 1e-3, cs[first], settle_check=True)  # compile or load
+    runs = {r: carry(states, cs, handed, base_face, base_status, r) for r in tolerances}
+    # The default tolerance must give land()'s outcomes on the same tosses.
+    if cp.RTOL in runs:
+        e, mu = (0.5, 0.3) if setting is None else setting
+        surface = bench_bounce.Surface("table", bench_bounce.DROP, e, mu, ending="contact")
+        own = None if setting is not None else mixture(n)
+        out = land(bench_bounce.COIN, omega, v0, 1.0, bench_bounce.G, surface, contact=own)
+        same = np.array_equal(out.face, runs[cp.RTOL].face) and np.array_equal(
+            out.status, runs[cp.RTOL].status
+        )
+        if not same:
+            raise SystemExit(f"{name}: the study's default run differs from land()'s outcomes")
+    m = int(handed.sum())
+    print(
+        f"{name}: {n} tosses (seed {seed}), {m} handed to the contact phase; load "
+        f"{os.getloadavg()[0]:.2f}; faces checked equal to land()'s at RTOL {cp.RTOL:g}"
+    )
+    for r in tolerances:
+        report_run(f"rtol {r:g}", runs[r], handed, None if r == tight else runs[tight])
+    result = {
+        f"differ {r:g}": disagreements(runs[r].face, runs[tight].face, handed) for r in tolerances
+    }
+    cases = [(NUDGE, r) for r in sorted({tight, cp.RTOL}) if r in runs]
+    cases += [(size, tight) for size in nudges if size != NUDGE]
+    for size, r in cases:
+        rng = np.random.default_rng(seed + 1)
+        pert = np.array([nudged(y, rng, size) for y in states])
+        other = carry(pert, cs, handed, base_face, base_status, r)
+        k = disagreements(other.face, runs[r].face, handed)
+        lo, hi = wilson_interval(k, m)
+        print(
+            f"  chaos baseline at rtol {r:g}: a {size:g} relative nudge of each handed state "
+            f"changes the face of {k} of {m} ({k / m:.1%}, 95 % {lo:.1%}-{hi:.1%}), statuses "
+            f"{disagreements(other.status, runs[r].status, handed)}"
+        )
+        result[f"nudge {size:g} at {r:g}"] = k
+    if extra is not None and subset > 0:
+        sub = handed.copy()
+        sub[subset:] = False
+        finer = carry(states, cs, sub, base_face, base_status, extra)
+        k = disagreements(finer.face, runs[tight].face, sub)
+        print(
+            f"  rtol {extra:g} on the first {subset} tosses ({int(sub.sum())} handed): faces "
+            f"differ from rtol {tight:g} on {k}; median {np.median(finer.steps[sub]):,.0f} steps, "
+            f"{np.median(finer.cpu[sub]) * 1e3:.2f} ms CPU"
+        )
+        result[f"extra {extra:g}"] = k
+    result["handed"] = m
+    return result
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=100, help="tosses per setting")
+    parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument(
+        "--tolerances", default=",".join(f"{r:g}" for r in TOLERANCES), help="rtol list"
+    )
+    parser.add_argument("--extra", type=float, default=None, help="a finer rtol on a subset")
+    parser.add_argument("--subset", type=int, default=0, help="tosses run at --extra")
+    parser.add_argument(
+        "--nudges", default="", help="further relative nudges, at the tightest rtol (1e-9,1e-6)"
+    )
+    parser.add_argument("--settings", default=",".join(range_names()), help="settings to run")
+    args = parser.parse_args()
+    tolerances = [float(x) for x in args.tolerances.split(",")]
+    nudges = [float(x) for x in args.nudges.split(",") if x]
+    if args.n < 1 or not all(0.0 < r < 1.0 for r in tolerances):
+        parser.error("N must be at least 1 and every tolerance in (0, 1)")
+    t0 = time.perf_counter()
+    for key in args.settings.split(","):
+        name = list(SETTINGS)[int(key)]
+        study(args.n, args.seed, name, SETTINGS[name], tolerances, args.extra, args.subset, nudges)
+    print(f"{time.perf_counter() - t0:.0f} s wall, load {os.getloadavg()}")
+
+
+def range_names() -> list[str]:
+    """The indices of :data:`SETTINGS` as strings (``--settings 0,2``)."""
+    return [str(i) for i in range(len(SETTINGS))]
+
+
+if __name__ == "__main__":
+    main()

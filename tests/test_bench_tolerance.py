@@ -1,0 +1,84 @@
+"""benchmarks/bench_tolerance.py: the pure pieces of the step-tolerance study of the contact
+ending (disagreement counting, the paired and unpaired tests, the chaos baseline's nudge), and
+that its own carrying of the handed states reproduces ``land``'s outcomes (no timings)."""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+HERE = Path(__file__).resolve().parents[1] / "benchmarks"
+SCRIPT = HERE / "bench_tolerance.py"
+
+
+@pytest.fixture
+def bench(monkeypatch):  # type: ignore[no-untyped-def]
+    monkeypatch.syspath_prepend(str(HERE))  # the script imports bench_bounce, bench_contact
+    spec = importlib.util.spec_from_file_location("bench_tolerance", SCRIPT)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_disagreements_count_differing_pairs_among_a_mask(bench):
+    a = np.array([0, 1, 2, 1, 0])
+    b = np.array([0, 2, 2, 0, 1])
+    assert bench.disagreements(a, b) == 3
+    assert bench.disagreements(a, b, np.array([True, True, True, False, False])) == 1
+    assert bench.disagreements(a, a) == 0
+
+
+def test_discordant_pairs_and_mcnemars_exact_p(bench):
+    a = np.array([True] * 6 + [False] * 4)
+    b = np.array([False] * 6 + [False] * 4)
+    assert bench.discordant(a, b) == (6, 0)
+    assert bench.discordant(b, a) == (0, 6)
+    # Six discordant pairs all one way: two-sided exact p = 2 (1/2)^6 (McNemar 1947).
+    assert bench.mcnemar_p(a, b) == pytest.approx(2 * 0.5**6, rel=1e-12)
+    # One each way: p = 1; none discordant: p = 1.
+    assert bench.mcnemar_p(np.array([True, False]), np.array([False, True])) == pytest.approx(1.0)
+    assert bench.mcnemar_p(a, a) == 1.0
+
+
+def test_two_proportions_is_the_pooled_z_test(bench):
+    # The pooled two-proportion z test written out: z = (p1 − p2)/sqrt(p (1 − p) 2/n),
+    # p = erfc(|z|/√2) (Fleiss, Levin & Paik, Statistical Methods for Rates and Proportions,
+    # 3rd ed., §2.5, without continuity correction).
+    n, k1, k2 = 1000, 520, 470
+    p1, p2, pooled = k1 / n, k2 / n, (k1 + k2) / (2 * n)
+    z = (p1 - p2) / math.sqrt(pooled * (1 - pooled) * 2 / n)
+    diff, se, p = bench.two_proportions(k1, k2, n)
+    assert diff == pytest.approx(0.05, abs=1e-15)
+    assert se == pytest.approx(math.sqrt(p1 * (1 - p1) / n + p2 * (1 - p2) / n), rel=1e-12)
+    assert p == pytest.approx(math.erfc(abs(z) / math.sqrt(2)), rel=1e-9)
+    assert bench.two_proportions(0, 0, n) == (0.0, 0.0, 1.0)  # an empty margin: equal
+    assert bench.two_proportions(37, 37, n)[2] == 1.0
+
+
+def test_the_nudge_is_relative_seeded_and_keeps_n_a_unit_vector(bench):
+    y = np.array([0.01, 0.3, -0.2, 0.05, 0.6, 0.0, 0.8, 1e-5, -2e-5, 3e-6])
+    a = bench.nudged(y, np.random.default_rng(5), 1e-12)
+    b = bench.nudged(y, np.random.default_rng(5), 1e-12)
+    assert np.array_equal(a, b)
+    assert not np.array_equal(a, y)
+    assert np.linalg.norm(a[4:7]) == pytest.approx(1.0, abs=1e-15)
+    changed = np.abs(a - y)
+    assert changed[5] == 0.0  # a zero component stays zero: the nudge is relative
+    assert np.all(changed <= 1e-10 * np.abs(y))  # ~1e-12 of each component, not more
+
+
+def test_the_study_reproduces_lands_outcomes_and_counts_against_the_tightest(bench):
+    # study() stops (SystemExit) if its carrying at RTOL differs from land() on the same
+    # tosses; a run against itself differs nowhere.
+    from coinflight.core import contact_phase as cp
+
+    for name, setting in bench.SETTINGS.items():
+        result = bench.study(8, 3, name, setting, [cp.RTOL, cp.RTOL], None, 0)
+        assert result[f"differ {cp.RTOL:g}"] == 0
+        assert result[f"nudge {bench.NUDGE:g} at {cp.RTOL:g}"] >= 0
+        assert 0 < result["handed"] <= 8
