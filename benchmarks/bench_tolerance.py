@@ -253,7 +253,9 @@ def study(
     subset: int,
     nudges: Sequence[float] = (),
 ) -> dict[str, float]:
-    """The tolerance study of ``n`` tosses on one setting; returns the headline counts."""
+    """The tolerance study of ``n`` tosses on one setting; returns the headline counts (faces
+    differing from the tightest, changed by each nudge; the handed tosses) and each
+    tolerance's median steps per handed toss."""
     import bench_bounce
     import bench_contact
     from coinflight.core import bounce
@@ -295,9 +297,11 @@ def study(
     )
     for r in tolerances:
         report_run(f"rtol {r:g}", runs[r], handed, None if r == tight else runs[tight])
-    result = {
+    result: dict[str, float] = {
         f"differ {r:g}": disagreements(runs[r].face, runs[tight].face, handed) for r in tolerances
     }
+    for r in tolerances:
+        result[f"steps {r:g}"] = float(np.median(runs[r].steps[handed]))
     cases = [(NUDGE, r) for r in sorted({tight, cp.RTOL}) if r in runs]
     cases += [(size, tight) for size in nudges if size != NUDGE]
     for size, r in cases:
