@@ -60,16 +60,23 @@ def test_two_proportions_is_the_pooled_z_test(bench):
     assert bench.two_proportions(37, 37, n)[2] == 1.0
 
 
-def test_the_nudge_is_relative_seeded_and_keeps_n_a_unit_vector(bench):
+@pytest.mark.parametrize("size", [1e-12, 1e-6])
+def test_the_nudge_is_relative_seeded_and_keeps_n_a_unit_vector(bench, size):
     y = np.array([0.01, 0.3, -0.2, 0.05, 0.6, 0.0, 0.8, 1e-5, -2e-5, 3e-6])
-    a = bench.nudged(y, np.random.default_rng(5), 1e-12)
-    b = bench.nudged(y, np.random.default_rng(5), 1e-12)
+    a = bench.nudged(y, np.random.default_rng(5), size)
+    b = bench.nudged(y, np.random.default_rng(5), size)
     assert np.array_equal(a, b)
-    assert not np.array_equal(a, y)
     assert np.linalg.norm(a[4:7]) == pytest.approx(1.0, abs=1e-15)
-    changed = np.abs(a - y)
-    assert changed[5] == 0.0  # a zero component stays zero: the nudge is relative
-    assert np.all(changed <= 1e-10 * np.abs(y))  # ~1e-12 of each component, not more
+    assert a[5] == 0.0  # a zero component stays zero: the nudge is relative
+    # Each component times 1 + size z, z the same generator's standard normal draws; the
+    # unit normal n = y[4:7] (a unit vector here) then rescaled to length 1.
+    z = np.random.default_rng(5).standard_normal(len(y))
+    expected = y * (1.0 + size * z)
+    expected[4:7] /= math.sqrt(np.sum(expected[4:7] ** 2))
+    np.testing.assert_allclose(a, expected, rtol=1e-15, atol=0.0)
+    # The size is felt: relative changes of order size (not 0, not 50 times it).
+    rel = np.abs(a[[0, 1, 2, 3, 7, 8, 9]] / y[[0, 1, 2, 3, 7, 8, 9]] - 1.0)
+    assert 0.05 * size < np.max(rel) < 5.0 * size
 
 
 def test_the_study_reproduces_lands_outcomes_and_counts_against_the_tightest(bench, monkeypatch):
