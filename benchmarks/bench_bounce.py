@@ -59,6 +59,13 @@ def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
     return omega, rng.uniform(1.5, 3.0, n)
 
 
+def own_rates(n: int) -> dict[str, np.ndarray]:
+    """Each of ``n`` tosses' own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (seed 7), in ``land``'s
+    ``contact`` form (:func:`contact_rates`; ``bench_tolerance.py``)."""
+    rng = np.random.default_rng(7)
+    return {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+
+
 def face_fractions(face: np.ndarray) -> str:
     """'P(heads, tails, edge) = (…)' of an array of face codes (TAILS=0, HEADS=1, EDGE=2)."""
     share = np.bincount(face, minlength=3) / len(face)
@@ -238,8 +245,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
 
     omega, v0 = tosses(n)
     contact = CONTACT
-    rng = np.random.default_rng(7)
-    mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+    mixture = own_rates(n)
     for parallel in (True, False):  # compile (or load the cache)
         land(COIN, omega[:20], v0[:20], 1.0, G, contact, parallel=parallel)
         part = {k: v[:20] for k, v in mixture.items()}

@@ -3,17 +3,17 @@
     python benchmarks/bench_tolerance.py [N] [--seed S] [--tolerances 1e-5,1e-6,1e-7,1e-8,1e-9]
         [--extra 1e-10 --subset M]
 
-The same seeded vigorous tosses of a US nickel as ``bench_bounce.py`` (``bench_bounce.tosses``:
-ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop, heads up) land on
-three surfaces with the contact ending: e 0.5 μ 0.3, e 0.5 μ 0.6, and each toss its own
-e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (drawn as ``bench_bounce.contact_rates`` draws them, seed 7,
-and applied with :func:`coinflight.core.bounce.with_surface`, as ``land`` does). Each toss's
-bounces run once (:func:`bench_contact.handoff`; they do not depend on the contact phase's
-tolerance); a toss handed to the contact phase is then carried to its end by
-:func:`coinflight.core.contact_phase.advance` (``settle_check``, ``decide`` as
-:data:`~coinflight.core.contact_phase.UPRIGHT_DECISION`: what ``settle`` does) at each step
-tolerance ``rtol``, one thread, timed per toss in CPU time. At the default
-:data:`~coinflight.core.contact_phase.RTOL` the faces and statuses are checked equal to
+The same seeded vigorous tosses of a US nickel as ``bench_bounce.py`` (``bench_bounce.tosses``: ωx ~
+U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop, heads up) land on three
+surfaces with the contact ending (``bench_bounce.UPRIGHT_SURFACES``): e 0.5 μ 0.3, e 0.5 μ 0.6, and
+each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (``bench_bounce.own_rates``, seed 7, as
+``bench_bounce.contact_rates`` draws them, and applied with
+:func:`coinflight.core.bounce.with_surface`, as ``land`` does). Each toss's bounces run once
+(:func:`bench_contact.handoff`; they do not depend on the contact phase's tolerance); a toss handed
+to the contact phase is then carried to its end by :func:`coinflight.core.contact_phase.advance`
+(``settle_check``, ``decide`` as :data:`~coinflight.core.contact_phase.UPRIGHT_DECISION`: what
+``settle`` does) at each step tolerance ``rtol``, one thread, timed per toss in CPU time. At the
+default :data:`~coinflight.core.contact_phase.RTOL` the faces and statuses are checked equal to
 ``land``'s on the same tosses (the script stops if not).
 
 Per tolerance: the faces (heads, tails, edge) and statuses (settled at an impact, settled in
@@ -79,12 +79,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-SETTINGS: dict[str, tuple[float, float] | None] = {
-    "e 0.5, μ 0.3": (0.5, 0.3),
-    "e 0.5, μ 0.6": (0.5, 0.6),
-    "own e, μ": None,
-}
-"""The surfaces (e, μ); None: each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6)."""
+import bench_bounce  # the script's own folder is on the path
+
+SETTINGS = bench_bounce.UPRIGHT_SURFACES
+"""The surfaces (e, μ); None: each toss its own e, μ (:func:`bench_bounce.own_rates`)."""
 TOLERANCES = (1e-5, 1e-6, 1e-7, 1e-8, 1e-9)
 NUDGE = 1e-12
 """Relative size of the chaos baseline's perturbation of each handed state's components."""
@@ -161,17 +159,9 @@ def share(k: int, n: int) -> str:
     return f"{p:.4f} ± {math.sqrt(p * (1 - p) / n):.4f}"
 
 
-def mixture(n: int) -> dict[str, np.ndarray]:
-    """Each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6), drawn as ``bench_bounce.contact_rates``
-    draws them (seed 7), in ``land``'s ``contact`` form."""
-    rng = np.random.default_rng(7)
-    return {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
-
-
 def records(n: int, setting: tuple[float, float] | None):  # type: ignore[no-untyped-def]
     """The contact record of each of ``n`` tosses on ``setting`` (as ``bench_bounce`` lands
     them: one surface, or its e 0.5 μ 0.3 surface with each toss's own e, μ)."""
-    import bench_bounce
     import bench_contact
     from coinflight.core import bounce
 
@@ -179,7 +169,7 @@ def records(n: int, setting: tuple[float, float] | None):  # type: ignore[no-unt
         c = bench_contact.contact(*setting)
         return [c] * n
     base = bench_contact.contact(bench_bounce.CONTACT.restitution, bench_bounce.CONTACT.friction)
-    own = mixture(n)
+    own = bench_bounce.own_rates(n)
     e, mu = own["restitution"], own["friction"]
     rolling, pivoting = base.rolling_resistance, base.pivoting_resistance
     return [bounce.with_surface(base, e[k], mu[k], rolling, pivoting) for k in range(n)]
@@ -256,7 +246,6 @@ def study(
     """The tolerance study of ``n`` tosses on one setting; returns the headline counts (faces
     differing from the tightest, changed by each nudge; the handed tosses) and each
     tolerance's median steps per handed toss."""
-    import bench_bounce
     import bench_contact
     from coinflight.core import bounce
     from coinflight.core import contact_phase as cp
@@ -283,7 +272,7 @@ def study(
     if cp.RTOL in runs:
         e, mu = (0.5, 0.3) if setting is None else setting
         surface = bench_bounce.Surface("table", bench_bounce.DROP, e, mu, ending="contact")
-        own = None if setting is not None else mixture(n)
+        own = None if setting is not None else bench_bounce.own_rates(n)
         out = land(bench_bounce.COIN, omega, v0, 1.0, bench_bounce.G, surface, contact=own)
         same = np.array_equal(out.face, runs[cp.RTOL].face) and np.array_equal(
             out.status, runs[cp.RTOL].status
