@@ -264,8 +264,14 @@ def study(
         if not handed[k]:
             out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
             base_face[k], base_status[k] = out[0], out[4]
+    m = int(handed.sum())
+    if m == 0:
+        print(
+            f"{name}: {n} tosses (seed {seed}), 0 handed to the contact phase: nothing to compare"
+        )
+        return {"handed": 0}
     tight = min(tolerances)
-    first = int(np.flatnonzero(handed)[0]) if handed.any() else 0
+    first = int(np.flatnonzero(handed)[0])
     cp.advance(states[first].copy(), 1e-3, cs[first], settle_check=True)  # compile or load
     runs = {r: carry(states, cs, handed, base_face, base_status, r) for r in tolerances}
     # The default tolerance must give land()'s outcomes on the same tosses.
@@ -279,7 +285,6 @@ def study(
         )
         if not same:
             raise SystemExit(f"{name}: the study's default run differs from land()'s outcomes")
-    m = int(handed.sum())
     print(
         f"{name}: {n} tosses (seed {seed}), {m} handed to the contact phase; load "
         f"{os.getloadavg()[0]:.2f}; faces checked equal to land()'s at RTOL {cp.RTOL:g}"
@@ -308,6 +313,10 @@ def study(
     if extra is not None and subset > 0:
         sub = handed.copy()
         sub[subset:] = False
+        if not sub.any():
+            print(f"  rtol {extra:g} on the first {subset} tosses: 0 handed")
+            result["handed"] = m
+            return result
         finer = carry(states, cs, sub, base_face, base_status, extra)
         k = disagreements(finer.face, runs[tight].face, sub)
         print(
@@ -334,15 +343,38 @@ def main() -> None:
     )
     parser.add_argument("--settings", default=",".join(range_names()), help="settings to run")
     args = parser.parse_args()
-    tolerances = [float(x) for x in args.tolerances.split(",")]
-    nudges = [float(x) for x in args.nudges.split(",") if x]
-    if args.n < 1 or not all(0.0 < r < 1.0 for r in tolerances):
-        parser.error("N must be at least 1 and every tolerance in (0, 1)")
+    tolerances = numbers(parser, "--tolerances", args.tolerances)
+    nudges = numbers(parser, "--nudges", args.nudges) if args.nudges else []
+    if args.n < 1:
+        parser.error(f"N {args.n}: must be at least 1")
+    if args.extra is not None and not 0.0 < args.extra < 1.0:
+        parser.error(f"--extra {args.extra:g}: must be in (0, 1)")
+    if args.subset < 0 or (args.subset > 0 and args.extra is None):
+        parser.error(
+            f"--subset {args.subset}: must be at least 0, and more than 0 only with --extra"
+        )
+    keys = args.settings.split(",")
+    if not keys or any(key not in range_names() for key in keys):
+        parser.error(
+            f"--settings {args.settings!r}: must be indices among {','.join(range_names())}"
+        )
     t0 = time.perf_counter()
-    for key in args.settings.split(","):
+    for key in keys:
         name = list(SETTINGS)[int(key)]
         study(args.n, args.seed, name, SETTINGS[name], tolerances, args.extra, args.subset, nudges)
     print(f"{time.perf_counter() - t0:.0f} s wall, load {os.getloadavg()}")
+
+
+def numbers(parser: argparse.ArgumentParser, option: str, text: str) -> list[float]:
+    """The comma-separated numbers of ``option``, each in (0, 1) (a tolerance or a relative
+    nudge); a bad one ends the script through ``parser.error`` (one line, exit code 2)."""
+    try:
+        values = [float(x) for x in text.split(",")]
+    except ValueError:
+        values = []
+    if not values or not all(0.0 < x < 1.0 for x in values):
+        parser.error(f"{option} {text!r}: must be comma-separated numbers, each in (0, 1)")
+    return values
 
 
 def range_names() -> list[str]:

@@ -117,3 +117,38 @@ def test_the_study_reproduces_lands_outcomes_and_counts_against_the_tightest(ben
     assert flipped[f"differ {loose:g}"] == 1
     assert flipped[f"differ {cp.RTOL:g}"] == 0
     assert flipped[f"nudge {bench.NUDGE:g} at {cp.RTOL:g}"] == 1
+
+
+@pytest.mark.parametrize(
+    ("argv", "words"),
+    [
+        (["--settings", "3"], "--settings '3': must be indices among 0,1,2"),
+        (["--settings", "x"], "--settings 'x'"),
+        (["--extra", "0", "--subset", "1"], "--extra 0: must be in (0, 1)"),
+        (["--subset", "1"], "--subset 1: must be at least 0, and more than 0 only with --extra"),
+        (["--subset", "-1", "--extra", "1e-10"], "--subset -1"),
+        (["--tolerances", "1e-7,abc"], "--tolerances '1e-7,abc': must be comma-separated"),
+        (["--tolerances", "1e-7,0"], "--tolerances '1e-7,0'"),
+        (["--nudges=-1e-6"], "--nudges '-1e-6'"),
+        (["0"], "N 0: must be at least 1"),
+    ],
+)
+def test_bad_arguments_end_in_one_line_and_exit_code_2(bench, monkeypatch, capsys, argv, words):
+    monkeypatch.setattr("sys.argv", ["bench_tolerance.py", *argv])
+    with pytest.raises(SystemExit) as exit_:
+        bench.main()
+    assert exit_.value.code == 2
+    err = capsys.readouterr().err
+    assert words in err
+    assert "Traceback" not in err
+
+
+def test_no_handed_toss_reports_0_handed(bench, monkeypatch, capsys):
+    # Every toss settling in its bounces (handoff returns "not handed"): no medians of empty
+    # arrays, a line saying so.
+    import bench_contact
+
+    monkeypatch.setattr(bench_contact, "handoff", lambda *a: (np.zeros(10), False))
+    result = bench.study(3, 3, "e 0.5, μ 0.3", (0.5, 0.3), [1e-5, 1e-7], 1e-8, 2)
+    assert result == {"handed": 0}
+    assert "0 handed to the contact phase" in capsys.readouterr().out
