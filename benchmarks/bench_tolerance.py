@@ -76,6 +76,7 @@ import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -159,7 +160,7 @@ def share(k: int, n: int) -> str:
     return f"{p:.4f} ± {math.sqrt(p * (1 - p) / n):.4f}"
 
 
-def records(n: int, setting: tuple[float, float] | None):  # type: ignore[no-untyped-def]
+def records(n: int, setting: tuple[float, float] | None) -> list[Any]:
     """The contact record of each of ``n`` tosses on ``setting`` (as ``bench_bounce`` lands
     them: one surface, or its e 0.5 μ 0.3 surface with each toss's own e, μ)."""
     import bench_contact
@@ -175,7 +176,14 @@ def records(n: int, setting: tuple[float, float] | None):  # type: ignore[no-unt
     return [bounce.with_surface(base, e[k], mu[k], rolling, pivoting) for k in range(n)]
 
 
-def carry(states, cs, handed, base_face, base_status, rtol) -> Run:  # type: ignore[no-untyped-def]
+def carry(
+    states: np.ndarray,
+    cs: list[Any],
+    handed: np.ndarray,
+    base_face: np.ndarray,
+    base_status: np.ndarray,
+    rtol: float,
+) -> Run:
     """Every handed state carried to its end at ``rtol`` (what ``contact_phase.settle`` does)."""
     from coinflight.core import contact_phase as cp
     from coinflight.core.impact import resting_face

@@ -7,6 +7,7 @@ from __future__ import annotations
 import importlib.util
 import math
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 import pytest
@@ -16,7 +17,7 @@ SCRIPT = HERE / "bench_tolerance.py"
 
 
 @pytest.fixture
-def bench(monkeypatch):  # type: ignore[no-untyped-def]
+def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
     monkeypatch.syspath_prepend(str(HERE))  # the script imports bench_bounce, bench_contact
     spec = importlib.util.spec_from_file_location("bench_tolerance", SCRIPT)
     assert spec is not None and spec.loader is not None
@@ -102,7 +103,7 @@ def test_the_study_reproduces_lands_outcomes_and_counts_against_the_tightest(ben
     carry = bench.carry
     seen: list[np.ndarray] = []
 
-    def flipping(states, cs, handed, base_face, base_status, rtol):  # type: ignore[no-untyped-def]
+    def flipping(states, cs, handed, base_face, base_status, rtol):
         run = carry(states, cs, handed, base_face, base_status, rtol)
         if not seen:
             seen.append(states.copy())
