@@ -88,6 +88,20 @@ TOLERANCES = (1e-5, 1e-6, 1e-7, 1e-8, 1e-9)
 NUDGE = 1e-12
 """Relative size of the chaos baseline's perturbation of each handed state's components."""
 
+RECORDED = {
+    1e-12: (1, 10_528),
+    1e-9: (3, 10_528),
+    1e-8: (8, 10_528),
+    1e-7: (23, 10_528),
+    1e-6: (63, 10_528),
+    1e-5: (46, 2_123),
+    1e-4: (98, 2_123),
+}
+"""Faces changed by a relative nudge of each handed state at rtol 1e-9, summed over the three
+settings: (changed, handed). 1e-12 to 1e-6: the 5,000-toss run of 2026-11-24 (05:00-05:14 UTC);
+1e-5, 1e-4: the 1,000-toss run (05:01-05:04 UTC); the commands are in the module's notes.
+``--recorded`` prints their fit (:func:`uncertainty_exponent`)."""
+
 FACES = ("tails", "heads", "edge")  # the codes TAILS 0, HEADS 1, EDGE 2
 # Status codes of coinflight.core.outcome.Status grouped for the tables.
 STATUSES = {"impact": (0, 1, 2), "contact": (5,), "decided": (6,), "unsettled": (3,)}
@@ -152,6 +166,40 @@ def nudged(y: np.ndarray, rng: np.random.Generator, size: float = NUDGE) -> np.n
     out = np.asarray(y, dtype=float) * (1.0 + size * rng.standard_normal(len(y)))
     out[4:7] /= np.linalg.norm(out[4:7])
     return out
+
+
+def uncertainty_exponent(counts: dict[float, tuple[int, int]]) -> tuple[float, float, int]:
+    """The exponent α of f ∝ δ^α, f the share of handed tosses whose face a relative nudge δ
+    changes, ``counts`` {δ: (changed, handed)}: the least-squares slope of log f on log δ
+    (SciPy's ``linregress``, unweighted), its standard error and the number of nudge sizes
+    fitted (sizes that changed no face are left out: log 0). A smooth boundary between the
+    outcomes' basins gives α = 1; α < 1 is final-state sensitivity, the boundary fractal
+    (the uncertainty exponent of Grebogi, McDonald, Ott & Yorke, Phys. Lett. A 99 (1983) 415).
+    NaN when fewer than three sizes changed a face."""
+    from scipy.stats import linregress
+
+    sizes = sorted(d for d, (k, m) in counts.items() if k > 0 and m > 0)
+    if len(sizes) < 3:
+        return math.nan, math.nan, len(sizes)
+    f = [counts[d][0] / counts[d][1] for d in sizes]
+    fit = linregress(np.log(sizes), np.log(f))
+    return float(fit.slope), float(fit.stderr), len(sizes)
+
+
+def print_exponent(counts: dict[float, tuple[int, int]], what: str) -> None:
+    """The fit of :func:`uncertainty_exponent` over all the nudges of ``counts`` and over those
+    larger than the 1e-12 baseline (its count is a face or two, and may be the step control's)."""
+    rows = ", ".join(f"{d:g}: {k} of {m:,}" for d, (k, m) in sorted(counts.items()))
+    print(f"faces changed by a relative nudge at the tightest rtol ({what}): {rows}")
+    for label, part in (
+        ("all nudges", counts),
+        (f"nudges above {NUDGE:g}", {d: c for d, c in counts.items() if d > NUDGE}),
+    ):
+        alpha, se, k = uncertainty_exponent(part)
+        if k >= 3:
+            print(f"  share changed ~ nudge^a over {label} ({k} sizes): a = {alpha:.2f} ± {se:.2f}")
+        else:
+            print(f"  share changed ~ nudge^a over {label}: fewer than 3 sizes changed a face")
 
 
 def share(k: int, n: int) -> str:
@@ -350,7 +398,13 @@ def main() -> None:
         "--nudges", default="", help="further relative nudges, at the tightest rtol (1e-9,1e-6)"
     )
     parser.add_argument("--settings", default=",".join(range_names()), help="settings to run")
+    parser.add_argument(
+        "--recorded", action="store_true", help="print the fit of the recorded nudge counts only"
+    )
     args = parser.parse_args()
+    if args.recorded:
+        print_exponent(RECORDED, "recorded, RECORDED")
+        return
     tolerances = numbers(parser, "--tolerances", args.tolerances)
     nudges = numbers(parser, "--nudges", args.nudges) if args.nudges else []
     if args.n < 1:
@@ -367,9 +421,18 @@ def main() -> None:
             f"--settings {args.settings!r}: must be indices among {','.join(range_names())}"
         )
     t0 = time.perf_counter()
+    tight = min(tolerances)
+    counts: dict[float, tuple[int, int]] = {}
     for key in keys:
         name = list(SETTINGS)[int(key)]
-        study(args.n, args.seed, name, SETTINGS[name], tolerances, args.extra, args.subset, nudges)
+        result = study(
+            args.n, args.seed, name, SETTINGS[name], tolerances, args.extra, args.subset, nudges
+        )
+        m = int(result["handed"])
+        for size in {NUDGE, *nudges}:
+            k, total = counts.get(size, (0, 0))
+            counts[size] = (k + int(result.get(f"nudge {size:g} at {tight:g}", 0)), total + m)
+    print_exponent(counts, f"this run, summed over the settings, rtol {tight:g}")
     print(f"{time.perf_counter() - t0:.0f} s wall, load {os.getloadavg()}")
 
 

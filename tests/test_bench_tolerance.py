@@ -153,3 +153,20 @@ def test_no_handed_toss_reports_0_handed(bench, monkeypatch, capsys):
     result = bench.study(3, 3, "e 0.5, μ 0.3", (0.5, 0.3), [1e-5, 1e-7], 1e-8, 2)
     assert result == {"handed": 0}
     assert "0 handed to the contact phase" in capsys.readouterr().out
+
+
+def test_the_uncertainty_exponent_is_the_log_log_slope(bench):
+    # Shares exactly 0.3 δ^0.45 (counts of 10^12 handed, rounded: relative error < 1e-7) give
+    # α = 0.45; a smooth boundary's f ∝ δ gives 1; sizes that changed nothing are left out.
+    m = 10**12
+    counts = {d: (round(0.3 * d**0.45 * m), m) for d in (1e-9, 1e-8, 1e-7, 1e-6, 1e-5)}
+    alpha, se, k = bench.uncertainty_exponent(counts)
+    assert alpha == pytest.approx(0.45, abs=1e-6)
+    assert se < 1e-6
+    assert k == 5
+    smooth = {d: (round(2.0 * d * m), m) for d in (1e-6, 1e-5, 1e-4)} | {1e-12: (0, m)}
+    assert bench.uncertainty_exponent(smooth)[0] == pytest.approx(1.0, abs=1e-6)
+    assert bench.uncertainty_exponent(smooth)[2] == 3
+    # Fewer than three sizes that changed a face: no fit.
+    alpha, se, k = bench.uncertainty_exponent({1e-6: (5, 100), 1e-5: (9, 100), 1e-4: (0, 100)})
+    assert math.isnan(alpha) and math.isnan(se) and k == 2
