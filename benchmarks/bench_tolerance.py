@@ -1,7 +1,8 @@
 """How far the contact ending's outcomes are set by its step tolerance (issue 11).
 
     python benchmarks/bench_tolerance.py [N] [--seed S] [--tolerances 1e-5,1e-6,1e-7,1e-8,1e-9]
-        [--extra 1e-10 --subset M]
+        [--extra 1e-10 --subset M] [--nudges 1e-9,1e-6] [--settings 0,1,2]
+    python benchmarks/bench_tolerance.py --recorded
 
 The same seeded vigorous tosses of a US nickel as ``bench_bounce.py`` (``bench_bounce.tosses``: ωx ~
 U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop, heads up) land on three
@@ -29,9 +30,12 @@ The chaos baseline: each handed state, every component multiplied by 1 + 1e-12 N
 ``S + 1``), is carried on at the tightest and at the default tolerance; its faces are compared
 with the unperturbed run's at that tolerance. When the default disagrees with the tightest
 about as often as a 1e-12 nudge does, per-toss faces are not numerically determined at any
-practical tolerance, and only the ensemble's fractions mean anything. ``--extra 1e-10
---subset M`` also runs the first M tosses at 1e-10 and compares the tightest of the list with it
-there.
+practical tolerance, and only the ensemble's fractions mean anything. ``--nudges`` adds larger
+nudges at the tightest tolerance; the run ends with the share of handed tosses each nudge size
+changes, summed over the settings, and the exponent a of share ~ size^a fitted to them
+(:func:`uncertainty_exponent`; ``--recorded`` prints it for the counts below, :data:`RECORDED`).
+``--extra 1e-10 --subset M`` also runs the first M tosses at 1e-10 and compares the tightest of
+the list with it there.
 
 Measured 2026-11-24 (05:00-05:14 UTC, load 6-8; the project machine, 2 shared cores):
 ``python benchmarks/bench_tolerance.py 5000 --extra 1e-10 --subset 5000 --nudges
@@ -50,19 +54,35 @@ own e, μ              95      38      21      10      3        0, 1
 Relative nudges of the handed states at rtol 1e-9 change 0, 1, 2 faces (1e-9), 4, 0, 4 (1e-8),
 6, 5, 12 (1e-7), 23, 16, 24 (1e-6); on 1,000 tosses (``1000 --tolerances 1e-7,1e-9 --nudges
 1e-5,1e-4``, 05:01-05:04 UTC) 21, 15, 10 of 723, 717, 683 (1e-5) and 43, 34, 21 (1e-4), where
-rtol 1e-5 differs on 31, 17, 20. So per-toss faces are numerically determined (no chaos at
-1e-12: they converge as rtol tightens), and the default 1e-7 errs as a ~1e-6 nudge of the
-handed state does, 1e-5 as a ~1e-5 one. Ensemble fractions: no face fraction at any tolerance
-differs from 1e-9's by more than 0.4 of its standard error (two-proportion p ≥ 0.72; McNemar
-p < 0.05 in 2 of 36 paired tests, heads at 1e-6 in the first and third settings, +0.0036 and
-+0.0026, as many as chance gives; none at 1e-5). Statuses: no toss unsettled at any tolerance;
+rtol 1e-5 differs on 31, 17, 20. What this supports: at the default 1e-7 the faces are
+reproducible to 0.6-1.0 % of the handed tosses (against 1e-9), the error of a ~1e-6 relative
+nudge of the handed state (1e-5 errs as a ~1e-5 one), and a 1e-12 nudge changes about 1e-4 of
+them (1 of 10,528 at 1e-9, 3 at 1e-7). It does not show the faces free of chaos at finer
+scales: summed over the settings, the share of faces a nudge δ changes grows as δ^0.45 ± 0.01
+(δ from 1e-9 to 1e-4; least squares on log-log, ``--recorded``; 0.36 ± 0.04 with the 1e-12
+point), not as δ^1, which a smooth boundary between the faces' basins would give; an exponent
+below 1 is the signature of final-state sensitivity, a fractal basin boundary (the uncertainty
+exponent of Grebogi, McDonald, Ott & Yorke, Phys. Lett. A 99 (1983) 415). Part of the 1e-12
+count may be the adaptive step control's (a nudge moves the accepted steps). A 300-toss check of
+the printed fit (``300 --tolerances 1e-7,1e-9 --nudges 1e-8,1e-7,1e-6,1e-5,1e-4``, 05:46 UTC,
+load 4-5, 58 s): 0, 0, 1, 4, 10, 29 of 622 changed by 1e-12, 1e-8 ... 1e-4; a = 0.48 ± 0.03 over
+the four sizes that changed a face.
+
+Ensemble fractions: no face fraction at any tolerance differs from 1e-9's by more than 0.4 of
+its standard error (two-proportion p ≥ 0.72). McNemar's paired test gives p < 0.05 in 2 of its
+36 applications, both heads at 1e-6 and of the same sign (+0.0036, first setting; +0.0026,
+third), none at 1e-5. The 36 tests are correlated, not independent: the three settings launch
+the same tosses, each tolerance is compared with the same 1e-9 run, and a setting's three face
+shares sum to 1; so 2 of 36 cannot be set against the 1.8 that independent tests would give by
+chance (a single paired test of the three faces per tolerance and setting, Stuart-Maxwell on the
+3×3 table, was not run). Statuses: no toss unsettled at any tolerance;
 decided upright 411-414, 1,461-1,465, 650-653. CPU per handed toss (median, ms):
 0.55, 0.74, 1.07, 1.55, 2.33 (e 0.5 μ 0.3); 0.99, 1.25, 1.70, 2.49, 3.71 (μ 0.6); 0.59, 0.78,
 1.12, 1.68, 2.55 (own) at 1e-5 ... 1e-9; 3.55, 5.66, 3.93 at 1e-10; median steps 348, 626,
-1,425, 2,232 at 1e-5, 1e-7, 1e-9, 1e-10 (e 0.5 μ 0.3); settle times unchanged (median 0.271-0.272 s,
-0.331 s, 0.273 s at every tolerance). RTOL is kept at 1e-7: a looser default leaves the
-ensembles alone (1.7-1.95x faster a handed toss at 1e-5) but changes 1-4 % of per-toss faces
-where the 1e-12 baseline changes at most 2 in 3,500.
+1,425, 2,232 at 1e-5, 1e-7, 1e-9, 1e-10 (e 0.5 μ 0.3); settle times unchanged (median
+0.271-0.272 s, 0.331 s, 0.273 s at every tolerance). RTOL is kept at 1e-7: a looser default
+leaves the ensembles alone (1.7-1.95x faster a handed toss at 1e-5) but changes 1-4 % of
+per-toss faces, where a 1e-12 nudge changes about 1 in 10,000.
 """
 
 from __future__ import annotations
