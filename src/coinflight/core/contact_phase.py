@@ -59,7 +59,8 @@ does. Tried and not kept: a PI step-size control (β = 0.04: 38 % fewer rejectio
 steps, no faster); numba's "numpy" error model (no change). What is left is the number of
 steps, held
 by the stiffness of the compliant contact and of the regularised friction (the explicit
-stepper's stability, not :data:`RTOL`): 50,000 a second needs another integrator (implicit in
+stepper's stability) and, since the upright decision, by :data:`RTOL` too (1e-5: 44 % fewer
+steps than 1e-7; see :data:`RTOL`): 50,000 a second needs another integrator (implicit in
 the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
 steps), not a cheaper step. The figures below, to "Upright rollers", are from before the
 upright decision and these changes. All figures of these notes not dated otherwise (the
@@ -81,9 +82,10 @@ the coin is doing (:func:`contact_mode`): on both rims (upright in its edge band
 in the sharp rim's edge well for up to ~9 s until the rolling resistance stops them) 75 % of
 the simulated time and 67 % of the steps; on one rim point
 (rolling, sliding, rocking) 17 % and 27 %; hops 7 % and 5 %; lying on the face ~0 %, so a
-sound "a coin face-flat cannot tip" ending would decide nothing here. The step is held by the
-contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
-leave the mean steps within 15 % (1,030 handed tosses). Endings looser than the rigorous one
+sound "a coin face-flat cannot tip" ending would decide nothing here. The step was then held by
+the contact's stiffness (explicit stability), not by the tolerance: RTOL 1e-5 or MAX_STEP 4 ms
+left the mean steps within 15 % (1,030 handed tosses; superseded since the upright decision,
+see :data:`RTOL`). Endings looser than the rigorous one
 either save little or end tosses in another well than carrying them on (each checked after
 every step, its well compared with the end's; measured by ``bench_contact.py 300`` as it was
 up to commit 60d1237, when these probes were removed from the integrator): the mechanical
@@ -536,18 +538,28 @@ RTOL = 1e-7
 What it decides, measured 2026-11-24 (05:00-05:14 UTC, load 6-8, one thread):
 ``python benchmarks/bench_tolerance.py 5000 --extra 1e-10 --subset 5000 --nudges
 1e-9,1e-8,1e-7,1e-6`` (the vigorous nickel tosses of ``bench_bounce.py``, seed 2026; e 0.5 μ 0.3,
-e 0.5 μ 0.6, each toss its own e, μ; 3,533, 3,513 and 3,482 handed to this phase). Per-toss
-faces are numerically determined, not chaotic at this scale: a 1e-12 relative nudge of each
-handed state changes 1, 0, 0 faces at rtol 1e-9 (2, 0, 1 at 1e-7), and 1e-10 against 1e-9
-differs on 3, 2, 3. Against 1e-9, faces differ on 3.9 %, 3.2 %, 2.7 % of the handed tosses at
-1e-5; 2.1 %, 1.7 %, 1.1 % at 1e-6; 0.8 %, 1.0 %, 0.6 % at this default; 0.1 %, 0.2 %, 0.3 % at
-1e-8: the default's per-toss error is that of a ~1e-6 relative nudge of the handed state (0.7 %,
-0.5 %, 0.7 % of faces changed). No ensemble fraction (heads, tails, edge) moves by more than 0.4
-of its standard error at any tolerance (5,000 tosses; two of the 36 paired McNemar tests below
-0.05, heads at 1e-6 in the first and third settings, as chance gives). CPU a handed toss
-(median): 0.55, 0.99, 0.59 ms at 1e-5; 1.07, 1.70, 1.12 ms here; 2.33, 3.71, 2.55 ms at 1e-9.
-Kept: a looser default (1.7-1.95x faster a handed toss at 1e-5) would leave the ensembles
-alone, but change 1-4 % of per-toss faces where the 1e-12 baseline changes at most 2 in 3,500."""
+e 0.5 μ 0.6, each toss its own e, μ; 3,533, 3,513 and 3,482 handed to this phase). Against 1e-9,
+faces differ on 3.9 %, 3.2 %, 2.7 % of the handed tosses at 1e-5; 2.1 %, 1.7 %, 1.1 % at 1e-6;
+0.8 %, 1.0 %, 0.6 % at this default; 0.1 %, 0.2 %, 0.3 % at 1e-8; 1e-10 against 1e-9 differs
+on 3, 2, 3. So at the default the faces are reproducible to 0.6-1.0 % of the handed tosses, the
+error of a ~1e-6 relative nudge of the handed state (0.7 %, 0.5 %, 0.7 % of faces changed), and
+a 1e-12 nudge changes about 1e-4 of them (1, 0, 0 faces at rtol 1e-9; 2, 0, 1 at the default).
+That does not make them free of chaos at finer scales: the share of faces a nudge δ changes
+grows as δ^0.45 (δ 1e-9 to 1e-4, the settings summed; ``bench_tolerance.py --recorded``), where
+a smooth boundary between the faces' basins gives δ^1; an exponent below 1 is the signature of
+final-state sensitivity (a fractal basin boundary; Grebogi, McDonald, Ott & Yorke, Phys. Lett. A
+99 (1983) 415), and part of the 1e-12 count may be the step control's. No ensemble fraction
+(heads, tails, edge) moves by more than 0.4 of its standard error at any tolerance (5,000
+tosses); McNemar's paired test gives p < 0.05 in 2 of 36 applications (heads at 1e-6 in the
+first and third settings, the same sign), tests correlated through the shared tosses and the
+shared 1e-9 run, so not a count to set against chance. CPU a handed toss (median): 0.55, 0.99,
+0.59 ms at 1e-5; 1.07, 1.70, 1.12 ms here; 2.33, 3.71, 2.55 ms at 1e-9; median steps 348 at
+1e-5 against 626 here (e 0.5 μ 0.3). This supersedes the module notes' earlier "held by the
+contact's stiffness, not by the tolerance" (RTOL 1e-5 leaving the mean steps within 15 %): that
+was measured before the upright decision, when coins rolling upright in the edge band for
+seconds, their steps bound by the contact's stiffness, made most of the steps. Kept: a looser
+default (1.7-1.95x faster a handed toss at 1e-5) would leave the ensembles alone but change 1-4 %
+of per-toss faces, where a 1e-12 nudge changes about 1 in 10,000."""
 MAX_STEP = 1e-3
 """Longest step, s (also at most a sixteenth of a turn)."""
 SLIDING_MASS_FLOOR = 0.1
