@@ -18,7 +18,13 @@ SCRIPT = HERE / "bench_tolerance.py"
 
 @pytest.fixture
 def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
+    import numba
+
     monkeypatch.syspath_prepend(str(HERE))  # the script imports bench_bounce, bench_contact
+    # The script sets NUMBA_NUM_THREADS to 1 unless set (for its one-thread timings); here it
+    # must stay what numba runs with, or numba refuses a change once its threads are launched.
+    threads = numba.config.NUMBA_NUM_THREADS  # type: ignore[attr-defined]
+    monkeypatch.setenv("NUMBA_NUM_THREADS", str(threads))
     spec = importlib.util.spec_from_file_location("bench_tolerance", SCRIPT)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
