@@ -1,0 +1,119 @@
+"""Predictors of the well a coin in the contact phase ends in, from its state now (numba; a study).
+
+Issue 11 asks for 50,000 landings a second carried to rest; the 3-D contact ending
+(:mod:`coinflight.core.contact_phase`) runs ~2,000, because a handed coin spins and rolls for
+~0.3 s simulated (median) while its mechanical energy is still above its well's barrier m g ρ,
+much of it spin about the normal that may never lift the coin over its rim. These kernels ask
+whether the well can be named earlier: each returns the face of the well the coin is in now
+(:func:`coinflight.core.impact.resting_face`) when its rule fires, else −1. They are
+**predictors, not proofs**: with friction none of the quantities they hold fixed is conserved.
+Nothing here is wired into the contact ending; ``benchmarks/bench_predictors.py`` measures them
+against carrying the coin on to rest (results below).
+
+The state is :mod:`coinflight.core.contact_phase`'s y = (z, v, n, L) (centre height, velocity,
+heads normal, angular momentum about the centre, lab frame, SI) and ``c`` its
+:class:`coinflight.core.contact.Contact` record.
+
+The family (:func:`corner_barrier`): the least energy of the coin balanced on a corner of its
+well, n_z = ±sin(arctan(h/d)) (the top of the barrier, Yong & Mahadevan 2011, eq. 1), with
+a share of the energy that the angular momentum it cannot lose would still hold there,
+
+    B(s_n, s_z) = m g ρ + s_n (L·n)² / (2 I3) + s_z (L_z − (L·n) n_z)² / (2 I1 (1 − n_z²)),
+
+the corner's n_z taken on the side the well's rim lies (both for the edge well, the lower).
+Balanced on the corner, the centre is at rest (its lowest energy) and ω is split into the
+spin about n, L·n / I3, and the part about a horizontal axis across n, whose vertical
+angular momentum is what L_z leaves after the spin's share (L·n) n_z: its least energy is the
+second term (L − (L·n) n has the vertical component L_z − (L·n) n_z and a horizontal one
+sqrt(1 − n_z²) times its length at least, so I1 ω_⊥ ≥ (L_z − (L·n) n_z)/sqrt(1 − n_z²)).
+A predictor fires when the energy that can lift the coin (:func:`coinflight.core.contact_phase.free_energy`:
+the mechanical energy with the springs', less ½ m v_h² when nothing dissipates) is below B.
+
+- **(a) the frictionless barrier with friction**, ``(1, 1)``: exact without friction and
+  resistances: the normal forces are vertical (the horizontal momentum is kept) with
+  horizontal moments (L_z is kept), and each moment is perpendicular to n too (the rim point,
+  the centre and n lie in one vertical plane), which is all an axisymmetric body's L·n needs
+  to be kept (d(L·n)/dt = τ·n + L·(ω × n), the second term 0 for L = I1 ω + (I3 − I1)(ω·n) n).
+  So B(1, 1) equals :func:`coinflight.core.contact_phase._barrier`'s frictionless branch and the rule is
+  :func:`coinflight.core.contact_phase.below_barrier`'s). With friction the rim's tangential
+  force has a moment about n (the rim point's lever r ŵ crossed with a horizontal force has a
+  component along n) and about the vertical, so it trades spin and precession for rolling and
+  lift: the rule may fail where that trade lifts a coin (a rolling disc above its critical
+  spin rises towards upright, O'Reilly 1996; a tippe-top-like rise of a spinning coin).
+- **(b) the spin locked**, ``(1, 0)``: only (L·n)² / (2 I3) counted as unable to lift; the
+  vertical angular momentum is left free (the pivoting friction μ r_t F_n + ℓ_p F_n and the
+  rim's friction act on L_z directly, while they change L·n only through the rim point's
+  lever, the slower channel). B(1, 0) ≤ B(1, 1), so (b) fires on a subset of (a)'s states.
+- **(c) half of (a)'s excess**, ``(0.5, 0.5)``: half of the spin's and the precession's
+  energy at the corner is assumed returnable by friction (a hedge between (a) and the proof).
+- **the proof**, ``(0, 0)``: B = m g ρ with friction or resistance; the mechanical energy only
+  falls (the contact's damping and friction dissipate), so a coin below it stays in its well:
+  this is the contact ending's own rule and decides nothing earlier than it.
+
+Properties tested (``tests/test_face_predictors.py``): the mirror toss n → −n (the same body with
+heads and tails swapped; ω unchanged) gives the other face, edge to edge; (a) equals
+``_barrier`` when frictionless and (0, 0) equals m g ρ; each rule is monotone in the energy
+(more kinetic energy never makes it fire) and in its shares (B grows with them).
+
+Measured (2026-11-24; results below, measured after writing this docstring: see the section
+"Results").
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from coinflight.core.contact_phase import free_energy
+from coinflight.core.impact import resting_face
+
+SHARES = np.array([[1.0, 1.0], [1.0, 0.0], [0.5, 0.5]])
+"""The (s_n, s_z) of predictors (a), (b) and (c) of the module notes, one row each."""
+NAMES = ("(a) frictionless barrier", "(b) spin locked", "(c) half of (a)'s excess")
+"""The predictors of :data:`SHARES`, in its order."""
+
+
+@njit(cache=True)
+def corner_barrier(y, c, spin_share, turn_share):
+    """B(s_n, s_z) of the module notes, J: the least energy of the coin balanced on a corner of
+    its well at the current L·n and L_z, the spin's and the precession's terms weighted by
+    ``spin_share`` s_n and ``turn_share`` s_z. (1, 1) is
+    :func:`coinflight.core.contact_phase._barrier`'s frictionless branch to the bit (the same
+    operations, each term times 1.0); (0, 0) is m g ρ."""
+    ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
+    lz = y[9]
+    nz = y[6]
+    corner = c.edge_sine
+    spin = spin_share * (0.5 * ln * ln / c.i3)
+    up = c.barrier + spin + turn_share * (
+        0.5 * (lz - ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner))
+    )
+    down = c.barrier + spin + turn_share * (
+        0.5 * (lz + ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner))
+    )
+    if abs(nz) < corner:
+        return min(up, down)
+    return up if nz > 0.0 else down
+
+
+@njit(cache=True)
+def predict(y, c, stiffness, spin_share, turn_share):
+    """The face (TAILS 0, HEADS 1, EDGE 2) of the well the coin is in if the energy that can
+    lift it (:func:`coinflight.core.contact_phase.free_energy`) is below
+    :func:`corner_barrier` (``spin_share``, ``turn_share``), else −1. ``stiffness``: the
+    contact's κ (:func:`coinflight.core.contact_phase.stiffness_of`), for the springs'
+    energy."""
+    free, _ = free_energy(y, c, stiffness)
+    if free < corner_barrier(y, c, spin_share, turn_share):
+        return resting_face(y[6], c.edge_sine)
+    return -1
+
+
+@njit(cache=True)
+def predict_all(y, c, stiffness, shares, out):
+    """:func:`predict` for each row (s_n, s_z) of ``shares`` (shape (k, 2)), into ``out``
+    (shape (k,), int)."""
+    free, _ = free_energy(y, c, stiffness)
+    face = resting_face(y[6], c.edge_sine)
+    for i in range(shares.shape[0]):
+        out[i] = face if free < corner_barrier(y, c, shares[i, 0], shares[i, 1]) else -1
