@@ -64,12 +64,19 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from coinflight.core.contact_phase import free_energy
+from coinflight.core.contact_phase import energy
 from coinflight.core.impact import resting_face
 
-SHARES = np.array([[1.0, 1.0], [1.0, 0.0], [0.5, 0.5]])
-"""The (s_n, s_z) of predictors (a), (b) and (c) of the module notes, one row each."""
-NAMES = ("(a) frictionless barrier", "(b) spin locked", "(c) half of (a)'s excess")
+SHARES = np.array(
+    [[1.0, 1.0, 1.0], [1.0, 0.0, 0.0], [0.5, 0.5, 0.5], [1.0, 0.0, 1.0]]
+)
+"""The (s_n, s_z, s_h) of predictors (a), (b), (c) and (d) of the module notes, one row each."""
+NAMES = (
+    "(a) frictionless rule",
+    "(b) spin locked",
+    "(c) half of (a)",
+    "(d) spin, sliding locked",
+)
 """The predictors of :data:`SHARES`, in its order."""
 
 
@@ -97,13 +104,21 @@ def corner_barrier(y, c, spin_share, turn_share):
 
 
 @njit(cache=True)
-def predict(y, c, stiffness, spin_share, turn_share):
-    """The face (TAILS 0, HEADS 1, EDGE 2) of the well the coin is in if the energy that can
-    lift it (:func:`coinflight.core.contact_phase.free_energy`) is below
-    :func:`corner_barrier` (``spin_share``, ``turn_share``), else −1. ``stiffness``: the
-    contact's κ (:func:`coinflight.core.contact_phase.stiffness_of`), for the springs'
-    energy."""
-    free, _ = free_energy(y, c, stiffness)
+def lifting_energy(y, c, stiffness, slide_share):
+    """The mechanical energy (:func:`coinflight.core.contact_phase.energy`, the springs' with
+    it) less ``slide_share`` s_h of the horizontal kinetic energy ½ m v_h², J. With s_h = 1 it
+    is :func:`coinflight.core.contact_phase.free_energy`'s frictionless energy to the bit."""
+    e = energy(y, c, stiffness)
+    return e - slide_share * (0.5 * c.mass * (y[1] * y[1] + y[2] * y[2]))
+
+
+@njit(cache=True)
+def predict(y, c, stiffness, spin_share, turn_share, slide_share):
+    """The face (TAILS 0, HEADS 1, EDGE 2) of the well the coin is in if
+    :func:`lifting_energy` (``slide_share``) is below :func:`corner_barrier` (``spin_share``,
+    ``turn_share``), else −1. ``stiffness``: the contact's κ
+    (:func:`coinflight.core.contact_phase.stiffness_of`), for the springs' energy."""
+    free = lifting_energy(y, c, stiffness, slide_share)
     if free < corner_barrier(y, c, spin_share, turn_share):
         return resting_face(y[6], c.edge_sine)
     return -1
@@ -111,9 +126,7 @@ def predict(y, c, stiffness, spin_share, turn_share):
 
 @njit(cache=True)
 def predict_all(y, c, stiffness, shares, out):
-    """:func:`predict` for each row (s_n, s_z) of ``shares`` (shape (k, 2)), into ``out``
+    """:func:`predict` for each row (s_n, s_z, s_h) of ``shares`` (shape (k, 3)), into ``out``
     (shape (k,), int)."""
-    free, _ = free_energy(y, c, stiffness)
-    face = resting_face(y[6], c.edge_sine)
     for i in range(shares.shape[0]):
-        out[i] = face if free < corner_barrier(y, c, shares[i, 0], shares[i, 1]) else -1
+        out[i] = predict(y, c, stiffness, shares[i, 0], shares[i, 1], shares[i, 2])

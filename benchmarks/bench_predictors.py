@@ -1,0 +1,197 @@
+"""Can the contact phase's tosses be decided early? Predictors against carrying on (issue 11).
+
+    python benchmarks/bench_predictors.py [N] [--seed S] [--chunk DT] [--pairs E,MU ... own]
+
+For N vigorous tosses of a US nickel (``bench_bounce.tosses``: ωx ~ U(150, 300), ωy, ωz ~
+U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop) handed to the contact phase as
+``bench_contact.handoff`` does (the bounces of :func:`coinflight.core.bounce.bounce_loop` with the
+contact ending, resistances the surface's defaults 1e-4 m), on each surface of ``--pairs``
+(``own``: each toss its own e ~ U(0.2, 0.8) rounded to 0.01 and μ ~ U(0.1, 0.6), drawn from
+the generator ``default_rng([S, 1])``, a stream apart from the tosses'), the phase is carried on
+to rest by :func:`coinflight.core.contact_phase.advance` (``settle_check=True``, no upright
+decision) in chunks of DT s simulated (default 2 ms), and after the hand-off and after every
+chunk each predictor of :mod:`coinflight.core.face_predictors` (:data:`~coinflight.core.face_predictors.SHARES`)
+is evaluated; the first time it fires, the face it names and the steps taken by then are
+recorded, and so is where :func:`coinflight.core.contact_phase.upright_decided` first held
+(the integrator's probe row, step-exact), for comparison. A decision disagrees when its face
+is not the face at rest or the toss does not settle within
+:data:`~coinflight.core.contact_phase.MAX_STEPS` steps.
+
+Per predictor and surface: the handed tosses decided early (before the toss settles: every rule
+fires once the energy is below m g ρ), at the hand-off and in all; the median
+share of the toss's contact time the decision saves; disagreements with a 95 % Clopper-Pearson
+upper bound (:func:`scipy.stats.binomtest`); the speed-up of the contact phase, its steps over
+the steps left when each decided toss stops at its decision, and against the phase as shipped
+(the upright decision on) the same with the upright decision and the predictor both (the bounces before the hand-off
+not counted: they are ~2 % of a landing's CPU time, ``contact_phase`` module notes).
+
+Chunking: each :func:`~coinflight.core.contact_phase.advance` call restarts the step size (and
+the first derivative), so a chunked toss's trajectory differs from one call's at the rounding
+level, which a chaotic wobble can grow into another face; every toss is also carried on in one
+call and the faces that differ are counted (``chunked vs one call``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+
+import numpy as np
+from scipy.stats import binomtest
+
+import bench_bounce
+import bench_contact
+from coinflight.core import contact_phase as cp
+from coinflight.core import face_predictors as fp
+from coinflight.core.impact import resting_face
+
+
+def draws(n: int, seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """ω (n, 3), v0 (n,) of ``bench_bounce.tosses`` and each toss's own e, μ (module notes)."""
+    omega, v0 = bench_bounce.tosses(n, seed)
+    rng = np.random.default_rng([seed, 1])
+    e = np.round(rng.uniform(0.2, 0.8, n), 2)
+    mu = rng.uniform(0.1, 0.6, n)
+    return omega, v0, e, mu
+
+
+def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-def]
+    """Carry the handed state ``y`` on to rest in chunks of ``chunk`` s: the first firing of
+    each predictor (time, steps, face; NaN/−1 if never), the upright decision's first holding,
+    the total time and steps, whether it settled and its face at rest."""
+    k = fp.SHARES.shape[0]
+    stiffness = cp.stiffness_of(c)
+    fire_t = np.full(k + 2, np.nan)
+    fire_s = np.full(k + 2, np.nan)
+    fire_f = np.full(k + 2, -1)
+    out = np.empty(k, dtype=np.int64)
+    modes = len(cp.MODES)
+    stats = np.zeros((modes + 1, 2))
+    stats[modes] = -1.0
+    t, steps, ended = 0.0, 0, cp.Ending.RUNNING
+    scale = c.barrier - c.mass * c.g * c.half_thickness  # m g ρ − m g h/2
+    ln = float(y[4:7] @ y[7:10])
+    handed = (
+        (cp.energy(y, c, stiffness) - c.barrier) / scale,
+        0.5 * ln * ln / c.i3 / scale,
+        (fp.corner_barrier(y, c, 1.0, 1.0) - c.barrier) / scale - 0.5 * ln * ln / c.i3 / scale,
+        0.5 * c.mass * (y[1] ** 2 + y[2] ** 2) / scale,
+    )
+    wells = []  # (time, steps, well) after the hand-off and after each chunk
+    while True:
+        wells.append((t, steps, resting_face(y[6], c.edge_sine)))
+        fp.predict_all(y, c, stiffness, fp.SHARES, out)
+        new = (out >= 0) & (fire_f[:k] < 0)
+        fire_t[:k][new], fire_s[:k][new], fire_f[:k][new] = t, steps, out[new]
+        if ended or steps >= cp.MAX_STEPS:
+            break
+        before = stats[modes].copy()
+        dt, ds, ended = cp.advance(
+            y, chunk, c, settle_check=True, max_steps=cp.MAX_STEPS - steps, stats=stats
+        )
+        if before[1] < 0.0 <= stats[modes, 1]:  # upright_decided first held in this chunk
+            fire_t[k], fire_s[k], fire_f[k] = t + stats[modes, 0], steps + stats[modes, 1], 2
+        t += dt
+        steps += ds
+    final = resting_face(y[6], c.edge_sine)
+    last = max((i for i, w in enumerate(wells) if w[2] != final), default=-1) + 1
+    fire_t[k + 1], fire_s[k + 1], fire_f[k + 1] = wells[last][0], wells[last][1], final
+    return {
+        "oracle": wells[last][:2],
+        "handed": handed,
+        "fire_t": fire_t,
+        "fire_s": fire_s,
+        "fire_f": fire_f,
+        "time": t,
+        "steps": steps,
+        "settled": bool(ended),
+        "face": final,
+    }
+
+
+def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) -> None:
+    """The table of the module notes for one surface (e, μ), or each toss's own."""
+    omega, v0, e, mu = draws(n, seed)
+    if surface is not None:
+        e[:], mu[:] = surface
+    names = (*fp.NAMES, "upright_decided (reference)", "last well change (oracle)")
+    rows = []
+    one_face = []
+    one_settled = []
+    w0 = time.perf_counter()
+    for j in range(n):
+        c = bench_contact.contact(float(e[j]), float(mu[j]))
+        y, handed = bench_contact.handoff((omega[j, 0], omega[j, 1], omega[j, 2]), 1.0, v0[j], c)
+        if not handed:
+            continue
+        y1 = y.copy()
+        _, _, ended = cp.advance(y1, math.inf, c, settle_check=True)
+        one_face.append(resting_face(y1[6], c.edge_sine))
+        one_settled.append(bool(ended))
+        rows.append(carry(y, c, chunk))
+    wall = time.perf_counter() - w0
+    kind = "each toss its own e, μ" if surface is None else f"e {surface[0]}, μ {surface[1]}"
+    h = len(rows)
+    face = np.array([r["face"] for r in rows])
+    settled = np.array([r["settled"] for r in rows])
+    total_t = np.array([r["time"] for r in rows])
+    total_s = np.array([r["steps"] for r in rows], dtype=float)
+    print(
+        f"\n{n} tosses, seed {seed}, {kind}, chunk {chunk * 1e3:g} ms: {h} handed; "
+        f"{wall:.1f} s wall, load {os.getloadavg()[0]:.1f}; at rest (tails, heads, edge) "
+        f"{np.bincount(face[settled], minlength=3).tolist()}, unsettled {(~settled).sum()}; "
+        f"contact time median {np.median(total_t):.3f} s, steps {total_s.sum():,.0f}"
+    )
+    en = np.array([r["handed"] for r in rows])
+    print(
+        "  at the hand-off, in barriers m g ρ − m g h/2, medians: energy above m g ρ "
+        f"{np.median(en[:, 0]):.2f}, spin (L·n)²/2I3 {np.median(en[:, 1]):.3f}, (a)'s "
+        f"precession term {np.median(en[:, 2]):.3f}, ½ m v_h² {np.median(en[:, 3]):.3f}"
+    )
+    differ = int(np.sum((np.array(one_face) != face) | (np.array(one_settled) != settled)))
+    print(f"  chunked vs one call: faces or settling differ on {differ} of {h}")
+    k = fp.SHARES.shape[0]
+    upright = np.array([r["fire_s"][k] for r in rows])
+    shipped = np.where(np.isnan(upright), total_s, np.minimum(total_s, upright))
+    for i, name in enumerate(names):
+        ft = np.array([r["fire_t"][i] for r in rows])
+        fs = np.array([r["fire_s"][i] for r in rows])
+        ff = np.array([r["fire_f"][i] for r in rows])
+        hit = (ff >= 0) & (fs < total_s)  # fired before the toss settled (every rule fires then)
+        wrong = hit & ((ff != face) | ~settled)
+        bad, m = int(wrong.sum()), int(hit.sum())
+        upper = binomtest(bad, m).proportion_ci(0.95, method="exact").high if m else 1.0
+        saved_s = (total_s[hit] - fs[hit]).sum()
+        share = (total_t[hit] - ft[hit]) / np.maximum(total_t[hit], 1e-300)
+        both = np.where(hit, np.minimum(shipped, np.nan_to_num(fs, nan=np.inf)), shipped)
+        print(
+            f"  {name:30s}: decides early {m} of {h} ({m / h:.0%}; {np.sum(hit & (fs == 0))} at "
+            f"the hand-off), contact time saved median {np.median(share) if m else 0:.0%} of "
+            f"those, {np.sum(share) / h:.0%} of all handed; "
+            f"disagreements {bad} (95 % upper {upper:.3f}); speed-up "
+            f"{total_s.sum() / (total_s.sum() - saved_s):.2f}x (with the upright decision "
+            f"as shipped {shipped.sum() / both.sum():.2f}x)"
+        )
+        for j in np.flatnonzero(wrong)[:8]:
+            print(
+                f"      toss {j}: predicted {ff[j]} at {ft[j]:.3f} s, at rest {face[j]} "
+                f"(settled {settled[j]}) at {total_t[j]:.3f} s"
+            )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=300)
+    parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--chunk", type=float, default=2e-3, help="simulated s a chunk")
+    parser.add_argument("--pairs", nargs="*", default=["0.5,0.3", "0.5,0.6", "own"])
+    args = parser.parse_args()
+    for pair in args.pairs:
+        surface = None if pair == "own" else tuple(float(x) for x in pair.split(","))
+        run(args.n, args.seed, args.chunk, surface)  # type: ignore[arg-type]
+
+
+if __name__ == "__main__":
+    main()
