@@ -169,7 +169,7 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
         print(
             f"  {name:30s}: decides early {m} of {h} ({m / h:.0%}; {np.sum(hit & (fs == 0))} at "
             f"the hand-off), contact time saved median {np.median(share) if m else 0:.0%} of "
-            f"those, {np.sum(share) / h:.0%} of all handed; "
+            f"those, mean {np.sum(share) / h:.0%} over all handed; "
             f"disagreements {bad} (95 % upper {upper:.3f}); speed-up "
             f"{total_s.sum() / (total_s.sum() - saved_s):.2f}x (with the upright decision "
             f"as shipped {shipped.sum() / both.sum():.2f}x)"
