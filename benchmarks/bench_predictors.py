@@ -174,7 +174,14 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
             f"{total_s.sum() / (total_s.sum() - saved_s):.2f}x (with the upright decision "
             f"as shipped {shipped.sum() / both.sum():.2f}x)"
         )
-        for j in np.flatnonzero(wrong)[:8]:
+        if bad:
+            kinds = {}
+            for j in np.flatnonzero(wrong):
+                key = f"{'THE'[ff[j]]}->{'THE'[face[j]] if settled[j] else 'unsettled'}"
+                kinds[key] = kinds.get(key, 0) + 1
+            late = np.median((total_t - ft)[wrong])
+            print(f"      (predicted->at rest: {kinds}; median time from decision to rest {late:.2f} s)")
+        for j in np.flatnonzero(wrong)[:4]:
             print(
                 f"      toss {j}: predicted {ff[j]} at {ft[j]:.3f} s, at rest {face[j]} "
                 f"(settled {settled[j]}) at {total_t[j]:.3f} s"
