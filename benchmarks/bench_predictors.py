@@ -2,40 +2,40 @@
 
     python benchmarks/bench_predictors.py [N] [--seed S] [--chunk DT] [--pairs E,MU ... own]
 
-For N vigorous tosses of a US nickel (``bench_bounce.tosses``: ωx ~ U(150, 300), ωy, ωz ~
-U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop) handed to the contact phase as
-``bench_contact.handoff`` does (the bounces of :func:`coinflight.core.bounce.bounce_loop` with the
-contact ending, resistances the surface's defaults 1e-4 m), on each surface of ``--pairs``
-(``own``: each toss its own e ~ U(0.2, 0.8) rounded to 0.01 and μ ~ U(0.1, 0.6), drawn from
-the generator ``default_rng([S, 1])``, a stream apart from the tosses'), the phase is carried on
-to rest by :func:`coinflight.core.contact_phase.advance` (``settle_check=True``, no upright
+For N vigorous tosses of a US nickel (``bench_bounce.tosses``: ωx ~ U(150, 300), ωy, ωz ~ U(−30,
+30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop) handed to the contact phase as
+``bench_contact.handoff`` does (the bounces of :func:`coinflight.core.bounce.bounce_loop` with
+the contact ending, resistances the surface's defaults 1e-4 m), on each surface of ``--pairs``
+(``own``: each toss its own e ~ U(0.2, 0.8) rounded to 0.01 and μ ~ U(0.1, 0.6), drawn from the
+generator ``default_rng([S, 1])``, a stream apart from the tosses'), the phase is carried on to
+rest by :func:`coinflight.core.contact_phase.advance` (``settle_check=True``, no upright
 decision) in chunks of DT s simulated (default 2 ms), and after the hand-off and after every
-chunk each predictor of :mod:`coinflight.core.face_predictors` (:data:`~coinflight.core.face_predictors.SHARES`)
-is evaluated; the first time it fires, the face it names and the steps taken by then are
-recorded, and so is where :func:`coinflight.core.contact_phase.upright_decided` first held
-(the integrator's probe row, step-exact), for comparison. A decision disagrees when its face
-is not the face at rest or the toss does not settle within
-:data:`~coinflight.core.contact_phase.MAX_STEPS` steps.
+chunk each predictor of :mod:`coinflight.core.face_predictors`
+(:data:`~coinflight.core.face_predictors.SHARES`) is evaluated; the first time it fires and the
+face it names are recorded, and so is where
+:func:`coinflight.core.contact_phase.upright_decided` first held (the integrator's probe row,
+step-exact), for comparison. A decision disagrees when its face is not the face at rest or the
+toss does not settle within :data:`~coinflight.core.contact_phase.MAX_STEPS` steps.
 
 Per predictor and surface: the handed tosses decided early (before the toss settles: every rule
-fires once the energy is below m g ρ), at the hand-off and in all; the median
-share of the toss's contact time the decision saves; disagreements with a 95 % Clopper-Pearson
-upper bound (:func:`scipy.stats.binomtest`); the speed-up of the contact phase, its steps over
-the steps left when each decided toss stops at its decision (steps of :func:`segmented`), and against the phase as shipped
-(the upright decision on) the same with the upright decision and the predictor both (the bounces before the hand-off
-not counted: they are ~2 % of a landing's CPU time, ``contact_phase`` module notes).
+fires once the energy is below m g ρ), at the hand-off and in all; the median share of the
+toss's contact time the decision saves; disagreements with a 95 % Clopper-Pearson upper bound
+(:func:`scipy.stats.binomtest`); the speed-up of the contact phase, its steps over the steps
+left when each decided toss stops at its decision (steps of :func:`segmented`), and against the
+phase as shipped (the upright decision on) the same with the upright decision and the predictor
+both (the bounces before the hand-off not counted: they are ~2 % of a landing's CPU time,
+``contact_phase`` module notes).
 
 Chunking: each :func:`~coinflight.core.contact_phase.advance` call restarts the step size (and
-the first derivative): ~3 extra steps a restart, so 2 ms chunks add ~40 % to a phase's steps
-(1 ms: 1,834,764 steps against 1,298,984 at 2 ms on the same 429 tosses), mostly in the long
-upright rollers, which would inflate every saving. So the steps are counted on a second run
-of each toss (:func:`segmented`) stopped only at the times the rules first fired in the
-chunked run (at most six restarts), and its face at rest is compared with the chunked run's
-(``chunked vs one call``: the restarts change the trajectory at the rounding level, which a
-chaotic wobble can grow into another face). Firing is tested only at chunk ends: a rule's
-first firing is late by up to a chunk, and the oracle misses an excursion out of the final
-well and back within one chunk (``--chunk`` 1e-3 and 5e-3 show how much this moves).
-"""
+the first derivative) and costs a few extra steps: 2 ms chunks make 1,298,984 steps of the
+761,704 that these calls take on the same 429 tosses (seed 2026, e 0.5, μ 0.3; 1 ms chunks
+1,834,764), mostly in the long upright rollers, which would inflate every saving. So the steps
+are counted on a second run of each toss (:func:`segmented`) stopped only at the times the rules
+first fired in the chunked run (at most six restarts), and its face at rest is compared with the
+chunked run's (``chunked vs one call``: the restarts change the trajectory at the rounding
+level, which a chaotic wobble can grow into another face). Firing is tested only at chunk ends:
+a rule's first firing is late by up to a chunk, and the oracle misses an excursion out of the
+final well and back within one chunk (``--chunk`` 1e-3 and 5e-3 show how much this moves)."""
 
 from __future__ import annotations
 
@@ -120,9 +120,9 @@ def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-de
 def segmented(y: np.ndarray, c, times: np.ndarray) -> tuple[np.ndarray, int, int, bool]:  # type: ignore[no-untyped-def]
     """Carry ``y`` on to rest in as few calls as reach each of ``times`` (s; NaN: none): the
     steps taken by each of them (the total where the toss settled before it), the total steps,
-    the face at rest and whether it settled. The steps of the benchmark's speed-ups: a chunk
-    restarts the step size (~3 steps a restart, measured: 2 ms chunks add ~40 % to a phase's
-    steps), a handful of calls does not."""
+    the face at rest and whether it settled. The steps of the benchmark's speed-ups: each
+    chunk restarts the step size (2 ms chunks add ~70 % to a phase's steps, module notes), a
+    handful of calls does not."""
     order = np.argsort(np.where(np.isnan(times), np.inf, times))
     at = np.full(times.shape, np.nan)
     t, steps, ended = 0.0, 0, cp.Ending.RUNNING
@@ -212,7 +212,7 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
                 key = f"{'THE'[ff[j]]}->{'THE'[face[j]] if settled[j] else 'unsettled'}"
                 kinds[key] = kinds.get(key, 0) + 1
             late = np.median((total_t - ft)[wrong])
-            print(f"      (predicted->at rest: {kinds}; median time from decision to rest {late:.2f} s)")
+            print(f"      (predicted->at rest: {kinds}; decision to rest, median {late:.2f} s)")
         for j in np.flatnonzero(wrong)[:4]:
             print(
                 f"      toss {j}: predicted {ff[j]} at {ft[j]:.3f} s, at rest {face[j]} "

@@ -14,46 +14,51 @@ The state is :mod:`coinflight.core.contact_phase`'s y = (z, v, n, L) (centre hei
 heads normal, angular momentum about the centre, lab frame, SI) and ``c`` its
 :class:`coinflight.core.contact.Contact` record.
 
-The family (:func:`corner_barrier`): the least energy of the coin balanced on a corner of its
-well, n_z = ±sin(arctan(h/d)) (the top of the barrier, Yong & Mahadevan 2011, eq. 1), with
-a share of the energy that the angular momentum it cannot lose would still hold there,
+The family (:func:`corner_barrier`, :func:`lifting_energy`): the least energy of the coin
+balanced on a corner of its well, n_z = ±sin(arctan(h/d)) (the top of the barrier, Yong &
+Mahadevan 2011, eq. 1), with a share of the energy that the angular momentum it cannot lose
+would still hold there,
 
     B(s_n, s_z) = m g ρ + s_n (L·n)² / (2 I3) + s_z (L_z − (L·n) n_z)² / (2 I1 (1 − n_z²)),
 
-the corner's n_z taken on the side the well's rim lies (both for the edge well, the lower).
-Balanced on the corner, the centre is at rest (its lowest energy) and ω is split into the
-spin about n, L·n / I3, and the part about a horizontal axis across n, whose vertical
-angular momentum is what L_z leaves after the spin's share (L·n) n_z: its least energy is the
-second term (L − (L·n) n has the vertical component L_z − (L·n) n_z and a horizontal one
-sqrt(1 − n_z²) times its length at least, so I1 ω_⊥ ≥ (L_z − (L·n) n_z)/sqrt(1 − n_z²)).
-A predictor fires when the energy that can lift the coin (:func:`coinflight.core.contact_phase.free_energy`:
-the mechanical energy with the springs', less ½ m v_h² when nothing dissipates) is below B.
+the corner's n_z taken on the side the well's rim lies (for the edge well, the lower of the
+two). Balanced on the corner the centre is at rest and ω is split into the spin about n,
+L·n / I3, and a part about an axis across n whose vertical angular momentum is what L_z
+leaves after the spin's share (L·n) n_z; its least energy is the second term (L − (L·n) n has
+the vertical component L_z − (L·n) n_z and is at least 1/sqrt(1 − n_z²) times longer, so
+I1 ω_⊥ ≥ (L_z − (L·n) n_z)/sqrt(1 − n_z²)). A rule fires when the mechanical energy
+(:func:`coinflight.core.contact_phase.energy`, the springs' with it) less a share s_h of the
+horizontal kinetic energy ½ m v_h² is below B(s_n, s_z).
 
-- **(a) the frictionless barrier with friction**, ``(1, 1)``: exact without friction and
+- **(a) the frictionless rule used with friction**, ``(1, 1, 1)``: exact without friction and
   resistances: the normal forces are vertical (the horizontal momentum is kept) with
   horizontal moments (L_z is kept), and each moment is perpendicular to n too (the rim point,
   the centre and n lie in one vertical plane), which is all an axisymmetric body's L·n needs
   to be kept (d(L·n)/dt = τ·n + L·(ω × n), the second term 0 for L = I1 ω + (I3 − I1)(ω·n) n).
-  So B(1, 1) equals :func:`coinflight.core.contact_phase._barrier`'s frictionless branch and the rule is
-  :func:`coinflight.core.contact_phase.below_barrier`'s). With friction the rim's tangential
-  force has a moment about n (the rim point's lever r ŵ crossed with a horizontal force has a
-  component along n) and about the vertical, so it trades spin and precession for rolling and
-  lift: the rule may fail where that trade lifts a coin (a rolling disc above its critical
-  spin rises towards upright, O'Reilly 1996; a tippe-top-like rise of a spinning coin).
-- **(b) the spin locked**, ``(1, 0)``: only (L·n)² / (2 I3) counted as unable to lift; the
-  vertical angular momentum is left free (the pivoting friction μ r_t F_n + ℓ_p F_n and the
-  rim's friction act on L_z directly, while they change L·n only through the rim point's
-  lever, the slower channel). B(1, 0) ≤ B(1, 1), so (b) fires on a subset of (a)'s states.
-- **(c) half of (a)'s excess**, ``(0.5, 0.5)``: half of the spin's and the precession's
-  energy at the corner is assumed returnable by friction (a hedge between (a) and the proof).
-- **the proof**, ``(0, 0)``: B = m g ρ with friction or resistance; the mechanical energy only
-  falls (the contact's damping and friction dissipate), so a coin below it stays in its well:
-  this is the contact ending's own rule and decides nothing earlier than it.
+  So B(1, 1) equals :func:`coinflight.core.contact_phase._barrier`'s frictionless branch
+  and the rule is :func:`coinflight.core.contact_phase.below_barrier`'s there. With friction
+  the rim's tangential force has a moment about n (the rim point's lever crossed with a
+  horizontal force) and about the vertical, and it turns sliding into rolling: it can trade
+  all three for lift (a rolling disc above its critical spin rises towards upright, O'Reilly
+  1996; a tippe-top-like rise).
+- **(b) the spin locked**, ``(1, 0, 0)``: only (L·n)² / (2 I3) is counted as unable to lift;
+  the vertical angular momentum and the sliding are left free (the pivoting friction
+  μ r_t F_n + ℓ_p F_n and the rim's friction act on L_z and v_h directly, while they change
+  L·n only through the rim point's lever). B(1, 0) ≤ B(1, 1): (b) fires on a subset of (a).
+- **(c) half of (a)**, ``(0.5, 0.5, 0.5)``: half of what (a) sets aside is assumed
+  returnable by friction, a hedge between (a) and the proof.
+- **(d) spin and sliding locked**, ``(1, 0, 1)``: (b) with ½ m v_h² set aside too (a coin
+  sliding flat cannot turn its slide into lift without rolling up its rim): the "tumbling
+  energy" ending of the contact phase's notes (disagreeing on 23-30 of ~226 tosses there).
+- **the proof**, ``(0, 0, 0)``: B = m g ρ; with friction or resistance the mechanical energy
+  only falls (the damping and friction dissipate), so a coin below it stays in its well: the
+  contact ending's own rule, no earlier.
 
-Properties tested (``tests/test_face_predictors.py``): the mirror toss n → −n (the same body with
-heads and tails swapped; ω unchanged) gives the other face, edge to edge; (a) equals
-``_barrier`` when frictionless and (0, 0) equals m g ρ; each rule is monotone in the energy
-(more kinetic energy never makes it fire) and in its shares (B grows with them).
+Properties tested (``tests/test_face_predictors.py``): the mirror toss n → −n (the same body
+with heads and tails swapped; ω unchanged) gives the other face, edge to edge, B to the bit;
+(a) is ``_barrier`` and ``below_barrier`` when frictionless and (0, 0, 0) is
+``below_barrier`` with friction; each rule is monotone in the energy (more vertical speed
+never makes it fire) and in its shares.
 
 Results (2026-11-24, 05:00-05:10 UTC, load 4-8 on the shared 2-core machine; simulated
 counts, not timings, so the load does not enter them). ``python benchmarks/bench_predictors.py
@@ -116,9 +121,7 @@ from numba import njit
 from coinflight.core.contact_phase import energy
 from coinflight.core.impact import resting_face
 
-SHARES = np.array(
-    [[1.0, 1.0, 1.0], [1.0, 0.0, 0.0], [0.5, 0.5, 0.5], [1.0, 0.0, 1.0]]
-)
+SHARES = np.array([[1.0, 1.0, 1.0], [1.0, 0.0, 0.0], [0.5, 0.5, 0.5], [1.0, 0.0, 1.0]])
 """The (s_n, s_z, s_h) of predictors (a), (b), (c) and (d) of the module notes, one row each."""
 NAMES = (
     "(a) frictionless rule",
@@ -141,11 +144,15 @@ def corner_barrier(y, c, spin_share, turn_share):
     nz = y[6]
     corner = c.edge_sine
     spin = spin_share * (0.5 * ln * ln / c.i3)
-    up = c.barrier + spin + turn_share * (
-        0.5 * (lz - ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner))
+    up = (
+        c.barrier
+        + spin
+        + turn_share * (0.5 * (lz - ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner)))
     )
-    down = c.barrier + spin + turn_share * (
-        0.5 * (lz + ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner))
+    down = (
+        c.barrier
+        + spin
+        + turn_share * (0.5 * (lz + ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner)))
     )
     if abs(nz) < corner:
         return min(up, down)
