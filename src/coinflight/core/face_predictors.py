@@ -78,11 +78,11 @@ bound of their rate), speed-up against carrying on / against the shipped phase:
 
 - (a) 409, 393, 389; **49, 127, 93 disagreements (≤ 0.155, 0.372, 0.285)**; 4.14×, 17.6×,
   7.97× / 2.04×, 2.16×, 2.70×. Where it fails: faces that end on edge (22, 85, 44: rolling
-  coins rising upright, decided a median 5 s before rest at μ 0.6 — friction turns rolling
-  and sliding into lift, as a rolling disc above its critical spin rises, O'Reilly 1996,
-  where the frictionless rule sets ½ m v_h² and the precession aside), face flips (24, 38,
-  34: a coin decided on one face rolls over, a median 0.3 s before rest at μ 0.3), and edges
-  that fall (3, 4, 15).
+  coins rising upright — friction turns rolling and sliding into lift, as a rolling disc
+  above its critical spin rises, O'Reilly 1996, where the frictionless rule sets ½ m v_h²
+  and the precession aside), face flips (24, 38, 34: a coin decided on one face rolls over
+  to the other), and edges that fall (3, 4, 15); its wrong decisions come a median 0.31,
+  5.0 and 0.83 s before rest (the rising rollers then roll upright for seconds).
 - (b) 245, 319, 245; 0, 0, 0 (≤ 0.015, 0.011, 0.015); 1.01× / 1.01-1.02×: safe here and
   useless: the spin about n is a small part of a handed coin's energy (median 0.03-0.10 of a
   barrier m g ρ − m g h/2, against 1.4-2.2 above m g ρ), so it fires ~1 % of the contact
@@ -109,8 +109,8 @@ run and of the run without chunks differ on 0-3 tosses of each ~430 (a restart c
 trajectory at the rounding level, which a wobble can grow); CHUNKS.
 
 **Conclusion**: no energy rule of this family is both safe and useful (those that agree on
-≥ 99 % of their decisions make the shipped phase at most 1.12× faster; those that make it
-1.7-2.7× faster name the wrong well on 5-32 % of their decisions), and no predictor of the
+≥ 99 % of their decisions make the shipped phase at most 1.12× faster; (a), 2.0-2.7× faster,
+names the wrong well on 12-32 % of its decisions, (d), 1.3-1.7×, on 5-26 %), and no predictor of the
 well the coin is in can make it more than ~2× faster. The 50,000 landings a second (~25×
 away) need the motion before the last well change made cheaper, or a predictor of a well
 the coin is not yet in, which no energy bound of this kind gives. Nothing here is used by
