@@ -17,6 +17,10 @@ face it names are recorded, and so is where
 step-exact), for comparison. A decision disagrees when its face is not the face at rest or the
 toss does not settle within :data:`~coinflight.core.contact_phase.MAX_STEPS` steps.
 
+Beside them, an oracle: "last well change", the first chunk end after which the coin is never
+seen outside the well it ends in (the earliest any rule naming the well the coin is in could
+decide correctly). Results: :mod:`coinflight.core.face_predictors` (dated 2026-11-24).
+
 Per predictor and surface: the handed tosses decided early (before the toss settles: every rule
 fires once the energy is below m g ρ), at the hand-off and in all; the median share of the
 toss's contact time the decision saves; disagreements with a 95 % Clopper-Pearson upper bound
