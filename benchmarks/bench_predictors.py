@@ -19,7 +19,11 @@ toss does not settle within :data:`~coinflight.core.contact_phase.MAX_STEPS` ste
 
 Beside them, an oracle: "last well change", the first chunk end after which the coin is never
 seen outside the well it ends in (the earliest any rule naming the well the coin is in could
-decide correctly). Results: :mod:`coinflight.core.face_predictors` (dated 2026-11-24).
+decide correctly because the coin cannot leave it, as an energy bound claims), and "first in
+final well", the first chunk end at which the coin is in that well (a rule could be right
+there only by luck: the coin still leaves and comes back); and the naive rule "the well at the
+hand-off", which decides every toss at once. Results:
+:mod:`coinflight.core.face_predictors` (dated 2026-11-24).
 
 Per predictor and surface: the handed tosses decided early (before the toss settles: every rule
 fires once the energy is below m g ρ), at the hand-off and in all; the median share of the
@@ -73,9 +77,9 @@ def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-de
     the total time and steps, whether it settled and its face at rest."""
     k = fp.SHARES.shape[0]
     stiffness = cp.stiffness_of(c)
-    fire_t = np.full(k + 2, np.nan)
-    fire_s = np.full(k + 2, np.nan)
-    fire_f = np.full(k + 2, -1)
+    fire_t = np.full(k + 4, np.nan)
+    fire_s = np.full(k + 4, np.nan)
+    fire_f = np.full(k + 4, -1)
     out = np.empty(k, dtype=np.int64)
     modes = len(cp.MODES)
     stats = np.zeros((modes + 1, 2))
@@ -108,6 +112,9 @@ def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-de
     final = resting_face(y[6], c.edge_sine)
     last = max((i for i, w in enumerate(wells) if w[2] != final), default=-1) + 1
     fire_t[k + 1], fire_s[k + 1], fire_f[k + 1] = wells[last][0], wells[last][1], final
+    first = min(i for i, w in enumerate(wells) if w[2] == final)
+    fire_t[k + 2], fire_s[k + 2], fire_f[k + 2] = wells[first][0], wells[first][1], final
+    fire_t[k + 3], fire_s[k + 3], fire_f[k + 3] = 0.0, 0, wells[0][2]
     return {
         "oracle": wells[last][:2],
         "handed": handed,
@@ -151,7 +158,13 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
     omega, v0, e, mu = draws(n, seed)
     if surface is not None:
         e[:], mu[:] = surface
-    names = (*fp.NAMES, "upright_decided (reference)", "last well change (oracle)")
+    names = (
+        *fp.NAMES,
+        "upright_decided (reference)",
+        "last well change (oracle)",
+        "first in final well (oracle)",
+        "the well at the hand-off",
+    )
     rows = []
     one_face = []
     one_settled = []
