@@ -106,7 +106,10 @@ The design seed 2026 (429, 446, 430 handed) agrees: (a) 55, 145, 73 disagreement
 5, 0 of 383, 397, 387 (1.08-1.10×); (d) 23, 122, 48 of 401, 405, 403 (1.26×, 1.87×,
 1.31×); the oracle 1.88×, 1.59×, 1.88× shipped. Chunking: faces or settling of the chunked
 run and of the run without chunks differ on 0-3 tosses of each ~430 (a restart changes the
-trajectory at the rounding level, which a wobble can grow); CHUNKS.
+trajectory at the rounding level, which a wobble can grow). The chunk (the resolution of
+every first firing and of the oracle) hardly matters: seed 2026, e 0.5 μ 0.3, chunks of 1, 2
+and 5 ms give (a) 57, 55, 55 disagreements and 2.10×, 2.08×, 2.05× shipped, (c) 1.10×,
+1.10×, 1.09×, (d) 1.26×, 1.26×, 1.25×, the oracle 1.87×, 1.88×, 1.86×.
 
 **Conclusion**: no energy rule of this family is both safe and useful (those that agree on
 ≥ 99 % of their decisions make the shipped phase at most 1.12× faster; (a), 2.0-2.7× faster,
