@@ -153,6 +153,11 @@ def segmented(y: np.ndarray, c, times: np.ndarray) -> tuple[np.ndarray, int, int
     return at, steps, resting_face(y[6], c.edge_sine), bool(ended)
 
 
+def _ratio(steps: float, left: float) -> str:
+    """``steps / left`` as a speed-up, "every step" where none is left."""
+    return f"{steps / left:.2f}x" if left > 0 else "every step saved"
+
+
 def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) -> None:
     """The table of the module notes for one surface (e, μ), or each toss's own."""
     omega, v0, e, mu = draws(n, seed)
@@ -220,8 +225,8 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
             f"the hand-off), contact time saved median {np.median(share) if m else 0:.0%} of "
             f"those, mean {np.sum(share) / h:.0%} over all handed; "
             f"disagreements {bad} (95 % upper {upper:.3f}); speed-up "
-            f"{total_s.sum() / (total_s.sum() - saved_s):.2f}x (with the upright decision "
-            f"as shipped {shipped.sum() / both.sum():.2f}x)"
+            f"{_ratio(total_s.sum(), total_s.sum() - saved_s)} (with the upright decision "
+            f"as shipped {_ratio(shipped.sum(), both.sum())})"
         )
         if bad:
             kinds = {}

@@ -100,6 +100,13 @@ bound of their rate), speed-up against carrying on / against the shipped phase:
   however good, makes the shipped phase faster than that: the steps are spent while the coin
   still changes wells (bouncing, hopping, rolling over); the time after its last change
   (89-95 % of the contact time, median) is cheap once the upright rollers are decided.
+- **a lucky rule's ceiling, "first in final well"**: the first chunk end at which the coin is
+  in the well it ends in (254, 170, 256 are in it at the hand-off, 88, 72, 104 of them
+  leaving it and coming back): 48.7×, 70.4×, 54.8× / **23.9×, 8.67×, 18.5×**. Only there is
+  the target's factor: a rule naming the final well while the coin can still leave it, which
+  no bound on energy can do (it has to predict the excursions' outcome).
+- **the well at the hand-off**, the naive such rule (every toss decided at once): wrong on
+  173, 253, 149 (41 %, 60 %, 37 %; three outcomes): the hand-off's well says little.
 
 The design seed 2026 (429, 446, 430 handed) agrees: (a) 55, 145, 73 disagreements of 408,
 410, 410 (2.08×, 2.22×, 2.29× shipped); (b) 0, 0, 0 of 252, 322, 263 (1.01-1.02×); (c) 0,
@@ -114,10 +121,11 @@ and 5 ms give (a) 57, 55, 55 disagreements and 2.10×, 2.08×, 2.05× shipped, (
 **Conclusion**: no energy rule of this family is both safe and useful (those that agree on
 ≥ 99 % of their decisions make the shipped phase at most 1.12× faster; (a), 2.0-2.7× faster,
 names the wrong well on 12-32 % of its decisions, (d), 1.3-1.7×, on 5-26 %), and no predictor of the
-well the coin is in can make it more than ~2× faster. The 50,000 landings a second (~25×
-away) need the motion before the last well change made cheaper, or a predictor of a well
-the coin is not yet in, which no energy bound of this kind gives. Nothing here is used by
-the landings.
+well the coin is in can make it more than ~2× faster unless it names the final well while
+the coin can still leave it (the lucky ceiling, 9-24×). The 50,000 landings a second (~25×
+away) need the motion before the last well change made cheaper, or a predictor of the
+outcome of the excursions still to come (a learned or a reduced dynamical one, not an energy
+bound; not attempted). Nothing here is used by the landings.
 """
 
 from __future__ import annotations
