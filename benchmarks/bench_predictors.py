@@ -1,17 +1,19 @@
 """Can the contact phase's tosses be decided early? Predictors against carrying on (issue 11).
 
-    python benchmarks/bench_predictors.py [N] [--seed S] [--chunk DT] [--pairs E,MU ... own]
+    python benchmarks/bench_predictors.py [N] [--seed S] [--chunk DT] [--resistance L]
+        [--pairs E,MU ... own]
 
 For N vigorous tosses of a US nickel (``bench_bounce.tosses``: ωx ~ U(150, 300), ωy, ωz ~ U(−30,
 30) rad/s, v0 ~ U(1.5, 3) m/s, 0.8 m drop) handed to the contact phase as
 ``bench_contact.handoff`` does (the bounces of :func:`coinflight.core.bounce.bounce_loop` with
-the contact ending, resistances the surface's defaults 1e-4 m), on each surface of ``--pairs``
+the contact ending; rolling and pivoting resistance ℓ_r = ℓ_p = L, default the surface's
+1e-4 m, as ``bench_contact.py --resistance``), on each surface of ``--pairs``
 (``own``: each toss its own e ~ U(0.2, 0.8) rounded to 0.01 and μ ~ U(0.1, 0.6), drawn from the
 generator ``default_rng([S, 1])``, a stream apart from the tosses'), the phase is carried on to
 rest by :func:`coinflight.core.contact_phase.advance` (``settle_check=True``, no upright
 decision) in chunks of DT s simulated (default 2 ms), and after the hand-off and after every
-chunk each predictor of :mod:`coinflight.core.face_predictors`
-(:data:`~coinflight.core.face_predictors.SHARES`) is evaluated; the first time it fires and the
+chunk each predictor of ``face_predictors.py`` (beside this file, its ``SHARES``) is
+evaluated; the first time it fires and the
 face it names are recorded, and so is where
 :func:`coinflight.core.contact_phase.upright_decided` first held (the integrator's probe row,
 step-exact), for comparison. A decision disagrees when its face is not the face at rest or the
@@ -22,8 +24,10 @@ seen outside the well it ends in (the earliest any rule naming the well the coin
 decide correctly because the coin cannot leave it, as an energy bound claims), and "first in
 final well", the first chunk end at which the coin is in that well (a rule could be right
 there only by luck: the coin still leaves and comes back); and the naive rule "the well at the
-hand-off", which decides every toss at once. Results:
-:mod:`coinflight.core.face_predictors` (dated 2026-11-24).
+hand-off", which decides every toss at once. Results: ``face_predictors.py``'s notes (dated
+2026-11-24). A toss is named by (N, seed, index): ``bench_bounce.tosses`` draws depend on N,
+so the index printed with a wrong decision (its place among the N drawn) finds it again only
+with the same N and seed.
 
 Per predictor and surface: the handed tosses decided early (before the toss settles: every rule
 fires once the energy is below m g ρ), at the hand-off and in all; the median share of the
@@ -39,11 +43,15 @@ the first derivative) and costs a few extra steps: 2 ms chunks make 1,298,984 st
 761,704 that these calls take on the same 429 tosses (seed 2026, e 0.5, μ 0.3; 1 ms chunks
 1,834,764), mostly in the long upright rollers, which would inflate every saving. So the steps
 are counted on a second run of each toss (:func:`segmented`) stopped only at the times the rules
-first fired in the chunked run (at most six restarts), and its face at rest is compared with the
+first fired in the chunked run (at most seven restarts: eight times, the hand-off's 0 among
+them), and its face at rest is compared with the
 chunked run's (``chunked vs one call``: the restarts change the trajectory at the rounding
 level, which a chaotic wobble can grow into another face). Firing is tested only at chunk ends:
 a rule's first firing is late by up to a chunk, and the oracle misses an excursion out of the
-final well and back within one chunk (``--chunk`` 1e-3 and 5e-3 show how much this moves)."""
+final well and back within one chunk (``--chunk`` 1e-3 and 5e-3 show how much this moves).
+The chunked run stops at :data:`~coinflight.core.contact_phase.MAX_STEPS` counted with its
+restart steps (~70 % more at 2 ms), so it gives up earlier than the phase would; no toss here
+came near it (0 unsettled)."""
 
 from __future__ import annotations
 
@@ -57,8 +65,8 @@ from scipy.stats import binomtest
 
 import bench_bounce
 import bench_contact
+import face_predictors as fp
 from coinflight.core import contact_phase as cp
-from coinflight.core import face_predictors as fp
 from coinflight.core.impact import resting_face
 
 
@@ -158,8 +166,15 @@ def _ratio(steps: float, left: float) -> str:
     return f"{steps / left:.2f}x" if left > 0 else "every step saved"
 
 
-def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) -> None:
-    """The table of the module notes for one surface (e, μ), or each toss's own."""
+def run(
+    n: int,
+    seed: int,
+    chunk: float,
+    surface: tuple[float, float] | None,
+    resistance: float | None = None,
+) -> None:
+    """The table of the module notes for one surface (e, μ), or each toss's own; ``resistance``
+    ℓ_r = ℓ_p, m (None: the surface's default)."""
     omega, v0, e, mu = draws(n, seed)
     if surface is not None:
         e[:], mu[:] = surface
@@ -173,14 +188,16 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
     rows = []
     one_face = []
     one_settled = []
+    ell = bench_contact.contact(0.5, 0.3, resistance=resistance).rolling_resistance
     w0 = time.perf_counter()
     for j in range(n):
-        c = bench_contact.contact(float(e[j]), float(mu[j]))
+        c = bench_contact.contact(float(e[j]), float(mu[j]), resistance=resistance)
         y, handed = bench_contact.handoff((omega[j, 0], omega[j, 1], omega[j, 2]), 1.0, v0[j], c)
         if not handed:
             continue
         y1 = y.copy()
         row = carry(y, c, chunk)
+        row["index"] = j
         row["fire_s"], row["steps"], one, ended = segmented(y1, c, row["fire_t"])
         one_face.append(one)
         one_settled.append(ended)
@@ -193,7 +210,8 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
     total_t = np.array([r["time"] for r in rows])
     total_s = np.array([r["steps"] for r in rows], dtype=float)
     print(
-        f"\n{n} tosses, seed {seed}, {kind}, chunk {chunk * 1e3:g} ms: {h} handed; "
+        f"\n{n} tosses, seed {seed}, {kind}, resistances {ell:g} m, chunk "
+        f"{chunk * 1e3:g} ms: {h} handed; "
         f"{wall:.1f} s wall, load {os.getloadavg()[0]:.1f}; at rest (tails, heads, edge) "
         f"{np.bincount(face[settled], minlength=3).tolist()}, unsettled {(~settled).sum()}; "
         f"contact time median {np.median(total_t):.3f} s, steps {total_s.sum():,.0f}"
@@ -237,8 +255,8 @@ def run(n: int, seed: int, chunk: float, surface: tuple[float, float] | None) ->
             print(f"      (predicted->at rest: {kinds}; decision to rest, median {late:.2f} s)")
         for j in np.flatnonzero(wrong)[:4]:
             print(
-                f"      toss {j}: predicted {ff[j]} at {ft[j]:.3f} s, at rest {face[j]} "
-                f"(settled {settled[j]}) at {total_t[j]:.3f} s"
+                f"      toss {rows[j]['index']}: predicted {ff[j]} at {ft[j]:.3f} s, at rest "
+                f"{face[j]} (settled {settled[j]}) at {total_t[j]:.3f} s"
             )
 
 
@@ -247,11 +265,22 @@ def main() -> None:
     parser.add_argument("n", type=int, nargs="?", default=300)
     parser.add_argument("--seed", type=int, default=2026)
     parser.add_argument("--chunk", type=float, default=2e-3, help="simulated s a chunk")
+    parser.add_argument(
+        "--resistance", type=float, default=None, help="ℓ_r = ℓ_p, m (default the surface's)"
+    )
     parser.add_argument("--pairs", nargs="*", default=["0.5,0.3", "0.5,0.6", "own"])
     args = parser.parse_args()
+    if args.n < 1:
+        parser.error(f"N must be a whole number ≥ 1, got {args.n}")
+    if not (math.isfinite(args.chunk) and args.chunk > 0.0):
+        parser.error(f"--chunk must be a finite number > 0 (simulated s), got {args.chunk}")
+    if args.resistance is not None and not (
+        math.isfinite(args.resistance) and args.resistance >= 0.0
+    ):
+        parser.error(f"--resistance must be a finite number ≥ 0 (m), got {args.resistance}")
     for pair in args.pairs:
         surface = None if pair == "own" else tuple(float(x) for x in pair.split(","))
-        run(args.n, args.seed, args.chunk, surface)  # type: ignore[arg-type]
+        run(args.n, args.seed, args.chunk, surface, args.resistance)  # type: ignore[arg-type]
 
 
 if __name__ == "__main__":

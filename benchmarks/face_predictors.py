@@ -1,5 +1,8 @@
 """Predictors of the well a coin in the contact phase ends in, from its state now (numba; a study).
 
+Benchmark code, not part of the package: ``bench_predictors.py`` (beside it) imports it, and
+``tests/test_bench_predictors.py`` tests it; nothing in ``src/`` uses it.
+
 Issue 11 asks for 50,000 landings a second carried to rest; the 3-D contact ending
 (:mod:`coinflight.core.contact_phase`) runs ~2,000, because a handed coin spins and rolls for
 ~0.3 s simulated (median) while its mechanical energy is still above its well's barrier m g ρ,
@@ -36,6 +39,7 @@ horizontal kinetic energy ½ m v_h² is below B(s_n, s_z).
   the centre and n lie in one vertical plane), which is all an axisymmetric body's L·n needs
   to be kept (d(L·n)/dt = τ·n + L·(ω × n), the second term 0 for L = I1 ω + (I3 − I1)(ω·n) n).
   So B(1, 1) equals :func:`coinflight.core.contact_phase._barrier`'s frictionless branch
+  (:func:`corner_barrier` calls its ``_corner_energy``)
   and the rule is :func:`coinflight.core.contact_phase.below_barrier`'s there. With friction
   the rim's tangential force has a moment about n (the rim point's lever crossed with a
   horizontal force) and about the vertical, and it turns sliding into rolling: it can trade
@@ -54,7 +58,7 @@ horizontal kinetic energy ½ m v_h² is below B(s_n, s_z).
   only falls (the damping and friction dissipate), so a coin below it stays in its well: the
   contact ending's own rule, no earlier.
 
-Properties tested (``tests/test_face_predictors.py``): the mirror toss n → −n (the same body
+Properties tested (``tests/test_bench_predictors.py``): the mirror toss n → −n (the same body
 with heads and tails swapped; ω unchanged) gives the other face, edge to edge, B to the bit;
 (a) is ``_barrier`` and ``below_barrier`` when frictionless and (0, 0, 0) is
 ``below_barrier`` with friction; each rule is monotone in the energy (more vertical speed
@@ -133,7 +137,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from coinflight.core.contact_phase import energy
+from coinflight.core.contact_phase import _corner_energy, energy
 from coinflight.core.impact import resting_face
 
 SHARES = np.array([[1.0, 1.0, 1.0], [1.0, 0.0, 0.0], [0.5, 0.5, 0.5], [1.0, 0.0, 1.0]])
@@ -151,23 +155,26 @@ NAMES = (
 def corner_barrier(y, c, spin_share, turn_share):
     """B(s_n, s_z) of the module notes, J: the least energy of the coin balanced on a corner of
     its well at the current L·n and L_z, the spin's and the precession's terms weighted by
-    ``spin_share`` s_n and ``turn_share`` s_z. (1, 1) is
-    :func:`coinflight.core.contact_phase._barrier`'s frictionless branch to the bit (the same
-    operations, each term times 1.0); (0, 0) is m g ρ."""
+    ``spin_share`` s_n and ``turn_share`` s_z. Built on
+    :func:`coinflight.core.contact_phase._corner_energy` (the one formula): its full value on
+    the corner less (1 − s_n) times its spin term (its value at L_z = n_z = 0, less m g ρ) and
+    (1 − s_z) times its precession term (its value at L·n = 0 with L_z − (L·n) n_z, less
+    m g ρ). So (1, 1) is :func:`coinflight.core.contact_phase._barrier`'s frictionless branch
+    to the bit (the same call, less 0.0) and (0, 0) is m g ρ to rounding (a few ulps)."""
     ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
     lz = y[9]
     nz = y[6]
     corner = c.edge_sine
-    spin = spin_share * (0.5 * ln * ln / c.i3)
+    spin = _corner_energy(ln, 0.0, 0.0, c) - c.barrier
     up = (
-        c.barrier
-        + spin
-        + turn_share * (0.5 * (lz - ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner)))
+        _corner_energy(ln, lz, corner, c)
+        - (1.0 - spin_share) * spin
+        - (1.0 - turn_share) * (_corner_energy(0.0, lz - ln * corner, corner, c) - c.barrier)
     )
     down = (
-        c.barrier
-        + spin
-        + turn_share * (0.5 * (lz + ln * corner) ** 2 / (c.i1 * (1.0 - corner * corner)))
+        _corner_energy(ln, lz, -corner, c)
+        - (1.0 - spin_share) * spin
+        - (1.0 - turn_share) * (_corner_energy(0.0, lz + ln * corner, -corner, c) - c.barrier)
     )
     if abs(nz) < corner:
         return min(up, down)
