@@ -50,8 +50,9 @@ level, which a chaotic wobble can grow into another face). Firing is tested only
 a rule's first firing is late by up to a chunk, and the oracle misses an excursion out of the
 final well and back within one chunk (``--chunk`` 1e-3 and 5e-3 show how much this moves).
 The chunked run stops at :data:`~coinflight.core.contact_phase.MAX_STEPS` counted with its
-restart steps (~70 % more at 2 ms), so it gives up earlier than the phase would; no toss here
-came near it (0 unsettled)."""
+restart steps (~70 % more at 2 ms), so it gives up earlier than the phase would: at 1e-4 m
+no toss came near it (0 unsettled); at ``--resistance 1e-5`` 7 of 205 (e 0.5 μ 0.6) and 2 of
+210 (own e, μ) edge rollers, seed 7, reach it after ~160 s simulated and count as unsettled."""
 
 from __future__ import annotations
 
