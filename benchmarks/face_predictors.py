@@ -139,11 +139,12 @@ every first firing and of the oracle) hardly matters: seed 2026, e 0.5 μ 0.3, c
 and 5 ms give (a) 57, 55, 55 disagreements and 2.10×, 2.08×, 2.05× shipped, (c) 1.10×,
 1.10×, 1.09×, (d) 1.26×, 1.26×, 1.25×, the oracle 1.87×, 1.88×, 1.86×.
 
-Results at resistances ℓ_r = ℓ_p = 1e-5 m (2026-11-24, 05:53-06:03 UTC, load 4-6; the
-rolling resistance ``bench_contact.py`` also studies): ``python benchmarks/bench_predictors.py
-300 --seed 7 --resistance 1e-5`` (205-210 handed of 300; e 0.5 μ 0.3 as re-run by the review:
-206 handed, 0 unsettled). Decided early; disagreements; speed-up against carrying on / against
-the shipped phase, e 0.5 μ 0.3, e 0.5 μ 0.6, each toss its own e, μ:
+Results at resistances ℓ_r = ℓ_p = 1e-5 m (2026-11-24, 05:53-06:03 UTC, load 4-6; the rolling
+resistance ``bench_contact.py`` also studies): ``python benchmarks/bench_predictors.py 300
+--seed 7 --resistance 1e-5`` (205-210 handed of 300; e 0.5 μ 0.3 run twice, by the review and
+here, to the same numbers: 206 handed, 0 unsettled). Decided early; disagreements; speed-up
+against carrying on / against the shipped phase, e 0.5 μ 0.3, e 0.5 μ 0.6, each toss its own e,
+μ:
 
 - (a) 198, 194, 200; 37, 83, 47; 24.9×, 118×, 52.0× / 18.8×, 90.4×, 41.6×.
 - (b) 119, 142, 129; 0, 0, 0 (≤ 0.031, 0.026, 0.028); 1.01× / 1.00×.
@@ -170,16 +171,16 @@ decision would have to improve.
 **Conclusion**: no energy rule of this family is both safe and useful: (b), the only one with
 no disagreement, makes the shipped phase ≤ 1.02× faster; (c), near-safe (10 disagreements in
 ~2,300), ≤ 1.12×; (a), 2.0-2.7× faster at 1e-4 m, names the wrong well on 12-32 % of its
-decisions, (d), 1.3-1.7×, on 5-26 %. A rule that fires only once the coin cannot leave its
-well makes the shipped phase at most 1.9-14.6× faster at e 0.5 μ 0.3 (1.6-61× at μ 0.6,
-2.0-33× with each toss's own e, μ; the last-well-change oracle, seed 7, over ℓ_r = ℓ_p in
-[1e-5, 1e-4] m, the low end at 1e-4 m); past that
-only a rule naming the final well while the coin can still leave it (the lucky ceiling, 9-24×
-at 1e-4 m), a prediction, not a bound. At 1e-4 m the 50,000 landings a second (~25× away) need
-the motion before the last well change made cheaper, or a predictor of the outcome of the
-excursions still to come (a learned or a reduced dynamical one, not an energy bound; not
-attempted); at 1e-5 m the time after the last well change is the upright rollers', so there
-the upright decision's timing is what to improve. Nothing here is used by the landings.
+decisions, (d), 1.3-1.7×, on 5-26 %. A rule that fires only once the coin cannot leave its well
+makes the shipped phase at most 1.9-14.6× faster at e 0.5 μ 0.3 (1.6-61× at μ 0.6, 2.0-33× with
+each toss's own e, μ; the last-well-change oracle, seed 7, over ℓ_r = ℓ_p in [1e-5, 1e-4] m,
+the low end at 1e-4 m); past that only a rule naming the final well while the coin can still
+leave it (the lucky ceiling, 9-24× at 1e-4 m), a prediction, not a bound. At 1e-4 m the 50,000
+landings a second (~25× away) need the motion before the last well change made cheaper, or a
+predictor of the outcome of the excursions still to come (a learned or a reduced dynamical one,
+not an energy bound; not attempted); at 1e-5 m the time after the last well change is the
+upright rollers', so there the upright decision's timing is what to improve. Nothing here is
+used by the landings.
 """
 
 from __future__ import annotations
