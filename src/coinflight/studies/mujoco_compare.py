@@ -644,7 +644,7 @@ def bound(
     ``solver``'s cost), before anything is allocated or computed."""
     seconds = sum(seconds_estimate(n, limit, integrator, solver=solver) for n in runs)
     v.work_bound(
-        f"{sum(runs)} MuJoCo tosses carried up to {limit:g} s past their first contact",
+        f"{v.quantity(sum(runs))} MuJoCo tosses carried up to {limit:g} s past their first contact",
         seconds,
         v.MAX_RUN_SECONDS,
         "s",
