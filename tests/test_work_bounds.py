@@ -24,7 +24,7 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from _cli import one_line_error
-from _work import MB, RUNS_TASKS, command_work, never_run, refused_cheaply
+from _work import MB, RUNS_TASKS, command_work, counted_catch, never_run, refused_cheaply
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.model.distributions import Uniform
@@ -443,7 +443,7 @@ def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
 # --- the drag integrator (reported: hangs with spin damping; tiny coins) ----------------------
 
 
-def test_any_spin_damping_on_a_tiny_coin_ends_quickly(monkeypatch):
+def test_any_spin_damping_on_a_tiny_coin_ends_quickly():
     # Reported: spin damping 1 ran > 30 s. The damping's decays are exact and its steps bounded
     # (core.drag), so the strongest accepted K on a 1 mm coin (K/I1 = 4e7 1/s) is not refused,
     # and its toss takes no more steps than check_air's estimate without damping (steps_needed:
@@ -463,17 +463,7 @@ def test_any_spin_damping_on_a_tiny_coin_ends_quickly(monkeypatch):
     air = drag_model(tiny, damped, 9.81)
     budget = drag.steps_needed(air, 3.43, 0.0, 80.0)
     assert budget < drag.MAX_STEPS / 1000  # about 130 steps
-    steps = 0
-    step_size = drag.step_size
-
-    def counted(*args: object) -> object:
-        nonlocal steps
-        steps += 1
-        return step_size(*args)
-
-    monkeypatch.setattr(drag, "step_size", counted)
-    monkeypatch.setattr(drag, "MAX_STEPS", int(budget))
-    face_py, t_py, _ = drag.catch_one.py_func(omega[0], 1.0, 3.43, air)
+    steps, (face_py, t_py, _) = counted_catch(omega[0], 3.43, air, budget)
     assert 0 < steps <= budget
     assert (face_py, t_py) == (int(face[0]), float(t[0]))  # the same toss (beyond budget: t = -1)
 
