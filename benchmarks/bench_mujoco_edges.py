@@ -42,8 +42,8 @@ again for e).
 Is the gap at condim 3 MuJoCo's soft friction? (2026-11-23, 20:36-21:45 UTC, load 7-14; ``600
 --handoff-only --condim 3`` with the options below, MuJoCo RK4, limit 20 s; 446 hand-off states,
 coinflight 49 on edge, 0.110 ± 0.015, before the sliding-mass damper; 44, 0.099 ± 0.014,
-with it: ``bench_edge_sensitivity.py 600``, 2026-11-24.) MuJoCo on edge, among the 446 (still moving at 20 s,
-counted by their well):
+with it: ``bench_edge_sensitivity.py 600``, 2026-11-24.) MuJoCo on edge, among the 446 (still
+moving at 20 s, counted by their well):
 
 =============================================  ==========================  ======
 MuJoCo friction (condim 3)                     on edge                     moving
@@ -87,12 +87,12 @@ soft first touch, ``--solimp 0.1,0.95,3e-5``   19, 0.043 ± 0.010           25
 coinflight's do (a nickel dropped upright on its rim at 0.01 m/s stays 4.6 ms in contact and
 does not rebound, against 0.8 ms and 0.34 of its speed by default; at 0.1 m/s 0.9 ms, 0.43;
 coinflight's 3/2 law 5.7 ms, 0.18), yet leaves its edge count where it was: MuJoCo's
-impedance does not move it toward coinflight's 49 (0.110 ± 0.015; 44 with the damper). Nor does coinflight's
-normal law move toward MuJoCo: a linear rim law (``bench_edge_sensitivity.py --exponent 1``,
-impacts of 0.75 ms as MuJoCo's) leaves 47 against the 3/2 law's 49 (both carried to rest
-without the upright decision, which changes none of the 49), and 49 against 48 at t_c 0.25
-ms. The gap is not in the normal
-law's shape, stiffness or first-touch softness of either engine (that run's notes).
+impedance does not move it toward coinflight's 49 (0.110 ± 0.015; 44 with the damper). Nor
+does coinflight's normal law move toward MuJoCo: a linear rim law
+(``bench_edge_sensitivity.py --exponent 1``, impacts of 0.75 ms as MuJoCo's) leaves 47
+against the 3/2 law's 49 (both carried to rest without the upright decision, which changes
+none of the 49), and 49 against 48 at t_c 0.25 ms (these before the damper). The gap is not in
+the normal law's shape, stiffness or first-touch softness of either engine (that run's notes).
 
 Where they part is MuJoCo's sliding contact, which moves apart
 (:mod:`coinflight.studies.mujoco_compare`'s notes, "Why the engines part"; its documentation:
