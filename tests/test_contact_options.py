@@ -678,7 +678,7 @@ def test_the_library_bounds_a_map_of_contact_landings_before_allocating_it():
     assert model.rate == rate
     limit = rate * v.MAX_RUN_SECONDS  # an hour of landings at that rate
     said = (
-        f"a map of 5000×5000 tosses (table landing) is 25,000,000 tosses (about "
+        f"a map of 5,000×5,000 tosses (table landing) is 25,000,000 tosses (about "
         f"{v.duration(2.5e7 / rate)} at {v.estimate(rate)} tosses/s), more than the limit of "
         f"{v.quantity(limit)} tosses (about 60 min); use a coarser resolution"
     )

@@ -293,7 +293,7 @@ def test_basin_boundaries_are_kellers_hyperbolas(client):
 @pytest.mark.parametrize(
     ("query", "message"),
     [
-        ("resolution=2000", "a map of 2000×2000 cells is 4,000,000 cells, more than the limit of "
+        ("resolution=2000", "a map of 2,000×2,000 cells is 4,000,000 cells, more than the limit of "
          "640,000 cells; use a coarser resolution (e.g. 400 or 600x300)"),
         ("resolution=10x", "--resolution must be N or NTxNW with whole numbers, such as 500 or "
          "600x400; got '10x'"),

@@ -77,7 +77,15 @@ def test_work_bound_names_request_estimate_time_limit_and_way_on():
         (2000.3, 2000, "is 2,000.3 curves, more than the limit of 2,000 curves"),
         (2000.04, 2000, "is 2,000.04 curves, more than the limit of 2,000 curves"),
         (1800.0000001, 1800.0, "is 1,800.0000001 curves, more than the limit of 1,800 curves"),
-        (1667.3, 1500.0, "is 1,667 curves, more than the limit of 1,500 curves"),
+        (1667.3, 1500.0, "is 1,670 curves, more than the limit of 1,500 curves"),
+        # an estimate with 3 significant digits, not false precision (was "94,308,161")
+        (94308161.0, 10**6, "is 94,300,000 curves, more than the limit of 1,000,000 curves"),
+        (2001.4, 2000, "is 2,001 curves, more than the limit of 2,000 curves"),
+        # rounded, an estimate never reads at or below its limit
+        (6150000002.0, 6150000001, "is 6,150,000,002 curves, more than the limit of"),
+        # a float within rounding of its limit: no digit beyond either's shortest form (repr)
+        (1.1 + 2.2, 3.3, "is 3.3000000000000003 curves, more than the limit of 3.3 curves"),
+        (0.1 + 0.2, 0.3, "is 0.30000000000000004 curves, more than the limit of 0.3 curves"),
         (1.52, 1.5, "is 1.52 curves, more than the limit of 1.5 curves"),
         # from 10^15 in scientific notation, the digits needed and no more
         (2**63, 9e10, "is 9.22e+18 curves, more than the limit of 90,000,000,000 curves"),
@@ -87,6 +95,17 @@ def test_work_bound_names_request_estimate_time_limit_and_way_on():
             "is 1.000000000000002e+15 curves, more than the limit of 1e+15 curves",
         ),
         (1e300, 1e15, "is 1e+300 curves, more than the limit of 1e+15 curves"),
+        # the boundary of "in full below 10^15" (EXACT_BELOW)
+        (
+            10**15 - 1,
+            10**15 - 2,
+            "is 999,999,999,999,999 curves, more than the limit of 999,999,999,999,998 curves",
+        ),
+        (
+            10**14 + 1,
+            10**14,
+            "is 100,000,000,000,001 curves, more than the limit of 100,000,000,000,000 curves",
+        ),
         (float("inf"), 5, "is inf curves, more than the limit of 5 curves"),
     ],
 )
@@ -116,6 +135,78 @@ def test_an_amount_over_its_limit_never_reads_as_the_limit(limit, above, relativ
     assert words, str(info.value)
     shown, most = (Decimal(x.replace(",", "")) for x in words.groups())
     assert shown > most  # distinct, and in the right order
+    for text, value in zip(words.groups(), (amount, limit), strict=True):
+        assert_reads_as(text, value)
+
+
+def assert_reads_as(text, value):
+    """``text`` shows ``value`` rounded to the digits it shows, never with more digits than
+    the float's shortest round-trip form (``repr``), and when it shows as many, reads back
+    as that float."""
+    shown = Decimal(text.replace(",", ""))
+    if isinstance(value, int) and abs(value) < v.EXACT_BELOW:
+        assert shown == value, text  # an exact count, in full
+        return
+    digits = len(shown.normalize().as_tuple().digits)
+    last = Decimal(1).scaleb(shown.normalize().as_tuple().exponent)  # its last digit's unit
+    assert abs(shown - Decimal(value)) <= last, (text, value)  # a rounding of the value
+    if isinstance(value, float):
+        most = len(Decimal(repr(value)).normalize().as_tuple().digits)
+        assert digits <= most, (text, repr(value))  # no digit beyond repr's: no binary noise
+        if digits == most:
+            assert float(shown) == value, (text, repr(value))  # reads back as the float
+
+
+@settings(max_examples=500, deadline=None)
+@given(
+    x=st.floats(allow_nan=False, allow_infinity=False).filter(lambda x: x != 0),
+    decimals=st.integers(0, 17),
+)
+def test_a_shown_float_never_has_more_digits_than_its_shortest_form(x, decimals):
+    assert_reads_as(v.quantity(x, decimals), x)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    limit=st.floats(1e-3, 1e20, allow_nan=False, allow_infinity=False),
+    ulps=st.integers(1, 4),
+)
+def test_a_float_within_rounding_of_its_limit_reads_back_as_itself(limit, ulps):
+    amount = limit
+    for _ in range(ulps):
+        amount = math.nextafter(amount, math.inf)
+    shown, most = v.over_limit(amount, limit)
+    assert Decimal(shown.replace(",", "")) > Decimal(most.replace(",", ""))
+    assert_reads_as(shown, amount)
+    assert_reads_as(most, limit)
+
+
+def test_an_amount_that_takes_as_long_as_its_limit_is_not_timed_twice():
+    # "270,001 tosses (about 60 min …), more than … 270,000 tosses (about 60 min)": the limit's
+    # duration alone, with the rate
+    with pytest.raises(ValueError) as info:
+        v.work_bound("w", 270_001, 270_000, "tosses", "y", 75.0)
+    assert str(info.value) == (
+        "w is 270,001 tosses, more than the limit of 270,000 tosses (about 60 min at "
+        "75 tosses/s); y"
+    )
+    with pytest.raises(ValueError) as info:  # durations that differ: both
+        v.work_bound("w", 540_000, 270_000, "tosses", "y", 75.0)
+    assert "is 540,000 tosses (about 2 h at 75 tosses/s), more than the limit of 270,000 " in (
+        str(info.value)
+    )
+
+
+def test_the_phase_refusal_quotes_spin_and_time_as_estimates():
+    # was "(2e+05 rad/s for 1e+04 s)" beside "2,000,000,000 rad"
+    with pytest.raises(ValueError) as info:
+        v.phase_budget(2e5, 1e4)
+    assert str(info.value).startswith(
+        "spin × flight time must be at most 1,000,000,000 rad, got 2,000,000,000 rad "
+        "(200,000 rad/s for 10,000 s): "
+    )
+    with pytest.raises(ValueError, match=r"got 1,230,000,000 rad \(123,000 rad/s for 10,000 s\)"):
+        v.phase_budget(123_456.7, 10_000.0)
 
 
 @pytest.mark.parametrize(
@@ -426,7 +517,7 @@ def test_edge_simulation_is_bounded():
     message = refused_cheaply(
         lambda: simulate_edge(np.full(100, 0.3), 10**7, 1), "tosses", RUNS_TASKS
     )
-    assert "100 ratios × 10000000 tosses is 1,000,000,000 tosses" in message
+    assert "100 ratios × 10,000,000 tosses is 1,000,000,000 tosses" in message
 
 
 def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
@@ -529,7 +620,7 @@ FIG = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
                 "--out",
                 "b.png",
             ],
-            "5 angles × 10000000000 tosses is 50,000,000,000 tosses (about 3.5 h",
+            "5 angles × 10,000,000,000 tosses is 50,000,000,000 tosses (about 3.5 h",
         ),
         (["plot", "toss", "--omega", "0", "0", "1e9", "-T", "0.7", "--out", "t.png"], "points"),
         (["plot", "basin", "--omega-x", "-1e9:1e9", "--out", "b.png"], "--no-boundaries"),
@@ -572,7 +663,7 @@ FIG = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
                 "--mass",
                 "1e-4",
             ],
-            "integration steps a toss, more than the 1,000,000 allowed",
+            "would need about 94,300,000 integration steps a toss, more than the 1,000,000 allowed",
         ),
     ],
 )

@@ -233,7 +233,8 @@ def phase_budget(spin: float, flight_time: float, what: str = "spin × flight ti
         got, most = over_limit(phase, MAX_PHASE)
         raise ValueError(
             f"{what} must be at most {most} rad, got {got} rad "
-            f"({abs(float(spin)):.3g} rad/s for {abs(float(flight_time)):.3g} s): beyond that, "
+            f"({quantity(significant(abs(float(spin))))} rad/s for "
+            f"{quantity(significant(abs(float(flight_time))))} s): beyond that, "
             "rounding, not physics, would decide the face"
         )
 
@@ -276,7 +277,9 @@ def quantity(x: float | int, decimals: int = 0) -> str:
     whichever shows more (``1,667`` for 1667.3, ``1.5``, ``0.125``; ``2,000.3`` with 1); from
     :data:`EXACT_BELOW` up in scientific notation with 3 + ``decimals`` significant digits
     (``9.22e+18``), a Python integer beyond float range too (``1.15e+602``). Trailing zeros
-    are dropped. :func:`over_limit` picks ``decimals``.
+    are dropped, and a float never shows more digits than its shortest round-trip form
+    (``repr``: 0.3 with 14 decimals reads ``0.3``, not ``0.29999999999999999``).
+    :func:`over_limit` picks ``decimals``.
     """
     if isinstance(x, int | np.integer) and not isinstance(x, bool | np.bool_):
         whole = int(x)
@@ -287,13 +290,27 @@ def quantity(x: float | int, decimals: int = 0) -> str:
     if not math.isfinite(x):
         return str(x)
     if abs(x) >= EXACT_BELOW:
-        return _trimmed(f"{x:.{2 + decimals}e}")
-    if x.is_integer():
+        text = _trimmed(f"{x:.{2 + decimals}e}")
+    elif x.is_integer():
         return f"{int(x):,}"
-    if abs(x) >= 1.0:
+    elif abs(x) >= 1.0:
         places = max(decimals, 2 - math.floor(math.log10(abs(x))))
-        return _trimmed(f"{x:,.{places}f}")
-    return _trimmed(f"{x:.{3 + decimals}g}")
+        text = _trimmed(f"{x:,.{places}f}")
+    else:
+        text = _trimmed(f"{x:.{3 + decimals}g}")
+    shortest = repr(x) if not 1.0 <= abs(x) < EXACT_BELOW else f"{Decimal(repr(x)):,f}"
+    return shortest if _digits(text) > _digits(shortest) else text
+
+
+def _digits(text: str) -> int:
+    """How many significant digits the number ``text`` shows."""
+    return len(_read(text).normalize().as_tuple().digits)
+
+
+def significant(x: float, digits: int = 3) -> float:
+    """``x`` rounded to ``digits`` significant digits: how an estimate is quoted (an estimated
+    number of steps, seconds of work, a spin), ``94,300,000`` rather than ``94,308,161``."""
+    return float(f"{x:.{digits}g}") if math.isfinite(x) else x
 
 
 def _trimmed(text: str) -> str:
@@ -311,14 +328,23 @@ def _read(text: str) -> Decimal:
 
 
 def over_limit(amount: float | int, limit: float | int) -> tuple[str, str]:
-    """``amount`` and ``limit`` for a refusal (:func:`quantity`), with as few decimals as
-    make them read as different numbers: an amount above its limit never prints as the limit
-    (2000.3 against 2000 reads ``2,000.3``, not ``2,000``)."""
-    for decimals in range(18):
-        shown = quantity(amount, decimals), quantity(limit, decimals)
-        if _read(shown[0]) != _read(shown[1]) or amount == limit:
-            return shown
-    return repr(amount), repr(limit)  # pragma: no cover - 17 decimals part any two floats
+    """``amount`` and ``limit`` for a refusal (:func:`quantity`), with as few digits as make
+    them read as different numbers in their order: an amount above its limit never prints as
+    the limit or below it.
+
+    An integer amount is an exact count and prints in full (``2,001`` against ``2,000``); a
+    float amount is an estimate and prints with 3 significant digits (:func:`significant`,
+    ``94,300,000`` steps), widened only as far as it takes to tell it from the limit (2000.3
+    against 2000 reads ``2,000.3``, not ``2,000``), never beyond its shortest round-trip form
+    (``repr``)."""
+    counted = isinstance(amount, int | np.integer) and not isinstance(amount, bool | np.bool_)
+    for extra in range(18):
+        rounded = amount if counted else significant(float(amount), 3 + extra)
+        shown = quantity(rounded, extra), quantity(limit, extra)
+        apart = _read(shown[0]) != _read(shown[1])
+        if amount == limit or (apart and (_read(shown[0]) > _read(shown[1])) == (amount > limit)):
+            return shown  # alike only when equal, and in the same order as the two values
+    return repr(amount), repr(limit)  # pragma: no cover - 17 digits part any two floats
 
 
 def estimate(x: float) -> str:
@@ -372,8 +398,12 @@ def work_bound(
         work = math.inf
     timing = limit_time = ""
     if rate:
-        timing = f" (about {duration(work / rate)} at {estimate(rate)} {unit}/s)"
-        limit_time = f" (about {duration(limit / rate)})"
+        took, most_took = duration(work / rate), duration(limit / rate)
+        at = f" at {estimate(rate)} {unit}/s"
+        if took == most_took:  # two alike durations: the limit's alone
+            limit_time = f" (about {most_took}{at})"
+        else:
+            timing, limit_time = f" (about {took}{at})", f" (about {most_took})"
     shown, most = over_limit(amount, limit)
     raise ValueError(
         f"{what} is {shown} {unit}{timing}, more than the limit of {most} {unit}"
