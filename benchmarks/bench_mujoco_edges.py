@@ -16,8 +16,8 @@ to rest in each (simulated seconds after the first contact: MuJoCo to within its
 coinflight's bounces plus its contact phase, from ``bench_contact.handoff``), and how long
 they stood on their rim.
 
-Measured with the contact phase's sliding-mass damper (2026-11-24, main 4f0dfa5, MuJoCo
-3.17, ``1500 --pairs 0.5,0.3 0.5,0.6``, seed 2026, load 2-10; the figures of
+Measured with the contact phase's sliding-mass damper (2026-11-24, main 4f0dfa5, MuJoCo 3.17,
+``1500 --pairs 0.5,0.3 0.5,0.6``, seed 2026, load 1.9 at start, 6.0 at end; the figures of
 :mod:`coinflight.core.contact_phase`'s notes, "An independent engine", were measured before the
 damper, 2026-11-23): P(edge) among the tosses handed to the contact phase, coinflight against
 MuJoCo on the same tosses, **0.115 ± 0.010 against 0.012 ± 0.003** at e 0.5, μ 0.3 (1,077
@@ -25,10 +25,10 @@ handed; 0.123 before the damper) and **0.435 ± 0.015 against 0.043 ± 0.006** a
 0.439 before); of all tosses 0.083 and 0.309 here (0.088, 0.312 before). MuJoCo's runs do not
 involve the phase, and the tosses handed to it are the same (the bounces are unchanged): its
 figures are those of 2026-11-23 again (of all tosses 0.011 and 0.035; 2 and 11 still moving at
-20 s). On edge in both engines 2 and 20 tosses, here only 122 and 444, in MuJoCo only 14 and
-33 (2, 23; 130, 445; 14, 30 before); coinflight's edge-enders stand upright a median 7.1 and
-7.8 s (6.7, 7.9 before), MuJoCo's 14.6 and 10.9 s. 2,723 s wall, 1,106 s of CPU (MuJoCo
-32,480 and 33,781 RK4 steps a second).
+20 s). On edge in both engines 2 and 20 tosses, here only 122 and 444, in MuJoCo only 14 and 33
+(2, 23; 130, 445; 14, 30 before); coinflight's edge-enders stand upright a median 7.1 and 7.8 s
+(6.7, 7.9 before), MuJoCo's 14.6 and 10.9 s. 2,723 s wall, 1,106 s of CPU (MuJoCo 32,480 and
+33,781 RK4 steps a second).
 
 ``--from-handoff`` also starts MuJoCo from coinflight's own state at the hand-off to its
 contact phase (:func:`coinflight.studies.mujoco_compare.run_from`; the impacts left out, the
