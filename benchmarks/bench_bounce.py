@@ -231,6 +231,24 @@ def as_undecided(status: np.ndarray) -> np.ndarray:
     return np.where(decided, np.asarray(Status.SETTLED_CONTACT, dtype=status.dtype), status)
 
 
+def status_differences(here: np.ndarray, there: np.ndarray) -> tuple[int, int, int, int]:
+    """Tosses whose statuses differ between two runs of the same tosses, each mapped by
+    :func:`as_undecided` (so a decided toss is no difference whether the other tree has the
+    status, stores it as settled in contact, or was run with the decision off), the tosses
+    decided upright in each, and those decided in one tree only (the mapping hides them: a
+    real difference when both trees have the status, all the decided ones when the other
+    has not): (differing, decided here, decided there, decided in one only)."""
+    differing = int(np.count_nonzero(as_undecided(here) != as_undecided(there)))
+    decided_here = here == Status.DECIDED_UPRIGHT
+    decided_there = there == Status.DECIDED_UPRIGHT
+    return (
+        differing,
+        int(np.count_nonzero(decided_here)),
+        int(np.count_nonzero(decided_there)),
+        int(np.count_nonzero(decided_here != decided_there)),
+    )
+
+
 def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     """Tosses a second carried to rest with the 3-D contact ending against the rocking ending
     and first contact, in one run (medians), on one surface (e = 0.5, μ = 0.3) and with each
@@ -301,15 +319,18 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
             that_cpu = statistics.median(other["cpu"][name])
             out = own[name](True)
             differ = int(np.count_nonzero(out.face != old_out[name + " face"]))
-            decided = out.status == Status.DECIDED_UPRIGHT
-            status = int(np.count_nonzero(as_undecided(out.status) != old_out[name + " status"]))
+            status, decided, decided_there, one_only = status_differences(
+                out.status, old_out[name + " status"]
+            )
             print(
                 f"    {name}: {that:,.0f} tosses/s (this one / other = "
                 f"{rates[name] / that:.2f}); one thread {here_cpu:,.0f} against "
                 f"{that_cpu:,.0f} per CPU second (this one / other = "
                 f"{here_cpu / that_cpu:.2f}); faces differing {differ} of {n}, statuses "
-                f"{status} (this one's {int(decided.sum())} decided upright counted as settled "
-                "in contact, the older status)"
+                f"{status} (decided upright, {decided} here and {decided_there} there, counted "
+                "as settled in contact in both, the status before 2026-11-24); decided upright "
+                f"in one tree only {one_only} (all the decided ones if the other tree has no "
+                "such status)"
             )
     print(f"  load average {load_before[0]:.2f} before, {os.getloadavg()[0]:.2f} after")
     for e, mu in ((0.5, 0.3), (0.2, 0.5), (0.8, 0.1)):

@@ -23,6 +23,11 @@ as that benchmark does for 60 tosses): medians of the first contact episode's le
 impulse, the share of samples in contact and the number of episodes, for the tosses that end on
 edge and the others.
 
+Re-measured with the contact phase's sliding-mass damper (2026-11-24 05:20 UTC, main 4f0dfa5,
+``600``, load 9, 5 s): on edge by default 44 of the 446 (0.099 ± 0.014; heads 0.482), against
+the 49 (0.110 ± 0.015; heads 0.475) below, measured before the damper; the other rows below
+were not re-run.
+
 Measured (446 hand-off states, 2026-11-24 00:39-00:44 UTC, load 2-4, each run 0-32 s; the same
 counts as first measured 2026-11-23 23:36-00:05 UTC on the code before the contact phase's
 speed-up, but for the 3/2 law at 0.25 ms, then 47): on edge by default 49 (0.110 ± 0.015), with

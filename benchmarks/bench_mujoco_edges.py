@@ -16,6 +16,20 @@ to rest in each (simulated seconds after the first contact: MuJoCo to within its
 coinflight's bounces plus its contact phase, from ``bench_contact.handoff``), and how long
 they stood on their rim.
 
+Measured with the contact phase's sliding-mass damper (2026-11-24, main 4f0dfa5, MuJoCo 3.17,
+``1500 --pairs 0.5,0.3 0.5,0.6``, seed 2026, load 1.9 at start, 6.0 at end; the figures of
+:mod:`coinflight.core.contact_phase`'s notes, "An independent engine", were measured before the
+damper, 2026-11-23): P(edge) among the tosses handed to the contact phase, coinflight against
+MuJoCo on the same tosses, **0.115 ± 0.010 against 0.012 ± 0.003** at e 0.5, μ 0.3 (1,077
+handed; 0.123 before the damper) and **0.435 ± 0.015 against 0.043 ± 0.006** at μ 0.6 (1,067;
+0.439 before); of all tosses 0.083 and 0.309 here (0.088, 0.312 before). MuJoCo's runs do not
+involve the phase, and the tosses handed to it are the same (the bounces are unchanged): its
+figures are those of 2026-11-23 again (of all tosses 0.011 and 0.035; 2 and 11 still moving at
+20 s). On edge in both engines 2 and 20 tosses, here only 122 and 444, in MuJoCo only 14 and 33
+(2, 23; 130, 445; 14, 30 before); coinflight's edge-enders stand upright a median 7.1 and 7.8 s
+(6.7, 7.9 before), MuJoCo's 14.6 and 10.9 s. 2,723 s wall, 1,106 s of CPU (MuJoCo 32,480 and
+33,781 RK4 steps a second).
+
 ``--from-handoff`` also starts MuJoCo from coinflight's own state at the hand-off to its
 contact phase (:func:`coinflight.studies.mujoco_compare.run_from`; the impacts left out, the
 contact phases compared alone); ``--handoff-only`` does only that (no MuJoCo flights), with
@@ -32,8 +46,9 @@ again for e).
 
 Is the gap at condim 3 MuJoCo's soft friction? (2026-11-23, 20:36-21:45 UTC, load 7-14; ``600
 --handoff-only --condim 3`` with the options below, MuJoCo RK4, limit 20 s; 446 hand-off states,
-coinflight 49 on edge, 0.110 ± 0.015.) MuJoCo on edge, among the 446 (still moving at 20 s,
-counted by their well):
+coinflight 49 on edge, 0.110 ± 0.015, before the sliding-mass damper; 44, 0.099 ± 0.014,
+with it: ``bench_edge_sensitivity.py 600``, 2026-11-24.) MuJoCo on edge, among the 446 (still
+moving at 20 s, counted by their well):
 
 =============================================  ==========================  ======
 MuJoCo friction (condim 3)                     on edge                     moving
@@ -77,12 +92,12 @@ soft first touch, ``--solimp 0.1,0.95,3e-5``   19, 0.043 ± 0.010           25
 coinflight's do (a nickel dropped upright on its rim at 0.01 m/s stays 4.6 ms in contact and
 does not rebound, against 0.8 ms and 0.34 of its speed by default; at 0.1 m/s 0.9 ms, 0.43;
 coinflight's 3/2 law 5.7 ms, 0.18), yet leaves its edge count where it was: MuJoCo's
-impedance does not move it toward coinflight's 49 (0.110 ± 0.015). Nor does coinflight's
-normal law move toward MuJoCo: a linear rim law (``bench_edge_sensitivity.py --exponent 1``,
-impacts of 0.75 ms as MuJoCo's) leaves 47 against the 3/2 law's 49 (both carried to rest
-without the upright decision, which changes none of the 49), and 49 against 48 at t_c 0.25
-ms. The gap is not in the normal
-law's shape, stiffness or first-touch softness of either engine (that run's notes).
+impedance does not move it toward coinflight's 49 (0.110 ± 0.015; 44 with the damper). Nor
+does coinflight's normal law move toward MuJoCo: a linear rim law
+(``bench_edge_sensitivity.py --exponent 1``, impacts of 0.75 ms as MuJoCo's) leaves 47
+against the 3/2 law's 49 (both carried to rest without the upright decision, which changes
+none of the 49), and 49 against 48 at t_c 0.25 ms (these before the damper). The gap is not in
+the normal law's shape, stiffness or first-touch softness of either engine (that run's notes).
 
 Where they part is MuJoCo's sliding contact, which moves apart
 (:mod:`coinflight.studies.mujoco_compare`'s notes, "Why the engines part"; its documentation:

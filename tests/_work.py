@@ -94,3 +94,25 @@ def refused_cheaply(
             tracemalloc.stop()
     assert peak < peak_mb * MB, f"peak {peak / MB:.1f} MB before refusing"
     return str(info.value)
+
+
+def counted_catch(omega: object, launch_speed: float, air: object, budget: float) -> tuple:
+    """A hand catch by the drag kernel's own loop (``catch_one.py_func``, heads up) with its
+    steps counted and its budget ``MAX_STEPS`` set to ``budget``: (steps taken, the catch). A
+    bound on the steps, not a clock (the machine is shared): a regression ends at the budget
+    (catch time −1), not in hours. The patches are undone before any kernel compiles."""
+    from coinflight.core import drag
+
+    steps = 0
+    step_size = drag.step_size
+
+    def counted(*args: object) -> object:
+        nonlocal steps
+        steps += 1
+        return step_size(*args)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(drag, "step_size", counted)
+        patch.setattr(drag, "MAX_STEPS", int(budget))
+        got = drag.catch_one.py_func(omega, 1.0, launch_speed, air)
+    return steps, got

@@ -4,15 +4,15 @@
 from __future__ import annotations
 
 import sys
-from pathlib import Path
 
 import pytest
 
+from _bench import bench_script, load_bench
 from _cli import script_error
 from coinflight.model.distributions import Fixed
 from coinflight.studies.edge_experiments import axial_spin
 
-SCRIPT = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_edge_experiments.py"
+SCRIPT = bench_script("bench_edge_experiments")
 
 
 def _study_words(psi: float | str) -> str:
@@ -46,12 +46,7 @@ def test_bad_input_is_one_line_and_exit_2(args, said, tmp_path):
 
 def _main(monkeypatch, *args: str) -> None:
     """The benchmark's main() with ``args`` on its command line."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("bench_edge_experiments", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+    bench = load_bench("bench_edge_experiments")
     monkeypatch.setattr(sys, "argv", [str(SCRIPT), *args])
     bench.main()
 

@@ -5,16 +5,14 @@ FrictionSolver's words, exit 2 and no traceback, before anything is simulated.""
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 import pytest
 
+from _bench import BENCH
 from _cli import script_error
 from coinflight.studies import mujoco_compare as mc
 
 pytest.importorskip("mujoco")
-
-BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
 
 
 def _words(**setting):  # type: ignore[no-untyped-def]

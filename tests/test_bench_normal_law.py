@@ -13,7 +13,7 @@ import sys
 import textwrap
 from pathlib import Path
 
-BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
+from _bench import BENCH
 
 PRELUDE = """
 import math, sys

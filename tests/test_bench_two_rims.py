@@ -7,23 +7,16 @@ linear law's restitution_of(ζ, 1). The model is not changed: these checks pin w
 
 from __future__ import annotations
 
-import importlib.util
 import math
-from pathlib import Path
 
 import pytest
 
+from _bench import load_bench
 from coinflight.core import contact_phase as cp
-
-SCRIPT = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_two_rims.py"
 
 
 def _bench():  # type: ignore[no-untyped-def]
-    spec = importlib.util.spec_from_file_location("bench_two_rims", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
-    return bench
+    return load_bench("bench_two_rims")
 
 
 SPEED = math.sqrt(2.0 * 9.81 * 0.1)  # a 10 cm drop, 1.4 m/s: gravity small beside the contact

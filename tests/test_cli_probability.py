@@ -188,7 +188,7 @@ def test_launch_speed_and_normal():
         ),
         (
             [*THREE_SPINS, "--flight-time", "0.7", "--method", "grid", "--n", "1000"],
-            "1e+09 configurations, each evaluated one by one",
+            "1,000,000,000 configurations, each evaluated one by one",
         ),
     ],
 )
@@ -331,6 +331,6 @@ def test_convergence_refuses_an_over_large_grid_before_starting():
 
     three = TossDistribution(Uniform(60, 90), Uniform(0, 20), Uniform(0, 5), 0.7)
     done: list[int] = []
-    with pytest.raises(ValueError, match=r"1000\^3 = 1e\+09 configurations"):
+    with pytest.raises(ValueError, match=r"1000\^3 = 1,000,000,000 configurations"):
         convergence(three, ["grid"], grid_sizes=[5, 10, 1000], progress=done.append)
     assert done == []  # nothing computed before the refusal

@@ -262,7 +262,7 @@ def test_work_and_rows_are_bounded_before_anything_runs():
         "sweep", "--omega-x-mean", "0:1000:10000", "--omega-x-sd", "1:2:1000",
         "--flight-time", "0.7", "--out", "never.csv",
     )  # fmt: skip
-    assert "is 10000 × 1000 = 10,000,000 distributions, more than the 100,000 rows" in message
+    assert "is 10,000 × 1,000 = 10,000,000 distributions, more than the 100,000 rows" in message
     # and the rows before any case is built
     message = one_line_error(
         "sweep", "--omega-x-mean", "60:90:100", "--omega-x-sd", "1", "--omega-y-mean",

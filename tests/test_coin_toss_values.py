@@ -132,7 +132,7 @@ def test_toss_keeps_private_read_only_arrays():
 @pytest.mark.parametrize(("omega", "flight_time"), [((1e200, 0, 0), 0.7), ((2e5, 0, 0), 1e4)])
 def test_toss_refuses_phases_rounding_would_decide(omega, flight_time):
     with pytest.raises(
-        ValueError, match=r"spin component × flight time must be at most 1e\+09 rad"
+        ValueError, match=r"spin component × flight time must be at most 1,000,000,000 rad, got "
     ):
         Toss(omega=omega, flight_time=flight_time)
 

@@ -652,7 +652,7 @@ def test_tosses_with_their_own_contact_parameters_are_bounded_at_their_own_rate(
         monte_carlo.check_work(n, contact, own_e)
     assert monte_carlo.ESTIMATOR.work(own_e, 1000, contact) == pytest.approx(1000 / 75.0)
     assert qmc.rate(contact, own_e) < qmc.rate(contact, tosses) / 1.99
-    with pytest.raises(ValueError, match=re.escape("(about 1.2e+02 min at 75 tosses/s)")):
+    with pytest.raises(ValueError, match=re.escape("(about 120 min at 75 tosses/s)")):
         qmc.check_work(8 * 2**16, model=contact, dist=own_e)  # 524,288 points
     qmc.check_work(8 * 2**16, model=contact, dist=tosses)  # 58 min at 150 a second
     assert grid.check_work(own_e, 10, contact) == pytest.approx(10**3 / 75.0)
@@ -678,14 +678,16 @@ def test_the_library_bounds_a_map_of_contact_landings_before_allocating_it():
     assert model.rate == rate
     limit = rate * v.MAX_RUN_SECONDS  # an hour of landings at that rate
     said = (
-        f"a map of 5000×5000 tosses (table landing) is 2.5e+07 tosses (about "
-        f"{v.duration(2.5e7 / rate)} at {rate:.2g} tosses/s), more than the limit of "
-        f"{limit:.3g} tosses (about 60 min); use a coarser resolution"
+        f"a map of 5,000×5,000 tosses (table landing) is 25,000,000 tosses (about "
+        f"{v.duration(2.5e7 / rate)} at {v.estimate(rate)} tosses/s), more than the limit of "
+        f"{v.quantity(limit)} tosses (about 60 min); use a coarser resolution"
     )
     with pytest.raises(ValueError, match=f"^{re.escape(said)}$"):
         basin_map(Coin.preset("us-nickel"), resolution=(5000, 5000), outcome=model)
     side = math.isqrt(int(limit)) + 1  # the smallest square map beyond the limit
-    with pytest.raises(ValueError, match=re.escape(f"more than the limit of {limit:.3g}")):
+    with pytest.raises(
+        ValueError, match=re.escape(f"more than the limit of {v.quantity(limit)} tosses")
+    ):
         basin_map(Coin.preset("us-nickel"), resolution=(side, side), outcome=model)
     one = basin_map(Coin.preset("us-nickel"), (0.4, 0.5), (150, 300), resolution=(1, 2),
                     outcome=model)  # fmt: skip

@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from _kernels import coin_air, coin_contact
+from _work import counted_catch
 from coinflight import Coin, Flight, Toss
 from coinflight.core import ballistics, bounce, numerical
 from coinflight.core import drag as air_kernels
@@ -567,18 +568,7 @@ def test_any_damping_ends_quickly(k):
     assert face[0] == 1 and nz[0] > 1 - 1e-6  # stopped at once: still heads up
     budget = air_kernels.steps_needed(air, 3.43, 0.0, float(np.linalg.norm(omega[0])))
     assert budget < air_kernels.MAX_STEPS / 1000
-    steps = 0
-    step_size = air_kernels.step_size
-
-    def counted(*args: object) -> object:
-        nonlocal steps
-        steps += 1
-        return step_size(*args)
-
-    with pytest.MonkeyPatch.context() as patch:  # undone before any kernel compiles
-        patch.setattr(air_kernels, "step_size", counted)
-        patch.setattr(air_kernels, "MAX_STEPS", int(budget))
-        got = air_kernels.catch_one.py_func(omega[0], 1.0, 3.43, air)
+    steps, got = counted_catch(omega[0], 3.43, air, budget)
     assert 0 < steps <= budget
     assert got == (face[0], when[0], nz[0])  # the compiled toss (beyond the budget: t = -1)
     assert 0.5 < when[0] < 0.7  # drag shortens the 0.699 s of the vacuum flight

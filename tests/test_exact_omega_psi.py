@@ -223,7 +223,7 @@ def test_a_normal_plane_spin_of_small_sd_is_bounded_before_its_interpolant():
     # any allocation, not timed (a shared machine).
     refused_cheaply(
         lambda: estimate(small, "exact"),
-        r"interpolant .* pieces .* more than the limit of 4e\+03",
+        r"interpolant .* pieces .* more than the limit of 4,000 pieces",
         exact_work(),
         peak_mb=1.0,
     )

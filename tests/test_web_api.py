@@ -293,8 +293,8 @@ def test_basin_boundaries_are_kellers_hyperbolas(client):
 @pytest.mark.parametrize(
     ("query", "message"),
     [
-        ("resolution=2000", "a map of 2000×2000 cells is 4e+06 cells, more than the limit of "
-         "6.4e+05 cells; use a coarser resolution (e.g. 400 or 600x300)"),
+        ("resolution=2000", "a map of 2,000×2,000 cells is 4,000,000 cells, more than the limit of "
+         "640,000 cells; use a coarser resolution (e.g. 400 or 600x300)"),
         ("resolution=10x", "--resolution must be N or NTxNW with whole numbers, such as 500 or "
          "600x400; got '10x'"),
         ("omega_x=60", "--omega-x must be a range LO:HI such as 60:90 for a map; got '60' "
@@ -319,8 +319,8 @@ def test_basin_boundaries_beyond_their_limit_are_refused_before_the_map(client, 
     )
     # bands k = 0 .. int(1e5 × 0.9 / 2π) + 1 = 14,325, two curves each: 28,650 curves
     assert detail == (
-        "drawing the analytic boundaries of a map up to 1e+05 rad/s × 0.9 s is 2.86e+04 curves, "
-        "more than the limit of 2e+03 curves; draw the map without them (--no-boundaries, "
+        "drawing the analytic boundaries of a map up to 1e+05 rad/s × 0.9 s is 28,650 curves, "
+        "more than the limit of 2,000 curves; draw the map without them (--no-boundaries, "
         "boundaries=False) or map smaller spins or flight times"
     )
 

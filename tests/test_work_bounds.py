@@ -15,13 +15,16 @@ from __future__ import annotations
 import math
 import re
 import tracemalloc
+from decimal import Decimal
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from _cli import one_line_error
-from _work import MB, RUNS_TASKS, command_work, never_run, refused_cheaply
+from _work import MB, RUNS_TASKS, command_work, counted_catch, never_run, refused_cheaply
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight.model.distributions import Uniform
@@ -42,12 +45,168 @@ def test_work_bound_names_request_estimate_time_limit_and_way_on():
     with pytest.raises(ValueError) as info:
         v.work_bound("monte-carlo with n = 7200", 7200, 3600, "tosses", "use a smaller n", 1.0)
     assert str(info.value) == (
-        "monte-carlo with n = 7200 is 7.2e+03 tosses (about 2 h at 1 tosses/s), more than the "
-        "limit of 3.6e+03 tosses (about 60 min); use a smaller n"
+        "monte-carlo with n = 7200 is 7,200 tosses (about 2 h at 1 tosses/s), more than the "
+        "limit of 3,600 tosses (about 60 min); use a smaller n"
     )
-    # Integers beyond float range are refused like any other (no OverflowError).
-    with pytest.raises(ValueError, match=r"is inf points, more than the limit of 10 points; y"):
+    # Integers beyond float range are refused like any other (no OverflowError), as themselves.
+    with pytest.raises(
+        ValueError, match=r"is 1\.15e\+602 points, more than the limit of 10 points; y$"
+    ):
         v.work_bound("a request", 2**2000, 10, "points", "y")
+
+
+@pytest.mark.parametrize(
+    ("amount", "limit", "words"),
+    [
+        # one over the limit: whole numbers in full, never two alike (was "2e+03 ... 2e+03")
+        (2001, 2000, "is 2,001 curves, more than the limit of 2,000 curves"),
+        (2001.0, 2000.0, "is 2,001 curves, more than the limit of 2,000 curves"),
+        (np.int64(2001), 2000, "is 2,001 curves, more than the limit of 2,000 curves"),
+        (10**6 + 1, 10**6, "is 1,000,001 curves, more than the limit of 1,000,000 curves"),
+        (
+            10**12 + 1,
+            10**12,
+            "is 1,000,000,000,001 curves, more than the limit of 1,000,000,000,000 curves",
+        ),
+        (
+            1e12 + 1,
+            1e12,
+            "is 1,000,000,000,001 curves, more than the limit of 1,000,000,000,000 curves",
+        ),
+        # an estimate a fraction over: as many decimals as part the two, no more
+        (2000.3, 2000, "is 2,000.3 curves, more than the limit of 2,000 curves"),
+        (2000.04, 2000, "is 2,000.04 curves, more than the limit of 2,000 curves"),
+        (1800.0000001, 1800.0, "is 1,800.0000001 curves, more than the limit of 1,800 curves"),
+        (1667.3, 1500.0, "is 1,670 curves, more than the limit of 1,500 curves"),
+        # an estimate with 3 significant digits, not false precision (was "94,308,161")
+        (94308161.0, 10**6, "is 94,300,000 curves, more than the limit of 1,000,000 curves"),
+        (2001.4, 2000, "is 2,001 curves, more than the limit of 2,000 curves"),
+        # rounded, an estimate never reads at or below its limit
+        (6150000002.0, 6150000001, "is 6,150,000,002 curves, more than the limit of"),
+        # a float within rounding of its limit: no digit beyond either's shortest form (repr)
+        (1.1 + 2.2, 3.3, "is 3.3000000000000003 curves, more than the limit of 3.3 curves"),
+        (0.1 + 0.2, 0.3, "is 0.30000000000000004 curves, more than the limit of 0.3 curves"),
+        (1.52, 1.5, "is 1.52 curves, more than the limit of 1.5 curves"),
+        # from 10^15 in scientific notation, the digits needed and no more
+        (2**63, 9e10, "is 9.22e+18 curves, more than the limit of 90,000,000,000 curves"),
+        (
+            10**15 + 2,
+            10**15,
+            "is 1.000000000000002e+15 curves, more than the limit of 1e+15 curves",
+        ),
+        (1e300, 1e15, "is 1e+300 curves, more than the limit of 1e+15 curves"),
+        # the boundary of "in full below 10^15" (EXACT_BELOW)
+        (
+            10**15 - 1,
+            10**15 - 2,
+            "is 999,999,999,999,999 curves, more than the limit of 999,999,999,999,998 curves",
+        ),
+        (
+            10**14 + 1,
+            10**14,
+            "is 100,000,000,000,001 curves, more than the limit of 100,000,000,000,000 curves",
+        ),
+        (float("inf"), 5, "is inf curves, more than the limit of 5 curves"),
+    ],
+)
+def test_work_bound_prints_counts_in_full_and_never_alike(amount, limit, words):
+    with pytest.raises(ValueError, match=f"^w {re.escape(words)}"):
+        v.work_bound("w", amount, limit, "curves", "y")
+    v.work_bound("w", limit, limit, "curves", "y")  # the limit itself: accepted
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    limit=st.one_of(
+        st.integers(1, 10**20), st.floats(1e-3, 1e20, allow_nan=False, allow_infinity=False)
+    ),
+    above=st.one_of(st.integers(1, 10**6), st.floats(1e-12, 1e6)),
+    relative=st.booleans(),
+)
+def test_an_amount_over_its_limit_never_reads_as_the_limit(limit, above, relative):
+    amount = limit * (1 + above) if relative else limit + above
+    if not amount > limit:  # rounding kept it at the limit: nothing to refuse
+        return
+    with pytest.raises(ValueError) as info:
+        v.work_bound("w", amount, limit, "tosses", "y")
+    words = re.fullmatch(
+        r"w is (\S+) tosses, more than the limit of (\S+) tosses; y", str(info.value)
+    )
+    assert words, str(info.value)
+    shown, most = (Decimal(x.replace(",", "")) for x in words.groups())
+    assert shown > most  # distinct, and in the right order
+    for text, value in zip(words.groups(), (amount, limit), strict=True):
+        assert_reads_as(text, value)
+
+
+def assert_reads_as(text, value):
+    """``text`` shows ``value`` rounded to the digits it shows, never with more digits than
+    the float's shortest round-trip form (``repr``), and when it shows as many, reads back
+    as that float."""
+    shown = Decimal(text.replace(",", ""))
+    if isinstance(value, int) and abs(value) < v.EXACT_BELOW:
+        assert shown == value, text  # an exact count, in full
+        return
+    digits = len(shown.normalize().as_tuple().digits)
+    last = Decimal(1).scaleb(shown.normalize().as_tuple().exponent)  # its last digit's unit
+    assert abs(shown - Decimal(value)) <= last, (text, value)  # a rounding of the value
+    if isinstance(value, float):
+        most = len(Decimal(repr(value)).normalize().as_tuple().digits)
+        assert digits <= most, (text, repr(value))  # no digit beyond repr's: no binary noise
+        if digits == most:
+            assert float(shown) == value, (text, repr(value))  # reads back as the float
+
+
+@settings(max_examples=500, deadline=None)
+@given(
+    x=st.floats(allow_nan=False, allow_infinity=False).filter(lambda x: x != 0),
+    decimals=st.integers(0, 17),
+)
+def test_a_shown_float_never_has_more_digits_than_its_shortest_form(x, decimals):
+    assert_reads_as(v.quantity(x, decimals), x)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    limit=st.floats(1e-3, 1e20, allow_nan=False, allow_infinity=False),
+    ulps=st.integers(1, 4),
+)
+def test_a_float_within_rounding_of_its_limit_reads_back_as_itself(limit, ulps):
+    amount = limit
+    for _ in range(ulps):
+        amount = math.nextafter(amount, math.inf)
+    shown, most = v.over_limit(amount, limit)
+    assert Decimal(shown.replace(",", "")) > Decimal(most.replace(",", ""))
+    assert_reads_as(shown, amount)
+    assert_reads_as(most, limit)
+
+
+def test_an_amount_that_takes_as_long_as_its_limit_is_not_timed_twice():
+    # "270,001 tosses (about 60 min …), more than … 270,000 tosses (about 60 min)": the limit's
+    # duration alone, with the rate
+    with pytest.raises(ValueError) as info:
+        v.work_bound("w", 270_001, 270_000, "tosses", "y", 75.0)
+    assert str(info.value) == (
+        "w is 270,001 tosses, more than the limit of 270,000 tosses (about 60 min at "
+        "75 tosses/s); y"
+    )
+    with pytest.raises(ValueError) as info:  # durations that differ: both
+        v.work_bound("w", 540_000, 270_000, "tosses", "y", 75.0)
+    assert "is 540,000 tosses (about 2 h at 75 tosses/s), more than the limit of 270,000 " in (
+        str(info.value)
+    )
+
+
+def test_the_phase_refusal_quotes_spin_and_time_as_estimates():
+    # was "(2e+05 rad/s for 1e+04 s)" beside "2,000,000,000 rad"
+    with pytest.raises(ValueError) as info:
+        v.phase_budget(2e5, 1e4)
+    assert str(info.value).startswith(
+        "spin × flight time must be at most 1,000,000,000 rad, got 2,000,000,000 rad "
+        "(200,000 rad/s for 10,000 s): "
+    )
+    with pytest.raises(ValueError, match=r"got 1,230,000,000 rad \(123,000 rad/s for 10,000 s\)"):
+        v.phase_budget(123_456.7, 10_000.0)
 
 
 @pytest.mark.parametrize(
@@ -57,7 +216,8 @@ def test_work_bound_names_request_estimate_time_limit_and_way_on():
         (7200, "2 h"),
         (720, "12 min"),
         (86400 * 45, "45 days"),
-        (3.2e13, "1e+06 years"),
+        (7000, "120 min"),  # two digits, as a whole number (was "1.2e+02 min")
+        (3.2e13, "1,000,000 years"),
     ],
 )
 def test_duration_reads_as_a_person_would_say_it(seconds, text):
@@ -71,7 +231,7 @@ def test_duration_reads_as_a_person_would_say_it(seconds, text):
 def test_grid_refuses_before_allocating(n):
     message = refused_cheaply(lambda: estimate(FIG_2A, "grid", n=n), "bytes of nodes", RUNS_TASKS)
     assert f"a grid of n = {n} cells per parameter" in message
-    assert "more than the limit of 1.07e+09 bytes of nodes" in message
+    assert "more than the limit of 1,073,741,824 bytes of nodes" in message
     assert "monte-carlo or qmc" in message
 
 
@@ -98,8 +258,8 @@ def test_grid_brute_force_with_table_landings_is_bounded_by_their_rate():
     )
     cells = float(10**5) ** 2  # n per axis, two axes
     rate = BOUNCING_TOSSES_PER_SECOND  # the time quoted at the rocking landings' rate
-    took = f"about {v.duration(cells / rate)} at {rate:.2g} configurations/s"
-    assert f"{cells:.3g} configurations ({took})" in message
+    took = f"about {v.duration(cells / rate)} at {v.estimate(rate)} configurations/s"
+    assert f"{v.quantity(cells)} configurations ({took})" in message
 
 
 # --- Monte Carlo and QMC (reported: 2^63 ran until killed; SciPy's 'increasing bits' leaked) ----
@@ -116,8 +276,8 @@ def test_monte_carlo_counts_are_bounded_by_time(n):
     )
     assert message.startswith(f"monte-carlo with n = {n} is ")
     rate = HAND_CATCH.rate
-    limit = f"{rate * v.MAX_RUN_SECONDS:.3g} tosses (about {v.duration(v.MAX_RUN_SECONDS)})"
-    assert f"years at {rate:.2g} tosses/s), more than the limit of {limit}" in message
+    limit = f"{v.quantity(rate * v.MAX_RUN_SECONDS)} tosses (about {v.duration(v.MAX_RUN_SECONDS)})"
+    assert f"years at {v.estimate(rate)} tosses/s), more than the limit of {limit}" in message
     assert v.duration(v.MAX_RUN_SECONDS) == "60 min"  # the limit the users are told: an hour
 
 
@@ -132,8 +292,9 @@ def test_monte_carlo_limit_follows_the_outcome_model():
         RUNS_TASKS,
     )
     rate = AIR_LANDINGS_PER_SECOND  # the limit and time follow the landings through air
-    took = f"(about {v.duration(1e8 / rate)} at {rate:.2g} tosses/s)"
-    assert f"{took}, more than the limit of {rate * v.MAX_RUN_SECONDS:.3g} tosses" in message
+    took = f"(about {v.duration(1e8 / rate)} at {v.estimate(rate)} tosses/s)"
+    limit = v.quantity(rate * v.MAX_RUN_SECONDS)
+    assert f"is 100,000,000 tosses {took}, more than the limit of {limit} tosses" in message
 
 
 @pytest.mark.parametrize("n", [16 << 31, 2**63])
@@ -141,7 +302,7 @@ def test_qmc_points_fit_sobols_bits(n):
     message = refused_cheaply(
         lambda: estimate(FIG_2A, "qmc", n=n, seed=1), "points per", RUNS_TASKS
     )
-    assert "more than the limit of 1.07e+09 points per scrambling" in message
+    assert "more than the limit of 1,073,741,824 points per scrambling" in message
     assert "use n ≤ 16 × 2^30 = 17179869184" in message
     assert "bits`" not in message  # SciPy's own words never reach the user
 
@@ -174,7 +335,10 @@ def test_qmc_replicates_are_bounded_before_seeding():
         ({"event_sizes": [100, 2**63]}, f"monte-carlo with n = {2**63}"),
         ({"qmc_sizes": [64, 2**63]}, "points per scrambling"),
         # Each size allowed, the series not: 2 × 8e10 tosses is 1.8 h.
-        ({"event_sizes": [8 * 10**10, 8 * 10**10]}, r"series \(monte-carlo\) is 6\.4e\+03 s"),
+        (
+            {"event_sizes": [8 * 10**10, 8 * 10**10]},
+            r"series \(monte-carlo\) is 6,400 s of work, more than the limit of 3,600 s",
+        ),
     ],
 )
 def test_convergence_checks_every_size_before_computing(sizes, match):
@@ -230,7 +394,7 @@ def test_basin_boundaries_are_bounded():
 
     basin = basin_map(QUARTER, spin=(-1e9, 1e9), flight_time=(0.6, 0.9), resolution=(4, 4))
     message = refused_cheaply(basin.boundaries, "curves", [])  # the work: the curves' arrays
-    assert "more than the limit of 2e+03 curves" in message
+    assert "more than the limit of 2,000 curves" in message
     assert "--no-boundaries" in message
 
 
@@ -314,7 +478,7 @@ def test_basin_boundaries_at_their_limit(band, allowed):
         basin.basin_map(QUARTER, **box, resolution=(2, 2), boundaries=True)
         assert 0 < len(drawn.boundaries()) <= basin.MAX_BOUNDARIES
     else:
-        words = f"is {curves:.3g} curves, more than the limit of {basin.MAX_BOUNDARIES:.3g} curves"
+        words = "is 2,002 curves, more than the limit of 2,000 curves"  # "2e+03 ... 2e+03" once
         for refused in (
             lambda: basin.check_boundaries(QUARTER, **box),
             lambda: basin.basin_map(QUARTER, **box, resolution=(2, 2), boundaries=True),
@@ -337,7 +501,7 @@ def test_same_side_simulation_is_bounded(n):
         "tosses",
         [(streams, "unit_cube")],  # the tosses' draws
     )
-    assert "more than the limit of 1.44e+10 tosses (about 60 min)" in message
+    assert "more than the limit of 14,400,000,000 tosses (about 60 min)" in message
 
 
 def test_edge_simulation_is_bounded():
@@ -353,7 +517,7 @@ def test_edge_simulation_is_bounded():
     message = refused_cheaply(
         lambda: simulate_edge(np.full(100, 0.3), 10**7, 1), "tosses", RUNS_TASKS
     )
-    assert "100 ratios × 10000000 tosses is 1e+09 tosses" in message
+    assert "100 ratios × 10,000,000 tosses is 1,000,000,000 tosses" in message
 
 
 def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
@@ -370,7 +534,7 @@ def test_max_bounces_is_bounded_by_the_kernels_impact_limit():
 # --- the drag integrator (reported: hangs with spin damping; tiny coins) ----------------------
 
 
-def test_any_spin_damping_on_a_tiny_coin_ends_quickly(monkeypatch):
+def test_any_spin_damping_on_a_tiny_coin_ends_quickly():
     # Reported: spin damping 1 ran > 30 s. The damping's decays are exact and its steps bounded
     # (core.drag), so the strongest accepted K on a 1 mm coin (K/I1 = 4e7 1/s) is not refused,
     # and its toss takes no more steps than check_air's estimate without damping (steps_needed:
@@ -390,17 +554,7 @@ def test_any_spin_damping_on_a_tiny_coin_ends_quickly(monkeypatch):
     air = drag_model(tiny, damped, 9.81)
     budget = drag.steps_needed(air, 3.43, 0.0, 80.0)
     assert budget < drag.MAX_STEPS / 1000  # about 130 steps
-    steps = 0
-    step_size = drag.step_size
-
-    def counted(*args: object) -> object:
-        nonlocal steps
-        steps += 1
-        return step_size(*args)
-
-    monkeypatch.setattr(drag, "step_size", counted)
-    monkeypatch.setattr(drag, "MAX_STEPS", int(budget))
-    face_py, t_py, _ = drag.catch_one.py_func(omega[0], 1.0, 3.43, air)
+    steps, (face_py, t_py, _) = counted_catch(omega[0], 3.43, air, budget)
     assert 0 < steps <= budget
     assert (face_py, t_py) == (int(face[0]), float(t[0]))  # the same toss (beyond budget: t = -1)
 
@@ -466,7 +620,7 @@ FIG = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
                 "--out",
                 "b.png",
             ],
-            "5 angles × 10000000000 tosses is 5e+10 tosses (about 3.5 h",
+            "5 angles × 10,000,000,000 tosses is 50,000,000,000 tosses (about 3.5 h",
         ),
         (["plot", "toss", "--omega", "0", "0", "1e9", "-T", "0.7", "--out", "t.png"], "points"),
         (["plot", "basin", "--omega-x", "-1e9:1e9", "--out", "b.png"], "--no-boundaries"),
@@ -509,7 +663,7 @@ FIG = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
                 "--mass",
                 "1e-4",
             ],
-            "integration steps a toss, more than the 1,000,000 allowed",
+            "would need about 94,300,000 integration steps a toss, more than the 1,000,000 allowed",
         ),
     ],
 )

@@ -15,6 +15,7 @@ import numbers
 import warnings
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from decimal import Decimal
 from typing import TypeVar
 
 import numpy as np
@@ -229,9 +230,11 @@ def phase_budget(spin: float, flight_time: float, what: str = "spin × flight ti
     with np.errstate(over="ignore"):
         phase = float(np.abs(np.float64(spin)) * np.abs(np.float64(flight_time)))
     if not phase <= MAX_PHASE:
+        got, most = over_limit(phase, MAX_PHASE)
         raise ValueError(
-            f"{what} must be at most {MAX_PHASE:.0e} rad, got {phase:.3g} rad "
-            f"({abs(float(spin)):.3g} rad/s for {abs(float(flight_time)):.3g} s): beyond that, "
+            f"{what} must be at most {most} rad, got {got} rad "
+            f"({quantity(significant(abs(float(spin))))} rad/s for "
+            f"{quantity(significant(abs(float(flight_time))))} s): beyond that, "
             "rounding, not physics, would decide the face"
         )
 
@@ -261,8 +264,99 @@ def _unit(unit: str) -> str:
     return f" (in {unit})" if unit else ""
 
 
+EXACT_BELOW = 10**15
+"""Counts and amounts below this print in full (:func:`quantity`); float64 holds every integer
+up to 2**53 ≈ 9.0e15 exactly."""
+
+
+def quantity(x: float | int, decimals: int = 0) -> str:
+    """A count or an amount for a message, the one format of every refusal of over-large work.
+
+    Whole numbers below :data:`EXACT_BELOW` in full with thousands separators (``2,001``,
+    ``1,000,000,000,000``); a fraction with 3 significant digits or ``decimals`` decimals,
+    whichever shows more (``1,667`` for 1667.3, ``1.5``, ``0.125``; ``2,000.3`` with 1); from
+    :data:`EXACT_BELOW` up in scientific notation with 3 + ``decimals`` significant digits
+    (``9.22e+18``), a Python integer beyond float range too (``1.15e+602``). Trailing zeros
+    are dropped, and a float never shows more digits than its shortest round-trip form
+    (``repr``: 0.3 with 14 decimals reads ``0.3``, not ``0.29999999999999999``).
+    :func:`over_limit` picks ``decimals``.
+    """
+    if isinstance(x, int | np.integer) and not isinstance(x, bool | np.bool_):
+        whole = int(x)
+        if abs(whole) < EXACT_BELOW:
+            return f"{whole:,}"
+        return _trimmed(f"{Decimal(whole):.{2 + decimals}e}")
+    x = float(x)
+    if not math.isfinite(x):
+        return str(x)
+    if abs(x) >= EXACT_BELOW:
+        text = _trimmed(f"{x:.{2 + decimals}e}")
+    elif x.is_integer():
+        return f"{int(x):,}"
+    elif abs(x) >= 1.0:
+        places = max(decimals, 2 - math.floor(math.log10(abs(x))))
+        text = _trimmed(f"{x:,.{places}f}")
+    else:
+        text = _trimmed(f"{x:.{3 + decimals}g}")
+    shortest = repr(x) if not 1.0 <= abs(x) < EXACT_BELOW else f"{Decimal(repr(x)):,f}"
+    return shortest if _digits(text) > _digits(shortest) else text
+
+
+def _digits(text: str) -> int:
+    """How many significant digits the number ``text`` shows."""
+    return len(_read(text).normalize().as_tuple().digits)
+
+
+def significant(x: float, digits: int = 3) -> float:
+    """``x`` rounded to ``digits`` significant digits: how an estimate is quoted (an estimated
+    number of steps, seconds of work, a spin), ``94,300,000`` rather than ``94,308,161``."""
+    return float(f"{x:.{digits}g}") if math.isfinite(x) else x
+
+
+def _trimmed(text: str) -> str:
+    """``text`` without the trailing zeros of its decimals ('2,000.30' → '2,000.3',
+    '1.000e+15' → '1e+15')."""
+    mantissa, e, exponent = text.partition("e")
+    if "." in mantissa:
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return mantissa + e + exponent
+
+
+def _read(text: str) -> Decimal:
+    """The number ``text`` shows, exactly (an integer beyond 2**53 too)."""
+    return Decimal(text.replace(",", ""))
+
+
+def over_limit(amount: float | int, limit: float | int) -> tuple[str, str]:
+    """``amount`` and ``limit`` for a refusal (:func:`quantity`), with as few digits as make
+    them read as different numbers in their order: an amount above its limit never prints as
+    the limit or below it.
+
+    An integer amount is an exact count and prints in full (``2,001`` against ``2,000``); a
+    float amount is an estimate and prints with 3 significant digits (:func:`significant`,
+    ``94,300,000`` steps), widened only as far as it takes to tell it from the limit (2000.3
+    against 2000 reads ``2,000.3``, not ``2,000``), never beyond its shortest round-trip form
+    (``repr``)."""
+    counted = isinstance(amount, int | np.integer) and not isinstance(amount, bool | np.bool_)
+    for extra in range(18):
+        rounded = amount if counted else significant(float(amount), 3 + extra)
+        shown = quantity(rounded, extra), quantity(limit, extra)
+        apart = _read(shown[0]) != _read(shown[1])
+        if amount == limit or (apart and (_read(shown[0]) > _read(shown[1])) == (amount > limit)):
+            return shown  # alike only when equal, and in the same order as the two values
+    return repr(amount), repr(limit)  # pragma: no cover - 17 digits part any two floats
+
+
+def estimate(x: float) -> str:
+    """An estimate (a rate, a duration) for a message: two significant digits, from 10 up
+    printed as a whole number (:func:`quantity`: ``120``, ``25,000,000``), below 10 as is
+    (``1.5``, ``0.25``)."""
+    rounded = float(f"{x:.2g}")
+    return quantity(rounded) if abs(rounded) >= 10.0 else f"{x:.2g}"
+
+
 def duration(seconds: float) -> str:
-    """A time for a message: '40 s', '12 min', '3.5 h', '45 days', '2.1e+03 years'."""
+    """A time for a message: '40 s', '12 min', '3.5 h', '45 days', '2,100 years'."""
     for size, unit, below in (
         (1, "s", 120),
         (60, "min", 120),
@@ -270,8 +364,8 @@ def duration(seconds: float) -> str:
         (86400, "days", 730),
     ):
         if seconds / size < below:
-            return f"{seconds / size:.2g} {unit}"
-    return f"{seconds / (365.25 * 86400):.2g} years"
+            return f"{estimate(seconds / size)} {unit}"
+    return f"{estimate(seconds / (365.25 * 86400))} years"
 
 
 def work_bound(
@@ -287,26 +381,32 @@ def work_bound(
     ValueError unless ``amount`` ≤ ``limit`` (both in ``unit``: tosses, configurations,
     frames, bytes). The message names the request (``what``), the estimate (with the time at
     ``rate`` units a second on the reference 2-core machine, when given), the limit and the way
-    on::
+    on, the amounts as :func:`over_limit` prints them (in full below 10^15, never alike)::
 
-        monte-carlo with n = 9223372036854775808 is 9.22e+18 tosses (about 1.2e+04 years at
-        2.5e+07 tosses/s), more than the limit of 9e+10 tosses (about 60 min); use a smaller n
-        (the standard error is at most 0.5/√n)
+        monte-carlo with n = 9223372036854775808 is 9.22e+18 tosses (about 12,000 years at
+        25,000,000 tosses/s), more than the limit of 90,000,000,000 tosses (about 60 min); use
+        a smaller n (the standard error is at most 0.5/√n)
 
-    An integer beyond float range counts as infinite work (no OverflowError).
+    An integer beyond float range counts as infinite work (no OverflowError) and prints as
+    itself (``1.15e+602``).
     """
-    try:
-        amount = float(amount)
-    except OverflowError:  # an int beyond float range: refused like any other
-        amount = math.inf
-    if amount <= limit:
+    if amount <= limit:  # Python compares an int with a float exactly, at any size
         return
+    try:
+        work = float(amount)
+    except OverflowError:  # an int beyond float range: refused like any other
+        work = math.inf
     timing = limit_time = ""
     if rate:
-        timing = f" (about {duration(amount / rate)} at {rate:.2g} {unit}/s)"
-        limit_time = f" (about {duration(limit / rate)})"
+        took, most_took = duration(work / rate), duration(limit / rate)
+        at = f" at {estimate(rate)} {unit}/s"
+        if took == most_took:  # two alike durations: the limit's alone
+            limit_time = f" (about {most_took}{at})"
+        else:
+            timing, limit_time = f" (about {took}{at})", f" (about {most_took})"
+    shown, most = over_limit(amount, limit)
     raise ValueError(
-        f"{what} is {amount:.3g} {unit}{timing}, more than the limit of {limit:.3g} {unit}"
+        f"{what} is {shown} {unit}{timing}, more than the limit of {most} {unit}"
         f"{limit_time}; {way_on}"
     )
 

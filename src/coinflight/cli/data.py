@@ -8,6 +8,7 @@ from typing import Annotated
 
 import typer
 
+from coinflight import _validation as v
 from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, JsonFlag, number, print_json
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import output_file
@@ -91,9 +92,10 @@ def data(
         figure_paths(plot, "--plot")
     table, source, described = counts_source(dataset, counts)
     if plot is not None and len(table.people) > PLOT_MAX_PEOPLE:
+        shown, most = v.over_limit(len(table.people), PLOT_MAX_PEOPLE)
         raise ValueError(
-            f"--plot draws one row per person: at most {PLOT_MAX_PEOPLE:,} people, got "
-            f"{len(table.people):,}; leave out --plot (--json lists every person)"
+            f"--plot draws one row per person: at most {most} people, got "
+            f"{shown}; leave out --plot (--json lists every person)"
         )
     summary = summarize(table, interval, math.radians(psi_sd))
     written = []

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from coinflight import _validation as v
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.landing_groups import (
@@ -168,9 +169,11 @@ def _normals(means: str, sds: str, name: str) -> list[Distribution]:
     sd_list = parse_numbers_list(sds, f"{flag}-sd")
     rows = len(mean_list) * len(sd_list)
     if rows > MAX_ROWS:  # before building them
+        shown, most = v.over_limit(rows, MAX_ROWS)
         raise ValueError(
-            f"{flag}-mean × {flag}-sd is {len(mean_list)} × {len(sd_list)} = {rows:,} "
-            f"distributions, more than the {MAX_ROWS:,} rows a sweep accepts; use fewer"
+            f"{flag}-mean × {flag}-sd is {v.quantity(len(mean_list))} × "
+            f"{v.quantity(len(sd_list))} = {shown} distributions, more than the {most} rows a "
+            "sweep accepts; use fewer"
         )
     out: list[Distribution] = []
     for mean in mean_list:

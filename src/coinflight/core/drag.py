@@ -652,6 +652,7 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         db = qq
     in_a = na * da > 0.0 and abs(na) * c < abs(da) * s
     in_b = nb * db > 0.0 and abs(nb) * c < abs(db) * s
+    ta = tb = 0.0
     if in_a or in_b:
         # The roots found in order, each piece's sign that of (1 + t²) g at its middle in t.
         if in_a and in_b:
@@ -665,31 +666,23 @@ def kink_integrals(g0, gm, g2, q0, qm, q2, c, s, theta):
         first = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
         m = 0.5 * (tb + t_end)
         last = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
-        tot = (
-            last * f1[0] - first * f0[0],
-            last * f1[1] - first * f0[1],
-            last * f1[2] - first * f0[2],
-            last * f1[3] - first * f0[3],
-            last * f1[4] - first * f0[4],
-            last * f1[5] - first * f0[5],
-        )
-        if in_a and in_b:
-            m = 0.5 * (ta + tb)
-            middle = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
-            tot = _add_root(tot, ta, it, first - middle)
-            tot = _add_root(tot, tb, it, middle - last)
-        else:
-            tot = _add_root(tot, ta, it, first - last)
-    else:
-        sg = one_sign(g0, gm, g2)
-        tot = (
-            sg * f1[0] - sg * f0[0],
-            sg * f1[1] - sg * f0[1],
-            sg * f1[2] - sg * f0[2],
-            sg * f1[3] - sg * f0[3],
-            sg * f1[4] - sg * f0[4],
-            sg * f1[5] - sg * f0[5],
-        )
+    else:  # no root found: one piece, one sign
+        first = last = one_sign(g0, gm, g2)
+    tot = (
+        last * f1[0] - first * f0[0],
+        last * f1[1] - first * f0[1],
+        last * f1[2] - first * f0[2],
+        last * f1[3] - first * f0[3],
+        last * f1[4] - first * f0[4],
+        last * f1[5] - first * f0[5],
+    )
+    if in_a and in_b:
+        m = 0.5 * (ta + tb)
+        middle = 1.0 if (qa * m + 2.0 * qb) * m + qc >= 0.0 else -1.0
+        tot = _add_root(tot, ta, it, first - middle)
+        tot = _add_root(tot, tb, it, middle - last)
+    elif in_a or in_b:
+        tot = _add_root(tot, ta, it, first - last)
     # Each component f (nodes f0, fm, f2) has q = den ((f2 − f0) − 2c (fm − f0)),
     # r = rs ((fm − f0) − (c − 1) q), p = f0 − q, and its integral p T0 + q T1 + r T2 is linear
     # in the node values: weights on the nodes, once for the three components.

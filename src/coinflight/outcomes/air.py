@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.model.surface import Drag
 from coinflight.outcomes.base import (
@@ -90,10 +91,11 @@ def check_air(
         drag_model(coin, drag, g), float(np.max(launch_speed, initial=0.0)), drop_height, spin
     )
     if steps > drag_kernels.MAX_STEPS:
+        needed, most = v.over_limit(steps, drag_kernels.MAX_STEPS)
         raise ValueError(
             f"air drag C_d = {drag.coefficient:g} in air of density {drag.air_density:g} kg/m³ on "
             f"this coin (radius {coin.radius:g} m, mass {coin.mass:g} kg) would need about "
-            f"{steps:.3g} integration steps a toss, more than the {drag_kernels.MAX_STEPS:,} "
+            f"{needed} integration steps a toss, more than the {most} "
             "allowed; use a smaller C_d, spin, flight time or drop height, or a heavier coin"
         )
 

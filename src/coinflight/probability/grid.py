@@ -149,8 +149,8 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
         combos = n ** len(spin_names)
         bands = _bands_per_node(dist, spin_names, n)
         v.work_bound(
-            f"a grid of {n}^{k} = {total:.3g} configurations ({combos:.3g} spin nodes × "
-            f"~{bands:.3g} bands each)",
+            f"a grid of {n}^{k} = {v.quantity(total)} configurations ({v.quantity(combos)} spin "
+            f"nodes × ~{v.quantity(bands)} bands each)",
             combos * bands,
             MAX_WORK,
             "band counts",
@@ -160,8 +160,8 @@ def check_work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH)
         return combos * bands / BAND_COUNTS_PER_SECOND
     else:
         v.work_bound(
-            f"a grid of {n}^{k} = {total:.3g} configurations, each evaluated one by one (fast band "
-            "counting needs a ranged flight time and the hand catch)",
+            f"a grid of {n}^{k} = {v.quantity(total)} configurations, each evaluated one by one "
+            "(fast band counting needs a ranged flight time and the hand catch)",
             total,
             min(MAX_WORK, model.rate_for(dist) * v.MAX_RUN_SECONDS),
             "configurations",

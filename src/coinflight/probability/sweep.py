@@ -225,7 +225,8 @@ def product_cases(
     rows = math.prod(len(values) for values in lists.values())
     if rows > MAX_ROWS:
         sizes = " × ".join(f"{len(x)} {name}" for name, x in lists.items() if len(x) > 1)
-        raise ValueError(f"a sweep of {sizes} is {rows:,} rows, more than {MAX_ROWS:,}; use fewer")
+        shown, most = v.over_limit(rows, MAX_ROWS)
+        raise ValueError(f"a sweep of {sizes} is {shown} rows, more than {most}; use fewer")
     cases = []
     for combo in itertools.product(*lists.values()):
         row = dict(zip(lists, combo, strict=True))
@@ -441,7 +442,8 @@ def sweep(
 
     items = list(cases)
     if len(items) > MAX_ROWS:
-        raise ValueError(f"a sweep of {len(items):,} rows is more than {MAX_ROWS:,}; use fewer")
+        shown, most = v.over_limit(len(items), MAX_ROWS)
+        raise ValueError(f"a sweep of {shown} rows is more than {most}; use fewer")
     for i, case in enumerate(items):
         if not isinstance(case, Case):
             raise TypeError(f"cases[{i}] must be a Case, got {case!r}")

@@ -102,7 +102,7 @@ def basin_query(
     n_t, n_w = parse_resolution(resolution)
     if outcome:  # a map of table landings: each cell a landing, at the model's rate
         v.work_bound(
-            f"a map of {n_t}×{n_w} table landings",
+            f"a map of {v.quantity(n_t)}×{v.quantity(n_w)} table landings",
             n_t * n_w / outcome["outcome"].rate,
             MAP_SECONDS,
             "s of work",

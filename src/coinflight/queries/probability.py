@@ -194,16 +194,24 @@ def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> d
     return payload
 
 
+def _share(result: Any, status: str) -> str:
+    """``"12 of 1,000 tosses (1.2 %)"``: the tosses ``result.details`` counts under ``status``
+    (its count and ``status + "_fraction"``), of all; empty when there are none."""
+    count = int(result.details.get(status, 0))
+    if not count:
+        return ""
+    n = sum(result.counts) if result.counts is not None else result.samples
+    return f"{count:,} of {n:,} tosses ({100 * result.details[status + '_fraction']:.3g} %)"
+
+
 def result_warnings(result: Any) -> list[str]:
     """What the user must know about the result: tosses that never settled (table landing)."""
-    unsettled = int(result.details.get("unsettled", 0))
+    unsettled = _share(result, "unsettled")
     if not unsettled:
         return []
-    n = sum(result.counts) if result.counts is not None else result.samples
     return [
-        f"{unsettled:,} of {n:,} tosses ({100 * result.details['unsettled_fraction']:.3g} %) "
-        "never settled (status 'unsettled'); they are counted by the face they showed when the "
-        "simulation stopped"
+        f"{unsettled} never settled (status 'unsettled'); they are counted by the face they "
+        "showed when the simulation stopped"
     ]
 
 
@@ -211,15 +219,13 @@ def result_notes(result: Any) -> list[str]:
     """What the text output says beside the result: the tosses the contact ending ended on
     edge by its upright decision (``details["decided_upright"]``, status "decided upright"),
     when there are any; the JSON carries the count and fraction in ``details``."""
-    decided = int(result.details.get("decided_upright", 0))
+    decided = _share(result, "decided_upright")
     if not decided:
         return []
-    n = sum(result.counts) if result.counts is not None else result.samples
     return [
-        f"decided upright: {decided:,} of {n:,} tosses "
-        f"({100 * result.details['decided_upright_fraction']:.3g} %) were ended on edge by the "
-        "contact ending's upright decision while still rolling (status 'decided upright', a "
-        "measured predictor of ending on edge, not a proof); they are counted in P(edge)"
+        f"decided upright: {decided} were ended on edge by the contact ending's upright "
+        "decision while still rolling (status 'decided upright', a measured predictor of "
+        "ending on edge, not a proof); they are counted in P(edge)"
     ]
 
 

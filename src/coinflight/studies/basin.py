@@ -296,7 +296,7 @@ def basin_map(
             raise ValueError("give either a fixed psi or fixed omega_y/omega_z, not both")
     if isinstance(outcome, OutcomeModel):  # each cell a toss, at the model's measured rate
         v.work_bound(
-            f"a map of {n_t}×{n_w} tosses ({outcome.name})",
+            f"a map of {v.quantity(n_t)}×{v.quantity(n_w)} tosses ({outcome.name})",
             n_t * n_w,
             outcome.rate * v.MAX_RUN_SECONDS,
             "tosses",

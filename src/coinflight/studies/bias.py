@@ -455,7 +455,7 @@ def simulate_same_side_at(
     psi = check_psi(angles, degrees=bool(options.get("degrees", False)))
     count = check_tosses(n)
     v.work_bound(
-        f"{psi.size} angles × {count} tosses",
+        f"{v.quantity(psi.size)} angles × {v.quantity(count)} tosses",
         psi.size * count,
         TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
         "tosses",

@@ -277,7 +277,7 @@ def _data_lines(text: str, source: str) -> tuple[list[str], list[list[str]], lis
             )
         if len(names) == MAX_PEOPLE:
             raise ValueError(
-                f"{where}: a counts table may hold at most {MAX_PEOPLE:,} people "
+                f"{where}: a counts table may hold at most {v.quantity(MAX_PEOPLE)} people "
                 f"(data lines), got more"
             )
         names.append(fields[0])

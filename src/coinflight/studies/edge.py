@@ -208,7 +208,7 @@ def simulate_edge(
     )
     rate = TableLanding(surface).rate
     v.work_bound(
-        f"{len(x)} ratios × {n} tosses",
+        f"{v.quantity(len(x))} ratios × {v.quantity(n)} tosses",
         len(x) * n,
         rate * v.MAX_RUN_SECONDS,
         "tosses",

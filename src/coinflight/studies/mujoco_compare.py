@@ -74,7 +74,9 @@ where coinflight's stay on it (the benchmarks' notes), and why is below.
 Why the engines part (measured; the benchmarks' notes). Not the normal law: neither its shape
 (coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
 hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
-decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear), nor MuJoCo's
+decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
+the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44, 2026-11-24,
+``benchmarks/bench_edge_sensitivity.py 600``), nor MuJoCo's
 impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
 0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
 convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
@@ -644,7 +646,7 @@ def bound(
     ``solver``'s cost), before anything is allocated or computed."""
     seconds = sum(seconds_estimate(n, limit, integrator, solver=solver) for n in runs)
     v.work_bound(
-        f"{sum(runs)} MuJoCo tosses carried up to {limit:g} s past their first contact",
+        f"{v.quantity(sum(runs))} MuJoCo tosses carried up to {limit:g} s past their first contact",
         seconds,
         v.MAX_RUN_SECONDS,
         "s",

@@ -100,7 +100,7 @@ def basin(
     n_t, n_w = parse_resolution(options.get("resolution", "500"))
     cells = n_t * n_w
     v.work_bound(
-        f"a map of {n_t}×{n_w} cells",
+        f"a map of {v.quantity(n_t)}×{v.quantity(n_w)} cells",
         cells,
         MAX_MAP_CELLS,
         "cells",
