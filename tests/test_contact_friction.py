@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -268,3 +269,94 @@ def test_sliding_damper_floor_holds_where_friction_jams_the_contact():
         floored = np.isclose(got, zeta / math.sqrt(0.1), rtol=1e-12)
         assert floored.any() and not floored.all()
         np.testing.assert_allclose(got, expected, rtol=1e-12)
+
+
+def _reference_derivative(y, c):
+    """dy/dt of the contact phase assembled apart from cp._derivative (its module notes'
+    forces): each rim's normal force, centre of pressure and pivot radius from the public
+    cp.rim_contact with the damper sized by _expected_damping (the collision matrix of
+    impact.collision_matrix at the arc's centroid, Stronge 2000 eq 5.7); regularised Coulomb
+    friction −μ F_n u_t / sqrt(u_t² + v_ε²) at q; the pivoting torque −(μ r_t + ℓ_p) F_n
+    ω_z / sqrt(ω_z² + (v_ε/r)²); the rolling torque −ℓ_r F_n ω_h / sqrt(ω_h² + (v_ε/r)²);
+    gravity; ṅ = ω × n."""
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    v, n, lm = np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
+    w = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
+    eps, spin_eps = cp.SLIP_SPEED, cp.SLIP_SPEED / c.radius
+    force = np.array([0.0, 0.0, -c.mass * c.g])
+    torque = np.zeros(3)
+    for sigma in (-1.0, 1.0):
+        damping = _expected_damping(sigma, y, c, zeta)
+        fn, q, rt, _ = cp.rim_contact(
+            sigma, y[0], tuple(v), tuple(n), tuple(w), c.radius, c.half_thickness, c.mass,
+            c.i1, c.i3, stiff, damping, c.corner_radius,
+        )  # fmt: skip
+        if fn <= 0.0:
+            continue
+        q = np.asarray(q)
+        u = v + np.cross(w, q)
+        ft = -c.friction * fn * u[:2] / math.hypot(u[0], u[1], eps)
+        f = np.array([ft[0], ft[1], fn])
+        force += f
+        torque += np.cross(q, f)
+        torque[2] -= (
+            (c.friction * rt + c.pivoting_resistance) * fn * w[2] / math.hypot(w[2], spin_eps)
+        )
+        torque[:2] -= c.rolling_resistance * fn * w[:2] / math.hypot(w[0], w[1], spin_eps)
+    return np.concatenate([[v[2]], force / c.mass, np.cross(w, n), torque])
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.3, 1.0])
+@pytest.mark.parametrize("corner", [0.0, 2e-4])
+def test_derivative_equals_a_reference_assembled_from_the_public_pieces(mu, corner):
+    # cp._derivative computes each rim's arc, centroid and collision-matrix row once and shares
+    # them between the sliding-mass damper and m_eff (cp._rim with the friction): it must equal
+    # the derivative assembled from the public pieces (_reference_derivative) to rounding, on
+    # random states touching with one rim, with both (upright in the edge band) and lying
+    # nearly flat (the arc the whole circle), sliding fast and slower than v_ε.
+    rng = np.random.default_rng(2026)
+    c = coin_contact(
+        NICKEL, restitution=0.5, friction=mu, ending=CONTACT_ENDING, corner_radius=corner,
+        rolling_resistance=1e-4, pivoting_resistance=1e-4,
+    )  # fmt: skip
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    core, hh = c.radius - corner, c.half_thickness - corner
+    both = flat = 0
+    out = np.empty(10)
+    for k in range(600):
+        kind = k % 3
+        depth = rng.uniform(1e-7, 3e-5)
+        if kind == 0:  # one rim, any tilt
+            tilt = rng.uniform(0.05, math.pi - 0.05)
+        elif kind == 1:  # upright in the band: both rims, the upper one h′ sin(δ) less deep
+            tilt = math.pi / 2 + rng.uniform(-0.9, 0.9) * depth / (2.0 * hh)
+        else:  # nearly flat
+            tilt = rng.choice([0.0, math.pi]) + rng.normal(0.0, 1e-3)
+        azimuth = rng.uniform(0.0, 2 * math.pi)
+        n = np.array(
+            [math.sin(tilt) * math.cos(azimuth), math.sin(tilt) * math.sin(azimuth), math.cos(tilt)]
+        )
+        lowest = core * math.sqrt(max(0.0, 1.0 - n[2] ** 2)) + hh * abs(n[2]) + corner
+        z = lowest - depth
+        v = rng.normal(0.0, rng.choice([1e-3, 0.3]), 3)
+        omega = rng.normal(0.0, rng.choice([1.0, 100.0]), 3)
+        lm = c.i1 * omega + (c.i3 - c.i1) * (omega @ n) * n
+        y = np.array([z, *v, *n, *lm])
+        cp._derivative(y, out, c, stiff, zeta)
+        expected = _reference_derivative(y, c)
+        scale = np.array([1.0, *[c.g] * 3, *[1.0] * 3, *[c.mass * c.g * c.radius] * 3])
+        scale[1:4] += np.abs(expected[1:4])
+        scale[7:10] += np.abs(expected[7:10])
+        # 1e-12 of each component's own size or of its natural scale (g, m g r), whichever is
+        # larger: the same sums taken in another order differ by a few ulps of their terms.
+        np.testing.assert_array_less(np.abs(out - expected), 1e-12 * scale)
+        pressed = [
+            cp.rim_contact(
+                s_, z, tuple(v), tuple(n), tuple(omega), c.radius, c.half_thickness, c.mass,
+                c.i1, c.i3, stiff, 0.0, corner,
+            )[0] > 0.0  # the springs alone: in the table
+            for s_ in (-1.0, 1.0)
+        ]  # fmt: skip
+        both += all(pressed)
+        flat += kind == 2 and any(pressed)
+    assert both > 50 and flat > 50  # the cases meant are reached

@@ -511,7 +511,6 @@ import numpy as np
 from numba import njit
 
 from coinflight.core.impact import (
-    _coupling,
     angular_velocity,
     cross,
     dot,
@@ -653,12 +652,22 @@ def _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp):
 
 
 @njit(cache=True)
-def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):
+def _rim(
+    sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction=0.0
+):
     """:func:`rim_contact` with the coin's tangent basis (s, ŵ) of :func:`_tangent_basis` given
     (it depends on n alone: :func:`_derivative` computes it once for both rims). The arc's
     half-angle φ* = arccos(−A/B), its sine from its cosine, sin φ* = sqrt((1 − cos φ*)(1 +
     cos φ*)): one sine and cosine fewer than from φ*, and exactly 0 at φ* = π. The arc's
-    elastic energy is clamped at 0 (its closed form cancels on a short arc)."""
+    elastic energy is clamped at 0 (its closed form cancels on a short arc).
+
+    With ``friction`` μ > 0 the damper is sized for the normal mass that friction leaves,
+    ζ / sqrt(ρ) (:func:`_damper`, as :func:`_sliding_damping` gives it), from the same arc and
+    centroid and the same row of the collision matrix as the frictionless m_eff = 1/K_zz: one
+    arccos, one centroid and one I⁻¹ product per rim and derivative, where calling
+    :func:`_sliding_damping` first computed them twice (results identical to the bit,
+    ``tests/test_contact_friction.py``). ζ = 0 (the springs' energy alone, :func:`energy`)
+    skips the damper."""
     radius -= corner
     hh -= corner
     a = corner - z - sigma * hh * n[2]
@@ -680,10 +689,11 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
     a0 = -(v[2] + sigma * hh * wn[2])
     a1 = -radius * ww[2]
     # Damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = 2 φ κ, m_eff at the arc's centroid.
-    centroid = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
-    up = (0.0, 0.0, 1.0)
-    m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
-    gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
+    gamma = 0.0
+    if zeta > 0.0:
+        centroid = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
+        zeta, m_eff = _damper(centroid, v, n, omega, mass, i1, i3, friction, zeta)
+        gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
     force = elastic + gamma * (a0 * i0 + a1 * ic)
     if force <= 0.0:
         return 0.0, (0.0, 0.0, 0.0), 0.0, energy
@@ -731,15 +741,28 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
         return zeta
     phi, sp, _ = _arc(a, b)
     rc = _arc_centroid(sigma, n, w, core, hh, corner, phi, sp)
-    u = cross(omega, rc)
-    # K b·Z = b·Z/m + (rc × b)·I⁻¹(rc × Z) (impact._coupling), I⁻¹(rc × Z) shared by b = Z, x, y.
+    return _damper(rc, v, n, omega, c.mass, c.i1, c.i3, c.friction, zeta)[0]
+
+
+@njit(cache=True)
+def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
+    """(ζ / sqrt(ρ), 1/K_zz) of a rim whose arc's centroid is rc (relative to the centre of
+    mass, m): the damping ratio for the normal mass its friction leaves (:func:`_sliding_damping`;
+    ζ itself for μ = 0) and the frictionless normal mass m_eff = 1/K_zz there that :func:`_rim`
+    sizes the damper with, from one row of the collision matrix K b = b/m + (I⁻¹(rc × b)) × rc
+    (Stronge 2000, eq 5.7; :func:`coinflight.core.impact.collision_matrix`): K b·Z = b·Z/m +
+    (rc × b)·I⁻¹(rc × Z), the product I⁻¹(rc × Z) shared by b = Z, X, Y. K_zz so is the one of
+    ``impact._coupling(rc, Z, Z, ...)`` to the bit (rc × Z = (rc_y, −rc_x, 0) there too)."""
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
-    turn = inverse_inertia_apply(arm, n, c.i1, c.i3)
-    kzz = 1.0 / c.mass + dot(arm, turn)
-    kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
-    kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
-    ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], c.friction, SLIP_SPEED)
-    return zeta / math.sqrt(ratio)
+    turn = inverse_inertia_apply(arm, n, i1, i3)
+    kzz = 1.0 / mass + dot(arm, turn)
+    if friction > 0.0:
+        u = cross(omega, rc)
+        kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
+        kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
+        ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
+        zeta = zeta / math.sqrt(ratio)
+    return zeta, 1.0 / kzz
 
 
 @njit(cache=True)
@@ -770,9 +793,7 @@ def _derivative(y, out, c, stiffness, zeta):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
     for sigma in (lower, -lower):
-        damping = zeta
-        if mu > 0.0:
-            damping = _sliding_damping(sigma, y[0], v, n, omega, s, w, c, zeta)
+        # each rim's damper for the normal mass its friction leaves (_sliding_damping's), in _rim
         fn, q, rt, _ = _rim(
             sigma,
             y[0],
@@ -787,8 +808,9 @@ def _derivative(y, out, c, stiffness, zeta):
             i1,
             i3,
             stiffness,
-            damping,
+            zeta,
             c.corner_radius,
+            mu,
         )
         if fn <= 0.0:
             continue
@@ -1039,10 +1061,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
         return False
     s, w = _tangent_basis(n)
     for sigma in (-1.0, 1.0):
-        damping = zeta
-        if c.friction > 0.0:  # each rim's damper as _derivative sizes it
-            damping = _sliding_damping(sigma, y[0], v, n, omega, s, w, c, zeta)
-        fn, _, _, _ = _rim(
+        fn, _, _, _ = _rim(  # each rim's damper as _derivative sizes it
             sigma,
             y[0],
             v,
@@ -1056,8 +1075,9 @@ def upright_decided(y, c, stiffness, zeta, budget):
             i1,
             i3,
             stiffness,
-            damping,
+            zeta,
             c.corner_radius,
+            c.friction,
         )
         if fn <= 0.0:
             return False
