@@ -873,7 +873,7 @@ def energy(y, c, stiffness):
     return _with_springs(_motion_energy(y, c), y, c, stiffness)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _motion_energy(y, c):
     """½ m v² + ½ L·ω + m g z of the state y, J: :func:`energy` without the springs'."""
     v = (y[1], y[2], y[3])
@@ -883,7 +883,7 @@ def _motion_energy(y, c):
     return 0.5 * c.mass * dot(v, v) + 0.5 * dot(lm, omega) + c.mass * c.g * y[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _motion_free_energy(y, c):
     """(e, f): :func:`_motion_energy` and its part that :func:`free_energy` sets against the
     barrier without springs: all of it with friction or resistances, else less the horizontal
@@ -933,13 +933,13 @@ def _corner_energy(ln, lz, nz, c):
     return c.barrier + 0.5 * ln * ln / c.i3 + 0.5 * (lz - ln * nz) ** 2 / (c.i1 * (1.0 - nz * nz))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _dissipative(c):
     """Whether anything but the normal damping dissipates (friction or a resistance)."""
     return c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _barrier(y, c):
     """The barrier of :func:`free_energy`, J: m g ρ with friction or resistances, else the least
     energy on the corners of the well at the conserved L·n, L_z."""
@@ -969,7 +969,7 @@ def free_energy(y, c, stiffness):
     return e, _barrier(y, c)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def below_barrier(y, c, stiffness):
     """``free < barrier`` of :func:`free_energy`, decided alike to the bit, but without the
     springs' energy (two :func:`rim_contact` sums) when the rest of the energy already reaches
@@ -1019,7 +1019,7 @@ into a settled one);
 1 ms shortens the steps below this."""
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def upright_decided(y, c, stiffness, zeta, budget):
     """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
     and the rigid wheel's bounds hold with :data:`UPRIGHT_MARGIN` to spare (module notes,
