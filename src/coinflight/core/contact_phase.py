@@ -33,7 +33,20 @@ but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×; o
 0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper alone
 merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
 rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300
-against 507692d. 50,000 is now ~25× away.
+against 507692d. 50,000 was then ~25× away. Then (2026-11-24, "fastrho") each rim's arc,
+centroid and collision-matrix row computed once per derivative and shared by the damper and
+m_eff (:func:`_rim` with the friction, :func:`_damper`), and the derivative, the rim and the
+tests after each step inlined into the stepper (numba's ``inline="always"``), all identical to
+the bit (:func:`_derivative`, :func:`_integrate` say what was measured): the same command
+against main at 4f0dfa5 (2026-11-24 05:31 UTC, load 8.4-7.7) **786 a second against 489**
+(1.61×; one thread 1,590 against 974 per CPU second, 1.63×), each toss its own e, μ 725
+against 444 (1.64×; one thread 1,529 against 899, 1.70×): above the rate before the damper
+(1.50× 4f0dfa5, 1.51× in one thread, from the quiet figures above). Faces differing on 0 of 300
+(the benchmark's "statuses 27/43" are its own mapping of DECIDED_UPRIGHT for a tree that has
+it too); on 2 × 2,000 of its tosses faces and statuses equal to 4f0dfa5's, and so are those of
+the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of 2,000 in
+either code). Scaled by the quiet 1,998 a second, ~3,200 a second: 50,000 is ~15× away, and
+what is left is the number of steps (see below), not their price.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
@@ -499,7 +512,8 @@ moves them. The upright decision still ends only coins that end on edge at rest
 (a handed toss at μ 0.3: mean 1,787 now, 1,802 with ρ at the lowest point, 1,762 on main;
 median 639 against 636); each costs more, the damper's size computed at every derivative: main's
 landings carried to rest per CPU second in one thread were 1.10-1.30× these in two runs of
-``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy).
+``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy; quiet 1.5×,
+"Speed" above, which also says how that cost was taken back).
 """
 
 from __future__ import annotations
@@ -781,21 +795,21 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
 def _derivative(y, out, c, stiffness, zeta):
     """dy/dt of the state y = (z, v, n, L) in contact (the forces of the module notes).
 
-    Its cost (2026-11-24, one thread, load 5-9; 1,000 one-rim states, μ 0.3, resistances
-    1e-4 m, 200 × 1,000 calls, CPU time, medians of 7): **126 ns a call**, against 228 at main
-    4f0dfa5 (the sliding-mass damper then computed each rim's arc, centroid and I⁻¹ product
-    twice, once in :func:`_sliding_damping` and once in :func:`_rim`) and 142 before the damper
-    (507692d). Both it and :func:`_rim` are inlined (``inline="always"``: numba's IR inlining;
-    LLVM had left :func:`_rim` a call with 17 arguments and :func:`_integrate`'s seven calls of
-    this one calls): results identical to the bit (12,000 random states against 4f0dfa5), ~6 %
-    and ~8 % of a step each (:func:`_integrate`), for ~20 s more to compile :func:`settle` into
-    a fresh cache under load (37 s against 18). Measured and not kept: the coin's inverse
-    inertia by reciprocals instead of divisions, and one square root and two divisions fewer in
-    the damper's ζ sqrt(K_t m_eff)/sqrt(ρ) (no change beyond the noise: the divider is not
-    what holds it; both would change results at rounding); the stages of :func:`_integrate` in
-    one loop with a single inlined call (compile time as before, but 1,120 against 1,055 ns a
-    step). What is left: the arc's arccos (libm's; ~35 ns of a call when knocked out), the
-    square roots and divisions of the forces."""
+    Its cost (2026-11-24, one thread, load 5-9; 1,000 one-rim states, μ 0.3, resistances 1e-4 m,
+    200 × 1,000 calls, CPU time, medians of 7): **126 ns a call**, against 228 at main 4f0dfa5
+    (the sliding-mass damper then computed each rim's arc, centroid and I⁻¹ product twice, once
+    in :func:`_sliding_damping` and once in :func:`_rim`) and 142 before the damper (507692d).
+    Both it and :func:`_rim` are inlined (``inline="always"``: numba's IR inlining; LLVM had
+    left :func:`_rim` a call with 17 arguments and :func:`_integrate`'s seven calls of this one
+    calls): results identical to the bit (12,000 random states against 4f0dfa5), ~6 % and ~8 %
+    of a step each (:func:`_integrate`). Compiling :func:`settle` into a fresh numba cache took
+    32-37 s here against 18 and 40 s for 4f0dfa5 (load 8-9: not measured well). Measured and not
+    kept: the coin's inverse inertia by reciprocals instead of divisions, and one square root
+    and two divisions fewer in the damper's ζ sqrt(K_t m_eff)/sqrt(ρ) (no change beyond the
+    noise: the divider is not what holds it; both would change results at rounding); the stages
+    of :func:`_integrate` in one loop with a single inlined call (compile time as before, but
+    1,120 against 1,055 ns a step). What is left: the arc's arccos (libm's; ~35 ns of a call
+    when knocked out), the square roots and divisions of the forces."""
     mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
@@ -977,7 +991,8 @@ def below_barrier(y, c, stiffness):
     where the closed form's cancellation on a short arc gives down to −5e-20 J) and rounded
     addition and subtraction are monotonic, so adding them cannot bring the sum below it. The
     test :func:`_integrate` makes after every step (~10 % of a step's time before this
-    shortcut)."""
+    shortcut); inlined there (``inline="always"``, with the energy's pieces: ~3 % of a step,
+    2026-11-24, :func:`_integrate`)."""
     e, free = _motion_free_energy(y, c)
     barrier = _barrier(y, c)
     if free >= barrier:
@@ -1184,9 +1199,11 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
 
     A step's cost (2026-11-24, one thread, load 6-9: the 90 tosses of 120 vigorous nickel
     tosses, e 0.5, μ 0.3, seed 3, that :func:`coinflight.core.bounce.bounce_loop` hands here,
-    each carried to rest, 73,262 steps, CPU time, best of 3, three runs): **1,055-1,069 ns**,
-    against 1,677-1,706 at main 4f0dfa5 and 1,136 before the sliding-mass damper (507692d);
-    the same steps to the one. Of it (0.1 s of each toss), ~960 ns without the tests after
+    each carried to rest, 73,262 steps, CPU time, best of 3, three runs): **1,055-1,069 ns**
+    with :func:`_derivative` and :func:`_rim` inlined, 1,026-1,044 with :func:`below_barrier`
+    inlined too and 1,006-1,019 with :func:`upright_decided` too (the code now), against
+    1,677-1,706 at main 4f0dfa5 and 1,136 before the sliding-mass damper (507692d); the same
+    steps to the one. Of it (0.1 s of each toss), ~960 ns without the tests after
     each step (:func:`below_barrier`, :func:`upright_decided`), ~70 ns more with them; the six
     derivatives ~6 × 126 ns (:func:`_derivative`); the stepper's own arithmetic (its error
     norm's ten divisions and one power) the rest.
