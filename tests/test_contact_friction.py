@@ -48,7 +48,7 @@ def _state(tilt, azimuth, depth, v, omega):
 
 def _expected_damping(sigma, y, c, zeta):
     """Rim σ's damping ratio for the normal mass its friction leaves, computed apart from
-    cp._sliding_damping: ζ/sqrt(max(ρ, 0.1)), ρ = 1 − μ K_zt·u_t / (K_zz sqrt(u_t² + v_ε²)),
+    cp._damper: ζ/sqrt(max(ρ, 0.1)), ρ = 1 − μ K_zt·u_t / (K_zz sqrt(u_t² + v_ε²)),
     K the collision matrix (impact.collision_matrix, Stronge 2000 eq 5.7) and u the material
     velocity at the centroid of the rim's arc (its half-angle φ* = arccos(−a/b) of the arc
     d(φ) = a + b cos φ > 0; the whole circle when a ≥ b)."""
@@ -200,47 +200,86 @@ def test_two_rims_stay_within_the_cone_together():
     assert checked > 50
 
 
+def _reference_rim(sigma, y, c, damping):
+    """(F_n, q, r_t) of rim σ computed apart from cp._rim from the module notes' arc sums: the
+    arc d(φ) = a + b cos φ > 0 of the core circle (half-angle φ* = arccos(−a/b), the whole
+    circle when a ≥ b), F_n = κ ∫ d dφ + γ ∫ ḋ dφ and its moment ∫ (κ d + γ ḋ) cos φ dφ, ḋ's
+    even part a0 + a1 cos φ, γ = 2 ζ sqrt(K_t m_eff) / (2 φ*) (the damper 2 ζ sqrt(K_t m_eff) ḋ
+    spread over the arc), K_t = 2 φ* κ, ζ = ``damping`` (or _expected_damping's); m_eff =
+    1/K_zz of impact.collision_matrix at the arc's centroid (Stronge 2000, eq 5.7);
+    q = σ (h/2 − a) n + (r − a)(M/F_n) ŵ − a Z, r_t = (r − a) sqrt(1 − (sin φ*/φ*)²)."""
+    stiff = cp.stiffness_of(c)
+    z, v, n, lm = y[0], np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
+    corner = c.corner_radius
+    core, hh = c.radius - corner, c.half_thickness - corner
+    down = np.array([0.0, 0.0, -1.0]) + n[2] * n  # the coin plane's most downward direction
+    s = float(np.linalg.norm(down))
+    w = down / s
+    a, b = corner - z - sigma * hh * n[2], core * s
+    if a + b <= 0.0:
+        return 0.0, None, 0.0
+    phi = math.pi if a >= b else math.acos(-a / b)
+    i0, ic, icc = 2.0 * phi, 2.0 * math.sin(phi), phi + math.sin(phi) * math.cos(phi)
+    omega = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
+    lift = np.array([0.0, 0.0, corner])
+    rc = sigma * hh * n + core * math.sin(phi) / phi * w - lift
+    kzz = collision_matrix(tuple(rc), tuple(n), c.mass, c.i1, c.i3)[5]
+    a0 = -(v[2] + sigma * hh * np.cross(omega, n)[2])
+    a1 = -core * np.cross(omega, w)[2]
+    gamma = damping * math.sqrt(2.0 * phi * stiff / kzz) / phi
+    force = stiff * (a * i0 + b * ic) + gamma * (a0 * i0 + a1 * ic)
+    if force <= 0.0:
+        return 0.0, None, 0.0
+    moment = stiff * (a * ic + b * icc) + gamma * (a0 * ic + a1 * icc)
+    q = sigma * hh * n + core * moment / force * w - lift
+    return force, q, core * math.sqrt(max(0.0, 1.0 - (math.sin(phi) / phi) ** 2))
+
+
+def _rim_force(sigma, y, c, friction):
+    """F_n of rim σ from cp.rim_contact, its damper sized with ``friction`` as cp._derivative
+    sizes it."""
+    n = tuple(y[4:7])
+    omega = angular_velocity(tuple(y[7:10]), n, c.i1, c.i3)
+    return cp.rim_contact(
+        sigma, y[0], tuple(y[1:4]), n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3,
+        cp.stiffness_of(c), cp.damping_of(c), c.corner_radius, friction,
+    )[0]  # fmt: skip
+
+
 def test_sliding_damper_is_continuous_as_the_arc_closes():
     # A rim whose arc becomes the whole circle (a coin coming flat, the face's rim all pressed):
-    # the damper sized for the sliding normal mass (cp._sliding_damping) is taken at the arc's
-    # centroid, which moves continuously to the face's centre, so the damping and the force do
-    # not jump at a = b (they did by 1-4 % when ρ was taken at the lowest rim point and set to
-    # 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding 1 m/s either way, sinking 0.5 m/s.
+    # the damper sized for the sliding normal mass (cp._damper, via cp.rim_contact with the
+    # friction) is taken at the arc's centroid, which moves continuously to the face's centre,
+    # so the damping and the force do not jump at a = b (they did by 1-4 % when ρ was taken at
+    # the lowest rim point and set to 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding
+    # 1 m/s either way, sinking 0.5 m/s.
     c = _contact(1.0)
-    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    zeta = cp.damping_of(c)
     corner = c.corner_radius
     core, hh = c.radius - corner, c.half_thickness - corner
     tilt = 0.02
     n = (math.sin(tilt), 0.0, math.cos(tilt))
-    s, w = cp._tangent_basis(n)
-    b = core * s
+    b = core * math.sin(tilt)
     for vx in (1.0, -1.0):
-        v, omega = (vx, 0.0, -0.5), (0.0, 0.0, 0.0)
         sides = []
         for a in (b * (1.0 - 1e-9), b * (1.0 + 1e-9)):
             z = corner - a + hh * n[2]  # σ = −1: a = corner − z + (h/2 − corner) n_z
-            damping = cp._sliding_damping(-1.0, z, v, n, omega, s, w, c, zeta)
-            fn = cp.rim_contact(
-                -1.0, z, v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiff,
-                damping, corner,
-            )[0]  # fmt: skip
+            y = np.array([z, vx, 0.0, -0.5, *n, 0.0, 0.0, 0.0])
+            damping = _expected_damping(-1.0, y, c, zeta)
+            fn = _rim_force(-1.0, y, c, c.friction)
+            assert math.isclose(fn, _reference_rim(-1.0, y, c, damping)[0], rel_tol=1e-12)
+            assert abs(fn / _rim_force(-1.0, y, c, 0.0) - 1.0) > 1e-5  # friction sizes it
             sides.append((damping, fn))
         (d0, f0), (d1, f1) = sides
-        assert abs(d0 / zeta - 1.0) > 1e-4  # friction does size this damper
+        assert abs(d0 / zeta - 1.0) > 1e-4
         assert math.isclose(d0, d1, rel_tol=1e-5)  # the arc opens as sqrt(b − a)
         assert math.isclose(f0, f1, rel_tol=1e-4)
 
 
-def _damping(y, c, sigma=-1.0):
-    n = tuple(y[4:7])
-    s, w = cp._tangent_basis(n)
-    omega = angular_velocity(tuple(y[7:10]), n, c.i1, c.i3)
-    return cp._sliding_damping(sigma, y[0], tuple(y[1:4]), n, omega, s, w, c, cp.damping_of(c))
-
-
 def test_sliding_damper_is_sized_for_the_collision_matrix_normal_mass():
     # A non-planar rim impact (tilt 1 rad towards azimuth 0.7) sliding one way along y, at
-    # 1 m/s and at 3 mm/s (below v_ε the friction's share falls linearly): ζ/sqrt(ρ),
+    # 1 m/s and at 3 mm/s (below v_ε the friction's share falls linearly): the rim's force from
+    # cp.rim_contact with the friction is the one of a damper ζ/sqrt(ρ),
     # ρ = 1 − μ K_zt·û |u|/sqrt(u² + v_ε²) / K_zz with K from impact.collision_matrix at the
     # arc's centroid; a shallow arc, so the centroid is near the lowest point.
     c = _contact(0.8)
@@ -249,48 +288,48 @@ def test_sliding_damper_is_sized_for_the_collision_matrix_normal_mass():
         y = _state(1.0, 0.7, 1e-7, (0.0, speed, -0.5), (0.0, 0.0, 0.0))
         expected = _expected_damping(-1.0, y, c, zeta)
         assert abs(expected / zeta - 1.0) > 0.02  # the slip along y does move the damper
-        assert math.isclose(_damping(y, c), expected, rel_tol=1e-12)
+        got = _rim_force(-1.0, y, c, c.friction)
+        assert math.isclose(got, _reference_rim(-1.0, y, c, expected)[0], rel_tol=1e-12)
 
 
 def test_sliding_damper_floor_holds_where_friction_jams_the_contact():
     # μ above 1.008 = 0.9 μ*, μ* = K_zz / max K_zt·û (≈ 1.12 for a nickel, near tilt 61°):
     # sliding at 1 m/s along the directions whose friction drives the contact into the table,
     # ρ < 0.1 and the damper is its floor, ζ/sqrt(0.1) (cp.SLIDING_MASS_FLOOR); below it the
-    # damper is the formula's.
+    # damper is the formula's: the rim's force is the reference's with either.
     for mu in (1.02, 1.5):
         c = _contact(mu)
         zeta = cp.damping_of(c)
-        sizes = []
+        dampers, forces = [], []
         for angle in np.linspace(0.0, 2 * math.pi, 721):
             v = (math.cos(angle), math.sin(angle), -0.5)
             y = _state(math.radians(61.0), 0.3, 1e-7, v, (0.0, 0.0, 0.0))
-            sizes.append((_damping(y, c), _expected_damping(-1.0, y, c, zeta)))
-        got, expected = np.array(sizes).T
-        floored = np.isclose(got, zeta / math.sqrt(0.1), rtol=1e-12)
+            damping = _expected_damping(-1.0, y, c, zeta)
+            dampers.append(damping)
+            forces.append((_rim_force(-1.0, y, c, mu), _reference_rim(-1.0, y, c, damping)[0]))
+        floored = np.isclose(dampers, zeta / math.sqrt(0.1), rtol=1e-12)
         assert floored.any() and not floored.all()
+        got, expected = np.array(forces).T
         np.testing.assert_allclose(got, expected, rtol=1e-12)
 
 
 def _reference_derivative(y, c):
     """dy/dt of the contact phase assembled apart from cp._derivative (its module notes'
-    forces): each rim's normal force, centre of pressure and pivot radius from the public
-    cp.rim_contact with the damper sized by _expected_damping (the collision matrix of
-    impact.collision_matrix at the arc's centroid, Stronge 2000 eq 5.7); regularised Coulomb
+    forces): each rim's normal force, centre of pressure and pivot radius from _reference_rim
+    (m_eff from impact.collision_matrix, not from the code under test) with the damper sized by
+    _expected_damping (the collision matrix at the arc's centroid, Stronge 2000 eq 5.7);
+    regularised Coulomb
     friction −μ F_n u_t / sqrt(u_t² + v_ε²) at q; the pivoting torque −(μ r_t + ℓ_p) F_n
     ω_z / sqrt(ω_z² + (v_ε/r)²); the rolling torque −ℓ_r F_n ω_h / sqrt(ω_h² + (v_ε/r)²);
     gravity; ṅ = ω × n."""
-    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    zeta = cp.damping_of(c)
     v, n, lm = np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
     w = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
     eps, spin_eps = cp.SLIP_SPEED, cp.SLIP_SPEED / c.radius
     force = np.array([0.0, 0.0, -c.mass * c.g])
     torque = np.zeros(3)
     for sigma in (-1.0, 1.0):
-        damping = _expected_damping(sigma, y, c, zeta)
-        fn, q, rt, _ = cp.rim_contact(
-            sigma, y[0], tuple(v), tuple(n), tuple(w), c.radius, c.half_thickness, c.mass,
-            c.i1, c.i3, stiff, damping, c.corner_radius,
-        )  # fmt: skip
+        fn, q, rt = _reference_rim(sigma, y, c, _expected_damping(sigma, y, c, zeta))
         if fn <= 0.0:
             continue
         q = np.asarray(q)

@@ -266,7 +266,7 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   200 random rim impacts, e = 0.5, μ = 0.3), where Stronge's law restitutes it with e (module
   notes, "Convergence of a rim impact"). Each rim's ζ is therefore taken as ζ / sqrt(ρ),
   ρ = 1 + K_zt·(F_t/F_n) / K_zz at the centroid of the rim's arc (where the damper's m_eff
-  is taken) with the regularised friction's share F_t/F_n (:func:`_sliding_damping`; ρ ≥
+  is taken) with the regularised friction's share F_t/F_n (:func:`_damper`; ρ ≥
   :data:`SLIDING_MASS_FLOOR`), so a rim impact sliding one way restitutes with e, as Stronge's law
   does (a slip of fixed direction leaves the normal velocity linear in the normal impulse, so the
   energetic coefficient is the kinematic one: Stronge 2000, ch. 4). A face slap (linear,
@@ -465,7 +465,7 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      sliding impact by 4e-6 m/s at t_c 0.125 and 0.031 ms). Two rims touching in one impact
      were not examined: the floor is accounted for without them (and each rim's ρ uses its
      own single-contact K, the two contacts' coupled normal mass ignored, for upright rollers
-     too: :func:`_sliding_damping`).
+     too: :func:`_damper`).
   2. **The arc's pivoting friction** (physics of the compliant model, kept): μ r_t F_n about
      the vertical, r_t ≈ r φ*/√3 ∝ sqrt(depth) ∝ t_c^(2/5), so its angular impulse vanishes
      only as t_c^(2/5): the vertical part of the angular-momentum error, 0.118, 0.081, 0.060,
@@ -475,7 +475,7 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      softness's, like the resistances' ℓ F_n (which do not vanish at all: with ℓ_r = ℓ_p =
      1e-4 m the angular momentum stays 0.046 I1 ω from the rigid law at 0.031 ms).
 
-* μ 0.3 now (the damper for the sliding mass, :func:`_sliding_damping`, ρ at the arc's
+* μ 0.3 now (the damper for the sliding mass, :func:`_damper`, ρ at the arc's
   centroid; ``--converge`` prints these): the limit is Stronge's law to 0.00056 m/s (median
   of the 200; 90th percentile 0.0043, largest 0.030 m/s, 1.6 % of the lowest point's approach
   speed, on an impact whose slip turns), 0.00002 on the 19 sliding one way (J_t/(μ J_n) ≥
@@ -549,13 +549,13 @@ MAX_STEP = 1e-3
 """Longest step, s (also at most a sixteenth of a turn)."""
 SLIDING_MASS_FLOOR = 0.1
 """Least ratio ρ = 1 + K_zt·(F_t/F_n)/K_zz of a sliding rim's normal stiffness to its
-frictionless one that :func:`_sliding_damping` sizes the damper for (ρ ≤ 0 would be a contact
+frictionless one that :func:`_damper` sizes the damper for (ρ ≤ 0 would be a contact
 whose friction drives it into the table, where no mass fits; the damper is then at most
 sqrt(10) times its frictionless size). At the start of the 200 random rim impacts of
 ``benchmarks/bench_rim_impacts.py`` (seed 1; the slip's direction then): ρ in 0.75-1.27 at
 μ = 0.3, 0.50-1.54 at μ = 0.6, 0.17-1.89 at μ = 1 (ρ at the lowest rim point then). ρ ≤ 0
 needs μ above μ* = K_zz / max K_zt·û, 1.12 for a nickel (near a tilt of 61°), and the floor
-bites from μ ≈ 1.008; μ above 1 is not validated (:func:`_sliding_damping`)."""
+bites from μ ≈ 1.008; μ above 1 is not validated (:func:`_damper`)."""
 UPRIGHT_DECISION = True
 """Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
 :func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
@@ -607,7 +607,9 @@ def _tangent_basis(n):
 
 
 @njit(cache=True)
-def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):
+def rim_contact(
+    sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0, friction=0.0
+):
     """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
 
     Parameters
@@ -624,6 +626,10 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         a, the radius of the rim's rounded corners, m: the circle is then that of the core
         cylinder (``radius`` and ``hh`` less a) swept by a ball of radius a, which touches the
         table a below the circle (0: sharp corners).
+    friction : float
+        μ: with μ > 0 the damper is sized for the normal mass that friction leaves, ζ / sqrt(ρ)
+        (:func:`_damper`, the module notes' "Restitution"), as :func:`_derivative` sizes it;
+        0 (the default) the frictionless ζ.
 
     Returns
     -------
@@ -638,7 +644,9 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         Elastic energy of the arc, κ ∫ d²/2 dφ, J.
     """
     s, w = _tangent_basis(n)
-    return _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner)
+    return _rim(
+        sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction
+    )
 
 
 @njit(cache=True)
@@ -676,10 +684,10 @@ def _rim(
     elastic energy is clamped at 0 (its closed form cancels on a short arc).
 
     With ``friction`` μ > 0 the damper is sized for the normal mass that friction leaves,
-    ζ / sqrt(ρ) (:func:`_damper`, as :func:`_sliding_damping` gives it), from the same arc and
+    ζ / sqrt(ρ) (:func:`_damper`), from the same arc and
     centroid and the same row of the collision matrix as the frictionless m_eff = 1/K_zz: one
-    arccos, one centroid and one I⁻¹ product per rim and derivative, where calling
-    :func:`_sliding_damping` first computed them twice (results identical to the bit,
+    arccos, one centroid and one I⁻¹ product per rim and derivative, where the damper's own
+    helper (``_sliding_damping``, gone) first computed them twice (results identical to the bit,
     ``tests/test_contact_friction.py``). ζ = 0 (the springs' energy alone, :func:`energy`)
     skips the damper."""
     radius -= corner
@@ -725,16 +733,22 @@ def _rim(
 
 
 @njit(cache=True)
-def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
-    """ζ of rim σ's damper for the normal effective mass its friction leaves (module notes,
-    "Restitution"): ζ / sqrt(ρ), ρ = 1 + K_zt·(F_t/F_n) / K_zz with the mobility K, the slip
+def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
+    """(ζ / sqrt(ρ), 1/K_zz) of a rim whose arc's centroid is rc (relative to the centre of
+    mass, m): the damping ratio for the normal mass its friction leaves (ζ itself for μ = 0) and
+    the frictionless normal mass m_eff = 1/K_zz there that :func:`_rim` sizes the damper with,
+    from one row of the collision matrix K b = b/m + (I⁻¹(rc × b)) × rc
+    (Stronge 2000, eq 5.7; :func:`coinflight.core.impact.collision_matrix`): K b·Z = b·Z/m +
+    (rc × b)·I⁻¹(rc × Z), the product I⁻¹(rc × Z) shared by b = Z, X, Y. K_zz so is the one of
+    ``impact._coupling(rc, Z, Z, ...)`` to the bit (rc × Z = (rc_y, −rc_x, 0) there too).
+
+    The module notes' "Restitution": ρ = 1 + K_zt·(F_t/F_n) / K_zz with the mobility K, the slip
     u_t and F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) (the regularised friction's share) all taken at
-    the centroid of the rim's arc, the point whose normal mass 1/K_zz :func:`_rim` sizes the
-    damper for (friction acts at the centre of pressure q, which depends on the damper's own
-    force; q and the centroid lie on one line, both tend to the lowest point for a short arc
-    and to the face's centre as the arc closes, so ρ is continuous as the arc becomes the whole
-    circle, near 1 for a coin flat on the table); ρ at least :data:`SLIDING_MASS_FLOOR`; ζ
-    itself for a rim off the table.
+    the centroid of the rim's arc, the point whose normal mass 1/K_zz sizes the damper (friction
+    acts at the centre of pressure q, which depends on the damper's own force; q and the
+    centroid lie on one line, both tend to the lowest point for a short arc and to the face's
+    centre as the arc closes, so ρ is continuous as the arc becomes the whole circle, near 1 for
+    a coin flat on the table); ρ at least :data:`SLIDING_MASS_FLOOR`.
 
     ρ ≤ 0 where μ K_zt·u_t/sqrt(u_t² + v_ε²) ≥ K_zz: friction then drives the contact into the
     table faster than the normal force pushes it out, a Painlevé-type jam. This needs μ above
@@ -748,25 +762,6 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
     normal mass is ignored, and the damper is not the one that restitutes such an impact with
     e (not examined: the rigid law has one contact point)."""
-    corner = c.corner_radius
-    core, hh = c.radius - corner, c.half_thickness - corner
-    a, b = corner - z - sigma * hh * n[2], core * s  # _rim's d(φ) = a + b cos φ
-    if a + b <= 0.0:  # no arc
-        return zeta
-    phi, sp, _ = _arc(a, b)
-    rc = _arc_centroid(sigma, n, w, core, hh, corner, phi, sp)
-    return _damper(rc, v, n, omega, c.mass, c.i1, c.i3, c.friction, zeta)[0]
-
-
-@njit(cache=True)
-def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
-    """(ζ / sqrt(ρ), 1/K_zz) of a rim whose arc's centroid is rc (relative to the centre of
-    mass, m): the damping ratio for the normal mass its friction leaves (:func:`_sliding_damping`;
-    ζ itself for μ = 0) and the frictionless normal mass m_eff = 1/K_zz there that :func:`_rim`
-    sizes the damper with, from one row of the collision matrix K b = b/m + (I⁻¹(rc × b)) × rc
-    (Stronge 2000, eq 5.7; :func:`coinflight.core.impact.collision_matrix`): K b·Z = b·Z/m +
-    (rc × b)·I⁻¹(rc × Z), the product I⁻¹(rc × Z) shared by b = Z, X, Y. K_zz so is the one of
-    ``impact._coupling(rc, Z, Z, ...)`` to the bit (rc × Z = (rc_y, −rc_x, 0) there too)."""
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
     turn = inverse_inertia_apply(arm, n, i1, i3)
     kzz = 1.0 / mass + dot(arm, turn)
@@ -786,7 +781,7 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
     (u_x, u_y) (m/s), F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) the regularised friction's share
     (v_ε = ``slip_speed``): the ratio of the normal effective mass's inverse with that friction,
     K_zz + K_zt·F_t/F_n, to the frictionless K_zz (Stronge 2000, eq 5.7 and ch. 4), as
-    :func:`_sliding_damping` sizes a rim's damper with it."""
+    :func:`_damper` sizes a rim's damper with it."""
     share = friction / math.sqrt(ux * ux + uy * uy + slip_speed * slip_speed)
     return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
 
@@ -798,7 +793,8 @@ def _derivative(y, out, c, stiffness, zeta):
     Its cost (2026-11-24, one thread, load 5-9; 1,000 one-rim states, μ 0.3, resistances 1e-4 m,
     200 × 1,000 calls, CPU time, medians of 7): **126 ns a call**, against 228 at main 4f0dfa5
     (the sliding-mass damper then computed each rim's arc, centroid and I⁻¹ product twice, once
-    in :func:`_sliding_damping` and once in :func:`_rim`) and 142 before the damper (507692d).
+    in ``_sliding_damping``, now gone, and once in :func:`_rim`) and 142 before the damper
+    (507692d).
     Both it and :func:`_rim` are inlined (``inline="always"``: numba's IR inlining; LLVM had
     left :func:`_rim` a call with 17 arguments and :func:`_integrate`'s seven calls of this one
     calls): results identical to the bit (12,000 random states against 4f0dfa5), ~6 % and ~8 %
@@ -823,7 +819,7 @@ def _derivative(y, out, c, stiffness, zeta):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
     for sigma in (lower, -lower):
-        # each rim's damper for the normal mass its friction leaves (_sliding_damping's), in _rim
+        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
         fn, q, rt, _ = _rim(
             sigma,
             y[0],
@@ -1048,7 +1044,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
     of the band's m g h′; the friction the turn and the rolling resistance need,
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
     both rims pressed (:func:`rim_contact`, with each rim's damper as :func:`_derivative` sizes
-    it, :func:`_sliding_damping`: the force they exert now); the
+    it, :func:`_damper`: the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
     coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
