@@ -399,3 +399,38 @@ def test_derivative_equals_a_reference_assembled_from_the_public_pieces(mu, corn
         both += all(pressed)
         flat += kind == 2 and any(pressed)
     assert both > 50 and flat > 50  # the cases meant are reached
+
+
+def test_upright_decision_takes_each_rims_damper_sized_for_its_sliding_mass():
+    # cp.upright_decided needs both rims pressed, each with its damper as cp._derivative sizes
+    # it (ζ/sqrt(ρ)). A nickel upright in its band (n = X) at 0.7 of its static depth, sliding
+    # sideways at 4.9 mm/s (the band's lowest point below v_ε, so the decision's slip test
+    # holds) and rising at v_z: the slip moves the two rims' dampers apart (ρ ≈ 1 ∓ 0.04 at
+    # μ 0.3), so near the v_z where one rim's force falls to 0 a decision from the
+    # frictionless ζ holds where the one from the sliding-mass dampers does not. The decision
+    # must be the latter's (_reference_rim, _expected_damping) on the whole scan; the scan
+    # reaches the states where the two differ, and both answers.
+    c = coin_contact(
+        NICKEL, restitution=0.5, friction=0.3, rest_speed=0.01, rolling_resistance=1e-4,
+        pivoting_resistance=1e-4, ending=CONTACT_ENDING,
+    )  # fmt: skip
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    tilt = 0.5 * math.pi
+    n = (math.sin(tilt), 0.0, math.cos(tilt))
+    z = c.radius - 0.7 * cp.static_depth(c, stiff)
+    budget = cp.MAX_STEPS * cp.MAX_STEP
+    differ = 0
+    decisions = []
+    for vx in (4.9e-3, -4.9e-3):
+        for vz in np.linspace(0.0, 0.02, 201):
+            y = np.array([z, vx, 0.0, vz, *n, 0.0, 0.0, 0.0])
+            pressed = [
+                _reference_rim(s, y, c, _expected_damping(s, y, c, zeta))[0] > 0.0
+                for s in (-1.0, 1.0)
+            ]
+            frictionless = [_reference_rim(s, y, c, zeta)[0] > 0.0 for s in (-1.0, 1.0)]
+            decided = cp.upright_decided(y, c, stiff, zeta, budget)
+            assert decided == all(pressed), (vx, vz)
+            differ += all(pressed) != all(frictionless)
+            decisions.append(decided)
+    assert differ >= 4 and any(decisions) and not all(decisions)
