@@ -44,9 +44,10 @@ against 444 (1.64×; one thread 1,529 against 899, 1.70×): above the rate befor
 (1.50× 4f0dfa5, 1.51× in one thread, from the quiet figures above). Faces differing on 0 of 300
 (the benchmark's "statuses 27/43" are its own mapping of DECIDED_UPRIGHT for a tree that has
 it too); on 2 × 2,000 of its tosses faces and statuses equal to 4f0dfa5's, and so are those of
-the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of 2,000 in
-either code). Scaled by the quiet 1,998 a second, ~3,200 a second: 50,000 is ~15× away, and
-what is left is the number of steps (see below), not their price.
+the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of the 2,000
+with each toss its own e, μ, and none of the 2,000 at e 0.5, μ 0.3, in either code). Scaled
+by the quiet 1,998 a second, ~3,200 a second: 50,000 is ~15× away, and what is left is the
+number of steps (see below), not their price.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
