@@ -787,7 +787,7 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
     return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _derivative(y, out, c, stiffness, zeta):
     """dy/dt of the state y = (z, v, n, L) in contact (the forces of the module notes).
 
@@ -796,17 +796,28 @@ def _derivative(y, out, c, stiffness, zeta):
     (the sliding-mass damper then computed each rim's arc, centroid and I⁻¹ product twice, once
     in ``_sliding_damping``, now gone, and once in :func:`_rim`) and 142 before the damper
     (507692d).
-    Both it and :func:`_rim` are inlined (``inline="always"``: numba's IR inlining; LLVM had
-    left :func:`_rim` a call with 17 arguments and :func:`_integrate`'s seven calls of this one
-    calls): results identical to the bit (12,000 random states against 4f0dfa5), ~6 % and ~8 %
-    of a step each (:func:`_integrate`). Compiling :func:`settle` into a fresh numba cache took
-    32-37 s here against 18 and 40 s for 4f0dfa5 (load 8-9: not measured well). Measured and not
-    kept: the coin's inverse inertia by reciprocals instead of divisions, and one square root
-    and two divisions fewer in the damper's ζ sqrt(K_t m_eff)/sqrt(ρ) (no change beyond the
-    noise: the divider is not what holds it; both would change results at rounding); the stages
-    of :func:`_integrate` in one loop with a single inlined call (compile time as before, but
-    1,120 against 1,055 ns a step). What is left: the arc's arccos (libm's; ~35 ns of a call
-    when knocked out), the square roots and divisions of the forces."""
+
+    :func:`_rim` is inlined into it (``inline="always"``: numba's IR inlining; LLVM had left it
+    a call with 17 arguments; ~8 % of a step, :func:`_integrate`): results identical to the bit
+    (12,000 random states against 4f0dfa5). This one is **not** inlined into
+    :func:`_integrate`'s seven calls, a trade measured (2026-11-24 06:12-06:19 UTC, load
+    2.3-5.8; compilation: CPU time of :func:`settle`'s first call in a fresh NUMBA_CACHE_DIR;
+    speed: 300 nickel tosses, e 0.5, μ 0.3, carried to rest by ``outcomes.table.land`` in one
+    thread, landings a CPU second, median of 3; two runs each): inlined there too, **16.8-17.5
+    s** to compile and **1,669** a CPU second; not (the code now) **8.8-9.3 s** and
+    **1,500-1,503** (the same steps, so ~1,120 ns a step against ~1,010); 4f0dfa5 8.6-8.7 s and
+    1,003-1,004. Inlining bought 11 % more speed for twice the compilation, which every fresh
+    clone, CI run, docs build and edit of this module pays (a reviewer's run at higher load: 23
+    s against 12 s, 2026-11-24): kept out, the rate is 1.50× 4f0dfa5's at its compile time.
+    Tried too: :func:`_rim` not inlined but this one, 12.8-15.7 s and 1,514-1,532; this one and
+    :func:`_rim` inlined but not :func:`below_barrier` and :func:`upright_decided`, 16.4 s and
+    1,557-1,570. Measured and not kept: the coin's inverse inertia by reciprocals instead of
+    divisions, and one square root and two divisions fewer in the damper's ζ sqrt(K_t
+    m_eff)/sqrt(ρ) (no change beyond the noise: the divider is not what holds it; both would
+    change results at rounding); the stages of :func:`_integrate` in one loop with a single
+    inlined call (compile time as before, but 1,120 against 1,055 ns a step). What is left: the
+    arc's arccos (libm's; ~35 ns of a call when knocked out), the square roots and divisions of
+    the forces."""
     mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
@@ -1198,12 +1209,14 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     tosses, e 0.5, μ 0.3, seed 3, that :func:`coinflight.core.bounce.bounce_loop` hands here,
     each carried to rest, 73,262 steps, CPU time, best of 3, three runs): **1,055-1,069 ns**
     with :func:`_derivative` and :func:`_rim` inlined, 1,026-1,044 with :func:`below_barrier`
-    inlined too and 1,006-1,019 with :func:`upright_decided` too (the code now), against
-    1,677-1,706 at main 4f0dfa5 and 1,136 before the sliding-mass damper (507692d); the same
-    steps to the one. Of it (0.1 s of each toss), ~960 ns without the tests after
-    each step (:func:`below_barrier`, :func:`upright_decided`), ~70 ns more with them; the six
-    derivatives ~6 × 126 ns (:func:`_derivative`); the stepper's own arithmetic (its error
-    norm's ten divisions and one power) the rest.
+    inlined too and 1,006-1,019 with :func:`upright_decided` too; the code now leaves
+    :func:`_derivative` a call (its compile time: :func:`_derivative`), ~1,120 (1,500 against
+    1,669 landings a CPU second, the same steps), against 1,677-1,706 at main 4f0dfa5 and 1,136
+    before the sliding-mass damper (507692d); the same steps to the one. Of it (0.1 s of each
+    toss), ~960 ns without the tests after each step (:func:`below_barrier`,
+    :func:`upright_decided`), ~70 ns more with them; the six derivatives ~6 × 126 ns
+    (:func:`_derivative`); the stepper's own arithmetic (its error norm's ten divisions and one
+    power) the rest.
     """
     k1 = np.empty(10)
     k2 = np.empty(10)
