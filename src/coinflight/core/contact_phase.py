@@ -9,45 +9,50 @@ and the next one, and says which well that is.
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
 planar rocking of :func:`coinflight.core.bounce.rock`).
 
-**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). The
-changes below (first same as last, the energy test's shortcut, one tangent basis) make a
-landing with this ending 1.24-1.39× cheaper per CPU second in one thread, measured with
-``python benchmarks/bench_bounce.py --contact-rates N --old-src DIR`` (vigorous tosses of a US
-nickel, e = 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); rounds
-alternated with the code before, main at 6061499, in a subprocess; medians of the rounds;
-the shared 2-core machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×;
-600 tosses at load 9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9
-1.31×, 1.39× and 1.34×; with the review's fixes (the arc's energy clamped at 0, the
-step tolerance a run-time argument, no chunk size), 300 tosses at load 4.2-4.8 (00:57 UTC)
-1.27× and 1.33×. Faces differed on 0-1 tosses of each run, statuses on none. The
-wall-clock rates with both threads move with the other processes' load (1.08-1.39× in the
-first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 against 1,098 at 9.8-6.1)
-and are not the measure of the change. Quiet (load 1.4-1.8, 2026-11-24 01:46 UTC, the same
-command, 300 tosses, against the code before at 6061499): **2,954 a second against 2,245**
-(1.32×; one thread 1.29×), each toss its own e, μ 2,645 against 2,018 (1.31×; 1.34×); faces
-differing on 0 and 1 of 300. So 50,000 was then ~17× away. The sliding-mass damper
-(2026-11-24, "Restitution") makes each derivative dearer: quiet (load 0.8-1.1, 2026-11-24
-04:25 UTC, the same command against main at 507692d, before it, and at 51e4b64, before it
-but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×; one thread
-969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599 (0.68×;
-0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper alone
-merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
-rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300
-against 507692d. 50,000 was then ~25× away. Then (2026-11-24, "fastrho") each rim's arc,
-centroid and collision-matrix row computed once per derivative and shared by the damper and
-m_eff (:func:`_rim` with the friction, :func:`_damper`), and the derivative, the rim and the
-tests after each step inlined into the stepper (numba's ``inline="always"``), all identical to
-the bit (:func:`_derivative`, :func:`_integrate` say what was measured): the same command
-against main at 4f0dfa5 (2026-11-24 05:31 UTC, load 8.4-7.7) **786 a second against 489**
-(1.61×; one thread 1,590 against 974 per CPU second, 1.63×), each toss its own e, μ 725
-against 444 (1.64×; one thread 1,529 against 899, 1.70×): above the rate before the damper
-(1.50× 4f0dfa5, 1.51× in one thread, from the quiet figures above). Faces differing on 0 of 300
-(the benchmark's "statuses 27/43" are its own mapping of DECIDED_UPRIGHT for a tree that has
-it too); on 2 × 2,000 of its tosses faces and statuses equal to 4f0dfa5's, and so are those of
-the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of the 2,000
-with each toss its own e, μ, and none of the 2,000 at e 0.5, μ 0.3, in either code). Scaled
-by the quiet 1,998 a second, ~3,200 a second: 50,000 is ~15× away, and what is left is the
-number of steps (see below), not their price.
+**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). The changes
+below (first same as last, the energy test's shortcut, one tangent basis) make a landing with
+this ending 1.24-1.39× cheaper per CPU second in one thread, measured with ``python
+benchmarks/bench_bounce.py --contact-rates N --old-src DIR`` (vigorous tosses of a US nickel, e
+= 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); rounds alternated with the
+code before, main at 6061499, in a subprocess; medians of the rounds; the shared 2-core
+machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×; 600 tosses at load
+9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9 1.31×, 1.39× and 1.34×;
+with the review's fixes (the arc's energy clamped at 0, the step tolerance a run-time argument,
+no chunk size), 300 tosses at load 4.2-4.8 (00:57 UTC) 1.27× and 1.33×. Faces differed on 0-1
+tosses of each run, statuses on none. The wall-clock rates with both threads move with the other
+processes' load (1.08-1.39× in the first two runs; e.g. 783 against 562 landings a second at
+load 10.6, 1,184 against 1,098 at 9.8-6.1) and are not the measure of the change. Quiet (load
+1.4-1.8, 2026-11-24 01:46 UTC, the same command, 300 tosses, against the code before at
+6061499): **2,954 a second against 2,245** (1.32×; one thread 1.29×), each toss its own e, μ
+2,645 against 2,018 (1.31×; 1.34×); faces differing on 0 and 1 of 300. So 50,000 was then ~17×
+away. The sliding-mass damper (2026-11-24, "Restitution") makes each derivative dearer: quiet
+(load 0.8-1.1, 2026-11-24 04:25 UTC, the same command against main at 507692d, before it, and at
+51e4b64, before it but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×;
+one thread 969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599
+(0.68×; 0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper
+alone merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
+rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300 against
+507692d. 50,000 was then ~25× away. Then (2026-11-24, "fastrho") each rim's arc, centroid and
+collision-matrix row computed once per derivative and shared by the damper and m_eff
+(:func:`_rim` with the friction, :func:`_damper`), the rim inlined into the derivative and the
+tests after each step into the stepper (numba's ``inline="always"``; the derivative itself not,
+for its compile time, :func:`_derivative`), all identical to the bit (:func:`_derivative`,
+:func:`_integrate` say what was measured): the same command against main at 4f0dfa5 (2026-11-24
+06:20 UTC, load 1.0-1.4) **1,736 a second against 989** (1.76×; one thread 1,455 against 977 per
+CPU second, 1.49×), each toss its own e, μ 1,344 against 899 (1.50×; one thread 1,372 against
+907, 1.51×): the rate before the damper (1.50× 4f0dfa5, 1.51× in one thread, from the quiet
+figures above). Faces differing on 0 of 300 (the benchmark's "statuses 27/43" are its own
+mapping of DECIDED_UPRIGHT for a tree that has it too); face, bounces, first contact, settling
+time and status identical to the bit to 4f0dfa5's on 300 tosses in each of five settings (e, μ
+0.5, 0.3; 0.2, 0; 0.6, 0.9 with resistances; 0.4, 0.5 with a 0.3 mm corner radius; each toss its
+own e, μ). The derivative inlined too was 1.61× 4f0dfa5 (05:31 UTC, load 8.4-7.7; one thread
+1.63×; each toss its own e, μ 1.64×, 1.70×), 1.10× the code now in one run (06:22 UTC, load
+1.9-2.4; one thread 1.08×; each its own 1.08×, 1.13×), at twice the compile time; that code's
+faces and statuses on 2 × 2,000 of the benchmark's tosses equal to 4f0dfa5's, and so were those
+of the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of the 2,000
+with each toss its own e, μ, and none of the 2,000 at e 0.5, μ 0.3, in either code). Scaled by
+the quiet 1,998 a second, ~3,000 a second: 50,000 is ~17× away, and what is left is the number
+of steps (see below), not their price.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
