@@ -168,7 +168,7 @@ def frozen_limit(  # type: ignore[no-untyped-def]
     friction F_t = −μ F_n u_t / sqrt(u_t² + v_ε²) at the same point (v_ε = ``slip_speed``, by
     default :data:`~coinflight.core.contact_phase.SLIP_SPEED`). m_eff is the normal effective
     mass friction leaves, 1/(K_zz + K_zt·F_t/F_n) (:func:`coinflight.core.contact_phase.
-    _sliding_damping`, its floor too); with ``sliding_mass`` False the frictionless 1/K_zz,
+    _damper`, its floor too); with ``sliding_mass`` False the frictionless 1/K_zz,
     the phase's damper before 2026-11-24 (for the measurements of its notes). The result does
     not depend on K_h (it sets the time scale only), so it is integrated with K_h = 1 (SciPy's
     RK45, rtol 1e-10) until the force vanishes in restitution."""
@@ -240,9 +240,11 @@ def _drill_patch(factor: float) -> None:
     inner = cp._rim
 
     @njit(cache=False)
-    def scaled(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):  # type: ignore[no-untyped-def]
+    def scaled(
+        sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction=0.0
+    ):  # type: ignore[no-untyped-def]
         f, q, rt, e = inner(
-            sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner
+            sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction
         )
         return f, q, rt * factor, e
 

@@ -124,13 +124,16 @@ def rim_law(exponent: float):  # type: ignore[no-untyped-def]
     copied, the law changed where marked (module notes)."""
     from numba import njit
 
-    from coinflight.core.impact import _coupling, cross
+    from coinflight.core.contact_phase import _damper
+    from coinflight.core.impact import cross
 
     beta = 2.0 * (exponent + 1.0) / 5.0
     scale = math.sqrt(2.0 * exponent / 3.0)
 
     @njit(cache=True)
-    def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):  # type: ignore[no-untyped-def]
+    def _rim(
+        sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction=0.0
+    ):  # type: ignore[no-untyped-def]
         # The default's arc sums (contact_phase._rim), the law changed where marked.
         radius -= corner
         hh -= corner
@@ -169,8 +172,8 @@ def rim_law(exponent: float):  # type: ignore[no-untyped-def]
             sigma * hh * n[1] + k * w[1],
             sigma * hh * n[2] + k * w[2] - corner,
         )
-        up = (0.0, 0.0, 1.0)
-        m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
+        # the damper for the normal mass friction leaves, and m_eff, as the default's
+        zeta, m_eff = _damper(centroid, v, n, omega, mass, i1, i3, friction, zeta)
         # Changed: the damper times sqrt((2p/3) λ) (ζ is ζ_p, from the record).
         gamma = scale * math.sqrt(lam) * zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
         force = elastic + gamma * (a0 * i0 + a1 * ic)

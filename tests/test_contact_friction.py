@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -47,7 +48,7 @@ def _state(tilt, azimuth, depth, v, omega):
 
 def _expected_damping(sigma, y, c, zeta):
     """Rim σ's damping ratio for the normal mass its friction leaves, computed apart from
-    cp._sliding_damping: ζ/sqrt(max(ρ, 0.1)), ρ = 1 − μ K_zt·u_t / (K_zz sqrt(u_t² + v_ε²)),
+    cp._damper: ζ/sqrt(max(ρ, 0.1)), ρ = 1 − μ K_zt·u_t / (K_zz sqrt(u_t² + v_ε²)),
     K the collision matrix (impact.collision_matrix, Stronge 2000 eq 5.7) and u the material
     velocity at the centroid of the rim's arc (its half-angle φ* = arccos(−a/b) of the arc
     d(φ) = a + b cos φ > 0; the whole circle when a ≥ b)."""
@@ -199,47 +200,86 @@ def test_two_rims_stay_within_the_cone_together():
     assert checked > 50
 
 
+def _reference_rim(sigma, y, c, damping):
+    """(F_n, q, r_t) of rim σ computed apart from cp._rim from the module notes' arc sums: the
+    arc d(φ) = a + b cos φ > 0 of the core circle (half-angle φ* = arccos(−a/b), the whole
+    circle when a ≥ b), F_n = κ ∫ d dφ + γ ∫ ḋ dφ and its moment ∫ (κ d + γ ḋ) cos φ dφ, ḋ's
+    even part a0 + a1 cos φ, γ = 2 ζ sqrt(K_t m_eff) / (2 φ*) (the damper 2 ζ sqrt(K_t m_eff) ḋ
+    spread over the arc), K_t = 2 φ* κ, ζ = ``damping`` (or _expected_damping's); m_eff =
+    1/K_zz of impact.collision_matrix at the arc's centroid (Stronge 2000, eq 5.7);
+    q = σ (h/2 − a) n + (r − a)(M/F_n) ŵ − a Z, r_t = (r − a) sqrt(1 − (sin φ*/φ*)²)."""
+    stiff = cp.stiffness_of(c)
+    z, v, n, lm = y[0], np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
+    corner = c.corner_radius
+    core, hh = c.radius - corner, c.half_thickness - corner
+    down = np.array([0.0, 0.0, -1.0]) + n[2] * n  # the coin plane's most downward direction
+    s = float(np.linalg.norm(down))
+    w = down / s
+    a, b = corner - z - sigma * hh * n[2], core * s
+    if a + b <= 0.0:
+        return 0.0, None, 0.0
+    phi = math.pi if a >= b else math.acos(-a / b)
+    i0, ic, icc = 2.0 * phi, 2.0 * math.sin(phi), phi + math.sin(phi) * math.cos(phi)
+    omega = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
+    lift = np.array([0.0, 0.0, corner])
+    rc = sigma * hh * n + core * math.sin(phi) / phi * w - lift
+    kzz = collision_matrix(tuple(rc), tuple(n), c.mass, c.i1, c.i3)[5]
+    a0 = -(v[2] + sigma * hh * np.cross(omega, n)[2])
+    a1 = -core * np.cross(omega, w)[2]
+    gamma = damping * math.sqrt(2.0 * phi * stiff / kzz) / phi
+    force = stiff * (a * i0 + b * ic) + gamma * (a0 * i0 + a1 * ic)
+    if force <= 0.0:
+        return 0.0, None, 0.0
+    moment = stiff * (a * ic + b * icc) + gamma * (a0 * ic + a1 * icc)
+    q = sigma * hh * n + core * moment / force * w - lift
+    return force, q, core * math.sqrt(max(0.0, 1.0 - (math.sin(phi) / phi) ** 2))
+
+
+def _rim_force(sigma, y, c, friction):
+    """F_n of rim σ from cp.rim_contact, its damper sized with ``friction`` as cp._derivative
+    sizes it."""
+    n = tuple(y[4:7])
+    omega = angular_velocity(tuple(y[7:10]), n, c.i1, c.i3)
+    return cp.rim_contact(
+        sigma, y[0], tuple(y[1:4]), n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3,
+        cp.stiffness_of(c), cp.damping_of(c), c.corner_radius, friction,
+    )[0]  # fmt: skip
+
+
 def test_sliding_damper_is_continuous_as_the_arc_closes():
     # A rim whose arc becomes the whole circle (a coin coming flat, the face's rim all pressed):
-    # the damper sized for the sliding normal mass (cp._sliding_damping) is taken at the arc's
-    # centroid, which moves continuously to the face's centre, so the damping and the force do
-    # not jump at a = b (they did by 1-4 % when ρ was taken at the lowest rim point and set to
-    # 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding 1 m/s either way, sinking 0.5 m/s.
+    # the damper sized for the sliding normal mass (cp._damper, via cp.rim_contact with the
+    # friction) is taken at the arc's centroid, which moves continuously to the face's centre,
+    # so the damping and the force do not jump at a = b (they did by 1-4 % when ρ was taken at
+    # the lowest rim point and set to 1 for the whole circle). μ = 1, tilt 0.02 rad, sliding
+    # 1 m/s either way, sinking 0.5 m/s.
     c = _contact(1.0)
-    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    zeta = cp.damping_of(c)
     corner = c.corner_radius
     core, hh = c.radius - corner, c.half_thickness - corner
     tilt = 0.02
     n = (math.sin(tilt), 0.0, math.cos(tilt))
-    s, w = cp._tangent_basis(n)
-    b = core * s
+    b = core * math.sin(tilt)
     for vx in (1.0, -1.0):
-        v, omega = (vx, 0.0, -0.5), (0.0, 0.0, 0.0)
         sides = []
         for a in (b * (1.0 - 1e-9), b * (1.0 + 1e-9)):
             z = corner - a + hh * n[2]  # σ = −1: a = corner − z + (h/2 − corner) n_z
-            damping = cp._sliding_damping(-1.0, z, v, n, omega, s, w, c, zeta)
-            fn = cp.rim_contact(
-                -1.0, z, v, n, omega, c.radius, c.half_thickness, c.mass, c.i1, c.i3, stiff,
-                damping, corner,
-            )[0]  # fmt: skip
+            y = np.array([z, vx, 0.0, -0.5, *n, 0.0, 0.0, 0.0])
+            damping = _expected_damping(-1.0, y, c, zeta)
+            fn = _rim_force(-1.0, y, c, c.friction)
+            assert math.isclose(fn, _reference_rim(-1.0, y, c, damping)[0], rel_tol=1e-12)
+            assert abs(fn / _rim_force(-1.0, y, c, 0.0) - 1.0) > 1e-5  # friction sizes it
             sides.append((damping, fn))
         (d0, f0), (d1, f1) = sides
-        assert abs(d0 / zeta - 1.0) > 1e-4  # friction does size this damper
+        assert abs(d0 / zeta - 1.0) > 1e-4
         assert math.isclose(d0, d1, rel_tol=1e-5)  # the arc opens as sqrt(b − a)
         assert math.isclose(f0, f1, rel_tol=1e-4)
 
 
-def _damping(y, c, sigma=-1.0):
-    n = tuple(y[4:7])
-    s, w = cp._tangent_basis(n)
-    omega = angular_velocity(tuple(y[7:10]), n, c.i1, c.i3)
-    return cp._sliding_damping(sigma, y[0], tuple(y[1:4]), n, omega, s, w, c, cp.damping_of(c))
-
-
 def test_sliding_damper_is_sized_for_the_collision_matrix_normal_mass():
     # A non-planar rim impact (tilt 1 rad towards azimuth 0.7) sliding one way along y, at
-    # 1 m/s and at 3 mm/s (below v_ε the friction's share falls linearly): ζ/sqrt(ρ),
+    # 1 m/s and at 3 mm/s (below v_ε the friction's share falls linearly): the rim's force from
+    # cp.rim_contact with the friction is the one of a damper ζ/sqrt(ρ),
     # ρ = 1 − μ K_zt·û |u|/sqrt(u² + v_ε²) / K_zz with K from impact.collision_matrix at the
     # arc's centroid; a shallow arc, so the centroid is near the lowest point.
     c = _contact(0.8)
@@ -248,23 +288,149 @@ def test_sliding_damper_is_sized_for_the_collision_matrix_normal_mass():
         y = _state(1.0, 0.7, 1e-7, (0.0, speed, -0.5), (0.0, 0.0, 0.0))
         expected = _expected_damping(-1.0, y, c, zeta)
         assert abs(expected / zeta - 1.0) > 0.02  # the slip along y does move the damper
-        assert math.isclose(_damping(y, c), expected, rel_tol=1e-12)
+        got = _rim_force(-1.0, y, c, c.friction)
+        assert math.isclose(got, _reference_rim(-1.0, y, c, expected)[0], rel_tol=1e-12)
 
 
 def test_sliding_damper_floor_holds_where_friction_jams_the_contact():
     # μ above 1.008 = 0.9 μ*, μ* = K_zz / max K_zt·û (≈ 1.12 for a nickel, near tilt 61°):
     # sliding at 1 m/s along the directions whose friction drives the contact into the table,
     # ρ < 0.1 and the damper is its floor, ζ/sqrt(0.1) (cp.SLIDING_MASS_FLOOR); below it the
-    # damper is the formula's.
+    # damper is the formula's: the rim's force is the reference's with either.
     for mu in (1.02, 1.5):
         c = _contact(mu)
         zeta = cp.damping_of(c)
-        sizes = []
+        dampers, forces = [], []
         for angle in np.linspace(0.0, 2 * math.pi, 721):
             v = (math.cos(angle), math.sin(angle), -0.5)
             y = _state(math.radians(61.0), 0.3, 1e-7, v, (0.0, 0.0, 0.0))
-            sizes.append((_damping(y, c), _expected_damping(-1.0, y, c, zeta)))
-        got, expected = np.array(sizes).T
-        floored = np.isclose(got, zeta / math.sqrt(0.1), rtol=1e-12)
+            damping = _expected_damping(-1.0, y, c, zeta)
+            dampers.append(damping)
+            forces.append((_rim_force(-1.0, y, c, mu), _reference_rim(-1.0, y, c, damping)[0]))
+        floored = np.isclose(dampers, zeta / math.sqrt(0.1), rtol=1e-12)
         assert floored.any() and not floored.all()
+        got, expected = np.array(forces).T
         np.testing.assert_allclose(got, expected, rtol=1e-12)
+
+
+def _reference_derivative(y, c):
+    """dy/dt of the contact phase assembled apart from cp._derivative (its module notes'
+    forces): each rim's normal force, centre of pressure and pivot radius from _reference_rim
+    (m_eff from impact.collision_matrix, not from the code under test) with the damper sized by
+    _expected_damping (the collision matrix at the arc's centroid, Stronge 2000 eq 5.7);
+    regularised Coulomb
+    friction −μ F_n u_t / sqrt(u_t² + v_ε²) at q; the pivoting torque −(μ r_t + ℓ_p) F_n
+    ω_z / sqrt(ω_z² + (v_ε/r)²); the rolling torque −ℓ_r F_n ω_h / sqrt(ω_h² + (v_ε/r)²);
+    gravity; ṅ = ω × n."""
+    zeta = cp.damping_of(c)
+    v, n, lm = np.asarray(y[1:4]), np.asarray(y[4:7]), np.asarray(y[7:10])
+    w = np.asarray(angular_velocity(tuple(lm), tuple(n), c.i1, c.i3))
+    eps, spin_eps = cp.SLIP_SPEED, cp.SLIP_SPEED / c.radius
+    force = np.array([0.0, 0.0, -c.mass * c.g])
+    torque = np.zeros(3)
+    for sigma in (-1.0, 1.0):
+        fn, q, rt = _reference_rim(sigma, y, c, _expected_damping(sigma, y, c, zeta))
+        if fn <= 0.0:
+            continue
+        q = np.asarray(q)
+        u = v + np.cross(w, q)
+        ft = -c.friction * fn * u[:2] / math.hypot(u[0], u[1], eps)
+        f = np.array([ft[0], ft[1], fn])
+        force += f
+        torque += np.cross(q, f)
+        torque[2] -= (
+            (c.friction * rt + c.pivoting_resistance) * fn * w[2] / math.hypot(w[2], spin_eps)
+        )
+        torque[:2] -= c.rolling_resistance * fn * w[:2] / math.hypot(w[0], w[1], spin_eps)
+    return np.concatenate([[v[2]], force / c.mass, np.cross(w, n), torque])
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.3, 1.0])
+@pytest.mark.parametrize("corner", [0.0, 2e-4])
+def test_derivative_equals_a_reference_assembled_from_the_public_pieces(mu, corner):
+    # cp._derivative computes each rim's arc, centroid and collision-matrix row once and shares
+    # them between the sliding-mass damper and m_eff (cp._rim with the friction): it must equal
+    # the derivative assembled from the public pieces (_reference_derivative) to rounding, on
+    # random states touching with one rim, with both (upright in the edge band) and lying
+    # nearly flat (the arc the whole circle), sliding fast and slower than v_ε.
+    rng = np.random.default_rng(2026)
+    c = coin_contact(
+        NICKEL, restitution=0.5, friction=mu, ending=CONTACT_ENDING, corner_radius=corner,
+        rolling_resistance=1e-4, pivoting_resistance=1e-4,
+    )  # fmt: skip
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    core, hh = c.radius - corner, c.half_thickness - corner
+    both = flat = 0
+    out = np.empty(10)
+    for k in range(600):
+        kind = k % 3
+        depth = rng.uniform(1e-7, 3e-5)
+        if kind == 0:  # one rim, any tilt
+            tilt = rng.uniform(0.05, math.pi - 0.05)
+        elif kind == 1:  # upright in the band: both rims, the upper one h′ sin(δ) less deep
+            tilt = math.pi / 2 + rng.uniform(-0.9, 0.9) * depth / (2.0 * hh)
+        else:  # nearly flat
+            tilt = rng.choice([0.0, math.pi]) + rng.normal(0.0, 1e-3)
+        azimuth = rng.uniform(0.0, 2 * math.pi)
+        n = np.array(
+            [math.sin(tilt) * math.cos(azimuth), math.sin(tilt) * math.sin(azimuth), math.cos(tilt)]
+        )
+        lowest = core * math.sqrt(max(0.0, 1.0 - n[2] ** 2)) + hh * abs(n[2]) + corner
+        z = lowest - depth
+        v = rng.normal(0.0, rng.choice([1e-3, 0.3]), 3)
+        omega = rng.normal(0.0, rng.choice([1.0, 100.0]), 3)
+        lm = c.i1 * omega + (c.i3 - c.i1) * (omega @ n) * n
+        y = np.array([z, *v, *n, *lm])
+        cp._derivative(y, out, c, stiff, zeta)
+        expected = _reference_derivative(y, c)
+        scale = np.array([1.0, *[c.g] * 3, *[1.0] * 3, *[c.mass * c.g * c.radius] * 3])
+        scale[1:4] += np.abs(expected[1:4])
+        scale[7:10] += np.abs(expected[7:10])
+        # 1e-12 of each component's own size or of its natural scale (g, m g r), whichever is
+        # larger: the same sums taken in another order differ by a few ulps of their terms.
+        np.testing.assert_array_less(np.abs(out - expected), 1e-12 * scale)
+        pressed = [
+            cp.rim_contact(
+                s_, z, tuple(v), tuple(n), tuple(omega), c.radius, c.half_thickness, c.mass,
+                c.i1, c.i3, stiff, 0.0, corner,
+            )[0] > 0.0  # the springs alone: in the table
+            for s_ in (-1.0, 1.0)
+        ]  # fmt: skip
+        both += all(pressed)
+        flat += kind == 2 and any(pressed)
+    assert both > 50 and flat > 50  # the cases meant are reached
+
+
+def test_upright_decision_takes_each_rims_damper_sized_for_its_sliding_mass():
+    # cp.upright_decided needs both rims pressed, each with its damper as cp._derivative sizes
+    # it (ζ/sqrt(ρ)). A nickel upright in its band (n = X) at 0.7 of its static depth, sliding
+    # sideways at 4.9 mm/s (the band's lowest point below v_ε, so the decision's slip test
+    # holds) and rising at v_z: the slip moves the two rims' dampers apart (ρ ≈ 1 ∓ 0.04 at
+    # μ 0.3), so near the v_z where one rim's force falls to 0 a decision from the
+    # frictionless ζ holds where the one from the sliding-mass dampers does not. The decision
+    # must be the latter's (_reference_rim, _expected_damping) on the whole scan; the scan
+    # reaches the states where the two differ, and both answers.
+    c = coin_contact(
+        NICKEL, restitution=0.5, friction=0.3, rest_speed=0.01, rolling_resistance=1e-4,
+        pivoting_resistance=1e-4, ending=CONTACT_ENDING,
+    )  # fmt: skip
+    stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    tilt = 0.5 * math.pi
+    n = (math.sin(tilt), 0.0, math.cos(tilt))
+    z = c.radius - 0.7 * cp.static_depth(c, stiff)
+    budget = cp.MAX_STEPS * cp.MAX_STEP
+    differ = 0
+    decisions = []
+    for vx in (4.9e-3, -4.9e-3):
+        for vz in np.linspace(0.0, 0.02, 201):
+            y = np.array([z, vx, 0.0, vz, *n, 0.0, 0.0, 0.0])
+            pressed = [
+                _reference_rim(s, y, c, _expected_damping(s, y, c, zeta))[0] > 0.0
+                for s in (-1.0, 1.0)
+            ]
+            frictionless = [_reference_rim(s, y, c, zeta)[0] > 0.0 for s in (-1.0, 1.0)]
+            decided = cp.upright_decided(y, c, stiff, zeta, budget)
+            assert decided == all(pressed), (vx, vz)
+            differ += all(pressed) != all(frictionless)
+            decisions.append(decided)
+    assert differ >= 4 and any(decisions) and not all(decisions)

@@ -102,7 +102,7 @@ def test_sliding_rim_impact_restitutes_with_e_as_stronges_law():
     """The defect found (2026-11-24): the damper was sized for the frictionless normal mass
     1/K_zz, so a sliding rim impact restituted with e′ ≠ e in the limit (here 0.5457 at e 0.5,
     J_n 3.0 % above Stronge's, a floor t_c does not remove). Sized for the mass friction leaves
-    (contact_phase._sliding_damping) it restitutes with e, and the phase converges to
+    (contact_phase._damper) it restitutes with e, and the phase converges to
     Stronge's law itself."""
     mu = 0.3
     c, n, v, w, lm = planar(mu)

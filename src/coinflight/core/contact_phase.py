@@ -9,31 +9,50 @@ and the next one, and says which well that is.
 **Experimental, opt-in** (``Surface(ending="contact")``; the default end of a landing is the
 planar rocking of :func:`coinflight.core.bounce.rock`).
 
-**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). The
-changes below (first same as last, the energy test's shortcut, one tangent basis) make a
-landing with this ending 1.24-1.39× cheaper per CPU second in one thread, measured with
-``python benchmarks/bench_bounce.py --contact-rates N --old-src DIR`` (vigorous tosses of a US
-nickel, e = 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); rounds
-alternated with the code before, main at 6061499, in a subprocess; medians of the rounds;
-the shared 2-core machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×;
-600 tosses at load 9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9
-1.31×, 1.39× and 1.34×; with the review's fixes (the arc's energy clamped at 0, the
-step tolerance a run-time argument, no chunk size), 300 tosses at load 4.2-4.8 (00:57 UTC)
-1.27× and 1.33×. Faces differed on 0-1 tosses of each run, statuses on none. The
-wall-clock rates with both threads move with the other processes' load (1.08-1.39× in the
-first two runs; e.g. 783 against 562 landings a second at load 10.6, 1,184 against 1,098 at 9.8-6.1)
-and are not the measure of the change. Quiet (load 1.4-1.8, 2026-11-24 01:46 UTC, the same
-command, 300 tosses, against the code before at 6061499): **2,954 a second against 2,245**
-(1.32×; one thread 1.29×), each toss its own e, μ 2,645 against 2,018 (1.31×; 1.34×); faces
-differing on 0 and 1 of 300. So 50,000 was then ~17× away. The sliding-mass damper
-(2026-11-24, "Restitution") makes each derivative dearer: quiet (load 0.8-1.1, 2026-11-24
-04:25 UTC, the same command against main at 507692d, before it, and at 51e4b64, before it
-but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×; one thread
-969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599 (0.68×;
-0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper alone
-merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
-rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300
-against 507692d. 50,000 is now ~25× away.
+**Speed** (issue 11 asks for 50,000 landings a second carried to rest on 2 cores). The changes
+below (first same as last, the energy test's shortcut, one tangent basis) make a landing with
+this ending 1.24-1.39× cheaper per CPU second in one thread, measured with ``python
+benchmarks/bench_bounce.py --contact-rates N --old-src DIR`` (vigorous tosses of a US nickel, e
+= 0.5, μ = 0.3, and each toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); rounds alternated with the
+code before, main at 6061499, in a subprocess; medians of the rounds; the shared 2-core
+machine): 300 tosses at load 10.6 (2026-11-23 23:56 UTC) 1.27× and 1.31×; 600 tosses at load
+9.8-6.1 (00:31 UTC) 1.24× and 1.36×; a reviewer's runs at load 2.4-3.9 1.31×, 1.39× and 1.34×;
+with the review's fixes (the arc's energy clamped at 0, the step tolerance a run-time argument,
+no chunk size), 300 tosses at load 4.2-4.8 (00:57 UTC) 1.27× and 1.33×. Faces differed on 0-1
+tosses of each run, statuses on none. The wall-clock rates with both threads move with the other
+processes' load (1.08-1.39× in the first two runs; e.g. 783 against 562 landings a second at
+load 10.6, 1,184 against 1,098 at 9.8-6.1) and are not the measure of the change. Quiet (load
+1.4-1.8, 2026-11-24 01:46 UTC, the same command, 300 tosses, against the code before at
+6061499): **2,954 a second against 2,245** (1.32×; one thread 1.29×), each toss its own e, μ
+2,645 against 2,018 (1.31×; 1.34×); faces differing on 0 and 1 of 300. So 50,000 was then ~17×
+away. The sliding-mass damper (2026-11-24, "Restitution") makes each derivative dearer: quiet
+(load 0.8-1.1, 2026-11-24 04:25 UTC, the same command against main at 507692d, before it, and at
+51e4b64, before it but with the DECIDED_UPRIGHT status) **1,998 a second against 2,998** (0.67×;
+one thread 969 against 1,465 per CPU second, 0.66×), each toss its own e, μ 1,778 against 2,599
+(0.68×; 0.69×); against 51e4b64 0.67× and 0.67-0.69× alike; against 51e4b64 with the damper
+alone merged, 0.98× and 1.01× in one thread, faces identical: the cost is the damper's, not the
+rigid contact's shared energy helper merged with it. Faces differing on 21 and 10 of 300 against
+507692d. 50,000 was then ~25× away. Then (2026-11-24, "fastrho") each rim's arc, centroid and
+collision-matrix row computed once per derivative and shared by the damper and m_eff
+(:func:`_rim` with the friction, :func:`_damper`), the rim inlined into the derivative and the
+tests after each step into the stepper (numba's ``inline="always"``; the derivative itself not,
+for its compile time, :func:`_derivative`), all identical to the bit (:func:`_derivative`,
+:func:`_integrate` say what was measured): the same command against main at 4f0dfa5 (2026-11-24
+06:20 UTC, load 1.0-1.4) **1,736 a second against 989** (1.76×; one thread 1,455 against 977 per
+CPU second, 1.49×), each toss its own e, μ 1,344 against 899 (1.50×; one thread 1,372 against
+907, 1.51×): the rate before the damper (1.50× 4f0dfa5, 1.51× in one thread, from the quiet
+figures above). Faces differing on 0 of 300 (the benchmark's "statuses 27/43" are its own
+mapping of DECIDED_UPRIGHT for a tree that has it too); face, bounces, first contact, settling
+time and status identical to the bit to 4f0dfa5's on 300 tosses in each of five settings (e, μ
+0.5, 0.3; 0.2, 0; 0.6, 0.9 with resistances; 0.4, 0.5 with a 0.3 mm corner radius; each toss its
+own e, μ). The derivative inlined too was 1.61× 4f0dfa5 (05:31 UTC, load 8.4-7.7; one thread
+1.63×; each toss its own e, μ 1.64×, 1.70×), 1.10× the code now in one run (06:22 UTC, load
+1.9-2.4; one thread 1.08×; each its own 1.08×, 1.13×), at twice the compile time; that code's
+faces and statuses on 2 × 2,000 of the benchmark's tosses equal to 4f0dfa5's, and so were those
+of the same tosses with ωx moved by one ulp (which moves 4 faces and 2 statuses of the 2,000
+with each toss its own e, μ, and none of the 2,000 at e 0.5, μ 0.3, in either code). Scaled by
+the quiet 1,998 a second, ~3,000 a second: 50,000 is ~17× away, and what is left is the number
+of steps (see below), not their price.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
@@ -255,7 +274,7 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   200 random rim impacts, e = 0.5, μ = 0.3), where Stronge's law restitutes it with e (module
   notes, "Convergence of a rim impact"). Each rim's ζ is therefore taken as ζ / sqrt(ρ),
   ρ = 1 + K_zt·(F_t/F_n) / K_zz at the centroid of the rim's arc (where the damper's m_eff
-  is taken) with the regularised friction's share F_t/F_n (:func:`_sliding_damping`; ρ ≥
+  is taken) with the regularised friction's share F_t/F_n (:func:`_damper`; ρ ≥
   :data:`SLIDING_MASS_FLOOR`), so a rim impact sliding one way restitutes with e, as Stronge's law
   does (a slip of fixed direction leaves the normal velocity linear in the normal impulse, so the
   energetic coefficient is the kinematic one: Stronge 2000, ch. 4). A face slap (linear,
@@ -454,7 +473,7 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      sliding impact by 4e-6 m/s at t_c 0.125 and 0.031 ms). Two rims touching in one impact
      were not examined: the floor is accounted for without them (and each rim's ρ uses its
      own single-contact K, the two contacts' coupled normal mass ignored, for upright rollers
-     too: :func:`_sliding_damping`).
+     too: :func:`_damper`).
   2. **The arc's pivoting friction** (physics of the compliant model, kept): μ r_t F_n about
      the vertical, r_t ≈ r φ*/√3 ∝ sqrt(depth) ∝ t_c^(2/5), so its angular impulse vanishes
      only as t_c^(2/5): the vertical part of the angular-momentum error, 0.118, 0.081, 0.060,
@@ -464,7 +483,7 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      softness's, like the resistances' ℓ F_n (which do not vanish at all: with ℓ_r = ℓ_p =
      1e-4 m the angular momentum stays 0.046 I1 ω from the rigid law at 0.031 ms).
 
-* μ 0.3 now (the damper for the sliding mass, :func:`_sliding_damping`, ρ at the arc's
+* μ 0.3 now (the damper for the sliding mass, :func:`_damper`, ρ at the arc's
   centroid; ``--converge`` prints these): the limit is Stronge's law to 0.00056 m/s (median
   of the 200; 90th percentile 0.0043, largest 0.030 m/s, 1.6 % of the lowest point's approach
   speed, on an impact whose slip turns), 0.00002 on the 19 sliding one way (J_t/(μ J_n) ≥
@@ -501,7 +520,8 @@ moves them. The upright decision still ends only coins that end on edge at rest
 (a handed toss at μ 0.3: mean 1,787 now, 1,802 with ρ at the lowest point, 1,762 on main;
 median 639 against 636); each costs more, the damper's size computed at every derivative: main's
 landings carried to rest per CPU second in one thread were 1.10-1.30× these in two runs of
-``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy).
+``bench_bounce.py --contact-rates 300 --old-src`` (03:00 UTC, load 3-5, noisy; quiet 1.5×,
+"Speed" above, which also says how that cost was taken back).
 """
 
 from __future__ import annotations
@@ -513,7 +533,6 @@ import numpy as np
 from numba import njit
 
 from coinflight.core.impact import (
-    _coupling,
     angular_velocity,
     cross,
     dot,
@@ -564,13 +583,13 @@ MAX_STEP = 1e-3
 """Longest step, s (also at most a sixteenth of a turn)."""
 SLIDING_MASS_FLOOR = 0.1
 """Least ratio ρ = 1 + K_zt·(F_t/F_n)/K_zz of a sliding rim's normal stiffness to its
-frictionless one that :func:`_sliding_damping` sizes the damper for (ρ ≤ 0 would be a contact
+frictionless one that :func:`_damper` sizes the damper for (ρ ≤ 0 would be a contact
 whose friction drives it into the table, where no mass fits; the damper is then at most
 sqrt(10) times its frictionless size). At the start of the 200 random rim impacts of
 ``benchmarks/bench_rim_impacts.py`` (seed 1; the slip's direction then): ρ in 0.75-1.27 at
 μ = 0.3, 0.50-1.54 at μ = 0.6, 0.17-1.89 at μ = 1 (ρ at the lowest rim point then). ρ ≤ 0
 needs μ above μ* = K_zz / max K_zt·û, 1.12 for a nickel (near a tilt of 61°), and the floor
-bites from μ ≈ 1.008; μ above 1 is not validated (:func:`_sliding_damping`)."""
+bites from μ ≈ 1.008; μ above 1 is not validated (:func:`_damper`)."""
 UPRIGHT_DECISION = True
 """Whether :func:`settle` ends a coin rolling upright in its edge band as soon as
 :func:`upright_decided` holds (the module notes, "Upright rollers"); False carries it on to
@@ -622,7 +641,9 @@ def _tangent_basis(n):
 
 
 @njit(cache=True)
-def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0):
+def rim_contact(
+    sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0, friction=0.0
+):
     """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
 
     Parameters
@@ -639,6 +660,10 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         a, the radius of the rim's rounded corners, m: the circle is then that of the core
         cylinder (``radius`` and ``hh`` less a) swept by a ball of radius a, which touches the
         table a below the circle (0: sharp corners).
+    friction : float
+        μ: with μ > 0 the damper is sized for the normal mass that friction leaves, ζ / sqrt(ρ)
+        (:func:`_damper`, the module notes' "Restitution"), as :func:`_derivative` sizes it;
+        0 (the default) the frictionless ζ.
 
     Returns
     -------
@@ -653,7 +678,9 @@ def rim_contact(sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta
         Elastic energy of the arc, κ ∫ d²/2 dφ, J.
     """
     s, w = _tangent_basis(n)
-    return _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner)
+    return _rim(
+        sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction
+    )
 
 
 @njit(cache=True)
@@ -680,13 +707,23 @@ def _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp):
     )
 
 
-@njit(cache=True)
-def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner):
+@njit(cache=True, inline="always")
+def _rim(
+    sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction=0.0
+):
     """:func:`rim_contact` with the coin's tangent basis (s, ŵ) of :func:`_tangent_basis` given
     (it depends on n alone: :func:`_derivative` computes it once for both rims). The arc's
     half-angle φ* = arccos(−A/B), its sine from its cosine, sin φ* = sqrt((1 − cos φ*)(1 +
     cos φ*)): one sine and cosine fewer than from φ*, and exactly 0 at φ* = π. The arc's
-    elastic energy is clamped at 0 (its closed form cancels on a short arc)."""
+    elastic energy is clamped at 0 (its closed form cancels on a short arc).
+
+    With ``friction`` μ > 0 the damper is sized for the normal mass that friction leaves,
+    ζ / sqrt(ρ) (:func:`_damper`), from the same arc and
+    centroid and the same row of the collision matrix as the frictionless m_eff = 1/K_zz: one
+    arccos, one centroid and one I⁻¹ product per rim and derivative, where the damper's own
+    helper (``_sliding_damping``, gone) first computed them twice (results identical to the bit,
+    ``tests/test_contact_friction.py``). ζ = 0 (the springs' energy alone, :func:`energy`)
+    skips the damper."""
     radius -= corner
     hh -= corner
     a = corner - z - sigma * hh * n[2]
@@ -708,10 +745,11 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
     a0 = -(v[2] + sigma * hh * wn[2])
     a1 = -radius * ww[2]
     # Damping 2 ζ sqrt(K_t m_eff) ḋ, K_t = 2 φ κ, m_eff at the arc's centroid.
-    centroid = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
-    up = (0.0, 0.0, 1.0)
-    m_eff = 1.0 / _coupling(centroid, up, up, n, mass, i1, i3)
-    gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
+    gamma = 0.0
+    if zeta > 0.0:
+        centroid = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
+        zeta, m_eff = _damper(centroid, v, n, omega, mass, i1, i3, friction, zeta)
+        gamma = zeta * math.sqrt(2.0 * phi * stiffness * m_eff) / phi
     force = elastic + gamma * (a0 * i0 + a1 * ic)
     if force <= 0.0:
         return 0.0, (0.0, 0.0, 0.0), 0.0, energy
@@ -729,16 +767,22 @@ def _rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta,
 
 
 @njit(cache=True)
-def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
-    """ζ of rim σ's damper for the normal effective mass its friction leaves (module notes,
-    "Restitution"): ζ / sqrt(ρ), ρ = 1 + K_zt·(F_t/F_n) / K_zz with the mobility K, the slip
+def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
+    """(ζ / sqrt(ρ), 1/K_zz) of a rim whose arc's centroid is rc (relative to the centre of
+    mass, m): the damping ratio for the normal mass its friction leaves (ζ itself for μ = 0) and
+    the frictionless normal mass m_eff = 1/K_zz there that :func:`_rim` sizes the damper with,
+    from one row of the collision matrix K b = b/m + (I⁻¹(rc × b)) × rc
+    (Stronge 2000, eq 5.7; :func:`coinflight.core.impact.collision_matrix`): K b·Z = b·Z/m +
+    (rc × b)·I⁻¹(rc × Z), the product I⁻¹(rc × Z) shared by b = Z, X, Y. K_zz so is the one of
+    ``impact._coupling(rc, Z, Z, ...)`` to the bit (rc × Z = (rc_y, −rc_x, 0) there too).
+
+    The module notes' "Restitution": ρ = 1 + K_zt·(F_t/F_n) / K_zz with the mobility K, the slip
     u_t and F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) (the regularised friction's share) all taken at
-    the centroid of the rim's arc, the point whose normal mass 1/K_zz :func:`_rim` sizes the
-    damper for (friction acts at the centre of pressure q, which depends on the damper's own
-    force; q and the centroid lie on one line, both tend to the lowest point for a short arc
-    and to the face's centre as the arc closes, so ρ is continuous as the arc becomes the whole
-    circle, near 1 for a coin flat on the table); ρ at least :data:`SLIDING_MASS_FLOOR`; ζ
-    itself for a rim off the table.
+    the centroid of the rim's arc, the point whose normal mass 1/K_zz sizes the damper (friction
+    acts at the centre of pressure q, which depends on the damper's own force; q and the
+    centroid lie on one line, both tend to the lowest point for a short arc and to the face's
+    centre as the arc closes, so ρ is continuous as the arc becomes the whole circle, near 1 for
+    a coin flat on the table); ρ at least :data:`SLIDING_MASS_FLOOR`.
 
     ρ ≤ 0 where μ K_zt·u_t/sqrt(u_t² + v_ε²) ≥ K_zz: friction then drives the contact into the
     table faster than the normal force pushes it out, a Painlevé-type jam. This needs μ above
@@ -752,22 +796,16 @@ def _sliding_damping(sigma, z, v, n, omega, s, w, c, zeta):
     across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
     normal mass is ignored, and the damper is not the one that restitutes such an impact with
     e (not examined: the rigid law has one contact point)."""
-    corner = c.corner_radius
-    core, hh = c.radius - corner, c.half_thickness - corner
-    a, b = corner - z - sigma * hh * n[2], core * s  # _rim's d(φ) = a + b cos φ
-    if a + b <= 0.0:  # no arc
-        return zeta
-    phi, sp, _ = _arc(a, b)
-    rc = _arc_centroid(sigma, n, w, core, hh, corner, phi, sp)
-    u = cross(omega, rc)
-    # K b·Z = b·Z/m + (rc × b)·I⁻¹(rc × Z) (impact._coupling), I⁻¹(rc × Z) shared by b = Z, x, y.
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
-    turn = inverse_inertia_apply(arm, n, c.i1, c.i3)
-    kzz = 1.0 / c.mass + dot(arm, turn)
-    kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
-    kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
-    ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], c.friction, SLIP_SPEED)
-    return zeta / math.sqrt(ratio)
+    turn = inverse_inertia_apply(arm, n, i1, i3)
+    kzz = 1.0 / mass + dot(arm, turn)
+    if friction > 0.0:
+        u = cross(omega, rc)
+        kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
+        kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
+        ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
+        zeta = zeta / math.sqrt(ratio)
+    return zeta, 1.0 / kzz
 
 
 @njit(cache=True)
@@ -777,14 +815,42 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
     (u_x, u_y) (m/s), F_t/F_n = −μ u_t / sqrt(u_t² + v_ε²) the regularised friction's share
     (v_ε = ``slip_speed``): the ratio of the normal effective mass's inverse with that friction,
     K_zz + K_zt·F_t/F_n, to the frictionless K_zz (Stronge 2000, eq 5.7 and ch. 4), as
-    :func:`_sliding_damping` sizes a rim's damper with it."""
+    :func:`_damper` sizes a rim's damper with it."""
     share = friction / math.sqrt(ux * ux + uy * uy + slip_speed * slip_speed)
     return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
 
 
 @njit(cache=True)
 def _derivative(y, out, c, stiffness, zeta):
-    """dy/dt of the state y = (z, v, n, L) in contact (the forces of the module notes)."""
+    """dy/dt of the state y = (z, v, n, L) in contact (the forces of the module notes).
+
+    Its cost (2026-11-24, one thread, load 5-9; 1,000 one-rim states, μ 0.3, resistances 1e-4 m,
+    200 × 1,000 calls, CPU time, medians of 7): **126 ns a call**, against 228 at main 4f0dfa5
+    (the sliding-mass damper then computed each rim's arc, centroid and I⁻¹ product twice, once
+    in ``_sliding_damping``, now gone, and once in :func:`_rim`) and 142 before the damper
+    (507692d).
+
+    :func:`_rim` is inlined into it (``inline="always"``: numba's IR inlining; LLVM had left it
+    a call with 17 arguments; ~8 % of a step, :func:`_integrate`): results identical to the bit
+    (12,000 random states against 4f0dfa5). This one is **not** inlined into
+    :func:`_integrate`'s seven calls, a trade measured (2026-11-24 06:12-06:19 UTC, load
+    2.3-5.8; compilation: CPU time of :func:`settle`'s first call in a fresh NUMBA_CACHE_DIR;
+    speed: 300 nickel tosses, e 0.5, μ 0.3, carried to rest by ``outcomes.table.land`` in one
+    thread, landings a CPU second, median of 3; two runs each): inlined there too, **16.8-17.5
+    s** to compile and **1,669** a CPU second; not (the code now) **8.8-9.3 s** and
+    **1,500-1,503** (the same steps, so ~1,120 ns a step against ~1,010); 4f0dfa5 8.6-8.7 s and
+    1,003-1,004. Inlining bought 11 % more speed for twice the compilation, which every fresh
+    clone, CI run, docs build and edit of this module pays (a reviewer's run at higher load: 23
+    s against 12 s, 2026-11-24): kept out, the rate is 1.50× 4f0dfa5's at its compile time.
+    Tried too: :func:`_rim` not inlined but this one, 12.8-15.7 s and 1,514-1,532; this one and
+    :func:`_rim` inlined but not :func:`below_barrier` and :func:`upright_decided`, 16.4 s and
+    1,557-1,570. Measured and not kept: the coin's inverse inertia by reciprocals instead of
+    divisions, and one square root and two divisions fewer in the damper's ζ sqrt(K_t
+    m_eff)/sqrt(ρ) (no change beyond the noise: the divider is not what holds it; both would
+    change results at rounding); the stages of :func:`_integrate` in one loop with a single
+    inlined call (compile time as before, but 1,120 against 1,055 ns a step). What is left: the
+    arc's arccos (libm's; ~35 ns of a call when knocked out), the square roots and divisions of
+    the forces."""
     mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
@@ -798,9 +864,7 @@ def _derivative(y, out, c, stiffness, zeta):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
     for sigma in (lower, -lower):
-        damping = zeta
-        if mu > 0.0:
-            damping = _sliding_damping(sigma, y[0], v, n, omega, s, w, c, zeta)
+        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
         fn, q, rt, _ = _rim(
             sigma,
             y[0],
@@ -815,8 +879,9 @@ def _derivative(y, out, c, stiffness, zeta):
             i1,
             i3,
             stiffness,
-            damping,
+            zeta,
             c.corner_radius,
+            mu,
         )
         if fn <= 0.0:
             continue
@@ -863,7 +928,7 @@ def energy(y, c, stiffness):
     return _with_springs(_motion_energy(y, c), y, c, stiffness)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _motion_energy(y, c):
     """½ m v² + ½ L·ω + m g z of the state y, J: :func:`energy` without the springs'."""
     v = (y[1], y[2], y[3])
@@ -873,7 +938,7 @@ def _motion_energy(y, c):
     return 0.5 * c.mass * dot(v, v) + 0.5 * dot(lm, omega) + c.mass * c.g * y[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _motion_free_energy(y, c):
     """(e, f): :func:`_motion_energy` and its part that :func:`free_energy` sets against the
     barrier without springs: all of it with friction or resistances, else less the horizontal
@@ -923,13 +988,13 @@ def _corner_energy(ln, lz, nz, c):
     return c.barrier + 0.5 * ln * ln / c.i3 + 0.5 * (lz - ln * nz) ** 2 / (c.i1 * (1.0 - nz * nz))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _dissipative(c):
     """Whether anything but the normal damping dissipates (friction or a resistance)."""
     return c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _barrier(y, c):
     """The barrier of :func:`free_energy`, J: m g ρ with friction or resistances, else the least
     energy on the corners of the well at the conserved L·n, L_z."""
@@ -959,7 +1024,7 @@ def free_energy(y, c, stiffness):
     return e, _barrier(y, c)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def below_barrier(y, c, stiffness):
     """``free < barrier`` of :func:`free_energy`, decided alike to the bit, but without the
     springs' energy (two :func:`rim_contact` sums) when the rest of the energy already reaches
@@ -967,7 +1032,8 @@ def below_barrier(y, c, stiffness):
     where the closed form's cancellation on a short arc gives down to −5e-20 J) and rounded
     addition and subtraction are monotonic, so adding them cannot bring the sum below it. The
     test :func:`_integrate` makes after every step (~10 % of a step's time before this
-    shortcut)."""
+    shortcut); inlined there (``inline="always"``, with the energy's pieces: ~3 % of a step,
+    2026-11-24, :func:`_integrate`)."""
     e, free = _motion_free_energy(y, c)
     barrier = _barrier(y, c)
     if free >= barrier:
@@ -1009,7 +1075,7 @@ into a settled one);
 1 ms shortens the steps below this."""
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def upright_decided(y, c, stiffness, zeta, budget):
     """True if the coin in state y = (z, v, n, L) rolls upright on both rims of its edge band
     and the rigid wheel's bounds hold with :data:`UPRIGHT_MARGIN` to spare (module notes,
@@ -1023,7 +1089,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
     of the band's m g h′; the friction the turn and the rolling resistance need,
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
     both rims pressed (:func:`rim_contact`, with each rim's damper as :func:`_derivative` sizes
-    it, :func:`_sliding_damping`: the force they exert now); the
+    it, :func:`_damper`: the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
     coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
@@ -1067,10 +1133,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
         return False
     s, w = _tangent_basis(n)
     for sigma in (-1.0, 1.0):
-        damping = zeta
-        if c.friction > 0.0:  # each rim's damper as _derivative sizes it
-            damping = _sliding_damping(sigma, y[0], v, n, omega, s, w, c, zeta)
-        fn, _, _, _ = _rim(
+        fn, _, _, _ = _rim(  # each rim's damper as _derivative sizes it
             sigma,
             y[0],
             v,
@@ -1084,8 +1147,9 @@ def upright_decided(y, c, stiffness, zeta, budget):
             i1,
             i3,
             stiffness,
-            damping,
+            zeta,
             c.corner_radius,
+            c.friction,
         )
         if fn <= 0.0:
             return False
@@ -1173,6 +1237,19 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
 
     Returns (time advanced, accepted steps, :class:`Ending`): RUNNING (not settled), SETTLED
     (by the energy test) or DECIDED (by :func:`upright_decided`, with ``decide``).
+
+    A step's cost (2026-11-24, one thread, load 6-9: the 90 tosses of 120 vigorous nickel
+    tosses, e 0.5, μ 0.3, seed 3, that :func:`coinflight.core.bounce.bounce_loop` hands here,
+    each carried to rest, 73,262 steps, CPU time, best of 3, three runs): **1,055-1,069 ns**
+    with :func:`_derivative` and :func:`_rim` inlined, 1,026-1,044 with :func:`below_barrier`
+    inlined too and 1,006-1,019 with :func:`upright_decided` too; the code now leaves
+    :func:`_derivative` a call (its compile time: :func:`_derivative`), ~1,120 (1,500 against
+    1,669 landings a CPU second, the same steps), against 1,677-1,706 at main 4f0dfa5 and 1,136
+    before the sliding-mass damper (507692d); the same steps to the one. Of it (0.1 s of each
+    toss), ~960 ns without the tests after each step (:func:`below_barrier`,
+    :func:`upright_decided`), ~70 ns more with them; the six derivatives ~6 × 126 ns
+    (:func:`_derivative`); the stepper's own arithmetic (its error norm's ten divisions and one
+    power) the rest.
     """
     k1 = np.empty(10)
     k2 = np.empty(10)
