@@ -148,17 +148,22 @@ lands the same 1,500 vigorous tosses here (sharp corners, ℓ_r = ℓ_p = 1e-4 m
 bounded by a length times the normal force; pyramidal cone, RK4 at 0.1 ms, contact time constant
 1 ms, damping calibrated to e by a flat drop; each toss carried to rest or 20 s past its first
 contact). Same well at the first contact 99.3 %. P(edge) among the tosses handed to this phase,
-here against MuJoCo on the same tosses: **0.123 ± 0.010 against 0.012 ± 0.003** (e 0.5, μ 0.3;
-1,077 handed) and **0.439 ± 0.015 against 0.043 ± 0.006** (μ 0.6; 1,067); of all tosses 0.088
-against 0.011 and 0.312 against 0.035 (MuJoCo: 2 and 11 tosses still moving at 20 s, counted by
-their well). On edge in both engines 2 and 23 tosses, here only 130 and 445, in MuJoCo only 14
-and 30. MuJoCo's edge-enders stand on their rim at least as long as ours (median 14.6 and 10.9 s
-upright, against 6.7 and 7.9 s here): both engines hold a coin that rolls upright in the flat
-band until the rolling resistance stops it, but MuJoCo brings about ten times fewer coins there.
+here against MuJoCo on the same tosses: **0.115 ± 0.010 against 0.012 ± 0.003** (e 0.5, μ 0.3;
+1,077 handed) and **0.435 ± 0.015 against 0.043 ± 0.006** (μ 0.6; 1,067); of all tosses 0.083
+against 0.011 and 0.309 against 0.035 (MuJoCo: 2 and 11 tosses still moving at 20 s, counted by
+their well). On edge in both engines 2 and 20 tosses, here only 122 and 444, in MuJoCo only 14
+and 33. MuJoCo's edge-enders stand on their rim at least as long as ours (median 14.6 and 10.9 s
+upright, against 7.1 and 7.8 s here; this phase's figures of this paragraph re-measured with the
+sliding-mass damper, 2026-11-24 04:59-05:44 UTC, main 4f0dfa5, load 1.9 at the start and 6.0
+at the end: before it 0.123 and 0.439, of all 0.088 and 0.312, on edge in both 2 and 23, here
+only 130 and 445, upright 6.7 and 7.9 s, from the hand-off states 49, 0.110 ± 0.015; MuJoCo's
+are the 2026-11-23 run's, its runs do not involve this phase): both engines hold a coin that
+rolls upright in the flat band until the rolling resistance stops it, but MuJoCo brings about
+ten times fewer coins there.
 Started from this phase's own hand-off states (the impacts left out; ``--handoff-only``, 600
 tosses, seed 2026, 446 handed, e 0.5, μ 0.3, load 2), MuJoCo again leaves 0.013 ± 0.005 on edge
-where this phase leaves 0.110 ± 0.015 (MuJoCo 6 of 446 with Euler and with RK4 alike, in 23 and
-175 s; this phase 49; the same face on 66-68 %; on 104 of these, Euler or RK4, a pyramidal or
+where this phase leaves 0.099 ± 0.014 (MuJoCo 6 of 446 with Euler and with RK4 alike, in 23 and
+175 s; this phase 44; the same face on 66-68 %; on 104 of these, Euler or RK4, a pyramidal or
 elliptic cone, a time constant of 1 or 0.5 ms, a stiffer impedance or no-slip friction all leave
 0 or 1 on edge against 8 here). The rim is not the difference: MuJoCo's cylinder has the same
 static edge well (two contact points; a coin tilted 5° from upright comes back, at 6° it falls)
