@@ -80,10 +80,19 @@ def draws(n: int, seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nda
     return omega, v0, e, mu
 
 
-def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-def]
-    """Carry the handed state ``y`` on to rest in chunks of ``chunk`` s: the first firing of
-    each predictor (time, steps, face; NaN/−1 if never), the upright decision's first holding,
-    the total time and steps, whether it settled and its face at rest."""
+def last_well_change(wells: list[tuple[float, int, int]], final: int) -> int:
+    """The index in ``wells`` (records (time, steps, well) in order) of the first record after
+    which the well is never other than ``final``: the "last well change" oracle's stop (0 when
+    every record is in ``final``; ``len(wells)`` when the last one is not)."""
+    return max((i for i, w in enumerate(wells) if w[2] != final), default=-1) + 1
+
+
+def carry(y: np.ndarray, c, chunk: float, rtol: float = cp.RTOL) -> dict:  # type: ignore[no-untyped-def]
+    """Carry the handed state ``y`` on to rest in chunks of ``chunk`` s at the step tolerance
+    ``rtol``: the first firing of each predictor (time, steps, face; NaN/−1 if never), the
+    upright decision's first holding, the total time and steps, whether it settled and its
+    face at rest; ``"oracle"`` is (time, steps) of the last well change
+    (:func:`last_well_change`)."""
     k = fp.SHARES.shape[0]
     stiffness = cp.stiffness_of(c)
     fire_t = np.full(k + 4, np.nan)
@@ -112,14 +121,14 @@ def carry(y: np.ndarray, c, chunk: float) -> dict:  # type: ignore[no-untyped-de
             break
         before = stats[modes].copy()
         dt, ds, ended = cp.advance(
-            y, chunk, c, settle_check=True, max_steps=cp.MAX_STEPS - steps, stats=stats
+            y, chunk, c, settle_check=True, max_steps=cp.MAX_STEPS - steps, stats=stats, rtol=rtol
         )
         if before[1] < 0.0 <= stats[modes, 1]:  # upright_decided first held in this chunk
             fire_t[k], fire_s[k], fire_f[k] = t + stats[modes, 0], steps + stats[modes, 1], 2
         t += dt
         steps += ds
     final = resting_face(y[6], c.edge_sine)
-    last = max((i for i, w in enumerate(wells) if w[2] != final), default=-1) + 1
+    last = last_well_change(wells, final)
     fire_t[k + 1], fire_s[k + 1], fire_f[k + 1] = wells[last][0], wells[last][1], final
     first = min(i for i, w in enumerate(wells) if w[2] == final)
     fire_t[k + 2], fire_s[k + 2], fire_f[k + 2] = wells[first][0], wells[first][1], final

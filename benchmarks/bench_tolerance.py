@@ -251,8 +251,11 @@ def carry(
     base_face: np.ndarray,
     base_status: np.ndarray,
     rtol: float,
+    durations: np.ndarray | None = None,
 ) -> Run:
-    """Every handed state carried to its end at ``rtol`` (what ``contact_phase.settle`` does)."""
+    """Every handed state carried to its end at ``rtol`` (what ``contact_phase.settle`` does),
+    or for at most ``durations[k]`` s of simulated time (None: no limit; a toss stopped by it is
+    UNSETTLED, with the well it is in then)."""
     from coinflight.core import contact_phase as cp
     from coinflight.core.impact import resting_face
     from coinflight.core.outcome import Status
@@ -267,9 +270,10 @@ def carry(
     for k in np.flatnonzero(handed):
         y = states[k].copy()
         c = cs[k]
+        limit = math.inf if durations is None else float(durations[k])
         t0 = time.process_time()
         t, steps, ended = cp.advance(
-            y, math.inf, c, settle_check=True, decide=cp.UPRIGHT_DECISION, rtol=rtol
+            y, limit, c, settle_check=True, decide=cp.UPRIGHT_DECISION, rtol=rtol
         )
         run.cpu[k] = time.process_time() - t0
         run.face[k] = resting_face(y[6], c.edge_sine)

@@ -1,0 +1,473 @@
+"""How fast can the contact phase soundly be? Its measured routes combined on the same tosses.
+
+    python benchmarks/bench_ceiling.py [N] [--seed S] [--rounds R] [--rate L] [--chunk DT]
+        [--floor-budget STEPS] [--settings 0,1,2]
+
+Issue 11 asks for 50,000 landings a second carried to rest on 2 cores. The routes measured
+one at a time before (``bench_predictors.py``, ``bench_tolerance.py``, ``bench_contact.py``,
+``bench_rigid.py``) are measured here **together, on the same handed tosses**: the N vigorous
+nickel tosses of ``bench_bounce.tosses(N, S)`` (ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s,
+v0 ~ U(1.5, 3) m/s, 0.8 m drop, heads up) on the surfaces of ``bench_tolerance.SETTINGS`` (e 0.5
+μ 0.3; e 0.5 μ 0.6; each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) from
+``bench_bounce.own_rates``, seed 7 whatever S; ``bench_tolerance.records``), resistances
+ℓ_r = ℓ_p = 1e-4 m (the surface's). Each toss's bounces run once
+(``bench_contact.handoff``); a toss handed to the contact phase is then carried by
+:func:`coinflight.core.contact_phase.advance` (``bench_tolerance.carry``: one thread, CPU time
+per toss) as:
+
+1. **shipped**: RTOL 1e-7, the upright decision on (what ``land`` does);
+2. **RTOL 1e-5**: the same with the looser step tolerance;
+3. **oracle**: stopped at the toss's last well change (or at the upright decision, or by the
+   energy test, whichever first), at 1e-7 and at 1e-5. The last well change comes from a
+   full run's record (``bench_predictors.carry`` at that tolerance: the toss carried on to
+   rest without the upright decision in ``--chunk`` pieces, its well after each;
+   ``bench_predictors.last_well_change``), the first chunk end after which the coin is never
+   outside the well it ends in: the best any sound "cannot leave its well" rule can do;
+4. **hops**: the steps and simulated time spent off the table (:func:`contact_mode`, from
+   ``advance``'s ``stats``) in each variant. Hops flown in closed form would remove them; counted
+   as removed at zero cost (:func:`hop_factor`), an upper bound of that route's gain;
+5. **a floor from the motion itself**, at 1e-7 up to the oracle's stop: the rotation
+   ∫|ω| dt (:func:`rotation`, the trapezoid rule on the states after each accepted step) and
+   the contact episodes (touchdowns, :func:`episodes`) of each toss, and the steps an ideal
+   integrator would need if each of its steps could turn the coin by at most the angle the
+   shipped stepper's median step turns it (:func:`weighted_median` of |ω| h over the steps):
+   ∫|ω| dt summed over the tosses over that angle. **An estimate, not a proof**: it assumes
+   that a step's accuracy is set by how far the coin turns in it, not by the contact's
+   stiffness, the impacts' few-millisecond pulses or the friction's stick-slip, all of which
+   hold the compliant stepper's steps now.
+
+The states after each step are those of the shipped run itself: ``advance`` called from the
+handed state with ``max_steps`` k, 2k, 3k, ... (a call reproduces the first k steps of one call
+to the bit; no restart), k = 1 while the toss's steps N keep the cost N²/2 within
+``--floor-budget`` steps, else k = ceil(N² / (2 budget)) (then a segment's turn is its mean
+turn per step, and two hops within one segment count as one touchdown).
+
+Timings: ``--rounds`` rounds, the four carried variants (and the bounces of all N tosses) each
+timed once a round, their order rotated between rounds; the medians over the rounds of each
+variant's total CPU time over the handed tosses. The factors are ratios of those totals (the
+rate of landings is set by the total, not by the median toss). The contact phase's factor F
+enters the landings through the bounces it leaves alone: a landing's CPU is B + P (B the
+bounces of all tosses, P the phase of the handed ones), so the landings run
+(B + P) / (B + P/F) times faster (:func:`landing_factor`, Amdahl's law). The landings a second
+on 2 cores: ``--rate`` (default 2,923, e 0.5 μ 0.3, ``python benchmarks/bench_bounce.py
+--contact-rates 300``, quiet, 2026-11-24 07:15 UTC, load 0.8), scaled to the other settings by
+their one-thread CPU per landing, B + P, measured here (:func:`combined`).
+
+The **combined ceiling**: the oracle at RTOL 1e-5 (measured directly, not a product) times
+the hops' bound at equal step price, through the bounces. Beside it, as a stated hypothetical
+only, the rigid contact's accepted steps a simulated second (``core/rigid_contact.py``,
+"Speed": 1,915 against 3,016 on the one-rim stretches, :data:`RIGID_STEPS`) taken at the
+compliant step's price, which they do not have (a rigid step is ~1.7× dearer: 0.73× as fast as
+measured).
+
+Results: (filled in below after the run.)
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("NUMBA_NUM_THREADS", "1")  # before numba is imported: one thread
+
+import argparse
+import math
+import statistics
+import time
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+import bench_contact
+import bench_predictors
+import bench_tolerance
+from coinflight.core import bounce
+from coinflight.core import contact_phase as cp
+from coinflight.core.impact import angular_velocity
+
+FREE = cp.MODES.index("free")
+"""The index of a hop (off the table) among :data:`coinflight.core.contact_phase.MODES`."""
+RIGID_STEPS = 3_016 / 1_915
+"""Compliant over rigid accepted steps a simulated second on the same one-rim stretches
+(``python benchmarks/bench_rigid.py 300 --rounds 3``, 2026-11-24 03:39 UTC, load 6.2;
+``core/rigid_contact.py``, "Speed"): the rigid contact's gain were its step as cheap as the
+compliant one (it is ~1.7× dearer: 0.73× as fast, measured)."""
+TARGET = 50_000.0
+"""Issue 11's landings a second carried to rest on 2 cores."""
+RATE = 2_923.0
+"""Landings a second on 2 cores with the contact ending, e 0.5 μ 0.3 (``python
+benchmarks/bench_bounce.py --contact-rates 300``, quiet, 2026-11-24 07:15 UTC, load 0.8)."""
+STEP_TURN = math.pi / 8.0
+"""The largest angle the shipped stepper lets a step turn the coin, rad (``contact_phase``'s
+:data:`~coinflight.core.contact_phase.MAX_STEP`: "at most a sixteenth of a turn")."""
+VARIANTS = ("shipped 1e-7", "rtol 1e-5", "oracle 1e-7", "oracle 1e-5")
+"""The carried variants, in their first round's order."""
+
+
+def rotation(times: np.ndarray, speeds: np.ndarray) -> float:
+    """∫|ω| dt, rad, by the trapezoid rule over the samples (``times`` increasing, s; ``speeds``
+    |ω| there, rad/s): exact for |ω| linear between samples (constant: |ω| T)."""
+    t = np.asarray(times, dtype=float)
+    w = np.asarray(speeds, dtype=float)
+    if len(t) < 2:
+        return 0.0
+    return float(np.sum(0.5 * (w[1:] + w[:-1]) * np.diff(t)))
+
+
+def segment_turns(times: np.ndarray, speeds: np.ndarray) -> np.ndarray:
+    """The angle turned in each interval between consecutive samples (trapezoid), rad."""
+    t = np.asarray(times, dtype=float)
+    w = np.asarray(speeds, dtype=float)
+    return 0.5 * (w[1:] + w[:-1]) * np.diff(t)
+
+
+def episodes(modes: Sequence[int], hopped: Sequence[bool]) -> int:
+    """Contact episodes (touchdowns) of a sampled run: ``modes`` the
+    :func:`~coinflight.core.contact_phase.contact_mode` at each sample (the first the handed
+    state), ``hopped[i]`` whether any step between samples i and i + 1 was a hop (one shorter
+    than ``modes``). An episode starts at a first sample in contact, at each sample in contact
+    after one off the table, and once for a stretch between two samples in contact with a hop
+    inside it (a lower bound when stretches hold more than one step: two hops in one count
+    once)."""
+    if len(modes) == 0:
+        return 0
+    count = int(modes[0] != FREE)
+    for i in range(1, len(modes)):
+        if modes[i] == FREE:
+            continue
+        if modes[i - 1] == FREE or hopped[i - 1]:
+            count += 1
+    return count
+
+
+def weighted_median(values: np.ndarray, weights: np.ndarray) -> float:
+    """The median of ``values`` each counted ``weights`` times (the lower median for an even
+    total, as the value at the ⌈W/2⌉-th place); NaN when nothing is counted."""
+    v = np.asarray(values, dtype=float)
+    w = np.asarray(weights, dtype=float)
+    keep = w > 0
+    if not keep.any():
+        return math.nan
+    order = np.argsort(v[keep])
+    v, cum = v[keep][order], np.cumsum(w[keep][order])
+    return float(v[np.searchsorted(cum, 0.5 * cum[-1])])
+
+
+def hop_factor(stats: np.ndarray) -> float:
+    """The contact phase's speed-up if its hops cost nothing: all steps over the steps not off
+    the table (``stats`` rows per mode of :data:`~coinflight.core.contact_phase.MODES`, columns
+    (time, steps), summed over tosses), at equal step price (an upper bound: a hop's step is the
+    cheapest, its derivative has no contact)."""
+    steps = float(np.sum(stats[: len(cp.MODES), 1]))
+    left = steps - float(stats[FREE, 1])
+    return steps / left if left > 0 else math.inf
+
+
+def landing_factor(bounces: float, phase: float, factor: float) -> float:
+    """How many times faster a landing gets when its contact phase's CPU ``phase`` gets
+    ``factor`` times cheaper and its bounces' CPU ``bounces`` not (Amdahl's law,
+    (B + P) / (B + P/F))."""
+    return (bounces + phase) / (bounces + phase / factor)
+
+
+def combined(
+    rate: float, bounces: float, phase: float, factors: Sequence[float]
+) -> tuple[float, float]:
+    """(the contact phase's factor, the landings a second): ``rate`` landings a second with
+    the phase made the product of ``factors`` cheaper, through :func:`landing_factor`."""
+    f = float(np.prod(factors))
+    return f, rate * landing_factor(bounces, phase, f)
+
+
+def handoffs(cs: list[Any], omega: np.ndarray, v0: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Each toss's hand-off (``bench_contact.handoff``): states (n, 10), handed, and for the
+    tosses not handed their face and status (``bench_tolerance.carry``'s base)."""
+    n = len(cs)
+    states = np.zeros((n, 10))
+    handed = np.zeros(n, dtype=bool)
+    face, status = np.full(n, -1), np.full(n, -1)
+    for k in range(n):
+        w = (omega[k, 0], omega[k, 1], omega[k, 2])
+        states[k], handed[k] = bench_contact.handoff(w, 1.0, v0[k], cs[k])
+        if not handed[k]:
+            out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
+            face[k], status[k] = out[0], out[4]
+    return states, handed, face, status
+
+
+def bounce_cpu(cs: list[Any], omega: np.ndarray, v0: np.ndarray) -> float:
+    """CPU s of the bounces of all tosses up to their end or hand-off (what a landing spends
+    outside the contact phase, but for ``land``'s own overhead)."""
+    t0 = time.process_time()
+    for k in range(len(cs)):
+        bounce.bounce_loop(
+            (omega[k, 0], omega[k, 1], omega[k, 2]), 1.0, v0[k], cs[k], bounce.MAX_IMPACTS
+        )
+    return time.process_time() - t0
+
+
+def mode_stats(
+    states: np.ndarray, cs: list[Any], handed: np.ndarray, rtol: float, durations: np.ndarray
+) -> np.ndarray:
+    """Time and steps per mode (``advance``'s ``stats``, summed over the handed tosses) of the
+    run :func:`bench_tolerance.carry` times (untimed here: the stats cost a little)."""
+    total = np.zeros((len(cp.MODES), 2))
+    for k in np.flatnonzero(handed):
+        stats = np.zeros((len(cp.MODES), 2))
+        cp.advance(
+            states[k].copy(),
+            float(durations[k]),
+            cs[k],
+            settle_check=True,
+            decide=cp.UPRIGHT_DECISION,
+            stats=stats,
+            rtol=rtol,
+        )
+        total += stats
+    return total
+
+
+def trace(y0: np.ndarray, c: Any, duration: float, steps: int, budget: float) -> dict:  # type: ignore[no-untyped-def]
+    """The shipped run (RTOL, the upright decision) of the handed state ``y0`` for at most
+    ``duration`` s, sampled after every k-th accepted step (module notes): its rotation
+    ∫|ω| dt, contact episodes, and the turn of each sampled stretch with its steps."""
+    k = max(1, math.ceil(steps * steps / (2.0 * budget)))
+    times, speeds, modes, hopped, counts = [0.0], [], [cp.contact_mode(y0, c)], [], []
+
+    def speed(y: np.ndarray) -> float:
+        w = angular_velocity((y[7], y[8], y[9]), (y[4], y[5], y[6]), c.i1, c.i3)
+        return math.sqrt(w[0] ** 2 + w[1] ** 2 + w[2] ** 2)
+
+    speeds.append(speed(y0))
+    done, free = 0, 0.0
+    while True:
+        y = y0.copy()
+        stats = np.zeros((len(cp.MODES), 2))
+        t, taken, ended = cp.advance(
+            y,
+            duration,
+            c,
+            settle_check=True,
+            decide=cp.UPRIGHT_DECISION,
+            max_steps=done + k,
+            stats=stats,
+        )
+        short = taken < done + k  # stopped before its step limit: settled, decided or timed
+        if taken > done:
+            times.append(t)
+            speeds.append(speed(y))
+            modes.append(cp.contact_mode(y, c))
+            hopped.append(stats[FREE, 1] > free)
+            counts.append(taken - done)
+            done, free = taken, float(stats[FREE, 1])
+        if ended or short or t >= duration:
+            break
+    turns = segment_turns(np.array(times), np.array(speeds))
+    return {
+        "rotation": rotation(np.array(times), np.array(speeds)),
+        "episodes": episodes(modes, hopped),
+        "turn": turns / np.maximum(np.array(counts, dtype=float), 1.0),
+        "count": np.array(counts, dtype=float),
+        "steps": done,
+        "stride": k,
+        "time": times[-1],
+    }
+
+
+def setting_run(args: argparse.Namespace, name: str, setting: Any) -> dict:  # type: ignore[no-untyped-def]
+    """All measurements of one setting (module notes); prints them and returns the totals."""
+    import bench_bounce
+
+    n, seed = args.n, args.seed
+    omega, v0 = bench_bounce.tosses(n, seed)
+    cs = bench_tolerance.records(n, setting)
+    states, handed, base_face, base_status = handoffs(cs, omega, v0)
+    idx = np.flatnonzero(handed)
+    m = len(idx)
+    print(f"\n{name}: {n} tosses (seed {seed}), {m} handed; load {os.getloadavg()[0]:.2f}")
+    if m == 0:
+        return {}
+    first = int(idx[0])
+    for r in (1e-7, 1e-5):  # compile or load the caches
+        cp.advance(states[first].copy(), 1e-3, cs[first], settle_check=True, rtol=r)
+    # The last well change of each handed toss at each tolerance, from a full chunked record.
+    w0 = time.perf_counter()
+    oracle = {r: np.full(n, math.inf) for r in (1e-7, 1e-5)}
+    unsettled = {}
+    for r in oracle:
+        bad = 0
+        for k in idx:
+            row = bench_predictors.carry(states[k].copy(), cs[k], args.chunk, rtol=r)
+            oracle[r][k] = row["oracle"][0]
+            bad += not row["settled"]
+        unsettled[r] = bad
+    print(
+        f"  oracle records ({args.chunk * 1e3:g} ms chunks, no upright decision, carried to "
+        f"rest): {time.perf_counter() - w0:.0f} s wall; unsettled {unsettled[1e-7]} at 1e-7, "
+        f"{unsettled[1e-5]} at 1e-5"
+    )
+    inf = np.full(n, math.inf)
+    plans = {
+        "shipped 1e-7": (1e-7, inf),
+        "rtol 1e-5": (1e-5, inf),
+        "oracle 1e-7": (1e-7, oracle[1e-7]),
+        "oracle 1e-5": (1e-5, oracle[1e-5]),
+    }
+    cpu: dict[str, list[float]] = {v: [] for v in (*VARIANTS, "bounces")}
+    runs: dict[str, Any] = {}
+    order = [*VARIANTS, "bounces"]
+    for rnd in range(args.rounds):
+        for v in order[rnd % len(order) :] + order[: rnd % len(order)]:
+            if v == "bounces":
+                cpu[v].append(bounce_cpu(cs, omega, v0))
+                continue
+            r, durations = plans[v]
+            run = bench_tolerance.carry(
+                states, cs, handed, base_face, base_status, r, durations=durations
+            )
+            cpu[v].append(float(run.cpu[handed].sum()))
+            runs.setdefault(v, run)
+    med = {v: statistics.median(ts) for v, ts in cpu.items()}
+    stats = {v: mode_stats(states, cs, handed, *plans[v]) for v in VARIANTS}
+    shipped = runs["shipped 1e-7"]
+    print(
+        f"  CPU (one thread, medians of {args.rounds} rounds): bounces of all {n} "
+        f"{med['bounces'] * 1e3:.1f} ms; the contact phase per handed toss, mean (median):"
+    )
+    for v in VARIANTS:
+        run, st = runs[v], stats[v]
+        steps = st[:, 1].sum()
+        differ = int(np.count_nonzero(run.face[handed] != shipped.face[handed]))
+        print(
+            f"    {v:13s}: {med[v] / m * 1e3:.3f} ms ({np.median(run.cpu[handed]) * 1e3:.3f}), "
+            f"{med['shipped 1e-7'] / med[v]:.2f}x the shipped; steps {steps:,.0f} "
+            f"(median {np.median(run.steps[handed]):,.0f}), simulated {st[:, 0].sum():.1f} s; "
+            f"hops {st[FREE, 1] / steps:.1%} of the steps, {st[FREE, 0] / st[:, 0].sum():.1%} "
+            f"of the time (bound {hop_factor(st):.2f}x); faces differing from the shipped "
+            f"{differ} of {m}"
+        )
+    # The floor of the motion itself, at 1e-7 up to the oracle's stop.
+    w0 = time.perf_counter()
+    oracle_run = runs["oracle 1e-7"]
+    traces = [
+        trace(states[k], cs[k], float(oracle[1e-7][k]), int(oracle_run.steps[k]), args.budget)
+        for k in idx
+    ]
+    same = all(tr["steps"] == int(oracle_run.steps[k]) for tr, k in zip(traces, idx, strict=True))
+    turn = weighted_median(
+        np.concatenate([tr["turn"] for tr in traces]),
+        np.concatenate([tr["count"] for tr in traces]),
+    )
+    rot = np.array([tr["rotation"] for tr in traces])
+    eps = np.array([tr["episodes"] for tr in traces])
+    to_stop = float(sum(tr["steps"] for tr in traces))
+    ideal = float(rot.sum() / turn)
+    at_cap = float(rot.sum() / STEP_TURN)
+    all_steps = float(stats["shipped 1e-7"][:, 1].sum())
+    strided = sum(tr["stride"] > 1 for tr in traces)
+    print(
+        f"  floor (1e-7 up to the oracle's stop; {time.perf_counter() - w0:.0f} s wall; "
+        f"{strided} of {m} tosses sampled every k > 1 steps; steps equal to the timed run's: "
+        f"{same}): rotation ∫|ω| dt median {np.median(rot):.1f} rad (mean {rot.mean():.1f}, "
+        f"total {rot.sum():,.0f}), contact episodes median {np.median(eps):.0f} (mean "
+        f"{eps.mean():.1f}); steps to the stop {to_stop:,.0f} ({to_stop / max(eps.sum(), 1):.0f} "
+        f"an episode; of {all_steps:,.0f} the shipped phase takes), their turn a step median "
+        f"{turn * 1e3:.1f} mrad, mean {rot.sum() / to_stop * 1e3:.1f} mrad"
+    )
+    print(
+        f"    an ideal integrator to the same stop turning the coin by the median step's "
+        f"{turn * 1e3:.1f} mrad a step: {ideal:,.0f} steps (the shipped phase's steps over "
+        f"them {all_steps / ideal:.2f}x); by the stepper's largest turn π/8 a step: "
+        f"{at_cap:,.0f} ({all_steps / at_cap:.1f}x)"
+    )
+    return {
+        "handed": m,
+        "bounces": med["bounces"],
+        "phase": med["shipped 1e-7"],
+        "cpu": med,
+        "hops": hop_factor(stats["oracle 1e-5"]),
+        "floor": all_steps / ideal,
+        "floor_cap": all_steps / at_cap,
+    }
+
+
+def report(results: dict[str, dict], rate: float) -> None:
+    """The combined ceiling per setting (module notes)."""
+    ref = next(iter(results.values()))
+    ref_cost = ref["bounces"] + ref["phase"]
+    print(
+        f"\nCombined ceiling, landings a second on 2 cores (today's rate {rate:,.0f} for the "
+        "first setting, the others scaled by their CPU per landing):"
+    )
+    for name, res in results.items():
+        if not res:
+            continue
+        b, p, cpu = res["bounces"], res["phase"], res["cpu"]
+        here = rate * ref_cost / (b + p)  # scaled by the one-thread CPU per landing
+        f_rtol = p / cpu["rtol 1e-5"]
+        f_or7 = p / cpu["oracle 1e-7"]
+        f_or5 = p / cpu["oracle 1e-5"]
+        f, ceiling = combined(here, b, p, (f_or5, res["hops"]))
+        _, rigid = combined(here, b, p, (f_or5, res["hops"], RIGID_STEPS))
+        _, floor = combined(here, b, p, (res["floor"],))
+        _, floor_cap = combined(here, b, p, (res["floor_cap"],))
+        verdict = (
+            "reaches 50,000"
+            if ceiling >= TARGET
+            else f"misses 50,000 by {TARGET / ceiling:.1f}x ({TARGET - ceiling:,.0f}/s short)"
+        )
+        print(
+            f"  {name}: today {here:,.0f}/s (the phase {p / (b + p):.1%} of a landing's CPU); "
+            f"RTOL 1e-5 {f_rtol:.2f}x, oracle {f_or7:.2f}x at 1e-7, {f_or5:.2f}x with RTOL "
+            f"1e-5 (the product of the two alone {f_rtol * f_or7:.2f}x), hops at zero cost "
+            f"{res['hops']:.2f}x: the phase {f:.2f}x, landings "
+            f"{landing_factor(b, p, f):.2f}x = **{ceiling:,.0f}/s**, {verdict}; with the rigid "
+            f"contact's steps at the compliant step's price (hypothetical, "
+            f"{RIGID_STEPS:.2f}x) {rigid:,.0f}/s; the motion's floor (estimates, equal step "
+            f"price, stopped at the oracle): at the median step's turn {res['floor']:.2f}x, "
+            f"{floor:,.0f}/s; at π/8 a step {res['floor_cap']:.1f}x, {floor_cap:,.0f}/s"
+        )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("n", type=int, nargs="?", default=300, help="tosses per setting")
+    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--rate", type=float, default=RATE, help="today's landings/s, 2 cores")
+    parser.add_argument("--chunk", type=float, default=2e-3, help="simulated s an oracle chunk")
+    parser.add_argument(
+        "--floor-budget", dest="budget", type=float, default=2e5, help="steps a toss's floor"
+    )
+    parser.add_argument("--settings", default="0,1,2", help="indices of bench_tolerance.SETTINGS")
+    args = parser.parse_args()
+    if args.n < 1:
+        parser.error(f"N {args.n}: must be at least 1")
+    if args.rounds < 1:
+        parser.error(f"--rounds {args.rounds}: must be at least 1")
+    for option, value in (
+        ("--rate", args.rate),
+        ("--chunk", args.chunk),
+        ("--floor-budget", args.budget),
+    ):
+        if not (math.isfinite(value) and value > 0.0):
+            parser.error(f"{option} {value:g}: must be a finite number > 0")
+    names = list(bench_tolerance.SETTINGS)
+    keys = args.settings.split(",")
+    if not all(k in {str(i) for i in range(len(names))} for k in keys):
+        parser.error(f"--settings {args.settings!r}: must be indices among 0-{len(names) - 1}")
+    t0 = time.perf_counter()
+    load = os.getloadavg()
+    results = {}
+    for key in keys:
+        name = names[int(key)]
+        results[name] = setting_run(args, name, bench_tolerance.SETTINGS[name])
+    report(results, args.rate)
+    print(
+        f"{time.perf_counter() - t0:.0f} s wall; load {load[0]:.2f} before, "
+        f"{os.getloadavg()[0]:.2f} after"
+    )
+
+
+if __name__ == "__main__":
+    main()
