@@ -78,7 +78,6 @@ from typing import Any
 
 import numpy as np
 
-import bench_contact
 import bench_predictors
 import bench_tolerance
 from coinflight.core import bounce
@@ -179,22 +178,6 @@ def combined(
     return f, rate * landing_factor(bounces, phase, f)
 
 
-def handoffs(cs: list[Any], omega: np.ndarray, v0: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Each toss's hand-off (``bench_contact.handoff``): states (n, 10), handed, and for the
-    tosses not handed their face and status (``bench_tolerance.carry``'s base)."""
-    n = len(cs)
-    states = np.zeros((n, 10))
-    handed = np.zeros(n, dtype=bool)
-    face, status = np.full(n, -1), np.full(n, -1)
-    for k in range(n):
-        w = (omega[k, 0], omega[k, 1], omega[k, 2])
-        states[k], handed[k] = bench_contact.handoff(w, 1.0, v0[k], cs[k])
-        if not handed[k]:
-            out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
-            face[k], status[k] = out[0], out[4]
-    return states, handed, face, status
-
-
 def bounce_cpu(cs: list[Any], omega: np.ndarray, v0: np.ndarray) -> float:
     """CPU s of the bounces of all tosses up to their end or hand-off (what a landing spends
     outside the contact phase, but for ``land``'s own overhead)."""
@@ -279,7 +262,7 @@ def setting_run(args: argparse.Namespace, name: str, setting: Any) -> dict:  # t
     n, seed = args.n, args.seed
     omega, v0 = bench_bounce.tosses(n, seed)
     cs = bench_tolerance.records(n, setting)
-    states, handed, base_face, base_status = handoffs(cs, omega, v0)
+    states, handed, base_face, base_status = bench_tolerance.handoffs(cs, omega, v0)
     idx = np.flatnonzero(handed)
     m = len(idx)
     print(f"\n{name}: {n} tosses (seed {seed}), {m} handed; load {os.getloadavg()[0]:.2f}")

@@ -244,6 +244,30 @@ def records(n: int, setting: tuple[float, float] | None) -> list[Any]:
     return [bounce.with_surface(base, e[k], mu[k], rolling, pivoting) for k in range(n)]
 
 
+def handoffs(
+    cs: list[Any], omega: np.ndarray, v0: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Each toss's bounces run once (``bench_contact.handoff``, contact records ``cs``, launch
+    ω (n, 3) and speeds v0): the states handed to the contact phase (n, 10), whether each is
+    handed, and for the tosses not handed their face and status (:func:`carry`'s base; −1 for
+    the handed ones)."""
+    import bench_contact
+    from coinflight.core import bounce
+
+    n = len(cs)
+    states = np.zeros((n, 10))
+    handed = np.zeros(n, dtype=bool)
+    base_face = np.full(n, -1)
+    base_status = np.full(n, -1)
+    for k in range(n):
+        w = (omega[k, 0], omega[k, 1], omega[k, 2])
+        states[k], handed[k] = bench_contact.handoff(w, 1.0, v0[k], cs[k])
+        if not handed[k]:
+            out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
+            base_face[k], base_status[k] = out[0], out[4]
+    return states, handed, base_face, base_status
+
+
 def carry(
     states: np.ndarray,
     cs: list[Any],
@@ -326,24 +350,13 @@ def study(
     """The tolerance study of ``n`` tosses on one setting; returns the headline counts (faces
     differing from the tightest, changed by each nudge; the handed tosses) and each
     tolerance's median steps per handed toss."""
-    import bench_contact
-    from coinflight.core import bounce
     from coinflight.core import contact_phase as cp
     from coinflight.outcomes.table import land
     from coinflight.probability.result import wilson_interval
 
     omega, v0 = bench_bounce.tosses(n, seed)
     cs = records(n, setting)
-    states = np.zeros((n, 10))
-    handed = np.zeros(n, dtype=bool)
-    base_face = np.full(n, -1)
-    base_status = np.full(n, -1)
-    for k in range(n):
-        w = (omega[k, 0], omega[k, 1], omega[k, 2])
-        states[k], handed[k] = bench_contact.handoff(w, 1.0, v0[k], cs[k])
-        if not handed[k]:
-            out = bounce.bounce_loop(w, 1.0, v0[k], cs[k], bounce.MAX_IMPACTS)
-            base_face[k], base_status[k] = out[0], out[4]
+    states, handed, base_face, base_status = handoffs(cs, omega, v0)
     m = int(handed.sum())
     if m == 0:
         print(

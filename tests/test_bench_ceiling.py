@@ -108,10 +108,11 @@ def test_trace_of_a_coin_turning_in_the_air_gives_omega_times_the_time(bench):
     # Torque-free (high above the table, only gravity on the centre): |ω| of a symmetric top
     # is constant, so ∫|ω| dt = |ω| T, with no contact episode; sampled at every step and
     # every 7th alike.
+    import bench_contact  # beside the script, on the path the fixture prepends
     from coinflight.core import contact_phase as cp
     from coinflight.core.impact import angular_velocity
 
-    c = bench.bench_contact.contact(0.5, 0.3)
+    c = bench_contact.contact(0.5, 0.3)
     n = np.array([math.sin(0.4), 0.0, math.cos(0.4)])
     omega = np.array([120.0, -30.0, 45.0])
     lm = c.i1 * omega + (c.i3 - c.i1) * (omega @ n) * n
@@ -137,7 +138,7 @@ def test_carry_stops_each_toss_at_its_duration(bench):
     # toss given 0 s takes no step; one given half its time stops there, in fewer steps.
     omega, v0 = bench.bench_tolerance.bench_bounce.tosses(12, 7)
     cs = bench.bench_tolerance.records(12, (0.5, 0.3))
-    states, handed, face, status = bench.handoffs(cs, omega, v0)
+    states, handed, face, status = bench.bench_tolerance.handoffs(cs, omega, v0)
     assert handed.sum() >= 3
     carry = bench.bench_tolerance.carry
     full = carry(states, cs, handed, face, status, 1e-7)
