@@ -86,6 +86,10 @@ today, 2 cores        2,923/s              2,291/s              2,618/s
 rigid steps (hyp.)    23,519/s             12,749/s             18,336/s
 ====================  ===================  ===================  ===================
 
+A 300-toss run (``bench_ceiling.py 300``, other tosses: the draws depend on N; 07:21-07:27
+UTC, load 4.1-8.6) gave 14,177, 7,907, 11,121 a second (3.5x, 6.3x, 4.5x short), the combined
+phase 5.54x, 3.79x, 4.98x: the spread of the toss sample.
+
 Cross-checks: the oracle at 1e-7 agrees with ``bench_predictors.py 600 --seed 7``'s, counted
 there in steps (1.92x, 1.59x, 2.04x), and RTOL 1e-5 with ``bench_tolerance.py``'s 1.7-1.95x
 (medians there, seed 2026). The rate of 2,923 a second was measured on ``bench_bounce``'s
