@@ -68,6 +68,9 @@ def test_weighted_median_is_the_median_of_the_values_repeated(bench):
     assert bench.weighted_median(values, weights) == 2.0
     assert bench.weighted_median(values, np.array([1.0, 1.0, 5.0, 0.0])) == 3.0
     assert bench.weighted_median(np.array([7.0]), np.array([2.0])) == 7.0
+    # An even total: the lower median (the ⌈W/2⌉-th value), not the upper.
+    assert bench.weighted_median(np.array([1.0, 2.0]), np.array([1.0, 1.0])) == 1.0
+    assert bench.weighted_median(np.array([2.0, 1.0]), np.array([2.0, 2.0])) == 1.0
     assert math.isnan(bench.weighted_median(values, np.zeros(4)))
 
 
