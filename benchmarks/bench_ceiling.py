@@ -71,34 +71,34 @@ factor over the shipped phase:
 variant               e 0.5, μ 0.3         e 0.5, μ 0.6         own e, μ
 ====================  ===================  ===================  ===================
 shipped (1e-7)        0.922 ms (0.646)     1.196 ms (1.040)     1.044 ms (0.727)
-RTOL 1e-5             2.00x                1.57x                1.93x
-oracle at 1e-7        1.88x                1.68x                2.04x
-oracle at 1e-5        3.71x (product       2.78x (2.64x)        3.83x (3.93x)
-                      of the two 3.77x)
+RTOL 1e-5             2.00×                1.57×                1.93×
+oracle at 1e-7        1.88×                1.68×                2.04×
+oracle at 1e-5        3.71× (product       2.78× (2.64×)        3.83× (3.93×)
+                      of the two 3.77×)
 hops in it            45.0 % of steps,     31.0 %, 50.5 %       33.0 %, 41.9 %
                       52.8 % of the time
-hops at no cost       1.82x                1.45x                1.49x
-combined phase        6.74x                4.03x                5.72x
-landings (Amdahl)     5.66x                3.73x                4.90x
+hops at no cost       1.82×                1.45×                1.49×
+combined phase        6.74×                4.03×                5.72×
+landings (Amdahl)     5.66×                3.73×                4.90×
 today, 2 cores        2,923/s              2,291/s              2,618/s
 **ceiling**           **16,548/s**         **8,552/s**          **12,816/s**
-50,000 missed by      3.0x                 5.8x                 3.9x
+50,000 missed by      3.0×                 5.8×                 3.9×
 rigid steps (hyp.)    23,519/s             12,749/s             18,336/s
 ====================  ===================  ===================  ===================
 
 A 300-toss run (``bench_ceiling.py 300``, other tosses: the draws depend on N; 07:21-07:27
-UTC, load 4.1-8.6) gave 14,177, 7,907, 11,121 a second (3.5x, 6.3x, 4.5x short), the combined
-phase 5.54x, 3.79x, 4.98x: the spread of the toss sample.
+UTC, load 4.1-8.6) gave 14,177, 7,907, 11,121 a second (3.5×, 6.3×, 4.5× short), the combined
+phase 5.54×, 3.79×, 4.98×: the spread of the toss sample.
 
 Cross-checks: the oracle at 1e-7 agrees with ``bench_predictors.py 600 --seed 7``'s, counted
-there in steps (1.92x, 1.59x, 2.04x), and RTOL 1e-5 with ``bench_tolerance.py``'s 1.7-1.95x
+there in steps (1.92×, 1.59×, 2.04×), and RTOL 1e-5 with ``bench_tolerance.py``'s 1.7-1.95×
 (medians there, seed 2026). The rate of 2,923 a second was measured on ``bench_bounce``'s
 seed-2026 tosses; here a landing costs 0.679 ms of CPU in one thread at e 0.5 μ 0.3 (1,472
 a CPU second, against 1,399 measured on those tosses, last session's closing note): the same
 within 5 %.
 
-The oracle and the looser tolerance combine as a product (3.71x measured against 3.77x, 2.78x
-against 2.64x, 3.83x against 3.93x): their savings are separate (the tolerance makes each
+The oracle and the looser tolerance combine as a product (3.71× measured against 3.77×, 2.78×
+against 2.64×, 3.83× against 3.93×): their savings are separate (the tolerance makes each
 stretch cheaper, the oracle cuts the stretch after the last well change). Hops take a larger
 share of what the oracle leaves (31-45 % of the steps at 1e-5, 13-19 % of the shipped phase's),
 so closed-form flight is worth more after it. The bounces, which none of these routes touch,
@@ -110,22 +110,22 @@ median 3.3, 8.0, 4.5 rad (means 21.7, 20.9, 18.8: a few long rollers) in a media
 episode (means 1.8, 2.0, 1.7), ~235-315 steps an episode; its steps turn the coin a median 23.6,
 12.9, 20.3 mrad, a mean 50.0, 33.1, 42.4 mrad (the hops' long steps turn it most). **An ideal
 integrator turning the coin by the median step's angle would need more steps than the shipped
-phase takes** (the shipped phase's steps over its 0.89x, 0.62x, 0.96x): at the shipped
+phase takes** (the shipped phase's steps over its 0.89×, 0.62×, 0.96×): at the shipped
 stepper's resolution the steps are those the rotation needs, and no step control at that
 resolution gains. Only at the stepper's largest turn, π/8 a step (:data:`STEP_TURN`; a
-resolution at which a wobble's chaotic outcome is not resolved), would the steps be 14.8x,
-18.8x, 18.6x fewer: 29,675, 29,297, 29,858 landings a second at today's step price,
-still 1.7x short.
+resolution at which a wobble's chaotic outcome is not resolved), would the steps be 14.8×,
+18.8×, 18.6× fewer: 29,675, 29,297, 29,858 landings a second at today's step price,
+still 1.7× short.
 
 **Conclusion**: on these tosses, at ℓ_r = ℓ_p = 1e-4 m, 50,000 landings a second is not
 reachable by the measured routes: the best sound rule (the last-well-change oracle, which no
-real rule beats) with RTOL 1e-5 and hops flown at no cost gives 8,600-16,500 a second, 3.0-5.8x
+real rule beats) with RTOL 1e-5 and hops flown at no cost gives 8,600-16,500 a second, 3.0-5.8×
 short; the rigid contact's fewer steps at the compliant step's price (a hypothetical: it is
-1.7x dearer) 12,700-23,500, 2.1-3.9x short; even steps as coarse as the stepper allows, stopped
-at the oracle, ~30,000. What would close the gap: a step 3-6x cheaper on top of all of these
+1.7× dearer) 12,700-23,500, 2.1-3.9× short; even steps as coarse as the stepper allows, stopped
+at the oracle, ~30,000. What would close the gap: a step 3-6× cheaper on top of all of these
 (none in view: the step is ~1 μs, its derivative six ~126 ns evaluations), or a predictor
 naming the final well while the coin can still leave it (``bench_predictors.py``'s "first in
-final well", 9-24x: a prediction, not a bound), or a revised target. Caveats: the oracle's
+final well", 9-24×: a prediction, not a bound), or a revised target. Caveats: the oracle's
 stop comes from a chunked run whose trajectory parts from the timed one's at the rounding level,
 so the timed run stopped there is in another well than carried on for 9, 3, 5 tosses at 1e-7
 and 18, 20, 16 at 1e-5 (of ~420): those stops are early, the oracle's factors slightly
@@ -133,7 +133,7 @@ optimistic; RTOL 1e-5 changes 11, 16, 8 faces of the shipped phase's (1.9-3.8 %,
 ``bench_tolerance.py`` found; a team decision); the hops' bound counts a hop's step at the
 mean step's price (a flight step is cheaper, so it is an upper bound) and ignores what a
 touchdown after a closed-form flight would cost; at ℓ 1e-5 m (not run here) the oracle alone
-was 14.6-61x in steps (``bench_predictors.py``), the upright rollers' time, and the shipped
+was 14.6-61× in steps (``bench_predictors.py``), the upright rollers' time, and the shipped
 phase slower.
 """
 
@@ -171,8 +171,15 @@ RATE = 2_923.0
 """Landings a second on 2 cores with the contact ending, e 0.5 μ 0.3 (``python
 benchmarks/bench_bounce.py --contact-rates 300``, quiet, 2026-11-24 07:15 UTC, load 0.8)."""
 STEP_TURN = math.pi / 8.0
-"""The largest angle the shipped stepper lets a step turn the coin, rad (``contact_phase``'s
-:data:`~coinflight.core.contact_phase.MAX_STEP`: "at most a sixteenth of a turn")."""
+"""The turn cap of the shipped stepper, rad: ``advance`` caps a step at min(:data:`MAX_STEP`,
+π/8 / |ω|), so π/8 binds only above π/8 / 1 ms = 392.7 rad/s, which these tosses (ωx ≤ 300
+rad/s) never reach. Steps turning the coin by π/8 are those of **an ideal integrator
+unconstrained by MAX_STEP**, not the stepper's coarsest (that is the 1 ms cap, :func:`caps`)."""
+MAX_STEP = cp.MAX_STEP
+"""The shipped stepper's longest step, s (:data:`coinflight.core.contact_phase.MAX_STEP`)."""
+HELD = 0.1
+"""A step is "held" (by the contact's stiffness or the tolerance, not by the rotation) when it is
+shorter than this share of its cap min(MAX_STEP, π/8 / |ω|) (:func:`caps`)."""
 VARIANTS = ("shipped 1e-7", "rtol 1e-5", "oracle 1e-7", "oracle 1e-5")
 """The carried variants, in their first round's order."""
 
@@ -224,6 +231,44 @@ def weighted_median(values: np.ndarray, weights: np.ndarray) -> float:
     order = np.argsort(v[keep])
     v, cum = v[keep][order], np.cumsum(w[keep][order])
     return float(v[np.searchsorted(cum, 0.5 * cum[-1])])
+
+
+def caps(dt: np.ndarray, turns: np.ndarray, counts: np.ndarray, free: np.ndarray) -> dict:
+    """The steps an ideal integrator would need on a sampled run, from each stretch between
+    samples: its simulated time ``dt`` (s), turn ``turns`` (rad), accepted steps ``counts``
+    and time off the table ``free`` (s; its share of ``dt`` splits the stretch between hops
+    and contact). Returns (sums over the stretches):
+
+    - ``"rot_hop"``, ``"rot_contact"``: the rotation in hops and in contact, rad;
+    - ``"cap"``: steps at the shipped stepper's own caps, max(turn / (π/8), dt / MAX_STEP) a
+      stretch (the 1 ms cap binds wherever |ω| < 392.7 rad/s), ``"cap_contact"`` the same in
+      contact only (hops flown in closed form);
+    - ``"turn"``, ``"turn_contact"``: steps turning the coin by π/8 each, unconstrained by
+      MAX_STEP (:data:`STEP_TURN`), all and in contact only;
+    - ``"held"``, ``"held_contact"``: accepted steps shorter than :data:`HELD` of their cap
+      min(MAX_STEP, π/8 / |ω|) (|ω| the stretch's mean, dt / counts its mean step), all and in
+      contact.
+
+    A stretch of k > 1 steps counts as one of its mean step (max of sums ≤ sum of maxes: the
+    cap counts are then slightly low)."""
+    dt = np.asarray(dt, dtype=float)
+    turns = np.asarray(turns, dtype=float)
+    counts = np.asarray(counts, dtype=float)
+    hop = np.clip(np.asarray(free, dtype=float) / np.where(dt > 0, dt, 1.0), 0.0, 1.0)
+    need = np.maximum(turns / STEP_TURN, dt / MAX_STEP)
+    w = turns / np.where(dt > 0, dt, 1.0)
+    cap = np.minimum(MAX_STEP, STEP_TURN / np.maximum(w, 1e-300))
+    held = counts * (dt / np.maximum(counts, 1.0) < HELD * cap)
+    return {
+        "rot_hop": float(np.sum(turns * hop)),
+        "rot_contact": float(np.sum(turns * (1.0 - hop))),
+        "cap": float(np.sum(need)),
+        "cap_contact": float(np.sum(need * (1.0 - hop))),
+        "turn": float(np.sum(turns) / STEP_TURN),
+        "turn_contact": float(np.sum(turns * (1.0 - hop)) / STEP_TURN),
+        "held": float(np.sum(held)),
+        "held_contact": float(np.sum(held * (1.0 - hop))),
+    }
 
 
 def hop_factor(stats: np.ndarray) -> float:
@@ -293,6 +338,7 @@ def trace(y0: np.ndarray, c: Any, duration: float, steps: int, budget: float) ->
     (those of the timed run) is where the trace ends."""
     k = max(1, math.ceil(steps * steps / (2.0 * budget)))
     times, speeds, modes, hopped, counts = [0.0], [], [cp.contact_mode(y0, c)], [], []
+    free_time = [0.0]  # time off the table up to each sample
 
     def speed(y: np.ndarray) -> float:
         w = angular_velocity((y[7], y[8], y[9]), (y[4], y[5], y[6]), c.i1, c.i3)
@@ -314,15 +360,18 @@ def trace(y0: np.ndarray, c: Any, duration: float, steps: int, budget: float) ->
             modes.append(cp.contact_mode(y, c))
             hopped.append(stats[FREE, 1] > free)
             counts.append(taken - done)
+            free_time.append(float(stats[FREE, 0]))
             done, free = taken, float(stats[FREE, 1])
         if ended or short or t >= duration:
             break
     turns = segment_turns(np.array(times), np.array(speeds))
+    count = np.array(counts, dtype=float)
     return {
+        "caps": caps(np.diff(times), turns, count, np.diff(free_time)),
         "rotation": rotation(np.array(times), np.array(speeds)),
         "episodes": episodes(modes, hopped),
-        "turn": turns / np.maximum(np.array(counts, dtype=float), 1.0),
-        "count": np.array(counts, dtype=float),
+        "turn": turns / np.maximum(count, 1.0),
+        "count": count,
         "steps": done,
         "stride": k,
         "time": times[-1],
@@ -397,10 +446,10 @@ def setting_run(args: argparse.Namespace, name: str, setting: Any) -> dict:  # t
         own = int(np.count_nonzero(run.face[handed] != same_rtol.face[handed]))
         print(
             f"    {v:13s}: {med[v] / m * 1e3:.3f} ms ({np.median(run.cpu[handed]) * 1e3:.3f}), "
-            f"{med['shipped 1e-7'] / med[v]:.2f}x the shipped; steps {steps:,.0f} "
+            f"{med['shipped 1e-7'] / med[v]:.2f}× the shipped; steps {steps:,.0f} "
             f"(median {np.median(run.steps[handed]):,.0f}), simulated {st[:, 0].sum():.1f} s; "
             f"hops {st[FREE, 1] / steps:.1%} of the steps, {st[FREE, 0] / st[:, 0].sum():.1%} "
-            f"of the time (bound {hop_factor(st):.2f}x); faces differing from the shipped "
+            f"of the time (bound {hop_factor(st):.2f}×); faces differing from the shipped "
             f"{differ} of {m}, from the same tolerance carried on {own}"
         )
     # The floor of the motion itself, at 1e-7 up to the oracle's stop.
@@ -419,32 +468,80 @@ def setting_run(args: argparse.Namespace, name: str, setting: Any) -> dict:  # t
     eps = np.array([tr["episodes"] for tr in traces])
     to_stop = float(sum(tr["steps"] for tr in traces))
     ideal = float(rot.sum() / turn)
-    at_cap = float(rot.sum() / STEP_TURN)
     all_steps = float(stats["shipped 1e-7"][:, 1].sum())
     strided = sum(tr["stride"] > 1 for tr in traces)
+    cap = {key: sum(tr["caps"][key] for tr in traces) for key in traces[0]["caps"]}
     print(
         f"  floor (1e-7 up to the oracle's stop; {time.perf_counter() - w0:.0f} s wall; "
         f"{strided} of {m} tosses sampled every k > 1 steps; steps equal to the timed run's: "
         f"{same}): rotation ∫|ω| dt median {np.median(rot):.1f} rad (mean {rot.mean():.1f}, "
-        f"total {rot.sum():,.0f}), contact episodes median {np.median(eps):.0f} (mean "
+        f"total {rot.sum():,.0f}; in hops {cap['rot_hop']:,.0f}, "
+        f"{cap['rot_hop'] / rot.sum():.1%}), contact episodes median {np.median(eps):.0f} (mean "
         f"{eps.mean():.1f}); steps to the stop {to_stop:,.0f} ({to_stop / max(eps.sum(), 1):.0f} "
         f"an episode; of {all_steps:,.0f} the shipped phase takes), their turn a step median "
         f"{turn * 1e3:.1f} mrad, mean {rot.sum() / to_stop * 1e3:.1f} mrad"
     )
     print(
-        f"    an ideal integrator to the same stop turning the coin by the median step's "
-        f"{turn * 1e3:.1f} mrad a step: {ideal:,.0f} steps (the shipped phase's steps over "
-        f"them {all_steps / ideal:.2f}x); by the stepper's largest turn π/8 a step: "
-        f"{at_cap:,.0f} ({all_steps / at_cap:.1f}x)"
+        f"    steps held (shorter than {HELD:g} of their cap min(1 ms, π/8/|ω|)): "
+        f"{cap['held'] / to_stop:.1%} of the steps to the stop, {cap['held_contact']:,.0f} of "
+        f"the {to_stop - stats['oracle 1e-7'][FREE, 1]:,.0f} in contact"
+    )
+    print(
+        f"    at the median step's turn {turn * 1e3:.1f} mrad: {ideal:,.0f} steps (the shipped "
+        f"phase's over them {all_steps / ideal:.2f}× = the oracle's {all_steps / to_stop:.2f}× "
+        f"× median/mean turn {turn * to_stop / rot.sum():.2f}: a skew, not a floor); at the "
+        f"stepper's own caps (1 ms binds) {cap['cap']:,.0f} ({all_steps / cap['cap']:.1f}×), "
+        f"hops in closed form {cap['cap_contact']:,.0f} ({all_steps / cap['cap_contact']:.1f}×); "
+        f"an ideal integrator unconstrained by MAX_STEP, π/8 a step: {cap['turn']:,.0f} "
+        f"({all_steps / cap['turn']:.1f}×), hops in closed form {cap['turn_contact']:,.0f} "
+        f"({all_steps / cap['turn_contact']:.1f}×)"
     )
     return {
         "handed": m,
         "bounces": med["bounces"],
         "phase": med["shipped 1e-7"],
         "cpu": med,
-        "hops": hop_factor(stats["oracle 1e-5"]),
-        "floor": all_steps / ideal,
-        "floor_cap": all_steps / at_cap,
+        "stats": stats,
+        "floors": {
+            "median turn": ideal,
+            "1 ms cap": cap["cap"],
+            "π/8": cap["turn"],
+            "π/8, hops closed": cap["turn_contact"],
+        },
+    }
+
+
+def setting_row(rate: float, ref_cost: float, res: dict) -> dict:  # type: ignore[type-arg]
+    """One setting's combined figures (module notes), from its measurements ``res`` (as
+    :func:`setting_run` returns them: ``"bounces"`` and ``"phase"`` CPU s, ``"cpu"`` the median
+    CPU s of each of :data:`VARIANTS`, ``"stats"`` each variant's mode stats, ``"floors"`` the
+    ideal steps of each floor to the oracle's stop), ``rate`` the landings a second of the
+    setting whose CPU per landing is ``ref_cost``: today's rate here (scaled by the CPU per
+    landing), the factors (RTOL 1e-5, the oracle at 1e-7 and at 1e-5, the hops' bound in the
+    oracle at 1e-5 run), the ceiling (oracle at 1e-5 × hops, through the bounces), the rigid
+    hypothetical, each floor's factor (the shipped phase's steps over its) and landings, and
+    the bounces alone."""
+    b, p, cpu = res["bounces"], res["phase"], res["cpu"]
+    here = rate * ref_cost / (b + p)  # scaled by the one-thread CPU per landing
+    hops = hop_factor(res["stats"]["oracle 1e-5"])
+    f_or5 = p / cpu["oracle 1e-5"]
+    f, ceiling = combined(here, b, p, (f_or5, hops))
+    steps = float(res["stats"]["shipped 1e-7"][:, 1].sum())
+    floors = {}
+    for name, ideal in res.get("floors", {}).items():
+        factor = steps / ideal if ideal > 0 else math.inf
+        floors[name] = (factor, combined(here, b, p, (factor,))[1])
+    return {
+        "here": here,
+        "f_rtol": p / cpu["rtol 1e-5"],
+        "f_or7": p / cpu["oracle 1e-7"],
+        "f_or5": f_or5,
+        "hops": hops,
+        "f": f,
+        "ceiling": ceiling,
+        "rigid": combined(here, b, p, (f_or5, hops, RIGID_STEPS))[1],
+        "floors": floors,
+        "free": here * (b + p) / b,  # the contact phase at no cost: the bounces alone
     }
 
 
@@ -454,37 +551,33 @@ def report(results: dict[str, dict], rate: float) -> None:
     ref_cost = ref["bounces"] + ref["phase"]
     print(
         f"\nCombined ceiling, landings a second on 2 cores (today's rate {rate:,.0f} for the "
-        "first setting, the others scaled by their CPU per landing):"
+        "first setting, the others scaled by their CPU per landing; upper estimates: land's "
+        "own and the batch's overhead left out):"
     )
     for name, res in results.items():
         if not res:
             continue
-        b, p, cpu = res["bounces"], res["phase"], res["cpu"]
-        here = rate * ref_cost / (b + p)  # scaled by the one-thread CPU per landing
-        f_rtol = p / cpu["rtol 1e-5"]
-        f_or7 = p / cpu["oracle 1e-7"]
-        f_or5 = p / cpu["oracle 1e-5"]
-        f, ceiling = combined(here, b, p, (f_or5, res["hops"]))
-        _, rigid = combined(here, b, p, (f_or5, res["hops"], RIGID_STEPS))
-        _, floor = combined(here, b, p, (res["floor"],))
-        _, floor_cap = combined(here, b, p, (res["floor_cap"],))
-        free = here * (b + p) / b  # the contact phase at no cost: the bounces alone
+        row = setting_row(rate, ref_cost, res)
+        b, p, ceiling = res["bounces"], res["phase"], row["ceiling"]
         verdict = (
             "reaches 50,000"
             if ceiling >= TARGET
-            else f"misses 50,000 by {TARGET / ceiling:.1f}x ({TARGET - ceiling:,.0f}/s short)"
+            else f"misses 50,000 by {TARGET / ceiling:.1f}× ({TARGET - ceiling:,.0f}/s short)"
+        )
+        floors = "; ".join(
+            f"{key} {factor:.2f}×, {landings:,.0f}/s"
+            for key, (factor, landings) in row["floors"].items()
         )
         print(
-            f"  {name}: today {here:,.0f}/s (the phase {p / (b + p):.1%} of a landing's CPU); "
-            f"RTOL 1e-5 {f_rtol:.2f}x, oracle {f_or7:.2f}x at 1e-7, {f_or5:.2f}x with RTOL "
-            f"1e-5 (the product of the two alone {f_rtol * f_or7:.2f}x), hops at zero cost "
-            f"{res['hops']:.2f}x: the phase {f:.2f}x, landings "
-            f"{landing_factor(b, p, f):.2f}x = **{ceiling:,.0f}/s**, {verdict}; with the rigid "
-            f"contact's steps at the compliant step's price (hypothetical, "
-            f"{RIGID_STEPS:.2f}x) {rigid:,.0f}/s; the motion's floor (estimates, equal step "
-            f"price, stopped at the oracle): at the median step's turn {res['floor']:.2f}x, "
-            f"{floor:,.0f}/s; at π/8 a step {res['floor_cap']:.1f}x, {floor_cap:,.0f}/s; "
-            f"the phase at no cost (the bounces alone) {free:,.0f}/s"
+            f"  {name}: today {row['here']:,.0f}/s (the phase {p / (b + p):.1%} of a landing's "
+            f"CPU); RTOL 1e-5 {row['f_rtol']:.2f}×, oracle {row['f_or7']:.2f}× at 1e-7, "
+            f"{row['f_or5']:.2f}× with RTOL 1e-5 (the product of the two alone "
+            f"{row['f_rtol'] * row['f_or7']:.2f}×), hops at zero cost {row['hops']:.2f}×: the "
+            f"phase {row['f']:.2f}×, landings {landing_factor(b, p, row['f']):.2f}× = "
+            f"**{ceiling:,.0f}/s**, {verdict}; with the rigid contact's steps at the compliant "
+            f"step's price (hypothetical, {RIGID_STEPS:.2f}×) {row['rigid']:,.0f}/s; the "
+            f"motion's steps to the oracle's stop at today's step price (estimates): {floors}; "
+            f"the phase at no cost (the bounces alone) {row['free']:,.0f}/s"
         )
 
 

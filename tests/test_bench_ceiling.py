@@ -48,7 +48,8 @@ def test_rotation_is_exact_for_a_turn_rate_linear_in_time(bench):
 def test_episodes_count_touchdowns_and_hops_inside_a_stretch(bench):
     free, one, two = 0, 1, 2
     # In contact at the hand-off, a hop seen at a sample, a hop inside a stretch, a hop seen
-    # at the last sample: three touchdowns after the first contact, the last hop unfinished.
+    # at the last sample: three episodes (the first contact and two touchdowns), the last hop
+    # unfinished.
     modes = [one, one, free, free, two, one, one, free]
     hopped = [False, True, True, True, False, True, True]
     assert bench.episodes(modes, hopped) == 3
@@ -93,6 +94,83 @@ def test_landing_factor_and_the_combined_rate(bench):
     assert f == pytest.approx(7.0, rel=1e-15)
     assert rate == pytest.approx(3_000.0 * 100.0 / 16.0, rel=1e-14)
     assert bench.combined(3_000.0, 2.0, 98.0, ())[1] == pytest.approx(3_000.0, rel=1e-15)
+
+
+def test_caps_count_the_steps_of_an_ideal_integrator_on_constructed_stretches(bench):
+    # Four one-step stretches (dt s, turn rad, free s): a hop at 100 rad/s for 0.8 ms (the 1
+    # ms cap: 0.8 steps; π/8 a step: 0.08 / (π/8)); contact at 50 rad/s for 0.1 ms (a tenth
+    # of its 1 ms cap at most: held); contact at 500 rad/s for 0.5 ms (π/8 binds: its cap
+    # π/8/500 = 0.785 ms; 0.25 rad = 0.637 steps); a half-hop at 200 rad/s for 1 ms.
+    cap = math.pi / 8.0
+    dt = np.array([8e-4, 1e-4, 5e-4, 1e-3])
+    turns = np.array([0.08, 0.005, 0.25, 0.2])
+    free = np.array([8e-4, 0.0, 0.0, 5e-4])
+    out = bench.caps(dt, turns, np.ones(4), free)
+    assert out["rot_hop"] == pytest.approx(0.08 + 0.1, rel=1e-14)
+    assert out["rot_contact"] == pytest.approx(0.005 + 0.25 + 0.1, rel=1e-14)
+    need = [0.8, 0.1, 0.25 / cap, 1.0]
+    assert out["cap"] == pytest.approx(sum(need), rel=1e-14)
+    assert out["cap_contact"] == pytest.approx(0.1 + 0.25 / cap + 0.5, rel=1e-14)
+    assert out["turn"] == pytest.approx(0.535 / cap, rel=1e-14)
+    assert out["turn_contact"] == pytest.approx(0.355 / cap, rel=1e-14)
+    assert out["held"] == 0.0  # 0.1 ms is a tenth of 1 ms, not below it
+    dt[1] = 0.99e-4
+    out = bench.caps(dt, turns, np.ones(4), free)
+    assert (out["held"], out["held_contact"]) == (1.0, 1.0)
+    # The same stretch as ten steps of 9.9 μs: ten held steps, the same caps.
+    ten = bench.caps(dt, turns, np.array([1.0, 10.0, 1.0, 1.0]), free)
+    assert ten["held"] == 10.0
+    assert ten["cap"] == pytest.approx(out["cap"], rel=1e-14)
+
+
+def test_setting_row_combines_the_right_factors(bench):
+    # Constructed measurements: the bounces B = 0.04 s, the shipped phase P = 1.96 s (so a
+    # landing costs twice the reference's 1.0 s: today's rate halves); RTOL 1e-5 and the oracle
+    # at 1e-7 each 2×, the oracle at 1e-5 4×; hops 20 % of the shipped steps but 50 % of the
+    # oracle at 1e-5's (the bound is taken in that run: 2×).
+    stats = {v: np.zeros((4, 2)) for v in bench.VARIANTS}
+    stats["shipped 1e-7"][:, 1] = [20.0, 60.0, 15.0, 5.0]
+    stats["oracle 1e-5"][:, 1] = [10.0, 8.0, 2.0, 0.0]
+    cpu = {"shipped 1e-7": 1.96, "rtol 1e-5": 0.98, "oracle 1e-7": 0.98, "oracle 1e-5": 0.49}
+    res = {"bounces": 0.04, "phase": 1.96, "cpu": cpu, "stats": stats}
+    res["floors"] = {"1 ms cap": 25.0, "π/8": 4.0}
+    row = bench.setting_row(3_000.0, 1.0, res)
+    here = 1_500.0
+    assert row["here"] == pytest.approx(here, rel=1e-15)
+    assert (row["f_rtol"], row["f_or7"], row["f_or5"]) == pytest.approx((2.0, 2.0, 4.0))
+    assert row["hops"] == pytest.approx(2.0, rel=1e-15)
+    assert row["f"] == pytest.approx(8.0, rel=1e-15)
+    assert row["ceiling"] == pytest.approx(here * 2.0 / (0.04 + 1.96 / 8.0), rel=1e-14)
+    rigid = 8.0 * bench.RIGID_STEPS
+    assert row["rigid"] == pytest.approx(here * 2.0 / (0.04 + 1.96 / rigid), rel=1e-14)
+    factor, landings = row["floors"]["1 ms cap"]
+    assert factor == pytest.approx(4.0, rel=1e-15)  # 100 shipped steps over 25
+    assert landings == pytest.approx(here * 2.0 / (0.04 + 1.96 / 4.0), rel=1e-14)
+    assert row["floors"]["π/8"][0] == pytest.approx(25.0, rel=1e-15)
+    assert row["free"] == pytest.approx(here * 2.0 / 0.04, rel=1e-14)
+
+
+def test_predictors_carry_runs_at_the_tolerance_it_is_given(bench):
+    # bench_predictors.carry in one chunk (no restart of the step size) takes the steps
+    # bench_tolerance.carry takes at the same tolerance on every toss the upright decision
+    # does not end, and fewer at 1e-5 than at 1e-7 (the oracle's records at 1e-5 are at 1e-5).
+    from coinflight.core.outcome import Status
+
+    tol = bench.bench_tolerance
+    omega, v0 = tol.bench_bounce.tosses(12, 7)
+    cs = tol.records(12, (0.5, 0.3))
+    states, handed, face, status = tol.handoffs(cs, omega, v0)
+    steps = {}
+    for rtol in (1e-7, 1e-5):
+        run = tol.carry(states, cs, handed, face, status, rtol)
+        ours = np.zeros(12, dtype=int)
+        for k in np.flatnonzero(handed):
+            ours[k] = bench.bench_predictors.carry(states[k].copy(), cs[k], 1e3, rtol=rtol)["steps"]
+        settled = handed & (run.status == Status.SETTLED_CONTACT)
+        assert settled.sum() >= 3
+        assert np.array_equal(ours[settled], run.steps[settled])
+        steps[rtol] = ours[handed].sum()
+    assert steps[1e-5] < 0.8 * steps[1e-7]
 
 
 def test_the_oracles_stop_on_a_constructed_record(bench):
