@@ -26,15 +26,21 @@ per toss) as:
 4. **hops**: the steps and simulated time spent off the table (:func:`contact_mode`, from
    ``advance``'s ``stats``) in each variant. Hops flown in closed form would remove them; counted
    as removed at zero cost (:func:`hop_factor`), an upper bound of that route's gain;
-5. **a floor from the motion itself**, at 1e-7 up to the oracle's stop: the rotation
-   ∫|ω| dt (:func:`rotation`, the trapezoid rule on the states after each accepted step) and
-   the contact episodes (touchdowns, :func:`episodes`) of each toss, and the steps an ideal
-   integrator would need if each of its steps could turn the coin by at most the angle the
-   shipped stepper's median step turns it (:func:`weighted_median` of |ω| h over the steps):
-   ∫|ω| dt summed over the tosses over that angle. **An estimate, not a proof**: it assumes
-   that a step's accuracy is set by how far the coin turns in it, not by the contact's
-   stiffness, the impacts' few-millisecond pulses or the friction's stick-slip, all of which
-   hold the compliant stepper's steps now.
+5. **the steps against the motion itself**, at 1e-7 up to the oracle's stop: the rotation
+   ∫|ω| dt (:func:`rotation`, the trapezoid rule on the states after each accepted step), its
+   share in hops, and the contact episodes (touchdowns, :func:`episodes`) of each toss; the
+   steps an integrator would need at the shipped stepper's own caps, min(:data:`MAX_STEP` = 1
+   ms, π/8 / |ω|) a step (the 1 ms cap binds: π/8 only above 392.7 rad/s, which these tosses
+   never reach), all and with the hops flown in closed form (:func:`caps`); the steps of **an
+   ideal integrator unconstrained by MAX_STEP** turning the coin by π/8 a step
+   (:data:`STEP_TURN`), all and with the hops in closed form; and the share of steps held
+   (shorter than a tenth of their cap: held by the contact's stiffness or the tolerance, not
+   the rotation). **Estimates, not proofs**: they assume that a step's accuracy is set by its
+   caps, not by the contact's stiffness, the impacts' few-millisecond pulses or the friction's
+   stick-slip. Also printed: the steps at the median step's turn (:func:`weighted_median` of
+   |ω| h): ∫|ω| dt over that angle, which equals the shipped phase's steps over the oracle's ×
+   median/mean turn, the oracle's factor times a skew of the turn distribution, **not a
+   floor** (for long rollers sampled every k > 1 steps, a median of stretch means).
 
 The states after each step are those of the shipped run itself: ``advance`` called from the
 handed state with ``max_steps`` k, 2k, 3k, ... (a call reproduces the first k steps of one call
@@ -100,41 +106,59 @@ within 5 %.
 The oracle and the looser tolerance combine as a product (3.71× measured against 3.77×, 2.78×
 against 2.64×, 3.83× against 3.93×): their savings are separate (the tolerance makes each
 stretch cheaper, the oracle cuts the stretch after the last well change). Hops take a larger
-share of what the oracle leaves (31-45 % of the steps at 1e-5, 13-19 % of the shipped phase's),
+share of what the oracle leaves (31-45 % of the steps at 1e-5; the hop steps left after the
+oracle at 1e-5 are 13-19 % of the shipped phase's steps),
 so closed-form flight is worth more after it. The bounces, which none of these routes touch,
 are 2.6-3.6 % of a landing's CPU: with the contact phase at no cost at all a landing would run
 73,000-88,000 a second (the ceiling of every route that leaves the bounces as they are).
 
-The floor of the motion (1e-7, up to the oracle's stop): a handed toss turns the coin by a
-median 3.3, 8.0, 4.5 rad (means 21.7, 20.9, 18.8: a few long rollers) in a median 1 contact
-episode (means 1.8, 2.0, 1.7), ~235-315 steps an episode; its steps turn the coin a median 23.6,
-12.9, 20.3 mrad, a mean 50.0, 33.1, 42.4 mrad (the hops' long steps turn it most). **An ideal
-integrator turning the coin by the median step's angle would need more steps than the shipped
-phase takes** (the shipped phase's steps over its 0.89×, 0.62×, 0.96×): at the shipped
-stepper's resolution the steps are those the rotation needs, and no step control at that
-resolution gains. Only at the stepper's largest turn, π/8 a step (:data:`STEP_TURN`; a
-resolution at which a wobble's chaotic outcome is not resolved), would the steps be 14.8×,
-18.8×, 18.6× fewer: 29,675, 29,297, 29,858 landings a second at today's step price,
-still 1.7× short.
+The motion (1e-7, up to the oracle's stop): a handed toss turns the coin by a median 3.3,
+8.0, 4.5 rad (means 21.7, 20.9, 18.8: a few long rollers) in a median 1 contact episode (means
+1.8, 2.0, 1.7), ~235-315 steps an episode; its steps turn the coin a median 23.6, 12.9, 20.3
+mrad, a mean 50.0, 33.1, 42.4 mrad (the hops' long steps turn it most). The steps at the
+median step's turn, 0.89×, 0.62×, 0.96× the shipped phase's, are the oracle's factor × the
+median/mean turn (1.886 × 23.6/50.0, 1.59 × 12.9/33.1, 2.005 × 20.3/42.4): a skew of the turn
+distribution, which says nothing of what a step control could gain.
+
+The steps against the stepper's caps (printed since the review; ``python
+benchmarks/bench_ceiling.py 300``, seed 7, 2026-11-24 08:02-08:06 UTC, load 2.1 before, 4.5
+after; 206, 205, 221 of 300 handed; its ceiling 14,197, 8,075, 11,594 a second, as the earlier
+300-toss run): hops carry 67 %, 73 %, 62 % of the rotation to the oracle's stop. At the
+stepper's own coarsest step (the 1 ms cap binds) the steps to the stop would be 3.4×, 4.1×,
+3.8× fewer than the shipped phase's (9,200, 8,700, 9,100 landings a second at today's step
+price: no more than the measured combination), 6.3×, 8.3×, 6.5× with the hops in closed form.
+An ideal integrator unconstrained by MAX_STEP, π/8 a step: 13.3×, 19.9×, 16.2× (28,100,
+31,100, 28,200 a second); with the hops in closed form 40.4×, 73.2×, 42.2× (**53,300, 60,900,
+46,600 a second**: about the target). The shipped steps are mostly not far below the cap:
+10 %, 23 %, 11 % of the steps to the stop (13 %, 29 %, 14 % of those in contact) are shorter
+than a tenth of it.
 
 **Conclusion**: on these tosses, at ℓ_r = ℓ_p = 1e-4 m, 50,000 landings a second is not
 reachable by the measured routes: the best sound rule (the last-well-change oracle, which no
 real rule beats) with RTOL 1e-5 and hops flown at no cost gives 8,600-16,500 a second, 3.0-5.8×
 short; the rigid contact's fewer steps at the compliant step's price (a hypothetical: it is
-1.7× dearer) 12,700-23,500, 2.1-3.9× short; even steps as coarse as the stepper allows, stopped
-at the oracle, ~30,000. What would close the gap: a step 3-6× cheaper on top of all of these
-(none in view: the step is ~1 μs, its derivative six ~126 ns evaluations), or a predictor
-naming the final well while the coin can still leave it (``bench_predictors.py``'s "first in
-final well", 9-24×: a prediction, not a bound), or a revised target. Caveats: the oracle's
+1.7× dearer) 12,700-23,500, 2.1-3.9× short. Steps at the stepper's own 1 ms cap, stopped at the
+oracle, give no more: ~9,000 a second, ~14,400-16,100 with the hops in closed form (6.3-8.3×
+fewer steps; through Amdahl by hand, the 300-toss run's shares).
+50,000 would need contact steps turning the coin by ~π/8 (several times longer than the 1 ms
+cap, and than the stiffness-limited explicit steps or the rigid contact's measured
+accuracy-limited steps at RTOL 1e-7), plus the hops in closed form, plus the oracle, at
+today's step price: an integrator held neither by the contact's stiffness nor by the
+tolerance at the rotation's scale, none in view. Or a step 3-6× cheaper on top of the measured
+routes (none in view: the step is ~1 μs, its derivative six ~126 ns evaluations), or a
+predictor naming the final well while the coin can still leave it (``bench_predictors.py``'s
+"first in final well", 9-24×: a prediction, not a bound), or a revised target. Caveats: the oracle's
 stop comes from a chunked run whose trajectory parts from the timed one's at the rounding level,
 so the timed run stopped there is in another well than carried on for 9, 3, 5 tosses at 1e-7
 and 18, 20, 16 at 1e-5 (of ~420): those stops are early, the oracle's factors slightly
 optimistic; RTOL 1e-5 changes 11, 16, 8 faces of the shipped phase's (1.9-3.8 %, as
 ``bench_tolerance.py`` found; a team decision); the hops' bound counts a hop's step at the
 mean step's price (a flight step is cheaper, so it is an upper bound) and ignores what a
-touchdown after a closed-form flight would cost; at ℓ 1e-5 m (not run here) the oracle alone
-was 14.6-61× in steps (``bench_predictors.py``), the upright rollers' time, and the shipped
-phase slower.
+touchdown after a closed-form flight would cost; every landings figure is an upper estimate
+in the same way: the Amdahl scaling leaves out ``land``'s own overhead and the batch's and
+threads' (outside :func:`bounce_cpu`), whose share grows as the phase gets cheaper; at ℓ 1e-5
+m (not run here) the oracle alone was 14.6-61× in steps (``bench_predictors.py``), the upright
+rollers' time, and the shipped phase slower.
 """
 
 from __future__ import annotations
