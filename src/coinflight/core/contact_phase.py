@@ -57,14 +57,18 @@ of steps (see below), not their price.
 The routes measured together on the same tosses (``python benchmarks/bench_ceiling.py 600``,
 seed 7, 2026-11-24 07:36-07:43 UTC, load 8.5-5.9, one thread; e 0.5 μ 0.3, e 0.5 μ 0.6, each
 toss its own e, μ; ℓ_r = ℓ_p = 1e-4 m): stopping each toss at its last well change (an oracle:
-no sound "cannot leave its well" rule does better) 1.88x, 1.68x, 2.04x; RTOL 1e-5 1.57-2.00x;
-both 3.71x, 2.78x, 3.83x (a product); hops flown at no cost, 31-45 % of what is left, 1.45-1.82x
-more: the phase 4.0-6.7x cheaper, landings (the bounces, ~3 % of the CPU, unchanged) 3.7-5.7x,
-**8,600-16,500 a second: 50,000 is 3.0-5.8x out of reach by these routes** (the rigid contact's
-fewer steps at the compliant step's price, a hypothetical, 12,700-23,500). The steps are those
-the motion needs at this stepper's resolution: turning the coin by the median step's angle a
-step would take more steps, not fewer; only steps of π/8, the stepper's largest turn, stopped
-at the oracle, give ~30,000 a second at today's step price.
+no sound "cannot leave its well" rule does better) 1.88×, 1.68×, 2.04×; RTOL 1e-5 1.57-2.00×;
+both 3.71×, 2.78×, 3.83× (a product); hops flown at no cost, 31-45 % of what is left, 1.45-1.82×
+more: the phase 4.0-6.7× cheaper, landings (the bounces, ~3 % of the CPU, unchanged) 3.7-5.7×,
+**8,600-16,500 a second: 50,000 is 3.0-5.8× out of reach by these routes** (upper estimates:
+``land``'s own and the batch's overhead left out; the rigid contact's fewer steps at the
+compliant step's price, a hypothetical, 12,700-23,500). Against the steps' caps (``python
+benchmarks/bench_ceiling.py 300``, 2026-11-24 08:02-08:06 UTC, load 2.1-4.5): steps at
+:data:`MAX_STEP` (which binds: π/8 / |ω| only above 392.7 rad/s), stopped at the oracle, would
+be 3.4-4.1× fewer (~9,000 a second), 6.3-8.3× with the hops in closed form (hops carry 62-73 %
+of the rotation); only an ideal integrator unconstrained by :data:`MAX_STEP`, π/8 a step in
+contact, with the hops in closed form and the oracle, would give 46,600-60,900 a second at
+today's step price.
 
 Where the time goes (the same 300 tosses, one thread, 23:33 UTC, load 2-5; measured with an
 ad-hoc profile that is not in the repository: the steps by mode as :func:`advance`'s
