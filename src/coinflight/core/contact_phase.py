@@ -95,9 +95,12 @@ steps, no faster); numba's "numpy" error model (no change). What is left is the 
 steps, held
 by the stiffness of the compliant contact and of the regularised friction (the explicit
 stepper's stability) and, since the upright decision, by :data:`RTOL` too (1e-5: 44 % fewer
-steps than 1e-7; see :data:`RTOL`): 50,000 a second needs another integrator (implicit in
-the contact forces, or a constrained contact) and the hops flown in closed form (20 % of the
-steps), not a cheaper step. The figures below, to "Upright rollers", are from before the
+steps than 1e-7; see :data:`RTOL`). The sound routes measured together (above) give at most
+~16,500 a second; what remains conceivable for 50,000 is steps several times longer in contact
+(an integrator held neither by the contact's stiffness nor by the tolerance at the rotation's
+scale; the rigid contact's measured steps are not that) with the hops flown in closed form and
+the oracle, or a step 3-6× cheaper on top of those routes (none in view), or a predictor of the
+final well, or a revised target. The figures below, to "Upright rollers", are from before the
 upright decision and these changes. All figures of these notes not dated otherwise (the
 costs, edge rates and MuJoCo comparisons below, the upright decision's counts) were measured
 before the sliding-mass damper (2026-11-24, "Restitution"), which moves single landings as a
