@@ -77,6 +77,8 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -492,6 +494,17 @@ def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
     print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
 
 
+def cases_in_air(omega: np.ndarray, v0: np.ndarray, drag: Drag) -> dict[str, Callable[[], Any]]:
+    """The timed cases through air on the tosses (ω, v0), all of numba's threads: the hand
+    catch, the table's first contact and the landing carried to rest (:data:`SURFACE`); each a
+    call of no arguments (also ``bench_targets.py``'s)."""
+    return {
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag),
+        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag),
+    }
+
+
 def main() -> None:
     import numba
 
@@ -549,11 +562,7 @@ def main() -> None:
         catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
         land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
     flight = 2.0 * v0 / G
-    air_cases = {
-        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag),
-        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag),
-    }
+    air_cases = cases_in_air(omega, v0, drag)
     vacuum_cases = {
         "hand": lambda: HAND_CATCH.faces(COIN, omega, flight, 1.0, G),
         "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0),
