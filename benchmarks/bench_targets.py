@@ -1,0 +1,412 @@
+"""Issue 11's speed targets, all in one run: measured rate, target, ratio, met or not.
+
+    python benchmarks/bench_targets.py                 # default sizes, 5 rounds
+    python benchmarks/bench_targets.py --quick         # a tenth of the tosses, 3 rounds
+    python benchmarks/bench_targets.py --json          # the same as JSON (numbers as numbers)
+    python benchmarks/bench_targets.py --mujoco 100    # + MuJoCo on 100 of the same tosses
+    python benchmarks/bench_targets.py --rounds 7 --seed 11 --n 2000   # every case on 2,000
+
+Issue 11's "Done when" asks, on 2 cores: ≥ 50,000 tosses a second carried to rest (bounces
+and the contact phase), first contact ≥ 2 M a second, tosses with air drag ≥ 100,000 a second,
+and the MuJoCo comparison's speed ratio. Those used to come from different scripts with
+different batch sizes (first contact 1.09 M a second in batches of 300 against 2.23 M in
+200,000, both quiet): here every case runs in one process on 2 of numba's threads (fewer when
+numba has fewer; said in the output), the rounds interleaved (one of each case in turn, so the
+machine's other load falls on all alike), the rate of each case the median of its rounds, the
+load average printed before and after. The cases (default tosses; ``--quick`` a tenth):
+
+- first contact with the table 0.8 m below launch, e 0.5, μ 0.3 (1,000,000 tosses);
+- carried to rest with the default (rocking) ending and with the 3-D contact ending
+  (``ending="contact"``, issue 11's "no planar hand-off"), each at e 0.5, μ 0.3 and with each
+  toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (200,000 tosses rocking, 6,000 contact);
+- through air (C_d 1.17, no spin damping): the hand catch, the table's first contact, the
+  table carried to rest with the rocking ending (100,000 tosses each);
+- with ``--mujoco N`` (the optional extra; one line and skipped when not installed): MuJoCo
+  (:func:`coinflight.studies.mujoco_compare.run`, its settings, ``threads`` 2, its wall time
+  including its calibration as in the landing report) on the first N of the contact ending's
+  tosses, and coinflight's contact ending on the same N with MuJoCo's rolling and torsional
+  lengths as resistances (as :func:`coinflight.studies.landing.mujoco_comparison`), medians of
+  the rounds: the speed ratio coinflight / MuJoCo. No target: the issue asks for the ratio.
+
+The tosses are ``bench_bounce.py``'s (:func:`bench_bounce.tosses`: a US nickel, ωx ~ U(150,
+300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, heads up; seed ``--seed``, default 2026),
+each toss's own e, μ :func:`bench_bounce.own_rates` (its fixed seed 7); the air cases are
+``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled (or loaded from
+numba's cache) on 20 tosses before the timing. The work is bounded before anything runs
+(:func:`seconds_estimate`, at the quiet rates below).
+
+Measured: (the first real run is to be written here)
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import statistics
+import sys
+import time
+from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
+from typing import Any, NamedTuple, NoReturn
+
+import numpy as np
+
+import bench_air  # the script's own folder is on the path
+import bench_bounce
+from coinflight import _validation as v
+from coinflight.model.surface import Drag, Surface
+from coinflight.outcomes.table import land
+
+THREADS = 2
+"""Issue 11's targets are "on 2 cores": numba's threads for every case (fewer if numba has
+fewer)."""
+
+TO_REST = 50_000.0
+FIRST_CONTACT = 2_000_000.0
+IN_AIR = 100_000.0
+"""Issue 11's targets, tosses a second on 2 cores ("Done when")."""
+
+DRAG = Drag(coefficient=1.17)
+"""The air of the air cases: a flat disc broadside on, no spin damping (``bench_air.py``'s
+default)."""
+
+
+class Case(NamedTuple):
+    """One timed case: its key (JSON), what it is, issue 11's target, its default tosses and
+    its rate on the quiet machine (2026-11-24: for the work bound only)."""
+
+    key: str
+    label: str
+    target: float
+    size: int
+    quiet_rate: float
+
+
+CASES = (
+    Case("first_contact", "first contact (table, 0.8 m drop, e 0.5 μ 0.3)", FIRST_CONTACT,
+         1_000_000, 2.0e6),
+    Case("rest_rocking", "to rest, rocking ending, e 0.5 μ 0.3", TO_REST, 200_000, 1.0e5),
+    Case("rest_rocking_own", "to rest, rocking ending, own e, μ", TO_REST, 200_000, 1.0e5),
+    Case("rest_contact", "to rest, 3-D contact ending, e 0.5 μ 0.3", TO_REST, 6_000, 3.0e3),
+    Case("rest_contact_own", "to rest, 3-D contact ending, own e, μ", TO_REST, 6_000, 2.7e3),
+    Case("air_hand", "air: hand catch", IN_AIR, 100_000, 2.5e5),
+    Case("air_first_contact", "air: table first contact", IN_AIR, 100_000, 1.7e5),
+    Case("air_rest", "air: table to rest, rocking ending", IN_AIR, 100_000, 5.0e4),
+)  # fmt: skip
+"""Every timed case, in the order of the table."""
+
+ROW_KEYS = ("key", "target_name", "n", "measured", "target", "ratio", "met", "rounds")
+"""The keys of a row of :func:`rows`, in this order."""
+
+MAX_TOSSES = 10**7
+MAX_ROUNDS = 100
+MAX_MUJOCO = 10**4
+
+
+def sizes(quick: bool, n: int | None = None) -> dict[str, int]:
+    """Tosses of each case: ``n`` for all when given, else the defaults (a tenth with
+    ``quick``)."""
+    if n is not None:
+        return {c.key: n for c in CASES}
+    return {c.key: max(1, c.size // 10) if quick else c.size for c in CASES}
+
+
+def seconds_estimate(size: Mapping[str, int], rounds: int) -> float:
+    """Wall seconds of the timed rounds at the quiet rates of :data:`CASES` (an estimate for
+    the work bound, not a worst case: a loaded machine takes longer)."""
+    return rounds * sum(size[c.key] / c.quiet_rate for c in CASES)
+
+
+def calls(size: Mapping[str, int], seed: int) -> dict[str, Callable[[], Any]]:
+    """Each case of :data:`CASES` as a call of no arguments on its tosses (``bench_bounce``'s,
+    seed ``seed``; cases of one size share them)."""
+    B = bench_bounce
+    drawn: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+
+    def toss(key: str) -> tuple[np.ndarray, np.ndarray]:
+        n = size[key]
+        if n not in drawn:
+            drawn[n] = B.tosses(n, seed)
+        return drawn[n]
+
+    def case(key: str, surface: Surface, **kw: Any) -> Callable[[], Any]:
+        omega, v0 = toss(key)
+        return lambda: land(B.COIN, omega, v0, 1.0, B.G, surface, **kw)
+
+    def air(key: str, name: str) -> Callable[[], Any]:
+        return bench_air.cases_in_air(*toss(key), DRAG)[name]
+
+    own = {k: B.own_rates(size[k]) for k in ("rest_rocking_own", "rest_contact_own")}
+    out = {
+        "first_contact": case("first_contact", B.SURFACE, max_bounces=0),
+        "rest_rocking": case("rest_rocking", B.SURFACE),
+        "rest_rocking_own": case("rest_rocking_own", B.SURFACE, contact=own["rest_rocking_own"]),
+        "rest_contact": case("rest_contact", B.CONTACT),
+        "rest_contact_own": case("rest_contact_own", B.CONTACT, contact=own["rest_contact_own"]),
+        "air_hand": air("air_hand", "hand"),
+        "air_first_contact": air("air_first_contact", "table first contact"),
+        "air_rest": air("air_rest", "table to rest"),
+    }
+    assert list(out) == [c.key for c in CASES]
+    return out
+
+
+def interleaved(
+    cases: Mapping[str, Callable[[], Any]], size: Mapping[str, int], rounds: int
+) -> dict[str, list[float]]:
+    """Tosses a second of each case in each of ``rounds`` rounds, one of each case in turn:
+    {key: [rate of round 1, …]}."""
+    rates: dict[str, list[float]] = {key: [] for key in cases}
+    for _ in range(rounds):
+        for key, fn in cases.items():
+            t0 = time.perf_counter()
+            fn()
+            rates[key].append(size[key] / (time.perf_counter() - t0))
+    return rates
+
+
+def rows(rates: Mapping[str, Sequence[float]], size: Mapping[str, int]) -> list[dict[str, Any]]:
+    """The table: one row a case of :data:`CASES` (keys :data:`ROW_KEYS`), ``measured`` the
+    median of its rounds' rates, ``ratio`` measured / target, ``met`` ratio ≥ 1. ValueError
+    when a case has no rates or one that is not a finite positive number."""
+    out = []
+    for c in CASES:
+        got = [float(r) for r in rates.get(c.key, ())]
+        if not got:
+            raise ValueError(f"no rate measured for {c.key}")
+        bad = [r for r in got if not (math.isfinite(r) and r > 0.0)]
+        if bad:
+            raise ValueError(f"rates must be finite and positive, got {bad[0]!r} for {c.key}")
+        measured = statistics.median(got)
+        ratio = measured / c.target
+        row = {
+            "key": c.key,
+            "target_name": c.label,
+            "n": int(size[c.key]),
+            "measured": measured,
+            "target": c.target,
+            "ratio": ratio,
+            "met": bool(ratio >= 1.0),
+            "rounds": got,
+        }
+        out.append(row)
+    return out
+
+
+def table(found: Sequence[Mapping[str, Any]]) -> str:
+    """:func:`rows` as a text table."""
+    head = ("target", "tosses", "measured /s", "target /s", "ratio", "met")
+    lines = [f"{head[0]:<44} {head[1]:>9} {head[2]:>13} {head[3]:>11} {head[4]:>7}  {head[5]}"]
+    for r in found:
+        lines.append(
+            f"{r['target_name']:<44} {r['n']:>9,} {r['measured']:>13,.0f} {r['target']:>11,.0f} "
+            f"{r['ratio']:>7.3f}  {'yes' if r['met'] else 'no'}"
+        )
+    return "\n".join(lines)
+
+
+def machine() -> dict[str, Any]:
+    """The processor's model (from /proc/cpuinfo where there is one), CPUs, system."""
+    model = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return {
+        "processor": model,
+        "cpus": os.cpu_count(),
+        "system": f"{platform.system()} {platform.release()} {platform.machine()}",
+    }
+
+
+def versions() -> dict[str, str | None]:
+    import numba
+
+    import coinflight
+    from coinflight.studies import mujoco_compare
+
+    mujoco = None
+    if mujoco_compare.available():
+        import mujoco as mj
+
+        mujoco = str(mj.__version__)
+    return {
+        "coinflight": coinflight.__version__,
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "numba": numba.__version__,
+        "mujoco": mujoco,
+    }
+
+
+def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> dict[str, Any]:
+    """MuJoCo on the first ``m`` of the contact ending's tosses (one run, its settings, 2
+    threads) and coinflight's contact ending on the same with MuJoCo's rolling and torsional
+    lengths as resistances (median of ``rounds``): rates and the ratio coinflight / MuJoCo.
+    {"skipped": reason} when MuJoCo is not installed."""
+    from coinflight.studies import mujoco_compare as mc
+
+    if not mc.available():
+        return {"skipped": "MuJoCo not installed (pip install 'coinflight[mujoco]')"}
+    B = bench_bounce
+    omega, v0 = B.tosses(max(m, size["rest_contact"]), seed)
+    omega, v0 = omega[:m], v0[:m]
+    e, mu = B.CONTACT.restitution, B.CONTACT.friction
+    resisted = Surface(
+        "table", B.DROP, e, mu, rolling_resistance=mc.ROLLING, pivoting_resistance=mc.TORSIONAL,
+        ending="contact",
+    )  # fmt: skip
+    land(B.COIN, omega[:20], v0[:20], 1.0, B.G, resisted)  # compile or load the cache
+    ours = interleaved(
+        {"contact": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"contact": m}, rounds
+    )["contact"]
+    run = mc.run(B.COIN, omega, v0, B.DROP, e, mu, B.G, threads=THREADS)
+    theirs = m / float(run.elapsed)
+    rate = statistics.median(ours)
+    return {
+        "n": m,
+        "mujoco": run.version,
+        "mujoco_rate": theirs,
+        "mujoco_moving": int(np.count_nonzero(run.moving)),
+        "limit": float(run.limit),
+        "coinflight_rate": rate,
+        "coinflight_rounds": ours,
+        "ratio": rate / theirs,
+        "rolling_resistance": mc.ROLLING,
+        "pivoting_resistance": mc.TORSIONAL,
+    }
+
+
+def measure(
+    size: Mapping[str, int], rounds: int, seed: int, mujoco: int = 0, threads: int = THREADS
+) -> dict[str, Any]:
+    """Everything the report holds but the command: threads, load before and after, the rows,
+    MuJoCo's part (None without ``mujoco``)."""
+    import numba
+
+    threads = min(threads, numba.config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]
+    numba.set_num_threads(threads)
+    for fn in calls({c.key: 20 for c in CASES}, seed).values():  # compile or load the cache
+        fn()
+    timed = calls(size, seed)
+    load_before = os.getloadavg()
+    rates = interleaved(timed, size, rounds)
+    extra = against_mujoco(mujoco, size, seed, rounds) if mujoco else None
+    load_after = os.getloadavg()
+    return {
+        "threads": threads,
+        "load": {"before": list(load_before), "after": list(load_after)},
+        "rows": rows(rates, size),
+        "mujoco": extra,
+    }
+
+
+def report(
+    measured: Mapping[str, Any], command: str, seed: int, rounds: int, when: str
+) -> dict[str, Any]:
+    """The JSON report: the command, date (UTC), machine, versions, seeds, rounds, threads,
+    load, the rows and MuJoCo's part."""
+    return {
+        "command": command,
+        "date": when,
+        "machine": machine(),
+        "versions": versions(),
+        "seed": seed,
+        "own_rates_seed": 7,
+        "rounds": rounds,
+        "threads": measured["threads"],
+        "load": measured["load"],
+        "targets": measured["rows"],
+        "mujoco": measured["mujoco"],
+    }
+
+
+def text(rep: Mapping[str, Any]) -> str:
+    """The report as the printed text."""
+    m, ver = rep["machine"], rep["versions"]
+    before, after = rep["load"]["before"], rep["load"]["after"]
+    lines = [
+        f"{rep['command']}  ({rep['date']})",
+        f"{m['processor']}, {m['cpus']} CPUs, {m['system']}; Python {ver['python']}, NumPy "
+        f"{ver['numpy']}, numba {ver['numba']}, coinflight {ver['coinflight']}",
+        f"{rep['threads']} threads, seed {rep['seed']} (own e, μ seed {rep['own_rates_seed']}), "
+        f"medians of {rep['rounds']} interleaved rounds; load {before[0]:.2f} before",
+    ]
+    if rep["threads"] < THREADS:
+        lines.append(f"  (numba has {rep['threads']} threads: the targets are for {THREADS})")
+    lines.append(table(rep["targets"]))
+    mj = rep["mujoco"]
+    if mj is not None and "skipped" in mj:
+        lines.append(f"MuJoCo: skipped, {mj['skipped']}")
+    elif mj is not None:
+        lines.append(
+            f"MuJoCo {mj['mujoco']}, {mj['n']:,} of the same tosses: {mj['mujoco_rate']:,.1f} "
+            f"tosses/s ({mj['mujoco_moving']} still moving at {mj['limit']:g} s); coinflight's "
+            f"contact ending (ℓ_r {mj['rolling_resistance']:g} m, ℓ_p "
+            f"{mj['pivoting_resistance']:g} m) {mj['coinflight_rate']:,.0f} tosses/s: ratio "
+            f"{mj['ratio']:,.0f}"
+        )
+    lines.append(f"load average {before[0]:.2f} before, {after[0]:.2f} after")
+    return "\n".join(lines)
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> NoReturn:  # one line, exit code 2
+        self.exit(2, f"bench_targets.py: {message}\n")
+
+
+def parse(argv: Sequence[str]) -> argparse.Namespace:
+    """The options, checked (one line and exit code 2 on bad input, the work bounded)."""
+    parser = _Parser(description=__doc__.split("\n")[0] if __doc__ else None)
+    parser.add_argument("--quick", action="store_true", help="a tenth of the tosses, 3 rounds")
+    parser.add_argument("--json", action="store_true", help="print the report as JSON")
+    parser.add_argument("--rounds", type=int, default=None, help="rounds (default 5; quick 3)")
+    parser.add_argument("--seed", type=int, default=2026, help="seed of the tosses")
+    parser.add_argument("--n", type=int, default=None, help="tosses of every case")
+    parser.add_argument("--mujoco", type=int, default=0, metavar="N", help="MuJoCo on N tosses")
+    args = parser.parse_args(argv)
+    if args.rounds is None:
+        args.rounds = 3 if args.quick else 5
+    try:
+        v.count("--rounds", args.rounds, 1, MAX_ROUNDS)
+        v.count("--seed", args.seed, 0)
+        if args.n is not None:
+            v.count("--n", args.n, 1, MAX_TOSSES)
+        v.count("--mujoco", args.mujoco, 0, MAX_MUJOCO)
+        args.sizes = sizes(args.quick, args.n)
+        v.work_bound(
+            f"{args.rounds} rounds of the cases",
+            seconds_estimate(args.sizes, args.rounds),
+            v.MAX_RUN_SECONDS,
+            "s",
+            "use fewer tosses (--n, --quick) or fewer --rounds",
+        )
+        if args.mujoco:
+            from coinflight.studies import mujoco_compare as mc
+
+            mc.bound([args.mujoco], mc.SETTLE)
+    except ValueError as err:
+        parser.error(str(err))
+    return args
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    args = parse(argv)
+    when = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
+    measured = measure(args.sizes, args.rounds, args.seed, args.mujoco)
+    command = " ".join(["python benchmarks/bench_targets.py", *argv])
+    rep = report(measured, command, args.seed, args.rounds, when)
+    print(json.dumps(rep, indent=1, ensure_ascii=False) if args.json else text(rep))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,202 @@
+"""benchmarks/bench_targets.py: the table of issue 11's speed targets built from given rates
+(medians, ratios measured / target, met flags, exact keys; no timing), a tiny run of the
+command end to end (structure; every rate finite and positive, no threshold on any), and bad
+input refused in one line with exit code 2."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import subprocess
+import sys
+from types import ModuleType
+
+import pytest
+
+from _bench import BENCH, bench_script, load_bench
+
+
+@pytest.fixture
+def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
+    monkeypatch.syspath_prepend(str(BENCH))  # the script imports bench_bounce and bench_air
+    return load_bench("bench_targets")
+
+
+def _rates(bench: ModuleType, value: float = 1.0) -> dict[str, list[float]]:
+    return {c.key: [value] for c in bench.CASES}
+
+
+def test_the_targets_are_issue_11s(bench):
+    # Issue 11, "Done when": ≥ 50,000 tosses/s carried to rest on 2 cores, first contact
+    # ≥ 2 M/s, tosses with air drag ≥ 100,000/s.
+    target = {c.key: c.target for c in bench.CASES}
+    assert target == {
+        "first_contact": 2_000_000.0,
+        "rest_rocking": 50_000.0,
+        "rest_rocking_own": 50_000.0,
+        "rest_contact": 50_000.0,
+        "rest_contact_own": 50_000.0,
+        "air_hand": 100_000.0,
+        "air_first_contact": 100_000.0,
+        "air_rest": 100_000.0,
+    }
+    assert bench.THREADS == 2
+
+
+def test_rows_give_the_median_the_ratio_and_met(bench):
+    size = bench.sizes(False)
+    rates = _rates(bench)
+    # Medians of the rounds (not the mean: 1, 2, 30 has median 2, mean 11).
+    rates["first_contact"] = [1_000_000.0, 3_000_000.0, 2_500_000.0]
+    rates["rest_contact"] = [1.0, 2.0, 30.0]
+    rates["rest_rocking"] = [50_000.0]  # exactly at the target: met
+    rates["rest_rocking_own"] = [49_999.0]  # just below: not met
+    rates["air_hand"] = [250_000.0, 200_000.0]  # even count: mean of the middle two
+    rows = bench.rows(rates, size)
+    assert [r["key"] for r in rows] == [c.key for c in bench.CASES]
+    for r in rows:
+        assert tuple(r) == bench.ROW_KEYS
+    by = {r["key"]: r for r in rows}
+    first = by["first_contact"]
+    assert first["measured"] == 2_500_000.0
+    assert first["ratio"] == pytest.approx(1.25, rel=1e-15)
+    assert first["met"] is True
+    assert first["n"] == 1_000_000 and first["rounds"] == [1_000_000.0, 3_000_000.0, 2_500_000.0]
+    assert by["rest_contact"]["measured"] == 2.0
+    assert by["rest_contact"]["ratio"] == pytest.approx(2.0 / 50_000.0, rel=1e-15)
+    assert by["rest_contact"]["met"] is False
+    assert by["rest_rocking"]["ratio"] == 1.0 and by["rest_rocking"]["met"] is True
+    assert by["rest_rocking_own"]["met"] is False
+    assert by["air_hand"]["measured"] == 225_000.0
+    assert by["air_hand"]["ratio"] == pytest.approx(2.25, rel=1e-15)
+    assert by["air_hand"]["met"] is True
+    assert by["air_rest"]["ratio"] == pytest.approx(1e-5, rel=1e-15)
+    assert json.loads(json.dumps(rows)) == rows  # numbers as numbers, booleans as booleans
+    text = bench.table(rows)
+    assert text.count("\n") == len(rows)
+    assert "2,500,000" in text and "1.250  yes" in text and "0.000  no" in text
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf])
+def test_rows_refuse_a_rate_not_finite_and_positive(bench, bad):
+    rates = _rates(bench)
+    rates["air_rest"] = [1.0, bad]
+    with pytest.raises(ValueError, match="air_rest"):
+        bench.rows(rates, bench.sizes(True))
+
+
+def test_rows_refuse_a_case_without_rates(bench):
+    rates = _rates(bench)
+    del rates["rest_contact_own"]
+    with pytest.raises(ValueError, match="no rate measured for rest_contact_own"):
+        bench.rows(rates, bench.sizes(True))
+    rates["rest_contact_own"] = []
+    with pytest.raises(ValueError, match="rest_contact_own"):
+        bench.rows(rates, bench.sizes(True))
+
+
+def test_sizes_and_the_work_bound(bench):
+    full, quick = bench.sizes(False), bench.sizes(True)
+    assert full["first_contact"] == 1_000_000 and full["rest_contact"] == 6_000
+    assert all(quick[k] == full[k] // 10 for k in full)
+    assert set(bench.sizes(False, 7).values()) == {7}
+    # The estimate is rounds × Σ n / quiet rate: linear in both.
+    one = bench.seconds_estimate(full, 1)
+    assert bench.seconds_estimate(full, 4) == pytest.approx(4 * one, rel=1e-12)
+    assert one == pytest.approx(sum(c.size / c.quiet_rate for c in bench.CASES), rel=1e-12)
+
+
+def test_the_report_has_exactly_its_keys(bench):
+    measured = {
+        "threads": 2,
+        "load": {"before": [1.0, 2.0, 3.0], "after": [1.5, 2.0, 3.0]},
+        "rows": bench.rows(_rates(bench, 10.0), bench.sizes(True)),
+        "mujoco": None,
+    }
+    rep = bench.report(measured, "python benchmarks/bench_targets.py", 11, 3, "2026-11-24T07:00Z")
+    assert set(rep) == {
+        "command", "date", "machine", "versions", "seed", "own_rates_seed", "rounds", "threads",
+        "load", "targets", "mujoco",
+    }  # fmt: skip
+    assert rep["seed"] == 11 and rep["rounds"] == 3 and rep["own_rates_seed"] == 7
+    assert set(rep["machine"]) == {"processor", "cpus", "system"}
+    assert set(rep["versions"]) == {"coinflight", "python", "numpy", "numba", "mujoco"}
+    text = bench.text(rep)
+    assert "load average 1.00 before, 1.50 after" in text
+    assert "MuJoCo" not in text
+    skipped = bench.text({**rep, "mujoco": {"skipped": "MuJoCo not installed"}})
+    assert skipped.splitlines()[-2] == "MuJoCo: skipped, MuJoCo not installed"
+
+
+def _run(*args: str) -> subprocess.CompletedProcess[str]:
+    env = dict(os.environ, NUMBA_NUM_THREADS="2")
+    return subprocess.run(
+        [sys.executable, str(bench_script("bench_targets")), *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
+
+
+def test_a_tiny_run_gives_the_whole_report():
+    from coinflight.studies import mujoco_compare
+
+    done = _run("--quick", "--json", "--n", "24", "--rounds", "2", "--seed", "5", "--mujoco", "3")
+    assert done.returncode == 0, done.stderr
+    rep = json.loads(done.stdout)
+    assert rep["command"] == (
+        "python benchmarks/bench_targets.py --quick --json --n 24 --rounds 2 --seed 5 --mujoco 3"
+    )
+    assert rep["seed"] == 5 and rep["rounds"] == 2 and rep["threads"] == 2
+    assert len(rep["load"]["before"]) == len(rep["load"]["after"]) == 3
+    rows = rep["targets"]
+    assert [r["key"] for r in rows] == [
+        "first_contact", "rest_rocking", "rest_rocking_own", "rest_contact", "rest_contact_own",
+        "air_hand", "air_first_contact", "air_rest",
+    ]  # fmt: skip
+    for r in rows:
+        assert list(r) == [
+            "key", "target_name", "n", "measured", "target", "ratio", "met", "rounds",
+        ]  # fmt: skip
+        assert r["n"] == 24 and len(r["rounds"]) == 2
+        for x in (r["measured"], *r["rounds"]):
+            assert isinstance(x, float) and math.isfinite(x) and x > 0.0
+        assert r["ratio"] == pytest.approx(r["measured"] / r["target"], rel=1e-12)
+        assert r["met"] is (r["ratio"] >= 1.0)
+    mj = rep["mujoco"]
+    if not mujoco_compare.available():
+        assert set(mj) == {"skipped"}
+        return
+    assert mj["n"] == 3 and mj["mujoco"] == rep["versions"]["mujoco"]
+    for key in ("mujoco_rate", "coinflight_rate", "ratio"):
+        assert math.isfinite(mj[key]) and mj[key] > 0.0
+    assert mj["ratio"] == pytest.approx(mj["coinflight_rate"] / mj["mujoco_rate"], rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [
+        (["--rounds", "0"], "--rounds must be between 1 and 100, got 0"),
+        (["--n", "0"], "--n must be between 1 and 10000000, got 0"),
+        (["--seed", "-1"], "--seed must be at least 0, got -1"),
+        (["--mujoco", "-2"], "--mujoco must be between 0 and 10000, got -2"),
+        (["--rounds", "x"], "argument --rounds: invalid int value: 'x'"),
+        (["--n", "10000000"], "more than the limit"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_code_2(bench, capsys, args, says):
+    with pytest.raises(SystemExit) as stop:
+        bench.parse(args)
+    assert stop.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("bench_targets.py: ")
+    assert says in err
+
+
+def test_the_command_refuses_zero_rounds_in_one_line():
+    done = _run("--rounds", "0")
+    assert done.returncode == 2
+    assert done.stdout == ""
+    assert done.stderr == "bench_targets.py: --rounds must be between 1 and 100, got 0\n"
