@@ -494,14 +494,19 @@ def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
     print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
 
 
-def cases_in_air(omega: np.ndarray, v0: np.ndarray, drag: Drag) -> dict[str, Callable[[], Any]]:
-    """The timed cases through air on the tosses (ω, v0), all of numba's threads: the hand
-    catch, the table's first contact and the landing carried to rest (:data:`SURFACE`); each a
-    call of no arguments (also ``bench_targets.py``'s)."""
+def cases_in_air(
+    omega: np.ndarray, v0: np.ndarray, drag: Drag, parallel: bool = True
+) -> dict[str, Callable[[], Any]]:
+    """The timed cases through air on the tosses (ω, v0), all of numba's threads (one without
+    ``parallel``): the hand catch, the table's first contact and the landing carried to rest
+    (:data:`SURFACE`); each a call of no arguments (also ``bench_targets.py``'s)."""
+    p = parallel
     return {
-        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag),
-        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag),
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=p),
+        "table first contact": lambda: land(
+            COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=p
+        ),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=p),
     }
 
 

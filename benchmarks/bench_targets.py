@@ -5,6 +5,7 @@
     python benchmarks/bench_targets.py --json          # the same as JSON (numbers as numbers)
     python benchmarks/bench_targets.py --mujoco 100    # + MuJoCo on 100 of the same tosses
     python benchmarks/bench_targets.py --rounds 7 --seed 11 --n 2000   # every case on 2,000
+    python benchmarks/bench_targets.py --cpu           # + each case in one thread, per CPU s
 
 Issue 11's "Done when" asks, on 2 cores: ≥ 50,000 tosses a second carried to rest (bounces
 and the contact phase), first contact ≥ 2 M a second, tosses with air drag ≥ 100,000 a second,
@@ -27,6 +28,12 @@ load average printed before and after. The cases (default tosses; ``--quick`` a 
   tosses, and coinflight's contact ending on the same N with MuJoCo's rolling and torsional
   lengths as resistances (as :func:`coinflight.studies.landing.mujoco_comparison`), medians of
   the rounds: the speed ratio coinflight / MuJoCo. No target: the issue asks for the ratio.
+
+With ``--cpu`` each case also runs in one thread (``parallel=False``) right after its
+timing in each round, timed by the thread's CPU clock: on a shared machine the wall clock counts
+the time other processes hold the cores, so the table adds the one-thread rate per CPU second
+and twice that over the target (what 2 cores would give if they scaled perfectly and nothing
+else ran: an upper estimate beside the measured rate, not the target's measure).
 
 The tosses are ``bench_bounce.py``'s (:func:`bench_bounce.tosses`: a US nickel, ωx ~ U(150,
 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, heads up; seed ``--seed``, default 2026),
@@ -124,7 +131,10 @@ CASES = (
 )  # fmt: skip
 """Every timed case, in the order of the table."""
 
-ROW_KEYS = ("key", "target_name", "n", "measured", "target", "ratio", "met", "rounds")
+ROW_KEYS = (
+    "key", "target_name", "n", "measured", "target", "ratio", "met", "rounds", "one_thread",
+    "one_thread_ratio",
+)  # fmt: skip
 """The keys of a row of :func:`rows`, in this order."""
 
 MAX_TOSSES = 10**7
@@ -146,9 +156,12 @@ def seconds_estimate(size: Mapping[str, int], rounds: int) -> float:
     return rounds * sum(size[c.key] / c.quiet_rate for c in CASES)
 
 
-def calls(size: Mapping[str, int], seed: int) -> dict[str, Callable[[], Any]]:
+def calls(
+    size: Mapping[str, int], seed: int, parallel: bool = True
+) -> dict[str, Callable[[], Any]]:
     """Each case of :data:`CASES` as a call of no arguments on its tosses (``bench_bounce``'s,
-    seed ``seed``; cases of one size share them)."""
+    seed ``seed``; cases of one size share them), on numba's threads (one without
+    ``parallel``)."""
     B = bench_bounce
     drawn: dict[int, tuple[np.ndarray, np.ndarray]] = {}
 
@@ -160,10 +173,10 @@ def calls(size: Mapping[str, int], seed: int) -> dict[str, Callable[[], Any]]:
 
     def case(key: str, surface: Surface, **kw: Any) -> Callable[[], Any]:
         omega, v0 = toss(key)
-        return lambda: land(B.COIN, omega, v0, 1.0, B.G, surface, **kw)
+        return lambda: land(B.COIN, omega, v0, 1.0, B.G, surface, parallel=parallel, **kw)
 
     def air(key: str, name: str) -> Callable[[], Any]:
-        return bench_air.cases_in_air(*toss(key), DRAG)[name]
+        return bench_air.cases_in_air(*toss(key), DRAG, parallel)[name]
 
     own = {k: B.own_rates(size[k]) for k in ("rest_rocking_own", "rest_contact_own")}
     out = {
@@ -181,32 +194,59 @@ def calls(size: Mapping[str, int], seed: int) -> dict[str, Callable[[], Any]]:
 
 
 def interleaved(
-    cases: Mapping[str, Callable[[], Any]], size: Mapping[str, int], rounds: int
-) -> dict[str, list[float]]:
-    """Tosses a second of each case in each of ``rounds`` rounds, one of each case in turn:
-    {key: [rate of round 1, …]}."""
+    cases: Mapping[str, Callable[[], Any]],
+    size: Mapping[str, int],
+    rounds: int,
+    serial: Mapping[str, Callable[[], Any]] | None = None,
+) -> tuple[dict[str, list[float]], dict[str, list[float]]]:
+    """Tosses a second of each case in each of ``rounds`` rounds, one of each case in turn,
+    and with ``serial`` (the same cases in one thread) right after each its tosses per second
+    of that thread's CPU time (:func:`time.thread_time`: the machine's other load excluded as
+    far as CPU time does): ({key: [rate of round 1, …]}, {key: [CPU rate of round 1, …]} or {})."""
     rates: dict[str, list[float]] = {key: [] for key in cases}
+    cpu: dict[str, list[float]] = {key: [] for key in serial} if serial else {}
     for _ in range(rounds):
         for key, fn in cases.items():
             t0 = time.perf_counter()
             fn()
             rates[key].append(size[key] / (time.perf_counter() - t0))
-    return rates
+            if serial:
+                t0 = time.thread_time()
+                serial[key]()
+                cpu[key].append(size[key] / (time.thread_time() - t0))
+    return rates, cpu
 
 
-def rows(rates: Mapping[str, Sequence[float]], size: Mapping[str, int]) -> list[dict[str, Any]]:
+def _median(key: str, given: Mapping[str, Sequence[float]]) -> tuple[float, list[float]]:
+    """The median of a case's rates and the rates; ValueError when there is none, or one that
+    is not a finite positive number."""
+    got = [float(r) for r in given.get(key, ())]
+    if not got:
+        raise ValueError(f"no rate measured for {key}")
+    bad = [r for r in got if not (math.isfinite(r) and r > 0.0)]
+    if bad:
+        raise ValueError(f"rates must be finite and positive, got {bad[0]!r} for {key}")
+    return statistics.median(got), got
+
+
+def rows(
+    rates: Mapping[str, Sequence[float]],
+    size: Mapping[str, int],
+    cpu: Mapping[str, Sequence[float]] | None = None,
+) -> list[dict[str, Any]]:
     """The table: one row a case of :data:`CASES` (keys :data:`ROW_KEYS`), ``measured`` the
-    median of its rounds' rates, ``ratio`` measured / target, ``met`` ratio ≥ 1. ValueError
-    when a case has no rates or one that is not a finite positive number."""
+    median of its rounds' rates, ``ratio`` measured / target, ``met`` ratio ≥ 1; with ``cpu``
+    (tosses per CPU second of one thread, by round) ``one_thread`` its median and
+    ``one_thread_ratio`` :data:`THREADS` × that / target (what 2 cores would give if they
+    scaled perfectly and nothing else ran: an upper estimate, not the target's measure), else
+    None. ValueError when a case has no rates or one that is not a finite positive number."""
     out = []
     for c in CASES:
-        got = [float(r) for r in rates.get(c.key, ())]
-        if not got:
-            raise ValueError(f"no rate measured for {c.key}")
-        bad = [r for r in got if not (math.isfinite(r) and r > 0.0)]
-        if bad:
-            raise ValueError(f"rates must be finite and positive, got {bad[0]!r} for {c.key}")
-        measured = statistics.median(got)
+        measured, got = _median(c.key, rates)
+        one, one_ratio = None, None
+        if cpu is not None:
+            one = _median(c.key, cpu)[0]
+            one_ratio = THREADS * one / c.target
         ratio = measured / c.target
         row = {
             "key": c.key,
@@ -217,20 +257,27 @@ def rows(rates: Mapping[str, Sequence[float]], size: Mapping[str, int]) -> list[
             "ratio": ratio,
             "met": bool(ratio >= 1.0),
             "rounds": got,
+            "one_thread": one,
+            "one_thread_ratio": one_ratio,
         }
         out.append(row)
     return out
 
 
 def table(found: Sequence[Mapping[str, Any]]) -> str:
-    """:func:`rows` as a text table."""
+    """:func:`rows` as a text table (with the one-thread columns when measured)."""
+    cpu = any(r["one_thread"] is not None for r in found)
     head = ("target", "tosses", "measured /s", "target /s", "ratio", "met")
-    lines = [f"{head[0]:<44} {head[1]:>9} {head[2]:>13} {head[3]:>11} {head[4]:>7}  {head[5]}"]
+    line = f"{head[0]:<44} {head[1]:>9} {head[2]:>13} {head[3]:>11} {head[4]:>7}  {head[5]:<3}"
+    lines = [line + ("  1 thread /CPU s  2 × that / target" if cpu else "")]
     for r in found:
-        lines.append(
+        line = (
             f"{r['target_name']:<44} {r['n']:>9,} {r['measured']:>13,.0f} {r['target']:>11,.0f} "
-            f"{r['ratio']:>7.3f}  {'yes' if r['met'] else 'no'}"
+            f"{r['ratio']:>7.3f}  {'yes' if r['met'] else 'no':<3}"
         )
+        if cpu:
+            line += f"  {r['one_thread']:>15,.0f}  {r['one_thread_ratio']:>17.3f}"
+        lines.append(line.rstrip())
     return "\n".join(lines)
 
 
@@ -291,7 +338,7 @@ def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> d
     land(B.COIN, omega[:20], v0[:20], 1.0, B.G, resisted)  # compile or load the cache
     ours = interleaved(
         {"contact": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"contact": m}, rounds
-    )["contact"]
+    )[0]["contact"]
     run = mc.run(B.COIN, omega, v0, B.DROP, e, mu, B.G, threads=THREADS)
     theirs = m / float(run.elapsed)
     rate = statistics.median(ours)
@@ -310,25 +357,33 @@ def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> d
 
 
 def measure(
-    size: Mapping[str, int], rounds: int, seed: int, mujoco: int = 0, threads: int = THREADS
+    size: Mapping[str, int],
+    rounds: int,
+    seed: int,
+    mujoco: int = 0,
+    threads: int = THREADS,
+    cpu: bool = False,
 ) -> dict[str, Any]:
-    """Everything the report holds but the command: threads, load before and after, the rows,
-    MuJoCo's part (None without ``mujoco``)."""
+    """Everything the report holds but the command: threads, load before and after, the rows
+    (with ``cpu`` each case also in one thread per CPU second), MuJoCo's part (None without
+    ``mujoco``)."""
     import numba
 
     threads = min(threads, numba.config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]
     numba.set_num_threads(threads)
-    for fn in calls({c.key: 20 for c in CASES}, seed).values():  # compile or load the cache
-        fn()
+    for parallel in (True, False) if cpu else (True,):  # compile or load the cache
+        for fn in calls({c.key: 20 for c in CASES}, seed, parallel).values():
+            fn()
     timed = calls(size, seed)
+    serial = calls(size, seed, parallel=False) if cpu else None
     load_before = os.getloadavg()
-    rates = interleaved(timed, size, rounds)
+    rates, one = interleaved(timed, size, rounds, serial)
     extra = against_mujoco(mujoco, size, seed, rounds) if mujoco else None
     load_after = os.getloadavg()
     return {
         "threads": threads,
         "load": {"before": list(load_before), "after": list(load_after)},
-        "rows": rows(rates, size),
+        "rows": rows(rates, size, one if cpu else None),
         "mujoco": extra,
     }
 
@@ -396,6 +451,9 @@ def parse(argv: Sequence[str]) -> argparse.Namespace:
     parser.add_argument("--seed", type=int, default=2026, help="seed of the tosses")
     parser.add_argument("--n", type=int, default=None, help="tosses of every case")
     parser.add_argument("--mujoco", type=int, default=0, metavar="N", help="MuJoCo on N tosses")
+    parser.add_argument(
+        "--cpu", action="store_true", help="also each case in one thread, per CPU second"
+    )
     args = parser.parse_args(argv)
     if args.rounds is None:
         args.rounds = 3 if args.quick else 5
@@ -408,7 +466,7 @@ def parse(argv: Sequence[str]) -> argparse.Namespace:
         args.sizes = sizes(args.quick, args.n)
         v.work_bound(
             f"{args.rounds} rounds of the cases",
-            seconds_estimate(args.sizes, args.rounds),
+            seconds_estimate(args.sizes, args.rounds) * (3 if args.cpu else 1),
             v.MAX_RUN_SECONDS,
             "s",
             "use fewer tosses (--n, --quick) or fewer --rounds",
@@ -426,7 +484,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     args = parse(argv)
     when = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
-    measured = measure(args.sizes, args.rounds, args.seed, args.mujoco)
+    measured = measure(args.sizes, args.rounds, args.seed, args.mujoco, cpu=args.cpu)
     command = " ".join(["python benchmarks/bench_targets.py", *argv])
     rep = report(measured, command, args.seed, args.rounds, when)
     print(json.dumps(rep, indent=1, ensure_ascii=False) if args.json else text(rep))

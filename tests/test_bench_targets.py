@@ -72,10 +72,29 @@ def test_rows_give_the_median_the_ratio_and_met(bench):
     assert by["air_hand"]["ratio"] == pytest.approx(2.25, rel=1e-15)
     assert by["air_hand"]["met"] is True
     assert by["air_rest"]["ratio"] == pytest.approx(1e-5, rel=1e-15)
+    assert all(r["one_thread"] is None and r["one_thread_ratio"] is None for r in rows)
     assert json.loads(json.dumps(rows)) == rows  # numbers as numbers, booleans as booleans
     text = bench.table(rows)
     assert text.count("\n") == len(rows)
     assert "2,500,000" in text and "1.250  yes" in text and "0.000  no" in text
+    assert "CPU" not in text
+
+
+def test_rows_with_one_thread_per_cpu_second(bench):
+    rates = _rates(bench)
+    cpu = _rates(bench, 2.0)
+    cpu["rest_contact"] = [1_000.0, 1_500.0, 30_000.0]  # median 1,500
+    cpu["air_rest"] = [50_000.0]  # 2 × 50,000 = the target exactly
+    by = {r["key"]: r for r in bench.rows(rates, bench.sizes(True), cpu)}
+    assert by["rest_contact"]["one_thread"] == 1_500.0
+    assert by["rest_contact"]["one_thread_ratio"] == pytest.approx(2 * 1_500 / 50_000, rel=1e-15)
+    assert by["air_rest"]["one_thread_ratio"] == 1.0
+    assert by["air_rest"]["met"] is False  # met is the wall clock's, on 2 threads
+    text = bench.table(list(by.values()))
+    assert "1 thread /CPU s" in text and "1,500" in text and "0.060" in text
+    cpu["air_hand"] = [math.nan]
+    with pytest.raises(ValueError, match="air_hand"):
+        bench.rows(rates, bench.sizes(True), cpu)
 
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf])
@@ -143,11 +162,13 @@ def _run(*args: str) -> subprocess.CompletedProcess[str]:
 def test_a_tiny_run_gives_the_whole_report():
     from coinflight.studies import mujoco_compare
 
-    done = _run("--quick", "--json", "--n", "24", "--rounds", "2", "--seed", "5", "--mujoco", "3")
+    args = ("--quick", "--json", "--n", "24", "--rounds", "2", "--seed", "5", "--mujoco", "3")
+    done = _run(*args, "--cpu")
     assert done.returncode == 0, done.stderr
     rep = json.loads(done.stdout)
     assert rep["command"] == (
-        "python benchmarks/bench_targets.py --quick --json --n 24 --rounds 2 --seed 5 --mujoco 3"
+        "python benchmarks/bench_targets.py --quick --json --n 24 --rounds 2 --seed 5 --mujoco 3 "
+        "--cpu"
     )
     assert rep["seed"] == 5 and rep["rounds"] == 2 and rep["threads"] == 2
     assert len(rep["load"]["before"]) == len(rep["load"]["after"]) == 3
@@ -159,9 +180,10 @@ def test_a_tiny_run_gives_the_whole_report():
     for r in rows:
         assert list(r) == [
             "key", "target_name", "n", "measured", "target", "ratio", "met", "rounds",
+            "one_thread", "one_thread_ratio",
         ]  # fmt: skip
         assert r["n"] == 24 and len(r["rounds"]) == 2
-        for x in (r["measured"], *r["rounds"]):
+        for x in (r["measured"], *r["rounds"], r["one_thread"], r["one_thread_ratio"]):
             assert isinstance(x, float) and math.isfinite(x) and x > 0.0
         assert r["ratio"] == pytest.approx(r["measured"] / r["target"], rel=1e-12)
         assert r["met"] is (r["ratio"] >= 1.0)
