@@ -37,10 +37,10 @@ else ran: an upper estimate beside the measured rate, not the target's measure).
 
 The tosses are ``bench_bounce.py``'s (:func:`bench_bounce.tosses`: a US nickel, ωx ~ U(150,
 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, heads up; seed ``--seed``, default 2026),
-each toss's own e, μ :func:`bench_bounce.own_rates` (its fixed seed 7); the air cases are
-``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled (or loaded from
-numba's cache) on 20 tosses before the timing. The work is bounded before anything runs
-(:func:`seconds_estimate`, at the quiet rates below).
+each toss's own e, μ :func:`bench_bounce.own_rates` (seed ``bench_bounce.OWN_RATES_SEED``, 7);
+the air cases are ``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled
+(or loaded from numba's cache) on 20 tosses before the timing. The work is bounded before
+anything runs (:func:`seconds_estimate`, at the quiet rates below).
 
 Measured 2026-11-24 on the project machine (2 CPUs AMD EPYC, x86_64, 24 GiB, Linux; Python
 3.11.7, NumPy 2.4.6, numba 0.68.1, MuJoCo 3.17.0), 2 threads, seed 2026, medians of 5 rounds;
@@ -419,7 +419,7 @@ def report(
         "machine": machine(),
         "versions": versions(),
         "seed": seed,
-        "own_rates_seed": 7,
+        "own_rates_seed": bench_bounce.OWN_RATES_SEED,
         "rounds": rounds,
         "threads": measured["threads"],
         "load": measured["load"],
