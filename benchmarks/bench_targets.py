@@ -389,8 +389,8 @@ def measure(
     ``mujoco``)."""
     import numba
 
-    threads = min(threads, numba.config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]
-    numba.set_num_threads(threads)
+    numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))  # type: ignore[attr-defined]
+    threads = numba.get_num_threads()  # what the cases run on, as numba reports it
     for parallel in (True, False) if cpu else (True,):  # compile or load the cache
         for fn in calls({c.key: 20 for c in CASES}, seed, parallel).values():
             fn()

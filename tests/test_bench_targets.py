@@ -12,15 +12,85 @@ import subprocess
 import sys
 from types import ModuleType
 
+import numpy as np
 import pytest
 
 from _bench import BENCH, bench_script, load_bench
+from coinflight.core.outcome import Status
 
 
 @pytest.fixture
 def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
     monkeypatch.syspath_prepend(str(BENCH))  # the script imports bench_bounce and bench_air
     return load_bench("bench_targets")
+
+
+def test_each_case_times_what_its_label_says(bench):
+    # The review's wiring test (2026-11-24), widened: every case on the same 40 tosses, its
+    # outcomes checked against what its label says. Mutants it kills: rest_contact on the
+    # rocking surface; first_contact without max_bounces=0; cases_in_air's "table to rest"
+    # without drag; the own-e, μ rows without ``contact``.
+    size = {c.key: 40 for c in bench.CASES}
+    got = {k: fn() for k, fn in bench.calls(size, 5).items()}
+    v0 = bench.bench_bounce.tosses(40, 5)[1]
+    # First contacts stop at the first contact.
+    assert np.all(got["first_contact"].bounces == 0)
+    assert np.all(got["air_first_contact"].bounces == 0)
+    # The rocking ending's rows bounce and end in the planar hand-off, never the 3-D phase.
+    for k in ("rest_rocking", "rest_rocking_own", "air_rest"):
+        assert not np.any(got[k].status == Status.SETTLED_CONTACT), k
+        assert np.any(got[k].bounces > 0), k
+        assert np.any(got[k].status == Status.SETTLED_ROCKING), k
+    # The contact ending's rows end in the 3-D phase, never the planar hand-off.
+    for k in ("rest_contact", "rest_contact_own"):
+        assert not np.any(got[k].status == Status.SETTLED_ROCKING), k
+        ended = np.isin(got[k].status, (Status.SETTLED_CONTACT, Status.DECIDED_UPRIGHT))
+        assert np.any(ended), k
+    # Each toss its own e, μ: not the rows at e 0.5, μ 0.3.
+    for fixed, own in (("rest_rocking", "rest_rocking_own"), ("rest_contact", "rest_contact_own")):
+        assert not np.array_equal(got[fixed].settle_time, got[own].settle_time)
+    # Through air, not in vacuum, on the same tosses: every catch differs from the vacuum's
+    # 2 v0 / g, every first contact from the vacuum row's.
+    catch = got["air_hand"][1]
+    assert not np.any(np.isclose(catch, 2.0 * v0 / bench.bench_bounce.G, rtol=1e-9, atol=0.0))
+    for air, vacuum in (
+        ("air_first_contact", "first_contact"),
+        ("air_rest", "rest_rocking"),
+    ):
+        assert not np.any(got[air].first_contact == got[vacuum].first_contact), air
+
+
+def test_measure_times_two_threads_and_with_cpu_one(bench, monkeypatch):
+    # The threads reported are numba's own count after measure sets them (mutant: without
+    # numba.set_num_threads the count stays at the 1 set here), and with ``cpu`` each case runs
+    # once a round on numba's threads and once in one thread (mutant: the serial calls built
+    # with parallel=True). Every land / catch_with_drag call is recorded: (tosses, parallel).
+    import numba
+
+    if numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("numba has fewer than 2 threads")
+    seen: list[tuple[int, bool]] = []
+
+    def spy(real):  # type: ignore[no-untyped-def]
+        def call(coin, omega, *args, parallel=True, **kw):  # type: ignore[no-untyped-def]
+            seen.append((len(omega), parallel))
+            return real(coin, omega, *args, parallel=parallel, **kw)
+
+        return call
+
+    for module, name in ((bench, "land"), (bench.bench_air, "land"),
+                         (bench.bench_air, "catch_with_drag")):  # fmt: skip
+        monkeypatch.setattr(module, name, spy(getattr(module, name)))
+    before = numba.get_num_threads()
+    numba.set_num_threads(1)
+    try:
+        got = bench.measure({c.key: 7 for c in bench.CASES}, 2, 5, cpu=True)
+        assert got["threads"] == 2 == numba.get_num_threads()
+    finally:
+        numba.set_num_threads(before)
+    timed = [p for n, p in seen if n == 7]
+    assert timed.count(True) == timed.count(False) == 2 * len(bench.CASES)
+    assert all(r["one_thread"] is not None for r in got["rows"])
 
 
 def _rates(bench: ModuleType, value: float = 1.0) -> dict[str, list[float]]:
