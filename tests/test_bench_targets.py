@@ -156,15 +156,17 @@ def test_rows_give_the_median_the_ratio_and_met(bench):
     assert all(r["one_thread"] is None and r["one_thread_ratio"] is None for r in rows)
     assert json.loads(json.dumps(rows)) == rows  # numbers as numbers, booleans as booleans
     text = bench.table(rows)
-    assert text.count("\n") == len(rows)
+    assert text.count("\n") == len(rows) + 1  # the header, the rows, the note
+    assert text.splitlines()[-1] == bench.PLANAR_NOTE
     assert "2,500,000" in text and "1.250  yes" in text and "0.000  no" in text
     assert "CPU" not in text
     # One column width from the longest label: every row's tosses end in the same column.
     lines = text.splitlines()
     ends = {line.index("tosses") + len("tosses") for line in lines[:1]}
-    for r, line in zip(rows, lines[1:], strict=True):
+    for r, line in zip(rows, lines[1:-1], strict=True):
         ends.add(line.index(f"{r['n']:,}") + len(f"{r['n']:,}"))
     assert len(ends) == 1
+    assert max(len(line) for line in lines) <= 100  # fits the docstring's pasted output
     ref = lines[1 + [r["key"] for r in rows].index("rest_rocking")]
     assert ref.split()[-3:] == ["ref", "-", "-"]
 
@@ -182,7 +184,10 @@ def test_rows_with_one_thread_per_cpu_second(bench):
     assert by["air_rest_contact"]["met"] is False  # met is the wall clock's, on 2 threads
     assert by["air_rest"]["one_thread"] == 30_000.0 and by["air_rest"]["one_thread_ratio"] is None
     text = bench.table(list(by.values()))
-    assert "1 thread /CPU s" in text and "1,500" in text and "0.060" in text
+    cpu_lines = text.splitlines()[len(by) + 2 :]  # after the header, the rows and the note
+    assert cpu_lines[0].startswith("one thread (parallel=False)") and len(cpu_lines) == len(by) + 1
+    assert "1,500" in cpu_lines[4] and cpu_lines[4].endswith("0.060")
+    assert cpu_lines[2].endswith(" -") and max(len(line) for line in cpu_lines) <= 100
     cpu["air_hand"] = [math.nan]
     with pytest.raises(ValueError, match="air_hand"):
         bench.rows(rates, bench.sizes(True), cpu)
