@@ -408,10 +408,12 @@ def versions() -> dict[str, str | None]:
 
 
 def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> dict[str, Any]:
-    """MuJoCo on the first ``m`` of the contact ending's tosses (one run, its settings, 2
-    threads) and coinflight's contact ending on the same with MuJoCo's rolling and torsional
-    lengths as resistances (median of ``rounds``): rates and the ratio coinflight / MuJoCo.
-    {"skipped": reason} when MuJoCo is not installed."""
+    """MuJoCo on the first ``m`` of the contact rows' tosses (one run, its settings, 2 threads)
+    and coinflight's contact ending on the same with MuJoCo's rolling and torsional lengths as
+    resistances (median of ``rounds``): rates and the ratio coinflight / MuJoCo. The tosses are
+    the contact rows' first ``m`` when ``m`` ≤ ``size["rest_contact"]``; a larger ``m`` draws
+    ``m`` tosses of the same seed (:func:`bench_bounce.tosses` draws its columns in turn, so
+    their first ones differ). {"skipped": reason} when MuJoCo is not installed."""
     from coinflight.studies import mujoco_compare as mc
 
     if not mc.available():
