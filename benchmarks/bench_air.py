@@ -77,20 +77,19 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
-from coinflight import Coin
+# bench_bounce.py's coin, table and tosses (the script's own folder is on the path)
+from bench_bounce import COIN, COIN_PRESET, SURFACE, G, tosses
 from coinflight.core import numerical
 from coinflight.core.outcome import Status
-from coinflight.model.surface import Drag, Surface
+from coinflight.model.surface import Drag
 from coinflight.outcomes.air import catch_with_drag, drag_model
 from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.outcomes.table import land
-
-COIN = Coin.preset("us-nickel")
-G = 9.81
-SURFACE = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
 
 OLD = """
 import json, sys, time
@@ -100,25 +99,22 @@ from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.air import catch_with_drag
 from coinflight.outcomes.table import land
 a = json.loads(sys.argv[1])
-rng = np.random.default_rng(a["seed"])
-n = a["n"]
-omega = np.column_stack(
-    [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
-)
-v0 = rng.uniform(1.5, 3.0, n)
-coin = Coin.preset("us-nickel")
+given = np.load(a["inputs"])
+omega, v0 = given["omega"], given["v0"]
+n = len(v0)
+coin, g = Coin.preset(a["coin"]), a["g"]
 drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
-surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
+surface = Surface("table", drop_height=a["drop"], restitution=a["e"], friction=a["mu"])
 cases = {
-    "hand": lambda p: catch_with_drag(coin, omega, v0, 1.0, 9.81, drag, parallel=p),
+    "hand": lambda p: catch_with_drag(coin, omega, v0, 1.0, g, drag, parallel=p),
     "table first contact": lambda p: land(
-        coin, omega, v0, 1.0, 9.81, surface, drag, max_bounces=0, parallel=p
+        coin, omega, v0, 1.0, g, surface, drag, max_bounces=0, parallel=p
     ),
-    "table to rest": lambda p: land(coin, omega, v0, 1.0, 9.81, surface, drag, parallel=p),
+    "table to rest": lambda p: land(coin, omega, v0, 1.0, g, surface, drag, parallel=p),
 }
 for p in (True, False):  # compile or load the cache
-    catch_with_drag(coin, omega[:10], v0[:10], 1.0, 9.81, drag, parallel=p)
-    land(coin, omega[:10], v0[:10], 1.0, 9.81, surface, drag, parallel=p)
+    catch_with_drag(coin, omega[:10], v0[:10], 1.0, g, drag, parallel=p)
+    land(coin, omega[:10], v0[:10], 1.0, g, surface, drag, parallel=p)
 out = {}
 for k, f in cases.items():
     if a["cpu"]:
@@ -131,25 +127,31 @@ print(json.dumps(out))
 
 def _other(args: argparse.Namespace, n: int, cache: str, *, cpu: bool) -> dict[str, float]:
     """One round of the other implementation's cases (``--old-src``) in a subprocess, its numba
-    cache in ``cache`` (not in its sources): rates a second of wall time, or with ``cpu`` of
-    CPU time in one thread."""
+    cache in ``cache`` (not in its sources), on the first ``n`` of :func:`bench_bounce.tosses`
+    (seed 2026, written to an .npz in ``cache``: one definition of the tosses): rates a second
+    of wall time, or with ``cpu`` of CPU time in one thread."""
+    inputs = os.path.join(cache, f"tosses-{n}.npz")
+    if not os.path.exists(inputs):
+        omega, v0 = tosses(n)
+        np.savez(inputs, omega=omega, v0=v0)
     payload = json.dumps(
-        {"n": n, "seed": 2026, "cd": args.drag, "k": args.spin_damping, "cpu": cpu}
+        {
+            "inputs": inputs,
+            "coin": COIN_PRESET,
+            "g": G,
+            "drop": SURFACE.drop_height,
+            "e": SURFACE.restitution,
+            "mu": SURFACE.friction,
+            "cd": args.drag,
+            "k": args.spin_damping,
+            "cpu": cpu,
+        }
     )
     env = dict(os.environ, PYTHONPATH=args.old_src, NUMBA_CACHE_DIR=cache)
     out = subprocess.run(
         [sys.executable, "-c", OLD, payload], env=env, capture_output=True, text=True, check=True
     )
     return dict(json.loads(out.stdout))
-
-
-def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
-    """ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s (as bench_bounce)."""
-    rng = np.random.default_rng(seed)
-    omega = np.column_stack(
-        [rng.uniform(150.0, 300.0, n), rng.uniform(-30.0, 30.0, n), rng.uniform(-30.0, 30.0, n)]
-    )
-    return omega, rng.uniform(1.5, 3.0, n)
 
 
 OLD_TIMES = """
@@ -466,13 +468,7 @@ def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
     CPU second of one thread (the machine's other load excluded as far as CPU time does);
     prints each case's ratio, this one / other, median and range over the rounds."""
     omega, v0 = tosses(n)
-    cases = {
-        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False),
-        "table first contact": lambda: land(
-            COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=False
-        ),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False),
-    }
+    cases = cases_in_air(omega, v0, drag, parallel=False)
     catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=False)  # compile
     land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=False)
     load = os.getloadavg()[0]
@@ -490,6 +486,22 @@ def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
     for name, r in ratios.items():
         print(f"  {name}: {statistics.median(r):.3f} ({min(r):.3f}-{max(r):.3f})")
     print(f"  load average {load:.2f} before, {os.getloadavg()[0]:.2f} after")
+
+
+def cases_in_air(
+    omega: np.ndarray, v0: np.ndarray, drag: Drag, parallel: bool = True
+) -> dict[str, Callable[[], Any]]:
+    """The timed cases through air on the tosses (ω, v0), all of numba's threads (one without
+    ``parallel``): the hand catch, the table's first contact and the landing carried to rest
+    (:data:`SURFACE`); each a call of no arguments (also ``bench_targets.py``'s)."""
+    p = parallel
+    return {
+        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=p),
+        "table first contact": lambda: land(
+            COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=p
+        ),
+        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=p),
+    }
 
 
 def main() -> None:
@@ -549,11 +561,7 @@ def main() -> None:
         catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
         land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
     flight = 2.0 * v0 / G
-    air_cases = {
-        "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag),
-        "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag),
-    }
+    air_cases = cases_in_air(omega, v0, drag)
     vacuum_cases = {
         "hand": lambda: HAND_CATCH.faces(COIN, omega, flight, 1.0, G),
         "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0),
@@ -584,15 +592,8 @@ def main() -> None:
         )
     # On a shared machine the wall clock counts the time other processes hold the cores: the
     # serial kernels' CPU time gives the rate of one core (times the cores for a quiet machine).
-    cpu = {
-        "hand": cpu_rate(lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=False), n),
-        "table first contact": cpu_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=False), n
-        ),
-        "table to rest": cpu_rate(
-            lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=False), n
-        ),
-    }
+    serial = cases_in_air(omega, v0, drag, parallel=False)
+    cpu = {name: cpu_rate(fn, n) for name, fn in serial.items()}
     for name, rate in cpu.items():
         print(f"  air, {name}, one thread: {rate:,.0f} tosses per CPU second")
     air = drag_model(COIN, drag, G)

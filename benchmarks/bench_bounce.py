@@ -59,10 +59,14 @@ def tosses(n: int, seed: int = 2026) -> tuple[np.ndarray, np.ndarray]:
     return omega, rng.uniform(1.5, 3.0, n)
 
 
+OWN_RATES_SEED = 7
+"""The seed of :func:`own_rates` (reported by ``bench_targets.py``)."""
+
+
 def own_rates(n: int) -> dict[str, np.ndarray]:
-    """Each of ``n`` tosses' own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (seed 7), in ``land``'s
-    ``contact`` form (:func:`contact_rates`; ``bench_tolerance.py``)."""
-    rng = np.random.default_rng(7)
+    """Each of ``n`` tosses' own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (seed :data:`OWN_RATES_SEED`),
+    in ``land``'s ``contact`` form (:func:`contact_rates`; ``bench_tolerance.py``)."""
+    rng = np.random.default_rng(OWN_RATES_SEED)
     return {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
 
 
@@ -371,8 +375,7 @@ def _upright_child(n: int, setting: str, out: str) -> None:
     # gives the "off" child its own numba cache directory, whose key ignores globals).
     contact_phase.UPRIGHT_DECISION = setting == "on"
     omega, v0 = tosses(n)
-    rng = np.random.default_rng(7)
-    mixture = {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
+    mixture = own_rates(n)
     rates, arrays = {}, {}
     for name, pair in UPRIGHT_SURFACES.items():
         e, mu = pair or (0.5, 0.3)
