@@ -5,17 +5,13 @@ a bad N or --chunk."""
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-
-import face_predictors as fp
+from _bench import bench_script, load_bench
 from _cli import script_error
 from _kernels import coin_contact
 from coinflight import Coin
@@ -24,7 +20,7 @@ from coinflight.core.contact import CONTACT_ENDING
 from coinflight.core.impact import lowest_depth
 from coinflight.core.outcome import EDGE, HEADS, TAILS
 
-BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
+fp = load_bench("face_predictors")
 NICKEL = Coin.preset("us-nickel")
 FRICTIONLESS = coin_contact(NICKEL, friction=0.0, ending=CONTACT_ENDING)
 FRICTION = coin_contact(
@@ -182,4 +178,4 @@ def test_predict_all_is_predict_row_by_row(row):
     ],
 )
 def test_bad_input_is_one_line_before_any_toss(args, words, tmp_path):
-    assert script_error(BENCH / "bench_predictors.py", args, tmp_path) == words
+    assert script_error(bench_script("bench_predictors"), args, tmp_path) == words

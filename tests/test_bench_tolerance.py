@@ -4,32 +4,17 @@ that its own carrying of the handed states reproduces ``land``'s outcomes (no ti
 
 from __future__ import annotations
 
-import importlib.util
 import math
-from pathlib import Path
-from types import ModuleType
 
 import numpy as np
 import pytest
 
-HERE = Path(__file__).resolve().parents[1] / "benchmarks"
-SCRIPT = HERE / "bench_tolerance.py"
+from _bench import load_bench
 
 
 @pytest.fixture
-def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
-    import numba
-
-    monkeypatch.syspath_prepend(str(HERE))  # the script imports bench_bounce, bench_contact
-    # The script sets NUMBA_NUM_THREADS to 1 unless set (for its one-thread timings); here it
-    # must stay what numba runs with, or numba refuses a change once its threads are launched.
-    threads = numba.config.NUMBA_NUM_THREADS  # type: ignore[attr-defined]
-    monkeypatch.setenv("NUMBA_NUM_THREADS", str(threads))
-    spec = importlib.util.spec_from_file_location("bench_tolerance", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+def bench():  # type: ignore[no-untyped-def]
+    return load_bench("bench_tolerance")  # it imports bench_bounce, bench_contact
 
 
 def test_disagreements_count_differing_pairs_among_a_mask(bench):
