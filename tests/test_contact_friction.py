@@ -19,11 +19,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from _kernels import coin_contact
+from _kernels import coin_contact, touching_state
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
 from coinflight.core.contact import CONTACT_ENDING
-from coinflight.core.impact import angular_velocity, collision_matrix, cross, lowest_depth
+from coinflight.core.impact import angular_velocity, collision_matrix, cross
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")
@@ -34,16 +34,8 @@ def _contact(mu: float, e: float = 0.5):
 
 
 def _state(tilt, azimuth, depth, v, omega):
-    """(z, v, n, L): heads normal tilted by ``tilt`` towards ``azimuth``, the lowest rim point
-    ``depth`` m into the table, lab velocity ``v`` and angular velocity ``omega``."""
-    n = np.array(
-        [math.sin(tilt) * math.cos(azimuth), math.sin(tilt) * math.sin(azimuth), math.cos(tilt)]
-    )
-    i1, i3 = (float(x) for x in NICKEL.moments)
-    w = np.asarray(omega, dtype=float)
-    lm = i1 * w + (i3 - i1) * (w @ n) * n
-    z = lowest_depth(n[2], NICKEL.radius, NICKEL.thickness / 2) - depth
-    return np.array([z, *v, *n, *lm])
+    """The nickel's touching_state with its lowest rim point ``depth`` m into the table."""
+    return touching_state(NICKEL, tilt, azimuth, v, omega, lift=-depth)
 
 
 def _expected_damping(sigma, y, c, zeta):
