@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from coinflight import Coin
 from coinflight.core import impact
+from coinflight.model.surface import MAX_FRICTION
 
 COIN = Coin.preset("us-nickel")
 I1, I3 = COIN.moments
@@ -20,6 +21,11 @@ R, HH, M = COIN.radius, 0.5 * COIN.thickness, COIN.mass
 unit = st.tuples(*[st.floats(-1, 1)] * 3).filter(lambda a: math.hypot(*a) > 1e-3)
 vec = st.tuples(*[st.floats(-5, 5)] * 3)
 spin = st.tuples(*[st.floats(-300, 300)] * 3)
+# μ over the whole range a Surface takes (0 to MAX_FRICTION = 10: the properties below are
+# validated up to it), the common 0-2 drawn as often as before and both ends explicitly.
+frictions = st.one_of(
+    st.just(0.0), st.floats(0.0, 2.0), st.floats(0.0, MAX_FRICTION), st.just(MAX_FRICTION)
+)
 
 
 def _unit(a):
@@ -55,7 +61,7 @@ def test_lowest_point_is_lowest_point_of_the_cylinder(nz):
 
 
 @settings(max_examples=300, deadline=None)
-@given(n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0), mu=st.floats(0.0, 2.0))
+@given(n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0), mu=frictions)
 def test_kinetic_energy_never_grows(n, v, w, e, mu):
     n, v, lm = _state(n, v, w)
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
@@ -118,7 +124,7 @@ def test_resting_face_wells():
     v=vec,
     w=spin,
     e=st.floats(0.0, 1.0),
-    mu=st.floats(0.0, 2.0),
+    mu=frictions,
 )
 def test_impulse_acts_through_the_contact_point(n, v, w, e, mu):
     """Any contact impulse J at P leaves the angular momentum about P unchanged:
@@ -210,15 +216,16 @@ def violations(coin, n, v, w, e, mu, kernel=None, corner=0.0):
     v=vec,
     w=spin,
     e=st.one_of(st.just(0.0), st.just(1.0), st.floats(0.0, 1.0)),
-    mu=st.one_of(st.just(0.0), st.floats(0.0, 2.0)),
+    mu=frictions,
     corner=corners,
 )
 def test_impact_law_invariants(coin, n, v, w, e, mu, corner):
-    """Stronge's law (Stronge 2000, ch. 4-5): kinetic energy never grows, |P_t| ≤ μ P_n, the
-    normal impulse pushes, the contact point never ends moving into the surface, e = 0 leaves
-    it no normal velocity (|u_z'| ≤ 1e-12 m/s), and the impulse acts through the contact point.
-    Any e, μ, coin, orientation and velocities, and any rim corner radius 0 ≤ a ≤ h/2 (the
-    contact point of the rounded rim, core.impact.contact_point)."""
+    """Stronge's law (Stronge 2000, ch. 4-5): kinetic energy never grows, |P_t| ≤ μ P_n, the normal
+    impulse pushes, the contact point never ends moving into the surface, e = 0 leaves it no normal
+    velocity (|u_z'| ≤ 1e-12 m/s), and the impulse acts through the contact point. Any e, μ up to
+    :data:`~coinflight.model.surface.MAX_FRICTION` (μ ≳ 1e11 the cone can no longer be told from the
+    rounding of the measured P_n), coin, orientation and velocities, and any rim corner radius 0 ≤ a
+    ≤ h/2 (the contact point of the rounded rim, core.impact.contact_point)."""
     assert violations(coin, n, v, w, e, mu, corner=corner) == []
 
 
