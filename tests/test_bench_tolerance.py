@@ -5,6 +5,7 @@ that its own carrying of the handed states reproduces ``land``'s outcomes (no ti
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -15,6 +16,16 @@ from _bench import load_bench
 @pytest.fixture
 def bench():  # type: ignore[no-untyped-def]
     return load_bench("bench_tolerance")  # it imports bench_bounce, bench_contact
+
+
+def test_loading_the_script_leaves_numba_num_threads_as_it_was():
+    # The script sets NUMBA_NUM_THREADS to 1 when unset; left so in the tests' process, a
+    # numba config reload after its threads are launched (at 2 here) raises "Cannot set
+    # NUMBA_NUM_THREADS to a different value once the threads have been launched" (seen
+    # 2026-11-24 with the script loaded bare). The loader restores the variable.
+    before = os.environ.get("NUMBA_NUM_THREADS")
+    load_bench("bench_tolerance")
+    assert os.environ.get("NUMBA_NUM_THREADS") == before
 
 
 def test_disagreements_count_differing_pairs_among_a_mask(bench):
