@@ -21,7 +21,7 @@ R, HH, M = COIN.radius, 0.5 * COIN.thickness, COIN.mass
 unit = st.tuples(*[st.floats(-1, 1)] * 3).filter(lambda a: math.hypot(*a) > 1e-3)
 vec = st.tuples(*[st.floats(-5, 5)] * 3)
 spin = st.tuples(*[st.floats(-300, 300)] * 3)
-# μ over the whole range a Surface takes (0 to MAX_FRICTION = 10: the properties below are
+# μ over the whole range a Surface takes (0 to MAX_FRICTION = 3: the properties below are
 # validated up to it), the common 0-2 drawn as often as before and both ends explicitly.
 frictions = st.one_of(
     st.just(0.0), st.floats(0.0, 2.0), st.floats(0.0, MAX_FRICTION), st.just(MAX_FRICTION)

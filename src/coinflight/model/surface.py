@@ -31,17 +31,22 @@ DEFAULT_FRICTION = 0.3
 """Coulomb friction coefficient of metal on wood: 0.3, inside the 0.2-0.6 static range tabulated
 for wood on metal, clean and dry (Engineering ToolBox); not measured for coins."""
 
-MAX_FRICTION = 10.0
-"""Largest Coulomb friction coefficient μ a surface takes: the range the landing models are
-validated over (tests/test_impact.py's impact-law properties and the contact phase's energy
-and friction-cone tests in tests/test_contact_phase.py and tests/test_contact_friction.py draw
-μ up to it), far above what a coin meets (0.2-0.6, metal on wood: :data:`DEFAULT_FRICTION`).
-Beyond it, measured 2026-11-24 (40 random touching states of a nickel, e 0.5, resistances
-1e-4 m, advanced 0.1 s and carried to rest): the contact ending gives up on more and more
-landings (none unsettled at μ 10 or 20, 8 of 40 at 50, 16 at 100; its regularised friction's
-time constant m v_ε / (μ F_n) shrinks as 1/μ, and its CPU grows ~20 times from μ 0.3 to 10,
-one unbenchmarked probe), the impact law's cone |P_t| ≤ μ P_n can no longer be told from the
-rounding of P_n (μ ≳ 1e11), and near the largest float μ P_n overflows (the contact point
+MAX_FRICTION = 3.0
+"""Largest Coulomb friction coefficient μ a surface takes, far above what a coin meets (0.2-0.6,
+metal on wood: :data:`DEFAULT_FRICTION`). The limit is the step budget of the contact ending,
+not the physics: the contact phase integrates at most ``MAX_STEPS`` (400,000) steps, and its
+upright decision (``core.contact_phase.upright_decided``) takes each step left to cover
+``BUDGET_STEP`` (0.1 ms), while an upright roller's mean step falls as 1/μ (its regularised
+friction's time constant m v_ε / (μ F_n)): 0.966, 0.337, 0.113, 0.034 ms at μ 0.3, 1, 3, 10
+(207, 593, 1,765, 5,875 steps per 0.2 s of upright rolling; a nickel rolling at 0.3 m/s,
+e 0.5, resistances 1e-4 m, measured 2026-11-24). At μ 3 the step still covers BUDGET_STEP, so
+a roller decided upright, carried on undecided, settles (tests/test_contact_friction.py); at
+μ 10 rollers decided upright at 0.9-2 m/s run out of steps carried on (UNSETTLED), so the
+decision would turn unsettled tosses into decided ones. Raising the cap needs BUDGET_STEP
+scaled with that 1/μ step. Up to it the landing models are validated (tests/test_impact.py's
+impact-law properties and the contact phase's energy, friction-cone and upright-roller tests
+draw μ up to it). Far beyond, the impact law's cone |P_t| ≤ μ P_n can no longer be told from
+the rounding of P_n (μ ≳ 1e11), and near the largest float μ P_n overflows (the contact point
 left moving into the table)."""
 
 DEFAULT_ROLLING_RESISTANCE = 1e-4
@@ -296,7 +301,7 @@ def contact_distribution(name: str, value: Distribution | float) -> Distribution
     --------
     >>> from coinflight.model.distributions import Normal
     >>> contact_distribution("friction", Normal(0.4, 0.1)).describe()
-    'normal(0.4, sd 0.1) truncated to [0, 10] (100 % kept)'
+    'normal(0.4, sd 0.1) truncated to [0, 3] (100 % kept)'
     >>> contact_distribution("restitution", 1.2)
     Traceback (most recent call last):
     ...
