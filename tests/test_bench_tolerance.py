@@ -18,14 +18,15 @@ def bench():  # type: ignore[no-untyped-def]
     return load_bench("bench_tolerance")  # it imports bench_bounce, bench_contact
 
 
-def test_loading_the_script_leaves_numba_num_threads_as_it_was():
+def test_loading_the_script_leaves_numba_num_threads_as_it_was(monkeypatch):
     # The script sets NUMBA_NUM_THREADS to 1 when unset; left so in the tests' process, a
     # numba config reload after its threads are launched (at 2 here) raises "Cannot set
     # NUMBA_NUM_THREADS to a different value once the threads have been launched" (seen
-    # 2026-11-24 with the script loaded bare). The loader restores the variable.
-    before = os.environ.get("NUMBA_NUM_THREADS")
+    # 2026-11-24 with the script loaded bare). The loader restores the variable. Unset first
+    # (monkeypatch puts it back after): set, the script would leave it alone anyway.
+    monkeypatch.delenv("NUMBA_NUM_THREADS", raising=False)
     load_bench("bench_tolerance")
-    assert os.environ.get("NUMBA_NUM_THREADS") == before
+    assert "NUMBA_NUM_THREADS" not in os.environ
 
 
 def test_disagreements_count_differing_pairs_among_a_mask(bench):
