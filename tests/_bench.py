@@ -4,10 +4,11 @@
 The scripts import each other as top-level modules (``import bench_contact``), at load time and
 inside functions, as they do when run as ``python benchmarks/<name>.py``: the loader puts
 ``benchmarks/`` on ``sys.path`` (once, for the rest of the session; its modules' names are all
-``bench_*`` or named apart from the package's and the tests'). A script timed on one thread
-sets ``NUMBA_NUM_THREADS`` to 1 unless it is set, before numba is imported; in the tests numba
-is already running, and it refuses a change of that variable once its threads are launched, so
-the loader keeps it at numba's value while the script loads and restores it after."""
+``bench_*`` or named apart from the standard library's, the tests' and the installed packages',
+as test_bench_tolerance checks). A script timed on one thread sets ``NUMBA_NUM_THREADS`` to 1
+unless it is set, before numba is imported; in the tests numba is already running, and it
+refuses a change of that variable once its threads are launched, so the loader keeps it at
+numba's value while the script loads and restores it after."""
 
 from __future__ import annotations
 
@@ -33,7 +34,10 @@ def bench_on_path() -> None:
 
 def load_bench(name: str) -> ModuleType:
     """``benchmarks/<name>.py`` loaded afresh as the module ``name``, with ``benchmarks/`` on
-    ``sys.path`` and ``NUMBA_NUM_THREADS`` as it was before."""
+    ``sys.path`` and ``NUMBA_NUM_THREADS`` as it was before. A fresh module each call, not put
+    in ``sys.modules``: a script's own ``import bench_contact`` reuses the copy cached there, so
+    ``load_bench("bench_contact")`` and the ``bench_contact`` another script imports are two
+    module objects (patch the one the code under test reads)."""
     import numba
 
     bench_on_path()

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import math
 import os
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -27,6 +29,26 @@ def test_loading_the_script_leaves_numba_num_threads_as_it_was(monkeypatch):
     monkeypatch.delenv("NUMBA_NUM_THREADS", raising=False)
     load_bench("bench_tolerance")
     assert "NUMBA_NUM_THREADS" not in os.environ
+
+
+def test_benchmark_module_names_shadow_no_other_module():
+    # load_bench leaves benchmarks/ first on sys.path for the session: a script named like a
+    # standard-library module, a tests/ helper or an installed package would be imported in
+    # its place by every later test. None is: no name of benchmarks/ is found elsewhere on the
+    # path (tests/ and site-packages included) or in the standard library.
+    from importlib.machinery import PathFinder
+
+    from _bench import BENCH, bench_on_path
+
+    bench_on_path()
+    elsewhere = [p for p in sys.path if Path(p or ".").resolve() != BENCH]
+    names = sorted(p.stem for p in BENCH.glob("*.py") if not p.stem.startswith("__"))
+    assert "bench_contact" in names and len(names) > 10
+    for name in names:
+        assert name not in sys.stdlib_module_names, name
+        assert PathFinder.find_spec(name, elsewhere) is None, name
+    helpers = {p.stem for p in Path(__file__).parent.glob("*.py")}
+    assert "_bench" in helpers and not helpers & set(names)
 
 
 def test_disagreements_count_differing_pairs_among_a_mask(bench):
