@@ -334,19 +334,13 @@ def test_integration_converges():
     assert np.percentile(errors, 99) < 3e-2
 
 
-def test_planar_impact_is_stronges_two_dimensional_solution():
-    """A coin tipping in the yz plane and sliding along y: the slip keeps its line, so the law is
-    Stronge's planar one (2000, ch. 4), solved here by hand: with K the 2x2 collision matrix
-    (t = y, n = z), slip decelerates at du_t/dp = K_tn − μ K_tt until it stops at p_s, then
-    sticks (|K_tn/K_tt| ≤ μ); compression ends where u_n = 0 and restitution when the normal
-    work done in it is e² times that of compression."""
-    n = (0.0, math.sin(0.4), math.cos(0.4))
-    v = (0.0, -0.3, -3.0)
-    lm = (-I1 * 40.0, 0.0, 0.0)
-    e, mu = 0.5, 0.9
-    rc = impact.contact_point(n, R, HH)
-    u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
-    k = impact.collision_matrix(rc, n, M, I1, I3)
+def _planar_slip_then_stick(u, k, e, mu):
+    """Stronge's planar law (2000, ch. 4) solved by hand for a contact sliding along y (t = y,
+    n = z) that slips to a stop during compression and then sticks: with K the 2x2 collision
+    matrix, slip decelerates at du_t/dp = K_tn − μ sign K_tt until it stops at p_s, then sticks
+    (|K_tn/K_tt| ≤ μ: the critical friction of the stick); compression ends where u_n = 0 and
+    restitution when the normal work done in it is e² times that of compression. The impulse
+    (0, P_t, P_n)."""
     assert u[0] == 0.0 and k[1] == 0.0 and k[2] == 0.0  # planar: nothing along x
     ktt, ktn, knn = k[3], k[4], k[5]
     ut, un = u[1], u[2]
@@ -363,7 +357,45 @@ def test_planar_impact_is_stronges_two_dimensional_solution():
     w_c = work - un_stop * un_stop / (2 * c)
     p_end = p_c + math.sqrt(2 * e * e * -w_c / c)
     pt_end = -mu * sign * p_stop - ktn / ktt * (p_end - p_stop)
+    return (0.0, pt_end, p_end)
+
+
+def test_planar_impact_is_stronges_two_dimensional_solution():
+    """A coin tipping in the yz plane and sliding along y: the slip keeps its line, so the law is
+    Stronge's planar one (2000, ch. 4), solved by hand (:func:`_planar_slip_then_stick`)."""
+    n = (0.0, math.sin(0.4), math.cos(0.4))
+    v = (0.0, -0.3, -3.0)
+    lm = (-I1 * 40.0, 0.0, 0.0)
+    e, mu = 0.5, 0.9
+    rc = impact.contact_point(n, R, HH)
+    u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
+    k = impact.collision_matrix(rc, n, M, I1, I3)
     impulse, _ = impact.contact_impulse(
         u, k, e, mu, impact.TURN_STEP, impact.SLIP_TOLERANCE, impact.MAX_STEPS
     )
-    assert impulse == pytest.approx((0.0, pt_end, p_end), rel=1e-12, abs=1e-15)
+    assert impulse == pytest.approx(_planar_slip_then_stick(u, k, e, mu), rel=1e-12, abs=1e-15)
+
+
+def test_planar_stick_above_a_critical_friction_between_2_and_the_largest():
+    """Stronge's planar law again (:func:`_planar_slip_then_stick`), where the answer depends on
+    μ above 2: a contact sliding along +y stops slipping only if μ exceeds K_tn/K_tt (Stronge
+    2000, ch. 4: below it the slip never stops), and for this body that critical μ is 2.62,
+    between 2 and :data:`~coinflight.model.surface.MAX_FRICTION`. No coin's is: K_tn/K_tt =
+    r_t |r_n| / (k² + r_n²) ≤ |r_c| / (2k), k the radius of gyration about x, at most 1 for a
+    uniform disc (|r_c|² / k² ≤ 4; the nickel's reaches 0.89 over tilts); it needs k small beside
+    the lever arm, so the body is the nickel's outline (its rim point at tilt 0.2 rad) with its
+    mass gathered in a hub, I1 = I3 = m (0.15 r)². At μ = MAX_FRICTION the slip stops and sticks;
+    a law that capped μ below 2.62 (as min(μ, 2) in the sliding rate) would not stop it."""
+    tilt = 0.2
+    n = (0.0, math.sin(tilt), math.cos(tilt))
+    rc = impact.contact_point(n, R, HH)
+    hub = M * (0.15 * R) ** 2
+    k = impact.collision_matrix(rc, n, M, hub, hub)
+    assert 2.0 < k[4] / k[3] < MAX_FRICTION
+    u = (0.0, 0.05, -2.0)  # m/s: sliding along +y, the slip's stop within compression
+    e = 0.5
+    impulse, _ = impact.contact_impulse(
+        u, k, e, MAX_FRICTION, impact.TURN_STEP, impact.SLIP_TOLERANCE, impact.MAX_STEPS
+    )
+    expected = _planar_slip_then_stick(u, k, e, MAX_FRICTION)
+    assert impulse == pytest.approx(expected, rel=1e-12, abs=1e-15)
