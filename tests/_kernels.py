@@ -1,15 +1,21 @@
 """A coin's kernel records for the tests of core's landing and air kernels: the contact record
 through the library's :func:`coinflight.outcomes.table.contact_record` (as every landing builds
-it), and ``Air.build``'s keyword list filled from a :class:`coinflight.Coin` once, here."""
+it), ``Air.build``'s keyword list filled from a :class:`coinflight.Coin` once, here, and the
+contact phase's state y = (z, v, n, L) of a coin touching the table (one builder for the tests
+of the contact phase, its friction and the benchmarks' face predictors)."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
+
+import numpy as np
 
 from coinflight import Coin
 from coinflight.core import bounce, drag
 from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+from coinflight.core.impact import lowest_depth
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record
 
@@ -83,3 +89,25 @@ def critical_spin(coin: Coin, g: float = G) -> float:
     i1, i3 = (float(x) for x in coin.moments)
     m, r = coin.mass, coin.radius
     return math.sqrt(m * g * r * i1 / (i3 * (i3 + m * r * r)))
+
+
+def touching_state(
+    coin: Coin,
+    tilt: float,
+    azimuth: float = 0.0,
+    v: Sequence[float] = (0.0, 0.0, 0.0),
+    omega: Sequence[float] = (0.0, 0.0, 0.0),
+    lift: float = 0.0,
+) -> np.ndarray:
+    """The contact phase's y = (z, v, n, L) of ``coin`` with its heads normal
+    n = (sin tilt cos azimuth, sin tilt sin azimuth, cos tilt), its lowest point (sharp rim,
+    :func:`coinflight.core.impact.lowest_depth`) ``lift`` m above the table (negative: pressed
+    in), lab velocity ``v`` and lab angular velocity ``omega`` (L = I1 ω + (I3 − I1)(ω·n) n)."""
+    n = np.array(
+        [math.sin(tilt) * math.cos(azimuth), math.sin(tilt) * math.sin(azimuth), math.cos(tilt)]
+    )
+    i1, i3 = (float(x) for x in coin.moments)
+    w = np.asarray(omega, dtype=float)
+    lm = i1 * w + (i3 - i1) * (w @ n) * n
+    z = lowest_depth(n[2], coin.radius, coin.thickness / 2) + lift
+    return np.array([z, *v, *n, *lm])

@@ -8,7 +8,7 @@ import argparse
 
 import pytest
 
-from _bench import BENCH
+from _bench import BENCH, load_bench
 from _cli import script_error
 from coinflight.studies import mujoco_compare as mc
 
@@ -22,9 +22,8 @@ def _words(**setting):  # type: ignore[no-untyped-def]
     return str(refused.value)
 
 
-def test_the_helpers_build_through_friction_solver(monkeypatch):
-    monkeypatch.syspath_prepend(str(BENCH))
-    import mujoco_args
+def test_the_helpers_build_through_friction_solver():
+    mujoco_args = load_bench("mujoco_args")
 
     assert mujoco_args.solimp("0.1,0.95,3e-5") == (0.1, 0.95, 3e-5)
     assert mujoco_args.timeconst("4e-3") == 4e-3

@@ -5,26 +5,21 @@ a bad N or --chunk."""
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-
-import face_predictors as fp
+from _bench import bench_script, load_bench
 from _cli import script_error
-from _kernels import coin_contact
+from _kernels import coin_contact, touching_state
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
 from coinflight.core.contact import CONTACT_ENDING
-from coinflight.core.impact import lowest_depth
 from coinflight.core.outcome import EDGE, HEADS, TAILS
 
-BENCH = Path(__file__).resolve().parents[1] / "benchmarks"
+fp = load_bench("face_predictors")
 NICKEL = Coin.preset("us-nickel")
 FRICTIONLESS = coin_contact(NICKEL, friction=0.0, ending=CONTACT_ENDING)
 FRICTION = coin_contact(
@@ -42,16 +37,8 @@ speed = st.floats(-0.3, 0.3)
 
 
 def _state(polar, azimuth, v, omega, lift):
-    """y = (z, v, n, L) of the nickel with normal at (polar, azimuth) touching the table, its
-    lowest point ``lift`` m above it (negative: pressed in), lab angular velocity ``omega``."""
-    n = np.array(
-        [math.sin(polar) * math.cos(azimuth), math.sin(polar) * math.sin(azimuth), math.cos(polar)]
-    )
-    i1, i3 = (float(x) for x in NICKEL.moments)
-    w = np.asarray(omega, dtype=float)
-    lm = i1 * w + (i3 - i1) * (w @ n) * n
-    z = lowest_depth(n[2], NICKEL.radius, NICKEL.thickness / 2) + lift
-    return np.array([z, *v, *n, *lm])
+    """The nickel's touching_state (normal at (polar, azimuth), lowest point ``lift`` m up)."""
+    return touching_state(NICKEL, polar, azimuth, v, omega, lift)
 
 
 states = st.builds(
@@ -182,4 +169,4 @@ def test_predict_all_is_predict_row_by_row(row):
     ],
 )
 def test_bad_input_is_one_line_before_any_toss(args, words, tmp_path):
-    assert script_error(BENCH / "bench_predictors.py", args, tmp_path) == words
+    assert script_error(bench_script("bench_predictors"), args, tmp_path) == words

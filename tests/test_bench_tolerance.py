@@ -4,32 +4,51 @@ that its own carrying of the handed states reproduces ``land``'s outcomes (no ti
 
 from __future__ import annotations
 
-import importlib.util
 import math
+import os
+import sys
 from pathlib import Path
-from types import ModuleType
 
 import numpy as np
 import pytest
 
-HERE = Path(__file__).resolve().parents[1] / "benchmarks"
-SCRIPT = HERE / "bench_tolerance.py"
+from _bench import load_bench
 
 
 @pytest.fixture
-def bench(monkeypatch: pytest.MonkeyPatch) -> ModuleType:
-    import numba
+def bench():  # type: ignore[no-untyped-def]
+    return load_bench("bench_tolerance")  # it imports bench_bounce, bench_contact
 
-    monkeypatch.syspath_prepend(str(HERE))  # the script imports bench_bounce, bench_contact
-    # The script sets NUMBA_NUM_THREADS to 1 unless set (for its one-thread timings); here it
-    # must stay what numba runs with, or numba refuses a change once its threads are launched.
-    threads = numba.config.NUMBA_NUM_THREADS  # type: ignore[attr-defined]
-    monkeypatch.setenv("NUMBA_NUM_THREADS", str(threads))
-    spec = importlib.util.spec_from_file_location("bench_tolerance", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+
+def test_loading_the_script_leaves_numba_num_threads_as_it_was(monkeypatch):
+    # The script sets NUMBA_NUM_THREADS to 1 when unset; left so in the tests' process, a
+    # numba config reload after its threads are launched (at 2 here) raises "Cannot set
+    # NUMBA_NUM_THREADS to a different value once the threads have been launched" (seen
+    # 2026-11-24 with the script loaded bare). The loader restores the variable. Unset first
+    # (monkeypatch puts it back after): set, the script would leave it alone anyway.
+    monkeypatch.delenv("NUMBA_NUM_THREADS", raising=False)
+    load_bench("bench_tolerance")
+    assert "NUMBA_NUM_THREADS" not in os.environ
+
+
+def test_benchmark_module_names_shadow_no_other_module():
+    # load_bench leaves benchmarks/ first on sys.path for the session: a script named like a
+    # standard-library module, a tests/ helper or an installed package would be imported in
+    # its place by every later test. None is: no name of benchmarks/ is found elsewhere on the
+    # path (tests/ and site-packages included) or in the standard library.
+    from importlib.machinery import PathFinder
+
+    from _bench import BENCH, bench_on_path
+
+    bench_on_path()
+    elsewhere = [p for p in sys.path if Path(p or ".").resolve() != BENCH]
+    names = sorted(p.stem for p in BENCH.glob("*.py") if not p.stem.startswith("__"))
+    assert "bench_contact" in names and len(names) > 10
+    for name in names:
+        assert name not in sys.stdlib_module_names, name
+        assert PathFinder.find_spec(name, elsewhere) is None, name
+    helpers = {p.stem for p in Path(__file__).parent.glob("*.py")}
+    assert "_bench" in helpers and not helpers & set(names)
 
 
 def test_disagreements_count_differing_pairs_among_a_mask(bench):

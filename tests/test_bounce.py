@@ -157,7 +157,8 @@ def test_landing_value_object_and_table_model():
     [
         (lambda: Surface("table", restitution=1.2), "restitution must be between 0 and 1"),
         (lambda: Surface("table", restitution=-0.1), "restitution must be between 0 and 1"),
-        (lambda: Surface("table", friction=-0.1), "friction must be non-negative"),
+        (lambda: Surface("table", friction=-0.1), "friction must be between 0 and 3"),
+        (lambda: Surface("table", friction=3.5), "friction must be between 0 and 3, got 3.5"),
         (lambda: Surface("table", drop_height=-0.2), "surface above the launch point"),
         (lambda: Surface("floor"), "surface must be one of hand, table"),
         (

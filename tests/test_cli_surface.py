@@ -96,7 +96,11 @@ def test_hand_without_drag_is_unchanged():
     [
         (["--surface", "table", "--restitution", "1.5"], "restitution must be between 0 and 1"),
         (["--surface", "table", "--restitution", "-0.5"], "restitution must be between 0 and 1"),
-        (["--surface", "table", "--friction", "-0.1"], "friction must be non-negative"),
+        (["--surface", "table", "--friction", "-0.1"], "friction must be between 0 and 3"),
+        (
+            ["--surface", "table", "--friction", "3.5"],
+            "friction must be between 0 and 3, got 3.5",
+        ),
         (["--drag", "-1"], "drag coefficient must be between 0 and 10, got -1.0"),
         (["--spin-damping", "-1"], "spin damping must be between 0 and 0.001 (in N m s)"),
         (["--surface", "table", "--drop-height", "-0.3"], "surface above the launch point"),

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from _kernels import coin_contact, critical_spin
+from _kernels import coin_contact, critical_spin, touching_state
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
 from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING
@@ -44,16 +44,6 @@ def _contact(
         ending=ending,
         corner_radius=corner,
     )
-
-
-def _state(coin, tilt, v=(0.0, 0.0, 0.0), omega_lab=(0.0, 0.0, 0.0), lift=0.0):
-    """(z, v, n, L) of a coin tilted by ``tilt`` about Y (n = (sin, 0, cos)) touching the table."""
-    n = np.array([math.sin(tilt), 0.0, math.cos(tilt)])
-    i1, i3 = (float(x) for x in coin.moments)
-    w = np.asarray(omega_lab, dtype=float)
-    lm = i1 * w + (i3 - i1) * (w @ n) * n
-    z = lowest_depth(n[2], coin.radius, coin.thickness / 2) + lift
-    return np.array([z, *v, *n, *lm])
 
 
 def _schwager_poschel(zeta):
@@ -105,11 +95,13 @@ def test_contact_modes_and_their_statistics():
     # standing upright on both rims (its edge band), one lifted 1 mm off the table free; the
     # statistics of advance() add up to its time and steps.
     c = _contact(NICKEL)
-    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.0, lift=-1e-7), c)] == "face"
-    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.6, lift=-1e-7), c)] == "one rim"
-    assert cp.MODES[cp.contact_mode(_state(NICKEL, math.pi / 2, lift=-1e-7), c)] == "two rims"
-    assert cp.MODES[cp.contact_mode(_state(NICKEL, 0.6, lift=1e-3), c)] == "free"
-    y = _state(NICKEL, 0.3, omega_lab=(0.2, 0.1, 30.0), lift=0.002)
+    assert cp.MODES[cp.contact_mode(touching_state(NICKEL, 0.0, lift=-1e-7), c)] == "face"
+    assert cp.MODES[cp.contact_mode(touching_state(NICKEL, 0.6, lift=-1e-7), c)] == "one rim"
+    assert (
+        cp.MODES[cp.contact_mode(touching_state(NICKEL, math.pi / 2, lift=-1e-7), c)] == "two rims"
+    )
+    assert cp.MODES[cp.contact_mode(touching_state(NICKEL, 0.6, lift=1e-3), c)] == "free"
+    y = touching_state(NICKEL, 0.3, omega=(0.2, 0.1, 30.0), lift=0.002)
     stats = np.zeros((len(cp.MODES), 2))
     t, steps, _ = cp.advance(y, 0.2, c, stats=stats)
     assert stats[:, 0].sum() == pytest.approx(t, rel=1e-12)
@@ -125,7 +117,7 @@ def test_rim_impact_of_a_coin_restitutes_with_e(e):
     # configuration turns during the contact by an angle that grows with the penetration
     # (measured: +0.003 to +0.007 at 2 cm/s, +0.01 to +0.02 at 10 cm/s).
     c = _contact(NICKEL, e=e, mu=0.0, g=0.0)
-    y = _state(NICKEL, 0.6, v=(0.0, 0.0, -0.02))
+    y = touching_state(NICKEL, 0.6, v=(0.0, 0.0, -0.02))
     r, hh = NICKEL.radius, NICKEL.thickness / 2
     i1, i3 = (float(x) for x in NICKEL.moments)
 
@@ -161,7 +153,7 @@ def _energy_drifts(rtol):
         else:
             tilt = rng.uniform(0.2, 0.6)
             spin = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(20.0, 40.0))
-        y = _state(NICKEL, tilt, omega_lab=spin, lift=0.002)
+        y = touching_state(NICKEL, tilt, omega=spin, lift=0.002)
         e0, ln0, lz0 = cp.energy(y, c, kappa), y[4:7] @ y[7:10], y[9]
         t, _, _ = cp.advance(y, 0.5, c, rtol=rtol)
         assert t == pytest.approx(0.5)
@@ -202,7 +194,7 @@ def test_frictionless_contact_conserves_lz_and_l_dot_n_and_horizontal_momentum(e
     # horizontal momentum are conserved (the rigid frictionless contact: Stronge 2000, §5);
     # L_z and the momentum to rounding, L·n to the step control's errors (1e-6 of |L|).
     c = _contact(NICKEL, e=e, mu=0.0)
-    y = _state(NICKEL, 1.0, v=(0.1, -0.2, -0.3), omega_lab=(5.0, -3.0, 20.0))
+    y = touching_state(NICKEL, 1.0, v=(0.1, -0.2, -0.3), omega=(5.0, -3.0, 20.0))
     ln0, lz0, vh0 = y[4:7] @ y[7:10], y[9], y[1:3].copy()
     cp.advance(y, 0.3, c)
     scale = float(NICKEL.moments[0]) * 20.0
@@ -214,7 +206,7 @@ def test_frictionless_contact_conserves_lz_and_l_dot_n_and_horizontal_momentum(e
 def test_energy_never_grows_with_dissipation():
     c = _contact(NICKEL, e=0.5, mu=0.5, rolling=1e-4, pivoting=1e-4)
     kappa = cp.stiffness_of(c)
-    y = _state(NICKEL, 0.8, v=(0.2, 0.0, -0.2), omega_lab=(3.0, 10.0, 15.0))
+    y = touching_state(NICKEL, 0.8, v=(0.2, 0.0, -0.2), omega=(3.0, 10.0, 15.0))
     energies = [cp.energy(y, c, kappa)]
     for _ in range(50):
         cp.advance(y, 0.01, c)
@@ -228,7 +220,7 @@ def test_coin_flat_at_rest_stays_at_rest():
     # Lying flat on its face: it sinks by the static compression m g / (2π κ) = g (t_c/π)² and
     # does not move (a tilt below 1e-9 rad, speeds below 1 μm/s over half a second).
     c = _contact(NICKEL)
-    y = _state(NICKEL, 0.0)
+    y = touching_state(NICKEL, 0.0)
     cp.advance(y, 0.5, c)
     sink = G * (c.contact_time / math.pi) ** 2
     assert y[0] == pytest.approx(NICKEL.thickness / 2 - sink, rel=1e-3)
@@ -243,7 +235,7 @@ def test_coin_flat_at_rest_stays_at_rest():
 def _tipping(coin, tilt, rate, sigma):
     """State of a coin at ``tilt`` turning at ``rate`` about Y, pivoting on the lowest point of
     its rim sigma (+1 heads, −1 tails): v = ω × (centre of mass − pivot)."""
-    y = _state(coin, tilt, omega_lab=(0.0, rate, 0.0))
+    y = touching_state(coin, tilt, omega=(0.0, rate, 0.0))
     n = y[4:7]
     w = np.array([n[2] * n[0], n[2] * n[1], n[2] ** 2 - 1.0])
     w /= np.linalg.norm(w)
@@ -324,7 +316,7 @@ def test_frictionless_spinning_coin_settles_by_its_conserved_momenta():
     # settled at once, on its face; with friction the same energy could (a rising spinning
     # egg), so it is carried on until the spin is spent.
     frictionless = _contact(NICKEL, e=0.5, mu=0.0)
-    y = _state(NICKEL, math.pi, omega_lab=(0.0, 0.0, 100.0))
+    y = touching_state(NICKEL, math.pi, omega=(0.0, 0.0, 100.0))
     f, status, t = cp.settle(y[0], tuple(y[1:4]), tuple(y[4:7]), tuple(y[7:10]), frictionless)
     assert (f, status, t) == (TAILS, Status.SETTLED_CONTACT, 0.0)
     rough = _contact(NICKEL, e=0.5, mu=0.3, pivoting=1e-4)
@@ -337,7 +329,7 @@ def test_contact_phase_is_bounded():
     # A coin rolling upright on its edge at 1 m/s with no rolling or pivoting resistance rolls
     # for ever: the phase stops after its step limit, unsettled, in the well it is in.
     c = _contact(NICKEL, e=0.5, mu=0.3)
-    y = _state(NICKEL, math.pi / 2, v=(0.0, 1.0, 0.0), omega_lab=(1.0 / NICKEL.radius, 0, 0))
+    y = touching_state(NICKEL, math.pi / 2, v=(0.0, 1.0, 0.0), omega=(1.0 / NICKEL.radius, 0, 0))
     t, steps, settled = cp.advance(y, math.inf, c, settle_check=True, max_steps=2_000)
     assert (steps, settled) == (2_000, False)
     assert t > 0.0
@@ -419,11 +411,11 @@ def _rolling(coin, ratio, tilt):
     """A coin rolling without slip on its rim, its plane tilted by ``tilt`` from the vertical,
     spinning at ``ratio`` times the critical Ω_c (no rolling or pivoting resistance)."""
     spin = ratio * critical_spin(coin)
-    return _state(
+    return touching_state(
         coin,
         math.pi / 2 - tilt,
         v=(0.0, -spin * coin.radius, 0.0),
-        omega_lab=(spin * math.cos(tilt), 0.0, spin * math.sin(tilt)),
+        omega=(spin * math.cos(tilt), 0.0, spin * math.sin(tilt)),
     )
 
 
@@ -538,7 +530,7 @@ def test_rounded_corners_move_the_barrier_and_the_edge_well():
     assert c._replace(corner_radius=0.0, barrier=sharp.barrier, edge_sine=sharp.edge_sine) == sharp
     # A coin lying flat rests on its face at z = h/2 whatever its corners (the face's
     # penetration is the same): sunk to the equilibrium of its weight, it stays at rest.
-    y = _state(NICKEL, 0.0)
+    y = touching_state(NICKEL, 0.0)
     y[0] -= NICKEL.mass * G / (2 * math.pi * cp.stiffness_of(c))
     cp.advance(y, 0.05, c)
     assert abs(y[3]) < 1e-4 and abs(y[6] - 1.0) < 1e-9
@@ -568,7 +560,7 @@ def test_upright_coin_sliding_in_its_plane_rolls_at_two_thirds_of_its_speed():
     mu, v0 = 0.3, 0.3
     c = _contact(NICKEL, e=0.5, mu=mu)
     kappa = cp.stiffness_of(c)
-    y = _state(NICKEL, 0.5 * math.pi, v=(0.0, v0, 0.0))  # n = X, sliding along Y
+    y = touching_state(NICKEL, 0.5 * math.pi, v=(0.0, v0, 0.0))  # n = X, sliding along Y
     y[0] = NICKEL.radius - G * (c.contact_time / math.pi) ** 2  # resting on its band
     i1, i3 = (float(x) for x in NICKEL.moments)
     m, r = NICKEL.mass, NICKEL.radius
@@ -595,7 +587,9 @@ def test_upright_coin_sliding_in_its_plane_rolls_at_two_thirds_of_its_speed():
 def _roller(coin, c, speed, yaw):
     """A coin upright in its edge band (n = X, on both rims at the static depth), rolling
     without slip along Y at ``speed`` and turning at ``yaw`` rad/s about the vertical."""
-    y = _state(coin, 0.5 * math.pi, v=(0.0, speed, 0.0), omega_lab=(-speed / coin.radius, 0.0, yaw))
+    y = touching_state(
+        coin, 0.5 * math.pi, v=(0.0, speed, 0.0), omega=(-speed / coin.radius, 0.0, yaw)
+    )
     y[0] = coin.radius - cp.static_depth(c, cp.stiffness_of(c))
     return y
 
@@ -696,11 +690,11 @@ def test_upright_roller_not_decided_without_a_band_friction_or_both_rims():
     assert not _decided(_roller(NICKEL, c, 0.3, 0.0), c)
     c = _contact(NICKEL, **base)
     y = _roller(NICKEL, c, 0.3, 0.0)
-    tilted = _state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.3, 0.0))
+    tilted = touching_state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.3, 0.0))
     tilted[0] = y[0]
     tilted[7:10] = y[7:10]
     assert not _decided(tilted, c)
-    sliding = _state(NICKEL, 0.5 * math.pi, v=(0.0, 0.3, 0.0))
+    sliding = touching_state(NICKEL, 0.5 * math.pi, v=(0.0, 0.3, 0.0))
     sliding[0] = y[0]
     assert not _decided(sliding, c)
 
@@ -711,7 +705,7 @@ def test_upright_decision_off_is_the_integration_to_the_bit():
     # to the bit (the decision only stops), the probe row records that point, and it goes on
     # to rest on edge.
     c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4, ending=CONTACT_ENDING)
-    start = _state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.4, -0.05), lift=1e-4)
+    start = touching_state(NICKEL, 0.5 * math.pi - 0.05, v=(0.0, 0.4, -0.05), lift=1e-4)
     start[7:10] = _roller(NICKEL, c, 0.4, 2.0)[7:10]
     on = start.copy()
     t_on, steps_on, settled = cp.advance(on, math.inf, c, settle_check=True, decide=True)
@@ -835,7 +829,7 @@ def test_decided_upright_rollers_carried_on_end_on_edge_at_rest():
         yaw = share * m * G * hb / ((i3 / r + m * r) * speed) * rng.choice([-1.0, 1.0])
         lean_rate = rng.uniform(-1.0, 1.0)
         tilt = 0.5 * math.pi + rng.uniform(-0.01, 0.01)
-        y = _state(NICKEL, tilt, v=(0.0, speed, 0.0), omega_lab=(-speed / r, lean_rate, yaw))
+        y = touching_state(NICKEL, tilt, v=(0.0, speed, 0.0), omega=(-speed / r, lean_rate, yaw))
         y[0] = r - cp.static_depth(c, cp.stiffness_of(c))
         if not _decided(y, c):
             continue
@@ -863,7 +857,7 @@ def test_energy_test_shortcut_decides_as_the_whole_energy():
             tilt = rng.uniform(0.0, math.pi)
             speed = rng.uniform(0.0, 0.3) * rng.choice([0.0, 1.0])
             spin = rng.uniform(-20.0, 20.0, 3) * rng.choice([0.0, 0.3, 1.0])
-            y = _state(NICKEL, tilt, v=rng.normal(0.0, speed, 3), omega_lab=spin)
+            y = touching_state(NICKEL, tilt, v=rng.normal(0.0, speed, 3), omega=spin)
             y[0] -= rng.uniform(0.0, 2e-5)
             free, barrier = cp.free_energy(y, c, kappa)
             decided = cp.below_barrier(y, c, kappa)
@@ -899,7 +893,7 @@ def test_energy_test_shortcut_holds_where_the_springs_closed_form_is_negative():
     # closed form, ~3e-24 J per N/m here, larger than the barrier's rounding (~1e-19 J).
     c = _contact(NICKEL, e=0.5, mu=0.3)
     kappa = 1e9
-    base = _state(NICKEL, 1.2)
+    base = touching_state(NICKEL, 1.2)
     closed = {}
     for depth in np.logspace(-11, -9.5, 60):
         y = base.copy()
@@ -960,7 +954,7 @@ def test_integration_agrees_with_a_tight_reference_of_the_same_equations(tilt, v
     c = _contact(NICKEL, e=0.5, mu=0.3, rolling=1e-4, pivoting=1e-4)
     kappa, zeta = cp.stiffness_of(c), cp.damping_of(c)
     i1, _ = (float(x) for x in NICKEL.moments)
-    y0 = _state(NICKEL, tilt, v=v, omega_lab=omega)
+    y0 = touching_state(NICKEL, tilt, v=v, omega=omega)
 
     def rhs(_t, y):
         out = np.empty(10)

@@ -19,7 +19,13 @@ from coinflight.core import bounce
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, TruncatedNormal, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.model.surface import TABLE_ONLY, Drag, Surface, contact_distribution
+from coinflight.model.surface import (
+    MAX_FRICTION,
+    TABLE_ONLY,
+    Drag,
+    Surface,
+    contact_distribution,
+)
 from coinflight.outcomes.table import TableLanding
 from coinflight.probability import estimate
 
@@ -31,14 +37,15 @@ SPINS = {"omega_x": Uniform(150.0, 300.0), "omega_z": 20.0, "launch_speed": Unif
 def test_a_normal_contact_parameter_is_truncated_not_clipped():
     d = contact_distribution("friction", Normal(0.1, 0.1))
     assert isinstance(d, TruncatedNormal)
-    # SciPy's truncnorm is the reference: mass below 0 left out, the rest renormalised.
-    ref = stats.truncnorm(-1.0, np.inf, loc=0.1, scale=0.1)
+    # SciPy's truncnorm is the reference: mass outside [0, MAX_FRICTION] left out, the rest
+    # renormalised.
+    ref = stats.truncnorm(-1.0, (MAX_FRICTION - 0.1) / 0.1, loc=0.1, scale=0.1)
     u = np.linspace(0.01, 0.99, 7)
     np.testing.assert_allclose(d.ppf(u), ref.ppf(u), rtol=1e-12)
     assert d.mean == pytest.approx(ref.mean(), rel=1e-12)
     assert d.kept == pytest.approx(stats.norm.cdf(1.0), rel=1e-12)  # Φ(1): 84 % kept
     assert d.ppf(np.array([1e-12]))[0] >= 0.0  # no draw below the range, none piled at 0
-    assert "truncated to ≥ 0" in d.describe() and "84.1 % kept" in d.describe()
+    assert "truncated to [0, 3]" in d.describe() and "84.1 % kept" in d.describe()
     e = contact_distribution("restitution", Normal(0.9, 0.2))
     assert e.bounds == (0.0, 1.0) and e.ppf(np.array([0.999999]))[0] <= 1.0
 
@@ -47,13 +54,15 @@ def test_a_normal_contact_parameter_is_truncated_not_clipped():
     ("name", "value", "words"),
     [
         ("restitution", 1.2, "restitution must be between 0 and 1, got 1.2"),
-        ("friction", -0.1, "friction must be non-negative and finite, got -0.1"),
+        ("friction", -0.1, "friction must be between 0 and 3, got -0.1"),
+        ("friction", 3.5, "friction must be between 0 and 3, got 3.5"),
         ("restitution", Uniform(0.3, 1.1), "reaches 1.1; restitution must be between 0 and 1"),
-        ("friction", Uniform(-0.1, 0.3), "reaches -0.1; friction must be non-negative"),
+        ("friction", Uniform(-0.1, 0.3), "reaches -0.1; friction must be between 0 and 3"),
+        ("friction", Uniform(0.3, 12.0), "reaches 12; friction must be between 0 and 3"),
         (
             "friction",
             Normal(-0.2, 0.1),
-            "mean outside the physical range; friction must be non-negative",
+            "mean outside the physical range; friction must be between 0 and 3",
         ),
         ("restitution", Normal(1.5, 0.1), "mean outside the physical range"),
     ],
@@ -178,14 +187,14 @@ def test_monte_carlo_over_friction_is_seeded_and_reported():
         estimate(fixed, "monte-carlo", n=2000, seed=3, model=TABLE).counts
         == estimate(plain, "monte-carlo", n=2000, seed=3, model=TABLE).counts
     )
-    assert "normal(0.4, sd 0.1) truncated to ≥ 0" in TABLE.describe_for(d)
+    assert "normal(0.4, sd 0.1) truncated to [0, 3]" in TABLE.describe_for(d)
     settings = TABLE.settings_for(d)
     assert settings["friction"] == {
         "kind": "truncated-normal",
         "mean": 0.4,
         "sd": 0.1,
         "low": 0.0,
-        "high": None,
+        "high": MAX_FRICTION,
     }
     assert settings["restitution"] == {"kind": "uniform", "low": 0.3, "high": 0.6}
 
@@ -260,7 +269,7 @@ def test_cli_probability_integrates_over_restitution_and_friction():
     assert [out["counts"][k] for k in ("tails", "heads", "edge")] == list(lib.counts)
     text = CliRunner().invoke(app, args)
     assert text.exit_code == 0, text.output
-    assert "restitution 0.3–0.6, friction normal(0.4, sd 0.1) truncated to ≥ 0" in text.stdout
+    assert "restitution 0.3–0.6, friction normal(0.4, sd 0.1) truncated to [0, 3]" in text.stdout
 
 
 @pytest.mark.parametrize(
@@ -283,7 +292,7 @@ def test_cli_probability_integrates_over_restitution_and_friction():
             "--restitution 0.3–0.6: this command takes a single value",
         ),
         ([*PROB, "--restitution", "0.3:1.6"], "restitution must be between 0 and 1"),
-        ([*PROB, "--friction", "normal:-1,0.1"], "friction must be non-negative"),
+        ([*PROB, "--friction", "normal:-1,0.1"], "friction must be between 0 and 3"),
         (
             [*PROB, "--friction", "0.1:0.3", "--drag", "1.17"],
             "not yet taken by a table landing through air",

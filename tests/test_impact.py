@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from coinflight import Coin
 from coinflight.core import impact
+from coinflight.model.surface import MAX_FRICTION
 
 COIN = Coin.preset("us-nickel")
 I1, I3 = COIN.moments
@@ -20,6 +21,11 @@ R, HH, M = COIN.radius, 0.5 * COIN.thickness, COIN.mass
 unit = st.tuples(*[st.floats(-1, 1)] * 3).filter(lambda a: math.hypot(*a) > 1e-3)
 vec = st.tuples(*[st.floats(-5, 5)] * 3)
 spin = st.tuples(*[st.floats(-300, 300)] * 3)
+# μ over the whole range a Surface takes (0 to MAX_FRICTION = 3: the properties below are
+# validated up to it), the common 0-2 drawn as often as before and both ends explicitly.
+frictions = st.one_of(
+    st.just(0.0), st.floats(0.0, 2.0), st.floats(0.0, MAX_FRICTION), st.just(MAX_FRICTION)
+)
 
 
 def _unit(a):
@@ -55,7 +61,7 @@ def test_lowest_point_is_lowest_point_of_the_cylinder(nz):
 
 
 @settings(max_examples=300, deadline=None)
-@given(n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0), mu=st.floats(0.0, 2.0))
+@given(n=unit, v=vec, w=spin, e=st.floats(0.0, 1.0), mu=frictions)
 def test_kinetic_energy_never_grows(n, v, w, e, mu):
     n, v, lm = _state(n, v, w)
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
@@ -118,7 +124,7 @@ def test_resting_face_wells():
     v=vec,
     w=spin,
     e=st.floats(0.0, 1.0),
-    mu=st.floats(0.0, 2.0),
+    mu=frictions,
 )
 def test_impulse_acts_through_the_contact_point(n, v, w, e, mu):
     """Any contact impulse J at P leaves the angular momentum about P unchanged:
@@ -210,15 +216,16 @@ def violations(coin, n, v, w, e, mu, kernel=None, corner=0.0):
     v=vec,
     w=spin,
     e=st.one_of(st.just(0.0), st.just(1.0), st.floats(0.0, 1.0)),
-    mu=st.one_of(st.just(0.0), st.floats(0.0, 2.0)),
+    mu=frictions,
     corner=corners,
 )
 def test_impact_law_invariants(coin, n, v, w, e, mu, corner):
-    """Stronge's law (Stronge 2000, ch. 4-5): kinetic energy never grows, |P_t| ≤ μ P_n, the
-    normal impulse pushes, the contact point never ends moving into the surface, e = 0 leaves
-    it no normal velocity (|u_z'| ≤ 1e-12 m/s), and the impulse acts through the contact point.
-    Any e, μ, coin, orientation and velocities, and any rim corner radius 0 ≤ a ≤ h/2 (the
-    contact point of the rounded rim, core.impact.contact_point)."""
+    """Stronge's law (Stronge 2000, ch. 4-5): kinetic energy never grows, |P_t| ≤ μ P_n, the normal
+    impulse pushes, the contact point never ends moving into the surface, e = 0 leaves it no normal
+    velocity (|u_z'| ≤ 1e-12 m/s), and the impulse acts through the contact point. Any e, μ up to
+    :data:`~coinflight.model.surface.MAX_FRICTION` (μ ≳ 1e11 the cone can no longer be told from the
+    rounding of the measured P_n), coin, orientation and velocities, and any rim corner radius 0 ≤ a
+    ≤ h/2 (the contact point of the rounded rim, core.impact.contact_point)."""
     assert violations(coin, n, v, w, e, mu, corner=corner) == []
 
 
@@ -327,19 +334,13 @@ def test_integration_converges():
     assert np.percentile(errors, 99) < 3e-2
 
 
-def test_planar_impact_is_stronges_two_dimensional_solution():
-    """A coin tipping in the yz plane and sliding along y: the slip keeps its line, so the law is
-    Stronge's planar one (2000, ch. 4), solved here by hand: with K the 2x2 collision matrix
-    (t = y, n = z), slip decelerates at du_t/dp = K_tn − μ K_tt until it stops at p_s, then
-    sticks (|K_tn/K_tt| ≤ μ); compression ends where u_n = 0 and restitution when the normal
-    work done in it is e² times that of compression."""
-    n = (0.0, math.sin(0.4), math.cos(0.4))
-    v = (0.0, -0.3, -3.0)
-    lm = (-I1 * 40.0, 0.0, 0.0)
-    e, mu = 0.5, 0.9
-    rc = impact.contact_point(n, R, HH)
-    u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
-    k = impact.collision_matrix(rc, n, M, I1, I3)
+def _planar_slip_then_stick(u, k, e, mu):
+    """Stronge's planar law (2000, ch. 4) solved by hand for a contact sliding along y (t = y,
+    n = z) that slips to a stop during compression and then sticks: with K the 2x2 collision
+    matrix, slip decelerates at du_t/dp = K_tn − μ sign K_tt until it stops at p_s, then sticks
+    (|K_tn/K_tt| ≤ μ: the critical friction of the stick); compression ends where u_n = 0 and
+    restitution when the normal work done in it is e² times that of compression. The impulse
+    (0, P_t, P_n)."""
     assert u[0] == 0.0 and k[1] == 0.0 and k[2] == 0.0  # planar: nothing along x
     ktt, ktn, knn = k[3], k[4], k[5]
     ut, un = u[1], u[2]
@@ -356,7 +357,45 @@ def test_planar_impact_is_stronges_two_dimensional_solution():
     w_c = work - un_stop * un_stop / (2 * c)
     p_end = p_c + math.sqrt(2 * e * e * -w_c / c)
     pt_end = -mu * sign * p_stop - ktn / ktt * (p_end - p_stop)
+    return (0.0, pt_end, p_end)
+
+
+def test_planar_impact_is_stronges_two_dimensional_solution():
+    """A coin tipping in the yz plane and sliding along y: the slip keeps its line, so the law is
+    Stronge's planar one (2000, ch. 4), solved by hand (:func:`_planar_slip_then_stick`)."""
+    n = (0.0, math.sin(0.4), math.cos(0.4))
+    v = (0.0, -0.3, -3.0)
+    lm = (-I1 * 40.0, 0.0, 0.0)
+    e, mu = 0.5, 0.9
+    rc = impact.contact_point(n, R, HH)
+    u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
+    k = impact.collision_matrix(rc, n, M, I1, I3)
     impulse, _ = impact.contact_impulse(
         u, k, e, mu, impact.TURN_STEP, impact.SLIP_TOLERANCE, impact.MAX_STEPS
     )
-    assert impulse == pytest.approx((0.0, pt_end, p_end), rel=1e-12, abs=1e-15)
+    assert impulse == pytest.approx(_planar_slip_then_stick(u, k, e, mu), rel=1e-12, abs=1e-15)
+
+
+def test_planar_stick_above_a_critical_friction_between_2_and_the_largest():
+    """Stronge's planar law again (:func:`_planar_slip_then_stick`), where the answer depends on
+    μ above 2: a contact sliding along +y stops slipping only if μ exceeds K_tn/K_tt (Stronge
+    2000, ch. 4: below it the slip never stops), and for this body that critical μ is 2.62,
+    between 2 and :data:`~coinflight.model.surface.MAX_FRICTION`. No coin's is: K_tn/K_tt =
+    r_t |r_n| / (k² + r_n²) ≤ |r_c| / (2k), k the radius of gyration about x, at most 1 for a
+    uniform disc (|r_c|² / k² ≤ 4; the nickel's reaches 0.89 over tilts); it needs k small beside
+    the lever arm, so the body is the nickel's outline (its rim point at tilt 0.2 rad) with its
+    mass gathered in a hub, I1 = I3 = m (0.15 r)². At μ = MAX_FRICTION the slip stops and sticks;
+    a law that capped μ below 2.62 (as min(μ, 2) in the sliding rate) would not stop it."""
+    tilt = 0.2
+    n = (0.0, math.sin(tilt), math.cos(tilt))
+    rc = impact.contact_point(n, R, HH)
+    hub = M * (0.15 * R) ** 2
+    k = impact.collision_matrix(rc, n, M, hub, hub)
+    assert 2.0 < k[4] / k[3] < MAX_FRICTION
+    u = (0.0, 0.05, -2.0)  # m/s: sliding along +y, the slip's stop within compression
+    e = 0.5
+    impulse, _ = impact.contact_impulse(
+        u, k, e, MAX_FRICTION, impact.TURN_STEP, impact.SLIP_TOLERANCE, impact.MAX_STEPS
+    )
+    expected = _planar_slip_then_stick(u, k, e, MAX_FRICTION)
+    assert impulse == pytest.approx(expected, rel=1e-12, abs=1e-15)

@@ -16,24 +16,22 @@ direction, so the rigid law's impulse is known in closed form):
   only as the square root of the rim's depth.
 
 The benchmark (``benchmarks/bench_rim_impacts.py``) is imported in process from its folder
-(put on sys.path; importing it patches nothing); nothing is written.
+(``tests/_bench.load_bench``; importing it patches nothing); nothing is written.
 """
 
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-
-import bench_contact
-import bench_rim_impacts as rim
+from _bench import load_bench
 from coinflight.core import contact_phase as cp
 from coinflight.core import impact as im
+
+bench_contact = load_bench("bench_contact")
+rim = load_bench("bench_rim_impacts")
 
 E = 0.5
 TILT, VX, VZ, WY = 1.0, 1.0, -1.0, 100.0

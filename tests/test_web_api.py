@@ -20,6 +20,7 @@ from typer.testing import CliRunner
 
 from _web_server import WAIT, serving
 from coinflight.cli import app as cli_app
+from coinflight.model.surface import MAX_FRICTION
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
 from coinflight.web import create_app
 
@@ -45,6 +46,9 @@ def cli_error(*args: str) -> str:
     prefix = "coinflight: error: "
     assert line.startswith(prefix)
     return line[len(prefix) :]
+
+
+TOO_MUCH_FRICTION = f"{MAX_FRICTION + 0.5:g}"  # beyond the largest μ a Surface takes
 
 
 def api_error(client: TestClient, url: str, status: int = 422) -> str:
@@ -114,8 +118,10 @@ def test_toss_on_a_table_equals_the_command_line(client):
         ("flight_time=0.7&drop_height=0.3", ["--flight-time", "0.7", "--drop-height", "0.3"]),
         ("flight_time=0.7&g=-1", ["--flight-time", "0.7", "--g", "-1"]),
         ("flight_time=0.7&radius=0.01", ["--flight-time", "0.7", "--radius", "0.01"]),
+        (f"flight_time=0.7&surface=table&friction={TOO_MUCH_FRICTION}",
+         ["--flight-time", "0.7", "--surface", "table", "--friction", TOO_MUCH_FRICTION]),
     ],
-)
+)  # fmt: skip
 def test_toss_bad_values_are_one_line_422_in_the_command_lines_words(client, query, cli_args):
     detail = api_error(client, f"/api/toss?{query}")
     said = cli_error("toss", *cli_args)
@@ -230,6 +236,8 @@ def test_probability_preset_with_an_override_equals_the_command_line(client):
          ["--flight-time", "0.6:0.9", "-m", "grid", "--n", "100000000"]),
         ("flight_time=0.6:0.9&method=monte-carlo&n=0",
          ["--flight-time", "0.6:0.9", "-m", "monte-carlo", "--n", "0"]),
+        ("flight_time=0.6:0.9&surface=table&friction=0.3:12",
+         ["--flight-time", "0.6:0.9", "--surface", "table", "--friction", "0.3:12"]),
     ],
 )  # fmt: skip
 def test_probability_bad_values_are_one_line_422_in_the_command_lines_words(

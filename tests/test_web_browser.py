@@ -370,6 +370,25 @@ def test_an_api_refusal_is_shown_in_the_page(page: Any, server: str, panel: str)
     assert page.locator(f"#{panel}").get_attribute("data-state") == "ready"
 
 
+@pytest.mark.parametrize("panel", ["explorer", "basin", "probability", "sameSide"])
+def test_a_request_replaced_by_a_newer_one_is_no_error(page: Any, panel: str) -> None:
+    # Each panel asks only for its latest answer (api.js latest): a second update() aborts
+    # the first one's request, and that abort is no error (api.js unlessSuperseded): both
+    # updates resolve, and the page logs nothing.
+    aborted: list[str] = []
+    page.on(
+        "requestfailed",
+        lambda r: aborted.append(r.url) if "ERR_ABORTED" in (r.failure or "") else None,
+    )
+    page.evaluate(
+        "async (name) => { const p = window.coinflight[name];"
+        " await Promise.all([p.update(), p.update()]); }",
+        panel,
+    )
+    assert aborted, "the first request was not replaced"
+    assert page.problems.messages == []
+
+
 def test_a_click_on_the_basin_map_tosses_that_point(page: Any, server: str) -> None:
     ready(page, "basin")
     target_t, target_w = 0.65, 42.0

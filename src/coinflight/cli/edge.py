@@ -67,7 +67,7 @@ Friction = Annotated[
         "--friction",
         "MU",
         SURFACE_PANEL,
-        _ONLY + "the table's Coulomb friction coefficient ≥ 0 (default 0.3).",
+        _ONLY + "the table's Coulomb friction coefficient, 0 to 3 (default 0.3).",
     ),
 ]
 DropHeight = Annotated[

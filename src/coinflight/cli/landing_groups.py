@@ -107,7 +107,7 @@ TABLE = Group(
                     "--friction",
                     metavar="MU",
                     panel=SURFACE_PANEL,
-                    help=_TABLE + "Coulomb friction coefficient ≥ 0 (default 0.3)." + _SPREAD,
+                    help=_TABLE + "Coulomb friction coefficient, 0 to 3 (default 0.3)." + _SPREAD,
                 ),
             ],
             None,

@@ -403,7 +403,7 @@ def sweep(
             "--friction",
             metavar="LIST",
             panel=SURFACE_PANEL,
-            help="table: Coulomb friction coefficients ≥ 0 (default 0.3).",
+            help="table: Coulomb friction coefficients, 0 to 3 (default 0.3).",
         ),
     ] = None,
     bounces: Annotated[

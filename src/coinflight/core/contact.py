@@ -31,7 +31,9 @@ class Contact(NamedTuple):
     i1, i3 : float
         Principal moments about a diameter and about the normal, kg m².
     restitution, friction : float
-        Coefficient of restitution e in [0, 1] and of friction μ ≥ 0 of the surface.
+        Coefficient of restitution e in [0, 1] and of friction μ ≥ 0 of the surface (a Surface
+        takes μ up to :data:`coinflight.model.surface.MAX_FRICTION`, the range the landing
+        kernels are validated over).
     drop_height : float
         Launch height of the centre of mass above the surface, m.
     g : float

@@ -263,7 +263,8 @@ def contact_impulse(
     k : tuple of 6 floats
         Collision matrix (K_xx, K_xy, K_xz, K_yy, K_yz, K_zz), 1/kg.
     restitution, friction : float
-        Stronge's energetic coefficient e in [0, 1] and Coulomb's μ ≥ 0.
+        Stronge's energetic coefficient e in [0, 1] and Coulomb's μ ≥ 0 (the law's properties
+        tested for μ up to 3, :data:`coinflight.model.surface.MAX_FRICTION`).
     turn_step : float
         Largest turn of the slip direction in one RK4 step, rad (:data:`TURN_STEP`; a parameter
         for tests).
@@ -616,7 +617,8 @@ def impact(
     radius, half_thickness, mass, i1, i3 : float
         The coin (m, m, kg, kg m², kg m²).
     restitution, friction : float
-        Stronge's energetic coefficient of restitution e in [0, 1] and Coulomb's μ ≥ 0.
+        Stronge's energetic coefficient of restitution e in [0, 1] and Coulomb's μ ≥ 0 (its
+        properties tested for μ up to 3, :data:`coinflight.model.surface.MAX_FRICTION`).
     corner : float
         a, the radius of the rim's rounded corners, m (0 ≤ a ≤ min(h/2, r); 0: sharp): the
         impulse acts at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of

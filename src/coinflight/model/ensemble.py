@@ -72,9 +72,10 @@ class TossDistribution:
         flight_time`). Kept on the object for reference; equality compares the flight times.
     restitution, friction : Distribution or float, keyword only
         What is not measured about the contact with a table: the coefficient of restitution
-        (in [0, 1]) and of friction (≥ 0), drawn toss by toss, so that P(heads, tails, edge)
-        integrates over them. None (default): the surface's single value. A normal one is
-        truncated to the physical range (:func:`coinflight.model.surface.contact_distribution`).
+        (in [0, 1]) and of friction (in [0, :data:`coinflight.model.surface.MAX_FRICTION`]),
+        drawn toss by toss, so that P(heads, tails, edge) integrates over them. None (default):
+        the surface's single value. A normal one is truncated to that range
+        (:func:`coinflight.model.surface.contact_distribution`).
         Only table landings take them (the estimators refuse them for other outcome models).
     rolling_resistance, pivoting_resistance : Distribution or float, keyword only
         The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of

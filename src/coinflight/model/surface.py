@@ -31,6 +31,24 @@ DEFAULT_FRICTION = 0.3
 """Coulomb friction coefficient of metal on wood: 0.3, inside the 0.2-0.6 static range tabulated
 for wood on metal, clean and dry (Engineering ToolBox); not measured for coins."""
 
+MAX_FRICTION = 3.0
+"""Largest Coulomb friction coefficient μ a surface takes, far above what a coin meets (0.2-0.6,
+metal on wood: :data:`DEFAULT_FRICTION`). The limit is the step budget of the contact ending,
+not the physics: the contact phase integrates at most ``MAX_STEPS`` (400,000) steps, and its
+upright decision (``core.contact_phase.upright_decided``) takes each step left to cover
+``BUDGET_STEP`` (0.1 ms), while an upright roller's mean step falls as 1/μ (its regularised
+friction's time constant m v_ε / (μ F_n)): 0.966, 0.337, 0.113, 0.034 ms at μ 0.3, 1, 3, 10
+(207, 593, 1,765, 5,875 steps per 0.2 s of upright rolling; a nickel rolling at 0.3 m/s,
+e 0.5, resistances 1e-4 m, measured 2026-11-24). At μ 3 the step still covers BUDGET_STEP, so
+a roller decided upright, carried on undecided, settles (tests/test_contact_friction.py); at
+μ 10 rollers decided upright at 0.9-2 m/s run out of steps carried on (UNSETTLED), so the
+decision would turn unsettled tosses into decided ones. Raising the cap needs BUDGET_STEP
+scaled with that 1/μ step. Up to it the landing models are validated (tests/test_impact.py's
+impact-law properties and the contact phase's energy, friction-cone and upright-roller tests
+draw μ up to it). Far beyond, the impact law's cone |P_t| ≤ μ P_n can no longer be told from
+the rounding of P_n (μ ≳ 1e11), and near the largest float μ P_n overflows (the contact point
+left moving into the table)."""
+
 DEFAULT_ROLLING_RESISTANCE = 1e-4
 """Rolling resistance ℓ_r of a coin's rim on a table, m: an assumption. No source measures it
 for a coin (REFERENCES §5); 1e-4 m is MuJoCo's default rolling friction (XML reference,
@@ -104,8 +122,8 @@ AIR_DENSITY_RANGE = v.Quantity("air density", "kg/m³", 1e-6, 1e4)
 """ρ: 10⁻⁶ to 10⁴ kg/m³ (thin air on Mars is 0.02, water 1000)."""
 
 
-def _single(name: str, value: float, unit: str, check: str = "non_negative") -> float:
-    arr = getattr(v, check)(name, value, unit)
+def _single(name: str, value: float, low: float, high: float) -> float:
+    arr = v.in_range(name, value, low, high)
     if arr.ndim:
         raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
     return float(arr)
@@ -130,10 +148,11 @@ class Surface:
         Newton's coefficient of restitution e of the contact's normal velocity, in [0, 1]
         (default :data:`DEFAULT_RESTITUTION`).
     friction : float
-        Coulomb friction coefficient μ ≥ 0 of the coin on the surface (default
-        :data:`DEFAULT_FRICTION`). Both for ``"table"`` only: a catch in the hand, which has no
-        contact, refuses either given to it (ValueError, :data:`TABLE_ONLY`), and keeps the
-        defaults (marked as not given, as the resistances' below).
+        Coulomb friction coefficient μ of the coin on the surface, 0 to :data:`MAX_FRICTION` (the
+        range the landing models are validated over; default :data:`DEFAULT_FRICTION`). Both for
+        ``"table"`` only: a catch in the hand, which has no contact, refuses either given to it
+        (ValueError, :data:`TABLE_ONLY`), and keeps the defaults (marked as not given, as the
+        resistances' below).
     rolling_resistance, pivoting_resistance : float
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
@@ -206,7 +225,7 @@ class Surface:
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)
         if e.ndim:
             raise TypeError("restitution must be a single number")
-        mu = _single("friction", self.friction, "")
+        mu = _single("friction", self.friction, 0.0, MAX_FRICTION)
         for name, checked in (("restitution", float(e)), ("friction", mu)):
             if not isinstance(getattr(self, name), _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
@@ -255,12 +274,12 @@ class Surface:
 
 CONTACT_RANGES = {
     "restitution": (0.0, 1.0),
-    "friction": (0.0, math.inf),
+    "friction": (0.0, MAX_FRICTION),
     "rolling_resistance": (ROLLING_RESISTANCE.low, ROLLING_RESISTANCE.high),
     "pivoting_resistance": (PIVOTING_RESISTANCE.low, PIVOTING_RESISTANCE.high),
 }
-"""The physical range of each contact parameter a distribution of tosses may spread: e in
-[0, 1] (no contact gives energy back beyond elastic), μ ≥ 0, the rolling and pivoting
+"""The physical range of each contact parameter a distribution of tosses may spread: e in [0, 1] (no
+contact gives energy back beyond elastic), μ in [0, :data:`MAX_FRICTION`], the rolling and pivoting
 resistances ℓ_r, ℓ_p in [0, 1 cm] (m; :data:`ROLLING_RESISTANCE`)."""
 
 CONTACT_UNITS = {"rolling_resistance": "m", "pivoting_resistance": "m"}
@@ -282,7 +301,7 @@ def contact_distribution(name: str, value: Distribution | float) -> Distribution
     --------
     >>> from coinflight.model.distributions import Normal
     >>> contact_distribution("friction", Normal(0.4, 0.1)).describe()
-    'normal(0.4, sd 0.1) truncated to ≥ 0 (100 % kept)'
+    'normal(0.4, sd 0.1) truncated to [0, 3] (100 % kept)'
     >>> contact_distribution("restitution", 1.2)
     Traceback (most recent call last):
     ...
@@ -358,6 +377,7 @@ __all__ = [
     "CONTACT_RANGES",
     "CONTACT_UNITS",
     "DROP_HEIGHT",
+    "MAX_FRICTION",
     "ROCKING_HAS_NO_RESISTANCE",
     "TABLE_ONLY",
     "Drag",

@@ -110,7 +110,7 @@ Restitution = Annotated[
     _q("table: coefficient of restitution in [0, 1] (probability: also a distribution, 0.3:0.6)."),
 ]
 Friction = Annotated[
-    str | None, _q("table: Coulomb friction coefficient ≥ 0 (probability: also a distribution).")
+    str | None, _q("table: Coulomb friction coefficient 0-3 (probability: also a distribution).")
 ]
 Ending = Annotated[
     str | None,

@@ -75,6 +75,18 @@ export function latest(task) {
   };
 }
 
+/**
+ * Await `request()`, a `latest` task: its cancellation by a newer call (an AbortError) is not an
+ * error, any other failure is. Each panel's `update()`.
+ */
+export async function unlessSuperseded(request) {
+  try {
+    await request();
+  } catch (err) {
+    if (err.name !== "AbortError") throw err;
+  }
+}
+
 /** Show `err` in the panel's error line (or clear it when `err` is null). */
 export function showError(element, err) {
   if (!err) {

@@ -1,6 +1,6 @@
 // Basin map: which face each toss of a (T, ω) box shows (/api/basin), drawn cell by cell;
 // a click tosses that (T, ω) in the explorer.
-import { ApiError, getJSON, latest, showError } from "./api.js";
+import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { thousands } from "./format.js";
@@ -58,12 +58,8 @@ export class Basin {
     };
   }
 
-  async update() {
-    try {
-      await this.request();
-    } catch (err) {
-      if (err.name !== "AbortError") throw err;
-    }
+  update() {
+    return unlessSuperseded(this.request);
   }
 
   async fetchMap(signal) {

@@ -2,7 +2,7 @@
 // computes (n(t), the angular momentum S and the precession cone), with a time slider.
 import * as THREE from "three";
 import { OrbitControls } from "./vendor/three/addons/controls/OrbitControls.js";
-import { ApiError, getJSON, latest, showError } from "./api.js";
+import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { tossLines } from "./format.js";
 
@@ -431,12 +431,8 @@ export class Explorer {
     return this.update();
   }
 
-  async update() {
-    try {
-      await this.request();
-    } catch (err) {
-      if (err.name !== "AbortError") throw err;
-    }
+  update() {
+    return unlessSuperseded(this.request);
   }
 
   async fetchToss(signal) {

@@ -1,6 +1,6 @@
 // Probability: P(heads) over ranges of spin and flight time (/api/probability), printed as
 // `coinflight probability` prints it.
-import { ApiError, getJSON, latest, showError } from "./api.js";
+import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
 import { fmtG, probabilityLines, thousands } from "./format.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
@@ -140,12 +140,8 @@ export class Probability {
     ax.draw("tosses (log scale)", "P(heads)", { xticks: ticks, xformat: (e) => thousands(10 ** e) });
   }
 
-  async update() {
-    try {
-      await this.request();
-    } catch (err) {
-      if (err.name !== "AbortError") throw err;
-    }
+  update() {
+    return unlessSuperseded(this.request);
   }
 
   async fetchProbability(signal) {

@@ -1,6 +1,6 @@
 // Same side: p(ψ), the chance a precessing coin lands the side it started (/api/bias, Diaconis,
 // Holmes & Montgomery 2007), and the ψ that explains 350,757 real flips (/api/data).
-import { ApiError, getJSON, latest, showError } from "./api.js";
+import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { fmtG, thousands } from "./format.js";
@@ -113,12 +113,8 @@ export class SameSide {
     this.draw();
   }
 
-  async update() {
-    try {
-      await this.request();
-    } catch (err) {
-      if (err.name !== "AbortError") throw err;
-    }
+  update() {
+    return unlessSuperseded(this.request);
   }
 
   async fetchPsi(signal) {
