@@ -20,25 +20,27 @@ the coin still turns and its centre still falls, so its ratio is not a finished 
 restitution and can exceed 1 (1.099 at e 0.8 from 50 cm, t_c 1 ms). Printed per case: the
 rebound ratio for each H and e, and the contact's duration.
 
-The upright coin is also compared with what the damper sizing predicts: each rim's damper is
-γ = ζ sqrt(K_t m_eff) with m_eff = 1/K_zz, the effective mass of that rim's contact point alone
-(1/m + (h/2)²/I1 upright: nearly the whole coin), ζ solved for e on one contact
-(:func:`coinflight.core.contact_phase.damping_ratio`); two rims pressed together then form one
-contact of stiffness 2 K_t on the mass m, damped by 2 γ: a damping ratio
-ζ sqrt(2 m_eff / m), not ζ, whose restitution is
-:func:`coinflight.core.contact_phase.restitution_of` (ζ sqrt(2 m_eff/m), 3/2), printed as
-"predicted".
+The upright coin is also compared with what the damper sizing predicts. Two rims pressed
+together are damped as one pair (:data:`coinflight.core.contact_phase.JOINT_DAMPING`, since
+2026-11-24): every mode of the pair at the surface's ζ, so the upright drop is predicted to
+rebound at :func:`coinflight.core.contact_phase.restitution_of` (ζ, 3/2) = e, printed as
+"predicted". Before, each rim's damper was γ = ζ sqrt(K_t m_eff) with m_eff = 1/K_zz, the
+effective mass of that rim's contact point alone (1/m + (h/2)²/I1 upright: nearly the whole
+coin); two rims pressed together then formed one contact of stiffness 2 K_t on the mass m,
+damped by 2 γ: a damping ratio ζ sqrt(2 m_eff / m), not ζ, whose restitution
+restitution_of(ζ sqrt(2 m_eff/m), 3/2) is printed as "per rim" (:func:`per_rim_upright`).
 
-The same sizing damps the pair's rocking mode (the rims in antiphase, inertia I1 on the
-stiffness 2 K_t h′²) at ζ sqrt(2 m_eff h′²/I1), 0.25 ζ for a nickel (linearised). Also
-printed: the damping ratio of each mode of an upright coin resting on both rims (at the static
-depth of :func:`coinflight.core.contact_phase.static_depth`, gravity on), measured from the
-decay of a small oscillation (:func:`mode_damping`: a lean rate of 0.3 rad/s, a fall of
-2 mm/s), against ζ and the linearised values. The rocking mode measures 0.29 ζ at t_c 1 ms and
-0.256 ζ at 62.5 μs (``--contact-time 1e-3,6.25e-5``, 2026-11-24), tending to the linearised
-0.25 ζ as the contact shortens. The bounce mode's decrement is read only where the mode is
-lightly damped (linearised ζ′ < :data:`RELIABLE_ZETA`): heavily damped, its few extremes misread
-it (at t_c 1 ms, e 0.2, 0.35, 0.5: 0.686, 0.273, 0.280 against the linearised 0.929, 0.532,
+The pair's modes of an upright coin resting on both rims (at the static depth of
+:func:`coinflight.core.contact_phase.static_depth`, gravity on): the damping ratio of each,
+measured from the decay of a small oscillation (:func:`mode_damping`: a lean rate of 0.3 rad/s,
+a fall of 2 mm/s), against ζ (the joint damping's linearised value for both modes) and the
+per-rim sizing's linearised values (:func:`per_rim_modes`): the rocking mode (the rims in
+antiphase, inertia I1 on the stiffness 2 K_t h′²) at ζ sqrt(2 m_eff h′²/I1), 0.25 ζ for a
+nickel, and the bounce at ζ sqrt(2 m_eff/m) = 1.39 ζ. Per rim, the rocking mode measured
+0.29 ζ at t_c 1 ms and 0.256 ζ at 62.5 μs (``--contact-time 1e-3,6.25e-5``, 2026-11-24, before
+the joint damping). The bounce mode's decrement is read only where the mode is lightly damped
+(linearised ζ′ < :data:`RELIABLE_ZETA`): heavily damped, its few extremes misread it (per rim,
+at t_c 1 ms, e 0.2, 0.35, 0.5: 0.686, 0.273, 0.280 against the linearised 0.929, 0.532,
 0.324), so there the line says "not read".
 """
 
@@ -137,7 +139,18 @@ def mode_damping(c, mode: str) -> float:  # type: ignore[no-untyped-def]
 
 
 def linearised_modes(c) -> tuple[float, float]:  # type: ignore[no-untyped-def]
-    """(bounce, rocking) damping ratios of the two-rim pair, linearised (module notes)."""
+    """(bounce, rocking) damping ratios of the two-rim pair, linearised, as the phase damps it:
+    both ζ with the joint damping (:data:`coinflight.core.contact_phase.JOINT_DAMPING`), else
+    :func:`per_rim_modes`."""
+    if cp.JOINT_DAMPING:
+        zeta = cp.damping_of(c)
+        return zeta, zeta
+    return per_rim_modes(c)
+
+
+def per_rim_modes(c) -> tuple[float, float]:  # type: ignore[no-untyped-def]
+    """(bounce, rocking) damping ratios of the two-rim pair, linearised, with each rim damped
+    alone (the sizing before the joint damping; module notes)."""
     hb = c.half_thickness - c.corner_radius
     ma = c.mass * hb * hb / c.i1
     zeta = cp.damping_of(c)
@@ -145,7 +158,15 @@ def linearised_modes(c) -> tuple[float, float]:  # type: ignore[no-untyped-def]
 
 
 def predicted_upright(c) -> float:  # type: ignore[no-untyped-def]
-    """The upright coin's restitution predicted by the damper sizing (module notes)."""
+    """The upright coin's restitution predicted by the phase's damper sizing: e (restitution_of
+    (ζ, 3/2)) with the joint damping, else :func:`per_rim_upright`."""
+    if cp.JOINT_DAMPING:
+        return cp.restitution_of(cp.damping_of(c), 1.5)
+    return per_rim_upright(c)
+
+
+def per_rim_upright(c) -> float:  # type: ignore[no-untyped-def]
+    """The upright coin's restitution with each rim damped alone (module notes)."""
     hb = c.half_thickness - c.corner_radius
     m_eff = 1.0 / (1.0 / c.mass + hb * hb / c.i1)
     zeta = cp.damping_of(c) * math.sqrt(2.0 * m_eff / c.mass)
@@ -195,23 +216,27 @@ def main() -> None:
                 extra = ""
                 if name.startswith("upright"):
                     c = record(e, tc, args.corner)
-                    extra = f"; predicted {predicted_upright(c):.3f}"
+                    extra = (
+                        f"; predicted {predicted_upright(c):.3f} (per rim {per_rim_upright(c):.3f})"
+                    )
                 print(f"    e {e:g}: {ratios}  ({ms} ms){extra}")
         print(
             "  an upright coin resting on both rims, damping ratio of each mode "
-            "(measured; linearised):"
+            "(measured; linearised; per rim, linearised):"
         )
         for e in args.restitution:
             c = record(e, tc, args.corner)
             bounce, rocking = linearised_modes(c)
+            old_bounce, old_rocking = per_rim_modes(c)
             read = (
                 f"{mode_damping(c, 'bounce'):.4f}"
                 if bounce < RELIABLE_ZETA
                 else f"not read (ζ′ ≥ {RELIABLE_ZETA:g}: too damped for its decrement)"
             )
             print(
-                f"    e {e:g}: ζ {cp.damping_of(c):.4f}; bounce {read} ({bounce:.4f}); rocking "
-                f"{mode_damping(c, 'rocking'):.4f} ({rocking:.4f})"
+                f"    e {e:g}: ζ {cp.damping_of(c):.4f}; bounce {read} ({bounce:.4f}; "
+                f"{old_bounce:.4f}); rocking {mode_damping(c, 'rocking'):.4f} ({rocking:.4f}; "
+                f"{old_rocking:.4f})"
             )
 
 

@@ -606,6 +606,19 @@ of its own, as ``benchmarks/bench_bounce.py --upright`` does). At run time a coi
 past the decision by :func:`advance` with ``decide=False`` (an argument, read at every call)."""
 
 
+JOINT_DAMPING = True
+"""Whether two rims pressed together are damped as one pair (:func:`_pair`: every mode of the
+pair at the surface's ζ, so an upright coin restitutes with e; the module notes, "Two rims")
+rather than each rim alone as if it carried the coin (False: the code before 2026-11-24's
+joint damping, to the bit). A compile-time constant, as :data:`UPRIGHT_DECISION` (its notes
+say how to change it): ``benchmarks/normal_law.py`` switches it off for its other rim laws,
+whose tangent stiffness is not 2 φ κ."""
+JOINT_DEGENERATE = 1e-9
+"""Least det W / (W₁₁ W₂₂) of the two rims' normal mobility for which :func:`joint_damping`
+damps them together: 0 when both rim circles are one (a corner radius a = h/2) or their arcs'
+centroids lie on one vertical line; a nickel with a = h/2 − 25 μm still has ~1e-4."""
+
+
 class Ending(IntEnum):
     """How :func:`_integrate` (and :func:`advance`) stopped: false when the coin has not
     settled, true when it has, and which way (numba compiles the members as their integers)."""
@@ -801,16 +814,30 @@ def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
     across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
     normal mass is ignored, and the damper is not the one that restitutes such an impact with
     e (not examined: the rigid law has one contact point)."""
+    turn, kzz = _normal_row(rc, n, mass, i1, i3)
+    if friction > 0.0:
+        zeta = zeta / math.sqrt(_sliding_ratio(rc, turn, kzz, v, omega, friction))
+    return zeta, 1.0 / kzz
+
+
+@njit(cache=True, inline="always")
+def _normal_row(rc, n, mass, i1, i3):
+    """(I⁻¹(rc × Z), K_zz) of the point rc (relative to the centre of mass, m): the product
+    the collision matrix's normal row is built from and its normal entry K_zz = 1/m +
+    (rc × Z)·I⁻¹(rc × Z), 1/kg (Stronge 2000, eq 5.7; :func:`_damper`)."""
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
     turn = inverse_inertia_apply(arm, n, i1, i3)
-    kzz = 1.0 / mass + dot(arm, turn)
-    if friction > 0.0:
-        u = cross(omega, rc)
-        kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
-        kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
-        ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
-        zeta = zeta / math.sqrt(ratio)
-    return zeta, 1.0 / kzz
+    return turn, 1.0 / mass + dot(arm, turn)
+
+
+@njit(cache=True, inline="always")
+def _sliding_ratio(rc, turn, kzz, v, omega, friction):
+    """ρ of :func:`sliding_mass_ratio` at the point rc, from :func:`_normal_row`'s (turn, K_zz)
+    and the material point's slip v + ω × rc (:func:`_damper`)."""
+    u = cross(omega, rc)
+    kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
+    kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
+    return sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
 
 
 @njit(cache=True)
@@ -823,6 +850,241 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
     :func:`_damper` sizes a rim's damper with it."""
     share = friction / math.sqrt(ux * ux + uy * uy + slip_speed * slip_speed)
     return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
+
+
+@njit(cache=True, inline="always")
+def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
+    """Both rims' (F_n, q, r_t) as :func:`_derivative` applies them, the lower rim (σ =
+    ``lower``) first: each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)), and, when
+    both arcs are non-empty (:data:`JOINT_DAMPING`), the pair damped together by :func:`_pair`
+    if both its forces are positive; else each rim alone, as before (the module notes, "Two
+    rims"). Inlined into the derivative and into :func:`upright_decided`."""
+    f1, q1, r1 = 0.0, (0.0, 0.0, 0.0), 0.0
+    f2, q2, r2 = 0.0, (0.0, 0.0, 0.0), 0.0
+    for sigma in (lower, -lower):
+        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
+        fn, q, rt, _ = _rim(
+            sigma,
+            z,
+            v,
+            n,
+            omega,
+            s,
+            w,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
+            c.friction,
+        )
+        if sigma == lower:
+            f1, q1, r1 = fn, q, rt
+        else:
+            f2, q2, r2 = fn, q, rt
+    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
+        joint, g1, p1, g2, p2, _, _, _ = _pair(
+            lower,
+            z,
+            v,
+            n,
+            omega,
+            s,
+            w,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
+            c.friction,
+        )
+        if joint:
+            f1, q1, f2, q2 = g1, p1, g2, p2
+    return f1, q1, r1, f2, q2, r2
+
+
+@njit(cache=True, inline="always")
+def _both_arcs(z, n, s, lower, c):
+    """Whether both rims' arcs are non-empty (d(φ) > 0 somewhere), decided as :func:`_rim`
+    decides it (a + b > 0, the same operations)."""
+    radius = c.radius - c.corner_radius
+    hh = c.half_thickness - c.corner_radius
+    b = radius * s
+    upper = -lower
+    return c.corner_radius - z - lower * hh * n[2] + b > 0.0 and (
+        c.corner_radius - z - upper * hh * n[2] + b > 0.0
+    )
+
+
+@njit(cache=True)
+def rims_contact(y, c, stiffness, zeta):
+    """Both rims' normal forces as :func:`_derivative` applies them, for tests and studies:
+    (σ₁, F₁, q₁, F₂, q₂, joint, C₁₁, C₁₂, C₂₂), rim 1 the lower one (σ₁ = −1, the tails rim,
+    when n_z ≥ 0), rim 2 = −σ₁; F ≥ 0 (N) and the centres of pressure q (m, relative to the
+    centre of mass) of :func:`rim_contact`; ``joint`` whether the pair is damped together
+    (:func:`_pair`), and then its damping matrix C (N s/m), else NaNs."""
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    s, w = _tangent_basis(n)
+    f1, q1, _, f2, q2, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    joint, _, _, _, _, c11, c12, c22 = False, 0.0, q1, 0.0, q2, math.nan, math.nan, math.nan
+    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(y[0], n, s, lower, c):
+        joint, _, _, _, _, c11, c12, c22 = _pair(
+            lower,
+            y[0],
+            v,
+            n,
+            omega,
+            s,
+            w,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
+            c.friction,
+        )
+        if not joint:
+            c11, c12, c22 = math.nan, math.nan, math.nan
+    return lower, f1, q1, f2, q2, joint, c11, c12, c22
+
+
+@njit(cache=True)
+def joint_damping(w11, w12, w22, k1, k2, zeta):
+    """(ok, C₁₁, C₁₂, C₂₂): the damping matrix C = 2 ζ M^½ (M^−½ K M^−½)^½ M^½ of two contacts
+    with the normal mobility W (1/kg; M = W⁻¹ their mass matrix) and the tangent stiffnesses
+    K = diag(k₁, k₂) (N/m), which damps every mode of M ẍ + C ẋ + K x = 0 at the ratio ζ
+    (Caughey's modal damping; Caughey & O'Kelly, J. Appl. Mech. 32:583, 1965). It is 2 ζ
+    times the geometric mean M # K of the two positive matrices, symmetric and positive
+    definite (Bhatia, *Positive Definite Matrices*, 2007, §4.1), and for one contact
+    (k₂ → 0) the single damper 2 ζ sqrt(k₁/W₁₁), which :func:`_rim` applies.
+
+    In closed form, no matrix function evaluated: the square root of a 2 × 2 positive matrix,
+    sqrt(A) = (A + sqrt(det A) I) / sqrt(tr A + 2 sqrt(det A)) (Cayley–Hamilton; Levinger,
+    Math. Mag. 53:222, 1980), gives for det A = det B = 1 the geometric mean
+    A # B = (A + B) / sqrt(det(A + B)) (Bhatia 2007, Prop. 4.1.12), and by its homogeneity
+    M # K = sqrt(αβ) (M/α + K/β) / sqrt(det(M/α + K/β)), α = sqrt(det M) = 1/sqrt(det W),
+    β = sqrt(k₁ k₂), M/α = adj(W)/sqrt(det W). det(M/α + K/β) ≥ 4 (two unit-determinant
+    positive matrices), so nothing cancels but det W, which is the rims' separation: ok is
+    False when det W ≤ :data:`JOINT_DEGENERATE` W₁₁ W₂₂ (two contacts on one vertical line, a
+    rim without a flat band, a = h/2; the caller then damps each alone)."""
+    det = w11 * w22 - w12 * w12
+    if not det > JOINT_DEGENERATE * w11 * w22 or not k1 > 0.0 or not k2 > 0.0:
+        return False, 0.0, 0.0, 0.0
+    root = math.sqrt(det)
+    ratio = math.sqrt(k1 / k2)
+    s11 = w22 / root + ratio
+    s22 = w11 / root + 1.0 / ratio
+    s12 = -w12 / root
+    scale = 2.0 * zeta * math.sqrt(math.sqrt(k1 * k2) / (root * (s11 * s22 - s12 * s12)))
+    return True, scale * s11, scale * s12, scale * s22
+
+
+@njit(cache=True, inline="always")
+def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction):
+    """What :func:`_pair` needs of rim σ (``radius``, ``hh`` those of the core cylinder):
+    (K_t = 2 φ κ, elastic force, its moment ∫ κ d cos φ, ∫ ḋ_s, ∫ ḋ_s cos φ, 2 φ, 2 sin φ, ρ,
+    K_zz, I⁻¹(rc × Z), rc), from :func:`_rim`'s arc sums; K_t 0 for an empty arc."""
+    zero = (0.0, 0.0, 0.0)
+    a = corner - z - sigma * hh * n[2]
+    b = radius * s
+    if a + b <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero
+    phi, sp, cp = _arc(a, b)
+    i0 = 2.0 * phi
+    ic = 2.0 * sp
+    icc = phi + sp * cp
+    wn = cross(omega, n)
+    ww = cross(omega, w)
+    a0 = -(v[2] + sigma * hh * wn[2])
+    a1 = -radius * ww[2]
+    rc = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
+    turn, kzz = _normal_row(rc, n, mass, i1, i3)
+    rho = _sliding_ratio(rc, turn, kzz, v, omega, friction) if friction > 0.0 else 1.0
+    elastic = stiffness * (a * i0 + b * ic)
+    moment = stiffness * (a * ic + b * icc)
+    rate = a0 * i0 + a1 * ic
+    turning = a0 * ic + a1 * icc
+    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc
+
+
+@njit(cache=True)
+def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction):
+    """Both rims' (ok, F₁, q₁, F₂, q₂, C₁₁, C₁₂, C₂₂) damped together (the module notes, "Two
+    rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps each rim's
+    own damper, :func:`_rim`) when a rim's force would not be positive or the pair is
+    degenerate (:func:`joint_damping`).
+
+    Each rim's arc, its sums and its centroid rc_i are :func:`_rim`'s; the pair's normal
+    mobility is W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z) (the normal block of Stronge's collision
+    matrix for two points, Stronge 2000, eq 5.7: :func:`_normal_row`), its tangent stiffnesses
+    k_i = 2 φ_i κ. The sliding correction stays each rim's own (:func:`_damper`): ρ_i at the
+    rim's centroid, entering as the congruence W̃ = P^½ W P^½, P = diag(ρ₁, ρ₂) (each rim's
+    normal row and column scaled by sqrt(ρ_i), its K_zz by ρ_i as for one rim, the coupling by
+    the geometric mean sqrt(ρ₁ ρ₂)), so that C stays symmetric positive and is :func:`_rim`'s
+    damper 2 (ζ/sqrt(ρ_i)) sqrt(k_i/K_zz) when the other arc vanishes. The coupled friction
+    terms between the rims (the collision matrix's K_zt of one rim's friction at the other's
+    normal, not symmetric) are left out: a viscous damper needs a symmetric mass.
+
+    The damping forces D = C ḋ act on the arcs' mean penetration rates ḋ_i = a0 + a1 sin φ/φ
+    (the normal velocity of the centroid's material point): each rim's own part C_ii ḋ_i
+    spread over its arc as :func:`_rim`'s, γ_i ḋ_s(φ) with γ_i = C_ii/(2 φ_i), the coupling
+    C_ij ḋ_j spread evenly over the arc (acting at its centroid). Both act in the arc's plane
+    of symmetry (no torque about n or the vertical: L·n and L_z conserved without friction),
+    and the power they take, ḋᵀ C ḋ + Σ C_ii var_i(ḋ_s) ≥ 0 (var_i the spread of the even
+    rate over arc i), is never negative: the pair still only dissipates."""
+    radius -= corner
+    hh -= corner
+    zero = (0.0, 0.0, 0.0)
+    fail = (False, 0.0, zero, 0.0, zero, 0.0, 0.0, 0.0)
+    one = _pair_rim(
+        lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction
+    )
+    two = _pair_rim(
+        -lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction
+    )
+    if one[0] <= 0.0 or two[0] <= 0.0:
+        return fail
+    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _ = one
+    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2 = two
+    w12 = (1.0 / mass + dot((c2[1], -c2[0], 0.0), t1)) * math.sqrt(rho1 * rho2)
+    ok, c11, c12, c22 = joint_damping(rho1 * kz1, w12, rho2 * kz2, k1, k2, zeta)
+    if not ok:
+        return fail
+    rate1 = d1 / i01  # the arcs' mean penetration rates
+    rate2 = d2 / i02
+    g1 = c11 / i01
+    g2 = c22 / i02
+    f1 = el1 + g1 * d1 + c12 * rate2
+    f2 = el2 + g2 * d2 + c12 * rate1
+    if not (f1 > 0.0 and f2 > 0.0):
+        return False, 0.0, zero, 0.0, zero, c11, c12, c22
+    m1 = mo1 + g1 * e1 + c12 * rate2 * ic1 / i01
+    m2 = mo2 + g2 * e2 + c12 * rate1 * ic2 / i02
+    kq1 = radius * m1 / f1
+    kq2 = radius * m2 / f2
+    q1 = (
+        lower * hh * n[0] + kq1 * w[0],
+        lower * hh * n[1] + kq1 * w[1],
+        lower * hh * n[2] + kq1 * w[2] - corner,
+    )
+    q2 = (
+        -lower * hh * n[0] + kq2 * w[0],
+        -lower * hh * n[1] + kq2 * w[1],
+        -lower * hh * n[2] + kq2 * w[2] - corner,
+    )
+    return True, f1, q1, f2, q2, c11, c12, c22
 
 
 @njit(cache=True)
@@ -856,7 +1118,7 @@ def _derivative(y, out, c, stiffness, zeta):
     inlined call (compile time as before, but 1,120 against 1,055 ns a step). What is left: the
     arc's arccos (libm's; ~35 ns of a call when knocked out), the square roots and divisions of
     the forces."""
-    mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
+    mass, i1, i3, radius = c.mass, c.i1, c.i3, c.radius
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
@@ -868,26 +1130,9 @@ def _derivative(y, out, c, stiffness, zeta):
     # The lower rim first: the same sums, in the same order, for the mirror toss (n → −n).
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
-    for sigma in (lower, -lower):
-        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
-        fn, q, rt, _ = _rim(
-            sigma,
-            y[0],
-            v,
-            n,
-            omega,
-            s,
-            w,
-            radius,
-            hh,
-            mass,
-            i1,
-            i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            mu,
-        )
+    f1, q1, r1, f2, q2, r2 = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    for k in range(2):
+        fn, q, rt = (f1, q1, r1) if k == 0 else (f2, q2, r2)
         if fn <= 0.0:
             continue
         fz += fn
@@ -1093,8 +1338,9 @@ def upright_decided(y, c, stiffness, zeta, budget):
     turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
     of the band's m g h′; the friction the turn and the rolling resistance need,
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
-    both rims pressed (:func:`rim_contact`, with each rim's damper as :func:`_derivative` sizes
-    it, :func:`_damper`: the force they exert now); the
+    both rims pressed (their forces as :func:`_derivative` applies them, :func:`_rims`: each
+    rim's damper sized alone, :func:`_damper`, or the pair's joint damping, :func:`_pair`:
+    the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
     coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
@@ -1137,27 +1383,10 @@ def upright_decided(y, c, stiffness, zeta, budget):
     if math.sqrt(turn * turn + resist * resist) > UPRIGHT_MARGIN * c.friction * weight:
         return False
     s, w = _tangent_basis(n)
-    for sigma in (-1.0, 1.0):
-        fn, _, _, _ = _rim(  # each rim's damper as _derivative sizes it
-            sigma,
-            y[0],
-            v,
-            n,
-            omega,
-            s,
-            w,
-            radius,
-            c.half_thickness,
-            mass,
-            i1,
-            i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            c.friction,
-        )
-        if fn <= 0.0:
-            return False
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    f1, _, _, f2, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    if f1 <= 0.0 or f2 <= 0.0:  # both rims pressed, as _derivative presses them
+        return False
     core = radius - c.corner_radius  # r − a, the rim circle's radius
     low = (core * w[0], core * w[1], core * w[2] - c.corner_radius)  # the band middle's lowest
     u = cross(omega, low)
