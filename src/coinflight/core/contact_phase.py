@@ -886,7 +886,7 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
         else:
             f2, q2, r2 = fn, q, rt
     if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
-        joint, g1, p1, g2, p2, _, _, _ = _pair(
+        joint, g1, p1, t1, g2, p2, t2, _, _, _ = _pair(
             lower,
             z,
             v,
@@ -905,7 +905,7 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
             c.friction,
         )
         if joint:
-            f1, q1, f2, q2 = g1, p1, g2, p2
+            f1, q1, r1, f2, q2, r2 = g1, p1, t1, g2, p2, t2
     return f1, q1, r1, f2, q2, r2
 
 
@@ -935,9 +935,9 @@ def rims_contact(y, c, stiffness, zeta):
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
     f1, q1, _, f2, q2, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
-    joint, _, _, _, _, c11, c12, c22 = False, 0.0, q1, 0.0, q2, math.nan, math.nan, math.nan
+    joint, c11, c12, c22 = False, math.nan, math.nan, math.nan
     if JOINT_DAMPING and zeta > 0.0 and _both_arcs(y[0], n, s, lower, c):
-        joint, _, _, _, _, c11, c12, c22 = _pair(
+        joint, _, _, _, _, _, _, c11, c12, c22 = _pair(
             lower,
             y[0],
             v,
@@ -995,12 +995,12 @@ def joint_damping(w11, w12, w22, k1, k2, zeta):
 def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction):
     """What :func:`_pair` needs of rim σ (``radius``, ``hh`` those of the core cylinder):
     (K_t = 2 φ κ, elastic force, its moment ∫ κ d cos φ, ∫ ḋ_s, ∫ ḋ_s cos φ, 2 φ, 2 sin φ, ρ,
-    K_zz, I⁻¹(rc × Z), rc), from :func:`_rim`'s arc sums; K_t 0 for an empty arc."""
+    K_zz, I⁻¹(rc × Z), rc, r_t), from :func:`_rim`'s arc sums; K_t 0 for an empty arc."""
     zero = (0.0, 0.0, 0.0)
     a = corner - z - sigma * hh * n[2]
     b = radius * s
     if a + b <= 0.0:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero, 0.0
     phi, sp, cp = _arc(a, b)
     i0 = 2.0 * phi
     ic = 2.0 * sp
@@ -1016,15 +1016,20 @@ def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, 
     moment = stiffness * (a * ic + b * icc)
     rate = a0 * i0 + a1 * ic
     turning = a0 * ic + a1 * icc
-    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc
+    ratio = sp / phi
+    pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
+    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc, pivot
 
 
 @njit(cache=True)
 def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction):
-    """Both rims' (ok, F₁, q₁, F₂, q₂, C₁₁, C₁₂, C₂₂) damped together (the module notes, "Two
-    rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps each rim's
-    own damper, :func:`_rim`) when a rim's force would not be positive or the pair is
-    degenerate (:func:`joint_damping`).
+    """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
+    notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps
+    each rim's own damper, :func:`_rim`) when an arc is empty, a rim's force would not be
+    positive or the pair is degenerate (:func:`joint_damping`). The pivot radii r_t are
+    :func:`_rim`'s, computed here (a rim whose own damper would release it may still press in
+    the pair); ``benchmarks/bench_rim_impacts.py``'s ``--drill-factor``, which wraps
+    :func:`_rim`, so does not reach a pair (its impacts, tilted 9-80°, touch with one rim).
 
     Each rim's arc, its sums and its centroid rc_i are :func:`_rim`'s; the pair's normal
     mobility is W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z) (the normal block of Stronge's collision
@@ -1047,7 +1052,7 @@ def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta
     radius -= corner
     hh -= corner
     zero = (0.0, 0.0, 0.0)
-    fail = (False, 0.0, zero, 0.0, zero, 0.0, 0.0, 0.0)
+    fail = (False, 0.0, zero, 0.0, 0.0, zero, 0.0, 0.0, 0.0, 0.0)
     one = _pair_rim(
         lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction
     )
@@ -1056,8 +1061,8 @@ def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta
     )
     if one[0] <= 0.0 or two[0] <= 0.0:
         return fail
-    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _ = one
-    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2 = two
+    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _, r1 = one
+    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2, r2 = two
     w12 = (1.0 / mass + dot((c2[1], -c2[0], 0.0), t1)) * math.sqrt(rho1 * rho2)
     ok, c11, c12, c22 = joint_damping(rho1 * kz1, w12, rho2 * kz2, k1, k2, zeta)
     if not ok:
@@ -1069,7 +1074,7 @@ def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta
     f1 = el1 + g1 * d1 + c12 * rate2
     f2 = el2 + g2 * d2 + c12 * rate1
     if not (f1 > 0.0 and f2 > 0.0):
-        return False, 0.0, zero, 0.0, zero, c11, c12, c22
+        return False, 0.0, zero, 0.0, 0.0, zero, 0.0, c11, c12, c22
     m1 = mo1 + g1 * e1 + c12 * rate2 * ic1 / i01
     m2 = mo2 + g2 * e2 + c12 * rate1 * ic2 / i02
     kq1 = radius * m1 / f1
@@ -1084,7 +1089,7 @@ def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta
         -lower * hh * n[1] + kq2 * w[1],
         -lower * hh * n[2] + kq2 * w[2] - corner,
     )
-    return True, f1, q1, f2, q2, c11, c12, c22
+    return True, f1, q1, r1, f2, q2, r2, c11, c12, c22
 
 
 @njit(cache=True)
