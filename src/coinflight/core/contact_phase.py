@@ -86,7 +86,8 @@ upright decision and these changes. All figures of these notes not dated otherwi
 costs, edge rates and MuJoCo comparisons below, the upright decision's counts) were measured
 before the sliding-mass damper (2026-11-24, "Restitution"), which moves single landings as a
 change of the dynamics does ("Convergence of a rim impact": faces of 2,000 tosses, edges not
-significantly).
+significantly), and all of them but those the paragraph "Two rims" re-measures before the
+joint damping of two pressed rims (2026-11-24, :data:`JOINT_DAMPING`).
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
@@ -299,39 +300,50 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   (J. Nonlinear Sci. 15:27, 2005: rolling and drilling friction set how a rolling disk's spin
   decays). No source gives them for a coin's rim: they are assumptions, to be carried as a band.
 
-**Two rims restitute below e (measured; the model is not changed).** Each rim's damper is
-sized for the effective mass at its own arc, m_eff = 1/K_zz, as if that rim carried the coin
-alone. An upright coin presses both rims together: one contact of stiffness 2 K_t on the mass
-m, damped by 2 γ, so its damping ratio is ζ sqrt(2 m_eff / m) = 1.39 ζ for a nickel
-(m_eff = 1/(1/m + h′²/I1)), and it rebounds at :func:`restitution_of` (1.39 ζ, 3/2), not e.
-``python benchmarks/bench_two_rims.py`` (frictionless nickel, sharp corners, not turning,
-dropped from 1 cm, 10 cm, 50 cm; 2026-11-24): upright on both rims **0.123-0.132 at e 0.2,
-0.250-0.256 at 0.35, 0.394-0.399 at 0.5, 0.555-0.559 at 0.65, 0.735-0.737 at 0.8**, against
-the prediction 0.132, 0.257, 0.399, 0.560, 0.737, and the same at t_c = 1 ms, 0.25 ms and
-62.5 μs (so not an effect of the contact's finite length); from 1 mm a little lower (gravity;
-0.369 at e 0.5, no release at 0.2). One rim (tilted 45°) tends to e as t_c falls (e 0.5,
-10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms: the coin turns during a finite contact),
-and a face to the linear law's :func:`restitution_of` (ζ, 1) (0.527 at e 0.5).
-``tests/test_bench_two_rims.py`` pins these. The same sizing leaves the pair's rocking mode
-(the rims in antiphase, inertia I1 on 2 K_t h′²) damped at ζ sqrt(2 m_eff h′²/I1) = 0.25 ζ
-for a nickel in the linearised pair, **0.29 ζ measured** at t_c 1 ms (the decay of a small lean
-oscillation of an upright nickel resting on both rims, the same script: 0.193, 0.111, 0.068,
-0.040, 0.020 at e 0.2, 0.35, 0.5, 0.65, 0.8, against ζ 0.668, 0.382, 0.233, 0.137, 0.068) and
-0.256 ζ at t_c 62.5 μs, the linearised value as the contact shortens: under-damped, about the
-restitution 0.82 where the surface says 0.5.
-*A fix* would size the pair's damping together whenever both rims press: with M the 2 × 2 mass
-matrix of the two arcs' centroids (the inverse of their 2 × 2 collision matrix, Stronge 2000,
-eq 5.7, for two points) and K_t = diag(2 φ₁ κ, 2 φ₂ κ), the damping matrix
-C = 2 ζ M^½ (M^−½ K_t M^−½)^½ M^½ (every mode of the pair at ζ; symmetric positive, so still
-dissipative), which is the present 2 ζ sqrt(K_t m_eff) when one rim touches. *What it would
-move:* every contact-ending outcome of a coin that spends time on both rims (7 % of the
-phase's steps, the upright rollers and the coins the upright decision ends), so every
-contact-ending number quoted (its edge rates, the decision's measured 0 disagreements, the
-comparisons with MuJoCo) would need re-measuring. A scratch copy not kept in the repository
-(both rims' dampers scaled by 1/√2 when both press, which corrects the bounce but not the
-rocking mode) changed the faces of more handed tosses than a one-ulp change of the input
-flips (above), with the edge and decided counts within their binomial spread; as it cannot be
-re-run from here, its numbers are not quoted.
+**Two rims are damped as one pair (2026-11-24, :data:`JOINT_DAMPING`).** Each rim's damper
+alone is sized for the effective mass at its own arc, m_eff = 1/K_zz, as if that rim carried
+the coin. An upright coin presses both rims together: one contact of stiffness 2 K_t on the mass
+m, which those two dampers damped at ζ sqrt(2 m_eff / m) = 1.39 ζ for a nickel
+(m_eff = 1/(1/m + h′²/I1)), and the pair's rocking mode (the rims in antiphase, inertia I1 on
+2 K_t h′²) at ζ sqrt(2 m_eff h′²/I1) = 0.25 ζ. So whenever both rims' arcs are in the table,
+:func:`_pair` damps them together: with W the 2 × 2 normal mobility of the two arcs' centroids
+(W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z), the normal block of the collision matrix for two points,
+Stronge 2000, eq 5.7), M = W⁻¹ and K_t = diag(2 φ₁ κ, 2 φ₂ κ), the damping matrix
+C = 2 ζ M^½ (M^−½ K_t M^−½)^½ M^½ (:func:`joint_damping`, in closed form) puts every mode of
+the linearised pair at ζ, is symmetric positive (the pair only dissipates), and is
+:func:`_rim`'s 2 ζ sqrt(K_t m_eff) as one arc closes (continuous at a rim's touch). Each rim's
+sliding correction ρ (above) stays its own: it scales that rim's row and column of W by
+sqrt(ρ) (:func:`_pair`). The forces C ḋ act on the arcs' mean penetration rates, each rim's own
+part spread over its arc as before, the coupling at the arc's centroid: in each arc's plane of
+symmetry, so L·n and L_z stay conserved without friction. When the pair would pull on a rim (a
+joint force not positive) each rim is damped alone, as before: a contact only pushes, and that
+fall-back dissipates too. With at most one arc in the table the derivative is the one before to
+the bit (15,480 random states of 20,000 against main 7d8c4d1, and
+tests/test_two_rim_damping.py against a kept reference).
+
+Measured, ``python benchmarks/bench_two_rims.py`` (frictionless nickel, sharp corners, not
+turning, dropped from 1 mm, 1 cm, 10 cm, 50 cm; 2026-11-24 07:47 UTC): upright on both rims,
+t_c 1 ms, **0.192-0.199 at e 0.2, 0.344-0.349 at 0.35, 0.495-0.499 at 0.5, 0.647-0.649 at
+0.65, 0.798-0.800 at 0.8** from 1 cm to 50 cm (from 1 mm 0.315, 0.476, 0.635, 0.792 and no
+release at 0.2: the weight, over a contact of 3.5 ms); at t_c 62.5 μs 0.199-0.200, 0.349-0.350,
+0.499-0.500, 0.650, 0.800 (``--contact-time 2.5e-4,6.25e-5 --heights 0.01,0.1,0.5``). Each rim
+damped alone had given (the same script at main 7d8c4d1, 2026-11-24) **0.123-0.132, 0.250-0.256,
+0.394-0.399, 0.555-0.559, 0.735-0.737**, the prediction restitution_of(1.39 ζ, 3/2) = 0.132,
+0.257, 0.399, 0.560, 0.737, at every t_c from 1 ms to 62.5 μs. The pair's rocking mode (the decay
+of a small lean oscillation of an upright nickel resting on both rims) is now damped at
+**1.139 ζ** at t_c 1 ms (0.760, 0.435, 0.265, 0.156, 0.077 at e 0.2-0.8 against ζ 0.668, 0.382,
+0.233, 0.137, 0.068), 1.02 ζ at 0.25 ms and **1.003 ζ** at 62.5 μs, where each rim alone gave
+0.29 ζ at 1 ms (0.193, 0.111, 0.068, 0.040, 0.020) and 0.256 ζ at 62.5 μs (its linearised
+0.25 ζ; the factor 1.14 at 1 ms is the finite Hertz-like contact's, in both sizings): the
+rocking restitution ~0.82 where the surface said 0.5 is gone. The bounce mode, lightly damped,
+0.99 ζ (1.39 ζ before). One rim (tilted 45°) and a face are unchanged (one rim tends to e as t_c
+falls: e 0.5, 10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms, the coin turning during a
+finite contact; a face restitutes with the linear law's :func:`restitution_of` (ζ, 1), 0.527 at
+e 0.5). ``tests/test_bench_two_rims.py`` and ``tests/test_two_rim_damping.py`` pin these.
+
+*What it moves* (every contact-ending outcome of a coin that spends time on both rims; re-measured
+2026-11-24 as noted where quoted, the rest of these notes measured before it, "before the joint
+damping"): JOINT_RESULTS.
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -476,9 +488,9 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      :data:`SLIP_SPEED` × 0.1, unchanged to the third digit); not the integrator (the frozen
      limit is integrated apart, at rtol 1e-10; the phase at :data:`RTOL`/100 moves a planar
      sliding impact by 4e-6 m/s at t_c 0.125 and 0.031 ms). Two rims touching in one impact
-     were not examined: the floor is accounted for without them (and each rim's ρ uses its
-     own single-contact K, the two contacts' coupled normal mass ignored, for upright rollers
-     too: :func:`_damper`).
+     were not examined: the floor is accounted for without them (each rim's ρ uses its own
+     single-contact K; since 2026-11-24 two pressed rims are damped as one pair,
+     :func:`_pair`, each ρ scaling its rim's row and column of their coupled normal mobility).
   2. **The arc's pivoting friction** (physics of the compliant model, kept): μ r_t F_n about
      the vertical, r_t ≈ r φ*/√3 ∝ sqrt(depth) ∝ t_c^(2/5), so its angular impulse vanishes
      only as t_c^(2/5): the vertical part of the angular-momentum error, 0.118, 0.081, 0.060,
@@ -664,6 +676,10 @@ def rim_contact(
 ):
     """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
 
+    Its damper is sized for this rim alone; when both rims' arcs are in the table the
+    derivative damps them as one pair (:func:`_pair`; both rims' forces as applied:
+    :func:`rims_contact`).
+
     Parameters
     ----------
     sigma : float
@@ -810,10 +826,11 @@ def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
     median 0.0084, 0.0092, 0.0117 m/s from Stronge's law at μ 1.2, 1.5, 2 (largest 0.082 m/s, J_n
     0.95-1.02 of the rigid law's; 2026-11-24), against 0.00056 at μ 0.3.
 
-    Each rim's ρ uses that rim's own single-contact K: when both rims are pressed (an impact
-    across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
-    normal mass is ignored, and the damper is not the one that restitutes such an impact with
-    e (not examined: the rigid law has one contact point)."""
+    Each rim's ρ uses that rim's own single-contact K. When both rims' arcs are in the table
+    (an impact across the edge band, and every coin rolling upright in it) the pair is damped
+    together by :func:`_pair`, from the two centroids' coupled 2×2 normal mobility, each rim's
+    ρ scaling its own row and column (the module notes, "Two rims"); this rim's damper alone
+    then serves only when the pair's damping would pull on a rim."""
     turn, kzz = _normal_row(rc, n, mass, i1, i3)
     if friction > 0.0:
         zeta = zeta / math.sqrt(_sliding_ratio(rc, turn, kzz, v, omega, friction))
