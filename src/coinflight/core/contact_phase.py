@@ -875,7 +875,9 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
     ``lower``) first: each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)), and, when
     both arcs are non-empty (:data:`JOINT_DAMPING`), the pair damped together by :func:`_pair`
     if both its forces are positive; else each rim alone, as before (the module notes, "Two
-    rims"). Inlined into the derivative and into :func:`upright_decided`."""
+    rims"). Inlined into the derivative and into :func:`upright_decided`. Also returned:
+    whether the pair was damped jointly, and its damping matrix (C₁₁, C₁₂, C₂₂) then (NaNs
+    otherwise; :func:`rims_contact`)."""
     f1, q1, r1 = 0.0, (0.0, 0.0, 0.0), 0.0
     f2, q2, r2 = 0.0, (0.0, 0.0, 0.0), 0.0
     for sigma in (lower, -lower):
@@ -903,27 +905,12 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
         else:
             f2, q2, r2 = fn, q, rt
     if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
-        joint, g1, p1, t1, g2, p2, t2, _, _, _ = _pair(
-            lower,
-            z,
-            v,
-            n,
-            omega,
-            s,
-            w,
-            c.radius,
-            c.half_thickness,
-            c.mass,
-            c.i1,
-            c.i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            c.friction,
+        joint, g1, p1, t1, g2, p2, t2, c11, c12, c22 = _pair(
+            lower, z, v, n, omega, s, w, c, stiffness, zeta
         )
         if joint:
-            f1, q1, r1, f2, q2, r2 = g1, p1, t1, g2, p2, t2
-    return f1, q1, r1, f2, q2, r2
+            return g1, p1, t1, g2, p2, t2, True, c11, c12, c22
+    return f1, q1, r1, f2, q2, r2, False, math.nan, math.nan, math.nan
 
 
 @njit(cache=True, inline="always")
@@ -951,29 +938,9 @@ def rims_contact(y, c, stiffness, zeta):
     omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
-    f1, q1, _, f2, q2, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
-    joint, c11, c12, c22 = False, math.nan, math.nan, math.nan
-    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(y[0], n, s, lower, c):
-        joint, _, _, _, _, _, _, c11, c12, c22 = _pair(
-            lower,
-            y[0],
-            v,
-            n,
-            omega,
-            s,
-            w,
-            c.radius,
-            c.half_thickness,
-            c.mass,
-            c.i1,
-            c.i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            c.friction,
-        )
-        if not joint:
-            c11, c12, c22 = math.nan, math.nan, math.nan
+    f1, q1, _, f2, q2, _, joint, c11, c12, c22 = _rims(
+        y[0], v, n, omega, s, w, lower, c, stiffness, zeta
+    )
     return lower, f1, q1, f2, q2, joint, c11, c12, c22
 
 
@@ -1039,7 +1006,7 @@ def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, 
 
 
 @njit(cache=True)
-def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta, corner, friction):
+def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
     notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps
     each rim's own damper, :func:`_rim`) when an arc is empty, a rim's force would not be
@@ -1066,8 +1033,9 @@ def _pair(lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, zeta
     of symmetry (no torque about n or the vertical: L·n and L_z conserved without friction),
     and the power they take, ḋᵀ C ḋ + Σ C_ii var_i(ḋ_s) ≥ 0 (var_i the spread of the even
     rate over arc i), is never negative: the pair still only dissipates."""
-    radius -= corner
-    hh -= corner
+    mass, i1, i3, corner, friction = c.mass, c.i1, c.i3, c.corner_radius, c.friction
+    radius = c.radius - corner
+    hh = c.half_thickness - corner
     zero = (0.0, 0.0, 0.0)
     fail = (False, 0.0, zero, 0.0, 0.0, zero, 0.0, 0.0, 0.0, 0.0)
     one = _pair_rim(
@@ -1152,7 +1120,7 @@ def _derivative(y, out, c, stiffness, zeta):
     # The lower rim first: the same sums, in the same order, for the mirror toss (n → −n).
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
-    f1, q1, r1, f2, q2, r2 = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    f1, q1, r1, f2, q2, r2, _, _, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
     for k in range(2):
         fn, q, rt = (f1, q1, r1) if k == 0 else (f2, q2, r2)
         if fn <= 0.0:
@@ -1406,7 +1374,7 @@ def upright_decided(y, c, stiffness, zeta, budget):
         return False
     s, w = _tangent_basis(n)
     lower = -1.0 if n[2] >= 0.0 else 1.0
-    f1, _, _, f2, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    f1, _, _, f2, _, _, _, _, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
     if f1 <= 0.0 or f2 <= 0.0:  # both rims pressed, as _derivative presses them
         return False
     core = radius - c.corner_radius  # r − a, the rim circle's radius
