@@ -341,9 +341,25 @@ falls: e 0.5, 10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms, the coin tur
 finite contact; a face restitutes with the linear law's :func:`restitution_of` (ζ, 1), 0.527 at
 e 0.5). ``tests/test_bench_two_rims.py`` and ``tests/test_two_rim_damping.py`` pin these.
 
-*What it moves* (every contact-ending outcome of a coin that spends time on both rims; re-measured
-2026-11-24 as noted where quoted, the rest of these notes measured before it, "before the joint
-damping"): JOINT_RESULTS.
+*What it moves* (every contact-ending outcome of a coin that spends time on both rims),
+measured 2026-11-24 against main 7d8c4d1 (each rim alone) with the same commands and tosses; the
+other figures of these notes (the edge rates, the MuJoCo comparisons, the sensitivity and trace
+runs, the speeds but the one below) are from before it. ``python benchmarks/bench_contact.py 600
+--pairs 0.5,0.3 0.5,0.6`` and ``600`` (seed 2026, ℓ 1e-4 m, every handed toss carried to rest;
+07:40-07:48 UTC, load 8.6-3.9): on edge at rest 61 of 429 handed tosses (0.142 ± 0.017)
+against 53 (0.124 ± 0.016) at e 0.5, μ 0.3; 176 of 446 (0.395 ± 0.023) against 178 at μ 0.6;
+74 of 412 (0.180 ± 0.019) against 75 with each toss's own e, μ: within their binomial spread.
+The upright decision would end 60, 175 and 72 of them (52, 176 and 73 before), **every one on
+edge at rest (0 disagreements)**, and saves 52.3 %, 84.9 % and 66.3 % of the steps (51.1 %,
+84.4 %, 66.0 %); a handed toss takes a mean 1,869, 6,777 and 2,697 steps (1,770, 6,818, 2,680).
+UPRIGHT_CORNER. ``python benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR
+main's src; 07:48-07:50 UTC, load 3.5-3.3, a test run beside it): landings carried to rest per
+CPU second in one thread **0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ
+1,129 against 1,162), SECOND_RUN; faces differing on 9 and 1 of 300, statuses on none; decided
+upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings 0.100 against 0.090 (e 0.5,
+μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1), 0.143 against
+0.147 (each toss its own e, μ; main's from ``bench_bounce.py --contact-rates 300`` in its
+tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -875,9 +891,16 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
     ``lower``) first: each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)), and, when
     both arcs are non-empty (:data:`JOINT_DAMPING`), the pair damped together by :func:`_pair`
     if both its forces are positive; else each rim alone, as before (the module notes, "Two
-    rims"). Inlined into the derivative and into :func:`upright_decided`. Also returned:
+    rims"). The pair first, so that a pair damped jointly does not pay for its rims' own
+    dampers too. Inlined into the derivative and into :func:`upright_decided`. Also returned:
     whether the pair was damped jointly, and its damping matrix (C₁₁, C₁₂, C₂₂) then (NaNs
     otherwise; :func:`rims_contact`)."""
+    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
+        joint, g1, p1, t1, g2, p2, t2, c11, c12, c22 = _pair(
+            lower, z, v, n, omega, s, w, c, stiffness, zeta
+        )
+        if joint:
+            return g1, p1, t1, g2, p2, t2, True, c11, c12, c22
     f1, q1, r1 = 0.0, (0.0, 0.0, 0.0), 0.0
     f2, q2, r2 = 0.0, (0.0, 0.0, 0.0), 0.0
     for sigma in (lower, -lower):
@@ -904,12 +927,6 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
             f1, q1, r1 = fn, q, rt
         else:
             f2, q2, r2 = fn, q, rt
-    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
-        joint, g1, p1, t1, g2, p2, t2, c11, c12, c22 = _pair(
-            lower, z, v, n, omega, s, w, c, stiffness, zeta
-        )
-        if joint:
-            return g1, p1, t1, g2, p2, t2, True, c11, c12, c22
     return f1, q1, r1, f2, q2, r2, False, math.nan, math.nan, math.nan
 
 
