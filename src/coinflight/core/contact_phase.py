@@ -341,25 +341,29 @@ falls: e 0.5, 10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms, the coin tur
 finite contact; a face restitutes with the linear law's :func:`restitution_of` (ζ, 1), 0.527 at
 e 0.5). ``tests/test_bench_two_rims.py`` and ``tests/test_two_rim_damping.py`` pin these.
 
-*What it moves* (every contact-ending outcome of a coin that spends time on both rims),
-measured 2026-11-24 against main 7d8c4d1 (each rim alone) with the same commands and tosses; the
-other figures of these notes (the edge rates, the MuJoCo comparisons, the sensitivity and trace
-runs, the speeds but the one below) are from before it. ``python benchmarks/bench_contact.py 600
+*What it moves* (every contact-ending outcome of a coin that spends time on both rims), measured
+2026-11-24 against main 7d8c4d1 (each rim alone) with the same commands and tosses; the other
+figures of these notes (the edge rates, the MuJoCo comparisons, the sensitivity and trace runs,
+the speeds but the one below) are from before it. ``python benchmarks/bench_contact.py 600
 --pairs 0.5,0.3 0.5,0.6`` and ``600`` (seed 2026, ℓ 1e-4 m, every handed toss carried to rest;
-07:40-07:48 UTC, load 8.6-3.9): on edge at rest 61 of 429 handed tosses (0.142 ± 0.017)
-against 53 (0.124 ± 0.016) at e 0.5, μ 0.3; 176 of 446 (0.395 ± 0.023) against 178 at μ 0.6;
-74 of 412 (0.180 ± 0.019) against 75 with each toss's own e, μ: within their binomial spread.
-The upright decision would end 60, 175 and 72 of them (52, 176 and 73 before), **every one on
-edge at rest (0 disagreements)**, and saves 52.3 %, 84.9 % and 66.3 % of the steps (51.1 %,
-84.4 %, 66.0 %); a handed toss takes a mean 1,869, 6,777 and 2,697 steps (1,770, 6,818, 2,680).
-UPRIGHT_CORNER. ``python benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR
-main's src; 07:48-07:50 UTC, load 3.5-3.3, a test run beside it): landings carried to rest per
-CPU second in one thread **0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ
-1,129 against 1,162), SECOND_RUN; faces differing on 9 and 1 of 300, statuses on none; decided
-upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings 0.100 against 0.090 (e 0.5,
-μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1), 0.143 against
-0.147 (each toss its own e, μ; main's from ``bench_bounce.py --contact-rates 300`` in its
-tree).
+07:40-07:48 UTC, load 8.6-3.9): on edge at rest 61 of 429 handed tosses (0.142 ± 0.017) against
+53 (0.124 ± 0.016) at e 0.5, μ 0.3; 176 of 446 (0.395 ± 0.023) against 178 at μ 0.6; 74 of 412
+(0.180 ± 0.019) against 75 with each toss's own e, μ: within their binomial spread. The upright
+decision would end 60, 175 and 72 of them (52, 176 and 73 before), **every one on edge at rest
+(0 disagreements)**, and saves 52.3 %, 84.9 % and 66.3 % of the steps (51.1 %, 84.4 %, 66.0 %);
+a handed toss takes a mean 1,869, 6,777 and 2,697 steps (1,770, 6,818, 2,680). With a 0.5 mm
+corner (``--corner 5e-4``, the pairs): 43 of 417 decided (45 on edge at rest) and 170 of 425
+(172), 0 disagreements: 520 decisions in these five runs, none wrong. ``python
+benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR main's src; 07:48-07:50 UTC,
+load 3.5-3.3, a test run beside it): landings carried to rest per CPU second in one thread
+**0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ 1,129 against 1,162), in
+two more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3) and 0.86× and 0.90× (07:54-07:56
+UTC, load 6.5-5.4, with :func:`_rims` trying the pair first, the code now): noisy, a median
+0.86× and 0.90×, the phase's steps more (above) and a pair's derivative a little dearer (its 2 ×
+2 algebra); faces differing on 9 and 1 of 300, statuses on none; decided upright 30 and 43 (27
+and 43 before); P(edge) of all 300 landings 0.100 against 0.090 (e 0.5, μ 0.3), 0.200 against
+0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1), 0.143 against 0.147 (each toss its own
+e, μ; main's from ``bench_bounce.py --contact-rates 300`` in its tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -451,6 +455,9 @@ Beyond these settings (the same tosses, the decision probed as above, 21:15-21:1
 248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
 longer) 56 and 178 (as re-measured, ``bench_contact.py``'s notes), each time 0 disagreements;
 91 % and 98 % of the steps saved at 1e-5 m.
+Re-measured with the pair's joint damping (2026-11-24, "Two rims" above: 520 decisions in five
+runs of ``bench_contact.py 600``, 0 disagreements); the figures of this paragraph are from
+before it.
 The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
 margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
 every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,
