@@ -981,7 +981,9 @@ def joint_damping(w11, w12, w22, k1, k2, zeta):
     In closed form, no matrix function evaluated: the square root of a 2 × 2 positive matrix,
     sqrt(A) = (A + sqrt(det A) I) / sqrt(tr A + 2 sqrt(det A)) (Cayley–Hamilton; Levinger,
     Math. Mag. 53:222, 1980), gives for det A = det B = 1 the geometric mean
-    A # B = (A + B) / sqrt(det(A + B)) (Bhatia 2007, Prop. 4.1.12), and by its homogeneity
+    A # B = (A + B) / sqrt(det(A + B)) (the 2 × 2 case in Bhatia 2007, ch. 4: the positive
+    solution of G A⁻¹ G = B, which ``tests/test_two_rim_damping.py`` checks against the
+    definition with SciPy's sqrtm), and by its homogeneity
     M # K = sqrt(αβ) (M/α + K/β) / sqrt(det(M/α + K/β)), α = sqrt(det M) = 1/sqrt(det W),
     β = sqrt(k₁ k₂), M/α = adj(W)/sqrt(det W). det(M/α + K/β) ≥ 4 (two unit-determinant
     positive matrices), so nothing cancels but det W, which is the rims' separation: ok is
