@@ -1002,7 +1002,9 @@ def joint_damping(w11, w12, w22, k1, k2, zeta):
 
 
 @njit(cache=True, inline="always")
-def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction):
+def _pair_rim(
+    sigma, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
+):
     """What :func:`_pair` needs of rim σ (``radius``, ``hh`` those of the core cylinder):
     (K_t = 2 φ κ, elastic force, its moment ∫ κ d cos φ, ∫ ḋ_s, ∫ ḋ_s cos φ, 2 φ, 2 sin φ, ρ,
     K_zz, I⁻¹(rc × Z), rc, r_t), from :func:`_rim`'s arc sums; K_t 0 for an empty arc."""
@@ -1015,8 +1017,6 @@ def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, 
     i0 = 2.0 * phi
     ic = 2.0 * sp
     icc = phi + sp * cp
-    wn = cross(omega, n)
-    ww = cross(omega, w)
     a0 = -(v[2] + sigma * hh * wn[2])
     a1 = -radius * ww[2]
     rc = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
@@ -1031,7 +1031,7 @@ def _pair_rim(sigma, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, 
     return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc, pivot
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
     notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps
@@ -1064,11 +1064,13 @@ def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     hh = c.half_thickness - corner
     zero = (0.0, 0.0, 0.0)
     fail = (False, 0.0, zero, 0.0, 0.0, zero, 0.0, 0.0, 0.0, 0.0)
+    wn = cross(omega, n)
+    ww = cross(omega, w)
     one = _pair_rim(
-        lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction
+        lower, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
     )
     two = _pair_rim(
-        -lower, z, v, n, omega, s, w, radius, hh, mass, i1, i3, stiffness, corner, friction
+        -lower, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
     )
     if one[0] <= 0.0 or two[0] <= 0.0:
         return fail
