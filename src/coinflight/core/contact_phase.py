@@ -908,6 +908,7 @@ def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
         )
         if joint:
             return g1, p1, t1, g2, p2, t2, True, c11, c12, c22
+        return g1, p1, t1, g2, p2, t2, False, math.nan, math.nan, math.nan
     f1, q1, r1 = 0.0, (0.0, 0.0, 0.0), 0.0
     f2, q2, r2 = 0.0, (0.0, 0.0, 0.0), 0.0
     for sigma in (lower, -lower):
@@ -1007,12 +1008,13 @@ def _pair_rim(
 ):
     """What :func:`_pair` needs of rim σ (``radius``, ``hh`` those of the core cylinder):
     (K_t = 2 φ κ, elastic force, its moment ∫ κ d cos φ, ∫ ḋ_s, ∫ ḋ_s cos φ, 2 φ, 2 sin φ, ρ,
-    K_zz, I⁻¹(rc × Z), rc, r_t), from :func:`_rim`'s arc sums; K_t 0 for an empty arc."""
+    K_zz, I⁻¹(rc × Z), rc, r_t, φ*), from :func:`_rim`'s arc sums, in its operations; K_t 0
+    for an empty arc."""
     zero = (0.0, 0.0, 0.0)
     a = corner - z - sigma * hh * n[2]
     b = radius * s
     if a + b <= 0.0:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero, 0.0, 1.0
     phi, sp, cp = _arc(a, b)
     i0 = 2.0 * phi
     ic = 2.0 * sp
@@ -1028,10 +1030,33 @@ def _pair_rim(
     turning = a0 * ic + a1 * icc
     ratio = sp / phi
     pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
-    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc, pivot
+    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc, pivot, phi
 
 
 @njit(cache=True, inline="always")
+def _alone(sigma, rim, n, w, radius, hh, corner, friction, zeta):
+    """(F_n, q, r_t) of rim σ damped alone from :func:`_pair_rim`'s sums ``rim``: :func:`_rim`'s
+    force, in its operations (the damper ζ/sqrt(ρ) sqrt(K_t m_eff)/φ*, m_eff = 1/K_zz,
+    :func:`_damper`), so the same to the bit. For :func:`_pair`'s fall-back, which so does not
+    compute the rims' arcs twice."""
+    k, elastic, moment, rate, turning, _, _, rho, kzz, _, _, pivot, phi = rim
+    if friction > 0.0:
+        zeta = zeta / math.sqrt(rho)
+    gamma = zeta * math.sqrt(k * (1.0 / kzz)) / phi
+    force = elastic + gamma * rate
+    if force <= 0.0:
+        return 0.0, (0.0, 0.0, 0.0), 0.0
+    moment += gamma * turning
+    kq = radius * moment / force
+    q = (
+        sigma * hh * n[0] + kq * w[0],
+        sigma * hh * n[1] + kq * w[1],
+        sigma * hh * n[2] + kq * w[2] - corner,
+    )
+    return force, q, pivot
+
+
+@njit(cache=True)
 def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
     notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps
@@ -1074,20 +1099,21 @@ def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     )
     if one[0] <= 0.0 or two[0] <= 0.0:
         return fail
-    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _, r1 = one
-    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2, r2 = two
+    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _, r1, _ = one
+    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2, r2, _ = two
     w12 = (1.0 / mass + dot((c2[1], -c2[0], 0.0), t1)) * math.sqrt(rho1 * rho2)
     ok, c11, c12, c22 = joint_damping(rho1 * kz1, w12, rho2 * kz2, k1, k2, zeta)
-    if not ok:
-        return fail
     rate1 = d1 / i01  # the arcs' mean penetration rates
     rate2 = d2 / i02
     g1 = c11 / i01
     g2 = c22 / i02
     f1 = el1 + g1 * d1 + c12 * rate2
     f2 = el2 + g2 * d2 + c12 * rate1
-    if not (f1 > 0.0 and f2 > 0.0):
-        return False, 0.0, zero, 0.0, 0.0, zero, 0.0, c11, c12, c22
+    if not (ok and f1 > 0.0 and f2 > 0.0):
+        # each rim alone, from the same sums (to the bit _rim's: the module notes, "Two rims")
+        a1, b1, s1 = _alone(lower, one, n, w, radius, hh, corner, friction, zeta)
+        a2, b2, s2 = _alone(-lower, two, n, w, radius, hh, corner, friction, zeta)
+        return False, a1, b1, s1, a2, b2, s2, c11, c12, c22
     m1 = mo1 + g1 * e1 + c12 * rate2 * ic1 / i01
     m2 = mo2 + g2 * e2 + c12 * rate1 * ic2 / i02
     kq1 = radius * m1 / f1
