@@ -357,13 +357,18 @@ corner (``--corner 5e-4``, the pairs): 43 of 417 decided (45 on edge at rest) an
 benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR main's src; 07:48-07:50 UTC,
 load 3.5-3.3, a test run beside it): landings carried to rest per CPU second in one thread
 **0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ 1,129 against 1,162), in
-two more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3) and 0.86× and 0.90× (07:54-07:56
-UTC, load 6.5-5.4, with :func:`_rims` trying the pair first, the code now): noisy, a median
-0.86× and 0.90×, the phase's steps more (above) and a pair's derivative a little dearer (its 2 ×
-2 algebra); faces differing on 9 and 1 of 300, statuses on none; decided upright 30 and 43 (27
-and 43 before); P(edge) of all 300 landings 0.100 against 0.090 (e 0.5, μ 0.3), 0.200 against
-0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1), 0.143 against 0.147 (each toss its own
-e, μ; main's from ``bench_bounce.py --contact-rates 300`` in its tree).
+four more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3), 0.86× and 0.90× (07:54 UTC, load
+6.5-5.4), 0.84× and 0.90× (07:56 UTC, load 5.0-6.8) and, the code now (:func:`_pair` not
+inlined, its fall-back from its own sums), 0.85× and 0.92× (08:05 UTC, load 4.1-4.4): noisy,
+**about 0.85× and 0.9×**, from the phase's steps (more at μ 0.3, above) and a derivative a
+little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random states of
+``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against main's
+141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244; settle's
+first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300, statuses on
+none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings 0.100 against
+0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1),
+0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py --contact-rates 300``
+in its tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -895,11 +900,10 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
 @njit(cache=True, inline="always")
 def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
     """Both rims' (F_n, q, r_t) as :func:`_derivative` applies them, the lower rim (σ =
-    ``lower``) first: each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)), and, when
-    both arcs are non-empty (:data:`JOINT_DAMPING`), the pair damped together by :func:`_pair`
-    if both its forces are positive; else each rim alone, as before (the module notes, "Two
-    rims"). The pair first, so that a pair damped jointly does not pay for its rims' own
-    dampers too. Inlined into the derivative and into :func:`upright_decided`. Also returned:
+    ``lower``) first: when both arcs are non-empty (:data:`JOINT_DAMPING`), :func:`_pair`'s,
+    the pair damped together if both its forces are positive, else each rim alone (the module
+    notes, "Two rims"); otherwise each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)),
+    as before. Inlined into the derivative and into :func:`upright_decided`. Also returned:
     whether the pair was damped jointly, and its damping matrix (C₁₁, C₁₂, C₂₂) then (NaNs
     otherwise; :func:`rims_contact`)."""
     if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
@@ -1059,12 +1063,13 @@ def _alone(sigma, rim, n, w, radius, hh, corner, friction, zeta):
 @njit(cache=True)
 def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
     """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
-    notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False (the caller keeps
-    each rim's own damper, :func:`_rim`) when an arc is empty, a rim's force would not be
-    positive or the pair is degenerate (:func:`joint_damping`). The pivot radii r_t are
-    :func:`_rim`'s, computed here (a rim whose own damper would release it may still press in
-    the pair); ``benchmarks/bench_rim_impacts.py``'s ``--drill-factor``, which wraps
-    :func:`_rim`, so does not reach a pair (its impacts, tilted 9-80°, touch with one rim).
+    notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False when a rim's
+    joint force would not be positive or the pair is degenerate (:func:`joint_damping`), and
+    then the forces are each rim's alone (:func:`_alone`: :func:`_rim`'s to the bit, from the
+    same sums; zeros when an arc is empty). The pivot radii r_t are :func:`_rim`'s, computed
+    here; ``benchmarks/bench_rim_impacts.py``'s ``--drill-factor``, which wraps :func:`_rim`,
+    so does not reach a coin with both arcs in the table (its impacts, tilted 9-80°, touch
+    with one rim).
 
     Each rim's arc, its sums and its centroid rc_i are :func:`_rim`'s; the pair's normal
     mobility is W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z) (the normal block of Stronge's collision
