@@ -353,22 +353,26 @@ decision would end 60, 175 and 72 of them (52, 176 and 73 before), **every one o
 (0 disagreements)**, and saves 52.3 %, 84.9 % and 66.3 % of the steps (51.1 %, 84.4 %, 66.0 %);
 a handed toss takes a mean 1,869, 6,777 and 2,697 steps (1,770, 6,818, 2,680). With a 0.5 mm
 corner (``--corner 5e-4``, the pairs): 43 of 417 decided (45 on edge at rest) and 170 of 425
-(172), 0 disagreements: 520 decisions in these five runs, none wrong. ``python
-benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR main's src; 07:48-07:50 UTC,
-load 3.5-3.3, a test run beside it): landings carried to rest per CPU second in one thread
-**0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ 1,129 against 1,162), in
-four more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3), 0.86× and 0.90× (07:54 UTC, load
-6.5-5.4), 0.84× and 0.90× (07:56 UTC, load 5.0-6.8) and, the code now (:func:`_pair` not
-inlined, its fall-back from its own sums), 0.85× and 0.92× (08:05 UTC, load 4.1-4.4): noisy,
-**about 0.85× and 0.9×**, from the phase's steps (more at μ 0.3, above) and a derivative a
-little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random states of
-``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against main's
-141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244; settle's
-first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300, statuses on
-none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings 0.100 against
-0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1),
-0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py --contact-rates 300``
-in its tree).
+(172), 0 disagreements: 520 decisions in these five runs, none wrong. The same with 1,500 tosses
+(08:10 UTC, load 4.0-3.5; ``bench_contact.py 1500 --pairs 0.5,0.3 0.5,0.6`` and ``1500``): on
+edge at rest 132 of 1,061 (0.124 ± 0.010) against 130, 429 of 1,028 (0.417 ± 0.015) against 421,
+206 of 1,030 (0.200 ± 0.012) against 204; decided 126, 424 and 201 (126, 417, 200 before), 0
+disagreements; mean steps 1,767, 7,326, 3,018 (1,768, 7,159, 2,981). So 1,271 decisions in eight
+runs, none wrong. ``python benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR
+main's src; 07:48-07:50 UTC, load 3.5-3.3, a test run beside it): landings carried to rest per
+CPU second in one thread **0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ
+1,129 against 1,162), in four more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3), 0.86×
+and 0.90× (07:54 UTC, load 6.5-5.4), 0.84× and 0.90× (07:56 UTC, load 5.0-6.8) and, the code now
+(:func:`_pair` not inlined, its fall-back from its own sums), 0.85× and 0.92× (08:05 UTC, load
+4.1-4.4): noisy, **about 0.85× and 0.9×**, from the phase's steps (more at μ 0.3, above) and a
+derivative a little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random
+states of ``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against
+main's 141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244;
+settle's first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300,
+statuses on none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings
+0.100 against 0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e
+0.8, μ 0.1), 0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py
+--contact-rates 300`` in its tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -460,9 +464,9 @@ Beyond these settings (the same tosses, the decision probed as above, 21:15-21:1
 248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
 longer) 56 and 178 (as re-measured, ``bench_contact.py``'s notes), each time 0 disagreements;
 91 % and 98 % of the steps saved at 1e-5 m.
-Re-measured with the pair's joint damping (2026-11-24, "Two rims" above: 520 decisions in five
-runs of ``bench_contact.py 600``, 0 disagreements); the figures of this paragraph are from
-before it.
+Re-measured with the pair's joint damping (2026-11-24, "Two rims" above: 1,271 decisions in
+eight runs of ``bench_contact.py`` 600 and 1,500, 0 disagreements); the figures of this
+paragraph are from before it.
 The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
 margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
 every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,
