@@ -140,12 +140,58 @@ def mode_damping(c, mode: str) -> float:  # type: ignore[no-untyped-def]
 
 def linearised_modes(c) -> tuple[float, float]:  # type: ignore[no-untyped-def]
     """(bounce, rocking) damping ratios of the two-rim pair, linearised, as the phase damps it:
-    both ζ with the joint damping (:data:`coinflight.core.contact_phase.JOINT_DAMPING`), else
-    :func:`per_rim_modes`."""
-    if cp.JOINT_DAMPING:
-        zeta = cp.damping_of(c)
-        return zeta, zeta
-    return per_rim_modes(c)
+    the modes of M ẍ + C ẋ + K x = 0 in the two rims' penetrations x at an upright coin's rest
+    (:func:`modal_damping`), C the phase's own (:func:`coinflight.core.contact_phase.rims_contact`
+    there, when it damps the pair jointly; else each rim's own damper 2 ζ sqrt(k_i/W_ii), the
+    sizing of :func:`per_rim_modes`), K the phase's own (its elastic forces' slope in the depth,
+    central differences of 1 nm), M = W⁻¹ from the two arcs' centroids (:func:`rest_mobility`)."""
+    stiffness, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    depth = cp.static_depth(c, stiffness)
+    y = np.array([c.radius - depth, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    _, _, _, _, _, joint, c11, c12, c22 = cp.rims_contact(y, c, stiffness, zeta)
+    h = 1e-9
+    below, above = y.copy(), y.copy()
+    below[0] -= h
+    above[0] += h
+    low, high = cp.rims_contact(below, c, stiffness, 0.0), cp.rims_contact(above, c, stiffness, 0.0)
+    k = np.array([low[1] - high[1], low[3] - high[3]]) / (2.0 * h)
+    w = rest_mobility(c, depth)
+    if joint:
+        damping = np.array([[c11, c12], [c12, c22]])
+    else:
+        damping = np.diag(2.0 * zeta * np.sqrt(k / np.diag(w)))
+    return modal_damping(w, damping, k)
+
+
+def rest_mobility(c, depth: float) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """The normal mobility W_ij = 1/m + (r_i × Z)·I⁻¹(r_j × Z) (1/kg; Stronge 2000, eq 5.7) of
+    the two arcs' centroids r_σ = σ (h/2 − a) n − (R′ sin φ*/φ* + a) Z of an upright coin
+    (n = x̂) pressed ``depth`` m into the table, its arcs' half-angle φ* = acos(1 − depth/R′),
+    R′ = R − a (the phase's "Two rims" notes), I⁻¹ NumPy's inverse of the inertia tensor."""
+    core, hh = c.radius - c.corner_radius, c.half_thickness - c.corner_radius
+    phi = math.acos(1.0 - depth / core)
+    n, z = np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
+    inverse = np.linalg.inv(c.i1 * (np.eye(3) - np.outer(n, n)) + c.i3 * np.outer(n, n))
+    arms = [
+        np.cross(s * hh * n - (core * math.sin(phi) / phi + c.corner_radius) * z, z)
+        for s in (-1.0, 1.0)
+    ]
+    return np.array([[1.0 / c.mass + a @ inverse @ b for b in arms] for a in arms])
+
+
+def modal_damping(w: np.ndarray, damping: np.ndarray, k: np.ndarray) -> tuple[float, float]:
+    """(bounce, rocking) damping ratios −Re λ/|λ| of M ẍ + C ẋ + K x = 0, M = W⁻¹, K = diag(k):
+    the eigenvalues λ of its first-order form [[0, I], [−W K, −W C]] (the generalised
+    eigenproblem det(λ² M + λ C + K) = 0), each mode named by its eigenvector's penetrations,
+    the rims in phase (bounce) or in antiphase (rocking)."""
+    system = np.block([[np.zeros((2, 2)), np.eye(2)], [-w @ np.diag(k), -w @ damping]])
+    values, vectors = np.linalg.eig(system)
+    out = {}
+    for value, vector in zip(values, vectors.T, strict=True):
+        x = vector[:2]
+        name = "bounce" if abs(x[0] + x[1]) > abs(x[0] - x[1]) else "rocking"
+        out[name] = float(-value.real / abs(value))
+    return out["bounce"], out["rocking"]
 
 
 def per_rim_modes(c) -> tuple[float, float]:  # type: ignore[no-untyped-def]
