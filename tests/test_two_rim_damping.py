@@ -142,7 +142,7 @@ def test_the_pairs_damping_matrix_is_its_definition_symmetric_and_positive(args)
     assert c11 > 0.0 and c22 > 0.0 and c11 * c22 - c12 * c12 > 0.0  # symmetric positive
     # The phase's own pair on this state (its arcs, ρ and mobility): the same matrix, when
     # it damps the pair jointly (both joint forces positive).
-    lower, f1, _, f2, _, joint, d11, d12, d22 = cp.rims_contact(y, c, stiff, zeta)
+    lower, f1, q1, f2, q2, joint, d11, d12, d22 = cp.rims_contact(y, c, stiff, zeta)
     rims, expected_joint = _two_rims.rims(y, c, zeta)
     assert joint == expected_joint
     if joint:
@@ -150,9 +150,11 @@ def test_the_pairs_damping_matrix_is_its_definition_symmetric_and_positive(args)
         if lower > 0:  # rim 1 the heads rim: the reference's order reversed
             mine = mine[::-1, ::-1]
         np.testing.assert_allclose(mine, got, rtol=1e-12)
-        forces = (f2, f1) if lower > 0 else (f1, f2)
-        for force, (ref, _, _) in zip(forces, rims, strict=True):
+        forces = ((f2, q2), (f1, q1)) if lower > 0 else ((f1, q1), (f2, q2))
+        for (force, q), (ref, ref_q, _) in zip(forces, rims, strict=True):
             assert force == pytest.approx(ref, rel=1e-9, abs=1e-12 * c.mass * c.g)
+            # the centres of pressure (each coupling's moment about its arc's centroid)
+            np.testing.assert_allclose(q, ref_q, rtol=0.0, atol=1e-9 * c.radius)
 
 
 def test_the_pair_becomes_the_single_rim_damper_as_an_arc_vanishes():
