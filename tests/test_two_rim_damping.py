@@ -9,8 +9,9 @@ sqrtm, tests/_two_rims.py), its defining equation C W C = 4 ζ² K, symmetric an
 random two-rim states; the single rim's damper as an arc vanishes; the derivative with at most
 one arc identical to the bit to the per-rim derivative (a reference of it kept here, as it was
 at main 7d8c4d1); frictionless torques in the arcs' planes of symmetry and the energy's rate
-never positive on joint states; and a mutant (C built from W without its coupling) failing the
-drop."""
+never positive on two-arc states, damped jointly or each rim alone; the energy never growing
+across the switch between the two (a discontinuity of the forces); and a mutant (C built
+from W without its coupling) failing the drop."""
 
 from __future__ import annotations
 
