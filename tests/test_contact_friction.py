@@ -79,10 +79,10 @@ def _forces(y, c):
     n, lm = tuple(y[4:7]), tuple(y[7:10])
     omega = angular_velocity(lm, n, c.i1, c.i3)
     rims = []
-    lower, f1, q1, f2, q2, joint, *_ = cp.rims_contact(y, c, stiff, zeta)
-    if joint:  # two rims damped as one pair (cp._pair): the derivative's own normal forces
-        pair = [(f1, np.array(q1), None), (f2, np.array(q2), None)]
-        return force, out[7:10].copy(), pair[::-1] if lower > 0 else pair, np.array(omega)
+    pair, joint = _two_rims.rims(y, c, zeta)
+    if joint:  # two rims damped as one pair: their normal forces computed apart (_two_rims)
+        rims = [(fn, np.array(q), rt) for fn, q, rt in pair if fn > 0.0]
+        return force, out[7:10].copy(), rims, np.array(omega)
     for sigma in (-1.0, 1.0):
         # each rim's damper for the normal mass friction leaves, computed apart
         damping = _expected_damping(sigma, y, c, zeta)
