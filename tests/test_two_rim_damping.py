@@ -179,7 +179,9 @@ def test_the_pair_becomes_the_single_rim_damper_as_an_arc_vanishes():
 def _per_rim_derivative(y, c, stiffness, zeta):
     """The contact phase's dy/dt with each rim damped alone: the derivative as it was at main
     7d8c4d1 (before the joint damping), its assembly kept here in the same operations and order
-    (so to the bit), each rim's force from cp.rim_contact (the kernel _rim, unchanged)."""
+    (so to the bit), each rim's force from cp.rim_contact (the kernel _rim, unchanged). It
+    duplicates _derivative's force and torque assembly (``duplicates`` D1) deliberately: a
+    frozen copy of the code before the change, which the phase's own must keep matching."""
     mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
