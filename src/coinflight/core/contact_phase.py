@@ -324,7 +324,8 @@ the rim leaving the pair goes from 1.2e-5 N to 0.0101 N and the other from 0.049
 jumps a median 19 %, up to 100 %); the stepper crosses it in 1-2 steps of 10 μs and the energy
 never grows (``test_stepping_across_the_fall_back_the_energy_never_grows``). Real tosses cross
 it often: of bench_contact's handed tosses (seed 2026, e 0.5, sampled every 0.1 ms up to 3 s;
-2026-11-24 08:53 UTC), 80 of the 88 that reach both arcs switch at μ 0.3 (385 switches) and 128
+``python benchmarks/bench_two_rims.py --switches 300 --pairs 0.5,0.3 0.5,0.6``, 2026-11-24
+09:00 UTC), 80 of the 88 that reach both arcs switch at μ 0.3 (385 switches) and 128
 of 133 at μ 0.6 (588), though 98-99 % of their time on both arcs is damped jointly (64.4 of 65.9
 s, 220.7 of 223.0 s). With at most one arc in the table the derivative is the one before to
 the bit (15,480 random states of 20,000 against main 7d8c4d1, and
