@@ -321,7 +321,8 @@ fall-back dissipates too. The switch is a discontinuity of the forces (the total
 force nearly continuous, its split between the rims not): on an upright nickel rocked at 4 rad/s
 the rim leaving the pair goes from 1.2e-5 N to 0.0101 N and the other from 0.0494 to 0.0389 N
 (on random two-arc states near the switch, v ~ 0.05 m/s, ω ~ 20 rad/s, the other rim's force
-jumps a median 19 %, up to 100 %); the stepper crosses it in 1-2 steps of 10 μs and the energy
+jumps a median 19 %, up to 100 %: a reviewer's scratch measurement on 40,000 states, not
+re-run here); the stepper crosses it in 1-2 steps of 10 μs and the energy
 never grows (``test_stepping_across_the_fall_back_the_energy_never_grows``). Real tosses cross
 it often: of bench_contact's handed tosses (seed 2026, e 0.5, sampled every 0.1 ms up to 3 s;
 ``python benchmarks/bench_two_rims.py --switches 300 --pairs 0.5,0.3 0.5,0.6``, 2026-11-24
