@@ -33,7 +33,9 @@ them decided), 0 disagreements; ``1500 --pairs 0.5,0.3 0.5,0.6 --resistance 1e-5
 and 195 s wall; at μ 0.6 4 of the 1,028 handed tosses unsettled, none of them decided), and 0
 in the 234 of the 600-toss runs (961 in all). The "0 in 737" at the default
 1e-4 m was counted the old way and is not re-run here; there the rollers stop within ~15 s, far
-inside MAX_STEPS.
+inside MAX_STEPS. All these counts were measured before the joint damping of two pressed rims
+(2026-11-24); with it, ``1500 [--pairs 0.5,0.3 0.5,0.6]`` at 1e-4 m decides 126, 424, 201 with
+0 disagreements (the contact_phase notes).
 """
 
 from __future__ import annotations

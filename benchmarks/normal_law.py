@@ -35,10 +35,13 @@ digits at d0 = 0.1, 1 and 10 μm, and F = −∂U_p/∂z on a rim tilted 0.7 rad
 derivative, and the copy's geometry against ``_rim``'s). A nickel
 dropped upright on both rims (frictionless, t_c 1 ms) stays in contact 0.76 ms at 0.1 m/s and
 0.74 ms at 1 m/s with p = 1 (rebound 0.38, 0.40 of its speed), 5.7 and 3.0 ms with p = 3/2
-(0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebound
-two rims at ~0.4 rather than e = 0.5 is the phase's own: each rim's damper is sized for the
-effective mass at its own arc, as if it carried the coin alone, so two rims pressed together
-are damped √2 times harder. Not changed here.)
+(0.18, 0.39); MuJoCo's calibrated contact 0.8 ms at both (0.50, 0.52). (That both laws rebounded
+two rims at ~0.4 rather than e = 0.5 was the phase's own, measured before 2026-11-24: each rim's
+damper was sized for the effective mass at its own arc, as if it carried the coin alone, so two
+rims pressed together were damped √2 times harder. The phase now damps a pressed pair jointly,
+:data:`coinflight.core.contact_phase.JOINT_DAMPING`, sized for the default law's tangent
+stiffness 2 φ κ: :func:`use_exponent` switches it off for p = 1, whose rims are so damped each
+alone, as before.)
 """
 
 from __future__ import annotations
@@ -102,6 +105,9 @@ def use_exponent(exponent: float) -> None:
             "imported or compiled"
         )
     cp._rim = rim_law(exponent)
+    # The pair's joint damping (contact_phase._pair) sizes two pressed rims with the default
+    # law's tangent stiffness 2 φ κ and elastic sums: with another law each rim is damped alone.
+    cp.JOINT_DAMPING = False
 
 
 def _fresh(module) -> bool:  # type: ignore[no-untyped-def]

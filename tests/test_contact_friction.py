@@ -27,6 +27,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import _two_rims
 from _kernels import coin_contact, touching_state
 from coinflight import Coin
 from coinflight.core import contact_phase as cp
@@ -80,6 +81,10 @@ def _forces(y, c):
     n, lm = tuple(y[4:7]), tuple(y[7:10])
     omega = angular_velocity(lm, n, c.i1, c.i3)
     rims = []
+    pair, joint = _two_rims.rims(y, c, zeta)
+    if joint:  # two rims damped as one pair: their normal forces computed apart (_two_rims)
+        rims = [(fn, np.array(q), rt) for fn, q, rt in pair if fn > 0.0]
+        return force, out[7:10].copy(), rims, np.array(omega)
     for sigma in (-1.0, 1.0):
         # each rim's damper for the normal mass friction leaves, computed apart
         damping = _expected_damping(sigma, y, c, zeta)
@@ -320,7 +325,9 @@ def _reference_derivative(y, c):
     """dy/dt of the contact phase assembled apart from cp._derivative (its module notes'
     forces): each rim's normal force, centre of pressure and pivot radius from _reference_rim
     (m_eff from impact.collision_matrix, not from the code under test) with the damper sized by
-    _expected_damping (the collision matrix at the arc's centroid, Stronge 2000 eq 5.7);
+    _expected_damping (the collision matrix at the arc's centroid, Stronge 2000 eq 5.7), or,
+    when both arcs press and the pair's joint damping keeps both forces positive, from
+    _two_rims.rims (the pair's damping matrix by its definition, SciPy's sqrtm);
     regularised Coulomb
     friction −μ F_n u_t / sqrt(u_t² + v_ε²) at q; the pivoting torque −(μ r_t + ℓ_p) F_n
     ω_z / sqrt(ω_z² + (v_ε/r)²); the rolling torque −ℓ_r F_n ω_h / sqrt(ω_h² + (v_ε/r)²);
@@ -331,8 +338,11 @@ def _reference_derivative(y, c):
     eps, spin_eps = cp.SLIP_SPEED, cp.SLIP_SPEED / c.radius
     force = np.array([0.0, 0.0, -c.mass * c.g])
     torque = np.zeros(3)
-    for sigma in (-1.0, 1.0):
-        fn, q, rt = _reference_rim(sigma, y, c, _expected_damping(sigma, y, c, zeta))
+    pair, joint = _two_rims.rims(y, c, zeta)
+    for k, sigma in enumerate((-1.0, 1.0)):
+        fn, q, rt = (
+            pair[k] if joint else _reference_rim(sigma, y, c, _expected_damping(sigma, y, c, zeta))
+        )
         if fn <= 0.0:
             continue
         q = np.asarray(q)
@@ -412,12 +422,15 @@ def test_upright_decision_takes_each_rims_damper_sized_for_its_sliding_mass():
     # μ 0.3), so near the v_z where one rim's force falls to 0 a decision from the
     # frictionless ζ holds where the one from the sliding-mass dampers does not. The decision
     # must be the latter's (_reference_rim, _expected_damping) on the whole scan; the scan
-    # reaches the states where the two differ, and both answers.
+    # reaches the states where the two differ, and both answers. Since the pair's joint
+    # damping (cp._pair, 2026-11-24) both rims press as _two_rims.rims presses them: jointly,
+    # each rim's ρ scaling its row and column of the pair's mobility, or each alone.
     c = coin_contact(
         NICKEL, restitution=0.5, friction=0.3, rest_speed=0.01, rolling_resistance=1e-4,
         pivoting_resistance=1e-4, ending=CONTACT_ENDING,
     )  # fmt: skip
     stiff, zeta = cp.stiffness_of(c), cp.damping_of(c)
+    smooth = c._replace(friction=0.0)  # the same ζ, ρ = 1
     tilt = 0.5 * math.pi
     n = (math.sin(tilt), 0.0, math.cos(tilt))
     z = c.radius - 0.7 * cp.static_depth(c, stiff)
@@ -427,11 +440,8 @@ def test_upright_decision_takes_each_rims_damper_sized_for_its_sliding_mass():
     for vx in (4.9e-3, -4.9e-3):
         for vz in np.linspace(0.0, 0.02, 201):
             y = np.array([z, vx, 0.0, vz, *n, 0.0, 0.0, 0.0])
-            pressed = [
-                _reference_rim(s, y, c, _expected_damping(s, y, c, zeta))[0] > 0.0
-                for s in (-1.0, 1.0)
-            ]
-            frictionless = [_reference_rim(s, y, c, zeta)[0] > 0.0 for s in (-1.0, 1.0)]
+            pressed = [r[0] > 0.0 for r in _two_rims.rims(y, c, zeta)[0]]
+            frictionless = [r[0] > 0.0 for r in _two_rims.rims(y, smooth, zeta)[0]]
             decided = cp.upright_decided(y, c, stiff, zeta, budget)
             assert decided == all(pressed), (vx, vz)
             differ += all(pressed) != all(frictionless)

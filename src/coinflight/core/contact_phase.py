@@ -105,7 +105,8 @@ upright decision and these changes. All figures of these notes not dated otherwi
 costs, edge rates and MuJoCo comparisons below, the upright decision's counts) were measured
 before the sliding-mass damper (2026-11-24, "Restitution"), which moves single landings as a
 change of the dynamics does ("Convergence of a rim impact": faces of 2,000 tosses, edges not
-significantly).
+significantly), and all of them but those the paragraph "Two rims" re-measures before the
+joint damping of two pressed rims (2026-11-24, :data:`JOINT_DAMPING`).
 
 Where the cost is, ``python benchmarks/bench_contact.py 300`` (the same kind of tosses, each
 with its own e and μ, resistances 1e-4 m; load 3-7): 68-76 % of tosses are handed to this
@@ -318,39 +319,90 @@ force of a rim is clipped at zero (the surface pushes, never pulls).
   (J. Nonlinear Sci. 15:27, 2005: rolling and drilling friction set how a rolling disk's spin
   decays). No source gives them for a coin's rim: they are assumptions, to be carried as a band.
 
-**Two rims restitute below e (measured; the model is not changed).** Each rim's damper is
-sized for the effective mass at its own arc, m_eff = 1/K_zz, as if that rim carried the coin
-alone. An upright coin presses both rims together: one contact of stiffness 2 K_t on the mass
-m, damped by 2 γ, so its damping ratio is ζ sqrt(2 m_eff / m) = 1.39 ζ for a nickel
-(m_eff = 1/(1/m + h′²/I1)), and it rebounds at :func:`restitution_of` (1.39 ζ, 3/2), not e.
-``python benchmarks/bench_two_rims.py`` (frictionless nickel, sharp corners, not turning,
-dropped from 1 cm, 10 cm, 50 cm; 2026-11-24): upright on both rims **0.123-0.132 at e 0.2,
-0.250-0.256 at 0.35, 0.394-0.399 at 0.5, 0.555-0.559 at 0.65, 0.735-0.737 at 0.8**, against
-the prediction 0.132, 0.257, 0.399, 0.560, 0.737, and the same at t_c = 1 ms, 0.25 ms and
-62.5 μs (so not an effect of the contact's finite length); from 1 mm a little lower (gravity;
-0.369 at e 0.5, no release at 0.2). One rim (tilted 45°) tends to e as t_c falls (e 0.5,
-10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms: the coin turns during a finite contact),
-and a face to the linear law's :func:`restitution_of` (ζ, 1) (0.527 at e 0.5).
-``tests/test_bench_two_rims.py`` pins these. The same sizing leaves the pair's rocking mode
-(the rims in antiphase, inertia I1 on 2 K_t h′²) damped at ζ sqrt(2 m_eff h′²/I1) = 0.25 ζ
-for a nickel in the linearised pair, **0.29 ζ measured** at t_c 1 ms (the decay of a small lean
-oscillation of an upright nickel resting on both rims, the same script: 0.193, 0.111, 0.068,
-0.040, 0.020 at e 0.2, 0.35, 0.5, 0.65, 0.8, against ζ 0.668, 0.382, 0.233, 0.137, 0.068) and
-0.256 ζ at t_c 62.5 μs, the linearised value as the contact shortens: under-damped, about the
-restitution 0.82 where the surface says 0.5.
-*A fix* would size the pair's damping together whenever both rims press: with M the 2 × 2 mass
-matrix of the two arcs' centroids (the inverse of their 2 × 2 collision matrix, Stronge 2000,
-eq 5.7, for two points) and K_t = diag(2 φ₁ κ, 2 φ₂ κ), the damping matrix
-C = 2 ζ M^½ (M^−½ K_t M^−½)^½ M^½ (every mode of the pair at ζ; symmetric positive, so still
-dissipative), which is the present 2 ζ sqrt(K_t m_eff) when one rim touches. *What it would
-move:* every contact-ending outcome of a coin that spends time on both rims (7 % of the
-phase's steps, the upright rollers and the coins the upright decision ends), so every
-contact-ending number quoted (its edge rates, the decision's measured 0 disagreements, the
-comparisons with MuJoCo) would need re-measuring. A scratch copy not kept in the repository
-(both rims' dampers scaled by 1/√2 when both press, which corrects the bounce but not the
-rocking mode) changed the faces of more handed tosses than a one-ulp change of the input
-flips (above), with the edge and decided counts within their binomial spread; as it cannot be
-re-run from here, its numbers are not quoted.
+**Two rims are damped as one pair (2026-11-24, :data:`JOINT_DAMPING`).** Each rim's damper
+alone is sized for the effective mass at its own arc, m_eff = 1/K_zz, as if that rim carried
+the coin. An upright coin presses both rims together: one contact of stiffness 2 K_t on the mass
+m, which those two dampers damped at ζ sqrt(2 m_eff / m) = 1.39 ζ for a nickel
+(m_eff = 1/(1/m + h′²/I1)), and the pair's rocking mode (the rims in antiphase, inertia I1 on
+2 K_t h′²) at ζ sqrt(2 m_eff h′²/I1) = 0.25 ζ. So whenever both rims' arcs are in the table,
+:func:`_pair` damps them together: with W the 2 × 2 normal mobility of the two arcs' centroids
+(W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z), the normal block of the collision matrix for two points,
+Stronge 2000, eq 5.7), M = W⁻¹ and K_t = diag(2 φ₁ κ, 2 φ₂ κ), the damping matrix
+C = 2 ζ M^½ (M^−½ K_t M^−½)^½ M^½ (:func:`joint_damping`, in closed form) puts every mode of
+the linearised pair at ζ, is symmetric positive (the pair only dissipates), and is
+:func:`_rim`'s 2 ζ sqrt(K_t m_eff) as one arc closes (continuous at a rim's touch). Each rim's
+sliding correction ρ (above) stays its own: it scales that rim's row and column of W by
+sqrt(ρ) (:func:`_pair`). The forces C ḋ act on the arcs' mean penetration rates, each rim's own
+part spread over its arc as before, the coupling at the arc's centroid: in each arc's plane of
+symmetry, so L·n and L_z stay conserved without friction. When the pair would pull on a rim (a
+joint force not positive) each rim is damped alone, as before: a contact only pushes, and that
+fall-back dissipates too. The switch is a discontinuity of the forces (the total normal
+force nearly continuous, its split between the rims not): on an upright nickel rocked at 4 rad/s
+the rim leaving the pair goes from 1.2e-5 N to 0.0101 N and the other from 0.0494 to 0.0389 N
+(on random two-arc states near the switch, v ~ 0.05 m/s, ω ~ 20 rad/s, the other rim's force
+jumps a median 19 %, up to 100 %: a reviewer's scratch measurement on 40,000 states, not
+re-run here); the stepper crosses it in 1-2 steps of 10 μs and the energy
+never grows (``test_stepping_across_the_fall_back_the_energy_never_grows``). Real tosses cross
+it often: of bench_contact's handed tosses (seed 2026, e 0.5, sampled every 0.1 ms up to 3 s;
+``python benchmarks/bench_two_rims.py --switches 300 --pairs 0.5,0.3 0.5,0.6``, 2026-11-24
+09:00 UTC), 80 of the 88 that reach both arcs switch at μ 0.3 (385 switches) and 128
+of 133 at μ 0.6 (588), though 98-99 % of their time on both arcs is damped jointly (64.4 of 65.9
+s, 220.7 of 223.0 s). With at most one arc in the table the derivative is the one before to
+the bit (15,480 random states of 20,000 against main 7d8c4d1, and
+tests/test_two_rim_damping.py against a kept reference).
+
+Measured, ``python benchmarks/bench_two_rims.py`` (frictionless nickel, sharp corners, not
+turning, dropped from 1 mm, 1 cm, 10 cm, 50 cm; 2026-11-24 07:47 UTC): upright on both rims,
+t_c 1 ms, **0.192-0.199 at e 0.2, 0.344-0.349 at 0.35, 0.495-0.499 at 0.5, 0.647-0.649 at
+0.65, 0.798-0.800 at 0.8** from 1 cm to 50 cm (from 1 mm 0.315, 0.476, 0.635, 0.792 and no
+release at 0.2: the weight, over a contact of 3.5 ms); at t_c 62.5 μs 0.199-0.200, 0.349-0.350,
+0.499-0.500, 0.650, 0.800 (``--contact-time 2.5e-4,6.25e-5 --heights 0.01,0.1,0.5``). Each rim
+damped alone had given (the same script at main 7d8c4d1, 2026-11-24) **0.123-0.132, 0.250-0.256,
+0.394-0.399, 0.555-0.559, 0.735-0.737**, the prediction restitution_of(1.39 ζ, 3/2) = 0.132,
+0.257, 0.399, 0.560, 0.737, at every t_c from 1 ms to 62.5 μs. The pair's rocking mode (the decay
+of a small lean oscillation of an upright nickel resting on both rims) is now damped at
+**1.139 ζ** at t_c 1 ms (0.760, 0.435, 0.265, 0.156, 0.077 at e 0.2-0.8 against ζ 0.668, 0.382,
+0.233, 0.137, 0.068), 1.02 ζ at 0.25 ms and **1.003 ζ** at 62.5 μs, where each rim alone gave
+0.29 ζ at 1 ms (0.193, 0.111, 0.068, 0.040, 0.020) and 0.256 ζ at 62.5 μs (its linearised
+0.25 ζ; the factor 1.14 at 1 ms is the finite Hertz-like contact's, in both sizings): the
+rocking restitution ~0.82 where the surface said 0.5 is gone. The bounce mode, lightly damped,
+0.99 ζ (1.39 ζ before). One rim (tilted 45°) and a face are unchanged (one rim tends to e as t_c
+falls: e 0.5, 10 cm: 0.613, 0.542, 0.515 at t_c 1, 0.25, 0.0625 ms, the coin turning during a
+finite contact; a face restitutes with the linear law's :func:`restitution_of` (ζ, 1), 0.527 at
+e 0.5). ``tests/test_bench_two_rims.py`` and ``tests/test_two_rim_damping.py`` pin these.
+
+*What it moves* (every contact-ending outcome of a coin that spends time on both rims), measured
+2026-11-24 against main 7d8c4d1 (each rim alone) with the same commands and tosses; the other
+figures of these notes (the edge rates, the MuJoCo comparisons, the sensitivity and trace runs,
+the speeds but the one below) are from before it. ``python benchmarks/bench_contact.py 600
+--pairs 0.5,0.3 0.5,0.6`` and ``600`` (seed 2026, ℓ 1e-4 m, every handed toss carried to rest;
+07:40-07:48 UTC, load 8.6-3.9): on edge at rest 61 of 429 handed tosses (0.142 ± 0.017) against
+53 (0.124 ± 0.016) at e 0.5, μ 0.3; 176 of 446 (0.395 ± 0.023) against 178 at μ 0.6; 74 of 412
+(0.180 ± 0.019) against 75 with each toss's own e, μ: within their binomial spread. The upright
+decision would end 60, 175 and 72 of them (52, 176 and 73 before), **every one on edge at rest
+(0 disagreements)**, and saves 52.3 %, 84.9 % and 66.3 % of the steps (51.1 %, 84.4 %, 66.0 %);
+a handed toss takes a mean 1,869, 6,777 and 2,697 steps (1,770, 6,818, 2,680). With a 0.5 mm
+corner (``--corner 5e-4``, the pairs): 43 of 417 decided (45 on edge at rest) and 170 of 425
+(172), 0 disagreements: 520 decisions in these five runs, none wrong. The same with 1,500 tosses
+(08:10 UTC, load 4.0-3.5; ``bench_contact.py 1500 --pairs 0.5,0.3 0.5,0.6`` and ``1500``): on
+edge at rest 132 of 1,061 (0.124 ± 0.010) against 130, 429 of 1,028 (0.417 ± 0.015) against 421,
+206 of 1,030 (0.200 ± 0.012) against 204; decided 126, 424 and 201 (126, 417, 200 before), 0
+disagreements; mean steps 1,767, 7,326, 3,018 (1,768, 7,159, 2,981). So 1,271 decisions in eight
+runs, none wrong. ``python benchmarks/bench_bounce.py --contact-rates 300 --old-src DIR`` (DIR
+main's src; 07:48-07:50 UTC, load 3.5-3.3, a test run beside it): landings carried to rest per
+CPU second in one thread **0.99× and 0.97×** main's (1,230 against 1,242; each toss its own e, μ
+1,129 against 1,162), in four more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3), 0.86×
+and 0.90× (07:54 UTC, load 6.5-5.4), 0.84× and 0.90× (07:56 UTC, load 5.0-6.8) and, the code now
+(:func:`_pair` not inlined, its fall-back from its own sums), 0.85× and 0.92× (08:05 UTC, load
+4.1-4.4): noisy, **about 0.85× and 0.9×**, from the phase's steps (more at μ 0.3, above) and a
+derivative a little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random
+states of ``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against
+main's 141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244;
+settle's first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300,
+statuses on none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings
+0.100 against 0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e
+0.8, μ 0.1), 0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py
+--contact-rates 300`` in its tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.
@@ -442,6 +494,9 @@ Beyond these settings (the same tosses, the decision probed as above, 21:15-21:1
 248 and 131 (three surfaces), ℓ_r = ℓ_p = 1e-5 m (600 tosses, rollers rolling ten times
 longer) 56 and 178 (as re-measured, ``bench_contact.py``'s notes), each time 0 disagreements;
 91 % and 98 % of the steps saved at 1e-5 m.
+Re-measured with the pair's joint damping (2026-11-24, "Two rims" above: 1,271 decisions in
+eight runs of ``bench_contact.py`` 600 and 1,500, 0 disagreements); the figures of this
+paragraph are from before it.
 The margin costs little and is not what holds these tosses: with UPRIGHT_MARGIN 1 (no
 margin; the same tosses, 20:59-21:03 UTC) the decision ends 119, 411 and 210 of them, again
 every one on edge at rest, and saves 52.2 %, 85.8 % and 70.1 % of the steps instead of 52.1 %,
@@ -495,9 +550,9 @@ the rigid law and with this phase's own t_c → 0 limit (its rim law at a frozen
      :data:`SLIP_SPEED` × 0.1, unchanged to the third digit); not the integrator (the frozen
      limit is integrated apart, at rtol 1e-10; the phase at :data:`RTOL`/100 moves a planar
      sliding impact by 4e-6 m/s at t_c 0.125 and 0.031 ms). Two rims touching in one impact
-     were not examined: the floor is accounted for without them (and each rim's ρ uses its
-     own single-contact K, the two contacts' coupled normal mass ignored, for upright rollers
-     too: :func:`_damper`).
+     were not examined: the floor is accounted for without them (each rim's ρ uses its own
+     single-contact K; since 2026-11-24 two pressed rims are damped as one pair,
+     :func:`_pair`, each ρ scaling its rim's row and column of their coupled normal mobility).
   2. **The arc's pivoting friction** (physics of the compliant model, kept): μ r_t F_n about
      the vertical, r_t ≈ r φ*/√3 ∝ sqrt(depth) ∝ t_c^(2/5), so its angular impulse vanishes
      only as t_c^(2/5): the vertical part of the angular-momentum error, 0.118, 0.081, 0.060,
@@ -625,6 +680,19 @@ of its own, as ``benchmarks/bench_bounce.py --upright`` does). At run time a coi
 past the decision by :func:`advance` with ``decide=False`` (an argument, read at every call)."""
 
 
+JOINT_DAMPING = True
+"""Whether two rims pressed together are damped as one pair (:func:`_pair`: every mode of the
+pair at the surface's ζ, so an upright coin restitutes with e; the module notes, "Two rims")
+rather than each rim alone as if it carried the coin (False: the code before 2026-11-24's
+joint damping, to the bit). A compile-time constant, as :data:`UPRIGHT_DECISION` (its notes
+say how to change it): ``benchmarks/normal_law.py`` switches it off for its other rim laws,
+whose tangent stiffness is not 2 φ κ."""
+JOINT_DEGENERATE = 1e-9
+"""Least det W / (W₁₁ W₂₂) of the two rims' normal mobility for which :func:`joint_damping`
+damps them together: 0 when both rim circles are one (a corner radius a = h/2) or their arcs'
+centroids lie on one vertical line; a nickel with a = h/2 − 25 μm still has ~1e-4."""
+
+
 class Ending(IntEnum):
     """How :func:`_integrate` (and :func:`advance`) stopped: false when the coin has not
     settled, true when it has, and which way (numba compiles the members as their integers)."""
@@ -669,6 +737,10 @@ def rim_contact(
     sigma, z, v, n, omega, radius, hh, mass, i1, i3, stiffness, zeta, corner=0.0, friction=0.0
 ):
     """Normal force of one rim circle on the table: (F_n, centre of pressure q, r_t, energy).
+
+    Its damper is sized for this rim alone; when both rims' arcs are in the table the
+    derivative damps them as one pair (:func:`_pair`; both rims' forces as applied:
+    :func:`rims_contact`).
 
     Parameters
     ----------
@@ -816,20 +888,35 @@ def _damper(rc, v, n, omega, mass, i1, i3, friction, zeta):
     median 0.0084, 0.0092, 0.0117 m/s from Stronge's law at μ 1.2, 1.5, 2 (largest 0.082 m/s, J_n
     0.95-1.02 of the rigid law's; 2026-11-24), against 0.00056 at μ 0.3.
 
-    Each rim's ρ uses that rim's own single-contact K: when both rims are pressed (an impact
-    across the edge band, and every coin rolling upright in it) the two contacts' coupled 2×2
-    normal mass is ignored, and the damper is not the one that restitutes such an impact with
-    e (not examined: the rigid law has one contact point)."""
+    Each rim's ρ uses that rim's own single-contact K. When both rims' arcs are in the table
+    (an impact across the edge band, and every coin rolling upright in it) the pair is damped
+    together by :func:`_pair`, from the two centroids' coupled 2×2 normal mobility, each rim's
+    ρ scaling its own row and column (the module notes, "Two rims"); this rim's damper alone
+    then serves only when the pair's damping would pull on a rim."""
+    turn, kzz = _normal_row(rc, n, mass, i1, i3)
+    if friction > 0.0:
+        zeta = zeta / math.sqrt(_sliding_ratio(rc, turn, kzz, v, omega, friction))
+    return zeta, 1.0 / kzz
+
+
+@njit(cache=True, inline="always")
+def _normal_row(rc, n, mass, i1, i3):
+    """(I⁻¹(rc × Z), K_zz) of the point rc (relative to the centre of mass, m): the product
+    the collision matrix's normal row is built from and its normal entry K_zz = 1/m +
+    (rc × Z)·I⁻¹(rc × Z), 1/kg (Stronge 2000, eq 5.7; :func:`_damper`)."""
     arm = (rc[1], -rc[0], 0.0)  # rc × Z
     turn = inverse_inertia_apply(arm, n, i1, i3)
-    kzz = 1.0 / mass + dot(arm, turn)
-    if friction > 0.0:
-        u = cross(omega, rc)
-        kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
-        kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
-        ratio = sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
-        zeta = zeta / math.sqrt(ratio)
-    return zeta, 1.0 / kzz
+    return turn, 1.0 / mass + dot(arm, turn)
+
+
+@njit(cache=True, inline="always")
+def _sliding_ratio(rc, turn, kzz, v, omega, friction):
+    """ρ of :func:`sliding_mass_ratio` at the point rc, from :func:`_normal_row`'s (turn, K_zz)
+    and the material point's slip v + ω × rc (:func:`_damper`)."""
+    u = cross(omega, rc)
+    kzx = dot((0.0, rc[2], -rc[1]), turn)  # rc × X
+    kzy = dot((-rc[2], 0.0, rc[0]), turn)  # rc × Y
+    return sliding_mass_ratio(kzx, kzy, kzz, v[0] + u[0], v[1] + u[1], friction, SLIP_SPEED)
 
 
 @njit(cache=True)
@@ -842,6 +929,245 @@ def sliding_mass_ratio(kzx, kzy, kzz, ux, uy, friction, slip_speed):
     :func:`_damper` sizes a rim's damper with it."""
     share = friction / math.sqrt(ux * ux + uy * uy + slip_speed * slip_speed)
     return max(1.0 - share * (kzx * ux + kzy * uy) / kzz, SLIDING_MASS_FLOOR)
+
+
+@njit(cache=True, inline="always")
+def _rims(z, v, n, omega, s, w, lower, c, stiffness, zeta):
+    """Both rims' (F_n, q, r_t) as :func:`_derivative` applies them, the lower rim (σ =
+    ``lower``) first: when both arcs are non-empty (:data:`JOINT_DAMPING`), :func:`_pair`'s,
+    the pair damped together if both its forces are positive, else each rim alone (the module
+    notes, "Two rims"); otherwise each rim's :func:`_rim` (its damper sized alone, ζ/sqrt(ρ)),
+    as before. Inlined into the derivative and into :func:`upright_decided`. Also returned:
+    whether the pair was damped jointly, and its damping matrix (C₁₁, C₁₂, C₂₂) then (NaNs
+    otherwise; :func:`rims_contact`)."""
+    if JOINT_DAMPING and zeta > 0.0 and _both_arcs(z, n, s, lower, c):
+        joint, g1, p1, t1, g2, p2, t2, c11, c12, c22 = _pair(
+            lower, z, v, n, omega, s, w, c, stiffness, zeta
+        )
+        if joint:
+            return g1, p1, t1, g2, p2, t2, True, c11, c12, c22
+        return g1, p1, t1, g2, p2, t2, False, math.nan, math.nan, math.nan
+    f1, q1, r1 = 0.0, (0.0, 0.0, 0.0), 0.0
+    f2, q2, r2 = 0.0, (0.0, 0.0, 0.0), 0.0
+    for sigma in (lower, -lower):
+        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
+        fn, q, rt, _ = _rim(
+            sigma,
+            z,
+            v,
+            n,
+            omega,
+            s,
+            w,
+            c.radius,
+            c.half_thickness,
+            c.mass,
+            c.i1,
+            c.i3,
+            stiffness,
+            zeta,
+            c.corner_radius,
+            c.friction,
+        )
+        if sigma == lower:
+            f1, q1, r1 = fn, q, rt
+        else:
+            f2, q2, r2 = fn, q, rt
+    return f1, q1, r1, f2, q2, r2, False, math.nan, math.nan, math.nan
+
+
+@njit(cache=True, inline="always")
+def _both_arcs(z, n, s, lower, c):
+    """Whether both rims' arcs are non-empty (d(φ) > 0 somewhere), decided as :func:`_rim`
+    decides it (a + b > 0, the same operations)."""
+    radius = c.radius - c.corner_radius
+    hh = c.half_thickness - c.corner_radius
+    b = radius * s
+    upper = -lower
+    return c.corner_radius - z - lower * hh * n[2] + b > 0.0 and (
+        c.corner_radius - z - upper * hh * n[2] + b > 0.0
+    )
+
+
+@njit(cache=True)
+def rims_contact(y, c, stiffness, zeta):
+    """Both rims' normal forces as :func:`_derivative` applies them, for tests and studies:
+    (σ₁, F₁, q₁, F₂, q₂, joint, C₁₁, C₁₂, C₂₂), rim 1 the lower one (σ₁ = −1, the tails rim,
+    when n_z ≥ 0), rim 2 = −σ₁; F ≥ 0 (N) and the centres of pressure q (m, relative to the
+    centre of mass) of :func:`rim_contact`; ``joint`` whether the pair is damped together
+    (:func:`_pair`), and then its damping matrix C (N s/m), else NaNs."""
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    s, w = _tangent_basis(n)
+    f1, q1, _, f2, q2, _, joint, c11, c12, c22 = _rims(
+        y[0], v, n, omega, s, w, lower, c, stiffness, zeta
+    )
+    return lower, f1, q1, f2, q2, joint, c11, c12, c22
+
+
+@njit(cache=True)
+def joint_damping(w11, w12, w22, k1, k2, zeta):
+    """(ok, C₁₁, C₁₂, C₂₂): the damping matrix C = 2 ζ M^½ (M^−½ K M^−½)^½ M^½ of two contacts
+    with the normal mobility W (1/kg; M = W⁻¹ their mass matrix) and the tangent stiffnesses
+    K = diag(k₁, k₂) (N/m), which damps every mode of M ẍ + C ẋ + K x = 0 at the ratio ζ
+    (Caughey's modal damping; Caughey & O'Kelly, J. Appl. Mech. 32:583, 1965). It is 2 ζ
+    times the geometric mean M # K of the two positive matrices, symmetric and positive
+    definite (Bhatia, *Positive Definite Matrices*, 2007, §4.1), and for one contact
+    (k₂ → 0) the single damper 2 ζ sqrt(k₁/W₁₁), which :func:`_rim` applies.
+
+    In closed form, no matrix function evaluated: the square root of a 2 × 2 positive matrix,
+    sqrt(A) = (A + sqrt(det A) I) / sqrt(tr A + 2 sqrt(det A)) (Cayley–Hamilton; Levinger,
+    Math. Mag. 53:222, 1980), gives for det A = det B = 1 the geometric mean
+    A # B = (A + B) / sqrt(det(A + B)) (the 2 × 2 case in Bhatia 2007, ch. 4: the positive
+    solution of G A⁻¹ G = B, which ``tests/test_two_rim_damping.py`` checks against the
+    definition with SciPy's sqrtm), and by its homogeneity
+    M # K = sqrt(αβ) (M/α + K/β) / sqrt(det(M/α + K/β)), α = sqrt(det M) = 1/sqrt(det W),
+    β = sqrt(k₁ k₂), M/α = adj(W)/sqrt(det W). det(M/α + K/β) ≥ 4 (two unit-determinant
+    positive matrices), so nothing cancels but det W, which is the rims' separation: ok is
+    False when det W ≤ :data:`JOINT_DEGENERATE` W₁₁ W₂₂ (two contacts on one vertical line, a
+    rim without a flat band, a = h/2; the caller then damps each alone)."""
+    det = w11 * w22 - w12 * w12
+    if not det > JOINT_DEGENERATE * w11 * w22 or not k1 > 0.0 or not k2 > 0.0:
+        return False, 0.0, 0.0, 0.0
+    root = math.sqrt(det)
+    ratio = math.sqrt(k1 / k2)
+    s11 = w22 / root + ratio
+    s22 = w11 / root + 1.0 / ratio
+    s12 = -w12 / root
+    scale = 2.0 * zeta * math.sqrt(math.sqrt(k1 * k2) / (root * (s11 * s22 - s12 * s12)))
+    return True, scale * s11, scale * s12, scale * s22
+
+
+@njit(cache=True, inline="always")
+def _pair_rim(
+    sigma, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
+):
+    """What :func:`_pair` needs of rim σ (``radius``, ``hh`` those of the core cylinder):
+    (K_t = 2 φ κ, elastic force, its moment ∫ κ d cos φ, ∫ ḋ_s, ∫ ḋ_s cos φ, 2 φ, 2 sin φ, ρ,
+    K_zz, I⁻¹(rc × Z), rc, r_t, φ*), from :func:`_rim`'s arc sums, in its operations; K_t 0
+    for an empty arc."""
+    zero = (0.0, 0.0, 0.0)
+    a = corner - z - sigma * hh * n[2]
+    b = radius * s
+    if a + b <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, zero, zero, 0.0, 1.0
+    phi, sp, cp = _arc(a, b)
+    i0 = 2.0 * phi
+    ic = 2.0 * sp
+    icc = phi + sp * cp
+    a0 = -(v[2] + sigma * hh * wn[2])
+    a1 = -radius * ww[2]
+    rc = _arc_centroid(sigma, n, w, radius, hh, corner, phi, sp)
+    turn, kzz = _normal_row(rc, n, mass, i1, i3)
+    rho = _sliding_ratio(rc, turn, kzz, v, omega, friction) if friction > 0.0 else 1.0
+    elastic = stiffness * (a * i0 + b * ic)
+    moment = stiffness * (a * ic + b * icc)
+    rate = a0 * i0 + a1 * ic
+    turning = a0 * ic + a1 * icc
+    ratio = sp / phi
+    pivot = radius * math.sqrt(max(0.0, 1.0 - ratio * ratio))
+    return i0 * stiffness, elastic, moment, rate, turning, i0, ic, rho, kzz, turn, rc, pivot, phi
+
+
+@njit(cache=True, inline="always")
+def _alone(sigma, rim, n, w, radius, hh, corner, friction, zeta):
+    """(F_n, q, r_t) of rim σ damped alone from :func:`_pair_rim`'s sums ``rim``: :func:`_rim`'s
+    force, in its operations (the damper ζ/sqrt(ρ) sqrt(K_t m_eff)/φ*, m_eff = 1/K_zz,
+    :func:`_damper`), so the same to the bit. For :func:`_pair`'s fall-back, which so does not
+    compute the rims' arcs twice."""
+    k, elastic, moment, rate, turning, _, _, rho, kzz, _, _, pivot, phi = rim
+    if friction > 0.0:
+        zeta = zeta / math.sqrt(rho)
+    gamma = zeta * math.sqrt(k * (1.0 / kzz)) / phi
+    force = elastic + gamma * rate
+    if force <= 0.0:
+        return 0.0, (0.0, 0.0, 0.0), 0.0
+    moment += gamma * turning
+    kq = radius * moment / force
+    q = (
+        sigma * hh * n[0] + kq * w[0],
+        sigma * hh * n[1] + kq * w[1],
+        sigma * hh * n[2] + kq * w[2] - corner,
+    )
+    return force, q, pivot
+
+
+@njit(cache=True)
+def _pair(lower, z, v, n, omega, s, w, c, stiffness, zeta):
+    """Both rims' (ok, F₁, q₁, r_t₁, F₂, q₂, r_t₂, C₁₁, C₁₂, C₂₂) damped together (the module
+    notes, "Two rims"), rim 1 σ = ``lower``, rim 2 σ = −``lower``; ok False when a rim's
+    joint force would not be positive or the pair is degenerate (:func:`joint_damping`), and
+    then the forces are each rim's alone (:func:`_alone`: :func:`_rim`'s to the bit, from the
+    same sums; zeros when an arc is empty). The pivot radii r_t are :func:`_rim`'s, computed
+    here; ``benchmarks/bench_rim_impacts.py``'s ``--drill-factor``, which wraps :func:`_rim`,
+    so does not reach a coin with both arcs in the table (its impacts, tilted 9-80°, touch
+    with one rim).
+
+    Each rim's arc, its sums and its centroid rc_i are :func:`_rim`'s; the pair's normal
+    mobility is W_ij = 1/m + (rc_i × Z)·I⁻¹(rc_j × Z) (the normal block of Stronge's collision
+    matrix for two points, Stronge 2000, eq 5.7: :func:`_normal_row`), its tangent stiffnesses
+    k_i = 2 φ_i κ. The sliding correction stays each rim's own (:func:`_damper`): ρ_i at the
+    rim's centroid, entering as the congruence W̃ = P^½ W P^½, P = diag(ρ₁, ρ₂) (each rim's
+    normal row and column scaled by sqrt(ρ_i), its K_zz by ρ_i as for one rim, the coupling by
+    the geometric mean sqrt(ρ₁ ρ₂)), so that C stays symmetric positive and is :func:`_rim`'s
+    damper 2 (ζ/sqrt(ρ_i)) sqrt(k_i/K_zz) when the other arc vanishes. The coupled friction
+    terms between the rims (the collision matrix's K_zt of one rim's friction at the other's
+    normal, not symmetric) are left out: a viscous damper needs a symmetric mass.
+
+    The damping forces D = C ḋ act on the arcs' mean penetration rates ḋ_i = a0 + a1 sin φ/φ
+    (the normal velocity of the centroid's material point): each rim's own part C_ii ḋ_i
+    spread over its arc as :func:`_rim`'s, γ_i ḋ_s(φ) with γ_i = C_ii/(2 φ_i), the coupling
+    C_ij ḋ_j spread evenly over the arc (acting at its centroid). Both act in the arc's plane
+    of symmetry (no torque about n or the vertical: L·n and L_z conserved without friction),
+    and the power they take, ḋᵀ C ḋ + Σ C_ii var_i(ḋ_s) ≥ 0 (var_i the spread of the even
+    rate over arc i), is never negative: the pair still only dissipates."""
+    mass, i1, i3, corner, friction = c.mass, c.i1, c.i3, c.corner_radius, c.friction
+    radius = c.radius - corner
+    hh = c.half_thickness - corner
+    zero = (0.0, 0.0, 0.0)
+    fail = (False, 0.0, zero, 0.0, 0.0, zero, 0.0, 0.0, 0.0, 0.0)
+    wn = cross(omega, n)
+    ww = cross(omega, w)
+    one = _pair_rim(
+        lower, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
+    )
+    two = _pair_rim(
+        -lower, z, v, n, omega, s, w, wn, ww, radius, hh, mass, i1, i3, stiffness, corner, friction
+    )
+    if one[0] <= 0.0 or two[0] <= 0.0:
+        return fail
+    k1, el1, mo1, d1, e1, i01, ic1, rho1, kz1, t1, _, r1, _ = one
+    k2, el2, mo2, d2, e2, i02, ic2, rho2, kz2, _, c2, r2, _ = two
+    w12 = (1.0 / mass + dot((c2[1], -c2[0], 0.0), t1)) * math.sqrt(rho1 * rho2)
+    ok, c11, c12, c22 = joint_damping(rho1 * kz1, w12, rho2 * kz2, k1, k2, zeta)
+    rate1 = d1 / i01  # the arcs' mean penetration rates
+    rate2 = d2 / i02
+    g1 = c11 / i01
+    g2 = c22 / i02
+    f1 = el1 + g1 * d1 + c12 * rate2
+    f2 = el2 + g2 * d2 + c12 * rate1
+    if not (ok and f1 > 0.0 and f2 > 0.0):
+        # each rim alone, from the same sums (to the bit _rim's: the module notes, "Two rims")
+        a1, b1, s1 = _alone(lower, one, n, w, radius, hh, corner, friction, zeta)
+        a2, b2, s2 = _alone(-lower, two, n, w, radius, hh, corner, friction, zeta)
+        return False, a1, b1, s1, a2, b2, s2, c11, c12, c22
+    m1 = mo1 + g1 * e1 + c12 * rate2 * ic1 / i01
+    m2 = mo2 + g2 * e2 + c12 * rate1 * ic2 / i02
+    kq1 = radius * m1 / f1
+    kq2 = radius * m2 / f2
+    q1 = (
+        lower * hh * n[0] + kq1 * w[0],
+        lower * hh * n[1] + kq1 * w[1],
+        lower * hh * n[2] + kq1 * w[2] - corner,
+    )
+    q2 = (
+        -lower * hh * n[0] + kq2 * w[0],
+        -lower * hh * n[1] + kq2 * w[1],
+        -lower * hh * n[2] + kq2 * w[2] - corner,
+    )
+    return True, f1, q1, r1, f2, q2, r2, c11, c12, c22
 
 
 @njit(cache=True)
@@ -875,7 +1201,7 @@ def _derivative(y, out, c, stiffness, zeta):
     inlined call (compile time as before, but 1,120 against 1,055 ns a step). What is left: the
     arc's arccos (libm's; ~35 ns of a call when knocked out), the square roots and divisions of
     the forces."""
-    mass, i1, i3, radius, hh = c.mass, c.i1, c.i3, c.radius, c.half_thickness
+    mass, i1, i3, radius = c.mass, c.i1, c.i3, c.radius
     mu, rolling, pivoting = c.friction, c.rolling_resistance, c.pivoting_resistance
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
@@ -887,26 +1213,9 @@ def _derivative(y, out, c, stiffness, zeta):
     # The lower rim first: the same sums, in the same order, for the mirror toss (n → −n).
     lower = -1.0 if n[2] >= 0.0 else 1.0
     s, w = _tangent_basis(n)
-    for sigma in (lower, -lower):
-        # each rim's damper for the normal mass its friction leaves (_damper's), in _rim
-        fn, q, rt, _ = _rim(
-            sigma,
-            y[0],
-            v,
-            n,
-            omega,
-            s,
-            w,
-            radius,
-            hh,
-            mass,
-            i1,
-            i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            mu,
-        )
+    f1, q1, r1, f2, q2, r2, _, _, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    for k in range(2):
+        fn, q, rt = (f1, q1, r1) if k == 0 else (f2, q2, r2)
         if fn <= 0.0:
             continue
         fz += fn
@@ -1112,8 +1421,9 @@ def upright_decided(y, c, stiffness, zeta, budget):
     turn's overturning moment M = (I3 |ω·n| + m r |v_h|) |ω_z| at most :data:`UPRIGHT_MARGIN`
     of the band's m g h′; the friction the turn and the rolling resistance need,
     sqrt((m |v_h| |ω_z|)² + F_r²), F_r = m ℓ_r m g r / (I3 + m r²), at most that share of μ m g;
-    both rims pressed (:func:`rim_contact`, with each rim's damper as :func:`_derivative` sizes
-    it, :func:`_damper`: the force they exert now); the
+    both rims pressed (their forces as :func:`_derivative` applies them, :func:`_rims`: each
+    rim's damper sized alone, :func:`_damper`, or the pair's joint damping, :func:`_pair`:
+    the force they exert now); the
     band's middle not slipping (the horizontal velocity of its lowest point below
     :data:`SLIP_SPEED`); the tilt below the lean's ridge θ*; and the energy that can lean the
     coin (the whole energy less the rolling and yawing kinetic energy ½ m (v·t̂)² + ½ I3 (ω·n)²
@@ -1156,27 +1466,10 @@ def upright_decided(y, c, stiffness, zeta, budget):
     if math.sqrt(turn * turn + resist * resist) > UPRIGHT_MARGIN * c.friction * weight:
         return False
     s, w = _tangent_basis(n)
-    for sigma in (-1.0, 1.0):
-        fn, _, _, _ = _rim(  # each rim's damper as _derivative sizes it
-            sigma,
-            y[0],
-            v,
-            n,
-            omega,
-            s,
-            w,
-            radius,
-            c.half_thickness,
-            mass,
-            i1,
-            i3,
-            stiffness,
-            zeta,
-            c.corner_radius,
-            c.friction,
-        )
-        if fn <= 0.0:
-            return False
+    lower = -1.0 if n[2] >= 0.0 else 1.0
+    f1, _, _, f2, _, _, _, _, _, _ = _rims(y[0], v, n, omega, s, w, lower, c, stiffness, zeta)
+    if f1 <= 0.0 or f2 <= 0.0:  # both rims pressed, as _derivative presses them
+        return False
     core = radius - c.corner_radius  # r − a, the rim circle's radius
     low = (core * w[0], core * w[1], core * w[2] - c.corner_radius)  # the band middle's lowest
     u = cross(omega, low)

@@ -76,7 +76,8 @@ Why the engines part (measured; the benchmarks' notes). Not the normal law: neit
 hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
 decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
 the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44, 2026-11-24,
-``benchmarks/bench_edge_sensitivity.py 600``), nor MuJoCo's
+``benchmarks/bench_edge_sensitivity.py 600``; all these counts measured before the joint
+damping of two pressed rims (2026-11-24)), nor MuJoCo's
 impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
 0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
 convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
