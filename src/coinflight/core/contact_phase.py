@@ -394,15 +394,19 @@ CPU second in one thread **0.99× and 0.97×** main's (1,230 against 1,242; each
 1,129 against 1,162), in four more runs 0.67× and 0.72× (07:51-07:53 UTC, load 5.4-7.3), 0.86×
 and 0.90× (07:54 UTC, load 6.5-5.4), 0.84× and 0.90× (07:56 UTC, load 5.0-6.8) and, the code now
 (:func:`_pair` not inlined, its fall-back from its own sums), 0.85× and 0.92× (08:05 UTC, load
-4.1-4.4): noisy, **about 0.85× and 0.9×**, from the phase's steps (more at μ 0.3, above) and a
-derivative a little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random
-states of ``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against
-main's 141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244;
-settle's first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300,
-statuses on none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings
-0.100 against 0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e
-0.8, μ 0.1), 0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py
---contact-rates 300`` in its tree).
+4.1-4.4): noisy; measured by the lead on the merged tree at lower load (09:11 UTC, load 2.8-2.0,
+the same command against main 8375028's src, 300 tosses, medians of 3): **2,745 against 2,741
+landings a second (1.00×; one thread 1,350 against 1,404 per CPU second, 0.96×)**, each toss its
+own e, μ 2,408 against 2,646 (0.91×; one thread 1,336 against 1,333, 1.00×): the cost, if any,
+is within a few per cent, from the phase's steps (more at μ 0.3, above) and a derivative a
+little dearer (one thread, CPU, median of 7, 2026-11-24 08:02 UTC, the random states of
+``tests/test_two_rim_damping.py``'s kind at μ 0.3: 146-154 ns with one arc against main's
+141-143, its test of both arcs; 257-264 ns with both, joint or not, against 222-244; settle's
+first compile 12.7-13.2 s CPU against 10.2-10.3); faces differing on 9 and 1 of 300, statuses on
+none; decided upright 30 and 43 (27 and 43 before); P(edge) of all 300 landings 0.100 against
+0.090 (e 0.5, μ 0.3), 0.200 against 0.197 (e 0.2, μ 0.5), 0.057 against 0.053 (e 0.8, μ 0.1),
+0.143 against 0.147 (each toss its own e, μ; main's from ``bench_bounce.py --contact-rates 300``
+in its tree).
 
 Every force is a spring that stores energy or opposes a velocity, so the mechanical energy
 (kinetic + m g z + the springs') never grows but by integration error.

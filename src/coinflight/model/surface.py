@@ -178,8 +178,8 @@ class Surface:
         phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
         "decided upright" for a coin its upright decision ended on edge);
         **experimental**: slow (about 3,000 landings a second on 2 cores instead of about
-        100,000: vigorous tosses, e 0.5, μ 0.3, 2026-11-24, measured before the joint damping
-        of two pressed rims; with it about 0.85-0.9× that, to be re-measured), and its edge
+        100,000: vigorous tosses, e 0.5, μ 0.3, 2026-11-24; with the joint damping of two
+        pressed rims 2,745 against 2,741 before it, in the same rounds), and its edge
         rates are not yet credible (coins that roll upright on a sharp-cornered rim stop
         upright; see :mod:`coinflight.core.contact_phase`).
 
