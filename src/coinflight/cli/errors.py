@@ -26,6 +26,7 @@ import typer
 from typer.core import TyperGroup
 
 from coinflight.cli.exits import fail, interrupted, say
+from coinflight.cli.helptext import tidy_help
 from coinflight.cli.stdout import is_stdout_failure, stdout_failed
 
 
@@ -56,7 +57,12 @@ class OneLineErrors(TyperGroup):
     Typer's usage errors (unknown option, malformed number) and the library's ``ValueError`` /
     ``TypeError`` (a value outside its allowed range) both end as ``coinflight: error: …`` with
     exit code 2. Set ``COINFLIGHT_DEBUG=1`` to see the traceback of a library error instead.
+    Its help, and every subcommand's, is shown as written (:mod:`coinflight.cli.helptext`).
     """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        tidy_help(self)
 
     def make_context(self, *args: Any, **kwargs: Any) -> Any:
         with _escaping():  # --help and --version print while the context is made

@@ -28,6 +28,13 @@ METHOD_PANEL = "Method"
 SURFACE_PANEL = "Landing"
 PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
+METHOD_DETAIL_PANEL = "Method details"
+CONTACT_PANEL = "Contact ending and rim"
+AIR_PANEL = "Air"
+PARALLEL_PANEL = "Parallel"
+LATER_PANELS = (METHOD_DETAIL_PANEL, CONTACT_PANEL, AIR_PANEL, PARALLEL_PANEL)
+"""Panels of rarely used options, shown after the others (in this order) so that the common
+options fit a screen (:func:`coinflight.cli.helptext.tidy_help`)."""
 
 
 def option(
@@ -135,7 +142,7 @@ Threads = Annotated[
     option(
         "--threads",
         metavar="K",
-        panel=METHOD_PANEL,
+        panel=PARALLEL_PANEL,
         help="Worker threads (default: all CPUs). The result does not depend on it.",
     ),
 ]

@@ -38,6 +38,7 @@ from coinflight.cli.landing_groups import (
 )
 from coinflight.cli.options import (
     COIN_PANEL,
+    CONTACT_PANEL,
     METHOD_PANEL,
     OUTPUT_HELP,
     OUTPUT_PANEL,
@@ -420,7 +421,7 @@ def sweep(
         option(
             "--ending",
             metavar="rocking,contact",
-            panel=SURFACE_PANEL,
+            panel=CONTACT_PANEL,
             help="table, comma-separated endings: " + ENDING_HELP,
         ),
     ] = None,
@@ -441,7 +442,7 @@ def sweep(
         option(
             "--corner-radius",
             metavar="LIST",
-            panel=SURFACE_PANEL,
+            panel=CONTACT_PANEL,
             help="--surface table only, swept over every coin: " + CORNER_HELP,
         ),
     ] = None,
