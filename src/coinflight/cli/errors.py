@@ -25,6 +25,7 @@ from typing import Any
 import typer
 from typer.core import TyperGroup
 
+from coinflight._provenance import command_line, invoked
 from coinflight.cli.exits import fail, interrupted, say
 from coinflight.cli.helptext import tidy_help
 from coinflight.cli.stdout import is_stdout_failure, stdout_failed
@@ -82,7 +83,8 @@ class OneLineErrors(TyperGroup):
     ) -> Any:
         try:
             try:
-                with one_line_warnings():
+                argv = sys.argv[1:] if args is None else list(args)
+                with invoked(command_line(argv)), one_line_warnings():
                     rv = super().main(
                         args=args,
                         prog_name=prog_name,

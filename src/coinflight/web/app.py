@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
+from contextvars import ContextVar
 from importlib.resources import as_file, files
 from typing import Any
 
@@ -15,6 +16,7 @@ from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel
 
 from coinflight import __version__
+from coinflight._provenance import invoked
 from coinflight.queries.encoding import json_text
 from coinflight.web import params as p
 from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
@@ -80,7 +82,7 @@ def create_app(
             "starts, or 503 after the time limit."
         ),
         lifespan=lifespan,
-        dependencies=[Depends(_known_parameters)],
+        dependencies=[Depends(_known_parameters), Depends(_remember_request)],
     )
     _errors(app)
     _static(app)
@@ -89,7 +91,8 @@ def create_app(
         """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
         if not running:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
-        return Response(await running[0].run(_encoded, fn, *args), media_type=JSON)
+        encoded = await running[0].run(_encoded, _REQUEST.get(), fn, *args)
+        return Response(encoded, media_type=JSON)
 
     @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
@@ -273,15 +276,26 @@ def create_app(
     return app
 
 
-def _encoded(fn: Callable[..., Any], *args: Any) -> str:
+def _encoded(request: str, fn: Callable[..., Any], *args: Any) -> str:
     """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
     computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
-    reaches no one)."""
+    reaches no one), and ``request`` as its ``"command"`` (:mod:`coinflight._provenance`)."""
     from coinflight.queries.plausibility import heard, with_warnings
 
-    with heard() as texts:
+    with invoked(request), heard() as texts:
         payload = fn(*args)
-    return json_text(with_warnings(payload, texts))
+        return json_text(with_warnings(payload, texts))
+
+
+_REQUEST: ContextVar[str] = ContextVar("coinflight_request")
+"""The request being answered, as ``GET /api/toss?omega=80,0,0`` (set by
+:func:`_remember_request` for the endpoint, which runs in the same context)."""
+
+
+async def _remember_request(request: Request) -> None:
+    """Keep the request's method, path and query (as sent) for its answer's ``"command"``."""
+    query = request.url.query
+    _REQUEST.set(f"{request.method} {request.url.path}" + (f"?{query}" if query else ""))
 
 
 async def _known_parameters(request: Request) -> None:
