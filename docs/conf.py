@@ -1,7 +1,8 @@
 """Sphinx configuration of the coinflight documentation.
 
-The build is offline: no intersphinx, no remote images; MathJax is loaded by the reader's
-browser when a page is viewed. Every tutorial and gallery script is executed at build time
+The build is offline, and so are its pages: no intersphinx, no remote images; the equations
+are typeset in the reader's browser by the MathJax vendored in ``_static/mathjax``
+(``_ext/offline_math.py``), nothing loaded from another host. Every tutorial and gallery script is executed at build time
 (sphinx-gallery), so a figure on a page is the figure the code beside it makes today.
 """
 
@@ -32,7 +33,7 @@ version = release = coinflight.__version__
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
-    "sphinx.ext.mathjax",
+    "offline_math",  # sphinx.ext.mathjax with the vendored MathJax
     "sphinx.ext.viewcode",
     "numpydoc",
     "myst_parser",
