@@ -17,7 +17,7 @@ from coinflight.cli.plot import plot_app
 
 runner = CliRunner()
 WIDE = {"COLUMNS": "2000"}  # no wrapping: a help text is one line of the table
-BRACKETED = re.compile(r"[\w.-]+\[[^\]\s]+\]")  # coinflight[dask], x[0], ...
+BRACKETED = re.compile(r"\S*\[[^\]\n]+\]")  # coinflight[dask], [default: 60:90], ...
 
 
 def _help(*path: str, env: dict[str, str] = WIDE) -> str:
@@ -55,8 +55,9 @@ def test_every_bracketed_word_of_the_source_is_shown():
             missing = sorted(w for w in words if w not in page)
             assert not missing, f"coinflight {' '.join(path)} --help drops {missing}"
             shown |= words
+        assert "\\[" not in _help(*path)  # nothing escaped twice (a backslash shown)
     # the extras the help tells users to install (not a vacuous pass over no brackets)
-    assert {"coinflight[dask]", "coinflight[parquet]"} <= shown
+    assert {'"coinflight[dask]', '"coinflight[parquet]'} <= shown
 
 
 @pytest.mark.parametrize(

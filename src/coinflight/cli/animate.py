@@ -22,7 +22,7 @@ Frames = Annotated[
         min=2,
         max=2000,
         rich_help_panel=OUTPUT_PANEL,
-        help="Frames from launch to catch \\[default: 16 per turn, 60 to 400].",
+        help="Frames from launch to catch [default: 16 per turn, 60 to 400].",
     ),
 ]
 Fps = Annotated[
@@ -36,7 +36,7 @@ Enlarge = Annotated[
         parser=number,
         metavar="X",
         rich_help_panel=OUTPUT_PANEL,
-        help="Draw the coin X times larger than life \\[default: a sixth of the apex height].",
+        help="Draw the coin X times larger than life [default: a sixth of the apex height].",
     ),
 ]
 MovieDpi = Annotated[

@@ -41,7 +41,7 @@ Workers = Annotated[
         min=1,
         max=64,
         metavar="N",
-        help="Worker processes computing answers \\[default: the CPU count, at most 4].",
+        help="Worker processes computing answers [default: the CPU count, at most 4].",
     ),
 ]
 
