@@ -2,8 +2,9 @@
 
 The build is offline, and so are its pages: no intersphinx, no remote images; the equations
 are typeset in the reader's browser by the MathJax vendored in ``_static/mathjax``
-(``_ext/offline_math.py``), nothing loaded from another host. Every tutorial and gallery script is executed at build time
-(sphinx-gallery), so a figure on a page is the figure the code beside it makes today.
+(``_ext/offline_math.py``), nothing loaded from another host. Every tutorial and gallery
+script is executed at build time (sphinx-gallery), so a figure on a page is the figure the code
+beside it makes today.
 """
 
 from __future__ import annotations

@@ -40,7 +40,14 @@ Enlarge = Annotated[
     ),
 ]
 MovieDpi = Annotated[
-    int, typer.Option("--dpi", min=20, max=600, rich_help_panel=OUTPUT_PANEL, help="Resolution.")
+    int,
+    typer.Option(
+        "--dpi",
+        min=20,
+        max=600,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Resolution, dots per inch of the 8 × 6.4 inch frame (120: 960 × 768 pixels).",
+    ),
 ]
 
 
@@ -52,7 +59,7 @@ def animate(
     frames: Frames = None,
     fps: Fps = 24,
     enlarge: Enlarge = None,
-    dpi: MovieDpi = 80,
+    dpi: MovieDpi = 120,  # coinflight.plotting.animation.MOVIE_DPI
 ) -> None:
     """Animate one toss: the coin rising, turning and falling, the face up and a clock.
 
