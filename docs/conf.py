@@ -43,7 +43,13 @@ extensions = [
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "**.ipynb_checkpoints", "tutorials/README.rst", "gallery/README.rst"]
+exclude_patterns = [
+    "_build",
+    "_static",  # vendored files (MathJax and its VENDORED.md), copied as they are
+    "**.ipynb_checkpoints",
+    "tutorials/README.rst",
+    "gallery/README.rst",
+]
 templates_path: list[str] = []
 nitpicky = False
 
@@ -72,6 +78,9 @@ sphinx_gallery_conf = {
     "only_warn_on_example_error": False,
     "show_memory": False,
     "plot_gallery": "True",
+    # its computation-times pages load jQuery and DataTables from CDNs: not written, so that
+    # no page of the site asks another host for anything
+    "write_computation_times": False,
 }
 
 # -- HTML ----------------------------------------------------------------------------------

@@ -3,7 +3,8 @@
 a built page loaded from another host.
 
 A small site is built with the docs' theme and math extension and the real ``physics.rst`` (the
-full build, gallery and API reference, takes minutes: ``make docs``). Its HTML and CSS are read
+full build, gallery and API reference, takes minutes: ``make docs``; ``make test`` builds it
+before the tests, and every page of it is then read too). Its HTML and CSS are read
 for outside addresses; Debian's Chromium, driven by Playwright as in ``test_web_browser.py``,
 opens the page with every request to another host refused and checks that MathJax typeset the
 equations. The screenshot of the rendered equations is the run's artefact, in the test's own
@@ -84,16 +85,38 @@ def _outside(url: str) -> bool:
 
 
 def test_the_built_page_loads_nothing_from_another_host(site: Path) -> None:
-    page = (site / "physics.html").read_text(encoding="utf-8")
     loads = _Loads()
-    loads.feed(page)
-    assert [u for u in loads.urls if _outside(u)] == []
+    loads.feed((site / "physics.html").read_text(encoding="utf-8"))
     assert any("_static/mathjax/tex-chtml-full.js" in u for u in loads.urls), loads.urls
-    # the styles the page loads ask no font or sheet of another host either
+    # no page of the small site, nor a style it loads, asks another host for anything
+    assert _outside_loads(site) == {}
+
+
+def _outside_loads(site: Path) -> dict[str, list[str]]:
+    """Every page's and style sheet's addresses of another host, by file."""
+    found: dict[str, list[str]] = {}
+    for page in site.rglob("*.html"):
+        loads = _Loads()
+        loads.feed(page.read_text(encoding="utf-8", errors="replace"))
+        if outside := [u for u in loads.urls if _outside(u)]:
+            found[str(page.relative_to(site))] = outside
     for css in site.rglob("*.css"):
         text = css.read_text(encoding="utf-8", errors="replace")
-        found = re.findall(r"(?:url\(|@import\s+)['\"]?((?:https?:)?//[^'\")\s]+)", text)
-        assert found == [], f"{css.relative_to(site)} loads {found}"
+        if urls := re.findall(r"(?:url\(|@import\s+)['\"]?((?:https?:)?//[^'\")\s]+)", text):
+            found[str(css.relative_to(site))] = urls
+    return found
+
+
+def test_the_full_site_loads_nothing_from_another_host() -> None:
+    """The full build (``make docs``, which ``make test`` runs first): no page, gallery and
+    API reference included, loads a script, style or font of another host."""
+    site = DOCS / "_build" / "html"
+    if not (site / "index.html").is_file():
+        if IN_CI:
+            pytest.fail("the documentation was not built before the tests: make docs")
+        pytest.skip("the documentation is not built here: make docs")
+    assert len(list(site.rglob("*.html"))) > 50  # the whole site, not a stub
+    assert _outside_loads(site) == {}
 
 
 def test_mathjax_ships_with_its_fonts_and_licence(site: Path) -> None:
