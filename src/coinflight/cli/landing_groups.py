@@ -30,7 +30,8 @@ ENDING_HELP = (
     "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
     "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
     "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
-    "times slower than rocking, and its edge rates depend on the unmeasured resistances and corner radius."
+    "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
+    "corner radius."
 )
 """--ending's help (command line and sweep)."""
 
