@@ -129,6 +129,13 @@ SimulateSeed = Annotated[
     int | None,
     _seed("Seed of the --simulate tosses (reported; drawn at random if not given).", "Simulation"),
 ]
+SplitSeed = Annotated[
+    int | None,
+    _seed(
+        "Seed of the random splits of the people in the held-out check (reported; drawn at "
+        "random if not given)."
+    ),
+]
 PaperSeed = Annotated[int, _seed("Seed of method B's random events (reported).", metavar=None)]
 Threads = Annotated[
     int | None,
