@@ -722,7 +722,7 @@ def heterogeneity(table: CountsTable) -> Heterogeneity:
         chi2=q,
         dof=dof,
         p_value=float(res.pvalue),
-        i2=excess / q,
+        i2=excess / q if excess > 0.0 else 0.0,
         tau=math.sqrt(tau2),
     )
 

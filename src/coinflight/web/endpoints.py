@@ -150,8 +150,15 @@ def bias_curve(coin: CoinArgs, psis: tuple[float, ...]) -> list[dict[str, Any]]:
     return curve(psis, coin.resolve())
 
 
-def data(dataset: str | None, interval: str, psi_sd: float) -> dict[str, Any]:
+def data(
+    dataset: str | None,
+    interval: str,
+    psi_sd: float,
+    seed: int | None,
+    folds: int | None,
+    repeats: int | None,
+) -> dict[str, Any]:
     """``GET /api/data``: ``coinflight data --json`` for a shipped dataset."""
     from coinflight.queries.data import dataset_payload
 
-    return dataset_payload(dataset, interval, psi_sd)
+    return dataset_payload(dataset, interval, psi_sd, seed, folds, repeats)
