@@ -357,11 +357,11 @@ def _maximize(
     def cost(x: FloatArray) -> float:
         a = min(max(float(x[0]), bounds[0][0]), bounds[0][1])
         b = min(max(float(x[1]), bounds[1][0]), bounds[1][1])
-        value = lik.total(PsiPopulation(family, a, b))
-        return -value if math.isfinite(value) else 1e300
+        return _negative(lik.total(PsiPopulation(family, a, b)))
 
     best: tuple[float, FloatArray] | None = None
-    for start in starts:
+    for raw in starts:
+        start = [min(max(x, lo), hi) for x, (lo, hi) in zip(raw, bounds, strict=True)]
         res = minimize(
             cost,
             np.array(start),
@@ -374,6 +374,12 @@ def _maximize(
     assert best is not None
     a, b = (min(max(float(x), lo), hi) for x, (lo, hi) in zip(best[1], bounds, strict=True))
     return PsiPopulation(family, a, b), -best[0]
+
+
+def _negative(loglik: float) -> float:
+    """The cost the optimizers minimize: −log L, and 10³⁰⁰ where log L is −∞ (a population
+    with no mass where a person's counts can happen)."""
+    return -loglik if math.isfinite(loglik) else 1e300
 
 
 def _starts(family: str, psi_one: float, spread: float) -> list[tuple[float, float]]:
@@ -439,13 +445,13 @@ def _profile(lik: Likelihood, fit: PopulationFit, which: str, value: float) -> f
     if which == "location":
 
         def cost(s: float) -> float:
-            return -lik.total(PsiPopulation("normal", value, s))
+            return _negative(lik.total(PsiPopulation("normal", value, s)))
 
         lo, hi = sc_lo, min(sc_hi, max(4.0 * pop.scale, 0.05))
     else:
 
         def cost(s: float) -> float:
-            return -lik.total(PsiPopulation("normal", s, value))
+            return _negative(lik.total(PsiPopulation("normal", s, value)))
 
         lo, hi = max(loc_lo, pop.location - 0.5), loc_hi
     res = minimize_scalar(cost, bounds=(lo, hi), method="bounded", options={"xatol": 1e-6})
