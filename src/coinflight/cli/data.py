@@ -96,6 +96,19 @@ PlotFile = Annotated[
     ),
 ]
 
+PeoplePlotFile = Annotated[
+    Path | None,
+    typer.Option(
+        "--plot-people",
+        metavar="FILE",
+        parser=output_file,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Also write each person's rate against the 95 % predictive intervals of one ψ and "
+        "of the ψ population, and the population under p(ψ); the format follows the suffix, as "
+        f"--plot. {OUTPUT_HELP}",
+    ),
+]
+
 
 def data(
     dataset: Dataset = None,
@@ -106,6 +119,7 @@ def data(
     folds: Folds = DEFAULT_FOLDS,
     repeats: Repeats = DEFAULT_REPEATS,
     plot: PlotFile = None,
+    plot_people: PeoplePlotFile = None,
     json_output: JsonFlag = False,
 ) -> None:
     """Same-side and heads rates of real flips, the precession angle that explains them, and
@@ -120,25 +134,34 @@ def data(
         counts_source(dataset, counts)  # the error naming both, before any other
     check_psi_sd(psi_sd)
     check_splits(seed, folds, repeats)
-    if plot is not None:
+    plots = [(flag, path) for flag, path in (("--plot", plot), ("--plot-people", plot_people))
+             if path is not None]  # fmt: skip
+    if plots:
         from coinflight.plotting.style import figure_paths
 
-        figure_paths(plot, "--plot")
+        for flag, path in plots:
+            figure_paths(path, flag)
     table, source, described = counts_source(dataset, counts)
-    if plot is not None and len(table.people) > PLOT_MAX_PEOPLE:
-        shown, most = v.over_limit(len(table.people), PLOT_MAX_PEOPLE)
-        raise ValueError(
-            f"--plot draws one row per person: at most {most} people, got "
-            f"{shown}; leave out --plot (--json lists every person)"
-        )
+    for flag, _ in plots:
+        if len(table.people) > PLOT_MAX_PEOPLE:
+            shown, most = v.over_limit(len(table.people), PLOT_MAX_PEOPLE)
+            raise ValueError(
+                f"{flag} draws one row per person: at most {most} people, got "
+                f"{shown}; leave out {flag} (--json lists every person)"
+            )
     summary = summarize(table, interval, math.radians(psi_sd))
     analysis = flippers(table, seed, folds, repeats)
+    if plot_people is not None and isinstance(analysis, str):
+        raise ValueError(f"--plot-people draws the ψ population, which is {analysis}")
     written = []
-    if plot is not None:
-        from coinflight.plotting.forest import plot_forest
+    if plots:
+        from coinflight.plotting.forest import plot_flippers, plot_forest
         from coinflight.plotting.style import save_figure
 
-        written = save_figure(plot_forest(summary), plot)
+        if plot is not None:
+            written += save_figure(plot_forest(summary), plot)
+        if plot_people is not None and not isinstance(analysis, str):
+            written += save_figure(plot_flippers(table, analysis), plot_people)
     if json_output:
         print_json(data_payload(described, summary, psi_sd, written, analysis))
         return

@@ -626,6 +626,17 @@ def predictive_interval(flips: NDArray[np.int64], pop: PsiPopulation) -> FloatAr
     return out
 
 
+def predictive_interval_one_psi(flips: NDArray[np.int64], psi: float) -> FloatArray:
+    """The central 95 % interval of the same-side rate of a person with ``flips`` flips when
+    every flip has the angle ψ: the 2.5 % and 97.5 % quantiles of Binomial(flips, p(ψ))
+    (``scipy.stats.binom.ppf``) divided by ``flips``; shape (people, 2)."""
+    from scipy.stats import binom
+
+    n = np.asarray(flips, dtype=np.int64)
+    p = float(same_side_probability(psi))
+    return np.column_stack([binom.ppf(0.025, n, p), binom.ppf(0.975, n, p)]) / n[:, None]
+
+
 COARSE = 10
 """Quadrature cells merged into one by :func:`predictive_interval`."""
 
@@ -1029,6 +1040,7 @@ __all__ = [
     "one_psi_angle",
     "one_psi_loglik",
     "predictive_interval",
+    "predictive_interval_one_psi",
     "shrunken",
     "start_face_test",
 ]
