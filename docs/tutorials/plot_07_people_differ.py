@@ -74,8 +74,7 @@ print(f"log-normal 90 deg - psi: log-likelihood {alt.loglik - fit.loglik:+.1f} a
 ho = result.held_out
 print(f"{ho.folds}-fold x {ho.repeats} splits, seed {ho.seed}")
 print(
-    f"coverage: psi population {ho.coverage:.3f}, one psi {ho.coverage_one_psi:.3f} "
-    f"(95 % intended)"
+    f"coverage: psi population {ho.coverage:.3f}, one psi {ho.coverage_one_psi:.3f} (95 % intended)"
 )
 print(f"log score per person: {ho.log_score:.2f} against {ho.log_score_one_psi:.2f}")
 
@@ -108,7 +107,10 @@ bh = result.below_half
 print(f"{bh.observed} people observed below 1/2")
 print(f"expected under the fitted population: {bh.expected_model:.1f} (p = {bh.p_value_model:.2f})")
 print(f"expected if all were at 1/2: {bh.expected_at_half:.1f} (p = {bh.p_value_at_half:.2f})")
-print(f"lowest person {bh.lowest_person}: one-sided p = {bh.lowest_p_value:.3f} (Holm {bh.lowest_p_holm:.2f})")
+print(
+    f"lowest person {bh.lowest_person}: one-sided p = {bh.lowest_p_value:.3f} "
+    f"(Holm {bh.lowest_p_holm:.2f})"
+)
 
 # %%
 # Neither prediction is contradicted.
