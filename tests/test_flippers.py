@@ -231,6 +231,13 @@ def test_heldout_splits_are_seeded():
         f.held_out(lik, folds=49)
 
 
+def test_heldout_work_is_bounded_before_it_starts():
+    assert f.held_out_seconds(48, 2, 20) == pytest.approx(40 * f.FIT_SECONDS)
+    with pytest.raises(ValueError, match=r"a held-out check of 5000 people in 5000 folds × 1000 "
+                       r"splits is .* s of estimated work, more than the limit of 3,600"):  # fmt: skip
+        f.check_splits(5000, 5000, 1000)
+
+
 def test_heldout_coverage_of_a_homogeneous_population_is_nominal():
     # Every person at ψ = 80°: both models are right, and both cover about 95 %.
     k, n = simulate(80.0, 0.0, 3)

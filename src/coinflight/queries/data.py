@@ -4,7 +4,7 @@ counts summarized, ψ fitted, the people's ψ population fitted and checked, the
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -73,9 +73,14 @@ def dataset_payload(
     seed: int | None = None,
     folds: int | None = None,
     repeats: int | None = None,
+    bound: Callable[[str, float], None] | None = None,
 ) -> dict[str, Any]:
     """``coinflight data [--dataset NAME] --interval I --psi-sd S [--seed N] --json`` for a
-    dataset shipped with coinflight (the package's own file: nothing else is read)."""
+    dataset shipped with coinflight (the package's own file: nothing else is read).
+
+    ``bound(what, seconds)``, if given, is called with the held-out check's estimated work
+    before it starts (the server refuses work beyond its budget).
+    """
     from coinflight.studies.data import counts_source, summarize
     from coinflight.studies.flippers import DEFAULT_FOLDS, DEFAULT_REPEATS
 
@@ -84,6 +89,12 @@ def dataset_payload(
     check_psi_sd(psi_sd)
     check_splits(seed, folds, repeats)
     table, _, described = counts_source(dataset, None)
+    if bound is not None:
+        from coinflight.studies.flippers import held_out_seconds
+
+        people = len(table.people)
+        bound(f"a held-out check of {people} people in {folds} folds × {repeats} splits",
+              held_out_seconds(people, folds, repeats))  # fmt: skip
     summary = summarize(table, interval, math.radians(psi_sd))
     analysis = flippers(table, seed, folds, repeats)
     return data_payload(described, summary, psi_sd, (), analysis)

@@ -271,7 +271,9 @@ def create_app(
         angle ψ that explains them and the people's ψ population, as `coinflight data --json`."""
         from coinflight.web import endpoints
 
-        return await answer(endpoints.data, dataset, interval, psi_sd, seed, folds, repeats)
+        return await answer(
+            endpoints.data, dataset, interval, psi_sd, seed, folds, repeats, time_limit
+        )
 
     return app
 
