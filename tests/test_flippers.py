@@ -382,3 +382,15 @@ def test_bias_psi_dist_by_dataset_name(bartos):
     assert one_line_error("bias", "--psi-dist", "bartos2024").endswith(
         "or a dataset's name: bartos2023"
     )
+
+
+@pytest.mark.parametrize(
+    "location_deg, cell", [(90.0, 0), (89.99, 0), (70.01, 999), (45.0, f.CELLS), (30.0, f.CELLS)]
+)
+def test_a_point_mass_population_keeps_all_its_mass(location_deg, cell):
+    # Zero spread: all the mass in the one cell (a, b] holding d = |90° − ψ| (d = 0: the first
+    # cell; d = 19.99° in cell 999 = [19.98°, 20°]; d ≥ 45°: the cell where the coin never
+    # turns over), none lost at a cell's edge.
+    masses = f.PsiPopulation("normal", math.radians(location_deg), 0.0).cell_masses()
+    assert masses.sum() == pytest.approx(1.0, abs=1e-15)
+    assert np.flatnonzero(masses).tolist() == [cell]

@@ -152,8 +152,8 @@ def _distance_cdf(family: str, location: float, scale: float, d: FloatArray) -> 
     from scipy.special import ndtr
 
     centre = 0.5 * math.pi - location  # the normal's mean distance, the log-normal's median
-    if scale == 0.0:
-        return np.where(d >= centre, 1.0, 0.0)
+    if scale == 0.0:  # a point mass: P(D < d), so that it falls in the cell (a, b] holding it,
+        return np.where(d > centre, 1.0, 0.0)  # the first cell when at d = 0
     if family == "normal":
         return np.asarray(ndtr((d - centre) / scale) - ndtr((-d - centre) / scale))
     if centre <= 0.0:
@@ -924,8 +924,8 @@ class FlipperAnalysis:
             "heldout_coverage_range_one_psi": None
             if ho is None
             else list(ho.coverage_range_one_psi),
-            "heldout_log_score": None if ho is None else ho.log_score,
-            "heldout_log_score_one_psi": None if ho is None else ho.log_score_one_psi,
+            "heldout_log_score": None if ho is None else _finite(ho.log_score),
+            "heldout_log_score_one_psi": None if ho is None else _finite(ho.log_score_one_psi),
             "folds": None if ho is None else ho.folds,
             "repeats": None if ho is None else ho.repeats,
             "seed": self.seed,
@@ -1005,6 +1005,12 @@ class FlipperAnalysis:
             f"{bh.expected_at_half:.1f} if all were at ½ (p = {bh.p_value_at_half:.2g})",
         ]
         return lines
+
+
+def _finite(x: float) -> float | None:
+    """``x``, or None for −∞ (a model that gave a held-out count probability 0): JSON has no
+    infinities."""
+    return x if math.isfinite(x) else None
 
 
 def analyse(
