@@ -12,6 +12,7 @@ from coinflight import _validation as v
 from coinflight.cli.options import (
     OUTPUT_HELP,
     OUTPUT_PANEL,
+    SPLITS_PANEL,
     JsonFlag,
     SplitSeed,
     number,
@@ -63,7 +64,6 @@ PsiSd = Annotated[
         "normal ψ distribution with this standard deviation.",
     ),
 ]
-SPLITS_PANEL = "Held-out people"
 Folds = Annotated[
     int,
     typer.Option(
@@ -81,7 +81,7 @@ Repeats = Annotated[
         metavar="R",
         rich_help_panel=SPLITS_PANEL,
         help=f"Random splits of the people (1-{MAX_REPEATS}; each fits the model K times, "
-        "about 25 ms each for 48 people).",
+        "about 20 ms each for 48 people).",
     ),
 ]
 PlotFile = Annotated[
