@@ -152,8 +152,8 @@ print(f"people's shrunken psi: median {np.median(typical):.1f} deg")
 #   the same person here.
 # - Each person's shrunken ψ takes the population as known; its interval leaves out the
 #   uncertainty of the population's own parameters. The population's profile-likelihood
-#   intervals rest on a large-sample approximation: in simulated tables of 48 people like
-#   these the spread's 95 % interval held the true spread about 85-90 % of the time.
+#   intervals rest on a large-sample approximation: in simulated tables of 48 people with a
+#   population like this one the spread's 95 % interval held the true spread 90 % of the time.
 # - The shape of the population is not pinned down (the log-normal fits about as well); its
 #   spread is.
 # - A direct test: film people's flips with a high-speed camera, measure ψ of each flip from
