@@ -275,19 +275,30 @@ def test_readme_python_block_runs(index, tmp_path, monkeypatch):
     exec(compile(_python_blocks()[index], f"README.md python block {index}", "exec"), {})
 
 
-def test_readme_python_results_are_what_the_lines_print():
-    """A line ``EXPR  # 'TEXT'`` of a README block says EXPR gives the string TEXT: checked
-    after the block runs (the README's claims are what the code prints)."""
-    claims = 0
-    for block in _python_blocks():
+def _guide_blocks() -> list[str]:
+    """The Python code blocks of docs/guide.rst (``.. code-block:: python``), dedented."""
+    import textwrap
+
+    text = (ROOT / "docs" / "guide.rst").read_text(encoding="utf-8")
+    blocks = re.findall(r"\.\. code-block:: python\n\n((?:(?:   .*)?\n)+)", text)
+    return [textwrap.dedent(b) for b in blocks]
+
+
+def test_readme_and_guide_python_results_are_what_the_lines_print(tmp_path, monkeypatch):
+    """A line ``EXPR  # 'TEXT'`` of a README or guide block says EXPR gives the string TEXT:
+    checked after the block runs (the claims are what the code prints, e.g. describe()'s
+    '± 5e-14', once '± 1e-06')."""
+    monkeypatch.chdir(tmp_path)  # anything a block writes stays out of the repository
+    claims = []
+    for block in [*_python_blocks(), *_guide_blocks()]:
         namespace: dict = {}
-        exec(compile(block, "README.md python block", "exec"), namespace)
+        exec(compile(block, "README.md or docs/guide.rst python block", "exec"), namespace)
         for line in block.splitlines():
-            found = re.fullmatch(r"(?P<expr>\S.*?)  # (?P<text>'.*')", line)
+            found = re.fullmatch(r"(?P<expr>\S.*?)\s{2,}# (?P<text>'.*')", line)
             if found:
-                claims += 1
+                claims.append(found["expr"])
                 assert eval(found["expr"], namespace) == eval(found["text"]), line
-    assert claims >= 2  # face_name and describe()
+    assert any("face_name" in c for c in claims) and any("describe()" in c for c in claims)
 
 
 # --- a citable, installable package ---------------------------------------------------------
