@@ -33,7 +33,7 @@ KERNEL_MODULES = {
 }
 """The modules of numba kernels: what to call their kernels in the notice, and about how many
 seconds of computing compiling them takes (measured with an empty cache: one table landing
-compiles 66 kernels in about 20 s of CPU time, a toss through air 15 in about 6 s, the
+compiles about 70 kernels in about 20 s of CPU time, a toss through air 15 in about 6 s, the
 sampling kernel 1 in 1-2 s)."""
 
 _lock = threading.Lock()
