@@ -60,6 +60,8 @@ def serve(
 
     if not time_limit > 0:
         raise ValueError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
+    import coinflight.core._jit  # noqa: F401  (the workers' numba environment, checked here)
+
     run(
         host,
         port,
