@@ -354,6 +354,17 @@ def test_a_checkpoint_that_is_a_link_or_a_folder_is_never_followed(tmp_path, mon
     result = _cli(*args)
     assert result.exit_code == 0, result.output
     assert checkpoint.is_symlink() and other.read_text() == "mine\n"
+    checkpoint.unlink()  # nor a file of someone else's put there
+
+    def replace_then_write(*a, **k):
+        checkpoint.unlink()
+        checkpoint.write_text("someone else's\n")
+        return real(*a, **k)
+
+    monkeypatch.setattr(sweep_module, "write_table", replace_then_write)
+    result = _cli(*args)
+    assert result.exit_code == 0, result.output
+    assert checkpoint.read_text() == "someone else's\n"
 
 
 def test_the_cli_resumes_after_a_failure(tmp_path, monkeypatch):
