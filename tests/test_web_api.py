@@ -65,7 +65,7 @@ def in_process(monkeypatch):
     monkeypatch cannot reach), for tests that make the work fail the test if called."""
     from coinflight.web.runner import Runner
 
-    async def here(_runner: Runner, fn, *args):
+    async def here(_runner: Runner, fn, *args, long=False):
         return fn(*args)
 
     monkeypatch.setattr(Runner, "run", here)
@@ -420,16 +420,18 @@ def test_a_request_over_its_time_limit_is_503_and_its_worker_is_ended():
     # Checked without a clock (the machine is shared): the 503 is the runner's timeout at the
     # limit (asyncio.wait_for), the worker's process id changes (ended mid-work, not after it),
     # and the next request is answered, within its own 3 s limit waiting included.
+    import functools
     import os
 
     with TestClient(create_app(time_limit=3, workers=1)) as c:
-        worker = c.portal.call(c.app.state.runner.run, os.getpid)
+        pid = functools.partial(c.app.state.runner.run, os.getpid, long=True)
+        worker = c.portal.call(pid)
         detail = api_error(c, slow, status=503)
         assert detail == (
             "the request ran over the server's time limit of 3 s; ask for less work "
             "(a smaller n, a coarser resolution)"
         )
-        assert c.portal.call(c.app.state.runner.run, os.getpid) != worker  # ended, replaced
+        assert c.portal.call(pid) != worker  # ended, replaced
         assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
         assert c.get("/api/bias?psi=80").status_code == 200
 
