@@ -31,7 +31,7 @@ def allowed_hosts(host: str, extra: Sequence[str] = ()) -> list[str]:
     address (0.0.0.0, ::) cannot know the names it is reached by: any, unless ``extra``
     names them."""
     for name in extra:
-        if not name or any(c in name for c in "/ :\t") and not name.startswith("["):
+        if not name or (any(c in name for c in "/ :\t") and not name.startswith("[")):
             raise ValueError(
                 f"--allowed-host {name!r} is not a host name (e.g. coins.example.org, "
                 "192.168.1.20, [fe80::1]) or *"
