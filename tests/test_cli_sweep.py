@@ -262,9 +262,9 @@ CHECKPOINT_ARGS = [
         (lambda t: _edit_row(t, '"p_heads": 0.', '"p_heads": 0.1'), "checksum does not match"),
         (lambda t: t + "{}\n", "line 4: it is not a row"),
         (lambda t: t.splitlines(keepends=True)[0] + "not json\n", "line 2: it is not JSON"),
-        (lambda t: t.split("\n", 1)[1], "is not a checkpoint coinflight wrote"),
-        (lambda t: "", "is not a checkpoint coinflight wrote"),
-        (lambda t: "\x00\xff" * 50, "is not a checkpoint coinflight wrote"),
+        (lambda t: t.split("\n", 1)[1], "was not written by coinflight"),
+        (lambda t: "", "was not written by coinflight"),
+        (lambda t: "\x00\xff" * 50, "was not written by coinflight"),
         (lambda t: t.replace('"seed": 5}', '"seed": 6}', 1), "belongs to another run"),
     ],
 )

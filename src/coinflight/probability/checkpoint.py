@@ -43,6 +43,7 @@ _FIELDS = {
     "error_estimate", "counts", "seed", "elapsed", "details",
 }  # fmt: skip
 _WAY_ON = "remove it, or start over with --fresh"
+_FOREIGN = "was not written by coinflight (a sweep keeps its finished rows there)"
 
 
 class CheckpointError(ValueError):
@@ -69,7 +70,9 @@ def _open_nofollow(path: Path, flags: int, mode: int = 0o666) -> int:
     except OSError as exc:
         if os.path.islink(path):
             raise _refuse(
-                path, "is a symbolic link, which coinflight never follows", "remove the link"
+                path,
+                "is a symbolic link, which coinflight never follows",
+                "remove the link, or start over with --fresh",
             ) from None
         if isinstance(exc, FileNotFoundError | FileExistsError):
             raise
@@ -169,15 +172,15 @@ class Checkpoint:
             if not (isinstance(header, dict) and header.get("coinflight") == MARKER):
                 raise ValueError
         except ValueError:
-            raise _refuse(self.path, "is not a checkpoint coinflight wrote") from None
+            raise _refuse(self.path, _FOREIGN) from None
         if not first.endswith(b"\n"):  # killed before the header was whole: nothing in it
-            raise _refuse(self.path, "is not a checkpoint coinflight wrote")
+            raise _refuse(self.path, _FOREIGN)
         if header != self.header:
             run = ", ".join(f"{k} {header.get(k)}" for k in ("method", "n", "seed"))
             raise _refuse(
                 self.path,
                 f"belongs to another run ({run})",
-                "run with those to resume it, or start over with --fresh",
+                "rerun with that method, n and seed to resume it, or start over with --fresh",
             )
         self._good_end = len(first)
         number = 1
