@@ -531,6 +531,36 @@ def test_long_requests_have_their_own_lane_and_unstarted_work_is_busy_not_over_t
     ]
 
 
+def test_requests_whose_estimated_work_is_small_stay_in_the_short_lane():
+    """The triage (coinflight.web.endpoints.triage): read and refused in the short lane, then
+    moved to the long one when the estimate is beyond SHORT_SECONDS or unknown."""
+    from coinflight.queries.values import AirArgs, CoinArgs, DistArgs, TableArgs
+    from coinflight.web import endpoints
+
+    coin, hand, air = CoinArgs(), TableArgs("hand", None, None, None, None), AirArgs(None, None)
+    table = TableArgs("table", None, None, None, None)
+
+    def tosses(wx, wy="0", wz="0"):
+        return DistArgs(wx, wy, wz, "0.5:1", None, "heads", 9.81)
+
+    cheap = endpoints.probability(coin, tosses("60:90"), hand, air, {"method": "exact"}, 30, True)
+    assert 0 < cheap["p_heads"] < 1
+    slow = tosses("normal:60,0.01", "-60:60", "-40:40")  # 17 s by exact's own estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, slow, hand, air, {"method": "exact"}, 30, True)
+    many = {"method": "monte-carlo", "n": 100_000_000}  # 4 s by the estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, tosses("60:90"), hand, air, many, 30, True)
+    with pytest.raises(ValueError, match="more than the limit"):  # refused where it is read
+        endpoints.probability(coin, tosses("60:90"), hand, air, {**many, "n": 10**9}, 30, True)
+    assert endpoints.basin(coin, {"resolution": "800"}, hand, None, False, 30, True)["face"]
+    with pytest.raises(endpoints.LongWork):
+        endpoints.basin(coin, {"resolution": "400"}, table, None, False, 30, True)
+    with pytest.raises(endpoints.LongWork):
+        endpoints.bias(coin, 80.0, None, None, 10_000_000, 1, 30, True)
+    assert endpoints.bias(coin, 80.0, None, None, 1000, 1, 30, True)["p_same_side"] > 0.5
+
+
 def test_the_hosts_a_server_answers_and_errors_repeat_little_of_a_request():
     from coinflight.web.app import DETAIL_LIMIT, shortened
     from coinflight.web.server import allowed_hosts

@@ -101,12 +101,23 @@ def create_app(
     _static(app)
 
     async def answer(fn: Callable[..., Any], *args: Any, long: bool = False) -> Response:
-        """``fn(*args)`` as JSON text, computed and encoded in a worker process (``long``: in
-        the lane of the requests whose work grows with what is asked, so that the others
-        never wait behind them)."""
+        """``fn(*args)`` as JSON text, computed and encoded in a worker process. ``long``: the
+        work grows with what is asked; it is first read, refused or answered among the short
+        requests, and moved to the long lane when its estimate is beyond
+        :data:`coinflight.web.endpoints.SHORT_SECONDS`, so that short requests never wait
+        behind long ones."""
+        from coinflight.web.endpoints import LongWork
+
         if not running:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
-        return Response(await running[0].run(_encoded, fn, *args, long=long), media_type=JSON)
+        runner = running[0]
+        if not long:
+            return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
+        try:
+            text = await runner.run(_encoded, fn, *args, True)
+        except LongWork:
+            text = await runner.run(_encoded, fn, *args, False, long=True)
+        return Response(text, media_type=JSON)
 
     @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(

@@ -1,10 +1,12 @@
 """Every request's work bounded in time: computed in pools of worker processes, answered within
 the time limit or refused with one line, while the server keeps serving.
 
-Two lanes, each its own pool and its own bounded slots: *long* requests (those whose work grows
-with what is asked: a probability, a map, a Monte Carlo check) and *short* ones (one toss, a
-closed form, a dataset). A short request never waits behind long ones, so the page keeps
-answering while every worker of the long lane computes for its full time limit.
+Two lanes, each its own pool and its own bounded slots: *long* requests (a probability, a map,
+a Monte Carlo check whose estimated work is beyond
+:data:`coinflight.web.endpoints.SHORT_SECONDS`) and *short* ones (one toss, a closed form, a
+dataset, and the small probabilities and maps). A short request never waits behind long ones,
+so the page keeps answering while every worker of the long lane computes for its full time
+limit.
 
 A request over its time limit has its worker process ended (and replaced), so abandoned work
 never goes on taking the machine from the requests after it; a thread could not be stopped.
