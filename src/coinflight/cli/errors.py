@@ -124,21 +124,15 @@ def one_line_warnings() -> Iterator[None]:
 def os_error_line(exc: OSError) -> str:
     """The one line of an error of the operating system: ``PATH: reason`` (and the second
     path, for a rename), long paths shortened in their middle."""
+    from coinflight._validation import shortened as shorten
+
     reason = exc.strerror or str(exc) or type(exc).__name__
     if exc.filename is None:
         return _one_line(reason)
-    line = f"{shorten(os.fsdecode(exc.filename))}: {reason}"
+    line = f"{shorten(os.fsdecode(exc.filename), 300)}: {reason}"
     if exc.filename2 is not None:
-        line += f" ({shorten(os.fsdecode(exc.filename2))})"
+        line += f" ({shorten(os.fsdecode(exc.filename2), 300)})"
     return _one_line(line)
-
-
-def shorten(text: str, limit: int = 300) -> str:
-    """``text`` whole up to ``limit`` characters, else its start and end around an ellipsis."""
-    if len(text) <= limit:
-        return text
-    keep = (limit - 1) // 2
-    return f"{text[:keep]}…{text[len(text) - keep :]}"
 
 
 def _one_line(message: str) -> str:

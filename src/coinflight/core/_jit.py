@@ -27,9 +27,10 @@ _UNPARSED = re.compile(
 )
 
 
-def _shown(value: str, limit: int = 80) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[: limit - 1] + "…"
+def _shown(value: str) -> str:
+    from coinflight._validation import shortened
+
+    return repr(shortened(value, 80))
 
 
 def check_environment(environ: Mapping[str, str] = os.environ) -> None:

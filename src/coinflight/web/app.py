@@ -16,6 +16,7 @@ from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel
 
 from coinflight import __version__
+from coinflight._validation import shortened as shortened_text
 from coinflight.queries.encoding import json_text
 from coinflight.web import params as p
 from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
@@ -342,22 +343,15 @@ around an ellipsis); the whole line is at most :data:`DETAIL_LIMIT`."""
 DETAIL_LIMIT = 1000
 
 
-def _short(text: str, limit: int) -> str:
-    if len(text) <= limit:
-        return text
-    keep = (limit - 1) // 2
-    return f"{text[:keep]}…{text[len(text) - keep :]}"
-
-
 def shortened(message: str, values: Sequence[str]) -> str:
     """``message`` on one line, each of ``values`` (the request's names and values) longer
     than :data:`ECHO_LIMIT` in it shortened, as typed or quoted, and the line cut to
     :data:`DETAIL_LIMIT` (a client's 100 kB value is not sent back to it)."""
     for value in sorted(set(values), key=len, reverse=True):
         if len(value) > ECHO_LIMIT:
-            short = _short(value, ECHO_LIMIT)
+            short = shortened_text(value, ECHO_LIMIT)
             message = message.replace(repr(value), repr(short)).replace(value, short)
-    return _short(" ".join(message.split()), DETAIL_LIMIT)
+    return shortened_text(" ".join(message.split()), DETAIL_LIMIT)
 
 
 def _errors(app: FastAPI) -> None:
