@@ -148,3 +148,14 @@ def test_serve_refuses_a_bad_numba_variable_before_it_starts():
     run = _run({"NUMBA_NUM_THREADS": "abc"}, "serve", "--port", "0")
     assert run.returncode == 2, run.stderr
     assert "NUMBA_NUM_THREADS='abc'" in run.stderr and run.stdout == ""
+
+
+def test_a_matplotlib_backend_matplotlib_does_not_know_is_one_line_naming_it(tmp_path):
+    run = _run({"MPLBACKEND": "nonsense"}, "plot", "toss", "--flight-time", "0.5", "--out",
+               str(tmp_path / "x.png"))  # fmt: skip
+    assert run.returncode == 2 and run.stdout == "", run.stderr
+    assert run.stderr == (
+        "coinflight: error: the environment variable MPLBACKEND='nonsense' is not a backend "
+        "matplotlib knows (e.g. agg); correct it, or unset it\n"
+    )
+    assert not (tmp_path / "x.png").exists()
