@@ -295,6 +295,16 @@ def test_a_checkpoint_coinflight_did_not_write_is_refused_naming_it(
         assert all(0 <= float(r["p_heads"]) <= 1 for r in csv.DictReader(f))
 
 
+def test_a_checkpoint_longer_than_any_sweep_is_refused(tmp_path, monkeypatch):
+    from coinflight.probability.checkpoint import Checkpoint
+
+    path = tmp_path / "c.jsonl"
+    sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=path)
+    monkeypatch.setattr(sweep_module, "MAX_ROWS", 2)
+    with pytest.raises(ValueError, match=r"holds more rows than a sweep has \(2\)"):
+        Checkpoint(path, "monte-carlo", 1000, 1).read()
+
+
 def test_a_checkpoint_row_out_of_range_is_refused_even_with_its_checksum(tmp_path):
     """Ranges are checked on read, beyond the checksum (a row rewritten with a fresh one)."""
     from coinflight.probability.checkpoint import Checkpoint, _checksum

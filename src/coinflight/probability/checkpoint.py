@@ -182,10 +182,14 @@ class Checkpoint:
                 f"belongs to another run ({run})",
                 "rerun with that method, n and seed to resume it, or start over with --fresh",
             )
+        from coinflight.probability.sweep import MAX_ROWS
+
         self._good_end = len(first)
         number = 1
         while line := f.readline(MAX_LINE):
             number += 1
+            if number > MAX_ROWS + 1:
+                raise _refuse(self.path, f"holds more rows than a sweep has ({MAX_ROWS:,})")
             if not line.endswith(b"\n"):
                 if len(line) < MAX_LINE:
                     break  # the last line, cut short by a kill: its row is computed again

@@ -123,6 +123,10 @@ class Runner:
             raise
         future.add_done_callback(lambda _: lane.slots.release())
         waiting = asyncio.wrap_future(future)
+        over = Overloaded(
+            f"the request ran over the server's time limit of {self.time_limit:g} s; "
+            "ask for less work (a smaller n, a coarser resolution)"
+        )
         try:
             done, _ = await asyncio.wait({waiting}, timeout=self.time_limit)
             if not done:
@@ -131,11 +135,10 @@ class Runner:
                         f"the server is busy: the request waited {self.time_limit:g} s for a "
                         "worker and did not start; try again in a few seconds"
                     )
-                raise Overloaded(
-                    f"the request ran over the server's time limit of {self.time_limit:g} s; "
-                    "ask for less work (a smaller n, a coarser resolution)"
-                )
+                raise over
             return waiting.result()
+        except TimeoutError:  # pebble's own limit, counted from the start, reached first
+            raise over from None
         except ProcessExpired as exc:
             raise Overloaded(
                 f"the worker computing the request ended unexpectedly (exit code "
