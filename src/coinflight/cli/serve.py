@@ -29,7 +29,8 @@ TimeLimit = Annotated[
         "--time-limit",
         parser=number,
         metavar="S",
-        help="Seconds one request may compute before it is answered 503.",
+        help="Seconds one request may take, waiting for a worker included, before it is "
+        "answered 503.",
     ),
 ]
 
