@@ -9,20 +9,27 @@ import subprocess
 import sys
 from pathlib import Path
 
-from coinflight._compiling import KERNEL_MODULES, notice
+from coinflight._compiling import KERNEL_MODULES, NUMBA_GATE, notice
 
 CORE = Path(__file__).resolve().parents[1] / "src" / "coinflight" / "core"
 
 
-def test_every_module_of_numba_kernels_is_watched():
-    """A kernel module not in KERNEL_MODULES would compile silently (a rewrite adding one must
-    list it)."""
-    uses_numba = {
-        f"coinflight.core.{p.stem}"
-        for p in CORE.glob("*.py")
-        if re.search(r"^\s*(from numba\b|import numba\b)", p.read_text(encoding="utf-8"), re.M)
+def test_every_module_of_numba_kernels_is_named_and_numba_has_one_gate():
+    """The listener is registered when numba's one gate (core._jit) is imported; every module
+    that compiles kernels through it is named in KERNEL_MODULES (its words in the notice)."""
+    sources = {p.stem: p.read_text(encoding="utf-8") for p in CORE.glob("*.py")}
+    imports_numba = {
+        name
+        for name, text in sources.items()
+        if re.search(r"^\s*(from|import) numba\b", text, re.M)
     }
-    assert uses_numba == set(KERNEL_MODULES)
+    assert f"coinflight.core.{imports_numba.pop()}" == NUMBA_GATE and not imports_numba
+    kernels = {
+        f"coinflight.core.{name}"
+        for name, text in sources.items()
+        if re.search(r"^from coinflight\.core\._jit import", text, re.M)
+    }
+    assert kernels == set(KERNEL_MODULES)
 
 
 def _python(code: str, **env: str) -> subprocess.CompletedProcess[str]:

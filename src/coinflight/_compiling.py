@@ -11,7 +11,8 @@ kernel (:data:`KERNEL_MODULES`) in a process prints, at once::
     computing, longer on a busy machine); numba caches them, so this happens once
 
 :func:`watch` (called by ``import coinflight``) arranges this without importing numba: the
-listener is registered when a kernel module (:data:`KERNEL_MODULES`) is first imported.
+listener is registered when :mod:`coinflight.core._jit`, the one module that imports numba, is
+first imported (by a kernel module, :data:`KERNEL_MODULES`).
 ``make demo`` leaves the table landing's kernels compiled.
 """
 
@@ -83,11 +84,16 @@ def listen() -> None:
     event.register("numba:compile", _Compiling())
 
 
+NUMBA_GATE = "coinflight.core._jit"
+"""The module through which every kernel module imports numba."""
+
+
 class _KernelImports(importlib.abc.MetaPathFinder):
-    """Registers the listener when a kernel module is about to be imported; finds nothing."""
+    """Registers the listener when numba's gate (or a kernel module) is about to be imported;
+    finds nothing itself."""
 
     def find_spec(self, fullname: str, path: Sequence[str] | None, target: Any = None) -> None:
-        if fullname in KERNEL_MODULES:
+        if fullname == NUMBA_GATE or fullname in KERNEL_MODULES:
             listen()
         return None
 
