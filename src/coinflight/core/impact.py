@@ -775,9 +775,12 @@ def simultaneous_point(
     *The law.* The impulse acts at the centre of the normal impulses that the two points take
     in the simultaneous frictionless Newton impact (:func:`newton_share`, the share λ of b),
     and the impact there is Stronge's, with friction (:func:`contact_impulse`). Without
-    friction this is exactly the two-contact Newton impact (Glocker & Pfeiffer's set-valued
-    law): two parallel normal impulses are one impulse at their centre, and there both points
-    leave with u⁺ = −e u⁻ (Stronge's and Newton's laws agree without friction). A flat (or
+    friction, at full simultaneity (w = 1) and with both points approaching, this is exactly
+    the two-contact Newton impact (Glocker & Pfeiffer's set-valued law; tested against an
+    independent solution): two parallel normal impulses are one impulse at their centre, and
+    both points leave with u⁺ = −e u⁻ (Stronge's and Newton's laws agree without friction).
+    (With b receding before the impact, the LCP gives it no restitution, u_b⁺ = 0 where it
+    pushes, and the single impact at the centre only approximates that.) A flat (or
     upright) coin landing without spin takes its impulse straight below its centre of mass:
     it bounces flat, at e times its approach speed, and no spin is made, where the sequential
     rigid impacts at its two ends set it spinning (the falling-rod paradox: Stoianovici &
