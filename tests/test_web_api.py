@@ -65,7 +65,7 @@ def in_process(monkeypatch):
     monkeypatch cannot reach), for tests that make the work fail the test if called."""
     from coinflight.web.runner import Runner
 
-    async def here(_runner: Runner, fn, *args):
+    async def here(_runner: Runner, fn, *args, long=False):
         return fn(*args)
 
     monkeypatch.setattr(Runner, "run", here)
@@ -396,8 +396,15 @@ def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
 
 def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
     """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
-    got = client.get("/api/data?interval=wilson&psi_sd=5").json()
-    assert got == cli_json("data", "--interval", "wilson", "--psi-sd", "5")
+    got = client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3").json()
+    assert got == cli_json(
+        "data", "--interval", "wilson", "--psi-sd", "5", "--seed", "7", "--repeats", "3"
+    )
+    assert got["heterogeneity"]["seed"] == 7 and got["heterogeneity"]["repeats"] == 3
+    # the held-out check's estimated work against the server's budget, before any fit
+    assert api_error(client, "/api/data?folds=48&repeats=1000").startswith(
+        "a held-out check of 48 people in 48 folds × 1000 splits is 960 s of estimated work"
+    )
     assert (got["flips"], got["same"], got["plot"]) == (350_757, 178_078, [])
     assert api_error(client, "/api/data?psi_sd=-1") == cli_error("data", "--psi-sd", "-1")
     # no request reads a file: --counts FILE is the command line's alone
@@ -420,16 +427,18 @@ def test_a_request_over_its_time_limit_is_503_and_its_worker_is_ended():
     # Checked without a clock (the machine is shared): the 503 is the runner's timeout at the
     # limit (asyncio.wait_for), the worker's process id changes (ended mid-work, not after it),
     # and the next request is answered, within its own 3 s limit waiting included.
+    import functools
     import os
 
     with TestClient(create_app(time_limit=3, workers=1)) as c:
-        worker = c.portal.call(c.app.state.runner.run, os.getpid)
+        pid = functools.partial(c.app.state.runner.run, os.getpid, long=True)
+        worker = c.portal.call(pid)
         detail = api_error(c, slow, status=503)
         assert detail == (
             "the request ran over the server's time limit of 3 s; ask for less work "
             "(a smaller n, a coarser resolution)"
         )
-        assert c.portal.call(c.app.state.runner.run, os.getpid) != worker  # ended, replaced
+        assert c.portal.call(pid) != worker  # ended, replaced
         assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
         assert c.get("/api/bias?psi=80").status_code == 200
 
@@ -481,6 +490,105 @@ def test_every_worker_taken_is_503_busy_at_once():
     assert asyncio.run(scenario()) == (
         "the server is busy (every worker is taken); try again in a few seconds"
     )
+
+
+def test_long_requests_have_their_own_lane_and_unstarted_work_is_busy_not_over_time():
+    """A short request runs while every long worker is taken; a long request still waiting
+    for a worker when its time is up is "busy" (it never ran, and never will: it is dropped),
+    the one that ran is "over the time limit"."""
+    import asyncio
+    import os
+
+    from coinflight.web.runner import Overloaded, Runner
+
+    async def outcome(coroutine) -> str:
+        try:
+            await coroutine
+        except Overloaded as exc:
+            return str(exc)
+        return "answered"
+
+    async def scenario() -> list[str]:
+        runner = Runner(workers=1, time_limit=2, backlog=2)
+        await runner.start()
+        # three at once: the first runs, the next two wait for the one worker; the last of
+        # them cannot start before its time is up (the one before it holds the worker)
+        three = [
+            asyncio.ensure_future(outcome(runner.run(time.sleep, 30.0, long=True)))
+            for _ in range(3)
+        ]
+        await asyncio.sleep(0.2)  # each has taken its slot
+        full = await outcome(runner.run(os.getpid, long=True))
+        short = await outcome(runner.run(os.getpid))  # its own lane: answered at once
+        assert not any(f.done() for f in three)
+        first, second, third = [await f for f in three]
+        assert second in (first, third)
+        assert isinstance(await runner.run(os.getpid, long=True), int)  # the lane came back
+        runner.close()
+        return [first, third, full, short]
+
+    assert asyncio.run(scenario()) == [
+        "the request ran over the server's time limit of 2 s; ask for less work "
+        "(a smaller n, a coarser resolution)",
+        "the server is busy: the request waited 2 s for a worker and did not start; try again "
+        "in a few seconds",
+        "the server is busy with other long requests (every worker for them is taken); try "
+        "again in a few seconds",
+        "answered",
+    ]
+
+
+def test_requests_whose_estimated_work_is_small_stay_in_the_short_lane():
+    """The triage (coinflight.web.endpoints.triage): read and refused in the short lane, then
+    moved to the long one when the estimate is beyond SHORT_SECONDS or unknown."""
+    from coinflight.queries.values import AirArgs, CoinArgs, DistArgs, TableArgs
+    from coinflight.web import endpoints
+
+    coin, hand, air = CoinArgs(), TableArgs("hand", None, None, None, None), AirArgs(None, None)
+    table = TableArgs("table", None, None, None, None)
+
+    def tosses(wx, wy="0", wz="0"):
+        return DistArgs(wx, wy, wz, "0.5:1", None, "heads", 9.81)
+
+    cheap = endpoints.probability(coin, tosses("60:90"), hand, air, {"method": "exact"}, 30, True)
+    assert 0 < cheap["p_heads"] < 1
+    slow = tosses("normal:60,0.01", "-60:60", "-40:40")  # 17 s by exact's own estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, slow, hand, air, {"method": "exact"}, 30, True)
+    many = {"method": "monte-carlo", "n": 100_000_000}  # 4 s by the estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, tosses("60:90"), hand, air, many, 30, True)
+    with pytest.raises(ValueError, match="more than the limit"):  # refused where it is read
+        endpoints.probability(coin, tosses("60:90"), hand, air, {**many, "n": 10**9}, 30, True)
+    assert endpoints.basin(coin, {"resolution": "800"}, hand, None, False, 30, True)["face"]
+    with pytest.raises(endpoints.LongWork):
+        endpoints.basin(coin, {"resolution": "400"}, table, None, False, 30, True)
+    with pytest.raises(endpoints.LongWork):
+        endpoints.bias(coin, 80.0, None, None, 10_000_000, 1, 30, True)
+    assert endpoints.bias(coin, 80.0, None, None, 1000, 1, 30, True)["p_same_side"] > 0.5
+
+
+def test_the_hosts_a_server_answers_and_errors_repeat_little_of_a_request():
+    from coinflight.web.app import DETAIL_LIMIT, shortened
+    from coinflight.web.server import allowed_hosts
+
+    assert allowed_hosts("127.0.0.1") == ["127.0.0.1", "localhost", "[::1]"]
+    assert allowed_hosts("::1") == ["[::1]", "localhost", "127.0.0.1"]
+    assert allowed_hosts("192.168.1.20") == ["192.168.1.20"]
+    assert allowed_hosts("0.0.0.0") == ["*"]
+    assert allowed_hosts("0.0.0.0", ["Coins.example.org"]) == ["coins.example.org"]
+    assert allowed_hosts("127.0.0.1", ["*"])[0] == "*"
+    assert allowed_hosts("127.0.0.1", ["*.example.org"])[0] == "*.example.org"
+    for bad in ("", "a/b", "a b", "x*.org", "*example.org"):
+        with pytest.raises(ValueError, match="--allowed-host"):
+            allowed_hosts("127.0.0.1", [bad])
+    assert cli_error("serve", "--allowed-host", "a b").startswith("--allowed-host 'a b'")
+    with TestClient(create_app(allowed_hosts=["127.0.0.1"]), base_url="http://evil.test") as c:
+        assert c.get("/api/toss?flight_time=0.7").status_code == 400
+    value = "7" * 100_000
+    line = shortened(f"--omega {value!r}: no; also {value}", ["omega", value])
+    assert len(line) < 600 and line.count("…") == 2 and "7" * 201 not in line
+    assert len(shortened("z" * 10_000, [])) == DETAIL_LIMIT - 1
 
 
 def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
@@ -669,6 +777,7 @@ ENDPOINTS = {
     },
     "data": {
         "interval": ["exact", "wilson"], "psi_sd": ["0", "5", "80"], "dataset": ["bartos2023"],
+        "seed": ["1", "-5"], "folds": ["2", "5", "49"], "repeats": ["1", "3", "0"],
     },
 }  # fmt: skip
 

@@ -11,7 +11,10 @@ The standard streams are handled as command-line tools handle them:
   before anything is computed;
 - Ctrl-C (SIGINT): ``coinflight: interrupted`` and exit code 130 (128 + SIGINT); outputs being
   written are abandoned, their staging folders removed (:mod:`coinflight._files`);
-- standard error that cannot be written: the exit code alone tells.
+- standard error that cannot be written: the exit code alone tells;
+- any other error of the operating system (a file name over the system's limit, a folder
+  where a file was expected, no permission, a full disk): one line naming the file and the
+  system's reason, exit code 2 (:func:`os_error_line`).
 """
 
 from __future__ import annotations
@@ -90,9 +93,11 @@ class OneLineErrors(TyperGroup):
         except KeyboardInterrupt:
             interrupted()
         except OSError as exc:
-            if not is_stdout_failure(exc):
+            if is_stdout_failure(exc):
+                stdout_failed(exc)
+            if os.environ.get("COINFLIGHT_DEBUG"):
                 raise
-            stdout_failed(exc)
+            fail(os_error_line(exc))
         except typer.TyperException as exc:
             fail(_one_line(exc.format_message()), exc.exit_code)
         except typer.Abort:
@@ -114,6 +119,20 @@ def one_line_warnings() -> Iterator[None]:
 
     with heard(lambda text: say(f"coinflight: warning: {text}")):
         yield
+
+
+def os_error_line(exc: OSError) -> str:
+    """The one line of an error of the operating system: ``PATH: reason`` (and the second
+    path, for a rename), long paths shortened in their middle."""
+    from coinflight._validation import shortened as shorten
+
+    reason = exc.strerror or str(exc) or type(exc).__name__
+    if exc.filename is None:
+        return _one_line(reason)
+    line = f"{shorten(os.fsdecode(exc.filename), 300)}: {reason}"
+    if exc.filename2 is not None:
+        line += f" ({shorten(os.fsdecode(exc.filename2), 300)})"
+    return _one_line(line)
 
 
 def _one_line(message: str) -> str:

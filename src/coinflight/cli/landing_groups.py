@@ -29,9 +29,9 @@ _SPREAD = (
 ENDING_HELP = (
     "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
     "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
-    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 3,000 "
-    "landings a second on 2 cores (vigorous tosses, e 0.5, mu 0.3; 2026-11-24) instead of "
-    "about 100,000, and its edge rates depend on the unmeasured resistances and corner radius."
+    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
+    "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
+    "corner radius."
 )
 """--ending's help (command line and sweep)."""
 

@@ -333,7 +333,7 @@ Out = Annotated[
         "n, seed and version in its metadata) or FILE.csv (with FILE.csv.json). Resumable: "
         "finished rows are kept in FILE.partial.jsonl until FILE is written; run the same "
         "command again after a stop (Ctrl-C, a failure, a killed job) and only the missing rows "
-        f"are computed (same options, method, n and seed). {OUTPUT_HELP}",
+        f"are computed (same options, method, n and seed; --fresh to start over). {OUTPUT_HELP}",
     ),
 ]
 
@@ -451,6 +451,16 @@ def sweep(
     threads: Threads = None,
     cluster: ClusterOptions,
     out: Out,
+    fresh: Annotated[
+        bool,
+        option(
+            "--fresh",
+            metavar=None,
+            panel=OUTPUT_PANEL,
+            help="Start over: replace FILE.partial.jsonl (the rows of an earlier run of this "
+            "table) instead of resuming from it.",
+        ),
+    ] = False,
     quiet: Quiet = False,
     json_output: JsonFlag = False,
 ) -> None:
@@ -529,7 +539,8 @@ def sweep(
     inputs = {
         _flag(k): x
         for k, x in ctx.params.items()
-        if x not in (None, []) and k not in ("quiet", "json_output", "out", "scheduler", "workers")
+        if x not in (None, [])
+        and k not in ("quiet", "json_output", "out", "fresh", "scheduler", "workers")
     }
     with cluster.executor(threads) as executor, progress_bar(len(cases), "sweep", quiet) as bar:
         results, files = run_sweep(
@@ -539,6 +550,7 @@ def sweep(
             n,
             seed,
             inputs=inputs,
+            fresh=fresh,
             executor=executor,
             threads=threads,
             progress=bar,

@@ -59,9 +59,9 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit, prange
 from numpy.typing import NDArray
 
+from coinflight.core._jit import njit, prange
 from coinflight.core.contact import CONTACT_ENDING, Contact
 from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (

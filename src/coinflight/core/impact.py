@@ -78,7 +78,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
+from coinflight.core._jit import njit
 
 Vec = tuple[float, float, float]
 _Matrix = tuple[float, float, float, float, float, float]

@@ -370,24 +370,17 @@ def result_from_dict(data: Mapping[str, Any]) -> ProbabilityResult:
     return ProbabilityResult(**d)
 
 
-def read_checkpoint(path: str | os.PathLike[str]) -> dict[str, ProbabilityResult]:
-    """The finished rows of a checkpoint, by key ({} when there is none). A line that does not
-    parse (the last one of a run killed while writing it) is skipped: that row is recomputed."""
-    out: dict[str, ProbabilityResult] = {}
-    try:
-        with open(path, encoding="utf-8") as f:
-            lines = f.readlines()
-    except FileNotFoundError:
-        return out
-    except OSError as exc:
-        raise ValueError(f"cannot read the checkpoint {os.fspath(path)}: {exc.strerror}") from None
-    for line in lines:
-        try:
-            entry = json.loads(line)
-            out[str(entry["key"])] = result_from_dict(entry["result"])
-        except (ValueError, KeyError, TypeError):
-            continue
-    return out
+def read_checkpoint(
+    path: str | os.PathLike[str], method: str, n: int | None = None, seed: int | None = None
+) -> dict[str, ProbabilityResult]:
+    """The finished rows, by key, of the checkpoint of a sweep by ``method`` with ``n`` and
+    ``seed`` ({} when there is none). A file that such a run did not write (not a checkpoint,
+    another run's, edited, damaged, a symbolic link) is refused with a ValueError naming it
+    (:class:`coinflight.probability.checkpoint.Checkpoint`); a last line cut short by a killed
+    run is skipped and that row computed again."""
+    from coinflight.probability.checkpoint import Checkpoint
+
+    return Checkpoint(path, method, n, seed).read()
 
 
 def sweep(
@@ -400,6 +393,7 @@ def sweep(
     threads: int | None = None,
     progress: Callable[[int], None] | None = None,
     checkpoint: str | os.PathLike[str] | None = None,
+    fresh: bool = False,
 ) -> SweepResults:
     """P(heads), P(same side), P(edge) for each case, each row an independent task.
 
@@ -425,7 +419,13 @@ def sweep(
     checkpoint : path, optional
         A file of finished rows (JSON lines, one per row, keyed by :func:`row_key`): rows found
         in it are not recomputed, and every row computed is appended as it finishes, so a sweep
-        that is stopped (Ctrl-C, a failure, a killed process) resumes where it stopped.
+        that is stopped (Ctrl-C, a failure, a killed process) resumes where it stopped. Its
+        first line names the run (method, n, seed) and each row carries a checksum: a file
+        that is not the checkpoint of this run, or was edited, or is a symbolic link, is
+        refused before any work (ValueError naming it), never read, followed or appended to.
+    fresh : bool
+        Start over: replace the file at ``checkpoint`` (a regular file or a link, never what
+        a link points to) instead of resuming from it.
 
     Returns
     -------
@@ -463,26 +463,23 @@ def sweep(
     check_sweep_work(items, method, n)
     inputs = [case.inputs() for case in items]  # once a row: its key and its stream
     keys = [_key(x, method, n, the_seed) for x in inputs]
-    done = {} if checkpoint is None else read_checkpoint(checkpoint)
+    from coinflight.probability.checkpoint import Checkpoint
+
+    log = None if checkpoint is None else Checkpoint(checkpoint, method, n, the_seed)
+    done = {} if log is None else log.read(fresh=fresh)
     results: list[ProbabilityResult | None] = [done.get(k) for k in keys]
     reused = sum(r is not None for r in results)
     if progress is not None and reused:
         progress(reused)
     todo = [i for i, r in enumerate(results) if r is None]
     tasks = [(items[i].dist, items[i].model, method, n, the_seed, _stream(inputs[i])) for i in todo]
-    log = None
-    if checkpoint is not None and todo:
-        Path(checkpoint).parent.mkdir(parents=True, exist_ok=True)
-        log = open(checkpoint, "a", encoding="utf-8")  # noqa: SIM115 (closed below)
     try:
         with executor_or_threads(executor, threads) as ex:
             for j, result in completed(ex, _row_task, tasks, [1] * len(tasks)):
                 i = todo[j]
                 results[i] = result
                 if log is not None:
-                    entry = {"key": keys[i], "result": result.to_dict()}
-                    log.write(json.dumps(entry) + "\n")
-                    log.flush()
+                    log.append(keys[i], result)
                 if progress is not None:
                     progress(1)
     finally:
@@ -610,6 +607,7 @@ def run_sweep(
     seed: SeedLike = None,
     *,
     inputs: Mapping[str, Any] | None = None,
+    fresh: bool = False,
     **runner: Any,
 ) -> tuple[SweepResults, list[Path]]:
     """:func:`sweep` into the table ``out`` (:func:`write_table`), resumable.
@@ -617,19 +615,21 @@ def run_sweep(
     The finished rows are kept in ``out`` + :data:`CHECKPOINT_SUFFIX` while the sweep runs; a
     rerun with the same cases, method, n and seed computes only the rows missing from it. The
     table is written whole at the end, then the checkpoint removed; if anything fails, no table
-    is written and the checkpoint stays for the next run. ``runner``: ``executor``,
-    ``threads``, ``progress``.
+    is written and the checkpoint stays for the next run. A file in the checkpoint's place
+    that this run did not write is refused (see :func:`sweep`); ``fresh=True`` replaces it
+    and starts over. ``runner``: ``executor``, ``threads``, ``progress``.
     """
     from coinflight._files import check_all_writable
+    from coinflight.probability.checkpoint import Checkpoint
 
     files = table_files(out)
     if files[0].suffix.lower() == ".parquet":
         _require_pyarrow()
     check_all_writable(files)
     checkpoint = Path(os.fspath(out) + CHECKPOINT_SUFFIX)
-    results = sweep(cases, method, n, seed, checkpoint=checkpoint, **runner)
+    results = sweep(cases, method, n, seed, checkpoint=checkpoint, fresh=fresh, **runner)
     written = write_table(results, out, inputs)
-    checkpoint.unlink(missing_ok=True)
+    Checkpoint(checkpoint, results.method, results.n, results.seed).remove()
     return results, written
 
 
