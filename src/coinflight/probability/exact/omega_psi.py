@@ -466,10 +466,13 @@ class _PolarPlan:
                 self.flat = True
                 return
             # Along Ω⊥ = p: t = A / Ω⊥ from A's bottom to where A reaches its top (or Ω⊥).
+            if ax.lo >= p.value:  # ψ ≤ 45° throughout: never turns over
+                self.empty = True
+                return
             t_lo, t_hi = ax.lo / p.value, min(ax.hi, p.value) / p.value
             curve = _box(1, np.array([p.value]))
             om_hi = p.value * math.sqrt(1.0 + t_hi * t_hi)
-            fixed_cuts = ax.points / p.value
+            fixed_cuts = ax.points[ax.points < p.value] / p.value
         elif ax.hi <= NEGLIGIBLE_AXIAL * p.lo or ax.hi <= _UNDERFLOW * p.hi:
             # ω_z = 0, or so small beside Ω⊥ that Ω and the bands are those of ω_z = 0 to
             # rounding (a near-zero Ω⊥ below it holds no measurable probability).
@@ -484,7 +487,7 @@ class _PolarPlan:
             t_lo, t_hi = ax.value / p.hi, ax.value / max(p.lo, ax.value)
             curve = _box(2, np.array([ax.value]))
             om_hi = math.hypot(p.hi, ax.value)
-            fixed_cuts = ax.value / p.graded[p.graded > 0.0]
+            fixed_cuts = ax.value / p.graded[p.graded >= ax.value]
         else:
             self.kind = "2-D"
             # t from where the box's top A meets the largest Ω⊥ to where its bottom meets
