@@ -199,7 +199,7 @@ def test_exact_narrow_axial_range_tends_to_the_fixed_axial_spin(lo, span, zc, t1
     if narrow_z.high - narrow_z.low < NARROWEST * narrow_z.high:
         # Below 1e-9 of its size the (Ω, ψ) rule refuses, naming the spin and the way on
         # (its densities would keep too few digits): a refusal, never a number.
-        with pytest.raises(ValueError, match="cannot resolve omega_z = .* give omega_z one value"):
+        with pytest.raises(ValueError, match=r"cannot resolve omega_z = .* give omega_z one value"):
             _exact(_dist(x, t, z=narrow_z))
         return
     narrow, err = _exact(_dist(x, t, z=narrow_z))
