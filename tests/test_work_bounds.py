@@ -675,3 +675,62 @@ def test_reported_command_lines_end_in_one_line(args, expected, tmp_path, monkey
     monkeypatch.chdir(tmp_path)
     assert expected in one_line_error(*args)
     assert not list(tmp_path.iterdir())  # nothing written
+
+
+def _exact_plan_work() -> list[tuple[object, str]]:
+    """The exact method's integrals and the (Ω, ψ) rule's own allocations: its band-edge
+    curves and its panels (the issue's 20 s and 1.7 GB before the refusal)."""
+    from _work import exact_work
+    from coinflight.probability.exact import omega_psi
+
+    return [*exact_work(), (omega_psi, "_edges"), (omega_psi, "_panels")]
+
+
+@pytest.mark.parametrize(
+    "omega_x, omega_z",
+    [
+        ("normal:0,1e6", 0.0),  # the issue's line: ω_z = 0, the one-spin (diameter) plan
+        ("normal:0,1e6", 5.0),  # a fixed axial spin: the plan along A = const
+        ("normal:0,1e6", (0.0, 10.0)),  # the 2-D plan
+        ("0:1e6", 3.0),
+    ],
+)
+def test_exact_omega_psi_refuses_from_a_count_before_building_its_plan(omega_x, omega_z):
+    # `probability -T 0.6:0.9 --omega-x normal:0,1e6` refused after 20 s and 1.7 GB: the
+    # plan's band edges and graded mesh were built (a Python loop over 10⁷ points) before the
+    # bound. Now the edges are counted and refused first: neither they nor the panels are
+    # built, and the memory peak stays small.
+    from coinflight.model.distributions import Normal
+
+    x = (
+        Normal(0.0, float(omega_x.split(",")[1]))
+        if omega_x.startswith("normal")
+        else Uniform(*map(float, omega_x.split(":")))
+    )
+    z = Uniform(*omega_z) if isinstance(omega_z, tuple) else omega_z
+    dist = TossDistribution(omega_x=x, omega_y=0, omega_z=z, flight_time=Uniform(0.6, 0.9))
+    refused_cheaply(
+        lambda: estimate(dist, "exact"),
+        r"the exact \(Ω, ψ\) rule( over [12] ranged spins is .* integrand points|'s search "
+        r"for where band edges cross the spin box is .* curve samples)",
+        _exact_plan_work(),
+    )
+    # and its time estimate (for sweeps and the web's share of its limit) allocates nothing
+    from coinflight.probability.exact import estimated_seconds
+
+    with pytest.MonkeyPatch.context() as patch:
+        never_run(patch, _exact_plan_work())
+        tracemalloc.start()
+        try:
+            seconds = estimated_seconds(dist)
+            _, peak = tracemalloc.get_traced_memory()
+        finally:
+            tracemalloc.stop()
+    assert seconds is None or seconds > 30.0  # over the rule's half-minute budget
+    assert peak < 16 * MB
+
+
+def test_exact_refusal_on_the_command_line_runs_no_plan(monkeypatch):
+    never_run(monkeypatch, _exact_plan_work())
+    line = one_line_error("probability", "-T", "0.6:0.9", "--omega-x", "normal:0,1e6")
+    assert line.startswith("the exact (Ω, ψ) rule over 1 ranged spins is 85,900,000 integrand")

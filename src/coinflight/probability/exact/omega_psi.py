@@ -37,8 +37,9 @@ MAX_POLAR_POINTS = 4e7
 one, bounded before its nodes are allocated (about half a minute on the 2-core machine)."""
 POLAR_POINTS_PER_SECOND = 3e6
 """Integrand points the (Ω, ψ) rule evaluates a second (2-core machine)."""
-MAX_CROSSING_SAMPLES = 5e7
-"""Most curve-pair samples the search for the outer cuts of the (Ω, ψ) rule may take."""
+MAX_CROSSING_SAMPLES = 1e8
+"""Most curve-pair samples the search for the outer cuts of the (Ω, ψ) rule may take (each
+pair sampled twice over, in √(1 − t) and in geometric steps: :func:`_crossings`)."""
 _CROSSING_SAMPLES = 257
 """Samples along t = cot ψ (equal steps in √(1 − t), and as many in geometric steps) on
 which each pair of curves is searched for a crossing (a sign change, then bisection)."""
@@ -108,17 +109,21 @@ def _graded(pts: np.ndarray, factor: float = 4.0) -> np.ndarray:
         return p
     gaps = np.diff(p)
     near = np.minimum(np.r_[np.inf, gaps], np.r_[gaps, np.inf])
-    extra: list[float] = []
-    for k, x in enumerate(p):
-        for side, gap in (
-            (-1.0, gaps[k - 1] if k else 0.0),
-            (1.0, gaps[k] if k < gaps.size else 0.0),
-        ):
-            d = factor * near[k]
-            while d < 0.5 * gap:
-                extra.append(x + side * d)
-                d *= factor
-    return np.unique(np.concatenate((p, extra)))
+    d0 = factor * near
+    out = [p]
+    for side, gap in ((-1.0, np.r_[0.0, gaps]), (1.0, np.r_[gaps, 0.0])):
+        half = 0.5 * gap
+        # How many of d0·factor^j (j = 0, 1, …) lie below half the gap: one more than the
+        # logarithm says, the surplus dropped below (so that rounding loses none).
+        with np.errstate(divide="ignore", invalid="ignore"):
+            logs = np.log(half / d0) / math.log(factor)
+        count = np.where(d0 < half, np.floor(np.nan_to_num(logs)) + 2.0, 0.0).astype(np.int64)
+        k = np.repeat(np.arange(p.size), count)
+        j = np.arange(k.size) - np.repeat(np.cumsum(count) - count, count)
+        d = d0[k] * factor ** j.astype(float)
+        ok = d < half[k]
+        out.append(p[k[ok]] + side * d[ok])
+    return np.unique(np.concatenate(out))
 
 
 def _folded(d: Distribution) -> tuple[list[float], list[float]]:
@@ -338,6 +343,16 @@ def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.nda
     return tuple(np.asarray(c, dtype=float) for c in cols)
 
 
+def _edge_count(times: tuple[float, ...], om_lo: float, om_hi: float) -> float:
+    """How many curves :func:`_edges` returns, counted without allocating them."""
+    count = 0.0
+    for t in sorted(set(times[:2])):
+        first = max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi)))
+        last = max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi)))
+        count += 2.0 * max(0, last - first + 1)
+    return count
+
+
 def _stack(*curves: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
     """Curve tables (kind, p, sgn, T) joined."""
     return tuple(np.concatenate([c[i] for c in curves]) for i in range(4))
@@ -453,6 +468,7 @@ class _PolarPlan:
         self.plane = _plane(dist.omega_x, dist.omega_y)
         self.axial = _axial(dist.omega_z, self.ratio)
         p, ax = self.plane, self.axial
+        self.ranged = sum(not getattr(dist, name).is_fixed for name in _SPINS)
         self.empty = False
         if p.density is None and ax.density is None:  # pragma: no cover - closed form in T
             raise AssertionError("both atoms: the closed form in T")
@@ -477,6 +493,7 @@ class _PolarPlan:
             # ω_z = 0, or so small beside Ω⊥ that Ω and the bands are those of ω_z = 0 to
             # rounding (a near-zero Ω⊥ below it holds no measurable probability).
             self.kind = "diameter"  # ψ = 90°, Ω = Ω⊥, the gaps' half-width π/2
+            self._bound_points(_edge_count(self.times, p.lo, p.hi))
             edges = _edges(self.times, p.lo, p.hi)
             cuts = (edges[1] + edges[2] * 0.5 * math.pi) / edges[3]
             self.ends = _panels(_graded(np.concatenate((cuts, p.graded))), p.lo, p.hi, math.inf)
@@ -495,12 +512,14 @@ class _PolarPlan:
             t_lo = ax.lo / p.hi
             t_hi = min(1.0, ax.hi / p.lo) if p.lo > 0.0 else 1.0
             om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
-            self.edges = _edges(self.times, p.lo, om_hi)
+            count = _edge_count(self.times, p.lo, om_hi)
+            self._bound_points(count, inner=True)
             circles, planes = _box(1, p.breaks), _box(2, ax.breaks[ax.breaks > 0.0])
             self.box_curves = _stack(circles, planes)
+            self._bound_crossings(count * self.box_curves[0].size)
+            self.edges = _edges(self.times, p.lo, om_hi)
             # The inner cuts: the box's curves with the soft points and the graded radii.
             self.inner_curves = _stack(_box(1, p.graded), _box(2, ax.points[ax.points > 0.0]))
-            self._bound_crossings(self.edges[0].size * self.box_curves[0].size)
             # Where a circle meets a plane (t = A / Ω⊥), breaks and soft points alike: so
             # that a narrow axial range near ψ = 90° has panels of its own width.
             a_pts, p_pts = ax.points[ax.points > 0.0], p.points[p.points > 0.0]
@@ -517,15 +536,32 @@ class _PolarPlan:
         if t_hi <= t_lo:
             self.empty = True
             return
+        count = _edge_count(self.times, 0.0, om_hi)
+        self._bound_points(count)
+        self._bound_crossings(count)
         edges = _edges(self.times, 0.0, om_hi)
-        self._bound_crossings(edges[0].size)
         floor = (
             t_lo if t_lo > 0.0 else 0.25 * float(np.min(fixed_cuts[fixed_cuts > 0.0], initial=t_hi))
         )
         cuts = np.concatenate((_crossings(edges, curve, t_lo, t_hi, floor), fixed_cuts))
         self.ends = _panels(_graded(_inside(cuts, t_lo, t_hi)), t_lo, t_hi)
 
-    def _bound_crossings(self, pairs: int) -> None:
+    def _bound_points(self, edges: float, inner: bool = False) -> None:
+        """The refusal of :func:`_omega_psi` (its words), decided from the band edges alone
+        before they or the panels are allocated: each edge cuts at least one panel, on which
+        the first two orders put n points each (n² with ``inner``, the 2-D rule's inner
+        pieces), a lower bound of the points the plan will count."""
+        per_edge = sum(n * n if inner else n for n in POLAR_ORDERS[:2])
+        v.work_bound(
+            f"the exact (Ω, ψ) rule over {self.ranged} ranged spins",
+            edges * per_edge,
+            MAX_POLAR_POINTS,
+            "integrand points",
+            _USE_INSTEAD,
+            rate=POLAR_POINTS_PER_SECOND,
+        )
+
+    def _bound_crossings(self, pairs: float) -> None:
         v.work_bound(
             "the exact (Ω, ψ) rule's search for where band edges cross the spin box",
             float(pairs) * 2 * _CROSSING_SAMPLES,
@@ -620,10 +656,10 @@ def _polar_seconds(dist: TossDistribution) -> float:
     orders = sum(n * n for n in POLAR_ORDERS[:2])
     if p.density is None or ax.density is None:
         om_hi = math.hypot(p.hi, ax.hi)
-        edges = _edges(times, 0.0, om_hi)[0].size
+        edges = _edge_count(times, 0.0, om_hi)
         return 1e-3 + setup + (edges + p.graded.size + 64) * orders / POLAR_POINTS_PER_SECOND
     om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
-    edges = _edges(times, p.lo, om_hi)[0].size
+    edges = _edge_count(times, p.lo, om_hi)
     curves = p.breaks.size + ax.breaks.size
     panels = edges * curves + edges + 32
     inner = edges + p.graded.size + ax.points.size + 1
