@@ -734,3 +734,33 @@ def test_exact_refusal_on_the_command_line_runs_no_plan(monkeypatch):
     never_run(monkeypatch, _exact_plan_work())
     line = one_line_error("probability", "-T", "0.6:0.9", "--omega-x", "normal:0,1e6")
     assert line.startswith("the exact (Ω, ψ) rule over 1 ranged spins is 85,900,000 integrand")
+
+
+def test_qmc_reports_progress_per_block_with_the_points_of_one_run(monkeypatch):
+    # `probability --method qmc --n 17179869184` (accepted: about an hour) moved its progress
+    # bar once per scrambling, minutes apart. A scrambling is now cut into blocks that resume
+    # its sequence (Sobol.fast_forward): the same points, the same answer, and progress
+    # every block.
+    from coinflight.probability import qmc
+
+    dist = TossDistribution(
+        omega_x=Uniform(60, 90), omega_y=0, omega_z=Uniform(0, 20), flight_time=Uniform(0.6, 0.9)
+    )
+    whole = estimate(dist, "qmc", n=16 * 2**12, seed=5)
+    monkeypatch.setattr(qmc, "BLOCK", 2**8)
+    calls: list[int] = []
+    blocks = estimate(dist, "qmc", n=16 * 2**12, seed=5, progress=calls.append)
+    assert (blocks.p_heads, blocks.ci95) == (whole.p_heads, whole.ci95)
+    assert calls == [2**8] * (16 * 2**4)
+
+
+def test_bias_monte_carlo_reports_progress_as_it_goes():
+    # `bias --monte-carlo 2147483648` (accepted: about 9 min) printed nothing until its end.
+    from coinflight.probability import streams
+    from coinflight.queries.bias import bias_query
+
+    calls: list[int] = []
+    n = 3 * streams.BLOCK + 5
+    answer = bias_query(80.0, None, None, n, 7, Coin.preset("us-quarter"), calls.append)
+    assert sum(calls) == n and len(calls) >= 4
+    assert answer.payload()["monte_carlo"]["n"] == n
