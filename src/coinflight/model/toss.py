@@ -41,6 +41,11 @@ def check_gravity(g: object) -> float:
     return value
 
 
+def _tosses(shape: tuple[int, ...]) -> str:
+    """A batch shape in words: "4 tosses", "4 × 4 tosses"."""
+    return " × ".join(str(n) for n in shape) + (" tosses" if shape != (1,) else " toss")
+
+
 @dataclass(frozen=True, eq=False)
 class Toss:
     """Initial conditions of one toss, or of a batch of tosses (arrays broadcast together).
@@ -77,12 +82,26 @@ class Toss:
         g = check_gravity(self.g)
         v.choice("start", self.start, ("heads", "tails"))
         try:
-            np.broadcast_shapes(omega.shape[:-1], flight_time.shape)
+            batch = np.broadcast_shapes(omega.shape[:-1], flight_time.shape)
         except ValueError:
             raise ValueError(
                 f"omega (shape {omega.shape}) and flight time (shape {flight_time.shape}) "
                 "do not broadcast together"
             ) from None
+        spins = omega.shape[:-1]
+        if spins and flight_time.ndim and len(spins) != flight_time.ndim:
+            # NumPy would add axes on the left: 4 spins and 4 × 1 times make 4 × 4 tosses.
+            raise ValueError(
+                f"omega (shape {omega.shape}, {_tosses(spins)}) and flight time (shape "
+                f"{flight_time.shape}) have different numbers of axes, which would broadcast "
+                f"to {_tosses(batch)}; give one flight time per spin (shape {spins}), a "
+                "single one, or both with the same number of axes"
+            )
+        if 0 in batch:
+            raise ValueError(
+                f"omega (shape {omega.shape}) and flight time (shape {flight_time.shape}) "
+                "hold no toss; give at least one spin (ωx, ωy, ωz) and one flight time"
+            )
         spin, time = np.broadcast_arrays(np.max(np.abs(omega), axis=-1), flight_time)
         if spin.size:
             with np.errstate(over="ignore"):
@@ -230,8 +249,10 @@ class Flight:
             raise TypeError(f"toss must be a Toss, got {type(self.toss).__name__}")
 
     def at(self, t: ArrayLike) -> FlightState:
-        """State at times t (s), broadcast against the toss batch."""
-        t = v.finite("t", t, "s")
+        """State at times t ≥ 0 (s) from launch, broadcast against the toss batch: the free
+        flight's closed form (past the catch at t = T too, as the figures draw the cone);
+        ValueError for a time before the launch."""
+        t = v.non_negative("t", t, "s")
         i1, i3 = self.coin.moments
         w0 = self.toss.omega
         att = torque_free.attitude(w0, i1, i3, t, self.toss.start_sign)
