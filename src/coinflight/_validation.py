@@ -411,6 +411,41 @@ def work_bound(
     )
 
 
+UNREADABLE = {
+    "float_parsing": "is not a number",
+    "int_parsing": "is not a valid integer",
+    "int_from_float": "is not a valid integer",
+    "bool_parsing": "is not a valid boolean",
+}
+"""The words for a text that cannot be read as an option's type, by pydantic's error type
+(typer and FastAPI both read options through pydantic): the command line and the web say
+``Invalid value for '--seed': 'nan' is not a valid integer``, never pydantic's own
+sentence."""
+_BOUNDS = {
+    "greater_than_equal": ("ge", "at least"),
+    "greater_than": ("gt", "above"),
+    "less_than_equal": ("le", "at most"),
+    "less_than": ("lt", "below"),
+}
+
+
+def unreadable(error: Mapping[str, object]) -> str | None:
+    """What is wrong with an option's text, from pydantic's first error about it (a mapping
+    with ``type``, ``input`` and ``ctx``), in the words of :data:`UNREADABLE` or a bound
+    (``'-1' must be at least 1``); None for an error of another kind."""
+    kind = str(error.get("type"))
+    text = error.get("input")
+    if kind in UNREADABLE:
+        return f"{text!r} {UNREADABLE[kind]}"
+    if kind in _BOUNDS:
+        key, words = _BOUNDS[kind]
+        ctx = error.get("ctx")
+        bound = ctx.get(key) if isinstance(ctx, Mapping) else None
+        if bound is not None:
+            return f"{text!r} must be {words} {bound}"
+    return None
+
+
 MAX_RUN_SECONDS = 3600.0
 """Longest run a size may ask for, s on the reference 2-core machine: Monte Carlo and QMC
 tosses, table landings, convergence series (the grid keeps its own minute,
