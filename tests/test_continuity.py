@@ -252,3 +252,52 @@ def test_issue_command_line_case_gives_the_no_axial_value():
     x, t = Uniform(60.0, 90.0), Uniform(0.6, 0.9)
     for wz in (1e-320, 1e-300, 1e-100, 1e-15, -1e-15, 1e-14, 1e-13, 1e-12, 1e-10, 1e-8):
         assert estimate(_dist(x, t, z=wz), "exact").p_heads == pytest.approx(0.497471, abs=5e-7)
+
+
+# Each random estimator (fixed seed) and the grid near each special value, against exact AT the
+# special value: within 3 × their 95 % half-width (about 6 s.e.; with the seed fixed the test
+# cannot fail by chance once it passes), the grid within its cells' resolution.
+
+X, T = Uniform(60.0, 90.0), Uniform(0.6, 0.9)
+NEAR = {
+    # ψ = 45° at the box's near corner (A(z0) = 60 rad/s), the ω_z range 1e-12 beyond it
+    "45° corner": (
+        lambda: _dist(X, T, z=Uniform(0.0, 60.0 / _ratio())),
+        lambda: _dist(X, T, z=Uniform(0.0, 60.0 / _ratio() * (1.0 + 1e-12))),
+    ),
+    # a flight-time range of width → 0
+    "narrow T": (lambda: _dist(X, Fixed(0.7)), lambda: _dist(X, Uniform(0.7, 0.7 * (1 + 1e-13)))),
+    # a normal flight time of s.d. → 0
+    "normal T": (lambda: _dist(X, Fixed(0.7)), lambda: _dist(X, Normal(0.7, 1e-300))),
+    # a normal spin of s.d. → 0 (exact refuses so narrow a spin; its fixed value is the limit)
+    "normal ωx": (lambda: _dist(75.0, T), lambda: _dist(Normal(75.0, 1e-12), T)),
+    # a fixed spin just inside ψ = 45° (P(heads) → 1)
+    "45° fixed": (
+        lambda: _dist(75.0, T, z=75.0 / _ratio()),
+        lambda: _dist(75.0, T, z=75.0 * (1 - 1e-12) / _ratio()),
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(NEAR))
+@pytest.mark.parametrize("method, n", RANDOM)
+def test_random_estimators_near_each_special_value(case, method, n):
+    at, near = NEAR[case]
+    exact = estimate(at(), "exact").p_heads
+    r = estimate(near(), method, n=n, seed=20240601)
+    assert r.ci95 is not None
+    half = 0.5 * (r.ci95[1] - r.ci95[0])
+    assert abs(r.p_heads - exact) <= 3.0 * half + 1.0 / n
+
+
+@pytest.mark.parametrize("case", sorted(NEAR))
+def test_grid_near_each_special_value(case):
+    at, near = NEAR[case]
+    exact = estimate(at(), "exact").p_heads
+    dist = near()
+    n = 400 if len(dist.ranged) <= 2 else 60
+    got = estimate(dist, "grid", n=n).p_heads
+    # Midpoint cells: each band edge crossing the box misplaces at most one cell per row of
+    # n^(k-1), i.e. a fraction ≤ (edges + 2)/n of the box (edges ≤ Ω T2/π).
+    edges = 90.0 * 0.9 / math.pi * 2 + 2.0
+    assert abs(got - exact) <= edges / n
