@@ -764,3 +764,16 @@ def test_bias_monte_carlo_reports_progress_as_it_goes():
     answer = bias_query(80.0, None, None, n, 7, Coin.preset("us-quarter"), calls.append)
     assert sum(calls) == n and len(calls) >= 4
     assert answer.payload()["monte_carlo"]["n"] == n
+
+
+def test_paper_progress_counts_every_estimate_it_runs():
+    # `paper --events 1000000000` (accepted: minutes) moved its bar once per figure; the bar
+    # now counts the probabilities' work units, its total counted before any runs.
+    from coinflight.report.paper import paper_numbers, paper_work
+
+    calls: list[int] = []
+    paper_numbers(events=1000, progress=calls.append)
+    assert sum(calls) == paper_work(1000)
+    assert len(calls) > 4 * 8  # many updates per figure, not one
+    # at 10⁹ events the total is dominated by them: 4 figures × (10⁹ + its series)
+    assert paper_work(10**9) > 8 * 10**9
