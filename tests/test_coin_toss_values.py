@@ -185,3 +185,32 @@ def test_flight_at_a_time_before_the_launch_is_refused():
     with pytest.raises(ValueError, match="t must be non-negative"):
         flight.at([0.1, -1e-300])
     assert flight.at(0.0).height == pytest.approx(0.0)
+
+
+@pytest.mark.parametrize(
+    "t, words",
+    [
+        (np.full((4, 1), 0.3), r"different numbers of axes, which would broadcast to 4 × 4"),
+        ([0.1, 0.2], r"the toss batch \(4 tosses\) and t \(shape \(2,\)\) do not broadcast"),
+        (1e308, r"t must be at most 10000 s \(the longest flight time\), got 1e\+308 s"),
+    ],
+)
+def test_flight_at_refuses_outer_products_mismatches_and_absurd_times(t, words):
+    # Found by the hostile run: Flight.at made 4 × 4 states of 4 tosses and 4 × 1 times,
+    # NumPy's "shape mismatch" for 2 times, a zero-norm quaternion error for t = 1e308.
+    flight = Flight(Coin.preset("us-quarter"), Toss(omega=np.full((4, 3), 50.0), flight_time=0.7))
+    with pytest.raises(ValueError, match=words):
+        flight.at(t)
+    assert flight.at(np.full(4, 0.3)).normal.shape == (4, 3)
+
+
+def test_messages_show_arrays_on_one_line():
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.probability import estimate
+
+    with pytest.raises(TypeError) as info:
+        TossDistribution(np.ones((4, 1)), 0, 0, 0.7)
+    assert "\n" not in str(info.value) and "[[1.] [1.] [1.] [1.]]" in str(info.value)
+    with pytest.raises(TypeError) as info:
+        estimate(TossDistribution(60.0, 0, 0, 0.7), "monte-carlo", n=np.ones((2, 3)), seed=1)
+    assert str(info.value) == "n must be an integer, got array of float64 [[1. 1. 1.] [1. 1. 1.]]"

@@ -33,11 +33,21 @@ T = TypeVar("T")
 
 
 def _show(value: object) -> str:
-    """A value for a message: one number as a plain number (200.0), several as an array."""
+    """A value for a message: one number as a plain number (200.0), several as an array on
+    one line (a message is one line: ``[[1. 1. 1.] [1. 1. 1.]]``)."""
     arr = np.asarray(value)
     if arr.size == 1:
         return repr(arr.reshape(-1)[0].item())
-    return np.array2string(arr, threshold=6)
+    return " ".join(np.array2string(arr, threshold=6, max_line_width=200).split())
+
+
+def shown(value: object) -> str:
+    """Any value for a one-line message: an array as :func:`_show` writes it (its shape if it
+    has more than a few entries), anything else as its repr, cut at 80 characters."""
+    if isinstance(value, np.ndarray):
+        return f"{_show(value)} (shape {value.shape})" if value.size > 6 else _show(value)
+    text = repr(value)
+    return " ".join(text.split()) if len(text) <= 80 else " ".join(text[:77].split()) + "..."
 
 
 def as_float_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
@@ -56,7 +66,7 @@ def as_float_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
         return np.asarray(arr, dtype=float)
     except (TypeError, ValueError):
         raise TypeError(
-            f"{name} must be a number or an array of numbers, got {_kind(value)} {value!r}"
+            f"{name} must be a number or an array of numbers, got {_kind(value)} {shown(value)}"
         ) from None
 
 
@@ -84,7 +94,7 @@ def count(name: str, value: object, minimum: int = 1, maximum: int | None = None
     """A whole number in [minimum, maximum] (Python or NumPy int, not a bool, not 2.0 or 2.5),
     else TypeError or ValueError naming ``name``."""
     if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an integer, got {_kind(value)} {value!r}")
+        raise TypeError(f"{name} must be an integer, got {_kind(value)} {shown(value)}")
     value = int(value)
     if value < minimum or (maximum is not None and value > maximum):
         allowed = f"at least {minimum}" if maximum is None else f"between {minimum} and {maximum}"

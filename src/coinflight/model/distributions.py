@@ -330,7 +330,8 @@ def as_distribution(value: Distribution | float | int, name: str = "value") -> D
         return value
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise TypeError(
-            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
+            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got "
+            f"{v.shown(value)}"
         )
     return Fixed(float(v.finite(name, value)))
 
