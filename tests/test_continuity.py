@@ -301,3 +301,41 @@ def test_grid_near_each_special_value(case):
     # n^(k-1), i.e. a fraction ≤ (edges + 2)/n of the box (edges ≤ Ω T2/π).
     edges = 90.0 * 0.9 / math.pi * 2 + 2.0
     assert abs(got - exact) <= edges / n
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    exponent=st.floats(-300.0, -2.0),
+    side=st.sampled_from([-1.0, 1.0]),
+    centre=st.sampled_from([45.0, 135.0]),
+)
+def test_same_side_probability_is_continuous_at_the_45_degree_boundaries(exponent, side, centre):
+    # p(ψ) = 1/2 + (1/π) arcsin(cot²ψ) inside [45°, 135°], 1 outside (Diaconis, Holmes &
+    # Montgomery 2007, section 2). At 45° + δ, cot²ψ ≥ 1 − 4δ − 8δ² (δ in rad, δ ≤ 0.01) and
+    # arcsin(1 − ε) ≥ π/2 − √(2ε)(1 + ε), so 1 − p ≤ √(8δ (1 + 2δ)) (1 + 4δ) / π; the same at
+    # 135° − δ by symmetry. Rounding ψ to radians (half an ulp of 2.4 rad) adds its own δ.
+    from coinflight.studies.bias import same_side_probability
+
+    delta = 10.0**exponent  # degrees
+    psi = centre + side * delta
+    p = float(same_side_probability(psi, degrees=True))
+    inward = (side > 0) == (centre == 45.0)
+    d = math.radians(delta) + 2.3e-16 * 3  # the angle's own rounding, a few ulps of 2.4 rad
+    if not inward:
+        assert 1.0 - p <= math.sqrt(8.0 * 2.3e-16 * 3) / math.pi  # outside: 1, to rounding
+        return
+    assert 0.5 <= p <= 1.0
+    assert 1.0 - p <= math.sqrt(8.0 * d * (1.0 + 2.0 * d)) * (1.0 + 4.0 * d) / math.pi
+
+
+@settings(max_examples=100, deadline=None)
+@given(exponent=st.floats(-300.0, 0.0), side=st.sampled_from([-1.0, 1.0]))
+def test_same_side_probability_is_continuous_at_90_degrees(exponent, side):
+    # Near 90°: p − 1/2 = (1/π) arcsin(cot²ψ) ≤ cot²ψ / 2 (arcsin x ≤ πx/2) and
+    # cot ψ ≤ tan δ ≤ 2δ for δ ≤ 1 rad: p − 1/2 ≤ 2δ².
+    from coinflight.studies.bias import same_side_probability
+
+    delta = 10.0**exponent
+    p = float(same_side_probability(90.0 + side * delta, degrees=True))
+    d = math.radians(delta)
+    assert 0.5 <= p <= 0.5 + 2.0 * d * d + 1e-16
