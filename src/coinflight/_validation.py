@@ -309,7 +309,13 @@ def quantity(x: float | int, decimals: int = 0) -> str:
     else:
         text = _trimmed(f"{x:.{3 + decimals}g}")
     shortest = repr(x) if not 1.0 <= abs(x) < EXACT_BELOW else f"{Decimal(repr(x)):,f}"
-    return shortest if _digits(text) > _digits(shortest) else text
+    # As many digits as the shortest form but not the same float (a tie rounded the other
+    # way: 2⁻²⁴ to 16 digits is "…062e-08", another float): the shortest form.
+    if _digits(text) > _digits(shortest) or (
+        _digits(text) == _digits(shortest) and float(_read(text)) != x
+    ):
+        return shortest
+    return text
 
 
 def _digits(text: str) -> int:
