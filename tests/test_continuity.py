@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from coinflight.model.distributions import Fixed, Normal, Uniform
@@ -339,3 +339,52 @@ def test_same_side_probability_is_continuous_at_90_degrees(exponent, side):
     p = float(same_side_probability(90.0 + side * delta, degrees=True))
     d = math.radians(delta)
     assert 0.5 <= p <= 0.5 + 2.0 * d * d + 1e-16
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    lo=st.floats(5.0, 150.0),
+    span=st.floats(1.0, 60.0),
+    mean=st.floats(0.3, 1.0),
+    rel=st.sampled_from([1e-3, 1e-4, 1e-5, 1e-6, 1e-8, 1e-10, 1e-300]),
+)
+def test_exact_narrow_normal_flight_time_tends_to_the_fixed_time(lo, span, mean, rel):
+    # T normal (mean, sd → 0) beside a spin range: once refused for 1e-6 ≤ sd/T ≤ 1e-3 (the
+    # blur of each band edge, Ω sd / T wide, fell between the rule's nodes). Each edge sits at
+    # x = (π/2 + jπ)/T; T moving by ΔT moves it by ≤ hi ΔT / T in x, so P moves by at most
+    # (edges) hi |ΔT| / (T span), and E|T − mean| = sd √(2/π) (T ≥ mean − 9 sd taken as 0.9
+    # mean).
+    x = Uniform(lo, lo + span)
+    fixed, err0 = _exact(_dist(x, Fixed(mean)))
+    sd = rel * mean
+    near, err = _exact(_dist(x, Normal(mean, sd)))
+    hi = lo + span
+    edges = 2.0 * (hi * mean * 1.1 / (2.0 * math.pi) + 1.0)
+    bound = edges * hi * sd * math.sqrt(2.0 / math.pi) / (0.9 * mean * span)
+    assert abs(near - fixed) <= bound + err + err0
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    lo=st.floats(2.0, 120.0),
+    span=st.floats(0.5, 60.0),
+    wz=st.sampled_from([0.0, 5.0]),
+    mean=st.floats(0.3, 1.0),
+    rel=st.sampled_from([3e-1, 1e-1, 3e-2, 1e-2, 1e-3, 1e-4, 1e-6]),
+)
+@example(lo=5.0, span=1.0, wz=0.0, mean=0.3, rel=9e-4)  # sd 3e-5: the product rule's 0.25
+def test_exact_with_a_normal_flight_time_agrees_with_qmc(lo, span, wz, mean, rel):
+    # The product rule once agreed with itself on a wrong value for a narrow normal T (0.25
+    # for 0.235988: each blurred edge fell between its nodes at every order); here every rule
+    # the exact method picks for a normal T is held against scrambled Sobol points (fixed seed,
+    # 3 × the 95 % half-width).
+    sd = rel * mean / 9.0  # a normal T needs mean > 8 sd
+    dist = _dist(Uniform(lo, lo + span), Normal(mean, sd), z=wz)
+    try:
+        exact = estimate(dist, "exact").p_heads
+    except ValueError as e:  # a refusal in words, never a number
+        assert "use --method grid, monte-carlo or qmc" in str(e)
+        return
+    r = estimate(dist, "qmc", n=2**18, seed=11)
+    assert r.ci95 is not None
+    assert abs(r.p_heads - exact) <= 1.5 * (r.ci95[1] - r.ci95[0]) + 2e-4

@@ -327,10 +327,26 @@ def _curves(table: tuple[np.ndarray, ...], t: Any) -> Any:
     return np.where(kind == 0, (p + sgn * b) / tt, np.where(kind == 1, p * r, axial))
 
 
+_BLUR = (-3.0, -1.0, 1.0, 3.0)
+"""Where a normal flight time's blur of a band edge is cut, in its s.d.s (:func:`_edge_times`)."""
+
+
+def _edge_times(times: tuple[float, ...], om_hi: float) -> list[float]:
+    """The flight times whose band edges cut the integrals: T1 and T2 (uniform or fixed T);
+    for a normal T (mean, sd) its mean, and where the blur of an edge (Ω sd / T wide) is
+    narrower than a band (π / T: Ω sd < 1 up to ``om_hi``), mean ± 1 and 3 sd in the edge's
+    place: cut there too, the graded mesh resolves the blur however narrow, and sd → 0 tends
+    to the fixed T's step (without them the rule refused 1e-6 ≤ sd/T ≤ 1e-3)."""
+    t1, t2, sd = (*times[:2], times[2] if len(times) > 2 else 0.0)
+    if sd > 0.0 and om_hi * sd < 1.0:
+        return sorted({t1, *(t1 / (1.0 + k * sd / t1) for k in _BLUR)})
+    return sorted({t1, t2})
+
+
 def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.ndarray, ...]:
     """The band-edge curves (kind, p, sgn, T) that may meet Ω in [om_lo, om_hi]."""
     cols: list[list[float]] = [[], [], [], []]
-    for t in sorted(set(times[:2])):
+    for t in _edge_times(times, om_hi):
         j = np.arange(
             max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi))),
             max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi))) + 1,
@@ -346,7 +362,7 @@ def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.nda
 def _edge_count(times: tuple[float, ...], om_lo: float, om_hi: float) -> float:
     """How many curves :func:`_edges` returns, counted without allocating them."""
     count = 0.0
-    for t in sorted(set(times[:2])):
+    for t in _edge_times(times, om_hi):
         first = max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi)))
         last = max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi)))
         count += 2.0 * max(0, last - first + 1)
