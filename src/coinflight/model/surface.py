@@ -70,8 +70,9 @@ too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, co
 and web alike."""
 
 TABLE_ONLY = (
-    "applies to --surface table only (Surface kind 'table'): a catch in the hand is at the "
-    "launch height and has no bounce, rocking or contact phase"
+    "applies to --surface table only (Surface(kind='table') in Python), not to a catch in the "
+    "hand (--surface hand, the default): the hand catches the coin at the launch height, with "
+    "no bounce, rocking or contact phase"
 )
 """The one refusal of a table's option given to a catch in the hand, after what was given
 (``--ending applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5 applies
@@ -194,7 +195,7 @@ class Surface:
     >>> Surface("hand", restitution=0.7)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: restitution 0.7 applies to --surface table only (Surface kind 'table'): ...
+    ValueError: restitution 0.7 applies to --surface table only (Surface(kind='table') in ...
     >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
