@@ -56,7 +56,7 @@ import numpy as np
 from numba import njit, prange
 from numpy.typing import NDArray
 
-from coinflight.core.contact import CONTACT_ENDING, Contact
+from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (
     angular_velocity,
@@ -452,7 +452,7 @@ def impact_verdict(z, v, lm, n, rebound, c):
       :func:`died_out`;
     * else the coin flies on: status −1, face −1.
     """
-    if c.ending == CONTACT_ENDING:
+    if c.ending != ROCKING_ENDING:  # the 3-D endings (contact, rigid)
         free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
     else:
         free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
@@ -473,6 +473,8 @@ def died_out(z, v, n, lm, c):
     :func:`rock` (SETTLED_ROCKING, 0)."""
     if c.ending == CONTACT_ENDING:
         return settle(z, v, n, lm, c)
+    if c.ending == RIGID_ENDING:
+        return rigid_ending.settle(z, v, n, lm, c)
     omega = angular_velocity(lm, n, c.i1, c.i3)
     face = rock(n, omega, c)
     return face, Status.SETTLED_ROCKING, 0.0
@@ -667,3 +669,8 @@ def land(
 
 def _per_toss(value: float | NDArray[np.float64], n: int) -> NDArray[np.float64]:
     return np.ascontiguousarray(np.broadcast_to(np.asarray(value, dtype=np.float64), (n,)))
+
+
+# The rigid ending flies its hops with this module's flight: imported last (a cycle), and read
+# as a module attribute, which numba resolves when died_out is first compiled.
+from coinflight.core import rigid_ending  # noqa: E402

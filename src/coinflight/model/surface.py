@@ -17,7 +17,7 @@ from coinflight.model.distributions import (
 
 SurfaceKind = Literal["hand", "table"]
 
-ENDINGS = ("rocking", "contact")
+ENDINGS = ("rocking", "contact", "rigid")
 """How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
 
 AIR_DENSITY = 1.2
@@ -170,9 +170,14 @@ class Surface:
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
         Used only with ``ending="contact"``, as are the two resistances.
-    ending : {"rocking", "contact"}
+    ending : {"rocking", "contact", "rigid"}
         How a table landing ends once its bounces die out (a rebound slower than the rest
-        speed). ``"rocking"`` (default): the planar Housner rocking hand-off of
+        speed). ``"rigid"``: the rigid, event-driven 3-D ending of
+        :mod:`coinflight.core.rigid_ending` (rolling, sliding and pivoting on one rim point
+        with the contact force of the constraint, exact Coulomb friction, the rolling and
+        pivoting resistances, hops flown in closed form, impacts of the other rim; status
+        "settled in contact"); it takes the resistances as the contact ending does.
+        ``"rocking"`` (default): the planar Housner rocking hand-off of
         :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
         the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
         phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
@@ -208,7 +213,7 @@ class Surface:
     rolling_resistance: float = _UNSET_ROLLING
     pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
-    ending: Literal["rocking", "contact"] = "rocking"
+    ending: Literal["rocking", "contact", "rigid"] = "rocking"
 
     def __post_init__(self) -> None:
         v.choice("surface", self.kind, ("hand", "table"))
@@ -244,7 +249,7 @@ class Surface:
         if self.kind == "hand" and (given or resistances or self.ending != "rocking"):
             ending = [f"ending {self.ending!r}"] if self.ending != "rocking" else []
             raise ValueError(f"{', '.join(ending + given + resistances)} {TABLE_ONLY}")
-        if resistances and self.ending != "contact":
+        if resistances and self.ending == "rocking":
             raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
 
     def __repr__(self) -> str:

@@ -204,7 +204,9 @@ def contact_record(
     ``Surface`` checked on construction (``g`` is the caller's).
     """
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+    from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
+
+    endings = {"rocking": ROCKING_ENDING, "contact": CONTACT_ENDING, "rigid": RIGID_ENDING}
 
     return Contact.build(
         **coin_body(coin),
@@ -216,7 +218,7 @@ def contact_record(
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
         contact_time=surface.contact_time,
-        ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
+        ending=endings[surface.ending],
         corner_radius=coin.corner_radius,
     )
 
@@ -424,7 +426,7 @@ class TableLanding(OutcomeModel):
         :attr:`contact_refusal`)."""
         if self.drag is not None:
             return ()
-        if self.surface.ending == "contact":
+        if self.surface.ending != "rocking":  # the 3-D endings take the resistances
             return PER_TOSS
         return tuple(name for name in PER_TOSS if name not in RESISTANCES)
 

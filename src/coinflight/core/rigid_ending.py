@@ -1,0 +1,367 @@
+"""The rigid, event-driven end of a table landing: roll, slide, hop and rim impacts (numba).
+
+When the bounces of :mod:`coinflight.core.bounce` die out (a rebound slower than the rest
+speed), :func:`settle` carries the coin on until it can no longer leave its well. The coin and
+the table are rigid; the motion is a sequence of modes, each with its own equations, and the
+switches between them are events located in time:
+
+* **on one rim point**, rolling without slip or sliding with exact Coulomb friction, pivoting
+  about the vertical in either (:mod:`coinflight.core.rigid_contact`: the nonholonomic rolling
+  disc, its contact force the one that keeps the contact point at rest, O'Reilly 1996,
+  Nonlinear Dyn. 10:287; Le Saux, Leine & Glocker 2005, J. Nonlinear Sci. 15:27; the slip
+  starting when that force leaves the friction cone, stopping when the slip vanishes);
+* **in flight** (a hop): where the normal force of the one-rim contact falls to zero the coin
+  leaves the table, and its flight is the closed-form torque-free flight of
+  :mod:`coinflight.core.bounce` (:func:`coinflight.core.bounce.next_contact`) to its next
+  contact, where the impact law of :func:`coinflight.core.impact.impact` (Stronge's energetic
+  restitution with Coulomb friction) acts; a rebound slower than the rest speed returns the
+  coin to the one-rim contact, a faster one flies on;
+* **the other rim** (a coin with a flat edge band tipping through upright, n_z crossing 0): an
+  impact of the other rim's lowest point, by the same law, then one-rim contact on it or a hop;
+* **the face**: the coin lies flat (its tilt below :data:`coinflight.core.rigid_contact.FACE_SINE`).
+
+Dissipation is only where the physics puts it: the impacts (restitution e, friction μ), Coulomb
+friction while sliding, and the rolling and pivoting resistances ℓ_r, ℓ_p (torques ℓ F_n
+against the horizontal and the vertical part of the angular velocity; Surface parameters
+with their sources and ranges in :mod:`coinflight.model.surface`). Without resistances the
+energy of a rolling coin is conserved (tested to 1e-6 over 5 s of Euler's disk). Step sizes
+follow the motion's accuracy (Dormand–Prince 5(4) with error control,
+:data:`coinflight.core.rigid_contact.RTOL`), not a contact stiffness, and the answers converge
+as the tolerance tightens (tests/test_rigid_ending.py).
+
+The ending: the coin has settled when its energy is below its well's barrier
+(:func:`coinflight.core.rigid_contact.below_barrier`, rigorous: no force of the rigid contact
+adds energy), or when it lies flat on a face with its tumbling energy below the barrier (flat,
+nothing that does not tip it can turn it over); the outcome is then the well it is in
+(:func:`coinflight.core.impact.resting_face`).
+
+Limits (what is not modelled, and what happens instead): the two rims resting together on a
+coin's flat edge band (an upright coin rolling as a wheel) are followed as alternating impacts
+of one rim and the other, not as a two-point contact mode: a coin rocking on its band that
+cannot leave it settles when its energy falls below the barrier, but one that keeps rolling
+upright with more energy than that runs into :data:`MAX_PHASES` and is reported UNSETTLED in
+the well it is in (counted by the benchmark, ``benchmarks/bench_bounce.py --rigid-rates``).
+A face slap (the coin coming down flat with tumbling energy left) is ended the same way.
+Hops are flown without air drag.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from coinflight.core import rigid_contact as rc
+from coinflight.core.bounce import (
+    CA_TOLERANCE,
+    GRAZE_SKIP,
+    _gap_after,
+    _precess_from,
+    mechanical_energy,
+    next_contact,
+    tumbling_energy,
+)
+from coinflight.core.impact import (
+    angular_velocity,
+    contact_point,
+    cross,
+    impact,
+    lowest_depth,
+    resting_face,
+)
+from coinflight.core.outcome import Face, Status
+
+MAX_PHASES = 20_000
+"""Phases at most (one-rim runs, hops, impacts) in one ending; beyond it the landing is
+UNSETTLED in the well it is in."""
+DURATION = 60.0
+"""Simulated time at most in one ending, s (a coin rolling without resistance never settles)."""
+BAND_FRACTION = 1e-2
+"""A coin rocking across its edge band with less than this fraction of the edge well's depth
+(the energy that would tip it over a rim) is taken to rest on the band (:func:`_band`); above,
+each crossing is an impact of the arriving rim (Stronge's law), which takes a share 1 − e² of
+the rocking away, so that a coin that stays rocks down to it in a few crossings."""
+HOP_START = 1e-7
+"""First time looked at after a lift-off, s; doubled until the gap is open (the flight's
+contact search starts from an open gap)."""
+
+# Why an ending stopped (counts of :func:`settle_counts`).
+ENDED_BARRIER = 0
+ENDED_FACE = 1
+ENDED_LIMIT = 2
+ENDED_BAND = 3
+
+
+@njit(cache=True)
+def _hop(y, c):
+    """Fly the coin in state y (just left the table, or rebounded) to its next contact, closed
+    form (:func:`coinflight.core.bounce.next_contact`); y is set to the state at that contact
+    (or left unchanged for a hop too small to open the gap). Returns (time, approach speed of
+    the contact point there; ≥ 0 for no flight or a graze)."""
+    z, vz = y[0], y[3]
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    r, hh, corner, i1, i3, g = c.radius, c.half_thickness, c.corner_radius, c.i1, c.i3, c.g
+    tau = HOP_START
+    opened = False
+    closed = False
+    for _ in range(60):
+        gap = _gap_after(tau, z, vz, g, n, lm, i1, r, hh, corner)
+        if gap > CA_TOLERANCE:
+            opened = True
+            break
+        if gap < -CA_TOLERANCE:
+            closed = True
+            break
+        tau *= 2.0
+    if closed:
+        # A hop lower than the contact search's tolerance: its end bisected (the gap, within
+        # ±CA_TOLERANCE at tau/2, is below it at tau), and the coin comes down there.
+        lo, hi = 0.5 * tau, tau
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if _gap_after(mid, z, vz, g, n, lm, i1, r, hh, corner) < 0.0:
+                hi = mid
+            else:
+                lo = mid
+        m = _precess_from(n, lm, i1, hi)
+        size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
+        y[0] = lowest_depth(m[2] / size, r, hh, corner)
+        y[3] = vz - g * hi
+        y[4], y[5], y[6] = m[0] / size, m[1] / size, m[2] / size
+        return hi, _approach(y, c)
+    if not opened:
+        return 0.0, 0.0  # no hop: the contact goes on
+    total = 0.0
+    for _ in range(1000):
+        tc, m, approach = next_contact(tau, z, vz, g, n, lm, i1, i3, r, hh, corner)
+        if tc < 0.0:
+            return -1.0, 0.0
+        size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
+        m = (m[0] / size, m[1] / size, m[2] / size)
+        total += tc
+        z = lowest_depth(m[2], r, hh, corner)
+        vz = vz - g * tc
+        n = m
+        if approach < 0.0:
+            break
+        tau = GRAZE_SKIP  # a graze: fly on from a little later, as the bounces do
+    y[0] = z
+    y[3] = vz
+    y[4], y[5], y[6] = n
+    return total, approach
+
+
+@njit(cache=True)
+def _impact(y, c):
+    """The impact of the coin's lowest point (:func:`coinflight.core.impact.impact`) on y in
+    place; returns the rebound speed of the contact point."""
+    v = (y[1], y[2], y[3])
+    lm = (y[7], y[8], y[9])
+    n = (y[4], y[5], y[6])
+    v, lm, rebound = impact(
+        v,
+        lm,
+        n,
+        c.radius,
+        c.half_thickness,
+        c.mass,
+        c.i1,
+        c.i3,
+        c.restitution,
+        c.friction,
+        c.corner_radius,
+    )
+    y[0] = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
+    y[1], y[2], y[3] = v
+    y[7], y[8], y[9] = lm
+    return rebound
+
+
+@njit(cache=True)
+def _approach(y, c):
+    """Normal velocity of the coin's lowest point (the rim by n_z's sign), m/s."""
+    n = (y[4], y[5], y[6])
+    rho = contact_point(n, c.radius, c.half_thickness, c.corner_radius)
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    return y[3] + cross(omega, rho)[2]
+
+
+@njit(cache=True)
+def _on_band(y, c):
+    """Whether a coin whose other rim has just come down (n_z = 0) stays on its band: its
+    rocking across the band has less than :data:`BAND_FRACTION` of the energy that would tip
+    it over a rim's corner (½ (I1 + m r²) ṅ_z² against the edge well's depth, barrier − m g r),
+    and the moment its turning needs, (I3 + m r²) |ω_a ω_z| (the gyroscopic and centripetal
+    moments of a wheel rolling on a curve at spin ω_a about its axis and yaw rate ω_z), is
+    within what the band's width can give, m g h′ (h′ = h/2 − a, the load moved to one rim)."""
+    n = (y[4], y[5], y[6])
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    m, r = c.mass, c.radius
+    tilt_rate = omega[0] * n[1] - omega[1] * n[0]  # ṅ_z
+    rocking = 0.5 * (c.i1 + m * r * r) * tilt_rate * tilt_rate
+    depth = c.barrier - m * c.g * r
+    spin = omega[0] * n[0] + omega[1] * n[1] + omega[2] * n[2]
+    turning = (c.i3 + m * r * r) * abs(spin * omega[2])
+    band = c.half_thickness - c.corner_radius
+    return rocking < BAND_FRACTION * depth and turning < m * c.g * band
+
+
+@njit(cache=True)
+def _band(y, c, duration):
+    """The coin comes to rest on its edge band, both rims touching: (face, status, time).
+
+    Entering the band, the normal velocities of both rims are stopped, and the slip and the
+    pivoting of the band on the table with them, by the impulse at the band that takes the
+    least kinetic energy (Gauss's principle: the velocity projected, in the metric of the mass
+    matrix, onto the band's rolling, ω = ω_a n, v = r ω_a n × Z). Impulses at the band's
+    contact line keep the angular momentum about that line, so
+    ω_a = (m r (n × Z)·v + L·n) / (I3 + m r²) (the rule of Housner's rocking block, 1963, for
+    a pivot line). Rolling straight on its band, the coin slows under the rolling resistance
+    alone, (I3 + m r²) ω̇_a = −ℓ_r m g sgn(ω_a), and it has settled on edge once
+    ½ (I3 + m r²) ω_a² + m g r is below the barrier. Without rolling resistance it rolls on
+    (UNSETTLED). Approximation: the band's sliding and pivoting, which friction stops in
+    ~I1 |ω_z| / (μ m g h/2) (10 ms for a nickel pivoting at 1 rad/s, μ 0.3), are taken at once.
+    """
+    nx, ny = y[4], y[5]
+    size = math.sqrt(nx * nx + ny * ny)
+    nx, ny = nx / size, ny / size
+    m, r, i3 = c.mass, c.radius, c.i3
+    tx, ty = ny, -nx  # n × Z
+    inertia = i3 + m * r * r
+    rate = (m * r * (tx * y[1] + ty * y[2]) + nx * y[7] + ny * y[8]) / inertia
+    y[0] = lowest_depth(0.0, r, c.half_thickness, c.corner_radius)
+    y[1], y[2], y[3] = r * rate * tx, r * rate * ty, 0.0
+    y[4], y[5], y[6] = nx, ny, 0.0
+    y[7], y[8], y[9] = i3 * rate * nx, i3 * rate * ny, 0.0
+    excess = 2.0 * (c.barrier - m * c.g * y[0]) / inertia
+    settled = math.sqrt(excess) if excess > 0.0 else 0.0
+    if abs(rate) < settled:
+        return Face.EDGE, Status.SETTLED_CONTACT, 0.0
+    if c.rolling_resistance > 0.0:
+        slowing = c.rolling_resistance * m * c.g / inertia
+        rolled = (abs(rate) - settled) / slowing
+        if rolled <= duration:
+            return Face.EDGE, Status.SETTLED_CONTACT, rolled
+    return Face.EDGE, Status.UNSETTLED, duration
+
+
+@njit(cache=True)
+def _energy(y, c):
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    return mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, y[0])
+
+
+@njit(cache=True)
+def _tumbling(y, c):
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    return tumbling_energy(v, lm, n, c.mass, c.i1, c.g, y[0])
+
+
+@njit(cache=True)
+def run(y, c, rtol, duration, counts):
+    """:func:`settle` on the state y (modified in place), with the step tolerance ``rtol`` and
+    at most ``duration`` s. ``counts`` (8 floats) receives (one-rim runs, hops, impacts, rim
+    changes, time rolling, time sliding or in flight, accepted steps, how it ended:
+    :data:`ENDED_BARRIER`, :data:`ENDED_FACE`, :data:`ENDED_LIMIT`). Returns (face, status,
+    time)."""
+    for i in range(8):
+        counts[i] = 0.0
+    inner = np.zeros(7)
+    t = 0.0
+    for _ in range(MAX_PHASES):
+        if rc.below_barrier(y, c):
+            counts[7] = ENDED_BARRIER
+            return resting_face(y[6], c.edge_sine), Status.SETTLED_CONTACT, t
+        if t >= duration:
+            break
+        elapsed, _mode, reason = rc._run(
+            y, c, duration - t, True, rc.MAX_STEPS, rtol, c.rest_speed, inner
+        )
+        counts[0] += 1.0
+        counts[4] += inner[6]
+        counts[5] += elapsed - inner[6]
+        counts[6] += inner[0]
+        t += elapsed
+        if reason == rc.BELOW_BARRIER:
+            continue  # the test at the top ends it
+        if reason == rc.FACE:
+            if _tumbling(y, c) < c.barrier:
+                counts[7] = ENDED_FACE
+                return resting_face(y[6], c.edge_sine), Status.SETTLED_CONTACT, t
+            break
+        if reason == rc.LIFT_OFF:
+            counts[1] += 1.0
+            for _ in range(MAX_PHASES):
+                flown, approach = _hop(y, c)
+                if flown < 0.0:
+                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
+                t += flown
+                counts[5] += flown
+                if approach >= 0.0:
+                    # No flight opens the gap: the contact goes on, its normal speed removed by
+                    # the frictionless normal impulse of least energy (a plastic touch).
+                    rc._project(y, c, rc.SLIDING)
+                    break
+                counts[2] += 1.0
+                rebound = _impact(y, c)
+                if rebound < c.rest_speed or _energy(y, c) < c.barrier:
+                    break
+            continue
+        if reason == rc.SECOND_RIM:
+            counts[3] += 1.0
+            if _on_band(y, c):
+                face, status, rolled = _band(y, c, duration - t)
+                counts[4] += rolled
+                counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
+                return face, status, t + rolled
+        if reason == rc.NOT_IN_CONTACT or reason == rc.SECOND_RIM or reason == rc.PAINLEVE:
+            if reason == rc.PAINLEVE:
+                # No consistent normal force for the slide: the slip is stopped by a tangential
+                # impulse at the contact (Génot & Brogliato 1999, J. Mech. A 18:653: the
+                # paradox resolved by a tangential impact), dissipative, the least kinetic
+                # energy removed (the projection onto rolling).
+                rc._project(y, c, rc.ROLLING)
+            counts[2] += 1.0
+            rebound = _impact(y, c)
+            if rebound >= c.rest_speed and _energy(y, c) >= c.barrier:
+                for _ in range(MAX_PHASES):
+                    flown, approach = _hop(y, c)
+                    if flown < 0.0:
+                        return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
+                    t += flown
+                    counts[5] += flown
+                    if approach >= 0.0:
+                        rc._project(y, c, rc.SLIDING)
+                        break
+                    counts[2] += 1.0
+                    rebound = _impact(y, c)
+                    if rebound < c.rest_speed or _energy(y, c) < c.barrier:
+                        break
+            continue
+        break  # duration, step budget, a failed step
+    counts[7] = ENDED_LIMIT
+    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
+
+
+@njit(cache=True)
+def settle(z, v, n, lm, c):
+    """Carry a coin whose bounces died out on until it cannot leave its well: (face, status,
+    time, s), status SETTLED_CONTACT or UNSETTLED (module notes). (z, v, n, L): the height of
+    its centre of mass, its velocity, heads normal and angular momentum (lab, SI) just after
+    the last impact."""
+    y = np.empty(10)
+    y[0] = z
+    y[1], y[2], y[3] = v
+    y[4], y[5], y[6] = n
+    y[7], y[8], y[9] = lm
+    counts = np.empty(8)
+    return run(y, c, rc.RTOL, DURATION, counts)
+
+
+__all__ = ["DURATION", "MAX_PHASES", "run", "settle"]
