@@ -211,8 +211,9 @@ MAX_STEPS_REACHED = 6
 NOT_IN_CONTACT = 7
 """The start state approaches the table faster than ``approach``: an impact is needed first."""
 STEP_FAILED = 8
-"""60 trial steps in a row were rejected (the step size fell by 0.2⁶⁰): the state is left at
-the last accepted step."""
+"""60 trial steps in a row were rejected (the step size fell by 0.2⁶⁰), or
+:data:`STALL_EVENTS` events in a row made no progress: the state is left at the last accepted
+step."""
 REASON_NAMES = (
     "duration",
     "lift-off",
@@ -251,6 +252,13 @@ falling below it has stopped (the event; then the stick test, and if it holds th
 removes the rest of the slip, at most this, by an impulse): a stopping slip's direction turns
 at ~(u̇_h)/|u_h| as it vanishes, which the step control would follow with steps shrinking with
 it."""
+STALL_TIME = 1e-9
+"""An event located less than this after the one before, s, makes no progress (with
+:data:`STALL_EVENTS`)."""
+STALL_EVENTS = 100
+"""Events in a row that make no progress after which a run stops (:data:`STEP_FAILED`):
+a slide starting on the friction cone's boundary that the stop event ends as it starts,
+again and again (a rounding-level loop, seen once in 84 hand-off landings)."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
 
@@ -580,6 +588,17 @@ def _classify(y, c):
 
 
 @njit(cache=True)
+def _sticks(y, c):
+    """Whether a sliding contact has stopped: its slip below :data:`SLIP_FLOOR` and the
+    rolling force inside the friction cone (and pressing)."""
+    _, _, _, _, _, u = constraint_terms(y, c)
+    if u[0] * u[0] + u[1] * u[1] > SLIP_FLOOR * SLIP_FLOOR:
+        return False
+    f = rolling_force(y, c)
+    return f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]
+
+
+@njit(cache=True)
 def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     """The integrator of :func:`advance_rigid` (y in place). ``counts`` (7 floats) receives
     (accepted steps, rejected steps, event steps, mode changes, largest gap removed, largest
@@ -633,6 +652,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     h = 1e-4
     _derivative(y, k1, c, mode, dx, dy)
     accepted = 0
+    stalled = 0
     while True:
         if settle and below_barrier(y, c):
             return t, mode, BELOW_BARRIER
@@ -696,6 +716,11 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             for i in range(10):
                 y[i] = trial[i]
             t += hi
+            # Events in a row that each advance less than STALL_TIME: the run has stalled (a
+            # slide on the cone's boundary stopping as it starts); the caller restarts it.
+            stalled = stalled + 1 if hi < STALL_TIME else 0
+            if stalled > STALL_EVENTS:
+                return t, mode, STEP_FAILED
             if mode == ROLLING:
                 counts[6] += hi
             ev = _events(y, c, mode, dx, dy, sx, sy, floor, band)
@@ -759,6 +784,15 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         for i in range(10):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+        if mode == SLIDING and _sticks(y, c):
+            # A slide below SLIP_FLOOR whose rolling force is back inside the cone has stopped
+            # (the stick test of a slip's stop, for a slide that started below the floor and
+            # never crossed it: one hovering on the cone's boundary would otherwise be followed
+            # with steps shrinking as its slip turns).
+            mode = ROLLING
+            _project(y, c, ROLLING)
+            counts[3] += 1.0
+            _derivative(y, k1, c, mode, dx, dy)
 
 
 class RigidRun(NamedTuple):

@@ -72,9 +72,18 @@ from coinflight.core.impact import (
 )
 from coinflight.core.outcome import Face, Status
 
+RTOL = 1e-9
+"""Relative tolerance of the one-rim contact's step control in the ending (Dormand–Prince 5(4),
+:func:`coinflight.core.rigid_contact.advance_rigid`): Euler's disk rolling 5 s without
+resistances keeps its energy to 2e-7 of it (the drift is the stepper's, ∝ the tolerance: 2e-6
+at 1e-8)."""
 MAX_PHASES = 20_000
 """Phases at most (one-rim runs, hops, impacts) in one ending; beyond it the landing is
 UNSETTLED in the well it is in."""
+MAX_STEPS = 5_000_000
+"""Accepted steps of the one-rim contact at most in one ending (about 10 s of CPU); beyond
+it the landing is UNSETTLED in the well it is in. A coin spinning fast on its rim while it
+slides takes the most (a nickel at 140 rad/s about the vertical: ~8 μs steps)."""
 DURATION = 60.0
 """Simulated time at most in one ending, s (a coin rolling without resistance never settles)."""
 BAND_FRACTION = 1e-2
@@ -189,23 +198,54 @@ def _approach(y, c):
 
 
 @njit(cache=True)
+def _tilt_acceleration(y, c, side):
+    """n̈_z of the coin in state y (at n_z ≈ 0) carried by the one rim on ``side`` (+1: the
+    rim below for n_z > 0), in the mode the one-rim contact would take there
+    (:mod:`coinflight.core.rigid_contact`), rad/s² (by a step of 1e-8 s of its equations);
+    nan if that rim alone would lift off."""
+    t = y.copy()
+    size = math.sqrt(t[4] * t[4] + t[5] * t[5])
+    tiny = side * 1e-12
+    t[4], t[5], t[6] = t[4] / size, t[5] / size, tiny
+    n = (t[4], t[5], t[6])
+    t[0] = lowest_depth(tiny, c.radius, c.half_thickness, c.corner_radius)
+    rc._project(t, c, rc.SLIDING)
+    mode, dx, dy, jam = rc._classify(t, c)
+    if mode == rc.FREE or jam:
+        return math.nan
+    out = np.empty(10)
+    rc._derivative(t, out, c, mode, dx, dy)
+    omega = angular_velocity((t[7], t[8], t[9]), n, c.i1, c.i3)
+    rate = omega[0] * n[1] - omega[1] * n[0]
+    h = 1e-8
+    for i in range(10):
+        t[i] += h * out[i]
+    m = (t[4], t[5], t[6])
+    omega = angular_velocity((t[7], t[8], t[9]), m, c.i1, c.i3)
+    return (omega[0] * m[1] - omega[1] * m[0] - rate) / h
+
+
+@njit(cache=True)
 def _on_band(y, c):
-    """Whether a coin whose other rim has just come down (n_z = 0) stays on its band: its
+    """Whether a coin whose other rim has just come down (n_z = 0) rests on its band: its
     rocking across the band has less than :data:`BAND_FRACTION` of the energy that would tip
     it over a rim's corner (½ (I1 + m r²) ṅ_z² against the edge well's depth, barrier − m g r),
-    and the moment its turning needs, (I3 + m r²) |ω_a ω_z| (the gyroscopic and centripetal
-    moments of a wheel rolling on a curve at spin ω_a about its axis and yaw rate ω_z), is
-    within what the band's width can give, m g h′ (h′ = h/2 − a, the load moved to one rim)."""
+    and each rim alone would let the coin tip onto the other (n̈_z towards 0 on either side:
+    the two-contact problem's solution then loads both rims; a coin turning or spinning fast
+    enough for its gyroscopic and centripetal moments to lift one rim fails it); and there is
+    friction (μ > 0) to stop its slip and pivoting on the band (:func:`_band`)."""
+    if not c.friction > 0.0:
+        return False  # frictionless, nothing stops the band's slip and pivoting
     n = (y[4], y[5], y[6])
     omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
     m, r = c.mass, c.radius
     tilt_rate = omega[0] * n[1] - omega[1] * n[0]  # ṅ_z
     rocking = 0.5 * (c.i1 + m * r * r) * tilt_rate * tilt_rate
-    depth = c.barrier - m * c.g * r
-    spin = omega[0] * n[0] + omega[1] * n[1] + omega[2] * n[2]
-    turning = (c.i3 + m * r * r) * abs(spin * omega[2])
-    band = c.half_thickness - c.corner_radius
-    return rocking < BAND_FRACTION * depth and turning < m * c.g * band
+    if not rocking < BAND_FRACTION * (c.barrier - m * c.g * r):
+        return False
+    up = _tilt_acceleration(y, c, 1.0)
+    down = _tilt_acceleration(y, c, -1.0)
+    return up < 0.0 and down > 0.0
 
 
 @njit(cache=True)
@@ -280,8 +320,11 @@ def run(y, c, rtol, duration, counts):
             return resting_face(y[6], c.edge_sine), Status.SETTLED_CONTACT, t
         if t >= duration:
             break
+        budget = MAX_STEPS - counts[6]
+        if budget < 1.0:
+            break
         elapsed, _mode, reason = rc._run(
-            y, c, duration - t, True, rc.MAX_STEPS, rtol, c.rest_speed, inner
+            y, c, duration - t, True, int(budget), rtol, c.rest_speed, inner
         )
         counts[0] += 1.0
         counts[4] += inner[6]
@@ -290,6 +333,8 @@ def run(y, c, rtol, duration, counts):
         t += elapsed
         if reason == rc.BELOW_BARRIER:
             continue  # the test at the top ends it
+        if reason == rc.STEP_FAILED:
+            continue  # restarted from its state (classified afresh, steps from the start)
         if reason == rc.FACE:
             if _tumbling(y, c) < c.barrier:
                 counts[7] = ENDED_FACE
@@ -361,7 +406,7 @@ def settle(z, v, n, lm, c):
     y[4], y[5], y[6] = n
     y[7], y[8], y[9] = lm
     counts = np.empty(8)
-    return run(y, c, rc.RTOL, DURATION, counts)
+    return run(y, c, RTOL, DURATION, counts)
 
 
-__all__ = ["DURATION", "MAX_PHASES", "run", "settle"]
+__all__ = ["DURATION", "MAX_PHASES", "RTOL", "run", "settle"]
