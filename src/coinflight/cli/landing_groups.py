@@ -31,7 +31,10 @@ ENDING_HELP = (
     "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
     "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 3,000 "
     "landings a second on 2 cores (vigorous tosses, e 0.5, mu 0.3; 2026-11-24) instead of "
-    "about 100,000, and its edge rates depend on the unmeasured resistances and corner radius."
+    "about 100,000, and its edge rates depend on the unmeasured resistances and corner radius. "
+    "rigid: the rigid, event-driven 3-D ending (rolling without slip, exact Coulomb sliding, "
+    "hops flown in closed form, rim impacts, rest on the edge band); about 100 landings a "
+    "second on 2 cores."
 )
 """--ending's help (command line and sweep)."""
 
@@ -132,7 +135,7 @@ TABLE = Group(
                 str | None,
                 option(
                     "--ending",
-                    metavar="rocking|contact",
+                    metavar="rocking|contact|rigid",
                     panel=SURFACE_PANEL,
                     help=_TABLE + ENDING_HELP,
                 ),
@@ -143,7 +146,9 @@ TABLE = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "rolling", "L", "table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE
+                    "rolling",
+                    "L",
+                    "table, --ending contact or rigid: " + ROLLING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -154,7 +159,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                    "table, --ending contact or rigid: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,

@@ -16,7 +16,9 @@ contact, and the energy ending of :func:`coinflight.core.contact_phase.below_bar
 springs. **Not built:** impacts of the other rim or of the face (:mod:`coinflight.core.impact`
 would give them), the two-rim (band) contact of a coin upright on its edge, and the wiring into
 the landing (``Surface(ending=...)``); :func:`advance_rigid` stops and says why when one of
-them is needed. Nothing in the package calls this module yet.
+them is needed. :mod:`coinflight.core.rigid_ending` builds the end of a landing on these modes
+(``Surface(ending="rigid")``): it carries the coin through the stops (hops, rim and face
+impacts, the band).
 
 The state is that of :mod:`coinflight.core.contact_phase`, y = (z, v, n, L): the height of the
 centre of mass, its velocity, the heads normal and the angular momentum about the centre of

@@ -1,4 +1,4 @@
-"""The rigid, event-driven end of a table landing: roll, slide, hop and rim impacts (numba).
+"""The rigid, event-driven end of a table landing: roll, slide, pivot, hop, band and face (numba).
 
 When the bounces of :mod:`coinflight.core.bounce` die out (a rebound slower than the rest
 speed), :func:`settle` carries the coin on until it can no longer leave its well. The coin and
@@ -17,32 +17,49 @@ switches between them are events located in time:
   restitution with Coulomb friction) acts; a rebound slower than the rest speed returns the
   coin to the one-rim contact, a faster one flies on;
 * **the other rim** (a coin with a flat edge band tipping through upright, n_z crossing 0): an
-  impact of the other rim's lowest point, by the same law, then one-rim contact on it or a hop;
-* **the face**: the coin lies flat (its tilt below :data:`coinflight.core.rigid_contact.FACE_SINE`).
+  impact of the other rim's lowest point, by the same law, then one-rim contact on it or a hop
+  (the rocking across the band of Housner's block, 1963, Bull. Seismol. Soc. Am. 53:403);
+* **both rims, on the band**: once that rocking has less than :data:`BAND_FRACTION` of the
+  energy that would tip the coin over a rim, and each rim alone would let it tip onto the
+  other (the two-contact problem loads both), the coin rests on its band (:func:`_band`): the
+  rims' normal velocities, and the band's slip and pivoting, are stopped by the least-energy
+  impulse at the band (which keeps the angular momentum about the contact line), and it rolls
+  on straight, slowed by the rolling resistance, to rest on edge;
+* **the face**: the coin lies flat (its tilt below :data:`coinflight.core.rigid_contact.FACE_SINE`):
+  at rest on that face if its tumbling energy is below the barrier, else the rim point coming
+  down fastest meets the table (:func:`_face_slap`) and the coin flies on.
 
 Dissipation is only where the physics puts it: the impacts (restitution e, friction μ), Coulomb
 friction while sliding, and the rolling and pivoting resistances ℓ_r, ℓ_p (torques ℓ F_n
 against the horizontal and the vertical part of the angular velocity; Surface parameters
 with their sources and ranges in :mod:`coinflight.model.surface`). Without resistances the
 energy of a rolling coin is conserved (tested to 1e-6 over 5 s of Euler's disk). Step sizes
-follow the motion's accuracy (Dormand–Prince 5(4) with error control,
-:data:`coinflight.core.rigid_contact.RTOL`), not a contact stiffness, and the answers converge
-as the tolerance tightens (tests/test_rigid_ending.py).
+follow the motion's accuracy (Dormand–Prince 5(4) with error control, :data:`RTOL`), not a
+contact stiffness, and the answers converge as the tolerance tightens
+(tests/test_rigid_ending.py).
 
 The ending: the coin has settled when its energy is below its well's barrier
 (:func:`coinflight.core.rigid_contact.below_barrier`, rigorous: no force of the rigid contact
-adds energy), or when it lies flat on a face with its tumbling energy below the barrier (flat,
-nothing that does not tip it can turn it over); the outcome is then the well it is in
+adds energy), when it lies flat on a face with its tumbling energy below the barrier, or when
+it has rolled to rest on its band; the outcome is then the well it is in
 (:func:`coinflight.core.impact.resting_face`).
 
-Limits (what is not modelled, and what happens instead): the two rims resting together on a
-coin's flat edge band (an upright coin rolling as a wheel) are followed as alternating impacts
-of one rim and the other, not as a two-point contact mode: a coin rocking on its band that
-cannot leave it settles when its energy falls below the barrier, but one that keeps rolling
-upright with more energy than that runs into :data:`MAX_PHASES` and is reported UNSETTLED in
-the well it is in (counted by the benchmark, ``benchmarks/bench_bounce.py --rigid-rates``).
-A face slap (the coin coming down flat with tumbling energy left) is ended the same way.
-Hops are flown without air drag.
+Limits (what is not modelled, and what happens instead):
+
+* rebounds slower than the landing's rest speed (0.01 m/s by default) are ended plastically
+  (the normal velocity removed by the least-energy normal impulse), as the bounces' end is;
+* on the band the slip and the pivoting are stopped at once, not over the ~I1 |ω_z| /
+  (μ m g h/2) friction needs (10 ms for a nickel pivoting at 1 rad/s, μ 0.3), and the coin
+  then rolls straight: an upright coin is not tipped out of its band by a later turn;
+* Painlevé's paradox (a slide with no consistent normal force) is resolved by stopping the
+  slip with the least-energy tangential impulse (Génot & Brogliato 1999, Eur. J. Mech.
+  A 18:653: a tangential impact);
+* a face slap is a single-point impact at the fastest-falling rim point, not the simultaneous
+  impact of the face;
+* hops are flown without air drag;
+* a landing that has not settled after :data:`DURATION` s of motion, :data:`MAX_PHASES`
+  phases or :data:`MAX_STEPS` steps is UNSETTLED in the well it is in (a coin rolling upright
+  without rolling resistance never settles).
 """
 
 from __future__ import annotations
@@ -437,7 +454,7 @@ def run(y, c, rtol, duration, counts):
         if reason == rc.NOT_IN_CONTACT or reason == rc.SECOND_RIM or reason == rc.PAINLEVE:
             if reason == rc.PAINLEVE:
                 # No consistent normal force for the slide: the slip is stopped by a tangential
-                # impulse at the contact (Génot & Brogliato 1999, J. Mech. A 18:653: the
+                # impulse at the contact (Génot & Brogliato 1999, Eur. J. Mech. A 18:653: the
                 # paradox resolved by a tangential impact), dissipative, the least kinetic
                 # energy removed (the projection onto rolling).
                 rc._project(y, c, rc.ROLLING)

@@ -61,8 +61,8 @@ spread over the contact arc: an assumption, as the rolling resistance (band 1e-5
 MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
 ROCKING_HAS_NO_RESISTANCE = (
-    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
-    "resistance, which the rocking ending would ignore"
+    "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
+    "and pivoting resistance, which the rocking ending would ignore"
 )
 """The one refusal of a rolling or pivoting resistance given with the rocking ending, after
 what was given (``rolling resistance 0.0002 m: …``; a distribution of them drawn toss by toss
@@ -157,11 +157,11 @@ class Surface:
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
         (:mod:`coinflight.core.contact_phase`); assumptions, see
-        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"``
-        only: the rocking ending has none, and refuses one given to it (ValueError,
-        :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch in the hand
-        (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A default is
-        range-checked as a given value is, but marked as not given: ``Surface("table",
+        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"`` or
+        ``ending="rigid"`` only: the rocking ending has none, and refuses one given to it
+        (ValueError, :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch
+        in the hand (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A
+        default is range-checked as a given value is, but marked as not given: ``Surface("table",
         ending="contact")`` equals ``Surface("table", rolling_resistance=1e-4,
         ending="contact")``, yet ``dataclasses.replace(..., ending="rocking")`` accepts the
         first (its resistances are defaults, which the rocking ending keeps unused) and refuses
@@ -169,7 +169,7 @@ class Surface:
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
-        Used only with ``ending="contact"``, as are the two resistances.
+        Used only with ``ending="contact"``.
     ending : {"rocking", "contact", "rigid"}
         How a table landing ends once its bounces die out (a rebound slower than the rest
         speed). ``"rigid"``: the rigid, event-driven 3-D ending of
@@ -203,7 +203,7 @@ class Surface:
     >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: rolling resistance 0.0002 m: only the 3-D contact ending (ending='contact', ...
+    ValueError: rolling resistance 0.0002 m: only the 3-D endings (ending='contact' or 'rigid', ...
     """
 
     kind: SurfaceKind = "hand"
