@@ -190,6 +190,9 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
         "--counts": st.sampled_from(["/dev/zero", "/proc/version", "no/such/file.txt", "", "."]),
         "--interval": st.sampled_from(["exact", "wilson", "bayes", ""]),
         "--psi-sd": _number(0, 10),
+        "--seed": _count(0, 2**32),
+        "--folds": _count(-1, 60),
+        "--repeats": _count(-1, 3),
         "--json": st.just(None),
     },
     "plot toss": {

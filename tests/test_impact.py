@@ -75,10 +75,12 @@ def test_kinetic_energy_never_grows(n, v, w, e, mu):
 @settings(max_examples=100, deadline=None)
 @given(n=unit, v=vec, w=spin)
 def test_elastic_frictionless_keeps_energy_and_reverses_normal_velocity(n, v, w):
+    # The single impact at the lowest point (duration 0: no second contact joins it; the
+    # simultaneous impact's own properties are in tests/test_simultaneous_impact.py).
     n, v, lm = _state(n, v, w)
     rc = impact.contact_point(n, R, HH)
     u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
-    v2, lm2, rebound = impact.impact(v, lm, n, R, HH, M, I1, I3, 1.0, 0.0)
+    v2, lm2, rebound = impact.impact(v, lm, n, R, HH, M, I1, I3, 1.0, 0.0, 0.0, 0.0)
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
     after = impact.kinetic_energy(v2, lm2, n, M, I1, I3)
     assert after == pytest.approx(before, rel=1e-12, abs=1e-18)
@@ -128,10 +130,12 @@ def test_resting_face_wells():
 )
 def test_impulse_acts_through_the_contact_point(n, v, w, e, mu):
     """Any contact impulse J at P leaves the angular momentum about P unchanged:
-    L_P = L_cm − r_P × m v_cm (Goldsmith, Impact, 1960, ch. 2), whatever e and μ."""
+    L_P = L_cm − r_P × m v_cm (Goldsmith, Impact, 1960, ch. 2), whatever e and μ. (The impact
+    at the lowest point alone, duration 0: a simultaneous impact acts elsewhere,
+    tests/test_simultaneous_impact.py.)"""
     n, v, lm = _state(n, v, w)
     rc = np.array(impact.contact_point(n, R, HH))
-    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu)
+    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu, 0.0, 0.0)
     before = np.array(lm) - np.cross(rc, M * np.array(v))
     after = np.array(lm2) - np.cross(rc, M * np.array(v2))
     np.testing.assert_allclose(after, before, rtol=0, atol=1e-12 * (np.abs(before).max() + 1e-9))
@@ -160,9 +164,11 @@ coins = st.builds(
 corners = st.one_of(st.just(0.0), st.just(1.0), st.floats(0.0, 1.0))
 
 
-def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0):
+def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0, duration=0.0):
     """(state before, state after, contact point, approach velocity) of one impact, the rim's
-    corners rounded with a = ``corner`` × h/2."""
+    corners rounded with a = ``corner`` × h/2. Stronge's law at the lowest point alone by
+    default (``duration`` 0: no second contact joins it; the simultaneous impact of a coin
+    landing nearly flat or upright is tested in tests/test_simultaneous_impact.py)."""
     i1, i3 = coin.moments
     r, hh, m = coin.radius, 0.5 * coin.thickness, coin.mass
     a = corner * hh
@@ -173,7 +179,7 @@ def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0):
     rc = impact.contact_point(n, r, hh, a)
     u = impact.contact_velocity(v, impact.angular_velocity(lm, n, i1, i3), rc)
     law = impact.impact if kernel is None else kernel
-    v2, lm2, rebound = law(v, lm, n, r, hh, m, i1, i3, e, mu, a)
+    v2, lm2, rebound = law(v, lm, n, r, hh, m, i1, i3, e, mu, a, duration)
     return (v, lm), (v2, lm2), rc, u, rebound
 
 
@@ -285,6 +291,7 @@ def test_a_sign_flipped_friction_is_caught(monkeypatch):
     monkeypatch.setattr(module, "_friction_rate", pushes)
     monkeypatch.setattr(module, "_rk4", module._rk4.py_func)
     monkeypatch.setattr(module, "contact_impulse", module.contact_impulse.py_func)
+    monkeypatch.setattr(module, "_strike", module._strike.py_func)
     mutant = module.impact.py_func
     rng = np.random.default_rng(11)
     broken = 0

@@ -396,8 +396,15 @@ def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
 
 def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
     """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
-    got = client.get("/api/data?interval=wilson&psi_sd=5").json()
-    assert got == cli_json("data", "--interval", "wilson", "--psi-sd", "5")
+    got = client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3").json()
+    assert got == cli_json(
+        "data", "--interval", "wilson", "--psi-sd", "5", "--seed", "7", "--repeats", "3"
+    )
+    assert got["heterogeneity"]["seed"] == 7 and got["heterogeneity"]["repeats"] == 3
+    # the held-out check's estimated work against the server's budget, before any fit
+    assert api_error(client, "/api/data?folds=48&repeats=1000").startswith(
+        "a held-out check of 48 people in 48 folds × 1000 splits is 960 s of estimated work"
+    )
     assert (got["flips"], got["same"], got["plot"]) == (350_757, 178_078, [])
     assert api_error(client, "/api/data?psi_sd=-1") == cli_error("data", "--psi-sd", "-1")
     # no request reads a file: --counts FILE is the command line's alone
@@ -669,6 +676,7 @@ ENDPOINTS = {
     },
     "data": {
         "interval": ["exact", "wilson"], "psi_sd": ["0", "5", "80"], "dataset": ["bartos2023"],
+        "seed": ["1", "-5"], "folds": ["2", "5", "49"], "repeats": ["1", "3", "0"],
     },
 }  # fmt: skip
 

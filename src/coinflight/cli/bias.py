@@ -39,7 +39,8 @@ PsiDist = Annotated[
         metavar="SPEC",
         rich_help_panel=PSI_PANEL,
         help="A distribution of ψ in degrees: normal:MEAN,SD (or LOW:HIGH, uniform; or a "
-        "number, fixed). p(ψ) is averaged over it.",
+        "number, fixed), or the people's ψ population fitted to a dataset by name "
+        "(bartos2023: see coinflight data). p(ψ) is averaged over it.",
     ),
 ]
 

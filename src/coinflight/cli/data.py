@@ -9,10 +9,19 @@ from typing import Annotated
 import typer
 
 from coinflight import _validation as v
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, JsonFlag, number, print_json
+from coinflight.cli.options import (
+    OUTPUT_HELP,
+    OUTPUT_PANEL,
+    SPLITS_PANEL,
+    JsonFlag,
+    SplitSeed,
+    number,
+    print_json,
+)
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import output_file
 from coinflight.datasets import DATASETS, DEFAULT_DATASET
+from coinflight.studies.flippers import DEFAULT_FOLDS, DEFAULT_REPEATS, MAX_REPEATS
 
 PLOT_MAX_PEOPLE = 1000
 """Most people a forest plot draws (one row each: 1,000 rows make a figure 180 inches tall)."""
@@ -55,6 +64,26 @@ PsiSd = Annotated[
         "normal ψ distribution with this standard deviation.",
     ),
 ]
+Folds = Annotated[
+    int,
+    typer.Option(
+        "--folds",
+        metavar="K",
+        rich_help_panel=SPLITS_PANEL,
+        help="Split the people into K groups; each is predicted by the ψ population fitted to "
+        "the others (at least 2, at most the number of people).",
+    ),
+]
+Repeats = Annotated[
+    int,
+    typer.Option(
+        "--repeats",
+        metavar="R",
+        rich_help_panel=SPLITS_PANEL,
+        help=f"Random splits of the people (1-{MAX_REPEATS}; each fits the model K times, "
+        "about 20 ms each for 48 people).",
+    ),
+]
 PlotFile = Annotated[
     Path | None,
     typer.Option(
@@ -67,46 +96,80 @@ PlotFile = Annotated[
     ),
 ]
 
+PeoplePlotFile = Annotated[
+    Path | None,
+    typer.Option(
+        "--plot-people",
+        metavar="FILE",
+        parser=output_file,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Also write each person's rate against the 95 % predictive intervals of one ψ and "
+        "of the ψ population, and the population under p(ψ); the format follows the suffix, as "
+        f"--plot. {OUTPUT_HELP}",
+    ),
+]
+
 
 def data(
     dataset: Dataset = None,
     counts: Counts = None,
     interval: Interval = "exact",
     psi_sd: PsiSd = 0.0,
+    seed: SplitSeed = None,
+    folds: Folds = DEFAULT_FOLDS,
+    repeats: Repeats = DEFAULT_REPEATS,
     plot: PlotFile = None,
+    plot_people: PeoplePlotFile = None,
     json_output: JsonFlag = False,
 ) -> None:
-    """Same-side and heads rates of real flips, and the precession angle that explains them.
+    """Same-side and heads rates of real flips, the precession angle that explains them, and
+    how people differ: a ψ for each person from one population, checked on held-out people.
 
-    Example: coinflight data --plot forest.png  (Bartoš et al.'s 350,757 flips)
+    Example: coinflight data --seed 1 --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """
-    from coinflight.queries.data import check_psi_sd, data_payload
+    from coinflight.queries.data import check_psi_sd, check_splits, data_payload, flippers
     from coinflight.studies.data import counts_source, summarize
 
     if dataset is not None and counts is not None:
         counts_source(dataset, counts)  # the error naming both, before any other
     check_psi_sd(psi_sd)
-    if plot is not None:
+    check_splits(seed, folds, repeats)
+    plots = [(flag, path) for flag, path in (("--plot", plot), ("--plot-people", plot_people))
+             if path is not None]  # fmt: skip
+    if plots:
         from coinflight.plotting.style import figure_paths
 
-        figure_paths(plot, "--plot")
+        for flag, path in plots:
+            figure_paths(path, flag)
     table, source, described = counts_source(dataset, counts)
-    if plot is not None and len(table.people) > PLOT_MAX_PEOPLE:
-        shown, most = v.over_limit(len(table.people), PLOT_MAX_PEOPLE)
-        raise ValueError(
-            f"--plot draws one row per person: at most {most} people, got "
-            f"{shown}; leave out --plot (--json lists every person)"
-        )
+    for flag, _ in plots:
+        if len(table.people) > PLOT_MAX_PEOPLE:
+            shown, most = v.over_limit(len(table.people), PLOT_MAX_PEOPLE)
+            raise ValueError(
+                f"{flag} draws one row per person: at most {most} people, got "
+                f"{shown}; leave out {flag} (--json lists every person)"
+            )
     summary = summarize(table, interval, math.radians(psi_sd))
+    analysis = flippers(table, seed, folds, repeats)
+    if plot_people is not None and isinstance(analysis, str):
+        raise ValueError(f"--plot-people draws the ψ population, which is {analysis}")
     written = []
-    if plot is not None:
-        from coinflight.plotting.forest import plot_forest
+    if plots:
+        from coinflight.plotting.forest import plot_flippers, plot_forest
         from coinflight.plotting.style import save_figure
 
-        written = save_figure(plot_forest(summary), plot)
+        if plot is not None:
+            written += save_figure(plot_forest(summary), plot)
+        if plot_people is not None and not isinstance(analysis, str):
+            written += save_figure(plot_flippers(table, analysis), plot_people)
     if json_output:
-        print_json(data_payload(described, summary, psi_sd, written))
+        print_json(data_payload(described, summary, psi_sd, written, analysis))
         return
     for line in summary.report(source, psi_sd):
         typer.echo(line)
+    if isinstance(analysis, str):
+        typer.echo(f"people differ: ψ population {analysis}")
+    else:
+        for line in analysis.report():
+            typer.echo(line)
     echo_written(written)

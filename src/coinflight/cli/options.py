@@ -28,6 +28,7 @@ METHOD_PANEL = "Method"
 SURFACE_PANEL = "Landing"
 PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
+SPLITS_PANEL = "Held-out people"
 
 
 def option(
@@ -128,6 +129,14 @@ SimulationSeed = Annotated[
 SimulateSeed = Annotated[
     int | None,
     _seed("Seed of the --simulate tosses (reported; drawn at random if not given).", "Simulation"),
+]
+SplitSeed = Annotated[
+    int | None,
+    _seed(
+        "Seed of the random splits of the people in the held-out check (reported; drawn at "
+        "random if not given).",
+        SPLITS_PANEL,
+    ),
 ]
 PaperSeed = Annotated[int, _seed("Seed of method B's random events (reported).", metavar=None)]
 Threads = Annotated[

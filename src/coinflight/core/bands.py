@@ -96,7 +96,7 @@ def band_measure(u: ArrayLike, length: ArrayLike, a: ArrayLike = np.pi / 2) -> F
     """Measure of the bands in [u, u + length] (u ≥ 0, length ≥ 0), rad: F(u + length) − F(u).
 
     Written so that a short interval does not lose its digits: F(u + L) − F(u) subtracts two
-    numbers of size u, which leaves nothing of an L below u·2⁻⁵² (the cause of issue 10's
+    numbers of size u, which leaves nothing of an L below u·2⁻⁵² (which once gave
     P(heads) = 1 for T in 0.7:0.7000000000000002). Here the whole turns of L count 2a each and
     the rest, an interval [r, r + ρ] with r = u mod 2π and ρ = L mod 2π, is intersected with the
     bands around 0, 2π and 4π as ρ minus what lies outside each, so an interval inside a band
@@ -162,7 +162,7 @@ def _diameter_spin_pieces(x1: float, x2: float, c: float, t1: float, t2: float) 
     Notes
     -----
     Every difference is taken where it is small, so that narrow ranges keep their digits and a
-    range of width → 0 tends to the fixed value (issue 10): pieces are cut in x (the range's ends
+    range of width → 0 tends to the fixed value: pieces are cut in x (the range's ends
     exact), dΩ and the logarithms' differences (log1p) follow from dx, the offsets β come from
     integer band indices (:func:`_segment`), and pieces where Ω t1 and Ω t2 lie in one band
     count dx exactly.

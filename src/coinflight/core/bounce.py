@@ -373,31 +373,85 @@ def bounce_loop(omega_body, start_sign, launch_speed, c, max_bounces):
     (z, v, n, L) is the state after the last impact, which :func:`died_out` (in
     :func:`land_one`) carries to the end, and ``time`` is that impact's. The contacts and
     impacts are those of the rounded rim, corner radius ``c.corner_radius``
-    (:func:`next_contact`, :func:`coinflight.core.impact.impact`)."""
-    # The contact record (core.contact.Contact), unpacked once for the loop below.
-    radius, hh, mass, i1, i3 = c.radius, c.half_thickness, c.mass, c.i1, c.i3
-    corner = c.corner_radius
-    g, restitution, friction = c.g, c.restitution, c.friction
-    rho, edge_sine = c.reach, c.edge_sine
+    (:func:`next_contact`, :func:`impact_step`); the loop is :func:`bounces_until`."""
+    i1, i3 = c.i1, c.i3
     wx, wy, wz = omega_body
     # Launch attitude: identity heads up, a half turn about lab X tails up (flips y and z).
     s = 1.0 if start_sign > 0 else -1.0
     n = (0.0, 0.0, s)
     lm = (i1 * wx, s * i1 * wy, s * i3 * wz)
     v = (0.0, 0.0, launch_speed)
-    z = c.drop_height  # height of the centre of mass above the surface
-    t = 0.0
     # The coin leaves the hand and is looked for on the way down, from the apex on.
-    tau = launch_speed / g
-    bounces = 0
-    first = -1.0
-    for _ in range(MAX_IMPACTS):
-        tc, n, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
+    face, status, t, z, _, v, n, lm, _, bounces, first, _ = bounces_until(
+        math.inf,
+        0.0,
+        c.drop_height,
+        (0.0, 0.0),
+        v,
+        n,
+        lm,
+        launch_speed / c.g,
+        0,
+        -1.0,
+        0,
+        c,
+        max_bounces,
+    )
+    return face, bounces, first, t, status, z, v, n, lm
+
+
+RUNNING = -3
+"""``status`` of :func:`bounces_until` stopped at its stop time, the landing not over."""
+
+
+@njit(cache=True)
+def bounces_until(t_stop, t, z, xy, v, n, lm, tau, bounces, first, count, c, max_bounces):
+    """Flights and impacts from the state at time t until the landing ends or the next contact
+    comes after ``t_stop``.
+
+    Parameters
+    ----------
+    t_stop : float
+        Stop before a contact later than this, s (∞: to the end of the bounces).
+    t, z, xy, v, n, lm :
+        The state at the start of a flight: its time (s), the height of the centre of mass
+        (m), its horizontal position (x, y) (m), velocity (m/s), heads normal and angular
+        momentum about the centre of mass (kg m²/s), lab frame.
+    tau : float
+        Look for the next contact from this time into the flight on, s (the apex after a
+        launch, the time :func:`leave` gives after an impact, 0 from a state above the table).
+    bounces, first, count :
+        Impacts after which the coin flew on so far, the time of the first contact (−1: none
+        yet) and the contacts met (impacts and grazes; at most :data:`MAX_IMPACTS` in all).
+    c : Contact
+    max_bounces : int
+        As :func:`land`.
+
+    Returns
+    -------
+    (face, status, t, z, xy, v, n, lm, tau, bounces, first, count)
+        ``status`` a :class:`coinflight.core.outcome.Status`, :data:`DIED_OUT` (face −1) as in
+        :func:`bounce_loop`, or :data:`RUNNING` when stopped at ``t_stop``: then the state is
+        that of the flight in progress at its start time t (its motion at t_stop in closed
+        form: :func:`fly`), and a call with the values returned carries on.
+    """
+    radius, hh, i1, i3 = c.radius, c.half_thickness, c.i1, c.i3
+    corner, g, edge_sine = c.corner_radius, c.g, c.edge_sine
+    x, y = xy
+    while count < MAX_IMPACTS:
+        tc, n1, approach = next_contact(tau, z, v[2], g, n, lm, i1, i3, radius, hh, corner)
+        if tc >= 0.0 and t + tc > t_stop:
+            return -1, RUNNING, t, z, (x, y), v, n, lm, tau, bounces, first, count
+        count += 1
+        n = n1
         if tc < 0.0:
-            return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
+            face = resting_face(n[2], edge_sine)
+            return face, Status.UNSETTLED, t, z, (x, y), v, n, lm, tau, bounces, first, count
         norm = math.sqrt(dot(n, n))
         n = (n[0] / norm, n[1] / norm, n[2] / norm)
         t += tc
+        x += v[0] * tc
+        y += v[1] * tc
         z = lowest_depth(n[2], radius, hh, corner)
         v = (v[0], v[1], v[2] - g * tc)
         if approach >= 0.0:
@@ -408,20 +462,56 @@ def bounce_loop(omega_body, start_sign, launch_speed, c, max_bounces):
             first = t
         if bounces >= max_bounces:
             face = resting_face(n[2], edge_sine)
-            return face, bounces, first, t, Status.BOUNCE_LIMIT, z, v, n, lm
-        v, lm, rebound = impact(v, lm, n, radius, hh, mass, i1, i3, restitution, friction, corner)
-        face, status = impact_verdict(z, v, lm, n, rebound, c)
+            return face, Status.BOUNCE_LIMIT, t, z, (x, y), v, n, lm, tau, bounces, first, count
+        v, lm, face, status, tau = impact_step(z, v, n, lm, c)
         if status != -1:
-            return face, bounces, first, t, status, z, v, n, lm
-        omega = angular_velocity(lm, n, i1, i3)
+            return face, status, t, z, (x, y), v, n, lm, tau, bounces, first, count
         bounces += 1
-        # Leave the surface: the gap grows like rebound·τ − A τ²/2 at first, with A bounding
-        # the downward acceleration of any point of the coin; start looking at its peak.
-        accel = g + 2.0 * dot(omega, omega) * rho
-        tau = rebound / accel
-        if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
-            tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
-    return resting_face(n[2], edge_sine), bounces, first, t, Status.UNSETTLED, z, v, n, lm
+    face = resting_face(n[2], edge_sine)
+    return face, Status.UNSETTLED, t, z, (x, y), v, n, lm, tau, bounces, first, count
+
+
+@njit(cache=True)
+def impact_step(z, v, n, lm, c):
+    """The impact of the coin touching the table at (z, v, n, lm), and what follows it:
+    (v, lm, face, status, tau).
+
+    The impact is :func:`coinflight.core.impact.impact` (Stronge's law at the lowest point, or
+    the simultaneous impact of a coin meeting the table nearly flat or upright), the verdict
+    :func:`impact_verdict`; status −1 (face −1) if the coin flies on, its next contact looked
+    for from ``tau`` into the flight (:func:`leave`)."""
+    v, lm, rebound = impact(
+        v,
+        lm,
+        n,
+        c.radius,
+        c.half_thickness,
+        c.mass,
+        c.i1,
+        c.i3,
+        c.restitution,
+        c.friction,
+        c.corner_radius,
+    )
+    face, status = impact_verdict(z, v, lm, n, rebound, c)
+    if status != -1:
+        return v, lm, face, status, 0.0
+    return v, lm, -1, -1, leave(rebound, z, v, n, lm, c)
+
+
+@njit(cache=True)
+def leave(rebound, z, v, n, lm, c):
+    """Time into the flight after an impact (the contact point leaving at ``rebound``, m/s)
+    from which the next contact is looked for, s: the gap grows like rebound·τ − A τ²/2 at
+    first, with A bounding the downward acceleration of any point of the coin; its peak, or
+    earlier if the gap is not positive there (:func:`_first_positive`)."""
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    accel = c.g + 2.0 * dot(omega, omega) * c.reach
+    tau = rebound / accel
+    g, i1, radius, hh, corner = c.g, c.i1, c.radius, c.half_thickness, c.corner_radius
+    if _gap_after(tau, z, v[2], g, n, lm, i1, radius, hh, corner) <= 0.0:
+        tau = _first_positive(tau, z, v[2], g, n, lm, i1, radius, hh, corner)
+    return tau
 
 
 @njit(cache=True)
@@ -478,6 +568,132 @@ def died_out(z, v, n, lm, c):
     omega = angular_velocity(lm, n, c.i1, c.i3)
     face = rock(n, omega, c)
     return face, Status.SETTLED_ROCKING, 0.0
+
+
+CONTACT_GAP = CA_TOLERANCE
+"""A coin started with its lowest point within this distance of the table, m, is in contact
+(:func:`follow`): the flight's search hands over to the contact at the same gap."""
+
+STATE_COLUMNS = 12
+"""Columns of a state row in :func:`follow`: position (x, y, z) of the centre of mass (m),
+heads normal, velocity (m/s) and angular momentum about the centre of mass (kg m²/s), lab."""
+
+
+@njit(cache=True)
+def fly(tau, z, xy, v, n, lm, c):
+    """The closed-form flight: (position, velocity, normal) tau into a flight that starts at
+    (z, xy, v, n, lm): ballistic centre of mass, torque-free normal (:func:`precess`)."""
+    m = _precess_from(n, lm, c.i1, tau)
+    g = c.g
+    position = (xy[0] + v[0] * tau, xy[1] + v[1] * tau, z + v[2] * tau - 0.5 * g * tau * tau)
+    return position, (v[0], v[1], v[2] - g * tau), m
+
+
+@njit(cache=True)
+def _store(states, k, position, n, v, lm):
+    for j in range(3):
+        states[k, j] = position[j]
+        states[k, 3 + j] = n[j]
+        states[k, 6 + j] = v[j]
+        states[k, 9 + j] = lm[j]
+
+
+@njit(cache=True)
+def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
+    """The states the ending reaches at ``times[k:]`` (≥ t, the time the bounces ended with
+    ``status``, the coin at (z, xy, v, n, lm)), written into ``states[k:]``: (the index of the
+    first time not followed, the latest time the ending follows, s).
+
+    The hook through which an ending that follows the coin in time hands :func:`follow` its
+    motion (any status: a coin trapped in its well still moves). Neither of today's endings
+    does (the rocking hand-off decides the face from the state alone; the contact phase keeps
+    no trajectory), so nothing after t is followed: (k, t).
+    """
+    return k, t
+
+
+@njit(cache=True)
+def follow(z, xy, v, n, lm, c, max_bounces, times, states):
+    """A landing from any state, followed in time.
+
+    Parameters
+    ----------
+    z, xy, v, n, lm :
+        The state at time 0: height of the centre of mass above the table z = 0 (m), its
+        horizontal position (m), velocity (m/s), heads normal and angular momentum about the
+        centre of mass (kg m²/s), lab frame. The lowest point must not be below the table by
+        more than :data:`CONTACT_GAP` (the caller checks).
+    c : Contact
+    max_bounces : int
+        As :func:`land`.
+    times : ndarray, shape (m,)
+        Sorted times ≥ 0, s, at which to record the state.
+    states : ndarray, shape (m, :data:`STATE_COLUMNS`)
+        Written: row k the state at ``times[k]`` (after an impact at that very time), for the
+        rows followed.
+
+    Returns
+    -------
+    (face, bounces, first contact, end of the bounces, settle time, status, followed, until)
+        As :func:`land_one`, with the time the bounces ended (s), the number of times
+        followed (the rows of ``states`` written: the flights in closed form and the impacts
+        up to the end of the bounces, then what the ending follows, :func:`ending_states`)
+        and the latest time followed, s (∞: to the end).
+
+    Notes
+    -----
+    A coin started within :data:`CONTACT_GAP` of the table is in contact: approaching (its
+    lowest point moving down), it strikes at once (:func:`impact_step`); otherwise the
+    verdict after an impact decides (:func:`impact_verdict`, with the lowest point's normal
+    velocity as the rebound): trapped in its well, absorbed (e = 0), handed to the ending
+    (slower than the rest speed: :func:`died_out`), or flying off. Elsewhere the flight is
+    searched from time 0 on (:func:`bounces_until`).
+    """
+    m = times.shape[0]
+    k = 0
+    t, tau, bounces, first, count = 0.0, 0.0, 0, -1.0, 0
+    face, status = -1, -1
+    gap = z - lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
+    if gap <= CONTACT_GAP:
+        rc = contact_point(n, c.radius, c.half_thickness, c.corner_radius)
+        uz = cross(angular_velocity(lm, n, c.i1, c.i3), rc)[2] + v[2]
+        first = 0.0
+        if uz < 0.0:
+            count = 1
+            if max_bounces <= 0:
+                face = resting_face(n[2], c.edge_sine)
+                status = Status.BOUNCE_LIMIT
+            else:
+                v, lm, face, status, tau = impact_step(z, v, n, lm, c)
+                if status == -1:
+                    bounces = 1
+        else:
+            face, status = impact_verdict(z, v, lm, n, uz, c)
+            if status == -1:
+                tau = leave(uz, z, v, n, lm, c)
+        while k < m and times[k] <= 0.0:  # after the impact, if any
+            _store(states, k, (xy[0], xy[1], z), n, v, lm)
+            k += 1
+    while status == -1:
+        t_stop = times[k] if k < m else math.inf
+        face, status, t, z, xy, v, n, lm, tau, bounces, first, count = bounces_until(
+            t_stop, t, z, xy, v, n, lm, tau, bounces, first, count, c, max_bounces
+        )
+        if status == RUNNING:
+            while k < m and times[k] <= t_stop:
+                position, vk, nk = fly(times[k] - t, z, xy, v, n, lm, c)
+                _store(states, k, position, nk, vk, lm)
+                k += 1
+            status = -1
+    end = t
+    duration = 0.0
+    if status == DIED_OUT:
+        face, status, duration = died_out(z, v, n, lm, c)
+    while k < m and times[k] <= end:  # at the last contact itself: the state after it
+        _store(states, k, (xy[0], xy[1], z), n, v, lm)
+        k += 1
+    k, until = ending_states(end, z, xy, v, n, lm, status, c, times, k, states)
+    return face, bounces, first, end, end + duration, status, k, until
 
 
 @njit(cache=True)

@@ -69,26 +69,15 @@ it (the projected area changes with the attitude), lasts at most ``MAX_STEP`` s 
 surface (its centre stays higher than the coin's reach, falling at most −min(v_z, 0) h + g h²/2:
 falling, the drag only slows it) skips the contact search.
 
-Accuracy. Against DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`) the catch
-time of the first 40 tosses of ``benchmarks/bench_air.py`` (a US nickel, ωx 150-300 rad/s, v0
-1.5-3 m/s, heads up) differs by 3.2e-7 s (median) and 7.6e-7 s (worst) and n_z by at most
-2e-4, and their first contact with a table 0.8 m below launch by 7.6e-7 s (median) and 3.3e-6
-s (worst) (``python benchmarks/bench_air.py --accuracy 40 --old-src …``; the previous contact
-search, advancing by steps of the integrator, in the same run: 7.7e-7 and 3.3e-6 s; an earlier
-measurement, with another script, gave 3.1e-7/1.4e-6 s (catch) and 7.7e-7/1.8e-6 s (first
-contact)); with Simpson's weights for the face drag and steps of 0.95 rad (the previous
-integrator, 2.5 times as many steps) 6.1e-7 and 3.2e-6 s (catch), 3.2e-7 and 2.1e-6 s (first
-contact). Against the same integrator with steps of 0.02 rad (itself within 6e-9 s of DOP853)
-the catch is off by median/worst 3.8e-8/1.7e-7 s at 0.95 rad a step, 3.1e-7/8.1e-7 at 2.0,
-4.1e-7/9.6e-7 at 2.2, 3.1e-7/1.4e-6 at 2.4, 3.9e-6/1.2e-5 at 3.0; without the kink integrals
-3.2e-7/2.0e-6 at 0.95, 4.4e-6/1.8e-5 at 2.2, 1.3e-4/3.4e-4 at 3.0. ``TURN_STEP`` = 2π/(2 +
-(√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn (the kinks at spread
-phases of the steps). For scale, the drag itself moves the catch by ~4e-3 s and a 10 % change
-of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s on a handful of tosses. Re-measured 2026-11-24
-after :func:`kink_integrals` was rewritten and its root count made to agree with the end signs
-(``--accuracy 40 --old-src`` main's src at 6061499, in one run, load 3.7-3.9): catch 3.2e-7 s
-(median) and 7.6e-7 s (worst), first contact 7.6e-7 and 3.3e-6 s, second contact 1.9e-6 and 3e-4
-s; main's the same to two digits on each.
+Accuracy. Against SciPy's DOP853 at rtol 1e-12 (:func:`coinflight.core.numerical.air_catch`)
+the catch time of vigorous tosses of a US nickel (ωx 150-300 rad/s, v0 1.5-3 m/s) is off by
+about 3e-7 s (median) and under 1e-6 s (worst), n_z by at most 2e-4, and the first contact with
+a table 0.8 m below launch by about 1e-6 s (median) and a few 1e-6 s (worst)
+(``python benchmarks/bench_air.py --accuracy 40``). For scale, the drag itself moves the catch
+by ~4e-3 s and a 10 % change of C_d by ~4e-4 s; tests/test_drag.py checks 1e-5 s.
+``TURN_STEP`` = 2π/(2 + (√5 − 1)/2) ≈ 2.40 rad keeps the step incommensurate with the half turn
+(the kinks fall at spread phases of the steps); without the kink integrals the same step would
+be an order of magnitude less accurate.
 
 Events. The catch is the centre of mass coming back down to launch height; the table contact
 is the coin's lowest point reaching the surface (:func:`next_contact`). Far from it the steps
@@ -104,31 +93,17 @@ coin approaches starts a safeguarded Newton iteration on the length of one step 
 step's start (a step of any length from a state is a smooth function of its length), to
 GAP_TOLERANCE.
 
-Cost (``python benchmarks/bench_air.py --profile 20000``, 5 runs, one thread, 2026-11-24, load
-3.9-3.6: the processor's cycle counter around the phases of a copy of :func:`land_one`, whose
-impacts and endings it checks toss by toss against :func:`land_one`): 34.9 µs of CPU a toss
-carried to rest; of the timed phases (medians of the 5 runs, their range in brackets) the first
-flight 30 % (30.1-30.3 %; 66.6 steps of ~2.4 rad), the bounce flights 34 % (34.3-34.5 %; 7.8 a
-toss, 34.8 steps in all, with the evaluations of the gap's lower bound), the impacts 32 %
-(32.3-32.6 %; 8.8 a toss, :func:`coinflight.core.impact.impact`), :func:`lift` 2 % and the
-endings 1 % (the rocking hand-off ending 55 % of the tosses). Apportioned to the CPU time by
-those shares: ~160 ns a step of the first flight, ~340 ns a step of the bounce flights, ~1.3 µs
-an impact. The shares move by a few points from run to run: first flight, bounce flights and
-impacts 31, 36 and 30 % in another run of 5 at load 4.1 (single runs up to 2 points off the
-median), 31-34, 34-35 and 28-32 % in a reviewer's runs at load 4, 28, 34 and 36 % in an
-earlier single run at load ~6; with 2,000 tosses (``--profile 2000``, 3 runs) single runs were
-up to 6 points off their median. The cycle counter runs on while the thread is switched out,
-so on a loaded machine each phase also carries some of other processes' time (in the run above
-the timed phases' cycles, 34.5 µs a toss, matched the CPU time; in the one at load 4.1, 51 µs
-against 36.3 µs). The steps are
-allocation-free (tuples of scalars) and run on numba's threads, one toss per iteration. The
-impacts are those of the vacuum's landing: a toss carried to rest through air costs the
-flights' ~100 steps on top of them.
+Cost: about 35 µs of one core a toss carried to rest on a table (``python
+benchmarks/bench_air.py --profile 20000`` times the phases), roughly a third each in the first
+flight (~70 steps of ~2.4 rad), the bounce flights and the impacts
+(:func:`coinflight.core.impact.impact`). The steps are allocation-free (tuples of scalars) and
+run on numba's threads, one toss per iteration; a toss carried to rest through air costs the
+flights' ~100 steps on top of the vacuum landing's impacts.
 
 Accuracy of a bounce flight (``python benchmarks/bench_air.py --accuracy 40``): from the state
 after DOP853's own first impact to the next contact, 1.7e-10 s (median) and 4.7e-6 s (largest)
 off DOP853 at rtol 1e-12; the second contact from launch (the first flight's error carried
-through the impact) 1.9e-6 s (median) and 3e-4 s (largest), as with the previous search.
+through the impact) 1.9e-6 s (median) and 3e-4 s (largest).
 """
 
 from __future__ import annotations

@@ -33,24 +33,9 @@ if TYPE_CHECKING:
 
 DRAG_TOSSES_PER_SECOND = 4e4
 """Hand catches through air a second, for the work bounds: a US nickel, ωx 150-300 rad/s,
-C_d = 1.17, 2 threads on the shared 2-core machine (``python benchmarks/bench_air.py
---reference 3 --old-src ...``, 100,000 tosses, medians of 5: 59,500 a second under a load of
-6.5-7.2, 126,000 per CPU second in one thread; 1.26 times the previous integrator's, steps of
-0.95 rad, in the same rounds). Re-measured 2026-11-23 (``python benchmarks/bench_air.py
---reference 3 --old-src ...``, same tosses): 129,000 a second at a load of 3.5-5, 118,000 per CPU
-second in one thread; 182,000 a second on the quiet machine (load about 1); kept at 40,000 for a
-busy one. The table landing's rate is
-:data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND` (26,900 a second carried to rest in
-the same run, load 3.5-5). After the kink integrals' rewrite (2026-11-24) the
-hand catch is 1.03-1.08 times main's rate, within the A/B's resolution of about 5 % (below:
-its order is fixed within a round and only the other side warms up in parallel) (CPU time,
-one thread: 1.06 in the same command's
-run, 120,901 against 113,238 tosses per CPU second; an interleaved A/B of one thread each, 7
-rounds of 10,000 tosses at a load of 13, 1.03-1.05); that run's wall-clock rates at a load of
-10.5, 79,658 a second against main's 64,546, are mostly the load's. The A/B is ``python
-benchmarks/bench_air.py --ab 7 --n 30000 --old-src ...``; after the root count's fix it gave
-a median of 1.08 against main (rounds 1.07-1.40, load 3.7-4.0) and 1.06 against the fix's
-parent (rounds 1.04-1.06); single rounds scatter widely, so read it to a few percent only."""
+C_d = 1.17, on 2 threads of a busy 2-core machine (a quiet one runs 3 to 4 times as many;
+``python benchmarks/bench_air.py`` measures it). The table landing's rate is
+:data:`coinflight.outcomes.table.AIR_LANDINGS_PER_SECOND`."""
 
 
 def drag_model(coin: Coin, drag: Drag, g: float, projected: bool = True) -> Any:

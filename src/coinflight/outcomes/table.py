@@ -15,14 +15,14 @@ from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES, STATUS_NAMES, Status
 from coinflight.model.coin import Coin
 from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, Drag, Surface
-from coinflight.model.toss import Toss
+from coinflight.model.toss import STANDARD_GRAVITY, Toss, check_gravity
 from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
     FaceArray,
@@ -36,6 +36,8 @@ from coinflight.outcomes.base import (
 )
 
 if TYPE_CHECKING:
+    from scipy.spatial.transform import Rotation
+
     from coinflight.core.contact import Contact
     from coinflight.model.ensemble import TossDistribution
 
@@ -300,6 +302,135 @@ def land(
 
 
 @dataclass(frozen=True, eq=False)
+class StartState:
+    """A coin's state at the start of a landing (:meth:`Landing.from_state`), SI, lab frame.
+
+    Attributes
+    ----------
+    position, velocity, normal, angular_momentum : ndarray, shape (3,)
+        Centre of mass (m; the table is z = 0), its velocity (m/s), the heads normal and the
+        angular momentum about the centre of mass (kg m²/s).
+    orientation : scipy.spatial.transform.Rotation
+        Coin frame → lab, as given.
+    i1, i3 : float
+        The coin's principal moments, kg m².
+    g : float
+        Gravitational acceleration, m/s².
+    """
+
+    position: FloatArray
+    orientation: Rotation
+    velocity: FloatArray
+    normal: FloatArray
+    angular_momentum: FloatArray
+    i1: float
+    i3: float
+    g: float
+
+    @classmethod
+    def build(
+        cls,
+        coin: Coin,
+        position: ArrayLike,
+        orientation: Rotation,
+        velocity: ArrayLike,
+        angular_velocity: ArrayLike,
+        g: float,
+    ) -> StartState:
+        """The validated state (ValueError/TypeError naming the value)."""
+        from scipy.spatial.transform import Rotation
+
+        from coinflight.core.bounce import CONTACT_GAP
+        from coinflight.core.impact import lowest_depth
+
+        vectors = {}
+        for name, value, unit in (
+            ("position", position, "m"),
+            ("velocity", velocity, "m/s"),
+            ("angular_velocity", angular_velocity, "rad/s"),
+        ):
+            arr = v.finite(name, value, unit)
+            if arr.shape != (3,):
+                raise ValueError(
+                    f"{name} must have 3 components (x, y, z, lab frame), got shape {arr.shape}"
+                )
+            vectors[name] = arr
+        if not isinstance(orientation, Rotation):
+            raise TypeError(
+                "orientation must be a scipy.spatial.transform.Rotation, "
+                f"got {type(orientation).__name__}"
+            )
+        if not orientation.single:
+            raise ValueError(f"orientation must be one rotation, got a stack of {len(orientation)}")
+        matrix = orientation.as_matrix()
+        if not np.all(np.isfinite(matrix)):
+            raise ValueError("orientation must be finite")
+        gravity = check_gravity(g)
+        normal = matrix[:, 2] / np.linalg.norm(matrix[:, 2])
+        i1, i3 = (float(x) for x in coin.moments)
+        omega = vectors["angular_velocity"]
+        momentum = i1 * omega + (i3 - i1) * float(omega @ normal) * normal
+        z = float(vectors["position"][2])
+        depth = float(
+            lowest_depth(float(normal[2]), coin.radius, 0.5 * coin.thickness, coin.corner_radius)
+        )
+        if z - depth < -CONTACT_GAP:
+            raise ValueError(
+                f"position z = {z:.6g} m puts the coin's lowest point {depth - z:.3g} m below "
+                f"the table (z = 0); its lowest point is {depth:.6g} m below its centre in "
+                "this orientation: raise z"
+            )
+        return cls(
+            position=vectors["position"],
+            orientation=orientation,
+            velocity=vectors["velocity"],
+            normal=normal,
+            angular_momentum=momentum,
+            i1=i1,
+            i3=i3,
+            g=gravity,
+        )
+
+    def omega(self, momentum: FloatArray, normal: FloatArray) -> FloatArray:
+        """Angular velocity (…, 3), rad/s, of the angular momenta and normals (…, 3):
+        ω = L/I1 + (1/I3 − 1/I1)(L·n) n (a symmetric top)."""
+        along = np.sum(momentum * normal, axis=-1, keepdims=True)
+        return momentum / self.i1 + (1.0 / self.i3 - 1.0 / self.i1) * along * normal
+
+
+@dataclass(frozen=True, eq=False)
+class LandingStates:
+    """A landing's state at given times (:meth:`Landing.at`), SI, lab frame; arrays shaped
+    like ``time`` with a last axis of 3.
+
+    Attributes
+    ----------
+    time : ndarray
+        s since the start state.
+    position : ndarray
+        Centre of mass, m (the table is z = 0).
+    normal : ndarray
+        Heads normal (the coin's angle about it is not followed: a cylinder's motion does not
+        depend on it).
+    velocity : ndarray
+        Velocity of the centre of mass, m/s.
+    angular_velocity : ndarray
+        rad/s.
+    angular_momentum : ndarray
+        About the centre of mass, kg m²/s.
+
+    At the time of an impact, the state just after it.
+    """
+
+    time: FloatArray
+    position: FloatArray
+    normal: FloatArray
+    velocity: FloatArray
+    angular_velocity: FloatArray
+    angular_momentum: FloatArray
+
+
+@dataclass(frozen=True, eq=False)
 class Landing:
     """A toss (or a batch of tosses) that ends on a table.
 
@@ -325,13 +456,19 @@ class Landing:
     """
 
     coin: Coin
-    toss: Toss
+    toss: Toss | None
     surface: Surface
     drag: Drag | None = None
     max_bounces: int | None = None
+    start: StartState | None = None
 
     def __post_init__(self) -> None:
-        for name, kind in (("coin", Coin), ("toss", Toss), ("surface", Surface)):
+        checks: tuple[tuple[str, type], ...] = (("coin", Coin), ("surface", Surface))
+        if self.start is None:
+            checks += (("toss", Toss),)
+        elif self.toss is not None or self.drag is not None:
+            raise ValueError("a landing from a state (Landing.from_state) takes no toss or drag")
+        for name, kind in checks:
             if not isinstance(getattr(self, name), kind):
                 raise TypeError(
                     f"{name} must be a {kind.__name__}, got {type(getattr(self, name)).__name__}"
@@ -341,9 +478,154 @@ class Landing:
         if self.max_bounces is not None:
             check_max_bounces(self.max_bounces)
 
+    @classmethod
+    def from_state(
+        cls,
+        coin: Coin,
+        surface: Surface,
+        *,
+        position: ArrayLike,
+        orientation: Rotation,
+        velocity: ArrayLike,
+        angular_velocity: ArrayLike,
+        g: float = STANDARD_GRAVITY,
+        max_bounces: int | None = None,
+    ) -> Landing:
+        """The landing of a coin started in any state above (or on) the table z = 0.
+
+        Parameters
+        ----------
+        coin : Coin
+        surface : Surface
+            Kind ``"table"``: e, μ and the ending (its drop height is not used: the state
+            gives the height).
+        position : array_like, shape (3,)
+            Centre of mass, lab frame, m; the table is the plane z = 0, gravity along −z.
+        orientation : scipy.spatial.transform.Rotation
+            One rotation taking the coin's frame (heads normal along its z) to the lab.
+        velocity : array_like, shape (3,)
+            Velocity of the centre of mass, lab frame, m/s.
+        angular_velocity : array_like, shape (3,)
+            Angular velocity, lab frame, rad/s.
+        g : float
+            Gravitational acceleration, m/s².
+        max_bounces : int, optional
+            As :class:`Landing`.
+
+        Returns
+        -------
+        Landing
+            Its :attr:`outcome` as for a toss (times counted from the state, s), and
+            :meth:`at`, the state at given times.
+
+        Notes
+        -----
+        The coin may start anywhere whose lowest point is not below the table (within
+        :data:`coinflight.core.bounce.CONTACT_GAP`); started touching it, it strikes at once
+        if its lowest point moves down, else the verdict after an impact decides (trapped in
+        its well, or handed to the ending when slower than the rest speed, or it flies off):
+        :func:`coinflight.core.bounce.follow`. Bad input raises ValueError or TypeError
+        naming the value. No air drag.
+
+        Examples
+        --------
+        >>> from scipy.spatial.transform import Rotation
+        >>> table = Surface("table", restitution=0.45, friction=0.3)
+        >>> drop = Landing.from_state(
+        ...     Coin.preset("us-nickel"), table, position=(0.0, 0.0, 0.35),
+        ...     orientation=Rotation.identity(), velocity=(0.0, 0.0, 0.0),
+        ...     angular_velocity=(1e-6, 0.0, 0.0))
+        >>> drop.outcome.face_name  # a coin dropped flat lands on its start face
+        'heads'
+        """
+        if not isinstance(coin, Coin):
+            raise TypeError(f"coin must be a Coin, got {type(coin).__name__}")
+        if not isinstance(surface, Surface) or surface.kind != "table":
+            raise ValueError("a landing needs a Surface of kind 'table'")
+        state = StartState.build(coin, position, orientation, velocity, angular_velocity, g)
+        return cls(coin, None, surface, None, max_bounces, state)
+
+    def at(self, times: ArrayLike) -> LandingStates:
+        """The state at ``times`` (s since the start state; ≥ 0): the flights in closed form,
+        the impacts, then what the landing's ending follows.
+
+        Only a landing from a state (:meth:`from_state`). ValueError for a time the landing
+        does not follow: after the bounces end (:attr:`followed_until`) when the ending keeps
+        no motion (today's endings decide from the state where the bounces end).
+        """
+        if self.start is None:
+            raise TypeError("Landing.at follows a landing from a state: use Landing.from_state")
+        t = v.non_negative("times", times, "s")
+        flat = t.reshape(-1)
+        order = np.argsort(flat, kind="stable")
+        until = self.followed_until
+        if flat.size and float(flat[order][-1]) > until:
+            raise ValueError(
+                f"times must be at most {until:.6g} s (the end of the bounces: the "
+                f"{self.surface.ending} ending keeps no motion after), got "
+                f"{float(flat[order][-1]):.6g} s"
+            )
+        found, info = self._follow(flat[order])
+        if int(info[6]) < flat.size:  # the ending stopped short of its own promise
+            raise ValueError(f"times after {info[7]:.6g} s are not followed")
+        states = np.empty_like(found)
+        states[order] = found
+        shape = t.shape
+        normal = states[:, 3:6]
+        momentum = states[:, 9:12]
+        return LandingStates(
+            time=t,
+            position=states[:, 0:3].reshape(*shape, 3),
+            normal=normal.reshape(*shape, 3),
+            velocity=states[:, 6:9].reshape(*shape, 3),
+            angular_velocity=self.start.omega(momentum, normal).reshape(*shape, 3),
+            angular_momentum=momentum.reshape(*shape, 3),
+        )
+
+    @property
+    def followed_until(self) -> float:
+        """The latest time :meth:`at` answers for, s since the start state (∞ when the ending
+        follows the coin to the end)."""
+        if self.start is None:
+            raise TypeError("followed_until is a landing's from a state (Landing.from_state)")
+        return float(self._follow(np.empty(0))[1][7])
+
+    def _follow(self, times: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """(states (m, 12), (face, bounces, first, end of the bounces, settle, status,
+        followed, until)) of :func:`coinflight.core.bounce.follow` at the sorted ``times``."""
+        from coinflight.core import bounce
+
+        assert self.start is not None
+        record = contact_record(self.coin, self.surface, self.start.g)
+        states = np.full((times.size, bounce.STATE_COLUMNS), np.nan)
+        st = self.start
+        limit = bounce.MAX_IMPACTS if self.max_bounces is None else int(self.max_bounces)
+        out = bounce.follow(
+            float(st.position[2]),
+            (float(st.position[0]), float(st.position[1])),
+            tuple(float(x) for x in st.velocity),
+            tuple(float(x) for x in st.normal),
+            tuple(float(x) for x in st.angular_momentum),
+            record,
+            limit,
+            np.ascontiguousarray(times, dtype=np.float64),
+            states,
+        )
+        return states, np.asarray(out, dtype=float)
+
     @cached_property
     def outcome(self) -> LandingOutcome:
-        """Face, bounces and times, shaped like the toss batch."""
+        """Face, bounces and times, shaped like the toss batch (0-d from a state)."""
+        if self.start is not None:
+            _, (face, bounces, first, _, settle, status, _, _) = self._follow(np.empty(0))
+            return LandingOutcome(
+                face=np.asarray(face, dtype=np.int8),
+                bounces=np.asarray(bounces, dtype=np.int32),
+                first_contact=np.asarray(first),
+                settle_time=np.asarray(settle),
+                status=np.asarray(status, dtype=np.int8),
+            )
+        assert self.toss is not None
         shape = self.toss.shape
         omega = np.broadcast_to(self.toss.omega, (*shape, 3)).reshape(-1, 3)
         speed = np.broadcast_to(self.toss.launch_speed, shape).reshape(-1)
@@ -608,6 +890,8 @@ __all__ = [
     "STATUS_NAMES",
     "Landing",
     "LandingOutcome",
+    "LandingStates",
+    "StartState",
     "TableLanding",
     "contact_record",
     "land",

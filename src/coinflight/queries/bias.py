@@ -29,7 +29,28 @@ def resolve_psi(psi: float | None, psi_dist: str | None) -> float | QuantileDist
     from coinflight.model.distributions import parse_distribution
 
     assert psi_dist is not None
-    return parse_distribution(psi_dist, "--psi-dist", "degrees")
+    fitted = fitted_psi_dist(psi_dist)
+    if fitted is not None:
+        return fitted
+    try:
+        return parse_distribution(psi_dist, "--psi-dist", "degrees")
+    except ValueError as exc:
+        from coinflight.datasets import DATASETS
+
+        raise ValueError(f"{exc}; or a dataset's name: {', '.join(DATASETS)}") from None
+
+
+def fitted_psi_dist(name: str) -> QuantileDistribution | None:
+    """The ψ population fitted to the shipped dataset ``name`` (``--psi-dist bartos2023``), as a
+    normal distribution of ψ in degrees (:func:`coinflight.studies.flippers.fitted_population`;
+    unfolded, p(ψ) being the same at ψ and 180° − ψ), or None if ``name`` is not a dataset."""
+    from coinflight.datasets import DATASETS
+
+    if name.strip() not in DATASETS:
+        return None
+    from coinflight.studies.flippers import fitted_population
+
+    return fitted_population(name.strip()).distribution()
 
 
 @dataclass(frozen=True)
@@ -99,6 +120,7 @@ def bias_query(
     coin: Coin,
 ) -> AngleBias | PresetBias:
     """The answer of ``coinflight bias`` (options checked in its order)."""
+    from coinflight.datasets import DATASETS
     from coinflight.studies import bias as b
 
     seed = simulation_seed(monte_carlo, seed)
@@ -118,6 +140,11 @@ def bias_query(
         mean = getattr(spec, "mean", None)
         if mean is not None:
             psi_payload["psi_deg"] = float(mean)
+        assert psi_dist is not None
+        if psi_dist.strip() in DATASETS:
+            what = f"{what}, fitted to the people of {psi_dist.strip()} (coinflight data)"
+            psi_payload["psi_sd_deg"] = float(spec.sd)  # type: ignore[attr-defined]
+            psi_payload["fitted_to"] = psi_dist.strip()
     sim = None
     if monte_carlo is not None:
         sim = b.simulate_same_side(spec, monte_carlo, seed, coin=coin, degrees=True)
@@ -175,6 +202,7 @@ __all__ = [
     "PresetBias",
     "bias_curve",
     "bias_query",
+    "fitted_psi_dist",
     "monte_carlo_payload",
     "resolve_psi",
 ]

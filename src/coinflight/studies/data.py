@@ -674,11 +674,19 @@ class Heterogeneity:
         Degrees of freedom, people − 1.
     p_value : float
         Upper tail of χ²(dof).
+    i2 : float
+        Higgins & Thompson's I² = max(0, (χ² − dof) / χ²): the share of the spread of the
+        observed rates that is not binomial sampling (0 when χ² ≤ dof).
+    tau : float
+        DerSimonian & Laird's moment estimate of the standard deviation of the people's true
+        same-side rates, with weights n / (p̄ (1 − p̄)) (p̄ the pooled rate); 0 when χ² ≤ dof.
     """
 
     chi2: float
     dof: int
     p_value: float
+    i2: float = 0.0
+    tau: float = 0.0
 
 
 def heterogeneity(table: CountsTable) -> Heterogeneity:
@@ -689,17 +697,34 @@ def heterogeneity(table: CountsTable) -> Heterogeneity:
     Pearson's χ² on the k × 2 contingency table, no continuity correction
     (``scipy.stats.chi2_contingency``). Bartoš et al. (REFERENCES §6) report that same-side
     rates "vary widely between people"; this is the frequentist check of that statement.
+
+    Pearson's χ² on this table is Cochran's Q of the people's rates with weights
+    w = n / (p̄ (1 − p̄)), so that I² (Higgins & Thompson 2002, "Quantifying heterogeneity in a
+    meta-analysis", Stat. Med. 21, 1539) and τ² = (Q − dof) / (Σw − Σw² / Σw) (DerSimonian &
+    Laird 1986, "Meta-analysis in clinical trials", Control. Clin. Trials 7, 177) follow from it.
     """
     from scipy.stats import chi2_contingency
 
-    if len(table.rows) < 2:
+    if len(table.people) < 2:
         return Heterogeneity(chi2=0.0, dof=0, p_value=1.0)
     same = table.same_by_person
-    counts = np.column_stack([same, table.flips_by_person - same])
+    flips = table.flips_by_person
+    counts = np.column_stack([same, flips - same])
     if table.same in (0, table.flips):
         return Heterogeneity(chi2=0.0, dof=len(counts) - 1, p_value=1.0)
     res = chi2_contingency(counts, correction=False)
-    return Heterogeneity(chi2=float(res.statistic), dof=int(res.dof), p_value=float(res.pvalue))
+    q, dof = float(res.statistic), int(res.dof)
+    pooled = table.same / table.flips
+    w = flips.astype(float) / (pooled * (1.0 - pooled))
+    excess = max(0.0, q - dof)
+    tau2 = excess / float(w.sum() - (w * w).sum() / w.sum())
+    return Heterogeneity(
+        chi2=q,
+        dof=dof,
+        p_value=float(res.pvalue),
+        i2=excess / q if excess > 0.0 else 0.0,
+        tau=math.sqrt(tau2),
+    )
 
 
 @dataclass(frozen=True)
@@ -743,6 +768,8 @@ class CountsSummary:
                 "chi2": self.heterogeneity.chi2,
                 "dof": self.heterogeneity.dof,
                 "p_value": self.heterogeneity.p_value,
+                "i2": self.heterogeneity.i2,
+                "tau": self.heterogeneity.tau,
             },
             "p_same_side_floor": fit.floor,
             "per_person": [

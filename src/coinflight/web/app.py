@@ -263,12 +263,17 @@ def create_app(
         dataset: p.Dataset = None,
         interval: p.Interval = "exact",
         psi_sd: p.PsiSd = 0.0,
+        seed: p.SplitSeed = None,
+        folds: p.Folds = None,
+        repeats: p.Repeats = None,
     ) -> Response:
-        """Same-side and heads rates of real flips (Bartoš et al.'s 350,757) and the precession
-        angle ψ that explains them, as `coinflight data --json`."""
+        """Same-side and heads rates of real flips (Bartoš et al.'s 350,757), the precession
+        angle ψ that explains them and the people's ψ population, as `coinflight data --json`."""
         from coinflight.web import endpoints
 
-        return await answer(endpoints.data, dataset, interval, psi_sd)
+        return await answer(
+            endpoints.data, dataset, interval, psi_sd, seed, folds, repeats, time_limit
+        )
 
     return app
 

@@ -150,8 +150,20 @@ def bias_curve(coin: CoinArgs, psis: tuple[float, ...]) -> list[dict[str, Any]]:
     return curve(psis, coin.resolve())
 
 
-def data(dataset: str | None, interval: str, psi_sd: float) -> dict[str, Any]:
-    """``GET /api/data``: ``coinflight data --json`` for a shipped dataset."""
+def data(
+    dataset: str | None,
+    interval: str,
+    psi_sd: float,
+    seed: int | None,
+    folds: int | None,
+    repeats: int | None,
+    time_limit: float,
+) -> dict[str, Any]:
+    """``GET /api/data``: ``coinflight data --json`` for a shipped dataset; the held-out check's
+    estimated work within the server's budget."""
     from coinflight.queries.data import dataset_payload
 
-    return dataset_payload(dataset, interval, psi_sd)
+    def bound(what: str, seconds: float) -> None:
+        budget(what, seconds, time_limit, "use fewer folds or repeats")
+
+    return dataset_payload(dataset, interval, psi_sd, seed, folds, repeats, bound)

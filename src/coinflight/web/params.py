@@ -257,3 +257,8 @@ MonteCarlo = Annotated[
 Dataset = Annotated[str | None, _q("A dataset shipped with coinflight (default bartos2023).")]
 Interval = Annotated[str, _q("95 % interval: exact (Clopper-Pearson) or wilson.")]
 PsiSd = Annotated[float, _q("Spread of ψ, degrees: 0 fits one fixed ψ; > 0 a normal's mean.")]
+SplitSeed = Annotated[
+    int | None, _q("Seed of the held-out splits of the people (reported; drawn if not given).")
+]
+Folds = Annotated[int | None, _q("Held-out check: groups of people (as --folds, default 2).")]
+Repeats = Annotated[int | None, _q("Held-out check: random splits (as --repeats, default 20).")]

@@ -55,8 +55,8 @@ the origin is a difference of angles of about x / w times rounding (1e-16), so t
 60:60.000000000001 beside wide ωy, ω_z, T disagreed between orders until the budget was
 spent, 14-30 s). Such a range is refused at once (:func:`_check_widths`)."""
 PLANE_PIECES_PER_SECOND = 100.0
-"""Pieces of :class:`_PlaneInterpolant` fitted a second (measured 66-88 on the 2-core
-machine at load 7; each piece 25 arcs of Gauss–Legendre)."""
+"""Pieces of :class:`_PlaneInterpolant` fitted a second on a busy laptop-class core (each piece
+25 arcs of Gauss–Legendre), for the work bounds."""
 
 
 class _Radial:
