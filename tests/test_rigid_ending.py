@@ -416,3 +416,101 @@ def test_dead_landings_are_decided_before_the_ending(ratio):
         faces[ending] = out.face
     assert np.array_equal(faces["rocking"], faces["rigid"])
     assert 0 < np.count_nonzero(faces["rigid"] == 2) < n
+
+
+def test_landing_from_state_runs_the_rigid_ending():
+    # Landing.from_state with Surface(ending="rigid"): a nickel set upright on its band, rolling
+    # straight at 0.3 m/s, rests on edge at the time its rolling resistance takes to bring its
+    # energy below the barrier, (I3 + m r²)(ω − ω_b)/(ℓ m g), ω_b² = 2 (barrier − m g r)/(I3 +
+    # m r²) (the band's closed form, within 1e-9); a nickel dropped flat from 0.35 m lands on
+    # its start face.
+    from scipy.spatial.transform import Rotation
+
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import Landing
+
+    table = Surface("table", restitution=0.5, friction=0.3, ending="rigid")
+    upright = Rotation.from_euler("x", 90, degrees=True)  # heads normal along −y
+    n = upright.apply([0.0, 0.0, 1.0])
+    r = NICKEL.radius
+    spin = 0.3 / r
+    omega = spin * n
+    velocity = -np.cross(omega, [0.0, 0.0, -r])
+    landing = Landing.from_state(
+        NICKEL,
+        table,
+        position=(0.0, 0.0, r),
+        orientation=upright,
+        velocity=velocity,
+        angular_velocity=omega,
+    )
+    out = landing.outcome
+    assert (out.face_name, out.status_name) == ("edge", "settled in contact")
+    c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    inertia = c.i3 + c.mass * r * r
+    settled = math.sqrt(2.0 * (c.barrier - c.mass * G * r) / inertia)
+    expected = (spin - settled) * inertia / (1e-4 * c.mass * G)
+    assert float(out.settle_time) == pytest.approx(expected, rel=1e-9)
+    drop = Landing.from_state(
+        NICKEL,
+        table,
+        position=(0.0, 0.0, 0.35),
+        orientation=Rotation.identity(),
+        velocity=(0.0, 0.0, 0.0),
+        angular_velocity=(1e-6, 0.0, 0.0),
+    )
+    assert drop.outcome.face_name == "heads"
+
+
+def test_landing_at_follows_the_rigid_ending_to_rest():
+    # Landing.at through the rigid ending: the upright nickel of the test above, rolling on its
+    # band, is where the closed form puts it (x = r ∫ω dt along n × Z, ω falling at
+    # ℓ m g/(I3 + m r²)) up to the time it settled (followed_until), and not after.
+    from scipy.spatial.transform import Rotation
+
+    from coinflight.model.surface import Surface
+    from coinflight.outcomes.table import Landing
+
+    table = Surface("table", restitution=0.5, friction=0.3, ending="rigid")
+    upright = Rotation.from_euler("x", 90, degrees=True)
+    n = upright.apply([0.0, 0.0, 1.0])
+    r = NICKEL.radius
+    spin = 0.3 / r
+    landing = Landing.from_state(
+        NICKEL,
+        table,
+        position=(0.0, 0.0, r),
+        orientation=upright,
+        velocity=-np.cross(spin * n, [0.0, 0.0, -r]),
+        angular_velocity=spin * n,
+    )
+    end = float(landing.outcome.settle_time)
+    assert landing.followed_until == pytest.approx(end, rel=1e-12)
+    c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    slowing = 1e-4 * c.mass * G / (c.i3 + c.mass * r * r)
+    times = np.array([0.0, 0.5, 1.0, 0.9 * end])
+    states = landing.at(times)
+    direction = np.cross(n, [0.0, 0.0, 1.0])
+    travelled = r * (spin * times - 0.5 * slowing * times**2)
+    assert np.allclose(states.position[:, :2], np.outer(travelled, direction[:2]), atol=1e-9)
+    assert np.allclose(states.normal, n, atol=1e-12)
+    with pytest.raises(ValueError, match="at most"):
+        landing.at([1.01 * end])
+
+
+def test_carried_position_follows_steady_rolling_on_its_circle():
+    # The one-rim contact carries the horizontal position along (y[10:12], integrated with the
+    # motion): a nickel rolling steadily at tilt 0.5 rad, precessing at Ω = 8 rad/s (O'Reilly
+    # 1996, §5), moves its centre of mass on a circle at constant speed |v|: after T its
+    # displacement is the chord 2 (|v|/Ω) sin(Ω T/2) (within 1e-9 m).
+    c = coin_contact(NICKEL, friction=2.0, ending=RIGID_ENDING)
+    tilt, precession = 0.5, 8.0
+    n = np.array([math.sin(tilt), 0.0, math.cos(tilt)])
+    omega = precession * np.array([0.0, 0.0, 1.0]) + rc.steady_spin(tilt, precession, c) * n
+    y = np.append(_rolling_state(c, n, omega), [0.0, 0.0])
+    speed = math.hypot(y[1], y[2])
+    duration = 0.3
+    run = rc.advance_rigid(y, c, duration, rtol=re.RTOL)
+    assert (run.reason, run.mode) == (rc.DURATION, rc.ROLLING)
+    chord = 2.0 * speed / precession * math.sin(0.5 * precession * duration)
+    assert math.hypot(y[10], y[11]) == pytest.approx(chord, abs=1e-9)

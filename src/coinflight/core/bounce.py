@@ -607,8 +607,11 @@ def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
     The hook through which an ending that follows the coin in time hands :func:`follow` its
     motion (any status: a coin trapped in its well still moves). Neither of today's endings
     does (the rocking hand-off decides the face from the state alone; the contact phase keeps
-    no trajectory), so nothing after t is followed: (k, t).
+    no trajectory), so nothing after t is followed: (k, t). The rigid ending does
+    (:func:`coinflight.core.rigid_ending.states`), to the time it settled.
     """
+    if c.ending == RIGID_ENDING and status == Status.SETTLED_CONTACT:
+        return rigid_ending.states(t, z, xy, v, n, lm, c, times, k, states)
     return k, t
 
 

@@ -460,6 +460,9 @@ def _derivative(y, out, c, mode, dx, dy):
     out[7] = torque[0] + f[2] * tau[0]
     out[8] = torque[1] + f[2] * tau[1]
     out[9] = torque[2] + f[2] * tau[2]
+    if y.shape[0] > 10:  # the horizontal position, carried along (not in the error control)
+        out[10] = y[1]
+        out[11] = y[2]
 
 
 @njit(cache=True)
@@ -492,24 +495,24 @@ def _crossed(e):
 def _step(y, h, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new):
     """One Dormand-Prince step of h from y (k1 = f(y) given): ``new`` and the error estimate
     (k7 = f(new))."""
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * _A21 * k1[i]
     _derivative(tmp, k2, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
     _derivative(tmp, k3, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
     _derivative(tmp, k4, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
     _derivative(tmp, k5, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (
             _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
         )
     _derivative(tmp, k6, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         new[i] = y[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
     _derivative(new, k7, c, mode, dx, dy)
 
@@ -632,16 +635,17 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     band = 0.0
     if c.half_thickness - c.corner_radius > 0.0:
         band = 1.0 if y[6] > 0.0 else -1.0
-    k1 = np.empty(10)
-    k2 = np.empty(10)
-    k3 = np.empty(10)
-    k4 = np.empty(10)
-    k5 = np.empty(10)
-    k6 = np.empty(10)
-    k7 = np.empty(10)
-    tmp = np.empty(10)
-    new = np.empty(10)
-    trial = np.empty(10)
+    size = y.shape[0]  # 10, or 12 with the horizontal position (x, y) carried along
+    k1 = np.empty(size)
+    k2 = np.empty(size)
+    k3 = np.empty(size)
+    k4 = np.empty(size)
+    k5 = np.empty(size)
+    k6 = np.empty(size)
+    k7 = np.empty(size)
+    tmp = np.empty(size)
+    new = np.empty(size)
+    trial = np.empty(size)
     scale = np.empty(10)
     reach = c.reach
     speed = max(math.sqrt(c.g * reach), 0.01)
@@ -703,7 +707,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         if _crossed(ev):
             # Bisect the step for the first time an event function crosses.
             lo, hi = 0.0, h
-            for i in range(10):
+            for i in range(size):
                 trial[i] = new[i]
             while hi - lo > EVENT_TIME and hi - lo > 1e-15 * hi:
                 mid = 0.5 * (lo + hi)
@@ -711,11 +715,11 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 counts[2] += 1.0
                 if _crossed(_events(new, c, mode, dx, dy, sx, sy, floor, band)):
                     hi = mid
-                    for i in range(10):
+                    for i in range(size):
                         trial[i] = new[i]
                 else:
                     lo = mid
-            for i in range(10):
+            for i in range(size):
                 y[i] = trial[i]
             t += hi
             # Events in a row that each advance less than STALL_TIME: the run has stalled (a
@@ -775,7 +779,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         t += h
         if mode == ROLLING:
             counts[6] += h
-        for i in range(10):
+        for i in range(size):
             y[i] = new[i]
         gap, drift = _project(y, c, mode)
         counts[4] = max(counts[4], gap)
@@ -783,7 +787,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # First same as last: k7, the derivative at the step's end before the projection (which
         # moves the state by the drift reported, ≲1e-11 m and 1e-9 m/s, measured: far below the
         # step's tolerance), as contact_phase keeps it across n's renormalisation.
-        for i in range(10):
+        for i in range(size):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
         if mode == SLIDING and _sticks(y, c):
@@ -848,8 +852,10 @@ def advance_rigid(
 
     Parameters
     ----------
-    y : ndarray, shape (10,)
-        The state; z is first set so that the lowest rim point touches the table (gap 0), and a
+    y : ndarray, shape (10,) or (12,)
+        The state; with 12 entries the last two are the horizontal position (x, y) of the
+        centre of mass, m, carried along (integrated, outside the step's error control). z is
+        first set so that the lowest rim point touches the table (gap 0), and a
         normal contact speed within ``approach`` is removed by a frictionless normal impulse.
     c : Contact
         The coin, the surface (μ, rolling and pivoting resistance; e is not used: no impact

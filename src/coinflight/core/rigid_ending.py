@@ -165,6 +165,7 @@ def _hop(y, c):
         y[0] = lowest_depth(m[2] / size, r, hh, corner)
         y[3] = vz - g * hi
         y[4], y[5], y[6] = m[0] / size, m[1] / size, m[2] / size
+        _carry(y, hi)
         return hi, _approach(y, c)
     if not opened:
         return 0.0, 0.0  # no hop: the contact goes on
@@ -185,7 +186,16 @@ def _hop(y, c):
     y[0] = z
     y[3] = vz
     y[4], y[5], y[6] = n
+    _carry(y, total)
     return total, approach
+
+
+@njit(cache=True)
+def _carry(y, tau):
+    """The horizontal position (y[10], y[11], when y carries it) after a flight of tau s."""
+    if y.shape[0] > 10:
+        y[10] += y[1] * tau
+        y[11] += y[2] * tau
 
 
 @njit(cache=True)
@@ -376,7 +386,9 @@ def _tumbling(y, c):
 @njit(cache=True)
 def run(y, c, rtol, duration, counts):
     """:func:`settle` on the state y (modified in place), with the step tolerance ``rtol`` and
-    at most ``duration`` s. ``counts`` (8 floats) receives (one-rim runs, hops, impacts, rim
+    at most ``duration`` s (a coin that comes to rest on its band returns with the state it
+    entered it in and the time its closed-form roll ends, up to :data:`DURATION`, which may
+    be later). ``counts`` (8 floats) receives (one-rim runs, hops, impacts, rim
     changes, time rolling, time sliding or in flight, accepted steps, how it ended:
     :data:`ENDED_BARRIER`, :data:`ENDED_FACE`, :data:`ENDED_LIMIT`). Returns (face, status,
     time)."""
@@ -447,7 +459,7 @@ def run(y, c, rtol, duration, counts):
         if reason == rc.SECOND_RIM:
             counts[3] += 1.0
             if _on_band(y, c):
-                face, status, rolled = _band(y, c, duration - t)
+                face, status, rolled = _band(y, c, DURATION - t)
                 counts[4] += rolled
                 counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
                 return face, status, t + rolled
@@ -481,6 +493,86 @@ def run(y, c, rtol, duration, counts):
 
 
 @njit(cache=True)
+def _band_state(y, c, s, out, k):
+    """Row k of ``out``: the coin rolling on its band (entered in state y) s seconds later."""
+    m, r, i3 = c.mass, c.radius, c.i3
+    nx, ny = y[4], y[5]
+    tx, ty = ny, -nx
+    rate = (nx * y[7] + ny * y[8]) / i3
+    slowing = c.rolling_resistance * m * c.g / (i3 + m * r * r)
+    sign = 1.0 if rate >= 0.0 else -1.0
+    s = min(s, abs(rate) / slowing) if slowing > 0.0 else s
+    now = rate - sign * slowing * s
+    rolled = r * (rate * s - 0.5 * sign * slowing * s * s)
+    row = (
+        y[10] + rolled * tx,
+        y[11] + rolled * ty,
+        y[0],
+        nx,
+        ny,
+        0.0,
+        r * now * tx,
+        r * now * ty,
+        0.0,
+        i3 * now * nx,
+        i3 * now * ny,
+        0.0,
+    )
+    for j in range(12):
+        out[k, j] = row[j]
+
+
+@njit(cache=True)
+def states(t0, z, xy, v, n, lm, c, times, k, out):
+    """The motion of the ending from the state (z, xy, v, n, lm) at t0 (the end of the
+    bounces) at ``times[k:]`` (sorted, s), into the rows of ``out`` (position, normal,
+    velocity, angular momentum: :data:`coinflight.core.bounce.STATE_COLUMNS`), up to the time
+    the coin settled: (the index of the first time not followed, that time). The run is
+    stopped and carried on at each time asked for, so a chaotic roll may part from the
+    uninterrupted run of :func:`settle` by its tolerance."""
+    y = np.empty(12)
+    y[0] = z
+    y[1], y[2], y[3] = v
+    y[4], y[5], y[6] = n
+    y[7], y[8], y[9] = lm
+    y[10], y[11] = xy
+    counts = np.empty(8)
+    t = t0
+    m = times.shape[0]
+    while k < m:
+        if times[k] > t:
+            _, status, elapsed = run(y, c, RTOL, times[k] - t, counts)
+            if counts[7] != ENDED_LIMIT or status != Status.UNSETTLED:
+                break  # settled before times[k]
+            t += elapsed
+        for j in range(3):
+            out[k, j] = (y[10], y[11], y[0])[j]
+            out[k, 3 + j] = y[4 + j]
+            out[k, 6 + j] = y[1 + j]
+            out[k, 9 + j] = y[7 + j]
+        k += 1
+    else:
+        # Every time asked for followed: the end, where the coin settled.
+        _, status, elapsed = run(y, c, RTOL, DURATION - (t - t0), counts)
+    if counts[7] == ENDED_BAND:
+        # Settled on its band at t + elapsed, entered at y: the rest of the roll, closed form.
+        rate = abs(y[7] * y[4] + y[8] * y[5]) / c.i3
+        inertia = c.i3 + c.mass * c.radius * c.radius
+        excess = 2.0 * (c.barrier - c.mass * c.g * y[0]) / inertia
+        settled = math.sqrt(excess) if excess > 0.0 else 0.0
+        rolled = 0.0
+        if rate > settled:
+            rolled = (rate - settled) * inertia / (c.rolling_resistance * c.mass * c.g)
+        end = t + elapsed
+        entered = end - rolled
+        while k < m and times[k] <= end:
+            _band_state(y, c, times[k] - entered, out, k)
+            k += 1
+        return k, end
+    return k, t + elapsed
+
+
+@njit(cache=True)
 def settle(z, v, n, lm, c):
     """Carry a coin whose bounces died out on until it cannot leave its well: (face, status,
     time, s), status SETTLED_CONTACT or UNSETTLED (module notes). (z, v, n, L): the height of
@@ -495,4 +587,4 @@ def settle(z, v, n, lm, c):
     return run(y, c, RTOL, DURATION, counts)
 
 
-__all__ = ["DURATION", "MAX_PHASES", "RTOL", "run", "settle"]
+__all__ = ["DURATION", "MAX_PHASES", "RTOL", "run", "settle", "states"]
