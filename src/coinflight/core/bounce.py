@@ -608,9 +608,11 @@ def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
     motion (any status: a coin trapped in its well still moves). Neither of today's endings
     does (the rocking hand-off decides the face from the state alone; the contact phase keeps
     no trajectory), so nothing after t is followed: (k, t). The rigid ending does
-    (:func:`coinflight.core.rigid_ending.states`), to the time it settled.
+    (:func:`coinflight.core.rigid_ending.states`), to the time it settled or gave up.
     """
-    if c.ending == RIGID_ENDING and status == Status.SETTLED_CONTACT:
+    if c.ending == RIGID_ENDING and (
+        status == Status.SETTLED_CONTACT or status == Status.UNSETTLED
+    ):
         return rigid_ending.states(t, z, xy, v, n, lm, c, times, k, states)
     return k, t
 
