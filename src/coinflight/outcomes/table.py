@@ -81,9 +81,9 @@ RIGID_TOSSES_PER_SECOND = 50.0
 """Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
 e > 0), drag-free or through air, for the work bounds: at or below the rates measured on the
 loaded machine. ``python benchmarks/bench_bounce.py --rigid-rates 1000 --rounds 1`` (US nickel,
-e = 0.5, μ = 0.3, resistances 1e-4 m, 2 threads on the project's 2-core machine, load 5.7): 91
-vigorous and 82 human tosses a second (the coins roll for a median 1.5 s, up to 20 s: about
-3,000 steps of the one-rim contact a landing)."""
+e = 0.5, μ = 0.3, resistances 1e-4 m, 2 threads on the project's 2-core machine): 91 vigorous
+and 82 human tosses a second at a load of 5.7, 173 and 93 at 3.0 (the coins roll for a median
+1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
 
 CONTACT_PER_TOSS_PER_SECOND = 75.0
 """The same landings when every toss has its own contact parameters (a distribution of e, μ
