@@ -58,8 +58,8 @@ Limits (what is not modelled, and what happens instead):
   impact of the face;
 * hops are flown without air drag;
 * a landing that has not settled after :data:`DURATION` s of motion, :data:`MAX_PHASES`
-  phases or :data:`MAX_STEPS` steps is UNSETTLED in the well it is in (a coin rolling upright
-  without rolling resistance never settles).
+  phases or :data:`MAX_STEPS` steps is UNSETTLED in the well it is in, as is a coin rolling
+  on its band without rolling resistance (the band's closed-form roll is not capped).
 """
 
 from __future__ import annotations
@@ -387,11 +387,11 @@ def _tumbling(y, c):
 def run(y, c, rtol, duration, counts):
     """:func:`settle` on the state y (modified in place), with the step tolerance ``rtol`` and
     at most ``duration`` s (a coin that comes to rest on its band returns with the state it
-    entered it in and the time its closed-form roll ends, up to :data:`DURATION`, which may
-    be later). ``counts`` (8 floats) receives (one-rim runs, hops, impacts, rim
-    changes, time rolling, time sliding or in flight, accepted steps, how it ended:
-    :data:`ENDED_BARRIER`, :data:`ENDED_FACE`, :data:`ENDED_LIMIT`). Returns (face, status,
-    time)."""
+    entered it in and the time its closed-form roll ends, which may be later, and without
+    rolling resistance is UNSETTLED there). ``counts`` (8 floats) receives (one-rim runs,
+    hops, impacts, rim changes, time rolling, time sliding or in flight, accepted steps, how
+    it ended: :data:`ENDED_BARRIER`, :data:`ENDED_FACE`, :data:`ENDED_BAND`,
+    :data:`ENDED_LIMIT`). Returns (face, status, time)."""
     for i in range(8):
         counts[i] = 0.0
     inner = np.zeros(7)
@@ -459,7 +459,9 @@ def run(y, c, rtol, duration, counts):
         if reason == rc.SECOND_RIM:
             counts[3] += 1.0
             if _on_band(y, c):
-                face, status, rolled = _band(y, c, DURATION - t)
+                # The band's roll is closed form: not capped, unless it never ends.
+                cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
+                face, status, rolled = _band(y, c, cap)
                 counts[4] += rolled
                 counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
                 return face, status, t + rolled
