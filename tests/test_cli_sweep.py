@@ -194,7 +194,7 @@ def test_a_stopped_sweep_leaves_no_table_and_the_rerun_computes_only_the_rest(
         run_sweep(_cases(), out, "monte-carlo", n=5000, seed=3, threads=1)
     assert not out.exists()  # whole or not at all
     checkpoint = tmp_path / f"s.parquet{CHECKPOINT_SUFFIX}"
-    assert len(read_checkpoint(checkpoint)) == 3
+    assert len(read_checkpoint(checkpoint, "monte-carlo", 5000, 3)) == 3
     rerun = _Counting()
     monkeypatch.setattr(sweep_module, "_row_task", rerun)
     results, _ = run_sweep(_cases(), out, "monte-carlo", n=5000, seed=3, threads=1)
@@ -213,10 +213,20 @@ def test_a_checkpoint_is_reused_only_for_the_same_method_n_and_seed(tmp_path, mo
     counting = _Counting()
     monkeypatch.setattr(sweep_module, "_row_task", counting)
     assert sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=checkpoint).reused == 3
-    assert counting.calls == []
-    assert sweep(_cases(3), "monte-carlo", n=1000, seed=2, checkpoint=checkpoint).reused == 0
-    assert sweep(_cases(3), "qmc", n=64, seed=1, checkpoint=checkpoint).reused == 0
-    assert len(counting.calls) == 6
+    assert sweep(_cases(4), "monte-carlo", n=1000, seed=1, checkpoint=checkpoint).reused == 3
+    assert counting.calls == [75.0]
+    for other in [
+        dict(method="monte-carlo", n=1000, seed=2),
+        dict(method="monte-carlo", n=999, seed=1),
+        dict(method="qmc", n=64, seed=1),
+    ]:  # another run's checkpoint: refused, naming it and the run it belongs to
+        with pytest.raises(
+            ValueError, match=r"belongs to another run \(method monte-carlo, n 1000"
+        ):
+            sweep(_cases(3), **other, checkpoint=checkpoint)
+        assert sweep(_cases(3), **other, checkpoint=checkpoint, fresh=True).reused == 0
+        sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=checkpoint, fresh=True)
+    assert len(counting.calls) == 1 + 6 * 3
 
 
 def test_a_torn_last_line_of_a_killed_run_is_recomputed(tmp_path):
@@ -227,6 +237,144 @@ def test_a_torn_last_line_of_a_killed_run_is_recomputed(tmp_path):
     again = sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=checkpoint)
     assert again.reused == 2
     assert [r.counts for r in again] == [r.counts for r in first]
+    # the torn line was dropped, not glued to the row appended after it
+    assert len(read_checkpoint(checkpoint, "monte-carlo", 1000, 1)) == 3
+    assert checkpoint.read_text().count("\n") == 4
+
+
+def _edit_row(text, old, new):
+    lines = text.splitlines(keepends=True)
+    assert old in lines[1]
+    lines[1] = lines[1].replace(old, new, 1)
+    return "".join(lines)
+
+
+CHECKPOINT_ARGS = [
+    "sweep", "--omega-x", "60:90,65:95,70:100", "--flight-time", "0.7",
+    "--method", "monte-carlo", "--n", "1000", "--seed", "5",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "damage, words",
+    [
+        (lambda t: _edit_row(t, '"p_heads": 0.', '"p_heads": 1.7'), "checksum does not match"),
+        (lambda t: _edit_row(t, '"p_heads": 0.', '"p_heads": 0.1'), "checksum does not match"),
+        (lambda t: t + "{}\n", "line 4: it is not a row"),
+        (lambda t: t.splitlines(keepends=True)[0] + "not json\n", "line 2: it is not JSON"),
+        (lambda t: t.split("\n", 1)[1], "was not written by coinflight"),
+        (lambda t: "", "was not written by coinflight"),
+        (lambda t: "\x00\xff" * 50, "was not written by coinflight"),
+        (lambda t: t.replace('"seed": 5}', '"seed": 6}', 1), "belongs to another run"),
+    ],
+)
+def test_a_checkpoint_coinflight_did_not_write_is_refused_naming_it(
+    tmp_path, monkeypatch, damage, words
+):
+    """Issue: a checkpoint edited to p_heads 1.7 was reused and reported; random bytes stopped
+    every rerun with a decode error naming no file. Each: one line naming the file, exit 2,
+    nothing computed or written; --fresh starts over."""
+    out = tmp_path / "s.csv"
+    checkpoint = tmp_path / f"s.csv{CHECKPOINT_SUFFIX}"
+    args = [*CHECKPOINT_ARGS, "--out", out]
+    monkeypatch.setattr(sweep_module, "_row_task", _Counting(fail_at=70.0))
+    assert one_line_error(*args) == "stopped here"  # a run stopped at its last row
+    monkeypatch.undo()
+    assert len(read_checkpoint(checkpoint, "monte-carlo", 1000, 5)) == 2
+    damaged = damage(checkpoint.read_bytes().decode("latin-1"))
+    checkpoint.write_bytes(damaged.encode("latin-1"))
+    before = checkpoint.read_bytes()
+    line = one_line_error(*args)
+    assert line.startswith(f"the checkpoint {checkpoint} "), line
+    assert words in line and "--fresh" in line, line
+    assert checkpoint.read_bytes() == before and not out.exists()
+    result = _cli(*args, "--fresh", "--json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["reused"] == 0 and not checkpoint.exists()
+    with open(out, newline="") as f:
+        assert all(0 <= float(r["p_heads"]) <= 1 for r in csv.DictReader(f))
+
+
+def test_a_checkpoint_longer_than_any_sweep_is_refused(tmp_path, monkeypatch):
+    from coinflight.probability.checkpoint import Checkpoint
+
+    path = tmp_path / "c.jsonl"
+    sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=path)
+    monkeypatch.setattr(sweep_module, "MAX_ROWS", 2)
+    with pytest.raises(ValueError, match=r"holds more rows than a sweep has \(2\)"):
+        Checkpoint(path, "monte-carlo", 1000, 1).read()
+
+
+def test_a_checkpoint_row_out_of_range_is_refused_even_with_its_checksum(tmp_path):
+    """Ranges are checked on read, beyond the checksum (a row rewritten with a fresh one)."""
+    from coinflight.probability.checkpoint import Checkpoint, _checksum
+
+    path = tmp_path / "c.jsonl"
+    sweep(_cases(2), "monte-carlo", n=1000, seed=1, checkpoint=path)
+    header, *rows = path.read_text().splitlines()
+    for change, words in [
+        ({"p_heads": 1.7}, "not a number in \\[0, 1\\]"),
+        ({"p_heads": 0.1}, "do not sum to 1"),
+        ({"n": 2000}, "not of this run's method and n"),
+        ({"counts": {"tails": -1, "heads": 1001, "edge": 0}}, "non-negative integers"),
+        ({"stderr": -0.5}, "stderr is not a non-negative number"),
+    ]:
+        entry = json.loads(rows[0])
+        entry["result"].update(change)
+        entry["check"] = _checksum(entry["key"], entry["result"])
+        path.write_text("\n".join([header, json.dumps(entry), rows[1]]) + "\n")
+        with pytest.raises(ValueError, match=f"{path} is damaged at line 2: .*{words}"):
+            Checkpoint(path, "monte-carlo", 1000, 1).read()
+
+
+def test_a_checkpoint_that_is_a_link_or_a_folder_is_never_followed(tmp_path, monkeypatch):
+    """Issue: a checkpoint that was a symlink was followed (rows appended to another file,
+    then the link deleted). A link is refused, the file it points to untouched; --fresh
+    replaces the link itself."""
+    out = tmp_path / "s.csv"
+    checkpoint = tmp_path / f"s.csv{CHECKPOINT_SUFFIX}"
+    args = [*CHECKPOINT_ARGS, "--out", out]
+    other = tmp_path / "notes.txt"
+    other.write_text("mine\n")
+    checkpoint.symlink_to(other)
+    assert "is a symbolic link" in one_line_error(*args)
+    dangling = tmp_path / "nowhere.jsonl"
+    checkpoint.unlink()
+    checkpoint.symlink_to(dangling)  # a link to nothing: not created through it either
+    assert "is a symbolic link" in one_line_error(*args)
+    assert not dangling.exists()
+    result = _cli(*args, "--fresh")
+    assert result.exit_code == 0, result.output
+    assert other.read_text() == "mine\n" and not dangling.exists()
+    assert not checkpoint.exists() and not checkpoint.is_symlink()
+    out.unlink()
+    checkpoint.mkdir()
+    assert "is not a regular file" in one_line_error(*args)
+    assert "is not a regular file" in one_line_error(*args, "--fresh")
+    # a link put in its place while the sweep runs is not removed at its end
+    checkpoint.rmdir()
+    real = sweep_module.write_table
+
+    def swap_then_write(*a, **k):
+        checkpoint.unlink()
+        checkpoint.symlink_to(other)
+        return real(*a, **k)
+
+    monkeypatch.setattr(sweep_module, "write_table", swap_then_write)
+    result = _cli(*args)
+    assert result.exit_code == 0, result.output
+    assert checkpoint.is_symlink() and other.read_text() == "mine\n"
+    checkpoint.unlink()  # nor a file of someone else's put there
+
+    def replace_then_write(*a, **k):
+        checkpoint.unlink()
+        checkpoint.write_text("someone else's\n")
+        return real(*a, **k)
+
+    monkeypatch.setattr(sweep_module, "write_table", replace_then_write)
+    result = _cli(*args)
+    assert result.exit_code == 0, result.output
+    assert checkpoint.read_text() == "someone else's\n"
 
 
 def test_the_cli_resumes_after_a_failure(tmp_path, monkeypatch):

@@ -16,7 +16,7 @@ import pytest
 from fastapi.testclient import TestClient
 from typer.testing import CliRunner
 
-from _cli import one_line_error
+from _cli import answer, api_answer, one_line_error
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight._validation import DEAD_CONTACT
@@ -59,9 +59,8 @@ ROCKING_ONLY = (
 
 
 def _json(*args: str) -> dict:
-    result = runner.invoke(app, [*args, "--json"])
-    assert result.exit_code == 0, result.output
-    return json.loads(result.stdout)
+    """The object of ``coinflight ARGS --json`` (its command line checked and left out)."""
+    return answer(runner.invoke(app, [*args, "--json"]), [*args, "--json"])
 
 
 # --- the coin's corner radius, validated ----------------------------------------------------
@@ -759,17 +758,17 @@ def test_the_api_gives_the_command_lines_object(client):
         *TOSS, *CONTACT, "--rolling-resistance", "2e-4", "--pivoting-resistance", "5e-5",
         "--corner-radius", "3e-4", "--coin", "us-nickel",
     )  # fmt: skip
-    assert client.get(url).json() == expected
+    assert api_answer(client.get(url)) == expected
     url = (
         "/api/probability?omega_x=150:300&flight_time=0.4:0.6&surface=table&drop_height=0.8"
         "&ending=contact&corner_radius=2e-4&restitution=0.3:0.6&method=monte-carlo&n=30&seed=4"
     )
-    got = client.get(url).json()
+    got = api_answer(client.get(url))
     expected = _json(*PROBABILITY, "--corner-radius", "2e-4", "--restitution", "0.3:0.6",
                      "--method", "monte-carlo", "--n", "30", "--seed", "4", "-q")  # fmt: skip
-    for answer in (got, expected):
-        answer.pop("elapsed")
-        answer.pop("inputs")  # the command line repeats its typed options; the API its own
+    for obj in (got, expected):
+        obj.pop("elapsed")
+        obj.pop("inputs")  # the command line repeats its typed options; the API its own
     assert got == expected
 
 

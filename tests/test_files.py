@@ -194,23 +194,81 @@ def _dead_pid() -> int:
     return child.pid
 
 
+def _stage(folder, pid, tail="abcdefgh", marker=True):
+    """A staging folder as _new_stage makes it (or, ``marker=False``, one named like it)."""
+    from coinflight._files import _MARKER_TEXT, STAGE_MARKER, STAGE_PREFIX
+
+    stage = folder / f"{STAGE_PREFIX}{pid}-{tail}"
+    (stage / "files").mkdir(parents=True)
+    (stage / "files" / "half.png").write_text("x")
+    if marker:
+        (stage / STAGE_MARKER).write_text(_MARKER_TEXT.format(name=stage.name))
+    return stage
+
+
 def test_stale_staging_folders_are_removed_live_ones_kept(tmp_path):
     import os
     import time
 
     from coinflight._files import STALE_AFTER, remove_stale_stages
 
-    dead = tmp_path / f".partial-{_dead_pid()}-abc"
-    live = tmp_path / f".partial-{os.getpid()}-def"
-    old = tmp_path / f".partial-{os.getppid()}-ghi"  # a running process, but long untouched
-    other = tmp_path / ".partial-notes"  # not ours: no process id, recent
-    for folder in (dead, live, old, other):
-        folder.mkdir()
-        (folder / "half.png").write_text("x")
+    dead = _stage(tmp_path, _dead_pid(), "abc_1234")
+    live = _stage(tmp_path, os.getpid(), "def_1234")
+    old = _stage(tmp_path, os.getppid(), "ghi_1234")  # a running process, but long untouched
     long_ago = time.time() - STALE_AFTER - 60
     os.utime(old, (long_ago, long_ago))
     assert sorted(remove_stale_stages(tmp_path)) == sorted([dead, old])
-    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([live.name, other.name])
+    assert sorted(p.name for p in tmp_path.iterdir()) == [live.name]
+
+
+def test_only_staging_folders_we_wrote_are_ever_removed(tmp_path):
+    """Issue: writing pd/x.png deleted the user's pd/.partial-4000001-mythesis/ and a 3-day-old
+    pd/.partial-notes/. Nothing without our exact name and our marker goes, however old and
+    whatever process id it names; a link is never followed."""
+    import os
+    import time
+
+    from typer.testing import CliRunner
+
+    from coinflight._files import _MARKER_TEXT, STAGE_MARKER, STAGE_PREFIX, remove_stale_stages
+    from coinflight.cli import app
+
+    dead = _dead_pid()
+    long_ago = time.time() - 3 * 24 * 3600
+    users = []
+    for name in (f".partial-{dead}-mythesis", ".partial-notes", f"{STAGE_PREFIX}notes"):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "chapter.tex").write_text("years of work")
+        users.append(tmp_path / name)
+    # named like ours, but no marker; a marker with other words; a marker that is a link
+    users.append(_stage(tmp_path, dead, "nomarker", marker=False))
+    wrong = _stage(tmp_path, dead, "wrongtxt", marker=False)
+    (wrong / STAGE_MARKER).write_text("my own notes\n")
+    linked = _stage(tmp_path, dead, "linkmark", marker=False)
+    elsewhere = tmp_path / "elsewhere.txt"
+    elsewhere.write_text(_MARKER_TEXT.format(name=linked.name))
+    (linked / STAGE_MARKER).symlink_to(elsewhere)
+    users += [wrong, linked]
+    # a link named like a stage, to a folder that has the marker: the folder stays
+    outside = tmp_path.parent / f"{tmp_path.name}-outside"
+    target = _stage(outside, dead, "target12")
+    link = tmp_path / f"{STAGE_PREFIX}{dead}-symlink1"
+    link.symlink_to(target, target_is_directory=True)
+    users.append(link)
+    for folder in users:
+        os.utime(folder, (long_ago, long_ago), follow_symlinks=False)
+    assert remove_stale_stages(tmp_path) == []
+    out = tmp_path / "x.png"
+    result = CliRunner().invoke(app, ["plot", "toss", "--flight-time", "0.5", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.exists()
+    for folder in users:
+        assert folder.is_symlink() or folder.is_dir(), folder
+    for name in (f".partial-{dead}-mythesis", ".partial-notes", f"{STAGE_PREFIX}notes"):
+        assert (tmp_path / name / "chapter.tex").read_text() == "years of work"
+    assert (target / "files" / "half.png").exists() and elsewhere.exists()
+    names = {p.name for p in tmp_path.iterdir()}
+    assert names == {p.name for p in users} | {"x.png", "elsewhere.txt"}  # none of ours left
 
 
 def test_a_later_run_removes_what_a_killed_run_left(tmp_path):
@@ -233,8 +291,8 @@ def test_a_later_run_removes_what_a_killed_run_left(tmp_path):
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).parents[1] / "src")}
     killed = subprocess.run([sys.executable, "-c", code, str(tmp_path)], env=env, check=False)
     assert killed.returncode == -9
-    left = list(tmp_path.glob(".partial-*"))
-    assert len(left) == 1 and (left[0] / "fig.png").exists()
+    left = list(tmp_path.glob(".coinflight-partial-*"))
+    assert len(left) == 1 and (left[0] / "files" / "fig.png").exists()
     out = tmp_path / "toss.png"
     result = CliRunner().invoke(app, ["plot", "toss", "--flight-time", "0.5", "--out", str(out)])
     assert result.exit_code == 0, result.output

@@ -19,6 +19,8 @@ from scipy.spatial.transform import Rotation
 from typer.testing import CliRunner
 
 from _web_server import WAIT, serving
+from coinflight import __version__
+from coinflight._provenance import command_line
 from coinflight.cli import app as cli_app
 from coinflight.model.surface import MAX_FRICTION
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
@@ -33,10 +35,28 @@ def client():
         yield c
 
 
+def asked(payload: dict | list, command: str) -> dict | list:
+    """The answer as both front ends give it: each object's ``command`` (the one field that
+    differs by front end: the command line, or the request) checked to be ``command`` and
+    left out; everything else, ``coinflight_version`` included, kept for the comparison."""
+    objects = payload if isinstance(payload, list) else [payload]
+    for obj in objects:
+        assert obj.pop("command") == command
+        assert obj["coinflight_version"] == __version__
+    return payload
+
+
 def cli_json(*args: str) -> dict:
+    """``coinflight ARGS --json``'s object (:func:`asked`: its command line checked)."""
     result = cli.invoke(cli_app, [*args, "--json"])
     assert result.exit_code == 0, result.output
-    return json.loads(result.stdout)
+    return asked(json.loads(result.stdout), command_line([*args, "--json"]))
+
+
+def api_json(response) -> dict:
+    """The API's object (:func:`asked`: its request, as sent, checked)."""
+    assert response.status_code == 200, response.text
+    return asked(response.json(), "GET " + response.request.url.raw_path.decode())
 
 
 def cli_error(*args: str) -> str:
@@ -65,7 +85,7 @@ def in_process(monkeypatch):
     monkeypatch cannot reach), for tests that make the work fail the test if called."""
     from coinflight.web.runner import Runner
 
-    async def here(_runner: Runner, fn, *args):
+    async def here(_runner: Runner, fn, *args, long=False):
         return fn(*args)
 
     monkeypatch.setattr(Runner, "run", here)
@@ -93,7 +113,7 @@ def test_toss_json_equals_the_command_line_for_the_papers_six_tosses(client, cas
     expected = cli_json(
         "toss", "--omega", str(wx), str(wy), "0", "--flight-time", str(t), "--coin", "us-quarter"
     )
-    assert response.json() == expected
+    assert api_json(response) == expected
     assert round(response.json()["rotations"], case.decimals) == case.paper_rotations
 
 
@@ -103,7 +123,7 @@ def test_toss_on_a_table_equals_the_command_line(client):
         "toss", "--omega", "80", "0", "0", "--flight-time", "0.7", "--surface", "table",
         "--drop-height", "0.3", "--bounces", "1",
     )  # fmt: skip
-    assert client.get(url).json() == expected
+    assert api_json(client.get(url)) == expected
 
 
 @pytest.mark.parametrize(
@@ -205,7 +225,7 @@ def test_probability_json_equals_the_command_line_for_the_papers_four_boxes(
     if extra:
         cli_args += ["--n", "20000", "--seed", "7"]
     expected = cli_json(*cli_args)
-    got = response.json()
+    got = api_json(response)
     assert _without_timing(got) == _without_timing(expected)
     assert got["elapsed"] > 0
     assert got["p_heads"] == pytest.approx(0.5, abs=0.02)  # "tends to the unbiased value of 50%"
@@ -217,7 +237,7 @@ def test_probability_preset_with_an_override_equals_the_command_line(client):
         "probability", "--preset", "human", "--flight-time", "0.4:0.6", "--method",
         "monte-carlo", "--n", "5000", "--seed", "11", "-q",
     )  # fmt: skip
-    got = client.get(f"/api/probability?{query}").json()
+    got = api_json(client.get(f"/api/probability?{query}"))
     assert _without_timing(got) == _without_timing(expected)
     assert got["inputs"]["--flight-time"] == "0.4:0.6" and got["inputs"]["--preset"] == "human"
 
@@ -360,7 +380,7 @@ def test_basin_boundaries_on_a_table_are_refused_before_the_map(client, in_proce
 def test_bias_json_equals_the_command_line(client, args):
     pairs = zip(args[::2], args[1::2], strict=True)
     query = "&".join(f"{k.lstrip('-').replace('-', '_')}={v}" for k, v in pairs)
-    assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
+    assert api_json(client.get(f"/api/bias?{query}")) == cli_json("bias", *args)
 
 
 def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each(client):
@@ -368,7 +388,7 @@ def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each
     object of ``coinflight bias --psi ψ --json``; documented in the schema; refused in one line
     with another way of giving ψ, beyond its bound, or with a value out of range."""
     psis = ["90", "0", "45.3", "134.9", "180"]
-    got = client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}).json()
+    got = api_json(client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}))
     assert got == [cli_json("bias", "--psi", psi, "--coin", "eur-1") for psi in psis]
     assert got[1]["p_same_side"] == 1.0 and got[0]["p_same_side"] == 0.5  # DHM 2007, eq. (2)
     documented = client.get("/openapi.json").json()["paths"]["/api/bias"]["get"]["parameters"]
@@ -396,7 +416,7 @@ def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
 
 def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
     """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
-    got = client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3").json()
+    got = api_json(client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3"))
     assert got == cli_json(
         "data", "--interval", "wilson", "--psi-sd", "5", "--seed", "7", "--repeats", "3"
     )
@@ -427,16 +447,18 @@ def test_a_request_over_its_time_limit_is_503_and_its_worker_is_ended():
     # Checked without a clock (the machine is shared): the 503 is the runner's timeout at the
     # limit (asyncio.wait_for), the worker's process id changes (ended mid-work, not after it),
     # and the next request is answered, within its own 3 s limit waiting included.
+    import functools
     import os
 
     with TestClient(create_app(time_limit=3, workers=1)) as c:
-        worker = c.portal.call(c.app.state.runner.run, os.getpid)
+        pid = functools.partial(c.app.state.runner.run, os.getpid, long=True)
+        worker = c.portal.call(pid)
         detail = api_error(c, slow, status=503)
         assert detail == (
             "the request ran over the server's time limit of 3 s; ask for less work "
             "(a smaller n, a coarser resolution)"
         )
-        assert c.portal.call(c.app.state.runner.run, os.getpid) != worker  # ended, replaced
+        assert c.portal.call(pid) != worker  # ended, replaced
         assert c.get("/api/toss?flight_time=0.7").json()["outcome"] == "heads"
         assert c.get("/api/bias?psi=80").status_code == 200
 
@@ -488,6 +510,105 @@ def test_every_worker_taken_is_503_busy_at_once():
     assert asyncio.run(scenario()) == (
         "the server is busy (every worker is taken); try again in a few seconds"
     )
+
+
+def test_long_requests_have_their_own_lane_and_unstarted_work_is_busy_not_over_time():
+    """A short request runs while every long worker is taken; a long request still waiting
+    for a worker when its time is up is "busy" (it never ran, and never will: it is dropped),
+    the one that ran is "over the time limit"."""
+    import asyncio
+    import os
+
+    from coinflight.web.runner import Overloaded, Runner
+
+    async def outcome(coroutine) -> str:
+        try:
+            await coroutine
+        except Overloaded as exc:
+            return str(exc)
+        return "answered"
+
+    async def scenario() -> list[str]:
+        runner = Runner(workers=1, time_limit=2, backlog=2)
+        await runner.start()
+        # three at once: the first runs, the next two wait for the one worker; the last of
+        # them cannot start before its time is up (the one before it holds the worker)
+        three = [
+            asyncio.ensure_future(outcome(runner.run(time.sleep, 30.0, long=True)))
+            for _ in range(3)
+        ]
+        await asyncio.sleep(0.2)  # each has taken its slot
+        full = await outcome(runner.run(os.getpid, long=True))
+        short = await outcome(runner.run(os.getpid))  # its own lane: answered at once
+        assert not any(f.done() for f in three)
+        first, second, third = [await f for f in three]
+        assert second in (first, third)
+        assert isinstance(await runner.run(os.getpid, long=True), int)  # the lane came back
+        runner.close()
+        return [first, third, full, short]
+
+    assert asyncio.run(scenario()) == [
+        "the request ran over the server's time limit of 2 s; ask for less work "
+        "(a smaller n, a coarser resolution)",
+        "the server is busy: the request waited 2 s for a worker and did not start; try again "
+        "in a few seconds",
+        "the server is busy with other long requests (every worker for them is taken); try "
+        "again in a few seconds",
+        "answered",
+    ]
+
+
+def test_requests_whose_estimated_work_is_small_stay_in_the_short_lane():
+    """The triage (coinflight.web.endpoints.triage): read and refused in the short lane, then
+    moved to the long one when the estimate is beyond SHORT_SECONDS or unknown."""
+    from coinflight.queries.values import AirArgs, CoinArgs, DistArgs, TableArgs
+    from coinflight.web import endpoints
+
+    coin, hand, air = CoinArgs(), TableArgs("hand", None, None, None, None), AirArgs(None, None)
+    table = TableArgs("table", None, None, None, None)
+
+    def tosses(wx, wy="0", wz="0"):
+        return DistArgs(wx, wy, wz, "0.5:1", None, "heads", 9.81)
+
+    cheap = endpoints.probability(coin, tosses("60:90"), hand, air, {"method": "exact"}, 30, True)
+    assert 0 < cheap["p_heads"] < 1
+    slow = tosses("normal:60,0.01", "-60:60", "-40:40")  # 17 s by exact's own estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, slow, hand, air, {"method": "exact"}, 30, True)
+    many = {"method": "monte-carlo", "n": 100_000_000}  # 4 s by the estimate
+    with pytest.raises(endpoints.LongWork):
+        endpoints.probability(coin, tosses("60:90"), hand, air, many, 30, True)
+    with pytest.raises(ValueError, match="more than the limit"):  # refused where it is read
+        endpoints.probability(coin, tosses("60:90"), hand, air, {**many, "n": 10**9}, 30, True)
+    assert endpoints.basin(coin, {"resolution": "800"}, hand, None, False, 30, True)["face"]
+    with pytest.raises(endpoints.LongWork):
+        endpoints.basin(coin, {"resolution": "400"}, table, None, False, 30, True)
+    with pytest.raises(endpoints.LongWork):
+        endpoints.bias(coin, 80.0, None, None, 10_000_000, 1, 30, True)
+    assert endpoints.bias(coin, 80.0, None, None, 1000, 1, 30, True)["p_same_side"] > 0.5
+
+
+def test_the_hosts_a_server_answers_and_errors_repeat_little_of_a_request():
+    from coinflight.web.app import DETAIL_LIMIT, shortened
+    from coinflight.web.server import allowed_hosts
+
+    assert allowed_hosts("127.0.0.1") == ["127.0.0.1", "localhost", "[::1]"]
+    assert allowed_hosts("::1") == ["[::1]", "localhost", "127.0.0.1"]
+    assert allowed_hosts("192.168.1.20") == ["192.168.1.20"]
+    assert allowed_hosts("0.0.0.0") == ["*"]
+    assert allowed_hosts("0.0.0.0", ["Coins.example.org"]) == ["coins.example.org"]
+    assert allowed_hosts("127.0.0.1", ["*"])[0] == "*"
+    assert allowed_hosts("127.0.0.1", ["*.example.org"])[0] == "*.example.org"
+    for bad in ("", "a/b", "a b", "x*.org", "*example.org"):
+        with pytest.raises(ValueError, match="--allowed-host"):
+            allowed_hosts("127.0.0.1", [bad])
+    assert cli_error("serve", "--allowed-host", "a b").startswith("--allowed-host 'a b'")
+    with TestClient(create_app(allowed_hosts=["127.0.0.1"]), base_url="http://evil.test") as c:
+        assert c.get("/api/toss?flight_time=0.7").status_code == 400
+    value = "7" * 100_000
+    line = shortened(f"--omega {value!r}: no; also {value}", ["omega", value])
+    assert len(line) < 600 and line.count("…") == 2 and "7" * 201 not in line
+    assert len(shortened("z" * 10_000, [])) == DETAIL_LIMIT - 1
 
 
 def test_the_page_its_static_files_and_the_openapi_schema_are_served(client):
@@ -568,19 +689,20 @@ def test_plausibility_warnings_are_in_the_answer_as_in_the_command_lines_json(
     """The library's warnings reach the API's caller (not only the worker's stderr): the
     command line prints each once on stderr and carries it in ``--json``'s ``"warnings"``;
     the API's answer is that same object."""
-    result = cli.invoke(cli_app, [command, *args, *MILLIMETRES, "--json"])
+    argv = [command, *args, *MILLIMETRES, "--json"]
+    result = cli.invoke(cli_app, argv)
     assert result.exit_code == 0, result.output
-    expected = json.loads(result.stdout)
+    expected = asked(json.loads(result.stdout), command_line(argv))
     (line,) = result.stderr.splitlines()
     prefix = "coinflight: warning: "
     assert line.startswith(prefix + "radius 12.13 m is not a coin's size (1 mm to 10 cm)")
     assert expected["warnings"] == [line[len(prefix) :]]
     coin = "radius=12.13&thickness=0.00175&mass=0.00567"
-    got = client.get(f"/api/{command}?{query}&{coin}").json()
+    got = api_json(client.get(f"/api/{command}?{query}&{coin}"))
     got.pop("elapsed", None), expected.pop("elapsed", None)
     assert got == expected
     if command == "bias":
-        assert client.get(f"/api/bias?psis=80&{coin}").json() == [expected]
+        assert api_json(client.get(f"/api/bias?psis=80&{coin}")) == [expected]
 
 
 def test_an_answer_without_warnings_has_no_new_key(client):
@@ -607,8 +729,7 @@ def test_coinflight_serve_answers_over_http_on_loopback():
         assert server.url.startswith("http://127.0.0.1:")
         with httpx2.Client(base_url=server.url, timeout=60) as http:
             got = http.get("/api/toss", params={"omega": "90,30,0", "flight_time": "0.65"})
-            assert got.status_code == 200
-            assert got.json() == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
+            assert api_json(got) == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
                                           "0.65")  # fmt: skip
             assert http.get("/").status_code == 200
             bad = http.get("/api/toss", params={"flight_time": "abc"})

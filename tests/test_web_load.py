@@ -151,3 +151,103 @@ def test_fifty_clients_two_hundred_requests_each_without_an_error(tmp_path):
         f"{figures['load_average_1min']:.1f}; figures in {tmp_path / 'load.json'}"
     )
     assert wall < DEADLINE
+
+
+# --- one slow client cannot stall the others; the Host header; no long echo ----------------------
+GUARD_LIMIT = 15.0
+"""The time limit of the server below: its slow requests are budgeted to half of it."""
+SLOW = (
+    "/api/probability?omega_x=60:90&flight_time=0.6:0.9&method=monte-carlo&seed=1"
+    "&n=180000000"  # 7.2 s of estimated work (40 ns a toss): within the budget of 7.5 s
+)
+
+
+def _get(url: str, host: str | None = None) -> tuple[int, str, float]:
+    """Status, body and seconds of one GET (a 4xx/5xx is an answer, not an error)."""
+    import urllib.error
+    import urllib.request
+
+    request = urllib.request.Request(url, headers={} if host is None else {"Host": host})
+    direct = urllib.request.build_opener(urllib.request.ProxyHandler({}))
+    started = time.perf_counter()
+    try:
+        with direct.open(request, timeout=120) as answer:
+            return answer.status, answer.read().decode(), time.perf_counter() - started
+    except urllib.error.HTTPError as exc:
+        return exc.code, exc.read().decode(), time.perf_counter() - started
+
+
+def test_short_requests_never_wait_behind_slow_ones_host_and_echo_are_guarded():
+    """Issue: two slow /api/probability requests held every other request for up to 30 s (a
+    /api/toss answered 503 "ran over the time limit" without having run; a flood of 72 made the
+    next cheap request wait 16 s); any Host header was answered (DNS rebinding); a 100 kB value
+    was echoed in the 422. On a real server with two workers for long requests: short requests
+    (a toss, a closed form, and a probability or a map whose estimated work is small) are
+    answered while the slow ones are still in flight (the order of events, not a clock,
+    decides; the seconds are bounded loosely), a flood of slow requests is refused "busy" at
+    once beyond the backlog, a foreign Host is refused 400, and an error repeats at most a few
+    hundred characters of the request."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    with serving("--port", "0", "--time-limit", f"{GUARD_LIMIT:g}", "--workers", "2") as server:
+        base = server.url.rstrip("/")
+        port = server.port
+        # the Host header: the bound address and localhost; nothing else
+        assert _get(base + "/api/toss?flight_time=0.7")[0] == 200
+        assert _get(base + "/api/toss?flight_time=0.7", f"localhost:{port}")[0] == 200
+        for foreign in (f"evil.example:{port}", "attacker.test", f"127.0.0.2:{port}"):
+            status, body, _ = _get(base + "/api/toss?flight_time=0.7", foreign)
+            assert (status, body) == (400, "Invalid host header"), (foreign, status, body)
+        # no long echo: a 100 kB value comes back shortened, whatever the parameter
+        value = "9" * 50_000 + "abc" + "9" * 50_000
+        for query in (f"omega={value}&flight_time=0.7", f"flight_time={value}",
+                      f"coin={value}&flight_time=0.7", f"{'x' * 100_000}=1&flight_time=0.7",
+                      f"flight_time=0.7&start={value}"):  # fmt: skip
+            status, body, _ = _get(f"{base}/api/toss?{query}")
+            assert status == 422 and len(body) < 1_200, (query[:20], status, len(body))
+            assert "…" in body and "9" * 300 not in body and "x" * 300 not in body
+        with ThreadPoolExecutor(80) as pool:
+            # two slow requests in flight: short ones are answered before either ends
+            slow = [pool.submit(_get, base + SLOW) for _ in range(2)]
+            time.sleep(1.0)
+            for path in ("/api/toss?flight_time=0.7&trajectory=50", "/api/bias?psi=80",
+                         "/api/data", "/api/basin?omega_x=60:90&resolution=200",
+                         "/api/probability?omega_x=60:90&flight_time=0.6:0.9&method=exact",
+                         "/api/probability?omega_x=60:90&flight_time=0.6:0.9&method=monte-carlo"
+                         "&n=10000&seed=1"):  # fmt: skip
+                status, body, seconds = _get(base + path)
+                assert status == 200, body
+                assert not any(f.done() for f in slow), "the slow requests ended first"
+                assert seconds < 5.0, (path, seconds)
+            answers = [f.result() for f in slow]
+            assert [a[0] for a in answers] == [200, 200], answers
+            # a flood of 72 slow requests: beyond 2 workers + 64 waiting, "busy" at once
+            flood = [pool.submit(_get, base + SLOW) for _ in range(72)]
+            time.sleep(1.0)
+            for path in (
+                "/api/toss?flight_time=0.7",
+                "/api/probability?omega_x=60:90&flight_time=0.6:0.9&method=exact",
+            ):
+                status, body, seconds = _get(base + path)
+                assert status == 200 and seconds < 5.0, (status, body, seconds)
+            assert not all(f.done() for f in flood)
+            answers = [f.result() for f in flood]
+    kinds = {}
+    for status, body, seconds in answers:
+        detail = json.loads(body).get("detail", "") if status != 200 else ""
+        kind = (status, detail.split(";")[0].split(":")[0] if detail else "")
+        kinds[kind] = kinds.get(kind, 0) + 1
+        if "every worker for them is taken" in detail:
+            assert seconds < 5.0  # refused at once, not after waiting
+    assert set(kinds) <= {
+        (200, ""),
+        (503, "the server is busy with other long requests (every worker for them is taken)"),
+        (503, "the server is busy"),
+        (503, "the request ran over the server's time limit of 15 s"),
+    }, kinds
+    assert (
+        kinds.get(
+            (503, "the server is busy with other long requests (every worker for them is taken)"), 0
+        )
+        >= 72 - 66
+    ), kinds

@@ -26,9 +26,12 @@ from __future__ import annotations
 from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
+from coinflight import _compiling
 from coinflight._version import __version__
 from coinflight.model.coin import PRESETS, Coin
 from coinflight.model.toss import Flight, FlightState, Outcome, Toss
+
+_compiling.watch()  # the first compilation of a kernel says so on stderr
 
 if TYPE_CHECKING:
     from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
@@ -38,7 +41,7 @@ if TYPE_CHECKING:
     from coinflight.outcomes.table import Landing
     from coinflight.plotting.basin import plot_basin
     from coinflight.plotting.bias import plot_bias
-    from coinflight.plotting.convergence import plot_convergence
+    from coinflight.plotting.convergence import plot_convergence, plot_estimates
     from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.forest import plot_forest
     from coinflight.plotting.toss import plot_toss
@@ -73,6 +76,7 @@ _LAZY = {
     "plot_basin": "coinflight.plotting.basin",
     "plot_bias": "coinflight.plotting.bias",
     "plot_convergence": "coinflight.plotting.convergence",
+    "plot_estimates": "coinflight.plotting.convergence",
     "plot_edge": "coinflight.plotting.edge",
     "plot_forest": "coinflight.plotting.forest",
     "plot_toss": "coinflight.plotting.toss",
@@ -119,6 +123,7 @@ __all__ = [
     "plot_bias",
     "plot_convergence",
     "plot_edge",
+    "plot_estimates",
     "plot_forest",
     "plot_toss",
     "same_side_probability",

@@ -1,8 +1,9 @@
 """Writing output files whole or not at all: the one place that does it.
 
 Every output goes the same way: its files are first written into a hidden *staging folder*
-(``.partial-<pid>-<random>``) in the folder they belong to, then renamed into place, all of
-them at the end, so that a reader sees every file of a run or none of them:
+(``.coinflight-partial-<pid>-<random>``, holding a marker file that says so) in the folder they
+belong to, then renamed into place, all of them at the end, so that a reader sees every file of
+a run or none of them:
 
 - the targets are checked before anything is renamed (not a folder, a folder that can be
   written), so a target that cannot be replaced leaves every other one as it was;
@@ -10,21 +11,29 @@ them at the end, so that a reader sees every file of a run or none of them:
 - missing folders on the way to a target are created;
 - a staging folder left by a run that was killed outright (SIGKILL, a power cut) is removed by
   the next run writing into the same folder when the process that made it is no longer running
-  on this machine, or when it is older than :data:`STALE_AFTER` seconds.
+  on this machine, or when it is older than :data:`STALE_AFTER` seconds; only a folder that is
+  ours by construction is ever removed: its exact name, not a symbolic link, owned by this
+  user, with the marker coinflight wrote in it (:func:`remove_stale_stages`).
 """
 
 from __future__ import annotations
 
 import os
+import re
 import shutil
+import stat
 import tempfile
 import time
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-STAGE_PREFIX = ".partial-"
-"""Name prefix of staging folders: ``.partial-<pid>-<random>``."""
+STAGE_PREFIX = ".coinflight-partial-"
+"""Name prefix of staging folders: ``.coinflight-partial-<pid>-<random>``."""
+STAGE_MARKER = ".coinflight-stage"
+"""The marker file in each staging folder; the staged files are in its ``files`` folder."""
+_MARKER_TEXT = "coinflight staging folder {name}: removed when its run ends\n"
+_STAGE_NAME = re.compile(re.escape(STAGE_PREFIX) + r"(\d{1,10})-[a-z0-9_]{8}")
 STALE_AFTER = 24 * 3600.0
 """Seconds after which any staging folder is stale, whatever its process (writing takes
 seconds; this bounds what a reused process id can keep alive)."""
@@ -50,7 +59,7 @@ def replacing_all(paths: Iterable[str | os.PathLike[str]]) -> Iterator[list[Path
             folder = target.parent
             if folder not in stages:
                 stages[folder] = _new_stage(folder, target)
-            temps.append(stages[folder] / target.name)
+            temps.append(stages[folder] / "files" / target.name)
         yield temps
         _swap(list(zip(temps, targets, strict=True)))
     finally:
@@ -87,11 +96,12 @@ def staged_folder(path: str | os.PathLike[str]) -> Iterator[Path]:
     target = Path(path)
     check_name(target, folder=True)
     stage = _new_stage(target, target, folder_target=True)
+    files = stage / "files"
     try:
-        yield stage
+        yield files
         moves = [
-            (item, target / item.relative_to(stage))
-            for item in sorted(stage.rglob("*"))
+            (item, target / item.relative_to(files))
+            for item in sorted(files.rglob("*"))
             if item.is_file()
         ]
         _swap(moves)
@@ -104,7 +114,10 @@ def _new_stage(folder: Path, target: Path, folder_target: bool = False) -> Path:
     try:
         folder.mkdir(parents=True, exist_ok=True)
         remove_stale_stages(folder)
-        return Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}-", dir=folder))
+        stage = Path(tempfile.mkdtemp(prefix=f"{STAGE_PREFIX}{os.getpid()}-", dir=folder))
+        (stage / STAGE_MARKER).write_text(_MARKER_TEXT.format(name=stage.name), encoding="utf-8")
+        (stage / "files").mkdir()
+        return stage
     except OSError as exc:
         check_writable(target, folder=folder_target)  # names a file in the way, if that is it
         raise cannot_write(target, exc) from None
@@ -113,18 +126,25 @@ def _new_stage(folder: Path, target: Path, folder_target: bool = False) -> Path:
 def _swap(moves: list[tuple[Path, Path]]) -> None:
     """Rename each staged file onto its target: every target checked first, then all moved."""
     for _, dest in moves:
-        if dest.is_dir():
-            raise ValueError(f"cannot write {dest}: it is a folder")
-        _check_replaceable(dest)
-        for parent in reversed(dest.parents):
-            if parent.exists() and not parent.is_dir():
-                raise ValueError(f"cannot write {dest}: {parent} is a file, not a folder")
+        try:
+            _check_target(dest)
+        except OSError as exc:
+            raise cannot_write(dest, exc) from None
     for tmp, dest in moves:
         try:
             dest.parent.mkdir(parents=True, exist_ok=True)
             os.replace(tmp, dest)
         except OSError as exc:
             raise cannot_write(dest, exc) from None
+
+
+def _check_target(dest: Path) -> None:
+    if dest.is_dir():
+        raise ValueError(f"cannot write {dest}: it is a folder")
+    _check_replaceable(dest)
+    for parent in reversed(dest.parents):
+        if parent.exists() and not parent.is_dir():
+            raise ValueError(f"cannot write {dest}: {parent} is a file, not a folder")
 
 
 def _check_replaceable(dest: Path) -> None:
@@ -140,10 +160,14 @@ def _check_replaceable(dest: Path) -> None:
 def remove_stale_stages(folder: str | os.PathLike[str]) -> list[Path]:
     """Remove the staging folders in ``folder`` that no running process will finish.
 
-    A staging folder ``.partial-<pid>-…`` is stale when no process ``pid`` runs on this machine,
-    or when it was last modified more than :data:`STALE_AFTER` seconds ago. Returns the folders
-    removed. Errors (a folder that cannot be listed or removed) are ignored: cleaning up never
-    stops a run.
+    A folder is removed only when it is ours by construction: named exactly
+    ``.coinflight-partial-<pid>-<8 characters>``, a folder and not a symbolic link, owned by
+    this user, and holding the marker file coinflight wrote in it (:data:`STAGE_MARKER`, a
+    regular file with its words); and stale: no process ``pid`` runs on this machine, or it
+    was last modified more than :data:`STALE_AFTER` seconds ago. Anything else (a user's
+    ``.partial-notes``, a folder named like ours without the marker) is left alone. Returns
+    the folders removed. Errors (a folder that cannot be listed or removed) are ignored:
+    cleaning up never stops a run.
     """
     removed: list[Path] = []
     try:
@@ -152,17 +176,33 @@ def remove_stale_stages(folder: str | os.PathLike[str]) -> list[Path]:
         return removed
     now = time.time()
     for stage in candidates:
-        pid_text = stage.name[len(STAGE_PREFIX) :].split("-", 1)[0]
+        match = _STAGE_NAME.fullmatch(stage.name)
+        if match is None:
+            continue
         try:
-            age = now - stage.lstat().st_mtime
-            if not stage.is_dir() or stage.is_symlink():
+            info = stage.lstat()
+            if not stat.S_ISDIR(info.st_mode) or info.st_uid != os.getuid():
+                continue
+            if not _is_marked(stage):
                 continue
         except OSError:
             continue
-        if (pid_text.isdigit() and not _running(int(pid_text))) or age > STALE_AFTER:
-            shutil.rmtree(stage, ignore_errors=True)
+        if not _running(int(match.group(1))) or now - info.st_mtime > STALE_AFTER:
+            shutil.rmtree(stage, ignore_errors=True)  # never follows links (os.open/unlinkat)
             removed.append(stage)
     return removed
+
+
+def _is_marked(stage: Path) -> bool:
+    """True when ``stage`` holds the marker :func:`_new_stage` wrote (read without following a
+    link)."""
+    marker = stage / STAGE_MARKER
+    if not stat.S_ISREG(marker.lstat().st_mode):
+        return False
+    expected = _MARKER_TEXT.format(name=stage.name).encode("utf-8")
+    fd = os.open(marker, os.O_RDONLY | os.O_NOFOLLOW)
+    with os.fdopen(fd, "rb") as f:
+        return f.read(len(expected) + 1) == expected
 
 
 def _running(pid: int) -> bool:
@@ -181,7 +221,8 @@ def cannot_write(path: str | os.PathLike[str], exc: OSError) -> ValueError:
     """The one wording of an output that cannot be written: ``cannot write PATH: reason``."""
     reason = exc.strerror or str(exc)
     name = None if exc.filename is None else os.fspath(exc.filename)
-    if name is not None and name != os.fspath(path) and not Path(name).name.startswith("."):
+    ours = STAGE_PREFIX in (name or "") or Path(name or "").name.startswith(".")
+    if name is not None and name != os.fspath(path) and not ours:
         reason = f"{reason} ({name})"  # a folder on the way, not our temporary file
     return ValueError(f"cannot write {os.fspath(path)}: {reason}")
 
@@ -215,7 +256,13 @@ def check_writable(path: str | os.PathLike[str], folder: bool = False) -> None:
     removes one temporary file in the nearest folder that already exists.
     """
     check_name(path, folder)
-    target = Path(path)
+    try:
+        _check_writable(Path(path), folder)
+    except OSError as exc:  # a name over the system's limit, a folder that cannot be read
+        raise cannot_write(path, exc) from None
+
+
+def _check_writable(target: Path, folder: bool) -> None:
     if target.exists():
         if folder and not target.is_dir():
             raise ValueError(f"cannot write {target}: it is a file, not a folder")

@@ -327,6 +327,16 @@ def _read(text: str) -> Decimal:
     return Decimal(text.replace(",", ""))
 
 
+def shortened(text: str, limit: int = 200) -> str:
+    """``text`` whole up to ``limit`` characters, else its start and end around an ellipsis:
+    how a message repeats a value the user gave (a 100 kB value, a path over the system's
+    limit) without repeating all of it."""
+    if len(text) <= limit:
+        return text
+    keep = (limit - 1) // 2
+    return f"{text[:keep]}…{text[len(text) - keep :]}"
+
+
 def over_limit(amount: float | int, limit: float | int) -> tuple[str, str]:
     """``amount`` and ``limit`` for a refusal (:func:`quantity`), with as few digits as make
     them read as different numbers in their order: an amount above its limit never prints as

@@ -11,7 +11,10 @@ The standard streams are handled as command-line tools handle them:
   before anything is computed;
 - Ctrl-C (SIGINT): ``coinflight: interrupted`` and exit code 130 (128 + SIGINT); outputs being
   written are abandoned, their staging folders removed (:mod:`coinflight._files`);
-- standard error that cannot be written: the exit code alone tells.
+- standard error that cannot be written: the exit code alone tells;
+- any other error of the operating system (a file name over the system's limit, a folder
+  where a file was expected, no permission, a full disk): one line naming the file and the
+  system's reason, exit code 2 (:func:`os_error_line`).
 """
 
 from __future__ import annotations
@@ -25,7 +28,9 @@ from typing import Any
 import typer
 from typer.core import TyperGroup
 
+from coinflight._provenance import command_line, invoked
 from coinflight.cli.exits import fail, interrupted, say
+from coinflight.cli.helptext import tidy_help
 from coinflight.cli.stdout import is_stdout_failure, stdout_failed
 
 
@@ -56,7 +61,12 @@ class OneLineErrors(TyperGroup):
     Typer's usage errors (unknown option, malformed number) and the library's ``ValueError`` /
     ``TypeError`` (a value outside its allowed range) both end as ``coinflight: error: …`` with
     exit code 2. Set ``COINFLIGHT_DEBUG=1`` to see the traceback of a library error instead.
+    Its help, and every subcommand's, is shown as written (:mod:`coinflight.cli.helptext`).
     """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        tidy_help(self)
 
     def make_context(self, *args: Any, **kwargs: Any) -> Any:
         with _escaping():  # --help and --version print while the context is made
@@ -76,7 +86,8 @@ class OneLineErrors(TyperGroup):
     ) -> Any:
         try:
             try:
-                with one_line_warnings():
+                argv = sys.argv[1:] if args is None else list(args)
+                with invoked(command_line(argv)), one_line_warnings():
                     rv = super().main(
                         args=args,
                         prog_name=prog_name,
@@ -90,9 +101,11 @@ class OneLineErrors(TyperGroup):
         except KeyboardInterrupt:
             interrupted()
         except OSError as exc:
-            if not is_stdout_failure(exc):
+            if is_stdout_failure(exc):
+                stdout_failed(exc)
+            if os.environ.get("COINFLIGHT_DEBUG"):
                 raise
-            stdout_failed(exc)
+            fail(os_error_line(exc))
         except typer.TyperException as exc:
             fail(_one_line(exc.format_message()), exc.exit_code)
         except typer.Abort:
@@ -114,6 +127,20 @@ def one_line_warnings() -> Iterator[None]:
 
     with heard(lambda text: say(f"coinflight: warning: {text}")):
         yield
+
+
+def os_error_line(exc: OSError) -> str:
+    """The one line of an error of the operating system: ``PATH: reason`` (and the second
+    path, for a rename), long paths shortened in their middle."""
+    from coinflight._validation import shortened as shorten
+
+    reason = exc.strerror or str(exc) or type(exc).__name__
+    if exc.filename is None:
+        return _one_line(reason)
+    line = f"{shorten(os.fsdecode(exc.filename), 300)}: {reason}"
+    if exc.filename2 is not None:
+        line += f" ({shorten(os.fsdecode(exc.filename2), 300)})"
+    return _one_line(line)
 
 
 def _one_line(message: str) -> str:

@@ -8,7 +8,13 @@ from typing import Annotated, Any
 import typer
 
 from coinflight.cli.command import Group
-from coinflight.cli.options import SURFACE_PANEL, number_option, option
+from coinflight.cli.options import (
+    AIR_PANEL,
+    CONTACT_PANEL,
+    SURFACE_PANEL,
+    number_option,
+    option,
+)
 from coinflight.queries.values import AirArgs, TableArgs
 
 SurfaceKind = Annotated[
@@ -59,7 +65,7 @@ def resistance_option(which: str, metavar: str, help: str) -> Any:
     """The --rolling-resistance or --pivoting-resistance option (``which``: rolling or
     pivoting), read as text (a number, a distribution or a list: the command parses it); the
     one definition of the table group's and the sweep's."""
-    return option(f"--{which}-resistance", metavar=metavar, panel=SURFACE_PANEL, help=help)
+    return option(f"--{which}-resistance", metavar=metavar, panel=CONTACT_PANEL, help=help)
 
 
 CORNER_HELP = (
@@ -135,7 +141,7 @@ TABLE = Group(
                 option(
                     "--ending",
                     metavar="rocking|contact|rigid",
-                    panel=SURFACE_PANEL,
+                    panel=CONTACT_PANEL,
                     help=_TABLE + ENDING_HELP,
                 ),
             ],
@@ -166,7 +172,7 @@ TABLE = Group(
         "corner_radius": (
             Annotated[
                 float | None,
-                number_option("--corner-radius", "A", SURFACE_PANEL, _TABLE + CORNER_HELP),
+                number_option("--corner-radius", "A", CONTACT_PANEL, _TABLE + CORNER_HELP),
             ],
             None,
         ),
@@ -184,7 +190,7 @@ AIR = Group(
                 number_option(
                     "--drag",
                     "CD",
-                    SURFACE_PANEL,
+                    AIR_PANEL,
                     "Air drag coefficient C_d ≥ 0 on the coin's projected area (1.17: a flat "
                     "disc broadside on); compiled integration. Default 0 (no air).",
                 ),
@@ -197,7 +203,7 @@ AIR = Group(
                 number_option(
                     "--spin-damping",
                     "K",
-                    SURFACE_PANEL,
+                    AIR_PANEL,
                     "Damping torque −K ω on the spin, N m s ≥ 0 (default 0).",
                 ),
             ],

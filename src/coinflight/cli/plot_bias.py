@@ -36,7 +36,7 @@ PsiPoints = Annotated[
         "--psi-points",
         metavar="DEG,DEG,...",
         panel=SIM_PANEL,
-        help=f"Angles (degrees) at which to simulate with --monte-carlo \\[default: {PSI_POINTS}].",
+        help=f"Angles (degrees) at which to simulate with --monte-carlo [default: {PSI_POINTS}].",
     ),
 ]
 

@@ -19,7 +19,7 @@ Ratios = Annotated[
         "--ratios",
         metavar="R,R,...",
         rich_help_panel=SIM_PANEL,
-        help=f"Ratios h/d to simulate with --simulate \\[default: {RATIOS}].",
+        help=f"Ratios h/d to simulate with --simulate [default: {RATIOS}].",
     ),
 ]
 MaxRatio = Annotated[

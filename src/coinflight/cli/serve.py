@@ -29,7 +29,8 @@ TimeLimit = Annotated[
         "--time-limit",
         parser=number,
         metavar="S",
-        help="Seconds one request may compute before it is answered 503.",
+        help="Seconds one request may take, waiting for a worker included, before it is "
+        "answered 503.",
     ),
 ]
 
@@ -41,7 +42,23 @@ Workers = Annotated[
         min=1,
         max=64,
         metavar="N",
-        help="Worker processes computing answers \\[default: the CPU count, at most 4].",
+        help="Worker processes computing the long requests (a probability, a map, a Monte "
+        "Carlo check); one or two more answer the short ones, which never wait behind them "
+        "[default: the CPU count, at most 4].",
+    ),
+]
+
+
+AllowedHost = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--allowed-host",
+        metavar="NAME",
+        help="A name the server may be reached by besides its address (repeat for more; * "
+        "any), e.g. the machine's name on your network. Requests giving another host are "
+        "refused (400): a web page elsewhere cannot reach the server through a name it "
+        "controls (DNS rebinding). [default: the --host address, with localhost on "
+        "loopback; any on 0.0.0.0 or ::]",
     ),
 ]
 
@@ -51,6 +68,7 @@ def serve(
     port: Port = 8000,
     time_limit: TimeLimit = 30.0,
     workers: Workers = None,
+    allowed_host: AllowedHost = None,
 ) -> None:
     """Serve the interactive page and its JSON API (/api/..., /openapi.json) until Ctrl-C.
 
@@ -60,11 +78,14 @@ def serve(
 
     if not time_limit > 0:
         raise ValueError(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
+    import coinflight.core._jit  # noqa: F401  (the workers' numba environment, checked here)
+
     run(
         host,
         port,
         time_limit=time_limit,
         workers=workers,
+        allowed=allowed_host or (),
         announce=_announce,
         warn=lambda line: say(f"coinflight: warning: {line}"),
     )

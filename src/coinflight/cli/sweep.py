@@ -38,6 +38,7 @@ from coinflight.cli.landing_groups import (
 )
 from coinflight.cli.options import (
     COIN_PANEL,
+    CONTACT_PANEL,
     METHOD_PANEL,
     OUTPUT_HELP,
     OUTPUT_PANEL,
@@ -333,7 +334,7 @@ Out = Annotated[
         "n, seed and version in its metadata) or FILE.csv (with FILE.csv.json). Resumable: "
         "finished rows are kept in FILE.partial.jsonl until FILE is written; run the same "
         "command again after a stop (Ctrl-C, a failure, a killed job) and only the missing rows "
-        f"are computed (same options, method, n and seed). {OUTPUT_HELP}",
+        f"are computed (same options, method, n and seed; --fresh to start over). {OUTPUT_HELP}",
     ),
 ]
 
@@ -420,7 +421,7 @@ def sweep(
         option(
             "--ending",
             metavar="rocking,contact",
-            panel=SURFACE_PANEL,
+            panel=CONTACT_PANEL,
             help="table, comma-separated endings: " + ENDING_HELP,
         ),
     ] = None,
@@ -441,7 +442,7 @@ def sweep(
         option(
             "--corner-radius",
             metavar="LIST",
-            panel=SURFACE_PANEL,
+            panel=CONTACT_PANEL,
             help="--surface table only, swept over every coin: " + CORNER_HELP,
         ),
     ] = None,
@@ -451,6 +452,16 @@ def sweep(
     threads: Threads = None,
     cluster: ClusterOptions,
     out: Out,
+    fresh: Annotated[
+        bool,
+        option(
+            "--fresh",
+            metavar=None,
+            panel=OUTPUT_PANEL,
+            help="Start over: replace FILE.partial.jsonl (the rows of an earlier run of this "
+            "table) instead of resuming from it.",
+        ),
+    ] = False,
     quiet: Quiet = False,
     json_output: JsonFlag = False,
 ) -> None:
@@ -529,7 +540,8 @@ def sweep(
     inputs = {
         _flag(k): x
         for k, x in ctx.params.items()
-        if x not in (None, []) and k not in ("quiet", "json_output", "out", "scheduler", "workers")
+        if x not in (None, [])
+        and k not in ("quiet", "json_output", "out", "fresh", "scheduler", "workers")
     }
     with cluster.executor(threads) as executor, progress_bar(len(cases), "sweep", quiet) as bar:
         results, files = run_sweep(
@@ -539,6 +551,7 @@ def sweep(
             n,
             seed,
             inputs=inputs,
+            fresh=fresh,
             executor=executor,
             threads=threads,
             progress=bar,

@@ -40,6 +40,12 @@ slow, and its edge rates are not yet credible: see :mod:`coinflight.core.contact
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 
+The flights and impacts run in one loop (:func:`bounces_until`) from any state, which can stop
+at a given time: a toss's landing starts it at launch (:func:`bounce_loop`); :func:`follow`
+starts it from any state above or on the table and records the state at given times (the
+flights in closed form, :func:`fly`; after the bounces, what the ending follows,
+:func:`ending_states`): the kernel of :meth:`coinflight.outcomes.table.Landing.from_state`.
+
 Every part of a landing meets the same rim: the cylinder (r − a, h/2 − a) swept by a ball of
 the corner radius a (``Contact.corner_radius``; :func:`coinflight.core.impact.lowest_depth`):
 the flight's contact search, the impacts, the barrier and the edge angle of the wells, the
@@ -53,9 +59,9 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit, prange
 from numpy.typing import NDArray
 
+from coinflight.core._jit import njit, prange
 from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (

@@ -613,8 +613,8 @@ import math
 from enum import IntEnum
 
 import numpy as np
-from numba import njit
 
+from coinflight.core._jit import njit
 from coinflight.core.impact import (
     angular_velocity,
     cross,

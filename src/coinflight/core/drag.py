@@ -112,9 +112,9 @@ import math
 from typing import Any, NamedTuple
 
 import numpy as np
-from numba import njit, prange
 from numpy.typing import NDArray
 
+from coinflight.core._jit import njit, prange
 from coinflight.core.bounce import (
     CA_TOLERANCE,
     GAP_TOLERANCE,

@@ -115,8 +115,8 @@ import math
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-from numba import njit
 
+from coinflight.core._jit import njit
 from coinflight.core.contact_phase import (
     _A21,
     _A31,

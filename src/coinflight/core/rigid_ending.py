@@ -67,9 +67,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from coinflight.core import rigid_contact as rc
+from coinflight.core._jit import njit
 from coinflight.core.bounce import (
     CA_TOLERANCE,
     GRAZE_SKIP,

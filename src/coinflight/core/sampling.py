@@ -23,10 +23,10 @@ import types
 from collections.abc import Callable
 from typing import Any
 
-import numba
 import numpy as np
 
 from coinflight.core import bands, torque_free
+from coinflight.core._jit import numba
 
 # Cody & Waite reduction: π split into three parts whose first two have 33 significant bits,
 # so that k·_PI_A and k·_PI_B are exact for |k| < 2²⁰.

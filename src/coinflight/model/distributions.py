@@ -52,6 +52,11 @@ class Distribution(ABC):
     """Mean value (a field or a property of each kind)."""
 
     @property
+    @abstractmethod
+    def std(self) -> float:
+        """Standard deviation (0 for a single value)."""
+
+    @property
     def is_fixed(self) -> bool:
         """True for a single value (no spread)."""
         return False
@@ -109,6 +114,10 @@ class Fixed(Distribution):
         return self.value
 
     @property
+    def std(self) -> float:
+        return 0.0
+
+    @property
     def is_fixed(self) -> bool:
         return True
 
@@ -157,6 +166,10 @@ class Uniform(Distribution):
         return 0.5 * (self.low + self.high)
 
     @property
+    def std(self) -> float:
+        return (self.high - self.low) / math.sqrt(12.0)
+
+    @property
     def bounds(self) -> tuple[float, float]:
         return (self.low, self.high)
 
@@ -198,6 +211,10 @@ class Normal(Distribution):
 
         with np.errstate(over="ignore"):  # a subnormal sd: ±inf, the step that is the limit
             return np.asarray(ndtr((_u(x) - self.mean) / self.sd), dtype=float)
+
+    @property
+    def std(self) -> float:
+        return self.sd
 
     def scaled(self, factor: float) -> Normal:
         return Normal(self.mean * factor, self.sd * factor)
@@ -256,6 +273,10 @@ class TruncatedNormal(Distribution):
     @property
     def mean(self) -> float:  # type: ignore[override]
         return float(self._frozen().mean())
+
+    @property
+    def std(self) -> float:
+        return float(self._frozen().std())
 
     @property
     def kept(self) -> float:

@@ -446,6 +446,8 @@ class Landing:
     max_bounces : int, optional
         Stop at the contact that follows this many bounces (0: the first contact) and report
         the well the coin is in there; by default the coin bounces until it settles.
+    start : StartState, optional
+        Set by :meth:`from_state` (a landing from any state, no toss): build it there.
 
     Examples
     --------

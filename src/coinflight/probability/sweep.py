@@ -67,15 +67,16 @@ class ProbabilityResults(list[ProbabilityResult]):
 
     def to_dicts(self) -> list[dict[str, Any]]:
         """One flat dictionary per result: the tosses (each parameter as text, e.g.
-        ``"60–90 rad/s"``, ``launch_speed`` when given, coin, start face, g) then
-        :meth:`ProbabilityResult.to_row`."""
+        ``"60–90 rad/s"``, and as numbers to plot: ``omega_x.low``, ``omega_x.high`` (the
+        smallest and largest value, ±inf for a normal), ``omega_x.mean``, ``omega_x.sd`` (the
+        standard deviation, 0 for a single value), SI units; ``launch_speed`` when given, all
+        None when not), coin, start face, g, then :meth:`ProbabilityResult.to_row`."""
         rows = []
         for dist, result in zip(self.distributions, self, strict=True):
-            row: dict[str, Any] = {
-                name: getattr(dist, name).describe(UNITS[name]) for name in PARAMETERS
-            }
-            speed = dist.launch_speed
-            row["launch_speed"] = None if speed is None else speed.describe("m/s")
+            row: dict[str, Any] = {}
+            for name in PARAMETERS:
+                row.update(_described(name, getattr(dist, name), UNITS[name]))
+            row.update(_described("launch_speed", dist.launch_speed, "m/s"))
             row.update(coin=dist.coin.name, start=dist.start, g=dist.g)
             row.update(result.to_row())
             rows.append(row)
@@ -85,6 +86,20 @@ class ProbabilityResults(list[ProbabilityResult]):
         """A pandas DataFrame of :meth:`to_dicts`, one row per distribution (needs
         ``pip install pandas``)."""
         return require_pandas().DataFrame(self.to_dicts())
+
+
+def _described(name: str, dist: Distribution | None, unit: str) -> dict[str, Any]:
+    """A parameter's columns: its text, then ``.low``, ``.high``, ``.mean``, ``.sd``."""
+    if dist is None:
+        return {name: None} | {f"{name}.{stat}": None for stat in ("low", "high", "mean", "sd")}
+    low, high = dist.bounds
+    return {
+        name: dist.describe(unit),
+        f"{name}.low": low,
+        f"{name}.high": high,
+        f"{name}.mean": float(dist.mean),
+        f"{name}.sd": dist.std,
+    }
 
 
 def estimate_many(
@@ -282,8 +297,9 @@ class SweepResults(ProbabilityResults):
 
     def to_dicts(self) -> list[dict[str, Any]]:
         """One flat row per case: :meth:`ProbabilityResults.to_dicts` (parameters as text,
-        coin, start, g, the result's fields) and, for each parameter, its distribution's fields
-        as numbers (``omega_x.kind``, ``omega_x.low``, … ``omega_x.mean``), the coin's
+        and the parameters' numbers ``omega_x.low``, … ``omega_x.sd``, coin, start, g, the
+        result's fields), each parameter's kind and, for a single value, that value
+        (``omega_x.kind``, ``omega_x.value``), the coin's
         dimensions, the outcome model's fields (``surface``, ``restitution``, …), the row's
         ``stream`` (seeded methods) and ``key``. ``p_edge`` is empty where the surface cannot
         leave a coin on its edge (the hand). Of the method's details only the outcome model's
@@ -303,9 +319,8 @@ class SweepResults(ProbabilityResults):
                 dist = inputs[name]
                 if dist is None:
                     continue
-                for field in ("kind", "value", "low", "high", "mean", "sd"):
+                for field in ("kind", "value"):
                     out[f"{name}.{field}"] = dist.get(field)
-                out[f"{name}.mean"] = float(getattr(case.dist, name).mean)
             out.update({f"coin.{k}": x for k, x in inputs["coin"].items() if k != "name"})
             for k, x in inputs["model"].items():
                 out[k] = json.dumps(x) if isinstance(x, dict) else x
@@ -370,24 +385,17 @@ def result_from_dict(data: Mapping[str, Any]) -> ProbabilityResult:
     return ProbabilityResult(**d)
 
 
-def read_checkpoint(path: str | os.PathLike[str]) -> dict[str, ProbabilityResult]:
-    """The finished rows of a checkpoint, by key ({} when there is none). A line that does not
-    parse (the last one of a run killed while writing it) is skipped: that row is recomputed."""
-    out: dict[str, ProbabilityResult] = {}
-    try:
-        with open(path, encoding="utf-8") as f:
-            lines = f.readlines()
-    except FileNotFoundError:
-        return out
-    except OSError as exc:
-        raise ValueError(f"cannot read the checkpoint {os.fspath(path)}: {exc.strerror}") from None
-    for line in lines:
-        try:
-            entry = json.loads(line)
-            out[str(entry["key"])] = result_from_dict(entry["result"])
-        except (ValueError, KeyError, TypeError):
-            continue
-    return out
+def read_checkpoint(
+    path: str | os.PathLike[str], method: str, n: int | None = None, seed: int | None = None
+) -> dict[str, ProbabilityResult]:
+    """The finished rows, by key, of the checkpoint of a sweep by ``method`` with ``n`` and
+    ``seed`` ({} when there is none). A file that such a run did not write (not a checkpoint,
+    another run's, edited, damaged, a symbolic link) is refused with a ValueError naming it
+    (:class:`coinflight.probability.checkpoint.Checkpoint`); a last line cut short by a killed
+    run is skipped and that row computed again."""
+    from coinflight.probability.checkpoint import Checkpoint
+
+    return Checkpoint(path, method, n, seed).read()
 
 
 def sweep(
@@ -400,6 +408,7 @@ def sweep(
     threads: int | None = None,
     progress: Callable[[int], None] | None = None,
     checkpoint: str | os.PathLike[str] | None = None,
+    fresh: bool = False,
 ) -> SweepResults:
     """P(heads), P(same side), P(edge) for each case, each row an independent task.
 
@@ -425,7 +434,13 @@ def sweep(
     checkpoint : path, optional
         A file of finished rows (JSON lines, one per row, keyed by :func:`row_key`): rows found
         in it are not recomputed, and every row computed is appended as it finishes, so a sweep
-        that is stopped (Ctrl-C, a failure, a killed process) resumes where it stopped.
+        that is stopped (Ctrl-C, a failure, a killed process) resumes where it stopped. Its
+        first line names the run (method, n, seed) and each row carries a checksum: a file
+        that is not the checkpoint of this run, or was edited, or is a symbolic link, is
+        refused before any work (ValueError naming it), never read, followed or appended to.
+    fresh : bool
+        Start over: replace the file at ``checkpoint`` (a regular file or a link, never what
+        a link points to) instead of resuming from it.
 
     Returns
     -------
@@ -463,26 +478,23 @@ def sweep(
     check_sweep_work(items, method, n)
     inputs = [case.inputs() for case in items]  # once a row: its key and its stream
     keys = [_key(x, method, n, the_seed) for x in inputs]
-    done = {} if checkpoint is None else read_checkpoint(checkpoint)
+    from coinflight.probability.checkpoint import Checkpoint
+
+    log = None if checkpoint is None else Checkpoint(checkpoint, method, n, the_seed)
+    done = {} if log is None else log.read(fresh=fresh)
     results: list[ProbabilityResult | None] = [done.get(k) for k in keys]
     reused = sum(r is not None for r in results)
     if progress is not None and reused:
         progress(reused)
     todo = [i for i, r in enumerate(results) if r is None]
     tasks = [(items[i].dist, items[i].model, method, n, the_seed, _stream(inputs[i])) for i in todo]
-    log = None
-    if checkpoint is not None and todo:
-        Path(checkpoint).parent.mkdir(parents=True, exist_ok=True)
-        log = open(checkpoint, "a", encoding="utf-8")  # noqa: SIM115 (closed below)
     try:
         with executor_or_threads(executor, threads) as ex:
             for j, result in completed(ex, _row_task, tasks, [1] * len(tasks)):
                 i = todo[j]
                 results[i] = result
                 if log is not None:
-                    entry = {"key": keys[i], "result": result.to_dict()}
-                    log.write(json.dumps(entry) + "\n")
-                    log.flush()
+                    log.append(keys[i], result)
                 if progress is not None:
                     progress(1)
     finally:
@@ -502,11 +514,11 @@ def sweep(
 def table_metadata(results: SweepResults, inputs: Mapping[str, Any] | None = None) -> dict:
     """What a sweep's table records about itself: the package version, the method, n, seed,
     rows, the inputs as given (e.g. the command line's options), the columns of the standard
-    errors."""
-    from coinflight._version import __version__
+    errors; the command line when run by one (:mod:`coinflight._provenance`)."""
+    from coinflight._provenance import provenance
 
     return {
-        "coinflight_version": __version__,
+        **provenance(),
         "method": results.method,
         "n": results.n,
         "seed": results.seed,
@@ -610,6 +622,7 @@ def run_sweep(
     seed: SeedLike = None,
     *,
     inputs: Mapping[str, Any] | None = None,
+    fresh: bool = False,
     **runner: Any,
 ) -> tuple[SweepResults, list[Path]]:
     """:func:`sweep` into the table ``out`` (:func:`write_table`), resumable.
@@ -617,19 +630,21 @@ def run_sweep(
     The finished rows are kept in ``out`` + :data:`CHECKPOINT_SUFFIX` while the sweep runs; a
     rerun with the same cases, method, n and seed computes only the rows missing from it. The
     table is written whole at the end, then the checkpoint removed; if anything fails, no table
-    is written and the checkpoint stays for the next run. ``runner``: ``executor``,
-    ``threads``, ``progress``.
+    is written and the checkpoint stays for the next run. A file in the checkpoint's place
+    that this run did not write is refused (see :func:`sweep`); ``fresh=True`` replaces it
+    and starts over. ``runner``: ``executor``, ``threads``, ``progress``.
     """
     from coinflight._files import check_all_writable
+    from coinflight.probability.checkpoint import Checkpoint
 
     files = table_files(out)
     if files[0].suffix.lower() == ".parquet":
         _require_pyarrow()
     check_all_writable(files)
     checkpoint = Path(os.fspath(out) + CHECKPOINT_SUFFIX)
-    results = sweep(cases, method, n, seed, checkpoint=checkpoint, **runner)
+    results = sweep(cases, method, n, seed, checkpoint=checkpoint, fresh=fresh, **runner)
     written = write_table(results, out, inputs)
-    checkpoint.unlink(missing_ok=True)
+    Checkpoint(checkpoint, results.method, results.n, results.seed).remove()
     return results, written
 
 

@@ -3,18 +3,22 @@
 
 from __future__ import annotations
 
-from collections.abc import AsyncIterator, Callable
+from collections.abc import AsyncIterator, Callable, Sequence
 from contextlib import asynccontextmanager
+from contextvars import ContextVar
 from importlib.resources import as_file, files
 from typing import Any
 
 from fastapi import Depends, FastAPI, Request
 from fastapi.exceptions import RequestValidationError
+from fastapi.middleware.trustedhost import TrustedHostMiddleware
 from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel
 
 from coinflight import __version__
+from coinflight._provenance import invoked
+from coinflight._validation import shortened as shortened_text
 from coinflight.queries.encoding import json_text
 from coinflight.web import params as p
 from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
@@ -36,18 +40,30 @@ ANSWERS: dict[int | str, dict[str, Any]] = {
 
 
 def create_app(
-    *, time_limit: float = DEFAULT_TIME_LIMIT, workers: int | None = None, backlog: int = 64
+    *,
+    time_limit: float = DEFAULT_TIME_LIMIT,
+    workers: int | None = None,
+    backlog: int = 64,
+    allowed_hosts: Sequence[str] | None = None,
 ) -> FastAPI:
     """The coinflight web application.
 
     Parameters
     ----------
     time_limit : float
-        Seconds a request may compute; beyond it the answer is HTTP 503 with one line.
+        Seconds a request may take, waiting for a worker included; beyond it the answer is
+        HTTP 503 with one line.
     workers : int or None
-        Worker processes computing answers (default: the CPU count, 1 to 4).
+        Worker processes computing the long requests (a probability, a map, a Monte Carlo
+        check; default: the CPU count, 1 to 4); one or two more compute the short ones
+        (:mod:`coinflight.web.runner`).
     backlog : int
-        Requests that may wait for a worker; beyond them HTTP 503 ("busy") at once.
+        Requests of each kind that may wait for a worker; beyond them HTTP 503 ("busy") at once.
+    allowed_hosts : list of str, optional
+        The names a request's ``Host`` header may give (``*`` any); another is answered 400
+        (Starlette's ``TrustedHostMiddleware``: a page on another site cannot reach this
+        server through a name it controls, DNS rebinding). None: any (``coinflight serve``
+        passes the address it is bound to, :func:`coinflight.web.server.allowed_hosts`).
     """
     check_runner(workers, time_limit, backlog)
     running: list[Runner] = []  # the pool, while the application runs (its lifespan)
@@ -80,16 +96,31 @@ def create_app(
             "starts, or 503 after the time limit."
         ),
         lifespan=lifespan,
-        dependencies=[Depends(_known_parameters)],
+        dependencies=[Depends(_known_parameters), Depends(_remember_request)],
     )
+    if allowed_hosts is not None:
+        app.add_middleware(TrustedHostMiddleware, allowed_hosts=list(allowed_hosts))
     _errors(app)
     _static(app)
 
-    async def answer(fn: Callable[..., Any], *args: Any) -> Response:
-        """``fn(*args)`` as JSON text, computed and encoded in a worker process."""
+    async def answer(fn: Callable[..., Any], *args: Any, long: bool = False) -> Response:
+        """``fn(*args)`` as JSON text, computed and encoded in a worker process. ``long``: the
+        work grows with what is asked; it is first read, refused or answered among the short
+        requests, and moved to the long lane when its estimate is beyond
+        :data:`coinflight.web.endpoints.SHORT_SECONDS`, so that short requests never wait
+        behind long ones."""
+        from coinflight.web.endpoints import LongWork
+
         if not running:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
-        return Response(await running[0].run(_encoded, fn, *args), media_type=JSON)
+        runner, request = running[0], _REQUEST.get()
+        if not long:
+            return Response(await runner.run(_encoded, request, fn, *args), media_type=JSON)
+        try:
+            text = await runner.run(_encoded, request, fn, *args, True)
+        except LongWork:
+            text = await runner.run(_encoded, request, fn, *args, False, long=True)
+        return Response(text, media_type=JSON)
 
     @app.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
     async def toss(
@@ -177,6 +208,7 @@ def create_app(
             air,
             options,
             time_limit,
+            long=True,
         )
 
     @app.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
@@ -222,6 +254,7 @@ def create_app(
             bounces,
             boundaries,
             time_limit,
+            long=True,
         )
 
     @app.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
@@ -256,6 +289,7 @@ def create_app(
             monte_carlo,
             seed,
             time_limit,
+            long=monte_carlo is not None,
         )
 
     @app.get("/api/data", tags=["data"], response_class=Response, responses=ANSWERS)
@@ -278,15 +312,26 @@ def create_app(
     return app
 
 
-def _encoded(fn: Callable[..., Any], *args: Any) -> str:
+def _encoded(request: str, fn: Callable[..., Any], *args: Any) -> str:
     """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
     computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
-    reaches no one)."""
+    reaches no one), and ``request`` as its ``"command"`` (:mod:`coinflight._provenance`)."""
     from coinflight.queries.plausibility import heard, with_warnings
 
-    with heard() as texts:
+    with invoked(request), heard() as texts:
         payload = fn(*args)
-    return json_text(with_warnings(payload, texts))
+        return json_text(with_warnings(payload, texts))
+
+
+_REQUEST: ContextVar[str] = ContextVar("coinflight_request")
+"""The request being answered, as ``GET /api/toss?omega=80,0,0`` (set by
+:func:`_remember_request` for the endpoint, which runs in the same context)."""
+
+
+async def _remember_request(request: Request) -> None:
+    """Keep the request's method, path and query (as sent) for its answer's ``"command"``."""
+    query = request.url.query
+    _REQUEST.set(f"{request.method} {request.url.path}" + (f"?{query}" if query else ""))
 
 
 async def _known_parameters(request: Request) -> None:
@@ -310,21 +355,39 @@ def _query_names(dependant: Any) -> set[str]:
     return names
 
 
+ECHO_LIMIT = 200
+"""Most characters of one value of a request an error repeats (longer: its start and end
+around an ellipsis); the whole line is at most :data:`DETAIL_LIMIT`."""
+DETAIL_LIMIT = 1000
+
+
+def shortened(message: str, values: Sequence[str]) -> str:
+    """``message`` on one line, each of ``values`` (the request's names and values) longer
+    than :data:`ECHO_LIMIT` in it shortened, as typed or quoted, and the line cut to
+    :data:`DETAIL_LIMIT` (a client's 100 kB value is not sent back to it)."""
+    for value in sorted(set(values), key=len, reverse=True):
+        if len(value) > ECHO_LIMIT:
+            short = shortened_text(value, ECHO_LIMIT)
+            message = message.replace(repr(value), repr(short)).replace(value, short)
+    return shortened_text(" ".join(message.split()), DETAIL_LIMIT)
+
+
 def _errors(app: FastAPI) -> None:
     """Bad input → 422 with one line; over time or busy → 503 with one line."""
 
-    def one_line(status: int, message: str) -> JSONResponse:
-        return JSONResponse({"detail": " ".join(message.split())}, status_code=status)
+    def one_line(request: Request, status: int, message: str) -> JSONResponse:
+        values = [x for pair in request.query_params.multi_items() for x in pair]
+        return JSONResponse({"detail": shortened(message, values)}, status_code=status)
 
-    async def bad_value(_: Request, exc: Exception) -> JSONResponse:
-        return one_line(422, str(exc))
+    async def bad_value(request: Request, exc: Exception) -> JSONResponse:
+        return one_line(request, 422, str(exc))
 
-    async def bad_request(_: Request, exc: Exception) -> JSONResponse:
+    async def bad_request(request: Request, exc: Exception) -> JSONResponse:
         assert isinstance(exc, RequestValidationError)
-        return one_line(422, _validation_line(exc))
+        return one_line(request, 422, _validation_line(exc))
 
-    async def overloaded(_: Request, exc: Exception) -> JSONResponse:
-        return one_line(503, str(exc))
+    async def overloaded(request: Request, exc: Exception) -> JSONResponse:
+        return one_line(request, 503, str(exc))
 
     app.add_exception_handler(ValueError, bad_value)
     app.add_exception_handler(TypeError, bad_value)

@@ -1,4 +1,4 @@
-"""What each endpoint computes, in a worker thread: the options read as the command line reads
+"""What each endpoint computes, in a worker process: the options read as the command line reads
 them (:mod:`coinflight.queries`), the work bounded for this server, the library called, the
 JSON-ready object returned.
 
@@ -24,6 +24,24 @@ MAX_MAP_CELLS = 640_000
 BUDGET_SHARE = 0.5
 """Share of the time limit the estimated work of a request may take on the reference machine
 (each request runs on one thread; the machine may be busier than the reference)."""
+
+
+SHORT_SECONDS = 0.5
+"""Estimated seconds of work (reference machine) up to which a probability, a map or a Monte
+Carlo check is computed among the short requests (:mod:`coinflight.web.runner`); beyond it,
+or with no estimate, among the long ones."""
+
+
+class LongWork(Exception):
+    """Raised, in the short lane, by a request whose work is beyond :data:`SHORT_SECONDS`
+    (after its refusals were decided there): the server runs it in the long lane instead."""
+
+
+def triage(seconds: float | None, short_only: bool) -> None:
+    """:class:`LongWork` when ``short_only`` and the work is unknown or beyond
+    :data:`SHORT_SECONDS`."""
+    if short_only and (seconds is None or seconds > SHORT_SECONDS):
+        raise LongWork
 
 
 def budget(what: str, seconds: float, time_limit: float, way_on: str) -> None:
@@ -69,8 +87,10 @@ def probability(
     air: AirArgs,
     options: Mapping[str, Any],
     time_limit: float,
+    short_only: bool = False,
 ) -> dict[str, Any]:
-    """``GET /api/probability``: ``coinflight probability --json``, on one thread."""
+    """``GET /api/probability``: ``coinflight probability --json``, on one thread
+    (``short_only``: :func:`triage`)."""
     from coinflight.queries import probability as q
 
     query = q.probability_query(tosses, coin.resolve(), table, air, **options)
@@ -78,6 +98,13 @@ def probability(
     if seconds is not None:
         size = query.estimator.size_for(len(query.dist.ranged), query.n)
         budget(f"{query.method} with n = {size}", seconds, time_limit, "use a smaller n")
+    elif short_only and query.estimator.name == "exact":
+        from coinflight.outcomes.hand import HAND_CATCH
+        from coinflight.probability import exact
+
+        model = query.landing.model if query.landing is not None else HAND_CATCH
+        seconds = exact.estimated_seconds(query.dist, model)
+    triage(seconds, short_only)
     if query.estimator.parallel:
         query = dataclasses.replace(query, threads=1)  # the answer does not depend on it
     return q.probability_payload(query, q.run(query))
@@ -90,9 +117,10 @@ def basin(
     bounces: int | None,
     boundaries: bool,
     time_limit: float,
+    short_only: bool = False,
 ) -> dict[str, Any]:
     """``GET /api/basin``: the map of ``coinflight plot basin`` as JSON
-    (:mod:`coinflight.queries.basin`)."""
+    (:mod:`coinflight.queries.basin`; ``short_only``: :func:`triage`)."""
     from coinflight.queries.basin import basin_payload, basin_query
     from coinflight.queries.landing import table_outcome
     from coinflight.queries.values import parse_resolution
@@ -106,10 +134,13 @@ def basin(
         "cells",
         "use a coarser resolution (e.g. 400 or 600x300)",
     )
+    from coinflight.outcomes.hand import HAND_CATCH
+
     model = table_outcome(table, bounces).get("outcome")
     if model is not None:
         budget(f"a map of {cells:,} table landings", cells / model.rate, time_limit,
                "use a coarser resolution")  # fmt: skip
+    triage(cells / (model or HAND_CATCH).rate, short_only)
     the_map = basin_query(
         coin.resolve(), table=table, bounces=bounces, boundaries=boundaries, **options
     )
@@ -124,8 +155,9 @@ def bias(
     monte_carlo: int | None,
     seed: int | None,
     time_limit: float,
+    short_only: bool = False,
 ) -> dict[str, Any]:
-    """``GET /api/bias``: ``coinflight bias --json``."""
+    """``GET /api/bias``: ``coinflight bias --json`` (``short_only``: :func:`triage`)."""
     from coinflight.queries.bias import bias_query
 
     if monte_carlo is not None:
@@ -140,6 +172,7 @@ def bias(
             rate = HAND_CATCH.rate
         budget(f"a Monte Carlo check of {monte_carlo} tosses", monte_carlo / rate, time_limit,
                "use fewer tosses")  # fmt: skip
+        triage(monte_carlo / rate, short_only)
     return bias_query(psi, psi_dist, preset, monte_carlo, seed, coin.resolve()).payload()
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import ipaddress
 import socket
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from coinflight.web.runner import DEFAULT_TIME_LIMIT
 
@@ -18,6 +18,35 @@ def is_loopback(host: str) -> bool:
         return ipaddress.ip_address(host).is_loopback
     except ValueError:
         return False
+
+
+WILDCARDS = ("0.0.0.0", "::", "")
+"""Addresses that listen on every interface of the machine."""
+
+
+def allowed_hosts(host: str, extra: Sequence[str] = ()) -> list[str]:
+    """The names a request's ``Host`` header may give to a server bound to ``host``: that
+    address (IPv6 in brackets, as a Host header writes it), ``localhost`` with the loopback
+    addresses for a loopback server, and each of ``extra`` (``*``: any). A server on every
+    address (0.0.0.0, ::) cannot know the names it is reached by: any, unless ``extra``
+    names them."""
+    for name in extra:
+        if not name or (any(c in name for c in "/ :\t") and not name.startswith("[")):
+            raise ValueError(
+                f"--allowed-host {name!r} is not a host name (e.g. coins.example.org, "
+                "192.168.1.20, [fe80::1]) or *"
+            )
+        if "*" in name[1:] or (name.startswith("*") and name != "*" and not name.startswith("*.")):
+            raise ValueError(
+                f"--allowed-host {name!r}: a wildcard is * alone or *.DOMAIN (*.example.org)"
+            )
+    names = [name.lower() for name in extra]
+    if host in WILDCARDS:
+        return names or ["*"]
+    names.append(f"[{host}]" if ":" in host else host.lower())
+    if is_loopback(host):
+        names += ["localhost", "127.0.0.1", "[::1]"]
+    return list(dict.fromkeys(names))
 
 
 def bind(host: str, port: int) -> socket.socket:
@@ -57,20 +86,24 @@ def serve(
     *,
     time_limit: float = DEFAULT_TIME_LIMIT,
     workers: int | None = None,
+    allowed: Sequence[str] = (),
     announce: Callable[[str], None] = print,
     warn: Callable[[str], None] = print,
 ) -> None:
     """Serve :func:`coinflight.web.create_app` on ``host``:``port`` until interrupted.
 
-    ``announce`` receives the address once the socket is bound (requests wait until the
-    workers have started); ``warn`` a warning when ``host`` is reachable from other machines.
+    Requests naming another host than ``host`` (and ``allowed``) are answered 400
+    (:func:`allowed_hosts`). ``announce`` receives the address once the socket is bound
+    (requests wait until the workers have started); ``warn`` a warning when ``host`` is
+    reachable from other machines.
     """
     import uvicorn
 
     from coinflight.web.app import create_app
 
+    names = allowed_hosts(host, allowed)
     sock = bind(host, port)  # a port in use is refused before any worker starts
-    app = create_app(time_limit=time_limit, workers=workers)
+    app = create_app(time_limit=time_limit, workers=workers, allowed_hosts=names)
     if not is_loopback(host):
         warn(
             f"--host {host} serves coinflight to every machine that can reach this one "
@@ -84,4 +117,4 @@ def serve(
         sock.close()
 
 
-__all__ = ["bind", "is_loopback", "serve", "url"]
+__all__ = ["allowed_hosts", "bind", "is_loopback", "serve", "url"]
