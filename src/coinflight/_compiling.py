@@ -27,6 +27,7 @@ KERNEL_MODULES = {
     "coinflight.core.contact_phase": ("the table landing's", 20),
     "coinflight.core.impact": ("the table landing's", 20),
     "coinflight.core.rigid_contact": ("the table landing's", 20),
+    "coinflight.core.rigid_ending": ("the table landing's", 20),
     "coinflight.core.drag": ("the flight through air's", 6),
     "coinflight.core.sampling": ("the sampling's", 2),
 }
