@@ -1,5 +1,8 @@
 """Thick cylinders against experiments: measured edge fractions beside the table landing's band.
 
+(The study scripts named ``bench_*.py`` below have left the package; git history keeps
+them.)
+
 For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
 describes) the study simulates that setting with
 :func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
@@ -41,7 +44,7 @@ ending discards the spin and the precession at its hand-off (planar rocking), an
 contact ending is experimental (rims that roll upright can stop upright).
 
 Measured (2026-11-23, 20:42–20:50 UTC, the shared 2-core machine at load 10–12:
-``python benchmarks/bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
+``bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
 the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-up Maths' hand
 flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
 corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
@@ -52,8 +55,8 @@ corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
 - h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
   contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
 
-An independent engine on the same tosses (:func:`mujoco_check`, ``python
-benchmarks/bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
+An independent engine on the same tosses (:func:`mujoco_check`, ``
+bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
 21:15–21:25 UTC, load 9–11; 2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
 e 0.45, μ 0.325, resistances 1e-4 m, MuJoCo condim 6, Euler, every toss settled): P(edge) at
 h/d 0.354 rocking 0.025 ± 0.003, contact 0.025 ± 0.003, MuJoCo 0.024 ± 0.003; at h/d 0.577
@@ -76,8 +79,8 @@ below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in bot
 and MuJoCo, which agree here), and the data (fractions from a secondary table, the
 video not read).
 
-The wobble, measured (2026-11-23, 21:57–22:03 UTC, load 0.7 → 6.6, 335 s wall: ``python
-benchmarks/bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
+The wobble, measured (2026-11-23, 21:57–22:03 UTC, load 0.7 → 6.6, 335 s wall: ``
+bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
 ωx and v0 draws at every ψ and cell; P(edge) ± s.e., rocking 50,000 / contact 500 tosses;
 cells: C the box's centre e 0.45, μ 0.325, 24 mm, 0.35 m drop; A the planar band's high
 corner e 0.3, μ 0.05, 20 mm, 0.5 m; B the opposite corner e 0.6, μ 0.6, 50 mm, 0.2 m; ψ
