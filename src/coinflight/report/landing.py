@@ -52,7 +52,7 @@ class Sizes:
     """How much the report computes (the defaults are the full report; :data:`QUICK`)."""
 
     dead: int = 100_000
-    """Dead landings per ratio h/d (issue 11: 10⁵)."""
+    """Dead landings per ratio h/d (10⁵: P(edge) to about ±0.0015)."""
     bouncing: int = 20_000
     """The same tosses bouncing: tosses per ratio and (e, μ) cell."""
     bouncing_cells: int = 3

@@ -1,6 +1,6 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Six questions (issue 11), each a function returning plain values with their seeds:
+Six questions, each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);

@@ -32,7 +32,7 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   dimension :data:`CONDIM` = 6. MuJoCo's default ``condim`` is 3, with which both
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
   regular frictional contact", 4 adds torsional friction, 6 adds rolling friction); the
-  comparison of the last session ran with 3.
+  comparison ran with 3 before.
 
 How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
@@ -78,9 +78,9 @@ Why the engines part (measured; the benchmarks' notes). Not the normal law: neit
 (coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
 hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
 decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
-the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44, 2026-11-24,
+the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44,
 ``bench_edge_sensitivity.py 600``; all these counts measured before the joint
-damping of two pressed rims (2026-11-24)), nor MuJoCo's
+damping of two pressed rims), nor MuJoCo's
 impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
 0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
 convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
@@ -178,8 +178,8 @@ POOL = 128
 and the next one takes its place."""
 STEPS_PER_SECOND = 2.0e5
 """MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
-214,000 (64 of the landing report's tosses, load 0.7); RK4 35,600 and 39,000 at load 4-6 (the
-edge check's 2 × 1,500 tosses, 2026-11-23), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
+214,000 (64 of the landing report's tosses); RK4 35,600 and 39,000 (the
+edge check's 2 × 1,500 tosses), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
 MEAN_CONTACT = 1.0
 """Mean simulated time after the first contact of a toss that settles, s (for the work bound;
 measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
@@ -202,7 +202,7 @@ without a question it answers."""
 IMPRATIO_COST = 1.2
 """Extra cost of a MuJoCo step per decade of ``impratio`` above 10 (for the work bound; a
 stiffer friction needs more solver iterations). Measured (``bench_mujoco_edges.py
-600 --handoff-only --condim 3``, 446 hand-off states, RK4, load 7-14): elliptic impratio 10
+600 --handoff-only --condim 3``, 446 hand-off states, RK4): elliptic impratio 10
 1,154 s wall (no slower than default friction, 1,606 s), impratio 100 2,493 s: 2.2 times."""
 NOSLIP_COST = 0.045
 """Extra cost of a MuJoCo step per no-slip iteration (for the work bound; each is one more
