@@ -232,17 +232,6 @@ def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> f
     return n / model.rate_for(dist)
 
 
-def _summary(result: ProbabilityResult) -> str:
-    if result.details.get("variance_reduction"):
-        return (
-            f"{result.n:,} spins, {result.details['variance_reduction']} (closed form over T), "
-            f"seed {result.seed}"
-        )
-    cells = result.details.get("grid_cells")
-    extra = f"{result.n:,} tosses" + (f" drawn from {cells} cells (method B)" if cells else "")
-    return extra + f", seed {result.seed}"
-
-
 ESTIMATOR = Estimator(
     name=NAME,
     run=estimate,
@@ -252,10 +241,8 @@ ESTIMATOR = Estimator(
     size="tosses (default 1000000)",
     seeded=True,
     options=("grid_cells", "chunk_size", "variance_reduction"),
-    color="#D55E00",  # method B (red in the paper)
     work=_work,
     series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
-    summary=_summary,
     sizes_keyword="event_sizes",
     modes=(conditional.MODE,),
 )

@@ -233,13 +233,7 @@ ESTIMATOR = Estimator(
     size="points, 16 × a power of two (default 1048576)",
     seeded=True,
     options=("replicates", "variance_reduction"),
-    color="#009E73",
     work=_work,
     series=tuple(16 << k for k in range(2, 17)),
-    summary=lambda r: (
-        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings"
-        + (f", {r.details['variance_reduction']}" if r.details.get("variance_reduction") else "")
-        + f", seed {r.seed}"
-    ),
     modes=(conditional.MODE,),
 )

@@ -116,6 +116,38 @@ class ProbabilityResult:
             unc = ""
         return f"P(heads) = {p:.6f}{unc}"
 
+    def describe_run(self) -> str:
+        """How the result was made, one line (the command line's ``method NAME:`` line).
+
+        The integral (exact, with any quadrature warning); the cells and configurations
+        (grid); the tosses or points, the variance reduction and the seed (monte-carlo, qmc).
+        A method registered from outside gets its size n, the samples where they differ from
+        n, and its seed.
+        """
+        d = self.details
+        mode = d.get("variance_reduction")
+        if self.method == "exact":
+            warning = d.get("warning")
+            return str(d["how"]) + (f"; quadrature warning: {warning}" if warning else "")
+        if self.method == "grid":
+            return f"{self.n} cells per ranged parameter, {self.samples:,} configurations"
+        if self.method == "monte-carlo" and mode:
+            parts = [f"{self.n:,} spins, {mode} (closed form over T)"]
+        elif self.method == "monte-carlo":
+            cells = d.get("grid_cells")
+            drawn = f" drawn from {cells} cells (method B)" if cells else ""
+            parts = [f"{self.n:,} tosses{drawn}"]
+        elif self.method == "qmc":
+            parts = [f"{self.n:,} Sobol points in {d['replicates']} scramblings"]
+            parts += [str(mode)] if mode else []
+        else:
+            parts = [f"n = {self.n:,}"] if self.n is not None else []
+            if self.samples is not None and self.samples != self.n:
+                parts.append(f"{self.samples:,} samples")
+        if self.seed is not None:
+            parts.append(f"seed {self.seed}")
+        return ", ".join(parts)
+
 
 def require_pandas() -> Any:
     """The pandas module, or an ImportError saying how to install it (it is optional)."""

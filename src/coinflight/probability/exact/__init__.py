@@ -256,13 +256,4 @@ def estimated_seconds(dist: TossDistribution, model: OutcomeModel | None = None)
     return None
 
 
-def _summary(result: ProbabilityResult) -> str:
-    extra = str(result.details["how"])
-    if "warning" in result.details:
-        extra += f"; quadrature warning: {result.details['warning']}"
-    return extra
-
-
-ESTIMATOR = Estimator(
-    NAME, estimate, "exact value", "band integral (Keller 1986)", parallel=False, summary=_summary
-)
+ESTIMATOR = Estimator(NAME, estimate, "exact value", "band integral (Keller 1986)", parallel=False)
