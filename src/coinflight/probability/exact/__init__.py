@@ -99,7 +99,6 @@ from coinflight.probability.registry import Estimator
 from coinflight.probability.result import ProbabilityResult
 
 __all__ = [
-    "ESTIMATOR",
     "GAUSS_ORDERS",
     "MAX_CROSSING_SAMPLES",
     "MAX_EVALUATIONS",
