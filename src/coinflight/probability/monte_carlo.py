@@ -29,11 +29,16 @@ from coinflight.probability._runner import (
     run_tasks,
 )
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import Z95, ProbabilityResult, from_counts, wilson_interval
+from coinflight.probability.result import (
+    Z95,
+    ProbabilityResult,
+    from_counts,
+    sampled,
+    wilson_interval,
+)
 from coinflight.probability.streams import (
     BLOCK,
     SeedLike,
-    reported_seed,
     seed_sequence,
     unit_cube,
 )
@@ -186,12 +191,7 @@ def estimate(
         (int(counts[0]), heads, int(counts[2])),
         dist.start_sign,
         method_name,
-        n=n,
-        samples=n,
-        stderr=math.sqrt(p * (1.0 - p) / n),
-        ci95=wilson_interval(heads, n),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
+        **sampled(n, math.sqrt(p * (1.0 - p) / n), wilson_interval(heads, n), root, t0),
         details=details,
     )
 

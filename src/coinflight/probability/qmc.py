@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -21,8 +22,8 @@ from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability import _runner, conditional
 from coinflight.probability._runner import Executor, Progress, check_count
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import ProbabilityResult, from_counts
-from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
+from coinflight.probability.result import ProbabilityResult, from_counts, interval, sampled
+from coinflight.probability.streams import SeedLike, generator, seed_sequence
 
 DEFAULT_REPLICATES = 16
 MAX_REPLICATES = 1024
@@ -39,45 +40,42 @@ NAME = "qmc"
 """The method's name (its registry entry, results, messages)."""
 
 
-def _task(args: tuple[Any, ...]) -> np.ndarray:
+def _sobol(k: int, root: np.random.SeedSequence, replicate: int, points: int) -> Iterator[Any]:
+    """Scrambling ``replicate``'s ``points`` Sobol points in k dimensions, in chunks of powers
+    of two (which keep Sobol's balance, and SciPy's warning, in check), each as a contiguous
+    (k, size) array."""
     from scipy.stats import qmc
 
+    sobol = qmc.Sobol(
+        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
+    )
+    done = 0
+    while done < points:
+        size = min(_CHUNK, points - done)
+        yield np.ascontiguousarray(sobol.random(size).T)
+        done += size
+
+
+def _task(args: tuple[Any, ...]) -> np.ndarray:
     model, dist, root, replicate, points = args
     k = len(dist.ranged)
     counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
     if k == 0:
         return model.count(dist, np.zeros((0, points)))
-    sobol = qmc.Sobol(
-        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
-    )
-    done = 0
-    while done < points:
-        # Powers of two at every call keep Sobol's balance (and SciPy's warning) in check.
-        size = min(_CHUNK, points - done)
-        counts += model.count(dist, np.ascontiguousarray(sobol.random(size).T))
-        done += size
+    for u in _sobol(k, root, replicate, points):
+        counts += model.count(dist, u)
     return counts
 
 
 def _conditional_task(args: tuple[Any, ...]) -> float:
     """The mean of P(same | spins) over one scrambling's points (spins only)."""
-    from scipy.stats import qmc
-
     dist, root, replicate, points = args
     k = len(conditional.ranged_spins(dist))
     if k == 0:
         wx, wy, wz = (np.full(1, getattr(dist, n).mean) for n in conditional.SPINS)
         return float(conditional.same_side_given_spins(dist, wx, wy, wz)[0])
-    sobol = qmc.Sobol(
-        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
-    )
-    sums = []
-    done = 0
-    while done < points:
-        size = min(_CHUNK, points - done)
-        u = np.ascontiguousarray(sobol.random(size).T)
-        sums.append(float(np.sum(conditional.same_side_at(dist, u))))
-        done += size
+    chunks = _sobol(k, root, replicate, points)
+    sums = [float(np.sum(conditional.same_side_at(dist, u))) for u in chunks]
     return math.fsum(sums) / points
 
 
@@ -168,12 +166,7 @@ def estimate(
         (int(counts[0]), int(counts[1]), int(counts[2])),
         dist.start_sign,
         NAME,
-        n=n,
-        samples=n,
-        stderr=stderr,
-        ci95=(max(0.0, p - half), min(1.0, p + half)),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
+        **sampled(n, stderr, interval(p, half), root, t0),
         details={
             "replicates": replicates,
             "points_per_replicate": points,

@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import asdict, dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from coinflight.probability.streams import reported_seed
+
 if TYPE_CHECKING:
+    import numpy as np
     import pandas as pd
 
 
@@ -203,6 +207,37 @@ def from_counts(
         counts=(tails, heads, edge),
         **kwargs,
     )
+
+
+def from_same_side(same: float, start_sign: float, method: str, **kwargs: Any) -> ProbabilityResult:
+    """A result with no edge from P(same side) ``same``: P(heads) is ``same`` for tosses
+    starting heads up (``start_sign`` > 0), else 1 − ``same``."""
+    p = same if start_sign > 0 else 1.0 - same
+    return ProbabilityResult(
+        p_heads=p, p_tails=1.0 - p, p_edge=0.0, p_same_side=same, method=method, **kwargs
+    )
+
+
+def interval(p: float, half: float) -> tuple[float, float]:
+    """The interval ``p`` ± ``half``, within [0, 1]."""
+    return (max(0.0, p - half), min(1.0, p + half))
+
+
+def sampled(
+    n: int, stderr: float, ci95: tuple[float, float], root: np.random.SeedSequence, t0: float
+) -> dict[str, Any]:
+    """What every sampling method reports besides its estimate: its size ``n`` (also its
+    samples), standard error, 95 % interval, the seed of ``root`` and the seconds since
+    ``t0`` (``time.perf_counter``); keyword arguments of :func:`from_counts` and
+    :func:`from_same_side`."""
+    return {
+        "n": n,
+        "samples": n,
+        "stderr": stderr,
+        "ci95": ci95,
+        "seed": reported_seed(root),
+        "elapsed": time.perf_counter() - t0,
+    }
 
 
 @dataclass(frozen=True)

@@ -96,7 +96,7 @@ from coinflight.probability.exact.quadrature import (
     _two_diameter_spins_one_uniform,
 )
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import ProbabilityResult
+from coinflight.probability.result import ProbabilityResult, from_same_side
 
 __all__ = [
     "GAUSS_ORDERS",
@@ -250,17 +250,12 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         raise ValueError(_refusal(dist, ranged))
     details: _Details = {}
     p_same, error = case.run(dist, ranged, details)
-    p_same = min(1.0, max(0.0, p_same))
-    p_heads = p_same if dist.start_sign > 0 else 1.0 - p_same
     details.setdefault("how", case.how)  # a runner that fell back to another integral says so
-    return ProbabilityResult(
-        p_heads=p_heads,
-        p_tails=1.0 - p_heads,
-        p_edge=0.0,
-        p_same_side=p_same,
-        method=NAME,
-        ci95=None,  # a deterministic result: error_estimate bounds it, no 95 % interval
-        error_estimate=error,
+    return from_same_side(
+        min(1.0, max(0.0, p_same)),
+        dist.start_sign,
+        NAME,
+        error_estimate=error,  # a deterministic result: no 95 % interval
         elapsed=time.perf_counter() - t0,
         details=details,
     )
