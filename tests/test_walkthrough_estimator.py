@@ -116,3 +116,19 @@ def test_command_line_and_figures_read_the_registry(registered, tmp_path):
     handles, labels = fig.axes[0].get_legend_handles_labels()
     assert labels[0] == ESTIMATOR.label
     assert handles[0].get_color() == "#CC79A7" and handles[0].get_marker() == "s"
+
+
+def test_each_estimator_from_outside_gets_a_look_of_its_own(registered, monkeypatch):
+    from dataclasses import replace
+
+    from coinflight.plotting.style import METHOD_STYLES, MethodStyle, method_style
+
+    registry.register(replace(ESTIMATOR, name="antithetic-2"))
+    try:  # the second one registered from outside: the next free colour and marker
+        assert method_style("antithetic-2") == ("#56B4E9", "^")
+        monkeypatch.setitem(METHOD_STYLES, "antithetic", MethodStyle("#E69F00", "x"))
+        assert method_style("antithetic") == ("#E69F00", "x")  # its own entry, where given
+    finally:
+        registry.unregister("antithetic-2")
+    with pytest.raises(ValueError, match="unknown method 'nope'"):
+        method_style("nope")
