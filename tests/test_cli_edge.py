@@ -259,9 +259,9 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
         (
             ["--simulate", "10", "--rolling-resistance", "1e-4"],
-            "rolling resistance 0.0001 m: only the 3-D contact ending (ending='contact', "
-            "--ending contact) has rolling and pivoting resistance, which the rocking ending "
-            "would ignore",
+            "rolling resistance 0.0001 m: only the 3-D endings (ending='contact' or 'rigid', "
+            "--ending contact or rigid) have rolling and pivoting resistance, which the rocking "
+            "ending would ignore",
         ),
         (
             [

@@ -15,7 +15,7 @@ CORE = Path(__file__).resolve().parents[1] / "src" / "coinflight" / "core"
 
 
 def test_every_module_of_numba_kernels_is_named_and_numba_has_one_gate():
-    """The listener is registered when numba's one gate (core._jit) is imported; every module
+    """The listener is registered by numba's one gate (core._jit) after its import; every module
     that compiles kernels through it is named in KERNEL_MODULES (its words in the notice)."""
     sources = {p.stem: p.read_text(encoding="utf-8") for p in CORE.glob("*.py")}
     imports_numba = {

@@ -53,8 +53,8 @@ TABLE = ["--surface", "table", "--drop-height", "0.8"]
 CONTACT = [*TABLE, "--ending", "contact"]
 QUARTER_HALF = 0.5 * Coin.preset("us-quarter").thickness  # 0.000875 m
 ROCKING_ONLY = (
-    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
-    "resistance, which the rocking ending would ignore"
+    "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
+    "and pivoting resistance, which the rocking ending would ignore"
 )  # the one wording of a resistance given with the rocking ending, library and command line
 
 
@@ -209,8 +209,8 @@ def test_simulate_edge_refuses_a_resistance_with_the_rocking_ending_in_the_surfa
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--ending", "foo"], "--ending must be rocking or contact (how a table landing ends "
-         "once its bounces die out), got 'foo'"),
+        (["--ending", "foo"], "--ending must be rocking, contact or rigid (how a table landing "
+         "ends once its bounces die out), got 'foo'"),
         (["--ending", "contact", "--rolling-resistance", "-1"],
          "--rolling-resistance: rolling resistance must be between 0 and 0.01 (in m), got -1.0"),
         (["--ending", "contact", "--pivoting-resistance", "0.02"],
@@ -724,7 +724,8 @@ def test_sweep_over_endings_resistances_and_corner_radii(tmp_path):
         (["--surface", "table", "--pivoting-resistance", "1e-4,2e-4"],
          f"pivoting resistance 0.0001 m: {ROCKING_ONLY}"),
         (["--surface", "hand", "--ending", "contact"], f"--ending {TABLE_ONLY}"),
-        (["--surface", "table", "--ending", "contact,foo"], "--ending must be rocking or contact"),
+        (["--surface", "table", "--ending", "contact,foo"],
+         "--ending must be rocking, contact or rigid"),
         (["--surface", "table", "--corner-radius", "0.001"], "--corner-radius: US quarter: corner "
          "radius must be between 0 and 0.000875"),
         (["--surface", "table", "--ending", "contact", "--method", "qmc"],

@@ -759,7 +759,7 @@ def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
     result = cli.invoke(cli_app, ["serve", "--port", "70000"])
     assert result.exit_code == 2
     assert result.stderr.strip().splitlines() == [
-        "coinflight: error: Invalid value for '--port': Input should be less than or equal to 65535"
+        "coinflight: error: Invalid value for '--port': '70000' must be at most 65535"
     ]
 
 

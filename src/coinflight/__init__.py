@@ -26,12 +26,9 @@ from __future__ import annotations
 from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
-from coinflight import _compiling
 from coinflight._version import __version__
 from coinflight.model.coin import PRESETS, Coin
 from coinflight.model.toss import Flight, FlightState, Outcome, Toss
-
-_compiling.watch()  # the first compilation of a kernel says so on stderr
 
 if TYPE_CHECKING:
     from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform

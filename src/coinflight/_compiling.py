@@ -10,18 +10,16 @@ kernel (:data:`KERNEL_MODULES`) in a process prints, at once::
     coinflight: compiling the table landing's kernels for their first use (about 20 s of
     computing, longer on a busy machine); numba caches them, so this happens once
 
-:func:`watch` (called by ``import coinflight``) arranges this without importing numba: the
-listener is registered when :mod:`coinflight.core._jit`, the one module that imports numba, is
-first imported (by a kernel module, :data:`KERNEL_MODULES`).
+:mod:`coinflight.core._jit`, the one module that imports numba (after checking the ``NUMBA_*``
+environment), registers the listener (:func:`listen`) right after that import, so ``import
+coinflight`` alone imports no numba.
 ``make demo`` leaves the table landing's kernels compiled.
 """
 
 from __future__ import annotations
 
-import importlib.abc
 import sys
 import threading
-from collections.abc import Sequence
 from typing import Any
 
 KERNEL_MODULES = {
@@ -29,6 +27,7 @@ KERNEL_MODULES = {
     "coinflight.core.contact_phase": ("the table landing's", 20),
     "coinflight.core.impact": ("the table landing's", 20),
     "coinflight.core.rigid_contact": ("the table landing's", 20),
+    "coinflight.core.rigid_ending": ("the table landing's", 20),
     "coinflight.core.drag": ("the flight through air's", 6),
     "coinflight.core.sampling": ("the sampling's", 2),
 }
@@ -86,19 +85,3 @@ def listen() -> None:
 
 NUMBA_GATE = "coinflight.core._jit"
 """The module through which every kernel module imports numba."""
-
-
-class _KernelImports(importlib.abc.MetaPathFinder):
-    """Registers the listener when numba's gate (or a kernel module) is about to be imported;
-    finds nothing itself."""
-
-    def find_spec(self, fullname: str, path: Sequence[str] | None, target: Any = None) -> None:
-        if fullname == NUMBA_GATE or fullname in KERNEL_MODULES:
-            listen()
-        return None
-
-
-def watch() -> None:
-    """Listen for compilations once a kernel module is imported (cheap: numba not imported)."""
-    if not any(isinstance(f, _KernelImports) for f in sys.meta_path):
-        sys.meta_path.insert(0, _KernelImports())

@@ -84,7 +84,7 @@ Ending = Annotated[
     str | None,
     typer.Option(
         "--ending",
-        metavar="rocking|contact",
+        metavar="rocking|contact|rigid",
         rich_help_panel=CONTACT_PANEL,
         help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
     ),
@@ -92,13 +92,19 @@ Ending = Annotated[
 RollingResistance = Annotated[
     float | None,
     number_option(
-        "--rolling-resistance", "L", CONTACT_PANEL, _ONLY + "--ending contact: " + ROLLING_HELP
+        "--rolling-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + ROLLING_HELP,
     ),
 ]
 PivotingResistance = Annotated[
     float | None,
     number_option(
-        "--pivoting-resistance", "L", CONTACT_PANEL, _ONLY + "--ending contact: " + PIVOTING_HELP
+        "--pivoting-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP,
     ),
 ]
 CornerRadius = Annotated[

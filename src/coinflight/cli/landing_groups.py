@@ -37,7 +37,9 @@ ENDING_HELP = (
     "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
     "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
     "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
-    "corner radius."
+    "corner radius. rigid: the rigid, event-driven 3-D ending (rolling without slip, exact "
+    "Coulomb sliding, hops flown in closed form, rim impacts, rest on the edge band); about "
+    "200 times slower than rocking."
 )
 """--ending's help (command line and sweep)."""
 
@@ -138,7 +140,7 @@ TABLE = Group(
                 str | None,
                 option(
                     "--ending",
-                    metavar="rocking|contact",
+                    metavar="rocking|contact|rigid",
                     panel=CONTACT_PANEL,
                     help=_TABLE + ENDING_HELP,
                 ),
@@ -149,7 +151,9 @@ TABLE = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "rolling", "L", "table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE
+                    "rolling",
+                    "L",
+                    "table, --ending contact or rigid: " + ROLLING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -160,7 +164,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                    "table, --ending contact or rigid: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,

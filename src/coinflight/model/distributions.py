@@ -91,6 +91,12 @@ def _u(u: ArrayLike) -> FloatArray:
     return np.asarray(u, dtype=float)
 
 
+_LARGEST = float(np.finfo(float).max)
+_SPAN = 10.0
+"""A normal's quantiles reach mean ± 8.3 sd in double precision (u = 1 − 2⁻⁵³); mean ± 10 sd
+must be finite for every one of them to be."""
+
+
 @dataclass(frozen=True)
 class Fixed(Distribution):
     """A single value: the parameter does not vary."""
@@ -98,7 +104,7 @@ class Fixed(Distribution):
     value: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "value", float(v.finite("Fixed value", self.value)))
+        object.__setattr__(self, "value", v.number("Fixed value", self.value))
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return np.full(size, self.value)
@@ -144,11 +150,16 @@ class Uniform(Distribution):
     high: float
 
     def __post_init__(self) -> None:
-        lo = float(v.finite("Uniform low", self.low))
-        hi = float(v.finite("Uniform high", self.high))
+        lo = v.number("Uniform low", self.low)
+        hi = v.number("Uniform high", self.high)
         if not lo < hi:
             what = "empty" if lo == hi else "reversed"
             raise ValueError(f"range {lo:g}:{hi:g} is {what}: the low end must be below the high")
+        if not math.isfinite(hi - lo):  # its width and every quantile would be inf
+            raise ValueError(
+                f"range {lo:g}:{hi:g} is too wide: its ends must be less than {_LARGEST:.3g} "
+                "apart (the largest float)"
+            )
         object.__setattr__(self, "low", lo)
         object.__setattr__(self, "high", hi)
 
@@ -195,8 +206,17 @@ class Normal(Distribution):
     sd: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mean", float(v.finite("Normal mean", self.mean)))
-        object.__setattr__(self, "sd", float(v.positive("Normal standard deviation", self.sd)))
+        mean = v.number("Normal mean", self.mean)
+        sd = float(
+            v.positive("Normal standard deviation", v.number("Normal standard deviation", self.sd))
+        )
+        if not math.isfinite(abs(mean) + _SPAN * sd):  # its quantiles would be inf
+            raise ValueError(
+                f"normal({mean:g}, sd {sd:g}) is too wide: mean ± {_SPAN:g} sd must stay below "
+                f"{_LARGEST:.3g} (the largest float)"
+            )
+        object.__setattr__(self, "mean", mean)
+        object.__setattr__(self, "sd", sd)
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return rng.normal(self.mean, self.sd, size)
@@ -239,8 +259,13 @@ class TruncatedNormal(Distribution):
     high: float
 
     def __post_init__(self) -> None:
-        m = float(v.finite("TruncatedNormal mean", self.normal_mean))
-        sd = float(v.positive("TruncatedNormal standard deviation", self.sd))
+        m = v.number("TruncatedNormal mean", self.normal_mean)
+        sd = float(
+            v.positive(
+                "TruncatedNormal standard deviation",
+                v.number("TruncatedNormal standard deviation", self.sd),
+            )
+        )
         lo, hi = float(self.low), float(self.high)
         if not lo < hi or math.isnan(lo) or math.isnan(hi):
             raise ValueError(f"truncation range [{lo:g}, {hi:g}] is empty")
@@ -326,7 +351,8 @@ def as_distribution(value: Distribution | float | int, name: str = "value") -> D
         return value
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise TypeError(
-            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
+            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got "
+            f"{v.shown(value)}"
         )
     return Fixed(float(v.finite(name, value)))
 

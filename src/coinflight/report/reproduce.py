@@ -92,6 +92,7 @@ def reproduce_paper(
     events: int = METHOD_B_EVENTS,
     formats: tuple[str, ...] = ("png", "svg"),
     step: Step | None = None,
+    progress: Callable[[int], None] | None = None,
 ) -> PaperReport:
     """Regenerate every figure of Stefan & Cheche and write ``report.md`` and ``report.html``.
 
@@ -110,6 +111,9 @@ def reproduce_paper(
         Image formats of each figure.
     step : callable, optional
         Called with a description after each of :data:`STEPS` steps (a progress bar).
+    progress : callable, optional
+        Called with the work units done by the probabilities' estimates, most of the run
+        (:func:`coinflight.report.paper.paper_work` counts them: a progress bar's total).
     """
     from coinflight.model.toss import Toss
     from coinflight.plotting.convergence import plot_convergence, plot_estimates
@@ -120,7 +124,7 @@ def reproduce_paper(
     out = Path(out_dir)
     paper_files(out, formats)  # before minutes of computing, not after
     coin = coin if coin is not None else Coin.preset("us-quarter")
-    numbers = paper_numbers(coin, seed=seed, events=events, step=step)
+    numbers = paper_numbers(coin, seed=seed, events=events, step=step, progress=progress)
     files: list[Path] = []
 
     def done(message: str) -> None:
