@@ -23,7 +23,7 @@ from coinflight.studies.edge_experiments import (
     experiment_box,
     setting,
 )
-from coinflight.studies.landing import bouncing_box
+from coinflight.studies.presets import bouncing_box
 
 # Made-up records: the study takes its data as an argument; these test the machinery only.
 THIN = Experiment("made-up, h/d 0.3", 0.3, 200, 20, "hand-table", "test record")

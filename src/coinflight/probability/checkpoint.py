@@ -31,6 +31,8 @@ from typing import Any
 
 from coinflight.probability.result import ProbabilityResult
 
+MAX_ROWS = 100_000
+"""Most rows a sweep accepts (checked before any row is built), so most a checkpoint holds."""
 MARKER = "coinflight sweep checkpoint"
 """The header's ``coinflight`` field: what makes a file a checkpoint."""
 FORMAT = 1
@@ -182,8 +184,6 @@ class Checkpoint:
                 f"belongs to another run ({run})",
                 "rerun with that method, n and seed to resume it, or start over with --fresh",
             )
-        from coinflight.probability.sweep import MAX_ROWS
-
         self._good_end = len(first)
         number = 1
         while line := f.readline(MAX_LINE):

@@ -37,6 +37,7 @@ from coinflight.model.toss import STANDARD_GRAVITY
 from coinflight.outcomes.base import OutcomeModel
 from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability import registry
+from coinflight.probability.checkpoint import MAX_ROWS
 from coinflight.probability.result import ProbabilityResult, require_pandas
 from coinflight.probability.streams import SeedLike, reported_seed, seed_sequence
 
@@ -143,8 +144,6 @@ def estimate_many(
 
 # --- sweeps: rows as tasks, streams per row, a checkpoint, one table -----------------------
 
-MAX_ROWS = 100_000
-"""Most rows a sweep accepts (checked before any row is built)."""
 ROW_SECONDS = 0.05
 """Seconds of work counted for a row whose method bounds its own work and makes no estimate
 of it (exact's adaptive quadrature; exact otherwise estimates its row,

@@ -7,7 +7,7 @@ For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting
 describes) the study simulates that setting with
 :func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
 the two endings) and returns P(edge) as a **band** over what nobody measured: the restitution
-e and friction μ over the surface presets' box (:func:`coinflight.studies.landing.
+e and friction μ over the surface presets' box (:func:`coinflight.studies.presets.
 bouncing_box`), the cylinder's diameter and the table's drop when the source does not give
 them, and, for the experimental 3-D contact ending, the rolling and pivoting resistance. The
 band's cells are the box's corners and its centre; each reports p, s.e. and n. The measured
@@ -537,10 +537,10 @@ def experiment_box(
     friction: tuple[float, float] | None = None,
 ) -> dict[str, tuple[float, float]]:
     """The unmeasured parameters' ranges for one experiment and ending: e and μ (default the
-    surface presets' box, :func:`coinflight.studies.landing.bouncing_box`), the diameter and
+    surface presets' box, :func:`coinflight.studies.presets.bouncing_box`), the diameter and
     the drop (the record's when it gives them, else the setting's), and with the contact
     ending the resistance (:data:`RESISTANCE`)."""
-    from coinflight.studies.landing import bouncing_box
+    from coinflight.studies.presets import bouncing_box
 
     e_box, mu_box = bouncing_box()
     d = experiment.diameter

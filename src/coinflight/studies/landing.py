@@ -56,6 +56,7 @@ from coinflight.model.ensemble import TossDistribution
 from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
+from coinflight.studies.presets import bouncing_box
 
 if TYPE_CHECKING:
     from coinflight.studies.edge_experiments import EdgeExperiments
@@ -189,17 +190,6 @@ class BouncingEdges:
         """(P, s.e.) of ratio ``k``'s highest cell."""
         p = float(self.edge[k].max())
         return p, math.sqrt(p * (1 - p) / self.n)
-
-
-def bouncing_box() -> tuple[tuple[float, float], tuple[float, float]]:
-    """((e_low, e_high), (μ_low, μ_high)): the union of the surface presets' boxes
-    (:data:`coinflight.studies.presets.SURFACE_PRESETS`)."""
-    from coinflight.studies.presets import SURFACE_PRESETS
-
-    presets = list(SURFACE_PRESETS.values())
-    e = [b for p in presets for b in p.restitution.bounds]
-    mu = [b for p in presets for b in p.friction.bounds]
-    return (min(e), max(e)), (min(mu), max(mu))
 
 
 def bouncing_edges(
@@ -846,7 +836,6 @@ __all__ = [
     "EdgeCheck",
     "EndingRun",
     "MujocoComparison",
-    "bouncing_box",
     "bouncing_edges",
     "contact_maps",
     "dead_landings",

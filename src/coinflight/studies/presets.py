@@ -268,6 +268,15 @@ def surface_preset(name: str) -> SurfacePreset:
     return v.known("surface preset", name, SURFACE_PRESETS)
 
 
+def bouncing_box() -> tuple[tuple[float, float], tuple[float, float]]:
+    """((e_low, e_high), (μ_low, μ_high)): the union of the surface presets' boxes
+    (:data:`SURFACE_PRESETS`)."""
+    presets = list(SURFACE_PRESETS.values())
+    e = [b for p in presets for b in p.restitution.bounds]
+    mu = [b for p in presets for b in p.friction.bounds]
+    return (min(e), max(e)), (min(mu), max(mu))
+
+
 __all__ = [
     "HUMAN_LAUNCH_SPEED",
     "HUMAN_PSI",
@@ -276,6 +285,7 @@ __all__ = [
     "PRESETS",
     "SURFACE_PRESETS",
     "SurfacePreset",
+    "bouncing_box",
     "human",
     "preset",
     "surface_preset",
