@@ -296,11 +296,12 @@ def test_a_checkpoint_coinflight_did_not_write_is_refused_naming_it(
 
 
 def test_a_checkpoint_longer_than_any_sweep_is_refused(tmp_path, monkeypatch):
+    from coinflight.probability import checkpoint as checkpoint_module
     from coinflight.probability.checkpoint import Checkpoint
 
     path = tmp_path / "c.jsonl"
     sweep(_cases(3), "monte-carlo", n=1000, seed=1, checkpoint=path)
-    monkeypatch.setattr(sweep_module, "MAX_ROWS", 2)
+    monkeypatch.setattr(checkpoint_module, "MAX_ROWS", 2)  # where the checkpoint reads it
     with pytest.raises(ValueError, match=r"holds more rows than a sweep has \(2\)"):
         Checkpoint(path, "monte-carlo", 1000, 1).read()
 
