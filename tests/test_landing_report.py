@@ -232,7 +232,8 @@ def test_cli_landing_report_quick_skips_mujoco_cleanly_when_absent(tmp_path, mon
 def test_cli_landing_report_refuses_a_bad_folder_before_computing():
     from _cli import one_line_error
 
-    assert "the path is empty; give a folder" in one_line_error("landing-report", "--out", "")
+    # an empty value is refused by the command line itself, naming the option (cli.errors)
+    assert "--out was given an empty value" in one_line_error("landing-report", "--out", "")
     # /proc refuses new files even to root: refused by the check before any computing.
     assert "cannot write /proc/" in one_line_error("landing-report", "--out", "/proc/x/y")
 
