@@ -383,7 +383,9 @@ def test_an_empty_output_path_is_refused(tmp_path, monkeypatch, argv):
     result = CliRunner().invoke(app, [*argv, *flag, ""])
     assert result.exit_code == 2, result.output
     assert result.stderr.count("\n") == 1
-    assert "cannot write '': the path is empty" in result.stderr
+    # refused by the command line's rule for empty values (cli.errors), naming the option;
+    # _files' own check ("cannot write '': the path is empty") stands behind it for the library
+    assert f"{flag[0] if flag else argv[-1]} was given an empty value ''" in result.stderr
     assert list(tmp_path.iterdir()) == []
 
 
@@ -439,3 +441,13 @@ def test_a_device_or_pipe_is_never_replaced(tmp_path):
             attempt(fifo)
     assert fifo.is_fifo()
     assert [p.name for p in tmp_path.iterdir()] == ["pipe.png"]
+
+
+@pytest.mark.parametrize("folder", [False, True])
+def test_the_library_refuses_an_empty_path_itself(folder):
+    """Behind the command line's empty-value rule, the library's own check of a path."""
+    from coinflight._files import check_name
+
+    what = "a folder" if folder else "a file"
+    with pytest.raises(ValueError, match=f"cannot write '': the path is empty; give {what}"):
+        check_name("", folder=folder)
