@@ -16,7 +16,6 @@ from typer.testing import CliRunner
 
 from coinflight import __version__
 from coinflight.cli import app
-from coinflight.cli.sweep import parse_dists, parse_numbers_list
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -33,6 +32,8 @@ from coinflight.probability.sweep import (
     run_sweep,
     sweep,
 )
+from coinflight.queries.sweep import parse_dists
+from coinflight.queries.values import parse_numbers_list
 
 runner = CliRunner()
 
@@ -441,11 +442,12 @@ def test_work_and_rows_are_bounded_before_anything_runs():
         (["--omega-x-mean", "80", "--omega-x-sd", "-1"], "standard deviation must be ≥ 0"),
         (["--omega-x", "90:60"], "--omega-x '90:60'"),
         (["--restitution", "0.5"], f"--restitution {TABLE_ONLY}"),
-        (["--surface", "sand"], "--surface 'sand': choose among hand, table"),
+        # the shared wording of a name outside its choices (_validation.choice)
+        (["--surface", "sand"], "--surface must be one of hand, table; got 'sand'"),
         (["--surface", "table"], "--method exact handles --surface hand only"),
         (["--coin", "us-quarter,,eur-1"], "--coin 'us-quarter,,eur-1': give comma-separated"),
         (["--coin", "peso"], "peso"),
-        (["--start", "heads,edge"], "--start 'heads,edge': each face is heads or tails"),
+        (["--start", "heads,edge"], "--start must be one of heads, tails; got 'edge'"),
         (["--seed", "3"], "--seed applies to monte-carlo and qmc, not exact"),
         (["--n", "30"], "--n does not apply to the exact method"),
         (["--launch-speed", "2", "--flight-time", "0.7"], "give one of --flight-time and"),

@@ -171,3 +171,45 @@ def parse_resolution(text: str) -> tuple[int, int]:
             f"got {text!r}"
         ) from None
     return (sizes[0], sizes[-1])
+
+
+MAX_COUNT = 10_000
+"""Largest COUNT of a FROM:TO:COUNT item of :func:`parse_numbers_list`."""
+
+
+def parse_numbers_list(text: str, option_name: str) -> list[float]:
+    """Comma-separated numbers and FROM:TO:COUNT items (COUNT evenly spaced values, ends
+    included), or a ValueError naming the option and the item (the lists of a sweep)."""
+    import numpy as np
+
+    from coinflight.model.distributions import parse_distribution
+
+    out: list[float] = []
+    for raw in str(text).split(","):
+        item = raw.strip()
+        parts = item.split(":")
+        try:
+            if len(parts) == 3:
+                count = int(parts[2])
+                if not 1 <= count <= MAX_COUNT:
+                    raise ValueError
+                ends = [parse_distribution(p, option_name).mean for p in parts[:2]]
+                out.extend(float(x) for x in np.linspace(ends[0], ends[1], count))
+            elif len(parts) == 1 and item:
+                out.append(float(parse_distribution(item, option_name).mean))
+            else:
+                raise ValueError
+        except ValueError:
+            raise ValueError(
+                f"{option_name} {text!r}: {item!r} is not a number nor FROM:TO:COUNT "
+                f"(COUNT a whole number 1–{MAX_COUNT}); e.g. 150,200,250 or 150:250:5"
+            ) from None
+    return out
+
+
+def names(text: str, option_name: str) -> list[str]:
+    """Comma-separated names, or a ValueError naming the option when one is empty."""
+    items = [x.strip() for x in str(text).split(",")]
+    if not all(items):
+        raise ValueError(f"{option_name} {text!r}: give comma-separated names, none empty")
+    return items
