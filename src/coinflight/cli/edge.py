@@ -18,12 +18,10 @@ from coinflight.cli.options import (
     number_option,
     print_json,
 )
-from coinflight.cli.parsers import parse_numbers
-from coinflight.queries.values import simulation_seed
+from coinflight.queries.edge import TABLE_RATIOS
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
-TABLE_RATIOS = "0.1,0.3,0.577,1"
 _SETTING = "vigorous planar spins, landing dead on a table; coinflight.studies.edge.simulate_edge"
 
 
@@ -155,53 +153,16 @@ def edge(
 
     Example: coinflight edge --ratios 0.1,0.577,1 --simulate 4000 --seed 1 --json
     """
-    from coinflight.model.distributions import parse_distribution
-    from coinflight.studies.edge import edge_table
+    from coinflight.queries.edge import edge_query, edge_rows
 
-    given: dict[str, object] = {
-        "--restitution": restitution,
-        "--friction": friction,
-        "--drop-height": drop_height,
-        "--ending": ending,
-        "--rolling-resistance": rolling_resistance,
-        "--pivoting-resistance": pivoting_resistance,
-        "--corner-radius": corner_radius,
-        "--omega-x": omega_x,
-        "--launch-speed": launch_speed,
-        "--g": g,
-    }
-    the_seed = simulation_seed(simulate, seed, *given.items(), run_flag="--simulate")
-    setting: dict[str, Any] = {
-        key: value
-        for key, value in (
-            ("restitution", restitution),
-            ("friction", friction),
-            ("drop_height", drop_height),
-            ("ending", ending),
-            ("rolling_resistance", rolling_resistance),
-            ("pivoting_resistance", pivoting_resistance),
-            ("corner_radius", corner_radius),
-            ("g", g),
-        )
-        if value is not None
-    }
-    if omega_x is not None:
-        setting["spin"] = parse_distribution(omega_x, "--omega-x", "rad/s")
-    if launch_speed is not None:
-        setting["launch_speed"] = parse_distribution(launch_speed, "--launch-speed", "m/s")
-    if simulate is None and cluster.scheduler is not None:
-        raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
-    x = parse_numbers(ratios, "--ratios", TABLE_RATIOS)
-    if corner_radius is not None:  # named as toss names it ("--corner-radius: corner radius …")
-        from coinflight.studies.edge import check_ratios, simulated_corner_radius
-
-        check_ratios(x)
-        try:
-            simulated_corner_radius(corner_radius, x)
-        except ValueError as exc:
-            raise ValueError(f"--corner-radius: {exc}") from None
+    query = edge_query(
+        ratios, simulate, seed, scheduler=cluster.scheduler, restitution=restitution,
+        friction=friction, drop_height=drop_height, ending=ending,
+        rolling_resistance=rolling_resistance, pivoting_resistance=pivoting_resistance,
+        corner_radius=corner_radius, omega_x=omega_x, launch_speed=launch_speed, g=g,
+    )  # fmt: skip
     with cluster.executor() as executor:
-        rows = edge_table(x, simulate, the_seed, executor=executor, **setting)
+        rows = edge_rows(query, executor)
     if json:
         print_json(cast(Any, rows))  # a list: one object per ratio
         return

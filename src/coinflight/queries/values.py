@@ -173,6 +173,30 @@ def parse_resolution(text: str) -> tuple[int, int]:
     return (sizes[0], sizes[-1])
 
 
+def parse_numbers(text: str, name: str, example: str = "0.6,0.65,0.7") -> list[float]:
+    """Comma-separated numbers, or a ValueError naming the option, an ``example`` of what it
+    takes and the bad text."""
+    parts = [p.strip() for p in text.split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise ValueError(
+            f"{name} must be comma-separated numbers such as {example}; got {text!r}"
+        ) from None
+    return values
+
+
+def parse_sizes(text: str, option: str) -> list[int]:
+    """Comma-separated whole numbers (at least one), or a ValueError naming the option."""
+    try:
+        values = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
+    if not values:
+        raise ValueError(f"{option} {text!r}: give at least one size")
+    return values
+
+
 MAX_COUNT = 10_000
 """Largest COUNT of a FROM:TO:COUNT item of :func:`parse_numbers_list`."""
 
