@@ -61,7 +61,7 @@ def edge_query(
     given = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
     given += [(option, text) for option, text, _ in texts.values()] + [("--g", g)]
     the_seed = simulation_seed(simulate, seed, *given, run_flag="--simulate")
-    setting = {key: x for key, x in {**numbers, "g": g}.items() if x is not None}
+    setting: dict[str, Any] = {k: x for k, x in {**numbers, "g": g}.items() if x is not None}
     for key, (option, text, unit) in texts.items():
         if text is not None:
             setting[key] = parse_distribution(text, option, unit)
