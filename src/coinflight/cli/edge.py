@@ -7,7 +7,7 @@ from typing import Annotated, Any, cast
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import command
+from coinflight.cli.command import Group, command
 from coinflight.cli.groups import _dist
 from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
@@ -115,6 +115,26 @@ LaunchSpeed = Annotated[
     str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
 ]
 EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
+SETTING = Group(
+    {
+        name: (kind, None)
+        for name, kind in (
+            ("restitution", Restitution),
+            ("friction", Friction),
+            ("drop_height", DropHeight),
+            ("ending", Ending),
+            ("rolling_resistance", RollingResistance),
+            ("pivoting_resistance", PivotingResistance),
+            ("corner_radius", CornerRadius),
+            ("omega_x", SpinX),
+            ("launch_speed", LaunchSpeed),
+            ("g", EdgeGravity),
+        )
+    },
+    dict,
+)
+"""The simulated landings' options: the command receives them as keywords of
+:func:`~coinflight.queries.edge.edge_query` (None: not given)."""
 EdgeJson = Annotated[
     bool,
     typer.Option(
@@ -131,16 +151,7 @@ def edge(
     ratios: EdgeRatios = TABLE_RATIOS,
     simulate: EdgeSimulate = None,
     seed: SimulateSeed = None,
-    restitution: Restitution = None,
-    friction: Friction = None,
-    drop_height: DropHeight = None,
-    ending: Ending = None,
-    rolling_resistance: RollingResistance = None,
-    pivoting_resistance: PivotingResistance = None,
-    corner_radius: CornerRadius = None,
-    omega_x: SpinX = None,
-    launch_speed: LaunchSpeed = None,
-    g: EdgeGravity = None,
+    setting: Annotated[dict[str, Any], SETTING],
     cluster: ClusterOptions,
     json: EdgeJson = False,
 ) -> None:
@@ -155,12 +166,7 @@ def edge(
     """
     from coinflight.queries.edge import edge_query, edge_rows
 
-    query = edge_query(
-        ratios, simulate, seed, scheduler=cluster.scheduler, restitution=restitution,
-        friction=friction, drop_height=drop_height, ending=ending,
-        rolling_resistance=rolling_resistance, pivoting_resistance=pivoting_resistance,
-        corner_radius=corner_radius, omega_x=omega_x, launch_speed=launch_speed, g=g,
-    )  # fmt: skip
+    query = edge_query(ratios, simulate, seed, scheduler=cluster.scheduler, **setting)
     with cluster.executor() as executor:
         rows = edge_rows(query, executor)
     if json:
@@ -168,7 +174,7 @@ def edge(
         return
     width = max(13, 2 * len(f"{simulate or 0:,}") + 3)  # "edge / tosses", right-aligned
     header = f"{'h/d':>8}  {'geometric':>9}  {'dynamic':>9}"
-    contact = simulate is not None and ending == "contact"
+    contact = simulate is not None and setting["ending"] == "contact"
     if simulate is not None:
         header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>{width}}"
     if contact:
@@ -189,8 +195,8 @@ def edge(
                 "decided upright: edges the contact ending's upright decision ended while the "
                 "coin still rolled (a measured predictor of ending on edge, not a proof)"
             )
-        if corner_radius:  # rounded rims: said, as the JSON rows say it
-            typer.echo(f"corner radius {corner_radius:g} m")
+        if setting["corner_radius"]:  # rounded rims: said, as the JSON rows say it
+            typer.echo(f"corner radius {setting['corner_radius']:g} m")
         typer.echo(f"seed {rows[0]['simulated']['seed']}")
 
 
