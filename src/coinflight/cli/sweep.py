@@ -14,6 +14,7 @@ import typer
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.options import (
+    COIN_NAMES,
     COIN_PANEL,
     METHOD_PANEL,
     OUTPUT_HELP,
@@ -84,8 +85,7 @@ Coins = Annotated[
         "--coin",
         metavar="NAMES",
         panel=COIN_PANEL,
-        help="Comma-separated coins: us-cent, us-nickel, us-dime, us-quarter, "
-        "us-half-dollar, eur-1, eur-2, eur-50c, gbp-1.",
+        help=f"Comma-separated coins: {COIN_NAMES}.",
     ),
 ]
 Starts = Annotated[

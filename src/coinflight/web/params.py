@@ -236,6 +236,29 @@ PrecessionRange = Annotated[
 Resolution = Annotated[str, _q("Grid cells: N (N×N) or NTxNW (as --resolution).")]
 Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand only).")]
 
+
+def basin_box(
+    flight_time: FlightTimeRange = None,
+    launch_speed: LaunchSpeedRange = None,
+    omega_x: OmegaXRange = None,
+    omega_y: OmegaYFixed = 0.0,
+    omega_z: OmegaZFixed = 0.0,
+    psi: PsiFixed = None,
+    precession_rate: PrecessionRange = None,
+    resolution: Resolution = "500",
+    start: Start = "heads",
+    g: Gravity = 9.81,
+    bounces: Bounces = None,
+    boundaries: Boundaries = False,
+) -> dict[str, Any]:
+    """The map's box, its toss, the bounces and the boundaries, as typed: the keywords of
+    :func:`~coinflight.queries.basin.basin_query` (``g`` checked by the endpoint)."""
+    return dict(locals())
+
+
+BasinBox = Annotated[dict[str, Any], Depends(basin_box)]
+"""The map's options but the coin and the table: one dependency of ``/api/basin``."""
+
 # --- the same-side bias and real flips --------------------------------------------------------
 Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]
 Psis = Annotated[

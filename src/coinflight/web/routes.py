@@ -187,37 +187,16 @@ async def probability(
 @router.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
 async def basin(
     *,
-    flight_time: p.FlightTimeRange = None,
-    launch_speed: p.LaunchSpeedRange = None,
-    omega_x: p.OmegaXRange = None,
-    omega_y: p.OmegaYFixed = 0.0,
-    omega_z: p.OmegaZFixed = 0.0,
-    psi: p.PsiFixed = None,
-    precession_rate: p.PrecessionRange = None,
-    resolution: p.Resolution = "500",
-    start: p.Start = "heads",
-    g: p.Gravity = 9.81,
+    box: p.BasinBox,
     coin: p.CoinQuery,
     table: p.TableQuery,
-    bounces: p.Bounces = None,
-    boundaries: p.Boundaries = False,
     server: Server,
 ) -> Response:
     """Heads and tails over a box of flight times and spins: the map `coinflight plot
     basin` draws, as JSON (`face`: one row per `spin` value, face codes along
     `flight_time`; `faces` names the codes). At most 640,000 cells."""
-    options = {
-        "flight_time": flight_time,
-        "launch_speed": launch_speed,
-        "omega_x": omega_x,
-        "omega_y": omega_y,
-        "omega_z": omega_z,
-        "psi": psi,
-        "precession_rate": precession_rate,
-        "resolution": resolution,
-        "start": start,
-        "g": p.gravity(g),
-    }
+    options = {**box, "g": p.gravity(box["g"])}
+    bounces, boundaries = options.pop("bounces"), options.pop("boundaries")
     return await server.answer(
         endpoints.basin,
         coin,
