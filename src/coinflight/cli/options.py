@@ -59,14 +59,15 @@ def _preset(panel: str, help: str) -> Any:
 # --- the coin and the toss ---------------------------------------------------------------
 COIN_NAMES = "us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, eur-50c, gbp-1"
 """The coins a --coin names (coinflight.model.coin's presets)."""
+
+
+def coin_option(metavar: str, help: str) -> Any:
+    """--coin: one coin by name, or (a sweep's) several."""
+    return option("--coin", metavar=metavar, panel=COIN_PANEL, help=help)
+
+
 CoinName = Annotated[
-    str | None,
-    option(
-        "--coin",
-        metavar="NAME",
-        panel=COIN_PANEL,
-        help=f"A real coin: {COIN_NAMES}. Default us-quarter.",
-    ),
+    str | None, coin_option("NAME", f"A real coin: {COIN_NAMES}. Default us-quarter.")
 ]
 StartFace = Annotated[
     str, option("--start", metavar="heads|tails", panel=TOSS_PANEL, help="Face up at launch.")

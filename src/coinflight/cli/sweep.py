@@ -15,7 +15,6 @@ from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.options import (
     COIN_NAMES,
-    COIN_PANEL,
     METHOD_PANEL,
     OUTPUT_HELP,
     OUTPUT_PANEL,
@@ -25,12 +24,14 @@ from coinflight.cli.options import (
     Quiet,
     Seed,
     Threads,
+    coin_option,
     option,
     print_json,
 )
 from coinflight.cli.progress import progress_bar
 from coinflight.cli.sweep_groups import LANDINGS, TOSSES
 from coinflight.probability import registry
+from coinflight.queries.sweep import SweepLandings
 
 Method = Annotated[
     str,
@@ -79,15 +80,7 @@ Fresh = Annotated[
         "table) instead of resuming from it.",
     ),
 ]
-Coins = Annotated[
-    str,
-    option(
-        "--coin",
-        metavar="NAMES",
-        panel=COIN_PANEL,
-        help=f"Comma-separated coins: {COIN_NAMES}.",
-    ),
-]
+Coins = Annotated[str, coin_option("NAMES", f"Comma-separated coins: {COIN_NAMES}.")]
 Starts = Annotated[
     str, option("--start", metavar="FACES", panel=TOSS_PANEL, help="heads, tails or heads,tails.")
 ]
@@ -101,7 +94,7 @@ def sweep(
     coin: Coins = "us-quarter",
     start: Starts = "heads",
     g: Gravity = 9.81,
-    landings: Annotated[dict[str, Any], LANDINGS],
+    landings: Annotated[SweepLandings, LANDINGS],
     method: Method = "exact",
     n: Size = None,
     seed: Seed = None,
@@ -129,8 +122,8 @@ def sweep(
 
     t0 = time.perf_counter()
     query = sweep_query(
-        tosses, coin=coin, start=start, g=g, **landings, method=method, n=n, seed=seed,
-        out=out, inputs=ctx.params,
+        tosses, landings, coin=coin, start=start, g=g, method=method, n=n, seed=seed, out=out,
+        inputs=ctx.params,
     )  # fmt: skip
     with (
         cluster.executor(threads) as executor,

@@ -15,7 +15,7 @@ from coinflight.cli.landing_groups import (
 )
 from coinflight.cli.options import SURFACE_PANEL, TOSS_PANEL, option
 from coinflight.queries.probability import PRESET_OPTIONS
-from coinflight.queries.sweep import TOSS_PARAMETERS, flag
+from coinflight.queries.sweep import TOSS_PARAMETERS, SweepLandings, flag
 
 _WHAT = {
     "omega_x": "Spin about the x diameter",
@@ -116,7 +116,7 @@ LANDINGS = Group(
             "--corner-radius", "LIST", "--surface table only, swept over every coin: " + CORNER_HELP
         ),
     },
-    dict,
+    SweepLandings,
 )
-"""--surface and the table's lists: the command receives them as keywords of
-:func:`~coinflight.queries.sweep.sweep_query`."""
+"""--surface and the table's lists: the command receives their
+:class:`~coinflight.queries.sweep.SweepLandings`."""

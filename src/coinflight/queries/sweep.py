@@ -23,7 +23,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from coinflight import _validation as v
 from coinflight.queries.probability import PRESET_OPTIONS, check_method_options
@@ -121,27 +121,30 @@ def _kinds(surfaces: str) -> list[str]:
     return kinds
 
 
-def outcome_models(
-    surfaces: str,
-    drop_height: str | None,
-    restitution: str | None,
-    friction: str | None,
-    bounces: int | None,
-    ending: str | None = None,
-    rolling_resistance: str | None = None,
-    pivoting_resistance: str | None = None,
-) -> list[OutcomeModel]:
+class SweepLandings(NamedTuple):
+    """--surface and the table's lists, as typed (None: not given)."""
+
+    surface: str = "hand"
+    drop_height: str | None = None
+    restitution: str | None = None
+    friction: str | None = None
+    bounces: int | None = None
+    ending: str | None = None
+    rolling_resistance: str | None = None
+    pivoting_resistance: str | None = None
+    corner_radius: str | None = None
+
+
+def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
     """The outcome models of --surface and the table's lists (swept for the table only; the
     rolling and pivoting resistances for the contact ending's rows only)."""
     from coinflight.outcomes import outcome_model as build_model
     from coinflight.queries.landing import build_surface, check_bounces
 
-    kinds = _kinds(surfaces)
-    table = {"--drop-height": drop_height, "--restitution": restitution, "--friction": friction}
-    contact = {
-        "--rolling-resistance": rolling_resistance,
-        "--pivoting-resistance": pivoting_resistance,
-    }
+    kinds = _kinds(landings.surface)
+    bounces, ending = landings.bounces, landings.ending
+    table = {flag(k): getattr(landings, k) for k in ("drop_height", "restitution", "friction")}
+    contact = {flag(k): getattr(landings, k) for k in ("rolling_resistance", "pivoting_resistance")}
     given = [option for option, text in {**table, "--ending": ending, **contact}.items()
              if text is not None]  # fmt: skip
     if given and "table" not in kinds:
@@ -229,19 +232,11 @@ class SweepQuery:
 
 def sweep_query(
     tosses: Mapping[str, tuple[Sequence[str] | None, str | None, str | None]],
+    landings: SweepLandings | None = None,
     *,
     coin: str = "us-quarter",
     start: str = "heads",
     g: float,
-    surface: str = "hand",
-    drop_height: str | None = None,
-    restitution: str | None = None,
-    friction: str | None = None,
-    bounces: int | None = None,
-    ending: str | None = None,
-    rolling_resistance: str | None = None,
-    pivoting_resistance: str | None = None,
-    corner_radius: str | None = None,
     method: str = "exact",
     n: int | None = None,
     seed: int | None = None,
@@ -250,13 +245,15 @@ def sweep_query(
 ) -> SweepQuery:
     """The options of ``coinflight sweep`` checked in its order: the table's format, the method
     and its options, the toss parameters (``tosses``: parameter name → its distributions, its
-    ``-mean`` and its ``-sd`` texts), the coins, the start faces, the landings, then the rows
-    (counted before they are built). ``inputs``: every option as typed, by parameter name."""
+    ``-mean`` and its ``-sd`` texts), the coins, the start faces, the landings (``landings``:
+    --surface and the table's lists), then the rows (counted before they are built).
+    ``inputs``: every option as typed, by parameter name."""
     from coinflight.probability import registry
     from coinflight.probability.sweep import product_cases, table_files
     from coinflight.queries.values import resolve_coin
 
     estimator = registry.get(method)
+    landings = landings or SweepLandings()
     table_files(out)  # the suffix, before any work
     check_method_options(estimator, seed=seed, n=n)
     values = {name: parameter_values(name, *tosses.get(name, (None, None, None)))
@@ -268,14 +265,11 @@ def sweep_query(
             "give one of --flight-time and --launch-speed (or their -mean and -sd lists)"
         )
     coins = [resolve_coin(name, None, None, None) for name in names(coin, "--coin")]
-    coins = corner_coins(coins, corner_radius, surface)
+    coins = corner_coins(coins, landings.corner_radius, landings.surface)
     starts = names(start, "--start")
     for face in starts:
         v.choice("--start", face, ("heads", "tails"))
-    models = outcome_models(
-        surface, drop_height, restitution, friction, bounces, ending, rolling_resistance,
-        pivoting_resistance,
-    )  # fmt: skip
+    models = outcome_models(landings)
     _check_slow(models, method, n)
     cases = product_cases(
         omega_x=values["omega_x"],
@@ -310,6 +304,7 @@ def sweep_summary(
 
 
 __all__ = [
+    "SweepLandings",
     "SweepQuery",
     "outcome_models",
     "parameter_values",

@@ -168,17 +168,7 @@ def table_args(
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
-    return TableArgs(
-        surface,
-        drop_height,
-        restitution,
-        friction,
-        None,
-        ending,
-        rolling_resistance,
-        pivoting_resistance,
-        corner_radius,
-    )
+    return TableArgs(**locals(), surface_preset=None)
 
 
 def air_args(drag: Drag = None, spin_damping: SpinDamping = None) -> AirArgs:

@@ -68,6 +68,10 @@ class Lanes:
             text = await runner.run(_encoded, fn, *args, False, long=True)
         return Response(text, media_type=JSON)
 
+    async def timed(self, fn: Callable[..., Any], *args: Any, long: bool = True) -> Response:
+        """:meth:`answer` for work bounded by the time limit: ``fn(*args, time_limit)``."""
+        return await self.answer(fn, *args, self.time_limit, long=long)
+
 
 def _lanes(request: Request) -> Lanes:
     return Lanes(request.app.state)
@@ -114,15 +118,7 @@ async def toss(
     form: normal, attitude quaternion, height, the angular momentum's direction and the
     cone half-angle), for drawing it."""
     args = p.toss_args(omega, flight_time, launch_speed, start, g)
-    return await server.answer(
-        endpoints.toss,
-        coin,
-        args,
-        table,
-        air,
-        bounces,
-        trajectory,
-    )
+    return await server.answer(endpoints.toss, coin, args, table, air, bounces, trajectory)
 
 
 @router.get("/api/probability", tags=["probability"], response_class=Response, responses=ANSWERS)
@@ -172,16 +168,8 @@ async def probability(
         "overrides": given if preset is not None else None,
         "inputs": {k: typed[k] for k in INPUT_NAMES},
     }
-    return await server.answer(
-        endpoints.probability,
-        coin,
-        DistArgs(omega_x, omega_y, omega_z, flight_time, launch_speed, start, g),
-        table,
-        air,
-        options,
-        server.time_limit,
-        long=True,
-    )
+    tosses = DistArgs(omega_x, omega_y, omega_z, flight_time, launch_speed, start, g)
+    return await server.timed(endpoints.probability, coin, tosses, table, air, options)
 
 
 @router.get("/api/basin", tags=["basin"], response_class=Response, responses=ANSWERS)
@@ -197,16 +185,7 @@ async def basin(
     `flight_time`; `faces` names the codes). At most 640,000 cells."""
     options = {**box, "g": p.gravity(box["g"])}
     bounces, boundaries = options.pop("bounces"), options.pop("boundaries")
-    return await server.answer(
-        endpoints.basin,
-        coin,
-        options,
-        table,
-        bounces,
-        boundaries,
-        server.time_limit,
-        long=True,
-    )
+    return await server.timed(endpoints.basin, coin, options, table, bounces, boundaries)
 
 
 @router.get("/api/bias", tags=["bias"], response_class=Response, responses=ANSWERS)
@@ -231,16 +210,9 @@ async def bias(
         if given:
             raise ValueError(f"psis is the closed form at each ψ: leave out {', '.join(given)}")
         return await server.answer(endpoints.bias_curve, coin, p.number_list(psis, "psis"))
-    return await server.answer(
-        endpoints.bias,
-        coin,
-        psi,
-        psi_dist,
-        preset,
-        monte_carlo,
-        seed,
-        server.time_limit,
-        long=monte_carlo is not None,
+    long = monte_carlo is not None
+    return await server.timed(
+        endpoints.bias, coin, psi, psi_dist, preset, monte_carlo, seed, long=long
     )
 
 
@@ -257,8 +229,8 @@ async def data(
 ) -> Response:
     """Same-side and heads rates of real flips (Bartoš et al.'s 350,757), the precession
     angle ψ that explains them and the people's ψ population, as `coinflight data --json`."""
-    return await server.answer(
-        endpoints.data, dataset, interval, psi_sd, seed, folds, repeats, server.time_limit
+    return await server.timed(
+        endpoints.data, dataset, interval, psi_sd, seed, folds, repeats, long=False
     )
 
 

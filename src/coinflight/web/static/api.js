@@ -106,3 +106,16 @@ export function debounce(fn, ms) {
     timer = setTimeout(() => fn(...args), ms);
   };
 }
+
+/** A slider and its number box kept together: moving either sets the other, then `changed()`
+ * (a box's text that is not a finite number leaves the slider where it is). */
+export function linkSlider(range, box, changed) {
+  range.addEventListener("input", () => {
+    box.value = range.value;
+    changed();
+  });
+  box.addEventListener("input", () => {
+    if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
+    changed();
+  });
+}

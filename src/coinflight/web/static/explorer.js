@@ -2,7 +2,7 @@
 // computes (n(t), the angular momentum S and the precession cone), with a time slider.
 import * as THREE from "three";
 import { OrbitControls } from "./vendor/three/addons/controls/OrbitControls.js";
-import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
+import { ApiError, getJSON, latest, linkSlider, showError, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { tossLines } from "./format.js";
 
@@ -367,16 +367,7 @@ export class Explorer {
   bindControls() {
     // Each slider has a number box: either one sets the other, then the toss is asked again.
     for (const name of ["wx", "wy", "wz", "T", "v0"]) {
-      const range = this.el(`${name}-range`);
-      const box = this.el(`${name}`);
-      range.addEventListener("input", () => {
-        box.value = range.value;
-        this.changed();
-      });
-      box.addEventListener("input", () => {
-        if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
-        this.changed();
-      });
+      linkSlider(this.el(`${name}-range`), this.el(name), () => this.changed());
     }
     for (const radio of this.root.querySelectorAll("input[name=by]")) {
       radio.addEventListener("change", () => {

@@ -1,6 +1,6 @@
 // Same side: p(ψ), the chance a precessing coin lands the side it started (/api/bias, Diaconis,
 // Holmes & Montgomery 2007), and the ψ that explains 350,757 real flips (/api/data).
-import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
+import { ApiError, getJSON, latest, linkSlider, showError, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { fmtG, thousands } from "./format.js";
@@ -43,14 +43,7 @@ export class SameSide {
     this.request = latest((signal) => this.fetchPsi(signal));
     const range = this.el("psi-range");
     const box = this.el("psi");
-    range.addEventListener("input", () => {
-      box.value = range.value;
-      this.changed();
-    });
-    box.addEventListener("input", () => {
-      if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
-      this.changed();
-    });
+    linkSlider(range, box, () => this.changed());
     this.el("psi-data").addEventListener("click", () => {
       if (!this.data) return;
       const psi = this.data.psi_deg.toFixed(1);
