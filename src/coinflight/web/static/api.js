@@ -119,3 +119,20 @@ export function linkSlider(range, box, changed) {
     changed();
   });
 }
+
+/** Run `work()` (a panel's requests and drawing) with the panel's `data-state` "loading", then
+ * "ready", or "error" with the message shown in `errorElement`; an abort (a newer request) is
+ * passed on. */
+export async function showing(root, errorElement, work) {
+  root.dataset.state = "loading";
+  try {
+    await work();
+    showError(errorElement, null);
+    root.dataset.state = "ready";
+  } catch (err) {
+    if (err.name === "AbortError") throw err;
+    if (!(err instanceof ApiError)) console.warn(err);
+    showError(errorElement, err);
+    root.dataset.state = "error";
+  }
+}

@@ -1,6 +1,6 @@
 // Same side: p(ψ), the chance a precessing coin lands the side it started (/api/bias, Diaconis,
 // Holmes & Montgomery 2007), and the ψ that explains 350,757 real flips (/api/data).
-import { ApiError, getJSON, latest, linkSlider, showError, unlessSuperseded } from "./api.js";
+import { ApiError, getJSON, latest, linkSlider, showError, showing, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { fmtG, thousands } from "./format.js";
@@ -111,8 +111,7 @@ export class SameSide {
   }
 
   async fetchPsi(signal) {
-    this.root.dataset.state = "loading";
-    try {
+    await showing(this.root, this.el("psi-error"), async () => {
       const r = await getJSON("api/bias", { psi: this.el("psi").value.trim() }, { signal });
       this.current = r;
       this.el("psi-p").textContent = r.p_same_side.toFixed(6);
@@ -120,15 +119,8 @@ export class SameSide {
       this.el("psi-text").textContent =
         `ψ = ${fmtG(r.psi_deg)}° (${r.psi_model}): P(same side) = ${r.p_same_side.toFixed(6)}  ` +
         `(closed form, ${r.source})`;
-      showError(this.el("psi-error"), null);
       this.draw();
-      this.root.dataset.state = "ready";
-    } catch (err) {
-      if (err.name === "AbortError") throw err;
-      if (!(err instanceof ApiError)) console.warn(err);
-      showError(this.el("psi-error"), err);
-      this.root.dataset.state = "error";
-    }
+    });
   }
 
   draw() {
