@@ -14,7 +14,7 @@ import typer
 from coinflight.cli.output import print_json
 from coinflight.cli.parsers import gravity, number, output_file, output_folder
 from coinflight.probability import registry
-from coinflight.queries.values import resolve_coin
+from coinflight.queries.values import COIN_NAMES, resolve_coin
 
 __all__ = ["number", "print_json", "resolve_coin"]  # also used from here (cli/surface.py)
 
@@ -57,8 +57,6 @@ def _preset(panel: str, help: str) -> Any:
 
 
 # --- the coin and the toss ---------------------------------------------------------------
-COIN_NAMES = "us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, eur-50c, gbp-1"
-"""The coins a --coin names (coinflight.model.coin's presets)."""
 
 
 def coin_option(metavar: str, help: str) -> Any:

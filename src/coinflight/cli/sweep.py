@@ -14,7 +14,6 @@ import typer
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
 from coinflight.cli.options import (
-    COIN_NAMES,
     METHOD_PANEL,
     OUTPUT_HELP,
     OUTPUT_PANEL,
@@ -32,6 +31,7 @@ from coinflight.cli.progress import progress_bar
 from coinflight.cli.sweep_groups import LANDINGS, TOSSES
 from coinflight.probability import registry
 from coinflight.queries.sweep import SweepLandings
+from coinflight.queries.values import COIN_NAMES
 
 Method = Annotated[
     str,

@@ -5,10 +5,15 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, NamedTuple
 
+from coinflight.model.coin import PRESETS
+
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.ensemble import TossDistribution
     from coinflight.model.toss import Toss
+
+COIN_NAMES = ", ".join(PRESETS)
+"""The coins a --coin (``coin=``) names: the presets of :mod:`coinflight.model.coin`."""
 
 
 def resolve_coin(

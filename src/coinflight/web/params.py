@@ -11,7 +11,7 @@ from typing import Annotated, Any
 
 from fastapi import Depends, Query
 
-from coinflight.queries.values import AirArgs, CoinArgs, TableArgs, TossArgs
+from coinflight.queries.values import COIN_NAMES, AirArgs, CoinArgs, TableArgs, TossArgs
 
 
 def flag(name: str) -> str:
@@ -66,13 +66,7 @@ def _q(description: str, **extra: Any) -> Any:
 
 
 # --- the coin --------------------------------------------------------------------------------
-CoinName = Annotated[
-    str | None,
-    _q(
-        "A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, "
-        "eur-50c, gbp-1 (default us-quarter); as --coin."
-    ),
-]
+CoinName = Annotated[str | None, _q(f"A real coin: {COIN_NAMES} (default us-quarter); as --coin.")]
 Radius = Annotated[float | None, _q("Custom coin radius, m (as --radius).")]
 Thickness = Annotated[float | None, _q("Custom coin thickness, m (as --thickness).")]
 Mass = Annotated[float | None, _q("Custom coin mass, kg (as --mass).")]
