@@ -7,6 +7,7 @@
     python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
     python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
+    python benchmarks/bench_bounce.py --rigid-rates N [--rounds R]  # the rigid ending's speed
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
@@ -504,6 +505,48 @@ def contact_phase(n: int) -> None:
         print(f"  e = {e}, μ = {mu}: {h - t:+.4f} ± {se:.4f} (s.e.)")
 
 
+RIGID = Surface("table", DROP, 0.5, 0.3, ending="rigid")
+"""The rigid ending's surface of :func:`rigid_rates` (default resistances, 1e-4 m)."""
+
+
+def rigid_rates(n: int, repeats: int = 3) -> None:
+    """Tosses a second carried to rest with the rigid ending against the rocking ending and
+    first contact, in one run (medians of ``repeats``, all threads), on the vigorous tosses
+    (:func:`tosses`) and on human ones (:data:`coinflight.studies.presets`' ``human``, drawn
+    with the same seed), US nickel, e = 0.5, μ = 0.3; with how the rigid landings ended."""
+    import numba
+
+    from coinflight.studies.presets import preset
+
+    omega, v0 = tosses(n)
+    wx, wy, wz, flight = preset("human", coin=COIN).sample(np.random.default_rng(2026), n)
+    human = (np.column_stack([wx, wy, wz]), 0.5 * G * flight)
+    sets = {"vigorous": (omega, v0), "human": human}
+    for w, s in sets.values():
+        land(COIN, w[:20], s[:20], 1.0, G, RIGID)  # compile (or load the cache)
+    load = os.getloadavg()
+    for name, (w, s) in sets.items():
+        cases = {
+            "rigid ending": lambda w=w, s=s: land(COIN, w, s, 1.0, G, RIGID),
+            "rocking ending": lambda w=w, s=s: land(COIN, w, s, 1.0, G, SURFACE),
+            "first contact": lambda w=w, s=s: land(COIN, w, s, 1.0, G, SURFACE, max_bounces=0),
+        }
+        rates = {case: median_rate(fn, n, repeats) for case, fn in cases.items()}
+        out = land(COIN, w, s, 1.0, G, RIGID)
+        statuses = {st.label: int(np.count_nonzero(out.status == st)) for st in Status}
+        print(
+            f"{n:,} {name} nickel tosses, e 0.5, μ 0.3, {numba.get_num_threads()} threads, "
+            f"median of {repeats}, load {load[0]:.1f}: "
+            + ", ".join(f"{case} {rate:,.0f}/s" for case, rate in rates.items())
+        )
+        print(
+            f"  rigid ending: {face_fractions(out.face)}; statuses "
+            + ", ".join(f"{k} {v}" for k, v in statuses.items() if v)
+            + f"; settle time median {np.median(out.settle_time):.2f} s, "
+            f"max {out.settle_time.max():.1f} s"
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true")
@@ -511,6 +554,7 @@ def main() -> None:
     parser.add_argument("--contact", type=int, default=0, metavar="N")
     parser.add_argument("--contact-rates", type=int, default=0, metavar="N")
     parser.add_argument("--upright", type=int, default=0, metavar="N")
+    parser.add_argument("--rigid-rates", type=int, default=0, metavar="N")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--upright-child", nargs=3, metavar=("SETTING", "N", "OUT"))
     parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
@@ -524,6 +568,9 @@ def main() -> None:
         return
     if args.contact_rates:
         contact_rates(args.contact_rates, args.rounds, args.old_src)
+        return
+    if args.rigid_rates:
+        rigid_rates(args.rigid_rates, args.rounds)
         return
     if args.contact:
         contact_phase(args.contact)

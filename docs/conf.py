@@ -1,8 +1,10 @@
 """Sphinx configuration of the coinflight documentation.
 
-The build is offline: no intersphinx, no remote images; MathJax is loaded by the reader's
-browser when a page is viewed. Every tutorial and gallery script is executed at build time
-(sphinx-gallery), so a figure on a page is the figure the code beside it makes today.
+The build is offline, and so are its pages: no intersphinx, no remote images; the equations
+are typeset in the reader's browser by the MathJax vendored in ``_static/mathjax``
+(``_ext/offline_math.py``), nothing loaded from another host. Every tutorial and gallery
+script is executed at build time (sphinx-gallery), so a figure on a page is the figure the code
+beside it makes today.
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ version = release = coinflight.__version__
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
-    "sphinx.ext.mathjax",
+    "offline_math",  # sphinx.ext.mathjax with the vendored MathJax
     "sphinx.ext.viewcode",
     "numpydoc",
     "myst_parser",
@@ -41,7 +43,13 @@ extensions = [
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "**.ipynb_checkpoints", "tutorials/README.rst", "gallery/README.rst"]
+exclude_patterns = [
+    "_build",
+    "_static",  # vendored files (MathJax and its VENDORED.md), copied as they are
+    "**.ipynb_checkpoints",
+    "tutorials/README.rst",
+    "gallery/README.rst",
+]
 templates_path: list[str] = []
 nitpicky = False
 
@@ -70,6 +78,9 @@ sphinx_gallery_conf = {
     "only_warn_on_example_error": False,
     "show_memory": False,
     "plot_gallery": "True",
+    # its computation-times pages load jQuery and DataTables from CDNs: not written, so that
+    # no page of the site asks another host for anything
+    "write_computation_times": False,
 }
 
 # -- HTML ----------------------------------------------------------------------------------

@@ -2,15 +2,42 @@
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 from typer.testing import CliRunner
 
+from coinflight import __version__
+from coinflight._provenance import command_line
 from coinflight.cli import app
 
 runner = CliRunner()
+
+
+def answer(result: Any, argv: list[Any]) -> Any:
+    """The JSON that ``coinflight ARGV`` printed (``result`` of the runner), to compare with
+    another command line's: each object's ``"command"`` checked to be ARGV's command line and
+    left out (the one field that differs), its ``coinflight_version`` checked and kept."""
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout)
+    for obj in payload if isinstance(payload, list) else [payload]:
+        assert obj.pop("command") == command_line([str(a) for a in argv])
+        assert obj["coinflight_version"] == __version__
+    return payload
+
+
+def api_answer(response: Any) -> Any:
+    """The web API's JSON, to compare with the command line's :func:`answer`: its
+    ``"command"`` checked to be the request as sent and left out, its version checked."""
+    assert response.status_code == 200, response.text
+    payload = response.json()
+    for obj in payload if isinstance(payload, list) else [payload]:
+        assert obj.pop("command") == "GET " + response.request.url.raw_path.decode()
+        assert obj["coinflight_version"] == __version__
+    return payload
 
 
 def one_line_error(*args: object) -> str:

@@ -14,7 +14,7 @@ import numpy as np
 
 from coinflight import Coin
 from coinflight.core import bounce, drag
-from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.impact import lowest_depth
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record
@@ -37,11 +37,14 @@ def coin_contact(
     corner_radius: float | None = None,
 ) -> Contact:
     """The contact record of ``coin`` on a table with these values (``ending`` the kernel's
-    code, :data:`~coinflight.core.contact.ROCKING_ENDING` or
-    :data:`~coinflight.core.contact.CONTACT_ENDING`; ``corner_radius``, when given, replaces
+    code, :data:`~coinflight.core.contact.ROCKING_ENDING`,
+    :data:`~coinflight.core.contact.CONTACT_ENDING` or
+    :data:`~coinflight.core.contact.RIGID_ENDING`; ``corner_radius``, when given, replaces
     the coin's), built by :func:`coinflight.outcomes.table.contact_record`."""
-    if ending not in (ROCKING_ENDING, CONTACT_ENDING):
-        raise ValueError(f"ending must be ROCKING_ENDING or CONTACT_ENDING, got {ending}")
+    if ending not in (ROCKING_ENDING, CONTACT_ENDING, RIGID_ENDING):
+        raise ValueError(
+            f"ending must be ROCKING_ENDING, CONTACT_ENDING or RIGID_ENDING, got {ending}"
+        )
     if corner_radius is not None:
         coin = coin.with_corner_radius(corner_radius)
     surface = Surface(

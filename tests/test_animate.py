@@ -40,7 +40,7 @@ def test_gif_frames_show_both_faces(tmp_path):
     path = save_animation(movie, tmp_path / "toss.gif")
     with Image.open(path) as im:
         assert im.n_frames == 12
-        assert min(im.size) >= 300
+        assert im.size == (960, 768)  # 8 × 6.4 inches at MOVIE_DPI 120: text readable
         seen = set()
         for i in range(im.n_frames):
             im.seek(i)

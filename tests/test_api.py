@@ -8,6 +8,7 @@ tests/test_cli_probability.py and the README.
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 import re
 import subprocess
@@ -231,6 +232,31 @@ def test_sweep_table_names_each_distribution():
     assert results.to_dicts()[0]["coin"] == "US quarter"
 
 
+def test_to_frame_has_each_parameter_as_numbers_beside_its_text():
+    """low, high, mean, sd of each parameter as numbers one can plot: a uniform's sd is
+    (high − low)/√12 (its variance (b − a)²/12), a normal's its sd over (−inf, inf), a single
+    value's 0; a launch speed not given is empty (NaN)."""
+    pytest.importorskip("pandas")
+    dists = [
+        TossDistribution(omega_x=Uniform(60, 90), omega_y=Normal(10, 2), flight_time=0.7),
+        TossDistribution(omega_x=70, launch_speed=Uniform(2.0, 2.8)),
+    ]
+    frame = estimate_many(dists, "exact").to_frame()
+    first, second = frame.iloc[0], frame.iloc[1]
+    assert first["omega_x"] == "60–90 rad/s"
+    assert (first["omega_x.low"], first["omega_x.high"], first["omega_x.mean"]) == (60, 90, 75)
+    assert first["omega_x.sd"] == pytest.approx(30 / math.sqrt(12), rel=1e-15)
+    assert (first["omega_y.low"], first["omega_y.high"]) == (-math.inf, math.inf)
+    assert (first["omega_y.mean"], first["omega_y.sd"]) == (10, 2)
+    assert (first["flight_time.low"], first["flight_time.high"]) == (0.7, 0.7)
+    assert (first["flight_time.mean"], first["flight_time.sd"]) == (0.7, 0)
+    assert math.isnan(first["launch_speed.mean"])
+    assert (second["launch_speed.low"], second["launch_speed.high"]) == (2.0, 2.8)
+    assert second["omega_x.sd"] == 0 and second["omega_x.mean"] == 70
+    for column in ("omega_x.low", "omega_x.high", "omega_x.mean", "omega_x.sd"):
+        assert frame[column].dtype.kind == "f", column  # numbers, not text
+
+
 # --- the README's Python runs ---------------------------------------------------------------
 
 
@@ -247,6 +273,32 @@ def test_readme_has_python_examples():
 def test_readme_python_block_runs(index, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # anything a snippet writes stays out of the repository
     exec(compile(_python_blocks()[index], f"README.md python block {index}", "exec"), {})
+
+
+def _guide_blocks() -> list[str]:
+    """The Python code blocks of docs/guide.rst (``.. code-block:: python``), dedented."""
+    import textwrap
+
+    text = (ROOT / "docs" / "guide.rst").read_text(encoding="utf-8")
+    blocks = re.findall(r"\.\. code-block:: python\n\n((?:(?:   .*)?\n)+)", text)
+    return [textwrap.dedent(b) for b in blocks]
+
+
+def test_readme_and_guide_python_results_are_what_the_lines_print(tmp_path, monkeypatch):
+    """A line ``EXPR  # 'TEXT'`` of a README or guide block says EXPR gives the string TEXT:
+    checked after the block runs (the claims are what the code prints, e.g. describe()'s
+    '± 5e-14', once '± 1e-06')."""
+    monkeypatch.chdir(tmp_path)  # anything a block writes stays out of the repository
+    claims = []
+    for block in [*_python_blocks(), *_guide_blocks()]:
+        namespace: dict = {}
+        exec(compile(block, "README.md or docs/guide.rst python block", "exec"), namespace)
+        for line in block.splitlines():
+            found = re.fullmatch(r"(?P<expr>\S.*?)\s{2,}# (?P<text>'.*')", line)
+            if found:
+                claims.append(found["expr"])
+                assert eval(found["expr"], namespace) == eval(found["text"]), line
+    assert any("face_name" in c for c in claims) and any("describe()" in c for c in claims)
 
 
 # --- a citable, installable package ---------------------------------------------------------

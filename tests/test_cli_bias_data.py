@@ -184,9 +184,11 @@ def test_data_json_on_the_shipped_dataset_by_default():
     # --dataset bartos2023 and --counts on the shipped file give the same numbers.
     named = json.loads(run("data", "--dataset", "bartos2023", "--json", "--seed", 5).stdout)
     from_file = json.loads(run("data", "--counts", BARTOS, "--json", "--seed", 5).stdout)
-    assert named == payload
+    # the same answer; each says its own command line (coinflight._provenance)
+    assert named == {**payload, "command": "coinflight data --dataset bartos2023 --json --seed 5"}
+    assert from_file["command"] == f"coinflight data --counts {BARTOS} --json --seed 5"
     assert from_file["dataset"] is None and from_file["source"] == str(BARTOS)
-    strip = ("dataset", "source", "title", "citation", "doi", "provenance")
+    strip = ("dataset", "source", "title", "citation", "doi", "provenance", "command")
     assert {k: x for k, x in from_file.items() if k not in strip} == {
         k: x for k, x in payload.items() if k not in strip
     }

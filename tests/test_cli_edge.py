@@ -8,6 +8,7 @@ import math
 import pytest
 from typer.testing import CliRunner
 
+from _cli import answer
 from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.studies.edge import edge_probability
@@ -26,7 +27,8 @@ def test_json_rows_are_the_closed_form_models():
     code, out, _ = _run("--ratios", "0.1,0.3,0.577,1", "--json")
     assert code == 0
     rows = json.loads(out)
-    assert [set(row) for row in rows] == [{"ratio", "p_edge_geometric", "p_edge_dynamic"}] * 4
+    keys = {"ratio", "p_edge_geometric", "p_edge_dynamic", "coinflight_version", "command"}
+    assert [set(row) for row in rows] == [keys] * 4
     assert [row["ratio"] for row in rows] == RATIOS
     for row, x in zip(rows, RATIOS, strict=True):
         geometric = float(edge_probability(x, "geometric"))
@@ -56,12 +58,12 @@ def test_simulated_rows_are_reproducible_and_follow_the_dynamic_model():
 
 
 def test_seed_is_drawn_and_reported_when_not_given():
-    code, out, _ = _run("--ratios", "0.577", "--simulate", "200", "--json")
-    assert code == 0
-    seed = json.loads(out)[0]["simulated"]["seed"]
+    drawn = ["edge", "--ratios", "0.577", "--simulate", "200", "--json"]
+    first = answer(CliRunner().invoke(app, drawn), drawn)
+    seed = first[0]["simulated"]["seed"]
     assert isinstance(seed, int)
-    again = _run("--ratios", "0.577", "--simulate", "200", "--seed", str(seed), "--json")[1]
-    assert again == out
+    given = [*drawn, "--seed", str(seed)]
+    assert answer(CliRunner().invoke(app, given), given) == first
 
 
 def test_setting_options_reach_the_simulation():
@@ -257,9 +259,9 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
         (
             ["--simulate", "10", "--rolling-resistance", "1e-4"],
-            "rolling resistance 0.0001 m: only the 3-D contact ending (ending='contact', "
-            "--ending contact) has rolling and pivoting resistance, which the rocking ending "
-            "would ignore",
+            "rolling resistance 0.0001 m: only the 3-D endings (ending='contact' or 'rigid', "
+            "--ending contact or rigid) have rolling and pivoting resistance, which the rocking "
+            "ending would ignore",
         ),
         (
             [

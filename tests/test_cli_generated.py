@@ -15,6 +15,7 @@ it records failures instead of stopping at the first (a survey, not a test).
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import os
@@ -69,6 +70,13 @@ HOSTILE_RANGES = [
 HOSTILE_PATHS = [
     "", ".", "sub/", "/proc/coinflight-test", "/proc/version", "no/such/dir/x.png", "x.unknown",
 ]  # fmt: skip
+# A folder that exists (made in the test's own folder): an output file named by it once became
+# FOLDER.png beside it.
+EXISTING_FOLDER = "an-existing-folder"
+# Counts beyond any machine: a thread pool of them was once accepted.
+ABSURD_COUNTS = {"99999999999999999999999", "9223372036854775808", "9223372036854775807"}
+# Options whose value is an output file (never a folder; convergence's --out is a prefix).
+FILE_OPTIONS = {"--out", "--plot"}
 
 
 def _number(low: float, high: float) -> st.SearchStrategy[str]:
@@ -311,7 +319,11 @@ def _command_line(draw, command: str, out: Path) -> list[str]:
     if command == "sweep":
         if not {"--omega-x", "--omega-x-mean", "--omega-x-sd"} & set(names):
             args += ["--omega-x", "60:90"]
-        path = draw(st.one_of(st.just(str(out / "sweep.csv")), st.sampled_from(HOSTILE_PATHS)))
+        path = draw(
+            st.one_of(
+                st.just(str(out / "sweep.csv")), st.sampled_from([*HOSTILE_PATHS, EXISTING_FOLDER])
+            )
+        )
         args += ["--out", path]
     if (
         command in FIGURE_COMMANDS
@@ -319,7 +331,8 @@ def _command_line(draw, command: str, out: Path) -> list[str]:
         or (command == "data" and draw(st.booleans()))
     ):
         flag = "--plot" if command == "data" else "--out"
-        path = draw(st.one_of(st.just(str(out / "figure.png")), st.sampled_from(HOSTILE_PATHS)))
+        paths = [*HOSTILE_PATHS, EXISTING_FOLDER]
+        path = draw(st.one_of(st.just(str(out / "figure.png")), st.sampled_from(paths)))
         args += [flag, path]
     return args
 
@@ -351,6 +364,19 @@ def _judge(args: list[str], result) -> None:
         raise AssertionError(f"{context}\nraised {result.exception!r}") from result.exception
     assert result.exit_code in (0, 2), context
     assert "Traceback" not in stderr and "Traceback" not in result.stdout, context
+    # pydantic's words (typer reads options through it) never reach the user.
+    assert "Input should be" not in stderr, context
+    # Nothing the user typed is silently dropped or altered: an empty value is not "the option
+    # left out", an absurd thread count is not a thread pool, an existing folder is not
+    # FOLDER.png beside it.
+    values = dict(itertools.pairwise(args))
+    if any(not a.strip() for a in args):
+        assert result.exit_code == 2, f"{context}\nan empty value was accepted"
+    if values.get("--threads") in ABSURD_COUNTS:
+        assert result.exit_code == 2, f"{context}\nan absurd --threads was accepted"
+    if args[:1] != ["convergence"] and any(values.get(f) == EXISTING_FOLDER for f in FILE_OPTIONS):
+        assert result.exit_code == 2, f"{context}\nan existing folder taken as an output file"
+        assert not Path(EXISTING_FOLDER + ".png").exists(), context
     if result.exit_code == 2:
         lines = [line for line in stderr.splitlines() if line.strip()]
         assert len(lines) == 1 and lines[0].startswith("coinflight: error: "), context
@@ -404,6 +430,7 @@ def test_a_line_over_the_work_budget_is_stopped_before_its_work(tmp_path):
 def test_generated_command_lines_end_as_promised(command, tmp_path, monkeypatch):
     out = tmp_path
     monkeypatch.chdir(tmp_path)  # nothing a command writes by default lands in the repository
+    (tmp_path / EXISTING_FOLDER).mkdir()
 
     @settings(
         max_examples=EXAMPLES,

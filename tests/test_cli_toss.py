@@ -9,6 +9,7 @@ import sys
 import pytest
 from typer.testing import CliRunner
 
+from _cli import answer
 from coinflight import __version__
 from coinflight.cli import app
 
@@ -209,10 +210,9 @@ def test_console_script_runs_end_to_end():
 def test_coin_name_in_any_case_on_the_command_line():
     """``--coin US-Cent`` is the cent (presets by casefold), in ``toss`` as in every command
     that takes a coin (they share its one lookup, ``Coin.preset``)."""
-    upper = run("toss", "-T", "0.7", "--coin", "US-Cent", "--json")
-    assert upper.exit_code == 0, upper.output
-    assert json.loads(upper.stdout) == json.loads(run("toss", "-T", "0.7", "--coin", "us-cent",
-                                                      "--json").stdout)  # fmt: skip
+    upper = ["toss", "-T", "0.7", "--coin", "US-Cent", "--json"]
+    lower = ["toss", "-T", "0.7", "--coin", "us-cent", "--json"]
+    assert answer(run(*upper), upper) == answer(run(*lower), lower)
     bad = run("toss", "-T", "0.7", "--coin", "US-Penny")
     assert bad.exit_code == 2
     assert bad.stderr.strip() == (

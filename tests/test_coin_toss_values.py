@@ -146,3 +146,71 @@ def test_edge_on_counts_as_the_other_face_whatever_the_start():
     assert face_from_alignment(alignment, 1.0).tolist() == [HEADS, TAILS, TAILS]
     assert face_from_alignment(alignment, -1.0).tolist() == [TAILS, HEADS, HEADS]
     assert same_side(alignment).tolist() == [True, False, False]
+
+
+@pytest.mark.parametrize(
+    "omega, flight_time, words",
+    [
+        # issue: an empty omega was accepted (a toss of no tosses)
+        (np.empty((0, 3)), 0.7, r"omega \(shape \(0, 3\)\) and flight time .* hold no toss"),
+        ((80.0, 0.0, 0.0), np.empty(0), "hold no toss"),
+        # issue: 4 spins and flight times of shape (4, 1) were broadcast to 4 × 4 tosses
+        (
+            np.full((4, 3), 50.0),
+            np.full((4, 1), 0.7),
+            r"omega \(shape \(4, 3\), 4 tosses\) and flight time \(shape \(4, 1\)\) have "
+            r"different numbers of axes, which would broadcast to 4 × 4 tosses; give one "
+            r"flight time per spin \(shape \(4,\)\)",
+        ),
+        (np.full((2, 4, 3), 50.0), np.full(4, 0.7), "different numbers of axes"),
+    ],
+)
+def test_toss_refuses_no_tosses_and_implicit_outer_products(omega, flight_time, words):
+    with pytest.raises(ValueError, match=words):
+        Toss(omega=omega, flight_time=flight_time)
+
+
+def test_toss_keeps_the_broadcasts_a_user_spells_out():
+    # One spin for many times, one time for many spins, and an explicit grid (same axes).
+    assert Toss(omega=(50.0, 0.0, 0.0), flight_time=np.full(5, 0.7)).shape == (5,)
+    assert Toss(omega=np.full((4, 3), 50.0), flight_time=0.7).shape == (4,)
+    assert Toss(omega=np.full((4, 1, 3), 50.0), flight_time=np.full((1, 5), 0.7)).shape == (4, 5)
+
+
+def test_flight_at_a_time_before_the_launch_is_refused():
+    # issue: Flight.at(-5.0) answered a state 5 s before the toss
+    flight = Flight(Coin.preset("us-quarter"), Toss(omega=(80.0, 0.0, 0.0), flight_time=0.7))
+    with pytest.raises(ValueError, match=r"t must be non-negative and finite \(in s\), got -5.0"):
+        flight.at(-5.0)
+    with pytest.raises(ValueError, match="t must be non-negative"):
+        flight.at([0.1, -1e-300])
+    assert flight.at(0.0).height == pytest.approx(0.0)
+
+
+@pytest.mark.parametrize(
+    "t, words",
+    [
+        (np.full((4, 1), 0.3), r"different numbers of axes, which would broadcast to 4 × 4"),
+        ([0.1, 0.2], r"the toss batch \(4 tosses\) and t \(shape \(2,\)\) do not broadcast"),
+        (1e308, r"t must be at most 10000 s \(the longest flight time\), got 1e\+308 s"),
+    ],
+)
+def test_flight_at_refuses_outer_products_mismatches_and_absurd_times(t, words):
+    # Found by the hostile run: Flight.at made 4 × 4 states of 4 tosses and 4 × 1 times,
+    # NumPy's "shape mismatch" for 2 times, a zero-norm quaternion error for t = 1e308.
+    flight = Flight(Coin.preset("us-quarter"), Toss(omega=np.full((4, 3), 50.0), flight_time=0.7))
+    with pytest.raises(ValueError, match=words):
+        flight.at(t)
+    assert flight.at(np.full(4, 0.3)).normal.shape == (4, 3)
+
+
+def test_messages_show_arrays_on_one_line():
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.probability import estimate
+
+    with pytest.raises(TypeError) as info:
+        TossDistribution(np.ones((4, 1)), 0, 0, 0.7)
+    assert "\n" not in str(info.value) and "[[1.] [1.] [1.] [1.]]" in str(info.value)
+    with pytest.raises(TypeError) as info:
+        estimate(TossDistribution(60.0, 0, 0, 0.7), "monte-carlo", n=np.ones((2, 3)), seed=1)
+    assert str(info.value) == "n must be an integer, got array of float64 [[1. 1. 1.] [1. 1. 1.]]"

@@ -16,7 +16,7 @@ import pytest
 from fastapi.testclient import TestClient
 from typer.testing import CliRunner
 
-from _cli import one_line_error
+from _cli import answer, api_answer, one_line_error
 from coinflight import Coin, Toss
 from coinflight import _validation as v
 from coinflight._validation import DEAD_CONTACT
@@ -53,15 +53,14 @@ TABLE = ["--surface", "table", "--drop-height", "0.8"]
 CONTACT = [*TABLE, "--ending", "contact"]
 QUARTER_HALF = 0.5 * Coin.preset("us-quarter").thickness  # 0.000875 m
 ROCKING_ONLY = (
-    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
-    "resistance, which the rocking ending would ignore"
+    "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
+    "and pivoting resistance, which the rocking ending would ignore"
 )  # the one wording of a resistance given with the rocking ending, library and command line
 
 
 def _json(*args: str) -> dict:
-    result = runner.invoke(app, [*args, "--json"])
-    assert result.exit_code == 0, result.output
-    return json.loads(result.stdout)
+    """The object of ``coinflight ARGS --json`` (its command line checked and left out)."""
+    return answer(runner.invoke(app, [*args, "--json"]), [*args, "--json"])
 
 
 # --- the coin's corner radius, validated ----------------------------------------------------
@@ -210,8 +209,8 @@ def test_simulate_edge_refuses_a_resistance_with_the_rocking_ending_in_the_surfa
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--ending", "foo"], "--ending must be rocking or contact (how a table landing ends "
-         "once its bounces die out), got 'foo'"),
+        (["--ending", "foo"], "--ending must be rocking, contact or rigid (how a table landing "
+         "ends once its bounces die out), got 'foo'"),
         (["--ending", "contact", "--rolling-resistance", "-1"],
          "--rolling-resistance: rolling resistance must be between 0 and 0.01 (in m), got -1.0"),
         (["--ending", "contact", "--pivoting-resistance", "0.02"],
@@ -725,7 +724,8 @@ def test_sweep_over_endings_resistances_and_corner_radii(tmp_path):
         (["--surface", "table", "--pivoting-resistance", "1e-4,2e-4"],
          f"pivoting resistance 0.0001 m: {ROCKING_ONLY}"),
         (["--surface", "hand", "--ending", "contact"], f"--ending {TABLE_ONLY}"),
-        (["--surface", "table", "--ending", "contact,foo"], "--ending must be rocking or contact"),
+        (["--surface", "table", "--ending", "contact,foo"],
+         "--ending must be rocking, contact or rigid"),
         (["--surface", "table", "--corner-radius", "0.001"], "--corner-radius: US quarter: corner "
          "radius must be between 0 and 0.000875"),
         (["--surface", "table", "--ending", "contact", "--method", "qmc"],
@@ -758,17 +758,17 @@ def test_the_api_gives_the_command_lines_object(client):
         *TOSS, *CONTACT, "--rolling-resistance", "2e-4", "--pivoting-resistance", "5e-5",
         "--corner-radius", "3e-4", "--coin", "us-nickel",
     )  # fmt: skip
-    assert client.get(url).json() == expected
+    assert api_answer(client.get(url)) == expected
     url = (
         "/api/probability?omega_x=150:300&flight_time=0.4:0.6&surface=table&drop_height=0.8"
         "&ending=contact&corner_radius=2e-4&restitution=0.3:0.6&method=monte-carlo&n=30&seed=4"
     )
-    got = client.get(url).json()
+    got = api_answer(client.get(url))
     expected = _json(*PROBABILITY, "--corner-radius", "2e-4", "--restitution", "0.3:0.6",
                      "--method", "monte-carlo", "--n", "30", "--seed", "4", "-q")  # fmt: skip
-    for answer in (got, expected):
-        answer.pop("elapsed")
-        answer.pop("inputs")  # the command line repeats its typed options; the API its own
+    for obj in (got, expected):
+        obj.pop("elapsed")
+        obj.pop("inputs")  # the command line repeats its typed options; the API its own
     assert got == expected
 
 

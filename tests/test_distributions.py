@@ -184,3 +184,51 @@ def test_unit_cube_values_take_each_ranged_row_and_repeat_a_fixed_mean():
     # Φ⁻¹(0.1), Φ⁻¹(0.5), Φ⁻¹(0.9) (row 0: u of "c"); ±1.2815515655446004 (scipy.special.ndtri)
     np.testing.assert_allclose(got["c"], [-1.2815515655446004, 0.0, 1.2815515655446004],
                                rtol=1e-12, atol=1e-15)  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "make, error, words",
+    [
+        # issue: Fixed([1, 2]) raised NumPy's "only length-1 arrays can be converted"
+        (lambda: Fixed([1, 2]), TypeError, "Fixed value must be a single number, got an array"),
+        (lambda: Fixed(np.array([3.0])), TypeError, "Fixed value must be a single number"),
+        (lambda: Uniform([0, 1], 2), TypeError, "Uniform low must be a single number"),
+        (lambda: Uniform(0, [1, 2]), TypeError, "Uniform high must be a single number"),
+        (lambda: Normal([0.0], 1.0), TypeError, "Normal mean must be a single number"),
+        (lambda: Normal(0.0, [1, 2]), TypeError, "Normal standard deviation must be a single"),
+        # issue: Uniform(-1e308, 1e308).ppf(0.5) = inf; its width overflows
+        (lambda: Uniform(-1e308, 1e308), ValueError, r"range -1e\+308:1e\+308 is too wide"),
+        (lambda: Uniform(-1.7e308, 1e308), ValueError, "is too wide"),
+        (lambda: Normal(0.0, 1e308), ValueError, r"normal\(0, sd 1e\+308\) is too wide"),
+        (lambda: Normal(1.7e308, 1e307), ValueError, "is too wide"),
+    ],
+)
+def test_a_distribution_refuses_arrays_and_overflowing_widths_in_its_own_words(make, error, words):
+    with pytest.raises(error, match=words):
+        make()
+
+
+@given(
+    lo=st.floats(-1e308, 1e308),
+    width=st.floats(1e-300, 1.7e308),
+    u=st.floats(0.0, 1.0),
+)
+def test_every_accepted_uniform_has_finite_quantiles(lo, width, u):
+    hi = lo + width
+    try:
+        d = Uniform(lo, hi)
+    except ValueError as e:  # an empty or too-wide range, refused in words
+        assert "empty" in str(e) or "too wide" in str(e) or "finite" in str(e)
+        return
+    assert math.isfinite(float(d.ppf(u)))
+    assert d.low <= float(d.ppf(u)) <= d.high
+
+
+@given(mean=st.floats(-1e308, 1e308), sd=st.floats(1e-300, 1e308), u=st.floats(1e-16, 1 - 1e-16))
+def test_every_accepted_normal_has_finite_quantiles(mean, sd, u):
+    try:
+        d = Normal(mean, sd)
+    except ValueError as e:
+        assert "too wide" in str(e)
+        return
+    assert math.isfinite(float(d.ppf(u)))

@@ -13,6 +13,7 @@ from coinflight.studies.edge import edge_probability
 from coinflight.studies.edge_experiments import (
     HAND_DIAMETER,
     HAND_DROP,
+    MIN_TOSSES_TO_JUDGE,
     RESISTANCE,
     Band,
     Cell,
@@ -112,6 +113,30 @@ def test_verdict_and_gap():
     assert band.gap(BinomialEstimate(100, 1000)) == pytest.approx(-0.1)
     # the measured interval overlapping the band's end (+2 s.e.) is inside, not above
     assert band.verdict(BinomialEstimate(33, 100)) == "inside"
+
+
+def test_a_band_of_a_few_tosses_per_cell_does_not_judge_a_point_inside_it():
+    """--quick's contact band, four tosses a cell: 0.000 to 0.500 spans a measured 0.41 by its
+    noise alone; it says so instead of "inside". A point it lies wholly below is still above."""
+    few = Band(
+        "contact",
+        tuple(Cell({"restitution": 0.5}, BinomialEstimate(k, 4)) for k in (0, 2, 1)),
+    )
+    assert (few.low.p, few.high.p) == (0.0, 0.5)
+    assert few.verdict(BinomialEstimate(410, 1000)) == "too few tosses to judge"
+    lower = Band("contact", (Cell({"restitution": 0.5}, BinomialEstimate(1, 4)),))
+    assert lower.verdict(BinomialEstimate(1000, 1000)) == "above"  # > 0.25 + 2 × 0.217
+    enough = Band(  # the same fractions at MIN_TOSSES_TO_JUDGE tosses a cell judge it
+        "contact",
+        tuple(
+            Cell(
+                {"restitution": 0.5},
+                BinomialEstimate(k * MIN_TOSSES_TO_JUDGE // 4, MIN_TOSSES_TO_JUDGE),
+            )
+            for k in (0, 2, 1)
+        ),
+    )
+    assert enough.verdict(BinomialEstimate(410, 1000)) == "inside"
 
 
 def test_box_cells():

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+import coinflight
 from _images import assert_nontrivial
 from coinflight.cli import app
 from coinflight.core.outcome import Status
@@ -56,6 +57,9 @@ def test_every_file_is_written_and_the_figures_are_drawn(written):
     assert {p.name for p in r.files} == names
     for name in figures:
         assert_nontrivial(out / name)
+    numbers = json.loads((out / "numbers.json").read_text())
+    assert numbers["coinflight_version"] == coinflight.__version__  # where it came from
+    assert "command" not in numbers  # called from Python, not from a command line
     md = (out / "report.md").read_text()
     for name in figures:
         assert f"]({name})" in md  # every figure is shown in the report
@@ -76,7 +80,7 @@ def test_thick_cylinders_section_is_the_studys(written):
     md = (out / "report.md").read_text()
     assert "## Thick cylinders against experiments" in md
     for row in again.table():
-        assert row[-2] in {"inside", "above", "below"} and row[0] in md
+        assert row[-2] in {"inside", "above", "below", "too few tosses to judge"} and row[0] in md
 
 
 def test_the_thick_cylinders_seed_printed_reproduces_the_numbers():

@@ -141,7 +141,11 @@ def test_a_numba_variable_numba_cannot_use_is_one_line_naming_it(name, value):
 def test_a_good_numba_variable_is_used():
     run = _run({"NUMBA_NUM_THREADS": "1"}, *NUMBA_COMMAND, "--json")
     assert run.returncode == 0, run.stderr
-    assert run.stderr == ""
+    # nothing on stderr but, on a cold numba cache, the one-time compile notice
+    said = [
+        line for line in run.stderr.splitlines() if not line.startswith("coinflight: compiling ")
+    ]
+    assert said == [], run.stderr
 
 
 def test_serve_refuses_a_bad_numba_variable_before_it_starts():

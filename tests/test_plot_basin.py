@@ -283,3 +283,14 @@ def test_the_analytic_boundaries_are_drawn_on_the_catch_in_the_hand_only():
     assert not draws_boundaries(table, False)
     with pytest.raises(ValueError, match="belong to the catch in the hand"):
         basin_query(QUARTER, resolution="2", table=table, boundaries=True)
+
+
+def test_a_precession_angle_next_to_0_draws_its_map(tmp_path):
+    """ψ = 2.3e-161° (cot²ψ beyond the largest float; found by tests/test_cli_generated.py):
+    the map of a coin spinning about its normal, all heads, instead of an OverflowError."""
+    out = tmp_path / "basin.png"
+    argv = ["plot", "basin", "--psi", "2.33302e-161", "--out", str(out)]
+    result = CliRunner().invoke(app, argv)
+    assert result.exit_code == 0, result.output
+    assert "P(heads) on the 500×500 grid = 1.000000" in result.stdout
+    assert_nontrivial(out)

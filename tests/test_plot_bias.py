@@ -35,6 +35,14 @@ def test_zoom_on_the_measured_band_and_both_solutions():
     assert "measured interval [0.5061, 0.5094]" in labels and "measured 0.5077" in labels
     # The zoomed panel is the taller one: most of the figure shows P within 0.49-0.53.
     assert zoom.get_position().height > 2 * full.get_position().height
+    # both panels say what their x axis is; the legend lies below them, over no curve
+    assert full.get_xlabel() and zoom.get_xlabel()
+    assert zoom.get_legend() is None and len(fig.legends) == 1
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig).draw()
+    legend = fig.legends[0].get_window_extent()
+    assert legend.y1 < zoom.get_window_extent().y0
 
 
 def test_zoom_widens_only_to_show_what_was_asked():

@@ -64,3 +64,51 @@ def test_fitted_slope_and_reference_without_exact():
     assert ref == EXACT + 1e-2 * 100 / 10_000 and name == "the largest grid estimate"
     ax = plot_convergence(no_exact).axes[0]
     assert ax.get_ylabel() == "|P(heads) − the largest grid estimate|"
+
+
+def test_the_papers_form_plots_the_estimates_with_the_exact_line():
+    """Stefan & Cheche's Figs 2a-3b: P(heads) itself against n for both methods (method B
+    with its 95 % intervals), the exact value as a black line, method B's limit dashed."""
+    from matplotlib.colors import to_hex
+
+    from coinflight.plotting.convergence import plot_estimates
+
+    result = _series()
+    ax = plot_estimates(result).axes[0]
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "linear"
+    assert ax.get_ylabel() == "P(heads)"
+    lines = {ln.get_label(): ln for ln in ax.get_lines()}
+    exact = lines["exact P(heads) = 0.500000"]
+    assert list(exact.get_ydata()) == [EXACT, EXACT] and to_hex(exact.get_color()) == "#000000"
+    assert list(lines["method B's limit: the 100-cell grid, 0.501000"].get_ydata()) == [0.501] * 2
+    grid, mc = ax.containers  # one errorbar container per method, in order
+    np.testing.assert_allclose(
+        grid.lines[0].get_ydata(), [p.p_heads for p in result.series("grid")]
+    )
+    assert grid.has_yerr is False  # the grid has no standard error
+    np.testing.assert_allclose(mc.lines[0].get_ydata(), [0.53, 0.49, 0.503])
+    (bars,) = mc.lines[2]  # method B's error bars span its 95 % intervals
+    low, high = bars.get_segments()[0][:, 1]
+    assert (low, high) == pytest.approx((0.53 - 1.96 * 0.05, 0.53 + 1.96 * 0.05))
+
+
+def test_the_default_title_names_the_ranges_and_the_coin():
+    """The standalone figure (``coinflight convergence``) says which tosses it is about."""
+    from coinflight import Coin, TossDistribution, Uniform
+    from coinflight.plotting.convergence import default_title, plot_estimates
+
+    dist = TossDistribution(
+        omega_x=Uniform(60, 90),
+        omega_y=10,
+        flight_time=Uniform(0.6, 0.9),
+        coin=Coin.preset("eur-1"),
+    )
+    result = Convergence(
+        points=_series().points, exact=EXACT, exact_how="closed form", seed=1, grid_cells=100,
+        description=dist.describe(),
+    )  # fmt: skip
+    title = default_title(result, "Error of P(heads) as the sample grows")
+    assert "ωx0 60–90 rad/s, ωy0 10 rad/s, ωz0 0 rad/s, T 0.6–0.9 s" in title
+    assert "€1" in title and "started heads up" in title
+    assert plot_convergence(result).axes[0].get_title() == title
+    assert "ωy0 10 rad/s" in plot_estimates(result).axes[0].get_title()

@@ -133,6 +133,16 @@ def test_four_panels_keep_their_labels_clear_and_the_sphere_names_each_catch():
             assert fig.bbox.contains(*box(label).min) and fig.bbox.contains(*box(label).max)
     names = [t.get_text() for t in sphere.texts]
     assert [f"T = {t:g} s" for t in times] == [n for n in names if n.startswith("T = ")]
+    # the figure's title clear of the top panels' titles; one viewpoint for every panel
+    for ax in coins[:2]:
+        assert not box(fig._suptitle).overlaps(box(ax.title))
+    assert len({(ax.elev, ax.azim) for ax in coins}) == 1
+    # from it every face up is seen from its own side (no coin edge-on or from below)
+    normals = np.asarray(
+        Flight(QUARTER, Toss(omega=(90.0, 30.0, 0.0), flight_time=times)).catch.normal
+    )
+    up = np.where(normals[:, 2:3] >= 0, normals, -normals)
+    assert (up @ _view_direction(coins[0])).min() > 0.3
 
 
 def _view_direction(ax) -> np.ndarray:

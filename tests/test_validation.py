@@ -269,9 +269,18 @@ def test_estimate_names_the_bad_argument(kwargs, message):
         estimate(**kwargs)
 
 
-def test_estimate_threads_must_be_at_least_one():
-    with pytest.raises(ValueError, match=r"^threads must be at least 1, got 0$"):
+def test_estimate_threads_must_be_a_sensible_count():
+    from coinflight.probability._runner import MAX_THREADS
+
+    with pytest.raises(ValueError, match=r"^threads must be between 1 and 1024, got 0$"):
         estimate(FIG_2A, "grid", 8, threads=0)
+    # issue: --threads 99999999999999999999 was accepted (a pool that size)
+    with pytest.raises(ValueError, match=r"^threads must be between 1 and 1024, got 10{20}$"):
+        estimate(FIG_2A, "grid", 8, threads=10**20)
+    assert MAX_THREADS == 1024
+    assert estimate(FIG_2A, "grid", 8, threads=MAX_THREADS).p_heads == pytest.approx(
+        estimate(FIG_2A, "grid", 8, threads=1).p_heads
+    )
 
 
 def test_the_estimators_check_the_runner_options_themselves():

@@ -19,6 +19,8 @@ from scipy.spatial.transform import Rotation
 from typer.testing import CliRunner
 
 from _web_server import WAIT, serving
+from coinflight import __version__
+from coinflight._provenance import command_line
 from coinflight.cli import app as cli_app
 from coinflight.model.surface import MAX_FRICTION
 from coinflight.report.paper import PROBABILITY_CASES, ROTATION_CASES
@@ -33,10 +35,28 @@ def client():
         yield c
 
 
+def asked(payload: dict | list, command: str) -> dict | list:
+    """The answer as both front ends give it: each object's ``command`` (the one field that
+    differs by front end: the command line, or the request) checked to be ``command`` and
+    left out; everything else, ``coinflight_version`` included, kept for the comparison."""
+    objects = payload if isinstance(payload, list) else [payload]
+    for obj in objects:
+        assert obj.pop("command") == command
+        assert obj["coinflight_version"] == __version__
+    return payload
+
+
 def cli_json(*args: str) -> dict:
+    """``coinflight ARGS --json``'s object (:func:`asked`: its command line checked)."""
     result = cli.invoke(cli_app, [*args, "--json"])
     assert result.exit_code == 0, result.output
-    return json.loads(result.stdout)
+    return asked(json.loads(result.stdout), command_line([*args, "--json"]))
+
+
+def api_json(response) -> dict:
+    """The API's object (:func:`asked`: its request, as sent, checked)."""
+    assert response.status_code == 200, response.text
+    return asked(response.json(), "GET " + response.request.url.raw_path.decode())
 
 
 def cli_error(*args: str) -> str:
@@ -93,7 +113,7 @@ def test_toss_json_equals_the_command_line_for_the_papers_six_tosses(client, cas
     expected = cli_json(
         "toss", "--omega", str(wx), str(wy), "0", "--flight-time", str(t), "--coin", "us-quarter"
     )
-    assert response.json() == expected
+    assert api_json(response) == expected
     assert round(response.json()["rotations"], case.decimals) == case.paper_rotations
 
 
@@ -103,7 +123,7 @@ def test_toss_on_a_table_equals_the_command_line(client):
         "toss", "--omega", "80", "0", "0", "--flight-time", "0.7", "--surface", "table",
         "--drop-height", "0.3", "--bounces", "1",
     )  # fmt: skip
-    assert client.get(url).json() == expected
+    assert api_json(client.get(url)) == expected
 
 
 @pytest.mark.parametrize(
@@ -205,7 +225,7 @@ def test_probability_json_equals_the_command_line_for_the_papers_four_boxes(
     if extra:
         cli_args += ["--n", "20000", "--seed", "7"]
     expected = cli_json(*cli_args)
-    got = response.json()
+    got = api_json(response)
     assert _without_timing(got) == _without_timing(expected)
     assert got["elapsed"] > 0
     assert got["p_heads"] == pytest.approx(0.5, abs=0.02)  # "tends to the unbiased value of 50%"
@@ -217,7 +237,7 @@ def test_probability_preset_with_an_override_equals_the_command_line(client):
         "probability", "--preset", "human", "--flight-time", "0.4:0.6", "--method",
         "monte-carlo", "--n", "5000", "--seed", "11", "-q",
     )  # fmt: skip
-    got = client.get(f"/api/probability?{query}").json()
+    got = api_json(client.get(f"/api/probability?{query}"))
     assert _without_timing(got) == _without_timing(expected)
     assert got["inputs"]["--flight-time"] == "0.4:0.6" and got["inputs"]["--preset"] == "human"
 
@@ -360,7 +380,7 @@ def test_basin_boundaries_on_a_table_are_refused_before_the_map(client, in_proce
 def test_bias_json_equals_the_command_line(client, args):
     pairs = zip(args[::2], args[1::2], strict=True)
     query = "&".join(f"{k.lstrip('-').replace('-', '_')}={v}" for k, v in pairs)
-    assert client.get(f"/api/bias?{query}").json() == cli_json("bias", *args)
+    assert api_json(client.get(f"/api/bias?{query}")) == cli_json("bias", *args)
 
 
 def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each(client):
@@ -368,7 +388,7 @@ def test_bias_at_several_psi_in_one_request_is_the_command_lines_answer_for_each
     object of ``coinflight bias --psi ψ --json``; documented in the schema; refused in one line
     with another way of giving ψ, beyond its bound, or with a value out of range."""
     psis = ["90", "0", "45.3", "134.9", "180"]
-    got = client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}).json()
+    got = api_json(client.get("/api/bias", params={"psis": ",".join(psis), "coin": "eur-1"}))
     assert got == [cli_json("bias", "--psi", psi, "--coin", "eur-1") for psi in psis]
     assert got[1]["p_same_side"] == 1.0 and got[0]["p_same_side"] == 0.5  # DHM 2007, eq. (2)
     documented = client.get("/openapi.json").json()["paths"]["/api/bias"]["get"]["parameters"]
@@ -396,7 +416,7 @@ def test_bias_monte_carlo_beyond_the_servers_budget_is_refused(client):
 
 def test_data_json_equals_the_command_line_and_reads_only_the_package(client):
     """Bartoš et al.'s 350,757 flips and the ψ that explains them: the CLI's object."""
-    got = client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3").json()
+    got = api_json(client.get("/api/data?interval=wilson&psi_sd=5&seed=7&repeats=3"))
     assert got == cli_json(
         "data", "--interval", "wilson", "--psi-sd", "5", "--seed", "7", "--repeats", "3"
     )
@@ -669,19 +689,20 @@ def test_plausibility_warnings_are_in_the_answer_as_in_the_command_lines_json(
     """The library's warnings reach the API's caller (not only the worker's stderr): the
     command line prints each once on stderr and carries it in ``--json``'s ``"warnings"``;
     the API's answer is that same object."""
-    result = cli.invoke(cli_app, [command, *args, *MILLIMETRES, "--json"])
+    argv = [command, *args, *MILLIMETRES, "--json"]
+    result = cli.invoke(cli_app, argv)
     assert result.exit_code == 0, result.output
-    expected = json.loads(result.stdout)
+    expected = asked(json.loads(result.stdout), command_line(argv))
     (line,) = result.stderr.splitlines()
     prefix = "coinflight: warning: "
     assert line.startswith(prefix + "radius 12.13 m is not a coin's size (1 mm to 10 cm)")
     assert expected["warnings"] == [line[len(prefix) :]]
     coin = "radius=12.13&thickness=0.00175&mass=0.00567"
-    got = client.get(f"/api/{command}?{query}&{coin}").json()
+    got = api_json(client.get(f"/api/{command}?{query}&{coin}"))
     got.pop("elapsed", None), expected.pop("elapsed", None)
     assert got == expected
     if command == "bias":
-        assert client.get(f"/api/bias?psis=80&{coin}").json() == [expected]
+        assert api_json(client.get(f"/api/bias?psis=80&{coin}")) == [expected]
 
 
 def test_an_answer_without_warnings_has_no_new_key(client):
@@ -708,8 +729,7 @@ def test_coinflight_serve_answers_over_http_on_loopback():
         assert server.url.startswith("http://127.0.0.1:")
         with httpx2.Client(base_url=server.url, timeout=60) as http:
             got = http.get("/api/toss", params={"omega": "90,30,0", "flight_time": "0.65"})
-            assert got.status_code == 200
-            assert got.json() == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
+            assert api_json(got) == cli_json("toss", "--omega", "90", "30", "0", "--flight-time",
                                           "0.65")  # fmt: skip
             assert http.get("/").status_code == 200
             bad = http.get("/api/toss", params={"flight_time": "abc"})
@@ -739,7 +759,7 @@ def test_serve_on_every_address_warns_and_a_bad_port_is_one_line():
     result = cli.invoke(cli_app, ["serve", "--port", "70000"])
     assert result.exit_code == 2
     assert result.stderr.strip().splitlines() == [
-        "coinflight: error: Invalid value for '--port': Input should be less than or equal to 65535"
+        "coinflight: error: Invalid value for '--port': '70000' must be at most 65535"
     ]
 
 

@@ -19,7 +19,7 @@ from decimal import Decimal
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -162,6 +162,7 @@ def assert_reads_as(text, value):
     x=st.floats(allow_nan=False, allow_infinity=False).filter(lambda x: x != 0),
     decimals=st.integers(0, 17),
 )
+@example(x=5.960464477539063e-08, decimals=13)  # 2⁻²⁴: 16 digits round the tie to "…062"
 def test_a_shown_float_never_has_more_digits_than_its_shortest_form(x, decimals):
     assert_reads_as(v.quantity(x, decimals), x)
 
@@ -675,3 +676,105 @@ def test_reported_command_lines_end_in_one_line(args, expected, tmp_path, monkey
     monkeypatch.chdir(tmp_path)
     assert expected in one_line_error(*args)
     assert not list(tmp_path.iterdir())  # nothing written
+
+
+def _exact_plan_work() -> list[tuple[object, str]]:
+    """The exact method's integrals and the (Ω, ψ) rule's own allocations: its band-edge
+    curves and its panels (the issue's 20 s and 1.7 GB before the refusal)."""
+    from _work import exact_work
+    from coinflight.probability.exact import omega_psi
+
+    return [*exact_work(), (omega_psi, "_edges"), (omega_psi, "_panels")]
+
+
+@pytest.mark.parametrize(
+    "omega_x, omega_z",
+    [
+        ("normal:0,1e6", 0.0),  # the issue's line: ω_z = 0, the one-spin (diameter) plan
+        ("normal:0,1e6", 5.0),  # a fixed axial spin: the plan along A = const
+        ("normal:0,1e6", (0.0, 10.0)),  # the 2-D plan
+        ("0:1e6", 3.0),
+    ],
+)
+def test_exact_omega_psi_refuses_from_a_count_before_building_its_plan(omega_x, omega_z):
+    # `probability -T 0.6:0.9 --omega-x normal:0,1e6` refused after 20 s and 1.7 GB: the
+    # plan's band edges and graded mesh were built (a Python loop over 10⁷ points) before the
+    # bound. Now the edges are counted and refused first: neither they nor the panels are
+    # built, and the memory peak stays small.
+    from coinflight.model.distributions import Normal
+
+    x = (
+        Normal(0.0, float(omega_x.split(",")[1]))
+        if omega_x.startswith("normal")
+        else Uniform(*map(float, omega_x.split(":")))
+    )
+    z = Uniform(*omega_z) if isinstance(omega_z, tuple) else omega_z
+    dist = TossDistribution(omega_x=x, omega_y=0, omega_z=z, flight_time=Uniform(0.6, 0.9))
+    refused_cheaply(
+        lambda: estimate(dist, "exact"),
+        r"the exact \(Ω, ψ\) rule( over [12] ranged spins is .* integrand points|'s search "
+        r"for where band edges cross the spin box is .* curve samples)",
+        _exact_plan_work(),
+    )
+    # and its time estimate (for sweeps and the web's share of its limit) allocates nothing
+    from coinflight.probability.exact import estimated_seconds
+
+    with pytest.MonkeyPatch.context() as patch:
+        never_run(patch, _exact_plan_work())
+        tracemalloc.start()
+        try:
+            seconds = estimated_seconds(dist)
+            _, peak = tracemalloc.get_traced_memory()
+        finally:
+            tracemalloc.stop()
+    assert seconds is None or seconds > 30.0  # over the rule's half-minute budget
+    assert peak < 16 * MB
+
+
+def test_exact_refusal_on_the_command_line_runs_no_plan(monkeypatch):
+    never_run(monkeypatch, _exact_plan_work())
+    line = one_line_error("probability", "-T", "0.6:0.9", "--omega-x", "normal:0,1e6")
+    assert line.startswith("the exact (Ω, ψ) rule over 1 ranged spins is 85,900,000 integrand")
+
+
+def test_qmc_reports_progress_per_block_with_the_points_of_one_run(monkeypatch):
+    # `probability --method qmc --n 17179869184` (accepted: about an hour) moved its progress
+    # bar once per scrambling, minutes apart. A scrambling is now cut into blocks that resume
+    # its sequence (Sobol.fast_forward): the same points, the same answer, and progress
+    # every block.
+    from coinflight.probability import qmc
+
+    dist = TossDistribution(
+        omega_x=Uniform(60, 90), omega_y=0, omega_z=Uniform(0, 20), flight_time=Uniform(0.6, 0.9)
+    )
+    whole = estimate(dist, "qmc", n=16 * 2**12, seed=5)
+    monkeypatch.setattr(qmc, "BLOCK", 2**8)
+    calls: list[int] = []
+    blocks = estimate(dist, "qmc", n=16 * 2**12, seed=5, progress=calls.append)
+    assert (blocks.p_heads, blocks.ci95) == (whole.p_heads, whole.ci95)
+    assert calls == [2**8] * (16 * 2**4)
+
+
+def test_bias_monte_carlo_reports_progress_as_it_goes():
+    # `bias --monte-carlo 2147483648` (accepted: about 9 min) printed nothing until its end.
+    from coinflight.probability import streams
+    from coinflight.queries.bias import bias_query
+
+    calls: list[int] = []
+    n = 3 * streams.BLOCK + 5
+    answer = bias_query(80.0, None, None, n, 7, Coin.preset("us-quarter"), calls.append)
+    assert sum(calls) == n and len(calls) >= 4
+    assert answer.payload()["monte_carlo"]["n"] == n
+
+
+def test_paper_progress_counts_every_estimate_it_runs():
+    # `paper --events 1000000000` (accepted: minutes) moved its bar once per figure; the bar
+    # now counts the probabilities' work units, its total counted before any runs.
+    from coinflight.report.paper import paper_numbers, paper_work
+
+    calls: list[int] = []
+    paper_numbers(events=1000, progress=calls.append)
+    assert sum(calls) == paper_work(1000)
+    assert len(calls) > 4 * 8  # many updates per figure, not one
+    # at 10⁹ events the total is dominated by them: 4 figures × (10⁹ + its series)
+    assert paper_work(10**9) > 8 * 10**9

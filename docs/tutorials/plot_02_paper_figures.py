@@ -45,7 +45,7 @@ fig = plot_toss(quarter, batch, title="Figs 3c-f")
 # grid of 100 cells per parameter. :func:`~coinflight.probability.convergence.convergence`
 # runs both for growing sizes next to the exact value (small sizes here, so that this page
 # builds in seconds; the paper goes to 5000² configurations).
-from coinflight import TossDistribution, Uniform, convergence, plot_convergence
+from coinflight import TossDistribution, Uniform, convergence, plot_convergence, plot_estimates
 
 fig2a = TossDistribution(omega_x=Uniform(60.0, 90.0), flight_time=Uniform(0.6, 0.9))
 result = convergence(
@@ -56,6 +56,12 @@ result = convergence(
     seed=1,
 )
 print(f"exact P(heads) = {result.exact:.6f}")
+fig = plot_estimates(
+    result, title="Fig 2a, the paper's form: ωx0 ∈ [60, 90] rad/s, T ∈ [0.6, 0.9] s"
+)
+
+# %%
+# The same numbers as errors on log–log axes, where each method's rate is a straight line.
 fig = plot_convergence(result, title="Fig 2a: ωx0 ∈ [60, 90] rad/s, T ∈ [0.6, 0.9] s")
 
 # %%

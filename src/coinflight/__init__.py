@@ -38,7 +38,7 @@ if TYPE_CHECKING:
     from coinflight.outcomes.table import Landing
     from coinflight.plotting.basin import plot_basin
     from coinflight.plotting.bias import plot_bias
-    from coinflight.plotting.convergence import plot_convergence
+    from coinflight.plotting.convergence import plot_convergence, plot_estimates
     from coinflight.plotting.edge import plot_edge
     from coinflight.plotting.forest import plot_forest
     from coinflight.plotting.toss import plot_toss
@@ -73,6 +73,7 @@ _LAZY = {
     "plot_basin": "coinflight.plotting.basin",
     "plot_bias": "coinflight.plotting.bias",
     "plot_convergence": "coinflight.plotting.convergence",
+    "plot_estimates": "coinflight.plotting.convergence",
     "plot_edge": "coinflight.plotting.edge",
     "plot_forest": "coinflight.plotting.forest",
     "plot_toss": "coinflight.plotting.toss",
@@ -119,6 +120,7 @@ __all__ = [
     "plot_bias",
     "plot_convergence",
     "plot_edge",
+    "plot_estimates",
     "plot_forest",
     "plot_toss",
     "same_side_probability",

@@ -33,11 +33,21 @@ T = TypeVar("T")
 
 
 def _show(value: object) -> str:
-    """A value for a message: one number as a plain number (200.0), several as an array."""
+    """A value for a message: one number as a plain number (200.0), several as an array on
+    one line (a message is one line: ``[[1. 1. 1.] [1. 1. 1.]]``)."""
     arr = np.asarray(value)
     if arr.size == 1:
         return repr(arr.reshape(-1)[0].item())
-    return np.array2string(arr, threshold=6)
+    return " ".join(np.array2string(arr, threshold=6, max_line_width=200).split())
+
+
+def shown(value: object) -> str:
+    """Any value for a one-line message: an array as :func:`_show` writes it (its shape if it
+    has more than a few entries), anything else as its repr, cut at 80 characters."""
+    if isinstance(value, np.ndarray):
+        return f"{_show(value)} (shape {value.shape})" if value.size > 6 else _show(value)
+    text = repr(value)
+    return " ".join(text.split()) if len(text) <= 80 else " ".join(text[:77].split()) + "..."
 
 
 def as_float_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
@@ -56,7 +66,7 @@ def as_float_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
         return np.asarray(arr, dtype=float)
     except (TypeError, ValueError):
         raise TypeError(
-            f"{name} must be a number or an array of numbers, got {_kind(value)} {value!r}"
+            f"{name} must be a number or an array of numbers, got {_kind(value)} {shown(value)}"
         ) from None
 
 
@@ -84,7 +94,7 @@ def count(name: str, value: object, minimum: int = 1, maximum: int | None = None
     """A whole number in [minimum, maximum] (Python or NumPy int, not a bool, not 2.0 or 2.5),
     else TypeError or ValueError naming ``name``."""
     if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an integer, got {_kind(value)} {value!r}")
+        raise TypeError(f"{name} must be an integer, got {_kind(value)} {shown(value)}")
     value = int(value)
     if value < minimum or (maximum is not None and value > maximum):
         allowed = f"at least {minimum}" if maximum is None else f"between {minimum} and {maximum}"
@@ -299,7 +309,13 @@ def quantity(x: float | int, decimals: int = 0) -> str:
     else:
         text = _trimmed(f"{x:.{3 + decimals}g}")
     shortest = repr(x) if not 1.0 <= abs(x) < EXACT_BELOW else f"{Decimal(repr(x)):,f}"
-    return shortest if _digits(text) > _digits(shortest) else text
+    # As many digits as the shortest form but not the same float (a tie rounded the other
+    # way: 2⁻²⁴ to 16 digits is "…062e-08", another float): the shortest form.
+    if _digits(text) > _digits(shortest) or (
+        _digits(text) == _digits(shortest) and float(_read(text)) != x
+    ):
+        return shortest
+    return text
 
 
 def _digits(text: str) -> int:
@@ -419,6 +435,41 @@ def work_bound(
         f"{what} is {shown} {unit}{timing}, more than the limit of {most} {unit}"
         f"{limit_time}; {way_on}"
     )
+
+
+UNREADABLE = {
+    "float_parsing": "is not a number",
+    "int_parsing": "is not a valid integer",
+    "int_from_float": "is not a valid integer",
+    "bool_parsing": "is not a valid boolean",
+}
+"""The words for a text that cannot be read as an option's type, by pydantic's error type
+(typer and FastAPI both read options through pydantic): the command line and the web say
+``Invalid value for '--seed': 'nan' is not a valid integer``, never pydantic's own
+sentence."""
+_BOUNDS = {
+    "greater_than_equal": ("ge", "at least"),
+    "greater_than": ("gt", "above"),
+    "less_than_equal": ("le", "at most"),
+    "less_than": ("lt", "below"),
+}
+
+
+def unreadable(error: Mapping[str, object]) -> str | None:
+    """What is wrong with an option's text, from pydantic's first error about it (a mapping
+    with ``type``, ``input`` and ``ctx``), in the words of :data:`UNREADABLE` or a bound
+    (``'-1' must be at least 1``); None for an error of another kind."""
+    kind = str(error.get("type"))
+    text = error.get("input")
+    if kind in UNREADABLE:
+        return f"{text!r} {UNREADABLE[kind]}"
+    if kind in _BOUNDS:
+        key, words = _BOUNDS[kind]
+        ctx = error.get("ctx")
+        bound = ctx.get(key) if isinstance(ctx, Mapping) else None
+        if bound is not None:
+            return f"{text!r} must be {words} {bound}"
+    return None
 
 
 MAX_RUN_SECONDS = 3600.0

@@ -22,7 +22,7 @@ Frames = Annotated[
         min=2,
         max=2000,
         rich_help_panel=OUTPUT_PANEL,
-        help="Frames from launch to catch \\[default: 16 per turn, 60 to 400].",
+        help="Frames from launch to catch [default: 16 per turn, 60 to 400].",
     ),
 ]
 Fps = Annotated[
@@ -36,11 +36,18 @@ Enlarge = Annotated[
         parser=number,
         metavar="X",
         rich_help_panel=OUTPUT_PANEL,
-        help="Draw the coin X times larger than life \\[default: a sixth of the apex height].",
+        help="Draw the coin X times larger than life [default: a sixth of the apex height].",
     ),
 ]
 MovieDpi = Annotated[
-    int, typer.Option("--dpi", min=20, max=600, rich_help_panel=OUTPUT_PANEL, help="Resolution.")
+    int,
+    typer.Option(
+        "--dpi",
+        min=20,
+        max=600,
+        rich_help_panel=OUTPUT_PANEL,
+        help="Resolution, dots per inch of the 8 × 6.4 inch frame (120: 960 × 768 pixels).",
+    ),
 ]
 
 
@@ -52,7 +59,7 @@ def animate(
     frames: Frames = None,
     fps: Fps = 24,
     enlarge: Enlarge = None,
-    dpi: MovieDpi = 80,
+    dpi: MovieDpi = 120,  # coinflight.plotting.animation.MOVIE_DPI
 ) -> None:
     """Animate one toss: the coin rising, turning and falling, the face up and a clock.
 

@@ -13,6 +13,7 @@ from coinflight.cli.options import (
     JsonFlag,
     MonteCarlo,
     PsiPreset,
+    Quiet,
     SimulationSeed,
     number,
     print_json,
@@ -55,15 +56,18 @@ def bias(
     seed: SimulationSeed = None,
     coin: CoinOptions,
     json_output: JsonFlag = False,
+    quiet: Quiet = False,
 ) -> None:
     """Probability that a precessing coin lands on the side it started (Diaconis et al. 2007).
 
     Example: coinflight bias --psi 80 --monte-carlo 200000
     """
+    from coinflight.cli.progress import progress_bar
     from coinflight.queries.bias import SOURCE, PresetBias, bias_query
     from coinflight.studies import bias as b
 
-    answer = bias_query(psi, psi_dist, preset, monte_carlo, seed, coin)
+    with progress_bar(monte_carlo or 0, "bias Monte Carlo", quiet) as bar:
+        answer = bias_query(psi, psi_dist, preset, monte_carlo, seed, coin, bar)
     if json_output:
         print_json(answer.payload())
         return

@@ -14,9 +14,9 @@ from typing import Annotated, Any, NamedTuple
 import typer
 
 from coinflight.cli.command import Group
-from coinflight.cli.options import METHOD_PANEL
+from coinflight.cli.options import PARALLEL_PANEL
 
-CLUSTER_PANEL = METHOD_PANEL
+CLUSTER_PANEL = PARALLEL_PANEL
 
 
 class ClusterArgs(NamedTuple):

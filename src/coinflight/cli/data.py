@@ -122,8 +122,9 @@ def data(
     plot_people: PeoplePlotFile = None,
     json_output: JsonFlag = False,
 ) -> None:
-    """Same-side and heads rates of real flips, the precession angle that explains them, and
-    how people differ: a ψ for each person from one population, checked on held-out people.
+    """Same-side and heads rates of real flips, the precession angle that explains them.
+
+    And how people differ: a ψ for each person from one population, checked on held-out people.
 
     Example: coinflight data --seed 1 --plot forest.png  (Bartoš et al.'s 350,757 flips)
     """

@@ -11,6 +11,7 @@ from coinflight.cli.command import Group, command
 from coinflight.cli.groups import _dist
 from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
+    CONTACT_PANEL,
     OUTPUT_PANEL,
     SURFACE_PANEL,
     Gravity,
@@ -81,21 +82,27 @@ Ending = Annotated[
     str | None,
     typer.Option(
         "--ending",
-        metavar="rocking|contact",
-        rich_help_panel=SURFACE_PANEL,
+        metavar="rocking|contact|rigid",
+        rich_help_panel=CONTACT_PANEL,
         help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
     ),
 ]
 RollingResistance = Annotated[
     float | None,
     number_option(
-        "--rolling-resistance", "L", SURFACE_PANEL, _ONLY + "--ending contact: " + ROLLING_HELP
+        "--rolling-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + ROLLING_HELP,
     ),
 ]
 PivotingResistance = Annotated[
     float | None,
     number_option(
-        "--pivoting-resistance", "L", SURFACE_PANEL, _ONLY + "--ending contact: " + PIVOTING_HELP
+        "--pivoting-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP,
     ),
 ]
 CornerRadius = Annotated[
@@ -103,7 +110,7 @@ CornerRadius = Annotated[
     number_option(
         "--corner-radius",
         "A",
-        SURFACE_PANEL,
+        CONTACT_PANEL,
         _ONLY + CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's "
         "thickness (h/d × 24 mm / 2).",
     ),
@@ -155,8 +162,9 @@ def edge(
     cluster: ClusterOptions,
     json: EdgeJson = False,
 ) -> None:
-    """P(edge) of thick coins per ratio h/d: Yong & Mahadevan's (2011) geometric and dynamic
-    models and, with --simulate, simulated landings.
+    """P(edge) of thick coins per ratio h/d, from Yong & Mahadevan's (2011) models.
+
+    Their geometric and dynamic models and, with --simulate, simulated landings.
 
     Simulated by default in the dynamic model's setting:
     spins of 150–300 rad/s about a diameter, launched at 1.5–3 m/s,

@@ -28,7 +28,9 @@ from typing import Any
 import typer
 from typer.core import TyperGroup
 
+from coinflight._provenance import command_line, invoked
 from coinflight.cli.exits import fail, interrupted, say
+from coinflight.cli.helptext import tidy_help
 from coinflight.cli.stdout import is_stdout_failure, stdout_failed
 
 
@@ -59,7 +61,12 @@ class OneLineErrors(TyperGroup):
     Typer's usage errors (unknown option, malformed number) and the library's ``ValueError`` /
     ``TypeError`` (a value outside its allowed range) both end as ``coinflight: error: …`` with
     exit code 2. Set ``COINFLIGHT_DEBUG=1`` to see the traceback of a library error instead.
+    Its help, and every subcommand's, is shown as written (:mod:`coinflight.cli.helptext`).
     """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        tidy_help(self)
 
     def make_context(self, *args: Any, **kwargs: Any) -> Any:
         with _escaping():  # --help and --version print while the context is made
@@ -79,7 +86,9 @@ class OneLineErrors(TyperGroup):
     ) -> Any:
         try:
             try:
-                with one_line_warnings():
+                args = list(sys.argv[1:] if args is None else args)
+                no_empty_values(args)
+                with invoked(command_line(args)), one_line_warnings():
                     rv = super().main(
                         args=args,
                         prog_name=prog_name,
@@ -99,6 +108,7 @@ class OneLineErrors(TyperGroup):
                 raise
             fail(os_error_line(exc))
         except typer.TyperException as exc:
+            _in_our_words(exc)
             fail(_one_line(exc.format_message()), exc.exit_code)
         except typer.Abort:
             fail("aborted", 1)
@@ -107,6 +117,29 @@ class OneLineErrors(TyperGroup):
                 raise
             fail(_one_line(str(exc)))
         sys.exit(rv if isinstance(rv, int) else 0)
+
+
+def no_empty_values(args: Sequence[str]) -> None:
+    """ValueError for an empty (or blank) value on the command line, naming its option: no
+    option of coinflight takes one, and read as "not given" it would silently become the
+    default (``plot basin --flight-time ''`` drew the default map)."""
+    for i, arg in enumerate(args):
+        if arg == "--":
+            return
+        name, eq, value = arg.partition("=")
+        if arg.startswith("--") and eq and not value.strip():
+            option = name
+        elif not arg.strip():
+            previous = args[i - 1] if i else ""
+            if not previous.startswith("-"):
+                raise ValueError(f"an empty argument {arg!r} is not allowed; give a value")
+            option = previous.partition("=")[0]
+        else:
+            continue
+        raise ValueError(
+            f"{option} was given an empty value {value if eq else arg!r}; give a value, or "
+            f"leave {option} out for its default"
+        )
 
 
 @contextmanager
@@ -133,6 +166,21 @@ def os_error_line(exc: OSError) -> str:
     if exc.filename2 is not None:
         line += f" ({shorten(os.fsdecode(exc.filename2), 300)})"
     return _one_line(line)
+
+
+def _in_our_words(exc: Exception) -> None:
+    """A text typer could not read as its option's type (typer reads through pydantic) in
+    the words of :func:`coinflight._validation.unreadable`, those of the web too:
+    ``'nan' is not a valid integer``, ``'-1' must be at least 1``, not pydantic's "Input should
+    be a valid integer, unable to parse string as an integer"."""
+    from coinflight._validation import unreadable
+
+    errors = getattr(exc.__cause__, "errors", None)
+    if not isinstance(exc, typer.BadParameter) or not callable(errors) or not errors():
+        return
+    reading = unreadable(errors()[0])
+    if reading is not None:
+        exc.message = reading
 
 
 def _one_line(message: str) -> str:

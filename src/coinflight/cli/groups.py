@@ -11,7 +11,7 @@ import typer
 
 from coinflight.cli.command import Group
 from coinflight.cli.options import (
-    COIN_PANEL,
+    CUSTOM_PANEL,
     TOSS_PANEL,
     CoinName,
     Gravity,
@@ -35,20 +35,20 @@ COIN = Group(
         "coin": (CoinName, None),
         "radius": (
             Annotated[
-                float | None, number_option("--radius", "R", COIN_PANEL, "Custom coin radius, m.")
+                float | None, number_option("--radius", "R", CUSTOM_PANEL, "Custom coin radius, m.")
             ],
             None,
         ),
         "thickness": (
             Annotated[
                 float | None,
-                number_option("--thickness", "H", COIN_PANEL, "Custom coin thickness, m."),
+                number_option("--thickness", "H", CUSTOM_PANEL, "Custom coin thickness, m."),
             ],
             None,
         ),
         "mass": (
             Annotated[
-                float | None, number_option("--mass", "M", COIN_PANEL, "Custom coin mass, kg.")
+                float | None, number_option("--mass", "M", CUSTOM_PANEL, "Custom coin mass, kg.")
             ],
             None,
         ),

@@ -8,7 +8,13 @@ from typing import Annotated, Any
 import typer
 
 from coinflight.cli.command import Group
-from coinflight.cli.options import SURFACE_PANEL, number_option, option
+from coinflight.cli.options import (
+    AIR_PANEL,
+    CONTACT_PANEL,
+    SURFACE_PANEL,
+    number_option,
+    option,
+)
 from coinflight.queries.values import AirArgs, TableArgs
 
 SurfaceKind = Annotated[
@@ -31,7 +37,9 @@ ENDING_HELP = (
     "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
     "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
     "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
-    "corner radius."
+    "corner radius. rigid: the rigid, event-driven 3-D ending (rolling without slip, exact "
+    "Coulomb sliding, hops flown in closed form, rim impacts, rest on the edge band); about "
+    "200 times slower than rocking."
 )
 """--ending's help (command line and sweep)."""
 
@@ -57,7 +65,7 @@ def resistance_option(which: str, metavar: str, help: str) -> Any:
     """The --rolling-resistance or --pivoting-resistance option (``which``: rolling or
     pivoting), read as text (a number, a distribution or a list: the command parses it); the
     one definition of the table group's and the sweep's."""
-    return option(f"--{which}-resistance", metavar=metavar, panel=SURFACE_PANEL, help=help)
+    return option(f"--{which}-resistance", metavar=metavar, panel=CONTACT_PANEL, help=help)
 
 
 CORNER_HELP = (
@@ -132,8 +140,8 @@ TABLE = Group(
                 str | None,
                 option(
                     "--ending",
-                    metavar="rocking|contact",
-                    panel=SURFACE_PANEL,
+                    metavar="rocking|contact|rigid",
+                    panel=CONTACT_PANEL,
                     help=_TABLE + ENDING_HELP,
                 ),
             ],
@@ -143,7 +151,9 @@ TABLE = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "rolling", "L", "table, --ending contact: " + ROLLING_HELP + _SPREAD_RESISTANCE
+                    "rolling",
+                    "L",
+                    "table, --ending contact or rigid: " + ROLLING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -154,7 +164,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                    "table, --ending contact or rigid: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -162,7 +172,7 @@ TABLE = Group(
         "corner_radius": (
             Annotated[
                 float | None,
-                number_option("--corner-radius", "A", SURFACE_PANEL, _TABLE + CORNER_HELP),
+                number_option("--corner-radius", "A", CONTACT_PANEL, _TABLE + CORNER_HELP),
             ],
             None,
         ),
@@ -180,7 +190,7 @@ AIR = Group(
                 number_option(
                     "--drag",
                     "CD",
-                    SURFACE_PANEL,
+                    AIR_PANEL,
                     "Air drag coefficient C_d ≥ 0 on the coin's projected area (1.17: a flat "
                     "disc broadside on); compiled integration. Default 0 (no air).",
                 ),
@@ -193,7 +203,7 @@ AIR = Group(
                 number_option(
                     "--spin-damping",
                     "K",
-                    SURFACE_PANEL,
+                    AIR_PANEL,
                     "Damping torque −K ω on the spin, N m s ≥ 0 (default 0).",
                 ),
             ],

@@ -41,9 +41,10 @@ def landing_report(
     mujoco: MujocoTosses = None,
     quiet: Quiet = False,
 ) -> None:
-    """Validate the table landing: dead and bouncing landings vs Yong & Mahadevan, maps over
-    (e, μ), the US nickel's P(edge) band, MuJoCo against both endings; figures, numbers and a
-    report.
+    """Validate the table landing: figures, numbers and a report.
+
+    Dead and bouncing landings against Yong & Mahadevan, maps over (e, μ), the US nickel's
+    P(edge) band, MuJoCo against both endings.
 
     Example: coinflight landing-report --out landing/ --quick
     """

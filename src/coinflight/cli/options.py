@@ -29,6 +29,14 @@ SURFACE_PANEL = "Landing"
 PSI_PANEL = "Precession angle"
 SIM_PANEL = "Monte Carlo check"
 SPLITS_PANEL = "Held-out people"
+CUSTOM_PANEL = "Custom coin and gravity"
+METHOD_DETAIL_PANEL = "Method details"
+CONTACT_PANEL = "Contact ending and rim"
+AIR_PANEL = "Air"
+PARALLEL_PANEL = "Parallel"
+LATER_PANELS = (METHOD_DETAIL_PANEL, CUSTOM_PANEL, CONTACT_PANEL, AIR_PANEL, PARALLEL_PANEL)
+"""Panels of rarely used options, shown after the others (in this order) so that the common
+options fit a screen (:func:`coinflight.cli.helptext.tidy_help`)."""
 
 
 def option(
@@ -75,7 +83,7 @@ Gravity = Annotated[
     option(
         "--g",
         metavar="G",
-        panel=TOSS_PANEL,
+        panel=CUSTOM_PANEL,
         help="Gravitational acceleration, m/s².",
         parser=gravity,
     ),
@@ -144,7 +152,7 @@ Threads = Annotated[
     option(
         "--threads",
         metavar="K",
-        panel=METHOD_PANEL,
+        panel=PARALLEL_PANEL,
         help="Worker threads (default: all CPUs). The result does not depend on it.",
     ),
 ]

@@ -34,17 +34,15 @@ def paper(
     """
     from coinflight.cli.progress import progress_bar
     from coinflight.queries.values import resolve_coin
-    from coinflight.report.reproduce import STEPS, paper_files, reproduce_paper
+    from coinflight.report.paper import paper_work
+    from coinflight.report.reproduce import paper_files, reproduce_paper
 
     the_coin = resolve_coin(coin, None, None, None)
     paper_files(out)  # all 16 files, before minutes of computing, not after
-    with progress_bar(STEPS, "reproducing the paper", quiet) as advance:
-
-        def step(_message: str) -> None:
-            if advance is not None:
-                advance(1)
-
-        report = reproduce_paper(out, coin=the_coin, seed=seed, events=events, step=step)
+    # The bar counts the probabilities' estimates (grid cells, Monte Carlo events): nearly all
+    # of the run, and at --events 10⁹ minutes of it, which whole steps would not show moving.
+    with progress_bar(paper_work(events, the_coin), "reproducing the paper", quiet) as advance:
+        report = reproduce_paper(out, coin=the_coin, seed=seed, events=events, progress=advance)
     rows = report.numbers.rotations
     typer.echo(
         f"wrote {len(report.files)} files to {out} in {report.elapsed:.1f} s "

@@ -47,10 +47,17 @@ def _checked_name(text: str, folder: bool) -> Path:
 
 
 def output_file(text: str) -> Path:
-    """Parse an output file (--out FILE, --plot FILE): an empty text or a folder's name
-    (``.``, ``out/``) is a usage error, not the current folder or a file ``out`` (what
-    ``Path`` would silently make of them)."""
-    return _checked_name(text, folder=False)
+    """Parse an output file (--out FILE, --plot FILE): an empty text, a folder's name
+    (``.``, ``out/``) or an existing folder is a usage error, not the current folder, a file
+    ``out`` or ``out.png`` beside the folder ``out`` (what ``Path`` and the suffixes would
+    silently make of them)."""
+    path = _checked_name(text, folder=False)
+    if path.is_dir():
+        raise typer.BadParameter(
+            f"{text!r} is an existing folder; give a file's name, such as "
+            f"{str(path / 'figure.png')!r} for a file inside it"
+        )
+    return path
 
 
 def output_folder(text: str) -> Path:

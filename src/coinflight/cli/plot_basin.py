@@ -34,7 +34,7 @@ def _range(flag: str, help: str, *aliases: str) -> object:
 FlightTimeRange = Annotated[
     str | None,
     _range(
-        "--flight-time", "Range of flight times T, s \\[default: 0.6:0.9, Stefan & Cheche].", "-T"
+        "--flight-time", "Range of flight times T, s [default: 0.6:0.9, Stefan & Cheche].", "-T"
     ),
 ]
 LaunchSpeedRange = Annotated[
@@ -46,7 +46,7 @@ LaunchSpeedRange = Annotated[
 ]
 OmegaXRange = Annotated[
     str | None,
-    _range("--omega-x", "Range of the spin about a diameter ωx0, rad/s \\[default: 60:90]."),
+    _range("--omega-x", "Range of the spin about a diameter ωx0, rad/s [default: 60:90]."),
 ]
 OmegaY = Annotated[
     float,
@@ -72,7 +72,7 @@ PrecessionRange = Annotated[
     str | None,
     _range(
         "--precession-rate",
-        "Range of the precession rate ωp = |S|/I1, rad/s, with --psi \\[default: 60:90].",
+        "Range of the precession rate ωp = |S|/I1, rad/s, with --psi [default: 60:90].",
     ),
 ]
 Resolution = Annotated[

@@ -36,7 +36,7 @@ PsiPoints = Annotated[
         "--psi-points",
         metavar="DEG,DEG,...",
         panel=SIM_PANEL,
-        help=f"Angles (degrees) at which to simulate with --monte-carlo \\[default: {PSI_POINTS}].",
+        help=f"Angles (degrees) at which to simulate with --monte-carlo [default: {PSI_POINTS}].",
     ),
 ]
 
@@ -61,7 +61,9 @@ def plot_bias(
     seed = simulation_seed(monte_carlo, seed, ("--psi-points", psi_points))
     simulated = []
     if monte_carlo is not None:
-        angles = parse_numbers(psi_points or PSI_POINTS, "--psi-points", "60,80,100")
+        angles = parse_numbers(
+            PSI_POINTS if psi_points is None else psi_points, "--psi-points", "60,80,100"
+        )
         simulated = b.simulate_same_side_at(angles, monte_carlo, seed, degrees=True)
     psi_measured = None
     if measured is not None:

@@ -19,7 +19,7 @@ Ratios = Annotated[
         "--ratios",
         metavar="R,R,...",
         rich_help_panel=SIM_PANEL,
-        help=f"Ratios h/d to simulate with --simulate \\[default: {RATIOS}].",
+        help=f"Ratios h/d to simulate with --simulate [default: {RATIOS}].",
     ),
 ]
 MaxRatio = Annotated[
@@ -53,7 +53,7 @@ def plot_edge(
     the_seed = simulation_seed(simulate, seed, ("--ratios", ratios), run_flag="--simulate")
     simulated = []
     if simulate is not None:
-        points = parse_numbers(ratios or RATIOS, "--ratios", "0.2,0.5,1")
+        points = parse_numbers(RATIOS if ratios is None else ratios, "--ratios", "0.2,0.5,1")
         simulated = simulate_edge(points, simulate, the_seed)
     figure = plot_edge(simulated, max_ratio)
     echo_written(save_figure(figure, out, dpi=dpi))

@@ -11,6 +11,7 @@ from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions, TossesOptions
 from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import (
+    METHOD_DETAIL_PANEL,
     METHOD_PANEL,
     JsonFlag,
     Quiet,
@@ -56,7 +57,7 @@ GridCells = Annotated[
     typer.Option(
         "--grid-cells",
         metavar="C",
-        rich_help_panel=METHOD_PANEL,
+        rich_help_panel=METHOD_DETAIL_PANEL,
         help="monte-carlo only: draw from the midpoints of C cells per parameter "
         "(the paper's method B uses 100).",
     ),
@@ -67,7 +68,7 @@ VarianceReduction = Annotated[
     typer.Option(
         "--variance-reduction",
         metavar="|".join(registry.VARIANCE_REDUCTIONS),
-        rich_help_panel=METHOD_PANEL,
+        rich_help_panel=METHOD_DETAIL_PANEL,
         help="; ".join(f"{k}: {text}" for k, text in registry.VARIANCE_REDUCTIONS.items())
         + ". For --method "
         + " and ".join(e.name for e in registry.estimators() if e.modes)

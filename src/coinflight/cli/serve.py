@@ -44,7 +44,7 @@ Workers = Annotated[
         metavar="N",
         help="Worker processes computing the long requests (a probability, a map, a Monte "
         "Carlo check); one or two more answer the short ones, which never wait behind them "
-        "\\[default: the CPU count, at most 4].",
+        "[default: the CPU count, at most 4].",
     ),
 ]
 
@@ -57,7 +57,7 @@ AllowedHost = Annotated[
         help="A name the server may be reached by besides its address (repeat for more; * "
         "any), e.g. the machine's name on your network. Requests giving another host are "
         "refused (400): a web page elsewhere cannot reach the server through a name it "
-        "controls (DNS rebinding). \\[default: the --host address, with localhost on "
+        "controls (DNS rebinding). [default: the --host address, with localhost on "
         "loopback; any on 0.0.0.0 or ::]",
     ),
 ]

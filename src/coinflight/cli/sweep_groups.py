@@ -13,7 +13,7 @@ from coinflight.cli.landing_groups import (
     ROLLING_TAIL,
     resistance_option,
 )
-from coinflight.cli.options import SURFACE_PANEL, TOSS_PANEL, option
+from coinflight.cli.options import CONTACT_PANEL, SURFACE_PANEL, TOSS_PANEL, option
 from coinflight.queries.probability import PRESET_OPTIONS
 from coinflight.queries.sweep import TOSS_PARAMETERS, SweepLandings, flag
 
@@ -64,8 +64,10 @@ TOSSES = Group(
 distributions and its -mean and -sd texts."""
 
 
-def _surface_option(flag: str, metavar: str, help: str, kind: Any = str | None) -> Any:
-    return (Annotated[kind, option(flag, metavar=metavar, panel=SURFACE_PANEL, help=help)], None)
+def _surface_option(
+    flag: str, metavar: str, help: str, kind: Any = str | None, panel: str = SURFACE_PANEL
+) -> Any:
+    return (Annotated[kind, option(flag, metavar=metavar, panel=panel, help=help)], None)
 
 
 LANDINGS = Group(
@@ -96,12 +98,19 @@ LANDINGS = Group(
             int | None,
         ),
         "ending": _surface_option(
-            "--ending", "rocking,contact", "table, comma-separated endings: " + ENDING_HELP
+            "--ending",
+            "rocking,contact",
+            "table, comma-separated endings: " + ENDING_HELP,
+            panel=CONTACT_PANEL,
         ),
-        "rolling_resistance": _surface_option(
-            "--rolling-resistance",
-            "LIST",
-            "table, contact ending rows: lengths ℓ_r, " + ROLLING_TAIL,
+        "rolling_resistance": (
+            Annotated[
+                str | None,
+                resistance_option(
+                    "rolling", "LIST", "table, contact ending rows: lengths ℓ_r, " + ROLLING_TAIL
+                ),
+            ],
+            None,
         ),
         "pivoting_resistance": (
             Annotated[
@@ -113,7 +122,10 @@ LANDINGS = Group(
             None,
         ),
         "corner_radius": _surface_option(
-            "--corner-radius", "LIST", "--surface table only, swept over every coin: " + CORNER_HELP
+            "--corner-radius",
+            "LIST",
+            "--surface table only, swept over every coin: " + CORNER_HELP,
+            panel=CONTACT_PANEL,
         ),
     },
     SweepLandings,

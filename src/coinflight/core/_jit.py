@@ -74,6 +74,9 @@ def _import_numba() -> ModuleType:
             raise ValueError(package._numba_refused)  # type: ignore[attr-defined]
     for warning in caught:  # others as they were
         warnings.warn_explicit(warning.message, warning.category, warning.filename, warning.lineno)
+    from coinflight._compiling import listen
+
+    listen()  # the first compilation of a kernel says so on stderr
     return numba
 
 

@@ -40,6 +40,12 @@ slow, and its edge rates are not yet credible: see :mod:`coinflight.core.contact
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 
+The flights and impacts run in one loop (:func:`bounces_until`) from any state, which can stop
+at a given time: a toss's landing starts it at launch (:func:`bounce_loop`); :func:`follow`
+starts it from any state above or on the table and records the state at given times (the
+flights in closed form, :func:`fly`; after the bounces, what the ending follows,
+:func:`ending_states`): the kernel of :meth:`coinflight.outcomes.table.Landing.from_state`.
+
 Every part of a landing meets the same rim: the cylinder (r − a, h/2 − a) swept by a ball of
 the corner radius a (``Contact.corner_radius``; :func:`coinflight.core.impact.lowest_depth`):
 the flight's contact search, the impacts, the barrier and the edge angle of the wells, the
@@ -56,7 +62,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core._jit import njit, prange
-from coinflight.core.contact import CONTACT_ENDING, Contact
+from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.contact_phase import settle
 from coinflight.core.impact import (
     angular_velocity,
@@ -542,7 +548,7 @@ def impact_verdict(z, v, lm, n, rebound, c):
       :func:`died_out`;
     * else the coin flies on: status −1, face −1.
     """
-    if c.ending == CONTACT_ENDING:
+    if c.ending != ROCKING_ENDING:  # the 3-D endings (contact, rigid)
         free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
     else:
         free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
@@ -563,6 +569,8 @@ def died_out(z, v, n, lm, c):
     :func:`rock` (SETTLED_ROCKING, 0)."""
     if c.ending == CONTACT_ENDING:
         return settle(z, v, n, lm, c)
+    if c.ending == RIGID_ENDING:
+        return rigid_ending.settle(z, v, n, lm, c)
     omega = angular_velocity(lm, n, c.i1, c.i3)
     face = rock(n, omega, c)
     return face, Status.SETTLED_ROCKING, 0.0
@@ -605,8 +613,13 @@ def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
     The hook through which an ending that follows the coin in time hands :func:`follow` its
     motion (any status: a coin trapped in its well still moves). Neither of today's endings
     does (the rocking hand-off decides the face from the state alone; the contact phase keeps
-    no trajectory), so nothing after t is followed: (k, t).
+    no trajectory), so nothing after t is followed: (k, t). The rigid ending does
+    (:func:`coinflight.core.rigid_ending.states`), to the time it settled or gave up.
     """
+    if c.ending == RIGID_ENDING and (
+        status == Status.SETTLED_CONTACT or status == Status.UNSETTLED
+    ):
+        return rigid_ending.states(t, z, xy, v, n, lm, c, times, k, states)
     return k, t
 
 
@@ -883,3 +896,8 @@ def land(
 
 def _per_toss(value: float | NDArray[np.float64], n: int) -> NDArray[np.float64]:
     return np.ascontiguousarray(np.broadcast_to(np.asarray(value, dtype=np.float64), (n,)))
+
+
+# The rigid ending flies its hops with this module's flight: imported last (a cycle), and read
+# as a module attribute, which numba resolves when died_out is first compiled.
+from coinflight.core import rigid_ending  # noqa: E402

@@ -17,6 +17,9 @@ ROCKING_ENDING = 0.0
 """``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
 CONTACT_ENDING = 1.0
 """``Contact.ending`` of the experimental end of a landing: the 3-D contact phase."""
+RIGID_ENDING = 2.0
+"""``Contact.ending`` of the rigid, event-driven end of a landing
+(:func:`coinflight.core.rigid_ending.settle`)."""
 
 
 class Contact(NamedTuple):
@@ -65,7 +68,9 @@ class Contact(NamedTuple):
         How a landing ends once the bounces die out: :data:`ROCKING_ENDING` (0, the planar
         rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
         :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
-        :func:`coinflight.core.contact_phase.settle`); a float so the record stays all floats.
+        :func:`coinflight.core.contact_phase.settle`) or :data:`RIGID_ENDING` (2, the rigid,
+        event-driven ending of :func:`coinflight.core.rigid_ending.settle`); a float so the
+        record stays all floats.
     corner_radius : float
         a ≥ 0, the radius of the rounded corners of the coin's rim, m
         (:attr:`coinflight.model.coin.Coin.corner_radius`): the coin is a cylinder of radius
@@ -174,4 +179,4 @@ def _damping_ratio(restitution: float) -> float:
     return float(contact_phase.damping_ratio(restitution))
 
 
-__all__ = ["CONTACT_ENDING", "ROCKING_ENDING", "Contact"]
+__all__ = ["CONTACT_ENDING", "RIGID_ENDING", "ROCKING_ENDING", "Contact"]

@@ -46,7 +46,8 @@ class Status(IntEnum):
     SETTLED_CONTACT = 5
     """The bounces died out; the coin then rolled, slid, pivoted and rocked in contact with the
     surface, in 3-D (:mod:`coinflight.core.contact_phase`, the experimental ending
-    ``Surface(ending="contact")``), until it was at rest or its energy could no longer take it
+    ``Surface(ending="contact")``, or :mod:`coinflight.core.rigid_ending`,
+    ``Surface(ending="rigid")``), until it was at rest or its energy could no longer take it
     out of its well (a coin ended by the upright decision is :attr:`DECIDED_UPRIGHT`)."""
     DECIDED_UPRIGHT = 6
     """The bounces died out; the coin then rolled in contact with the surface in 3-D (as

@@ -1,22 +1,17 @@
 """A rigid coin rolling or sliding on one rim point: the constrained contact (numba).
 
-The second model of the coin in persistent contact with the table, set against the compliant
-one of :mod:`coinflight.core.contact_phase` (issue 11). There the contact is a field of springs
-along the rim (contact time t_c, 1 ms by default) and friction is regularised; the explicit
-stepper is held by their stiffness to steps of ~0.4 ms whatever the motion. Here the coin and
-the table are rigid: while the coin touches at one rim point the gap there stays 0, the contact
-force is whatever keeps it so (and, rolling, keeps the point from slipping), and the steps are
-set by the motion's own time scales, not by a stiffness. The premise was that these are the
-wobble's (~sqrt(r/g) ≈ 30 ms for a nickel); measured, they are much shorter on the states the
-bounces hand over (spin, stick-slip, lift-offs: "Speed" below).
+The coin and the table are rigid: while the coin touches at one rim point the gap there stays
+0, the contact force is whatever keeps it so (and, rolling, keeps the point from slipping), and
+the steps are set by the motion's own time scales, not by a stiffness (set against the
+compliant contact of :mod:`coinflight.core.contact_phase`, whose springs and regularised
+friction hold its steps to ~0.4 ms whatever the motion).
 
-**Built this session (the first piece):** the one-rim modes ROLLING and SLIDING, their
-transitions located as events, lift-off, Painlevé's paradox detected, the stops at a second
-contact, and the energy ending of :func:`coinflight.core.contact_phase.below_barrier` without
-springs. **Not built:** impacts of the other rim or of the face (:mod:`coinflight.core.impact`
-would give them), the two-rim (band) contact of a coin upright on its edge, and the wiring into
-the landing (``Surface(ending=...)``); :func:`advance_rigid` stops and says why when one of
-them is needed. Nothing in the package calls this module yet.
+This module is the one-rim contact: the modes ROLLING and SLIDING, their transitions located as
+events, lift-off, Painlevé's paradox detected, and the stops where the other rim or the face
+comes down. :func:`advance_rigid` stops and says why at each of them;
+:mod:`coinflight.core.rigid_ending` builds the end of a landing on these modes
+(``Surface(ending="rigid")``) and carries the coin through the stops (hops, rim and face
+impacts, the band).
 
 The state is that of :mod:`coinflight.core.contact_phase`, y = (z, v, n, L): the height of the
 centre of mass, its velocity, the heads normal and the angular momentum about the centre of
@@ -59,7 +54,7 @@ Modes and their transitions
   c_N ≤ 0 is Painlevé's paradox (no N, or two, make the motion consistent; Painlevé 1895,
   Stewart 2000, SIAM Rev. 42:3): reported (:data:`PAINLEVE`), not integrated through.
 * **FREE**: the normal force needed would be negative: the coin lifts off. The run stops and
-  hands the state back (to the flight of :mod:`coinflight.core.bounce`, next session).
+  hands the state back (:mod:`coinflight.core.rigid_ending` flies it).
 
 Events, each located by bisection of the step to :data:`EVENT_TIME`: in ROLLING, F_z falling
 to 0 (lift-off) or |F_h| reaching μ F_z (slip starts); in SLIDING, N falling to 0 (lift-off),
@@ -80,11 +75,10 @@ sqrt(|ω_h|² + ω_ε²) and −ℓ_p F_z ω_z / sqrt(ω_z² + ω_ε²) Z, ω_ε
 same regularisation. **Regularised, not set-valued**, for two reasons: it keeps the two models
 comparable term for term (the test of convergence as t_c → 0 compares them), and set-valued
 rolling and drilling stick adds two more stick conditions and their events (a coin that stops
-rolling but keeps sliding, and the reverse), left for next session. Below ω_ε the torque is
-a viscous one, time scale I1 ω_ε/(ℓ F_z) (~14 ms for a nickel at ℓ = 1e-4 m and F_z = m g):
-not what holds the steps (the benchmark's handed states take about as many accepted steps a
-simulated second with ℓ = 0: ``bench_rigid.py 300 --rounds 1 --resistance 0``, 03:37 UTC,
-2,241, against 1,915 at the default 1e-4 m, on other trajectories).
+rolling but keeps sliding, and the reverse), not built. Below ω_ε (0.47 rad/s for a nickel:
+its rim moving at 5 mm/s) the torque is a viscous one, time scale I1 ω_ε/(ℓ F_z) (~14 ms for a
+nickel at ℓ = 1e-4 m and F_z = m g); it matters only to a coin already nearly at rest, which
+the energy test of the ending has settled first in the landings measured.
 
 Integration
 -----------
@@ -105,32 +99,14 @@ The ending: with ``settle``, the run stops when the coin's energy (no springs he
 plus m g z) is below its well's barrier, as :func:`coinflight.core.contact_phase.below_barrier`
 decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
 
-Speed (measured; issue 11's target not reached)
------------------------------------------------
-``python benchmarks/bench_rigid.py 300 --rounds 3`` (2026-11-24 03:39 UTC, the project machine,
-2 CPUs AMD EPYC shared, load 6.2, one thread, seed 2026): of 300 vigorous nickel tosses (e 0.5,
-μ 0.3, ℓ_r = ℓ_p = 1e-4 m) 213 are handed to the contact phase; run rigid from those states
-until a stop, they spend a median 16 ms in one-rim modes (23.1 s in all, 61 % of it rolling),
-and end by lift-off 105, below the barrier 81, second rim 21, face 1, the 1 s limit 5. The same
-stretches through the compliant phase: **accepted steps a simulated second, counted alike, rigid
-1,915 against 3,016** (the rigid run also rejects 270 and spends 393 locating events a simulated
-second), **CPU 4.28 ms against 3.12 ms a simulated second: the rigid contact is 0.73× as fast**
-(~1.7 μs a rigid step of any kind, ~1.0 μs compliant). Before friction on a slip below
-SLIP_FLOOR pointing against the ray was made to oppose the slip (03:34 UTC, load 5.1-6.2, same
-command): 1,885 accepted, 218 rejected, 3.81 against 3.17 ms, 0.83×; the earlier figures (0.84×
-at μ 0.3 and 1.07× at ``--mu 0.6``, 02:55-02:57 UTC, steps counted as accepted + rejected +
-event) predate both changes (at μ 0.6 the coins that rolled for the whole second took 749
-against 2,388 steps a second, all of the rigid run's steps counted). With RTOL 1e-6 it was
-slower (0.45× before those changes: more stick-slip switching). Why the premise (steps of the
-wobble's ~30 ms) does not hold, measured on single tosses: (1) the handed coins spin: one
-precessing at ω_z ≈ 110 rad/s takes steps of ~0.5 ms at RTOL 1e-8, its motion's own time scale;
-(2) stick-slip transitions at the cone's boundary slide at slips of 10 μm/s-1 mm/s whose
-direction turns fast (~15 μs steps, 80-220 steps per 2.5 ms); (3) half the stretches end within
-milliseconds in a lift-off (7,097 accepted steps a simulated second there in the 03:39 run,
-events located by bisection). Left for the next session: a slip-direction treatment that does
-not follow the slip's turning at small slips, cheaper event location (bisection to
-:data:`EVENT_TIME` now), and the hops in closed form; this phase alone does not give the 17×
-issue 11 needs.
+Speed
+-----
+A landing's contact takes about 2,000-3,000 accepted steps a simulated second at the ending's
+tolerance (1e-9), a few μs each: the coins the bounces hand over spin (one precessing at
+~100 rad/s takes steps of ~0.5 ms), switch between sticking and slipping at the cone's
+boundary (steps of ~15 μs while a small slip turns), and lift off within milliseconds (events
+located by bisection). ``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a
+second; ``benchmarks/bench_rigid.py`` this contact against the compliant one.
 """
 
 from __future__ import annotations
@@ -211,8 +187,9 @@ MAX_STEPS_REACHED = 6
 NOT_IN_CONTACT = 7
 """The start state approaches the table faster than ``approach``: an impact is needed first."""
 STEP_FAILED = 8
-"""60 trial steps in a row were rejected (the step size fell by 0.2⁶⁰): the state is left at
-the last accepted step."""
+"""60 trial steps in a row were rejected (the step size fell by 0.2⁶⁰), or
+:data:`STALL_EVENTS` events in a row made no progress: the state is left at the last accepted
+step."""
 REASON_NAMES = (
     "duration",
     "lift-off",
@@ -238,8 +215,8 @@ STICK_SPEED = 1e-9
 FACE_SINE = 1e-2
 """s = sqrt(1 − n_z²) below which the face is taken to reach the table (the run stops): a
 nickel's far rim point is then 2 r s ≈ 0.21 mm above the table, and the contact point runs round
-the rim at ~ω/s (the end of Euler's disk), which steps cannot follow cheaply; the face's impact
-and contact are next session's."""
+the rim at ~ω/s (the end of Euler's disk), which steps cannot follow cheaply
+(:mod:`coinflight.core.rigid_ending` ends a coin lying flat there)."""
 SLIP_FLOOR = 1e-5
 """A small slip, m/s. Below it a slip that the cone could not stop (the rolling force is
 outside it) slides along the ray of :func:`slip_start` instead of its own direction: a slide
@@ -251,6 +228,13 @@ falling below it has stopped (the event; then the stick test, and if it holds th
 removes the rest of the slip, at most this, by an impulse): a stopping slip's direction turns
 at ~(u̇_h)/|u_h| as it vanishes, which the step control would follow with steps shrinking with
 it."""
+STALL_TIME = 1e-9
+"""An event located less than this after the one before, s, makes no progress (with
+:data:`STALL_EVENTS`)."""
+STALL_EVENTS = 100
+"""Events in a row that make no progress after which a run stops (:data:`STEP_FAILED`):
+a slide starting on the friction cone's boundary that the stop event ends as it starts,
+again and again (a rounding-level loop, seen once in 84 hand-off landings)."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
 
@@ -450,6 +434,9 @@ def _derivative(y, out, c, mode, dx, dy):
     out[7] = torque[0] + f[2] * tau[0]
     out[8] = torque[1] + f[2] * tau[1]
     out[9] = torque[2] + f[2] * tau[2]
+    if y.shape[0] > 10:  # the horizontal position, carried along (not in the error control)
+        out[10] = y[1]
+        out[11] = y[2]
 
 
 @njit(cache=True)
@@ -482,24 +469,24 @@ def _crossed(e):
 def _step(y, h, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new):
     """One Dormand-Prince step of h from y (k1 = f(y) given): ``new`` and the error estimate
     (k7 = f(new))."""
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * _A21 * k1[i]
     _derivative(tmp, k2, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
     _derivative(tmp, k3, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
     _derivative(tmp, k4, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
     _derivative(tmp, k5, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (
             _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
         )
     _derivative(tmp, k6, c, mode, dx, dy)
-    for i in range(10):
+    for i in range(y.shape[0]):
         new[i] = y[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
     _derivative(new, k7, c, mode, dx, dy)
 
@@ -580,6 +567,17 @@ def _classify(y, c):
 
 
 @njit(cache=True)
+def _sticks(y, c):
+    """Whether a sliding contact has stopped: its slip below :data:`SLIP_FLOOR` and the
+    rolling force inside the friction cone (and pressing)."""
+    _, _, _, _, _, u = constraint_terms(y, c)
+    if u[0] * u[0] + u[1] * u[1] > SLIP_FLOOR * SLIP_FLOOR:
+        return False
+    f = rolling_force(y, c)
+    return f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]
+
+
+@njit(cache=True)
 def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     """The integrator of :func:`advance_rigid` (y in place). ``counts`` (7 floats) receives
     (accepted steps, rejected steps, event steps, mode changes, largest gap removed, largest
@@ -611,16 +609,17 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     band = 0.0
     if c.half_thickness - c.corner_radius > 0.0:
         band = 1.0 if y[6] > 0.0 else -1.0
-    k1 = np.empty(10)
-    k2 = np.empty(10)
-    k3 = np.empty(10)
-    k4 = np.empty(10)
-    k5 = np.empty(10)
-    k6 = np.empty(10)
-    k7 = np.empty(10)
-    tmp = np.empty(10)
-    new = np.empty(10)
-    trial = np.empty(10)
+    size = y.shape[0]  # 10, or 12 with the horizontal position (x, y) carried along
+    k1 = np.empty(size)
+    k2 = np.empty(size)
+    k3 = np.empty(size)
+    k4 = np.empty(size)
+    k5 = np.empty(size)
+    k6 = np.empty(size)
+    k7 = np.empty(size)
+    tmp = np.empty(size)
+    new = np.empty(size)
+    trial = np.empty(size)
     scale = np.empty(10)
     reach = c.reach
     speed = max(math.sqrt(c.g * reach), 0.01)
@@ -633,6 +632,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     h = 1e-4
     _derivative(y, k1, c, mode, dx, dy)
     accepted = 0
+    stalled = 0
     while True:
         if settle and below_barrier(y, c):
             return t, mode, BELOW_BARRIER
@@ -681,7 +681,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         if _crossed(ev):
             # Bisect the step for the first time an event function crosses.
             lo, hi = 0.0, h
-            for i in range(10):
+            for i in range(size):
                 trial[i] = new[i]
             while hi - lo > EVENT_TIME and hi - lo > 1e-15 * hi:
                 mid = 0.5 * (lo + hi)
@@ -689,13 +689,18 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 counts[2] += 1.0
                 if _crossed(_events(new, c, mode, dx, dy, sx, sy, floor, band)):
                     hi = mid
-                    for i in range(10):
+                    for i in range(size):
                         trial[i] = new[i]
                 else:
                     lo = mid
-            for i in range(10):
+            for i in range(size):
                 y[i] = trial[i]
             t += hi
+            # Events in a row that each advance less than STALL_TIME: the run has stalled (a
+            # slide on the cone's boundary stopping as it starts); the caller restarts it.
+            stalled = stalled + 1 if hi < STALL_TIME else 0
+            if stalled > STALL_EVENTS:
+                return t, mode, STEP_FAILED
             if mode == ROLLING:
                 counts[6] += hi
             ev = _events(y, c, mode, dx, dy, sx, sy, floor, band)
@@ -748,7 +753,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         t += h
         if mode == ROLLING:
             counts[6] += h
-        for i in range(10):
+        for i in range(size):
             y[i] = new[i]
         gap, drift = _project(y, c, mode)
         counts[4] = max(counts[4], gap)
@@ -756,9 +761,18 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # First same as last: k7, the derivative at the step's end before the projection (which
         # moves the state by the drift reported, ≲1e-11 m and 1e-9 m/s, measured: far below the
         # step's tolerance), as contact_phase keeps it across n's renormalisation.
-        for i in range(10):
+        for i in range(size):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+        if mode == SLIDING and _sticks(y, c):
+            # A slide below SLIP_FLOOR whose rolling force is back inside the cone has stopped
+            # (the stick test of a slip's stop, for a slide that started below the floor and
+            # never crossed it: one hovering on the cone's boundary would otherwise be followed
+            # with steps shrinking as its slip turns).
+            mode = ROLLING
+            _project(y, c, ROLLING)
+            counts[3] += 1.0
+            _derivative(y, k1, c, mode, dx, dy)
 
 
 class RigidRun(NamedTuple):
@@ -812,8 +826,10 @@ def advance_rigid(
 
     Parameters
     ----------
-    y : ndarray, shape (10,)
-        The state; z is first set so that the lowest rim point touches the table (gap 0), and a
+    y : ndarray, shape (10,) or (12,)
+        The state; with 12 entries the last two are the horizontal position (x, y) of the
+        centre of mass, m, carried along (integrated, outside the step's error control). z is
+        first set so that the lowest rim point touches the table (gap 0), and a
         normal contact speed within ``approach`` is removed by a frictionless normal impulse.
     c : Contact
         The coin, the surface (μ, rolling and pivoting resistance; e is not used: no impact

@@ -52,6 +52,11 @@ class Distribution(ABC):
     """Mean value (a field or a property of each kind)."""
 
     @property
+    @abstractmethod
+    def std(self) -> float:
+        """Standard deviation (0 for a single value)."""
+
+    @property
     def is_fixed(self) -> bool:
         """True for a single value (no spread)."""
         return False
@@ -86,6 +91,12 @@ def _u(u: ArrayLike) -> FloatArray:
     return np.asarray(u, dtype=float)
 
 
+_LARGEST = float(np.finfo(float).max)
+_SPAN = 10.0
+"""A normal's quantiles reach mean ± 8.3 sd in double precision (u = 1 − 2⁻⁵³); mean ± 10 sd
+must be finite for every one of them to be."""
+
+
 @dataclass(frozen=True)
 class Fixed(Distribution):
     """A single value: the parameter does not vary."""
@@ -93,7 +104,7 @@ class Fixed(Distribution):
     value: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "value", float(v.finite("Fixed value", self.value)))
+        object.__setattr__(self, "value", v.number("Fixed value", self.value))
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return np.full(size, self.value)
@@ -107,6 +118,10 @@ class Fixed(Distribution):
     @property
     def mean(self) -> float:  # type: ignore[override]
         return self.value
+
+    @property
+    def std(self) -> float:
+        return 0.0
 
     @property
     def is_fixed(self) -> bool:
@@ -135,11 +150,16 @@ class Uniform(Distribution):
     high: float
 
     def __post_init__(self) -> None:
-        lo = float(v.finite("Uniform low", self.low))
-        hi = float(v.finite("Uniform high", self.high))
+        lo = v.number("Uniform low", self.low)
+        hi = v.number("Uniform high", self.high)
         if not lo < hi:
             what = "empty" if lo == hi else "reversed"
             raise ValueError(f"range {lo:g}:{hi:g} is {what}: the low end must be below the high")
+        if not math.isfinite(hi - lo):  # its width and every quantile would be inf
+            raise ValueError(
+                f"range {lo:g}:{hi:g} is too wide: its ends must be less than {_LARGEST:.3g} "
+                "apart (the largest float)"
+            )
         object.__setattr__(self, "low", lo)
         object.__setattr__(self, "high", hi)
 
@@ -155,6 +175,10 @@ class Uniform(Distribution):
     @property
     def mean(self) -> float:  # type: ignore[override]
         return 0.5 * (self.low + self.high)
+
+    @property
+    def std(self) -> float:
+        return (self.high - self.low) / math.sqrt(12.0)
 
     @property
     def bounds(self) -> tuple[float, float]:
@@ -182,8 +206,17 @@ class Normal(Distribution):
     sd: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mean", float(v.finite("Normal mean", self.mean)))
-        object.__setattr__(self, "sd", float(v.positive("Normal standard deviation", self.sd)))
+        mean = v.number("Normal mean", self.mean)
+        sd = float(
+            v.positive("Normal standard deviation", v.number("Normal standard deviation", self.sd))
+        )
+        if not math.isfinite(abs(mean) + _SPAN * sd):  # its quantiles would be inf
+            raise ValueError(
+                f"normal({mean:g}, sd {sd:g}) is too wide: mean ± {_SPAN:g} sd must stay below "
+                f"{_LARGEST:.3g} (the largest float)"
+            )
+        object.__setattr__(self, "mean", mean)
+        object.__setattr__(self, "sd", sd)
 
     def sample(self, rng: np.random.Generator, size: int) -> FloatArray:
         return rng.normal(self.mean, self.sd, size)
@@ -198,6 +231,10 @@ class Normal(Distribution):
 
         with np.errstate(over="ignore"):  # a subnormal sd: ±inf, the step that is the limit
             return np.asarray(ndtr((_u(x) - self.mean) / self.sd), dtype=float)
+
+    @property
+    def std(self) -> float:
+        return self.sd
 
     def scaled(self, factor: float) -> Normal:
         return Normal(self.mean * factor, self.sd * factor)
@@ -222,8 +259,13 @@ class TruncatedNormal(Distribution):
     high: float
 
     def __post_init__(self) -> None:
-        m = float(v.finite("TruncatedNormal mean", self.normal_mean))
-        sd = float(v.positive("TruncatedNormal standard deviation", self.sd))
+        m = v.number("TruncatedNormal mean", self.normal_mean)
+        sd = float(
+            v.positive(
+                "TruncatedNormal standard deviation",
+                v.number("TruncatedNormal standard deviation", self.sd),
+            )
+        )
         lo, hi = float(self.low), float(self.high)
         if not lo < hi or math.isnan(lo) or math.isnan(hi):
             raise ValueError(f"truncation range [{lo:g}, {hi:g}] is empty")
@@ -256,6 +298,10 @@ class TruncatedNormal(Distribution):
     @property
     def mean(self) -> float:  # type: ignore[override]
         return float(self._frozen().mean())
+
+    @property
+    def std(self) -> float:
+        return float(self._frozen().std())
 
     @property
     def kept(self) -> float:
@@ -305,7 +351,8 @@ def as_distribution(value: Distribution | float | int, name: str = "value") -> D
         return value
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise TypeError(
-            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got {value!r}"
+            f"{name}: expected a number or a Distribution (Fixed, Uniform, Normal), got "
+            f"{v.shown(value)}"
         )
     return Fixed(float(v.finite(name, value)))
 

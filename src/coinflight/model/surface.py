@@ -17,7 +17,7 @@ from coinflight.model.distributions import (
 
 SurfaceKind = Literal["hand", "table"]
 
-ENDINGS = ("rocking", "contact")
+ENDINGS = ("rocking", "contact", "rigid")
 """How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
 
 AIR_DENSITY = 1.2
@@ -61,8 +61,8 @@ spread over the contact arc: an assumption, as the rolling resistance (band 1e-5
 MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
 ROCKING_HAS_NO_RESISTANCE = (
-    "only the 3-D contact ending (ending='contact', --ending contact) has rolling and pivoting "
-    "resistance, which the rocking ending would ignore"
+    "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
+    "and pivoting resistance, which the rocking ending would ignore"
 )
 """The one refusal of a rolling or pivoting resistance given with the rocking ending, after
 what was given (``rolling resistance 0.0002 m: …``; a distribution of them drawn toss by toss
@@ -70,8 +70,9 @@ too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, co
 and web alike."""
 
 TABLE_ONLY = (
-    "applies to --surface table only (Surface kind 'table'): a catch in the hand is at the "
-    "launch height and has no bounce, rocking or contact phase"
+    "applies to --surface table only (Surface(kind='table') in Python), not to a catch in the "
+    "hand (--surface hand, the default): the hand catches the coin at the launch height, with "
+    "no bounce, rocking or contact phase"
 )
 """The one refusal of a table's option given to a catch in the hand, after what was given
 (``--ending applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5 applies
@@ -157,11 +158,11 @@ class Surface:
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
         (:mod:`coinflight.core.contact_phase`); assumptions, see
-        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"``
-        only: the rocking ending has none, and refuses one given to it (ValueError,
-        :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch in the hand
-        (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A default is
-        range-checked as a given value is, but marked as not given: ``Surface("table",
+        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"`` or
+        ``ending="rigid"`` only: the rocking ending has none, and refuses one given to it
+        (ValueError, :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch
+        in the hand (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A
+        default is range-checked as a given value is, but marked as not given: ``Surface("table",
         ending="contact")`` equals ``Surface("table", rolling_resistance=1e-4,
         ending="contact")``, yet ``dataclasses.replace(..., ending="rocking")`` accepts the
         first (its resistances are defaults, which the rocking ending keeps unused) and refuses
@@ -169,10 +170,15 @@ class Surface:
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
-        Used only with ``ending="contact"``, as are the two resistances.
-    ending : {"rocking", "contact"}
+        Used only with ``ending="contact"``.
+    ending : {"rocking", "contact", "rigid"}
         How a table landing ends once its bounces die out (a rebound slower than the rest
-        speed). ``"rocking"`` (default): the planar Housner rocking hand-off of
+        speed). ``"rigid"``: the rigid, event-driven 3-D ending of
+        :mod:`coinflight.core.rigid_ending` (rolling, sliding and pivoting on one rim point
+        with the contact force of the constraint, exact Coulomb friction, the rolling and
+        pivoting resistances, hops flown in closed form, impacts of the other rim; status
+        "settled in contact"); it takes the resistances as the contact ending does.
+        ``"rocking"`` (default): the planar Housner rocking hand-off of
         :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
         the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
         phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
@@ -194,11 +200,11 @@ class Surface:
     >>> Surface("hand", restitution=0.7)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: restitution 0.7 applies to --surface table only (Surface kind 'table'): ...
+    ValueError: restitution 0.7 applies to --surface table only (Surface(kind='table') in ...
     >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: rolling resistance 0.0002 m: only the 3-D contact ending (ending='contact', ...
+    ValueError: rolling resistance 0.0002 m: only the 3-D endings (ending='contact' or 'rigid', ...
     """
 
     kind: SurfaceKind = "hand"
@@ -208,7 +214,7 @@ class Surface:
     rolling_resistance: float = _UNSET_ROLLING
     pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
-    ending: Literal["rocking", "contact"] = "rocking"
+    ending: Literal["rocking", "contact", "rigid"] = "rocking"
 
     def __post_init__(self) -> None:
         v.choice("surface", self.kind, ("hand", "table"))
@@ -244,7 +250,7 @@ class Surface:
         if self.kind == "hand" and (given or resistances or self.ending != "rocking"):
             ending = [f"ending {self.ending!r}"] if self.ending != "rocking" else []
             raise ValueError(f"{', '.join(ending + given + resistances)} {TABLE_ONLY}")
-        if resistances and self.ending != "contact":
+        if resistances and self.ending == "rocking":
             raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
 
     def __repr__(self) -> str:

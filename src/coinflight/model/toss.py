@@ -41,6 +41,32 @@ def check_gravity(g: object) -> float:
     return value
 
 
+def _together(
+    first: str, a: tuple[int, ...], second: str, b: tuple[int, ...], each: str
+) -> tuple[int, ...]:
+    """The batch shape of two arrays broadcast together, or ValueError naming both: when
+    their shapes do not broadcast, and when both have axes but not as many (NumPy would add
+    axes on the left: 4 spins and 4 × 1 flight times would make 4 × 4 tosses)."""
+    try:
+        batch = np.broadcast_shapes(a, b)
+    except ValueError:
+        raise ValueError(
+            f"{first} and {second} do not broadcast together; {each}, a single one, or "
+            "shapes NumPy broadcasts"
+        ) from None
+    if a and b and len(a) != len(b):
+        raise ValueError(
+            f"{first} and {second} have different numbers of axes, which would broadcast to "
+            f"{_tosses(batch)}; {each}, a single one, or both with the same number of axes"
+        )
+    return batch
+
+
+def _tosses(shape: tuple[int, ...]) -> str:
+    """A batch shape in words: "4 tosses", "4 × 4 tosses"."""
+    return " × ".join(str(n) for n in shape) + (" tosses" if shape != (1,) else " toss")
+
+
 @dataclass(frozen=True, eq=False)
 class Toss:
     """Initial conditions of one toss, or of a batch of tosses (arrays broadcast together).
@@ -76,13 +102,17 @@ class Toss:
         flight_time = FLIGHT_TIME.check_array(self.flight_time)
         g = check_gravity(self.g)
         v.choice("start", self.start, ("heads", "tails"))
-        try:
-            np.broadcast_shapes(omega.shape[:-1], flight_time.shape)
-        except ValueError:
+        spins = omega.shape[:-1]
+        batch = _together(
+            f"omega (shape {omega.shape}, {_tosses(spins)})", spins,
+            f"flight time (shape {flight_time.shape})", flight_time.shape,
+            f"give one flight time per spin (shape {spins})",
+        )  # fmt: skip
+        if 0 in batch:
             raise ValueError(
                 f"omega (shape {omega.shape}) and flight time (shape {flight_time.shape}) "
-                "do not broadcast together"
-            ) from None
+                "hold no toss; give at least one spin (ωx, ωy, ωz) and one flight time"
+            )
         spin, time = np.broadcast_arrays(np.max(np.abs(omega), axis=-1), flight_time)
         if spin.size:
             with np.errstate(over="ignore"):
@@ -230,8 +260,23 @@ class Flight:
             raise TypeError(f"toss must be a Toss, got {type(self.toss).__name__}")
 
     def at(self, t: ArrayLike) -> FlightState:
-        """State at times t (s), broadcast against the toss batch."""
-        t = v.finite("t", t, "s")
+        """State at times 0 ≤ t ≤ 10⁴ s from launch, broadcast against the toss batch (the
+        same number of axes, or one of them a single value): the free flight's closed form
+        (past the catch at t = T too, as the figures draw the cone); ValueError for a time
+        before the launch, or a phase beyond the toss's own budget."""
+        t = v.non_negative("t", t, "s")
+        if t.size and float(np.max(t)) > FLIGHT_TIME.high:
+            raise ValueError(
+                f"t must be at most {FLIGHT_TIME.high:g} s (the longest flight time), got "
+                f"{float(np.max(t))!r} s"
+            )
+        if t.size and self.toss.omega.size:
+            spin = float(np.max(np.abs(self.toss.omega)))
+            v.phase_budget(spin, float(np.max(t)), "largest spin component × t")
+        _together(
+            f"the toss batch ({_tosses(self.toss.shape)})", self.toss.shape,
+            f"t (shape {t.shape})", t.shape, f"give one t per toss (shape {self.toss.shape})",
+        )  # fmt: skip
         i1, i3 = self.coin.moments
         w0 = self.toss.omega
         att = torque_free.attitude(w0, i1, i3, t, self.toss.start_sign)

@@ -77,6 +77,14 @@ lead, 2026-11-23 20:03 UTC), 839 quiet (load 1.4, 16:42 UTC); 466 at a load of 3
 5.7 (17:51 UTC), 180 at 7.8 (18:23 UTC); 207 at 9.7 (N = 300, helper w-fix, 21:03 UTC) and
 224 at 10.1 (300 tosses, 21:06 UTC)."""
 
+RIGID_TOSSES_PER_SECOND = 50.0
+"""Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
+e > 0), drag-free or through air, for the work bounds: at or below the rates measured on the
+loaded machine. ``python benchmarks/bench_bounce.py --rigid-rates 1000 --rounds 1`` (US nickel,
+e = 0.5, μ = 0.3, resistances 1e-4 m, 2 threads on the project's 2-core machine): 91 vigorous
+and 82 human tosses a second at a load of 5.7, 173 and 93 at 3.0 (the coins roll for a median
+1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
+
 CONTACT_PER_TOSS_PER_SECOND = 75.0
 """The same landings when every toss has its own contact parameters (a distribution of e, μ
 or the resistances, drawn toss by toss: each landing then builds its own contact record and
@@ -121,7 +129,8 @@ PER_TOSS = ("restitution", "friction", "rolling_resistance", "pivoting_resistanc
 resistances act in the contact ending only, :data:`RESISTANCES`)."""
 
 RESISTANCES = ("rolling_resistance", "pivoting_resistance")
-"""The contact parameters only the 3-D contact ending (``Surface(ending="contact")``) uses."""
+"""The contact parameters only the 3-D endings (``Surface(ending="contact")`` and
+``Surface(ending="rigid")``) use."""
 
 NO_RESISTANCE_DISTRIBUTIONS = ROCKING_HAS_NO_RESISTANCE
 """The refusal of per-toss rolling and pivoting resistances with the rocking ending (one line,
@@ -206,7 +215,9 @@ def contact_record(
     ``Surface`` checked on construction (``g`` is the caller's).
     """
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, ROCKING_ENDING, Contact
+    from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
+
+    endings = {"rocking": ROCKING_ENDING, "contact": CONTACT_ENDING, "rigid": RIGID_ENDING}
 
     return Contact.build(
         **coin_body(coin),
@@ -218,7 +229,7 @@ def contact_record(
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
         contact_time=surface.contact_time,
-        ending=CONTACT_ENDING if surface.ending == "contact" else ROCKING_ENDING,
+        ending=endings[surface.ending],
         corner_radius=coin.corner_radius,
     )
 
@@ -435,6 +446,8 @@ class Landing:
     max_bounces : int, optional
         Stop at the contact that follows this many bounces (0: the first contact) and report
         the well the coin is in there; by default the coin bounces until it settles.
+    start : StartState, optional
+        Set by :meth:`from_state` (a landing from any state, no toss): build it there.
 
     Examples
     --------
@@ -706,7 +719,7 @@ class TableLanding(OutcomeModel):
         :attr:`contact_refusal`)."""
         if self.drag is not None:
             return ()
-        if self.surface.ending == "contact":
+        if self.surface.ending != "rocking":  # the 3-D endings take the resistances
             return PER_TOSS
         return tuple(name for name in PER_TOSS if name not in RESISTANCES)
 
@@ -721,12 +734,12 @@ class TableLanding(OutcomeModel):
         """Tosses a second for the work bounds: :data:`BOUNCING_TOSSES_PER_SECOND`, or with
         air drag :data:`AIR_LANDINGS_PER_SECOND`; with the experimental ``ending="contact"``
         (landings carried to rest: e > 0, no bounce limit) :data:`CONTACT_TOSSES_PER_SECOND`,
-        through air :data:`CONTACT_AIR_LANDINGS_PER_SECOND`."""
-        contact = (
-            self.surface.ending == "contact"
-            and self.surface.restitution > 0.0
-            and self.max_bounces is None
-        )
+        through air :data:`CONTACT_AIR_LANDINGS_PER_SECOND`; with ``ending="rigid"``
+        :data:`RIGID_TOSSES_PER_SECOND`."""
+        ended = self.surface.restitution > 0.0 and self.max_bounces is None
+        if ended and self.surface.ending == "rigid":
+            return RIGID_TOSSES_PER_SECOND
+        contact = self.surface.ending == "contact" and ended
         if contact:
             return (
                 CONTACT_TOSSES_PER_SECOND if self.drag is None else CONTACT_AIR_LANDINGS_PER_SECOND

@@ -33,6 +33,17 @@ MAX_FRAMES = 2000
 CURVE_POINTS_PER_TURN = 40
 """Points a turn of the n·Z curve beside the coin (at most :data:`MAX_CURVE_POINTS`)."""
 
+_TAG: dict[str, Any] = {
+    "fontsize": 10,
+    "weight": "bold",
+    "bbox": {"facecolor": "white", "alpha": 0.85, "edgecolor": "none", "pad": 1.5},
+}
+"""The n·Z panel's "heads up" / "tails up": bold on white, readable over the curve."""
+
+MOVIE_DPI = 120
+"""Default resolution of a movie: its 8 × 6.4 inch figure becomes 960 × 768 pixels, the labels
+readable on a projector (80 gave 640 × 512 and text a few pixels high)."""
+
 
 @dataclass(frozen=True, eq=False)
 class TossAnimation:
@@ -69,7 +80,7 @@ class TossAnimation:
             blit=False,
         )
 
-    def rgb_frames(self, dpi: int = 80) -> Iterator[np.ndarray]:
+    def rgb_frames(self, dpi: int = MOVIE_DPI) -> Iterator[np.ndarray]:
         """Each frame as an (h, w, 3) uint8 array, drawn by blitting over a static background.
 
         The axes, labels and curves are drawn once; only the coin, its normal, the clock and the
@@ -103,7 +114,7 @@ class TossAnimation:
                 artist.set_animated(False)
             fig.set_dpi(old_dpi)
 
-    def save(self, path: str | os.PathLike[str], dpi: int = 80) -> Path:
+    def save(self, path: str | os.PathLike[str], dpi: int = MOVIE_DPI) -> Path:
         """Write a .gif (Pillow) or .mp4 (ffmpeg), whole or not at all: :func:`save_animation`."""
         return save_animation(self, path, dpi=dpi)
 
@@ -200,7 +211,7 @@ def animate_toss(
     ax3.set_box_aspect((2 * half, 2 * half, z_hi - z_lo), zoom=1.1)
     ax3.set_xlabel("X (cm)")
     ax3.set_ylabel("Y (cm)")
-    ax3.set_zlabel("height (cm)", labelpad=10)
+    ax3.set_zlabel("height (cm)", labelpad=18)  # clear of the tick labels
     ax3.set_xticks([-round(r_draw), 0, round(r_draw)])
     ax3.set_yticks([-round(r_draw), 0, round(r_draw)])
     ax3.plot([0, 0], [0, 0], [0, 100 * apex], color="#bbbbbb", lw=0.8, ls=":")
@@ -220,8 +231,8 @@ def animate_toss(
     ax_n.set_xlim(0, t_end)
     ax_n.set_ylim(-1.05, 1.05)
     ax_n.set_ylabel("n·Z (heads normal, up)")
-    ax_n.text(0.01 * t_end, 0.9, "heads up", color=HEADS_COLOR, fontsize=9, va="top")
-    ax_n.text(0.01 * t_end, -0.9, "tails up", color=TAILS_COLOR, fontsize=9, va="bottom")
+    ax_n.text(0.01 * t_end, 0.9, "heads up", color=HEADS_COLOR, va="top", **_TAG)
+    ax_n.text(0.01 * t_end, -0.9, "tails up", color=TAILS_COLOR, va="bottom", **_TAG)
 
     ax_h = fig.add_subplot(grid[1, 1], sharex=ax_n)
     ax_h.plot(times, 100.0 * height, color="black", lw=1)
@@ -276,7 +287,9 @@ def ffmpeg_available() -> bool:
     return bool(writers.is_available("ffmpeg"))
 
 
-def save_animation(movie: TossAnimation, path: str | os.PathLike[str], dpi: int = 80) -> Path:
+def save_animation(
+    movie: TossAnimation, path: str | os.PathLike[str], dpi: int = MOVIE_DPI
+) -> Path:
     """Write the animation to ``path`` (.gif or .mp4), whole or not at all.
 
     Raises

@@ -66,7 +66,7 @@ def plot_bias(
     -------
     matplotlib.figure.Figure
     """
-    fig = new_figure(figsize=(6.4, 6.8))
+    fig = new_figure(figsize=(6.4, 7.4))
     full, zoom = fig.subplots(2, 1, height_ratios=[1, 2.3])
     psi = np.linspace(0.0, 180.0, 2881)
     p = same_side_probability(psi, degrees=True)
@@ -79,6 +79,7 @@ def plot_bias(
     full.set_ylim(0.45, 1.02)
     full.set_xticks(np.arange(0, 181, 30))
     full.add_patch(_zoom_box(psi_lim, p_lim))
+    full.set_xlabel("ψ (degrees)", fontsize="small")
     full.set_ylabel("P(same side)", fontsize="small")
     full.set_title(
         "Same-side bias of a precessing coin (Diaconis, Holmes & Montgomery 2007)\n"
@@ -90,7 +91,8 @@ def plot_bias(
     zoom.set_xticks(np.arange(np.ceil(psi_lim[0] / 10) * 10, psi_lim[1] + 0.1, 10))
     zoom.set_xlabel("precession angle ψ between normal and angular momentum (degrees)")
     zoom.set_ylabel("P(lands on the side it started)")
-    zoom.legend(loc="upper center", fontsize="x-small")
+    # below the panels, where it covers no curve or point
+    fig.legend(*zoom.get_legend_handles_labels(), loc="outside lower center", fontsize="x-small")
     return fig
 
 

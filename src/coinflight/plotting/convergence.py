@@ -1,8 +1,10 @@
-"""Figure: error of P(heads) against configurations / events (Stefan & Cheche Figs 2-3).
+"""Figures: P(heads) against configurations / events (Stefan & Cheche Figs 2a, 2b, 3a, 3b).
 
-The paper plots the estimates themselves on a linear scale; here the error |estimate − exact|
-is drawn against the sample size on log–log axes, where a rate n^-k is a straight line of
-slope −k, so that the methods' rates can be read and compared.
+Two forms of the same numbers. :func:`plot_estimates` is the paper's: the estimates themselves
+on a linear scale against the number of configurations or events, both methods, the exact
+value as a line, to set beside the paper. :func:`plot_convergence` draws the error
+|estimate − exact| against the sample size on log–log axes, where a rate n^-k is a straight
+line of slope −k, so that the methods' rates can be read and compared.
 """
 
 from __future__ import annotations
@@ -128,6 +130,80 @@ def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: 
         )
 
 
+_SYMBOLS = {"omega_x": "ωx0", "omega_y": "ωy0", "omega_z": "ωz0", "flight_time": "T"}
+
+
+def default_title(result: Convergence, what: str) -> str:
+    """``what``, then the tosses: the ranges of ωx0, ωy0, ωz0 and T with units, the coin and
+    the face up at launch (from the distribution's description)."""
+    first, *rest = result.description.splitlines() or [""]
+    ranges = []
+    for line in rest:
+        name, _, value = line.partition(" = ")
+        if name in _SYMBOLS:
+            ranges.append(f"{_SYMBOLS[name]} {value}")
+    return "\n".join(x for x in (what, ", ".join(ranges), first) if x)
+
+
+def plot_estimates(result: Convergence, title: str | None = None) -> Figure:
+    """P(heads) against the number of configurations or events: the paper's form of its Figs
+    2a, 2b, 3a and 3b.
+
+    Each method's estimates are a line with markers (x on a log scale, the sizes span decades);
+    a method with a standard error carries its 95 % interval as error bars; the exact value is
+    a black line, and method B's limit (its coarse grid's exact count) a dashed one when it
+    differs from it. Without an exact value the lines are the estimates alone.
+    """
+    from coinflight.plotting.style import EXACT_COLOR
+
+    fig = new_figure(figsize=(6.4, 6.0))
+    ax = fig.add_subplot()
+    for method in result.methods:
+        pts = result.series(method)
+        estimator = registry.get(method)
+        x = np.array([p.samples for p in pts], dtype=float)
+        y = np.array([p.p_heads for p in pts])
+        ci = [p.ci95 for p in pts]
+        yerr = None
+        if all(c is not None for c in ci):
+            lo = np.array([c[0] for c in ci if c is not None])
+            hi = np.array([c[1] for c in ci if c is not None])
+            yerr = np.stack([y - lo, hi - y])
+        ax.errorbar(
+            x,
+            y,
+            yerr=yerr,
+            fmt="-",
+            marker=estimator.marker,
+            color=estimator.color,
+            markersize=4,
+            linewidth=1.2,
+            capsize=2 if yerr is not None else 0,
+            label=_series_label(result, method) + (", 95 % interval" if yerr is not None else ""),
+        )
+    if result.exact is not None:
+        ax.axhline(
+            result.exact,
+            color=EXACT_COLOR,
+            linewidth=1.2,
+            label=f"exact P(heads) = {result.exact:.6f}",
+        )
+    if result.coarse_limit is not None and result.coarse_limit != result.exact:
+        ax.axhline(
+            result.coarse_limit,
+            color=registry.get("monte-carlo").color,
+            linestyle="--",
+            linewidth=1,
+            label=f"method B's limit: the {result.grid_cells}-cell grid, {result.coarse_limit:.6f}",
+        )
+    ax.set_xscale("log")
+    ax.set_xlabel("number of configurations (A) or events (B)")
+    ax.set_ylabel("P(heads)")
+    ax.set_title(title or default_title(result, "P(heads) as the sample grows"), fontsize=10)
+    fig.legend(loc="outside lower center", ncols=1, fontsize="x-small")
+    return fig
+
+
 def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     """|P(heads) − exact| against the number of configurations or events, log–log axes.
 
@@ -139,7 +215,8 @@ def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     Method B converges to its coarse grid's exact count, not to the exact value: the distance
     between the two, the error B cannot go below, is a dashed horizontal line.
     Errors of 0 (an exact hit) are drawn at the axis' floor. Without an exact value the errors
-    are measured from the largest grid estimate (named on the y axis).
+    are measured from the largest grid estimate (named on the y axis). The default title
+    names the tosses' ranges and coin (:func:`default_title`).
     """
     ref, ref_name = error_reference(result)
     errors = [abs(p.p_heads - ref) for p in result.points]
@@ -164,9 +241,11 @@ def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     ax.set_ylim(bottom=floor)
     ax.set_xlabel("number of configurations (A) or events (B)")
     ax.set_ylabel(f"|P(heads) − {ref_name}|" + (f"  ({ref:.6f})" if ref_name == "exact" else ""))
-    ax.set_title(title or "Error of P(heads) as the sample grows")
+    ax.set_title(
+        title or default_title(result, "Error of P(heads) as the sample grows"), fontsize=10
+    )
     fig.legend(loc="outside lower center", ncols=2, fontsize="x-small")
     return fig
 
 
-__all__ = ["error_reference", "fitted_slope", "plot_convergence"]
+__all__ = ["default_title", "error_reference", "fitted_slope", "plot_convergence", "plot_estimates"]

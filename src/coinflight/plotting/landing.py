@@ -79,28 +79,29 @@ def plot_contact_maps(maps: ContactMaps, coin_name: str = "US nickel") -> Figure
     about 1/2) and P(edge), each cell annotated with its value; ``maps.n`` tosses per cell."""
     fig = new_figure(figsize=(11.0, 4.8))
     axes = fig.subplots(1, 2)
-    de = np.diff(maps.restitution).mean() if len(maps.restitution) > 1 else 0.1
-    dm = np.diff(maps.friction).mean() if len(maps.friction) > 1 else 0.1
-    extent = (
-        maps.restitution[0] - de / 2,
-        maps.restitution[-1] + de / 2,
-        maps.friction[0] - dm / 2,
-        maps.friction[-1] + dm / 2,
-    )
+    # one cell per computed (e, μ), labelled with its values: a table of cells, so the axes show
+    # only the values computed (none below 0, none between them)
     worst = float(np.max(np.abs(maps.same - 0.5)))
     panels = (
         (maps.same, "P(same side at rest)", "RdBu_r", 0.5 - worst, 0.5 + worst),
         (maps.edge, "P(edge)", "Greens", 0.0, max(float(maps.edge.max()), 1e-9)),
     )
     for ax, (values, label, cmap, lo, hi) in zip(axes, panels, strict=True):
-        im = ax.imshow(
-            values, origin="lower", extent=extent, aspect="auto", cmap=cmap, vmin=lo, vmax=hi
-        )
+        im = ax.pcolormesh(values, cmap=cmap, vmin=lo, vmax=hi)
         fig.colorbar(im, ax=ax, label=label)
         if values.size <= 150:
-            for i, m in enumerate(maps.friction):
-                for j, e in enumerate(maps.restitution):
-                    ax.text(e, m, f"{values[i, j]:.3f}", ha="center", va="center", fontsize=6)
+            for i, j in np.ndindex(values.shape):
+                ax.text(
+                    j + 0.5,
+                    i + 0.5,
+                    f"{values[i, j]:.3f}",
+                    ha="center",
+                    va="center",
+                    fontsize=6,
+                    color=_ink(im.cmap(im.norm(values[i, j]))),
+                )
+        ax.set_xticks(np.arange(len(maps.restitution)) + 0.5, [f"{e:g}" for e in maps.restitution])
+        ax.set_yticks(np.arange(len(maps.friction)) + 0.5, [f"{m:g}" for m in maps.friction])
         ax.set_xlabel("restitution e")
         ax.set_ylabel("friction μ")
         ax.set_title(label, fontsize="medium")
@@ -112,6 +113,18 @@ def plot_contact_maps(maps: ContactMaps, coin_name: str = "US nickel") -> Figure
         fontsize="medium",
     )
     return fig
+
+
+def _ink(rgba: tuple[float, ...]) -> str:
+    """Black or white, whichever contrasts more with a cell of colour ``rgba``: white when the
+    colour's relative luminance L (WCAG 2, sRGB) is below 0.179, where the contrast ratios
+    (1.05 / (L + 0.05) for white, (L + 0.05) / 0.05 for black) are equal."""
+
+    def linear(x: float) -> float:
+        return x / 12.92 if x <= 0.04045 else ((x + 0.055) / 1.055) ** 2.4
+
+    r, g, b = (linear(x) for x in rgba[:3])
+    return "white" if 0.2126 * r + 0.7152 * g + 0.0722 * b < 0.179 else "black"
 
 
 def plot_nickel_band(bands: Sequence[Band]) -> Figure:

@@ -113,10 +113,36 @@ def save_figure(
     ``path`` with a suffix is written in that format; without one, it is written once per format
     in ``formats`` (default PNG and SVG). The files are staged and renamed into place together
     (:func:`coinflight._files.replacing_all`), so an interrupted run leaves no half-written
-    figure, and a PNG never appears without its SVG.
+    figure, and a PNG never appears without its SVG. PNG, SVG and PDF files say where they
+    came from in their metadata (:func:`figure_metadata`).
     """
     paths = figure_paths(path, formats=formats)
     with replacing_all(paths) as temps:
         for p, tmp in zip(paths, temps, strict=True):
-            fig.savefig(tmp, format=p.suffix.lstrip(".").lower(), dpi=dpi)
+            fmt = p.suffix.lstrip(".").lower()
+            fig.savefig(tmp, format=fmt, dpi=dpi, metadata=figure_metadata(fmt))
     return paths
+
+
+def figure_metadata(fmt: str) -> dict[str, str] | None:
+    """What a figure file of format ``fmt`` records of where it came from
+    (:func:`coinflight._provenance.provenance`): the coinflight version and, when a command
+    made it, that command line. PNG: text chunks ``Software`` and ``Command``; SVG: the
+    Dublin Core ``Creator`` and ``Source``; PDF: ``Creator`` and ``Subject``. None for the
+    formats whose metadata matplotlib does not take the same way (their files carry none)."""
+    import matplotlib
+
+    from coinflight._provenance import provenance
+
+    made = provenance()
+    creator = f"coinflight {made['coinflight_version']} (Matplotlib {matplotlib.__version__})"
+    command = made.get("command")
+    keys = {
+        "png": ("Software", "Command"),
+        "svg": ("Creator", "Source"),
+        "pdf": ("Creator", "Subject"),
+    }
+    if fmt not in keys:
+        return None
+    who, what = keys[fmt]
+    return {who: creator} | ({what: command} if command is not None else {})

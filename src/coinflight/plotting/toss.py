@@ -52,6 +52,9 @@ VIEW_TURN = 40.0
 """Degrees the camera is turned away from the up face's own direction, so that the launch and
 the catch do not hide each other and the tilt still reads."""
 DEFAULT_AZIM = -30.0
+TITLE_GAP = 0.12
+"""Inches of space constrained layout keeps around each panel (its default 0.04 let the figure's
+title touch the top panels' titles)."""
 """Azimuth of a coin panel whose catch lies flat (no horizontal direction to look along)."""
 
 
@@ -161,6 +164,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
     fig = new_figure(figsize=(3.6 * ncols + 4.2, max(4.4 * nrows, 4.6)))
     grid = GridSpec(nrows, ncols + 1, figure=fig, width_ratios=[1.0] * ncols + [1.15])
     lim = ARROW_SCALE * r_mm
+    azimuth = shared_azimuth(normals)  # one viewpoint: the panels compare like with like
     for i in range(k):
         ax: Any = fig.add_subplot(grid[i // ncols, i % ncols], projection="3d")
         ax.computed_zorder = False  # drawn in order: launch, the caught coin's faces, its rim
@@ -177,7 +181,7 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         ax.set_zlim(-lim, lim)
         # zoom < 1 keeps the axis labels inside the panel, clear of the next row and the legend.
         ax.set_box_aspect((1, 1, 1), zoom=PANEL_ZOOM)
-        ax.view_init(elev=VIEW_ELEVATION, azim=catch_azimuth(normals[i]))
+        ax.view_init(elev=VIEW_ELEVATION, azim=azimuth)
         ticks = [-round(r_mm), 0, round(r_mm)]
         ax.set_xticks(ticks)
         ax.set_yticks(ticks)
@@ -259,7 +263,31 @@ def plot_toss(coin: Coin, toss: Toss, *, title: str | None = None, ncols: int = 
         title or f"{coin.name} tossed {toss.start} up with {spin_text}, caught at launch height",
         fontsize=11,
     )
+    # constrained layout packs the suptitle against the 3-D panels' titles: room between them
+    fig.get_layout_engine().set(h_pad=TITLE_GAP)  # type: ignore[union-attr, call-arg]
     return fig
+
+
+def shared_azimuth(normals: FloatArray) -> float:
+    """Azimuth (degrees) of the one camera of every coin panel (heads normals ``normals``,
+    shape (k, 3)): :func:`catch_azimuth` for one toss; for several, of the azimuths at whole
+    degrees (and each toss's own), the one whose view of the worst-seen face up is best (the
+    largest least cosine between the camera and a face up, from :data:`VIEW_ELEVATION`), so
+    that no panel shows its coin edge-on when another view would not."""
+    normals = np.asarray(normals, dtype=float).reshape(-1, 3)
+    if len(normals) == 1:
+        return catch_azimuth(normals[0])
+    up = np.where(normals[:, 2:3] >= 0, normals, -normals)
+    candidates = np.concatenate(
+        [[catch_azimuth(n) for n in normals], np.arange(-180.0, 180.0, 1.0)]
+    )
+    el, az = math.radians(VIEW_ELEVATION), np.radians(candidates)
+    view = np.stack(
+        [math.cos(el) * np.cos(az), math.cos(el) * np.sin(az), np.full_like(az, math.sin(el))],
+        axis=-1,
+    )
+    worst = (view @ up.T).min(axis=1)
+    return float(candidates[int(np.argmax(worst))])
 
 
 def catch_azimuth(normal: FloatArray) -> float:

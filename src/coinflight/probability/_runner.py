@@ -27,16 +27,23 @@ class Executor(Protocol):
     def map(self, fn: Callable[[Any], Any], *iterables: Iterable[Any]) -> Iterator[Any]: ...
 
 
+MAX_THREADS = 1024
+"""Most worker threads of the default pool: more than the tasks or cores only costs memory
+(each thread a stack), and a count beyond any machine (``--threads 99999999999999999999``)
+is a typing slip, refused rather than quietly capped."""
+
+
 def check_runner(executor: object, threads: object, progress: object) -> None:
     """TypeError or ValueError naming the argument unless ``executor`` is None or has a callable
-    ``map``, ``threads`` None or a whole number ≥ 1, ``progress`` None or callable."""
+    ``map``, ``threads`` None or a whole number from 1 to :data:`MAX_THREADS`, ``progress``
+    None or callable."""
     if executor is not None and not callable(getattr(executor, "map", None)):
         raise TypeError(
             "executor must be None (a thread pool) or an object with a map(fn, tasks) method, "
             f"such as a concurrent.futures executor; got {type(executor).__name__}"
         )
     if threads is not None:
-        v.count("threads", threads)
+        v.count("threads", threads, 1, MAX_THREADS)
     v.callable_or_none("progress", progress, "a callable taking the amount of work done")
 
 

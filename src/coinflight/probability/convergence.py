@@ -102,10 +102,14 @@ class Convergence:
         return buf.getvalue()
 
     def write(self, prefix: str | os.PathLike[str]) -> list[Path]:
-        """Write ``prefix.csv`` and ``prefix.json``, each whole or not at all."""
+        """Write ``prefix.csv`` and ``prefix.json`` (with
+        :func:`coinflight._provenance.provenance`), each whole or not at all."""
+        from coinflight._provenance import provenance
+
         base = Path(prefix)
         paths = [base.with_name(base.name + ".csv"), base.with_name(base.name + ".json")]
-        texts = [self.to_csv(), json.dumps(self.to_dict(), indent=2, allow_nan=False) + "\n"]
+        made = {**self.to_dict(), **provenance()}
+        texts = [self.to_csv(), json.dumps(made, indent=2, allow_nan=False) + "\n"]
         for path, text in zip(paths, texts, strict=True):
             write_text(path, text)
         return paths

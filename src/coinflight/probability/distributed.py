@@ -350,13 +350,19 @@ class _Star:
         return self.fn(*args)
 
 
+MAX_LOCAL_WORKERS = 256
+"""Most worker processes of a local cluster (each a Python process of ~100 MB): a count
+beyond any machine is a typing slip, refused before a process starts."""
+
+
 def check_scheduler(scheduler: object, workers: object = None) -> str:
     """``scheduler`` if it is ``"local"`` or ``"tcp://HOST:PORT"``, else ValueError/TypeError
-    naming it; ``workers`` must be None or a whole number ≥ 1 and only with ``"local"``."""
+    naming it; ``workers`` must be None or a whole number from 1 to :data:`MAX_LOCAL_WORKERS`
+    and only with ``"local"``."""
     v.instance("scheduler", scheduler, str, 'a string: "local" or "tcp://HOST:PORT"')
     assert isinstance(scheduler, str)
     if workers is not None:
-        v.count("workers", workers)
+        v.count("workers", workers, 1, MAX_LOCAL_WORKERS)
     if scheduler == "local":
         return scheduler
     match = _ADDRESS.match(scheduler)

@@ -67,15 +67,16 @@ class ProbabilityResults(list[ProbabilityResult]):
 
     def to_dicts(self) -> list[dict[str, Any]]:
         """One flat dictionary per result: the tosses (each parameter as text, e.g.
-        ``"60–90 rad/s"``, ``launch_speed`` when given, coin, start face, g) then
-        :meth:`ProbabilityResult.to_row`."""
+        ``"60–90 rad/s"``, and as numbers to plot: ``omega_x.low``, ``omega_x.high`` (the
+        smallest and largest value, ±inf for a normal), ``omega_x.mean``, ``omega_x.sd`` (the
+        standard deviation, 0 for a single value), SI units; ``launch_speed`` when given, all
+        None when not), coin, start face, g, then :meth:`ProbabilityResult.to_row`."""
         rows = []
         for dist, result in zip(self.distributions, self, strict=True):
-            row: dict[str, Any] = {
-                name: getattr(dist, name).describe(UNITS[name]) for name in PARAMETERS
-            }
-            speed = dist.launch_speed
-            row["launch_speed"] = None if speed is None else speed.describe("m/s")
+            row: dict[str, Any] = {}
+            for name in PARAMETERS:
+                row.update(_described(name, getattr(dist, name), UNITS[name]))
+            row.update(_described("launch_speed", dist.launch_speed, "m/s"))
             row.update(coin=dist.coin.name, start=dist.start, g=dist.g)
             row.update(result.to_row())
             rows.append(row)
@@ -85,6 +86,20 @@ class ProbabilityResults(list[ProbabilityResult]):
         """A pandas DataFrame of :meth:`to_dicts`, one row per distribution (needs
         ``pip install pandas``)."""
         return require_pandas().DataFrame(self.to_dicts())
+
+
+def _described(name: str, dist: Distribution | None, unit: str) -> dict[str, Any]:
+    """A parameter's columns: its text, then ``.low``, ``.high``, ``.mean``, ``.sd``."""
+    if dist is None:
+        return {name: None} | {f"{name}.{stat}": None for stat in ("low", "high", "mean", "sd")}
+    low, high = dist.bounds
+    return {
+        name: dist.describe(unit),
+        f"{name}.low": low,
+        f"{name}.high": high,
+        f"{name}.mean": float(dist.mean),
+        f"{name}.sd": dist.std,
+    }
 
 
 def estimate_many(
@@ -282,8 +297,9 @@ class SweepResults(ProbabilityResults):
 
     def to_dicts(self) -> list[dict[str, Any]]:
         """One flat row per case: :meth:`ProbabilityResults.to_dicts` (parameters as text,
-        coin, start, g, the result's fields) and, for each parameter, its distribution's fields
-        as numbers (``omega_x.kind``, ``omega_x.low``, … ``omega_x.mean``), the coin's
+        and the parameters' numbers ``omega_x.low``, … ``omega_x.sd``, coin, start, g, the
+        result's fields), each parameter's kind and, for a single value, that value
+        (``omega_x.kind``, ``omega_x.value``), the coin's
         dimensions, the outcome model's fields (``surface``, ``restitution``, …), the row's
         ``stream`` (seeded methods) and ``key``. ``p_edge`` is empty where the surface cannot
         leave a coin on its edge (the hand). Of the method's details only the outcome model's
@@ -303,9 +319,8 @@ class SweepResults(ProbabilityResults):
                 dist = inputs[name]
                 if dist is None:
                     continue
-                for field in ("kind", "value", "low", "high", "mean", "sd"):
+                for field in ("kind", "value"):
                     out[f"{name}.{field}"] = dist.get(field)
-                out[f"{name}.mean"] = float(getattr(case.dist, name).mean)
             out.update({f"coin.{k}": x for k, x in inputs["coin"].items() if k != "name"})
             for k, x in inputs["model"].items():
                 out[k] = json.dumps(x) if isinstance(x, dict) else x
@@ -499,11 +514,11 @@ def sweep(
 def table_metadata(results: SweepResults, inputs: Mapping[str, Any] | None = None) -> dict:
     """What a sweep's table records about itself: the package version, the method, n, seed,
     rows, the inputs as given (e.g. the command line's options), the columns of the standard
-    errors."""
-    from coinflight._version import __version__
+    errors; the command line when run by one (:mod:`coinflight._provenance`)."""
+    from coinflight._provenance import provenance
 
     return {
-        "coinflight_version": __version__,
+        **provenance(),
         "method": results.method,
         "n": results.n,
         "seed": results.seed,

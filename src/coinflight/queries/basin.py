@@ -37,14 +37,16 @@ def spin_box(
     if psi is None:
         if precession_rate is not None:
             raise ValueError("--precession-rate goes with --psi; use --omega-x without --psi")
-        return parse_range(omega_x or "60:90", "--omega-x", "rad/s"), None
+        return parse_range("60:90" if omega_x is None else omega_x, "--omega-x", "rad/s"), None
     if omega_x is not None or omega_y != 0.0 or omega_z != 0.0:
         raise ValueError(
             "with --psi the spin is set by --precession-rate; drop --omega-x/--omega-y/--omega-z"
         )
     if not 0.0 < psi < 180.0:
         raise ValueError(f"--psi must be between 0 and 180 degrees (exclusive), got {psi:g}")
-    spin = parse_range(precession_rate or "60:90", "--precession-rate", "rad/s")
+    spin = parse_range(
+        "60:90" if precession_rate is None else precession_rate, "--precession-rate", "rad/s"
+    )
     return spin, math.radians(psi)
 
 
@@ -55,7 +57,7 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
     if flight_time is not None and launch_speed is not None:
         raise ValueError("give --flight-time or --launch-speed, not both")
     if launch_speed is None:
-        return parse_range(flight_time or "0.6:0.9", "--flight-time", "s")
+        return parse_range("0.6:0.9" if flight_time is None else flight_time, "--flight-time", "s")
     v_lo, v_hi = parse_range(launch_speed, "--launch-speed", "m/s")
     if v_lo <= 0:
         raise ValueError(f"--launch-speed range must be positive, got {launch_speed!r} m/s")

@@ -4,7 +4,7 @@ Carlo run of the full flight."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -118,8 +118,10 @@ def bias_query(
     monte_carlo: int | None,
     seed: int | None,
     coin: Coin,
+    progress: Callable[[int], object] | None = None,
 ) -> AngleBias | PresetBias:
-    """The answer of ``coinflight bias`` (options checked in its order)."""
+    """The answer of ``coinflight bias`` (options checked in its order); ``progress`` is
+    called with the tosses done as the Monte Carlo run goes (a progress bar)."""
     from coinflight.datasets import DATASETS
     from coinflight.studies import bias as b
 
@@ -127,7 +129,7 @@ def bias_query(
     if preset is not None:
         if psi is not None or psi_dist is not None:
             raise ValueError("give exactly one of --psi DEG, --psi-dist SPEC and --preset NAME")
-        return _preset_bias(preset, monte_carlo, seed, coin)
+        return _preset_bias(preset, monte_carlo, seed, coin, progress)
     spec = resolve_psi(psi, psi_dist)
     if isinstance(spec, float):
         p = float(b.same_side_probability(spec, degrees=True))
@@ -147,7 +149,9 @@ def bias_query(
             psi_payload["fitted_to"] = psi_dist.strip()
     sim = None
     if monte_carlo is not None:
-        sim = b.simulate_same_side(spec, monte_carlo, seed, coin=coin, degrees=True)
+        sim = b.simulate_same_side(
+            spec, monte_carlo, seed, coin=coin, degrees=True, progress=progress
+        )
     return AngleBias(p, what, psi_payload, coin, sim)
 
 
@@ -170,7 +174,13 @@ def bias_curve(psis: Sequence[float], coin: Coin) -> list[dict[str, Any]]:
     return [bias_query(float(psi), None, None, None, None, coin).payload() for psi in psis]
 
 
-def _preset_bias(name: str, monte_carlo: int | None, seed: int | None, coin: Coin) -> PresetBias:
+def _preset_bias(
+    name: str,
+    monte_carlo: int | None,
+    seed: int | None,
+    coin: Coin,
+    progress: Callable[[int], object] | None = None,
+) -> PresetBias:
     """The closed-form average over the preset's spins, and optionally a Monte Carlo run of the
     full flight through :func:`coinflight.probability.estimate` (started heads up, so P(heads)
     is the same-side probability)."""
@@ -184,7 +194,7 @@ def _preset_bias(name: str, monte_carlo: int | None, seed: int | None, coin: Coi
     if monte_carlo is not None:
         from coinflight.probability import estimate
 
-        result = estimate(dist, "monte-carlo", b.check_tosses(monte_carlo), seed)
+        result = estimate(dist, "monte-carlo", b.check_tosses(monte_carlo), seed, progress=progress)
     return PresetBias(name, p, (lo, mid, hi), dist, result)
 
 

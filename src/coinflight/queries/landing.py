@@ -126,8 +126,8 @@ def build_surface(
             raise ValueError(f"{', '.join(extra)} {TABLE_ONLY}")
     if ending is not None and ending not in ENDINGS:
         raise ValueError(
-            f"--ending must be {' or '.join(ENDINGS)} (how a table landing ends once its "
-            f"bounces die out), got {ending!r}"
+            f"--ending must be {', '.join(ENDINGS[:-1])} or {ENDINGS[-1]} (how a table landing "
+            f"ends once its bounces die out), got {ending!r}"
         )
     if surface_preset is not None and not ranged:
         contact_spread(None, None, surface_preset)  # an unknown name first

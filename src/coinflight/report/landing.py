@@ -20,6 +20,7 @@ import numpy as np
 
 from coinflight import __version__
 from coinflight._files import check_all_writable, staged_folder, write_text
+from coinflight._provenance import provenance
 from coinflight.probability import streams
 from coinflight.report.document import (
     Block,
@@ -403,9 +404,10 @@ def landing_report(
         for name, fig in figures.items():
             files += save_figure(fig, stage / f"{name}.png")
         doc = build_document(report)
+        numbers = {**report.numbers(), **provenance()}  # where numbers.json came from
         for name, text in zip(
             REPORTS,
-            (doc.to_markdown(), doc.to_html(), json.dumps(report.numbers(), indent=1) + "\n"),
+            (doc.to_markdown(), doc.to_html(), json.dumps(numbers, indent=1) + "\n"),
             strict=True,
         ):
             files.append(write_text(stage / name, text))
@@ -926,12 +928,13 @@ _AGAINST = {
     "inside": "within the model's band",
     "above": "above the model's band",
     "below": "below the model's band",
+    "too few tosses to judge": "not judged against the model's band (too few tosses per cell)",
 }
 
 
 def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Block, ...]:
     from coinflight.studies.edge import SIM_DIAMETER, edge_probability
-    from coinflight.studies.edge_experiments import RESISTANCE
+    from coinflight.studies.edge_experiments import MIN_TOSSES_TO_JUDGE, RESISTANCE
 
     findings = []
     for c in x.comparisons:
@@ -950,9 +953,9 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 f"{b.low.stderr:.3f} to {b.high.p:.3f} ± {b.high.stderr:.3f} over "
                 f"{len(b.cells)} cells ({models})."
             )
-    missed = any(
-        b.verdict(c.experiment.observed) != "inside" for c in x.comparisons for b in c.bands
-    )
+    verdicts = {b.verdict(c.experiment.observed) for c in x.comparisons for b in c.bands}
+    missed = bool(verdicts & {"above", "below"})
+    unjudged = "too few tosses to judge" in verdicts
     settings = sorted({c.setting.description for c in x.comparisons})
     box = x.comparisons[0].box if x.comparisons else {}
     unit = {"diameter": " m", "drop_height": " m (release above the table)", "resistance": " m"}
@@ -997,6 +1000,12 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 "both engines')."
             )
             if missed
+            else (
+                f"Some bands have fewer than {MIN_TOSSES_TO_JUDGE} tosses per cell (as with "
+                "--quick): their ends are noise, so a measured point within them is not "
+                "agreement; the full report's sizes judge it."
+            )
+            if unjudged
             else "Every measured point lies within the model's band with both endings; the band "
             "is wide, so this is agreement within what is not measured, not a confirmation."
         ),

@@ -210,34 +210,73 @@ def distribution(case: ProbabilityCase, coin: Coin) -> TossDistribution:
     )
 
 
+def _event_sizes(events: int) -> tuple[int, ...]:
+    """Method B's series: the default sizes below ``events``, then ``events``."""
+    from coinflight.probability.convergence import DEFAULT_EVENT_SIZES
+
+    return (*(n for n in DEFAULT_EVENT_SIZES if n < events), events)
+
+
 def probability_row(
-    case: ProbabilityCase, coin: Coin, seed: int, events: int = METHOD_B_EVENTS
+    case: ProbabilityCase,
+    coin: Coin,
+    seed: int,
+    events: int = METHOD_B_EVENTS,
+    progress: Callable[[int], None] | None = None,
 ) -> ProbabilityRow:
-    """Exact, method A (5000 intervals), method B (100 intervals, ``events`` draws), series."""
+    """Exact, method A (5000 intervals), method B (100 intervals, ``events`` draws), series;
+    ``progress`` is called with the work units done (:func:`paper_work` counts them)."""
     from coinflight.probability import estimate
-    from coinflight.probability.convergence import (
-        DEFAULT_EVENT_SIZES,
-        DEFAULT_GRID_SIZES,
-        convergence,
-    )
+    from coinflight.probability.convergence import DEFAULT_GRID_SIZES, convergence
 
     dist = distribution(case, coin)
-    event_sizes = (*(n for n in DEFAULT_EVENT_SIZES if n < events), events)
     return ProbabilityRow(
         convergence=convergence(
             dist,
             ("grid", "monte-carlo"),
             grid_sizes=DEFAULT_GRID_SIZES,
-            event_sizes=event_sizes,
+            event_sizes=_event_sizes(events),
             seed=seed,
             grid_cells=METHOD_B_INTERVALS,
+            progress=progress,
         ),
         case=case,
         exact=estimate(dist, "exact"),
-        method_a=estimate(dist, "grid", n=METHOD_A_INTERVALS),
-        method_b=estimate(dist, "monte-carlo", n=events, seed=seed, grid_cells=METHOD_B_INTERVALS),
-        method_b_limit=estimate(dist, "grid", n=METHOD_B_INTERVALS),
+        method_a=estimate(dist, "grid", n=METHOD_A_INTERVALS, progress=progress),
+        method_b=estimate(
+            dist,
+            "monte-carlo",
+            n=events,
+            seed=seed,
+            grid_cells=METHOD_B_INTERVALS,
+            progress=progress,
+        ),
+        method_b_limit=estimate(dist, "grid", n=METHOD_B_INTERVALS, progress=progress),
     )
+
+
+def paper_work(events: int = METHOD_B_EVENTS, coin: Coin | None = None) -> int:
+    """Work units the probability rows of :func:`paper_numbers` report through ``progress``
+    (each estimator's own units: grid cells, Monte Carlo events), counted before any runs:
+    the total of a progress bar."""
+    from coinflight.probability import registry
+    from coinflight.probability.convergence import DEFAULT_GRID_SIZES, work_total
+
+    coin = coin if coin is not None else Coin.preset("us-quarter")
+    grid, monte_carlo = registry.get("grid"), registry.get("monte-carlo")
+    total = 0
+    for case in PROBABILITY_CASES:
+        dist = distribution(case, coin)
+        k = len(dist.ranged)
+        total += work_total(
+            dist,
+            ("grid", "monte-carlo"),
+            grid_sizes=DEFAULT_GRID_SIZES,
+            event_sizes=_event_sizes(events),
+        )
+        total += grid.work_units(k, METHOD_A_INTERVALS) + grid.work_units(k, METHOD_B_INTERVALS)
+        total += monte_carlo.work_units(k, events)
+    return total
 
 
 def paper_numbers(
@@ -245,6 +284,7 @@ def paper_numbers(
     seed: int = DEFAULT_SEED,
     events: int = METHOD_B_EVENTS,
     step: Step | None = None,
+    progress: Callable[[int], None] | None = None,
 ) -> PaperNumbers:
     """Every number of the reproduction report.
 
@@ -259,6 +299,8 @@ def paper_numbers(
         Number of method B events per figure.
     step : callable, optional
         Progress: called after each computed row.
+    progress : callable, optional
+        Called with the work units done as the rows' estimates go (:func:`paper_work`).
     """
     import time
 
@@ -272,7 +314,7 @@ def paper_numbers(
     probabilities = []
     for c in PROBABILITY_CASES:
         t0 = time.perf_counter()
-        probabilities.append(probability_row(c, coin, seed, events))
+        probabilities.append(probability_row(c, coin, seed, events, progress))
         timings[f"probability {c.figure}"] = time.perf_counter() - t0
         if step:
             step(f"probabilities of Fig {c.figure}")
@@ -300,6 +342,7 @@ __all__ = [
     "RotationRow",
     "distribution",
     "paper_numbers",
+    "paper_work",
     "probability_row",
     "rotation_row",
 ]

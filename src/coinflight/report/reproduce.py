@@ -39,10 +39,24 @@ if TYPE_CHECKING:
 
 Step = Callable[[str], None]
 
-FIGURES = ("fig2a", "fig2b", "fig2c", "fig2d", "fig3a", "fig3b", "fig3c-f")
+FIGURES = (
+    "fig2a",
+    "fig2a-error",
+    "fig2b",
+    "fig2b-error",
+    "fig2c",
+    "fig2d",
+    "fig3a",
+    "fig3a-error",
+    "fig3b",
+    "fig3b-error",
+    "fig3c-f",
+)
+"""The figures' file stems: each probability figure in the paper's form (P(heads)) and, beside
+it, the error form (``-error``: |P(heads) − exact|, log–log)."""
 """File stems of the reproduced figures (each written as .png and .svg)."""
 STEPS = 1 + 4 + len(FIGURES) + 1
-"""Progress steps of :func:`reproduce_paper`: numbers (5), figures (7), report (1)."""
+"""Progress steps of :func:`reproduce_paper`: numbers (5), figures (11), report (1)."""
 
 
 REPORTS = ("report.md", "report.html")
@@ -78,6 +92,7 @@ def reproduce_paper(
     events: int = METHOD_B_EVENTS,
     formats: tuple[str, ...] = ("png", "svg"),
     step: Step | None = None,
+    progress: Callable[[int], None] | None = None,
 ) -> PaperReport:
     """Regenerate every figure of Stefan & Cheche and write ``report.md`` and ``report.html``.
 
@@ -96,9 +111,12 @@ def reproduce_paper(
         Image formats of each figure.
     step : callable, optional
         Called with a description after each of :data:`STEPS` steps (a progress bar).
+    progress : callable, optional
+        Called with the work units done by the probabilities' estimates, most of the run
+        (:func:`coinflight.report.paper.paper_work` counts them: a progress bar's total).
     """
     from coinflight.model.toss import Toss
-    from coinflight.plotting.convergence import plot_convergence
+    from coinflight.plotting.convergence import plot_convergence, plot_estimates
     from coinflight.plotting.style import save_figure
     from coinflight.plotting.toss import plot_toss
 
@@ -106,7 +124,7 @@ def reproduce_paper(
     out = Path(out_dir)
     paper_files(out, formats)  # before minutes of computing, not after
     coin = coin if coin is not None else Coin.preset("us-quarter")
-    numbers = paper_numbers(coin, seed=seed, events=events, step=step)
+    numbers = paper_numbers(coin, seed=seed, events=events, step=step, progress=progress)
     files: list[Path] = []
 
     def done(message: str) -> None:
@@ -121,10 +139,14 @@ def reproduce_paper(
                 f"ωy0 = {c.omega_y:g} rad/s, ωz0 = 0, T ∈ [{c.flight_time[0]:g}, "
                 f"{c.flight_time[1]:g}] s\n{coin.name} tossed heads up and caught"
             )
-            fig = plot_convergence(row.convergence, title)
-            fig.axes[0].set_title(title, fontsize=10.5)
-            files += save_figure(fig, stage / f"fig{c.figure}", formats)
+            files += save_figure(
+                plot_estimates(row.convergence, title), stage / f"fig{c.figure}", formats
+            )
             done(f"Fig {c.figure}")
+            files += save_figure(
+                plot_convergence(row.convergence, title), stage / f"fig{c.figure}-error", formats
+            )
+            done(f"Fig {c.figure}, error form")
         by_fig = {r.case.figure: r for r in numbers.rotations}
         for fig_id in ("2c", "2d"):
             case = by_fig[fig_id].case
@@ -194,17 +216,31 @@ def _captions(numbers: PaperNumbers) -> dict[str, str]:
 
     colour_a, colour_b = _method_colours()
 
+    def box(fig: str) -> str:
+        c = prob[fig].case
+        return (
+            f"ωx0 ∈ [{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, ωy0 = {c.omega_y:g} rad/s, T ∈ "
+            f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s"
+        )
+
+    def paper_caption(fig: str) -> str:
+        r = prob[fig]
+        return (
+            f"Fig {fig}, the paper's form: P(heads) by method A ({colour_a}) and method B "
+            f"({colour_b}, with 95 % intervals) against the number of configurations or events "
+            f"(log scale) for {box(fig)}; the exact value {r.exact.p_heads:.6f} as a black "
+            f"line, method B's limit (its {METHOD_B_INTERVALS}-cell grid's exact count) dashed."
+        )
+
     def p_caption(fig: str) -> str:
         r = prob[fig]
-        c = r.case
         return (
-            f"Fig {fig}: the error |P(heads) − exact| of method A ({colour_a}) and method B "
-            f"({colour_b}) against the number of configurations or events, log–log, for ωx0 ∈ "
-            f"[{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, ωy0 = {c.omega_y:g} rad/s, T ∈ "
-            f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s; exact value "
-            f"{r.exact.p_heads:.6f}. Shaded: method B's 95 % interval half-width (1.96 s.e.), "
-            f"with its expected slope −1/2 dotted; method A's observed slope dashed; method B's "
-            f"floor, its {METHOD_B_INTERVALS}-cell grid's distance from exact, dashed across."
+            f"Fig {fig}, the error form: |P(heads) − exact| of method A ({colour_a}) and method "
+            f"B ({colour_b}) against the number of configurations or events, log–log, for "
+            f"{box(fig)}; exact value {r.exact.p_heads:.6f}. Shaded: method B's 95 % interval "
+            f"half-width (1.96 s.e.), with its expected slope −1/2 dotted; method A's observed "
+            f"slope dashed; method B's floor, its {METHOD_B_INTERVALS}-cell grid's distance "
+            "from exact, dashed across."
         )
 
     def t_caption(fig: str) -> str:
@@ -223,12 +259,10 @@ def _captions(numbers: PaperNumbers) -> dict[str, str]:
     turns = ", ".join(f"{rot[f].rotations:.3f}" for f in ("3c", "3d", "3e", "3f"))
     faces = ", ".join(rot[f].face for f in ("3c", "3d", "3e", "3f"))
     return {
-        "fig2a": p_caption("2a"),
-        "fig2b": p_caption("2b"),
+        **{f"fig{f}": paper_caption(f) for f in prob},
+        **{f"fig{f}-error": p_caption(f) for f in prob},
         "fig2c": t_caption("2c"),
         "fig2d": t_caption("2d"),
-        "fig3a": p_caption("3a"),
-        "fig3b": p_caption("3b"),
         "fig3c-f": "Figs 3c-f: ωx0 = 90, ωy0 = 30 rad/s, T = 0.6, 0.65, 0.7, 0.75 s: "
         f"{turns} turns, {faces} up; the coin {_toss_colours()}; n and S (S ⟂ n) and the "
         "path of n on the unit sphere.",

@@ -174,7 +174,9 @@ def _along_spins(
     itself with ``psi`` fixed, else ωx0 with ``omega_y``, ``omega_z``), as
     :meth:`BasinMap.boundaries` takes them."""
     if psi is not None:
-        return w, np.full_like(w, (math.cos(psi) / math.sin(psi)) ** 2)
+        with np.errstate(over="ignore"):  # ψ within 1e-154 rad of 0 or π: cot²ψ = inf
+            cot2 = (np.cos(psi) / np.sin(psi)) ** 2
+        return w, np.full_like(w, cot2)
     i1, i3 = coin.moments
     perp2 = w * w + omega_y**2
     axial = i3 / i1 * omega_z

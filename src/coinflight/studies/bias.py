@@ -21,6 +21,7 @@ Examples
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import numpy as np
@@ -369,6 +370,7 @@ def simulate_same_side(
     flight_time: tuple[float, float] = DEFAULT_FLIGHT_TIME,
     precession_rate: tuple[float, float] = DEFAULT_PRECESSION_RATE,
     degrees: bool = False,
+    progress: Callable[[int], object] | None = None,
 ) -> BinomialEstimate:
     """Same-side frequency of simulated tosses with precession angle ψ (fixed or distributed).
 
@@ -397,6 +399,8 @@ def simulate_same_side(
         Range of ωp, rad/s.
     degrees : bool
         Whether ``psi`` is in degrees.
+    progress : callable, optional
+        Called with the number of tosses done after each draw of them (a progress bar).
 
     Returns
     -------
@@ -439,6 +443,8 @@ def simulate_same_side(
         w_perp, wz = precession.spin_on_cone(wp, psi_k, i1, i3)
         wx, wy = w_perp * np.cos(azimuth), w_perp * np.sin(azimuth)
         same += int(np.count_nonzero(normal_alignment(wx, wy, wz, t, i1, i3) > 0.0))
+        if progress is not None:
+            progress(u.shape[1])
     return BinomialEstimate(successes=same, n=n, seed=streams.reported_seed(root))
 
 

@@ -144,7 +144,13 @@ from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 from coinflight.studies.presets import HUMAN_PSI
 
-Verdict = Literal["inside", "above", "below"]
+Verdict = Literal["inside", "above", "below", "too few tosses to judge"]
+
+MIN_TOSSES_TO_JUDGE = 100
+"""Tosses per cell below which a band that overlaps a measured point says "too few tosses to
+judge", not "inside": with fewer, one cell's P(edge) is uncertain by up to ±0.1 (2 s.e. at
+p = ½, 2·½/√n), and a band of a few tosses per cell (0.000 to 0.500 from four) spans the
+measured points by its noise alone. A band wholly above or below a point still says so."""
 
 HAND_DROP = (0.2, 0.5)
 """Height of the releasing hand above the table, m (our assumption, no source gives it)."""
@@ -346,12 +352,15 @@ class Band:
     def verdict(self, observed: BinomialEstimate) -> Verdict:
         """``"above"`` when the measured 95 % interval lies above the band's top (its highest
         cell + 2 s.e.), ``"below"`` when it lies below the band's bottom (lowest cell − 2 s.e.),
-        else ``"inside"`` (they overlap)."""
+        else ``"inside"`` (they overlap), or ``"too few tosses to judge"`` when they overlap
+        but a cell has fewer than :data:`MIN_TOSSES_TO_JUDGE` tosses."""
         lo, hi = observed.ci95
         if lo > self.high.p + 2.0 * self.high.stderr:
             return "above"
         if hi < self.low.p - 2.0 * self.low.stderr:
             return "below"
+        if min(cell.n for cell in self.cells) < MIN_TOSSES_TO_JUDGE:
+            return "too few tosses to judge"
         return "inside"
 
     def gap(self, observed: BinomialEstimate) -> float:

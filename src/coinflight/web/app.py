@@ -16,8 +16,9 @@ from fastapi.staticfiles import StaticFiles
 
 from coinflight import __version__
 from coinflight._validation import shortened as shortened_text
+from coinflight._validation import unreadable
 from coinflight.web import params as p
-from coinflight.web.routes import router
+from coinflight.web.routes import remember_request, router
 from coinflight.web.runner import DEFAULT_TIME_LIMIT, Overloaded, Runner, check_runner
 
 
@@ -64,7 +65,7 @@ def create_app(
             "starts, or 503 after the time limit."
         ),
         lifespan=_lifespan,
-        dependencies=[Depends(_known_parameters)],
+        dependencies=[Depends(_known_parameters), Depends(remember_request)],
     )
     app.state.pool = (workers, time_limit, backlog)
     app.state.time_limit = time_limit
@@ -150,22 +151,14 @@ def _errors(app: FastAPI) -> None:
     app.add_exception_handler(Overloaded, overloaded)
 
 
-_READING = {
-    "float_parsing": "is not a number",
-    "int_parsing": "is not a valid integer",
-    "int_from_float": "is not a valid integer",
-    "bool_parsing": "is not a valid boolean",
-}
-
-
 def _validation_line(exc: RequestValidationError) -> str:
     """The first error of a request FastAPI could not read, as the command line says it
     (typer's words: ``Invalid value for '--n': '1.5' is not a valid integer``)."""
     error = exc.errors()[0]
     name = str(error.get("loc", ("", "?"))[-1])
-    reading = _READING.get(str(error.get("type")))
+    reading = unreadable(error)
     if reading is not None:
-        return p.invalid(name, error.get("input"), reading)
+        return f"Invalid value for '{p.flag(name)}': {reading}"
     return f"Invalid value for '{p.flag(name)}': {error.get('msg', 'not valid')}"
 
 

@@ -9,6 +9,7 @@ the server's worker processes (:class:`Lanes`): the computing is in
 from __future__ import annotations
 
 from collections.abc import Callable
+from contextvars import ContextVar
 from dataclasses import dataclass
 from typing import Annotated, Any
 
@@ -16,6 +17,7 @@ from fastapi import APIRouter, Depends, Request
 from fastapi.responses import FileResponse, Response
 from pydantic import BaseModel
 
+from coinflight._provenance import invoked
 from coinflight.queries.encoding import json_text
 from coinflight.web import endpoints
 from coinflight.web import params as p
@@ -60,12 +62,13 @@ class Lanes:
         runner: Runner | None = getattr(self.state, "runner", None)
         if runner is None:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
+        request = _REQUEST.get()
         if not long:
-            return Response(await runner.run(_encoded, fn, *args), media_type=JSON)
+            return Response(await runner.run(_encoded, request, fn, *args), media_type=JSON)
         try:
-            text = await runner.run(_encoded, fn, *args, True)
+            text = await runner.run(_encoded, request, fn, *args, True)
         except endpoints.LongWork:
-            text = await runner.run(_encoded, fn, *args, False, long=True)
+            text = await runner.run(_encoded, request, fn, *args, False, long=True)
         return Response(text, media_type=JSON)
 
     async def timed(self, fn: Callable[..., Any], *args: Any, long: bool = True) -> Response:
@@ -81,15 +84,26 @@ Server = Annotated[Lanes, Depends(_lanes)]
 """The application's worker pool and time limit, a dependency of every API endpoint."""
 
 
-def _encoded(fn: Callable[..., Any], *args: Any) -> str:
+def _encoded(request: str, fn: Callable[..., Any], *args: Any) -> str:
     """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
     computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
-    reaches no one)."""
+    reaches no one), and ``request`` as its ``"command"`` (:mod:`coinflight._provenance`)."""
     from coinflight.queries.plausibility import heard, with_warnings
 
-    with heard() as texts:
+    with invoked(request), heard() as texts:
         payload = fn(*args)
-    return json_text(with_warnings(payload, texts))
+        return json_text(with_warnings(payload, texts))
+
+
+_REQUEST: ContextVar[str] = ContextVar("coinflight_request")
+"""The request being answered, as ``GET /api/toss?omega=80,0,0`` (set by
+:func:`remember_request` for the endpoint, which runs in the same context)."""
+
+
+async def remember_request(request: Request) -> None:
+    """Keep the request's method, path and query (as sent) for its answer's ``"command"``."""
+    query = request.url.query
+    _REQUEST.set(f"{request.method} {request.url.path}" + (f"?{query}" if query else ""))
 
 
 @router.get("/", include_in_schema=False)
@@ -234,4 +248,4 @@ async def data(
     )
 
 
-__all__ = ["ANSWERS", "Lanes", "router"]
+__all__ = ["ANSWERS", "Lanes", "remember_request", "router"]

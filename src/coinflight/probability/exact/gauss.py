@@ -34,6 +34,13 @@ SPIN_POINTS_PER_SECOND = 1.5e6
 """Spin points the Gauss product rule evaluates a second (2-core machine, about ten terms each)."""
 MAX_PANELS = 24
 """Most panels per spin variable (or per angular sector) the resolution may ask for."""
+NARROWEST_BLUR = 0.05
+"""Least blur Ω sd of a band edge (rad of phase, at the smallest Ω where a band edge can be)
+this rule takes: below it P(same side | spins) steps across each edge in less than its
+panels' nodes resolve, and two orders can agree on a wrong value (T ~ normal(0.3, 3e-5) with
+ωx in 5:6 once gave 0.25, the answer 0.235988). Below it the rule refuses and the (Ω, ψ) rule,
+which cuts at each blurred edge (:func:`coinflight.probability.exact.omega_psi._edge_times`),
+runs instead."""
 _CHUNK = 1 << 16
 """Spins evaluated at once by the Gauss product rule (memory ~ _CHUNK × 6 terms × 8 bytes × 4)."""
 
@@ -297,6 +304,28 @@ def _gauss_points(dist: TossDistribution, ranged: list[str], h: float, n: int) -
     return outer * inner
 
 
+def _check_blur(dist: TossDistribution, ranged: list[str]) -> None:
+    """ValueError when the normal flight time blurs the band edges less than
+    :data:`NARROWEST_BLUR`: at the smallest Ω a band edge can have (the first edge π / 2T,
+    or the spins' nearest approach to 0 if larger), Ω sd below it."""
+    t = dist.flight_time
+    assert isinstance(t, Normal)
+    i1, i3 = dist.moments
+    nearest = []
+    for name in _SPINS:
+        d = getattr(dist, name)
+        lo, hi = _support(d) if name in ranged else (d.mean, d.mean)
+        near = 0.0 if lo <= 0.0 <= hi else min(abs(lo), abs(hi))
+        nearest.append(near * (i3 / i1 if name == "omega_z" else 1.0))
+    first_edge = max(math.hypot(*nearest), 0.5 * math.pi / (t.mean + 9.0 * t.sd))
+    if first_edge * t.sd < NARROWEST_BLUR:
+        raise ValueError(
+            f"the exact Gauss rule cannot resolve a flight time of sd {t.sd:g} s: it blurs "
+            f"each band edge over {first_edge * t.sd:.2g} rad of phase, less than "
+            f"{NARROWEST_BLUR:g}; {_USE_INSTEAD}"
+        )
+
+
 def _gauss_spins(
     dist: TossDistribution, ranged: list[str], details: _Details
 ) -> tuple[float, float]:
@@ -326,6 +355,7 @@ def _gauss_spins(
     ratio = i3 / i1
     t = dist.flight_time
     assert isinstance(t, Normal)
+    _check_blur(dist, ranged)
     spins: dict[str, Distribution] = {n: getattr(dist, n) for n in _SPINS}
     plane = [n for n in ("omega_x", "omega_y") if n in ranged]
     z_ranged = "omega_z" in ranged

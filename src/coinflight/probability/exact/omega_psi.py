@@ -37,16 +37,25 @@ MAX_POLAR_POINTS = 4e7
 one, bounded before its nodes are allocated (about half a minute on the 2-core machine)."""
 POLAR_POINTS_PER_SECOND = 3e6
 """Integrand points the (Ω, ψ) rule evaluates a second (2-core machine)."""
-MAX_CROSSING_SAMPLES = 5e7
-"""Most curve-pair samples the search for the outer cuts of the (Ω, ψ) rule may take."""
+MAX_CROSSING_SAMPLES = 1e8
+"""Most curve-pair samples the search for the outer cuts of the (Ω, ψ) rule may take (each
+pair sampled twice over, in √(1 − t) and in geometric steps: :func:`_crossings`)."""
 _CROSSING_SAMPLES = 257
-"""Samples along ψ (equal steps in √(ψ − 45°)) on which each pair of curves is searched for a
-crossing (a sign change, then bisection)."""
+"""Samples along t = cot ψ (equal steps in √(1 − t), and as many in geometric steps) on
+which each pair of curves is searched for a crossing (a sign change, then bisection)."""
 _PSI_PANEL = 0.05
-"""Widest outer panel in ψ, rad."""
+"""Widest outer panel in t = cot ψ."""
+NEGLIGIBLE_AXIAL = 1e-8
+"""An axial spin A = (I3/I1)|ω_z| at most this fraction of the smallest Ω⊥ is taken as
+ω_z = 0: then (A / Ω⊥)² < 1e-16 changes neither Ω = √(Ω⊥² + A²) nor the gaps' half-width
+arccos(cot²ψ) in double precision, so the answer is that of ω_z = 0 to rounding (and ψ,
+within 1e-16 of 90°, need not be resolved)."""
+_UNDERFLOW = 1e-290
+"""Below this fraction of the largest Ω⊥, cot ψ = A / Ω⊥ nears the subnormal numbers, whose
+few digits would misplace the panels; such an axial spin is taken as ω_z = 0 even when Ω⊥
+reaches 0 (the Ω⊥ < A/1e-8 it would matter for hold no measurable probability)."""
 _POLAR_CHUNK = 1 << 18
 """Integrand points evaluated at once by the (Ω, ψ) rule."""
-_QUARTER = math.pi / 4
 NARROWEST = 1e-9
 """Narrowest ranged spin the (Ω, ψ) rule takes, as a fraction of its size (the largest
 magnitude in its support): the density of √(ωx² + ωy²) of a box of width w at distance x from
@@ -100,17 +109,21 @@ def _graded(pts: np.ndarray, factor: float = 4.0) -> np.ndarray:
         return p
     gaps = np.diff(p)
     near = np.minimum(np.r_[np.inf, gaps], np.r_[gaps, np.inf])
-    extra: list[float] = []
-    for k, x in enumerate(p):
-        for side, gap in (
-            (-1.0, gaps[k - 1] if k else 0.0),
-            (1.0, gaps[k] if k < gaps.size else 0.0),
-        ):
-            d = factor * near[k]
-            while d < 0.5 * gap:
-                extra.append(x + side * d)
-                d *= factor
-    return np.unique(np.concatenate((p, extra)))
+    d0 = factor * near
+    out = [p]
+    for side, gap in ((-1.0, np.r_[0.0, gaps]), (1.0, np.r_[gaps, 0.0])):
+        half = 0.5 * gap
+        # How many of d0·factor^j (j = 0, 1, …) lie below half the gap: one more than the
+        # logarithm says, the surplus dropped below (so that rounding loses none).
+        with np.errstate(divide="ignore", invalid="ignore"):
+            logs = np.log(half / d0) / math.log(factor)
+        count = np.where(d0 < half, np.floor(np.nan_to_num(logs)) + 2.0, 0.0).astype(np.int64)
+        k = np.repeat(np.arange(p.size), count)
+        j = np.arange(k.size) - np.repeat(np.cumsum(count) - count, count)
+        d = d0[k] * factor ** j.astype(float)
+        ok = d < half[k]
+        out.append(p[k[ok]] + side * d[ok])
+    return np.unique(np.concatenate(out))
 
 
 def _folded(d: Distribution) -> tuple[list[float], list[float]]:
@@ -299,23 +312,41 @@ def _times(t: Distribution) -> tuple[float, float, float]:
     return (t.value, t.value, 0.0) if isinstance(t, Fixed) else (t.low, t.high, 0.0)  # type: ignore[attr-defined]
 
 
-def _curves(table: tuple[np.ndarray, ...], psi: Any) -> Any:
-    """Ω along the curves of the (Ω, ψ) plane where the integrand changes form, at ψ:
-    kind 0, a band edge Ω = ((2j + 1)π ± b(ψ)) / T (p = (2j + 1)π, sgn = ±1, b from
-    :func:`coinflight.core.bands.gap_half_width`); kind 1, a circle Ω⊥ = p, Ω = p / sin ψ;
-    kind 2, a plane A = p, Ω = p / cos ψ. ``table`` = (kind, p, sgn, T). Broadcasts."""
-    kind, p, sgn, t = table
-    s, c = np.sin(psi), np.cos(psi)
-    b = bands.gap_half_width((c / s) ** 2)
-    with np.errstate(divide="ignore"):
-        axial = p / c
-    return np.where(kind == 0, (p + sgn * b) / t, np.where(kind == 1, p / s, axial))
+def _curves(table: tuple[np.ndarray, ...], t: Any) -> Any:
+    """Ω along the curves of the (Ω, ψ) plane where the integrand changes form, at
+    t = cot ψ ∈ [0, 1]: kind 0, a band edge Ω = ((2j + 1)π ± b) / T (p = (2j + 1)π,
+    sgn = ±1, b = arccos t² from :func:`coinflight.core.bands.gap_half_width`); kind 1, a
+    circle Ω⊥ = p, Ω = p √(1 + t²); kind 2, a plane A = p, Ω = p √(1 + t²) / t.
+    ``table`` = (kind, p, sgn, T). Broadcasts. In t rather than ψ so that a small axial spin
+    (ψ within 1e-16 of 90°, which ψ itself cannot resolve) keeps its digits."""
+    kind, p, sgn, tt = table
+    r = np.sqrt(1.0 + t * t)
+    b = bands.gap_half_width(t * t)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        axial = p * r / t
+    return np.where(kind == 0, (p + sgn * b) / tt, np.where(kind == 1, p * r, axial))
+
+
+_BLUR = (-3.0, -1.0, 1.0, 3.0)
+"""Where a normal flight time's blur of a band edge is cut, in its s.d.s (:func:`_edge_times`)."""
+
+
+def _edge_times(times: tuple[float, ...], om_hi: float) -> list[float]:
+    """The flight times whose band edges cut the integrals: T1 and T2 (uniform or fixed T);
+    for a normal T (mean, sd) its mean, and where the blur of an edge (Ω sd / T wide) is
+    narrower than a band (π / T: Ω sd < 1 up to ``om_hi``), mean ± 1 and 3 sd in the edge's
+    place: cut there too, the graded mesh resolves the blur however narrow, and sd → 0 tends
+    to the fixed T's step (without them the rule refused 1e-6 ≤ sd/T ≤ 1e-3)."""
+    t1, t2, sd = (*times[:2], times[2] if len(times) > 2 else 0.0)
+    if sd > 0.0 and om_hi * sd < 1.0:
+        return sorted({t1, *(t1 / (1.0 + k * sd / t1) for k in _BLUR)})
+    return sorted({t1, t2})
 
 
 def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.ndarray, ...]:
     """The band-edge curves (kind, p, sgn, T) that may meet Ω in [om_lo, om_hi]."""
     cols: list[list[float]] = [[], [], [], []]
-    for t in sorted(set(times[:2])):
+    for t in _edge_times(times, om_hi):
         j = np.arange(
             max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi))),
             max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi))) + 1,
@@ -326,6 +357,16 @@ def _edges(times: tuple[float, ...], om_lo: float, om_hi: float) -> tuple[np.nda
             cols[2] += [sgn] * j.size
             cols[3] += [t] * j.size
     return tuple(np.asarray(c, dtype=float) for c in cols)
+
+
+def _edge_count(times: tuple[float, ...], om_lo: float, om_hi: float) -> float:
+    """How many curves :func:`_edges` returns, counted without allocating them."""
+    count = 0.0
+    for t in _edge_times(times, om_hi):
+        first = max(0, math.ceil((om_lo * t - 1.5 * math.pi) / (2 * math.pi)))
+        last = max(0, math.floor((om_hi * t - 0.5 * math.pi) / (2 * math.pi)))
+        count += 2.0 * max(0, last - first + 1)
+    return count
 
 
 def _stack(*curves: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
@@ -340,30 +381,36 @@ def _box(kind: int, values: np.ndarray) -> tuple[np.ndarray, ...]:
 
 
 def _crossings(
-    first: tuple[np.ndarray, ...], second: tuple[np.ndarray, ...], psi_lo: float, psi_hi: float
+    first: tuple[np.ndarray, ...],
+    second: tuple[np.ndarray, ...],
+    t_lo: float,
+    t_hi: float,
+    floor: float,
 ) -> np.ndarray:
-    """ψ in (psi_lo, psi_hi) where a curve of ``first`` crosses one of ``second``.
+    """t = cot ψ in (t_lo, t_hi) where a curve of ``first`` crosses one of ``second``.
 
-    Each pair is sampled at :data:`_CROSSING_SAMPLES` points equally spaced in √(ψ − 45°)
-    (the band edges move like that square root near 45°); every sign change is bisected to
-    rounding. Pairs that cross twice between two samples are missed; the comparison of
-    successive Gauss orders judges what that leaves.
+    Each pair is sampled at :data:`_CROSSING_SAMPLES` points equally spaced in √(1 − t) (the
+    band edges move like that square root near ψ = 45°, t = 1) and as many in geometric
+    steps from ``floor`` (at most the smallest t where a box curve can meet a band edge) to
+    t_hi (where a plane curve A / t sweeps past the edges near ψ = 90°); every sign change
+    is bisected to rounding. Pairs that cross twice between two samples are missed; the
+    comparison of successive Gauss orders judges what that leaves.
     """
     na, nb = first[0].size, second[0].size
-    if na == 0 or nb == 0 or psi_hi <= psi_lo:
+    if na == 0 or nb == 0 or t_hi <= t_lo:
         return np.empty(0)
-    s = np.linspace(
-        math.sqrt(max(psi_lo - _QUARTER, 0.0)),
-        math.sqrt(max(psi_hi - _QUARTER, 0.0)),
-        _CROSSING_SAMPLES,
-    )
-    psi = _QUARTER + s * s
-    fb = _curves(tuple(c[:, None] for c in second), psi)
+    u = np.linspace(math.sqrt(1.0 - t_hi), math.sqrt(1.0 - t_lo), _CROSSING_SAMPLES)
+    samples = [1.0 - u * u]
+    low = max(t_lo, floor)
+    if 0.0 < low < t_hi:
+        samples.append(np.geomspace(low, t_hi, _CROSSING_SAMPLES))
+    ts = np.unique(np.clip(np.concatenate([*samples, np.array([t_lo, t_hi])]), t_lo, t_hi))
+    fb = _curves(tuple(c[:, None] for c in second), ts)
     roots = []
-    step = max(1, int(4e6 // (nb * s.size)))
+    step = max(1, int(4e6 // (nb * ts.size)))
     for start in range(0, na, step):
         part = tuple(c[start : start + step] for c in first)
-        fa = _curves(tuple(c[:, None] for c in part), psi)
+        fa = _curves(tuple(c[:, None] for c in part), ts)
         with np.errstate(invalid="ignore"):
             d = fa[:, None, :] - fb[None, :, :]
         pos = d > 0.0
@@ -372,17 +419,16 @@ def _crossings(
         ia, ib, m = np.nonzero(change)
         if ia.size == 0:
             continue
-        lo, hi = s[m], s[m + 1]
+        lo, hi = ts[m], ts[m + 1]
         sign_lo = pos[ia, ib, m]
         ca = tuple(c[ia] for c in part)
         cb = tuple(c[ib] for c in second)
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            pm = _QUARTER + mid * mid
             with np.errstate(invalid="ignore"):
-                same = (_curves(ca, pm) - _curves(cb, pm) > 0.0) == sign_lo
+                same = (_curves(ca, mid) - _curves(cb, mid) > 0.0) == sign_lo
             lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
-        roots.append(_QUARTER + (0.5 * (lo + hi)) ** 2)
+        roots.append(0.5 * (lo + hi))
     return np.concatenate(roots) if roots else np.empty(0)
 
 
@@ -410,25 +456,26 @@ def _panels(cuts: np.ndarray, lo: float, hi: float, width: float = _PSI_PANEL) -
     return np.concatenate(out)
 
 
-def _turning(om: np.ndarray, a: np.ndarray, times: tuple[float, float, float]) -> np.ndarray:
-    """1 − P(same side) at rate Ω and band half-width a over the flight times: the fraction of
-    T uniform on [T1, T2] (:func:`coinflight.core.bands.time_average_uniform`), whether the
-    one T puts Ω T in a gap, or the wrapped-normal series of a normal T
-    (:func:`coinflight.core.bands.same_side_normal_time`, with cot²ψ = −cos a)."""
+def _turning(om: np.ndarray, cot2: np.ndarray, times: tuple[float, float, float]) -> np.ndarray:
+    """1 − P(same side) at rate Ω and cot²ψ over the flight times: the fraction of T uniform
+    on [T1, T2] (:func:`coinflight.core.bands.time_average_uniform`) with the band half-width
+    a = :func:`coinflight.core.bands.half_width`, whether the one T puts Ω T in a gap, or the
+    wrapped-normal series of a normal T (:func:`coinflight.core.bands.same_side_normal_time`)."""
     t1, t2, sd = times
     if sd > 0.0:
-        om, a = np.broadcast_arrays(om, a)
-        cot2 = -np.cos(a)
+        om, cot2 = np.broadcast_arrays(om, cot2)
         perp2 = om * om / (1.0 + cot2)
         same = bands.same_side_normal_time(perp2.ravel(), (perp2 * cot2).ravel(), t1, sd)
         return 1.0 - same.reshape(om.shape)
+    a = bands.half_width(cot2)
     if t1 == t2:
         return (~bands.in_band(om * t1, a)).astype(float)
     return 1.0 - bands.time_average_uniform(om, a, t1, t2)
 
 
 class _PolarPlan:
-    """The (Ω, ψ) integral of a case: its outer panel ends, and per order its points."""
+    """The (Ω, ψ) integral of a case: its outer panel ends in t = cot ψ, and per order its
+    points."""
 
     def __init__(self, dist: TossDistribution) -> None:
         i1, i3 = dist.moments
@@ -437,62 +484,103 @@ class _PolarPlan:
         self.plane = _plane(dist.omega_x, dist.omega_y)
         self.axial = _axial(dist.omega_z, self.ratio)
         p, ax = self.plane, self.axial
+        self.ranged = sum(not getattr(dist, name).is_fixed for name in _SPINS)
         self.empty = False
         if p.density is None and ax.density is None:  # pragma: no cover - closed form in T
             raise AssertionError("both atoms: the closed form in T")
+        self.flat = False
         if p.density is None:
             self.kind = "plane fixed"
-            # Along Ω⊥ = p: ψ from where A reaches the top of its range (or Ω⊥) to its bottom.
-            psi_a = math.atan2(p.value, min(ax.hi, p.value))
-            psi_b = math.atan2(p.value, ax.lo)
+            if p.value == 0.0:  # no spin in the plane: the coin never turns over
+                self.empty = True
+                return
+            if ax.hi <= NEGLIGIBLE_AXIAL * p.value:  # as if ω_z = 0 (to rounding)
+                self.flat = True
+                return
+            # Along Ω⊥ = p: t = A / Ω⊥ from A's bottom to where A reaches its top (or Ω⊥).
+            if ax.lo >= p.value:  # ψ ≤ 45° throughout: never turns over
+                self.empty = True
+                return
+            t_lo, t_hi = ax.lo / p.value, min(ax.hi, p.value) / p.value
             curve = _box(1, np.array([p.value]))
-            om_hi = p.value / math.sin(psi_a)
-            fixed_cuts = np.arctan2(p.value, ax.points[ax.points > 0.0])
-        elif ax.density is None and ax.value > 0.0:
-            self.kind = "axial fixed"
-            # Along A = value: ψ from where Ω⊥ reaches A (or its range's bottom) to its top.
-            psi_a = math.atan2(max(p.lo, ax.value), ax.value)
-            psi_b = math.atan2(p.hi, ax.value)
-            curve = _box(2, np.array([ax.value]))
-            om_hi = math.hypot(p.hi, ax.value)
-            fixed_cuts = np.arctan2(p.graded, ax.value)
-        elif ax.density is None:
-            self.kind = "diameter"  # ω_z = 0: ψ = 90°, Ω = Ω⊥, the gaps' half-width π/2
+            om_hi = p.value * math.sqrt(1.0 + t_hi * t_hi)
+            fixed_cuts = ax.points[ax.points < p.value] / p.value
+        elif ax.hi <= NEGLIGIBLE_AXIAL * p.lo or ax.hi <= _UNDERFLOW * p.hi:
+            # ω_z = 0, or so small beside Ω⊥ that Ω and the bands are those of ω_z = 0 to
+            # rounding (a near-zero Ω⊥ below it holds no measurable probability).
+            self.kind = "diameter"  # ψ = 90°, Ω = Ω⊥, the gaps' half-width π/2
+            self._bound_points(_edge_count(self.times, p.lo, p.hi))
             edges = _edges(self.times, p.lo, p.hi)
             cuts = (edges[1] + edges[2] * 0.5 * math.pi) / edges[3]
             self.ends = _panels(_graded(np.concatenate((cuts, p.graded))), p.lo, p.hi, math.inf)
             return
+        elif ax.density is None:
+            self.kind = "axial fixed"
+            # Along A = value: t = A / Ω⊥ from Ω⊥'s top to where it reaches its bottom (or A).
+            t_lo, t_hi = ax.value / p.hi, ax.value / max(p.lo, ax.value)
+            curve = _box(2, np.array([ax.value]))
+            om_hi = math.hypot(p.hi, ax.value)
+            fixed_cuts = ax.value / p.graded[p.graded >= ax.value]
         else:
             self.kind = "2-D"
-            psi_a, psi_b = _QUARTER, 0.5 * math.pi
+            # t from where the box's top A meets the largest Ω⊥ to where its bottom meets
+            # the smallest (ψ ≥ 45°: t ≤ 1).
+            t_lo = ax.lo / p.hi
+            t_hi = min(1.0, ax.hi / p.lo) if p.lo > 0.0 else 1.0
             om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
-            self.edges = _edges(self.times, p.lo, om_hi)
+            count = _edge_count(self.times, p.lo, om_hi)
+            self._bound_points(count, inner=True)
             circles, planes = _box(1, p.breaks), _box(2, ax.breaks[ax.breaks > 0.0])
             self.box_curves = _stack(circles, planes)
+            self._bound_crossings(count * self.box_curves[0].size)
+            self.edges = _edges(self.times, p.lo, om_hi)
             # The inner cuts: the box's curves with the soft points and the graded radii.
             self.inner_curves = _stack(_box(1, p.graded), _box(2, ax.points[ax.points > 0.0]))
-            self._bound_crossings(self.edges[0].size * self.box_curves[0].size)
+            # Where a circle meets a plane (t = A / Ω⊥), breaks and soft points alike: so
+            # that a narrow axial range near ψ = 90° has panels of its own width.
+            a_pts, p_pts = ax.points[ax.points > 0.0], p.points[p.points > 0.0]
+            meets = (a_pts[:, None] / p_pts[None, :]).ravel()
+            floor = 0.25 * float(np.min(meets)) if meets.size else 0.0
             cuts = np.concatenate(
-                (
-                    _crossings(self.edges, self.box_curves, psi_a, psi_b),
-                    _crossings(circles, planes, psi_a, psi_b),
-                )
+                (_crossings(self.edges, self.box_curves, t_lo, t_hi, floor), meets)
             )
-            self.ends = _panels(_graded(np.r_[psi_a, psi_b, cuts]), psi_a, psi_b)
+            self.empty = t_hi <= t_lo
+            if not self.empty:
+                self.ends = _panels(_graded(_inside(cuts, t_lo, t_hi)), t_lo, t_hi)
             self.inner = self.edges[0].size + self.inner_curves[0].size + 1
             return
-        if psi_b <= psi_a:
+        if t_hi <= t_lo:
             self.empty = True
             return
+        count = _edge_count(self.times, 0.0, om_hi)
+        self._bound_points(count)
+        self._bound_crossings(count)
         edges = _edges(self.times, 0.0, om_hi)
-        self._bound_crossings(edges[0].size)
-        cuts = np.concatenate((_crossings(edges, curve, psi_a, psi_b), fixed_cuts))
-        self.ends = _panels(_graded(np.r_[psi_a, psi_b, cuts]), psi_a, psi_b)
+        floor = (
+            t_lo if t_lo > 0.0 else 0.25 * float(np.min(fixed_cuts[fixed_cuts > 0.0], initial=t_hi))
+        )
+        cuts = np.concatenate((_crossings(edges, curve, t_lo, t_hi, floor), fixed_cuts))
+        self.ends = _panels(_graded(_inside(cuts, t_lo, t_hi)), t_lo, t_hi)
 
-    def _bound_crossings(self, pairs: int) -> None:
+    def _bound_points(self, edges: float, inner: bool = False) -> None:
+        """The refusal of :func:`_omega_psi` (its words), decided from the band edges alone
+        before they or the panels are allocated: each edge cuts at least one panel, on which
+        the first two orders put n points each (n² with ``inner``, the 2-D rule's inner
+        pieces), a lower bound of the points the plan will count."""
+        per_edge = sum(n * n if inner else n for n in POLAR_ORDERS[:2])
+        v.work_bound(
+            f"the exact (Ω, ψ) rule over {self.ranged} ranged spins",
+            edges * per_edge,
+            MAX_POLAR_POINTS,
+            "integrand points",
+            _USE_INSTEAD,
+            rate=POLAR_POINTS_PER_SECOND,
+        )
+
+    def _bound_crossings(self, pairs: float) -> None:
         v.work_bound(
             "the exact (Ω, ψ) rule's search for where band edges cross the spin box",
-            float(pairs) * _CROSSING_SAMPLES,
+            float(pairs) * 2 * _CROSSING_SAMPLES,
             MAX_CROSSING_SAMPLES,
             "curve samples",
             _USE_INSTEAD,
@@ -501,8 +589,8 @@ class _PolarPlan:
 
     def points(self, n: int) -> int:
         """Integrand points of order ``n``, counted before any allocation."""
-        if self.empty:
-            return 0
+        if self.empty or self.flat:
+            return 1
         outer = (self.ends.size - 1) * n
         return outer * self.inner * n if self.kind == "2-D" else outer
 
@@ -511,30 +599,36 @@ class _PolarPlan:
         if self.empty:
             return 0.0
         p, ax, times = self.plane, self.axial, self.times
+        if self.flat:
+            return float(_turning(np.array([p.value]), np.zeros(1), times)[0])
         x, w = _smooth_rule(self.ends, n)
         if self.kind == "diameter":
             assert p.density is not None
-            return math.fsum(w * p.density(x) * _turning(x, np.full_like(x, 0.5 * math.pi), times))
-        s, c = np.sin(x), np.cos(x)
-        a = bands.half_width((c / s) ** 2)
+            return math.fsum(w * p.density(x) * _turning(x, np.zeros_like(x), times))
+        # x is t = cot ψ; dψ = dt / (1 + t²).
+        cot2 = x * x
+        root = np.sqrt(1.0 + cot2)
         if self.kind == "plane fixed":
+            # A = Ω⊥ t: the integral over A, dA = Ω⊥ dt.
             assert ax.density is not None
             r0 = p.value
-            om, axial = r0 / s, r0 * c / s
-            g = ax.density(axial) * _turning(om, a, times) * r0 / (s * s)
+            g = ax.density(r0 * x) * _turning(r0 * root, cot2, times) * r0
             return math.fsum(w * g)
         if self.kind == "axial fixed":
+            # Ω⊥ = A / t: the integral over Ω⊥, dΩ⊥ = A dt / t².
             assert p.density is not None
             a0 = ax.value
-            om, rho = a0 / c, a0 * s / c
-            g = p.density(rho) * _turning(om, a, times) * a0 / (c * c)
+            rho = a0 / x
+            g = p.density(rho) * _turning(rho * root, cot2, times) * rho / x
             return math.fsum(w * g)
         assert p.density is not None and ax.density is not None
+        s, c = 1.0 / root, x / root
+        w = w / (1.0 + cot2)
         total = []
         rows = max(1, _POLAR_CHUNK // (self.inner * n))
         for start in range(0, x.size, rows):
             sl = slice(start, start + rows)
-            ss, cc, aa = s[sl, None], c[sl, None], a[sl, None]
+            ss, cc, tt = s[sl, None], c[sl, None], cot2[sl, None]
             with np.errstate(divide="ignore", invalid="ignore"):
                 lo = np.maximum(p.lo / ss, np.where(ax.lo > 0.0, ax.lo / cc, 0.0))
                 hi = np.minimum(p.hi / ss, ax.hi / cc)
@@ -549,10 +643,15 @@ class _PolarPlan:
                 continue
             pieces = np.stack((ends[:, :-1][keep], ends[:, 1:][keep]), axis=-1)
             om, wo = _smooth_rule(pieces, n)
-            ss, cc, aa = ss[row], cc[row], aa[row]
-            val = p.density(om * ss) * ax.density(om * cc) * om * _turning(om, aa, times)
+            ss, cc, tt = ss[row], cc[row], tt[row]
+            val = p.density(om * ss) * ax.density(om * cc) * om * _turning(om, tt, times)
             total.append(float(np.sum(w[sl][row, None] * wo * val)))
         return math.fsum(total)
+
+
+def _inside(cuts: np.ndarray, lo: float, hi: float) -> np.ndarray:
+    """``cuts`` within [lo, hi], with lo and hi."""
+    return np.r_[lo, hi, cuts[(cuts > lo) & (cuts < hi)]]
 
 
 _OMEGA_PSI = "closed form in T, Gauss–Legendre over the spins in (Ω, ψ)"
@@ -573,10 +672,10 @@ def _polar_seconds(dist: TossDistribution) -> float:
     orders = sum(n * n for n in POLAR_ORDERS[:2])
     if p.density is None or ax.density is None:
         om_hi = math.hypot(p.hi, ax.hi)
-        edges = _edges(times, 0.0, om_hi)[0].size
+        edges = _edge_count(times, 0.0, om_hi)
         return 1e-3 + setup + (edges + p.graded.size + 64) * orders / POLAR_POINTS_PER_SECOND
     om_hi = min(math.hypot(p.hi, ax.hi), math.sqrt(2.0) * p.hi)
-    edges = _edges(times, p.lo, om_hi)[0].size
+    edges = _edge_count(times, p.lo, om_hi)
     curves = p.breaks.size + ax.breaks.size
     panels = edges * curves + edges + 32
     inner = edges + p.graded.size + ax.points.size + 1
@@ -638,10 +737,14 @@ def _omega_psi(dist: TossDistribution, ranged: list[str], details: _Details) -> 
     in Ω: the band edges ((2j + 1)π ± b(ψ)) / T1,2 (1 − P is linear in Ω T between them,
     for T uniform: Keller 1986), the radii where p⊥ has a kink (corners of a uniform box, a
     side's tangent circle) over sin ψ, and the ends of ω_z's range over cos ψ. The inner
-    integral over Ω is cut at all of them; the outer one over ψ at 45°, 90° and where two of
-    these curves cross (:func:`_crossings`). Each panel takes Gauss–Legendre through a
-    smoothstep (:func:`_smooth_rule`), which makes the square roots at ψ = 45° and at a
-    tangent circle smooth. With one of Ω⊥, A fixed the integral is over ψ along one curve.
+    integral over Ω is cut at all of them; the outer one at 45°, 90°, where a circle meets
+    a plane and where two of these curves cross (:func:`_crossings`), in the variable
+    t = cot ψ ∈ [0, 1] (dψ = dt / (1 + t²)), which keeps its digits near ψ = 90° where ψ
+    itself does not (a small ω_z: ψ within 1e-16 of 90° for |ω_z| ≤ 1e-14 rad/s beside
+    Ω⊥ = 60 rad/s). Each panel takes Gauss–Legendre through a smoothstep
+    (:func:`_smooth_rule`), which makes the square roots at ψ = 45° and at a tangent circle
+    smooth. With one of Ω⊥, A fixed the integral is along one curve, over A (Ω⊥ fixed) or
+    over Ω⊥ (A fixed); an axial spin below :data:`NEGLIGIBLE_AXIAL` of Ω⊥ is ω_z = 0.
     Orders :data:`POLAR_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`.
     """
     _check_widths(dist)
