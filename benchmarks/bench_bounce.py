@@ -4,7 +4,7 @@
     python benchmarks/bench_bounce.py --quick      # fewer tosses
     python benchmarks/bench_bounce.py --nickel     # also the US nickel's P(edge) band
     python benchmarks/bench_bounce.py --contact N  # the opt-in contact phase: same side, edges
-    python benchmarks/bench_bounce.py --contact-rates N  # its speed only (and bench_contact.py)
+    python benchmarks/bench_bounce.py --contact-rates N  # its speed only
     python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
     python benchmarks/bench_bounce.py --rigid-rates N [--rounds R]  # the rigid ending's speed
@@ -66,7 +66,7 @@ OWN_RATES_SEED = 7
 
 def own_rates(n: int) -> dict[str, np.ndarray]:
     """Each of ``n`` tosses' own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (seed :data:`OWN_RATES_SEED`),
-    in ``land``'s ``contact`` form (:func:`contact_rates`; ``bench_tolerance.py``)."""
+    in ``land``'s ``contact`` form (:func:`contact_rates`)."""
     rng = np.random.default_rng(OWN_RATES_SEED)
     return {"restitution": rng.uniform(0.2, 0.8, n), "friction": rng.uniform(0.1, 0.6, n)}
 

@@ -53,6 +53,25 @@ def test_top_level_exports_the_nouns_and_verbs():
     assert set(coinflight.__all__) <= set(dir(coinflight))
 
 
+def test_the_api_page_lists_the_top_level_names():
+    """docs/api.rst says everything a user needs is importable from ``coinflight`` and lists
+    it, each name at the module that defines it: the list is ``coinflight.__all__``."""
+    import importlib
+
+    text = (ROOT / "docs" / "api.rst").read_text(encoding="utf-8")
+    after = text.split("\nThe package\n", 1)[1].split(".. autosummary::", 1)[1]
+    listed = {}
+    for line in after.splitlines()[1:]:
+        if line.strip() and not line.startswith("   "):
+            break
+        if line.strip():
+            module, _, name = line.strip().rpartition(".")
+            listed[name] = getattr(importlib.import_module(module), name)
+    assert set(listed) == set(coinflight.__all__) - {"__version__"}
+    for name, value in listed.items():
+        assert getattr(coinflight, name) is value, name
+
+
 def test_top_level_names_are_the_library_objects():
     from coinflight.plotting.bias import plot_bias
     from coinflight.probability.convergence import convergence

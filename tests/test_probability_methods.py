@@ -506,3 +506,39 @@ def test_model_tallies_are_reported():
         # T uniform on 0.6-0.9 s: P(T > 0.8) = 1/3; within 5 binomial standard errors.
         assert abs(r.details["unsettled_fraction"] - 1 / 3) < 5 * math.sqrt(2 / 9 / n), method
     assert "unsettled" not in estimate(dist, "monte-carlo", n=1000, seed=3).details
+
+
+@pytest.mark.parametrize(
+    ("method", "options", "line"),
+    [
+        ("exact", {}, "closed form"),
+        ("grid", {"n": 50}, "50 cells per ranged parameter, 2,500 configurations"),
+        ("monte-carlo", {"n": 1000, "seed": 3}, "1,000 tosses, seed 3"),
+        (
+            "monte-carlo",
+            {"n": 1000, "seed": 3, "grid_cells": 100},
+            "1,000 tosses drawn from 100 cells (method B), seed 3",
+        ),
+        (
+            "monte-carlo",
+            {"n": 1000, "seed": 3, "variance_reduction": "conditional-on-spin"},
+            "1,000 spins, conditional-on-spin (closed form over T), seed 3",
+        ),
+        ("qmc", {"n": 1024, "seed": 3}, "1,024 Sobol points in 16 scramblings, seed 3"),
+        (
+            "qmc",
+            {"n": 1024, "seed": 3, "variance_reduction": "conditional-on-spin"},
+            "1,024 Sobol points in 16 scramblings, conditional-on-spin, seed 3",
+        ),
+    ],
+)
+def test_describe_run_says_how_the_result_was_made(method, options, line):
+    assert estimate(PAPER["fig2a"], method, **options).describe_run() == line
+
+
+def test_describe_run_of_a_quadrature_warning_and_of_another_method():
+    warned = ProbabilityResult(0.5, 0.5, 0.0, 0.5, "exact", details={"how": "q", "warning": "w"})
+    assert warned.describe_run() == "q; quadrature warning: w"
+    other = ProbabilityResult(0.5, 0.5, 0.0, 0.5, "toy", n=10, samples=20, seed=1)
+    assert other.describe_run() == "n = 10, 20 samples, seed 1"
+    assert ProbabilityResult(0.5, 0.5, 0.0, 0.5, "toy").describe_run() == ""

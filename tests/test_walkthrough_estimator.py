@@ -54,10 +54,8 @@ ESTIMATOR = registry.Estimator(
     size="tosses, even (default 100000)",
     seeded=True,
     parallel=False,
-    color="#CC79A7",  # Okabe & Ito reddish purple
     work=lambda dist, n, model: n / model.rate,
     series=(1000, 10_000),
-    summary=lambda r: f"{r.n:,} antithetic tosses, seed {r.seed}",
 )
 # --- and the one registration line ------------------------------------------------------------
 
@@ -99,16 +97,38 @@ def test_command_line_and_figures_read_the_registry(registered, tmp_path):
 
     from coinflight.cli import app
     from coinflight.plotting.convergence import plot_convergence
-    from coinflight.plotting.style import method_color
+    from coinflight.plotting.style import method_color, method_style
 
     args = ["probability", "--omega-x", "60:90", "--flight-time", "0.6:0.9"]
     out = CliRunner().invoke(app, [*args, "-m", "antithetic", "--n", "2000", "--seed", "5"])
     assert out.exit_code == 0, out.output
-    assert "method antithetic: 2,000 antithetic tosses, seed 5" in out.stdout
+    assert "method antithetic: n = 2,000, seed 5;" in out.stdout  # its size and seed
     out = CliRunner().invoke(app, [*args, "-m", "antithetic", "--seed", "5", "--json"])
     assert json.loads(out.stdout)["n"] == 100_000  # the declared default
     bad = CliRunner().invoke(app, [*args, "-m", "antithetic", "--threads", "2"])
     assert bad.exit_code == 2 and "--threads does not apply to the antithetic method" in bad.stderr
-    assert method_color("antithetic") == "#CC79A7"
+    # A colour and marker of its own, with no edit to plotting: the first colour of the
+    # Okabe & Ito palette that the built-in methods leave free (reddish purple).
+    assert method_style("antithetic") == ("#CC79A7", "s")
+    builtin = ("exact", "grid", "monte-carlo", "qmc")
+    assert method_color("antithetic") not in {method_color(m) for m in builtin}
     fig = plot_convergence(convergence(FIG2A, ["antithetic"], antithetic_sizes=[200], seed=1))
-    assert fig.axes[0].get_legend_handles_labels()[1][0] == ESTIMATOR.label
+    handles, labels = fig.axes[0].get_legend_handles_labels()
+    assert labels[0] == ESTIMATOR.label
+    assert handles[0].get_color() == "#CC79A7" and handles[0].get_marker() == "s"
+
+
+def test_each_estimator_from_outside_gets_a_look_of_its_own(registered, monkeypatch):
+    from dataclasses import replace
+
+    from coinflight.plotting.style import METHOD_STYLES, MethodStyle, method_style
+
+    registry.register(replace(ESTIMATOR, name="antithetic-2"))
+    try:  # the second one registered from outside: the next free colour and marker
+        assert method_style("antithetic-2") == ("#56B4E9", "^")
+        monkeypatch.setitem(METHOD_STYLES, "antithetic", MethodStyle("#E69F00", "x"))
+        assert method_style("antithetic") == ("#E69F00", "x")  # its own entry, where given
+    finally:
+        registry.unregister("antithetic-2")
+    with pytest.raises(ValueError, match="unknown method 'nope'"):
+        method_style("nope")

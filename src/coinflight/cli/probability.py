@@ -173,9 +173,5 @@ def _gravity_line(g: float, launch_speed: str | None) -> str:
     return line
 
 
-def _method_line(result: object) -> str:
-    from coinflight.probability import ProbabilityResult
-
-    assert isinstance(result, ProbabilityResult)
-    extra = registry.get(result.method).summary(result)
-    return f"method {result.method}: {extra}; {result.elapsed:.3g} s"
+def _method_line(result: ProbabilityResult) -> str:
+    return f"method {result.method}: {result.describe_run()}; {result.elapsed:.3g} s"

@@ -767,7 +767,7 @@ def simultaneous_point(
     time to compare with the contact's duration: the impact at one end of a flat coin drives
     the other end down (the falling rod), so the sequential law's own next contact comes
     within t_c of the first for tilts up to about (−u_b⁺) t_c / 2r, not just the approach
-    speed's. The two contacts make one impact as far as w = :func:`simultaneity`(τ_b / t_c)
+    speed's. The two contacts make one impact as far as w = :func:`simultaneity` (τ_b / t_c)
     says: fully if b would strike within the first half of the first contact (during its
     compression), not at all if after its end; the candidate with the larger w is taken.
     (Gravity and the rotation of the gap over τ_b, both of order τ_b² ≤ t_c², are left out.)

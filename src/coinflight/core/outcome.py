@@ -55,7 +55,7 @@ class Status(IntEnum):
     :func:`coinflight.core.contact_phase.upright_decided`, and was ended there on edge. That
     decision is a measured predictor of ending on edge (0 disagreements in 961 decisions at
     rolling and pivoting resistance 1e-5 m and in 737 at the default 1e-4 m, the latter counted
-    before an unsettled carry counted as a disagreement, ``benchmarks/bench_contact.py``;
+    before an unsettled carry counted as a disagreement, ``bench_contact.py``;
     :mod:`coinflight.core.contact_phase`, "Upright rollers"), not a proof: the coin
     may still be rolling then (at up to about 1 m/s), and its settle time is the decision's."""
 

@@ -105,8 +105,8 @@ A landing's contact takes about 2,000-3,000 accepted steps a simulated second at
 tolerance (1e-9), a few μs each: the coins the bounces hand over spin (one precessing at
 ~100 rad/s takes steps of ~0.5 ms), switch between sticking and slipping at the cone's
 boundary (steps of ~15 μs while a small slip turns), and lift off within milliseconds (events
-located by bisection). ``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a
-second; ``benchmarks/bench_rigid.py`` this contact against the compliant one.
+located by bisection). ``benchmarks/bench_bounce.py --rigid-rates`` measures the
+landings a second.
 """
 
 from __future__ import annotations

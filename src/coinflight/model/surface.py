@@ -39,7 +39,7 @@ upright decision (``core.contact_phase.upright_decided``) takes each step left t
 ``BUDGET_STEP`` (0.1 ms), while an upright roller's mean step falls as 1/μ (its regularised
 friction's time constant m v_ε / (μ F_n)): 0.966, 0.337, 0.113, 0.034 ms at μ 0.3, 1, 3, 10
 (207, 593, 1,765, 5,875 steps per 0.2 s of upright rolling; a nickel rolling at 0.3 m/s,
-e 0.5, resistances 1e-4 m, measured 2026-11-24). At μ 3 the step still covers BUDGET_STEP, so
+e 0.5, resistances 1e-4 m). At μ 3 the step still covers BUDGET_STEP, so
 a roller decided upright, carried on undecided, settles (tests/test_contact_friction.py); at
 μ 10 rollers decided upright at 0.9-2 m/s run out of steps carried on (UNSETTLED), so the
 decision would turn unsettled tosses into decided ones. Raising the cap needs BUDGET_STEP
@@ -183,9 +183,7 @@ class Surface:
         the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
         phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
         "decided upright" for a coin its upright decision ended on edge);
-        **experimental**: slow (about 3,000 landings a second on 2 cores instead of about
-        100,000: vigorous tosses, e 0.5, μ 0.3, 2026-11-24; with the joint damping of two
-        pressed rims 2,745 against 2,741 before it, in the same rounds), and its edge
+        **experimental**: slow (about thirty times the rocking ending's cost), and its edge
         rates are not yet credible (coins that roll upright on a sharp-cornered rim stop
         upright; see :mod:`coinflight.core.contact_phase`).
 

@@ -55,55 +55,33 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 
 BOUNCING_TOSSES_PER_SECOND = 2e4
 """Drag-free table landings carried to rest a second with the default ending (the planar
-rocking hand-off), for the work bounds: at or below every rate measured on the loaded machine,
-so that an estimated time is never too short. Measured on the project's 2-core machine (AMD
-EPYC, 2 threads, shared by up to six sessions), vigorous nickel tosses, e = 0.5, μ = 0.3,
-medians: 95,770 a second quiet (load 0.1-1.3, ``python benchmarks/bench_bounce.py
---contact-rates 1000``, the lead, 2026-11-23 20:03 UTC), 111,685 quiet with 100,000 tosses
-(``benchmarks/bench_air.py``, vacuum to rest, same minutes); 22,000-30,000 at a load of 4-8
-(``--contact-rates 1000``, helpers, 2026-11-23); 51,515 at a load of 9.9 (``python
-benchmarks/bench_air.py --n 20000 --repeats 3 --reference 1``, vacuum to rest, helper w-fix,
-2026-11-23 21:03 UTC) and 35,688 at 10.1 (20,000 tosses, median of 3, 21:06 UTC). (25,000 at
-e = 0.8, μ = 0.1 and 405,000 dead, e = 0, at a load of 2.5-3.5, an earlier session.)"""
+rocking hand-off), for the work bounds: vigorous nickel tosses, e = 0.5, μ = 0.3, on 2 threads
+of a busy 2-core machine (a quiet one runs about five times as many; ``python
+benchmarks/bench_bounce.py`` measures it), so that an estimated time is never too short."""
 
 CONTACT_TOSSES_PER_SECOND = 150.0
 """Drag-free table landings carried to rest a second with the experimental 3-D contact phase
-(``Surface(ending="contact")``, e > 0), all on one surface, for the work bounds: at or below
-every rate measured on the loaded machine. Measured on the project's 2-core machine (AMD EPYC,
-2 threads), vigorous nickel tosses, e = 0.5, μ = 0.3, medians of 3 (``python
-benchmarks/bench_bounce.py --contact-rates N``; 66-81 % of the tosses go through the contact
-phase, for a median 0.3-2.3 s of motion): 831 a second quiet (load 0.1-1.3, N = 1000, the
-lead, 2026-11-23 20:03 UTC), 839 quiet (load 1.4, 16:42 UTC); 466 at a load of 3.5, 233 at
-5.7 (17:51 UTC), 180 at 7.8 (18:23 UTC); 207 at 9.7 (N = 300, helper w-fix, 21:03 UTC) and
-224 at 10.1 (300 tosses, 21:06 UTC)."""
+(``Surface(ending="contact")``, e > 0), all on one surface, for the work bounds: vigorous
+nickel tosses, e = 0.5, μ = 0.3, on 2 threads of a busy 2-core machine (a quiet one runs about
+five times as many; ``python benchmarks/bench_bounce.py --contact-rates N``)."""
 
 RIGID_TOSSES_PER_SECOND = 50.0
 """Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
-e > 0), drag-free or through air, for the work bounds: at or below the rates measured on the
-loaded machine. ``python benchmarks/bench_bounce.py --rigid-rates 1000 --rounds 1`` (US nickel,
-e = 0.5, μ = 0.3, resistances 1e-4 m, 2 threads on the project's 2-core machine): 91 vigorous
-and 82 human tosses a second at a load of 5.7, 173 and 93 at 3.0 (the coins roll for a median
-1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
+e > 0), drag-free or through air, for the work bounds: US nickel, e = 0.5, μ = 0.3,
+resistances 1e-4 m, on 2 threads of a busy 2-core machine (``python benchmarks/bench_bounce.py
+--rigid-rates N``; the coins roll for a median 1.5 s, up to 22 s: about 3,000 steps of the
+one-rim contact a landing)."""
 
 CONTACT_PER_TOSS_PER_SECOND = 75.0
 """The same landings when every toss has its own contact parameters (a distribution of e, μ
 or the resistances, drawn toss by toss: each landing then builds its own contact record and
-the contact phase its damping), for the work bounds: at or below every loaded rate. ``python
-benchmarks/bench_bounce.py --contact-rates N`` (vigorous nickel tosses, e ~ U(0.2, 0.8),
-μ ~ U(0.1, 0.6), median of 3, 2 threads) on the project's 2-core machine: 515 a second
-against 831 on one surface quiet (load 0.1-1.3, N = 1000, the lead, 2026-11-23 20:03 UTC),
-425 against 839 (load 1.4, 16:42 UTC); 134 against 233 at a load of 5.7 (17:51 UTC), 88
-against 180 at 7.8 (18:23 UTC); 126 against 207 at 9.7 (N = 300, helper w-fix, 21:03 UTC):
-0.49-0.62 of the one-surface rate, so half of :data:`CONTACT_TOSSES_PER_SECOND`."""
+the contact phase its damping), for the work bounds: about half of
+:data:`CONTACT_TOSSES_PER_SECOND` (``python benchmarks/bench_bounce.py --contact-rates N``)."""
 
-CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
-"""Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
-e = 0.5, μ = 0.3, C_d = 1.17, vigorous nickel tosses, 2 threads), for the work bounds: at or
-below the loaded rates measured. 164 a second on 2,000 tosses under a load of 5-8, against
-6,807 with the rocking ending in the same run (median of 3, helper w-options, 2026-11-23);
-306 on 300 tosses at a load of 10.1 (median of 3, against 224 drag-free in the same rounds;
-helper w-fix, 2026-11-23 21:06 UTC, a script timing
-:func:`land` as ``benchmarks/bench_bounce.py --contact-rates`` does)."""
+CONTACT_AIR_LANDINGS_PER_SECOND = 1e4
+"""Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,
+C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: 2 threads of a busy
+2-core machine (a quiet one runs about five times as many; ``python benchmarks/bench_air.py``)."""
 
 AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,

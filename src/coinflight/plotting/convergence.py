@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from coinflight.plotting.style import new_figure
+from coinflight.plotting.style import EXACT_COLOR, method_color, method_style, new_figure
 from coinflight.probability import registry
 
 if TYPE_CHECKING:
@@ -41,7 +41,7 @@ def error_reference(result: Convergence) -> tuple[float, str]:
         return result.exact, "exact"
     grid = result.series("grid") if "grid" in result.methods else ()
     last = grid[-1] if grid else max(result.points, key=lambda p: p.samples)
-    return last.p_heads, f"the largest {registry.get(last.method).name} estimate"
+    return last.p_heads, f"the largest {last.method} estimate"
 
 
 def fitted_slope(samples: np.ndarray, errors: np.ndarray) -> tuple[float, float] | None:
@@ -76,7 +76,7 @@ def _short_name(result: Convergence, method: str) -> str:
 def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: float) -> None:
     """One method's errors, its 95 % band (methods with a standard error) and its rate line."""
     pts: tuple[ConvergencePoint, ...] = result.series(method)
-    estimator = registry.get(method)
+    color, marker = method_style(method)
     name = _short_name(result, method)
     x = np.array([p.samples for p in pts], dtype=float)
     err = np.array([abs(p.p_heads - ref) for p in pts])
@@ -85,8 +85,8 @@ def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: 
         x,
         shown,
         "-",
-        marker=estimator.marker,
-        color=estimator.color,
+        marker=marker,
+        color=color,
         label=_series_label(result, method),
         markersize=4,
         linewidth=1.2,
@@ -99,7 +99,7 @@ def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: 
             floor,
             np.where(has_band, half, floor),
             where=has_band,
-            color=estimator.color,
+            color=color,
             alpha=0.15,
             linewidth=0,
             label=f"{name}: 95 % interval half-width, 1.96 s.e.",
@@ -112,7 +112,7 @@ def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: 
             x,
             half[first] * np.sqrt(x[first] / x),
             ":",
-            color=estimator.color,
+            color=color,
             linewidth=1.2,
             label=f"{name}: expected slope −1/2 (error ∝ n^-1/2)",
         )
@@ -124,7 +124,7 @@ def _draw_series(ax: Axes, result: Convergence, method: str, ref: float, floor: 
             x,
             10.0**intercept * x**slope,
             "--",
-            color=estimator.color,
+            color=color,
             linewidth=1,
             label=f"{name}: observed slope {slope:.2f} (least-squares fit)",
         )
@@ -154,13 +154,11 @@ def plot_estimates(result: Convergence, title: str | None = None) -> Figure:
     a black line, and method B's limit (its coarse grid's exact count) a dashed one when it
     differs from it. Without an exact value the lines are the estimates alone.
     """
-    from coinflight.plotting.style import EXACT_COLOR
-
     fig = new_figure(figsize=(6.4, 6.0))
     ax = fig.add_subplot()
     for method in result.methods:
         pts = result.series(method)
-        estimator = registry.get(method)
+        color, marker = method_style(method)
         x = np.array([p.samples for p in pts], dtype=float)
         y = np.array([p.p_heads for p in pts])
         ci = [p.ci95 for p in pts]
@@ -174,8 +172,8 @@ def plot_estimates(result: Convergence, title: str | None = None) -> Figure:
             y,
             yerr=yerr,
             fmt="-",
-            marker=estimator.marker,
-            color=estimator.color,
+            marker=marker,
+            color=color,
             markersize=4,
             linewidth=1.2,
             capsize=2 if yerr is not None else 0,
@@ -191,7 +189,7 @@ def plot_estimates(result: Convergence, title: str | None = None) -> Figure:
     if result.coarse_limit is not None and result.coarse_limit != result.exact:
         ax.axhline(
             result.coarse_limit,
-            color=registry.get("monte-carlo").color,
+            color=method_color("monte-carlo"),
             linestyle="--",
             linewidth=1,
             label=f"method B's limit: the {result.grid_cells}-cell grid, {result.coarse_limit:.6f}",
@@ -230,7 +228,7 @@ def plot_convergence(result: Convergence, title: str | None = None) -> Figure:
     if result.coarse_limit is not None and abs(result.coarse_limit - ref) > 0:
         ax.axhline(
             abs(result.coarse_limit - ref),
-            color=registry.get("monte-carlo").color,
+            color=method_color("monte-carlo"),
             linestyle="--",
             linewidth=1,
             label=f"method B's limit: |{result.grid_cells}-cell grid − {ref_name}| = "

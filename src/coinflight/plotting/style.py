@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from coinflight._files import check_name, check_writable, replacing_all
 
@@ -46,11 +46,48 @@ def color_name(color: str) -> str:
         ) from None
 
 
-def method_color(method: str) -> str:
-    """The colour of an estimator (its entry in :mod:`coinflight.probability.registry`)."""
+class MethodStyle(NamedTuple):
+    """How an estimator's series looks in figures."""
+
+    color: str
+    marker: str
+
+
+METHOD_STYLES: dict[str, MethodStyle] = {
+    "exact": MethodStyle(EXACT_COLOR, "o"),
+    "grid": MethodStyle("#0072B2", "o"),  # method A (blue in the paper)
+    "monte-carlo": MethodStyle("#D55E00", "o"),  # method B (red in the paper)
+    "qmc": MethodStyle("#009E73", "o"),
+}
+"""The colour and marker of each built-in estimator in figures. Code that registers an estimator
+may add its own entry here; without one it gets a look of its own from :func:`method_style`."""
+OTHER_COLORS = ("#CC79A7", "#56B4E9", "#E69F00", "#F0E442")
+"""The palette's colours the built-in estimators leave free, in the order other estimators get
+them."""
+OTHER_MARKERS = ("s", "^", "D", "v", "P")
+"""The markers other estimators get, in turn (with four colours, 20 distinct looks)."""
+
+
+def method_style(method: str) -> MethodStyle:
+    """The colour and marker of the estimator ``method`` (a name of
+    :func:`coinflight.probability.registry.names`; ValueError naming the choices otherwise).
+
+    Its entry in :data:`METHOD_STYLES`; else, for the k-th registered estimator without one
+    (in the order of registration), the k-th of :data:`OTHER_COLORS` and of
+    :data:`OTHER_MARKERS`, each taken in turn.
+    """
     from coinflight.probability import registry
 
-    return registry.get(method).color
+    registry.get(method)
+    if method in METHOD_STYLES:
+        return METHOD_STYLES[method]
+    k = [name for name in registry.names() if name not in METHOD_STYLES].index(method)
+    return MethodStyle(OTHER_COLORS[k % len(OTHER_COLORS)], OTHER_MARKERS[k % len(OTHER_MARKERS)])
+
+
+def method_color(method: str) -> str:
+    """The colour of the estimator ``method`` in figures (:func:`method_style`)."""
+    return method_style(method).color
 
 
 FIGSIZE = (6.4, 4.8)

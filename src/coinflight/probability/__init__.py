@@ -28,7 +28,7 @@ from typing import Any
 from coinflight import _validation as v
 from coinflight.model.ensemble import TossDistribution
 from coinflight.outcomes.base import OutcomeModel
-from coinflight.outcomes.hand import HAND_CATCH, HandCatch
+from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability import registry
 from coinflight.probability.result import ProbabilityResult, wilson_interval
 from coinflight.probability.sweep import ProbabilityResults, estimate_many
@@ -104,11 +104,8 @@ def __getattr__(name: str) -> Any:
 __all__ = [
     "METHODS",
     "PAPER_B_CELLS",
-    "HandCatch",
-    "OutcomeModel",
     "ProbabilityResult",
     "ProbabilityResults",
-    "TossDistribution",
     "convergence",
     "estimate",
     "estimate_many",

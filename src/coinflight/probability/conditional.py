@@ -14,7 +14,6 @@ Monte Carlo (Rao–Blackwellisation): the same mean, a variance never larger (Ro
 
 from __future__ import annotations
 
-import time
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,8 +22,7 @@ from numpy.typing import NDArray
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform, unit_cube_values
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability.result import ProbabilityResult
-from coinflight.probability.streams import reported_seed
+from coinflight.probability.result import ProbabilityResult, from_same_side, interval, sampled
 
 if TYPE_CHECKING:
     from coinflight.outcomes.base import OutcomeModel
@@ -117,20 +115,8 @@ def result(
     """The result of ``method`` in this mode from P(same side) ``same``, its standard error and
     the half-width ``half`` of its 95 % interval (no counts: averages of probabilities)."""
     p = same if dist.start_sign > 0 else 1.0 - same
-    return ProbabilityResult(
-        p_heads=p,
-        p_tails=1.0 - p,
-        p_edge=0.0,
-        p_same_side=same,
-        method=method,
-        n=n,
-        samples=n,
-        stderr=stderr,
-        ci95=(max(0.0, p - half), min(1.0, p + half)),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
-        details=details,
-    )
+    fields = sampled(n, stderr, interval(p, half), root, t0)
+    return from_same_side(same, dist.start_sign, method, **fields, details=details)
 
 
 __all__ = [

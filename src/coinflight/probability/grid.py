@@ -254,9 +254,7 @@ ESTIMATOR = Estimator(
     default_n=default_cells,
     size="cells per ranged parameter (default 5000 with up to 2 ranged parameters, else the "
     "largest N with N^k ≤ 10^8)",
-    color="#0072B2",  # method A (blue in the paper)
     work=check_work,
     work_units=lambda k, n: n**k,
     series=(5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000),  # up to the paper's 5000
-    summary=lambda r: f"{r.n} cells per ranged parameter, {r.samples:,} configurations",
 )

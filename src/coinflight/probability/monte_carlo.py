@@ -29,11 +29,16 @@ from coinflight.probability._runner import (
     run_tasks,
 )
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import Z95, ProbabilityResult, from_counts, wilson_interval
+from coinflight.probability.result import (
+    Z95,
+    ProbabilityResult,
+    from_counts,
+    sampled,
+    wilson_interval,
+)
 from coinflight.probability.streams import (
     BLOCK,
     SeedLike,
-    reported_seed,
     seed_sequence,
     unit_cube,
 )
@@ -186,12 +191,7 @@ def estimate(
         (int(counts[0]), heads, int(counts[2])),
         dist.start_sign,
         method_name,
-        n=n,
-        samples=n,
-        stderr=math.sqrt(p * (1.0 - p) / n),
-        ci95=wilson_interval(heads, n),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
+        **sampled(n, math.sqrt(p * (1.0 - p) / n), wilson_interval(heads, n), root, t0),
         details=details,
     )
 
@@ -232,17 +232,6 @@ def _work(dist: TossDistribution, n: int, model: OutcomeModel = HAND_CATCH) -> f
     return n / model.rate_for(dist)
 
 
-def _summary(result: ProbabilityResult) -> str:
-    if result.details.get("variance_reduction"):
-        return (
-            f"{result.n:,} spins, {result.details['variance_reduction']} (closed form over T), "
-            f"seed {result.seed}"
-        )
-    cells = result.details.get("grid_cells")
-    extra = f"{result.n:,} tosses" + (f" drawn from {cells} cells (method B)" if cells else "")
-    return extra + f", seed {result.seed}"
-
-
 ESTIMATOR = Estimator(
     name=NAME,
     run=estimate,
@@ -252,10 +241,8 @@ ESTIMATOR = Estimator(
     size="tosses (default 1000000)",
     seeded=True,
     options=("grid_cells", "chunk_size", "variance_reduction"),
-    color="#D55E00",  # method B (red in the paper)
     work=_work,
     series=(100, 300, 1000, 3000, 10**4, 3 * 10**4, 10**5, 3 * 10**5, 10**6, 10**7),
-    summary=_summary,
     sizes_keyword="event_sizes",
     modes=(conditional.MODE,),
 )

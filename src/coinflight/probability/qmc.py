@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -21,8 +22,8 @@ from coinflight.outcomes.hand import HAND_CATCH
 from coinflight.probability import _runner, conditional
 from coinflight.probability._runner import Executor, Progress, check_count
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import ProbabilityResult, from_counts
-from coinflight.probability.streams import SeedLike, generator, reported_seed, seed_sequence
+from coinflight.probability.result import ProbabilityResult, from_counts, interval, sampled
+from coinflight.probability.streams import SeedLike, generator, seed_sequence
 
 DEFAULT_REPLICATES = 16
 MAX_REPLICATES = 1024
@@ -44,14 +45,14 @@ NAME = "qmc"
 """The method's name (its registry entry, results, messages)."""
 
 
-def _task(args: tuple[Any, ...]) -> np.ndarray:
+def _sobol(
+    k: int, root: np.random.SeedSequence, replicate: int, points: int, start: int = 0
+) -> Iterator[Any]:
+    """Scrambling ``replicate``'s Sobol points ``start`` to ``start + points`` in k dimensions,
+    in chunks of powers of two (which keep Sobol's balance, and SciPy's warning, in check),
+    each as a contiguous (k, size) array."""
     from scipy.stats import qmc
 
-    model, dist, root, replicate, start, points = args
-    k = len(dist.ranged)
-    counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
-    if k == 0:
-        return model.count(dist, np.zeros((0, points)))
     sobol = qmc.Sobol(
         d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
     )
@@ -59,32 +60,31 @@ def _task(args: tuple[Any, ...]) -> np.ndarray:
         sobol.fast_forward(start)
     done = 0
     while done < points:
-        # Powers of two at every call keep Sobol's balance (and SciPy's warning) in check.
         size = min(_CHUNK, points - done)
-        counts += model.count(dist, np.ascontiguousarray(sobol.random(size).T))
+        yield np.ascontiguousarray(sobol.random(size).T)
         done += size
+
+
+def _task(args: tuple[Any, ...]) -> np.ndarray:
+    model, dist, root, replicate, start, points = args
+    k = len(dist.ranged)
+    counts = np.zeros(3 + len(model.tallies), dtype=np.int64)
+    if k == 0:
+        return model.count(dist, np.zeros((0, points)))
+    for u in _sobol(k, root, replicate, points, start):
+        counts += model.count(dist, u)
     return counts
 
 
 def _conditional_task(args: tuple[Any, ...]) -> float:
     """The mean of P(same | spins) over one scrambling's points (spins only)."""
-    from scipy.stats import qmc
-
     dist, root, replicate, points = args
     k = len(conditional.ranged_spins(dist))
     if k == 0:
         wx, wy, wz = (np.full(1, getattr(dist, n).mean) for n in conditional.SPINS)
         return float(conditional.same_side_given_spins(dist, wx, wy, wz)[0])
-    sobol = qmc.Sobol(
-        d=k, scramble=True, seed=generator(root, replicate, bit_generator=np.random.PCG64)
-    )
-    sums = []
-    done = 0
-    while done < points:
-        size = min(_CHUNK, points - done)
-        u = np.ascontiguousarray(sobol.random(size).T)
-        sums.append(float(np.sum(conditional.same_side_at(dist, u))))
-        done += size
+    chunks = _sobol(k, root, replicate, points)
+    sums = [float(np.sum(conditional.same_side_at(dist, u))) for u in chunks]
     return math.fsum(sums) / points
 
 
@@ -179,12 +179,7 @@ def estimate(
         (int(counts[0]), int(counts[1]), int(counts[2])),
         dist.start_sign,
         NAME,
-        n=n,
-        samples=n,
-        stderr=stderr,
-        ci95=(max(0.0, p - half), min(1.0, p + half)),
-        seed=reported_seed(root),
-        elapsed=time.perf_counter() - t0,
+        **sampled(n, stderr, interval(p, half), root, t0),
         details={
             "replicates": replicates,
             "points_per_replicate": points,
@@ -244,13 +239,7 @@ ESTIMATOR = Estimator(
     size="points, 16 × a power of two (default 1048576)",
     seeded=True,
     options=("replicates", "variance_reduction"),
-    color="#009E73",
     work=_work,
     series=tuple(16 << k for k in range(2, 17)),
-    summary=lambda r: (
-        f"{r.n:,} Sobol points in {r.details['replicates']} scramblings"
-        + (f", {r.details['variance_reduction']}" if r.details.get("variance_reduction") else "")
-        + f", seed {r.seed}"
-    ),
     modes=(conditional.MODE,),
 )

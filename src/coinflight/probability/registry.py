@@ -1,10 +1,12 @@
 """The estimators of P(heads), each declared once.
 
-An :class:`Estimator` says everything the rest of the package needs about a method: its name,
-the function that runs it, its default size, whether it takes a seed and which options, a label
-and description for help texts, its colour and marker in figures, and its work bound.
-:func:`coinflight.probability.estimate` dispatches through :func:`get`; ``convergence``, the
-command line's method choices and help, and the figures' colours read the same entries.
+An :class:`Estimator` says what a method is: its name, the function that runs it, its default
+size, whether it takes a seed and which options, a label and description for help texts and
+legends, its work bound and its convergence series. :func:`coinflight.probability.estimate`
+dispatches through :func:`get`; ``convergence`` and the command line's method choices and help
+read the same entries. How a method looks is decided where it is shown: its colour and marker
+in :func:`coinflight.plotting.style.method_style`, the one line saying how a run was made in
+:meth:`coinflight.probability.result.ProbabilityResult.describe_run`.
 
 Adding an estimator (two files): write its module, ending with
 ``ESTIMATOR = Estimator(name=..., run=estimate, ...)``, and add the module's name to
@@ -74,8 +76,6 @@ class Estimator:
         Extra keyword options it accepts.
     parallel : bool
         Whether it takes ``executor``, ``threads`` and ``progress``.
-    color, marker : str
-        Its look in figures.
     work : callable or None
         ``work(dist, n, model)``: seconds of work at size n, a ValueError beyond what a single
         run accepts; None when the method bounds its own work inside ``run``.
@@ -84,8 +84,6 @@ class Estimator:
     series : tuple of int
         Default sizes of a :func:`~coinflight.probability.convergence.convergence` series;
         empty: the method has no series (exact).
-    summary : callable
-        ``summary(result)``: how the run was made, one line for the command line.
     sizes_keyword : str
         The keyword of its convergence sizes when not ``NAME_sizes``.
     modes : tuple of str
@@ -102,12 +100,9 @@ class Estimator:
     seeded: bool = False
     options: tuple[str, ...] = ()
     parallel: bool = True
-    color: str = "#000000"
-    marker: str = "o"
     work: Callable[[TossDistribution, int, OutcomeModel], float] | None = None
     work_units: Callable[[int, int], int] = _tosses
     series: tuple[int, ...] = ()
-    summary: Callable[[ProbabilityResult], str] = lambda result: ""
     sizes_keyword: str = ""
     modes: tuple[str, ...] = ()
 

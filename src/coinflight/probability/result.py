@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import asdict, dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from coinflight.probability.streams import reported_seed
+
 if TYPE_CHECKING:
+    import numpy as np
     import pandas as pd
 
 
@@ -116,6 +120,38 @@ class ProbabilityResult:
             unc = ""
         return f"P(heads) = {p:.6f}{unc}"
 
+    def describe_run(self) -> str:
+        """How the result was made, one line (the command line's ``method NAME:`` line).
+
+        The integral (exact, with any quadrature warning); the cells and configurations
+        (grid); the tosses or points, the variance reduction and the seed (monte-carlo, qmc).
+        A method registered from outside gets its size n, the samples where they differ from
+        n, and its seed.
+        """
+        d = self.details
+        mode = d.get("variance_reduction")
+        if self.method == "exact":
+            warning = d.get("warning")
+            return str(d["how"]) + (f"; quadrature warning: {warning}" if warning else "")
+        if self.method == "grid":
+            return f"{self.n} cells per ranged parameter, {self.samples:,} configurations"
+        if self.method == "monte-carlo" and mode:
+            parts = [f"{self.n:,} spins, {mode} (closed form over T)"]
+        elif self.method == "monte-carlo":
+            cells = d.get("grid_cells")
+            drawn = f" drawn from {cells} cells (method B)" if cells else ""
+            parts = [f"{self.n:,} tosses{drawn}"]
+        elif self.method == "qmc":
+            parts = [f"{self.n:,} Sobol points in {d['replicates']} scramblings"]
+            parts += [str(mode)] if mode else []
+        else:
+            parts = [f"n = {self.n:,}"] if self.n is not None else []
+            if self.samples is not None and self.samples != self.n:
+                parts.append(f"{self.samples:,} samples")
+        if self.seed is not None:
+            parts.append(f"seed {self.seed}")
+        return ", ".join(parts)
+
 
 def require_pandas() -> Any:
     """The pandas module, or an ImportError saying how to install it (it is optional)."""
@@ -171,6 +207,37 @@ def from_counts(
         counts=(tails, heads, edge),
         **kwargs,
     )
+
+
+def from_same_side(same: float, start_sign: float, method: str, **kwargs: Any) -> ProbabilityResult:
+    """A result with no edge from P(same side) ``same``: P(heads) is ``same`` for tosses
+    starting heads up (``start_sign`` > 0), else 1 − ``same``."""
+    p = same if start_sign > 0 else 1.0 - same
+    return ProbabilityResult(
+        p_heads=p, p_tails=1.0 - p, p_edge=0.0, p_same_side=same, method=method, **kwargs
+    )
+
+
+def interval(p: float, half: float) -> tuple[float, float]:
+    """The interval ``p`` ± ``half``, within [0, 1]."""
+    return (max(0.0, p - half), min(1.0, p + half))
+
+
+def sampled(
+    n: int, stderr: float, ci95: tuple[float, float], root: np.random.SeedSequence, t0: float
+) -> dict[str, Any]:
+    """What every sampling method reports besides its estimate: its size ``n`` (also its
+    samples), standard error, 95 % interval, the seed of ``root`` and the seconds since
+    ``t0`` (``time.perf_counter``); keyword arguments of :func:`from_counts` and
+    :func:`from_same_side`."""
+    return {
+        "n": n,
+        "samples": n,
+        "stderr": stderr,
+        "ci95": ci95,
+        "seed": reported_seed(root),
+        "elapsed": time.perf_counter() - t0,
+    }
 
 
 @dataclass(frozen=True)

@@ -52,7 +52,7 @@ class Sizes:
     """How much the report computes (the defaults are the full report; :data:`QUICK`)."""
 
     dead: int = 100_000
-    """Dead landings per ratio h/d (issue 11: 10⁵)."""
+    """Dead landings per ratio h/d (10⁵: P(edge) to about ±0.0015)."""
     bouncing: int = 20_000
     """The same tosses bouncing: tosses per ratio and (e, μ) cell."""
     bouncing_cells: int = 3
@@ -905,8 +905,7 @@ def _edges_section(check: study.EdgeCheck) -> tuple[Block, ...]:
                 "coins on edge as coinflight, the edge rate is the sharp rim's (both engines'); "
                 "where it leaves fewer, the difference lies in the engines' contact laws "
                 "(coinflight.core.contact_phase's module notes). Measured from coinflight's own "
-                "hand-off states (benchmarks/bench_mujoco_edges.py --handoff-only, "
-                "bench_edge_trace.py, bench_rim_impacts.py; one point, not a band: vigorous "
+                "hand-off states (one point, not a band: vigorous "
                 "US-nickel tosses, e 0.5, μ 0.3, rolling and pivoting resistance 1e-4 m, sharp "
                 "corners, t_c 1 ms): about half of the gap is MuJoCo's shared friction budget "
                 "at condim 6; the rest is not MuJoCo's soft friction "

@@ -1,5 +1,8 @@
 """Thick cylinders against experiments: measured edge fractions beside the table landing's band.
 
+(The study scripts named ``bench_*.py`` below have left the package; git history keeps
+them.)
+
 For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
 describes) the study simulates that setting with
 :func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
@@ -22,11 +25,11 @@ Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
     assumption: coin-sized to a large draughts piece). By default the tosses are planar (no
     axial spin ωz); ``psi`` adds the wobble of a precessing toss (below).
 
-A cylinder of diameter D is simulated at that size (``simulate_edge``'s ``diameter``). Until
-2026-11-23 the study landed the 24 mm coin in a world scaled by k = 24 mm / D (g, drop, v0
+A cylinder of diameter D is simulated at that size (``simulate_edge``'s ``diameter``). Earlier, the
+study landed the 24 mm coin in a world scaled by k = 24 mm / D (g, drop, v0
 and resistance lengths × k: dimensional similarity); the direct size agrees with it in all 34
 rocking cells of ``bench_edge_experiments.py 20000 --contact 0 --points 2 --seed 2018`` (same
-tosses, every difference within 0.93 s.e.; 2026-11-23 21:55 UTC, load 1–2), and every number
+tosses, every difference within 0.93 s.e.), and every number
 below was measured with one or the other, as dated.
 
 Wobble (:func:`axial_spin`, :func:`wobble_sweep`). A hand-flipped thick cylinder probably
@@ -40,8 +43,8 @@ sweep below states ψ, it does not fit it. Caveats of the endings with a wobble:
 ending discards the spin and the precession at its hand-off (planar rocking), and the 3-D
 contact ending is experimental (rims that roll upright can stop upright).
 
-Measured (2026-11-23, 20:42–20:50 UTC, the shared 2-core machine at load 10–12:
-``python benchmarks/bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
+Measured (
+``bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
 the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-up Maths' hand
 flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
 corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
@@ -52,9 +55,9 @@ corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
 - h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
   contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
 
-An independent engine on the same tosses (:func:`mujoco_check`, ``python
-benchmarks/bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
-21:15–21:25 UTC, load 9–11; 2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
+An independent engine on the same tosses (:func:`mujoco_check`,
+``bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
+2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
 e 0.45, μ 0.325, resistances 1e-4 m, MuJoCo condim 6, Euler, every toss settled): P(edge) at
 h/d 0.354 rocking 0.025 ± 0.003, contact 0.025 ± 0.003, MuJoCo 0.024 ± 0.003; at h/d 0.577
 rocking 0.134 ± 0.008, contact 0.129 ± 0.007, MuJoCo 0.116 ± 0.007. MuJoCo agrees with both
@@ -76,8 +79,8 @@ below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in bot
 and MuJoCo, which agree here), and the data (fractions from a secondary table, the
 video not read).
 
-The wobble, measured (2026-11-23, 21:57–22:03 UTC, load 0.7 → 6.6, 335 s wall: ``python
-benchmarks/bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
+The wobble, measured (335 s wall:
+``bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
 ωx and v0 draws at every ψ and cell; P(edge) ± s.e., rocking 50,000 / contact 500 tosses;
 cells: C the box's centre e 0.45, μ 0.325, 24 mm, 0.35 m drop; A the planar band's high
 corner e 0.3, μ 0.05, 20 mm, 0.5 m; B the opposite corner e 0.6, μ 0.6, 50 mm, 0.2 m; ψ
@@ -103,7 +106,7 @@ contact  .577  B     .152±.016  .736±.020  .734±.020  .636±.022  .612±.022 
 Measured: 0.132 (0.112–0.154) at h/d 0.354, 0.410 (0.380–0.441) at 0.577.
 
 An independent engine on wobbling tosses (:func:`mujoco_check` with ``psi``, 400 tosses at
-cell C, the seed 2018's child 0, 2026-11-23 22:02–22:13 UTC, load 6–8; one toss of the ψ 70
+cell C, the seed 2018's child 0; one toss of the ψ 70
 run at h/d 0.354 hit a MuJoCo instability warning): with the human ψ, P(edge) at h/d 0.354
 rocking 0.072 ± 0.013, contact 0.205 ± 0.020, MuJoCo 0.158 ± 0.018; at 0.577 rocking
 0.295 ± 0.023, contact 0.480 ± 0.025, MuJoCo 0.410 ± 0.025. With ψ 70: at 0.354 rocking

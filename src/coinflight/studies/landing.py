@@ -1,6 +1,6 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Six questions (issue 11), each a function returning plain values with their seeds:
+Six questions, each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
@@ -24,8 +24,8 @@ Six questions (issue 11), each a function returning plain values with their seed
 * :func:`edge_check`: are the 3-D contact ending's edges coinflight's alone? The same vigorous
   tosses (axial spin) in the contact ending and in MuJoCo (sharp rims, the same resistances),
   P(tails, heads, edge) at rest, which tosses end on edge in each, how long they stand
-  (``benchmarks/bench_mujoco_edges.py``; the measured answer is in
-  :mod:`coinflight.core.contact_phase`'s notes: MuJoCo leaves about ten times fewer on edge).
+  (:mod:`coinflight.core.contact_phase`'s notes: MuJoCo leaves about ten times fewer on
+  edge).
 
 These are validation runs, not predictions: every table number they give depends on the
 restitution and friction (and, for the contact ending, on the rolling and pivoting resistance
@@ -549,8 +549,7 @@ def mujoco_comparison(
 # --- edges in both engines -----------------------------------------------------------------------
 EDGE_SPIN = (-30.0, 30.0)
 """Spin about the second diameter and about the normal of the edge check's vigorous tosses,
-rad/s, uniform (those of ``benchmarks/bench_contact.py``: the axial spin keeps coins rolling on
-their rim after the bounces)."""
+rad/s, uniform (the axial spin keeps coins rolling on their rim after the bounces)."""
 EDGE_PAIRS = ((0.5, 0.3),)
 """(e, μ) of the edge check by default (MuJoCo's contact damping is calibrated per e)."""
 EDGE_RESISTANCE = 1e-4
@@ -566,7 +565,7 @@ implicitfast, 98 % with RK4, at 3.5 times Euler's cost a step)."""
 
 
 def edge_tosses(coin: Coin | None = None) -> TossDistribution:
-    """The edge check's vigorous tosses (``benchmarks/bench_contact.py``'s): ωx ~ U(:data:`SPIN`),
+    """The edge check's vigorous tosses: ωx ~ U(:data:`SPIN`),
     ωy, ωz ~ U(:data:`EDGE_SPIN`), v0 ~ U(:data:`LAUNCH_SPEED`), heads up."""
     return TossDistribution(
         Uniform(*SPIN),

@@ -1,5 +1,8 @@
 """The same tosses in a general rigid-body engine: MuJoCo beside coinflight's table landing.
 
+(The study scripts named ``bench_*.py`` below have left the package; git history keeps
+them.)
+
 MuJoCo (optional: ``pip install 'coinflight[mujoco]'``) integrates the coin as a free cylinder
 over a plane with a fixed time step and its soft contact: a spring-damper in constraint space
 with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documentation,
@@ -29,7 +32,7 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   dimension :data:`CONDIM` = 6. MuJoCo's default ``condim`` is 3, with which both
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
   regular frictional contact", 4 adds torsional friction, 6 adds rolling friction); the
-  comparison of the last session ran with 3.
+  comparison ran with 3 before.
 
 How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
@@ -64,20 +67,20 @@ up over the contact's time constant); :class:`FrictionSolver` selects MuJoCo's d
 to make it harder than the normal direction without changing μ: the elliptic cone with
 ``impratio`` > 1, and the no-slip pass (``noslip_iterations``). They answer whether MuJoCo's
 soft friction is why it leaves fewer coins on edge than coinflight's contact ending: it is not
-(``benchmarks/bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
+(``bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
 10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
 friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
 impact its friction impulse is already as close to μ J_n as the rigid law's
-(``benchmarks/bench_rim_impacts.py``). What differs is that MuJoCo's coins hop off the rim
+(``bench_rim_impacts.py``). What differs is that MuJoCo's coins hop off the rim
 where coinflight's stay on it (the benchmarks' notes), and why is below.
 
 Why the engines part (measured; the benchmarks' notes). Not the normal law: neither its shape
 (coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
 hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
 decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
-the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44, 2026-11-24,
-``benchmarks/bench_edge_sensitivity.py 600``; all these counts measured before the joint
-damping of two pressed rims (2026-11-24)), nor MuJoCo's
+the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44,
+``bench_edge_sensitivity.py 600``; all these counts measured before the joint
+damping of two pressed rims), nor MuJoCo's
 impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
 0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
 convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
@@ -108,9 +111,9 @@ a step). The landing report's comparison has no axial spin and keeps Euler; the 
 coinflight's hand-off states, where there is no flight to drift in, Euler and RK4 give the same
 faces at rest (104 tosses: no edge in either).
 
-The benchmark ``benchmarks/bench_bounce.py`` and the landing report
+The benchmark ``bench_bounce.py`` and the landing report
 (:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`;
-``benchmarks/bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
+``bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
 """
 
 from __future__ import annotations
@@ -157,7 +160,7 @@ SETTLE = 20.0
 the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. At 2 s
 (the previous limit) 1,296 of the landing report's 10⁴ tosses were still moving, most rolling
 on their edge; coins rolling on the sharp rim roll for seconds (the limit's effect is measured
-by :func:`coinflight.studies.landing.edge_check` and ``benchmarks/bench_mujoco_edges.py``)."""
+by :func:`coinflight.studies.landing.edge_check` and ``bench_mujoco_edges.py``)."""
 REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
@@ -175,8 +178,8 @@ POOL = 128
 and the next one takes its place."""
 STEPS_PER_SECOND = 2.0e5
 """MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
-214,000 (64 of the landing report's tosses, load 0.7); RK4 35,600 and 39,000 at load 4-6 (the
-edge check's 2 × 1,500 tosses, 2026-11-23), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
+214,000 (64 of the landing report's tosses); RK4 35,600 and 39,000 (the
+edge check's 2 × 1,500 tosses), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
 MEAN_CONTACT = 1.0
 """Mean simulated time after the first contact of a toss that settles, s (for the work bound;
 measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
@@ -193,13 +196,13 @@ CONES = ("pyramidal", "elliptic")
 """MuJoCo's friction cones (``option/cone``)."""
 MAX_NOSLIP_ITERATIONS = 100
 """Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). 20 already left
-MuJoCo's edge count where it was (``benchmarks/bench_mujoco_edges.py``'s notes) and cost 1.9
+MuJoCo's edge count where it was (``bench_mujoco_edges.py``'s notes) and cost 1.9
 times a run without them (:data:`NOSLIP_COST`); 100 would cost about 5.5 times, more is work
 without a question it answers."""
 IMPRATIO_COST = 1.2
 """Extra cost of a MuJoCo step per decade of ``impratio`` above 10 (for the work bound; a
-stiffer friction needs more solver iterations). Measured (``benchmarks/bench_mujoco_edges.py
-600 --handoff-only --condim 3``, 446 hand-off states, RK4, load 7-14): elliptic impratio 10
+stiffer friction needs more solver iterations). Measured (``bench_mujoco_edges.py
+600 --handoff-only --condim 3``, 446 hand-off states, RK4): elliptic impratio 10
 1,154 s wall (no slower than default friction, 1,606 s), impratio 100 2,493 s: 2.2 times."""
 NOSLIP_COST = 0.045
 """Extra cost of a MuJoCo step per no-slip iteration (for the work bound; each is one more

@@ -1,6 +1,7 @@
 """Exact P(heads): integrate the measure of the heads bands instead of sampling.
 
-This module chooses the integral (``_CASES``, the first that applies) and runs it; each
+This module chooses the integral (``_CASES``, the first that applies) and runs it, or
+estimates its cost beforehand (:func:`estimated_seconds`); each
 integral lives in a module of its own beside it: :mod:`.closed_form` (the band sums),
 :mod:`.quadrature` (adaptive QUADPACK over the spins' quantiles), :mod:`.gauss` (the Gauss
 product rule over the spins for a normal flight time), :mod:`.omega_psi` (Gauss–Legendre in
@@ -52,6 +53,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 
 from coinflight.core import bands
 from coinflight.model.distributions import Fixed, Normal, Uniform
@@ -94,10 +96,9 @@ from coinflight.probability.exact.quadrature import (
     _two_diameter_spins_one_uniform,
 )
 from coinflight.probability.registry import Estimator
-from coinflight.probability.result import ProbabilityResult
+from coinflight.probability.result import ProbabilityResult, from_same_side
 
 __all__ = [
-    "ESTIMATOR",
     "GAUSS_ORDERS",
     "MAX_CROSSING_SAMPLES",
     "MAX_EVALUATIONS",
@@ -139,34 +140,85 @@ def _gauss_or_omega_psi(
         return result
 
 
-_CASES: tuple[
-    tuple[
-        str,
-        Callable[[TossDistribution, list[str]], bool],
-        Callable[[TossDistribution, list[str], _Details], tuple[float, float]],
-    ],
-    ...,
-] = (
-    ("closed form", _one_uniform_diameter_spin, _closed_form),
-    ("closed form in T", lambda dist, ranged: not ranged, _closed_form_in_t),
-    (
+_FEW_TERMS = 1e-4
+"""Seconds of an integral that is a sum of a few terms."""
+
+
+def _closed_form_seconds(dist: TossDistribution, ranged: list[str]) -> float:
+    """The closed form's band pieces at their measured rate (one uniform spin), else a sum of
+    a few terms."""
+    x = getattr(dist, ranged[0]) if ranged else None
+    if not isinstance(x, Uniform):
+        return _FEW_TERMS
+    t2 = _times(dist.flight_time)[1]
+    pieces = bands.diameter_spin_pieces(0.0, max(abs(x.low), abs(x.high)), 0.0, t2)
+    return _FEW_TERMS + 2.0 * pieces / PIECES_PER_SECOND
+
+
+def _gauss_seconds(dist: TossDistribution, ranged: list[str]) -> float:
+    """The spin points of the Gauss rule's first two orders at their measured rate."""
+    h = _resolution(dist, ranged)
+    points = sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2])
+    return points / SPIN_POINTS_PER_SECOND
+
+
+def _not_estimated(dist: TossDistribution, ranged: list[str]) -> None:
+    """An adaptive quadrature: it ends within its own bound, unestimated."""
+    return None
+
+
+@dataclass(frozen=True)
+class _Case:
+    """One integral of the exact method: its name in ``details["how"]``, whether it applies to
+    a distribution (with its ranged spins), the integral, and its cost in seconds counted
+    before it runs (None: not estimated; a ValueError: refused)."""
+
+    how: str
+    applies: Callable[[TossDistribution, list[str]], bool]
+    run: Callable[[TossDistribution, list[str], _Details], tuple[float, float]]
+    seconds: Callable[[TossDistribution, list[str]], float | None]
+
+
+_CASES = (
+    _Case("closed form", _one_uniform_diameter_spin, _closed_form, _closed_form_seconds),
+    _Case(
+        "closed form in T",
+        lambda dist, ranged: not ranged,
+        _closed_form_in_t,
+        lambda dist, ranged: _FEW_TERMS,
+    ),
+    _Case(
         "closed form in one spin, quadrature in the other",
         _two_diameter_spins_one_uniform,
         _closed_form_and_quadrature,
+        _not_estimated,
     ),
-    (
+    _Case(
         "closed form in T, Gauss product rule over the spins split at ψ = 45°",
         _gauss_applies,
         _gauss_or_omega_psi,
+        _gauss_seconds,
     ),
-    (_OMEGA_PSI, _omega_psi_applies, _omega_psi),
-    (
+    _Case(_OMEGA_PSI, _omega_psi_applies, _omega_psi, lambda dist, ranged: _polar_seconds(dist)),
+    _Case(
         "closed form in T, quadrature over the spins",
         _spins_by_quadrature,
         _closed_form_in_t_quadrature,
+        _not_estimated,
     ),
 )
-"""The integrals this method does, in order of preference: (how, whether it applies, run)."""
+"""The integrals this method does, in order of preference; the first that applies runs."""
+
+
+def _case(dist: TossDistribution, model: OutcomeModel | None) -> tuple[_Case | None, list[str]]:
+    """The integral for ``dist`` (None if none applies) and its ranged spins; a ValueError for
+    a model without closed-form bands."""
+    if model is not None and not model.closed_form_bands:
+        raise ValueError(
+            f"the exact method handles the hand catch only, not {model.name}; " + _USE_INSTEAD
+        )
+    ranged = [name for name in _SPINS if not getattr(dist, name).is_fixed]
+    return next((case for case in _CASES if case.applies(dist, ranged)), None), ranged
 
 
 def _refusal(dist: TossDistribution, ranged: list[str]) -> str:
@@ -193,28 +245,17 @@ def estimate(dist: TossDistribution, *, model: OutcomeModel | None = None) -> Pr
         For distributions that no exact integral here handles, naming the methods to use.
     """
     t0 = time.perf_counter()
-    if model is not None and not model.closed_form_bands:
-        raise ValueError(
-            f"the exact method handles the hand catch only, not {model.name}; " + _USE_INSTEAD
-        )
-    ranged = [name for name in _SPINS if not getattr(dist, name).is_fixed]
-    case = next((case for case in _CASES if case[1](dist, ranged)), None)
+    case, ranged = _case(dist, model)
     if case is None:
         raise ValueError(_refusal(dist, ranged))
-    how, _applies, run = case
     details: _Details = {}
-    p_same, error = run(dist, ranged, details)
-    p_same = min(1.0, max(0.0, p_same))
-    p_heads = p_same if dist.start_sign > 0 else 1.0 - p_same
-    details.setdefault("how", how)  # a runner that fell back to another integral says so
-    return ProbabilityResult(
-        p_heads=p_heads,
-        p_tails=1.0 - p_heads,
-        p_edge=0.0,
-        p_same_side=p_same,
-        method=NAME,
-        ci95=None,  # a deterministic result: error_estimate bounds it, no 95 % interval
-        error_estimate=error,
+    p_same, error = case.run(dist, ranged, details)
+    details.setdefault("how", case.how)  # a runner that fell back to another integral says so
+    return from_same_side(
+        min(1.0, max(0.0, p_same)),
+        dist.start_sign,
+        NAME,
+        error_estimate=error,  # a deterministic result: no 95 % interval
         elapsed=time.perf_counter() - t0,
         details=details,
     )
@@ -230,39 +271,13 @@ def estimated_seconds(dist: TossDistribution, model: OutcomeModel | None = None)
     (:func:`coinflight.probability.sweep.check_sweep_work`)."""
     if model is not None and not model.closed_form_bands:
         return None
-    ranged = [name for name in _SPINS if not getattr(dist, name).is_fixed]
-    case = next((case for case in _CASES if case[1](dist, ranged)), None)
+    case, ranged = _case(dist, model)
     if case is None:
         return None
-    run = case[2]
     try:
-        if run is _closed_form_in_t:
-            return 1e-4
-        if run is _closed_form:
-            x = getattr(dist, ranged[0]) if ranged else None
-            if not isinstance(x, Uniform):
-                return 1e-4
-            t2 = _times(dist.flight_time)[1]
-            pieces = bands.diameter_spin_pieces(0.0, max(abs(x.low), abs(x.high)), 0.0, t2)
-            return 1e-4 + 2.0 * pieces / PIECES_PER_SECOND
-        if run is _gauss_or_omega_psi:
-            h = _resolution(dist, ranged)
-            points = sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2])
-            return points / SPIN_POINTS_PER_SECOND
-        if run is _omega_psi:
-            return _polar_seconds(dist)
+        return case.seconds(dist, ranged)
     except ValueError:
         return None
-    return None
 
 
-def _summary(result: ProbabilityResult) -> str:
-    extra = str(result.details["how"])
-    if "warning" in result.details:
-        extra += f"; quadrature warning: {result.details['warning']}"
-    return extra
-
-
-ESTIMATOR = Estimator(
-    NAME, estimate, "exact value", "band integral (Keller 1986)", parallel=False, summary=_summary
-)
+ESTIMATOR = Estimator(NAME, estimate, "exact value", "band integral (Keller 1986)", parallel=False)
