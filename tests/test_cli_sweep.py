@@ -16,7 +16,6 @@ from typer.testing import CliRunner
 
 from coinflight import __version__
 from coinflight.cli import app
-from coinflight.cli.sweep import parse_dists, parse_numbers_list
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -33,6 +32,8 @@ from coinflight.probability.sweep import (
     run_sweep,
     sweep,
 )
+from coinflight.queries.sweep import SweepLandings, parse_dists, sweep_query
+from coinflight.queries.values import parse_numbers_list
 
 runner = CliRunner()
 
@@ -442,11 +443,12 @@ def test_work_and_rows_are_bounded_before_anything_runs():
         (["--omega-x-mean", "80", "--omega-x-sd", "-1"], "standard deviation must be ≥ 0"),
         (["--omega-x", "90:60"], "--omega-x '90:60'"),
         (["--restitution", "0.5"], f"--restitution {TABLE_ONLY}"),
-        (["--surface", "sand"], "--surface 'sand': choose among hand, table"),
+        # the shared wording of a name outside its choices (_validation.choice)
+        (["--surface", "sand"], "--surface must be one of hand, table; got 'sand'"),
         (["--surface", "table"], "--method exact handles --surface hand only"),
         (["--coin", "us-quarter,,eur-1"], "--coin 'us-quarter,,eur-1': give comma-separated"),
         (["--coin", "peso"], "peso"),
-        (["--start", "heads,edge"], "--start 'heads,edge': each face is heads or tails"),
+        (["--start", "heads,edge"], "--start must be one of heads, tails; got 'edge'"),
         (["--seed", "3"], "--seed applies to monte-carlo and qmc, not exact"),
         (["--n", "30"], "--n does not apply to the exact method"),
         (["--launch-speed", "2", "--flight-time", "0.7"], "give one of --flight-time and"),
@@ -466,6 +468,22 @@ def test_an_unknown_table_format_is_refused_before_any_work(tmp_path):
     message = one_line_error("sweep", "--omega-x", "60:90", "--flight-time", "0.7",
                              "--out", tmp_path / "x.xlsx")  # fmt: skip
     assert "the table's format follows the suffix, .parquet or .csv" in message
+
+
+def test_the_query_sweeps_the_table_lists_over_the_table_rows_as_the_numbers_given(tmp_path):
+    # coinflight.queries.sweep, the command's one reading: the hand row once, the table rows
+    # over restitution × friction, each surface holding the list's float itself (no text
+    # round trip: 0.6 / 3 is 0.19999999999999998, as numpy.linspace gives it)
+    query = sweep_query(
+        {"omega_x": (["60:90"], None, None), "flight_time": (["0.7"], None, None)},
+        SweepLandings(surface="hand,table", restitution="0.3,0.5", friction="0:0.6:4"),
+        g=9.81, method="monte-carlo", n=100, out=tmp_path / "x.csv",
+    )  # fmt: skip
+    assert query.cases[0].model == outcome_model("hand")
+    table = [(c.model.surface.restitution, c.model.surface.friction) for c in query.cases[1:]]
+    frictions = [float(x) for x in np.linspace(0, 0.6, 4)]
+    assert table == [(e, mu) for e in (0.3, 0.5) for mu in frictions]
+    assert not list(tmp_path.iterdir())  # nothing written by reading the options
 
 
 def test_the_grammar():

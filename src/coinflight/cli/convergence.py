@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import command
+from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions, ConvergenceTossesOptions
 from coinflight.cli.options import (
     METHOD_PANEL,
@@ -19,7 +19,7 @@ from coinflight.cli.options import (
     Threads,
     print_json,
 )
-from coinflight.cli.parsers import output_prefix, parse_sizes
+from coinflight.cli.parsers import output_prefix
 from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
 
@@ -43,6 +43,16 @@ QmcSizes = Annotated[
     str | None,
     _sizes_option("--qmc-sizes", "QMC points, each 16 × a power of two (default 64,…,1048576)."),
 ]
+SIZES = Group(
+    {
+        "grid_sizes": (GridSizes, None),
+        "event_sizes": (EventSizes, None),
+        "qmc_sizes": (QmcSizes, None),
+    },
+    dict,
+)
+"""The sizes of each method's series, as typed (read by
+:func:`~coinflight.queries.convergence.convergence_plan`)."""
 Methods = Annotated[
     str,
     typer.Option(
@@ -84,9 +94,7 @@ def convergence(
     tosses: ConvergenceTossesOptions,
     coin: CoinOptions,
     methods: Methods = "grid,monte-carlo",
-    grid_sizes: GridSizes = None,
-    event_sizes: EventSizes = None,
-    qmc_sizes: QmcSizes = None,
+    sizes: Annotated[dict[str, str | None], SIZES],
     grid_cells: Cells = None,
     seed: Seed = None,
     threads: Threads = None,
@@ -105,50 +113,24 @@ def convergence(
     from coinflight.plotting.style import save_figure
     from coinflight.probability.convergence import convergence as run
     from coinflight.probability.convergence import work_total
+    from coinflight.queries.convergence import convergence_plan
 
     dist = tosses.build(coin)
-    method_list = [m.strip() for m in methods.split(",") if m.strip()]
-    grid_cells_given = grid_cells is not None
-    if grid_cells is None:
-        grid_cells = 100
-    sizes: dict[str, list[int]] = {}
-    if grid_sizes is not None:
-        sizes["grid_sizes"] = parse_sizes(grid_sizes, "--grid-sizes")
-    if event_sizes is not None:
-        sizes["event_sizes"] = parse_sizes(event_sizes, "--event-sizes")
-    if qmc_sizes is not None:
-        sizes["qmc_sizes"] = parse_sizes(qmc_sizes, "--qmc-sizes")
-    for option, text, needed in (
-        ("--grid-sizes", grid_sizes, "grid"),
-        ("--event-sizes", event_sizes, "monte-carlo"),
-        ("--qmc-sizes", qmc_sizes, "qmc"),
-    ):
-        if text is not None and needed not in method_list:
-            raise ValueError(f"{option} applies to --methods {needed}, not given in {methods!r}")
-    if not set(registry.names(seeded=True)) & set(method_list):
-        if seed is not None:
-            seeded = " and ".join(registry.names(seeded=True))
-            raise ValueError(f"--seed applies to {seeded}, not to {methods!r}")
-        if grid_cells_given:
-            raise ValueError(f"--grid-cells applies to --methods monte-carlo, not {methods!r}")
-    if grid_cells < 0:
-        raise ValueError(
-            f"--grid-cells must be 0 (plain Monte Carlo) or positive, got {grid_cells}"
-        )
+    plan = convergence_plan(methods, sizes, grid_cells, seed)
     prefix = out  # already DIR/convergence for a folder (output_prefix)
     targets = [prefix.with_name(f"{prefix.name}.{ext}") for ext in ("csv", "json", "png", "svg")]
     check_all_writable(targets)  # before computing, not after
-    total = work_total(dist, method_list, **sizes)
+    total = work_total(dist, plan.methods, **plan.sizes)
     with cluster.executor(threads) as executor, progress_bar(total, "convergence", quiet) as bar:
         result = run(
             dist,
-            method_list,
-            seed=seed,
-            grid_cells=grid_cells or None,
+            plan.methods,
+            seed=plan.seed,
+            grid_cells=plan.grid_cells or None,
             executor=executor,
             threads=threads,
             progress=bar,
-            **sizes,
+            **plan.sizes,
         )
     fig = plot_convergence(result)
     with replacing_all(targets) as (csv, _, png, svg):  # the four files together, or none

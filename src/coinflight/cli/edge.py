@@ -7,7 +7,7 @@ from typing import Annotated, Any, cast
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import command
+from coinflight.cli.command import Group, command
 from coinflight.cli.groups import _dist
 from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
@@ -19,12 +19,10 @@ from coinflight.cli.options import (
     number_option,
     print_json,
 )
-from coinflight.cli.parsers import parse_numbers
-from coinflight.queries.values import simulation_seed
+from coinflight.queries.edge import TABLE_RATIOS
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
-TABLE_RATIOS = "0.1,0.3,0.577,1"
 _SETTING = "vigorous planar spins, landing dead on a table; coinflight.studies.edge.simulate_edge"
 
 
@@ -124,6 +122,26 @@ LaunchSpeed = Annotated[
     str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
 ]
 EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
+SETTING = Group(
+    {
+        name: (kind, None)
+        for name, kind in (
+            ("restitution", Restitution),
+            ("friction", Friction),
+            ("drop_height", DropHeight),
+            ("ending", Ending),
+            ("rolling_resistance", RollingResistance),
+            ("pivoting_resistance", PivotingResistance),
+            ("corner_radius", CornerRadius),
+            ("omega_x", SpinX),
+            ("launch_speed", LaunchSpeed),
+            ("g", EdgeGravity),
+        )
+    },
+    dict,
+)
+"""The simulated landings' options: the command receives them as keywords of
+:func:`~coinflight.queries.edge.edge_query` (None: not given)."""
 EdgeJson = Annotated[
     bool,
     typer.Option(
@@ -140,16 +158,7 @@ def edge(
     ratios: EdgeRatios = TABLE_RATIOS,
     simulate: EdgeSimulate = None,
     seed: SimulateSeed = None,
-    restitution: Restitution = None,
-    friction: Friction = None,
-    drop_height: DropHeight = None,
-    ending: Ending = None,
-    rolling_resistance: RollingResistance = None,
-    pivoting_resistance: PivotingResistance = None,
-    corner_radius: CornerRadius = None,
-    omega_x: SpinX = None,
-    launch_speed: LaunchSpeed = None,
-    g: EdgeGravity = None,
+    setting: Annotated[dict[str, Any], SETTING],
     cluster: ClusterOptions,
     json: EdgeJson = False,
 ) -> None:
@@ -163,59 +172,17 @@ def edge(
 
     Example: coinflight edge --ratios 0.1,0.577,1 --simulate 4000 --seed 1 --json
     """
-    from coinflight.model.distributions import parse_distribution
-    from coinflight.studies.edge import edge_table
+    from coinflight.queries.edge import edge_query, edge_rows
 
-    given: dict[str, object] = {
-        "--restitution": restitution,
-        "--friction": friction,
-        "--drop-height": drop_height,
-        "--ending": ending,
-        "--rolling-resistance": rolling_resistance,
-        "--pivoting-resistance": pivoting_resistance,
-        "--corner-radius": corner_radius,
-        "--omega-x": omega_x,
-        "--launch-speed": launch_speed,
-        "--g": g,
-    }
-    the_seed = simulation_seed(simulate, seed, *given.items(), run_flag="--simulate")
-    setting: dict[str, Any] = {
-        key: value
-        for key, value in (
-            ("restitution", restitution),
-            ("friction", friction),
-            ("drop_height", drop_height),
-            ("ending", ending),
-            ("rolling_resistance", rolling_resistance),
-            ("pivoting_resistance", pivoting_resistance),
-            ("corner_radius", corner_radius),
-            ("g", g),
-        )
-        if value is not None
-    }
-    if omega_x is not None:
-        setting["spin"] = parse_distribution(omega_x, "--omega-x", "rad/s")
-    if launch_speed is not None:
-        setting["launch_speed"] = parse_distribution(launch_speed, "--launch-speed", "m/s")
-    if simulate is None and cluster.scheduler is not None:
-        raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
-    x = parse_numbers(ratios, "--ratios", TABLE_RATIOS)
-    if corner_radius is not None:  # named as toss names it ("--corner-radius: corner radius …")
-        from coinflight.studies.edge import check_ratios, simulated_corner_radius
-
-        check_ratios(x)
-        try:
-            simulated_corner_radius(corner_radius, x)
-        except ValueError as exc:
-            raise ValueError(f"--corner-radius: {exc}") from None
+    query = edge_query(ratios, simulate, seed, scheduler=cluster.scheduler, **setting)
     with cluster.executor() as executor:
-        rows = edge_table(x, simulate, the_seed, executor=executor, **setting)
+        rows = edge_rows(query, executor)
     if json:
         print_json(cast(Any, rows))  # a list: one object per ratio
         return
     width = max(13, 2 * len(f"{simulate or 0:,}") + 3)  # "edge / tosses", right-aligned
     header = f"{'h/d':>8}  {'geometric':>9}  {'dynamic':>9}"
-    contact = simulate is not None and ending == "contact"
+    contact = simulate is not None and setting["ending"] == "contact"
     if simulate is not None:
         header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>{width}}"
     if contact:
@@ -236,8 +203,8 @@ def edge(
                 "decided upright: edges the contact ending's upright decision ended while the "
                 "coin still rolled (a measured predictor of ending on edge, not a proof)"
             )
-        if corner_radius:  # rounded rims: said, as the JSON rows say it
-            typer.echo(f"corner radius {corner_radius:g} m")
+        if setting["corner_radius"]:  # rounded rims: said, as the JSON rows say it
+            typer.echo(f"corner radius {setting['corner_radius']:g} m")
         typer.echo(f"seed {rows[0]['simulated']['seed']}")
 
 

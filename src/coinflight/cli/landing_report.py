@@ -7,21 +7,9 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, Quiet
-from coinflight.cli.parsers import output_folder
+from coinflight.cli.options import Quiet, out_folder
 
-OutDir = Annotated[
-    Path,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="DIR",
-        parser=output_folder,
-        rich_help_panel=OUTPUT_PANEL,
-        help="Folder for report.md, report.html, numbers.json and the figures (PNG), all "
-        f"written together at the end. {OUTPUT_HELP}",
-    ),
-]
+OutDir = Annotated[Path, out_folder("report.md, report.html, numbers.json and the figures (PNG)")]
 QuickFlag = Annotated[
     bool,
     typer.Option(

@@ -12,9 +12,9 @@ from typing import Annotated, Any
 import typer
 
 from coinflight.cli.output import print_json
-from coinflight.cli.parsers import gravity, number, output_file
+from coinflight.cli.parsers import gravity, number, output_file, output_folder
 from coinflight.probability import registry
-from coinflight.queries.values import resolve_coin
+from coinflight.queries.values import COIN_NAMES, resolve_coin
 
 __all__ = ["number", "print_json", "resolve_coin"]  # also used from here (cli/surface.py)
 
@@ -65,15 +65,15 @@ def _preset(panel: str, help: str) -> Any:
 
 
 # --- the coin and the toss ---------------------------------------------------------------
+
+
+def coin_option(metavar: str, help: str) -> Any:
+    """--coin: one coin by name, or (a sweep's) several."""
+    return option("--coin", metavar=metavar, panel=COIN_PANEL, help=help)
+
+
 CoinName = Annotated[
-    str | None,
-    option(
-        "--coin",
-        metavar="NAME",
-        panel=COIN_PANEL,
-        help="A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, "
-        "eur-1, eur-2, eur-50c, gbp-1. Default us-quarter.",
-    ),
+    str | None, coin_option("NAME", f"A real coin: {COIN_NAMES}. Default us-quarter.")
 ]
 StartFace = Annotated[
     str, option("--start", metavar="heads|tails", panel=TOSS_PANEL, help="Face up at launch.")
@@ -186,6 +186,19 @@ Quiet = Annotated[
 def out_file(help: str) -> Any:
     """--out/-o FILE: the file a command writes, checked as an output path."""
     return option("--out", "-o", metavar="FILE", panel=OUTPUT_PANEL, help=help, parser=output_file)
+
+
+def out_folder(contents: str) -> Any:
+    """--out/-o DIR: the folder of a report (``contents``: what goes in it), all written
+    together at the end."""
+    return option(
+        "--out",
+        "-o",
+        metavar="DIR",
+        panel=OUTPUT_PANEL,
+        help=f"Folder for {contents}, all written together at the end. {OUTPUT_HELP}",
+        parser=output_folder,
+    )
 
 
 OutFile = Annotated[

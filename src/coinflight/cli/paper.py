@@ -7,21 +7,9 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.options import OUTPUT_HELP, OUTPUT_PANEL, CoinName, PaperSeed, Quiet
-from coinflight.cli.parsers import output_folder
+from coinflight.cli.options import CoinName, PaperSeed, Quiet, out_folder
 
-OutDir = Annotated[
-    Path,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="DIR",
-        parser=output_folder,
-        rich_help_panel=OUTPUT_PANEL,
-        help="Folder for the figures (PNG and SVG), report.md and report.html, all written "
-        f"together at the end. {OUTPUT_HELP}",
-    ),
-]
+OutDir = Annotated[Path, out_folder("the figures (PNG and SVG), report.md and report.html")]
 Events = Annotated[
     int,
     typer.Option(

@@ -10,9 +10,10 @@ from pathlib import Path
 
 import typer
 
-from coinflight.queries.values import parse_range, parse_resolution
+from coinflight.queries.values import parse_numbers, parse_range, parse_resolution, parse_sizes
 
-__all__ = ["parse_range", "parse_resolution"]  # the one reading of ranges and resolutions
+# the one reading of lists, ranges and resolutions
+__all__ = ["parse_numbers", "parse_range", "parse_resolution", "parse_sizes"]
 
 
 def number(text: str) -> float:
@@ -70,27 +71,3 @@ def output_prefix(text: str) -> Path:
 
     path = _checked_name(text, folder=True)
     return path / "convergence" if names_folder(text) or path.is_dir() else path
-
-
-def parse_numbers(text: str, name: str, example: str = "0.6,0.65,0.7") -> list[float]:
-    """Comma-separated numbers, or a ValueError naming the option, an ``example`` of what it
-    takes and the bad text."""
-    parts = [p.strip() for p in text.split(",")]
-    try:
-        values = [float(p) for p in parts]
-    except ValueError:
-        raise ValueError(
-            f"{name} must be comma-separated numbers such as {example}; got {text!r}"
-        ) from None
-    return values
-
-
-def parse_sizes(text: str, option: str) -> list[int]:
-    """Comma-separated whole numbers (at least one), or a ValueError naming the option."""
-    try:
-        values = [int(part) for part in text.split(",") if part.strip()]
-    except ValueError:
-        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
-    if not values:
-        raise ValueError(f"{option} {text!r}: give at least one size")
-    return values

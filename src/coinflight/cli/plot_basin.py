@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import command
+from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions
 from coinflight.cli.landing_groups import TableOptions
 from coinflight.cli.options import (
@@ -92,22 +92,30 @@ Boundaries = Annotated[
         help="Overlay the analytic heads/tails boundaries (Keller's hyperbolas when planar).",
     ),
 ]
+BOX = Group(
+    {
+        "flight_time": (FlightTimeRange, None),
+        "launch_speed": (LaunchSpeedRange, None),
+        "omega_x": (OmegaXRange, None),
+        "omega_y": (OmegaY, 0.0),
+        "omega_z": (OmegaZ, 0.0),
+        "psi": (PsiDeg, None),
+        "precession_rate": (PrecessionRange, None),
+        "resolution": (Resolution, "500"),
+        "start": (StartFace, "heads"),
+        "g": (Gravity, 9.81),
+    },
+    dict,
+)
+"""The map's box and its toss: the command receives them as keywords of
+:func:`~coinflight.queries.basin.basin_query`."""
 
 
 @command
 def plot_basin(
     *,
     out: OutFile,
-    flight_time: FlightTimeRange = None,
-    launch_speed: LaunchSpeedRange = None,
-    omega_x: OmegaXRange = None,
-    omega_y: OmegaY = 0.0,
-    omega_z: OmegaZ = 0.0,
-    psi: PsiDeg = None,
-    precession_rate: PrecessionRange = None,
-    resolution: Resolution = "500",
-    start: StartFace = "heads",
-    g: Gravity = 9.81,
+    box: Annotated[dict[str, Any], BOX],
     coin: CoinOptions,
     boundaries: Boundaries = True,
     dpi: Dpi = 150,
@@ -129,16 +137,7 @@ def plot_basin(
     with cluster.executor() as executor:
         basin = basin_query(
             coin,
-            flight_time=flight_time,
-            launch_speed=launch_speed,
-            omega_x=omega_x,
-            omega_y=omega_y,
-            omega_z=omega_z,
-            psi=psi,
-            precession_rate=precession_rate,
-            resolution=resolution,
-            start=start,
-            g=g,
+            **box,
             table=table,
             bounces=bounces,
             executor=executor,

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import command
+from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions, TossesOptions
 from coinflight.cli.landing_groups import AirOptions, TableOptions
 from coinflight.cli.options import (
@@ -75,6 +75,18 @@ VarianceReduction = Annotated[
         + ".",
     ),
 ]
+HOW = Group(
+    {
+        "method": (Method, "exact"),
+        "n": (Size, None),
+        "seed": (Seed, None),
+        "grid_cells": (GridCells, None),
+        "variance_reduction": (VarianceReduction, None),
+    },
+    dict,
+)
+"""--method and its options: the command receives them as keywords of
+:func:`~coinflight.queries.probability.probability_query`."""
 
 
 @command
@@ -86,11 +98,7 @@ def probability(
     coin: CoinOptions,
     table: TableOptions,
     air: AirOptions,
-    method: Method = "exact",
-    n: Size = None,
-    seed: Seed = None,
-    grid_cells: GridCells = None,
-    variance_reduction: VarianceReduction = None,
+    how: Annotated[dict[str, Any], HOW],
     threads: Threads = None,
     cluster: ClusterOptions,
     quiet: Quiet = False,
@@ -108,21 +116,17 @@ def probability(
         coin,
         table,
         air,
-        method=method,
-        n=n,
-        seed=seed,
-        grid_cells=grid_cells,
-        variance_reduction=variance_reduction,
+        **how,
         threads=threads,
         preset=preset,
         overrides=given_toss_options(ctx) if preset is not None else None,
         inputs={name: ctx.params.get(name) for name in q.INPUT_NAMES},
     )
     if cluster.scheduler is not None and not query.estimator.parallel:
-        raise ValueError(f"--scheduler does not apply to the {method} method (one task)")
+        raise ValueError(f"--scheduler does not apply to the {query.method} method (one task)")
     with (
         cluster.executor(threads) as executor,
-        progress_bar(query.work_units(), f"{method}", quiet) as bar,
+        progress_bar(query.work_units(), query.method, quiet) as bar,
     ):
         result = q.run(query, bar, executor=executor)
     if json_output:

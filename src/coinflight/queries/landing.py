@@ -27,18 +27,19 @@ CONTACT_FLAGS = {
 
 
 def contact_spread(
-    restitution: str | None,
-    friction: str | None,
+    restitution: str | float | None,
+    friction: str | float | None,
     surface_preset: str | None = None,
-    rolling_resistance: str | None = None,
-    pivoting_resistance: str | None = None,
+    rolling_resistance: str | float | None = None,
+    pivoting_resistance: str | float | None = None,
 ) -> dict[str, Distribution]:
-    """The --restitution, --friction, --rolling-resistance and --pivoting-resistance texts as
-    distributions (only those given), each checked against its physical range
-    (:func:`coinflight.model.surface.contact_distribution`: a normal one truncated to it, the
-    rest refused outside it); ValueError naming the option. With --surface-preset, the
-    preset's ranges (:data:`coinflight.studies.presets.SURFACE_PRESETS`) for those not given."""
-    from coinflight.model.distributions import parse_distribution
+    """The --restitution, --friction, --rolling-resistance and --pivoting-resistance texts (or
+    numbers, a sweep's values: fixed) as distributions (only those given), each checked against
+    its physical range (:func:`coinflight.model.surface.contact_distribution`: a normal one
+    truncated to it, the rest refused outside it); ValueError naming the option. With
+    --surface-preset, the preset's ranges (:data:`coinflight.studies.presets.SURFACE_PRESETS`)
+    for those not given."""
+    from coinflight.model.distributions import Fixed, parse_distribution
     from coinflight.model.surface import CONTACT_UNITS, contact_distribution
 
     out: dict[str, Distribution] = {}
@@ -52,9 +53,12 @@ def contact_spread(
             continue
         flag = CONTACT_FLAGS[name]
         try:
-            out[name] = contact_distribution(
-                name, parse_distribution(text, flag, CONTACT_UNITS.get(name, ""))
+            dist = (
+                Fixed(text)
+                if isinstance(text, float)
+                else parse_distribution(text, flag, CONTACT_UNITS.get(name, ""))
             )
+            out[name] = contact_distribution(name, dist)
         except ValueError as exc:
             message = str(exc)
             raise ValueError(
@@ -83,17 +87,18 @@ def single_values(
 def build_surface(
     kind: str,
     drop_height: float | None,
-    restitution: str | None,
-    friction: str | None,
+    restitution: str | float | None,
+    friction: str | float | None,
     surface_preset: str | None = None,
     ranged: bool = False,
     *,
     ending: str | None = None,
-    rolling_resistance: str | None = None,
-    pivoting_resistance: str | None = None,
+    rolling_resistance: str | float | None = None,
+    pivoting_resistance: str | float | None = None,
     corner_radius: float | None = None,
 ) -> Surface:
-    """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table).
+    """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table;
+    the contact parameters as typed, or a sweep's numbers).
 
     --restitution, --friction, --rolling-resistance and --pivoting-resistance must be single
     numbers, and --surface-preset (ranges) is refused, unless ``ranged`` (the command then

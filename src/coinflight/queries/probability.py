@@ -84,6 +84,27 @@ def preset_tosses(
     return preset(name, coin=coin, start=start, g=g, **laid)  # type: ignore[arg-type]
 
 
+def check_method_options(
+    estimator: Estimator,
+    *,
+    seed: int | None = None,
+    n: int | None = None,
+    threads: int | None = None,
+) -> None:
+    """ValueError naming the option when ``estimator``'s method does not take --seed, --n or
+    --threads (None: not given)."""
+    from coinflight.probability import registry
+
+    method = estimator.name
+    if seed is not None and not estimator.seeded:
+        seeded = " and ".join(registry.names(seeded=True))
+        raise ValueError(f"--seed applies to {seeded}, not {method}")
+    if n is not None and estimator.default_n is None:
+        raise ValueError(f"--n does not apply to the {method} method")
+    if threads is not None and not estimator.parallel:
+        raise ValueError(f"--threads does not apply to the {method} method")
+
+
 def probability_query(
     tosses: DistArgs,
     coin: Coin,
@@ -124,11 +145,7 @@ def probability_query(
                 f"--variance-reduction applies to --method {' and '.join(takers)} only"
             )
         options["variance_reduction"] = variance_reduction
-    if seed is not None and not estimator.seeded:
-        seeded = " and ".join(registry.names(seeded=True))
-        raise ValueError(f"--seed applies to {seeded}, not {method}")
-    if threads is not None and not estimator.parallel:
-        raise ValueError(f"--threads does not apply to the {method} method")
+    check_method_options(estimator, seed=seed, threads=threads)
     landing = outcome_model(table, air, ranged=True)
     # Distributions of the contact parameters (build_surface refused them for the hand; single
     # values are in the surface) go with the tosses, drawn toss by toss.
@@ -275,6 +292,7 @@ __all__ = [
     "INPUT_NAMES",
     "PRESET_OPTIONS",
     "ProbabilityQuery",
+    "check_method_options",
     "preset_tosses",
     "probability_payload",
     "probability_query",

@@ -5,10 +5,15 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, NamedTuple
 
+from coinflight.model.coin import PRESETS
+
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.ensemble import TossDistribution
     from coinflight.model.toss import Toss
+
+COIN_NAMES = ", ".join(PRESETS)
+"""The coins a --coin (``coin=``) names: the presets of :mod:`coinflight.model.coin`."""
 
 
 def resolve_coin(
@@ -171,3 +176,69 @@ def parse_resolution(text: str) -> tuple[int, int]:
             f"got {text!r}"
         ) from None
     return (sizes[0], sizes[-1])
+
+
+def parse_numbers(text: str, name: str, example: str = "0.6,0.65,0.7") -> list[float]:
+    """Comma-separated numbers, or a ValueError naming the option, an ``example`` of what it
+    takes and the bad text."""
+    parts = [p.strip() for p in text.split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise ValueError(
+            f"{name} must be comma-separated numbers such as {example}; got {text!r}"
+        ) from None
+    return values
+
+
+def parse_sizes(text: str, option: str) -> list[int]:
+    """Comma-separated whole numbers (at least one), or a ValueError naming the option."""
+    try:
+        values = [int(part) for part in text.split(",") if part.strip()]
+    except ValueError:
+        raise ValueError(f"{option} {text!r}: give comma-separated whole numbers") from None
+    if not values:
+        raise ValueError(f"{option} {text!r}: give at least one size")
+    return values
+
+
+MAX_COUNT = 10_000
+"""Largest COUNT of a FROM:TO:COUNT item of :func:`parse_numbers_list`."""
+
+
+def parse_numbers_list(text: str, option_name: str) -> list[float]:
+    """Comma-separated numbers and FROM:TO:COUNT items (COUNT evenly spaced values, ends
+    included), or a ValueError naming the option and the item (the lists of a sweep)."""
+    import numpy as np
+
+    from coinflight.model.distributions import parse_distribution
+
+    out: list[float] = []
+    for raw in str(text).split(","):
+        item = raw.strip()
+        parts = item.split(":")
+        try:
+            if len(parts) == 3:
+                count = int(parts[2])
+                if not 1 <= count <= MAX_COUNT:
+                    raise ValueError
+                ends = [parse_distribution(p, option_name).mean for p in parts[:2]]
+                out.extend(float(x) for x in np.linspace(ends[0], ends[1], count))
+            elif len(parts) == 1 and item:
+                out.append(float(parse_distribution(item, option_name).mean))
+            else:
+                raise ValueError
+        except ValueError:
+            raise ValueError(
+                f"{option_name} {text!r}: {item!r} is not a number nor FROM:TO:COUNT "
+                f"(COUNT a whole number 1–{MAX_COUNT}); e.g. 150,200,250 or 150:250:5"
+            ) from None
+    return out
+
+
+def names(text: str, option_name: str) -> list[str]:
+    """Comma-separated names, or a ValueError naming the option when one is empty."""
+    items = [x.strip() for x in str(text).split(",")]
+    if not all(items):
+        raise ValueError(f"{option_name} {text!r}: give comma-separated names, none empty")
+    return items

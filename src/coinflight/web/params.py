@@ -11,7 +11,7 @@ from typing import Annotated, Any
 
 from fastapi import Depends, Query
 
-from coinflight.queries.values import AirArgs, CoinArgs, TableArgs, TossArgs
+from coinflight.queries.values import COIN_NAMES, AirArgs, CoinArgs, TableArgs, TossArgs
 
 
 def flag(name: str) -> str:
@@ -66,13 +66,7 @@ def _q(description: str, **extra: Any) -> Any:
 
 
 # --- the coin --------------------------------------------------------------------------------
-CoinName = Annotated[
-    str | None,
-    _q(
-        "A real coin: us-cent, us-nickel, us-dime, us-quarter, us-half-dollar, eur-1, eur-2, "
-        "eur-50c, gbp-1 (default us-quarter); as --coin."
-    ),
-]
+CoinName = Annotated[str | None, _q(f"A real coin: {COIN_NAMES} (default us-quarter); as --coin.")]
 Radius = Annotated[float | None, _q("Custom coin radius, m (as --radius).")]
 Thickness = Annotated[float | None, _q("Custom coin thickness, m (as --thickness).")]
 Mass = Annotated[float | None, _q("Custom coin mass, kg (as --mass).")]
@@ -168,17 +162,7 @@ def table_args(
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
-    return TableArgs(
-        surface,
-        drop_height,
-        restitution,
-        friction,
-        None,
-        ending,
-        rolling_resistance,
-        pivoting_resistance,
-        corner_radius,
-    )
+    return TableArgs(**locals(), surface_preset=None)
 
 
 def air_args(drag: Drag = None, spin_damping: SpinDamping = None) -> AirArgs:
@@ -235,6 +219,29 @@ PrecessionRange = Annotated[
 ]
 Resolution = Annotated[str, _q("Grid cells: N (N×N) or NTxNW (as --resolution).")]
 Boundaries = Annotated[bool, _q("Also the analytic heads/tails boundaries (hand only).")]
+
+
+def basin_box(
+    flight_time: FlightTimeRange = None,
+    launch_speed: LaunchSpeedRange = None,
+    omega_x: OmegaXRange = None,
+    omega_y: OmegaYFixed = 0.0,
+    omega_z: OmegaZFixed = 0.0,
+    psi: PsiFixed = None,
+    precession_rate: PrecessionRange = None,
+    resolution: Resolution = "500",
+    start: Start = "heads",
+    g: Gravity = 9.81,
+    bounces: Bounces = None,
+    boundaries: Boundaries = False,
+) -> dict[str, Any]:
+    """The map's box, its toss, the bounces and the boundaries, as typed: the keywords of
+    :func:`~coinflight.queries.basin.basin_query` (``g`` checked by the endpoint)."""
+    return dict(locals())
+
+
+BasinBox = Annotated[dict[str, Any], Depends(basin_box)]
+"""The map's options but the coin and the table: one dependency of ``/api/basin``."""
 
 # --- the same-side bias and real flips --------------------------------------------------------
 Psi = Annotated[float | None, _q("Fixed angle ψ between the normal and S, degrees, 0-180.")]

@@ -106,3 +106,33 @@ export function debounce(fn, ms) {
     timer = setTimeout(() => fn(...args), ms);
   };
 }
+
+/** A slider and its number box kept together: moving either sets the other, then `changed()`
+ * (a box's text that is not a finite number leaves the slider where it is). */
+export function linkSlider(range, box, changed) {
+  range.addEventListener("input", () => {
+    box.value = range.value;
+    changed();
+  });
+  box.addEventListener("input", () => {
+    if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
+    changed();
+  });
+}
+
+/** Run `work()` (a panel's requests and drawing) with the panel's `data-state` "loading", then
+ * "ready", or "error" with the message shown in `errorElement`; an abort (a newer request) is
+ * passed on. */
+export async function showing(root, errorElement, work) {
+  root.dataset.state = "loading";
+  try {
+    await work();
+    showError(errorElement, null);
+    root.dataset.state = "ready";
+  } catch (err) {
+    if (err.name === "AbortError") throw err;
+    if (!(err instanceof ApiError)) console.warn(err);
+    showError(errorElement, err);
+    root.dataset.state = "error";
+  }
+}

@@ -1,6 +1,6 @@
 // Basin map: which face each toss of a (T, ω) box shows (/api/basin), drawn cell by cell;
 // a click tosses that (T, ω) in the explorer.
-import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
+import { getJSON, latest, showing, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { thousands } from "./format.js";
@@ -64,8 +64,7 @@ export class Basin {
 
   async fetchMap(signal) {
     const q = this.query();
-    this.root.dataset.state = "loading";
-    try {
+    await showing(this.root, this.el("basin-error"), async () => {
       const r = await getJSON("api/basin", q, { signal });
       this.map = readBasin(r);
       this.query_ = q;
@@ -73,15 +72,8 @@ export class Basin {
       this.el("basin-summary").textContent =
         `${thousands(cells)} tosses (${this.map.T.length} flight times × ${this.map.W.length} spins, ` +
         `ωy = ${q.omega_y}, ωz = ${q.omega_z} rad/s): heads ${(100 * this.map.headsFraction).toFixed(1)} %`;
-      showError(this.el("basin-error"), null);
       this.draw();
-      this.root.dataset.state = "ready";
-    } catch (err) {
-      if (err.name === "AbortError") throw err;
-      if (!(err instanceof ApiError)) console.warn(err);
-      showError(this.el("basin-error"), err);
-      this.root.dataset.state = "error";
-    }
+    });
   }
 
   /** The map's axes on the canvas as it is now laid out. */

@@ -2,7 +2,7 @@
 // computes (n(t), the angular momentum S and the precession cone), with a time slider.
 import * as THREE from "three";
 import { OrbitControls } from "./vendor/three/addons/controls/OrbitControls.js";
-import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
+import { getJSON, latest, linkSlider, showing, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { tossLines } from "./format.js";
 
@@ -367,16 +367,7 @@ export class Explorer {
   bindControls() {
     // Each slider has a number box: either one sets the other, then the toss is asked again.
     for (const name of ["wx", "wy", "wz", "T", "v0"]) {
-      const range = this.el(`${name}-range`);
-      const box = this.el(`${name}`);
-      range.addEventListener("input", () => {
-        box.value = range.value;
-        this.changed();
-      });
-      box.addEventListener("input", () => {
-        if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
-        this.changed();
-      });
+      linkSlider(this.el(`${name}-range`), this.el(name), () => this.changed());
     }
     for (const radio of this.root.querySelectorAll("input[name=by]")) {
       radio.addEventListener("change", () => {
@@ -437,21 +428,13 @@ export class Explorer {
 
   async fetchToss(signal) {
     const q = this.query();
-    this.root.dataset.state = "loading";
-    try {
+    await showing(this.root, this.el("toss-error"), async () => {
       // First the answer itself (as `coinflight toss --json`), then its attitude finely enough.
       let r = await getJSON("api/toss", { ...q, trajectory: 101 }, { signal });
       const k = sampleCount(r.rotations, this.maxSamples);
       if (k > 101) r = await getJSON("api/toss", { ...q, trajectory: k }, { signal });
       this.setResult(r);
-      showError(this.el("toss-error"), null);
-      this.root.dataset.state = "ready";
-    } catch (err) {
-      if (err.name === "AbortError") throw err;
-      if (!(err instanceof ApiError)) console.warn(err);
-      showError(this.el("toss-error"), err);
-      this.root.dataset.state = "error";
-    }
+    });
   }
 
   setResult(r) {

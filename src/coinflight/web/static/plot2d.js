@@ -37,6 +37,15 @@ function tickText(v, ticks) {
   return v.toFixed(digits);
 }
 
+/** A tick mark from `from` to `to` ([x, y] pixels) and its text at `at`. */
+function tick(ctx, from, to, text, at) {
+  ctx.beginPath();
+  ctx.moveTo(...from);
+  ctx.lineTo(...to);
+  ctx.stroke();
+  ctx.fillText(text, ...at);
+}
+
 /** Axes in a box of the canvas: data → pixel maps, the inverse for clicks, and drawing. */
 export class Axes {
   constructor(fit, xlim, ylim, { left, bottom, right = 12, top = 10 } = {}) {
@@ -84,24 +93,17 @@ export class Axes {
     const xt = xticks || niceTicks(this.xlim[0], this.xlim[1], Math.max(3, Math.floor(this.pw / (5 * fontPx))));
     ctx.textAlign = "center";
     ctx.textBaseline = "top";
+    const bottom = this.top + this.ph;
     for (const v of xt) {
       const px = this.x(v);
-      ctx.beginPath();
-      ctx.moveTo(px, this.top + this.ph);
-      ctx.lineTo(px, this.top + this.ph + 5);
-      ctx.stroke();
-      ctx.fillText(xformat ? xformat(v) : tickText(v, xt), px, this.top + this.ph + 7);
+      tick(ctx, [px, bottom], [px, bottom + 5], xformat ? xformat(v) : tickText(v, xt), [px, bottom + 7]);
     }
     const yt = yticks || niceTicks(this.ylim[0], this.ylim[1], Math.max(3, Math.floor(this.ph / (3 * fontPx))));
     ctx.textAlign = "right";
     ctx.textBaseline = "middle";
     for (const v of yt) {
       const py = this.y(v);
-      ctx.beginPath();
-      ctx.moveTo(this.left, py);
-      ctx.lineTo(this.left - 5, py);
-      ctx.stroke();
-      ctx.fillText(tickText(v, yt), this.left - 7, py);
+      tick(ctx, [this.left, py], [this.left - 5, py], tickText(v, yt), [this.left - 7, py]);
     }
     ctx.font = `${Math.round(0.95 * fontPx)}px ${family}`;
     ctx.textAlign = "center";

@@ -1,6 +1,6 @@
 // Same side: p(ψ), the chance a precessing coin lands the side it started (/api/bias, Diaconis,
 // Holmes & Montgomery 2007), and the ψ that explains 350,757 real flips (/api/data).
-import { ApiError, getJSON, latest, showError, unlessSuperseded } from "./api.js";
+import { ApiError, getJSON, latest, linkSlider, showError, showing, unlessSuperseded } from "./api.js";
 import { fitCanvas, Axes } from "./plot2d.js";
 import { COLORS } from "./explorer.js";
 import { fmtG, thousands } from "./format.js";
@@ -43,14 +43,7 @@ export class SameSide {
     this.request = latest((signal) => this.fetchPsi(signal));
     const range = this.el("psi-range");
     const box = this.el("psi");
-    range.addEventListener("input", () => {
-      box.value = range.value;
-      this.changed();
-    });
-    box.addEventListener("input", () => {
-      if (box.value !== "" && Number.isFinite(Number(box.value))) range.value = box.value;
-      this.changed();
-    });
+    linkSlider(range, box, () => this.changed());
     this.el("psi-data").addEventListener("click", () => {
       if (!this.data) return;
       const psi = this.data.psi_deg.toFixed(1);
@@ -118,8 +111,7 @@ export class SameSide {
   }
 
   async fetchPsi(signal) {
-    this.root.dataset.state = "loading";
-    try {
+    await showing(this.root, this.el("psi-error"), async () => {
       const r = await getJSON("api/bias", { psi: this.el("psi").value.trim() }, { signal });
       this.current = r;
       this.el("psi-p").textContent = r.p_same_side.toFixed(6);
@@ -127,15 +119,8 @@ export class SameSide {
       this.el("psi-text").textContent =
         `ψ = ${fmtG(r.psi_deg)}° (${r.psi_model}): P(same side) = ${r.p_same_side.toFixed(6)}  ` +
         `(closed form, ${r.source})`;
-      showError(this.el("psi-error"), null);
       this.draw();
-      this.root.dataset.state = "ready";
-    } catch (err) {
-      if (err.name === "AbortError") throw err;
-      if (!(err instanceof ApiError)) console.warn(err);
-      showError(this.el("psi-error"), err);
-      this.root.dataset.state = "error";
-    }
+    });
   }
 
   draw() {
