@@ -78,20 +78,15 @@ or the resistances, drawn toss by toss: each landing then builds its own contact
 the contact phase its damping), for the work bounds: about half of
 :data:`CONTACT_TOSSES_PER_SECOND` (``python benchmarks/bench_bounce.py --contact-rates N``)."""
 
-CONTACT_AIR_LANDINGS_PER_SECOND = 1e4
-"""Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,
-C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: 2 threads of a busy
-2-core machine (a quiet one runs about five times as many; ``python benchmarks/bench_air.py``)."""
+CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
+"""Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
+e = 0.5, μ = 0.3, C_d = 1.17, vigorous nickel tosses, 2 threads of a busy 2-core machine), for
+the work bounds."""
 
 AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,
-C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: at or below every
-rate measured on the loaded machine. 2 threads on the project's 2-core machine (AMD EPYC),
-``python benchmarks/bench_air.py``, medians: 51,915 a second quiet (load 0.1-1.3, 100,000
-tosses, ``--reference 3``, the lead, 2026-11-23 20:03 UTC); 26,930 at a load of 3.5-5 (100,000
-tosses, same day); 22,253 at a load of 9.9 (``--n 20000 --repeats 3 --reference 1``, helper
-w-fix, 21:03 UTC) and 14,986 at 10.1 (20,000 tosses, median of 3, 21:06 UTC); 10,600-15,600
-under a load of 4-8 with the previous integrator (an earlier session)."""
+C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: 2 threads of a busy
+2-core machine (a quiet one runs about five times as many; ``python benchmarks/bench_air.py``)."""
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
