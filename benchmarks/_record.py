@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import os
 import platform
+import re
 import shlex
 import sys
 from collections.abc import Iterator, Mapping, Sequence
@@ -71,6 +72,12 @@ def summary() -> str:
         f"{v['numpy']}, numba {v['numba']}, SciPy {v['scipy']}, coinflight {v['coinflight']}; "
         f"load average {os.getloadavg()[0]:.2f}"
     )
+
+
+def key(name: str) -> str:
+    """A printed label as a record's key: ``"table first contact"`` → ``"table_first_contact"``,
+    μ as ``mu``."""
+    return re.sub(r"[^0-9a-z]+", "_", name.lower().replace("μ", "mu")).strip("_")
 
 
 def _load() -> list[float]:
