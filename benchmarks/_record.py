@@ -80,6 +80,11 @@ def key(name: str) -> str:
     return re.sub(r"[^0-9a-z]+", "_", name.lower().replace("μ", "mu")).strip("_")
 
 
+def dumps(record: Mapping[str, Any]) -> str:
+    """A record as JSON text (numbers as numbers, non-ASCII kept)."""
+    return json.dumps(record, indent=1, ensure_ascii=False)
+
+
 def _load() -> list[float]:
     return [round(x, 2) for x in os.getloadavg()]
 
@@ -95,22 +100,31 @@ class Recorder:
         self.date = datetime.now(UTC).isoformat(timespec="seconds")
         self.load_before = _load()
 
-    def record(self, figures: Mapping[str, Any]) -> dict[str, Any]:
-        """The record: ``figures`` and the provenance (:data:`PROVENANCE_KEYS`), the load
-        average after taken now."""
+    def record(
+        self,
+        figures: Mapping[str, Any],
+        load: Mapping[str, Sequence[float]] | None = None,
+        more_versions: Mapping[str, str | None] | None = None,
+    ) -> dict[str, Any]:
+        """The record: ``figures`` and the provenance (:data:`PROVENANCE_KEYS`). ``load``: the
+        load average before and after the timing when the script took it itself, else from
+        the start of the run to now; ``more_versions``: other packages' versions (None: not
+        installed)."""
+        if load is None:
+            load = {"before": self.load_before, "after": _load()}
         return {
             "benchmark": self.benchmark,
             "figures": dict(figures),
             "command": self.command,
             "date": self.date,
-            "versions": versions(),
+            "versions": {**versions(), **(more_versions or {})},
             "machine": machine(),
-            "load": {"before": self.load_before, "after": _load()},
+            "load": {"before": list(load["before"]), "after": list(load["after"])},
         }
 
     def json(self, figures: Mapping[str, Any]) -> str:
-        """:meth:`record` as JSON text (numbers as numbers, non-ASCII kept)."""
-        return json.dumps(self.record(figures), indent=1, ensure_ascii=False)
+        """:meth:`record` of ``figures`` as JSON text (numbers as numbers, non-ASCII kept)."""
+        return dumps(self.record(figures))
 
     @contextmanager
     def text_to_stderr(self, active: bool) -> Iterator[None]:
