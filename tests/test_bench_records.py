@@ -112,7 +112,7 @@ def _positive(x: object) -> bool:
             "bench_bounce",
             ["--rigid-rates", "30", "--rounds", "1", "--json"],
             "human_rigid_ending_tosses_per_s",
-        ),  # fmt: skip
+        ),
         (
             "bench_bounce",
             ["--contact-rates", "30", "--rounds", "1", "--json"],
