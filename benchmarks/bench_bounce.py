@@ -363,7 +363,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> dict[
                 f"{that_cpu:,.0f} per CPU second (this one / other = "
                 f"{here_cpu / that_cpu:.2f}); faces differing {differ} of {n}, statuses "
                 f"{status} (decided upright, {decided} here and {decided_there} there, counted "
-                "as settled in contact in both, the status before 2026-11-24); decided upright "
+                "as settled in contact in both, the status of a tree without it); decided upright "
                 f"in one tree only {one_only} (all the decided ones if the other tree has no "
                 "such status)"
             )
@@ -502,7 +502,7 @@ def rounded_edges(n: int) -> None:
 
 def contact_phase(n: int) -> None:
     """What the experimental contact phase (``ending="contact"``) decides, over the parameters
-    nobody has measured (issue 11)."""
+    nobody has measured."""
     contact_rates(n)
     rounded_edges(n)
     rng = np.random.default_rng(11)

@@ -63,13 +63,13 @@ from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.table import land
 
 THREADS = 2
-"""Issue 11's targets are "on 2 cores": numba's threads for every case (fewer if numba has
+"""The targets are "on 2 cores": numba's threads for every case (fewer if numba has
 fewer)."""
 
 TO_REST = 50_000.0
 FIRST_CONTACT = 2_000_000.0
 IN_AIR = 100_000.0
-"""Issue 11's targets, tosses a second on 2 cores ("Done when")."""
+"""The targets, tosses a second on 2 cores."""
 
 DRAG = Drag(coefficient=1.17)
 """The air of the air cases: a flat disc broadside on, no spin damping (``bench_air.py``'s
@@ -89,9 +89,9 @@ class Case(NamedTuple):
 
 
 PLANAR = "(planar)"
-PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not issue 11's ending: a reference"
+PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not the 3-D ending: a reference"
 """The rocking ending's rows are references, marked :data:`PLANAR` in their labels and
-explained by :data:`PLANAR_NOTE` under the table: issue 11's 50,000 a second is for the 3-D
+explained by :data:`PLANAR_NOTE` under the table: the 50,000 a second is for the 3-D
 contact phase ("no planar hand-off"), which the contact ending's rows time."""
 
 CASES = (
