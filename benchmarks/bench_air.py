@@ -1,8 +1,9 @@
-"""Speed of tosses through air (issue 11): the compiled integrator against the vacuum models.
+"""Speed of tosses through air: the compiled integrator against the vacuum models.
 
     python benchmarks/bench_air.py                          # air vs vacuum + SciPy reference
     python benchmarks/bench_air.py --old-src /path/to/src   # + another implementation
     python benchmarks/bench_air.py --quick
+    python benchmarks/bench_air.py --quick --json           # the record as JSON
     python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
     python benchmarks/bench_air.py --profile 20000          # where a landing's time goes
     python benchmarks/bench_air.py --ab 7 --old-src DIR     # one-thread A/B, 7 rounds
@@ -40,31 +41,10 @@ time); the times a step are the phases' shares of the CPU time.
 With ``--accuracy M`` only the times against DOP853 at rtol 1e-12 on the first M tosses are
 printed (:func:`accuracy`): the catch, the first contact, a bounce flight from the state after
 the reference's first impact, and the second contact; with ``--old-src`` the other
-implementation's on the same tosses. Measured 2026-11-23 (40 tosses, load 3-5): catch 3.2e-7 s
-(median) and 7.6e-7 s (largest), first contact 7.6e-7 and 3.3e-6 s (main: 7.7e-7, 3.3e-6),
-bounce flight 1.7e-10 and 4.7e-6 s, second contact 1.9e-6 and 3e-4 s (main alike). Speed the
-same day (the default run with ``--reference 3 --old-src``, 100,000 tosses, load 5.0 to 3.5):
-hand 129,034 a second (main 127,803), first contact 82,436 (88,351), to rest 26,930 (26,132:
-1.03 times; one thread 26,090 against 24,680 per CPU second, 1.06 times).
+implementation's on the same tosses.
 
-Measured 2026-11-24 (the kink integrals' rewrite, ``--reference 3 --old-src`` main's src,
-100,000 tosses, medians of 5, load 10.5 before and 10.7 after, the machine shared by five other
-sessions): 1.03-1.07 times main's rates (CPU time, one thread: 120,901, 84,231 and 25,217
-tosses per CPU second against 113,238, 78,787 and 23,766, 1.06-1.07 times; an interleaved A/B
-of one thread each, 7 rounds of 10,000 tosses at load 13, 1.03-1.05 times, the method of
-``--ab``). The wall-clock rates, hand 79,658 a second (main 64,546), first contact 53,269
-(41,008), to rest 14,969 (12,230), have ratios of 1.22-1.30 that are mostly the load's.
-``--ab 7 --n 30000 --old-src`` main's src after the root count's fix (load 3.7-4.0): medians
-1.08 (hand), 1.09 (first contact), 1.05 (to rest), single rounds 0.91-1.40; against the fix's
-parent 1.06, 1.05 and 1.02 (rounds 1.00-1.07, load 3.8-4.0); a first version of the fix that
-divided for every root, not only for those counted, was 0.97-0.98 times its parent and
-1.00-1.02 times main (load 4-5). Issue 11's 100,000 a second on 2 cores is therefore met by
-the hand catch and the first contact on a quiet machine, not carried to rest: measured quiet
-(``--n 30000 --repeats 3 --reference 3 --old-src`` against 6061499, 2026-11-24 01:47 UTC, load
-1.4-1.8) hand 252,136 a second, first contact 176,315, to rest 54,791 (vacuum 112,591), each
-1.02-1.03 times the code before (one thread 1.02-1.03): carried to rest a toss costs ~36-40 µs
-of one core, 28-36 % of it the 8.8 impacts the vacuum landing has too (``--profile``; the shares in
-:mod:`coinflight.core.drag`'s notes on cost).
+Target: tosses through air ≥ 100,000 a second on 2 cores. ``--json`` (the default run only)
+prints the record: the rates, the ratios and the provenance (the text on stderr).
 """
 
 from __future__ import annotations
@@ -83,6 +63,7 @@ from typing import Any
 import numpy as np
 
 # bench_bounce.py's coin, table and tosses (the script's own folder is on the path)
+from _record import Recorder
 from bench_bounce import COIN, COIN_PRESET, SURFACE, G, tosses
 from coinflight.core import numerical
 from coinflight.core.outcome import Status
@@ -505,8 +486,6 @@ def cases_in_air(
 
 
 def main() -> None:
-    import numba
-
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="fewer tosses")
     parser.add_argument("--n", type=int, default=None, help="tosses for the compiled kernels")
@@ -527,7 +506,16 @@ def main() -> None:
         default=None,
         help="only: this many rounds of an interleaved one-thread A/B against --old-src",
     )
+    parser.add_argument(
+        "--json", action="store_true", help="print the record as JSON (the text to stderr)"
+    )
     args = parser.parse_args()
+    if args.json and (args.profile is not None or args.ab is not None or args.accuracy):
+        print(
+            "bench_air.py: --json records the default run only, not --profile, --ab or --accuracy",
+            file=sys.stderr,
+        )
+        sys.exit(2)
     if args.ab is not None and not args.old_src:
         print("bench_air.py: --ab needs --old-src (the implementation to compare)", file=sys.stderr)
         sys.exit(2)
@@ -551,6 +539,19 @@ def main() -> None:
     if args.accuracy:
         accuracy(args, args.accuracy, drag)
         return
+    recorder = Recorder("bench_air")
+    with recorder.text_to_stderr(args.json):
+        figures = rates_in_air(args, n, m, drag)
+    if args.json:
+        print(recorder.json(figures))
+
+
+def rates_in_air(args: argparse.Namespace, n: int, m: int, drag: Drag) -> dict[str, Any]:
+    """The default run: the air cases against their vacuum models, one thread per CPU second,
+    the SciPy reference, with ``--old-src`` the other implementation; prints them and returns
+    the figures of the record."""
+    import numba
+
     omega, v0 = tosses(n)
     load_before = f"{os.getloadavg()[0]:.2f}"
     print(
@@ -584,8 +585,19 @@ def main() -> None:
                     old_rates[name].append(rate)
         old_cpu = _other(args, n, cache, cpu=True) if args.old_src else {}
     rates = {key: n / statistics.median(ts) for key, ts in times.items()}
+    figures: dict[str, Any] = {
+        "tosses": n,
+        "repeats": args.repeats,
+        "threads": numba.get_num_threads(),
+        "drag_coefficient": drag.coefficient,
+        "spin_damping_n_m_s": drag.spin_damping,
+        "target_tosses_per_s": 100_000.0,
+    }
     for name in air_cases:
         air_rate, vacuum_rate = rates[("air", name)], rates[("vacuum", name)]
+        key = name.replace(" ", "_")
+        figures[f"air_{key}_tosses_per_s"] = air_rate
+        figures[f"vacuum_{key}_tosses_per_s"] = vacuum_rate
         print(
             f"  {name}: air {air_rate:,.0f} tosses/s, vacuum {vacuum_rate:,.0f} tosses/s, "
             f"air / vacuum = {air_rate / vacuum_rate:.3f}"
@@ -595,6 +607,7 @@ def main() -> None:
     serial = cases_in_air(omega, v0, drag, parallel=False)
     cpu = {name: cpu_rate(fn, n) for name, fn in serial.items()}
     for name, rate in cpu.items():
+        figures[f"air_{name.replace(' ', '_')}_one_thread_tosses_per_cpu_s"] = rate
         print(f"  air, {name}, one thread: {rate:,.0f} tosses per CPU second")
     air = drag_model(COIN, drag, G)
     i1, i3 = COIN.moments
@@ -604,6 +617,8 @@ def main() -> None:
     scipy_rate = median_rate(
         lambda: [numerical.air_catch(f, omega[k], v0[k]) for k in range(m)], m, 1
     )
+    figures["scipy_reference_tosses"] = m
+    figures["scipy_reference_hand_tosses_per_s"] = scipy_rate
     print(
         f"  SciPy DOP853 reference, hand ({m} tosses): {scipy_rate:,.2f} tosses/s; "
         f"compiled / SciPy = {rates[('air', 'hand')] / scipy_rate:,.0f}"
@@ -612,12 +627,16 @@ def main() -> None:
         print(f"  other implementation ({args.old_src}), same tosses, in the same rounds:")
         for name in air_cases:
             other = statistics.median(old_rates[name])
+            key = name.replace(" ", "_")
+            figures[f"other_{key}_tosses_per_s"] = other
+            figures[f"other_{key}_one_thread_tosses_per_cpu_s"] = old_cpu[name]
             print(
                 f"    {name}: {other:,.0f} tosses/s (this one / other = "
                 f"{rates[('air', name)] / other:.2f}); one thread {old_cpu[name]:,.0f} per CPU "
                 f"second (this one / other = {cpu[name] / old_cpu[name]:.2f})"
             )
     print(f"  load average {load_before} before, {os.getloadavg()[0]:.2f} after")
+    return figures
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-"""Speed of the bouncing model (issue 6), and a general rigid-body engine beside it.
+"""Speed of the bouncing model, and a general rigid-body engine beside it.
 
     python benchmarks/bench_bounce.py              # coinflight speed + MuJoCo on 200 tosses
     python benchmarks/bench_bounce.py --quick      # fewer tosses
@@ -8,11 +8,13 @@
     python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
     python benchmarks/bench_bounce.py --rigid-rates N [--rounds R]  # the rigid ending's speed
+    python benchmarks/bench_bounce.py --quick --json  # the record as JSON (the text on stderr)
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
 impacts, contacts found by root finding, parallel over tosses), on tosses of a US nickel
 dropped onto a table 0.8 m below launch (e = 0.5, μ = 0.3): tosses per second, median of
-repeats, all threads of the machine.
+repeats, all threads of the machine. Targets on 2 cores: ≥ 20,000 human or vigorous tosses
+carried to rest a second (``--rigid-rates``: the rigid ending), first contact ≥ 2 M a second.
 
 MuJoCo (optional: ``pip install coinflight[mujoco]``; skipped cleanly when not installed): the
 same tosses in coinflight and MuJoCo, with the settings of
@@ -20,6 +22,9 @@ same tosses in coinflight and MuJoCo, with the settings of
 report, ``coinflight landing-report``, runs it on 10,000 tosses): tosses per second of each and
 the agreement of outcomes, (a) at the first contact (geometry and free flight only) and (b) at
 rest (depends on each engine's contact model).
+
+``--json`` prints the record (the rates and the provenance) of the default run,
+``--contact-rates`` or ``--rigid-rates``.
 """
 
 from __future__ import annotations
@@ -27,12 +32,14 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import platform
 import statistics
+import sys
 import time
+from typing import Any
 
 import numpy as np
 
+from _record import Recorder, key, summary
 from coinflight import Coin
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Surface
@@ -86,7 +93,7 @@ def median_rate(fn, n: int, repeats: int) -> float:  # type: ignore[no-untyped-d
     return n / statistics.median(times)
 
 
-def bench_coinflight(n: int, repeats: int) -> None:
+def bench_coinflight(n: int, repeats: int) -> dict[str, Any]:
     import numba
 
     omega, v0 = tosses(n)
@@ -105,9 +112,17 @@ def bench_coinflight(n: int, repeats: int) -> None:
         f"rocking hand-off {rocking:.1%}; unsettled {np.mean(out.status == Status.UNSETTLED):.2%}; "
         f"{face_fractions(out.face)}"
     )
+    return {
+        "tosses": n,
+        "repeats": repeats,
+        "threads": numba.get_num_threads(),
+        "rocking_to_rest_tosses_per_s": rate,
+        "first_contact_tosses_per_s": first,
+        "first_contact_target_tosses_per_s": 2e6,
+    }
 
 
-def bench_mujoco(m: int) -> None:
+def bench_mujoco(m: int) -> dict[str, Any]:
     """The same tosses in MuJoCo (coinflight.studies.landing.mujoco_comparison: settings and
     the comparison live in the library, coinflight.studies.mujoco_compare)."""
     from coinflight.studies import mujoco_compare
@@ -115,7 +130,7 @@ def bench_mujoco(m: int) -> None:
 
     if not mujoco_compare.available():
         print("MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
-        return
+        return {"mujoco_skipped": "not installed"}
     c = mujoco_comparison(m, seed=2026)
     s = c.settings
     print(
@@ -130,6 +145,15 @@ def bench_mujoco(m: int) -> None:
         f"({c.mujoco_unsettled} still moving at {c.mujoco.limit:g} s), coinflight: "
         f"{face_fractions(c.rocking.rest)}"
     )
+    return {
+        "mujoco_tosses": m,
+        "mujoco_version": s["mujoco"],
+        "mujoco_tosses_per_s": m / c.mujoco_seconds,
+        "coinflight_same_tosses_per_s": m / c.rocking.seconds,
+        "speed_ratio": c.ratio(c.rocking),
+        "agreement_first_contact": c.first_agreement,
+        "agreement_at_rest": c.agreement(c.rocking),
+    }
 
 
 def nickel_edge(n: int) -> None:
@@ -229,7 +253,7 @@ def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
 
 def as_undecided(status: np.ndarray) -> np.ndarray:
     """``status`` with DECIDED_UPRIGHT written as SETTLED_CONTACT: the status of the same toss
-    without the upright decision's own status (a tree before 2026-11-24 stored its decided
+    without the upright decision's own status (a tree older than that status stored its decided
     coins as settled in contact; with the decision off they are carried to rest there), so
     that comparing with such a run counts no decided toss as a difference."""
     decided = status == Status.DECIDED_UPRIGHT
@@ -254,7 +278,7 @@ def status_differences(here: np.ndarray, there: np.ndarray) -> tuple[int, int, i
     )
 
 
-def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
+def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> dict[str, Any]:
     """Tosses a second carried to rest with the 3-D contact ending against the rocking ending
     and first contact, in one run (medians), on one surface (e = 0.5, μ = 0.3) and with each
     toss's own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6); and where the contact ending decides them.
@@ -263,7 +287,8 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     contact ending's cases (:data:`CONTACT_CASES`) are timed in that implementation too, in a
     subprocess, one round of it in each round of these (so the ratio is taken over the same
     minutes: medians of the rounds), then once each per CPU second in one thread; and the faces
-    and statuses of the same tosses are compared between the two."""
+    and statuses of the same tosses are compared between the two. Returns the rates (the
+    figures of the record)."""
     import tempfile
 
     omega, v0 = tosses(n)
@@ -314,7 +339,9 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
     rates = {name: n / statistics.median(ts) for name, ts in times.items()}
     first = rates["first contact"]
     print(f"{n:,} vigorous tosses, e = 0.5, μ = 0.3, median of {repeats}, load {load_before}")
+    figures: dict[str, Any] = {"tosses": n, "repeats": repeats}
     for name, rate in rates.items():
+        figures[f"{key(name)}_tosses_per_s"] = rate
         print(f"  {name}: {rate:,.0f} tosses/s ({rate / first:.2e} of first contact)")
     if old_src:
         print(f"  other implementation ({old_src}), same tosses, in the same rounds (medians):")
@@ -322,6 +349,9 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
             that = statistics.median(other["wall"][name])
             here_cpu = statistics.median(cpu[name])
             that_cpu = statistics.median(other["cpu"][name])
+            figures[f"other_{key(name)}_tosses_per_s"] = that
+            figures[f"{key(name)}_one_thread_tosses_per_cpu_s"] = here_cpu
+            figures[f"other_{key(name)}_one_thread_tosses_per_cpu_s"] = that_cpu
             out = own[name](True)
             differ = int(np.count_nonzero(out.face != old_out[name + " face"]))
             status, decided, decided_there, one_only = status_differences(
@@ -333,7 +363,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
                 f"{that_cpu:,.0f} per CPU second (this one / other = "
                 f"{here_cpu / that_cpu:.2f}); faces differing {differ} of {n}, statuses "
                 f"{status} (decided upright, {decided} here and {decided_there} there, counted "
-                "as settled in contact in both, the status before 2026-11-24); decided upright "
+                "as settled in contact in both, the status of a tree without it); decided upright "
                 f"in one tree only {one_only} (all the decided ones if the other tree has no "
                 "such status)"
             )
@@ -357,6 +387,7 @@ def contact_rates(n: int, repeats: int = 3, old_src: str | None = None) -> None:
             f"  {name} ending, each toss its own e, μ: P(same side) {same:.4f} ± "
             f"{math.sqrt(same * (1 - same) / n):.4f}, {face_fractions(out.face)}"
         )
+    return figures
 
 
 UPRIGHT_SURFACES = {"e 0.5, μ 0.3": (0.5, 0.3), "e 0.5, μ 0.6": (0.5, 0.6), "own e, μ": None}
@@ -471,7 +502,7 @@ def rounded_edges(n: int) -> None:
 
 def contact_phase(n: int) -> None:
     """What the experimental contact phase (``ending="contact"``) decides, over the parameters
-    nobody has measured (issue 11)."""
+    nobody has measured."""
     contact_rates(n)
     rounded_edges(n)
     rng = np.random.default_rng(11)
@@ -509,11 +540,12 @@ RIGID = Surface("table", DROP, 0.5, 0.3, ending="rigid")
 """The rigid ending's surface of :func:`rigid_rates` (default resistances, 1e-4 m)."""
 
 
-def rigid_rates(n: int, repeats: int = 3) -> None:
+def rigid_rates(n: int, repeats: int = 3) -> dict[str, Any]:
     """Tosses a second carried to rest with the rigid ending against the rocking ending and
     first contact, in one run (medians of ``repeats``, all threads), on the vigorous tosses
     (:func:`tosses`) and on human ones (:data:`coinflight.studies.presets`' ``human``, drawn
-    with the same seed), US nickel, e = 0.5, μ = 0.3; with how the rigid landings ended."""
+    with the same seed), US nickel, e = 0.5, μ = 0.3; with how the rigid landings ended.
+    Returns the rates (the figures of the record)."""
     import numba
 
     from coinflight.studies.presets import preset
@@ -525,6 +557,13 @@ def rigid_rates(n: int, repeats: int = 3) -> None:
     for w, s in sets.values():
         land(COIN, w[:20], s[:20], 1.0, G, RIGID)  # compile (or load the cache)
     load = os.getloadavg()
+    figures: dict[str, Any] = {
+        "tosses": n,
+        "repeats": repeats,
+        "threads": numba.get_num_threads(),
+        "to_rest_target_tosses_per_s": 20_000.0,
+        "first_contact_target_tosses_per_s": 2e6,
+    }
     for name, (w, s) in sets.items():
         cases = {
             "rigid ending": lambda w=w, s=s: land(COIN, w, s, 1.0, G, RIGID),
@@ -532,6 +571,8 @@ def rigid_rates(n: int, repeats: int = 3) -> None:
             "first contact": lambda w=w, s=s: land(COIN, w, s, 1.0, G, SURFACE, max_bounces=0),
         }
         rates = {case: median_rate(fn, n, repeats) for case, fn in cases.items()}
+        for case, rate in rates.items():
+            figures[f"{name}_{key(case)}_tosses_per_s"] = rate
         out = land(COIN, w, s, 1.0, G, RIGID)
         statuses = {st.label: int(np.count_nonzero(out.status == st)) for st in Status}
         print(
@@ -545,6 +586,7 @@ def rigid_rates(n: int, repeats: int = 3) -> None:
             + f"; settle time median {np.median(out.settle_time):.2f} s, "
             f"max {out.settle_time.max():.1f} s"
         )
+    return figures
 
 
 def main() -> None:
@@ -558,28 +600,48 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--upright-child", nargs=3, metavar=("SETTING", "N", "OUT"))
     parser.add_argument("--old-src", default=None, help="src folder of another coinflight")
+    parser.add_argument(
+        "--json", action="store_true", help="print the record as JSON (the text to stderr)"
+    )
     args = parser.parse_args()
     if args.upright_child:
         setting, count, out = args.upright_child
         _upright_child(int(count), setting, out)
         return
+    contact_only = args.contact and not (args.contact_rates or args.rigid_rates)
+    if args.json and (args.upright or contact_only):
+        print(
+            "bench_bounce.py: --json records the default run, --contact-rates or --rigid-rates, "
+            "not --upright or --contact",
+            file=sys.stderr,
+        )
+        sys.exit(2)
     if args.upright:
         upright_decision(args.upright, args.rounds)
         return
-    if args.contact_rates:
-        contact_rates(args.contact_rates, args.rounds, args.old_src)
-        return
-    if args.rigid_rates:
-        rigid_rates(args.rigid_rates, args.rounds)
-        return
-    if args.contact:
+    if contact_only:
         contact_phase(args.contact)
         return
-    print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs")
-    bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
-    bench_mujoco(16 if args.quick else 100)
+    recorder = Recorder("bench_bounce")
+    with recorder.text_to_stderr(args.json):
+        figures = timed(args)
+    if args.json:
+        print(recorder.json(figures))
+
+
+def timed(args: argparse.Namespace) -> dict[str, Any]:
+    """The run of ``--contact-rates``, ``--rigid-rates`` or the default one; the figures of
+    the record."""
+    if args.contact_rates:
+        return contact_rates(args.contact_rates, args.rounds, args.old_src)
+    if args.rigid_rates:
+        return rigid_rates(args.rigid_rates, args.rounds)
+    print(summary())
+    figures = bench_coinflight(200_000 if args.quick else 1_000_000, 3 if args.quick else 5)
+    figures.update(bench_mujoco(16 if args.quick else 100))
     if args.nickel:
         nickel_edge(200_000)
+    return figures
 
 
 if __name__ == "__main__":

@@ -6,9 +6,8 @@
 Times :func:`coinflight.studies.flippers.analyse` in-process (the fit, its profile intervals,
 the log-normal alternative, the held-out splits and both tests; SciPy already imported) over N
 rounds (median; 1 with ``--quick``), and ``coinflight data --json`` end to end as a new process
-(start-up, imports and every line of the answer). Target: under 5 s on a 2-core machine. Prints
-one record (the machine's load before and after, the times and the fitted numbers); ``--json``
-prints it as one JSON object instead.
+(start-up, imports and every line of the answer). Target: under 5 s on a 2-core machine.
+``--json`` prints the record (the times, the fitted numbers and the provenance) instead.
 """
 
 from __future__ import annotations
@@ -16,13 +15,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
-import platform
 import statistics
 import subprocess
 import sys
 import time
-from datetime import UTC, datetime
+
+from _record import Recorder
 
 TARGET_S = 5.0
 """Issue target: fit and validation of the 48 people in under 5 s on 2 cores."""
@@ -41,7 +39,7 @@ def main() -> None:
     if rounds < 1:
         parser.error(f"--rounds must be at least 1, got {rounds}")
 
-    load_before = os.getloadavg()
+    recorder = Recorder("bench_flippers")
     import scipy.optimize  # imports paid before the clock starts
     import scipy.stats  # noqa: F401
 
@@ -67,13 +65,7 @@ def main() -> None:
     het = json.loads(done.stdout)["heterogeneity"]
     fit, ho = result.fit, result.held_out
     assert ho is not None
-    record = {
-        "benchmark": "bench_flippers",
-        "utc": datetime.now(UTC).strftime("%Y-%m-%d %H:%M:%S"),
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "load_before": [round(x, 2) for x in load_before],
-        "load_after": [round(x, 2) for x in os.getloadavg()],
+    figures = {
         "people": len(table.people),
         "seed": args.seed,
         "folds": ho.folds,
@@ -83,28 +75,30 @@ def main() -> None:
         "cli_data_json_s": cli_s,
         "target_s": TARGET_S,
         "met": max(statistics.median(times), cli_s) < TARGET_S,
-        "psi_mean": math.degrees(fit.population.location),
-        "psi_sd": math.degrees(fit.population.scale),
-        "psi_sd_ci95": het["psi_sd_ci95"],
+        "psi_mean_deg": math.degrees(fit.population.location),
+        "psi_sd_deg": math.degrees(fit.population.scale),
+        "psi_sd_ci95_deg": het["psi_sd_ci95"],
         "loglik_ratio": fit.loglik_ratio,
         "heldout_coverage": ho.coverage,
         "heldout_coverage_one_psi": ho.coverage_one_psi,
     }
+    record = recorder.record(figures)
     if args.json:
-        print(json.dumps(record))
+        print(recorder.json(figures))
         return
+    cpus, load = record["machine"]["cpus"], record["load"]
     print(
-        f"{record['utc']} UTC, {record['cores']} cores, load {load_before[0]:.2f} before, "
-        f"{record['load_after'][0]:.2f} after"
+        f"{record['date']}, {cpus} cores, load {load['before'][0]:.2f} before, "
+        f"{load['after'][0]:.2f} after"
     )
     print(
         f"analyse 48 people ({ho.folds}-fold x {ho.repeats} splits, seed {args.seed}): "
-        f"{record['analyse_s']:.2f} s (median of {rounds}); coinflight data --json: "
+        f"{figures['analyse_s']:.2f} s (median of {rounds}); coinflight data --json: "
         f"{cli_s:.2f} s as a new process; target < {TARGET_S:g} s: "
-        f"{'met' if record['met'] else 'MISSED'}"
+        f"{'met' if figures['met'] else 'MISSED'}"
     )
     print(
-        f"psi ~ normal {record['psi_mean']:.2f} deg, sd {record['psi_sd']:.2f} deg; "
+        f"psi ~ normal {figures['psi_mean_deg']:.2f} deg, sd {figures['psi_sd_deg']:.2f} deg; "
         f"LLR {fit.loglik_ratio:.1f}; held-out coverage {ho.coverage:.3f} vs one psi "
         f"{ho.coverage_one_psi:.3f}"
     )

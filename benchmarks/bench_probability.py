@@ -1,20 +1,22 @@
-"""Speed and memory of the probability methods (issue 3), ratios measured in one run.
+"""Speed and memory of the probability methods, ratios measured in one run.
 
     python benchmarks/bench_probability.py            # everything (about a minute)
     python benchmarks/bench_probability.py --quick    # skip the billion-toss memory run
     python benchmarks/bench_probability.py --accuracy # time to a given accuracy only
+    python benchmarks/bench_probability.py --json     # the record as JSON (the text on stderr)
 
 Monte Carlo of fully general tosses (ωx, ωy, ωz and T all random, precession included), side
 by side with a plain NumPy vectorised baseline (Generator draws + the NumPy closed form) and
 per-toss numerical integration (``coinflight.core.numerical.integrate``, SciPy DOP853); the
-grid method at 5000² and 100000² configurations; the exact method; peak resident memory of
-a billion Monte Carlo tosses. Medians of repeats.
+grid method at 5000² and 100000² configurations; the exact method; the command's cold start;
+peak resident memory of a billion Monte Carlo tosses. Medians of repeats. Targets on 2 cores:
+Monte Carlo ≥ 50 M tosses/s, grid 5000² < 0.1 s and 100000² < 10 s, exact < 10 ms, a billion
+tosses in < 300 MB.
 
-Time to a given accuracy (issue 12): for five distributions (two of them, three and four ranged
-uniform parameters, refused by exact before), the seconds each method needs to
-reach a standard error (or error) of 1e-4 and 1e-6, as ratios to exact in one run. Sampling
-methods are measured at one or two sizes and extrapolated at their measured rate (Monte
-Carlo: s.e. ∝ n^-1/2; QMC: the exponent fitted between two sizes), which the table says.
+Time to a given accuracy: for five distributions, the seconds each method needs to reach a
+standard error (or error) of 1e-4 and 1e-6, as ratios to exact in one run. Sampling methods
+are measured at two sizes and extrapolated at their measured rate (Monte Carlo: s.e. ∝
+n^-1/2; QMC: the exponent fitted between the sizes), which the table says.
 """
 
 from __future__ import annotations
@@ -22,8 +24,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
-import platform
 import statistics
 import subprocess
 import sys
@@ -33,6 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
+from _record import Recorder, summary
 from coinflight.core import sampling
 from coinflight.core.numerical import integrate
 from coinflight.core.torque_free import normal_alignment
@@ -64,23 +65,6 @@ def median_time(fn: Callable[[], object], repeats: int) -> float:
     return median_times(fn, repeats)[0]
 
 
-def machine() -> str:
-    cpu = platform.processor() or "?"
-    try:
-        with open("/proc/cpuinfo") as fh:
-            cpu = next(line.split(":", 1)[1].strip() for line in fh if "model name" in line)
-    except (OSError, StopIteration):
-        pass
-    import numba
-    import scipy
-
-    return (
-        f"{cpu}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}, "
-        f"Python {platform.python_version()}, NumPy {np.__version__}, numba {numba.__version__}, "
-        f"SciPy {scipy.__version__}; load average {os.getloadavg()[0]:.2f}"
-    )
-
-
 def numpy_baseline(n: int, seed: int = 0, chunk: int = 1 << 20) -> int:
     """Plain NumPy: Generator draws and the closed form on arrays, chunk by chunk."""
     rng = np.random.default_rng(seed)
@@ -108,13 +92,12 @@ def per_toss_ivp(n: int, seed: int = 0) -> int:
 NORMAL_SPINS = TossDistribution.from_launch_speed(
     Normal(240.0, 24.0), 0.0, Normal(0.0, 40.0), Normal(2.4, 0.24)
 )
-"""Issue 12's normal-spin example (--omega-x normal:240,24 --omega-z normal:0,40
---launch-speed normal:2.4,0.24)."""
+"""Normal spins (--omega-x normal:240,24 --omega-z normal:0,40 --launch-speed normal:2.4,0.24)."""
 
 THREE_SPINS_FIXED_T = TossDistribution(
     Uniform(60.0, 90.0), Uniform(-20.0, 20.0), Uniform(-10.0, 10.0), 0.7
 )
-"""Three uniform spins and a fixed flight time (precession; refused by exact before issue 12)."""
+"""Three uniform spins and a fixed flight time (precession)."""
 
 CONDITIONAL = "conditional-on-spin"
 
@@ -137,11 +120,13 @@ def _seconds_for(
     return max(t_per * n_target, 0.0), how
 
 
-def time_to_accuracy() -> None:
-    """Seconds to s.e. (or error) 1e-4 and 1e-6, per method, as ratios to exact; medians."""
+def time_to_accuracy() -> dict[str, dict[str, float]]:
+    """Seconds to s.e. (or error) 1e-4 and 1e-6, per method, as ratios to exact; medians.
+    Returns the figures: by distribution, exact's ms and p, each method's seconds."""
+    figures: dict[str, dict[str, float]] = {}
     print("\nTime to a given accuracy (seconds; ratio to exact; medians of 3):")
     cases = (("Fig 2a (uniform ωx, T)", FIG2A), ("human preset", human()),
-             ("normal spins (issue 12)", NORMAL_SPINS),
+             ("normal spins", NORMAL_SPINS),
              ("four uniform: ωx, ωy, ωz, T", GENERAL),
              ("three uniform spins, fixed T", THREE_SPINS_FIXED_T))  # fmt: skip
     for label, dist in cases:
@@ -150,6 +135,7 @@ def time_to_accuracy() -> None:
         exact = estimate(dist, "exact")
         print(f"  {label}: exact {t_exact * 1e3:.1f} ms, p = {exact.p_heads:.10f} "
               f"± {exact.error_estimate:.1g}")  # fmt: skip
+        row = figures[label] = {"exact_ms": t_exact * 1e3, "exact_p_heads": exact.p_heads}
 
         def sampled(method: str, mode: str | None, d: TossDistribution = dist) -> Callable[
             [int], tuple[float, float]]:  # fmt: skip
@@ -171,22 +157,37 @@ def time_to_accuracy() -> None:
             cells = []
             for target in (1e-4, 1e-6):
                 secs, how = _seconds_for(sampled(method, mode), sizes, target)
+                row[f"{method}{'_' + mode if mode else ''}_to_{target:.0e}_s"] = secs
                 cells.append(f"{target:.0e}: {secs:10.3g} s ({secs / t_exact:9.3g}x, {how})")
             print(f"    {name:34s} " + "; ".join(cells))
+    return figures
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--quick", action="store_true", help="skip the billion-toss run")
     parser.add_argument("--accuracy", action="store_true", help="time to accuracy only")
+    parser.add_argument(
+        "--json", action="store_true", help="print the record as JSON (the text to stderr)"
+    )
     args = parser.parse_args()
-    print(f"machine: {machine()}")
+    recorder = Recorder("bench_probability")
+    with recorder.text_to_stderr(args.json):
+        figures = run(args.quick, args.accuracy)
+    if args.json:
+        print(recorder.json(figures))
+
+
+def run(quick: bool, accuracy_only: bool) -> dict[str, object]:
+    """Times and prints each part; the figures of the record."""
+    print(f"machine: {summary()}")
     t0 = time.perf_counter()
     sampling.warm_up()
-    print(f"numba kernels ready (loaded from the on-disk cache): {time.perf_counter() - t0:.2f} s")
-    time_to_accuracy()
-    if args.accuracy:
-        return
+    warm = time.perf_counter() - t0
+    print(f"numba kernels ready (loaded from the on-disk cache): {warm:.2f} s")
+    figures: dict[str, object] = {"warm_up_s": warm, "time_to_accuracy": time_to_accuracy()}
+    if accuracy_only:
+        return figures
 
     print("\nMonte Carlo, fully general tosses (ωx, ωy, ωz, T all uniform; precession):")
     n_fast = 1 << 27
@@ -219,6 +220,9 @@ def main() -> None:
         f"({'met' if best >= 50e6 else 'NOT met'} at this load); "
         f"2 cores × {best_cpu / 1e6:.1f} M per CPU-second = {2 * best_cpu / 1e6:.0f} M/s idle"
     )
+    figures["monte_carlo_target_tosses_per_s"] = 50e6
+    figures["monte_carlo_tosses_per_s"] = wall
+    figures["monte_carlo_tosses_per_cpu_s"] = cpu
 
     print("\nGrid (method A), Fig 2a box (ωx 60-90 rad/s, T 0.6-0.9 s), exact counts:")
     for n, target in ((5000, 0.1), (100_000, 10.0)):
@@ -226,17 +230,23 @@ def main() -> None:
         dt = median_time(lambda n=n: estimate(FIG2A, "grid", n=n), 5)
         p = estimate(FIG2A, "grid", n=n).p_heads
         print(f"  {n}² = {n * n:.3g} configurations: {dt * 1e3:9.2f} ms (target < {target:g} s)")
+        figures[f"grid_{n}_squared_ms"] = dt * 1e3
+        figures[f"grid_{n}_squared_target_ms"] = target * 1e3
         print(f"    p = {p:.9f}")
 
     print("\nExact (closed form band integral):")
     for name, d in (("Fig 2a", FIG2A), ("Fig 3b", FIG3B)):
         estimate(d, "exact")
         dt = median_time(lambda d=d: estimate(d, "exact"), 50)
+        figures[f"exact_{name.replace(' ', '').lower()}_ms"] = dt * 1e3
         print(
             f"  {name}: {dt * 1e3:.3f} ms (target < 10 ms) p = {estimate(d, 'exact').p_heads:.12f}"
         )
 
     print("\nCold start of the command (fresh process; numba code loaded from its cache):")
+    figures["exact_target_ms"] = 10.0
+    cold: dict[str, float] = {}
+    figures["cold_start_s"] = cold
     cli = [str(Path(sys.executable).with_name("coinflight"))]
     fig2a = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]
     for label, extra in (
@@ -250,9 +260,10 @@ def main() -> None:
         dt = median_time(
             lambda e=extra: subprocess.run([*cli, *e], check=True, capture_output=True), 3
         )
+        cold[label] = dt
         print(f"  {label:38s} {dt:6.2f} s")
 
-    if not args.quick:
+    if not quick:
         n = 10**9
         print(f"\nMemory: {n:.0e} Monte Carlo tosses by the command (peak resident set):")
         general = [
@@ -277,6 +288,10 @@ def main() -> None:
             f"  {dt:.1f} s ({n / dt / 1e6:.1f} M tosses/s), peak RSS of the command {peak:.0f} MB "
             f"(target < 300 MB), p = {result['p_heads']:.6f} ± {result['stderr']:.1g}"
         )
+        figures["billion_tosses_s"] = dt
+        figures["billion_tosses_peak_rss_mb"] = peak
+        figures["billion_tosses_target_mb"] = 300.0
+    return figures
 
 
 if __name__ == "__main__":

@@ -1,14 +1,16 @@
-"""Scaling of a sweep on a Dask LocalCluster from 1 to 2 workers (issue 12), in one run.
+"""Scaling of a sweep on a Dask LocalCluster from 1 to 2 workers, in one run.
 
     python benchmarks/bench_sweep.py            # 1000 rows, 3 repeats (a few minutes)
     python benchmarks/bench_sweep.py --quick    # 200 rows, 1 repeat
+    python benchmarks/bench_sweep.py --json     # the record as JSON (the text on stderr)
+    python benchmarks/bench_sweep.py --json F   # the record written to the file F instead
 
 A sweep of 10 mean spins × 10 spreads × 10 flight-time ranges = 1000 rows, each a Monte Carlo
 estimate of 50,000 tosses (:func:`coinflight.probability.sweep.sweep`). Two LocalClusters, one
 of 1 worker process and one of 2 (one thread each), started anew for each repeat and one at a
 time (an idle cluster would take CPU from the other), the repeats alternating between them so
 that both see the same load of a shared machine; the result is the median time of each and
-their ratio (2.0 would be perfect scaling on 2 cores). Also: the per-task overhead each cluster
+their ratio (the target: 2.0, perfect scaling on 2 cores). Also: the per-task overhead each cluster
 measured, the batches it formed, the share of the workers' time not spent computing, and where
 the CPU went (psutil, per process and, in the client's process, per thread): the worker
 processes; the client process's event loop (on a LocalCluster it runs the client's messaging,
@@ -20,7 +22,6 @@ from the 1. The answers on 1 and 2 workers are checked equal, bit for bit.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import statistics
 import sys
@@ -30,7 +31,7 @@ from pathlib import Path
 
 import psutil  # a dependency of dask.distributed
 
-from bench_probability import machine
+from _record import Recorder, summary
 from coinflight.model.distributions import Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
 from coinflight.probability.distributed import dask_client
@@ -80,13 +81,36 @@ def cases(k: int) -> list[Case]:
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="200 rows, one repeat")
-    parser.add_argument("--json", type=Path, help="also write the numbers to this file")
+    parser.add_argument(
+        "--json",
+        nargs="?",
+        const="-",
+        type=str,
+        metavar="FILE",
+        help="print the record as JSON (the text to stderr), or write it to FILE",
+    )
     args = parser.parse_args(argv)
-    k, repeats = (6, 1) if args.quick else (10, 3)
+    recorder = Recorder("bench_sweep", argv)
+    to_stdout = args.json == "-"
+    with recorder.text_to_stderr(to_stdout):
+        figures = run(args.quick)
+    if figures is None:
+        return 1
+    if to_stdout:
+        print(recorder.json(figures))
+    elif args.json is not None:
+        Path(args.json).write_text(recorder.json(figures) + "\n")
+    return 0
+
+
+def run(quick: bool) -> dict[str, object] | None:
+    """Times the sweep on 1 and 2 workers and prints the comparison; the figures of the record,
+    None when the answers on 1 and 2 workers differ."""
+    k, repeats = (6, 1) if quick else (10, 3)
     rows = cases(k)
-    if args.quick:
+    if quick:
         rows = rows[:200]
-    print(f"machine: {machine()}; shared with other jobs, timings are noisy: compare the ratio")
+    print(f"machine: {summary()}; shared with other jobs, timings are noisy: compare the ratio")
     print(f"sweep of {len(rows)} rows, monte-carlo n = {N:,} each, seed 1")
     times: dict[int, list[float]] = {1: [], 2: []}
     stats: dict[int, dict[str, float]] = {}
@@ -119,7 +143,7 @@ def main(argv: list[str]) -> int:
                 }
     if answers[1] != answers[2]:
         print("ERROR: the answers on 1 and 2 workers differ")
-        return 1
+        return None
     median = {w: statistics.median(t) for w, t in times.items()}
     ratio = median[1] / median[2]
     for w in (1, 2):
@@ -143,18 +167,16 @@ def main(argv: list[str]) -> int:
         f"CPU the machine gave: {cores:.2f}× as much to 2 workers as to 1; speed-up per core "
         f"obtained {ratio / cores:.2f} (1.00: the cluster adds no loss of its own)"
     )
-    if args.json:
-        report = {
-            "rows": len(rows),
-            "n": N,
-            "repeats": repeats,
-            "times": times,
-            "median": median,
-            "ratio": ratio,
-            "stats": stats,
-        }
-        args.json.write_text(json.dumps(report, indent=2) + "\n")
-    return 0
+    return {
+        "rows": len(rows),
+        "tosses_per_row": N,
+        "repeats": repeats,
+        "times_s": {f"{w}_workers": t for w, t in times.items()},
+        "median_s": {f"{w}_workers": t for w, t in median.items()},
+        "speed_up": ratio,
+        "speed_up_target": 2.0,
+        "stats": {f"{w}_workers": s for w, s in stats.items()},
+    }
 
 
 if __name__ == "__main__":

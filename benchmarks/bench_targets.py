@@ -1,42 +1,35 @@
-"""Issue 11's speed targets, all in one run: measured rate, target, ratio, met or not.
+"""The landing speed targets, all in one run: measured rate, target, ratio, met or not.
 
     python benchmarks/bench_targets.py                 # default sizes, 5 rounds
     python benchmarks/bench_targets.py --quick         # a tenth of the tosses, 3 rounds
-    python benchmarks/bench_targets.py --json          # the same as JSON (numbers as numbers)
+    python benchmarks/bench_targets.py --json          # the record as JSON (numbers as numbers)
     python benchmarks/bench_targets.py --mujoco 100    # + MuJoCo on 100 of the same tosses
     python benchmarks/bench_targets.py --rounds 7 --seed 11 --n 2000   # every case on 2,000
     python benchmarks/bench_targets.py --cpu           # + each case in one thread, per CPU s
 
-Issue 11's "Done when" asks, on 2 cores: ≥ 50,000 tosses a second carried to rest (bounces
-and the contact phase), first contact ≥ 2 M a second, tosses with air drag ≥ 100,000 a second,
-and the MuJoCo comparison's speed ratio. Those used to come from different scripts with
-different batch sizes (first contact 1.09 M a second in batches of 300 against 2.23 M in
-200,000, both quiet): here every case runs in one process on 2 of numba's threads (fewer when
-numba has fewer; said in the output), the rounds interleaved (one of each case in turn, so the
-machine's other load falls on all alike), the rate of each case the median of its rounds, the
-load average printed before and after. The cases (default tosses; ``--quick`` a tenth):
+The targets, on 2 cores: ≥ 50,000 tosses a second carried to rest by the 3-D contact ending (no
+planar hand-off), first contact ≥ 2 M a second, tosses through air ≥ 100,000 a second, and the
+speed ratio against MuJoCo on the same tosses (no target). Every case runs in one process on 2
+of numba's threads (fewer when numba has fewer; said in the output), the rounds interleaved
+(one of each case in turn, so the machine's other load falls on all alike), the rate of each
+case the median of its rounds. The cases (default tosses; ``--quick`` a tenth):
 
 - first contact with the table 0.8 m below launch, e 0.5, μ 0.3 (1,000,000 tosses);
-- carried to rest with the 3-D contact ending (``ending="contact"``, issue 11's "no planar
-  hand-off": the rows of its 50,000 target) at e 0.5, μ 0.3 and with each toss its own
-  e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (6,000 tosses), and as references without a target, marked
-  "(planar)", the same with the default rocking ending (200,000 tosses): its planar hand-off
-  is what the issue asks to replace;
+- carried to rest with the 3-D contact ending (``ending="contact"``) at e 0.5, μ 0.3 and with
+  each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (6,000 tosses), and as references without
+  a target, marked "(planar)", the same with the default rocking ending (200,000 tosses);
 - through air (C_d 1.17, no spin damping): the hand catch and the table's first contact
-  (100,000 tosses each), the table carried to rest with the 3-D contact ending (6,000, the
-  contact rows' tosses), and as a reference with the rocking ending (100,000);
+  (100,000 tosses each), the table carried to rest with the 3-D contact ending (6,000), and as
+  a reference with the rocking ending (100,000);
 - with ``--mujoco N`` (the optional extra; one line and skipped when not installed): MuJoCo
   (:func:`coinflight.studies.mujoco_compare.run`, its settings, ``threads`` 2, its wall time
-  including its calibration as in the landing report) on the first N of the contact rows'
-  tosses (for N up to their number, 6,000 by default; a larger N draws N tosses of the same
-  seed, whose first 6,000 are not the contact rows'), and coinflight's contact ending on the
-  same N with MuJoCo's rolling and torsional lengths as resistances (as
-  :func:`coinflight.studies.landing.mujoco_comparison`), medians of the rounds: the speed ratio
-  coinflight / MuJoCo. No target: the issue asks for the ratio.
+  including its calibration) on the first N of the contact rows' tosses, and coinflight's
+  contact ending on the same N with MuJoCo's rolling and torsional lengths as resistances
+  (medians of the rounds): the speed ratio coinflight / MuJoCo. The ratio depends on the
+  tosses (with axial spin, as here, both engines are slower than on the landing report's).
 
-With ``--cpu`` each case also runs in one thread (``parallel=False``) right after its
-timing in each round, timed by the thread's CPU clock: on a shared machine the wall clock counts
-the time other processes hold the cores, so a second table gives the one-thread rate per CPU
+With ``--cpu`` each case also runs in one thread (``parallel=False``) right after its timing
+in each round, timed by the thread's CPU clock: a second table gives the one-thread rate per CPU
 second and twice that over the target (what 2 cores would give if they scaled perfectly and
 nothing else ran: an upper estimate beside the measured rate, not the target's measure).
 
@@ -45,127 +38,38 @@ The tosses are ``bench_bounce.py``'s (:func:`bench_bounce.tosses`: a US nickel, 
 each toss's own e, μ :func:`bench_bounce.own_rates` (seed ``bench_bounce.OWN_RATES_SEED``, 7);
 the air cases are ``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled
 (or loaded from numba's cache) on 20 tosses before the timing. The work is bounded before
-anything runs (:func:`seconds_estimate`, at the quiet rates below).
-
-Measured 2026-11-24 on the project machine (2 CPUs AMD EPYC, x86_64, 24 GiB, Linux; Python
-3.11.7, NumPy 2.4.6, numba 0.68.1, MuJoCo 3.17.0), 2 threads, seed 2026.
-``python benchmarks/bench_targets.py`` (medians of 5 rounds) at 07:20-07:22 UTC, load 1.51
-before and 4.74 after (the other sessions starting during the run), printed before the rocking
-rows became references (their 50,000, ratio and "yes" are not issue 11's target) and before the
-air row to rest with the contact ending was added (the first label overran its column):
-
-    target                                          tosses   measured /s   target /s   ratio  met
-    first contact (table, 0.8 m drop, e 0.5 μ 0.3) 1,000,000       952,113   2,000,000   0.476  no
-    to rest, rocking ending, e 0.5 μ 0.3           200,000        56,440      50,000   1.129  yes
-    to rest, rocking ending, own e, μ              200,000        43,782      50,000   0.876  no
-    to rest, 3-D contact ending, e 0.5 μ 0.3         6,000         1,038      50,000   0.021  no
-    to rest, 3-D contact ending, own e, μ            6,000           919      50,000   0.018  no
-    air: hand catch                                100,000        77,904     100,000   0.779  no
-    air: table first contact                       100,000        53,333     100,000   0.533  no
-    air: table to rest, rocking ending             100,000        17,643     100,000   0.176  no
-
-``python benchmarks/bench_targets.py --mujoco 100`` at 07:25-07:30 UTC, load 6.68 before and
-7.67 after: every rate 0.5-0.8 times the above (first contact 554,995, rocking 28,177 and
-23,719, contact ending 749 and 682, air 58,491, 39,533 and 12,742); MuJoCo 2.3 tosses a second
-on 100 of the same tosses (4 still moving 20 s after their first contact), coinflight's contact
-ending with MuJoCo's resistances 500 a second on them: ratio 221.
-
-That ratio is not the README's 630-670 (``coinflight landing-report --quick --mujoco 500``):
-those are on the landing report's tosses (:func:`coinflight.studies.landing.mujoco_tosses`:
-ωz = 0, no axial spin), 500 of them, one timed run of each engine; these are on
-``bench_bounce.py``'s (ωz ~ U(−30, 30) rad/s), 100 of them, coinflight's rate the median of the
-rounds. Both time MuJoCo's wall time with its calibration and coinflight's contact ending with
-MuJoCo's resistances. The tosses make most of the difference: on 100 of each at 08:11-08:12
-UTC, load 2.4 -> 2.8 (:func:`coinflight.studies.landing.mujoco_comparison` ``(100, seed=2026,
-threads=2)`` and :func:`against_mujoco` ``(100, …, rounds=3)``), MuJoCo ran 8.5 tosses a second
-on the landing report's (none still moving at 20 s) and 5.5 on these (4 moving), coinflight's
-contact ending 15,323 and 625: ratios 1,807 and 114. coinflight's contact ending is ~25 times
-slower on tosses with axial spin, MuJoCo ~1.5 times; and with 100 tosses MuJoCo's calibration
-is a larger share of its time than with 500. The ratio also moves with the load (221 at load
-7-8, 114 at 2.4-2.8 on the same tosses).
-
-``python benchmarks/bench_targets.py --cpu --mujoco 100 --json`` at 07:33-07:41 UTC, load 7.67
-before and 8.61 after (wall-clock rates like the run before; MuJoCo again 2.3 a second, ratio
-220), one thread per CPU second, and twice that over the target (the upper estimate of a quiet
-2-core machine): first contact 1,189,318 (1.19), the contact ending carried to rest 1,522 and
-1,393 with each toss its own e, μ (0.061, 0.056), through air the hand catch 118,093 (2.36) and
-the first contact 80,105 (1.60); the references, the rocking ending to rest 57,367 and 47,909,
-through air 25,899.
-
-``python benchmarks/bench_targets.py --quick --cpu`` (a tenth of the tosses, medians of 3) at
-08:10:51 UTC, load 3.39 before and 3.10 after, the rows as they are now:
-
-    target                                            tosses   measured /s   target /s   ratio  met
-    first contact (table, 0.8 m drop, e 0.5 μ 0.3)   100,000     1,141,141   2,000,000   0.571  no
-    to rest, rocking ending (planar), e 0.5 μ 0.3     20,000        57,832         ref       -  -
-    to rest, rocking ending (planar), own e, μ        20,000        94,359         ref       -  -
-    to rest, 3-D contact ending, e 0.5 μ 0.3             600         2,560      50,000   0.051  no
-    to rest, 3-D contact ending, own e, μ                600         2,623      50,000   0.052  no
-    air: hand catch                                   10,000       233,076     100,000   2.331  yes
-    air: table first contact                          10,000       156,468     100,000   1.565  yes
-    air: table to rest, rocking ending (planar)       10,000        52,062         ref       -  -
-    air: table to rest, 3-D contact ending               600         2,983     100,000   0.030  no
-    (planar): the rocking ending's planar hand-off, not issue 11's ending: a reference
-    one thread (parallel=False)                        per CPU s   2 × that / target
-    first contact (table, 0.8 m drop, e 0.5 μ 0.3)     1,169,555               1.170
-    to rest, rocking ending (planar), e 0.5 μ 0.3         57,553                   -
-    to rest, rocking ending (planar), own e, μ            47,942                   -
-    to rest, 3-D contact ending, e 0.5 μ 0.3               1,398               0.056
-    to rest, 3-D contact ending, own e, μ                  1,353               0.054
-    air: hand catch                                      118,718               2.374
-    air: table first contact                              80,659               1.613
-    air: table to rest, rocking ending (planar)           26,392                   -
-    air: table to rest, 3-D contact ending                 1,540               0.031
-
-So on a quiet machine the first contact (2 M) and the hand catch and first contact through air
-(100,000) can meet their targets; carried to rest with the 3-D contact ending they cannot, on
-the table (~16 times short even with both cores perfectly used: 2 × 1,522 = 3,044 against
-50,000; the lead's quiet 2,984 a second, load 1.6, batches of 300, ``bench_bounce.py
---contact-rates 300``, agrees) nor through air (~32 times short: 2 × 1,540 = 3,080 against
-100,000, the ``--quick`` run above). The rocking ending's references would pass 50,000 on two
-cores, but they end in the planar hand-off that issue 11 asks to replace. The wall clock halves
-on this machine at load 7-8; how much the one-thread CPU rates move with the load was not
-measured beyond these runs (a trial on 100 tosses a case at load 7.6 gave 0.75-0.93 of them,
-the first contact 0.22: small batches). The first contact is not slower in batches of 10⁶ than
-of 2 × 10⁵ (580,669 against 555,662 a second interleaved at load 7.5-8.1) but is 24,629 a
-second in batches of 300 on 2 threads: numba's parallel launch on a loaded machine, not the
-kernel, which in one thread (``parallel=False``) ran the same batches of 300 at 571,760 a
-second against 38,905 on 2 threads (medians of 7 interleaved rounds of 20 calls, 08:11 UTC,
-load 2.6; the review measured 877,162 against 24,931 at load 4.2). The 924,331 "in batches of
-300" of the last note was measured quiet.
+anything runs (:func:`seconds_estimate`). The record (``--json``) holds the rows, the seeds,
+the threads, MuJoCo's part and the provenance (command, date, versions, machine, load).
 """
 
 from __future__ import annotations
 
 import argparse
-import datetime
-import json
 import math
 import os
-import platform
 import statistics
 import sys
 import time
 from collections.abc import Callable, Mapping, Sequence
-from pathlib import Path
 from typing import Any, NamedTuple, NoReturn
 
 import numpy as np
 
 import bench_air  # the script's own folder is on the path
 import bench_bounce
+from _record import Recorder, dumps
 from coinflight import _validation as v
 from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.table import land
 
 THREADS = 2
-"""Issue 11's targets are "on 2 cores": numba's threads for every case (fewer if numba has
+"""The targets are "on 2 cores": numba's threads for every case (fewer if numba has
 fewer)."""
 
 TO_REST = 50_000.0
 FIRST_CONTACT = 2_000_000.0
 IN_AIR = 100_000.0
-"""Issue 11's targets, tosses a second on 2 cores ("Done when")."""
+"""The targets, tosses a second on 2 cores."""
 
 DRAG = Drag(coefficient=1.17)
 """The air of the air cases: a flat disc broadside on, no spin damping (``bench_air.py``'s
@@ -173,9 +77,9 @@ default)."""
 
 
 class Case(NamedTuple):
-    """One timed case: its key (JSON), what it is, issue 11's target (None for a reference row,
-    which times something the issue's target does not ask for), its default tosses and its rate
-    on the quiet machine (2026-11-24: for the work bound only)."""
+    """One timed case: its key (JSON), what it is, its target (None for a reference row, which
+    times something no target asks for), its default tosses and its rate on a quiet 2-core
+    machine (for the work bound only)."""
 
     key: str
     label: str
@@ -185,9 +89,9 @@ class Case(NamedTuple):
 
 
 PLANAR = "(planar)"
-PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not issue 11's ending: a reference"
+PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not the 3-D ending: a reference"
 """The rocking ending's rows are references, marked :data:`PLANAR` in their labels and
-explained by :data:`PLANAR_NOTE` under the table: issue 11's 50,000 a second is for the 3-D
+explained by :data:`PLANAR_NOTE` under the table: the 50,000 a second is for the 3-D
 contact phase ("no planar hand-off"), which the contact ending's rows time."""
 
 CASES = (
@@ -370,41 +274,15 @@ def table(found: Sequence[Mapping[str, Any]]) -> str:
     return "\n".join(lines)
 
 
-def machine() -> dict[str, Any]:
-    """The processor's model (from /proc/cpuinfo where there is one), CPUs, system."""
-    model = platform.processor() or platform.machine()
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    return {
-        "processor": model,
-        "cpus": os.cpu_count(),
-        "system": f"{platform.system()} {platform.release()} {platform.machine()}",
-    }
-
-
-def versions() -> dict[str, str | None]:
-    import numba
-
-    import coinflight
+def mujoco_version() -> dict[str, str | None]:
+    """MuJoCo's version for the record's versions (None when not installed)."""
     from coinflight.studies import mujoco_compare
 
-    mujoco = None
-    if mujoco_compare.available():
-        import mujoco as mj
+    if not mujoco_compare.available():
+        return {"mujoco": None}
+    import mujoco as mj
 
-        mujoco = str(mj.__version__)
-    return {
-        "coinflight": coinflight.__version__,
-        "python": platform.python_version(),
-        "numpy": np.__version__,
-        "numba": numba.__version__,
-        "mujoco": mujoco,
-    }
+    return {"mujoco": str(mj.__version__)}
 
 
 def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> dict[str, Any]:
@@ -480,40 +358,36 @@ def measure(
 
 
 def report(
-    measured: Mapping[str, Any], command: str, seed: int, rounds: int, when: str
+    measured: Mapping[str, Any], recorder: Recorder, seed: int, rounds: int
 ) -> dict[str, Any]:
-    """The JSON report: the command, date (UTC), machine, versions, seeds, rounds, threads,
-    load, the rows and MuJoCo's part."""
-    return {
-        "command": command,
-        "date": when,
-        "machine": machine(),
-        "versions": versions(),
+    """The record (:class:`_record.Recorder`): its figures the seeds, rounds, threads, the rows
+    (``targets``) and MuJoCo's part; the load average the timing's own (before and after)."""
+    figures = {
         "seed": seed,
         "own_rates_seed": bench_bounce.OWN_RATES_SEED,
         "rounds": rounds,
         "threads": measured["threads"],
-        "load": measured["load"],
         "targets": measured["rows"],
         "mujoco": measured["mujoco"],
     }
+    return recorder.record(figures, load=measured["load"], more_versions=mujoco_version())
 
 
 def text(rep: Mapping[str, Any]) -> str:
-    """The report as the printed text."""
-    m, ver = rep["machine"], rep["versions"]
+    """The record as the printed text."""
+    m, ver, fig = rep["machine"], rep["versions"], rep["figures"]
     before, after = rep["load"]["before"], rep["load"]["after"]
     lines = [
         f"{rep['command']}  ({rep['date']})",
         f"{m['processor']}, {m['cpus']} CPUs, {m['system']}; Python {ver['python']}, NumPy "
         f"{ver['numpy']}, numba {ver['numba']}, coinflight {ver['coinflight']}",
-        f"{rep['threads']} threads, seed {rep['seed']} (own e, μ seed {rep['own_rates_seed']}), "
-        f"medians of {rep['rounds']} interleaved rounds; load {before[0]:.2f} before",
+        f"{fig['threads']} threads, seed {fig['seed']} (own e, μ seed {fig['own_rates_seed']}), "
+        f"medians of {fig['rounds']} interleaved rounds; load {before[0]:.2f} before",
     ]
-    if rep["threads"] < THREADS:
-        lines.append(f"  (numba has {rep['threads']} threads: the targets are for {THREADS})")
-    lines.append(table(rep["targets"]))
-    mj = rep["mujoco"]
+    if fig["threads"] < THREADS:
+        lines.append(f"  (numba has {fig['threads']} threads: the targets are for {THREADS})")
+    lines.append(table(fig["targets"]))
+    mj = fig["mujoco"]
     if mj is not None and "skipped" in mj:
         lines.append(f"MuJoCo: skipped, {mj['skipped']}")
     elif mj is not None:
@@ -574,11 +448,10 @@ def parse(argv: Sequence[str]) -> argparse.Namespace:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     args = parse(argv)
-    when = datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")
+    recorder = Recorder("bench_targets", argv)
     measured = measure(args.sizes, args.rounds, args.seed, args.mujoco, cpu=args.cpu)
-    command = " ".join(["python benchmarks/bench_targets.py", *argv])
-    rep = report(measured, command, args.seed, args.rounds, when)
-    print(json.dumps(rep, indent=1, ensure_ascii=False) if args.json else text(rep))
+    rep = report(measured, recorder, args.seed, args.rounds)
+    print(dumps(rep) if args.json else text(rep))
     return 0
 
 

@@ -1,4 +1,4 @@
-"""benchmarks/bench_targets.py: the table of issue 11's speed targets built from given rates
+"""benchmarks/bench_targets.py: the table of the landing speed targets built from given rates
 (medians, ratios measured / target, met flags, exact keys; no timing), a tiny run of the
 command end to end (structure; every rate finite and positive, no threshold on any), and bad
 input refused in one line with exit code 2."""
@@ -229,19 +229,22 @@ def test_the_report_has_exactly_its_keys(bench):
         "rows": bench.rows(_rates(bench, 10.0), bench.sizes(True)),
         "mujoco": None,
     }
-    rep = bench.report(measured, "python benchmarks/bench_targets.py", 11, 3, "2026-11-24T07:00Z")
+    rep = bench.report(measured, bench.Recorder("bench_targets", ["--quick"]), 11, 3)
     assert set(rep) == {
-        "command", "date", "machine", "versions", "seed", "own_rates_seed", "rounds", "threads",
-        "load", "targets", "mujoco",
+        "benchmark", "figures", "command", "date", "machine", "versions", "load",
     }  # fmt: skip
-    assert rep["seed"] == 11 and rep["rounds"] == 3
-    assert rep["own_rates_seed"] == 7 == bench.bench_bounce.OWN_RATES_SEED
+    assert rep["command"] == "python benchmarks/bench_targets.py --quick"
+    fig = rep["figures"]
+    assert set(fig) == {"seed", "own_rates_seed", "rounds", "threads", "targets", "mujoco"}
+    assert fig["seed"] == 11 and fig["rounds"] == 3
+    assert fig["own_rates_seed"] == 7 == bench.bench_bounce.OWN_RATES_SEED
+    assert rep["load"] == measured["load"]  # the timing's own load, not the run's
     assert set(rep["machine"]) == {"processor", "cpus", "system"}
-    assert set(rep["versions"]) == {"coinflight", "python", "numpy", "numba", "mujoco"}
+    assert set(rep["versions"]) == {"coinflight", "python", "numpy", "numba", "scipy", "mujoco"}
     text = bench.text(rep)
     assert "load average 1.00 before, 1.50 after" in text
     assert "MuJoCo" not in text
-    skipped = bench.text({**rep, "mujoco": {"skipped": "MuJoCo not installed"}})
+    skipped = bench.text({**rep, "figures": {**fig, "mujoco": {"skipped": "MuJoCo not installed"}}})
     assert skipped.splitlines()[-2] == "MuJoCo: skipped, MuJoCo not installed"
 
 
@@ -267,9 +270,10 @@ def test_a_tiny_run_gives_the_whole_report():
         "python benchmarks/bench_targets.py --quick --json --n 24 --rounds 2 --seed 5 --mujoco 3 "
         "--cpu"
     )
-    assert rep["seed"] == 5 and rep["rounds"] == 2 and rep["threads"] == 2
+    fig = rep["figures"]
+    assert fig["seed"] == 5 and fig["rounds"] == 2 and fig["threads"] == 2
     assert len(rep["load"]["before"]) == len(rep["load"]["after"]) == 3
-    rows = rep["targets"]
+    rows = fig["targets"]
     assert [r["key"] for r in rows] == [
         "first_contact", "rest_rocking", "rest_rocking_own", "rest_contact", "rest_contact_own",
         "air_hand", "air_first_contact", "air_rest", "air_rest_contact",
@@ -288,7 +292,7 @@ def test_a_tiny_run_gives_the_whole_report():
         assert math.isfinite(r["one_thread_ratio"]) and r["one_thread_ratio"] > 0.0
         assert r["ratio"] == pytest.approx(r["measured"] / r["target"], rel=1e-12)
         assert r["met"] is (r["ratio"] >= 1.0)
-    mj = rep["mujoco"]
+    mj = fig["mujoco"]
     if not mujoco_compare.available():
         assert set(mj) == {"skipped"}
         return
