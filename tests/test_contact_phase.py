@@ -366,7 +366,8 @@ def test_default_ending_is_the_rocking_hand_off(monkeypatch):
     contact = TableLanding(Surface("table", ending="contact"))
     assert contact.to_dict()["ending"] == "contact"
     assert TableLanding(Surface("table")).rate > 100 * contact.rate
-    with pytest.raises(ValueError, match="ending must be one of rocking, contact, rigid; got 'planar'"):
+    refusal = "ending must be one of rocking, contact, rigid; got 'planar'"
+    with pytest.raises(ValueError, match=refusal):
         Surface("table", ending="planar")  # type: ignore[arg-type]
     rng = np.random.default_rng(11)
     n = 40
