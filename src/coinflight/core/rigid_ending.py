@@ -384,6 +384,32 @@ def _tumbling(y, c):
 
 
 @njit(cache=True)
+def _hops(y, c, counts):
+    """Hops and their impacts, from a coin leaving the table, until it stays in contact: each
+    hop flown in closed form (:func:`_hop`) to its impact (:func:`_impact`), until a rebound is
+    slower than ``rest_speed``, the energy is below the barrier, or no flight opens the gap
+    (the contact goes on, its normal speed removed by the frictionless normal impulse of least
+    energy: a plastic touch). ``y`` is advanced in place and ``counts`` updated (impacts in
+    [2], flight time in [5]). Returns (time flown, landed): landed False when a hop found no
+    contact (the landing is then unsettled)."""
+    total = 0.0
+    for _ in range(MAX_PHASES):
+        flown, approach = _hop(y, c)
+        if flown < 0.0:
+            return total, False
+        total += flown
+        counts[5] += flown
+        if approach >= 0.0:
+            rc._project(y, c, rc.SLIDING)
+            break
+        counts[2] += 1.0
+        rebound = _impact(y, c)
+        if rebound < c.rest_speed or _energy(y, c) < c.barrier:
+            break
+    return total, True
+
+
+@njit(cache=True)
 def run(y, c, rtol, duration, counts):
     """:func:`settle` on the state y (modified in place), with the step tolerance ``rtol`` and
     at most ``duration`` s (a coin that comes to rest on its band returns with the state it
@@ -424,37 +450,17 @@ def run(y, c, rtol, duration, counts):
             # Flat, still tumbling: the rim point coming down fastest meets the table.
             counts[2] += 1.0
             if _face_slap(y, c) >= 0.0 or _energy(y, c) >= c.barrier:
-                for _ in range(MAX_PHASES):
-                    flown, approach = _hop(y, c)
-                    if flown < 0.0:
-                        return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-                    t += flown
-                    counts[5] += flown
-                    if approach >= 0.0:
-                        rc._project(y, c, rc.SLIDING)
-                        break
-                    counts[2] += 1.0
-                    rebound = _impact(y, c)
-                    if rebound < c.rest_speed or _energy(y, c) < c.barrier:
-                        break
+                flown, landed = _hops(y, c, counts)
+                t += flown
+                if not landed:
+                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
             continue
         if reason == rc.LIFT_OFF:
             counts[1] += 1.0
-            for _ in range(MAX_PHASES):
-                flown, approach = _hop(y, c)
-                if flown < 0.0:
-                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-                t += flown
-                counts[5] += flown
-                if approach >= 0.0:
-                    # No flight opens the gap: the contact goes on, its normal speed removed by
-                    # the frictionless normal impulse of least energy (a plastic touch).
-                    rc._project(y, c, rc.SLIDING)
-                    break
-                counts[2] += 1.0
-                rebound = _impact(y, c)
-                if rebound < c.rest_speed or _energy(y, c) < c.barrier:
-                    break
+            flown, landed = _hops(y, c, counts)
+            t += flown
+            if not landed:
+                return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
             continue
         if reason == rc.SECOND_RIM:
             counts[3] += 1.0
