@@ -2,12 +2,16 @@
 
 A new model touches at most three places: its kernel (here an existing one,
 :func:`coinflight.core.torque_free.normal_alignment`), its model (the class below, which would be
-``src/coinflight/outcomes/mat.py``) and one registration line (``SURFACE_KINDS`` in
-``src/coinflight/outcomes/__init__.py``, here :func:`coinflight.outcomes.register` at run time).
-Nothing else changes: the factory, the estimators and the maps take it as it is.
+``src/coinflight/outcomes/mat.py``) and one registration line (:func:`coinflight.outcomes.register`
+at the end of ``src/coinflight/outcomes/__init__.py``, here at run time). Nothing else changes:
+the factory, the estimators, the maps, ``Surface("soft-mat")``, ``coinflight probability
+--surface soft-mat`` and the web API's ``surface=soft-mat`` take it as it is, and unregistering
+it brings back their refusal.
 """
 
 from __future__ import annotations
+
+import re
 
 import numpy as np
 import pytest
@@ -41,9 +45,15 @@ class SoftMat(OutcomeModel):
     """
 
     name = "soft mat"
+    summary = "a thick soft mat --drop-height below launch stops the coin dead"
+    surface_parameters = ("drop_height",)  # of the table's parameters, the mat takes its depth
 
-    def __init__(self, depth: float) -> None:
+    def __init__(self, depth: float = 0.0) -> None:
         self.depth = depth
+
+    @classmethod
+    def from_surface(cls, surface):
+        return cls(float(surface.drop_height))
 
     def faces(self, coin, omega, flight_time, start_sign, g):
         v0 = 0.5 * g * np.asarray(flight_time, dtype=float)
@@ -54,26 +64,51 @@ class SoftMat(OutcomeModel):
 
 
 @pytest.fixture
-def registry(monkeypatch):
-    """A copy of the registry for the test, so that the soft mat does not outlive it."""
-    monkeypatch.setattr(outcomes, "SURFACE_KINDS", dict(outcomes.SURFACE_KINDS))
-    return outcomes.SURFACE_KINDS
-
-
-def _register(depth: float) -> None:
+def registry():
+    """The soft mat registered for the test, and unregistered after it."""
     # --- touch point 3 of 3: one registration line --------------------------------------------
-    outcomes.register("soft-mat", lambda surface, drag, max_bounces: SoftMat(depth))
+    outcomes.register("soft-mat", SoftMat)
+    yield outcomes.SURFACE_KINDS
+    outcomes.unregister("soft-mat")
+
+
+def _mat(depth: float) -> OutcomeModel:
+    return outcomes.outcome_model(Surface("soft-mat", drop_height=depth))
 
 
 DIST = TossDistribution(Uniform(60, 90), 0, 0, Uniform(0.6, 0.9))
 
 
-def test_the_soft_mat_is_built_by_the_factory_with_one_line(registry):
-    with pytest.raises(ValueError, match=r"^surface must be one of hand, table; got 'soft-mat'"):
+NOT_REGISTERED = "surface must be one of hand, table; got 'soft-mat'"
+MAT_REFUSAL = (
+    "does not apply to --surface soft-mat (Surface(kind='soft-mat') in Python: the soft mat), "
+    "which takes drop height only"
+)
+
+
+def test_the_soft_mat_is_built_by_the_factory_with_one_line():
+    with pytest.raises(ValueError, match=f"^{re.escape(NOT_REGISTERED)}$"):
         outcomes.outcome_model("soft-mat")
-    _register(0.5)
-    model = outcomes.outcome_model("soft-mat")
-    assert isinstance(model, SoftMat) and model.depth == 0.5
+    outcomes.register("soft-mat", SoftMat)
+    try:
+        assert list(outcomes.SURFACE_KINDS) == ["hand", "table", "soft-mat"]
+        model = _mat(0.5)
+        assert isinstance(model, SoftMat) and model.depth == 0.5
+        assert outcomes.outcome_model("soft-mat").depth == 0.0  # the surface's default
+        # The surface takes what the model declares, and refuses the rest in one line.
+        given = "restitution 0.3, friction 0.2"
+        with pytest.raises(ValueError, match=re.escape(f"{given} {MAT_REFUSAL}")):
+            Surface("soft-mat", restitution=0.3, friction=0.2)
+        with pytest.raises(ValueError, match=re.escape(f"ending 'contact' {MAT_REFUSAL}")):
+            Surface("soft-mat", ending="contact")
+        with pytest.raises(ValueError, match=r"^air drag C_d = 1.17: the soft mat takes no air"):
+            outcomes.outcome_model("soft-mat", Drag(coefficient=1.17))
+        with pytest.raises(ValueError, match=r"^max_bounces applies to a table surface only, no"):
+            outcomes.outcome_model("soft-mat", max_bounces=1)
+    finally:
+        outcomes.unregister("soft-mat")
+    with pytest.raises(ValueError, match=f"^{re.escape(NOT_REGISTERED)}$"):
+        Surface("soft-mat")
     # The defaults of the protocol stand for everything the model does not declare.
     assert not model.closed_form_bands and not model.can_end_on_edge and model.deterministic
     assert model.describe() == "soft mat"
@@ -83,8 +118,7 @@ def test_a_mat_at_launch_height_is_the_hand_catch_in_monte_carlo_and_on_a_map(re
     # depth 0: the centre reaches the mat at t = 2 v0 / g = T, where the hand catches it. The
     # two models share no code path (the hand counts by the compiled affine kernel), so equal
     # counts on 20,000 random tosses and equal maps test the plumbing end to end.
-    _register(0.0)
-    mat = outcomes.outcome_model("soft-mat")
+    mat = _mat(0.0)
     by_mat = estimate(DIST, "monte-carlo", n=20_000, seed=11, model=mat)
     by_hand = estimate(DIST, "monte-carlo", n=20_000, seed=11)
     assert by_mat.counts == by_hand.counts
@@ -96,8 +130,7 @@ def test_a_mat_at_launch_height_is_the_hand_catch_in_monte_carlo_and_on_a_map(re
 
 def test_a_deeper_mat_is_the_catch_at_the_later_contact(registry):
     depth = 0.5
-    _register(depth)
-    mat = outcomes.outcome_model("soft-mat")
+    mat = _mat(depth)
     mat_map = basin_map(QUARTER, resolution=(60, 40), outcome=mat)
     # Pixel by pixel: the hand catch's face at the time the centre falls 0.5 m below launch
     # (z(t) = v0 t − g t²/2 = −0.5 m, v0 = g T / 2), found here by NumPy's polynomial roots.

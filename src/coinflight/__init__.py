@@ -29,12 +29,12 @@ from typing import TYPE_CHECKING, Any
 from coinflight._version import __version__
 from coinflight.model.coin import PRESETS, Coin
 from coinflight.model.toss import Flight, FlightState, Outcome, Toss
+from coinflight.outcomes import outcome_model  # registers the surface kinds hand and table
 
 if TYPE_CHECKING:
     from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
     from coinflight.model.ensemble import TossDistribution
     from coinflight.model.surface import Drag, Surface
-    from coinflight.outcomes import outcome_model
     from coinflight.outcomes.table import Landing
     from coinflight.plotting.basin import plot_basin
     from coinflight.plotting.bias import plot_bias
@@ -69,7 +69,6 @@ _LAZY = {
     "convergence": "coinflight.probability.convergence",
     "estimate": "coinflight.probability",
     "estimate_many": "coinflight.probability",
-    "outcome_model": "coinflight.outcomes",
     "plot_basin": "coinflight.plotting.basin",
     "plot_bias": "coinflight.plotting.bias",
     "plot_convergence": "coinflight.plotting.convergence",

@@ -152,7 +152,7 @@ def _report(
         typer.echo(landing.model.describe_for(dist))
     typer.echo(result.describe())
     line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
-    if landing is not None and landing.surface.bounces:
+    if landing is not None and landing.model.can_end_on_edge:
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
     for note in result_notes(result):

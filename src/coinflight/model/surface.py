@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, fields
-from typing import Literal
+from types import MappingProxyType
+from typing import Any, Literal
 
 from coinflight import _validation as v
 from coinflight.model.distributions import (
@@ -14,8 +16,6 @@ from coinflight.model.distributions import (
     TruncatedNormal,
     as_distribution,
 )
-
-SurfaceKind = Literal["hand", "table"]
 
 ENDINGS = ("rocking", "contact", "rigid")
 """How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
@@ -78,6 +78,83 @@ TABLE_ONLY = (
 (``--ending applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5 applies
 to …`` from :class:`Surface`)."""
 
+TABLE_PARAMETERS = (
+    "ending",
+    "drop_height",
+    "restitution",
+    "friction",
+    "rolling_resistance",
+    "pivoting_resistance",
+    "corner_radius",
+    "max_bounces",
+)
+"""What a surface kind may take beyond its name, in the order a refusal names them: the
+:class:`Surface` fields ``ending``, ``drop_height``, ``restitution``, ``friction``,
+``rolling_resistance`` and ``pivoting_resistance``, the coin's rounded rim ``corner_radius``
+(the command line's --corner-radius) and ``max_bounces`` (--bounces). A table takes them all, a
+catch in the hand none; an outcome model declares those it reads
+(:attr:`coinflight.outcomes.base.OutcomeModel.surface_parameters`), and a :class:`Surface` of
+its kind refuses any other given."""
+
+
+@dataclass(frozen=True)
+class SurfaceKind:
+    """A kind of surface a toss may end on: a name of :func:`surface_kinds`.
+
+    Registered by :func:`coinflight.outcomes.register` (the built-ins, ``"hand"`` and
+    ``"table"``, when :mod:`coinflight.outcomes` is imported, which ``import coinflight``
+    does), and read by :class:`Surface`, the command line's --surface and the web API.
+
+    Attributes
+    ----------
+    name : str
+        What ``Surface(kind=...)``, --surface and the API's ``surface=`` call it.
+    summary : str
+        One line: how a toss ends there (--surface's help, the page's menu).
+    takes : tuple of str
+        Which of :data:`TABLE_PARAMETERS` it reads; a :class:`Surface` of this kind refuses
+        the others given.
+    refusal : str
+        The words after what was given that it does not take (``restitution 0.7 …``).
+    build : callable
+        ``(surface, drag, max_bounces) -> OutcomeModel``, for
+        :func:`coinflight.outcomes.outcome_model`.
+    model : type
+        The outcome model's class (:class:`coinflight.outcomes.base.OutcomeModel`).
+    """
+
+    name: str
+    summary: str
+    takes: tuple[str, ...]
+    refusal: str
+    build: Callable[..., Any]
+    model: type
+
+
+_SURFACE_KINDS: dict[str, SurfaceKind] = {}
+
+
+def surface_kinds() -> Mapping[str, SurfaceKind]:
+    """The registered surface kinds by name, in the order registered (read-only; changed by
+    :func:`coinflight.outcomes.register` and :func:`coinflight.outcomes.unregister`)."""
+    return MappingProxyType(_SURFACE_KINDS)
+
+
+def surface_kind(name: object) -> SurfaceKind:
+    """The registered surface kind ``name``; ValueError naming the registered ones."""
+    v.choice("surface", name, _SURFACE_KINDS)
+    return _SURFACE_KINDS[str(name)]
+
+
+def add_surface_kind(kind: SurfaceKind) -> None:
+    """Add or replace ``kind`` (through :func:`coinflight.outcomes.register`, which checks it)."""
+    _SURFACE_KINDS[kind.name] = kind
+
+
+def remove_surface_kind(name: str) -> None:
+    """Remove the kind ``name`` (:func:`coinflight.outcomes.unregister`); nothing if none."""
+    _SURFACE_KINDS.pop(name, None)
+
 
 class _Unset(float):
     """A contact parameter the caller did not give: its default value, marked as such.
@@ -136,9 +213,13 @@ class Surface:
 
     Parameters
     ----------
-    kind : {"hand", "table"}
+    kind : str
+        A registered surface kind (:func:`surface_kinds`; ValueError naming them for another).
         ``"hand"``: caught at launch height, no bounce (Stefan & Cheche). ``"table"``: the coin
         falls onto a hard horizontal surface, bounces and settles heads, tails or on its edge.
+        Another kind (:func:`coinflight.outcomes.register`) takes the parameters below that its
+        model declares (:attr:`SurfaceKind.takes`) and refuses the others given, as the hand
+        refuses them all.
     drop_height : float
         How far the surface lies below the launch height of the centre of mass, m (≥ 0; a
         surface above the launch point is not allowed; default 0). Only for ``"table"``: a
@@ -205,7 +286,7 @@ class Surface:
     ValueError: rolling resistance 0.0002 m: only the 3-D endings (ending='contact' or 'rigid', ...
     """
 
-    kind: SurfaceKind = "hand"
+    kind: str = "hand"
     drop_height: float = _UNSET_DROP
     restitution: float = _UNSET_RESTITUTION
     friction: float = _UNSET_FRICTION
@@ -215,7 +296,7 @@ class Surface:
     ending: Literal["rocking", "contact", "rigid"] = "rocking"
 
     def __post_init__(self) -> None:
-        v.choice("surface", self.kind, ("hand", "table"))
+        kind = surface_kind(self.kind)
         height = v.as_float_array("drop height", self.drop_height)
         if height.ndim == 0 and float(height) < 0:
             raise ValueError(
@@ -223,10 +304,10 @@ class Surface:
                 f"got {float(height)!r}: a surface above the launch point is not allowed"
             )
         drop = DROP_HEIGHT.check(self.drop_height)
-        given = []  # the table's parameters the caller gave (not the marked defaults)
+        given = {}  # the parameters the caller gave (not the marked defaults), described
         if not isinstance(self.drop_height, _Unset):  # given: kept as a plain float
             object.__setattr__(self, "drop_height", drop)
-            given.append(DROP_HEIGHT.describe(drop))
+            given["drop_height"] = DROP_HEIGHT.describe(drop)
         e = v.in_range("restitution", self.restitution, 0.0, 1.0)
         if e.ndim:
             raise TypeError("restitution must be a single number")
@@ -234,9 +315,11 @@ class Surface:
         for name, checked in (("restitution", float(e)), ("friction", mu)):
             if not isinstance(getattr(self, name), _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
-                given.append(f"{name} {checked:g}")
+                given[name] = f"{name} {checked:g}"
         object.__setattr__(self, "contact_time", CONTACT_TIME.check(self.contact_time))
         v.choice("ending", self.ending, ENDINGS)
+        if self.ending != "rocking":
+            given["ending"] = f"ending {self.ending!r}"
         resistances = []
         for quantity in (ROLLING_RESISTANCE, PIVOTING_RESISTANCE):
             name = quantity.name.replace(" ", "_")
@@ -244,10 +327,11 @@ class Surface:
             checked = quantity.check(value)  # a default too (the _Unset mark is a float)
             if not isinstance(value, _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
-                resistances.append(quantity.describe(checked))
-        if self.kind == "hand" and (given or resistances or self.ending != "rocking"):
-            ending = [f"ending {self.ending!r}"] if self.ending != "rocking" else []
-            raise ValueError(f"{', '.join(ending + given + resistances)} {TABLE_ONLY}")
+                given[name] = quantity.describe(checked)
+                resistances.append(given[name])
+        refused = [given[n] for n in TABLE_PARAMETERS if n in given and n not in kind.takes]
+        if refused:
+            raise ValueError(f"{', '.join(refused)} {kind.refusal}")
         if resistances and self.ending == "rocking":
             raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
 
@@ -273,7 +357,7 @@ class Surface:
 
     @property
     def bounces(self) -> bool:
-        """True for a hard surface."""
+        """True for a hard surface (a table)."""
         return self.kind == "table"
 
 
@@ -385,7 +469,11 @@ __all__ = [
     "MAX_FRICTION",
     "ROCKING_HAS_NO_RESISTANCE",
     "TABLE_ONLY",
+    "TABLE_PARAMETERS",
     "Drag",
     "Surface",
+    "SurfaceKind",
     "contact_distribution",
+    "surface_kind",
+    "surface_kinds",
 ]

@@ -29,7 +29,7 @@ from coinflight.model.surface import CONTACT_UNITS
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.ensemble import TossDistribution
-    from coinflight.model.surface import Drag
+    from coinflight.model.surface import Drag, Surface
     from coinflight.model.toss import Toss
 
 FloatArray = NDArray[np.float64]
@@ -64,6 +64,26 @@ class OutcomeModel:
     """Tosses a second on the reference 2-core machine, all threads: the estimators' work
     bounds (:func:`coinflight.probability.monte_carlo.check_work` …) turn a size into a time
     with it. Subclasses state their own measured rate."""
+    summary: str = ""
+    """One line: how a toss ends on this model's surface kind (--surface's help, the page's
+    menu; empty: its :attr:`name`)."""
+    surface_parameters: tuple[str, ...] = ()
+    """Which of the table's parameters (:data:`coinflight.model.surface.TABLE_PARAMETERS`:
+    ending, drop_height, restitution, friction, the resistances, corner_radius, max_bounces)
+    this model reads: a :class:`~coinflight.model.surface.Surface` of its kind, the command
+    line and the web API refuse the others given (in :attr:`surface_refusal`'s words)."""
+    surface_refusal: str = ""
+    """Why a parameter it does not take is refused, after what was given (one line); empty:
+    "does not apply to --surface KIND ..., which takes ..." built from
+    :attr:`surface_parameters` (:func:`coinflight.outcomes.register`)."""
+
+    @classmethod
+    def from_surface(cls, surface: Surface) -> OutcomeModel:
+        """The model for ``surface`` (of its registered kind), with no air and no bounce
+        limit; :func:`coinflight.outcomes.register`'s default builder calls it. By default
+        ``cls()``: a model that reads the surface's parameters overrides it."""
+        del surface
+        return cls()
 
     def faces(
         self,

@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.model.ensemble import PARAMETERS, TossDistribution
+from coinflight.model.surface import TABLE_ONLY
 from coinflight.outcomes.base import (
     Counts,
     FaceArray,
@@ -29,6 +30,8 @@ class HandCatch(OutcomeModel):
     """Caught in the hand at launch height: the face is the sign of n(T)·n0 (Stefan & Cheche)."""
 
     name = "hand catch"
+    summary = "caught at launch height (no bounce)"
+    surface_refusal = TABLE_ONLY
     closed_form_bands = True
     rate = 2.5e7
     """Measured: Monte Carlo, 10⁸ tosses of ω_x 60-90 rad/s, T 0.6-0.9 s in 4.2 s on the 2-core

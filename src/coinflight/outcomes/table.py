@@ -21,7 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES, STATUS_NAMES, Status
 from coinflight.model.coin import Coin
-from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, Drag, Surface
+from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, TABLE_PARAMETERS, Drag, Surface
 from coinflight.model.toss import STANDARD_GRAVITY, Toss, check_gravity
 from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
@@ -675,6 +675,8 @@ class TableLanding(OutcomeModel):
     """
 
     name = "table landing"
+    summary = "falls onto a hard surface, bounces and settles heads, tails or on edge"
+    surface_parameters = TABLE_PARAMETERS
     can_end_on_edge = True
 
     @property

@@ -25,6 +25,19 @@ CONTACT_FLAGS = {
 }
 """The contact parameters a command line may spread, and their options."""
 
+TAKES = {
+    "--drop-height": ("drop_height",),
+    "--restitution": ("restitution",),
+    "--friction": ("friction",),
+    "--surface-preset": ("restitution", "friction"),
+    "--ending": ("ending",),
+    "--rolling-resistance": ("rolling_resistance",),
+    "--pivoting-resistance": ("pivoting_resistance",),
+    "--corner-radius": ("corner_radius",),
+}
+"""The table's options and what each sets (:data:`coinflight.model.surface.TABLE_PARAMETERS`):
+a surface kind that does not take it refuses the option given."""
+
 
 def contact_spread(
     restitution: str | float | None,
@@ -108,8 +121,9 @@ def build_surface(
     ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
     only checked here to belong to a table.
     """
-    from coinflight.model.surface import ENDINGS, TABLE_ONLY, Surface
+    from coinflight.model.surface import ENDINGS, Surface, surface_kind
 
+    the_kind = surface_kind(kind)
     given = {
         "--drop-height": drop_height,
         "--restitution": restitution,
@@ -120,10 +134,13 @@ def build_surface(
         "--pivoting-resistance": pivoting_resistance,
         "--corner-radius": corner_radius,
     }
-    if kind == "hand":
-        extra = [flag for flag, value in given.items() if value is not None]
-        if extra:
-            raise ValueError(f"{', '.join(extra)} {TABLE_ONLY}")
+    extra = [
+        flag
+        for flag, value in given.items()
+        if value is not None and not set(TAKES[flag]) <= set(the_kind.takes)
+    ]
+    if extra:
+        raise ValueError(f"{', '.join(extra)} {the_kind.refusal}")
     if ending is not None and ending not in ENDINGS:
         raise ValueError(
             f"--ending must be {', '.join(ENDINGS[:-1])} or {ENDINGS[-1]} (how a table landing "
@@ -152,7 +169,7 @@ def build_surface(
     if drop_height is not None:  # else the default, marked as not given (0 m below launch)
         given_values["drop_height"] = drop_height
     return Surface(
-        kind,  # type: ignore[arg-type]
+        kind,
         ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
         **given_values,
     )
@@ -220,14 +237,15 @@ def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | 
 
 
 def check_bounces(surface: Surface, bounces: int | None) -> None:
-    """--bounces needs a table, the default ending (it stops a landing before any ending) and a
-    count between 0 and landing.MAX_BOUNCES."""
+    """--bounces needs a surface kind that takes it (a table), the default ending (it stops a
+    landing before any ending) and a count between 0 and landing.MAX_BOUNCES."""
     if bounces is None:
         return
-    from coinflight.model.surface import TABLE_ONLY
+    from coinflight.model.surface import surface_kind
 
-    if surface.kind != "table":
-        raise ValueError(f"--bounces {TABLE_ONLY}")
+    kind = surface_kind(surface.kind)
+    if "max_bounces" not in kind.takes:
+        raise ValueError(f"--bounces {kind.refusal}")
     if surface.ending == "contact":
         raise ValueError(
             "--bounces stops each landing at a bounce, before its ending, so --ending contact "
@@ -276,7 +294,7 @@ def outcome_model(
     the_surface = surface_from(table, ranged)
     the_drag = build_drag(*air)
     check_bounces(the_surface, bounces)
-    if not the_surface.bounces and the_drag is None:
+    if the_surface.kind == "hand" and the_drag is None:
         return None
     return LandingChoice(
         the_surface, the_drag, outcomes.outcome_model(the_surface, the_drag, bounces)
@@ -284,11 +302,12 @@ def outcome_model(
 
 
 def table_outcome(table: TableArgs, bounces: int | None) -> dict[str, Any]:
-    """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand)."""
+    """``outcome=`` for :func:`coinflight.studies.basin.basin_map` (empty for the hand: the
+    closed form; the outcome model of any other surface kind)."""
     from coinflight.outcomes import outcome_model
 
     the_surface = surface_from(table)
     check_bounces(the_surface, bounces)
-    if not the_surface.bounces:
+    if the_surface.kind == "hand":
         return {}
     return {"outcome": outcome_model(the_surface, None, bounces)}

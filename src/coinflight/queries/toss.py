@@ -33,8 +33,9 @@ class TossQuery:
 
     @property
     def caught(self) -> bool:
-        """True for the plain hand catch (the closed form), False for a table or air."""
-        return not self.surface.bounces and self.drag is None
+        """True for the plain hand catch (the closed form), False for another surface kind (a
+        table) or air."""
+        return self.surface.kind == "hand" and self.drag is None
 
 
 def toss_query(
