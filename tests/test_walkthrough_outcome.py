@@ -16,7 +16,9 @@ import re
 import numpy as np
 import pytest
 
+from _cli import answer, api_answer, one_line_error, runner
 from coinflight import outcomes
+from coinflight.cli import app
 from coinflight.core import torque_free
 from coinflight.core.outcome import EDGE, face_from_alignment
 from coinflight.model.coin import Coin
@@ -182,3 +184,60 @@ def test_table_faces_on_a_map_count_edges_like_the_estimator():
     basin = basin_map(dist.coin, (0.3, 0.4), (20.0, 40.0), resolution=(30, 30), outcome=model)
     assert grid.p_heads == basin.heads_fraction
     assert grid.p_edge == basin.fraction(EDGE)
+
+
+MAT_ARGS = ["--omega-x", "60:90", "--flight-time", "0.6:0.9", "--surface", "soft-mat"]
+MC = ["--method", "monte-carlo", "--n", "20000", "--seed", "11"]
+
+
+def test_the_command_line_reaches_the_mat_with_no_other_edit(registry):
+    # coinflight probability --surface soft-mat: the estimate of the model itself, the mat's
+    # depth from --drop-height (the one table parameter it declares), the rest refused.
+    argv = ["probability", *MAT_ARGS, "--drop-height", "0.5", *MC, "--json"]
+    out = answer(runner.invoke(app, argv), argv)
+    by_model = estimate(DIST, "monte-carlo", n=20_000, seed=11, model=SoftMat(0.5))
+    assert (out["counts"]["heads"], out["counts"]["tails"]) == tuple(by_model.counts[1::-1])
+    assert out["p_heads"] == by_model.p_heads
+    assert out["surface"] == "soft mat"
+    refused = one_line_error("probability", *MAT_ARGS, "--restitution", "0.3", *MC)
+    assert refused == f"--restitution {MAT_REFUSAL}"
+    # coinflight toss --surface soft-mat: the face the model gives.
+    toss = ["toss", "--omega", "80", "0", "0", "--flight-time", "0.7", "--surface", "soft-mat"]
+    toss += ["--drop-height", "0.5", "--json"]
+    face = SoftMat(0.5).faces(QUARTER, np.array([[80.0, 0, 0]]), np.array([0.7]), 1.0, G)
+    assert answer(runner.invoke(app, toss), toss)["outcome"] == ["tails", "heads"][int(face[0])]
+    # Unregistered, it is refused again, in the surface's words.
+    outcomes.unregister("soft-mat")
+    assert one_line_error("probability", *MAT_ARGS, *MC) == NOT_REGISTERED
+
+
+def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
+    # The server's worker processes are forked before the mat is registered: they receive the
+    # registry with each request, so the API answers as the command line does, lists the mat
+    # in /api/surfaces (the page's menu), and refuses it once unregistered.
+    from fastapi.testclient import TestClient
+
+    from coinflight.web import create_app
+
+    query = "omega_x=60:90&flight_time=0.6:0.9&surface=soft-mat&method=monte-carlo&n=20000&seed=11"
+    argv = ["probability", *MAT_ARGS, "--drop-height", "0.5", *MC, "--json"]
+    by_cli = answer(runner.invoke(app, argv), argv)
+    with TestClient(create_app(workers=1)) as client:
+        listed = api_answer(client.get("/api/surfaces"))["surfaces"]
+        assert [kind["name"] for kind in listed] == ["hand", "table", "soft-mat"]
+        assert listed[2] == {
+            "name": "soft-mat",
+            "summary": SoftMat.summary,
+            "takes": ["drop_height"],
+        }
+        by_api = api_answer(client.get(f"/api/probability?{query}&drop_height=0.5"))
+        assert {**by_api, "elapsed": 0} == {**by_cli, "elapsed": 0}
+        refused = client.get(f"/api/probability?{query}&friction=0.2")
+        assert (refused.status_code, refused.json()["detail"]) == (422, f"--friction {MAT_REFUSAL}")
+        outcomes.unregister("soft-mat")
+        refused = client.get(f"/api/probability?{query}")
+        assert (refused.status_code, refused.json()["detail"]) == (422, NOT_REGISTERED)
+        assert [kind["name"] for kind in api_answer(client.get("/api/surfaces"))["surfaces"]] == [
+            "hand",
+            "table",
+        ]

@@ -256,6 +256,19 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     check_max_bounces(bounces, "--bounces")
 
 
+def surfaces_payload() -> dict[str, Any]:
+    """``GET /api/surfaces``: the registered surface kinds (:func:`coinflight.outcomes.register`)
+    in order, each its ``name``, ``summary`` and the table's parameters it ``takes``."""
+    from coinflight.model.surface import surface_kinds
+
+    return {
+        "surfaces": [
+            {"name": k.name, "summary": k.summary, "takes": list(k.takes)}
+            for k in surface_kinds().values()
+        ]
+    }
+
+
 def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
     """JSON description of the landing surface and the air (the model's ``to_dict``)."""
     from coinflight.outcomes import outcome_model

@@ -97,7 +97,13 @@ Start = Annotated[str, _q("Face up at launch: heads or tails.")]
 Gravity = Annotated[float, _q("Gravitational acceleration, m/s².")]
 
 # --- where it ends ---------------------------------------------------------------------------
-Surface = Annotated[str, _q("hand (caught at launch height) or table (as --surface).")]
+Surface = Annotated[
+    str,
+    _q(
+        "Where the toss ends, as --surface: hand (caught at launch height), table, or another "
+        "registered surface kind (GET /api/surfaces lists them)."
+    ),
+]
 DropHeight = Annotated[float | None, _q("table: surface below the launch height, m.")]
 Restitution = Annotated[
     str | None,

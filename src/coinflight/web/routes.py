@@ -8,9 +8,11 @@ the server's worker processes (:class:`Lanes`): the computing is in
 
 from __future__ import annotations
 
+import pickle
 from collections.abc import Callable
 from contextvars import ContextVar
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Depends, Request
@@ -18,6 +20,12 @@ from fastapi.responses import FileResponse, Response
 from pydantic import BaseModel
 
 from coinflight._provenance import invoked
+from coinflight.model.surface import (
+    SurfaceKind,
+    add_surface_kind,
+    remove_surface_kind,
+    surface_kinds,
+)
 from coinflight.queries.encoding import json_text
 from coinflight.web import endpoints
 from coinflight.web import params as p
@@ -62,13 +70,13 @@ class Lanes:
         runner: Runner | None = getattr(self.state, "runner", None)
         if runner is None:
             raise Overloaded("the server is starting or stopping; try again in a few seconds")
-        request = _REQUEST.get()
+        request, kinds = _REQUEST.get(), _portable_kinds()
         if not long:
-            return Response(await runner.run(_encoded, request, fn, *args), media_type=JSON)
+            return Response(await runner.run(_encoded, request, kinds, fn, *args), media_type=JSON)
         try:
-            text = await runner.run(_encoded, request, fn, *args, True)
+            text = await runner.run(_encoded, request, kinds, fn, *args, True)
         except endpoints.LongWork:
-            text = await runner.run(_encoded, request, fn, *args, False, long=True)
+            text = await runner.run(_encoded, request, kinds, fn, *args, False, long=True)
         return Response(text, media_type=JSON)
 
     async def timed(self, fn: Callable[..., Any], *args: Any, long: bool = True) -> Response:
@@ -84,12 +92,41 @@ Server = Annotated[Lanes, Depends(_lanes)]
 """The application's worker pool and time limit, a dependency of every API endpoint."""
 
 
-def _encoded(request: str, fn: Callable[..., Any], *args: Any) -> str:
+@lru_cache(maxsize=256)
+def _portable(kind: SurfaceKind) -> bool:
+    """True when ``kind`` can be sent to a worker process (its model and builder importable by
+    name: defined at the top level of a module, not a lambda)."""
+    try:
+        pickle.dumps(kind)
+    except (pickle.PicklingError, AttributeError, TypeError):
+        return False
+    return True
+
+
+def _portable_kinds() -> tuple[SurfaceKind, ...]:
+    """The registered surface kinds, as this process has them now, that a worker can receive."""
+    return tuple(kind for kind in surface_kinds().values() if _portable(kind))
+
+
+def _use_kinds(kinds: tuple[SurfaceKind, ...]) -> None:
+    """Make the worker's surface kinds those of the server process (:func:`_portable_kinds`):
+    a kind registered or unregistered after the workers started is seen by the next request."""
+    for name in list(surface_kinds()):
+        remove_surface_kind(name)
+    for kind in kinds:
+        add_surface_kind(kind)
+
+
+def _encoded(
+    request: str, kinds: tuple[SurfaceKind, ...], fn: Callable[..., Any], *args: Any
+) -> str:
     """``fn(*args)`` as JSON text, with the plausibility warnings the library issued while
     computing it in its ``"warnings"`` (as ``--json`` carries them; a worker's standard error
-    reaches no one), and ``request`` as its ``"command"`` (:mod:`coinflight._provenance`)."""
+    reaches no one), and ``request`` as its ``"command"`` (:mod:`coinflight._provenance`),
+    on the server's surface ``kinds`` (:func:`_use_kinds`)."""
     from coinflight.queries.plausibility import heard, with_warnings
 
+    _use_kinds(kinds)
     with invoked(request), heard() as texts:
         payload = fn(*args)
         return json_text(with_warnings(payload, texts))
@@ -110,6 +147,16 @@ async def remember_request(request: Request) -> None:
 async def page(request: Request) -> FileResponse:
     """The page (``app.state.index``: its file, in the package's static folder)."""
     return FileResponse(request.app.state.index, media_type="text/html")
+
+
+@router.get("/api/surfaces", tags=["toss"], response_class=Response, responses=ANSWERS)
+async def surfaces() -> Response:
+    """The surface kinds a toss may end on (the `surface` parameter, --surface): each one's
+    name, one line on how a toss ends there, and the table's parameters it takes."""
+    from coinflight.queries.landing import surfaces_payload
+
+    with invoked(_REQUEST.get()):
+        return Response(json_text(surfaces_payload()), media_type=JSON)
 
 
 @router.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
