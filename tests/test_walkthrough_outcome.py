@@ -229,6 +229,8 @@ def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
             "name": "soft-mat",
             "summary": SoftMat.summary,
             "takes": ["drop_height"],
+            "can_end_on_edge": False,
+            "closed_form_bands": False,
         }
         by_api = api_answer(client.get(f"/api/probability?{query}&drop_height=0.5"))
         assert {**by_api, "elapsed": 0} == {**by_cli, "elapsed": 0}

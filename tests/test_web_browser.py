@@ -227,6 +227,42 @@ def test_the_coin_menu_is_the_librarys_presets(page: Any) -> None:
     assert options == [[key, coin.name] for key, coin in PRESETS.items()]
 
 
+def test_the_surface_menu_is_the_servers_registry(page: Any, server: str) -> None:
+    """The probability panel's surface menu is the server's registered surface kinds (GET
+    /api/surfaces: served, not written in the page), their one lines as titles; a landing on a
+    table is printed as ``coinflight probability --surface table`` prints it, P(edge) included,
+    all but the line describing the table (the JSON does not carry it)."""
+    ready(page, "probability")
+    kinds = api(server, "/api/surfaces")["surfaces"]
+    assert [kind["name"] for kind in kinds][:2] == ["hand", "table"]
+    options = page.eval_on_selector_all(
+        "#prob-surface option", "os => os.map(o => [o.value, o.title])"
+    )
+    assert options == [[kind["name"], kind["summary"]] for kind in kinds]
+    assert page.input_value("#prob-surface") == "hand"
+    page.select_option("#prob-method", "monte-carlo")
+    page.fill("#prob-n", "1000")
+    page.fill("#prob-seed", "5")
+    page.select_option("#prob-surface", "table")  # asks at once
+    page.wait_for_function(
+        "() => document.querySelector('#prob-text').textContent.includes('P(edge)')"
+    )
+    page.wait_for_selector("#buildup[data-state=ready]")  # no exact value asked: no closed form
+    args = ["--omega-x", "60:90", "--flight-time", "0.6:0.9", "--coin", "us-quarter"]
+    mc = ["--method", "monte-carlo", "--n", "1000", "--seed", "5", "--surface", "table"]
+    cli = runner.invoke(app, ["probability", *args, *mc])
+    assert cli.exit_code == 0, cli.output
+    text = page.locator("#prob-text").text_content()
+    drop = ("method ", "landing on a table")
+    assert _lines(text, drop=drop) == _lines(cli.stdout, drop=drop)
+    page.select_option("#prob-method", "exact")
+    page.select_option("#prob-surface", "hand")  # asks at once
+    page.wait_for_function(
+        "() => !document.querySelector('#prob-text').textContent.includes('P(edge)')"
+    )
+    assert page.problems.messages == []
+
+
 def test_toss_face_and_rotations_are_the_command_lines(page: Any, server: str) -> None:
     """The paper's first toss (ω = (80, 0, 0) rad/s, T = 0.7 s): the page prints what
     ``coinflight toss`` prints, character for character."""

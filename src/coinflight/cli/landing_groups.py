@@ -5,8 +5,6 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-import typer
-
 from coinflight.cli.command import Group
 from coinflight.cli.options import (
     AIR_PANEL,
@@ -15,30 +13,9 @@ from coinflight.cli.options import (
     number_option,
     option,
 )
-from coinflight.model.surface import surface_kinds
+from coinflight.cli.surface import SurfaceOption
 from coinflight.queries.values import AirArgs, TableArgs
 
-
-def _surface_kinds(incomplete: str) -> list[tuple[str, str]]:
-    """--surface's shell completion: the registered kinds starting with ``incomplete``."""
-    return [(k.name, k.summary) for k in surface_kinds().values() if k.name.startswith(incomplete)]
-
-
-def surface_option() -> Any:
-    """--surface, its choices and help read from the registered surface kinds
-    (:func:`coinflight.outcomes.register`) when the command line is built."""
-    kinds = surface_kinds().values()
-    return typer.Option(
-        "--surface",
-        metavar="|".join(k.name for k in kinds),
-        rich_help_panel=SURFACE_PANEL,
-        help="; ".join(f"{k.name}: {k.summary}" for k in kinds) + ".",
-        autocompletion=_surface_kinds,
-    )
-
-
-SurfaceOption = Annotated[str, surface_option()]
-"""--surface NAME: a registered surface kind (checked by the surface, in its words)."""
 _TABLE = "table: "
 _SPREAD = (
     " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal "

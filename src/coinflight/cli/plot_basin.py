@@ -129,6 +129,7 @@ def plot_basin(
     (on a table, after K bounces: --surface table --drop-height 0.3 --bounces K; the
     hyperbolas, which belong to the catch, are then not drawn)
     """
+    from coinflight.model.surface import surface_kind
     from coinflight.plotting.basin import plot_basin as draw
     from coinflight.plotting.style import figure_paths, save_figure
     from coinflight.queries.basin import basin_query, draws_boundaries
@@ -146,10 +147,14 @@ def plot_basin(
         )
     n_w, n_t = basin.face.shape
     typer.echo(f"P(heads) on the {n_t}×{n_w} grid = {basin.heads_fraction:.6f}")
-    if table.surface == "table":
+    kind = surface_kind(table.surface)
+    if kind.model.can_end_on_edge:
         typer.echo(f"P(edge) on the grid = {basin.fraction(2):.6f}")
+    if table.surface == "table":
         ending = table_title(table.drop_height, table.restitution, table.friction, bounces)
         figure = draw(basin, ending=ending, boundaries=False)
+    elif table.surface != "hand":  # another registered surface kind: its model names it
+        figure = draw(basin, ending=f"ended by the {kind.model.name}", boundaries=False)
     else:
         figure = draw(basin, boundaries=draws_boundaries(table, boundaries))
     echo_written(save_figure(figure, out, dpi=dpi))

@@ -1,11 +1,14 @@
-"""Options for where the toss ends (hand or table) and the air, shared by several commands."""
+"""Options for where the toss ends (a registered surface kind: hand, table, …) and the air, shared
+by several commands."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from coinflight.cli.options import SURFACE_PANEL
+from coinflight.model.surface import surface_kinds
 from coinflight.queries.landing import (
     LandingChoice,
     build_drag,
@@ -22,6 +25,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "LandingChoice",
+    "SurfaceOption",
     "build_drag",
     "build_surface",
     "check_bounces",
@@ -30,6 +34,25 @@ __all__ = [
     "table_outcome",
     "table_title",
 ]
+
+
+def _complete(incomplete: str) -> list[tuple[str, str]]:
+    return [(k.name, k.summary) for k in surface_kinds().values() if k.name.startswith(incomplete)]
+
+
+_KINDS = surface_kinds().values()
+SurfaceOption = Annotated[
+    str,
+    typer.Option(
+        "--surface",
+        metavar="|".join(k.name for k in _KINDS),
+        rich_help_panel=SURFACE_PANEL,
+        help="; ".join(f"{k.name}: {k.summary}" for k in _KINDS) + ".",
+        autocompletion=_complete,
+    ),
+]
+"""--surface NAME: a registered surface kind (:func:`coinflight.outcomes.register`; the help
+and the shell completion list them, the surface checks the name in its words)."""
 
 
 def report_landing(

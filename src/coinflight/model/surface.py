@@ -128,7 +128,7 @@ class SurfaceKind:
     takes: tuple[str, ...]
     refusal: str
     build: Callable[..., Any]
-    model: type
+    model: type[Any]
 
 
 _SURFACE_KINDS: dict[str, SurfaceKind] = {}

@@ -258,12 +258,20 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
 
 def surfaces_payload() -> dict[str, Any]:
     """``GET /api/surfaces``: the registered surface kinds (:func:`coinflight.outcomes.register`)
-    in order, each its ``name``, ``summary`` and the table's parameters it ``takes``."""
+    in order, each its ``name``, ``summary``, the table's parameters it ``takes`` and its model's
+    declarations the page asks: ``can_end_on_edge`` (P(edge) is printed) and
+    ``closed_form_bands`` (the exact method applies)."""
     from coinflight.model.surface import surface_kinds
 
     return {
         "surfaces": [
-            {"name": k.name, "summary": k.summary, "takes": list(k.takes)}
+            {
+                "name": k.name,
+                "summary": k.summary,
+                "takes": list(k.takes),
+                "can_end_on_edge": bool(k.model.can_end_on_edge),
+                "closed_form_bands": bool(k.model.closed_form_bands),
+            }
             for k in surface_kinds().values()
         ]
     }

@@ -99,8 +99,12 @@ function methodSummary(r) {
   return `${thousands(r.samples ?? r.n ?? 0)} tosses`;
 }
 
-/** The text `coinflight probability` prints (hand catch), from its --json object. */
-export function probabilityLines(r) {
+/**
+ * The text `coinflight probability` prints, from its --json object: for the hand catch all of
+ * it; on another surface (`edge`: its kind can end a toss on edge, /api/surfaces) all but the
+ * line that describes the surface, which the object does not carry.
+ */
+export function probabilityLines(r, edge = false) {
   const lines = [coinLine({ name: r.coin, ...r.coin_dimensions }, r.start)];
   for (const name of ["omega_x", "omega_y", "omega_z", "flight_time"]) {
     if (r.distribution && r.distribution[name]) {
@@ -109,7 +113,10 @@ export function probabilityLines(r) {
   }
   lines.push(`g = ${fmtG(r.g)} m/s²`);
   lines.push(describeResult(r));
-  lines.push(`P(tails) = ${r.p_tails.toFixed(6)}, P(same side) = ${r.p_same_side.toFixed(6)}`);
+  lines.push(
+    `P(tails) = ${r.p_tails.toFixed(6)}, P(same side) = ${r.p_same_side.toFixed(6)}` +
+      (edge ? `, P(edge) = ${fmtG(r.p_edge)}` : ""),
+  );
   for (const w of r.warnings || []) lines.push(`warning: ${w}`);
   lines.push(`method ${r.method}: ${methodSummary(r)}; ${fmtG(r.elapsed, 3)} s`);
   return lines;

@@ -25,8 +25,32 @@ export class Probability {
       this.update();
     });
     this.el("prob-method").addEventListener("change", () => this.syncMethod());
+    this.el("prob-surface").addEventListener("change", () => this.update());
+    this.surfaces = this.loadSurfaces();
     new ResizeObserver(() => this.drawBuildUp()).observe(this.el("buildup-canvas"));
     this.syncMethod();
+  }
+
+  /**
+   * The surface menu, filled from the server's registered surface kinds (/api/surfaces): its
+   * name, and its one line as the option's title. The catch in the hand is chosen.
+   */
+  async loadSurfaces() {
+    const select = this.el("prob-surface");
+    const { surfaces } = await getJSON("api/surfaces");
+    this.kinds = new Map(surfaces.map((kind) => [kind.name, kind]));
+    for (const kind of surfaces) {
+      const option = document.createElement("option");
+      option.value = kind.name;
+      option.textContent = kind.name;
+      option.title = kind.summary;
+      select.append(option);
+    }
+    select.value = "hand";
+    select.title = this.kinds.get("hand")?.summary ?? "";
+    select.addEventListener("change", () => {
+      select.title = this.kinds.get(select.value)?.summary ?? "";
+    });
   }
 
   syncMethod() {
@@ -42,6 +66,7 @@ export class Probability {
       omega_z: spec(v("p-wz-lo"), v("p-wz-hi")),
       flight_time: spec(v("p-T-lo"), v("p-T-hi")),
       method: v("prob-method"),
+      surface: v("prob-surface") === "hand" ? "" : v("prob-surface"), // hand: the default
       coin: this.settings.coin(),
       start: this.settings.start(),
     };
@@ -80,7 +105,9 @@ export class Probability {
     this.points = [[r.n, r.p_heads, r.ci95]];
     this.exact = null;
     this.drawBuildUp();
+    const kind = this.kinds.get(this.el("prob-surface").value);
     try {
+      if (!kind?.closed_form_bands) throw new Error("no closed form on this surface");
       const exact = await getJSON("api/probability", { ...q, method: "exact", n: "", seed: "" }, { signal });
       this.exact = exact.p_heads;
     } catch (err) {
@@ -148,6 +175,7 @@ export class Probability {
     this.root.dataset.state = "loading";
     this.el("prob-run").disabled = true;
     try {
+      await this.surfaces;
       const r = await getJSON("api/probability", this.query(), { signal });
       const out = this.el("prob-result");
       out.dataset.pHeads = String(r.p_heads);
@@ -159,7 +187,8 @@ export class Probability {
             ? "exact (closed form: no sampling error)"
             : "";
       this.el("prob-bar").style.setProperty("--p", String(r.p_heads));
-      this.el("prob-text").textContent = probabilityLines(r).join("\n");
+      const edge = this.kinds.get(this.el("prob-surface").value)?.can_end_on_edge ?? false;
+      this.el("prob-text").textContent = probabilityLines(r, edge).join("\n");
       showError(this.el("prob-error"), null);
       this.root.dataset.state = "ready";
       if (r.method === "monte-carlo") await this.buildUp(r, signal);
