@@ -14,6 +14,7 @@ from coinflight.cli.landing_groups import (
     resistance_option,
 )
 from coinflight.cli.options import CONTACT_PANEL, SURFACE_PANEL, TOSS_PANEL, option
+from coinflight.model.surface import surface_kinds
 from coinflight.queries.probability import PRESET_OPTIONS
 from coinflight.queries.sweep import TOSS_PARAMETERS, SweepLandings, flag
 
@@ -75,8 +76,9 @@ LANDINGS = Group(
         "surface": (
             _surface_option(
                 "--surface",
-                "hand,table",
-                "Comma-separated: hand (caught, P(edge) empty) and/or table (lands, bounces; "
+                ",".join(surface_kinds()),
+                "Comma-separated registered surface kinds (coinflight probability --help lists "
+                "them): hand (caught, P(edge) empty) and/or table (lands, bounces; "
                 "P(edge)). A table's result depends on its unmeasured restitution and friction: "
                 "sweep them over their plausible range (e.g. --restitution 0.3,0.5,0.7 "
                 "--friction 0.1,0.3,0.5) and quote the band.",
