@@ -236,6 +236,19 @@ def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
         assert {**by_api, "elapsed": 0} == {**by_cli, "elapsed": 0}
         refused = client.get(f"/api/probability?{query}&friction=0.2")
         assert (refused.status_code, refused.json()["detail"]) == (422, f"--friction {MAT_REFUSAL}")
+        # A builder the workers cannot receive (a lambda: not importable by name) is neither
+        # listed nor answered, in the surface's words.
+        outcomes.register("lambda-mat", SoftMat, lambda surface, drag, bounces: SoftMat(0.5))
+        try:
+            assert outcomes.outcome_model("lambda-mat").depth == 0.5  # in this process
+            names = [kind["name"] for kind in api_answer(client.get("/api/surfaces"))["surfaces"]]
+            assert names == ["hand", "table", "soft-mat"]
+            refused = client.get(f"/api/probability?{query.replace('soft-mat', 'lambda-mat')}")
+            assert refused.json()["detail"] == (
+                "surface must be one of hand, table, soft-mat; got 'lambda-mat'"
+            )
+        finally:
+            outcomes.unregister("lambda-mat")
         outcomes.unregister("soft-mat")
         refused = client.get(f"/api/probability?{query}")
         assert (refused.status_code, refused.json()["detail"]) == (422, NOT_REGISTERED)

@@ -12,9 +12,11 @@ from coinflight import _validation as v
 from coinflight.queries.values import AirArgs, TableArgs
 
 if TYPE_CHECKING:
+    from collections.abc import Iterable
+
     from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution
-    from coinflight.model.surface import Drag, Surface
+    from coinflight.model.surface import Drag, Surface, SurfaceKind
     from coinflight.outcomes.base import OutcomeModel
 
 CONTACT_FLAGS = {
@@ -256,11 +258,11 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     check_max_bounces(bounces, "--bounces")
 
 
-def surfaces_payload() -> dict[str, Any]:
-    """``GET /api/surfaces``: the registered surface kinds (:func:`coinflight.outcomes.register`)
-    in order, each its ``name``, ``summary``, the table's parameters it ``takes`` and its model's
-    declarations the page asks: ``can_end_on_edge`` (P(edge) is printed) and
-    ``closed_form_bands`` (the exact method applies)."""
+def surfaces_payload(kinds: Iterable[SurfaceKind] | None = None) -> dict[str, Any]:
+    """``GET /api/surfaces``: the surface ``kinds`` (default: every registered one,
+    :func:`coinflight.outcomes.register`) in order, each its ``name``, ``summary``, the table's
+    parameters it ``takes`` and its model's declarations the page asks: ``can_end_on_edge``
+    (P(edge) is printed) and ``closed_form_bands`` (the exact method applies)."""
     from coinflight.model.surface import surface_kinds
 
     return {
@@ -272,7 +274,7 @@ def surfaces_payload() -> dict[str, Any]:
                 "can_end_on_edge": bool(k.model.can_end_on_edge),
                 "closed_form_bands": bool(k.model.closed_form_bands),
             }
-            for k in surface_kinds().values()
+            for k in (surface_kinds().values() if kinds is None else kinds)
         ]
     }
 

@@ -152,11 +152,13 @@ async def page(request: Request) -> FileResponse:
 @router.get("/api/surfaces", tags=["toss"], response_class=Response, responses=ANSWERS)
 async def surfaces() -> Response:
     """The surface kinds a toss may end on (the `surface` parameter, --surface): each one's
-    name, one line on how a toss ends there, and the table's parameters it takes."""
+    name, one line on how a toss ends there, the table's parameters it takes, and whether a
+    toss may end on edge there and the exact method applies. Those the server's workers can
+    receive: a kind registered with a lambda is not listed, and refused."""
     from coinflight.queries.landing import surfaces_payload
 
     with invoked(_REQUEST.get()):
-        return Response(json_text(surfaces_payload()), media_type=JSON)
+        return Response(json_text(surfaces_payload(_portable_kinds())), media_type=JSON)
 
 
 @router.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)
