@@ -38,5 +38,11 @@ for (const id of ["wy", "wz", "wy-range", "wz-range"]) {
 // The tests and curious students can reach the panels from the console.
 window.coinflight = { explorer, basin, probability, sameSide };
 
-await Promise.all([explorer.update(), basin.update(), probability.update(), sameSide.load()]);
+await Promise.all([
+  explorer.update(),
+  basin.update(),
+  probability.update(),
+  probability.surfaces, // the surface menu, from the server's registry
+  sameSide.load(),
+]);
 document.body.dataset.ready = "true";

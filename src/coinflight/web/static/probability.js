@@ -33,11 +33,18 @@ export class Probability {
 
   /**
    * The surface menu, filled from the server's registered surface kinds (/api/surfaces): its
-   * name, and its one line as the option's title. The catch in the hand is chosen.
+   * name, and its one line as the option's title. The catch in the hand is chosen (and the
+   * only one asked while the menu is empty).
    */
   async loadSurfaces() {
     const select = this.el("prob-surface");
-    const { surfaces } = await getJSON("api/surfaces");
+    let surfaces;
+    try {
+      ({ surfaces } = await getJSON("api/surfaces"));
+    } catch (err) {
+      showError(this.el("prob-error"), err); // the hand's answers still come
+      return;
+    }
     this.kinds = new Map(surfaces.map((kind) => [kind.name, kind]));
     for (const kind of surfaces) {
       const option = document.createElement("option");
@@ -47,10 +54,16 @@ export class Probability {
       select.append(option);
     }
     select.value = "hand";
-    select.title = this.kinds.get("hand")?.summary ?? "";
+    select.title = this.kind().summary ?? "";
     select.addEventListener("change", () => {
-      select.title = this.kinds.get(select.value)?.summary ?? "";
+      select.title = this.kind().summary ?? "";
     });
+  }
+
+  /** The chosen surface kind's declarations (the hand's while the menu is not yet filled). */
+  kind() {
+    const chosen = this.kinds?.get(this.el("prob-surface").value || "hand");
+    return chosen ?? { name: "hand", can_end_on_edge: false, closed_form_bands: true };
   }
 
   syncMethod() {
@@ -105,9 +118,8 @@ export class Probability {
     this.points = [[r.n, r.p_heads, r.ci95]];
     this.exact = null;
     this.drawBuildUp();
-    const kind = this.kinds.get(this.el("prob-surface").value);
     try {
-      if (!kind?.closed_form_bands) throw new Error("no closed form on this surface");
+      if (!this.kind().closed_form_bands) throw new Error("no closed form on this surface");
       const exact = await getJSON("api/probability", { ...q, method: "exact", n: "", seed: "" }, { signal });
       this.exact = exact.p_heads;
     } catch (err) {
@@ -175,7 +187,6 @@ export class Probability {
     this.root.dataset.state = "loading";
     this.el("prob-run").disabled = true;
     try {
-      await this.surfaces;
       const r = await getJSON("api/probability", this.query(), { signal });
       const out = this.el("prob-result");
       out.dataset.pHeads = String(r.p_heads);
@@ -187,8 +198,7 @@ export class Probability {
             ? "exact (closed form: no sampling error)"
             : "";
       this.el("prob-bar").style.setProperty("--p", String(r.p_heads));
-      const edge = this.kinds.get(this.el("prob-surface").value)?.can_end_on_edge ?? false;
-      this.el("prob-text").textContent = probabilityLines(r, edge).join("\n");
+      this.el("prob-text").textContent = probabilityLines(r, this.kind().can_end_on_edge).join("\n");
       showError(this.el("prob-error"), null);
       this.root.dataset.state = "ready";
       if (r.method === "monte-carlo") await this.buildUp(r, signal);
