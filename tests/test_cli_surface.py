@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
+import textwrap
 
 import numpy as np
 import pytest
@@ -270,3 +273,50 @@ def test_probability_warns_about_tosses_that_never_settle():
     assert any("never settled" in w for w in payload["warnings"])
     plain = CliRunner().invoke(app, args)
     assert "warning: 100 of 100 tosses (100 %) never settled" in plain.stdout
+
+
+def test_surface_help_and_completion_list_the_kinds_registered_before_the_cli_is_built():
+    # A plug-in registering a surface kind before the command line is imported: --surface's
+    # help and metavar (built from the registry) and its shell completion name it.
+    code = textwrap.dedent(
+        """
+        from coinflight import outcomes
+        from coinflight.outcomes.hand import HandCatch
+
+        class Pillow(HandCatch):
+            name, summary, surface_refusal = "pillow", "caught on a pillow", ""
+
+        outcomes.register("pillow", Pillow)
+        from typer.testing import CliRunner
+
+        from coinflight.cli import app
+        from coinflight.cli.surface import _complete
+
+        print(CliRunner().invoke(app, ["probability", "--help"], env={"COLUMNS": "2000"}).stdout)
+        print(_complete("p"), _complete("t"))
+        """
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    help_line = next(line for line in run.stdout.splitlines() if "--surface " in line)
+    assert "hand|table|pillow" in help_line
+    assert (
+        "hand: caught at launch height (no bounce); table: falls onto a hard surface, bounces "
+        "and settles heads, tails or on edge; pillow: caught on a pillow." in help_line
+    )
+    completions = run.stdout.strip().splitlines()[-1]
+    assert completions == (
+        "[('pillow', 'caught on a pillow')] [('table', 'falls onto a hard surface, bounces and "
+        "settles heads, tails or on edge')]"
+    )
+
+
+def test_a_surface_made_first_knows_the_built_in_kinds():
+    # The built-ins register when coinflight.outcomes is imported, which importing any part of
+    # coinflight does: a Surface made before anything else takes them, and names them.
+    code = (
+        "from coinflight.model.surface import Surface\n"
+        "print(Surface('table', drop_height=0.3).drop_height)\n"
+        "try:\n    Surface('sand')\nexcept ValueError as e:\n    print(e)\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert run.stdout.splitlines() == ["0.3", "surface must be one of hand, table; got 'sand'"]

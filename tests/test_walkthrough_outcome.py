@@ -256,3 +256,31 @@ def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
             "hand",
             "table",
         ]
+
+
+def test_a_registration_is_checked_in_one_line():
+    with pytest.raises(ValueError, match=r"^surface kind 'Soft Mat': a name is lowercase letters"):
+        outcomes.register("Soft Mat", SoftMat)
+    with pytest.raises(TypeError, match=r"^model must be a subclass of OutcomeModel, got 3"):
+        outcomes.register("mat", 3)  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match=r"^build must be callable, got str"):
+        outcomes.register("mat", SoftMat, "build")  # type: ignore[arg-type]
+
+    class Sand(SoftMat):
+        surface_parameters = ("depth",)
+
+    with pytest.raises(ValueError, match=r"^Sand.surface_parameters 'depth': a surface kind take"):
+        outcomes.register("sand", Sand)
+
+    class Broken(SoftMat):
+        @classmethod
+        def from_surface(cls, surface):
+            return 3
+
+    outcomes.register("broken", Broken)
+    try:
+        with pytest.raises(TypeError, match=r"^the builder of surface kind 'broken' gave int, "):
+            outcomes.outcome_model("broken")
+    finally:
+        outcomes.unregister("broken")
+    assert list(outcomes.SURFACE_KINDS) == ["hand", "table"]

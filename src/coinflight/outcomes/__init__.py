@@ -182,7 +182,7 @@ def outcome_model(
     model = kind.build(surface, drag, max_bounces)
     if not isinstance(model, OutcomeModel):
         raise TypeError(
-            f"the builder of surface kind {kind.name!r} gave a {type(model).__name__}, not an "
+            f"the builder of surface kind {kind.name!r} gave {type(model).__name__}, not an "
             "OutcomeModel"
         )
     return model
