@@ -1,8 +1,5 @@
 """The same tosses in a general rigid-body engine: MuJoCo beside coinflight's table landing.
 
-(The study scripts named ``bench_*.py`` below have left the package; git history keeps
-them.)
-
 MuJoCo (optional: ``pip install 'coinflight[mujoco]'``) integrates the coin as a free cylinder
 over a plane with a fixed time step and its soft contact: a spring-damper in constraint space
 with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documentation,
@@ -31,8 +28,7 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   0.005 m) and rolling (:data:`ROLLING`, 0.0001 m) friction, switched on by the contact
   dimension :data:`CONDIM` = 6. MuJoCo's default ``condim`` is 3, with which both
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
-  regular frictional contact", 4 adds torsional friction, 6 adds rolling friction); the
-  comparison ran with 3 before.
+  regular frictional contact", 4 adds torsional friction, 6 adds rolling friction).
 
 How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
@@ -65,55 +61,18 @@ rim. The work is bounded before anything runs (:func:`seconds_estimate`).
 Harder friction. MuJoCo's friction is a soft constraint (it creeps below its limit and builds
 up over the contact's time constant); :class:`FrictionSolver` selects MuJoCo's documented ways
 to make it harder than the normal direction without changing μ: the elliptic cone with
-``impratio`` > 1, and the no-slip pass (``noslip_iterations``). They answer whether MuJoCo's
-soft friction is why it leaves fewer coins on edge than coinflight's contact ending: it is not
-(``bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
-10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
-friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
-impact its friction impulse is already as close to μ J_n as the rigid law's
-(``bench_rim_impacts.py``). What differs is that MuJoCo's coins hop off the rim
-where coinflight's stay on it (the benchmarks' notes), and why is below.
+``impratio`` > 1, and the no-slip pass (``noslip_iterations``).
 
-Why the engines part (measured; the benchmarks' notes). Not the normal law: neither its shape
-(coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
-hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
-decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
-the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44,
-``bench_edge_sensitivity.py 600``; all these counts measured before the joint
-damping of two pressed rims), nor MuJoCo's
-impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
-0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
-convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
-is to generate some motion in the normal direction" (documentation, "Computation", "Physical
-realism and soft contacts", which calls the effect numerically small). Measured, it is not
-small here: a nickel lying flat and sliding at 0.5 m/s with μ 0.3 hops in MuJoCo (in contact
-7 % of 30 ms, lifted up to 54 μm, upward speed up to 32 mm/s; a sliding sphere alike, 6 %),
-decelerating as Coulomb's law says, and stays on the table frictionless (89-100 %); in
-coinflight's contact phase it stays on the table (100 %) with the same deceleration (0.412
-against MuJoCo's 0.408 m/s after 30 ms). The elliptic cone with impratio 100 and the no-slip
-pass leave the lift as it is; a softer contact (time constant 4 ms) shrinks it (upward speed
-12 mm/s, in contact 29 %) without removing it. On the rim alike: a nickel leaning 60° on
-its rim, set sliding at 0.3 m/s along it, is in contact 6 % of the first 10 ms in MuJoCo (88 %
-frictionless) and 100 % in coinflight's phase. So a coin sliding on its rim from the hand-off
-is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in contact), where
-coinflight's keeps sliding on it, pressed by its weight, until friction turns the slide into a
-roll. With MuJoCo's time constant 4 ms (``timeconst``) 27 of the 446 end on edge (0.061 ±
-0.011) against 22 at 1 ms: the contact that lifts less puts a few more coins on edge, within
-the noise. A rigid coin sliding flat on a table stays on it (Coulomb's law, the normal force
-shifting under it), as coinflight's does; which engine is closer to a real coin sliding on its
-rim is not measured.
+Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight, RK4 does not
+(at several times Euler's cost a step): the landing report's comparison has no axial spin and
+keeps Euler; the edge check (:func:`coinflight.studies.landing.edge_check`), whose tosses
+precess, runs RK4.
 
-Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
-tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
-contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
-a step). The landing report's comparison has no axial spin and keeps Euler; the edge check
-(:func:`coinflight.studies.landing.edge_check`), whose tosses precess, runs RK4. Started from
-coinflight's hand-off states, where there is no flight to drift in, Euler and RK4 give the same
-faces at rest (104 tosses: no edge in either).
-
-The benchmark ``bench_bounce.py`` and the landing report
-(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`;
-``bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
+What the comparison found, and why the two engines part on edges, is in the documentation
+(:ref:`physics-mujoco`); the landing report
+(:mod:`coinflight.report.landing`) computes it through
+:func:`coinflight.studies.landing.mujoco_comparison` and
+:func:`coinflight.studies.landing.edge_check`.
 """
 
 from __future__ import annotations
@@ -157,10 +116,9 @@ WINDOW = 0.1
 can no longer change leave the run (:func:`_settled`), so each toss costs the steps it needs."""
 SETTLE = 20.0
 """Longest simulated time after the first contact, s; tosses still moving then are counted by
-the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. At 2 s
-(the previous limit) 1,296 of the landing report's 10⁴ tosses were still moving, most rolling
-on their edge; coins rolling on the sharp rim roll for seconds (the limit's effect is measured
-by :func:`coinflight.studies.landing.edge_check` and ``bench_mujoco_edges.py``)."""
+the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. Coins
+rolling on the sharp rim roll for seconds: a limit of a few seconds leaves many of them
+moving."""
 REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
@@ -177,16 +135,15 @@ POOL = 128
 """Tosses rolled out together (MuJoCo's threads share them); a toss that settles leaves the pool
 and the next one takes its place."""
 STEPS_PER_SECOND = 2.0e5
-"""MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
-214,000 (64 of the landing report's tosses); RK4 35,600 and 39,000 (the
-edge check's 2 × 1,500 tosses), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
+"""MuJoCo steps of one coin a wall second, both threads of the reference 2-core machine,
+Euler (for the work bound; slower integrators by :data:`INTEGRATOR_COST`)."""
 MEAN_CONTACT = 1.0
-"""Mean simulated time after the first contact of a toss that settles, s (for the work bound;
-measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
-both with the tosses still rolling at 20 s, 0.1-0.7 % of them)."""
+"""Mean simulated time after the first contact of a toss that settles, s (for the work bound:
+the report's and the edge check's tosses take one to three seconds, more at higher
+friction)."""
 MOVING_SHARE = 0.1
 """Share of the limit added to :data:`MEAN_CONTACT` for the tosses that roll long (for the work
-bound): 3 s expected after the first contact at the 20 s limit (measured 1.4-2.7 s)."""
+bound): 3 s expected after the first contact at the 20 s limit."""
 FLIGHT = 0.7
 """Longest flight of the compared tosses, launch to first contact, s (v0 ≤ 3 m/s, 0.8 m drop;
 for the work bound)."""
@@ -195,19 +152,16 @@ for the work bound)."""
 CONES = ("pyramidal", "elliptic")
 """MuJoCo's friction cones (``option/cone``)."""
 MAX_NOSLIP_ITERATIONS = 100
-"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). 20 already left
-MuJoCo's edge count where it was (``bench_mujoco_edges.py``'s notes) and cost 1.9
-times a run without them (:data:`NOSLIP_COST`); 100 would cost about 5.5 times, more is work
-without a question it answers."""
+"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). A few tens already
+make MuJoCo's friction hard and double a run's cost (:data:`NOSLIP_COST`); 100 would cost
+about 5.5 times, more is work without a question it answers."""
 IMPRATIO_COST = 1.2
 """Extra cost of a MuJoCo step per decade of ``impratio`` above 10 (for the work bound; a
-stiffer friction needs more solver iterations). Measured (``bench_mujoco_edges.py
-600 --handoff-only --condim 3``, 446 hand-off states, RK4): elliptic impratio 10
-1,154 s wall (no slower than default friction, 1,606 s), impratio 100 2,493 s: 2.2 times."""
+stiffer friction needs more solver iterations: the elliptic cone at impratio 10 runs about as
+fast as the default friction, at 100 about twice as slow)."""
 NOSLIP_COST = 0.045
 """Extra cost of a MuJoCo step per no-slip iteration (for the work bound; each is one more
-sweep over the friction dimensions). Measured as :data:`IMPRATIO_COST`: 20 iterations 2,195 s
-wall against 1,154 s, 1.9 times, i.e. 0.045 per iteration."""
+sweep over the friction dimensions: 20 iterations about double a run's cost)."""
 
 
 SOLIMP = (0.9, 0.95, 0.001)
@@ -612,7 +566,7 @@ def _contact_gap(states: NDArray[np.float64], coin: Coin) -> NDArray[np.float64]
 
 INTEGRATOR_COST = {"Euler": 1.0, "implicitfast": 1.2, "implicit": 1.5, "RK4": 4.0}
 """Cost of a step with each of MuJoCo's integrators over Euler's (for the work bound; RK4
-evaluates the dynamics four times; measured 3.5, 1.5 and 1.1 on 200 tosses)."""
+evaluates the dynamics four times)."""
 
 
 def check_limit(limit: float) -> None:
