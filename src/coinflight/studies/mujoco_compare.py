@@ -309,6 +309,55 @@ DEFAULT_SOLVER = FrictionSolver()
 (the comparison's settings)."""
 
 
+def check_limit(limit: float) -> None:
+    """ValueError unless ``limit`` (the settle limit, s) is a positive finite number."""
+    if not (isinstance(limit, (int, float)) and math.isfinite(limit) and limit > 0.0):
+        raise ValueError(f"the MuJoCo settle limit must be a positive number of s, got {limit!r}")
+
+
+CONDIMS = (1, 3, 4, 6)
+"""MuJoCo's contact dimensions: normal only; + two sliding; + torsional; + two rolling."""
+
+
+@dataclass(frozen=True)
+class Engine:
+    """How MuJoCo computes a run, beyond the surface's restitution and friction (checked on
+    construction; ValueError/TypeError in one line).
+
+    Attributes
+    ----------
+    condim : int
+        MuJoCo's contact dimension, one of :data:`CONDIMS` (default :data:`CONDIM`).
+    torsional, rolling : float
+        MuJoCo's torsional and rolling friction coefficients of both geoms, m (MuJoCo takes the
+        larger of the two geoms'; defaults :data:`TORSIONAL`, :data:`ROLLING`).
+    integrator : str
+        MuJoCo's integrator (default :data:`INTEGRATOR`).
+    solver : FrictionSolver
+        The friction cone, impratio, no-slip pass and contact impedance.
+    limit : float
+        Longest simulated time after the first contact, s (default :data:`SETTLE`).
+    """
+
+    condim: int = CONDIM
+    torsional: float = TORSIONAL
+    rolling: float = ROLLING
+    integrator: str = INTEGRATOR
+    solver: FrictionSolver = DEFAULT_SOLVER
+    limit: float = SETTLE
+
+    def __post_init__(self) -> None:
+        if self.condim not in CONDIMS:
+            raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {self.condim!r}")
+        v.instance("solver", self.solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
+        check_limit(self.limit)
+
+
+DEFAULT_ENGINE = Engine()
+"""The comparison's settings: :data:`CONDIM`, MuJoCo's default torsional and rolling friction,
+its default integrator and friction solver, carried up to :data:`SETTLE` s."""
+
+
 def available() -> bool:
     """True when MuJoCo can be imported."""
     try:
@@ -318,23 +367,16 @@ def available() -> bool:
     return True
 
 
-def _xml(
-    coin: Coin,
-    friction: float,
-    dampratio: float,
-    g: float,
-    integrator: str,
-    condim: int,
-    torsional: float,
-    rolling: float,
-    solver: FrictionSolver = DEFAULT_SOLVER,
-) -> str:
-    friction_text = f"{friction} {torsional} {rolling}"
+def _xml(coin: Coin, friction: float, dampratio: float, g: float, engine: Engine) -> str:
+    solver = engine.solver
+    friction_text = f"{friction} {engine.torsional} {engine.rolling}"
     solref = f"{solver.timeconst!r} {dampratio}"
-    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}" {solver.contact()}'
+    contact = (
+        f'friction="{friction_text}" solref="{solref}" condim="{engine.condim}" {solver.contact()}'
+    )
     return f"""
     <mujoco>
-      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
+      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{engine.integrator}"
               {solver.option()}/>
       <worldbody>
         <geom type="plane" size="5 5 0.1" {contact}/>
@@ -348,27 +390,15 @@ def _xml(
 
 
 def model(
-    coin: Coin,
-    friction: float,
-    dampratio: float,
-    g: float = 9.81,
-    integrator: str = INTEGRATOR,
-    condim: int = CONDIM,
-    torsional: float = TORSIONAL,
-    rolling: float = ROLLING,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    coin: Coin, friction: float, dampratio: float, g: float = 9.81, engine: Engine = DEFAULT_ENGINE
 ) -> Any:
-    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes);
-    ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions); ``torsional`` and ``rolling`` the
-    friction coefficients (m) of both geoms (MuJoCo takes the larger of the two geoms');
-    ``solver`` the friction cone, impratio and no-slip pass (:class:`FrictionSolver`)."""
+    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes), with
+    sliding friction ``friction``, the contact's damping ratio ``dampratio`` and ``engine``'s
+    contact dimension, torsional and rolling friction, integrator and friction solver."""
     import mujoco
 
-    if condim not in (1, 3, 4, 6):
-        raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {condim!r}")
-    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
-    xml = _xml(coin, friction, dampratio, g, integrator, condim, torsional, rolling, solver)
-    return mujoco.MjModel.from_xml_string(xml)
+    v.instance("engine", engine, Engine, "a mujoco_compare.Engine")
+    return mujoco.MjModel.from_xml_string(_xml(coin, friction, dampratio, g, engine))
 
 
 def flat_drop_restitution(
@@ -376,21 +406,20 @@ def flat_drop_restitution(
     speed: float,
     dampratio: float,
     g: float = 9.81,
-    integrator: str = INTEGRATOR,
-    condim: int = CONDIM,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> float:
     """MuJoCo's normal restitution: the coin dropped flat at ``speed`` (m/s), without spin;
-    its largest upward speed after the impact over ``speed`` (with the friction ``solver``'s
-    cone and impedances, so that the calibration is that of the compared model)."""
+    its largest upward speed after the impact over ``speed`` (with ``engine``'s integrator,
+    contact dimension, friction cone and impedances, so that the calibration is that of the
+    compared model)."""
     import mujoco
 
-    m = model(coin, 0.0, dampratio, g, integrator, condim, solver=solver)
+    m = model(coin, 0.0, dampratio, g, engine)
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
     best = -speed
-    for _ in range(int(5 * solver.timeconst / TIMESTEP) + 100):
+    for _ in range(int(5 * engine.solver.timeconst / TIMESTEP) + 100):
         mujoco.mj_step(m, d)
         best = max(best, float(d.qvel[2]))
     return best / speed
@@ -401,21 +430,20 @@ def calibrated_damping(
     restitution: float,
     speed: float,
     g: float = 9.81,
-    condim: int = CONDIM,
-    integrator: str = INTEGRATOR,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> float:
-    """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`) at
-    ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach it."""
+    """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`, with
+    ``engine``) at ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach
+    it."""
     from scipy.optimize import brentq
 
     def excess(z: float) -> float:
-        return flat_drop_restitution(coin, speed, z, g, integrator, condim, solver) - restitution
+        return flat_drop_restitution(coin, speed, z, g, engine) - restitution
 
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
         raise ValueError(
-            f"MuJoCo's contact (time constant {solver.timeconst:g} s) cannot rebound at "
+            f"MuJoCo's contact (time constant {engine.solver.timeconst:g} s) cannot rebound at "
             f"restitution {restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
             f"{excess(lo) + restitution:.3g}"
         )
@@ -446,24 +474,17 @@ class MujocoRun:
     threads : int
     version : str
         MuJoCo's version.
-    condim : int
-        MuJoCo's contact dimension (:data:`CONDIM`).
+    engine : Engine
+        MuJoCo's contact dimension, torsional and rolling friction, integrator, friction solver
+        and the settle limit (:attr:`limit`).
     restitution_by_speed : dict
         Flat-drop restitution of the calibrated contact at :data:`PROBE_SPEEDS` and at the
         landing speed ({speed m/s: e}).
-    limit : float
-        Longest simulated time after the first contact, s.
-    torsional, rolling : float
-        MuJoCo's torsional and rolling friction coefficients, m.
     steps : int
         MuJoCo steps taken in all (the cost: each toss stops at the window in which it settled).
-    integrator : str
-        MuJoCo's integrator (:data:`INTEGRATOR` unless asked otherwise).
     edge_time : ndarray
         Simulated time after the first contact spent in the edge band (the heads normal within
         arctan(h/d) of the horizontal: upright on the rim, rolling or standing), s.
-    solver : FrictionSolver
-        MuJoCo's friction cone, impratio and no-slip iterations.
     """
 
     first: NDArray[np.int8]
@@ -474,16 +495,16 @@ class MujocoRun:
     elapsed: float
     threads: int
     version: str
-    condim: int = CONDIM
+    engine: Engine = DEFAULT_ENGINE
     restitution_by_speed: dict[float, float] = field(default_factory=dict)
     rest_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
-    limit: float = SETTLE
-    torsional: float = TORSIONAL
-    rolling: float = ROLLING
     steps: int = 0
-    integrator: str = INTEGRATOR
     edge_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
-    solver: FrictionSolver = DEFAULT_SOLVER
+
+    @property
+    def limit(self) -> float:
+        """Longest simulated time after the first contact, s (the engine's)."""
+        return self.engine.limit
 
     @property
     def unsettled(self) -> int:
@@ -492,19 +513,20 @@ class MujocoRun:
 
     def settings(self, friction: float) -> dict[str, Any]:
         """Every setting of the run, for reports (JSON-ready)."""
+        engine = self.engine
         return {
             "mujoco": self.version,
-            "integrator": self.integrator,
+            "integrator": engine.integrator,
             "timestep": TIMESTEP,
-            "solref": [self.solver.timeconst, self.dampratio],
+            "solref": [engine.solver.timeconst, self.dampratio],
             "flat_drop_restitution": self.restitution,
-            "friction": [friction, self.torsional, self.rolling],
-            "condim": self.condim,
+            "friction": [friction, engine.torsional, engine.rolling],
+            "condim": engine.condim,
             "flat_drop_restitution_by_speed": [
                 [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
             ],
-            **self.solver.settings(),
-            "settle_limit": self.limit,
+            **engine.solver.settings(),
+            "settle_limit": engine.limit,
             "settle_window": WINDOW,
             "rest_speed": REST_SPEED,
             "rest_spin": REST_SPIN,
@@ -567,12 +589,6 @@ def _contact_gap(states: NDArray[np.float64], coin: Coin) -> NDArray[np.float64]
 INTEGRATOR_COST = {"Euler": 1.0, "implicitfast": 1.2, "implicit": 1.5, "RK4": 4.0}
 """Cost of a step with each of MuJoCo's integrators over Euler's (for the work bound; RK4
 evaluates the dynamics four times)."""
-
-
-def check_limit(limit: float) -> None:
-    """ValueError unless ``limit`` (the settle limit, s) is a positive finite number."""
-    if not (isinstance(limit, (int, float)) and math.isfinite(limit) and limit > 0.0):
-        raise ValueError(f"the MuJoCo settle limit must be a positive number of s, got {limit!r}")
 
 
 def seconds_estimate(
@@ -724,32 +740,16 @@ def _carry(
 
 
 def _calibrated(
-    coin: Coin,
-    restitution: float,
-    friction: float,
-    speed: float,
-    g: float,
-    condim: int,
-    torsional: float,
-    rolling: float,
-    integrator: str,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    coin: Coin, restitution: float, friction: float, speed: float, g: float, engine: Engine
 ) -> tuple[Any, float, float, dict[float, float]]:
     """(model, damping ratio, flat-drop restitution at ``speed``, restitution by speed): the
     contact's damping calibrated so that a flat drop at ``speed`` rebounds at e."""
-    zeta = (
-        calibrated_damping(coin, restitution, speed, g, condim, integrator, solver)
-        if restitution > 0
-        else 1.0
-    )
-    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim, solver)
+    zeta = calibrated_damping(coin, restitution, speed, g, engine) if restitution > 0 else 1.0
     by_speed = {
-        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim, solver)
-        for probe in PROBE_SPEEDS
+        probe: flat_drop_restitution(coin, probe, zeta, g, engine)
+        for probe in (*PROBE_SPEEDS, speed)
     }
-    by_speed[speed] = e_mujoco
-    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling, solver)
-    return m, zeta, e_mujoco, by_speed
+    return model(coin, friction, zeta, g, engine), zeta, by_speed[speed], by_speed
 
 
 def _rollout(
@@ -760,52 +760,40 @@ def _rollout(
     calibration_speed: float,
     g: float,
     threads: int | None,
-    condim: int,
-    limit: float,
-    torsional: float,
-    rolling: float,
-    integrator: str,
+    engine: Engine,
     states: Callable[[Any, Any], NDArray[np.float64]],
     clocks: NDArray[np.float64],
     horizon: float,
-    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
-    """What :func:`run` and :func:`run_from` share: the limit and the work bound checked
-    before anything is computed, the model calibrated at ``calibration_speed`` (m/s), one
-    MjData per worker, the ``n`` initial ``states(model, data)`` carried (:func:`_carry`, from
-    ``clocks`` s, for at most ``horizon`` s before a first contact) and the run reported."""
+    """What :func:`run` and :func:`run_from` share: the work bound checked before anything is
+    computed, the model calibrated at ``calibration_speed`` (m/s), one MjData per worker, the
+    ``n`` initial ``states(model, data)`` carried (:func:`_carry`, from ``clocks`` s, for at
+    most ``horizon`` s before a first contact) and the run reported."""
     import mujoco
 
     t0 = time.perf_counter()
-    check_limit(limit)
-    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
-    bound([n], limit, integrator, solver)
+    v.instance("engine", engine, Engine, "a mujoco_compare.Engine")
+    bound([n], engine.limit, engine.integrator, engine.solver)
     m, zeta, e_mujoco, by_speed = _calibrated(
-        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator,
-        solver,
-    )  # fmt: skip
+        coin, restitution, friction, calibration_speed, g, engine
+    )
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
-    carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, limit, horizon)
+    carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, engine.limit, horizon)
     return MujocoRun(
-        carried.first,
-        carried.rest,
-        carried.moving,
-        zeta,
-        e_mujoco,
-        time.perf_counter() - t0,
-        workers,
-        mujoco.__version__,
-        condim,
-        by_speed,
-        carried.rest_time,
-        limit,
-        torsional,
-        rolling,
-        carried.steps,
-        integrator,
-        carried.edge_time,
-        solver,
+        first=carried.first,
+        rest=carried.rest,
+        moving=carried.moving,
+        dampratio=zeta,
+        restitution=e_mujoco,
+        elapsed=time.perf_counter() - t0,
+        threads=workers,
+        version=mujoco.__version__,
+        engine=engine,
+        restitution_by_speed=by_speed,
+        rest_time=carried.rest_time,
+        steps=carried.steps,
+        edge_time=carried.edge_time,
     )
 
 
@@ -827,7 +815,8 @@ def run(
     solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
-    above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings.
+    above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings
+    (``condim`` … ``solver``: those of :class:`Engine`).
 
     Each toss is carried until it has settled (:func:`_settled`) or ``limit`` s past its first
     contact, whichever comes first; those still moving at the limit are counted
@@ -835,6 +824,7 @@ def run(
     before anything is computed. ``solver`` makes MuJoCo's friction harder than its default
     (:class:`FrictionSolver`). ImportError when MuJoCo is not installed.
     """
+    engine = Engine(condim, torsional, rolling, integrator, solver, limit)
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
     n = len(v0)
@@ -843,9 +833,8 @@ def run(
     mean = float(np.mean(v0)) if n else 0.0
     landing_speed = math.sqrt(mean**2 + 2.0 * g * drop_height)
     return _rollout(
-        coin, n, restitution, friction, landing_speed, g, threads, condim, limit, torsional,
-        rolling, integrator, lambda m, data: _launch_states(m, data, omega, v0, drop_height),
-        v0 / g, flight + 0.5, solver,
+        coin, n, restitution, friction, landing_speed, g, threads, engine,
+        lambda m, data: _launch_states(m, data, omega, v0, drop_height), v0 / g, flight + 0.5,
     )  # fmt: skip
 
 
@@ -870,28 +859,21 @@ def run_from(
     calibration_speed: float,
     g: float = 9.81,
     threads: int | None = None,
-    condim: int = CONDIM,
-    *,
-    limit: float = SETTLE,
-    torsional: float = TORSIONAL,
-    rolling: float = ROLLING,
-    integrator: str = INTEGRATOR,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> MujocoRun:
     """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
     heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
     (coinflight's state at its hand-off to the contact phase, for example), carried as in
-    :func:`run` (the first contact is their first touch of the plane; the contact damping
-    calibrated at ``calibration_speed``, m/s)."""
+    :func:`run` with ``engine``'s settings (the first contact is their first touch of the
+    plane; the contact damping calibrated at ``calibration_speed``, m/s)."""
     z = np.asarray(height, dtype=float).reshape(-1)
     vel = np.asarray(velocity, dtype=float).reshape(-1, 3)
     nrm = np.asarray(normal, dtype=float).reshape(-1, 3)
     nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
     w_lab = np.asarray(omega, dtype=float).reshape(-1, 3)
     return _rollout(
-        coin, len(z), restitution, friction, calibration_speed, g, threads, condim, limit,
-        torsional, rolling, integrator, lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab),
-        np.zeros(len(z)), 1.0, solver,
+        coin, len(z), restitution, friction, calibration_speed, g, threads, engine,
+        lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab), np.zeros(len(z)), 1.0,
     )  # fmt: skip
 
 
@@ -924,8 +906,10 @@ def _placed_states(
 
 __all__ = [
     "CONDIM",
+    "CONDIMS",
     "CONE",
     "CONES",
+    "DEFAULT_ENGINE",
     "DEFAULT_SOLVER",
     "INTEGRATOR",
     "MAX_NOSLIP_ITERATIONS",
@@ -935,6 +919,7 @@ __all__ = [
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",
+    "Engine",
     "FrictionSolver",
     "MujocoRun",
     "available",
