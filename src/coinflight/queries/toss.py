@@ -122,20 +122,40 @@ def landing_line(out: LandingOutcome) -> str:
     return f"{start} (at t = {settle:.4f} s; {status})"
 
 
+def air_catch(coin: Coin, toss: Toss, drag: Drag) -> tuple[dict[str, Any], str]:
+    """One toss caught in the hand at launch height after its flight through air
+    (:func:`coinflight.outcomes.air.catch_with_drag`): the JSON fields (face, catch time in s
+    since launch) and one line."""
+    from coinflight.core.outcome import FACE_NAMES
+    from coinflight.outcomes.air import catch_with_drag
+
+    face, when = catch_with_drag(
+        coin, toss.omega.reshape(1, 3), toss.launch_speed, toss.start_sign, toss.g, drag
+    )
+    name, t = FACE_NAMES[int(face[0])], float(when[0])
+    return {"outcome": name, "catch_time": t}, (
+        f"caught at launch height at t = {t:.4f} s, {name.upper()} up"
+    )
+
+
 def landing_report(
     coin: Coin, toss: Toss, surface: Surface, drag: Drag | None, bounces: int | None
 ) -> tuple[dict[str, Any], str, OutcomeModel]:
     """A table landing or a flight through air: the JSON object, the one-line report (a table
-    landing's by :func:`landing_fields` and :func:`landing_line`, a catch through air the
-    model's own) and the model (for its description)."""
+    landing's by :func:`landing_fields` and :func:`landing_line`, a catch through air's by
+    :func:`air_catch`, a model registered from outside its own ``report``) and the model (for
+    its description)."""
     from coinflight.outcomes import outcome_model
+    from coinflight.outcomes.air import DragCatch
     from coinflight.outcomes.table import Landing, TableLanding
 
     model = outcome_model(surface, drag, bounces)
     if isinstance(model, TableLanding):
         landed = Landing(coin, toss, model.surface, model.drag, model.max_bounces).outcome
         payload, line = landing_fields(landed), landing_line(landed)
-    else:
+    elif isinstance(model, DragCatch):
+        payload, line = air_catch(coin, toss, model.drag)
+    else:  # a model registered from outside: its own report
         payload, line = model.report(coin, toss)
     payload.update(model.to_dict())
     payload.update(
@@ -184,6 +204,7 @@ def trajectory(flight: Flight, k: int) -> dict[str, Any]:
 __all__ = [
     "MAX_TRAJECTORY",
     "TossQuery",
+    "air_catch",
     "catch_payload",
     "landing_fields",
     "landing_line",
