@@ -780,25 +780,26 @@ def test_decided_upright_is_the_status_exactly_where_the_decision_ended_the_phas
 def test_contact_ending_describe_says_its_time_is_the_decisions():
     # The contact ending's settle_time is when the outcome was decided (at rest or below the
     # barrier: "settled in contact"; an upright roller decided on edge, possibly still rolling:
-    # "decided upright"): describe() says which, with the settle_time it reports. The two
+    # "decided upright"): the line says which, with the settle_time it reports. The two
     # tosses found by a scan of ωx and T (drop 0.5 m, e 0.3, μ 0.3, ℓ_r = ℓ_p = 1e-4 m).
     from coinflight import Toss
     from coinflight.outcomes.table import Landing
+    from coinflight.queries.toss import landing_fields, landing_line
 
     surface = Surface(
         "table", 0.5, 0.3, ending="contact", rolling_resistance=1e-4, pivoting_resistance=1e-4
     )
     landing = Landing(NICKEL, Toss((240.0, 5.0, 3.0), 0.49), surface)
-    out = landing.to_dict()
+    out = landing_fields(landing.outcome)
     assert out["status"] == "settled in contact"
-    text = landing.describe()
+    text = landing_line(landing.outcome)
     assert f"decided at t = {out['settle_time']:.4f} s" in text
     assert "at rest or below its well's barrier; settled in contact" in text
     landing = Landing(NICKEL, Toss((220.0, 5.0, 3.0), 0.48), surface)
-    out = landing.to_dict()
+    out = landing_fields(landing.outcome)
     assert (out["outcome"], out["status"]) == ("edge", "decided upright")
     assert int(landing.outcome.status) == Status.DECIDED_UPRIGHT
-    text = landing.describe()
+    text = landing_line(landing.outcome)
     assert f"decided at t = {out['settle_time']:.4f} s while rolling upright" in text
     assert "a measured predictor of ending on edge, not a proof; decided upright" in text
 

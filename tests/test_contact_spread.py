@@ -187,8 +187,10 @@ def test_monte_carlo_over_friction_is_seeded_and_reported():
         estimate(fixed, "monte-carlo", n=2000, seed=3, model=TABLE).counts
         == estimate(plain, "monte-carlo", n=2000, seed=3, model=TABLE).counts
     )
-    assert "normal(0.4, sd 0.1) truncated to [0, 3]" in TABLE.describe_for(d)
-    settings = TABLE.settings_for(d)
+    from coinflight.queries.landing import describe_for, settings_for
+
+    assert "normal(0.4, sd 0.1) truncated to [0, 3]" in describe_for(TABLE, d)
+    settings = settings_for(TABLE, d)
     assert settings["friction"] == {
         "kind": "truncated-normal",
         "mean": 0.4,

@@ -5,7 +5,7 @@ a built page loaded from another host.
 A small site is built with the docs' theme and math extension and the real ``physics.rst`` (the
 full build, gallery and API reference, takes minutes: ``make docs``; ``make test`` builds it
 before the tests, and every page of it is then read too). Its HTML and CSS are read
-for outside addresses; Debian's Chromium, driven by Playwright as in ``test_web_browser.py``,
+for outside addresses; Debian's Chromium, driven by Playwright (``tests/_chromium.py``),
 opens the page with every request to another host refused and checks that MathJax typeset the
 equations. The screenshot of the rendered equations is the run's artefact, in the test's own
 temporary folder ``docs-math0/`` (``pytest --basetemp=test-artefacts`` keeps it).
@@ -13,23 +13,20 @@ temporary folder ``docs-math0/`` (``pytest --basetemp=test-artefacts`` keeps it)
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import subprocess
 import sys
-import tempfile
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import urlparse
 
 import pytest
 
+from _chromium import IN_CI, browser_or_skip, chromium
 from _images import assert_nontrivial
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
-CHROMIUM = Path(os.environ.get("COINFLIGHT_CHROMIUM", "/usr/bin/chromium"))
-IN_CI = os.environ.get("CI", "").strip().lower() not in ("", "0", "false", "no")
 CONF = f"""
 import sys
 sys.path.insert(0, {str(DOCS / "_ext")!r})
@@ -127,69 +124,37 @@ def test_mathjax_ships_with_its_fonts_and_licence(site: Path) -> None:
     assert "MathJax_Main-Regular.woff" in fonts and len(fonts) == 23
 
 
-def _browser_or_skip() -> None:
-    problem = None
-    try:
-        import playwright.sync_api  # noqa: F401
-    except ImportError:
-        problem = "Playwright for Python is missing: pip install -e '.[dev]'"
-    if problem is None and not (CHROMIUM.is_file() and os.access(CHROMIUM, os.X_OK)):
-        problem = f"{CHROMIUM} is missing: `make chromium` installs Debian's chromium"
-    if problem is not None:
-        if IN_CI:
-            pytest.fail(f"the browser test cannot run in CI: {problem}")
-        pytest.skip(problem)
-
-
 def test_the_equations_render_with_no_network(
     site: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:
     """Chromium, every request to another host refused: MathJax typesets every equation of
     physics.html (no raw ``\\frac`` left on the page) and nothing was asked of another host."""
-    _browser_or_skip()
-    from playwright.sync_api import sync_playwright
-
+    browser_or_skip()
     shots = tmp_path_factory.mktemp("docs-math")
     refused: list[str] = []
     problems: list[str] = []
-    profile = tempfile.mkdtemp(prefix="coinflight-chromium-")
-    try:
-        with sync_playwright() as pw:
-            context = pw.chromium.launch_persistent_context(
-                profile,
-                executable_path=str(CHROMIUM),
-                args=["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run"],
-                headless=True,
-                viewport={"width": 1200, "height": 900},
-            )
-            try:
+    with chromium(viewport={"width": 1200, "height": 900}) as context:
 
-                def route(r):  # type: ignore[no-untyped-def]
-                    if r.request.url.startswith("file://"):
-                        return r.continue_()
-                    refused.append(r.request.url)
-                    return r.abort()
+        def route(r):  # type: ignore[no-untyped-def]
+            if r.request.url.startswith("file://"):
+                return r.continue_()
+            refused.append(r.request.url)
+            return r.abort()
 
-                context.route("**/*", route)
-                page = context.new_page()
-                page.on("pageerror", lambda e: problems.append(f"uncaught: {e}"))
-                page.goto((site / "physics.html").as_uri())
-                page.wait_for_function(
-                    "() => window.MathJax && MathJax.startup && MathJax.startup.promise"
-                )
-                page.evaluate("() => MathJax.startup.promise")
-                count = page.locator("mjx-container").count()
-                errors = page.locator("mjx-merror").all_inner_texts()  # TeX MathJax refused
-                display = page.locator("mjx-container[display=true]").first
-                display.scroll_into_view_if_needed()
-                shot = shots / "physics-equation.png"
-                display.screenshot(path=str(shot))
-                page.screenshot(path=str(shots / "physics-page.png"))
-                text = page.locator("article").inner_text()
-            finally:
-                context.close()
-    finally:
-        shutil.rmtree(profile, ignore_errors=True)
+        context.route("**/*", route)
+        page = context.new_page()
+        page.on("pageerror", lambda e: problems.append(f"uncaught: {e}"))
+        page.goto((site / "physics.html").as_uri())
+        page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise")
+        page.evaluate("() => MathJax.startup.promise")
+        count = page.locator("mjx-container").count()
+        errors = page.locator("mjx-merror").all_inner_texts()  # TeX MathJax refused
+        display = page.locator("mjx-container[display=true]").first
+        display.scroll_into_view_if_needed()
+        shot = shots / "physics-equation.png"
+        display.screenshot(path=str(shot))
+        page.screenshot(path=str(shots / "physics-page.png"))
+        text = page.locator("article").inner_text()
     assert refused == [] and problems == []
     assert errors == []
     assert count >= 20  # physics.rst's display and inline equations, each typeset

@@ -307,7 +307,7 @@ def test_mujoco_contacts_carry_torsional_and_rolling_friction():
     mujoco.mj_forward(m, d)
     assert d.ncon > 0 and all(d.contact[i].dim == 6 for i in range(d.ncon))
     with pytest.raises(ValueError, match="MuJoCo condim must be 1, 3, 4 or 6, got 5"):
-        mujoco_compare.model(coin, 0.3, 0.5, condim=5)
+        mujoco_compare.Engine(condim=5)
 
 
 def test_the_report_compares_both_endings_with_mujoco(written):

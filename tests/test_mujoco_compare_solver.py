@@ -20,10 +20,11 @@ NICKEL = Coin.preset("us-nickel")
 
 
 def test_the_solver_reaches_the_model():
-    m = mc.model(NICKEL, 0.3, 0.5, condim=3, solver=mc.FrictionSolver("elliptic", 10.0, 0))
+    hard = mc.FrictionSolver("elliptic", 10.0, 0)
+    m = mc.model(NICKEL, 0.3, 0.5, engine=mc.Engine(condim=3, solver=hard))
     assert m.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and m.opt.impratio == 10.0
     assert m.opt.noslip_iterations == 0
-    m = mc.model(NICKEL, 0.3, 0.5, solver=mc.FrictionSolver(noslip_iterations=20))
+    m = mc.model(NICKEL, 0.3, 0.5, engine=mc.Engine(solver=mc.FrictionSolver(noslip_iterations=20)))
     assert m.opt.cone == mujoco.mjtCone.mjCONE_PYRAMIDAL and m.opt.impratio == 1.0
     assert m.opt.noslip_iterations == 20
     # The default is MuJoCo's: the comparison's model is unchanged.
@@ -36,7 +37,7 @@ def test_numpy_numbers_reach_the_model_as_numbers():
     solver = mc.FrictionSolver("elliptic", np.float64(10.0), np.int64(5))
     assert type(solver.impratio) is float and type(solver.noslip_iterations) is int
     assert 'impratio="10.0"' in solver.option() and "np." not in solver.option()
-    m = mc.model(NICKEL, 0.3, 0.5, condim=3, solver=solver)
+    m = mc.model(NICKEL, 0.3, 0.5, engine=mc.Engine(condim=3, solver=solver))
     assert m.opt.impratio == 10.0 and m.opt.noslip_iterations == 5
     assert solver == mc.FrictionSolver("elliptic", 10.0, 5)
 
@@ -87,13 +88,13 @@ def test_a_harder_solver_raises_the_work_estimate():
 
 def test_a_solver_must_be_a_friction_solver():
     with pytest.raises(TypeError, match=r"solver must be a mujoco_compare\.FrictionSolver"):
-        mc.model(NICKEL, 0.3, 0.5, solver="elliptic")  # type: ignore[arg-type]
+        mc.Engine(solver="elliptic")  # type: ignore[arg-type]
 
 
 def _creep(solver: mc.FrictionSolver) -> float:
     """Distance (m) a nickel lying flat creeps in 0.5 s under a horizontal push of half its
     friction limit (μ 0.3, condim 3): Coulomb friction would hold it still."""
-    m = mc.model(NICKEL, 0.3, 1.0, condim=3, solver=solver)
+    m = mc.model(NICKEL, 0.3, 1.0, engine=mc.Engine(condim=3, solver=solver))
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, NICKEL.thickness / 2)
     for _ in range(2000):  # settle, 0.2 s
@@ -129,11 +130,9 @@ def test_a_run_reports_its_solver():
         0.3,
         1.0,
         threads=1,
-        condim=3,
-        limit=0.5,
-        solver=solver,
+        engine=mc.Engine(condim=3, limit=0.5, solver=solver),
     )
-    assert run.solver == solver
+    assert run.engine.solver == solver
     settings = run.settings(0.3)
     assert settings["cone"] == "elliptic" and settings["impratio"] == 10.0
     assert settings["noslip_iterations"] == 5
@@ -151,7 +150,7 @@ def test_solimp_reaches_the_model_and_the_default_is_mujocos():
     assert mc.DEFAULT_SOLVER.solimp == mc.SOLIMP == tuple(plain.geom_solimp[0, :3])
     soft = mc.FrictionSolver(solimp=(np.float64(0.1), 0.95, 3e-5))
     assert type(soft.solimp[0]) is float and "np." not in soft.contact()
-    m = mc.model(NICKEL, 0.3, 0.5, condim=3, solver=soft)
+    m = mc.model(NICKEL, 0.3, 0.5, engine=mc.Engine(condim=3, solver=soft))
     assert np.allclose(m.geom_solimp[:, :3], [[0.1, 0.95, 3e-5]] * 2, rtol=0, atol=0)
     assert np.allclose(m.geom_solimp[:, 3:], plain.geom_solimp[0, 3:], rtol=0, atol=0)
     assert soft.settings()["solimp"] == [0.1, 0.95, 3e-5]
@@ -173,8 +172,8 @@ def test_a_soft_first_touch_lengthens_a_slow_rim_contact():
     # nickel dropped upright on its rim at 0.1 m/s stays in contact longer with d0 = 0.1 than
     # with MuJoCo's default 0.9 (each with the damping calibrated to e 0.5 by a flat drop).
     def contact_steps(solver):
-        zeta = mc.calibrated_damping(NICKEL, 0.5, 2.0, condim=3, solver=solver)
-        m = mc.model(NICKEL, 0.0, zeta, condim=3, solver=solver)
+        zeta = mc.calibrated_damping(NICKEL, 0.5, 2.0, engine=mc.Engine(condim=3, solver=solver))
+        m = mc.model(NICKEL, 0.0, zeta, engine=mc.Engine(condim=3, solver=solver))
         d = mujoco.MjData(m)
         d.qpos[:3] = (0.0, 0.0, NICKEL.radius + 1e-6)
         d.qpos[3:7] = (math.sqrt(0.5), math.sqrt(0.5), 0.0, 0.0)  # heads normal horizontal
@@ -198,7 +197,7 @@ def test_timeconst_reaches_the_model_and_the_settings():
     assert np.all(m.geom_solref == [[mc.TIMECONST, 0.25]] * 2)
     slow = mc.FrictionSolver(timeconst=np.float64(4e-3))
     assert type(slow.timeconst) is float
-    m = mc.model(NICKEL, 0.3, 0.25, solver=slow)
+    m = mc.model(NICKEL, 0.3, 0.25, engine=mc.Engine(solver=slow))
     assert np.all(m.geom_solref == [[4e-3, 0.25]] * 2)
     assert slow.settings()["timeconst"] == 4e-3
 
@@ -224,8 +223,8 @@ def test_a_timeconst_that_is_not_one_number_is_refused(tau):
 def _flat_slide_in_mujoco(friction):
     """A nickel lying flat on the plane, set sliding at 0.5 m/s: (share of 300 steps in
     contact, largest upward speed m/s) in MuJoCo (condim 3, the comparison's settings)."""
-    zeta = mc.calibrated_damping(NICKEL, 0.5, 4.55, condim=3, integrator="Euler")
-    m = mc.model(NICKEL, friction, zeta, condim=3, integrator="Euler")
+    zeta = mc.calibrated_damping(NICKEL, 0.5, 4.55, engine=mc.Engine(condim=3, integrator="Euler"))
+    m = mc.model(NICKEL, friction, zeta, engine=mc.Engine(condim=3, integrator="Euler"))
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, NICKEL.thickness / 2)
     for _ in range(300):  # settle at rest on the face

@@ -139,7 +139,7 @@ def test_run_from_places_coins_as_given():
         0.3,
         3.0,
         threads=1,
-        limit=0.3,
+        engine=mujoco_compare.Engine(limit=0.3),
     )
     assert run.first.tolist() == [0, EDGE] and run.rest.tolist() == [0, EDGE]
     assert run.moving.tolist() == [False, True]

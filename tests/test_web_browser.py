@@ -18,12 +18,9 @@ a CI machine that lost the browser cannot pass silently.
 from __future__ import annotations
 
 import json
-import os
 import re
-import shutil
 import subprocess
 import sys
-import tempfile
 import time
 import urllib.error
 import urllib.parse
@@ -33,48 +30,22 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from tests._chromium import browser_or_skip, chromium
 from tests._cli import runner
 from tests._images import assert_nontrivial, colour_fraction, load_rgb
 
 from coinflight.cli import app
 
-CHROMIUM = Path(os.environ.get("COINFLIGHT_CHROMIUM", "/usr/bin/chromium"))
-CHROMIUM_ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
-IN_CI = os.environ.get("CI", "").strip().lower() not in ("", "0", "false", "no")
 HEADS = "#0072B2"  # coinflight.plotting.style.HEADS_COLOR, the page's heads colour
 TAILS = "#E69F00"  # TAILS_COLOR
 WAIT_MS = 60_000  # a first request compiles numba kernels: seconds on a busy machine
-
-
-def _browser_or_skip() -> None:
-    """Skip (workstation) or fail (CI) when the browser or its driver is missing."""
-    problem = None
-    try:
-        import playwright.sync_api  # noqa: F401
-    except ImportError:
-        problem = "Playwright for Python is missing: pip install -e '.[dev]'"
-    if problem is None and not (CHROMIUM.is_file() and os.access(CHROMIUM, os.X_OK)):
-        problem = f"{CHROMIUM} is missing: `make chromium` installs Debian's chromium"
-    if problem is not None:
-        if IN_CI:
-            pytest.fail(f"the browser tests cannot run in CI: {problem}")
-        pytest.skip(problem)
 
 
 # --------------------------------------------------------------------------- the server
 @pytest.fixture(scope="module")
 def server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
     """``coinflight serve`` on a free loopback port; its address (``http://127.0.0.1:PORT``)."""
-    _browser_or_skip()
+    browser_or_skip()
     log = tmp_path_factory.mktemp("serve") / "serve.log"
     with log.open("w") as out:
         proc = subprocess.Popen(
@@ -128,25 +99,8 @@ def refusal(server: str, path: str, **params: object) -> tuple[int, str]:
 @pytest.fixture(scope="module")
 def browser_context(server: str) -> Iterator[Any]:
     """Chromium with a fresh profile in a temporary folder, deleted afterwards."""
-    from playwright.sync_api import sync_playwright
-
-    profile = tempfile.mkdtemp(prefix="coinflight-chromium-")
-    try:
-        with sync_playwright() as pw:
-            context = pw.chromium.launch_persistent_context(
-                profile,
-                executable_path=str(CHROMIUM),
-                args=CHROMIUM_ARGS,
-                headless=True,
-                viewport={"width": 1400, "height": 900},
-                base_url=server,
-            )
-            try:
-                yield context
-            finally:
-                context.close()
-    finally:
-        shutil.rmtree(profile, ignore_errors=True)
+    with chromium(viewport={"width": 1400, "height": 900}, base_url=server) as context:
+        yield context
 
 
 class Problems:

@@ -23,6 +23,7 @@ from coinflight.cli.options import (
 from coinflight.cli.presets import given_toss_options
 from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
+from coinflight.queries.landing import describe_for
 from coinflight.queries.probability import result_notes, result_warnings
 
 if TYPE_CHECKING:
@@ -149,7 +150,7 @@ def _report(
     typer.echo(dist.describe())
     typer.echo(_gravity_line(dist.g, launch_speed))
     if landing is not None:
-        typer.echo(landing.model.describe_for(dist))
+        typer.echo(describe_for(landing.model, dist))
     typer.echo(result.describe())
     line = f"P(tails) = {result.p_tails:.6f}, P(same side) = {result.p_same_side:.6f}"
     if landing is not None and landing.model.can_end_on_edge:

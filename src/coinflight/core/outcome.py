@@ -53,10 +53,8 @@ class Status(IntEnum):
     """The bounces died out; the coin then rolled in contact with the surface in 3-D (as
     :attr:`SETTLED_CONTACT`) until it rolled upright in its edge band within the limits of
     :func:`coinflight.core.contact_phase.upright_decided`, and was ended there on edge. That
-    decision is a measured predictor of ending on edge (0 disagreements in 961 decisions at
-    rolling and pivoting resistance 1e-5 m and in 737 at the default 1e-4 m, the latter counted
-    before an unsettled carry counted as a disagreement, ``bench_contact.py``;
-    :mod:`coinflight.core.contact_phase`, "Upright rollers"), not a proof: the coin
+    decision is a predictor of ending on edge, checked by carrying the same coins on to rest
+    (:mod:`coinflight.core.contact_phase`, "Upright rollers"), not a proof: the coin
     may still be rolling then (at up to about 1 m/s), and its settle time is the decision's."""
 
     @property

@@ -29,7 +29,6 @@ from coinflight.outcomes.base import (
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
     from coinflight.model.ensemble import TossDistribution
-    from coinflight.model.toss import Toss
 
 DRAG_TOSSES_PER_SECOND = 4e4
 """Hand catches through air a second, for the work bounds: a US nickel, ωx 150-300 rad/s,
@@ -159,16 +158,6 @@ class DragCatch(OutcomeModel):
 
     def to_dict(self) -> dict[str, Any]:
         return {"surface": "hand", "drag": drag_dict(self.drag)}
-
-    def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
-        from coinflight.core.outcome import FACE_NAMES
-
-        face, when = catch_with_drag(
-            coin, toss.omega.reshape(1, 3), toss.launch_speed, toss.start_sign, toss.g, self.drag
-        )
-        name = FACE_NAMES[int(face[0])]
-        line = f"caught at launch height at t = {float(when[0]):.4f} s, {name.upper()} up"
-        return {"outcome": name, "catch_time": float(when[0])}, line
 
 
 __all__ = ["DRAG_TOSSES_PER_SECOND", "DragCatch", "catch_with_drag", "check_air", "drag_model"]

@@ -124,15 +124,6 @@ class OutcomeModel:
         """JSON description of the model's settings (surface and air)."""
         return {"surface": self.name}
 
-    def describe_for(self, dist: TossDistribution | None) -> str:
-        """:meth:`describe` for the tosses ``dist`` (a model that takes contact distributions
-        names those of ``dist`` in place of its surface's values)."""
-        return self.describe()
-
-    def settings_for(self, dist: TossDistribution | None) -> dict[str, Any]:
-        """:meth:`to_dict` for the tosses ``dist`` (as :meth:`describe_for`)."""
-        return self.to_dict()
-
     def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
         """One toss: (JSON fields, one line of text). By default the face of :meth:`faces`."""
         face = self.faces(

@@ -34,8 +34,8 @@ class HandCatch(OutcomeModel):
     surface_refusal = TABLE_ONLY
     closed_form_bands = True
     rate = 2.5e7
-    """Measured: Monte Carlo, 10⁸ tosses of ω_x 60-90 rad/s, T 0.6-0.9 s in 4.2 s on the 2-core
-    machine shared with other jobs (benchmarks/bench_probability.py measures it quietly)."""
+    """Tosses a second by Monte Carlo over the paper's box (ω_x 60-90 rad/s, T 0.6-0.9 s) on the
+    reference 2-core machine, both threads (``benchmarks/bench_probability.py`` measures it)."""
 
     def faces(
         self, coin: Coin, omega: FloatArray, flight_time: FloatArray, start_sign: float, g: float

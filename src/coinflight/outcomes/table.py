@@ -36,9 +36,12 @@ from coinflight.outcomes.base import (
 )
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from scipy.spatial.transform import Rotation
 
     from coinflight.core.contact import Contact
+    from coinflight.model.distributions import Distribution
     from coinflight.model.ensemble import TossDistribution
 
 FloatArray = NDArray[np.float64]
@@ -622,47 +625,6 @@ class Landing:
             status=out.status.reshape(shape),
         )
 
-    def to_dict(self) -> dict[str, Any]:
-        """JSON fields of a single toss: face, bounces, times and why it ended."""
-        out = self.outcome
-        return {
-            "outcome": out.face_name,
-            "bounces": int(out.bounces),
-            "first_contact": float(out.first_contact),
-            "settle_time": float(out.settle_time),
-            "status": out.status_name,
-        }
-
-    def describe(self) -> str:
-        """One line for a single toss: when it lands, how often it bounces, how it ends."""
-        out = self.outcome
-        first, settle, bounces = float(out.first_contact), float(out.settle_time), int(out.bounces)
-        if out.status_name == "unsettled":
-            return (
-                f"lands on the table at t = {first:.4f} s and has NOT settled after {bounces} "
-                f"impacts (status unsettled, stopped at t = {settle:.4f} s): the face up then "
-                f"was {out.face_name.upper()}, not a resting face"
-            )
-        if out.status_name == "settled in contact":
-            # The contact ending's time is the decision's: at rest or below the barrier.
-            return (
-                f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
-                f"{out.face_name.upper()} (decided at t = {settle:.4f} s: at rest or below its "
-                f"well's barrier; {out.status_name})"
-            )
-        if out.status_name == "decided upright":
-            # An upright roller ended on edge by contact_phase.upright_decided, still rolling.
-            return (
-                f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
-                f"{out.face_name.upper()} (decided at t = {settle:.4f} s while rolling upright "
-                "in its edge band, by the upright decision: a measured predictor of ending on "
-                f"edge, not a proof; {out.status_name})"
-            )
-        return (
-            f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends "
-            f"{out.face_name.upper()} (at t = {settle:.4f} s; {out.status_name})"
-        )
-
 
 class TableLanding(OutcomeModel):
     """Outcome model for the probability estimators: the tosses land on ``surface``.
@@ -787,18 +749,16 @@ class TableLanding(OutcomeModel):
             tallies.append(np.count_nonzero(out.status == Status.DECIDED_UPRIGHT))
         return np.append(faces, tallies)
 
-    def describe(self) -> str:
-        return self.describe_for(None)
-
-    def to_dict(self) -> dict[str, Any]:
-        return self.settings_for(None)
-
-    def describe_for(self, dist: TossDistribution | None) -> str:
-        """One line; the contact distributions of ``dist``, if any, in place of the surface's
-        values (they replace them toss by toss). The experimental contact ending is named, with
-        its resistances, and a rounded rim (the coin's corner radius) when ``dist`` has one."""
+    def describe(
+        self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
+    ) -> str:
+        """One line: the table, its contact parameters and the air. ``contact`` gives
+        distributions in place of the surface's values (the tosses' own, drawn toss by toss:
+        :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The experimental contact
+        ending is named, with its resistances, and a rounded rim when ``corner_radius`` (the
+        coin's, m) is not 0."""
         s = self.surface
-        spread = {} if dist is None else dist.contact
+        spread = {} if contact is None else contact
 
         def text(name: str, unit: str = "") -> str:
             if name in spread:
@@ -811,22 +771,24 @@ class TableLanding(OutcomeModel):
                 f", {s.ending} ending: rolling resistance {text('rolling_resistance', 'm')}, "
                 f"pivoting resistance {text('pivoting_resistance', 'm')}"
             )
-        if dist is not None and dist.coin.corner_radius:
-            ending += f", rim corner radius {dist.coin.corner_radius:g} m"
+        if corner_radius:
+            ending += f", rim corner radius {corner_radius:g} m"
         return (
             f"landing on a table {s.drop_height:g} m below launch (restitution "
             f"{text('restitution')}, friction {text('friction')}{ending}), "
             f"{describe_air(self.drag)}"
         )
 
-    def settings_for(self, dist: TossDistribution | None) -> dict[str, Any]:
-        """JSON settings; the contact distributions of ``dist``, if any, as objects
-        (``{"kind": "uniform", ...}``) in place of the surface's numbers. The contact ending,
-        its resistances (m) and, with ``dist``, the coin's rim corner radius (m) are reported
-        when not the defaults (the rocking ending, sharp corners), so that every other JSON
-        object, and the random stream of a sweep row keyed on it, stays as it was."""
+    def to_dict(
+        self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
+    ) -> dict[str, Any]:
+        """JSON settings; ``contact``'s distributions, if any, as objects (``{"kind":
+        "uniform", ...}``) in place of the surface's numbers. The contact ending, its
+        resistances (m) and the coin's rim ``corner_radius`` (m) are reported when not the
+        defaults (the rocking ending, sharp corners), so that every other JSON object, and the
+        random stream of a sweep row keyed on it, stays as it was."""
         s = self.surface
-        spread = {} if dist is None else dist.contact
+        spread = {} if contact is None else contact
 
         def value(name: str) -> Any:
             return spread[name].to_dict() if name in spread else getattr(s, name)
@@ -844,13 +806,9 @@ class TableLanding(OutcomeModel):
             out["ending"] = s.ending
             out["rolling_resistance"] = value("rolling_resistance")
             out["pivoting_resistance"] = value("pivoting_resistance")
-        if dist is not None and dist.coin.corner_radius:
-            out["corner_radius"] = dist.coin.corner_radius
+        if corner_radius:
+            out["corner_radius"] = corner_radius
         return out
-
-    def report(self, coin: Coin, toss: Toss) -> tuple[dict[str, Any], str]:
-        landing = Landing(coin, toss, self.surface, self.drag, self.max_bounces)
-        return landing.to_dict(), landing.describe()
 
 
 __all__ = [

@@ -43,7 +43,7 @@ CURVE_POINTS_PER_TURN = 60
 """Points a turn of the normal's path on the sphere (smooth at the figure's size)."""
 MAX_CURVE_POINTS = 200_000
 """Most points of a drawn path (plot_toss's sphere, the animation's n·Z curve): 3,300 turns at
-60 a turn (a toss makes 5-50). 480,000 points took 35 s to draw on the busy 2-core machine."""
+60 a turn (a toss makes 5-50); more than twice as many take over half a minute to draw."""
 MAX_PANELS = 100
 """Most tosses (panels) one figure draws."""
 VIEW_ELEVATION = 35.0

@@ -45,7 +45,7 @@ from coinflight.probability.streams import (
 
 DEFAULT_CHUNK = BLOCK
 """Tosses per task: one block, so that a progress bar moves every ~2²⁰ tosses (~15 ms of
-compute); larger tasks measured no faster (benchmarks/bench_probability.py)."""
+compute); larger tasks are no faster (``benchmarks/bench_probability.py`` times them)."""
 
 NAME = "monte-carlo"
 """The method's name (its registry entry, results, messages)."""

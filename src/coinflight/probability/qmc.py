@@ -32,8 +32,8 @@ a billion before a point is drawn); 16 already give the error estimate (Owen 199
 SOBOL_BITS = 30
 """Bits of SciPy's Sobol generator (its default): at most 2^30 points per scrambling."""
 SOBOL_POINTS_PER_SECOND = 2.5e7
-"""Scrambled Sobol points a second (SciPy), on top of the outcome model's own time: with the
-hand catch, 2^26 points in 5.2 s on the busy 2-core machine (1.3e7 a second in all)."""
+"""Scrambled Sobol points a second (SciPy) on the reference 2-core machine, on top of the
+outcome model's own time (with the hand catch about half of all the time)."""
 _CHUNK = 1 << 18
 BLOCK = 1 << 22
 """Points of one scrambling per task (a power of two): the task resumes the scrambling's

@@ -16,6 +16,7 @@ if TYPE_CHECKING:
 
     from coinflight.model.coin import Coin
     from coinflight.model.distributions import Distribution
+    from coinflight.model.ensemble import TossDistribution
     from coinflight.model.surface import Drag, Surface, SurfaceKind
     from coinflight.outcomes.base import OutcomeModel
 
@@ -291,6 +292,28 @@ def describe_landing(surface: Surface, drag: Drag | None) -> str:
     from coinflight.outcomes import outcome_model
 
     return outcome_model(surface, drag).describe()
+
+
+def describe_for(model: OutcomeModel, dist: TossDistribution | None = None) -> str:
+    """One line for the text output: how the tosses ``dist`` end under ``model``. A table
+    landing names the tosses' own contact distributions in place of its surface's values and
+    their coin's rounded rim (:meth:`coinflight.outcomes.table.TableLanding.describe`); any
+    other model says what its ``describe`` says."""
+    from coinflight.outcomes.table import TableLanding
+
+    if isinstance(model, TableLanding) and dist is not None:
+        return model.describe(dist.contact, dist.coin.corner_radius)
+    return model.describe()
+
+
+def settings_for(model: OutcomeModel, dist: TossDistribution | None = None) -> dict[str, Any]:
+    """JSON settings of ``model`` for the tosses ``dist``, as :func:`describe_for` (a table
+    landing's contact distributions as objects, ``{"kind": "uniform", ...}``)."""
+    from coinflight.outcomes.table import TableLanding
+
+    if isinstance(model, TableLanding) and dist is not None:
+        return model.to_dict(dist.contact, dist.coin.corner_radius)
+    return model.to_dict()
 
 
 @dataclass(frozen=True)

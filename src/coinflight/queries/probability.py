@@ -8,7 +8,13 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from coinflight.queries.landing import LandingChoice, landing_coin, outcome_model, table_spread
+from coinflight.queries.landing import (
+    LandingChoice,
+    landing_coin,
+    outcome_model,
+    settings_for,
+    table_spread,
+)
 from coinflight.queries.values import AirArgs, DistArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -202,7 +208,7 @@ def probability_payload(query: ProbabilityQuery, result: ProbabilityResult) -> d
     )
     payload["distribution"].update({name: d.to_dict() for name, d in query.dist.contact.items()})
     if query.landing is not None:
-        payload.update(query.landing.model.settings_for(query.dist))
+        payload.update(settings_for(query.landing.model, query.dist))
     if query.surface_preset is not None:
         from coinflight.studies.presets import surface_preset
 

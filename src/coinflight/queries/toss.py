@@ -15,6 +15,7 @@ if TYPE_CHECKING:
     from coinflight.model.surface import Drag, Surface
     from coinflight.model.toss import Flight, Toss
     from coinflight.outcomes.base import OutcomeModel
+    from coinflight.outcomes.table import LandingOutcome
 
 MAX_TRAJECTORY = 2000
 """Most times a sampled flight (``trajectory=K``) holds: 2,000 frames are 33 s at 60 frames per
@@ -83,15 +84,80 @@ def catch_payload(flight: Flight) -> dict[str, Any]:
     }
 
 
+def landing_fields(out: LandingOutcome) -> dict[str, Any]:
+    """The JSON fields of one table landing: face, bounces, times (s since launch) and why it
+    ended."""
+    return {
+        "outcome": out.face_name,
+        "bounces": int(out.bounces),
+        "first_contact": float(out.first_contact),
+        "settle_time": float(out.settle_time),
+        "status": out.status_name,
+    }
+
+
+def landing_line(out: LandingOutcome) -> str:
+    """One line for one table landing: when it lands, how often it bounces, how it ends."""
+    first, settle, bounces = float(out.first_contact), float(out.settle_time), int(out.bounces)
+    face, status = out.face_name.upper(), out.status_name
+    if status == "unsettled":
+        return (
+            f"lands on the table at t = {first:.4f} s and has NOT settled after {bounces} "
+            f"impacts (status unsettled, stopped at t = {settle:.4f} s): the face up then "
+            f"was {face}, not a resting face"
+        )
+    start = f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends {face}"
+    if status == "settled in contact":
+        # The contact ending's time is the decision's: at rest or below the barrier.
+        return (
+            f"{start} (decided at t = {settle:.4f} s: at rest or below its well's barrier; "
+            f"{status})"
+        )
+    if status == "decided upright":
+        # An upright roller ended on edge by contact_phase.upright_decided, still rolling.
+        return (
+            f"{start} (decided at t = {settle:.4f} s while rolling upright in its edge band, by "
+            "the upright decision: a measured predictor of ending on edge, not a proof; "
+            f"{status})"
+        )
+    return f"{start} (at t = {settle:.4f} s; {status})"
+
+
+def air_catch(coin: Coin, toss: Toss, drag: Drag) -> tuple[dict[str, Any], str]:
+    """One toss caught in the hand at launch height after its flight through air
+    (:func:`coinflight.outcomes.air.catch_with_drag`): the JSON fields (face, catch time in s
+    since launch) and one line."""
+    from coinflight.core.outcome import FACE_NAMES
+    from coinflight.outcomes.air import catch_with_drag
+
+    face, when = catch_with_drag(
+        coin, toss.omega.reshape(1, 3), toss.launch_speed, toss.start_sign, toss.g, drag
+    )
+    name, t = FACE_NAMES[int(face[0])], float(when[0])
+    return {"outcome": name, "catch_time": t}, (
+        f"caught at launch height at t = {t:.4f} s, {name.upper()} up"
+    )
+
+
 def landing_report(
     coin: Coin, toss: Toss, surface: Surface, drag: Drag | None, bounces: int | None
 ) -> tuple[dict[str, Any], str, OutcomeModel]:
-    """A table landing or a flight through air: the JSON object, the model's one-line report
-    and the model (for its description)."""
+    """A table landing or a flight through air: the JSON object, the one-line report (a table
+    landing's by :func:`landing_fields` and :func:`landing_line`, a catch through air's by
+    :func:`air_catch`, a model registered from outside its own ``report``) and the model (for
+    its description)."""
     from coinflight.outcomes import outcome_model
+    from coinflight.outcomes.air import DragCatch
+    from coinflight.outcomes.table import Landing, TableLanding
 
     model = outcome_model(surface, drag, bounces)
-    payload, line = model.report(coin, toss)
+    if isinstance(model, TableLanding):
+        landed = Landing(coin, toss, model.surface, model.drag, model.max_bounces).outcome
+        payload, line = landing_fields(landed), landing_line(landed)
+    elif isinstance(model, DragCatch):
+        payload, line = air_catch(coin, toss, model.drag)
+    else:  # a model registered from outside: its own report
+        payload, line = model.report(coin, toss)
     payload.update(model.to_dict())
     payload.update(
         omega=[float(w) for w in toss.omega],
@@ -139,7 +205,10 @@ def trajectory(flight: Flight, k: int) -> dict[str, Any]:
 __all__ = [
     "MAX_TRAJECTORY",
     "TossQuery",
+    "air_catch",
     "catch_payload",
+    "landing_fields",
+    "landing_line",
     "landing_report",
     "toss_payload",
     "toss_query",

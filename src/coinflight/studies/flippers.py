@@ -440,10 +440,9 @@ def fit_population(
     population's likelihood is never reported below it (the better of the two is kept). Profile
     intervals: the parameter where max over the other parameter of log L falls
     :data:`PROFILE_DROP` below the maximum (Brent's root finder, ``scipy.optimize.brentq``).
-    They rest on the χ² approximation: in 200 simulated tables of Bartoš et al.'s 48 people
-    each (ψ normal 84° ± 5°, and 90° ± 10°) the spread's interval held the true spread 96 % and
-    90 % of the time, the mean's 96 % and 96 %: near a spread like Bartoš et al.'s, read the
-    spread's interval as somewhat narrow.
+    They rest on the χ² approximation, which with as few people as Bartoš et al.'s 48 makes
+    the spread's interval somewhat narrow (in simulated tables it holds the true spread a little
+    less often than 95 % of the time; the mean's interval keeps its 95 %).
     """
     v.choice("population family", family, FAMILIES)
     psi_one = one_psi_angle(lik.same, lik.flips)
@@ -565,8 +564,8 @@ class HeldOut:
 
 
 FIT_SECONDS = 0.02
-"""Seconds of one held-out fit of 48 people on a 2-core machine (0.68 s for 40 fits with the
-machine busy), taken as growing with the number of people."""
+"""Seconds of one held-out fit of 48 people on the reference 2-core machine, taken as growing
+with the number of people."""
 
 
 def held_out_seconds(people: int, folds: int, repeats: int) -> float:

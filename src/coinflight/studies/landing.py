@@ -24,8 +24,8 @@ Six questions, each a function returning plain values with their seeds:
 * :func:`edge_check`: are the 3-D contact ending's edges coinflight's alone? The same vigorous
   tosses (axial spin) in the contact ending and in MuJoCo (sharp rims, the same resistances),
   P(tails, heads, edge) at rest, which tosses end on edge in each, how long they stand
-  (:mod:`coinflight.core.contact_phase`'s notes: MuJoCo leaves about ten times fewer on
-  edge).
+  (MuJoCo leaves far fewer on edge: why is in the documentation's physics page, "Beside a
+  general rigid-body engine").
 
 These are validation runs, not predictions: every table number they give depends on the
 restitution and friction (and, for the contact ending, on the rolling and pivoting resistance

@@ -1,8 +1,5 @@
 """The same tosses in a general rigid-body engine: MuJoCo beside coinflight's table landing.
 
-(The study scripts named ``bench_*.py`` below have left the package; git history keeps
-them.)
-
 MuJoCo (optional: ``pip install 'coinflight[mujoco]'``) integrates the coin as a free cylinder
 over a plane with a fixed time step and its soft contact: a spring-damper in constraint space
 with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documentation,
@@ -31,8 +28,7 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   0.005 m) and rolling (:data:`ROLLING`, 0.0001 m) friction, switched on by the contact
   dimension :data:`CONDIM` = 6. MuJoCo's default ``condim`` is 3, with which both
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
-  regular frictional contact", 4 adds torsional friction, 6 adds rolling friction); the
-  comparison ran with 3 before.
+  regular frictional contact", 4 adds torsional friction, 6 adds rolling friction).
 
 How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
@@ -65,55 +61,18 @@ rim. The work is bounded before anything runs (:func:`seconds_estimate`).
 Harder friction. MuJoCo's friction is a soft constraint (it creeps below its limit and builds
 up over the contact's time constant); :class:`FrictionSolver` selects MuJoCo's documented ways
 to make it harder than the normal direction without changing μ: the elliptic cone with
-``impratio`` > 1, and the no-slip pass (``noslip_iterations``). They answer whether MuJoCo's
-soft friction is why it leaves fewer coins on edge than coinflight's contact ending: it is not
-(``bench_mujoco_edges.py 600 --handoff-only --condim 3 --cone elliptic --impratio
-10``, ``--impratio 100``, ``--noslip 20``; the figures in that benchmark's notes): with its
-friction made hard MuJoCo leaves as few coins on edge as with its default, and in a single rim
-impact its friction impulse is already as close to μ J_n as the rigid law's
-(``bench_rim_impacts.py``). What differs is that MuJoCo's coins hop off the rim
-where coinflight's stay on it (the benchmarks' notes), and why is below.
+``impratio`` > 1, and the no-slip pass (``noslip_iterations``).
 
-Why the engines part (measured; the benchmarks' notes). Not the normal law: neither its shape
-(coinflight's rim law made linear like MuJoCo's, impacts of 0.75 ms, leaves 47 of the 446
-hand-off states on edge against the 3/2 law's 49, both carried to rest without the upright
-decision), nor its stiffness (t_c 0.25 ms: 48 with the 3/2 law, 49 linear; these counts before
-the contact phase's sliding-mass damper, with which the 3/2 law at 1 ms leaves 44,
-``bench_edge_sensitivity.py 600``; all these counts measured before the joint
-damping of two pressed rims), nor MuJoCo's
-impedance at first touch (:class:`FrictionSolver` ``solimp`` (0.1, 0.95, 3e-5) or (0.5, 0.95,
-0.001): 19 and 20 against 22). It is how MuJoCo couples friction to the normal direction: its
-convex soft-contact model gives up strict complementarity, and "the only way to initiate slip
-is to generate some motion in the normal direction" (documentation, "Computation", "Physical
-realism and soft contacts", which calls the effect numerically small). Measured, it is not
-small here: a nickel lying flat and sliding at 0.5 m/s with μ 0.3 hops in MuJoCo (in contact
-7 % of 30 ms, lifted up to 54 μm, upward speed up to 32 mm/s; a sliding sphere alike, 6 %),
-decelerating as Coulomb's law says, and stays on the table frictionless (89-100 %); in
-coinflight's contact phase it stays on the table (100 %) with the same deceleration (0.412
-against MuJoCo's 0.408 m/s after 30 ms). The elliptic cone with impratio 100 and the no-slip
-pass leave the lift as it is; a softer contact (time constant 4 ms) shrinks it (upward speed
-12 mm/s, in contact 29 %) without removing it. On the rim alike: a nickel leaning 60° on
-its rim, set sliding at 0.3 m/s along it, is in contact 6 % of the first 10 ms in MuJoCo (88 %
-frictionless) and 100 % in coinflight's phase. So a coin sliding on its rim from the hand-off
-is kicked off the table in MuJoCo and hops (6 % of the first 0.1 s in contact), where
-coinflight's keeps sliding on it, pressed by its weight, until friction turns the slide into a
-roll. With MuJoCo's time constant 4 ms (``timeconst``) 27 of the 446 end on edge (0.061 ±
-0.011) against 22 at 1 ms: the contact that lifts less puts a few more coins on edge, within
-the noise. A rigid coin sliding flat on a table stays on it (Coulomb's law, the normal force
-shifting under it), as coinflight's does; which engine is closer to a real coin sliding on its
-rim is not measured.
+Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight, RK4 does not
+(at several times Euler's cost a step): the landing report's comparison has no axial spin and
+keeps Euler; the edge check (:func:`coinflight.studies.landing.edge_check`), whose tosses
+precess, runs RK4.
 
-Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight: on 200 vigorous
-tosses with an axial spin (seed 7) the same well as coinflight's exact flight at the first
-contact for 68 % (Euler), 73 % (implicit, implicitfast) and 98 % (RK4, 3.5 times Euler's cost
-a step). The landing report's comparison has no axial spin and keeps Euler; the edge check
-(:func:`coinflight.studies.landing.edge_check`), whose tosses precess, runs RK4. Started from
-coinflight's hand-off states, where there is no flight to drift in, Euler and RK4 give the same
-faces at rest (104 tosses: no edge in either).
-
-The benchmark ``bench_bounce.py`` and the landing report
-(:mod:`coinflight.report.landing`) both call :func:`coinflight.studies.landing.mujoco_comparison`;
-``bench_mujoco_edges.py`` prints :func:`coinflight.studies.landing.edge_check`.
+What the comparison found, and why the two engines part on edges, is in the documentation
+(:ref:`physics-mujoco`); the landing report
+(:mod:`coinflight.report.landing`) computes it through
+:func:`coinflight.studies.landing.mujoco_comparison` and
+:func:`coinflight.studies.landing.edge_check`.
 """
 
 from __future__ import annotations
@@ -157,10 +116,9 @@ WINDOW = 0.1
 can no longer change leave the run (:func:`_settled`), so each toss costs the steps it needs."""
 SETTLE = 20.0
 """Longest simulated time after the first contact, s; tosses still moving then are counted by
-the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. At 2 s
-(the previous limit) 1,296 of the landing report's 10⁴ tosses were still moving, most rolling
-on their edge; coins rolling on the sharp rim roll for seconds (the limit's effect is measured
-by :func:`coinflight.studies.landing.edge_check` and ``bench_mujoco_edges.py``)."""
+the face they show and reported as moving (:attr:`MujocoRun.moving`), never dropped. Coins
+rolling on the sharp rim roll for seconds: a limit of a few seconds leaves many of them
+moving."""
 REST_SPEED = 2e-3
 """A coin whose centre moves slower than this (m/s) ..."""
 REST_SPIN = 0.2
@@ -177,16 +135,15 @@ POOL = 128
 """Tosses rolled out together (MuJoCo's threads share them); a toss that settles leaves the pool
 and the next one takes its place."""
 STEPS_PER_SECOND = 2.0e5
-"""MuJoCo steps of one coin a wall second, both threads, Euler (for the work bound). Measured:
-214,000 (64 of the landing report's tosses); RK4 35,600 and 39,000 (the
-edge check's 2 × 1,500 tosses), against 50,000 assumed (:data:`INTEGRATOR_COST`)."""
+"""MuJoCo steps of one coin a wall second, both threads of the reference 2-core machine,
+Euler (for the work bound; slower integrators by :data:`INTEGRATOR_COST`)."""
 MEAN_CONTACT = 1.0
-"""Mean simulated time after the first contact of a toss that settles, s (for the work bound;
-measured 1.4 s on the report's tosses, 1.9 and 2.7 s with the edge check's at μ 0.3 and 0.6,
-both with the tosses still rolling at 20 s, 0.1-0.7 % of them)."""
+"""Mean simulated time after the first contact of a toss that settles, s (for the work bound:
+the report's and the edge check's tosses take one to three seconds, more at higher
+friction)."""
 MOVING_SHARE = 0.1
 """Share of the limit added to :data:`MEAN_CONTACT` for the tosses that roll long (for the work
-bound): 3 s expected after the first contact at the 20 s limit (measured 1.4-2.7 s)."""
+bound): 3 s expected after the first contact at the 20 s limit."""
 FLIGHT = 0.7
 """Longest flight of the compared tosses, launch to first contact, s (v0 ≤ 3 m/s, 0.8 m drop;
 for the work bound)."""
@@ -195,19 +152,16 @@ for the work bound)."""
 CONES = ("pyramidal", "elliptic")
 """MuJoCo's friction cones (``option/cone``)."""
 MAX_NOSLIP_ITERATIONS = 100
-"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). 20 already left
-MuJoCo's edge count where it was (``bench_mujoco_edges.py``'s notes) and cost 1.9
-times a run without them (:data:`NOSLIP_COST`); 100 would cost about 5.5 times, more is work
-without a question it answers."""
+"""Most no-slip iterations accepted (MuJoCo's default 0: no no-slip pass). A few tens already
+make MuJoCo's friction hard and double a run's cost (:data:`NOSLIP_COST`); 100 would cost
+about 5.5 times, more is work without a question it answers."""
 IMPRATIO_COST = 1.2
 """Extra cost of a MuJoCo step per decade of ``impratio`` above 10 (for the work bound; a
-stiffer friction needs more solver iterations). Measured (``bench_mujoco_edges.py
-600 --handoff-only --condim 3``, 446 hand-off states, RK4): elliptic impratio 10
-1,154 s wall (no slower than default friction, 1,606 s), impratio 100 2,493 s: 2.2 times."""
+stiffer friction needs more solver iterations: the elliptic cone at impratio 10 runs about as
+fast as the default friction, at 100 about twice as slow)."""
 NOSLIP_COST = 0.045
 """Extra cost of a MuJoCo step per no-slip iteration (for the work bound; each is one more
-sweep over the friction dimensions). Measured as :data:`IMPRATIO_COST`: 20 iterations 2,195 s
-wall against 1,154 s, 1.9 times, i.e. 0.045 per iteration."""
+sweep over the friction dimensions: 20 iterations about double a run's cost)."""
 
 
 SOLIMP = (0.9, 0.95, 0.001)
@@ -355,6 +309,55 @@ DEFAULT_SOLVER = FrictionSolver()
 (the comparison's settings)."""
 
 
+def check_limit(limit: float) -> None:
+    """ValueError unless ``limit`` (the settle limit, s) is a positive finite number."""
+    if not (isinstance(limit, (int, float)) and math.isfinite(limit) and limit > 0.0):
+        raise ValueError(f"the MuJoCo settle limit must be a positive number of s, got {limit!r}")
+
+
+CONDIMS = (1, 3, 4, 6)
+"""MuJoCo's contact dimensions: normal only; + two sliding; + torsional; + two rolling."""
+
+
+@dataclass(frozen=True)
+class Engine:
+    """How MuJoCo computes a run, beyond the surface's restitution and friction (checked on
+    construction; ValueError/TypeError in one line).
+
+    Attributes
+    ----------
+    condim : int
+        MuJoCo's contact dimension, one of :data:`CONDIMS` (default :data:`CONDIM`).
+    torsional, rolling : float
+        MuJoCo's torsional and rolling friction coefficients of both geoms, m (MuJoCo takes the
+        larger of the two geoms'; defaults :data:`TORSIONAL`, :data:`ROLLING`).
+    integrator : str
+        MuJoCo's integrator (default :data:`INTEGRATOR`).
+    solver : FrictionSolver
+        The friction cone, impratio, no-slip pass and contact impedance.
+    limit : float
+        Longest simulated time after the first contact, s (default :data:`SETTLE`).
+    """
+
+    condim: int = CONDIM
+    torsional: float = TORSIONAL
+    rolling: float = ROLLING
+    integrator: str = INTEGRATOR
+    solver: FrictionSolver = DEFAULT_SOLVER
+    limit: float = SETTLE
+
+    def __post_init__(self) -> None:
+        if self.condim not in CONDIMS:
+            raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {self.condim!r}")
+        v.instance("solver", self.solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
+        check_limit(self.limit)
+
+
+DEFAULT_ENGINE = Engine()
+"""The comparison's settings: :data:`CONDIM`, MuJoCo's default torsional and rolling friction,
+its default integrator and friction solver, carried up to :data:`SETTLE` s."""
+
+
 def available() -> bool:
     """True when MuJoCo can be imported."""
     try:
@@ -364,23 +367,16 @@ def available() -> bool:
     return True
 
 
-def _xml(
-    coin: Coin,
-    friction: float,
-    dampratio: float,
-    g: float,
-    integrator: str,
-    condim: int,
-    torsional: float,
-    rolling: float,
-    solver: FrictionSolver = DEFAULT_SOLVER,
-) -> str:
-    friction_text = f"{friction} {torsional} {rolling}"
+def _xml(coin: Coin, friction: float, dampratio: float, g: float, engine: Engine) -> str:
+    solver = engine.solver
+    friction_text = f"{friction} {engine.torsional} {engine.rolling}"
     solref = f"{solver.timeconst!r} {dampratio}"
-    contact = f'friction="{friction_text}" solref="{solref}" condim="{condim}" {solver.contact()}'
+    contact = (
+        f'friction="{friction_text}" solref="{solref}" condim="{engine.condim}" {solver.contact()}'
+    )
     return f"""
     <mujoco>
-      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{integrator}"
+      <option timestep="{TIMESTEP}" gravity="0 0 -{g}" integrator="{engine.integrator}"
               {solver.option()}/>
       <worldbody>
         <geom type="plane" size="5 5 0.1" {contact}/>
@@ -394,27 +390,15 @@ def _xml(
 
 
 def model(
-    coin: Coin,
-    friction: float,
-    dampratio: float,
-    g: float = 9.81,
-    integrator: str = INTEGRATOR,
-    condim: int = CONDIM,
-    torsional: float = TORSIONAL,
-    rolling: float = ROLLING,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    coin: Coin, friction: float, dampratio: float, g: float = 9.81, engine: Engine = DEFAULT_ENGINE
 ) -> Any:
-    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes);
-    ``condim`` 1, 3, 4 or 6 (MuJoCo's contact dimensions); ``torsional`` and ``rolling`` the
-    friction coefficients (m) of both geoms (MuJoCo takes the larger of the two geoms');
-    ``solver`` the friction cone, impratio and no-slip pass (:class:`FrictionSolver`)."""
+    """The MuJoCo model: the coin as a free cylinder over a plane (see the module notes), with
+    sliding friction ``friction``, the contact's damping ratio ``dampratio`` and ``engine``'s
+    contact dimension, torsional and rolling friction, integrator and friction solver."""
     import mujoco
 
-    if condim not in (1, 3, 4, 6):
-        raise ValueError(f"MuJoCo condim must be 1, 3, 4 or 6, got {condim!r}")
-    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
-    xml = _xml(coin, friction, dampratio, g, integrator, condim, torsional, rolling, solver)
-    return mujoco.MjModel.from_xml_string(xml)
+    v.instance("engine", engine, Engine, "a mujoco_compare.Engine")
+    return mujoco.MjModel.from_xml_string(_xml(coin, friction, dampratio, g, engine))
 
 
 def flat_drop_restitution(
@@ -422,21 +406,20 @@ def flat_drop_restitution(
     speed: float,
     dampratio: float,
     g: float = 9.81,
-    integrator: str = INTEGRATOR,
-    condim: int = CONDIM,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> float:
     """MuJoCo's normal restitution: the coin dropped flat at ``speed`` (m/s), without spin;
-    its largest upward speed after the impact over ``speed`` (with the friction ``solver``'s
-    cone and impedances, so that the calibration is that of the compared model)."""
+    its largest upward speed after the impact over ``speed`` (with ``engine``'s integrator,
+    contact dimension, friction cone and impedances, so that the calibration is that of the
+    compared model)."""
     import mujoco
 
-    m = model(coin, 0.0, dampratio, g, integrator, condim, solver=solver)
+    m = model(coin, 0.0, dampratio, g, engine)
     d = mujoco.MjData(m)
     d.qpos[:3] = (0.0, 0.0, coin.thickness / 2 + 1e-4)
     d.qvel[2] = -speed
     best = -speed
-    for _ in range(int(5 * solver.timeconst / TIMESTEP) + 100):
+    for _ in range(int(5 * engine.solver.timeconst / TIMESTEP) + 100):
         mujoco.mj_step(m, d)
         best = max(best, float(d.qvel[2]))
     return best / speed
@@ -447,21 +430,20 @@ def calibrated_damping(
     restitution: float,
     speed: float,
     g: float = 9.81,
-    condim: int = CONDIM,
-    integrator: str = INTEGRATOR,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> float:
-    """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`) at
-    ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach it."""
+    """The damping ratio whose flat-drop restitution (:func:`flat_drop_restitution`, with
+    ``engine``) at ``speed`` is ``restitution``; ValueError when MuJoCo's contact cannot reach
+    it."""
     from scipy.optimize import brentq
 
     def excess(z: float) -> float:
-        return flat_drop_restitution(coin, speed, z, g, integrator, condim, solver) - restitution
+        return flat_drop_restitution(coin, speed, z, g, engine) - restitution
 
     lo, hi = 0.02, 3.0
     if not excess(lo) > 0.0 > excess(hi):
         raise ValueError(
-            f"MuJoCo's contact (time constant {solver.timeconst:g} s) cannot rebound at "
+            f"MuJoCo's contact (time constant {engine.solver.timeconst:g} s) cannot rebound at "
             f"restitution {restitution:g}: its flat drop gives {excess(hi) + restitution:.3g} to "
             f"{excess(lo) + restitution:.3g}"
         )
@@ -492,24 +474,17 @@ class MujocoRun:
     threads : int
     version : str
         MuJoCo's version.
-    condim : int
-        MuJoCo's contact dimension (:data:`CONDIM`).
+    engine : Engine
+        MuJoCo's contact dimension, torsional and rolling friction, integrator, friction solver
+        and the settle limit (:attr:`limit`).
     restitution_by_speed : dict
         Flat-drop restitution of the calibrated contact at :data:`PROBE_SPEEDS` and at the
         landing speed ({speed m/s: e}).
-    limit : float
-        Longest simulated time after the first contact, s.
-    torsional, rolling : float
-        MuJoCo's torsional and rolling friction coefficients, m.
     steps : int
         MuJoCo steps taken in all (the cost: each toss stops at the window in which it settled).
-    integrator : str
-        MuJoCo's integrator (:data:`INTEGRATOR` unless asked otherwise).
     edge_time : ndarray
         Simulated time after the first contact spent in the edge band (the heads normal within
         arctan(h/d) of the horizontal: upright on the rim, rolling or standing), s.
-    solver : FrictionSolver
-        MuJoCo's friction cone, impratio and no-slip iterations.
     """
 
     first: NDArray[np.int8]
@@ -520,16 +495,16 @@ class MujocoRun:
     elapsed: float
     threads: int
     version: str
-    condim: int = CONDIM
+    engine: Engine = DEFAULT_ENGINE
     restitution_by_speed: dict[float, float] = field(default_factory=dict)
     rest_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
-    limit: float = SETTLE
-    torsional: float = TORSIONAL
-    rolling: float = ROLLING
     steps: int = 0
-    integrator: str = INTEGRATOR
     edge_time: NDArray[np.float64] = field(default_factory=lambda: np.empty(0))
-    solver: FrictionSolver = DEFAULT_SOLVER
+
+    @property
+    def limit(self) -> float:
+        """Longest simulated time after the first contact, s (the engine's)."""
+        return self.engine.limit
 
     @property
     def unsettled(self) -> int:
@@ -538,19 +513,20 @@ class MujocoRun:
 
     def settings(self, friction: float) -> dict[str, Any]:
         """Every setting of the run, for reports (JSON-ready)."""
+        engine = self.engine
         return {
             "mujoco": self.version,
-            "integrator": self.integrator,
+            "integrator": engine.integrator,
             "timestep": TIMESTEP,
-            "solref": [self.solver.timeconst, self.dampratio],
+            "solref": [engine.solver.timeconst, self.dampratio],
             "flat_drop_restitution": self.restitution,
-            "friction": [friction, self.torsional, self.rolling],
-            "condim": self.condim,
+            "friction": [friction, engine.torsional, engine.rolling],
+            "condim": engine.condim,
             "flat_drop_restitution_by_speed": [
                 [speed, e] for speed, e in sorted(self.restitution_by_speed.items())
             ],
-            **self.solver.settings(),
-            "settle_limit": self.limit,
+            **engine.solver.settings(),
+            "settle_limit": engine.limit,
             "settle_window": WINDOW,
             "rest_speed": REST_SPEED,
             "rest_spin": REST_SPIN,
@@ -612,13 +588,7 @@ def _contact_gap(states: NDArray[np.float64], coin: Coin) -> NDArray[np.float64]
 
 INTEGRATOR_COST = {"Euler": 1.0, "implicitfast": 1.2, "implicit": 1.5, "RK4": 4.0}
 """Cost of a step with each of MuJoCo's integrators over Euler's (for the work bound; RK4
-evaluates the dynamics four times; measured 3.5, 1.5 and 1.1 on 200 tosses)."""
-
-
-def check_limit(limit: float) -> None:
-    """ValueError unless ``limit`` (the settle limit, s) is a positive finite number."""
-    if not (isinstance(limit, (int, float)) and math.isfinite(limit) and limit > 0.0):
-        raise ValueError(f"the MuJoCo settle limit must be a positive number of s, got {limit!r}")
+evaluates the dynamics four times)."""
 
 
 def seconds_estimate(
@@ -770,32 +740,16 @@ def _carry(
 
 
 def _calibrated(
-    coin: Coin,
-    restitution: float,
-    friction: float,
-    speed: float,
-    g: float,
-    condim: int,
-    torsional: float,
-    rolling: float,
-    integrator: str,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    coin: Coin, restitution: float, friction: float, speed: float, g: float, engine: Engine
 ) -> tuple[Any, float, float, dict[float, float]]:
     """(model, damping ratio, flat-drop restitution at ``speed``, restitution by speed): the
     contact's damping calibrated so that a flat drop at ``speed`` rebounds at e."""
-    zeta = (
-        calibrated_damping(coin, restitution, speed, g, condim, integrator, solver)
-        if restitution > 0
-        else 1.0
-    )
-    e_mujoco = flat_drop_restitution(coin, speed, zeta, g, integrator, condim, solver)
+    zeta = calibrated_damping(coin, restitution, speed, g, engine) if restitution > 0 else 1.0
     by_speed = {
-        probe: flat_drop_restitution(coin, probe, zeta, g, integrator, condim, solver)
-        for probe in PROBE_SPEEDS
+        probe: flat_drop_restitution(coin, probe, zeta, g, engine)
+        for probe in (*PROBE_SPEEDS, speed)
     }
-    by_speed[speed] = e_mujoco
-    m = model(coin, friction, zeta, g, integrator, condim, torsional, rolling, solver)
-    return m, zeta, e_mujoco, by_speed
+    return model(coin, friction, zeta, g, engine), zeta, by_speed[speed], by_speed
 
 
 def _rollout(
@@ -806,52 +760,40 @@ def _rollout(
     calibration_speed: float,
     g: float,
     threads: int | None,
-    condim: int,
-    limit: float,
-    torsional: float,
-    rolling: float,
-    integrator: str,
+    engine: Engine,
     states: Callable[[Any, Any], NDArray[np.float64]],
     clocks: NDArray[np.float64],
     horizon: float,
-    solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
-    """What :func:`run` and :func:`run_from` share: the limit and the work bound checked
-    before anything is computed, the model calibrated at ``calibration_speed`` (m/s), one
-    MjData per worker, the ``n`` initial ``states(model, data)`` carried (:func:`_carry`, from
-    ``clocks`` s, for at most ``horizon`` s before a first contact) and the run reported."""
+    """What :func:`run` and :func:`run_from` share: the work bound checked before anything is
+    computed, the model calibrated at ``calibration_speed`` (m/s), one MjData per worker, the
+    ``n`` initial ``states(model, data)`` carried (:func:`_carry`, from ``clocks`` s, for at
+    most ``horizon`` s before a first contact) and the run reported."""
     import mujoco
 
     t0 = time.perf_counter()
-    check_limit(limit)
-    v.instance("solver", solver, FrictionSolver, "a mujoco_compare.FrictionSolver")
-    bound([n], limit, integrator, solver)
+    v.instance("engine", engine, Engine, "a mujoco_compare.Engine")
+    bound([n], engine.limit, engine.integrator, engine.solver)
     m, zeta, e_mujoco, by_speed = _calibrated(
-        coin, restitution, friction, calibration_speed, g, condim, torsional, rolling, integrator,
-        solver,
-    )  # fmt: skip
+        coin, restitution, friction, calibration_speed, g, engine
+    )
     workers = threads or os.cpu_count() or 1
     datas = [mujoco.MjData(m) for _ in range(workers)]
-    carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, limit, horizon)
+    carried = _carry(m, datas, states(m, datas[0]), clocks, coin, g, engine.limit, horizon)
     return MujocoRun(
-        carried.first,
-        carried.rest,
-        carried.moving,
-        zeta,
-        e_mujoco,
-        time.perf_counter() - t0,
-        workers,
-        mujoco.__version__,
-        condim,
-        by_speed,
-        carried.rest_time,
-        limit,
-        torsional,
-        rolling,
-        carried.steps,
-        integrator,
-        carried.edge_time,
-        solver,
+        first=carried.first,
+        rest=carried.rest,
+        moving=carried.moving,
+        dampratio=zeta,
+        restitution=e_mujoco,
+        elapsed=time.perf_counter() - t0,
+        threads=workers,
+        version=mujoco.__version__,
+        engine=engine,
+        restitution_by_speed=by_speed,
+        rest_time=carried.rest_time,
+        steps=carried.steps,
+        edge_time=carried.edge_time,
     )
 
 
@@ -873,7 +815,8 @@ def run(
     solver: FrictionSolver = DEFAULT_SOLVER,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
-    above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings.
+    above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings
+    (``condim`` … ``solver``: those of :class:`Engine`).
 
     Each toss is carried until it has settled (:func:`_settled`) or ``limit`` s past its first
     contact, whichever comes first; those still moving at the limit are counted
@@ -881,6 +824,7 @@ def run(
     before anything is computed. ``solver`` makes MuJoCo's friction harder than its default
     (:class:`FrictionSolver`). ImportError when MuJoCo is not installed.
     """
+    engine = Engine(condim, torsional, rolling, integrator, solver, limit)
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
     n = len(v0)
@@ -889,9 +833,8 @@ def run(
     mean = float(np.mean(v0)) if n else 0.0
     landing_speed = math.sqrt(mean**2 + 2.0 * g * drop_height)
     return _rollout(
-        coin, n, restitution, friction, landing_speed, g, threads, condim, limit, torsional,
-        rolling, integrator, lambda m, data: _launch_states(m, data, omega, v0, drop_height),
-        v0 / g, flight + 0.5, solver,
+        coin, n, restitution, friction, landing_speed, g, threads, engine,
+        lambda m, data: _launch_states(m, data, omega, v0, drop_height), v0 / g, flight + 0.5,
     )  # fmt: skip
 
 
@@ -916,28 +859,21 @@ def run_from(
     calibration_speed: float,
     g: float = 9.81,
     threads: int | None = None,
-    condim: int = CONDIM,
-    *,
-    limit: float = SETTLE,
-    torsional: float = TORSIONAL,
-    rolling: float = ROLLING,
-    integrator: str = INTEGRATOR,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> MujocoRun:
     """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
     heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
     (coinflight's state at its hand-off to the contact phase, for example), carried as in
-    :func:`run` (the first contact is their first touch of the plane; the contact damping
-    calibrated at ``calibration_speed``, m/s)."""
+    :func:`run` with ``engine``'s settings (the first contact is their first touch of the
+    plane; the contact damping calibrated at ``calibration_speed``, m/s)."""
     z = np.asarray(height, dtype=float).reshape(-1)
     vel = np.asarray(velocity, dtype=float).reshape(-1, 3)
     nrm = np.asarray(normal, dtype=float).reshape(-1, 3)
     nrm = nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
     w_lab = np.asarray(omega, dtype=float).reshape(-1, 3)
     return _rollout(
-        coin, len(z), restitution, friction, calibration_speed, g, threads, condim, limit,
-        torsional, rolling, integrator, lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab),
-        np.zeros(len(z)), 1.0, solver,
+        coin, len(z), restitution, friction, calibration_speed, g, threads, engine,
+        lambda m, data: _placed_states(m, data, z, vel, nrm, w_lab), np.zeros(len(z)), 1.0,
     )  # fmt: skip
 
 
@@ -970,8 +906,10 @@ def _placed_states(
 
 __all__ = [
     "CONDIM",
+    "CONDIMS",
     "CONE",
     "CONES",
+    "DEFAULT_ENGINE",
     "DEFAULT_SOLVER",
     "INTEGRATOR",
     "MAX_NOSLIP_ITERATIONS",
@@ -981,6 +919,7 @@ __all__ = [
     "TIMECONST",
     "TIMESTEP",
     "TORSIONAL",
+    "Engine",
     "FrictionSolver",
     "MujocoRun",
     "available",

@@ -25,7 +25,8 @@ bounded by :data:`coinflight.core.bands.PIECES_PER_CHUNK`). A spin range of widt
 times up to T hold about 2 Δω T / π pieces; when the closed form is the integrand of a
 quadrature, each evaluation may hold at most MAX_PIECES / 1000 of them."""
 PIECES_PER_SECOND = 2e6
-"""Band pieces the closed form sums a second (measured: ~470 ns each, 2-core machine)."""
+"""Band pieces the closed form sums a second (about half a microsecond each, reference 2-core
+machine)."""
 
 
 def _p_same_fixed_spins(

@@ -92,7 +92,7 @@ def _composite(ends: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 def _gauss_applies(dist: TossDistribution, ranged: list[str]) -> bool:
     """A normal flight time (or launch speed) and one or two ranged spins, uniform or normal
-    (three go to the (Ω, ψ) rule, measured 2-100x faster there)."""
+    (three go to the (Ω, ψ) rule, much faster there)."""
     if not isinstance(dist.flight_time, Normal) or not ranged or len(ranged) == 3:
         return False
     return all(isinstance(getattr(dist, n), Uniform | Normal) for n in ranged)
@@ -268,9 +268,8 @@ def _use_polar(dist: TossDistribution, ranged: list[str]) -> bool:
     """Two ranged ωx, ωy go to polar coordinates when ω_z is fixed ≠ 0 (the circle where the
     coin stops turning over is a radius) or when a uniform ω_z's rims (:func:`_rims`) are
     circles in a box that does not hold the origin (the case that did not converge in a tensor
-    product); else a tensor product. (With the origin in the box the tensor product measured
-    faster: there the polar rule did not converge by 24 nodes a panel on the test box with
-    three spins across 0.)"""
+    product); else a tensor product (with the origin in the box the tensor product is faster,
+    and the polar rule converges poorly there)."""
     if "omega_z" not in ranged:
         return dist.omega_z.mean != 0.0
     (x1, x2), (y1, y2) = _support(dist.omega_x), _support(dist.omega_y)

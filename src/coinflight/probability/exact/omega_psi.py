@@ -60,12 +60,12 @@ NARROWEST = 1e-9
 """Narrowest ranged spin the (Ω, ψ) rule takes, as a fraction of its size (the largest
 magnitude in its support): the density of √(ωx² + ωy²) of a box of width w at distance x from
 the origin is a difference of angles of about x / w times rounding (1e-16), so that below
-1e-9 it keeps fewer than 7 digits and the 1e-9 promised cannot be kept (measured: ωx in
-60:60.000000000001 beside wide ωy, ω_z, T disagreed between orders until the budget was
-spent, 14-30 s). Such a range is refused at once (:func:`_check_widths`)."""
+1e-9 it keeps fewer than 7 digits and the 1e-9 promised cannot be kept (the rule's orders
+then disagree until its time budget is spent). Such a range is refused at once
+(:func:`_check_widths`)."""
 PLANE_PIECES_PER_SECOND = 100.0
-"""Pieces of :class:`_PlaneInterpolant` fitted a second on a busy laptop-class core (each piece
-25 arcs of Gauss–Legendre), for the work bounds."""
+"""Pieces of :class:`_PlaneInterpolant` fitted a second on one core of the reference machine
+(each piece 25 arcs of Gauss–Legendre), for the work bounds."""
 
 
 class _Radial:
