@@ -578,6 +578,15 @@ def run_band(y, c, duration, rtol, max_steps, counts):
                 lift_plus = np_ < nm
             else:
                 lift_plus = ev[0] < 0.0
+            # The rim that stays: a slip of its point below SLIP_FLOOR is stopped here, in the
+            # band's coordinates (no rocking), not by the one-rim contact's rolling projection,
+            # whose impulse at a point r below the centre would set the coin rocking back
+            # towards the band at ~slip/r.
+            stays = STICK_MINUS if lift_plus else STICK_PLUS
+            sn, sp, sm = _slips(q, c)
+            slip = sm if lift_plus else sp
+            if c.friction > 0.0 and math.sqrt(sn * sn + slip * slip) <= rc.SLIP_FLOOR:
+                _project(q, c, stays)
             to_state(q, c, TILT if lift_plus else -TILT, y)
             return t, LIFT_PLUS if lift_plus else LIFT_MINUS
         mode = _switch(q, c, mode, d, ev)
