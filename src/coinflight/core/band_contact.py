@@ -37,7 +37,8 @@ solve for its unknown forces:
 
 * **SLIDE**, both points slipping: N± from the two normal lines, a 2×2 system whose
   determinant's sign is c_N = 2H + r μ (ŝ−_n − ŝ+_n); c_N ≤ 0 is the band's Painlevé case
-  (reported; a normal force reaches 0 before it in the runs measured);
+  (an event: N± grow without bound as c_N → 0, so one of them reaches 0 first unless both
+  numerators vanish with it; the run then ends on the rim loaded more);
 * **STICK_PLUS / STICK_MINUS**, the + (−) rim's point sticking, the other slipping at
   2 H |ω_z| (the coin pivoting about the sticking point): F_n from ṡ_n = 0, N± from the
   tipping line, the sticking point's f_t from ṡ_t = 0;
