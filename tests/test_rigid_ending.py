@@ -6,7 +6,8 @@ validations against references written here, not the package's kernels.
 * Euler's disk: energy conserved without resistances; with rolling resistance, the time to
   go from tilt α0 to α against the Moffatt-type relation (3/2)(a/ℓ)√(a/g)(√α0 − √α).
 * Convergence as the step tolerance tightens; energy never grows; the frictionless invariants.
-* The band's rest (angular momentum about the contact line kept, energy taken); dead landings
+* The straight roll on the band (angular momentum about the contact line kept, energy taken;
+  the band's two-rim contact is tests/test_band_contact.py's); dead landings
   decided before any ending; the library's landings through ``Surface(ending="rigid")``.
 """
 
@@ -345,10 +346,12 @@ def test_energy_never_grows_through_the_ending():
 
 
 def test_band_rest_keeps_the_angular_momentum_about_the_contact_line_and_takes_energy():
-    # Entering the band, the impulses act on the contact line, so the angular momentum about
-    # it, m r (n × Z)·v + L·n, is kept, and the least-energy projection takes energy, never
-    # adds it: a nickel upright with some slip, yaw and rocking (the band's ω_a against that
-    # momentum over I3 + m r², within 1e-12; the energy after below that before).
+    # The straight roll's start (_band, once both rims' points stick) removes what is left of
+    # the band run's slip, yaw and rocking by the least-energy projection onto rolling
+    # straight: impulses on the contact line keep the angular momentum about it,
+    # m r (n × Z)·v + L·n, and a projection takes energy, never adds it. Checked on a nickel
+    # upright with some slip, yaw and rocking, more than a band run leaves (the band's ω_a
+    # against that momentum over I3 + m r², within 1e-12; the energy after below that before).
     c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
     n = np.array([0.6, 0.8, 0.0])
     w = 30.0 * n + np.array([0.0, 0.0, 2.0]) + 0.5 * np.array([0.8, -0.6, 0.0])

@@ -20,11 +20,14 @@ switches between them are events located in time:
   impact of the other rim's lowest point, by the same law, then one-rim contact on it or a hop
   (the rocking across the band of Housner's block, 1963, Bull. Seismol. Soc. Am. 53:403);
 * **both rims, on the band**: once that rocking has less than :data:`BAND_FRACTION` of the
-  energy that would tip the coin over a rim, and each rim alone would let it tip onto the
-  other (the two-contact problem loads both), the coin rests on its band (:func:`_band`): the
-  rims' normal velocities, and the band's slip and pivoting, are stopped by the least-energy
-  impulse at the band (which keeps the angular momentum about the contact line), and it rolls
-  on straight, slowed by the rolling resistance, to rest on edge;
+  energy that would tip the coin over a rim, the coin stands on its band
+  (:mod:`coinflight.core.band_contact`): both rims' lowest points touch, each with its own
+  normal force ≥ 0 and exact Coulomb friction, sliding or sticking (Glocker & Pfeiffer's
+  set-valued contact laws; Le Saux, Leine & Glocker 2005); its slip and its yaw are slowed
+  by friction (a yaw ω_z stops in I1 |ω_z| / (μ m g H), H = h/2 − a), and a turning roll
+  loads one rim more ((I3 + m r²) ω_a ω_z against m g H): where a rim's normal force reaches
+  0 the coin goes on on the other rim alone; where both points stick it rolls straight
+  (:func:`_band`), slowed by the rolling resistance, to rest on edge;
 * **the face**: the coin lies flat (its tilt below :data:`coinflight.core.rigid_contact.FACE_SINE`):
   at rest on that face if its tumbling energy is below the barrier, else the rim point coming
   down fastest meets the table (:func:`_face_slap`) and the coin flies on.
@@ -48,9 +51,9 @@ Limits (what is not modelled, and what happens instead):
 
 * rebounds slower than the landing's rest speed (0.01 m/s by default) are ended plastically
   (the normal velocity removed by the least-energy normal impulse), as the bounces' end is;
-* on the band the slip and the pivoting are stopped at once, not over the ~I1 |ω_z| /
-  (μ m g h/2) friction needs (10 ms for a nickel pivoting at 1 rad/s, μ 0.3), and the coin
-  then rolls straight: an upright coin is not tipped out of its band by a later turn;
+* a rocking below :data:`BAND_FRACTION` of the edge well's depth is removed at once on
+  entering the band (the least-energy projection onto it; the Zeno accumulation of ever
+  smaller rim impacts is cut there), the friction of that small impulse left out;
 * Painlevé's paradox (a slide with no consistent normal force) is resolved by stopping the
   slip with the least-energy tangential impulse (Génot & Brogliato 1999, Eur. J. Mech.
   A 18:653: a tangential impact);
@@ -68,6 +71,7 @@ import math
 
 import numpy as np
 
+from coinflight.core import band_contact as bc
 from coinflight.core import rigid_contact as rc
 from coinflight.core._jit import njit
 from coinflight.core.bounce import (
@@ -234,71 +238,33 @@ def _approach(y, c):
 
 
 @njit(cache=True)
-def _tilt_acceleration(y, c, side):
-    """n̈_z of the coin in state y (at n_z ≈ 0) carried by the one rim on ``side`` (+1: the
-    rim below for n_z > 0), in the mode the one-rim contact would take there
-    (:mod:`coinflight.core.rigid_contact`), rad/s² (by a step of 1e-8 s of its equations);
-    nan if that rim alone would lift off."""
-    t = y.copy()
-    size = math.sqrt(t[4] * t[4] + t[5] * t[5])
-    tiny = side * 1e-12
-    t[4], t[5], t[6] = t[4] / size, t[5] / size, tiny
-    n = (t[4], t[5], t[6])
-    t[0] = lowest_depth(tiny, c.radius, c.half_thickness, c.corner_radius)
-    rc._project(t, c, rc.SLIDING)
-    mode, dx, dy, jam = rc._classify(t, c)
-    if mode == rc.FREE or jam:
-        return math.nan
-    out = np.empty(10)
-    rc._derivative(t, out, c, mode, dx, dy)
-    omega = angular_velocity((t[7], t[8], t[9]), n, c.i1, c.i3)
-    rate = omega[0] * n[1] - omega[1] * n[0]
-    h = 1e-8
-    for i in range(10):
-        t[i] += h * out[i]
-    m = (t[4], t[5], t[6])
-    omega = angular_velocity((t[7], t[8], t[9]), m, c.i1, c.i3)
-    return (omega[0] * m[1] - omega[1] * m[0] - rate) / h
-
-
-@njit(cache=True)
-def _on_band(y, c):
-    """Whether a coin whose other rim has just come down (n_z = 0) rests on its band: its
-    rocking across the band has less than :data:`BAND_FRACTION` of the energy that would tip
-    it over a rim's corner (½ (I1 + m r²) ṅ_z² against the edge well's depth, barrier − m g r),
-    and each rim alone would let the coin tip onto the other (n̈_z towards 0 on either side:
-    the two-contact problem's solution then loads both rims; a coin turning or spinning fast
-    enough for its gyroscopic and centripetal moments to lift one rim fails it); and there is
-    friction (μ > 0) to stop its slip and pivoting on the band (:func:`_band`)."""
-    if not c.friction > 0.0:
-        return False  # frictionless, nothing stops the band's slip and pivoting
+def _rocking_died_out(y, c):
+    """Whether a coin whose other rim has just come down (n_z = 0) has stopped rocking across
+    its band: its rocking, ½ (I1 + m r²) ṅ_z², below :data:`BAND_FRACTION` of the energy that
+    would tip it over a rim's corner (the edge well's depth, barrier − m g r). It is then put
+    on its band (:func:`coinflight.core.band_contact.run_band`: both rims touching, each
+    with its normal force and Coulomb friction), if the band can hold it (both normal forces
+    ≥ 0)."""
     n = (y[4], y[5], y[6])
     omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
     m, r = c.mass, c.radius
     tilt_rate = omega[0] * n[1] - omega[1] * n[0]  # ṅ_z
     rocking = 0.5 * (c.i1 + m * r * r) * tilt_rate * tilt_rate
-    if not rocking < BAND_FRACTION * (c.barrier - m * c.g * r):
-        return False
-    up = _tilt_acceleration(y, c, 1.0)
-    down = _tilt_acceleration(y, c, -1.0)
-    return up < 0.0 and down > 0.0
+    return rocking < BAND_FRACTION * (c.barrier - m * c.g * r)
 
 
 @njit(cache=True)
 def _band(y, c, duration):
-    """The coin comes to rest on its edge band, both rims touching: (face, status, time).
+    """A coin rolling straight on its band, both rims' points sticking (the mode
+    :data:`coinflight.core.band_contact.ROLL`), to rest on edge: (face, status, time).
 
-    Entering the band, the normal velocities of both rims are stopped, and the slip and the
-    pivoting of the band on the table with them, by the impulse at the band that takes the
-    least kinetic energy (Gauss's principle: the velocity projected, in the metric of the mass
-    matrix, onto the band's rolling, ω = ω_a n, v = r ω_a n × Z). Impulses at the band's
-    contact line keep the angular momentum about that line, so
-    ω_a = (m r (n × Z)·v + L·n) / (I3 + m r²) (the rule of Housner's rocking block, 1963, for
-    a pivot line). Rolling straight on its band, the coin slows under the rolling resistance
-    alone, (I3 + m r²) ω̇_a = −ℓ_r m g sgn(ω_a), and it has settled on edge once
+    The drift of the band's run is removed first by the least-energy projection onto rolling
+    straight (ω = ω_a n, v = r ω_a n × Z), which keeps the angular momentum about the contact
+    line, ω_a = (m r (n × Z)·v + L·n) / (I3 + m r²). Rolling straight, nothing turns it (no
+    yaw without slip), and it slows under the rolling resistance alone,
+    (I3 + m r²) ω̇_a = −ℓ_r m g sgn(ω_a); it has settled on edge once
     ½ (I3 + m r²) ω_a² + m g r is below the barrier. Without rolling resistance it rolls on
-    (UNSETTLED). Approximation: the band's sliding and pivoting, which friction stops in
-    ~I1 |ω_z| / (μ m g h/2) (10 ms for a nickel pivoting at 1 rad/s, μ 0.3), are taken at once.
+    (UNSETTLED).
     """
     nx, ny = y[4], y[5]
     size = math.sqrt(nx * nx + ny * ny)
@@ -421,6 +387,7 @@ def run(y, c, rtol, duration, counts):
     for i in range(8):
         counts[i] = 0.0
     inner = np.zeros(7)
+    band = np.zeros(4)
     t = 0.0
     for _ in range(MAX_PHASES):
         if rc.below_barrier(y, c):
@@ -464,13 +431,24 @@ def run(y, c, rtol, duration, counts):
             continue
         if reason == rc.SECOND_RIM:
             counts[3] += 1.0
-            if _on_band(y, c):
-                # The band's roll is closed form: not capped, unless it never ends.
-                cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
-                face, status, rolled = _band(y, c, cap)
-                counts[4] += rolled
-                counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
-                return face, status, t + rolled
+            if _rocking_died_out(y, c):
+                spent, why = bc.run_band(y, c, duration - t, rtol, budget - inner[0], band)
+                if why != bc.NOT_BAND:
+                    t += spent
+                    counts[6] += band[0]
+                    counts[4] += band[2]
+                    counts[5] += spent - band[2]
+                    if why == bc.ROLLING:
+                        # The band's straight roll is closed form: not capped, unless it never
+                        # ends.
+                        cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
+                        face, status, rolled = _band(y, c, cap)
+                        counts[4] += rolled
+                        counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
+                        return face, status, t + rolled
+                    # A rim lifted (one-rim contact on the other), below the barrier (the test
+                    # at the top), the duration (idem), or a failed run (restarted).
+                    continue
         if reason == rc.NOT_IN_CONTACT or reason == rc.SECOND_RIM or reason == rc.PAINLEVE:
             if reason == rc.PAINLEVE:
                 # No consistent normal force for the slide: the slip is stopped by a tangential
