@@ -41,7 +41,7 @@ over a step h the triad turns by the rotation vector
 (ω1, ω2 the triad's angular velocity at the two Gauss points), the first term integrated
 exactly. Without damping the first term is the whole rotation: the torque-free precession of
 n about the fixed L at the rate |L|/I1 (Diaconis, Holmes & Montgomery 2007 §2, as
-:func:`coinflight.core.bounce.precess`) to rounding error, so K = 0 reproduces the closed form
+:func:`coinflight.core.flight.precess`) to rounding error, so K = 0 reproduces the closed form
 whatever the step. The damping's only time scale limits a step to ``DECAY_STEP`` · min(I1, I3)/K
 until the spin that remains could turn the coin by less than 1e-12 rad; after that the attitude is
 frozen, so any K ≥ 0 (1e3 N m s on a 1 mm coin) ends in a bounded number of steps.
@@ -115,21 +115,20 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core._jit import njit, prange
-from coinflight.core.bounce import (
+from coinflight.core.bounce import MAX_IMPACTS, after_impact
+from coinflight.core.contact import Contact
+from coinflight.core.flight import (
     CA_TOLERANCE,
     GAP_TOLERANCE,
     GRAZE_SKIP,
-    MAX_IMPACTS,
-    after_impact,
     precess,
+    table_impact,
 )
-from coinflight.core.contact import Contact
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
     cross,
     dot,
-    impact,
     lowest_depth,
     resting_face,
 )
@@ -903,7 +902,7 @@ def lower_gap(z, v, n, lm, axis, rate, tau, fall, air, c):
     bounding the drag's deceleration (:func:`drag_slack`).
 
     Without spin damping the attitude is the torque-free precession of the vacuum
-    (:func:`coinflight.core.bounce.precess`, what the steps compute to rounding), and the centre
+    (:func:`coinflight.core.flight.precess`, what the steps compute to rounding), and the centre
     of mass falls at most D τ²/2 below the vacuum parabola: the gap is at least
     z + v_z τ − (g + D) τ²/2 − depth(n_z(τ)) (:func:`coinflight.core.impact.lowest_depth`, the
     rounded rim); its rate is v_z − (g + D) τ plus the lowest point's (envelope theorem)."""
@@ -1018,7 +1017,7 @@ def next_contact(z, v, n, u, tr, a0, b0, tmin, rising, air, c, budget):
     §3.4). A step that ends below the surface brackets the contact, which a safeguarded Newton
     iteration on the length of one step from the bracket's start then polishes to
     GAP_TOLERANCE (a step of any length from a state is a smooth function of its length; Newton
-    inside the bracket, else bisection, as :func:`coinflight.core.bounce.next_contact`)."""
+    inside the bracket, else bisection, as :func:`coinflight.core.flight.next_contact`)."""
     hh = c.half_thickness
     corner = c.corner_radius
     rho = c.reach
@@ -1166,19 +1165,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         if bounces >= max_bounces:
             return resting_face(n[2], c.edge_sine), bounces, first, t, _LIMIT
         z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
-        v, lm, rebound = impact(
-            v,
-            lm,
-            n,
-            c.radius,
-            c.half_thickness,
-            c.mass,
-            c.i1,
-            c.i3,
-            c.restitution,
-            c.friction,
-            c.corner_radius,
-        )
+        v, lm, rebound = table_impact(v, lm, n, c)
         face, status, duration = ending(v, lm, n, rebound, c)
         if status >= 0:
             return face, bounces, first, t + duration, status

@@ -56,7 +56,9 @@ Modes and their transitions
 * **FREE**: the normal force needed would be negative: the coin lifts off. The run stops and
   hands the state back (:mod:`coinflight.core.rigid_ending` flies it).
 
-Events, each located by bisection of the step to :data:`EVENT_TIME`: in ROLLING, F_z falling
+Events, each located in the step to :data:`EVENT_TIME` (regula falsi on the event function that
+crossed, Illinois-modified, safeguarded by bisection: ~8 trial steps an event where bisection
+took ~35; the bracket is decided as bisection decides it): in ROLLING, F_z falling
 to 0 (lift-off) or |F_h| reaching μ F_z (slip starts); in SLIDING, N falling to 0 (lift-off),
 c_N to 0 (Painlevé) or the slip stopping (its component along the slip at the step's start
 reaching 0, or |u_h| below :data:`SLIP_FLOOR`). At a slip's stop the stick test: ROLLING if
@@ -67,7 +69,11 @@ impact law's ray, (λ/N + μ K_hh) ŝ = W'_hz + b₀_h/N, solved by
 :func:`coinflight.core.impact._ray_direction` (reused), and iterated on N(ŝ).
 In both modes the run stops when n_z crosses 0 (the other rim touches: the band contact; only
 for a rim with a flat band, H > 0) or s falls below :data:`FACE_SINE` (the face comes down to
-the table).
+the table). A run keeps the rim it starts on: past n_z = 0 that rim's point carries on smoothly
+to the event, where the lower rim's point would jump by 2H n and a trial step whose stages
+straddle n_z = 0 would see a jump in the force (its error rejected step after step down to the
+crossing: ~30 rejected steps at each of the thousands of rim changes of a coin rocking across
+its band).
 
 Rolling and pivoting resistance are those of :func:`coinflight.core.contact_phase._derivative`
 at a point contact (its arc's radius of gyration r_t is 0): torques −ℓ_r F_z ω_h /
@@ -104,9 +110,10 @@ Speed
 A landing's contact takes about 2,000-3,000 accepted steps a simulated second at the ending's
 tolerance (1e-9), a few μs each: the coins the bounces hand over spin (one precessing at
 ~100 rad/s takes steps of ~0.5 ms), switch between sticking and slipping at the cone's
-boundary (steps of ~15 μs while a small slip turns), and lift off within milliseconds (events
-located by bisection). ``benchmarks/bench_bounce.py --rigid-rates`` measures the
-landings a second.
+boundary (steps of ~15 μs while a small slip turns: near its stop the slip's direction turns at
+~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`, ~20 of them
+a stop), and lift off within milliseconds (events located in ~8 trial steps).
+``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a second.
 """
 
 from __future__ import annotations
@@ -209,7 +216,7 @@ MAX_STEP = 5e-3
 MAX_STEPS = 200_000
 """Accepted steps at most in one run."""
 EVENT_TIME = 1e-12
-"""Events are located to within this time, s (bisection of the step)."""
+"""Events are located to within this time, s (the bracket of the event's search)."""
 STICK_SPEED = 1e-9
 """A slip below this speed, m/s, has stopped (the stick test follows)."""
 FACE_SINE = 1e-2
@@ -239,24 +246,51 @@ APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
 
 
+@njit(cache=True, inline="always")
+def _side(nz):
+    """The rim below for the heads normal's z component nz: +1 the tails-side rim (n_z ≥ 0)."""
+    return 1.0 if nz >= 0.0 else -1.0
+
+
 @njit(cache=True)
-def _basis(n, c):
-    """(ρ, ŵ, s, sign, R, H) of the contact point on the lower rim (module notes)."""
+def _basis(n, c, side):
+    """(ρ, ŵ, s, side, R, H) of the contact point on the rim ``side`` (module notes; ±1, the
+    sign of n_z for which it is the lower rim: :func:`coinflight.core.impact.contact_point`
+    with the rim given, to the bit the same for side = sgn(n_z)). A run keeps its rim: past
+    n_z = 0 the same rim's point carries on smoothly (the second-rim event stops the run
+    there), where the lower rim's would jump by 2H n and a step's stages straddling n_z = 0
+    would see a discontinuous force (their error rejecting step after step down to the
+    crossing)."""
     corner = c.corner_radius
-    rho = contact_point(n, c.radius, c.half_thickness, corner)
     nz = n[2]
+    hh = c.half_thickness - corner
+    s2 = 1.0 - nz * nz
+    if s2 <= 1e-24:
+        rho = (-side * hh * n[0], -side * hh * n[1], -side * hh * n[2] - corner)
+    else:
+        k = (c.radius - corner) / math.sqrt(s2)
+        rho = (
+            k * nz * n[0] - side * hh * n[0],
+            k * nz * n[1] - side * hh * n[1],
+            k * (nz * nz - 1.0) - side * hh * n[2] - corner,
+        )
     # s ≥ FACE_SINE on the flow (the face event); a trial stage may overshoot: kept finite so
     # that its error rejects the step.
-    s = max(math.sqrt(max(0.0, 1.0 - nz * nz)), 1e-9)
+    s = max(math.sqrt(max(0.0, s2)), 1e-9)
     w = ((nz * n[0]) / s, (nz * n[1]) / s, (nz * nz - 1.0) / s)
-    sign = 1.0 if nz >= 0.0 else -1.0
-    return rho, w, s, sign, c.radius - corner, c.half_thickness - corner
+    return rho, w, s, side, c.radius - corner, hh
 
 
 @njit(cache=True)
 def geometric_rate(n, omega, c):
     """ρ̇_g, the rate of the contact point ρ(n(t)) as n turns at ω, m/s (module notes)."""
-    _, w, s, sign, big_r, big_h = _basis(n, c)
+    return _rate(n, omega, c, _side(n[2]))
+
+
+@njit(cache=True)
+def _rate(n, omega, c, side):
+    """:func:`geometric_rate` on the rim ``side`` (:func:`_basis`)."""
+    _, w, s, sign, big_r, big_h = _basis(n, c, side)
     nd = cross(omega, n)
     nz, ndz = n[2], nd[2]
     k = nz * ndz / (s * s)
@@ -289,12 +323,18 @@ def _resistance(omega, c):
 def constraint_terms(y, c):
     """(W', b₀, ρ, ω, τ, u) of the state y: u̇ = W' F + b₀ (module notes). W' as a 9-tuple,
     row-major."""
+    return _terms(y, c, _side(y[6]))
+
+
+@njit(cache=True)
+def _terms(y, c, side):
+    """:func:`constraint_terms` on the rim ``side`` (:func:`_basis`)."""
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
     lm = (y[7], y[8], y[9])
     i1, i3 = c.i1, c.i3
     omega = angular_velocity(lm, n, i1, i3)
-    rho, _, _, _, _, _ = _basis(n, c)
+    rho, _, _, _, _, _ = _basis(n, c, side)
     k = collision_matrix(rho, n, c.mass, i1, i3)
     tau = _resistance(omega, c)
     col = cross(inverse_inertia_apply(tau, n, i1, i3), rho)
@@ -303,7 +343,7 @@ def constraint_terms(y, c):
     q = (1.0 / i3 - 1.0 / i1) * dot(nd, lm)
     p = (1.0 / i3 - 1.0 / i1) * dot(n, lm)
     gamma = (q * n[0] + p * nd[0], q * n[1] + p * nd[1], q * n[2] + p * nd[2])
-    rd = geometric_rate(n, omega, c)
+    rd = _rate(n, omega, c, side)
     t1 = cross(gamma, rho)
     t2 = cross(omega, rd)
     b = (t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2] - c.g)
@@ -326,7 +366,13 @@ def _solve3(w, b):
 @njit(cache=True)
 def rolling_force(y, c):
     """F keeping the contact point at rest (u̇ = 0): W' F = −b₀, N."""
-    w, b, _, _, _, _ = constraint_terms(y, c)
+    return _rolling(y, c, _side(y[6]))
+
+
+@njit(cache=True)
+def _rolling(y, c, side):
+    """:func:`rolling_force` on the rim ``side``."""
+    w, b, _, _, _, _ = _terms(y, c, side)
     return _solve3(w, (-b[0], -b[1], -b[2]))
 
 
@@ -349,7 +395,13 @@ def slip_start(y, c):
     """(ŝ_x, ŝ_y): the direction in which a stuck contact that the cone cannot hold starts to
     slide: the ray u̇_h = λ ŝ, λ > 0 (module notes; :func:`coinflight.core.impact._ray_direction`
     at the normal force N(ŝ), iterated)."""
-    w, b, _, _, _, _ = constraint_terms(y, c)
+    return _slip_start(y, c, _side(y[6]))
+
+
+@njit(cache=True)
+def _slip_start(y, c, side):
+    """:func:`slip_start` on the rim ``side``."""
+    w, b, _, _, _, _ = _terms(y, c, side)
     return _ray(w, b, c.friction)
 
 
@@ -381,10 +433,10 @@ def _ray(w, b, mu):
 
 
 @njit(cache=True)
-def _force(y, c, mode, dx, dy):
+def _force(y, c, mode, dx, dy, side):
     """(F, c_N, ŝ): the contact force of the mode (ŝ the slip direction used; (dx, dy) below
-    :data:`STICK_SPEED`)."""
-    w, b, _, _, _, u = constraint_terms(y, c)
+    :data:`STICK_SPEED`), on the rim ``side`` (:func:`_basis`)."""
+    w, b, _, _, _, u = _terms(y, c, side)
     return _contact_force(w, b, u, c.friction, mode, dx, dy)
 
 
@@ -417,8 +469,14 @@ def _contact_force(w, b, u, mu, mode, dx, dy):
 @njit(cache=True)
 def _derivative(y, out, c, mode, dx, dy):
     """dy/dt of y = (z, v, n, L) in ``mode`` (ROLLING or SLIDING along the slip, or (dx, dy) at a
-    slip below :data:`STICK_SPEED`)."""
-    w, b, rho, omega, tau, u = constraint_terms(y, c)
+    slip below :data:`STICK_SPEED`), on the lower rim."""
+    _flow(y, out, c, mode, dx, dy, _side(y[6]))
+
+
+@njit(cache=True)
+def _flow(y, out, c, mode, dx, dy, side):
+    """:func:`_derivative` on the rim ``side`` (:func:`_basis`)."""
+    w, b, rho, omega, tau, u = _terms(y, c, side)
     f, _, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
     n = (y[4], y[5], y[6])
     torque = cross(rho, f)
@@ -440,13 +498,13 @@ def _derivative(y, out, c, mode, dx, dy):
 
 
 @njit(cache=True)
-def _events(y, c, mode, dx, dy, sx, sy, floor, band):
+def _events(y, c, mode, dx, dy, sx, sy, floor, band, side):
     """Event functions at y, each positive while nothing happens: (lift-off, slip start or
     stop, Painlevé, second rim, face). (sx, sy): the slip direction at the step's start;
     ``floor``: the slip below which it has stopped (:data:`SLIP_FLOOR`; 0 for a step starting
     below it, a slide starting from rest, whose stop is its reversal); ``band``: n_z's sign at
-    the start (0: no band, no second-rim event)."""
-    w, b, _, _, _, u = constraint_terms(y, c)
+    the start (0: no band, no second-rim event); ``side``: the run's rim (:func:`_basis`)."""
+    w, b, _, _, _, u = _terms(y, c, side)
     f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
     nz = y[6]
     second = nz * band if band != 0.0 else 1.0
@@ -466,41 +524,62 @@ def _crossed(e):
 
 
 @njit(cache=True)
-def _step(y, h, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new):
-    """One Dormand-Prince step of h from y (k1 = f(y) given): ``new`` and the error estimate
-    (k7 = f(new))."""
+def _first_crossed(e):
+    """The index of the first event function of e that has crossed (:func:`_crossed`)."""
+    if e[0] < 0.0:
+        return 0
+    if e[1] < 0.0:
+        return 1
+    if e[2] <= 0.0:
+        return 2
+    if e[3] < 0.0:
+        return 3
+    return 4
+
+
+@njit(cache=True)
+def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new):
+    """One Dormand-Prince step of h from y (k1 = f(y) given) on the rim ``side``: ``new`` and
+    the error estimate (k7 = f(new))."""
     for i in range(y.shape[0]):
         tmp[i] = y[i] + h * _A21 * k1[i]
-    _derivative(tmp, k2, c, mode, dx, dy)
+    _flow(tmp, k2, c, mode, dx, dy, side)
     for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
-    _derivative(tmp, k3, c, mode, dx, dy)
+    _flow(tmp, k3, c, mode, dx, dy, side)
     for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
-    _derivative(tmp, k4, c, mode, dx, dy)
+    _flow(tmp, k4, c, mode, dx, dy, side)
     for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
-    _derivative(tmp, k5, c, mode, dx, dy)
+    _flow(tmp, k5, c, mode, dx, dy, side)
     for i in range(y.shape[0]):
         tmp[i] = y[i] + h * (
             _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
         )
-    _derivative(tmp, k6, c, mode, dx, dy)
+    _flow(tmp, k6, c, mode, dx, dy, side)
     for i in range(y.shape[0]):
         new[i] = y[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
-    _derivative(new, k7, c, mode, dx, dy)
+    _flow(new, k7, c, mode, dx, dy, side)
 
 
 @njit(cache=True)
 def _project(y, c, mode):
     """Put y back on its constraints (module notes): |n| = 1, gap 0, u_z = 0 (and u_h = 0
-    rolling) by the least-energy impulse at the contact. Returns (gap removed, speed removed)."""
+    rolling) by the least-energy impulse at the contact on the lower rim. Returns (gap removed,
+    speed removed)."""
+    return _project_on(y, c, mode, _side(y[6]))
+
+
+@njit(cache=True)
+def _project_on(y, c, mode, side):
+    """:func:`_project` on the rim ``side`` (:func:`_basis`)."""
     size = math.sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
     y[4] /= size
     y[5] /= size
     y[6] /= size
     n = (y[4], y[5], y[6])
-    rho, _, _, _, _, _ = _basis(n, c)
+    rho, _, _, _, _, _ = _basis(n, c, side)
     gap = y[0] + rho[2]
     y[0] = -rho[2]
     lm = (y[7], y[8], y[9])
@@ -547,18 +626,24 @@ def _classify(y, c):
     """The mode of a state on the constraints with u_z = 0: ROLLING if its slip is below
     :data:`SLIP_FLOOR` and the rolling force lies in the cone, else SLIDING; FREE if the normal
     force would be negative; with the slide's start direction (dx, dy) and PAINLEVE's flag."""
-    _, _, _, _, _, u = constraint_terms(y, c)
+    return _classify_on(y, c, _side(y[6]))
+
+
+@njit(cache=True)
+def _classify_on(y, c, side):
+    """:func:`_classify` on the rim ``side`` (:func:`_basis`)."""
+    _, _, _, _, _, u = _terms(y, c, side)
     slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
     if slip <= SLIP_FLOOR:
-        f = rolling_force(y, c)
+        f = _rolling(y, c, side)
         if f[2] < 0.0:
             return FREE, 0.0, 0.0, False
         if math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]:
             return ROLLING, 0.0, 0.0, False
-        dx, dy = slip_start(y, c)
+        dx, dy = _slip_start(y, c, side)
     else:
         dx, dy = u[0] / slip, u[1] / slip
-    f, coef, _, _ = _force(y, c, SLIDING, dx, dy)
+    f, coef, _, _ = _force(y, c, SLIDING, dx, dy, side)
     if coef <= 0.0:
         return SLIDING, dx, dy, True
     if f[2] < 0.0:
@@ -567,13 +652,13 @@ def _classify(y, c):
 
 
 @njit(cache=True)
-def _sticks(y, c):
-    """Whether a sliding contact has stopped: its slip below :data:`SLIP_FLOOR` and the
-    rolling force inside the friction cone (and pressing)."""
-    _, _, _, _, _, u = constraint_terms(y, c)
+def _sticks(y, c, side):
+    """Whether a sliding contact on the rim ``side`` has stopped: its slip below
+    :data:`SLIP_FLOOR` and the rolling force inside the friction cone (and pressing)."""
+    _, _, _, _, _, u = _terms(y, c, side)
     if u[0] * u[0] + u[1] * u[1] > SLIP_FLOOR * SLIP_FLOOR:
         return False
-    f = rolling_force(y, c)
+    f = _rolling(y, c, side)
     return f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]
 
 
@@ -589,7 +674,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         return 0.0, FREE, FACE  # lying on its face: not a one-rim contact
     if c.half_thickness - c.corner_radius > 0.0 and n[2] == 0.0:
         return 0.0, FREE, SECOND_RIM  # upright on its band: both rims touch
-    rho, _, _, _, _, _ = _basis(n, c)
+    side = _side(n[2])  # the rim the run keeps (_basis)
+    rho, _, _, _, _, _ = _basis(n, c, side)
     y[0] = -rho[2]
     lm = (y[7], y[8], y[9])
     omega = angular_velocity(lm, n, c.i1, c.i3)
@@ -598,17 +684,17 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         return 0.0, FREE, NOT_IN_CONTACT
     if uz > approach:
         return 0.0, FREE, LIFT_OFF
-    _project(y, c, SLIDING)  # u_z = 0 by a frictionless normal impulse
-    mode, dx, dy, jam = _classify(y, c)
+    _project_on(y, c, SLIDING, side)  # u_z = 0 by a frictionless normal impulse
+    mode, dx, dy, jam = _classify_on(y, c, side)
     if jam:
         return 0.0, mode, PAINLEVE
     if mode == FREE:
         return 0.0, FREE, LIFT_OFF
     if mode == ROLLING:
-        _project(y, c, ROLLING)
+        _project_on(y, c, ROLLING, side)
     band = 0.0
     if c.half_thickness - c.corner_radius > 0.0:
-        band = 1.0 if y[6] > 0.0 else -1.0
+        band = side
     size = y.shape[0]  # 10, or 12 with the horizontal position (x, y) carried along
     k1 = np.empty(size)
     k2 = np.empty(size)
@@ -630,7 +716,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         scale[i + 6] = c.i1 * speed / reach
     t = 0.0
     h = 1e-4
-    _derivative(y, k1, c, mode, dx, dy)
+    _flow(y, k1, c, mode, dx, dy, side)
     accepted = 0
     stalled = 0
     while True:
@@ -646,7 +732,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # The slip's direction at the step's start (SLIDING), for its stop event.
         sx, sy, floor = dx, dy, 0.0
         if mode == SLIDING:
-            _, _, _, _, _, u = constraint_terms(y, c)
+            _, _, _, _, _, u = _terms(y, c, side)
             slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
             if slip > STICK_SPEED:
                 sx, sy = u[0] / slip, u[1] / slip
@@ -654,7 +740,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 floor = SLIP_FLOOR
         err = math.inf
         for _ in range(60):
-            _step(y, h, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+            _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
             err = 0.0
             for i in range(10):
                 e = h * (
@@ -677,22 +763,53 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             return t, mode, STEP_FAILED
         accepted += 1
         counts[0] += 1.0
-        ev = _events(new, c, mode, dx, dy, sx, sy, floor, band)
+        ev = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
         if _crossed(ev):
-            # Bisect the step for the first time an event function crosses.
+            # Locate the first time an event function crosses: regula falsi on the function
+            # that has crossed, Illinois-modified (Dowell & Jarratt 1971, BIT 11:168: the end
+            # kept twice has its value halved, so both ends converge), safeguarded by bisection
+            # (an iteration that leaves more than half the bracket is followed by a bisection);
+            # the bracket, decided by _crossed as before, closes to EVENT_TIME.
             lo, hi = 0.0, h
+            e_lo = _events(y, c, mode, dx, dy, sx, sy, floor, band, side)
+            e_hi = ev
+            f_lo, f_hi = 0.0, 0.0
+            which = -1
+            kept = 0
+            bisect = False
             for i in range(size):
                 trial[i] = new[i]
             while hi - lo > EVENT_TIME and hi - lo > 1e-15 * hi:
-                mid = 0.5 * (lo + hi)
-                _step(y, mid, c, mode, dx, dy, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+                width = hi - lo
+                j = _first_crossed(e_hi)
+                if j != which:
+                    which = j
+                    f_lo, f_hi = e_lo[j], e_hi[j]
+                    kept = 0
+                if bisect or not (f_lo > 0.0 and f_hi <= 0.0 and f_lo - f_hi > 0.0):
+                    mid = 0.5 * (lo + hi)
+                else:
+                    margin = 0.25 * EVENT_TIME
+                    mid = lo + width * (f_lo / (f_lo - f_hi))
+                    mid = min(max(mid, lo + margin), hi - margin)
+                _step(y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
                 counts[2] += 1.0
-                if _crossed(_events(new, c, mode, dx, dy, sx, sy, floor, band)):
+                e_mid = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
+                if _crossed(e_mid):
                     hi = mid
+                    e_hi = e_mid
+                    f_hi = e_mid[which]
                     for i in range(size):
                         trial[i] = new[i]
+                    f_lo = 0.5 * f_lo if kept == 1 else f_lo
+                    kept = 1
                 else:
                     lo = mid
+                    e_lo = e_mid
+                    f_lo = e_mid[which]
+                    f_hi = 0.5 * f_hi if kept == -1 else f_hi
+                    kept = -1
+                bisect = hi - lo > 0.5 * width and not bisect
             for i in range(size):
                 y[i] = trial[i]
             t += hi
@@ -703,13 +820,12 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 return t, mode, STEP_FAILED
             if mode == ROLLING:
                 counts[6] += hi
-            ev = _events(y, c, mode, dx, dy, sx, sy, floor, band)
+            ev = _events(y, c, mode, dx, dy, sx, sy, floor, band, side)
             if ev[3] < 0.0:
-                # Just past n_z = 0 (within EVENT_TIME): the projection would put the state on
-                # the other rim (_basis takes the lower one by n_z's sign) by a plastic impulse
-                # there. Left unprojected: on the first rim to within the step's drift.
+                # Just past n_z = 0 (within EVENT_TIME), on the run's rim to within the step's
+                # drift: the caller takes the other rim's arrival from here.
                 return t, mode, SECOND_RIM
-            gap, drift = _project(y, c, SLIDING)
+            gap, drift = _project_on(y, c, SLIDING, side)
             counts[4] = max(counts[4], gap)
             counts[5] = max(counts[5], drift)
             if ev[4] < 0.0:
@@ -721,8 +837,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             # The slip starts (ROLLING) or stops (SLIDING): the stick test.
             if mode == SLIDING:
                 # Its stop: the slip left is below the event's tolerance; test the stick.
-                _, _, _, _, _, u = constraint_terms(y, c)
-                f = rolling_force(y, c)
+                _, _, _, _, _, u = _terms(y, c, side)
+                f = _rolling(y, c, side)
                 if f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]:
                     mode = ROLLING
                 else:
@@ -730,24 +846,24 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     # Reversing or swerving: the slip that is left sets the direction, or, if it
                     # is below the stick speed, the ray.
                     if slip <= STICK_SPEED:
-                        dx, dy = slip_start(y, c)
+                        dx, dy = _slip_start(y, c, side)
                     else:
                         dx, dy = u[0] / slip, u[1] / slip
             else:
                 mode = SLIDING
-                dx, dy = slip_start(y, c)
-            _, _, _, _, _, u = constraint_terms(y, c)
+                dx, dy = _slip_start(y, c, side)
+            _, _, _, _, _, u = _terms(y, c, side)
             if mode == ROLLING or u[0] * u[0] + u[1] * u[1] <= STICK_SPEED * STICK_SPEED:
                 # Rolling, or a slide starting from rest of the contact point: u_h = 0.
-                _project(y, c, ROLLING)
+                _project_on(y, c, ROLLING, side)
             if mode == SLIDING:
-                f, coef, _, _ = _force(y, c, SLIDING, dx, dy)
+                f, coef, _, _ = _force(y, c, SLIDING, dx, dy, side)
                 if coef <= 0.0:
                     return t, mode, PAINLEVE
                 if f[2] < 0.0:
                     return t, FREE, LIFT_OFF
             counts[3] += 1.0
-            _derivative(y, k1, c, mode, dx, dy)
+            _flow(y, k1, c, mode, dx, dy, side)
             h = max(h, 1e-7)
             continue
         t += h
@@ -755,7 +871,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             counts[6] += h
         for i in range(size):
             y[i] = new[i]
-        gap, drift = _project(y, c, mode)
+        gap, drift = _project_on(y, c, mode, side)
         counts[4] = max(counts[4], gap)
         counts[5] = max(counts[5], drift)
         # First same as last: k7, the derivative at the step's end before the projection (which
@@ -764,15 +880,15 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         for i in range(size):
             k1[i] = k7[i]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
-        if mode == SLIDING and _sticks(y, c):
+        if mode == SLIDING and _sticks(y, c, side):
             # A slide below SLIP_FLOOR whose rolling force is back inside the cone has stopped
             # (the stick test of a slip's stop, for a slide that started below the floor and
             # never crossed it: one hovering on the cone's boundary would otherwise be followed
             # with steps shrinking as its slip turns).
             mode = ROLLING
-            _project(y, c, ROLLING)
+            _project_on(y, c, ROLLING, side)
             counts[3] += 1.0
-            _derivative(y, k1, c, mode, dx, dy)
+            _flow(y, k1, c, mode, dx, dy, side)
 
 
 class RigidRun(NamedTuple):

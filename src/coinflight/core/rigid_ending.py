@@ -12,7 +12,7 @@ switches between them are events located in time:
   starting when that force leaves the friction cone, stopping when the slip vanishes);
 * **in flight** (a hop): where the normal force of the one-rim contact falls to zero the coin
   leaves the table, and its flight is the closed-form torque-free flight of
-  :mod:`coinflight.core.bounce` (:func:`coinflight.core.bounce.next_contact`) to its next
+  :mod:`coinflight.core.flight` (:func:`coinflight.core.flight.next_contact`) to its next
   contact, where the impact law of :func:`coinflight.core.impact.impact` (Stronge's energetic
   restitution with Coulomb friction) acts; a rebound slower than the rest speed returns the
   coin to the one-rim contact, a faster one flies on;
@@ -74,13 +74,14 @@ import numpy as np
 from coinflight.core import band_contact as bc
 from coinflight.core import rigid_contact as rc
 from coinflight.core._jit import njit
-from coinflight.core.bounce import (
+from coinflight.core.flight import (
     CA_TOLERANCE,
     GRAZE_SKIP,
     _gap_after,
     _precess_from,
     mechanical_energy,
     next_contact,
+    table_impact,
     tumbling_energy,
 )
 from coinflight.core.impact import (
@@ -96,7 +97,6 @@ from coinflight.core.impact import (
     contact_point,
     contact_velocity,
     cross,
-    impact,
     lowest_depth,
     resting_face,
 )
@@ -135,7 +135,7 @@ ENDED_BAND = 3
 @njit(cache=True)
 def _hop(y, c):
     """Fly the coin in state y (just left the table, or rebounded) to its next contact, closed
-    form (:func:`coinflight.core.bounce.next_contact`); y is set to the state at that contact
+    form (:func:`coinflight.core.flight.next_contact`); y is set to the state at that contact
     (or left unchanged for a hop too small to open the gap). Returns (time, approach speed of
     the contact point there; ≥ 0 for no flight or a graze)."""
     z, vz = y[0], y[3]
@@ -209,19 +209,7 @@ def _impact(y, c):
     v = (y[1], y[2], y[3])
     lm = (y[7], y[8], y[9])
     n = (y[4], y[5], y[6])
-    v, lm, rebound = impact(
-        v,
-        lm,
-        n,
-        c.radius,
-        c.half_thickness,
-        c.mass,
-        c.i1,
-        c.i3,
-        c.restitution,
-        c.friction,
-        c.corner_radius,
-    )
+    v, lm, rebound = table_impact(v, lm, n, c)
     y[0] = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
     y[1], y[2], y[3] = v
     y[7], y[8], y[9] = lm

@@ -68,12 +68,12 @@ CONTACT_TOSSES_PER_SECOND = 150.0
 nickel tosses, e = 0.5, μ = 0.3, on 2 threads of a busy 2-core machine (a quiet one runs about
 five times as many; ``python benchmarks/bench_bounce.py --contact-rates N``)."""
 
-RIGID_TOSSES_PER_SECOND = 50.0
+RIGID_TOSSES_PER_SECOND = 70.0
 """Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
 e > 0), drag-free or through air, for the work bounds: US nickel, e = 0.5, μ = 0.3,
-resistances 1e-4 m, on 2 threads of a busy 2-core machine (``python benchmarks/bench_bounce.py
---rigid-rates N``; the coins roll for a median 1.5 s, up to 22 s: about 3,000 steps of the
-one-rim contact a landing)."""
+resistances 1e-4 m, on 2 threads of a busy 2-core machine, about half what it measures there
+(``python benchmarks/bench_bounce.py --rigid-rates N``: human and vigorous tosses; the coins
+roll for a median 1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
 
 CONTACT_PER_TOSS_PER_SECOND = 75.0
 """The same landings when every toss has its own contact parameters (a distribution of e, μ
