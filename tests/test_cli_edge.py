@@ -229,13 +229,13 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--ratios", "abc"], "--ratios must be comma-separated numbers"),
         (["--ratios", "0.1,,1"], "--ratios must be comma-separated numbers"),
         (["--simulate", "0"], "--simulate"),
-        (["--seed", "3"], "--seed needs --simulate N"),
-        (["--friction", "0.1"], "--friction needs --simulate N"),
+        (["--seed", "3"], "--seed needs --target P or --simulate N"),
+        (["--friction", "0.1"], "--friction needs --target P or --simulate N"),
         (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
-        (["--ending", "contact"], "--ending needs --simulate N"),
-        (["--corner-radius", "1e-4"], "--corner-radius needs --simulate N"),
+        (["--ending", "contact"], "--ending needs --target P or --simulate N"),
+        (["--corner-radius", "1e-4"], "--corner-radius needs --target P or --simulate N"),
         (
             ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
             "--corner-radius: corner radius must be between 0 and 0.0012 (in m), got 0.002: at "

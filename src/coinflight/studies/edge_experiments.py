@@ -500,15 +500,15 @@ def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> lis
     """The cells of the box ``ranges`` (name → (low, high)): ``points`` values per parameter,
     ends included (2: the corners), every combination, and the box's centre last when it is
     not among them. A range of equal ends is one value. The values are evenly spaced, except
-    ``resistance``'s (geometric: the range spans two decades), whose centre is the geometric
-    mean."""
+    a resistance's (a name ending in ``resistance``: geometric, the range spans two decades),
+    whose centre is the geometric mean."""
     points = v.count("points per parameter", points, 2, 9)
     names = list(ranges)
 
     def values(name: str, lo: float, hi: float) -> list[float]:
         if lo == hi:
             return [float(lo)]
-        if name == "resistance":
+        if name.endswith("resistance"):
             return [float(x) for x in np.geomspace(lo, hi, points)]
         return [float(x) for x in np.linspace(lo, hi, points)]
 
@@ -519,7 +519,7 @@ def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> lis
     }
     if any(math.isnan(c) for c in centre.values()):
         centre = {
-            k: math.sqrt(lo * hi) if k == "resistance" else 0.5 * (lo + hi)
+            k: math.sqrt(lo * hi) if k.endswith("resistance") else 0.5 * (lo + hi)
             for k, (lo, hi) in ranges.items()
         }
         cells.append(centre)
