@@ -285,6 +285,15 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             for text in ("0", "1", "2", "abc", "1/0", "-1/3", "nan", "1/3/4")
         ),
         (["--target", "1/3", "--ratios", "0.5"], "--ratios applies without --target"),
+        *(
+            (
+                ["--target", "1/3", "--psi", text],
+                "--psi must be a cone angle in degrees above 0 "
+                f"and at most 90, or human; got {text!r}",
+            )
+            for text in ("0", "95", "abc", "nan")
+        ),
+        (["--simulate", "10", "--psi", "human"], "--psi applies with --target"),
         (
             ["--target", "1/3", "--simulate", "10", "--ending", "contact", "--restitution", "0"],
             DEAD_CONTACT,
@@ -373,3 +382,14 @@ def test_target_with_the_rigid_ending_and_few_tosses():
     assert obj["ending"] == "rigid" and obj["box"]["resistance"] == [1e-5, 1e-3]
     assert len(obj["cells"]) == 3  # the resistance's two ends and its geometric centre
     assert obj["cells"][-1]["resistance"] == pytest.approx(1e-4)
+
+
+def test_target_with_a_wobble_says_it():
+    code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "human",
+                        "--restitution", "0.45", "--friction", "0.3", "--json")  # fmt: skip
+    assert code == 0
+    obj = json.loads(out)
+    assert obj["setting"]["psi"] == "human" and len(obj["cells"]) == 1
+    code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "80",
+                        "--restitution", "0.45", "--friction", "0.3")  # fmt: skip
+    assert code == 0 and "tosses wobbling on a cone ψ 80°" in out

@@ -141,3 +141,17 @@ def test_a_target_out_of_reach_is_said(monkeypatch):
     with pytest.raises(ValueError, match=r"P\(edge\) = 0.5 is not reached for h/d between 0.001"):
         target_ratio(0.5, 10, 1, restitution=0.45, friction=0.3)
     assert tried[-1] == 100.0 and len(tried) - 1 <= max_evaluations(0.5, 1e-3)
+
+
+def test_a_wobble_lowers_the_ratio_and_is_checked_first():
+    # With the human preset's wobble (ψ ≈ 82°) more thick cylinders stay on edge than with
+    # planar tosses (edge_experiments' notes), so P = 1/3 comes at a thinner cylinder: the
+    # same tosses (seed), one cell, the roots apart by many errors.
+    kw = {"restitution": 0.45, "friction": 0.325}
+    planar = target_ratio(1 / 3, 4000, 3, **kw).centre
+    human = target_ratio(1 / 3, 4000, 3, psi="human", **kw)
+    assert human.setting["psi"] == "human"
+    gap = planar.ratio - human.centre.ratio
+    assert gap > 5 * math.hypot(planar.stderr, human.centre.stderr)
+    with pytest.raises(ValueError, match="psi must be above 0 and at most 90 degrees"):
+        target_ratio(1 / 3, 10, 1, psi=120.0)

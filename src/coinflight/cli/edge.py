@@ -9,7 +9,7 @@ import typer
 
 from coinflight.cli.cluster import ClusterOptions
 from coinflight.cli.command import command
-from coinflight.cli.edge_groups import SETTING, EdgeJson, EdgeRatios, EdgeSimulate, EdgeTarget
+from coinflight.cli.edge_groups import SETTING, EdgeJson, EdgeRatios, EdgeSimulate, TargetOption
 from coinflight.cli.options import SimulateSeed, print_json
 
 
@@ -18,7 +18,7 @@ def edge(
     *,
     ratios: EdgeRatios = None,
     simulate: EdgeSimulate = None,
-    target: EdgeTarget = None,
+    target: TargetOption = None,
     seed: SimulateSeed = None,
     setting: Annotated[dict[str, Any], SETTING],
     cluster: ClusterOptions,

@@ -60,7 +60,7 @@ EdgeSimulate = Annotated[
         "(default 2,000).",
     ),
 ]
-EdgeTarget = Annotated[
+TargetOption = Annotated[
     str | None,
     typer.Option(
         "--target",
@@ -148,6 +148,17 @@ SpinX = Annotated[
 LaunchSpeed = Annotated[
     str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
 ]
+Psi = Annotated[
+    str | None,
+    typer.Option(
+        "--psi",
+        metavar="DEG|human",
+        rich_help_panel="Toss",
+        help="With --target: a wobble as well, the precession cone angle ψ in degrees "
+        "(0 < ψ ≤ 90; 90: none), or human (the human toss preset's spread about 82°); the same "
+        "ψ at every ratio. Default: planar tosses.",
+    ),
+]
 EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
 SETTING = Group(
     {
@@ -162,6 +173,7 @@ SETTING = Group(
             ("corner_radius", CornerRadius),
             ("omega_x", SpinX),
             ("launch_speed", LaunchSpeed),
+            ("psi", Psi),
             ("g", EdgeGravity),
         )
     },

@@ -60,8 +60,14 @@ def run_target(query: Any, cluster: Any, json: bool) -> None:
         if varied
         else "every parameter given: one cell"
     )
+    psi = answer["setting"]["psi"]
+    tosses = (
+        "planar tosses"
+        if psi is None
+        else f"tosses wobbling on a cone ψ {'≈ 82° (human)' if psi == 'human' else f'{psi:g}°'}"
+    )
     typer.echo(
-        f"  {answer['ending']} ending, {answer['n']:,} tosses per ratio tried, the same at "
+        f"  {answer['ending']} ending, {tosses}, {answer['n']:,} per ratio tried, the same at "
         f"every ratio and cell; {over}"
     )
     if len(answer["cells"]) > 1:

@@ -53,6 +53,22 @@ def parse_target(text: str) -> float:
     return p
 
 
+def parse_psi(text: str) -> float | str:
+    """--psi: ``human`` or a cone angle in degrees (0 < ψ ≤ 90), else a ValueError naming the
+    option, what it takes and the text."""
+    if text.strip().lower() == "human":
+        return "human"
+    try:
+        degrees = float(text)
+    except ValueError:
+        degrees = math.nan
+    if not 0.0 < degrees <= 90.0:  # NaN fails too
+        raise ValueError(
+            f"--psi must be a cone angle in degrees above 0 and at most 90, or human; got {text!r}"
+        )
+    return degrees
+
+
 def edge_query(
     ratios: str | None = None,
     simulate: int | None = None,
@@ -69,6 +85,7 @@ def edge_query(
     corner_radius: float | None = None,
     omega_x: str | None = None,
     launch_speed: str | None = None,
+    psi: str | None = None,
     g: float | None = None,
 ) -> EdgeQuery:
     """The options of ``coinflight edge`` checked in its order: --target and --ratios apart; the
@@ -109,6 +126,12 @@ def edge_query(
             setting[key] = parse_distribution(text, option, unit)
     if simulate is None and scheduler is not None:
         raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
+    if psi is not None:
+        if p is None:
+            raise ValueError(
+                "--psi applies with --target (the rows of --simulate are planar tosses)"
+            )
+        setting["psi"] = parse_psi(psi)
     if p is not None:
         if corner_radius is not None:
             from coinflight.studies.edge import SIM_RATIOS, simulated_corner_radius
@@ -157,6 +180,7 @@ __all__ = [
     "EdgeQuery",
     "edge_query",
     "edge_rows",
+    "parse_psi",
     "parse_target",
     "target_answer",
 ]

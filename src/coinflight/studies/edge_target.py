@@ -271,6 +271,7 @@ def target_ratio(
     launch_speed: Distribution | None = None,
     corner_radius: float | None = None,
     g: float = 9.81,
+    psi: float | str | None = None,
     executor: Any = None,
     progress: Callable[[str], None] | None = None,
 ) -> EdgeTarget:
@@ -292,6 +293,11 @@ def target_ratio(
     ending, drop_height, spin, launch_speed, corner_radius, g
         As :func:`coinflight.studies.edge.simulate_edge` takes them (defaults: its vigorous
         planar tosses, the table 0.5 m below, sharp corners, the rocking ending).
+    psi : float or "human", optional
+        A wobble as well: the precession cone angle ψ in degrees (0 < ψ ≤ 90), or "human",
+        the human toss preset's spread of ψ about 82° (:func:`coinflight.studies.
+        edge_experiments.axial_spin`, recomputed at each ratio so that ψ, not ωz, is the same
+        for every cylinder); default none (planar tosses).
     executor : optional
         Where the tosses run (:func:`~coinflight.studies.edge.simulate_edge`).
     progress : callable, optional
@@ -343,6 +349,19 @@ def target_ratio(
                 out[name] = cell[name]
         return out
 
+    def wobble(x: float) -> Distribution | None:
+        """ωz putting a cylinder of ratio ``x`` on the cone ψ (None: planar tosses)."""
+        if psi is None:
+            return None
+        from coinflight.model.distributions import Uniform
+        from coinflight.studies.edge import SIM_SPIN
+        from coinflight.studies.edge_experiments import axial_spin
+
+        return axial_spin(x, Uniform(*SIM_SPIN) if spin is None else spin, psi)
+
+    with warnings.catch_warnings():  # a bad ψ refused now (a thin cylinder is meant)
+        warnings.simplefilter("ignore", v.PlausibilityWarning)
+        wobble(low)
     rates = []
     for cell in cells:  # each cell checked as simulate_edge will check it, before any toss
         kw = kwargs(cell)
@@ -353,7 +372,7 @@ def target_ratio(
         rates.append(TableLanding(surface).rate)
     with warnings.catch_warnings():  # the toss setting refused now, if bad (one toss)
         warnings.simplefilter("ignore", v.PlausibilityWarning)
-        simulate_edge([low], 1, 0, **kwargs(cells[0]))
+        simulate_edge([low], 1, 0, **kwargs(cells[0]), axial_spin=wobble(low))
     most = max_evaluations(p, low)
     typical = 2 + _bisections() + 2
     seconds = sum(most * n / rate for rate in rates)
@@ -377,7 +396,9 @@ def target_ratio(
             if x not in memo:
                 with warnings.catch_warnings():  # a thick cylinder is meant: not a coin's size
                     warnings.simplefilter("ignore", v.PlausibilityWarning)
-                    ((_, est),) = simulate_edge([x], n, stream, executor=executor, **kw)
+                    ((_, est),) = simulate_edge(
+                        [x], n, stream, executor=executor, axial_spin=wobble(x), **kw
+                    )
                 memo[x] = est.p
             return memo[x]
 
@@ -417,6 +438,7 @@ def target_ratio(
         "spin": None if spin is None else spin.to_dict(),
         "launch_speed": None if launch_speed is None else launch_speed.to_dict(),
         "diameter": SIM_DIAMETER,
+        "psi": psi,
     }
     return EdgeTarget(
         p,
