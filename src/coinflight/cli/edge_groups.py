@@ -142,11 +142,10 @@ CornerRadius = Annotated[
         "thickness (h/d × 24 mm / 2).",
     ),
 ]
-SpinX = Annotated[
-    str | None, _dist("--omega-x", "With --simulate: spin about the x diameter", "rad/s")
-]
+_BOTH = "With --simulate or --target: "
+SpinX = Annotated[str | None, _dist("--omega-x", _BOTH + "spin about the x diameter", "rad/s")]
 LaunchSpeed = Annotated[
-    str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
+    str | None, _dist("--launch-speed", _BOTH + "upward launch speed v0", "m/s")
 ]
 Psi = Annotated[
     str | None,
