@@ -34,6 +34,13 @@ the resistances 1e-5–1e-3 m, both the same value in a cell
 and its centre (:func:`coinflight.studies.edge_experiments.box_cells`); the band is the lowest
 and highest root. P(edge) is not monotonic in e and μ, so the corners' band is a lower bound of
 the model's spread. A given value is one point of its dimension (all given: one cell).
+
+The toss matters more than the box: with the human toss preset's wobble (``psi="human"``: an
+axial spin putting the normal on a cone of about 82°, fitted to coins, not measured for
+cylinders) more thick cylinders stay on edge, and the root moves further than across the
+whole box with the rocking ending. Its error is the statistical one only: the band's ends are
+single cells, and the model's own limits (:mod:`coinflight.studies.edge_experiments`) are not
+in it.
 """
 
 from __future__ import annotations
