@@ -229,13 +229,13 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--ratios", "abc"], "--ratios must be comma-separated numbers"),
         (["--ratios", "0.1,,1"], "--ratios must be comma-separated numbers"),
         (["--simulate", "0"], "--simulate"),
-        (["--seed", "3"], "--seed needs --simulate N"),
-        (["--friction", "0.1"], "--friction needs --simulate N"),
+        (["--seed", "3"], "--seed needs --target P or --simulate N"),
+        (["--friction", "0.1"], "--friction needs --target P or --simulate N"),
         (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
-        (["--ending", "contact"], "--ending needs --simulate N"),
-        (["--corner-radius", "1e-4"], "--corner-radius needs --simulate N"),
+        (["--ending", "contact"], "--ending needs --target P or --simulate N"),
+        (["--corner-radius", "1e-4"], "--corner-radius needs --target P or --simulate N"),
         (
             ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
             "--corner-radius: corner radius must be between 0 and 0.0012 (in m), got 0.002: at "
@@ -276,6 +276,36 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             ],
             "pivoting resistance must be between 0 and 0.01",
         ),
+        *(
+            (
+                ["--target", text],
+                f"--target must be a probability strictly between 0 and 1, "
+                f"a fraction such as 1/3 or a decimal such as 0.333; got {text!r}",
+            )
+            for text in ("0", "1", "2", "abc", "1/0", "-1/3", "nan", "1/3/4")
+        ),
+        (["--target", "1/3", "--ratios", "0.5"], "--ratios applies without --target"),
+        *(
+            (
+                ["--target", "1/3", "--psi", text],
+                "--psi must be a cone angle in degrees above 0 "
+                f"and at most 90, or human; got {text!r}",
+            )
+            for text in ("0", "95", "abc", "nan")
+        ),
+        (["--simulate", "10", "--psi", "human"], "--psi applies with --target"),
+        (
+            ["--target", "1/3", "--simulate", "10", "--ending", "contact", "--restitution", "0"],
+            DEAD_CONTACT,
+        ),
+        (
+            ["--target", "1/3", "--corner-radius", "0.02"],
+            "--corner-radius: corner radius must be between 0 and 0.012",
+        ),
+        (
+            ["--target", "1/3", "--simulate", "1000000", "--ending", "rigid"],
+            "more than the limit of 3,600 s; use fewer tosses per ratio",
+        ),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(args, words):
@@ -298,3 +328,68 @@ def test_help():
     assert "(restitution 0, friction 0.3) on a table 0.5 m below" in out
     for flag in ("--ratios", "--simulate", "--seed", "--restitution", "--friction", "--json"):
         assert flag in out
+
+
+def test_target_json_carries_the_band_the_closed_forms_the_measured_rows_and_the_run():
+    args = ["edge", "--target", "1/3", "--simulate", "400", "--seed", "2", "--json"]
+    first = answer(CliRunner().invoke(app, args), args)
+    again = ["edge", "--target", "0.3333333333333333", "--simulate", "400", "--seed", "2", "--json"]
+    second = answer(CliRunner().invoke(app, again), again)
+    for obj in (first, second):
+        obj.pop("elapsed")
+    assert first == second  # 1/3 written either way, same seed: the same search
+    assert first["target"] == pytest.approx(1 / 3, rel=1e-15)
+    assert first["seed"] == 2 and first["n"] == 400 and "bisect" in first["method"]
+    # Yong & Mahadevan (2011): 1/(2√2) geometric, 1/√3 dynamic
+    ym = first["yong_mahadevan"]
+    assert ym["geometric"] == pytest.approx(1 / (2 * math.sqrt(2)), rel=1e-12)
+    assert ym["dynamic"] == pytest.approx(1 / math.sqrt(3), rel=1e-12)
+    assert [round(m["ratio"], 3) for m in first["measured"]] == [0.354, 0.577]
+    assert first["box"] == {"restitution": [0.3, 0.6], "friction": [0.05, 0.6]}
+    roots = [c["ratio"] for c in first["cells"]]
+    assert len(roots) == 5 and first["band"]["low"]["ratio"] == min(roots)
+    assert first["band"]["high"]["ratio"] == max(roots)
+    for c in first["cells"]:
+        b = c["bracket"]
+        assert b["low"] <= c["ratio"] <= b["high"] and b["p_low"] <= 1 / 3 <= b["p_high"]
+        assert c["stderr"] is None or c["stderr"] > 0
+    assert first["estimated_seconds"] > 0
+
+
+def test_target_text_dead_landing_is_the_dynamic_root():
+    # Restitution 0: the dynamic model's setting, root tan(π/6) = 1/√3 (Yong & Mahadevan 2011).
+    code, out, _ = _run(
+        "--target", "1/3", "--simulate", "20000", "--seed", "1", "--restitution", "0",
+        "--friction", "0.3",
+    )  # fmt: skip
+    assert code == 0
+    assert "every parameter given: one cell" in out
+    assert "Yong & Mahadevan (2011): geometric 0.354, dynamic (dead landing) 0.577" in out
+    assert "measured (standup_maths_2018): P(edge) 0.132 ± 0.011 at h/d 0.354" in out
+    assert "seed 1; method: common random numbers" in out
+    line = next(x for x in out.splitlines() if x.strip().endswith("e 0, μ 0.3"))
+    ratio, _, se = line.split()[:3]
+    assert abs(float(ratio) - 1 / math.sqrt(3)) < 4 * float(se)
+
+
+def test_target_with_the_rigid_ending_and_few_tosses():
+    code, out, _ = _run(
+        "--target", "1/3", "--simulate", "30", "--seed", "1", "--ending", "rigid",
+        "--restitution", "0.45", "--friction", "0.3", "--json",
+    )  # fmt: skip
+    assert code == 0
+    obj = json.loads(out)
+    assert obj["ending"] == "rigid" and obj["box"]["resistance"] == [1e-5, 1e-3]
+    assert len(obj["cells"]) == 3  # the resistance's two ends and its geometric centre
+    assert obj["cells"][-1]["resistance"] == pytest.approx(1e-4)
+
+
+def test_target_with_a_wobble_says_it():
+    code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "human",
+                        "--restitution", "0.45", "--friction", "0.3", "--json")  # fmt: skip
+    assert code == 0
+    obj = json.loads(out)
+    assert obj["setting"]["psi"] == "human" and len(obj["cells"]) == 1
+    code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "80",
+                        "--restitution", "0.45", "--friction", "0.3")  # fmt: skip
+    assert code == 0 and "tosses wobbling on a cone ψ 80°" in out

@@ -478,3 +478,20 @@ def test_mujoco_check_counts_the_contact_endings_decided_edges():
                     rolling_resistance=1e-4, pivoting_resistance=1e-4)  # fmt: skip
     out = land(cylinder(THIN.ratio), omega, v0, 1.0, 9.81, table)
     assert int(np.sum(out.status == Status.DECIDED_UPRIGHT)) == check.contact_decided_upright
+
+
+def test_the_rigid_ending_is_a_band_of_its_own_over_the_3d_box():
+    # The rigid ending's band: the same box as the contact ending's (resistance included),
+    # the same tosses as the rocking band's cells (common random numbers), its own ending name.
+    r = edge_experiments([THIN], 20, 5, rigid=6, psi="human")
+    (c,) = r.comparisons
+    assert c.contact is None and c.rigid is not None
+    assert c.bands == (c.rocking, c.rigid) and c.rigid.ending == "rigid"
+    assert len(c.rigid.cells) == 2**5 + 1 and all(cell.n == 6 for cell in c.rigid.cells)
+    assert "resistance" in c.box and r.rigid_n == 6 and r.psi == "human"
+    data = r.to_dict()
+    assert [b["ending"] for b in data["experiments"][0]["bands"]] == ["rocking", "rigid"]
+    assert data["experiments"][0]["stderr"] == pytest.approx(math.sqrt(0.1 * 0.9 / 200))
+    assert r.table()[0][2].startswith("0.100 ± 0.021 (")  # the measurement's binomial error
+    with pytest.raises(ValueError, match="rigid-ending tosses per cell"):
+        edge_experiments([THIN], 20, 5, rigid=-1)

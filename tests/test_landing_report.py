@@ -38,6 +38,7 @@ TINY = report.Sizes(
     experiments=60,
     experiments_contact=2,
     experiments_points=2,
+    experiments_rigid=2,
 )
 
 
@@ -71,7 +72,11 @@ def test_thick_cylinders_section_is_the_studys(written):
     numbers = json.loads((out / "numbers.json").read_text())["edge_experiments"]
     # the study with the report's child for this question (part 6) of the seed
     again, left = study.thick_experiments(
-        TINY.experiments, SEED, TINY.experiments_contact, TINY.experiments_points
+        TINY.experiments,
+        SEED,
+        TINY.experiments_contact,
+        TINY.experiments_points,
+        TINY.experiments_rigid,
     )
     expected = json.loads(json.dumps({**again.to_dict(), "left_out": left}))
     numbers.pop("elapsed"), expected.pop("elapsed")
@@ -81,6 +86,31 @@ def test_thick_cylinders_section_is_the_studys(written):
     assert "## Thick cylinders against experiments" in md
     for row in again.table():
         assert row[-2] in {"inside", "above", "below", "too few tosses to judge"} and row[0] in md
+
+
+def test_measured_edges_beside_the_human_tosses_band_of_every_ending(written):
+    # Every measured row of thick_coin_edges.txt, with its binomial error, beside the band of
+    # human tosses as the preset makes them (its wobble), rocking and the rigid 3-D ending.
+    from coinflight.datasets import edge_experiments as dataset
+
+    out, _ = written
+    numbers = json.loads((out / "numbers.json").read_text())["edge_experiments_human"]
+    again, _ = study.thick_experiments(
+        TINY.experiments, SEED, 0, TINY.experiments_points, TINY.experiments_rigid, "human"
+    )
+    expected = json.loads(json.dumps(again.to_dict()))
+    numbers.pop("elapsed"), expected.pop("elapsed")
+    assert numbers == expected and numbers["psi"] == "human"
+    measured = dataset(kind="measured")
+    assert [x["ratio"] for x in numbers["experiments"]] == [m.ratio for m in measured]
+    md = (out / "report.md").read_text()
+    assert "## Thick cylinders against experiments: human tosses with the preset's wobble" in md
+    for x, m in zip(numbers["experiments"], measured, strict=True):
+        assert [b["ending"] for b in x["bands"]] == ["rocking", "rigid"]
+        assert x["stderr"] == pytest.approx(m.stderr)
+        assert f"{m.fraction:.3f} ± {m.stderr:.3f} (" in md  # beside its bands, with its error
+        for b in x["bands"]:
+            assert f"{b['low']:.3f} ± {b['low_stderr']:.3f} – {b['high']:.3f}" in md
 
 
 def test_the_thick_cylinders_seed_printed_reproduces_the_numbers():

@@ -1,4 +1,5 @@
-"""``coinflight edge``: P(edge) of thick coins as numbers (the figure: :mod:`.plot_edge`)."""
+"""``coinflight edge``: P(edge) of thick coins as numbers (the figure: :mod:`.plot_edge`; the
+options: :mod:`.edge_groups`; ``--target``'s text: :mod:`.edge_target`)."""
 
 from __future__ import annotations
 
@@ -7,156 +8,17 @@ from typing import Annotated, Any, cast
 import typer
 
 from coinflight.cli.cluster import ClusterOptions
-from coinflight.cli.command import Group, command
-from coinflight.cli.groups import _dist
-from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
-from coinflight.cli.options import (
-    CONTACT_PANEL,
-    OUTPUT_PANEL,
-    SURFACE_PANEL,
-    Gravity,
-    SimulateSeed,
-    number_option,
-    print_json,
-)
-from coinflight.queries.edge import TABLE_RATIOS
-
-SIM_PANEL = "Simulation"
-RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
-_SETTING = "vigorous planar spins, landing dead on a table; coinflight.studies.edge.simulate_edge"
-
-
-def _simulate(what: str) -> Any:
-    """--simulate N: tosses per ratio (``what``: what the command does with them)."""
-    return typer.Option(
-        "--simulate",
-        min=1,
-        max=10**7,
-        metavar="N",
-        rich_help_panel=SIM_PANEL,
-        help=f"Also land N simulated tosses per ratio ({_SETTING}) and {what}.",
-    )
-
-
-_ONLY = "with --simulate: "
-EdgeRatios = Annotated[
-    str,
-    typer.Option(
-        "--ratios",
-        metavar="R,R,...",
-        help="Thickness / diameter ratios h/d, each between 0.001 and 100.",
-    ),
-]
-EdgeSimulate = Annotated[
-    int | None, _simulate("report their edge fraction with its standard error")
-]
-Restitution = Annotated[
-    float | None,
-    number_option(
-        "--restitution",
-        "E",
-        SURFACE_PANEL,
-        _ONLY + "the table's coefficient of restitution in [0, 1] (default 0: lands dead, "
-        "as in the dynamic model).",
-    ),
-]
-Friction = Annotated[
-    float | None,
-    number_option(
-        "--friction",
-        "MU",
-        SURFACE_PANEL,
-        _ONLY + "the table's Coulomb friction coefficient, 0 to 3 (default 0.3).",
-    ),
-]
-DropHeight = Annotated[
-    float | None,
-    number_option(
-        "--drop-height",
-        "D",
-        SURFACE_PANEL,
-        _ONLY + "how far the table lies below the launch height, m (default 0.5).",
-    ),
-]
-Ending = Annotated[
-    str | None,
-    typer.Option(
-        "--ending",
-        metavar="rocking|contact|rigid",
-        rich_help_panel=CONTACT_PANEL,
-        help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
-    ),
-]
-RollingResistance = Annotated[
-    float | None,
-    number_option(
-        "--rolling-resistance",
-        "L",
-        CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + ROLLING_HELP,
-    ),
-]
-PivotingResistance = Annotated[
-    float | None,
-    number_option(
-        "--pivoting-resistance",
-        "L",
-        CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP,
-    ),
-]
-CornerRadius = Annotated[
-    float | None,
-    number_option(
-        "--corner-radius",
-        "A",
-        CONTACT_PANEL,
-        _ONLY + CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's "
-        "thickness (h/d × 24 mm / 2).",
-    ),
-]
-SpinX = Annotated[
-    str | None, _dist("--omega-x", "With --simulate: spin about the x diameter", "rad/s")
-]
-LaunchSpeed = Annotated[
-    str | None, _dist("--launch-speed", "With --simulate: upward launch speed v0", "m/s")
-]
-EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
-SETTING = Group(
-    {
-        name: (kind, None)
-        for name, kind in (
-            ("restitution", Restitution),
-            ("friction", Friction),
-            ("drop_height", DropHeight),
-            ("ending", Ending),
-            ("rolling_resistance", RollingResistance),
-            ("pivoting_resistance", PivotingResistance),
-            ("corner_radius", CornerRadius),
-            ("omega_x", SpinX),
-            ("launch_speed", LaunchSpeed),
-            ("g", EdgeGravity),
-        )
-    },
-    dict,
-)
-"""The simulated landings' options: the command receives them as keywords of
-:func:`~coinflight.queries.edge.edge_query` (None: not given)."""
-EdgeJson = Annotated[
-    bool,
-    typer.Option(
-        "--json",
-        rich_help_panel=OUTPUT_PANEL,
-        help="Print a JSON list on stdout, one object per ratio, instead of text.",
-    ),
-]
+from coinflight.cli.command import command
+from coinflight.cli.edge_groups import SETTING, EdgeJson, EdgeRatios, EdgeSimulate, TargetOption
+from coinflight.cli.options import SimulateSeed, print_json
 
 
 @command
 def edge(
     *,
-    ratios: EdgeRatios = TABLE_RATIOS,
+    ratios: EdgeRatios = None,
     simulate: EdgeSimulate = None,
+    target: TargetOption = None,
     seed: SimulateSeed = None,
     setting: Annotated[dict[str, Any], SETTING],
     cluster: ClusterOptions,
@@ -170,11 +32,23 @@ def edge(
     spins of 150–300 rad/s about a diameter, launched at 1.5–3 m/s,
     landing dead (restitution 0, friction 0.3) on a table 0.5 m below.
 
+    With --target P: the ratio h/d at which those tosses land on edge with probability P,
+    as a band over the table's unmeasured parameters not given.
+
     Example: coinflight edge --ratios 0.1,0.577,1 --simulate 4000 --seed 1 --json
+
+    Example: coinflight edge --target 1/3 --seed 1
     """
     from coinflight.queries.edge import edge_query, edge_rows
 
-    query = edge_query(ratios, simulate, seed, scheduler=cluster.scheduler, **setting)
+    query = edge_query(
+        ratios, simulate, seed, target=target, scheduler=cluster.scheduler, **setting
+    )
+    if query.target is not None:
+        from coinflight.cli.edge_target import run_target
+
+        run_target(query, cluster, json)
+        return
     with cluster.executor() as executor:
         rows = edge_rows(query, executor)
     if json:

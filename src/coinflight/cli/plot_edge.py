@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from coinflight.cli.edge import RATIOS, SIM_PANEL, _simulate
+from coinflight.cli.edge_groups import RATIOS, SIM_PANEL, _simulate
 from coinflight.cli.options import Dpi, OutFile, SimulateSeed, number
 from coinflight.cli.output import echo_written
 from coinflight.cli.parsers import parse_numbers

@@ -79,6 +79,10 @@ class Sizes:
     """The same with the 3-D contact ending, per cell (corners and centre; 0: rocking only)."""
     experiments_points: int = 3
     """Values per unmeasured parameter of the rocking ending's box (2: corners and centre)."""
+    experiments_rigid: int = 100
+    """The same with the rigid 3-D ending, per cell (corners and centre; 0: none). The human
+    tosses' section lands its wobbling cylinders with the rocking and rigid endings only: a
+    wobbling cylinder rolls on its rim for long at low resistance, slow in both 3-D endings."""
 
     def to_dict(self) -> dict[str, int]:
         from dataclasses import asdict
@@ -100,6 +104,7 @@ QUICK = Sizes(
     experiments=400,
     experiments_contact=4,
     experiments_points=2,
+    experiments_rigid=4,
 )
 """A report in seconds (tests, a first look): the same sections, small samples."""
 
@@ -121,6 +126,8 @@ class LandingReport:
     edges: study.EdgeCheck | None = None
     experiments: EdgeExperiments | None = None
     experiments_left: tuple[str, ...] = ()
+    experiments_human: EdgeExperiments | None = None
+    """The same measured points beside human tosses as the preset makes them (its wobble)."""
 
     def numbers(self) -> dict[str, Any]:
         """Every number of the report, JSON-ready (``numbers.json``)."""
@@ -182,6 +189,9 @@ class LandingReport:
             "edge_experiments": None
             if self.experiments is None
             else {**self.experiments.to_dict(), "left_out": list(self.experiments_left)},
+            "edge_experiments_human": None
+            if self.experiments_human is None
+            else self.experiments_human.to_dict(),
             "timings": self.timings,
         }
         return out
@@ -379,17 +389,32 @@ def landing_report(
     if mujoco is not None and sizes.mujoco_edges > 0:  # MuJoCo installed and asked for
         edges = timed("edges in both engines", lambda: study.edge_check(sizes.mujoco_edges, seed))
     experiments: EdgeExperiments | None = None
+    human: EdgeExperiments | None = None
     left: tuple[str, ...] = ()
     if sizes.experiments > 0:
-        experiments, left_out = timed(
-            "thick cylinders against experiments",
-            lambda: study.thick_experiments(
-                sizes.experiments, seed, sizes.experiments_contact, sizes.experiments_points
-            ),
-        )
+        for psi in (None, "human"):
+
+            def compare(psi: str | None = psi) -> tuple[EdgeExperiments, list[str]]:
+                return study.thick_experiments(
+                    sizes.experiments,
+                    seed,
+                    0 if psi else sizes.experiments_contact,
+                    sizes.experiments_points,
+                    sizes.experiments_rigid,
+                    "human" if psi else None,
+                )
+
+            name = "thick cylinders against experiments" + (", human tosses" if psi else "")
+            x, left_out = timed(name, compare)
+            experiments, human = (x, human) if psi is None else (experiments, x)
         left = tuple(left_out)
     files: list[Path] = []
-    more = {"bouncing": bouncing, "edges": edges, "experiments": experiments}
+    more = {
+        "bouncing": bouncing,
+        "edges": edges,
+        "experiments": experiments,
+        "experiments_human": human,
+    }
     report = LandingReport(
         dead, maps, bands, mujoco, note, sizes, seed, (), timings, **more, experiments_left=left
     )
@@ -456,6 +481,8 @@ def build_document(r: LandingReport) -> Document:
         doc.add(*_edges_section(r.edges))
     if r.experiments is not None:
         doc.add(*_experiments_section(r.experiments, r.experiments_left))
+    if r.experiments_human is not None:
+        doc.add(*_experiments_section(r.experiments_human, ()))
     doc.add(
         Heading("Timings"),
         Table(("section", "seconds"), tuple((k, f"{v:.1f}") for k, v in r.timings.items())),
@@ -933,7 +960,11 @@ _AGAINST = {
 
 def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Block, ...]:
     from coinflight.studies.edge import SIM_DIAMETER, edge_probability
-    from coinflight.studies.edge_experiments import MIN_TOSSES_TO_JUDGE, RESISTANCE
+    from coinflight.studies.edge_experiments import (
+        HUMAN_PSI_DEGREES,
+        MIN_TOSSES_TO_JUDGE,
+        RESISTANCE,
+    )
 
     findings = []
     for c in x.comparisons:
@@ -947,10 +978,10 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             word = b.verdict(obs)
             by = "" if word == "inside" else f" by {abs(b.gap(obs)):.3f} (to the band's end)"
             findings.append(
-                f"{c.experiment.label}: measured {obs.p:.3f} (95 % {lo:.3f}–{hi:.3f}) is "
-                f"{_AGAINST[word]}{by} with the {b.ending} ending, {b.low.p:.3f} ± "
-                f"{b.low.stderr:.3f} to {b.high.p:.3f} ± {b.high.stderr:.3f} over "
-                f"{len(b.cells)} cells ({models})."
+                f"{c.experiment.label}: measured {obs.p:.3f} ± {obs.stderr:.3f} (95 % "
+                f"{lo:.3f}–{hi:.3f}) is {_AGAINST[word]}{by} with the {b.ending} ending, "
+                f"{b.low.p:.3f} ± {b.low.stderr:.3f} to {b.high.p:.3f} ± {b.high.stderr:.3f} "
+                f"over {len(b.cells)} cells ({models})."
             )
     verdicts = {b.verdict(c.experiment.observed) for c in x.comparisons for b in c.bands}
     missed = bool(verdicts & {"above", "below"})
@@ -959,21 +990,40 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
     box = x.comparisons[0].box if x.comparisons else {}
     unit = {"diameter": " m", "drop_height": " m (release above the table)", "resistance": " m"}
     ranges = "; ".join(f"{k} {lo:g}–{hi:g}{unit.get(k, '')}" for k, (lo, hi) in box.items())
+    wobble = x.psi is not None
+    tosses = (
+        f"human tosses as the preset makes them, with its wobble (axial spin ωz ~ Normal(μ, "
+        f"μ/2), μ putting the normal on a cone of ψ = {HUMAN_PSI_DEGREES:.1f}° at the median "
+        "spin: fitted to coins' same-side rate; a cylinder's ψ is not measured)"
+        if x.psi == "human"
+        else f"tosses with a wobble of ψ = {x.psi}°"
+        if wobble
+        else "planar tosses (spin about a diameter only, no axial spin)"
+    )
+    three_d = [
+        f"{name} ending: {size:,} tosses per cell, corners and centre"
+        for name, size in (("contact", x.contact_n), ("rigid", x.rigid_n))
+        if size
+    ]
     return (
-        Heading("Thick cylinders against experiments"),
+        Heading(
+            "Thick cylinders against experiments"
+            + (": human tosses with the preset's wobble" if wobble else "")
+        ),
         Paragraph(
             "The measured edge fractions shipped with coinflight (coinflight.datasets."
-            "edge_experiments; their provenance is weak: fractions read from a secondary table) "
-            "beside the table landing's P(edge) for the same kind of throw "
-            "(coinflight.studies.edge_experiments; its tosses come from child "
-            f"{study.EXPERIMENTS_CHILD} of seed {x.seed}: coinflight.studies.landing."
+            "edge_experiments; their provenance is weak: fractions read from a secondary table), "
+            "each with its binomial standard error, beside the table landing's P(edge) for the "
+            f"same kind of throw, {tosses} (coinflight.studies.edge_experiments; its tosses come "
+            f"from child {study.EXPERIMENTS_CHILD} of seed {x.seed}: coinflight.studies.landing."
             "thick_experiments with this seed reproduces them). Setting: "
             + "; ".join(settings)
-            + f". Unmeasured, carried as a band: {ranges} (the resistance only with the contact "
-            f"ending). Rocking ending: {x.n:,} tosses per cell, {x.points} values per parameter "
-            f"(every combination and the box's centre); contact ending: {x.contact_n:,} tosses "
-            "per cell, corners and centre. The same tosses in every cell; sizes other than "
-            f"{SIM_DIAMETER * 1000:g} mm by similarity (lengths × k, g × k, times unchanged). "
+            + f". Unmeasured, carried as a band: {ranges} (the resistance only with the 3-D "
+            f"endings). Rocking ending: {x.n:,} tosses per cell, {x.points} values per "
+            "parameter (every combination and the box's centre); "
+            + ("; ".join(three_d) if three_d else "no 3-D ending")
+            + ". The same tosses in every cell; cylinders of diameter other than "
+            f"{SIM_DIAMETER * 1000:g} mm simulated at their size. "
             "A measured 95 % (Wilson) interval wholly above the highest cell + 2 s.e. is "
             "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. The band's ends "
             "are its extreme cells, so their noise widens it (the highest of tens of noisy "
@@ -990,13 +1040,17 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 "Where the band misses a measured point, the candidates are: the setting (the "
                 "throws' spin, height and release are the human toss preset's and our ranges, "
                 "not the experiment's; the cylinders' size, material and the table are not "
-                "known; the preset's axial spin is left out), the unmeasured parameters (e, μ, "
-                f"the resistance {RESISTANCE[0]:g}–{RESISTANCE[1]:g} m and a rounded rim, not "
-                "varied here, may lie outside the ranges taken), and the model (the rocking "
-                "ending's planar hand-off; the contact ending's edges are about ten times "
-                "MuJoCo's on vigorous US-nickel tosses at one point, e 0.5, μ 0.3 and 0.6, "
-                "resistance 1e-4 m, sharp corners, t_c 1 ms, MuJoCo condim 6: section 'Edges in "
-                "both engines')."
+                "known; "
+                + (
+                    "the wobble is the coin preset's, not a cylinder's"
+                    if wobble
+                    else "planar tosses leave out the axial spin every human toss has (the "
+                    "section with the preset's wobble follows)"
+                )
+                + f"), the unmeasured parameters (e, μ, the resistance {RESISTANCE[0]:g}–"
+                f"{RESISTANCE[1]:g} m and a rounded rim, not varied here, may lie outside the "
+                "ranges taken), and the model (the rocking ending's planar hand-off discards "
+                "the spin and precession; rigid bodies with Coulomb friction)."
             )
             if missed
             else (
@@ -1005,8 +1059,9 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 "agreement; the full report's sizes judge it."
             )
             if unjudged
-            else "Every measured point lies within the model's band with both endings; the band "
-            "is wide, so this is agreement within what is not measured, not a confirmation."
+            else "Every measured point lies within the model's band with every ending; the "
+            "band is wide, so this is agreement within what is not measured, not a "
+            "confirmation."
         ),
         *((Bullets(tuple(f"left out: {line}" for line in left)),) if left else ()),
     )

@@ -374,18 +374,20 @@ class Band:
 
 @dataclass(frozen=True)
 class Comparison:
-    """One experiment beside its simulated bands (``contact`` None when not simulated)."""
+    """One experiment beside its simulated bands (``contact``, ``rigid`` None when not
+    simulated)."""
 
     experiment: Experiment
     setting: Setting
     rocking: Band
     contact: Band | None
     box: Mapping[str, tuple[float, float]] = field(default_factory=dict)
-    """The ranges of the widest box simulated (the contact ending's when it ran)."""
+    """The ranges of the widest box simulated (a 3-D ending's when one ran)."""
+    rigid: Band | None = None
 
     @property
     def bands(self) -> tuple[Band, ...]:
-        return (self.rocking,) if self.contact is None else (self.rocking, self.contact)
+        return tuple(b for b in (self.rocking, self.contact, self.rigid) if b is not None)
 
 
 @dataclass(frozen=True)
@@ -398,11 +400,14 @@ class EdgeExperiments:
     seed: int
     elapsed: float
     points: int = 2
+    rigid_n: int = 0
+    psi: float | str | None = None
+    """The wobble of every toss (:func:`axial_spin`; None: planar tosses)."""
 
     HEADER = (
         "experiment",
         "h/d",
-        "measured (95 % CI)",
+        "measured ± s.e. (95 % CI)",
         "ending",
         "model band: low – high (± s.e.)",
         "centre ± s.e.",
@@ -425,7 +430,7 @@ class EdgeExperiments:
                     (
                         c.experiment.label,
                         f"{c.experiment.ratio:g}",
-                        f"{obs.p:.3f} ({lo:.3f}–{hi:.3f}), "
+                        f"{obs.p:.3f} ± {obs.stderr:.3f} ({lo:.3f}–{hi:.3f}), "
                         f"{'≈' if c.experiment.edges_derived else ''}"
                         f"{c.experiment.edges}/{c.experiment.n}",
                         b.ending,
@@ -474,6 +479,8 @@ class EdgeExperiments:
             "seed": self.seed,
             "n": self.n,
             "contact_n": self.contact_n,
+            "rigid_n": self.rigid_n,
+            "psi": self.psi,
             "points": self.points,
             "elapsed": self.elapsed,
             "experiments": [
@@ -485,6 +492,7 @@ class EdgeExperiments:
                     "edges": c.experiment.edges,
                     "edges_derived": c.experiment.edges_derived,
                     "fraction": c.experiment.observed.p,
+                    "stderr": c.experiment.observed.stderr,
                     "ci95": list(c.experiment.observed.ci95),
                     "setting": c.setting.name,
                     "setting_description": c.setting.description,
@@ -500,15 +508,15 @@ def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> lis
     """The cells of the box ``ranges`` (name → (low, high)): ``points`` values per parameter,
     ends included (2: the corners), every combination, and the box's centre last when it is
     not among them. A range of equal ends is one value. The values are evenly spaced, except
-    ``resistance``'s (geometric: the range spans two decades), whose centre is the geometric
-    mean."""
+    a resistance's (a name ending in ``resistance``: geometric, the range spans two decades),
+    whose centre is the geometric mean."""
     points = v.count("points per parameter", points, 2, 9)
     names = list(ranges)
 
     def values(name: str, lo: float, hi: float) -> list[float]:
         if lo == hi:
             return [float(lo)]
-        if name == "resistance":
+        if name.endswith("resistance"):
             return [float(x) for x in np.geomspace(lo, hi, points)]
         return [float(x) for x in np.linspace(lo, hi, points)]
 
@@ -519,7 +527,7 @@ def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> lis
     }
     if any(math.isnan(c) for c in centre.values()):
         centre = {
-            k: math.sqrt(lo * hi) if k == "resistance" else 0.5 * (lo + hi)
+            k: math.sqrt(lo * hi) if k.endswith("resistance") else 0.5 * (lo + hi)
             for k, (lo, hi) in ranges.items()
         }
         cells.append(centre)
@@ -538,8 +546,8 @@ def experiment_box(
 ) -> dict[str, tuple[float, float]]:
     """The unmeasured parameters' ranges for one experiment and ending: e and μ (default the
     surface presets' box, :func:`coinflight.studies.presets.bouncing_box`), the diameter and
-    the drop (the record's when it gives them, else the setting's), and with the contact
-    ending the resistance (:data:`RESISTANCE`)."""
+    the drop (the record's when it gives them, else the setting's), and with a 3-D ending
+    ("contact", "rigid") the resistance (:data:`RESISTANCE`)."""
     from coinflight.studies.presets import bouncing_box
 
     e_box, mu_box = bouncing_box()
@@ -551,7 +559,7 @@ def experiment_box(
         "diameter": the_setting.diameter if d is None else (d, d),
         "drop_height": the_setting.drop_height if h is None else (h, h),
     }
-    if ending == "contact":
+    if ending in ("contact", "rigid"):
         out["resistance"] = RESISTANCE
     return out
 
@@ -591,7 +599,7 @@ def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
         drop_height=point["drop_height"],
         restitution=point["restitution"],
         friction=point["friction"],
-        ending=ending,  # type: ignore[arg-type]  # "rocking" or "contact"
+        ending=ending,  # type: ignore[arg-type]  # "rocking", "contact" or "rigid"
         **extra,
     )
 
@@ -603,6 +611,7 @@ def edge_experiments(
     *,
     contact: int = 0,
     points: int = 2,
+    rigid: int = 0,
     restitution: tuple[float, float] | None = None,
     friction: tuple[float, float] | None = None,
     g: float = 9.81,
@@ -624,6 +633,9 @@ def edge_experiments(
         rocking ending's, :func:`~coinflight.studies.edge.simulate_edge`'s prefix property).
     contact : int
         Tosses per cell with the 3-D contact ending (0: not simulated).
+    rigid : int
+        Tosses per cell with the rigid, event-driven 3-D ending (0: not simulated; corners
+        and centre of the same box as the contact ending's, resistance included).
     points : int
         Values per parameter of the rocking ending's box (2: corners and centre, as the
         contact ending's always; 3: a 3 × 3 × … grid). The landing's P(edge) is not monotonic
@@ -649,34 +661,43 @@ def edge_experiments(
         work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at the landing rates of
         :mod:`coinflight.outcomes.table`).
     """
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import (
+        BOUNCING_TOSSES_PER_SECOND,
+        CONTACT_TOSSES_PER_SECOND,
+        RIGID_TOSSES_PER_SECOND,
+    )
     from coinflight.studies.edge import simulate_edge
 
     items, n, contact, settings = _checked(experiments, n, contact, seed)
-    if contact and restitution is not None:
-        v.no_dead_contact("contact", float(min(restitution)))
+    rigid = v.count("rigid-ending tosses per cell", rigid, 0, MAX_TOSSES)
+    if (contact or rigid) and restitution is not None:
+        v.no_dead_contact("contact" if contact else "rigid", float(min(restitution)))
     boxes = [
         {
             ending: experiment_box(x, settings[x.setting], ending, restitution, friction)
-            for ending in ("rocking", "contact")
+            for ending in ("rocking", "contact", "rigid")
         }
         for x in items
     ]
     points = v.count("points per parameter", points, 2, 9)
     if psi is not None:
         axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
+    runs = (("rocking", n, points), ("contact", contact, 2), ("rigid", rigid, 2))
     for box in boxes:
-        for ending, size, k in (("rocking", n, points), ("contact", contact, 2)):
+        for ending, size, k in runs:
             for point in box_cells(box[ending], k) if size else ():
                 _cell_checked(point, ending, g)
     rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
     contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
-    seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + contact_tosses / (
-        CONTACT_TOSSES_PER_SECOND
+    rigid_tosses = sum(len(box_cells(b["rigid"])) for b in boxes) * rigid
+    seconds = (
+        rocking_tosses / BOUNCING_TOSSES_PER_SECOND
+        + contact_tosses / CONTACT_TOSSES_PER_SECOND
+        + rigid_tosses / RIGID_TOSSES_PER_SECOND
     )
     what = (
-        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking and "
-        f"{contact_tosses:,} contact-ending tosses"
+        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking, "
+        f"{contact_tosses:,} contact-ending and {rigid_tosses:,} rigid-ending tosses"
     )
     v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, contact)")
     if progress is not None:
@@ -690,7 +711,7 @@ def edge_experiments(
         wz = None if psi is None else axial_spin(x.ratio, the_setting.spin, psi)
         extra = {} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}
         bands: dict[str, Band] = {}
-        for ending, size in (("rocking", n), ("contact", contact)):
+        for ending, size, _ in runs:
             if size == 0:
                 continue
             cells = []
@@ -716,10 +737,15 @@ def edge_experiments(
             bands[ending] = Band(ending, tuple(cells))
             if progress is not None:
                 progress(f"{x.label}: {ending}")
-        widest = box["contact" if contact else "rocking"]
+        widest = box["contact" if contact or rigid else "rocking"]
         comparisons.append(
             Comparison(
-                x, the_setting, bands["rocking"], bands.get("contact"), MappingProxyType(widest)
+                x,
+                the_setting,
+                bands["rocking"],
+                bands.get("contact"),
+                MappingProxyType(widest),
+                bands.get("rigid"),
             )
         )
     return EdgeExperiments(
@@ -729,6 +755,8 @@ def edge_experiments(
         streams.reported_seed(root),
         time.perf_counter() - t0,
         points,
+        rigid,
+        psi,
     )
 
 

@@ -43,7 +43,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -801,21 +801,33 @@ def _ending_run(
 
 # --- thick cylinders against experiments ------------------------------------------------------
 def thick_experiments(
-    n: int, seed: streams.SeedLike, contact: int = 0, points: int = 2
+    n: int,
+    seed: streams.SeedLike,
+    contact: int = 0,
+    points: int = 2,
+    rigid: int = 0,
+    psi: float | Literal["human"] | None = None,
 ) -> tuple[EdgeExperiments, list[str]]:
     """The measured thick-cylinder edge fractions shipped with coinflight
     (:func:`coinflight.datasets.edge_experiments`, those a setting simulates:
     :func:`coinflight.studies.edge_experiments.from_dataset`) beside the model's band
     (:func:`coinflight.studies.edge_experiments.edge_experiments`: ``n`` rocking tosses per
-    cell, ``points`` values per parameter, ``contact`` contact-ending tosses per cell), from the
-    seed's child for this question. Returns (EdgeExperiments, the records left out and why)."""
+    cell, ``points`` values per parameter, ``contact`` contact-ending and ``rigid``
+    rigid-ending tosses per cell; ``psi`` a wobble, "human" the toss preset's), from the seed's
+    child for this question. Returns (EdgeExperiments, the records left out and why)."""
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset
 
     records, left = from_dataset(dataset())
     root = streams.seed_sequence(seed)
     result = edge_experiments(
-        records, n, streams.child(root, _EXPERIMENTS), contact=contact, points=points
+        records,
+        n,
+        streams.child(root, _EXPERIMENTS),
+        contact=contact,
+        points=points,
+        rigid=rigid,
+        psi=psi,
     )
     return result, left
 

@@ -1,0 +1,191 @@
+"""The options of ``coinflight edge`` (the command: :mod:`.edge`): the ratios, the simulated
+landings' setting, --target and --json."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+import typer
+
+from coinflight.cli.command import Group
+from coinflight.cli.groups import _dist
+from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
+from coinflight.cli.options import (
+    CONTACT_PANEL,
+    OUTPUT_PANEL,
+    SURFACE_PANEL,
+    Gravity,
+    number_option,
+)
+
+SIM_PANEL = "Simulation"
+RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
+_SETTING = "vigorous planar spins, landing dead on a table; coinflight.studies.edge.simulate_edge"
+
+
+def _simulate(what: str) -> Any:
+    """--simulate N: tosses per ratio (``what``: what the command does with them)."""
+    return typer.Option(
+        "--simulate",
+        min=1,
+        max=10**7,
+        metavar="N",
+        rich_help_panel=SIM_PANEL,
+        help=f"Also land N simulated tosses per ratio ({_SETTING}) and {what}.",
+    )
+
+
+_ONLY = "with --simulate or --target: "
+_BAND = " With --target, not given: a band over "
+EdgeRatios = Annotated[
+    str | None,
+    typer.Option(
+        "--ratios",
+        metavar="R,R,...",
+        show_default=False,
+        help="Thickness / diameter ratios h/d, each between 0.001 and 100 [default: "
+        "0.1,0.3,0.577,1].",
+    ),
+]
+EdgeSimulate = Annotated[
+    int | None,
+    typer.Option(
+        "--simulate",
+        min=1,
+        max=10**7,
+        metavar="N",
+        rich_help_panel=SIM_PANEL,
+        help=f"Also land N simulated tosses per ratio ({_SETTING}) and report their edge "
+        "fraction with its standard error. With --target: the tosses per ratio tried "
+        "(default 2,000).",
+    ),
+]
+TargetOption = Annotated[
+    str | None,
+    typer.Option(
+        "--target",
+        metavar="P",
+        rich_help_panel=SIM_PANEL,
+        help="Find the ratio h/d at which simulated tosses land on edge with probability P "
+        "(1/3 or 0.333: the three-sided coin), with its band over the table's unmeasured "
+        "restitution, friction and (3-D endings) resistances, beside Yong & Mahadevan's "
+        "closed forms and the measured rows (coinflight.studies.edge_target).",
+    ),
+]
+Restitution = Annotated[
+    float | None,
+    number_option(
+        "--restitution",
+        "E",
+        SURFACE_PANEL,
+        _ONLY + "the table's coefficient of restitution in [0, 1] (default 0: lands dead, "
+        "as in the dynamic model)." + _BAND + "0.3–0.6 (the surface presets').",
+    ),
+]
+Friction = Annotated[
+    float | None,
+    number_option(
+        "--friction",
+        "MU",
+        SURFACE_PANEL,
+        _ONLY
+        + "the table's Coulomb friction coefficient, 0 to 3 (default 0.3)."
+        + _BAND
+        + "0.05–0.6 (the surface presets').",
+    ),
+]
+DropHeight = Annotated[
+    float | None,
+    number_option(
+        "--drop-height",
+        "D",
+        SURFACE_PANEL,
+        _ONLY + "how far the table lies below the launch height, m (default 0.5).",
+    ),
+]
+Ending = Annotated[
+    str | None,
+    typer.Option(
+        "--ending",
+        metavar="rocking|contact|rigid",
+        rich_help_panel=CONTACT_PANEL,
+        help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
+    ),
+]
+RollingResistance = Annotated[
+    float | None,
+    number_option(
+        "--rolling-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + ROLLING_HELP + _BAND + "1e-5–1e-3 m, "
+        "both resistances alike.",
+    ),
+]
+PivotingResistance = Annotated[
+    float | None,
+    number_option(
+        "--pivoting-resistance",
+        "L",
+        CONTACT_PANEL,
+        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP + _BAND + "1e-5–1e-3 m, "
+        "both resistances alike.",
+    ),
+]
+CornerRadius = Annotated[
+    float | None,
+    number_option(
+        "--corner-radius",
+        "A",
+        CONTACT_PANEL,
+        _ONLY + CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's "
+        "thickness (h/d × 24 mm / 2).",
+    ),
+]
+_BOTH = "With --simulate or --target: "
+SpinX = Annotated[str | None, _dist("--omega-x", _BOTH + "spin about the x diameter", "rad/s")]
+LaunchSpeed = Annotated[
+    str | None, _dist("--launch-speed", _BOTH + "upward launch speed v0", "m/s")
+]
+Psi = Annotated[
+    str | None,
+    typer.Option(
+        "--psi",
+        metavar="DEG|human",
+        rich_help_panel="Toss",
+        help="With --target: a wobble as well, the precession cone angle ψ in degrees "
+        "(0 < ψ ≤ 90; 90: none), or human (the human toss preset's spread about 82°); the same "
+        "ψ at every ratio. Default: planar tosses.",
+    ),
+]
+EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
+SETTING = Group(
+    {
+        name: (kind, None)
+        for name, kind in (
+            ("restitution", Restitution),
+            ("friction", Friction),
+            ("drop_height", DropHeight),
+            ("ending", Ending),
+            ("rolling_resistance", RollingResistance),
+            ("pivoting_resistance", PivotingResistance),
+            ("corner_radius", CornerRadius),
+            ("omega_x", SpinX),
+            ("launch_speed", LaunchSpeed),
+            ("psi", Psi),
+            ("g", EdgeGravity),
+        )
+    },
+    dict,
+)
+"""The simulated landings' options: the command receives them as keywords of
+:func:`~coinflight.queries.edge.edge_query` (None: not given)."""
+EdgeJson = Annotated[
+    bool,
+    typer.Option(
+        "--json",
+        rich_help_panel=OUTPUT_PANEL,
+        help="Print a JSON list on stdout, one object per ratio, instead of text (with "
+        "--target: one object).",
+    ),
+]
