@@ -87,35 +87,10 @@ import math
 
 import numpy as np
 
+from coinflight.core import dormand_prince as dp
 from coinflight.core import rigid_contact as rc
 from coinflight.core._jit import njit
 from coinflight.core.contact_phase import (
-    _A21,
-    _A31,
-    _A32,
-    _A41,
-    _A42,
-    _A43,
-    _A51,
-    _A52,
-    _A53,
-    _A54,
-    _A61,
-    _A62,
-    _A63,
-    _A64,
-    _A65,
-    _B1,
-    _B3,
-    _B4,
-    _B5,
-    _B6,
-    _E1,
-    _E3,
-    _E4,
-    _E5,
-    _E6,
-    _E7,
     SLIP_SPEED,
 )
 from coinflight.core.impact import angular_velocity, lowest_depth
@@ -417,27 +392,9 @@ def _crossed(e):
 @njit(cache=True)
 def _step(q, h, c, mode, d, k1, k2, k3, k4, k5, k6, k7, tmp, new):
     """One Dormand–Prince step of h from q (k1 = f(q) given): ``new``, k7 = f(new)."""
-    size = q.shape[0]
-    for i in range(size):
-        tmp[i] = q[i] + h * _A21 * k1[i]
-    _rates(tmp, k2, c, mode, d)
-    for i in range(size):
-        tmp[i] = q[i] + h * (_A31 * k1[i] + _A32 * k2[i])
-    _rates(tmp, k3, c, mode, d)
-    for i in range(size):
-        tmp[i] = q[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
-    _rates(tmp, k4, c, mode, d)
-    for i in range(size):
-        tmp[i] = q[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
-    _rates(tmp, k5, c, mode, d)
-    for i in range(size):
-        tmp[i] = q[i] + h * (
-            _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
-        )
-    _rates(tmp, k6, c, mode, d)
-    for i in range(size):
-        new[i] = q[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
-    _rates(new, k7, c, mode, d)
+    for s in range(2, 8):
+        point = dp.stage(s, q, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
+        _rates(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, d)
 
 
 @njit(cache=True)
@@ -515,19 +472,7 @@ def run_band(y, c, duration, rtol, max_steps, counts):
         err = math.inf
         for _ in range(60):
             _step(q, h, c, mode, d, k1, k2, k3, k4, k5, k6, k7, tmp, new)
-            err = 0.0
-            for i in range(5):
-                e = h * (
-                    _E1 * k1[i]
-                    + _E3 * k3[i]
-                    + _E4 * k4[i]
-                    + _E5 * k5[i]
-                    + _E6 * k6[i]
-                    + _E7 * k7[i]
-                )
-                r = abs(e) / (rtol * (scale[i] + max(abs(q[i]), abs(new[i]))))
-                if not r <= err:
-                    err = r
+            err = dp.error_ratio(q, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 5)
             if err <= 1.0:
                 break
             h *= max(0.2, 0.9 * err**-0.2) if err < math.inf else 0.2

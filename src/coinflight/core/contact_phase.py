@@ -96,6 +96,7 @@ from enum import IntEnum
 
 import numpy as np
 
+from coinflight.core import dormand_prince as dp
 from coinflight.core._jit import njit
 from coinflight.core.impact import (
     angular_velocity,
@@ -930,18 +931,6 @@ def upright_decided(y, c, stiffness, zeta, budget):
     return ridge > floor and free <= floor + UPRIGHT_MARGIN * (ridge - floor)
 
 
-# Dormand-Prince 5(4) (Hairer, Nørsett & Wanner, Solving ODEs I, table II.5.2).
-_A21 = 1.0 / 5.0
-_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
-_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
-_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
-_A61, _A62, _A63 = 9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0
-_A64, _A65 = 49.0 / 176.0, -5103.0 / 18656.0
-_B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
-_E1, _E3, _E4 = 71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0
-_E5, _E6, _E7 = -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0
-
-
 MODES = ("free", "one rim", "two rims", "face")
 """What the coin is doing, as :func:`contact_mode` classes it: off the table (a hop), on one
 rim's arc with less than half the rim pressed (rolling, sliding, pivoting or rocking on a rim
@@ -1035,42 +1024,10 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
         if h > limit:
             h = limit
         for _ in range(60):
-            for i in range(10):
-                tmp[i] = y[i] + h * _A21 * k1[i]
-            _derivative(tmp, k2, c, stiffness, zeta)
-            for i in range(10):
-                tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
-            _derivative(tmp, k3, c, stiffness, zeta)
-            for i in range(10):
-                tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
-            _derivative(tmp, k4, c, stiffness, zeta)
-            for i in range(10):
-                tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
-            _derivative(tmp, k5, c, stiffness, zeta)
-            for i in range(10):
-                tmp[i] = y[i] + h * (
-                    _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
-                )
-            _derivative(tmp, k6, c, stiffness, zeta)
-            for i in range(10):
-                new[i] = y[i] + h * (
-                    _B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i]
-                )
-            _derivative(new, k7, c, stiffness, zeta)
-            err = 0.0
-            for i in range(10):
-                e = h * (
-                    _E1 * k1[i]
-                    + _E3 * k3[i]
-                    + _E4 * k4[i]
-                    + _E5 * k5[i]
-                    + _E6 * k6[i]
-                    + _E7 * k7[i]
-                )
-                tol = rtol * (scale[i] + max(abs(y[i]), abs(new[i])))
-                r = abs(e) / tol
-                if r > err:
-                    err = r
+            for s in range(2, 8):
+                point = dp.stage(s, y, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
+                _derivative(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, stiffness, zeta)
+            err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
             if err <= 1.0:
                 break
             h *= max(0.2, 0.9 * err**-0.2)

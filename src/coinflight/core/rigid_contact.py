@@ -123,34 +123,9 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
+from coinflight.core import dormand_prince as dp
 from coinflight.core._jit import njit
 from coinflight.core.contact_phase import (
-    _A21,
-    _A31,
-    _A32,
-    _A41,
-    _A42,
-    _A43,
-    _A51,
-    _A52,
-    _A53,
-    _A54,
-    _A61,
-    _A62,
-    _A63,
-    _A64,
-    _A65,
-    _B1,
-    _B3,
-    _B4,
-    _B5,
-    _B6,
-    _E1,
-    _E3,
-    _E4,
-    _E5,
-    _E6,
-    _E7,
     SLIP_SPEED,
     _barrier,
     _motion_energy,
@@ -541,26 +516,9 @@ def _first_crossed(e):
 def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new):
     """One Dormand-Prince step of h from y (k1 = f(y) given) on the rim ``side``: ``new`` and
     the error estimate (k7 = f(new))."""
-    for i in range(y.shape[0]):
-        tmp[i] = y[i] + h * _A21 * k1[i]
-    _flow(tmp, k2, c, mode, dx, dy, side)
-    for i in range(y.shape[0]):
-        tmp[i] = y[i] + h * (_A31 * k1[i] + _A32 * k2[i])
-    _flow(tmp, k3, c, mode, dx, dy, side)
-    for i in range(y.shape[0]):
-        tmp[i] = y[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
-    _flow(tmp, k4, c, mode, dx, dy, side)
-    for i in range(y.shape[0]):
-        tmp[i] = y[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
-    _flow(tmp, k5, c, mode, dx, dy, side)
-    for i in range(y.shape[0]):
-        tmp[i] = y[i] + h * (
-            _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
-        )
-    _flow(tmp, k6, c, mode, dx, dy, side)
-    for i in range(y.shape[0]):
-        new[i] = y[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
-    _flow(new, k7, c, mode, dx, dy, side)
+    for s in range(2, 8):
+        point = dp.stage(s, y, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
+        _flow(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, dx, dy, side)
 
 
 @njit(cache=True)
@@ -741,20 +699,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         err = math.inf
         for _ in range(60):
             _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
-            err = 0.0
-            for i in range(10):
-                e = h * (
-                    _E1 * k1[i]
-                    + _E3 * k3[i]
-                    + _E4 * k4[i]
-                    + _E5 * k5[i]
-                    + _E6 * k6[i]
-                    + _E7 * k7[i]
-                )
-                tol = rtol * (scale[i] + max(abs(y[i]), abs(new[i])))
-                r = abs(e) / tol
-                if not r <= err:
-                    err = r
+            err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
             if err <= 1.0:
                 break
             counts[1] += 1.0
