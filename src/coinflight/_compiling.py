@@ -23,12 +23,15 @@ import threading
 from typing import Any
 
 KERNEL_MODULES = {
+    "coinflight.core.band_contact": ("the table landing's", 20),
     "coinflight.core.bounce": ("the table landing's", 20),
     "coinflight.core.contact_phase": ("the table landing's", 20),
     "coinflight.core.impact": ("the table landing's", 20),
     "coinflight.core.rigid_contact": ("the table landing's", 20),
     "coinflight.core.rigid_ending": ("the table landing's", 20),
+    "coinflight.core.dormand_prince": ("the table landing's", 20),
     "coinflight.core.drag": ("the flight through air's", 6),
+    "coinflight.core.flight": ("the table landing's", 20),
     "coinflight.core.sampling": ("the sampling's", 2),
 }
 """The modules of numba kernels: what to call their kernels in the notice, and about how many
