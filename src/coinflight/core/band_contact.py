@@ -332,6 +332,20 @@ def _start_direction(q, c, stick_mode, d):
 
 
 @njit(cache=True)
+def _sticks(q, c, sigma, d):
+    """Whether the point ``sigma`` (:data:`STICK_PLUS` or :data:`STICK_MINUS`) can stick, its
+    force inside its cone; if not, its slide's starting direction is put in ``d``."""
+    if _feasible(q, c, sigma, d):
+        return True
+    dn, dt = _start_direction(q, c, sigma, d)
+    if sigma == STICK_PLUS:
+        d[0], d[1] = dn, dt
+    else:
+        d[2], d[3] = dn, dt
+    return False
+
+
+@njit(cache=True)
 def classify(q, c, d):
     """The band mode of q (d, the slipping points' start directions, set in place): a point
     whose slip is below SLIP_FLOOR sticks if the mode with it sticking has its force in the
@@ -349,13 +363,8 @@ def classify(q, c, d):
         np_, nm, _, _, _, _, _ = forces(q, c, sigma, d)
         if np_ < 0.0 or nm < 0.0:
             return -1
-        if _feasible(q, c, sigma, d):
+        if _sticks(q, c, sigma, d):
             return sigma
-        dn, dt = _start_direction(q, c, sigma, d)
-        if sigma == STICK_PLUS:
-            d[0], d[1] = dn, dt
-        else:
-            d[2], d[3] = dn, dt
     if _feasible(q, c, SLIDE, d):
         return SLIDE
     return -1
@@ -435,15 +444,7 @@ def run_band(y, c, duration, rtol, max_steps, counts):
     counts[3] = removed
     _project(q, c, mode)
     scratch = np.empty(y.shape[0])
-    k1 = np.empty(size)
-    k2 = np.empty(size)
-    k3 = np.empty(size)
-    k4 = np.empty(size)
-    k5 = np.empty(size)
-    k6 = np.empty(size)
-    k7 = np.empty(size)
-    tmp = np.empty(size)
-    new = np.empty(size)
+    k1, k2, k3, k4, k5, k6, k7, tmp, new = dp.workspace(size)
     trial = np.empty(size)
     start = np.empty(4)
     floor = np.empty(2)
@@ -571,13 +572,8 @@ def _switch(q, c, mode, d, ev):
         stopped = ev[3] < 0.0 if sigma == STICK_PLUS else ev[4] < 0.0
         if not stopped:
             continue
-        if _feasible(q, c, sigma, d):
+        if _sticks(q, c, sigma, d):
             return sigma
-        dn, dt = _start_direction(q, c, sigma, d)
-        if sigma == STICK_PLUS:
-            d[0], d[1] = dn, dt
-        else:
-            d[2], d[3] = dn, dt
     return SLIDE
 
 

@@ -979,15 +979,7 @@ def _integrate(y, duration, c, stiffness, zeta, settle, decide, max_steps, stats
     A step costs about 1 µs of one core: six derivatives (:func:`_derivative`), the tests after
     the step (:func:`below_barrier`, :func:`upright_decided`) and the stepper's arithmetic.
     """
-    k1 = np.empty(10)
-    k2 = np.empty(10)
-    k3 = np.empty(10)
-    k4 = np.empty(10)
-    k5 = np.empty(10)
-    k6 = np.empty(10)
-    k7 = np.empty(10)
-    tmp = np.empty(10)
-    new = np.empty(10)
+    k1, k2, k3, k4, k5, k6, k7, tmp, new = dp.workspace(10)
     scale = np.empty(10)
     reach = c.reach
     speed = max(math.sqrt(c.g * reach), 0.01)  # velocity scale of the tolerances, m/s

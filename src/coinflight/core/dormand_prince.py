@@ -12,6 +12,8 @@ the arithmetic of the pair is written once.
 
 from __future__ import annotations
 
+import numpy as np
+
 from coinflight.core._jit import njit
 
 A21 = 1.0 / 5.0
@@ -25,6 +27,23 @@ B1, B3, B4, B5, B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784
 E1, E3, E4 = 71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0
 E5, E6, E7 = -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0
 """The difference of the fifth- and fourth-order weights (the error estimate's)."""
+
+
+@njit(cache=True)
+def workspace(size):
+    """The arrays a step needs for a state of ``size`` components: the seven stages' rates
+    k1 … k7, the stage point and the new state."""
+    return (
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+        np.empty(size),
+    )
 
 
 @njit(cache=True)
@@ -86,4 +105,4 @@ def error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, size):
     return err
 
 
-__all__ = ["error_ratio", "rate", "stage"]
+__all__ = ["error_ratio", "rate", "stage", "workspace"]

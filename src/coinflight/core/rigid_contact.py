@@ -654,15 +654,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     if c.half_thickness - c.corner_radius > 0.0:
         band = side
     size = y.shape[0]  # 10, or 12 with the horizontal position (x, y) carried along
-    k1 = np.empty(size)
-    k2 = np.empty(size)
-    k3 = np.empty(size)
-    k4 = np.empty(size)
-    k5 = np.empty(size)
-    k6 = np.empty(size)
-    k7 = np.empty(size)
-    tmp = np.empty(size)
-    new = np.empty(size)
+    k1, k2, k3, k4, k5, k6, k7, tmp, new = dp.workspace(size)
     trial = np.empty(size)
     scale = np.empty(10)
     reach = c.reach

@@ -72,18 +72,9 @@ import math
 import numpy as np
 
 from coinflight.core import band_contact as bc
+from coinflight.core import flight
 from coinflight.core import rigid_contact as rc
 from coinflight.core._jit import njit
-from coinflight.core.flight import (
-    CA_TOLERANCE,
-    GRAZE_SKIP,
-    _gap_after,
-    _precess_from,
-    mechanical_energy,
-    next_contact,
-    table_impact,
-    tumbling_energy,
-)
 from coinflight.core.impact import (
     MAX_STEPS as IMPACT_STEPS,
 )
@@ -146,25 +137,25 @@ def _hop(y, c):
     opened = False
     closed = False
     for _ in range(60):
-        gap = _gap_after(tau, z, vz, g, n, lm, i1, r, hh, corner)
-        if gap > CA_TOLERANCE:
+        gap = flight._gap_after(tau, z, vz, g, n, lm, i1, r, hh, corner)
+        if gap > flight.CA_TOLERANCE:
             opened = True
             break
-        if gap < -CA_TOLERANCE:
+        if gap < -flight.CA_TOLERANCE:
             closed = True
             break
         tau *= 2.0
     if closed:
         # A hop lower than the contact search's tolerance: its end bisected (the gap, within
-        # ±CA_TOLERANCE at tau/2, is below it at tau), and the coin comes down there.
+        # ±flight.CA_TOLERANCE at tau/2, is below it at tau), and the coin comes down there.
         lo, hi = 0.5 * tau, tau
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            if _gap_after(mid, z, vz, g, n, lm, i1, r, hh, corner) < 0.0:
+            if flight._gap_after(mid, z, vz, g, n, lm, i1, r, hh, corner) < 0.0:
                 hi = mid
             else:
                 lo = mid
-        m = _precess_from(n, lm, i1, hi)
+        m = flight._precess_from(n, lm, i1, hi)
         size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
         y[0] = lowest_depth(m[2] / size, r, hh, corner)
         y[3] = vz - g * hi
@@ -175,7 +166,7 @@ def _hop(y, c):
         return 0.0, 0.0  # no hop: the contact goes on
     total = 0.0
     for _ in range(1000):
-        tc, m, approach = next_contact(tau, z, vz, g, n, lm, i1, i3, r, hh, corner)
+        tc, m, approach = flight.next_contact(tau, z, vz, g, n, lm, i1, i3, r, hh, corner)
         if tc < 0.0:
             return -1.0, 0.0
         size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
@@ -186,7 +177,7 @@ def _hop(y, c):
         n = m
         if approach < 0.0:
             break
-        tau = GRAZE_SKIP  # a graze: fly on from a little later, as the bounces do
+        tau = flight.GRAZE_SKIP  # a graze: fly on from a little later, as the bounces do
     y[0] = z
     y[3] = vz
     y[4], y[5], y[6] = n
@@ -209,7 +200,7 @@ def _impact(y, c):
     v = (y[1], y[2], y[3])
     lm = (y[7], y[8], y[9])
     n = (y[4], y[5], y[6])
-    v, lm, rebound = table_impact(v, lm, n, c)
+    v, lm, rebound = flight.table_impact(v, lm, n, c)
     y[0] = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
     y[1], y[2], y[3] = v
     y[7], y[8], y[9] = lm
@@ -326,7 +317,7 @@ def _energy(y, c):
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
     lm = (y[7], y[8], y[9])
-    return mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, y[0])
+    return flight.mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, y[0])
 
 
 @njit(cache=True)
@@ -334,7 +325,7 @@ def _tumbling(y, c):
     v = (y[1], y[2], y[3])
     n = (y[4], y[5], y[6])
     lm = (y[7], y[8], y[9])
-    return tumbling_energy(v, lm, n, c.mass, c.i1, c.g, y[0])
+    return flight.tumbling_energy(v, lm, n, c.mass, c.i1, c.g, y[0])
 
 
 @njit(cache=True)
@@ -447,19 +438,10 @@ def run(y, c, rtol, duration, counts):
             counts[2] += 1.0
             rebound = _impact(y, c)
             if rebound >= c.rest_speed and _energy(y, c) >= c.barrier:
-                for _ in range(MAX_PHASES):
-                    flown, approach = _hop(y, c)
-                    if flown < 0.0:
-                        return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-                    t += flown
-                    counts[5] += flown
-                    if approach >= 0.0:
-                        rc._project(y, c, rc.SLIDING)
-                        break
-                    counts[2] += 1.0
-                    rebound = _impact(y, c)
-                    if rebound < c.rest_speed or _energy(y, c) < c.barrier:
-                        break
+                flown, landed = _hops(y, c, counts)
+                t += flown
+                if not landed:
+                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
             continue
         break  # duration, step budget, a failed step
     counts[7] = ENDED_LIMIT
