@@ -604,6 +604,42 @@ def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
     )
 
 
+def _cell_edge(
+    ratio: float,
+    n: int,
+    seed: streams.SeedLike,
+    g: float,
+    cell: Mapping[str, float],
+    the_setting: Setting,
+    axial: Distribution | None,
+    ending: str,
+    resistance: float | None,
+) -> BinomialEstimate:
+    """P(edge) of ``n`` tosses of h/d ``ratio`` (:func:`~coinflight.studies.edge.simulate_edge`)
+    at one ``cell`` of a box (restitution, friction, drop_height, diameter), thrown as
+    ``the_setting`` says, ωz drawn from ``axial`` (None: none), rolling and pivoting resistance
+    ``resistance`` m (None: the ending's default)."""
+    from coinflight.studies.edge import simulate_edge
+
+    ((_, estimate),) = simulate_edge(
+        [ratio],
+        n,
+        seed,
+        g=g,
+        restitution=cell["restitution"],
+        friction=cell["friction"],
+        drop_height=cell["drop_height"],
+        diameter=cell["diameter"],
+        spin=the_setting.spin,
+        launch_speed=the_setting.launch_speed,
+        axial_spin=axial,
+        ending=ending,
+        rolling_resistance=resistance,
+        pivoting_resistance=resistance,
+    )
+    return estimate
+
+
 def edge_experiments(
     experiments: Sequence[Experiment],
     n: int,
@@ -666,7 +702,6 @@ def edge_experiments(
         CONTACT_TOSSES_PER_SECOND,
         RIGID_TOSSES_PER_SECOND,
     )
-    from coinflight.studies.edge import simulate_edge
 
     items, n, contact, settings = _checked(experiments, n, contact, seed)
     rigid = v.count("rigid-ending tosses per cell", rigid, 0, MAX_TOSSES)
@@ -717,21 +752,8 @@ def edge_experiments(
             cells = []
             for point in box_cells(box[ending], points if ending == "rocking" else 2):
                 resist = point.get("resistance")
-                ((_, estimate),) = simulate_edge(
-                    [x.ratio],
-                    size,
-                    child,
-                    g=g,
-                    restitution=point["restitution"],
-                    friction=point["friction"],
-                    drop_height=point["drop_height"],
-                    spin=the_setting.spin,
-                    launch_speed=the_setting.launch_speed,
-                    ending=ending,
-                    rolling_resistance=resist,
-                    pivoting_resistance=resist,
-                    diameter=point["diameter"],
-                    axial_spin=wz,
+                estimate = _cell_edge(
+                    x.ratio, size, child, g, point, the_setting, wz, ending, resist
                 )
                 cells.append(Cell(MappingProxyType({**point, **extra}), estimate))
             bands[ending] = Band(ending, tuple(cells))
@@ -851,7 +873,6 @@ def wobble_sweep(
     before any toss (the run's size), then after each cell and ending.
     """
     from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
-    from coinflight.studies.edge import simulate_edge
 
     items, n, contact, settings = _checked(experiments, n, contact, seed)
     spins = {
@@ -878,21 +899,16 @@ def wobble_sweep(
                     if size == 0:
                         continue
                     resist = resistance if ending == "contact" else None
-                    ((_, estimate),) = simulate_edge(
-                        [x.ratio],
+                    estimate = _cell_edge(
+                        x.ratio,
                         size,
                         streams.child(root, i),
-                        g=g,
-                        restitution=cell["restitution"],
-                        friction=cell["friction"],
-                        drop_height=cell["drop_height"],
-                        diameter=cell["diameter"],
-                        spin=the_setting.spin,
-                        launch_speed=the_setting.launch_speed,
-                        axial_spin=wz,
-                        ending=ending,
-                        rolling_resistance=resist,
-                        pivoting_resistance=resist,
+                        g,
+                        cell,
+                        the_setting,
+                        wz,
+                        ending,
+                        resist,
                     )
                     rows.append(WobbleRow(x.label, x.ratio, psi, ending, cell, estimate))
                     if progress is not None:
