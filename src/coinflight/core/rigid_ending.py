@@ -389,46 +389,40 @@ def run(y, c, rtol, duration, counts):
             continue  # the test at the top ends it
         if reason == rc.STEP_FAILED:
             continue  # restarted from its state (classified afresh, steps from the start)
+        hop = False
         if reason == rc.FACE:
             if _tumbling(y, c) < c.barrier:
                 counts[7] = ENDED_FACE
                 return resting_face(y[6], c.edge_sine), Status.SETTLED_CONTACT, t
             # Flat, still tumbling: the rim point coming down fastest meets the table.
             counts[2] += 1.0
-            if _face_slap(y, c) >= 0.0 or _energy(y, c) >= c.barrier:
-                flown, landed = _hops(y, c, counts)
-                t += flown
-                if not landed:
-                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-            continue
-        if reason == rc.LIFT_OFF:
+            hop = _face_slap(y, c) >= 0.0 or _energy(y, c) >= c.barrier
+        elif reason == rc.LIFT_OFF:
             counts[1] += 1.0
-            flown, landed = _hops(y, c, counts)
-            t += flown
-            if not landed:
-                return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-            continue
-        if reason == rc.SECOND_RIM:
-            counts[3] += 1.0
-            if _rocking_died_out(y, c):
-                spent, why = bc.run_band(y, c, duration - t, rtol, budget - inner[0], band)
-                if why != bc.NOT_BAND:
-                    t += spent
-                    counts[6] += band[0]
-                    counts[4] += band[2]
-                    counts[5] += spent - band[2]
-                    if why == bc.ROLLING:
-                        # The band's straight roll is closed form: not capped, unless it never
-                        # ends.
-                        cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
-                        face, status, rolled = _band(y, c, cap)
-                        counts[4] += rolled
-                        counts[7] = ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
-                        return face, status, t + rolled
-                    # A rim lifted (one-rim contact on the other), below the barrier (the test
-                    # at the top), the duration (idem), or a failed run (restarted).
-                    continue
-        if reason == rc.NOT_IN_CONTACT or reason == rc.SECOND_RIM or reason == rc.PAINLEVE:
+            hop = True
+        elif reason == rc.NOT_IN_CONTACT or reason == rc.SECOND_RIM or reason == rc.PAINLEVE:
+            if reason == rc.SECOND_RIM:
+                counts[3] += 1.0
+                if _rocking_died_out(y, c):
+                    spent, why = bc.run_band(y, c, duration - t, rtol, budget - inner[0], band)
+                    if why != bc.NOT_BAND:
+                        t += spent
+                        counts[6] += band[0]
+                        counts[4] += band[2]
+                        counts[5] += spent - band[2]
+                        if why == bc.ROLLING:
+                            # The band's straight roll is closed form: not capped, unless it never
+                            # ends.
+                            cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
+                            face, status, rolled = _band(y, c, cap)
+                            counts[4] += rolled
+                            counts[7] = (
+                                ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
+                            )
+                            return face, status, t + rolled
+                        # A rim lifted (one-rim contact on the other), below the barrier (the test
+                        # at the top), the duration (idem), or a failed run (restarted).
+                        continue
             if reason == rc.PAINLEVE:
                 # No consistent normal force for the slide: the slip is stopped by a tangential
                 # impulse at the contact (Génot & Brogliato 1999, Eur. J. Mech. A 18:653: the
@@ -437,13 +431,14 @@ def run(y, c, rtol, duration, counts):
                 rc._project(y, c, rc.ROLLING)
             counts[2] += 1.0
             rebound = _impact(y, c)
-            if rebound >= c.rest_speed and _energy(y, c) >= c.barrier:
-                flown, landed = _hops(y, c, counts)
-                t += flown
-                if not landed:
-                    return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
-            continue
-        break  # duration, step budget, a failed step
+            hop = rebound >= c.rest_speed and _energy(y, c) >= c.barrier
+        else:
+            break  # duration, step budget, a failed step
+        if hop:
+            flown, landed = _hops(y, c, counts)
+            t += flown
+            if not landed:
+                return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
     counts[7] = ENDED_LIMIT
     return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
 
