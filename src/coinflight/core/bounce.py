@@ -618,18 +618,13 @@ def _batch_kernel(parallel: bool) -> Any:
         status,
     ):
         for k in loop(omega.shape[0]):
-            f, b, t1, ts, st = land_one(
+            face[k], bounces[k], first[k], settle[k], status[k] = land_one(
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
                 with_surface(contact, restitution[k], friction[k], rolling[k], pivoting[k]),
                 max_bounces,
             )
-            face[k] = f
-            bounces[k] = b
-            first[k] = t1
-            settle[k] = ts
-            status[k] = st
 
     return njit(cache=True, parallel=parallel, nogil=True)(batch)
 

@@ -1204,7 +1204,7 @@ def _batch_kernels(parallel: bool) -> tuple[Any, Any]:
         status,
     ):
         for k in loop(omega.shape[0]):
-            f, b, t1, ts, st = land_one(
+            face[k], bounces[k], first[k], settle[k], status[k] = land_one(
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
@@ -1212,11 +1212,6 @@ def _batch_kernels(parallel: bool) -> tuple[Any, Any]:
                 contact,
                 max_bounces,
             )
-            face[k] = f
-            bounces[k] = b
-            first[k] = t1
-            settle[k] = ts
-            status[k] = st
 
     jit = njit(cache=True, parallel=parallel, nogil=True)
     return jit(catches), jit(landings)
