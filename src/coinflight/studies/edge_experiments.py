@@ -1006,9 +1006,8 @@ def mujoco_check(
     landed = {ending: land(coin, omega, v0, 1.0, g, t) for ending, t in tables.items()}
     ours = {ending: edges(out.face) for ending, out in landed.items()}
     decided = int(np.count_nonzero(landed["contact"].status == Status.DECIDED_UPRIGHT))
-    run = mujoco_compare.run(
-        coin, omega, v0, drop, restitution, friction, g, torsional=resistance, rolling=resistance
-    )
+    engine = mujoco_compare.Engine(torsional=resistance, rolling=resistance)
+    run = mujoco_compare.run(coin, omega, v0, drop, restitution, friction, g, engine=engine)
     return EngineCheck(
         experiment.label,
         MappingProxyType(

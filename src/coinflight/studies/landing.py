@@ -520,8 +520,9 @@ def mujoco_comparison(
             ending="contact",
         )
         contact_run, _, _ = _ending_run(dist, omega, v0, resisted)
+    engine = mujoco_compare.Engine(limit=limit)
     theirs = mujoco_compare.run(
-        dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads, limit=limit
+        dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads, engine
     )
     return MujocoComparison(
         n,
@@ -733,10 +734,9 @@ def edge_check(
             mu,
             dist.g,
             threads,
-            limit=limit,
-            torsional=resistance,
-            rolling=resistance,
-            integrator=integrator,
+            mujoco_compare.Engine(
+                torsional=resistance, rolling=resistance, integrator=integrator, limit=limit
+            ),
         )
         cells.append(EdgeCell(e, mu, ours, handed, first, theirs))
     return EdgeCheck(

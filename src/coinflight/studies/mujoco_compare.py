@@ -806,25 +806,18 @@ def run(
     friction: float,
     g: float = 9.81,
     threads: int | None = None,
-    condim: int = CONDIM,
-    *,
-    limit: float = SETTLE,
-    torsional: float = TORSIONAL,
-    rolling: float = ROLLING,
-    integrator: str = INTEGRATOR,
-    solver: FrictionSolver = DEFAULT_SOLVER,
+    engine: Engine = DEFAULT_ENGINE,
 ) -> MujocoRun:
     """The tosses (ω (n, 3) body frame rad/s, v0 (n,) m/s, heads up, launched ``drop_height``
-    above the plane) in MuJoCo, multithreaded rollouts; see the module notes for the settings
-    (``condim`` … ``solver``: those of :class:`Engine`).
+    above the plane) in MuJoCo, multithreaded rollouts with ``engine``'s settings (see the
+    module notes).
 
-    Each toss is carried until it has settled (:func:`_settled`) or ``limit`` s past its first
-    contact, whichever comes first; those still moving at the limit are counted
+    Each toss is carried until it has settled (:func:`_settled`) or ``engine.limit`` s past its
+    first contact, whichever comes first; those still moving at the limit are counted
     (:attr:`MujocoRun.moving`), never dropped. The work (:func:`seconds_estimate`) is bounded
-    before anything is computed. ``solver`` makes MuJoCo's friction harder than its default
-    (:class:`FrictionSolver`). ImportError when MuJoCo is not installed.
+    before anything is computed. ``engine.solver`` makes MuJoCo's friction harder than its
+    default (:class:`FrictionSolver`). ImportError when MuJoCo is not installed.
     """
-    engine = Engine(condim, torsional, rolling, integrator, solver, limit)
     omega = np.asarray(omega, dtype=float).reshape(-1, 3)
     v0 = np.asarray(launch_speed, dtype=float).reshape(-1)
     n = len(v0)
