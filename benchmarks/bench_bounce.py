@@ -7,7 +7,8 @@
     python benchmarks/bench_bounce.py --contact-rates N  # its speed only
     python benchmarks/bench_bounce.py --contact-rates N [--rounds R] --old-src DIR  # + another src
     python benchmarks/bench_bounce.py --upright N [--rounds R]  # its upright decision on/off
-    python benchmarks/bench_bounce.py --rigid-rates N [--rounds R]  # the rigid ending's speed
+    python benchmarks/bench_bounce.py --rigid-rates N [--rounds R]  # the rigid ending's speed,
+                                                    # and MuJoCo's on the same tosses
     python benchmarks/bench_bounce.py --quick --json  # the record as JSON (the text on stderr)
 
 coinflight: the event-driven numba kernel (``coinflight.outcomes.table.land``; exact flights between
@@ -540,6 +541,34 @@ RIGID = Surface("table", DROP, 0.5, 0.3, ending="rigid")
 """The rigid ending's surface of :func:`rigid_rates` (default resistances, 1e-4 m)."""
 
 
+def mujoco_rigid(name: str, w: np.ndarray, s: np.ndarray, rigid_rate: float) -> dict[str, Any]:
+    """MuJoCo on the first tosses of one set of :func:`rigid_rates`, with the rigid ending's
+    resistances as its torsional and rolling friction (the mapping of
+    :mod:`coinflight.studies.mujoco_compare`): its tosses a second and the rigid ending's speed
+    ratio to it (``rigid_rate``, measured on the whole set, over MuJoCo's)."""
+    from coinflight.studies import mujoco_compare as mc
+
+    if not mc.available():
+        print("  MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
+        return {}
+    m = min(len(s), 100)
+    r = RIGID.rolling_resistance
+    engine = mc.Engine(torsional=RIGID.pivoting_resistance, rolling=r)
+    e, mu = RIGID.restitution, RIGID.friction
+    run = mc.run(COIN, w[:m], s[:m], DROP, e, mu, G, engine=engine)
+    rate = m / float(run.elapsed)
+    print(
+        f"  MuJoCo on {m} of the same {name} tosses: {rate:,.1f}/s "
+        f"({int(np.count_nonzero(run.moving))} still moving at {engine.limit:g} s); the rigid "
+        f"ending is {rigid_rate / rate:,.0f} times as fast"
+    )
+    return {
+        f"{name}_mujoco_tosses": m,
+        f"{name}_mujoco_tosses_per_s": rate,
+        f"{name}_rigid_over_mujoco_speed": rigid_rate / rate,
+    }
+
+
 def rigid_rates(n: int, repeats: int = 3) -> dict[str, Any]:
     """Tosses a second carried to rest with the rigid ending against the rocking ending and
     first contact, in one run (medians of ``repeats``, all threads), on the vigorous tosses
@@ -586,6 +615,7 @@ def rigid_rates(n: int, repeats: int = 3) -> dict[str, Any]:
             + f"; settle time median {np.median(out.settle_time):.2f} s, "
             f"max {out.settle_time.max():.1f} s"
         )
+        figures.update(mujoco_rigid(name, w, s, rates["rigid ending"]))
     return figures
 
 
