@@ -754,6 +754,20 @@ def _trend(low: tuple[float, float], high: tuple[float, float]) -> str:
     return "rises" if d > 0 else "falls"
 
 
+def _shift(b: study.RigidBand) -> str:
+    """How the edges of ``b``'s cells ended at its least and at its most friction, in words."""
+    parts = []
+    for end in (0, 1):
+        counts = np.take(b.paths, end, axis=2).sum(axis=(0, 1, 2))
+        total = int(counts.sum())
+        if total:
+            parts.append(
+                f"at μ {b.friction[end]:g} {counts[1] / total:.0%} of the edges rolled away and "
+                f"{counts[2] / total:.0%} stood upright"
+            )
+    return "".join(f"; {part}" for part in parts)
+
+
 def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
     from coinflight.model.coin import Coin
 
@@ -825,13 +839,14 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
     corner = _trend(a_low, a_high)
     why += (
         f"On {first.preset}, P(edge) {friction} with friction (μ {first.friction[0]:g}: "
-        f"{mu_low[0]:.3f}, μ {first.friction[1]:g}: {mu_high[0]:.3f})"
+        f"{mu_low[0]:.3f}, μ {first.friction[1]:g}: {mu_high[0]:.3f}{_shift(first)})"
         + (
             ": friction holds both rims' lowest points, so that a coin on its band rolls "
-            "straight rather than slipping off it, and stops its spin about the vertical. "
+            "straight rather than slipping off it, and stops its spin about the vertical"
             if friction == "rises"
-            else ". "
+            else ""
         )
+        + ". "
         + f"Rounding the corners to {first.corner[1] * 1e3:g} mm narrows the flat band from "
         f"{nickel.thickness * 1e3:.2f} mm to {(nickel.thickness - 2 * first.corner[1]) * 1e3:.2f}"
         f" mm, and P(edge) {corner} ({a_low[0]:.3f} to {a_high[0]:.3f})"

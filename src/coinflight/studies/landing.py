@@ -414,8 +414,8 @@ def rigid_landings(
     The same kernels as :func:`coinflight.outcomes.table.land` (the bounces of
     :func:`coinflight.core.bounce.bounce_loop`, then :func:`coinflight.core.rigid_ending.run`),
     called toss by toss from here to read how each ending stopped, which ``land`` does not
-    return; the faces are ``land``'s (tests/test_landing_rigid_band.py). One thread, about as
-    fast as ``land`` on a busy 2-core machine (:data:`RIGID_TOSSES_PER_SECOND`-bounded)."""
+    return; the faces are ``land``'s (tests/test_landing_rigid_band.py). One thread; its work
+    is not bounded here (:func:`rigid_nickel` bounds its own)."""
     from coinflight.core import bounce, rigid_ending
     from coinflight.core.outcome import Status
     from coinflight.outcomes.table import contact_record
@@ -578,7 +578,7 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
             for il, ell in enumerate(RIGID_RESISTANCES):
                 for im, mu in enumerate(mu_ends):
                     for ie, e in enumerate(e_ends):
-                        face, path = rigid_landings(coin, omega, v0, e, mu, ell, a)
+                        face, path = rigid_landings(coin, omega, v0, e, mu, ell, a, dist.g)
                         edge[ia, il, im, ie] = np.count_nonzero(face == EDGE) / n
                         paths[ia, il, im, ie] = _path_counts(face, path)
         w, v_int = _draw(dist, integrated, streams.child(root, _RIGID, 1 + k, 0))
@@ -593,6 +593,7 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
             preset.friction.ppf(u[1]),
             np.exp(log_lo + (log_hi - log_lo) * u[2]),
             RIGID_CORNER * u[3],
+            dist.g,
         )
         estimate = BinomialEstimate(
             int(np.count_nonzero(face == EDGE)), integrated, streams.reported_seed(root)
@@ -628,6 +629,7 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
         worst["friction"],
         worst["resistance"],
         worst["corner_radius"],
+        dist.g,
     )
     round_rim = BinomialEstimate(
         int(np.count_nonzero(face == EDGE)), n, streams.reported_seed(root)
