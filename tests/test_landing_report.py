@@ -53,7 +53,7 @@ def written(tmp_path_factory):
 def test_every_file_is_written_and_the_figures_are_drawn(written):
     out, r = written
     names = {p.name for p in out.iterdir()}
-    figures = {"dead_landings.png", "contact_maps.png", "nickel_band.png"}
+    figures = {"dead_landings.png", "contact_maps.png", "nickel_band.png", "nickel_rigid.png"}
     if mujoco_compare.available():
         figures.add("mujoco.png")
     assert names == figures | set(report.REPORTS)

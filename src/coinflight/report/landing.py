@@ -36,7 +36,7 @@ from coinflight.studies.edge_experiments import EdgeExperiments
 
 DEFAULT_SEED = 20261123
 """The report's documented seed, so that it is the same on every machine (reported)."""
-FIGURES = ("dead_landings", "contact_maps", "nickel_band", "mujoco")
+FIGURES = ("dead_landings", "contact_maps", "nickel_band", "nickel_rigid", "mujoco")
 REPORTS = ("report.md", "report.html", "numbers.json")
 Step = Callable[[str], None]
 HNP_NOTE = (
@@ -395,6 +395,7 @@ def landing_report(
         plot_dead_and_bouncing,
         plot_mujoco,
         plot_nickel_band,
+        plot_rigid_nickel,
     )
     from coinflight.plotting.style import save_figure
     from coinflight.studies import mujoco_compare
@@ -487,6 +488,8 @@ def landing_report(
             "contact_maps": plot_contact_maps(maps),
             "nickel_band": plot_nickel_band(bands),
         }
+        if rigid is not None:
+            figures["nickel_rigid"] = plot_rigid_nickel(rigid)
         if mujoco is not None:
             figures["mujoco"] = plot_mujoco(mujoco)
         for name, fig in figures.items():
@@ -919,6 +922,10 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
         Paragraph("The edges by how they ended (coinflight.studies.landing.RIGID_PATHS):"),
         Table(("tosses", "edges", *study.RIGID_PATHS), tuple(path_rows)),
         Paragraph(why),
+        Image(
+            "nickel_rigid.png",
+            "The US nickel's P(edge) in the rigid ending, and how the edges ended.",
+        ),
     )
 
 
