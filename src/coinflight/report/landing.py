@@ -69,7 +69,7 @@ class Sizes:
     rigid_band: int = 100
     """The nickel in the rigid ending: tosses per corner of each preset's box of e, μ, the
     resistances and the corner radius (:func:`coinflight.studies.landing.rigid_nickel`; 0:
-    skip the section). About 40 s at 100 on a busy 2-core machine."""
+    skip the section). At 100: about 4,100 rigid landings, half a minute on 2 cores."""
     rigid_band_integrated: int = 400
     """The same: tosses with the four drawn toss by toss, per preset."""
     mujoco: int = 10_000
@@ -886,8 +886,8 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
             f"μ, the rolling and pivoting resistance ℓ_r = ℓ_p from {study.RIGID_RESISTANCES[0]:g} "
             f"to {study.RIGID_RESISTANCES[1]:g} m (the band coinflight.model.surface carries; no "
             "source measures it) and the rim's corner radius a from 0 to "
-            f"{study.RIGID_CORNER * 1e3:g} mm (an assumption: no source gives the nickel's; a "
-            "worn or rounded minted edge), the same tosses in every cell; and, per preset, "
+            f"{study.RIGID_CORNER * 1e3:g} mm (an assumption: no source gives the nickel's), "
+            "the same tosses in every cell; and, per preset, "
             "tosses with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform: "
             "integrated). The band runs from the lowest to the highest cell; Murray & Teare's "
             f"1 in {1 / mt:,.0f} ({mt:.1e}, their extrapolation) beside it is a reference, not "
@@ -906,7 +906,8 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
         ),
         Paragraph(
             "Each axis alone: P(edge) of the cells at its low and at its high end, pooled over "
-            "the other three (± binomial s.e.)."
+            "the other three (± binomial s.e. of the pooled landings; the cells share their "
+            "tosses, so it is a scale rather than an exact error)."
         ),
         Table(
             ("surface preset", "axis", "low end", "high end", "P(edge) from low to high"),

@@ -383,8 +383,9 @@ RIGID_RESISTANCES = (1e-5, 1e-3)
 coin; a hard rim on hard wood to a rim on a soft cloth). Integrated log-uniformly."""
 RIGID_CORNER = 2.5e-4
 """The most rounded rim corner of the rigid band, m: an assumption. No source gives the corner
-radius of a nickel's rim; 0.25 mm (a quarter of its half-thickness, 0.975 mm) is a worn or
-rounded minted edge, leaving a flat band 1.45 mm wide. Integrated uniformly from 0 (sharp)."""
+radius of a nickel's rim; 0.25 mm (about a quarter of its half-thickness, 0.975 mm), our
+choice of a clearly rounded corner, leaves a flat band 1.45 mm wide. Integrated uniformly from
+0 (sharp)."""
 RIGID_PATHS = ("at an impact", "rolled on its band", "upright, below the barrier", "not settled")
 """How a rigid-ending landing that ends on edge ended (:func:`rigid_landings`): at an impact of
 the bounces, its whole energy below the edge well's barrier; rolling straight on its band to
@@ -513,7 +514,9 @@ class RigidBand:
 
     def axis(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
         """(P, s.e.) of the cells at the low and at the high end of axis ``k`` (0 corner
-        radius, 1 resistance, 2 friction, 3 restitution), pooled over the other axes."""
+        radius, 1 resistance, 2 friction, 3 restitution), pooled over the other axes (the
+        s.e. binomial over the 8 ``n`` landings; the cells share their tosses, so it is a
+        scale rather than an exact error)."""
         out = []
         for end in (0, 1):
             p = float(np.take(self.edge, end, axis=k).mean())
@@ -538,16 +541,18 @@ class RigidNickel:
 
 def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) -> RigidNickel:
     """The US nickel's P(edge) with the rigid ending (``Surface(ending="rigid")``), a band over
-    what is not measured: for each surface preset (:data:`coinflight.studies.presets.
-    SURFACE_PRESETS`), ``n`` tosses of :func:`map_tosses` in each of the 16 corners of the box
-    of e, μ (the preset's), ℓ_r = ℓ_p (:data:`RIGID_RESISTANCES`) and the corner radius
-    (0 to :data:`RIGID_CORNER`), the same tosses in every cell; ``integrated`` tosses (default
+    what is not measured: for each surface preset
+    (:data:`coinflight.studies.presets.SURFACE_PRESETS`), ``n`` tosses of :func:`map_tosses`
+    in each of the 16 corners of the box of e, μ (the preset's), ℓ_r = ℓ_p
+    (:data:`RIGID_RESISTANCES`) and the corner radius (0 to :data:`RIGID_CORNER`), the same
+    tosses in every cell; ``integrated`` tosses (default
     4 ``n``) with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform); and the ``n``
     tosses once more with the corners rounded to h/2. Each edge is counted by how it ended
     (:data:`RIGID_PATHS`, :func:`rigid_landings`).
 
-    Cost: 2 × (16 ``n`` + ``integrated``) + ``n`` rigid landings, bounded before anything
-    runs at :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at ℓ = 1e-5 m
+    Cost: 2 × (16 ``n`` + ``integrated``) + ``n`` rigid landings (the report's 100 and 400:
+    about 4,100, half a minute on 2 cores), bounded before anything runs at
+    :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at ℓ = 1e-5 m
     (coins rolling long on their rims) take most of it.
     """
     from coinflight.studies.presets import SURFACE_PRESETS
