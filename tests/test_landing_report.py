@@ -33,6 +33,8 @@ TINY = report.Sizes(
     map_friction=2,
     band_tosses=500,
     band_cells=2,
+    rigid_band=3,
+    rigid_band_integrated=6,
     mujoco=3,
     mujoco_edges=2,
     experiments=60,
@@ -51,7 +53,7 @@ def written(tmp_path_factory):
 def test_every_file_is_written_and_the_figures_are_drawn(written):
     out, r = written
     names = {p.name for p in out.iterdir()}
-    figures = {"dead_landings.png", "contact_maps.png", "nickel_band.png"}
+    figures = {"dead_landings.png", "contact_maps.png", "nickel_band.png", "nickel_rigid.png"}
     if mujoco_compare.available():
         figures.add("mujoco.png")
     assert names == figures | set(report.REPORTS)
@@ -206,6 +208,21 @@ def test_the_numbers_are_the_librarys(written):
     md = (out / "report.md").read_text()
     first = numbers["dead_landings"][0]
     assert f"{first['p_edge']:.4f} ± {first['stderr']:.4f}" in md
+
+
+def test_the_rigid_nickel_section_is_the_studys(written):
+    """The rigid ending's nickel band (issue 27): its section in the report, its numbers
+    those of :func:`coinflight.studies.landing.rigid_nickel` with the report's seed."""
+    out, r = written
+    numbers = json.loads((out / "numbers.json").read_text())["nickel_rigid"]
+    again = study.rigid_nickel(TINY.rigid_band, SEED, TINY.rigid_band_integrated)
+    expected = json.loads(json.dumps(report._rigid_numbers(again)))
+    numbers.pop("seconds"), expected.pop("seconds")  # wall time, not a result
+    assert numbers == expected
+    md = (out / "report.md").read_text()
+    assert "## The US nickel's P(edge) in the rigid ending: a band, and why" in md
+    assert numbers["round_rim"]["edges"] == 0
+    assert "nickel band, rigid ending" in r.timings
 
 
 def test_the_report_is_whole_or_nothing(tmp_path, monkeypatch):

@@ -1,5 +1,6 @@
 """Figures of the landing report (:mod:`coinflight.studies.landing`): the (e, μ) maps, the
-nickel's P(edge) band, and coinflight beside MuJoCo. The dead landings reuse
+nickel's P(edge) band (the rocking ending's and the rigid ending's), and coinflight beside
+MuJoCo. The dead landings reuse
 :func:`coinflight.plotting.edge.plot_edge`."""
 
 from __future__ import annotations
@@ -21,11 +22,13 @@ from coinflight.plotting.style import (
 from coinflight.studies.landing import (
     DROP_HEIGHT,
     MURRAY_TEARE,
+    RIGID_PATHS,
     Band,
     BouncingEdges,
     ContactMaps,
     DeadLanding,
     MujocoComparison,
+    RigidNickel,
 )
 
 if TYPE_CHECKING:
@@ -182,6 +185,84 @@ def plot_nickel_band(bands: Sequence[Band]) -> Figure:
     ax.set_title(
         f"US nickel landing on a table {DROP_HEIGHT:g} m below launch: P(edge) over the "
         "literature's (e, μ)",
+        fontsize="medium",
+    )
+    return fig
+
+
+def plot_rigid_nickel(r: RigidNickel) -> Figure:
+    """The nickel's P(edge) in the rigid ending per surface preset (left): the 16 corners of
+    the box of e, μ, resistance and corner radius (points, ±2 s.e.), the band from the lowest
+    to the highest, the value integrated over the box (diamond, ±2 s.e.), Murray & Teare's
+    1 in 6000 (line); and (right) the integrated tosses' edges by how they ended
+    (:data:`~coinflight.studies.landing.RIGID_PATHS`, shares of the edges)."""
+    bands = r.bands
+    fig = new_figure(figsize=(9.0, 2.8 + 1.1 * len(bands)))
+    ax, shares = fig.subplots(1, 2, sharey=True, gridspec_kw={"width_ratios": (3, 2)})
+    for k, band in enumerate(bands):
+        y = float(k)
+        cells = band.edge.ravel()
+        se = np.sqrt(cells * (1 - cells) / band.n)
+        ax.errorbar(
+            cells,
+            y + np.linspace(-0.2, 0.2, cells.size),
+            xerr=2 * se,
+            fmt="o",
+            color=EDGE_COLOR,
+            markersize=3,
+            alpha=0.7,
+            label="corners of the box (±2 s.e.)" if k == 0 else None,
+        )
+        ax.fill_betweenx(
+            [y - 0.3, y + 0.3],
+            band.low[0],
+            band.high[0],
+            color=EDGE_COLOR,
+            alpha=0.15,
+            label="band: lowest to highest corner" if k == 0 else None,
+        )
+        p = band.integrated
+        ax.errorbar(
+            [p.p],
+            [y + 0.38],
+            xerr=[2 * p.stderr],
+            fmt="D",
+            color=method_color("monte-carlo"),
+            label="integrated over the box (±2 s.e.)" if k == 0 else None,
+        )
+        edges = band.integrated_paths
+        left = 0.0
+        for j, (name, count) in enumerate(zip(RIGID_PATHS, edges, strict=True)):
+            width = count / edges.sum() if edges.sum() else 0.0
+            shares.barh(
+                y,
+                width,
+                left=left,
+                height=0.5,
+                color=(EXACT_COLOR, EDGE_COLOR, HEADS_COLOR, TAILS_COLOR)[j],
+                label=name if k == 0 else None,
+            )
+            left += width
+    ax.axvline(
+        MURRAY_TEARE,
+        color=EXACT_COLOR,
+        linestyle="--",
+        linewidth=1,
+        label="Murray & Teare 1993: 1 in 6000 (extrapolated)",
+    )
+    ax.set_yticks(range(len(bands)))
+    ax.set_yticklabels([b.preset for b in bands])
+    ax.set_ylim(-0.6, len(bands) - 0.4 + 0.2)
+    ax.set_xlabel("P(edge) of a US nickel, rigid ending")
+    ax.set_xlim(left=0.0)
+    below = {"fontsize": "x-small", "loc": "upper center", "bbox_to_anchor": (0.5, -0.2)}
+    ax.legend(ncol=2, **below)
+    shares.set_xlim(0.0, 1.0)
+    shares.set_xlabel("share of the integrated tosses' edges")
+    shares.legend(ncol=2, **below)
+    fig.suptitle(
+        "US nickel, rigid ending: P(edge) over e, μ, resistance and corner radius, and how the "
+        "edges ended",
         fontsize="medium",
     )
     return fig

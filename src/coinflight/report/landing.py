@@ -36,7 +36,7 @@ from coinflight.studies.edge_experiments import EdgeExperiments
 
 DEFAULT_SEED = 20261123
 """The report's documented seed, so that it is the same on every machine (reported)."""
-FIGURES = ("dead_landings", "contact_maps", "nickel_band", "mujoco")
+FIGURES = ("dead_landings", "contact_maps", "nickel_band", "nickel_rigid", "mujoco")
 REPORTS = ("report.md", "report.html", "numbers.json")
 Step = Callable[[str], None]
 HNP_NOTE = (
@@ -66,6 +66,12 @@ class Sizes:
     """Nickel tosses per cell of each preset's grid, and integrated over it."""
     band_cells: int = 3
     """Cells per parameter over each preset's box."""
+    rigid_band: int = 100
+    """The nickel in the rigid ending: tosses per corner of each preset's box of e, μ, the
+    resistances and the corner radius (:func:`coinflight.studies.landing.rigid_nickel`; 0:
+    skip the section). At 100: about 4,100 rigid landings, half a minute on 2 cores."""
+    rigid_band_integrated: int = 400
+    """The same: tosses with the four drawn toss by toss, per preset."""
     mujoco: int = 10_000
     """Identical tosses in coinflight and MuJoCo (0: skip)."""
     mujoco_edges: int = 1_000
@@ -99,6 +105,8 @@ QUICK = Sizes(
     map_friction=3,
     band_tosses=4_000,
     band_cells=2,
+    rigid_band=4,
+    rigid_band_integrated=8,
     mujoco=4,
     mujoco_edges=4,
     experiments=400,
@@ -128,6 +136,8 @@ class LandingReport:
     experiments_left: tuple[str, ...] = ()
     experiments_human: EdgeExperiments | None = None
     """The same measured points beside human tosses as the preset makes them (its wobble)."""
+    rigid: study.RigidNickel | None = None
+    """The nickel's P(edge) in the rigid ending (None: not asked for)."""
 
     def numbers(self) -> dict[str, Any]:
         """Every number of the report, JSON-ready (``numbers.json``)."""
@@ -183,6 +193,7 @@ class LandingReport:
                 for b in self.bands
             ],
             "murray_teare": study.MURRAY_TEARE,
+            "nickel_rigid": None if self.rigid is None else _rigid_numbers(self.rigid),
             "mujoco": None if self.mujoco is None else _mujoco_numbers(self.mujoco),
             "mujoco_note": self.mujoco_note,
             "mujoco_edges": None if self.edges is None else _edge_numbers(self.edges),
@@ -195,6 +206,51 @@ class LandingReport:
             "timings": self.timings,
         }
         return out
+
+
+def _rigid_numbers(r: study.RigidNickel) -> dict[str, Any]:
+    """numbers.json's ``nickel_rigid``: the rigid ending's band per preset, its axes, the
+    edges by how they ended, the fully rounded rim."""
+    axes = ("corner_radius", "resistance", "friction", "restitution")
+    return {
+        "paths": list(study.RIGID_PATHS),
+        "bands": [
+            {
+                "preset": b.preset,
+                "restitution": list(b.restitution),
+                "friction": list(b.friction),
+                "resistance": list(b.resistance),
+                "corner_radius": list(b.corner),
+                "p_edge_cells": b.edge.tolist(),
+                "cells_axes": list(axes),
+                "edges_by_path_cells": b.paths.tolist(),
+                "low": b.low[0],
+                "low_stderr": b.low[1],
+                "high": b.high[0],
+                "high_stderr": b.high[1],
+                "axes": {
+                    name: {"low_end": b.axis(k)[0][0], "high_end": b.axis(k)[1][0]}
+                    for k, name in enumerate(axes)
+                },
+                "integrated": b.integrated.p,
+                "integrated_stderr": b.integrated.stderr,
+                "integrated_n": b.integrated.n,
+                "integrated_edges_by_path": dict(
+                    zip(study.RIGID_PATHS, b.integrated_paths.tolist(), strict=True)
+                ),
+                "n": b.n,
+                "sources": b.sources,
+            }
+            for b in r.bands
+        ],
+        "round_rim": {
+            **r.round_rim_parameters,
+            "edges": r.round_rim.successes,
+            "n": r.round_rim.n,
+        },
+        "murray_teare": study.MURRAY_TEARE,
+        "seconds": r.seconds,
+    }
 
 
 def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
@@ -339,6 +395,7 @@ def landing_report(
         plot_dead_and_bouncing,
         plot_mujoco,
         plot_nickel_band,
+        plot_rigid_nickel,
     )
     from coinflight.plotting.style import save_figure
     from coinflight.studies import mujoco_compare
@@ -374,6 +431,12 @@ def landing_report(
     bands = timed(
         "nickel band", lambda: study.nickel_band(sizes.band_tosses, seed, sizes.band_cells)
     )
+    rigid: study.RigidNickel | None = None
+    if sizes.rigid_band > 0:
+        rigid = timed(
+            "nickel band, rigid ending",
+            lambda: study.rigid_nickel(sizes.rigid_band, seed, sizes.rigid_band_integrated),
+        )
     mujoco: study.MujocoComparison | None = None
     if sizes.mujoco <= 0:
         note = "MuJoCo comparison not asked for (size 0)."
@@ -414,6 +477,7 @@ def landing_report(
         "edges": edges,
         "experiments": experiments,
         "experiments_human": human,
+        "rigid": rigid,
     }
     report = LandingReport(
         dead, maps, bands, mujoco, note, sizes, seed, (), timings, **more, experiments_left=left
@@ -424,6 +488,8 @@ def landing_report(
             "contact_maps": plot_contact_maps(maps),
             "nickel_band": plot_nickel_band(bands),
         }
+        if rigid is not None:
+            figures["nickel_rigid"] = plot_rigid_nickel(rigid)
         if mujoco is not None:
             figures["mujoco"] = plot_mujoco(mujoco)
         for name, fig in figures.items():
@@ -476,6 +542,8 @@ def build_document(r: LandingReport) -> Document:
         doc.add(*_bouncing_section(r.dead, r.bouncing))
     doc.add(*_maps_section(r.maps))
     doc.add(*_band_section(r.bands))
+    if r.rigid is not None:
+        doc.add(*_rigid_section(r.rigid))
     doc.add(*_mujoco_section(r.mujoco, r.mujoco_note))
     if r.edges is not None:
         doc.add(*_edges_section(r.edges))
@@ -677,6 +745,188 @@ def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
         Paragraph("Sources of the ranges (coinflight.studies.presets):"),
         Bullets(tuple(sources)),
         Image("nickel_band.png", "The US nickel's P(edge) over each preset's ranges."),
+    )
+
+
+def _trend(low: tuple[float, float], high: tuple[float, float]) -> str:
+    """ "rises", "falls" or "barely changes" from ``low`` to ``high`` ((P, s.e.) each), beyond
+    twice their combined standard error."""
+    d = high[0] - low[0]
+    if abs(d) <= 2.0 * math.hypot(low[1], high[1]):
+        return "barely changes"
+    return "rises" if d > 0 else "falls"
+
+
+def _shift(b: study.RigidBand) -> str:
+    """How the edges of ``b``'s cells ended at its least and at its most friction, in words."""
+    parts = []
+    for end in (0, 1):
+        counts = np.take(b.paths, end, axis=2).sum(axis=(0, 1, 2))
+        total = int(counts.sum())
+        if total:
+            parts.append(
+                f"at μ {b.friction[end]:g} {counts[1] / total:.0%} of the edges rolled away and "
+                f"{counts[2] / total:.0%} stood upright"
+            )
+    return "".join(f"; {part}" for part in parts)
+
+
+def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
+    from coinflight.model.coin import Coin
+
+    bands = r.bands
+    n = bands[0].n
+    mt = study.MURRAY_TEARE
+    rows = []
+    for b in bands:
+        (lo, lo_se), (hi, hi_se) = b.low, b.high
+        p = b.integrated
+        rows.append(
+            (
+                b.preset,
+                f"{b.restitution[0]:g}–{b.restitution[1]:g}",
+                f"{b.friction[0]:g}–{b.friction[1]:g}",
+                f"{lo:.3f} ± {lo_se:.3f} – {hi:.3f} ± {hi_se:.3f}",
+                f"{_pm(p.p, p.stderr, 3)} ({_one_in(p.p)}; n = {p.n:,})",
+                f"{p.p / mt:,.0f} ×" if p.p > 0 else "–",
+            )
+        )
+    names = ("corner radius a", "resistance ℓ_r = ℓ_p", "friction μ", "restitution e")
+    units = (1e3, 1.0, 1.0, 1.0), (" mm", " m", "", "")
+    axis_rows = []
+    for b in bands:
+        ends = (b.corner, b.resistance, b.friction, b.restitution)
+        for k, name in enumerate(names):
+            low, high = b.axis(k)
+            axis_rows.append(
+                (
+                    b.preset,
+                    name,
+                    f"{ends[k][0] * units[0][k]:g}{units[1][k]}: {_pm(*low, 3)}",
+                    f"{ends[k][1] * units[0][k]:g}{units[1][k]}: {_pm(*high, 3)}",
+                    _trend(low, high),
+                )
+            )
+    path_rows = []
+    for b in bands:
+        edges = int(b.integrated_paths.sum())
+        shares = [f"{k} ({k / edges:.0%})" if edges else "0" for k in b.integrated_paths]
+        path_rows.append((f"{b.preset}, integrated", str(edges), *shares))
+        for end in (0, 1):
+            counts = np.take(b.paths, end, axis=2).sum(axis=(0, 1, 2))
+            total = int(counts.sum())
+            shares = [f"{k} ({k / total:.0%})" if total else "0" for k in counts]
+            path_rows.append((f"{b.preset}, cells at μ {b.friction[end]:g}", str(total), *shares))
+    pooled = np.sum([b.integrated_paths for b in bands], axis=0)
+    edges = int(pooled.sum())
+    roll, upright = int(pooled[1]), int(pooled[2])
+    first = bands[0]
+    mu_low, mu_high = first.axis(2)
+    a_low, a_high = first.axis(0)
+    par = r.round_rim_parameters
+    nickel = Coin.preset(study.COIN)
+    if edges:
+        why = (
+            f"Of the {edges} edges of the integrated tosses "
+            f"({' and '.join(b.preset for b in bands)}), "
+            f"{roll / edges:.0%} rolled away on their flat band and stopped there, rolling "
+            f"straight once the rims' small impacts had taken the rocking out and the "
+            f"rolling resistance had slowed the roll, and {upright / edges:.0%} stood upright "
+            "on the band, spinning or rocking, until their energy fell below the edge well's "
+            f"barrier ({int(pooled[0])} ended at an impact of the bounces, {int(pooled[3])} "
+            "had not settled). "
+        )
+    else:
+        why = "None of the integrated tosses ended on edge. "
+    friction = _trend(mu_low, mu_high)
+    corner = _trend(a_low, a_high)
+    why += (
+        f"On {first.preset}, P(edge) {friction} with friction (μ {first.friction[0]:g}: "
+        f"{mu_low[0]:.3f}, μ {first.friction[1]:g}: {mu_high[0]:.3f}{_shift(first)})"
+        + (
+            ": friction holds both rims' lowest points, so that a coin on its band rolls "
+            "straight rather than slipping off it, and stops its spin about the vertical"
+            if friction == "rises"
+            else ""
+        )
+        + ". "
+        + f"Rounding the corners to {first.corner[1] * 1e3:g} mm narrows the flat band from "
+        f"{nickel.thickness * 1e3:.2f} mm to {(nickel.thickness - 2 * first.corner[1]) * 1e3:.2f}"
+        f" mm, and P(edge) {corner} ({a_low[0]:.3f} to {a_high[0]:.3f})"
+        + (
+            ": a narrow flat band suffices"
+            if a_high[0] > 2.0 * a_high[1] and corner != "falls"
+            else ""
+        )
+        + f"; with no band at all (a = h/2) {r.round_rim.successes} of {r.round_rim.n:,} "
+        "tosses end on edge. "
+    )
+    integrated = [b.integrated for b in bands]
+    if all(p.p - 2.0 * p.stderr > mt for p in integrated):
+        why += (
+            f"Murray & Teare's 1 in {1 / mt:,.0f} lies "
+            + " and ".join(f"{p.p / mt:,.0f}" for p in integrated)
+            + " times below the integrated values: in this rigid model the rims' impacts calm "
+            "a coin's rocking on its band faster than anything tips it over, and what would (a "
+            "real table's roughness and give, the coin's imperfections) is not in the model. "
+            "Read these as what rigid bodies do, not as what a nickel on a real table does."
+        )
+    else:
+        why += (
+            f"Murray & Teare's 1 in {1 / mt:,.0f} is not below every integrated value by more "
+            "than twice its standard error at these sizes."
+        )
+    return (
+        Heading("The US nickel's P(edge) in the rigid ending: a band, and why"),
+        Paragraph(
+            "The nickel tossed as for the maps, landing with the rigid, event-driven ending "
+            '(Surface(ending="rigid"): rolling, sliding and pivoting on a rim, hops, the '
+            "other rim's impacts, both rims on the flat band; coinflight.core.rigid_ending), "
+            f"{n:,} tosses in each of the 16 corners of a box over each surface preset's e and "
+            f"μ, the rolling and pivoting resistance ℓ_r = ℓ_p from {study.RIGID_RESISTANCES[0]:g} "
+            f"to {study.RIGID_RESISTANCES[1]:g} m (the band coinflight.model.surface carries; no "
+            "source measures it) and the rim's corner radius a from 0 to "
+            f"{study.RIGID_CORNER * 1e3:g} mm (an assumption: no source gives the nickel's), "
+            "the same tosses in every cell; and, per preset, "
+            "tosses with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform: "
+            "integrated). The band runs from the lowest to the highest cell; Murray & Teare's "
+            f"1 in {1 / mt:,.0f} ({mt:.1e}, their extrapolation) beside it is a reference, not "
+            f"a target. Computed in {r.seconds:.0f} s."
+        ),
+        Table(
+            (
+                "surface preset",
+                "e",
+                "μ",
+                "band of P(edge) (± s.e.)",
+                "integrated (± s.e.)",
+                "integrated / Murray & Teare's 1 in 6000",
+            ),
+            tuple(rows),
+        ),
+        Paragraph(
+            "Each axis alone: P(edge) of the cells at its low and at its high end, pooled over "
+            "the other three (± binomial s.e. of the pooled landings; the cells share their "
+            "tosses, so it is a scale rather than an exact error)."
+        ),
+        Table(
+            ("surface preset", "axis", "low end", "high end", "P(edge) from low to high"),
+            tuple(axis_rows),
+        ),
+        Paragraph(
+            "The limit of a fully rounded rim, a = h/2 = "
+            f"{par['corner_radius'] * 1e3:.3f} mm (no flat band, no edge well to stand in): the "
+            f"cell tosses with e {par['restitution']:g}, μ {par['friction']:g}, ℓ "
+            f"{par['resistance']:g} m (those of the first preset's highest cell) end on edge "
+            f"{r.round_rim.successes} times in {r.round_rim.n:,}."
+        ),
+        Paragraph("The edges by how they ended (coinflight.studies.landing.RIGID_PATHS):"),
+        Table(("tosses", "edges", *study.RIGID_PATHS), tuple(path_rows)),
+        Paragraph(why),
+        Image(
+            "nickel_rigid.png",
+            "The US nickel's P(edge) in the rigid ending, and how the edges ended.",
+        ),
     )
 
 

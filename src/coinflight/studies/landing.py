@@ -80,7 +80,7 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES, _EXPERIMENTS = 0, 1, 2, 3, 4, 5, 6
+_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES, _EXPERIMENTS, _RIGID = 0, 1, 2, 3, 4, 5, 6, 7
 EXPERIMENTS_CHILD = _EXPERIMENTS
 """The child of the report's seed the thick-cylinder comparison (:func:`thick_experiments`)
 draws its tosses from."""
@@ -287,16 +287,19 @@ def contact_maps(
     )
 
 
-def _bound(what: str, tosses: int) -> None:
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
+def _bound(what: str, tosses: int, rigid: bool = False) -> None:
+    """Refuse ``tosses`` landings beyond the run limit, at the bouncing rate (or the rigid
+    ending's, ``rigid``)."""
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, RIGID_TOSSES_PER_SECOND
 
+    rate = RIGID_TOSSES_PER_SECOND if rigid else BOUNCING_TOSSES_PER_SECOND
     v.work_bound(
         what,
         tosses,
-        BOUNCING_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
+        rate * v.MAX_RUN_SECONDS,
         "tosses",
         "use fewer cells or tosses (--quick)",
-        BOUNCING_TOSSES_PER_SECOND,
+        rate,
     )
 
 
@@ -371,6 +374,274 @@ def nickel_band(n: int, seed: streams.SeedLike, cells: int = 3) -> list[Band]:
         integrated = BinomialEstimate(int(result.counts[2]), n, streams.reported_seed(root))
         out.append(Band(preset.name, e, mu, edge, n, integrated, dict(preset.sources)))
     return out
+
+
+# --- the nickel's P(edge) band in the rigid ending ---------------------------------------------
+RIGID_RESISTANCES = (1e-5, 1e-3)
+"""Rolling and pivoting resistance ℓ_r = ℓ_p of the rigid band, m: the ends of the band
+:mod:`coinflight.model.surface` carries (an assumption there: no source measures it for a
+coin; a hard rim on hard wood to a rim on a soft cloth). Integrated log-uniformly."""
+RIGID_CORNER = 2.5e-4
+"""The most rounded rim corner of the rigid band, m: an assumption. No source gives the corner
+radius of a nickel's rim; 0.25 mm (about a quarter of its half-thickness, 0.975 mm), our
+choice of a clearly rounded corner, leaves a flat band 1.45 mm wide. Integrated uniformly from
+0 (sharp)."""
+RIGID_PATHS = ("at an impact", "rolled on its band", "upright, below the barrier", "not settled")
+"""How a rigid-ending landing that ends on edge ended (:func:`rigid_landings`): at an impact of
+the bounces, its whole energy below the edge well's barrier; rolling straight on its band to
+rest (:data:`coinflight.core.rigid_ending.ENDED_BAND`); upright on its band (spinning about the
+vertical or rocking) until its energy fell below the edge well's barrier
+(:data:`~coinflight.core.rigid_ending.ENDED_BARRIER`); or not settled within the ending's
+limits (counted by the well it was in)."""
+_AT_IMPACT, _BAND_ROLL, _UPRIGHT, _NOT_SETTLED = range(4)
+_FACE_DOWN = -1  # ended lying on a face (not an edge: no path)
+
+
+def rigid_landings(
+    coin: Coin,
+    omega: NDArray[np.float64],
+    v0: NDArray[np.float64],
+    restitution: float | NDArray[np.float64],
+    friction: float | NDArray[np.float64],
+    resistance: float | NDArray[np.float64],
+    corner: float | NDArray[np.float64],
+    g: float = 9.81,
+) -> tuple[NDArray[np.int8], NDArray[np.int8]]:
+    """Land tosses (ω (n, 3) rad/s, v0 (n,) m/s, heads up) on a table :data:`DROP_HEIGHT`
+    below with the rigid ending, each with its own e, μ, ℓ_r = ℓ_p (m) and ``coin``'s rim
+    corners rounded to ``corner`` (m; scalars or arrays of shape (n,)): (faces at rest, how
+    each ended: an index of :data:`RIGID_PATHS`, −1 for a coin ended flat on a face).
+
+    The same kernels as :func:`coinflight.outcomes.table.land` (the bounces of
+    :func:`coinflight.core.bounce.bounce_loop`, then :func:`coinflight.core.rigid_ending.run`),
+    called toss by toss from here to read how each ending stopped, which ``land`` does not
+    return; the faces are ``land``'s (tests/test_landing_rigid_band.py). One thread; its work
+    is not bounded here (:func:`rigid_nickel` bounds its own)."""
+    from coinflight.core import bounce, rigid_ending
+    from coinflight.core.outcome import Status
+    from coinflight.outcomes.table import contact_record
+
+    n = len(v0)
+    e, mu, ell, a = (
+        np.broadcast_to(np.asarray(x, dtype=float), (n,))
+        for x in (restitution, friction, resistance, corner)
+    )
+    face = np.empty(n, dtype=np.int8)
+    path = np.full(n, _FACE_DOWN, dtype=np.int8)
+    records: dict[float, Any] = {}
+    y = np.empty(10)
+    counts = np.empty(8)
+    ended = {
+        rigid_ending.ENDED_BAND: _BAND_ROLL,
+        rigid_ending.ENDED_BARRIER: _UPRIGHT,
+        rigid_ending.ENDED_LIMIT: _NOT_SETTLED,
+    }
+    for k in range(n):
+        rim = float(a[k])
+        if rim not in records:
+            table = Surface("table", DROP_HEIGHT, ending="rigid")
+            records[rim] = contact_record(coin.with_corner_radius(rim), table, g)
+        c = bounce.with_surface(records[rim], e[k], mu[k], ell[k], ell[k])
+        w = (float(omega[k, 0]), float(omega[k, 1]), float(omega[k, 2]))
+        f, _, _, _, status, z, v, normal, lm = bounce.bounce_loop(
+            w, 1.0, float(v0[k]), c, bounce.MAX_IMPACTS
+        )
+        if status == bounce.DIED_OUT:
+            y[0] = z
+            y[1:4] = v
+            y[4:7] = normal
+            y[7:10] = lm
+            f, status, _ = rigid_ending.run(y, c, rigid_ending.RTOL, rigid_ending.DURATION, counts)
+            way = ended.get(int(counts[7]), _FACE_DOWN)
+        else:
+            way = _AT_IMPACT if status == Status.SETTLED_ENERGY else _NOT_SETTLED
+        face[k] = f
+        if f == EDGE:
+            path[k] = way
+    return face, path
+
+
+def _path_counts(face: NDArray[np.int8], path: NDArray[np.int8]) -> NDArray[np.int64]:
+    """Edges by how they ended (:data:`RIGID_PATHS`)."""
+    return np.bincount(path[face == EDGE], minlength=len(RIGID_PATHS)).astype(np.int64)
+
+
+@dataclass(frozen=True)
+class RigidBand:
+    """The nickel's P(edge) in the rigid ending over one surface preset's e and μ, the
+    resistances :data:`RIGID_RESISTANCES` and the corner radius 0 to :data:`RIGID_CORNER`.
+
+    Attributes
+    ----------
+    preset : str
+    restitution, friction, resistance, corner : tuple of float
+        The ends of each range (e, μ from the preset; ℓ_r = ℓ_p and a in m).
+    edge : ndarray, shape (2, 2, 2, 2)
+        P(edge) at the corners of the box, indexed [corner radius, resistance, friction,
+        restitution] (low end 0, high end 1), the same ``n`` tosses in every cell.
+    paths : ndarray, shape (2, 2, 2, 2, len(RIGID_PATHS))
+        The cells' edges by how they ended (:data:`RIGID_PATHS`).
+    integrated : BinomialEstimate
+        Edges of ``integrated.n`` tosses with e and μ uniform over the preset, ℓ log-uniform
+        and a uniform over their ranges, drawn toss by toss.
+    integrated_paths : ndarray, shape (len(RIGID_PATHS),)
+        Those edges by how they ended.
+    """
+
+    preset: str
+    restitution: tuple[float, float]
+    friction: tuple[float, float]
+    resistance: tuple[float, float]
+    corner: tuple[float, float]
+    edge: NDArray[np.float64]
+    paths: NDArray[np.int64]
+    n: int
+    integrated: BinomialEstimate
+    integrated_paths: NDArray[np.int64]
+    sources: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def low(self) -> tuple[float, float]:
+        """(P, s.e.) of the lowest cell."""
+        p = float(self.edge.min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    @property
+    def high(self) -> tuple[float, float]:
+        """(P, s.e.) of the highest cell."""
+        p = float(self.edge.max())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    def axis(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
+        """(P, s.e.) of the cells at the low and at the high end of axis ``k`` (0 corner
+        radius, 1 resistance, 2 friction, 3 restitution), pooled over the other axes (the
+        s.e. binomial over the 8 ``n`` landings; the cells share their tosses, so it is a
+        scale rather than an exact error)."""
+        out = []
+        for end in (0, 1):
+            p = float(np.take(self.edge, end, axis=k).mean())
+            tosses = self.n * self.edge.size // 2
+            out.append((p, math.sqrt(p * (1 - p) / tosses)))
+        return out[0], out[1]
+
+
+@dataclass(frozen=True)
+class RigidNickel:
+    """The nickel's P(edge) in the rigid ending: one :class:`RigidBand` per surface preset, and
+    the limit of a fully rounded rim (a = h/2: no flat band) that must leave none on edge."""
+
+    bands: tuple[RigidBand, ...]
+    round_rim: BinomialEstimate
+    """Edges of the cell tosses with the parameters of the first preset's highest cell and the
+    corners rounded to half the thickness (a = h/2)."""
+    round_rim_parameters: dict[str, float]
+    seed: int
+    seconds: float
+
+
+def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) -> RigidNickel:
+    """The US nickel's P(edge) with the rigid ending (``Surface(ending="rigid")``), a band over
+    what is not measured: for each surface preset
+    (:data:`coinflight.studies.presets.SURFACE_PRESETS`), ``n`` tosses of :func:`map_tosses`
+    in each of the 16 corners of the box of e, μ (the preset's), ℓ_r = ℓ_p
+    (:data:`RIGID_RESISTANCES`) and the corner radius (0 to :data:`RIGID_CORNER`), the same
+    tosses in every cell; ``integrated`` tosses (default
+    4 ``n``) with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform); and the ``n``
+    tosses once more with the corners rounded to h/2. Each edge is counted by how it ended
+    (:data:`RIGID_PATHS`, :func:`rigid_landings`).
+
+    Cost: 2 × (16 ``n`` + ``integrated``) + ``n`` rigid landings (the report's 100 and 400:
+    about 4,100, half a minute on 2 cores), bounded before anything runs at
+    :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at ℓ = 1e-5 m
+    (coins rolling long on their rims) take most of it.
+    """
+    from coinflight.studies.presets import SURFACE_PRESETS
+
+    t0 = time.perf_counter()
+    n = v.count("tosses per cell", n, 1, 10**6)
+    integrated = v.count("integrated tosses", 4 * n if integrated is None else integrated, 1, 10**7)
+    presets = list(SURFACE_PRESETS.values())
+    total = len(presets) * (16 * n + integrated) + n
+    _bound(
+        f"the nickel's rigid band: {len(presets)} presets × (16 cells × {n} + {integrated}) "
+        f"+ {n} tosses",
+        total,
+        rigid=True,
+    )
+    root = streams.seed_sequence(seed)
+    dist = map_tosses()
+    coin = dist.coin
+    omega, v0 = _draw(dist, n, streams.child(root, _RIGID, 0))
+    corners = (0.0, RIGID_CORNER)
+    bands = []
+    for k, preset in enumerate(presets):
+        e_ends = preset.restitution.bounds
+        mu_ends = preset.friction.bounds
+        edge = np.empty((2, 2, 2, 2))
+        paths = np.empty((2, 2, 2, 2, len(RIGID_PATHS)), dtype=np.int64)
+        for ia, a in enumerate(corners):
+            for il, ell in enumerate(RIGID_RESISTANCES):
+                for im, mu in enumerate(mu_ends):
+                    for ie, e in enumerate(e_ends):
+                        face, path = rigid_landings(coin, omega, v0, e, mu, ell, a, dist.g)
+                        edge[ia, il, im, ie] = np.count_nonzero(face == EDGE) / n
+                        paths[ia, il, im, ie] = _path_counts(face, path)
+        w, v_int = _draw(dist, integrated, streams.child(root, _RIGID, 1 + k, 0))
+        cube = streams.unit_cube(streams.child(root, _RIGID, 1 + k, 1), integrated, 4)
+        u = np.concatenate(list(cube), axis=1)  # (4, integrated): e, μ, ℓ, a
+        log_lo, log_hi = (math.log(x) for x in RIGID_RESISTANCES)
+        face, path = rigid_landings(
+            coin,
+            w,
+            v_int,
+            preset.restitution.ppf(u[0]),
+            preset.friction.ppf(u[1]),
+            np.exp(log_lo + (log_hi - log_lo) * u[2]),
+            RIGID_CORNER * u[3],
+            dist.g,
+        )
+        estimate = BinomialEstimate(
+            int(np.count_nonzero(face == EDGE)), integrated, streams.reported_seed(root)
+        )
+        bands.append(
+            RigidBand(
+                preset.name,
+                (float(e_ends[0]), float(e_ends[1])),
+                (float(mu_ends[0]), float(mu_ends[1])),
+                RIGID_RESISTANCES,
+                corners,
+                edge,
+                paths,
+                n,
+                estimate,
+                _path_counts(face, path),
+                dict(preset.sources),
+            )
+        )
+    first = bands[0]
+    _, il, im, ie = (int(i) for i in np.unravel_index(int(np.argmax(first.edge)), (2, 2, 2, 2)))
+    worst = {
+        "restitution": first.restitution[ie],
+        "friction": first.friction[im],
+        "resistance": first.resistance[il],
+        "corner_radius": coin.thickness / 2.0,
+    }
+    face, _ = rigid_landings(
+        coin,
+        omega,
+        v0,
+        worst["restitution"],
+        worst["friction"],
+        worst["resistance"],
+        worst["corner_radius"],
+        dist.g,
+    )
+    round_rim = BinomialEstimate(
+        int(np.count_nonzero(face == EDGE)), n, streams.reported_seed(root)
+    )
+    return RigidNickel(
+        tuple(bands), round_rim, worst, streams.reported_seed(root), time.perf_counter() - t0
+    )
 
 
 # --- MuJoCo --------------------------------------------------------------------------------------
@@ -840,6 +1111,9 @@ __all__ = [
     "EXPERIMENTS_CHILD",
     "MURRAY_TEARE",
     "RATIOS",
+    "RIGID_CORNER",
+    "RIGID_PATHS",
+    "RIGID_RESISTANCES",
     "Band",
     "BouncingEdges",
     "ContactMaps",
@@ -848,6 +1122,8 @@ __all__ = [
     "EdgeCheck",
     "EndingRun",
     "MujocoComparison",
+    "RigidBand",
+    "RigidNickel",
     "bouncing_edges",
     "contact_maps",
     "dead_landings",
@@ -859,5 +1135,7 @@ __all__ = [
     "mujoco_comparison",
     "mujoco_tosses",
     "nickel_band",
+    "rigid_landings",
+    "rigid_nickel",
     "thick_experiments",
 ]
