@@ -1,18 +1,15 @@
 """Thick cylinders against experiments: measured edge fractions beside the table landing's band.
 
-(The study scripts named ``bench_*.py`` below have left the package; git history keeps
-them.)
-
 For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
 describes) the study simulates that setting with
 :func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
-the two endings) and returns P(edge) as a **band** over what nobody measured: the restitution
-e and friction μ over the surface presets' box (:func:`coinflight.studies.presets.
+the endings) and returns P(edge) as a **band** over what nobody measured: the restitution e
+and friction μ over the surface presets' box (:func:`coinflight.studies.presets.
 bouncing_box`), the cylinder's diameter and the table's drop when the source does not give
-them, and, for the experimental 3-D contact ending, the rolling and pivoting resistance. The
-band's cells are the box's corners and its centre; each reports p, s.e. and n. The measured
-fraction with its 95 % (Wilson) interval is then *inside*, *above* or *below* that band. No
-parameter is tuned to the data: the result is whatever it is.
+them, and, for the 3-D endings, the rolling and pivoting resistance. The band's cells are the
+box's corners and its centre; each reports p, s.e. and n. The measured fraction with its 95 %
+(Wilson) interval is then *inside*, *above* or *below* that band. No parameter is tuned to the
+data: the result is whatever it is.
 
 Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
 
@@ -25,12 +22,7 @@ Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
     assumption: coin-sized to a large draughts piece). By default the tosses are planar (no
     axial spin ωz); ``psi`` adds the wobble of a precessing toss (below).
 
-A cylinder of diameter D is simulated at that size (``simulate_edge``'s ``diameter``). Earlier, the
-study landed the 24 mm coin in a world scaled by k = 24 mm / D (g, drop, v0
-and resistance lengths × k: dimensional similarity); the direct size agrees with it in all 34
-rocking cells of ``bench_edge_experiments.py 20000 --contact 0 --points 2 --seed 2018`` (same
-tosses, every difference within 0.93 s.e.), and every number
-below was measured with one or the other, as dated.
+A cylinder of diameter D is simulated at that size (``simulate_edge``'s ``diameter``).
 
 Wobble (:func:`axial_spin`, :func:`wobble_sweep`). A hand-flipped thick cylinder probably
 does not spin about a diameter only: with an axial spin ωz its normal precesses on a cone of
@@ -39,94 +31,20 @@ angle ψ about the angular momentum, cot ψ = I3 ωz / (I1 ωx) (Diaconis, Holme
 ("volumetric" rotation, Gaek & Sukhov 2024, arXiv:2401.03557). ``psi="human"`` takes the human
 toss preset's relation (ωz ~ Normal(μ, μ/2), μ at ψ0 = 82.05°, fitted there to *coins'*
 same-side rate); a number is one ψ at the median ωx. **A cylinder's ψ is not measured**: the
-sweep below states ψ, it does not fit it. Caveats of the endings with a wobble: the rocking
-ending discards the spin and the precession at its hand-off (planar rocking), and the 3-D
-contact ending is experimental (rims that roll upright can stop upright).
+sweep states ψ, it does not fit it. Caveats of the endings with a wobble: the rocking ending
+discards the spin and the precession at its hand-off (planar rocking); the contact ending is
+experimental.
 
-Measured (
-``bench_edge_experiments.py 100000 --contact 4000 --seed 2018``, 437 s wall;
-the two measured points of :func:`coinflight.datasets.edge_experiments`, Stand-up Maths' hand
-flips, 1,000 a cylinder; rocking: 3 values per parameter, 81 cells × 100,000 tosses; contact:
-corners and centre, 33 cells × 4,000; band = lowest – highest cell ± s.e.):
-
-- h/d 0.354, measured 0.132 (95 %: 0.112–0.154). Rocking band 0.021 ± 0.001 – 0.095 ±
-  0.001: the measurement is above it by 0.037. Contact band 0.023 ± 0.002 – 0.110 ± 0.005:
-  "inside" (the measured interval reaches the top cell + 2 s.e.; gap 0.022).
-- h/d 0.577, measured 0.410 (0.380–0.441). Rocking band 0.114 ± 0.001 – 0.204 ± 0.001,
-  contact band 0.099 ± 0.005 – 0.206 ± 0.006: above both, by 0.206 and 0.204.
-
-An independent engine on the same tosses (:func:`mujoco_check`,
-``bench_edge_experiments.py 200 --contact 10 --points 2 --mujoco 2000 --seed 2018``,
-2,000 tosses of a 24 mm cylinder released 0.35 m above the table,
-e 0.45, μ 0.325, resistances 1e-4 m, MuJoCo condim 6, Euler, every toss settled): P(edge) at
-h/d 0.354 rocking 0.025 ± 0.003, contact 0.025 ± 0.003, MuJoCo 0.024 ± 0.003; at h/d 0.577
-rocking 0.134 ± 0.008, contact 0.129 ± 0.007, MuJoCo 0.116 ± 0.007. MuJoCo agrees with both
-endings here (within 2 s.e.; planar tosses), and is as far from the measured 0.132 and 0.410:
-the miss is not one engine's contact law.
-
-So the bouncing landing puts *fewer* thick cylinders on edge than the no-bounce dynamic model
-(0.216 and 0.333 there; :func:`coinflight.studies.edge.edge_probability`), the measured points
-lie *above* the whole band, and at h/d = 0.577 by a factor of two, far beyond both errors.
-The highest cells are at the box's corner of low restitution (0.3) and friction (0.05), small
-cylinder (20 mm) and high release (0.5 m); the lowest near the centre: P(edge) is not
-monotonic in e and μ (the same tosses, e 0.3/0.45/0.6 → 0.19/0.12/0.12 at μ 0.325, h/d 0.577),
-so a grid's band is a lower bound of the model's spread. Landing dead (e = 0) gives the dynamic
-model (tested), which is still below 0.41 at h/d = 0.577. Candidate reasons for the miss:
-the setting (the human coin-toss preset's spin, 38 rev/s, may not be how people flip a
-cylinder; no axial spin; unknown size, material, release and surface; a soft table top or
-cloth would land them deader), the parameters (restitution of wood or plastic on a table
-below 0.3, a rounded rim), the model (rigid bodies with Coulomb friction, in both coinflight
-and MuJoCo, which agree here), and the data (fractions from a secondary table, the
-video not read).
-
-The wobble, measured (335 s wall:
-``bench_edge_experiments.py 50000 --contact 500 --seed 2018 --wobble``; the same
-ωx and v0 draws at every ψ and cell; P(edge) ± s.e., rocking 50,000 / contact 500 tosses;
-cells: C the box's centre e 0.45, μ 0.325, 24 mm, 0.35 m drop; A the planar band's high
-corner e 0.3, μ 0.05, 20 mm, 0.5 m; B the opposite corner e 0.6, μ 0.6, 50 mm, 0.2 m; ψ
-in degrees, 90 = no axial spin, human = the preset's spread about 82°):
-
-=======  ====  ====  =========  =========  =========  =========  =========  =========
-ending   h/d   cell  ψ 90       human      ψ 80       ψ 70       ψ 60       ψ 45
-=======  ====  ====  =========  =========  =========  =========  =========  =========
-rocking  .354  C     .031±.001  .069±.001  .068±.001  .041±.001  .049±.001  .036±.001
-rocking  .354  A     .095±.001  .103±.001  .123±.001  .033±.001  .023±.001  .010±.000
-rocking  .354  B     .057±.001  .125±.001  .102±.001  .074±.001  .071±.001  .057±.001
-rocking  .577  C     .137±.002  .322±.002  .330±.002  .267±.002  .232±.002  .175±.002
-rocking  .577  A     .203±.002  .329±.002  .341±.002  .212±.002  .140±.002  .092±.001
-rocking  .577  B     .173±.002  .381±.002  .334±.002  .281±.002  .255±.002  .249±.002
-contact  .354  C     .030±.008  .186±.017  .178±.017  .116±.014  .076±.012  .046±.009
-contact  .354  A     .100±.013  .346±.021  .430±.022  .028±.007  0 of 500   0 of 500
-contact  .354  B     .052±.010  .446±.022  .450±.022  .322±.021  .258±.020  .214±.018
-contact  .577  C     .118±.014  .442±.022  .480±.022  .340±.021  .200±.018  .050±.010
-contact  .577  A     .210±.018  .570±.022  .572±.022  .030±.008  0 of 500   0 of 500
-contact  .577  B     .152±.016  .736±.020  .734±.020  .636±.022  .612±.022  .488±.022
-=======  ====  ====  =========  =========  =========  =========  =========  =========
-
-Measured: 0.132 (0.112–0.154) at h/d 0.354, 0.410 (0.380–0.441) at 0.577.
-
-An independent engine on wobbling tosses (:func:`mujoco_check` with ``psi``, 400 tosses at
-cell C, the seed 2018's child 0; one toss of the ψ 70
-run at h/d 0.354 hit a MuJoCo instability warning): with the human ψ, P(edge) at h/d 0.354
-rocking 0.072 ± 0.013, contact 0.205 ± 0.020, MuJoCo 0.158 ± 0.018; at 0.577 rocking
-0.295 ± 0.023, contact 0.480 ± 0.025, MuJoCo 0.410 ± 0.025. With ψ 70: at 0.354 rocking
-0.045 ± 0.010, contact 0.102 ± 0.015, MuJoCo 0.035 ± 0.009; at 0.577 rocking 0.268 ± 0.022,
-contact 0.370 ± 0.024, MuJoCo 0.185 ± 0.019. With a wobble the endings no longer agree with
-MuJoCo (planar they did): MuJoCo lies between them for the human ψ, below both for ψ 70.
-
-So the hypothesis holds in direction and in size for a *slight* wobble. ψ 80–82° (the coin
-preset's, taken as it is) doubles P(edge) at h/d 0.577 in every cell (rocking 0.32–0.38, from
-0.14–0.20 planar; contact 0.44–0.74) and lifts it at 0.354 (rocking 0.07–0.12, contact
-0.19–0.45); MuJoCo at the box's centre gives 0.158 ± 0.018 and 0.410 ± 0.025, both within
-1.3 s.e. of the measured 0.132 and 0.410 (the agreement at 0.577 to three digits is chance:
-nothing was tuned, and the engines' spread at one cell is 0.30–0.48). It is not "more wobble,
-more random": a larger wobble (ψ 45–70°, a fast axial spin, gyroscopically stiff) lowers
-P(edge) again, to zero in the contact ending on low friction, and MuJoCo agrees at ψ 70. The
-size of the effect depends on the ending far beyond the errors (the rocking ending drops the
-precession at its hand-off; the contact ending is experimental), and the ψ of a hand-flipped
-cylinder is not measured (the human preset's is fitted to coins): the wobble is a sufficient
-explanation of the miss, not a demonstrated one. What would settle it: ψ read from the filmed
-flips, and MuJoCo over the whole box with a wobble.
+What it finds, with the figures and their caveats, is on the documentation's physics page
+("Published edge experiments"), and ``coinflight landing-report`` recomputes it ("Thick
+cylinders against experiments"): planar tosses that bounce put fewer thick cylinders on edge
+than the measured hand flips, in every ending and in MuJoCo alike (:func:`mujoco_check`),
+beyond any restitution or friction; a slight wobble such as the human preset's lifts the
+bands to hold both measured points, while a larger one (ψ 45–70°) lowers P(edge) again. The
+wobble is a sufficient explanation of the miss, not a demonstrated one: what would settle it
+is ψ read from the filmed flips. Cost: the rocking ending lands about 10⁴ tosses a second, the
+3-D endings a hundred times fewer; a run whose estimated time exceeds the work bound
+(:data:`coinflight._validation.MAX_RUN_SECONDS`) is refused before it starts.
 """
 
 from __future__ import annotations
