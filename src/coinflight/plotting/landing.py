@@ -6,7 +6,7 @@ MuJoCo. The dead landings reuse
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -130,45 +130,44 @@ def _ink(rgba: tuple[float, ...]) -> str:
     return "white" if 0.2126 * r + 0.7152 * g + 0.0722 * b < 0.179 else "black"
 
 
-def plot_nickel_band(bands: Sequence[Band]) -> Figure:
-    """The nickel's P(edge) per surface preset: every cell of the grid over the preset's
-    ranges (points, ±2 s.e.), the band from the lowest to the highest cell, the probability
-    integrated over the preset (diamond, ±2 s.e.), and Murray & Teare's 1 in 6000 (line)."""
-    fig = new_figure(figsize=(7.0, 1.6 + 1.1 * len(bands)))
-    ax = fig.add_subplot()
-    for k, band in enumerate(bands):
-        y = float(k)
-        cells = band.edge.ravel()
-        se = np.sqrt(cells * (1 - cells) / band.n)
-        jitter = np.linspace(-0.2, 0.2, cells.size)
-        ax.errorbar(
-            cells,
-            y + jitter,
-            xerr=2 * se,
-            fmt="o",
-            color=EDGE_COLOR,
-            markersize=3,
-            alpha=0.7,
-            label="grid cells over the ranges (±2 s.e.)" if k == 0 else None,
-        )
-        lo, hi = band.low[0], band.high[0]
-        ax.fill_betweenx(
-            [y - 0.3, y + 0.3],
-            lo,
-            hi,
-            color=EDGE_COLOR,
-            alpha=0.15,
-            label="band: lowest to highest cell" if k == 0 else None,
-        )
-        p = band.integrated
-        ax.errorbar(
-            [p.p],
-            [y + 0.38],
-            xerr=[2 * p.stderr],
-            fmt="D",
-            color=method_color("monte-carlo"),
-            label="integrated over the ranges (±2 s.e.)" if k == 0 else None,
-        )
+def _band_row(ax: Any, k: int, band: Any, words: tuple[str, str, str]) -> None:
+    """Row ``k`` of a nickel band figure: the band's cells (points, ±2 s.e.), the band from
+    the lowest to the highest (shaded) and the value integrated over its box (diamond, ±2
+    s.e.); ``words``: what the cells are, one cell, the box (the legend's, first row only)."""
+    y = float(k)
+    cells = band.edge.ravel()
+    se = np.sqrt(cells * (1 - cells) / band.n)
+    ax.errorbar(
+        cells,
+        y + np.linspace(-0.2, 0.2, cells.size),
+        xerr=2 * se,
+        fmt="o",
+        color=EDGE_COLOR,
+        markersize=3,
+        alpha=0.7,
+        label=f"{words[0]} (±2 s.e.)" if k == 0 else None,
+    )
+    ax.fill_betweenx(
+        [y - 0.3, y + 0.3],
+        band.low[0],
+        band.high[0],
+        color=EDGE_COLOR,
+        alpha=0.15,
+        label=f"band: lowest to highest {words[1]}" if k == 0 else None,
+    )
+    p = band.integrated
+    ax.errorbar(
+        [p.p],
+        [y + 0.38],
+        xerr=[2 * p.stderr],
+        fmt="D",
+        color=method_color("monte-carlo"),
+        label=f"integrated over {words[2]} (±2 s.e.)" if k == 0 else None,
+    )
+
+
+def _nickel_axes(ax: Any, bands: Sequence[Any]) -> None:
+    """Murray & Teare's 1 in 6000 (line) and the presets' rows of a nickel band figure."""
     ax.axvline(
         MURRAY_TEARE,
         color=EXACT_COLOR,
@@ -179,6 +178,17 @@ def plot_nickel_band(bands: Sequence[Band]) -> Figure:
     ax.set_yticks(range(len(bands)))
     ax.set_yticklabels([b.preset for b in bands])
     ax.set_ylim(-0.6, len(bands) - 0.4 + 0.2)
+
+
+def plot_nickel_band(bands: Sequence[Band]) -> Figure:
+    """The nickel's P(edge) per surface preset: every cell of the grid over the preset's
+    ranges (points, ±2 s.e.), the band from the lowest to the highest cell, the probability
+    integrated over the preset (diamond, ±2 s.e.), and Murray & Teare's 1 in 6000 (line)."""
+    fig = new_figure(figsize=(7.0, 1.6 + 1.1 * len(bands)))
+    ax = fig.add_subplot()
+    for k, band in enumerate(bands):
+        _band_row(ax, k, band, ("grid cells over the ranges", "cell", "the ranges"))
+    _nickel_axes(ax, bands)
     ax.set_xlabel("P(edge) of a US nickel")
     ax.set_xlim(left=0.0)
     ax.legend(fontsize="x-small", loc="upper right")
@@ -201,35 +211,7 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
     ax, shares = fig.subplots(1, 2, sharey=True, gridspec_kw={"width_ratios": (3, 2)})
     for k, band in enumerate(bands):
         y = float(k)
-        cells = band.edge.ravel()
-        se = np.sqrt(cells * (1 - cells) / band.n)
-        ax.errorbar(
-            cells,
-            y + np.linspace(-0.2, 0.2, cells.size),
-            xerr=2 * se,
-            fmt="o",
-            color=EDGE_COLOR,
-            markersize=3,
-            alpha=0.7,
-            label="corners of the box (±2 s.e.)" if k == 0 else None,
-        )
-        ax.fill_betweenx(
-            [y - 0.3, y + 0.3],
-            band.low[0],
-            band.high[0],
-            color=EDGE_COLOR,
-            alpha=0.15,
-            label="band: lowest to highest corner" if k == 0 else None,
-        )
-        p = band.integrated
-        ax.errorbar(
-            [p.p],
-            [y + 0.38],
-            xerr=[2 * p.stderr],
-            fmt="D",
-            color=method_color("monte-carlo"),
-            label="integrated over the box (±2 s.e.)" if k == 0 else None,
-        )
+        _band_row(ax, k, band, ("corners of the box", "corner", "the box"))
         edges = band.integrated_paths
         left = 0.0
         for j, (name, count) in enumerate(zip(RIGID_PATHS, edges, strict=True)):
@@ -243,16 +225,7 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
                 label=name if k == 0 else None,
             )
             left += width
-    ax.axvline(
-        MURRAY_TEARE,
-        color=EXACT_COLOR,
-        linestyle="--",
-        linewidth=1,
-        label="Murray & Teare 1993: 1 in 6000 (extrapolated)",
-    )
-    ax.set_yticks(range(len(bands)))
-    ax.set_yticklabels([b.preset for b in bands])
-    ax.set_ylim(-0.6, len(bands) - 0.4 + 0.2)
+    _nickel_axes(ax, bands)
     ax.set_xlabel("P(edge) of a US nickel, rigid ending")
     ax.set_xlim(left=0.0)
     below = {"fontsize": "x-small", "loc": "upper center", "bbox_to_anchor": (0.5, -0.2)}

@@ -701,6 +701,12 @@ def _maps_section(m: study.ContactMaps) -> tuple[Block, ...]:
     )
 
 
+def _preset_ranges(b: study.Band | study.RigidBand) -> tuple[str, str, str]:
+    """A nickel band's preset and its ranges of e and μ, as a table row begins."""
+    e, mu = b.restitution, b.friction
+    return b.preset, f"{e[0]:g}–{e[-1]:g}", f"{mu[0]:g}–{mu[-1]:g}"
+
+
 def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
     rows = []
     for b in bands:
@@ -708,9 +714,7 @@ def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
         p = b.integrated
         rows.append(
             (
-                b.preset,
-                f"{b.restitution[0]:g}–{b.restitution[-1]:g}",
-                f"{b.friction[0]:g}–{b.friction[-1]:g}",
+                *_preset_ranges(b),
                 f"{lo:.2e} ± {lo_se:.1e} – {hi:.2e} ± {hi_se:.1e}",
                 f"{_one_in(hi)} – {_one_in(lo)}",
                 f"{p.p:.2e} ± {p.stderr:.1e} ({_one_in(p.p)})",
@@ -783,9 +787,7 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
         p = b.integrated
         rows.append(
             (
-                b.preset,
-                f"{b.restitution[0]:g}–{b.restitution[1]:g}",
-                f"{b.friction[0]:g}–{b.friction[1]:g}",
+                *_preset_ranges(b),
                 f"{lo:.3f} ± {lo_se:.3f} – {hi:.3f} ± {hi_se:.3f}",
                 f"{_pm(p.p, p.stderr, 3)} ({_one_in(p.p)}; n = {p.n:,})",
                 f"{p.p / mt:,.0f} ×" if p.p > 0 else "–",

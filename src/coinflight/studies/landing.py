@@ -304,8 +304,28 @@ def _bound(what: str, tosses: int, rigid: bool = False) -> None:
 
 
 # --- the nickel's P(edge) band ----------------------------------------------------------------
+class _CellExtremes:
+    """The lowest and the highest cell of a band of edge fractions (``edge``, ``n`` tosses a
+    cell), each as (P, s.e.)."""
+
+    edge: NDArray[np.float64]
+    n: int
+
+    @property
+    def low(self) -> tuple[float, float]:
+        """(P, s.e.) of the lowest cell."""
+        p = float(self.edge.min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    @property
+    def high(self) -> tuple[float, float]:
+        """(P, s.e.) of the highest cell."""
+        p = float(self.edge.max())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+
 @dataclass(frozen=True)
-class Band:
+class Band(_CellExtremes):
     """The nickel's P(edge) over one surface preset's ranges of e and μ.
 
     Attributes
@@ -327,18 +347,6 @@ class Band:
     n: int
     integrated: BinomialEstimate
     sources: dict[str, str] = field(default_factory=dict)
-
-    @property
-    def low(self) -> tuple[float, float]:
-        """(P, s.e.) of the lowest cell."""
-        p = float(self.edge.min())
-        return p, math.sqrt(p * (1 - p) / self.n)
-
-    @property
-    def high(self) -> tuple[float, float]:
-        """(P, s.e.) of the highest cell."""
-        p = float(self.edge.max())
-        return p, math.sqrt(p * (1 - p) / self.n)
 
 
 def nickel_band(n: int, seed: streams.SeedLike, cells: int = 3) -> list[Band]:
@@ -467,7 +475,7 @@ def _path_counts(face: NDArray[np.int8], path: NDArray[np.int8]) -> NDArray[np.i
 
 
 @dataclass(frozen=True)
-class RigidBand:
+class RigidBand(_CellExtremes):
     """The nickel's P(edge) in the rigid ending over one surface preset's e and μ, the
     resistances :data:`RIGID_RESISTANCES` and the corner radius 0 to :data:`RIGID_CORNER`.
 
@@ -499,18 +507,6 @@ class RigidBand:
     integrated: BinomialEstimate
     integrated_paths: NDArray[np.int64]
     sources: dict[str, str] = field(default_factory=dict)
-
-    @property
-    def low(self) -> tuple[float, float]:
-        """(P, s.e.) of the lowest cell."""
-        p = float(self.edge.min())
-        return p, math.sqrt(p * (1 - p) / self.n)
-
-    @property
-    def high(self) -> tuple[float, float]:
-        """(P, s.e.) of the highest cell."""
-        p = float(self.edge.max())
-        return p, math.sqrt(p * (1 - p) / self.n)
 
     def axis(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
         """(P, s.e.) of the cells at the low and at the high end of axis ``k`` (0 corner
