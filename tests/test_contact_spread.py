@@ -99,8 +99,12 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
     e = rng.uniform(0.0, 0.9, n)
     mu = rng.uniform(0.0, 1.0, n)
     base = _contact(coin, 0.5, 0.3)
-    assert bounce.with_surface(base, 0.2, 0.7, 1e-4, 2e-4) == base._replace(
-        restitution=0.2, friction=0.7, rolling_resistance=1e-4, pivoting_resistance=2e-4
+    assert bounce.with_surface(base, 0.2, 0.7, 1e-4, 2e-4, 3e-4) == base._replace(
+        restitution=0.2,
+        friction=0.7,
+        rolling_resistance=1e-4,
+        pivoting_resistance=2e-4,
+        contact_duration=3e-4,
     )
     together = bounce.land(omega, speed, 1.0, base, restitution=e, friction=mu)
     for k in range(n):

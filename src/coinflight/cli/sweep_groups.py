@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from coinflight.cli.command import Group
-from coinflight.cli.landing_groups import (
+from coinflight.cli.landing_help import (
     CORNER_HELP,
     ENDING_HELP,
     PIVOTING_TAIL,
