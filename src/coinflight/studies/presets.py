@@ -245,9 +245,9 @@ _RESTITUTION_SOURCE = (
 )
 
 _DURATION_SOURCE = (
-    "Hertz's contact time (Johnson, Contact Mechanics, 1985, §11.4) of a coin's rim "
-    "(corner radius 0.3 mm, effective mass m/5, m = 2.3-11 g) at 1-3 m/s: {} on {}; "
-    "not measured for coins"
+    "{} s: Hertz's contact time (Johnson, Contact Mechanics, 1985, §11.4) of a coin's rim "
+    "(corner radius 0.3 mm, effective mass m/5, m = 2.3-11 g) at 1-3 m/s on {}; not measured "
+    "for coins"
 )
 
 SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
@@ -263,7 +263,7 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
                     "(Engineering ToolBox, 'Friction and Friction Coefficients', "
                     "engineeringtoolbox.com/friction-coefficients-d_778.html)",
                     "contact_duration": _DURATION_SOURCE.format(
-                        "5e-5 to 3e-4 s", "wood (E* 0.5-10 GPa, across and along the grain)"
+                        "5e-05-0.0003", "wood (E* 0.5-10 GPa, across and along the grain)"
                     ),
                 }
             ),
@@ -280,7 +280,7 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
                     "doi:10.3390/foundations2030039, §2.2) assumes for a 50-eurocent coin "
                     "to 0.5, our upper bound; not measured for coins",
                     "contact_duration": _DURATION_SOURCE.format(
-                        "2e-5 to 3e-4 s",
+                        "2e-05-0.0003",
                         "a table top of wood (5e-5 to 3e-4 s), laminate, stone or glass "
                         "(E* 50-70 GPa: 2e-5 to 4e-5 s)",
                     ),
