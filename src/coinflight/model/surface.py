@@ -9,7 +9,6 @@ from types import MappingProxyType
 from typing import Any, Literal
 
 from coinflight import _validation as v
-from coinflight.core import impact as _impact
 from coinflight.model.distributions import (
     Distribution,
     Fixed,
@@ -61,10 +60,11 @@ DEFAULT_PIVOTING_RESISTANCE = 1e-4
 spread over the contact arc: an assumption, as the rolling resistance (band 1e-5 to 1e-3 m;
 MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
-DEFAULT_CONTACT_DURATION = _impact.CONTACT_DURATION
+DEFAULT_CONTACT_DURATION = 1e-4
 """Contact duration t_c of one impact of a coin's rim on a table, s: how far apart in time two
 rim points may strike and still make one simultaneous impact
-(:data:`coinflight.core.impact.CONTACT_DURATION`, where the value and its source are: Hertz's
+(:data:`coinflight.core.impact.CONTACT_DURATION`, the same number, where its derivation is;
+a literal here so that ``import coinflight`` stays free of numba; Hertz's
 contact time, Johnson 1985 §11.4, for a coin's rim on wood 5e-5 to 3e-4 s, on stone or glass
 2e-5 to 4e-5 s); not measured for coins."""
 
