@@ -300,3 +300,16 @@ def test_the_table_model_names_the_duration_it_was_given():
     assert "contact duration 0.0003 s" in given.describe()
     spread = {"contact_duration": Uniform(3e-5, 3e-4)}
     assert "contact duration 3e-05–0.0003 s" in default.describe(spread)
+
+
+def test_the_web_api_integrates_over_a_range_as_the_command_line(client):
+    url = (
+        "/api/probability?omega_x=0:0.3&flight_time=0.4&surface=table&drop_height=0.35"
+        "&restitution=0.45&method=monte-carlo&n=3000&seed=1&contact_duration=3e-5:3e-4"
+    )
+    response = client.get(url)
+    assert response.status_code == 200, response.text
+    api = response.json()
+    _, _, cli = _p_tails("3e-5:3e-4")
+    assert api["counts"] == cli["counts"]
+    assert api["contact_duration"] == cli["contact_duration"]
