@@ -100,8 +100,7 @@ TABLE_PARAMETERS = (
 """What a surface kind may take beyond its name, in the order a refusal names them: the
 :class:`Surface` fields ``ending``, ``drop_height``, ``restitution``, ``friction``,
 ``rolling_resistance``, ``pivoting_resistance`` and ``contact_duration``, the coin's rounded
-rim ``corner_radius``
-(the command line's --corner-radius) and ``max_bounces`` (--bounces). A table takes them all, a
+rim ``corner_radius`` (the command line's --corner-radius) and ``max_bounces`` (--bounces). A table takes them all, a
 catch in the hand none; an outcome model declares those it reads
 (:attr:`coinflight.outcomes.base.OutcomeModel.surface_parameters`), and a :class:`Surface` of
 its kind refuses any other given."""
@@ -197,8 +196,8 @@ CONTACT_DURATION = v.Quantity("contact duration", "s", 1e-6, 1e-2)
 a coin's rim is 2e-5 s on stone or glass and 3e-4 s on soft wood; 1 μs is twenty times
 shorter than the stiffest table's (and a positive t_c keeps the simultaneous impact: 0 would be
 the sequential rigid law and its falling-rod paradox), 10 ms thirty times longer than the
-softest's (beyond it, the gravity and the rotation the simultaneous impact leaves out over t_c,
-g t_c² / 2 ≈ 0.5 mm at 10 ms, reach a coin's thickness)."""
+softest's (beyond it, the fall the simultaneous impact leaves out over t_c, g t_c² / 2 ≈ 0.5
+mm at 10 ms, is a quarter of a coin's thickness)."""
 CONTACT_TIME = v.Quantity("contact time", "s", 1e-5, 1e-2)
 """t_c of the compliant contact (:mod:`coinflight.core.contact_phase`): 10 μs to 10 ms (shorter
 steps cost time in proportion; longer would let the coin sink by g (t_c/π)² ≈ 0.1 mm)."""
@@ -370,8 +369,7 @@ class Surface:
         """The call that rebuilds this surface: every field but the defaults not given.
 
         A default marked as not given (drop height, restitution, friction, the resistances, the
-        contact duration) is
-        left out, as the caller left it out: shown as a number it would be given back, and
+        contact duration) is left out, as the caller left it out: shown as a number it would be given back, and
         refused by a catch in the hand or the rocking ending. ``eval(repr(s))`` equals ``s``
         and refuses what ``s`` refuses (in :func:`dataclasses.replace`), no more.
 
