@@ -100,8 +100,8 @@ TABLE_PARAMETERS = (
 """What a surface kind may take beyond its name, in the order a refusal names them: the
 :class:`Surface` fields ``ending``, ``drop_height``, ``restitution``, ``friction``,
 ``rolling_resistance``, ``pivoting_resistance`` and ``contact_duration``, the coin's rounded
-rim ``corner_radius`` (the command line's --corner-radius) and ``max_bounces`` (--bounces). A table takes them all, a
-catch in the hand none; an outcome model declares those it reads
+rim ``corner_radius`` (the command line's --corner-radius) and ``max_bounces`` (--bounces). A
+table takes them all, a catch in the hand none; an outcome model declares those it reads
 (:attr:`coinflight.outcomes.base.OutcomeModel.surface_parameters`), and a :class:`Surface` of
 its kind refuses any other given."""
 
@@ -369,9 +369,10 @@ class Surface:
         """The call that rebuilds this surface: every field but the defaults not given.
 
         A default marked as not given (drop height, restitution, friction, the resistances, the
-        contact duration) is left out, as the caller left it out: shown as a number it would be given back, and
-        refused by a catch in the hand or the rocking ending. ``eval(repr(s))`` equals ``s``
-        and refuses what ``s`` refuses (in :func:`dataclasses.replace`), no more.
+        contact duration) is left out, as the caller left it out: shown as a number it would be
+        given back, and refused by a catch in the hand or the rocking ending.
+        ``eval(repr(s))`` equals ``s`` and refuses what ``s`` refuses (in
+        :func:`dataclasses.replace`), no more.
 
         >>> Surface("hand")
         Surface(kind='hand', contact_time=0.001, ending='rocking')
