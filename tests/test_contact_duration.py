@@ -313,3 +313,24 @@ def test_the_web_api_integrates_over_a_range_as_the_command_line(client):
     _, _, cli = _p_tails("3e-5:3e-4")
     assert api["counts"] == cli["counts"]
     assert api["contact_duration"] == cli["contact_duration"]
+
+
+def test_a_sweep_lists_durations_row_by_row(tmp_path):
+    """``sweep --contact-duration 3e-5,3e-4``: one row per value, each naming its t_c, and
+    the near-flat tosses above turn over far more often at the longer one (as the
+    probability's fixed values above)."""
+    import csv
+
+    out = tmp_path / "sweep.csv"
+    result = _cli(
+        "sweep", "--omega-x", "0:0.3", "--flight-time", "0.4", "--surface", "table",
+        "--drop-height", "0.35", "--restitution", "0.45", "--contact-duration", "3e-5,3e-4",
+        "--method", "monte-carlo", "--n", "2000", "--seed", "1", "--out", str(out),
+    )  # fmt: skip
+    assert result.exit_code == 0, result.output
+    with out.open() as f:
+        rows = list(csv.DictReader(f))
+    assert [float(r["contact_duration"]) for r in rows] == [3e-5, 3e-4]
+    (short, long) = rows
+    gap = float(long["p_tails"]) - float(short["p_tails"])
+    assert gap > 10 * math.hypot(float(short["stderr"]), float(long["stderr"]))

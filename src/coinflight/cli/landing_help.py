@@ -61,6 +61,12 @@ SPREAD_RESISTANCE = (
     " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal one"
     " truncated to 0 to 0.01 m), drawn toss by toss."
 )
+DURATION_LIST_HELP = (
+    "1e-6 to 0.01 (default 1e-4): rim points meeting the table less than t_c apart strike as "
+    "one. Hertz's contact time: 5e-5 to 3e-4 on wood, 2e-5 to 4e-5 on stone or glass; not "
+    "measured for coins: sweep a band."
+)
+"""The sweep's --contact-duration help after what it lists."""
 DURATION_HELP = (
     "contact duration t_c of one impact of the coin's rim on the table, s, 1e-6 to 0.01 "
     "(default 1e-4): two rim points meeting the table less than t_c apart strike as one "
