@@ -122,6 +122,7 @@ TABLE = {
     "--rolling-resistance": _number(0, 0.01),
     "--pivoting-resistance": _dist(0, 0.01),
     "--corner-radius": _number(0, 0.001),
+    "--contact-duration": _dist(0, 1e-3),
 }
 FLIGHT = {"--flight-time": _number(0.2, 1.0), "--launch-speed": _number(1, 5)}
 

@@ -99,8 +99,12 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
     e = rng.uniform(0.0, 0.9, n)
     mu = rng.uniform(0.0, 1.0, n)
     base = _contact(coin, 0.5, 0.3)
-    assert bounce.with_surface(base, 0.2, 0.7, 1e-4, 2e-4) == base._replace(
-        restitution=0.2, friction=0.7, rolling_resistance=1e-4, pivoting_resistance=2e-4
+    assert bounce.with_surface(base, 0.2, 0.7, 1e-4, 2e-4, 3e-4) == base._replace(
+        restitution=0.2,
+        friction=0.7,
+        rolling_resistance=1e-4,
+        pivoting_resistance=2e-4,
+        contact_duration=3e-4,
     )
     together = bounce.land(omega, speed, 1.0, base, restitution=e, friction=mu)
     for k in range(n):
@@ -317,7 +321,7 @@ def test_surface_presets_carry_their_ranges_and_sources():
     table = surface_preset("coin-on-table")
     assert table.friction == Uniform(0.05, 0.5)  # Pletser 2022 (0.05) to our upper bound 0.5
     for p in SURFACE_PRESETS.values():
-        assert set(p.sources) == {"restitution", "friction"}
+        assert set(p.sources) == {"restitution", "friction", "contact_duration"}
         for name, d in p.contact.items():
             lo, hi = d.bounds
             assert f"{lo:g}-{hi:g}" in p.sources[name]  # each range quoted with its source
@@ -334,7 +338,11 @@ def test_cli_surface_preset_integrates_over_the_ranges_and_is_replaced_by_given_
     assert out["surface_preset"]["name"] == "coin-on-wood"
     assert out["restitution"] == {"kind": "uniform", "low": 0.3, "high": 0.6}
     assert out["friction"] == 0.3  # given: replaces the preset's range
-    d = TossDistribution(**SPINS, restitution=Uniform(0.3, 0.6))
+    # the preset's contact duration too (Hertz's contact times on wood, presets' notes)
+    assert out["contact_duration"] == {"kind": "uniform", "low": 5e-5, "high": 3e-4}
+    d = TossDistribution(
+        **SPINS, restitution=Uniform(0.3, 0.6), contact_duration=Uniform(5e-5, 3e-4)
+    )
     model = TableLanding(Surface("table", drop_height=0.3, friction=0.3))
     lib = estimate(d, "monte-carlo", n=2000, seed=4, model=model)
     assert [out["counts"][k] for k in ("tails", "heads", "edge")] == list(lib.counts)

@@ -26,7 +26,7 @@ from scipy.spatial.transform import Rotation
 from coinflight import Coin
 from coinflight.core import bounce, impact
 from coinflight.model.coin import PRESETS
-from coinflight.model.surface import Surface
+from coinflight.model.surface import CONTACT_DURATION, Surface
 from coinflight.outcomes.table import Landing, contact_record, land
 
 G = 9.81
@@ -71,17 +71,23 @@ def test_released_flat_means_every_impact_within_a_contact_duration():
 
 @pytest.mark.parametrize("name", sorted(PRESETS))
 def test_a_coin_released_flat_lands_on_its_start_face(name):
-    """Every preset, e over [0, 0.9] and μ over [0, 1] (per toss, with both ends), both start
-    faces, two drop heights: the coin lands on the face it started on. Before the
-    simultaneous impact a third of such drops landed on the other face (a nickel from 0.35 m
-    at e 0.45: all of them)."""
+    """Every preset, e over [0, 0.9], μ over [0, 1] and the contact duration t_c over its
+    whole range, 1 μs to 10 ms (per toss, with both ends), both start faces, two drop
+    heights: the coin lands on the face it started on. A toss's spin is at most SPIN t_c /
+    T_C, so that the precondition above holds for its own t_c (the tilt that closes the
+    second contact within half a contact grows as t_c). Before the simultaneous impact a third
+    of such drops landed on the other face (a nickel from 0.35 m at e 0.45: all of them)."""
     coin = Coin.preset(name)
     rng = np.random.default_rng(sum(map(ord, name)))
     n = 64
     e = np.concatenate([[0.0, 0.9, 0.0, 0.9, 0.2, 0.45], rng.uniform(0.0, 0.9, n - 6)])
     mu = np.concatenate([[0.0, 0.0, 1.0, 1.0, 0.3, 0.3], rng.uniform(0.0, 1.0, n - 6)])
+    low, high = CONTACT_DURATION.low, CONTACT_DURATION.high
+    t_c = np.concatenate(
+        [[low, high, high, low, T_C, T_C], 10 ** rng.uniform(np.log10(low), np.log10(high), n - 6)]
+    )
     w = rng.normal(size=(n, 3))
-    w *= (SPIN * rng.uniform(0.0, 1.0, n) / np.linalg.norm(w, axis=1))[:, None]
+    w *= (SPIN * t_c / T_C * rng.uniform(0.0, 1.0, n) / np.linalg.norm(w, axis=1))[:, None]
     for height, sign in itertools.product(HEIGHTS, (1.0, -1.0)):
         table = Surface("table", drop_height=height)
         out = land(
@@ -91,11 +97,11 @@ def test_a_coin_released_flat_lands_on_its_start_face(name):
             sign,
             G,
             table,
-            contact={"restitution": e, "friction": mu},
+            contact={"restitution": e, "friction": mu, "contact_duration": t_c},
         )
         start = 1 if sign > 0 else 0
         wrong = np.flatnonzero(out.face != start)
-        assert wrong.size == 0, (height, sign, e[wrong], mu[wrong])
+        assert wrong.size == 0, (height, sign, e[wrong], mu[wrong], t_c[wrong])
 
 
 @pytest.mark.parametrize("name", sorted(PRESETS))

@@ -9,7 +9,7 @@ import typer
 
 from coinflight.cli.command import Group
 from coinflight.cli.groups import _dist
-from coinflight.cli.landing_groups import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
+from coinflight.cli.landing_help import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
     CONTACT_PANEL,
     OUTPUT_PANEL,

@@ -3,9 +3,23 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import Annotated
 
 from coinflight.cli.command import Group
+from coinflight.cli.landing_help import (
+    CORNER_HELP,
+    DURATION_HELP,
+    ENDING_HELP,
+    PIVOTING_HELP,
+    ROLLING_HELP,
+    SPREAD,
+    SPREAD_DURATION,
+    SPREAD_RESISTANCE,
+    resistance_option,
+)
+from coinflight.cli.landing_help import (
+    TABLE_PREFIX as _TABLE,
+)
 from coinflight.cli.options import (
     AIR_PANEL,
     CONTACT_PANEL,
@@ -16,59 +30,6 @@ from coinflight.cli.options import (
 from coinflight.cli.surface import SurfaceOption
 from coinflight.queries.values import AirArgs, TableArgs
 
-_TABLE = "table: "
-_SPREAD = (
-    " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal "
-    "one truncated to the physical range)."
-)
-ENDING_HELP = (
-    "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
-    "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
-    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
-    "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
-    "corner radius. rigid: the rigid, event-driven 3-D ending (rolling without slip, exact "
-    "Coulomb sliding, hops flown in closed form, rim impacts, rest on the edge band); about "
-    "200 times slower than rocking."
-)
-"""--ending's help (command line and sweep)."""
-
-
-def _resistance_tail(ell: str, against: str) -> str:
-    return (
-        f"m, 0 to 0.01 (torque {ell} F_n against {against}; default 1e-4). Not measured for "
-        "coins: quote a band over 1e-5 to 1e-3, not a value."
-    )
-
-
-ROLLING_TAIL = _resistance_tail("ℓ_r", "the coin's rolling")
-"""--rolling-resistance's help after the name of the length: unit, range, default, unmeasured."""
-PIVOTING_TAIL = _resistance_tail("ℓ_p", "the coin's spin about the vertical")
-"""--pivoting-resistance's help after the name of the length, as :data:`ROLLING_TAIL`."""
-ROLLING_HELP = "rolling resistance length ℓ_r, " + ROLLING_TAIL
-"""--rolling-resistance's help."""
-PIVOTING_HELP = "pivoting (drilling) resistance length ℓ_p, " + PIVOTING_TAIL
-"""--pivoting-resistance's help."""
-
-
-def resistance_option(which: str, metavar: str, help: str) -> Any:
-    """The --rolling-resistance or --pivoting-resistance option (``which``: rolling or
-    pivoting), read as text (a number, a distribution or a list: the command parses it); the
-    one definition of the table group's and the sweep's."""
-    return option(f"--{which}-resistance", metavar=metavar, panel=CONTACT_PANEL, help=help)
-
-
-CORNER_HELP = (
-    "radius of the coin's rounded rim corners, m, 0 to half the thickness (or the radius if "
-    "smaller; default 0: sharp). "
-    "Used by the flight's contacts, the impacts, both endings (the rocking section rolls on "
-    "its round corners) and every ending's face/edge wells. Not measured for coins (worn coins "
-    "are rounder): quote a band, not a value."
-)
-"""--corner-radius's help."""
-_SPREAD_RESISTANCE = (
-    " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal one"
-    " truncated to 0 to 0.01 m), drawn toss by toss."
-)
 TABLE = Group(
     {
         "surface": (SurfaceOption, "hand"),
@@ -92,7 +53,7 @@ TABLE = Group(
                     metavar="E",
                     panel=SURFACE_PANEL,
                     help=_TABLE + "coefficient of restitution in [0, 1] (default 0.5; 0 lands "
-                    "dead)." + _SPREAD,
+                    "dead)." + SPREAD,
                 ),
             ],
             None,
@@ -104,7 +65,7 @@ TABLE = Group(
                     "--friction",
                     metavar="MU",
                     panel=SURFACE_PANEL,
-                    help=_TABLE + "Coulomb friction coefficient, 0 to 3 (default 0.3)." + _SPREAD,
+                    help=_TABLE + "Coulomb friction coefficient, 0 to 3 (default 0.3)." + SPREAD,
                 ),
             ],
             None,
@@ -116,10 +77,11 @@ TABLE = Group(
                     "--surface-preset",
                     metavar="NAME",
                     panel=SURFACE_PANEL,
-                    help="table, probability only: restitution and friction spread uniformly over "
-                    "the literature's ranges for coin-on-wood or coin-on-table (ranges and "
-                    "sources: coinflight.studies.presets, SURFACE_PRESETS); --restitution and "
-                    "--friction given replace the preset's.",
+                    help="table, probability only: restitution, friction and contact duration "
+                    "spread uniformly over the literature's ranges for coin-on-wood or "
+                    "coin-on-table (ranges and sources: coinflight.studies.presets, "
+                    "SURFACE_PRESETS); --restitution, --friction and --contact-duration given "
+                    "replace the preset's.",
                 ),
             ],
             None,
@@ -142,7 +104,7 @@ TABLE = Group(
                 resistance_option(
                     "rolling",
                     "L",
-                    "table, --ending contact or rigid: " + ROLLING_HELP + _SPREAD_RESISTANCE,
+                    "table, --ending contact or rigid: " + ROLLING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -153,7 +115,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact or rigid: " + PIVOTING_HELP + _SPREAD_RESISTANCE,
+                    "table, --ending contact or rigid: " + PIVOTING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -165,12 +127,25 @@ TABLE = Group(
             ],
             None,
         ),
+        "contact_duration": (
+            Annotated[
+                str | None,
+                option(
+                    "--contact-duration",
+                    metavar="T",
+                    panel=SURFACE_PANEL,
+                    help=_TABLE + DURATION_HELP + SPREAD_DURATION,
+                ),
+            ],
+            None,
+        ),
     },
     TableArgs,
 )
 TableOptions = Annotated[TableArgs, TABLE]
 """--surface and the table's --drop-height, --restitution, --friction, --surface-preset,
---ending, --rolling-resistance, --pivoting-resistance and --corner-radius, as typed."""
+--ending, --rolling-resistance, --pivoting-resistance, --corner-radius and --contact-duration,
+as typed."""
 AIR = Group(
     {
         "drag": (

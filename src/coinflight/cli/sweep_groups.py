@@ -6,8 +6,9 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from coinflight.cli.command import Group
-from coinflight.cli.landing_groups import (
+from coinflight.cli.landing_help import (
     CORNER_HELP,
+    DURATION_LIST_HELP,
     ENDING_HELP,
     PIVOTING_TAIL,
     ROLLING_TAIL,
@@ -122,6 +123,11 @@ LANDINGS = Group(
                 ),
             ],
             None,
+        ),
+        "contact_duration": _surface_option(
+            "--contact-duration",
+            "LIST",
+            "table: contact durations t_c of an impact, s: " + DURATION_LIST_HELP,
         ),
         "corner_radius": _surface_option(
             "--corner-radius",

@@ -563,10 +563,12 @@ def follow(z, xy, v, n, lm, c, max_bounces, times, states):
 
 
 @njit(cache=True)
-def with_surface(c, restitution, friction, rolling_resistance, pivoting_resistance):
-    """The contact record ``c`` with this toss's restitution, friction and rolling and pivoting
-    resistance (the other fields as they are): a per-toss surface for distributions of what
-    is not measured. The damping ratio of the
+def with_surface(
+    c, restitution, friction, rolling_resistance, pivoting_resistance, contact_duration
+):
+    """The contact record ``c`` with this toss's restitution, friction, rolling and pivoting
+    resistance and contact duration (the other fields as they are): a per-toss surface for
+    distributions of what is not measured. The damping ratio of the
     contact phase stays that of the surface's e, with ``damping_restitution`` telling
     :func:`coinflight.core.contact_phase.settle` to recompute it for another e."""
     return Contact(
@@ -590,6 +592,7 @@ def with_surface(c, restitution, friction, rolling_resistance, pivoting_resistan
         c.damping_restitution,
         c.ending,
         c.corner_radius,
+        contact_duration,
     )
 
 
@@ -597,8 +600,9 @@ def _batch_kernel(parallel: bool) -> Any:
     """The loop over a batch, compiled for numba's threads (parallel) or for the calling thread
     with the GIL released. One source; the closure's ``loop`` keeps the two apart in numba's
     on-disk cache (whose key ignores the ``parallel`` flag but hashes closure variables).
-    Each toss lands with its own restitution, friction and resistances (``restitution[k]``,
-    ``friction[k]``, ``rolling[k]``, ``pivoting[k]``) on the surface of ``contact``."""
+    Each toss lands with its own restitution, friction, resistances and contact duration
+    (``restitution[k]``, ``friction[k]``, ``rolling[k]``, ``pivoting[k]``, ``duration[k]``) on
+    the surface of ``contact``."""
     loop = prange if parallel else range
 
     def batch(
@@ -610,6 +614,7 @@ def _batch_kernel(parallel: bool) -> Any:
         friction,
         rolling,
         pivoting,
+        duration,
         max_bounces,
         face,
         bounces,
@@ -622,7 +627,9 @@ def _batch_kernel(parallel: bool) -> Any:
                 (omega[k, 0], omega[k, 1], omega[k, 2]),
                 start_sign[k],
                 launch_speed[k],
-                with_surface(contact, restitution[k], friction[k], rolling[k], pivoting[k]),
+                with_surface(
+                    contact, restitution[k], friction[k], rolling[k], pivoting[k], duration[k]
+                ),
                 max_bounces,
             )
 
@@ -645,6 +652,7 @@ def land(
     friction: NDArray[np.float64] | None = None,
     rolling_resistance: NDArray[np.float64] | None = None,
     pivoting_resistance: NDArray[np.float64] | None = None,
+    contact_duration: NDArray[np.float64] | None = None,
 ) -> tuple[
     NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
 ]:
@@ -673,6 +681,9 @@ def land(
     rolling_resistance, pivoting_resistance : ndarray, shape (n,), optional
         Each toss's own rolling and pivoting resistance, m (used by the contact ending only);
         by default the contact's single values.
+    contact_duration : ndarray, shape (n,), optional
+        Each toss's own contact duration t_c of an impact, s (when two rim points strike as
+        one, :func:`coinflight.core.impact.simultaneous_point`); by default the contact's.
 
     Returns
     -------
@@ -698,6 +709,7 @@ def land(
     mu = _per_toss(contact.friction if friction is None else friction, n)
     rolling = contact.rolling_resistance if rolling_resistance is None else rolling_resistance
     pivoting = contact.pivoting_resistance if pivoting_resistance is None else pivoting_resistance
+    duration = contact.contact_duration if contact_duration is None else contact_duration
     kernel = _land_batch if parallel else _land_batch_serial
     kernel(
         omega,
@@ -708,6 +720,7 @@ def land(
         mu,
         _per_toss(rolling, n),
         _per_toss(pivoting, n),
+        _per_toss(duration, n),
         int(max_bounces),
         face,
         bounces,

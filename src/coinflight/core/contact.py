@@ -13,6 +13,8 @@ import math
 from functools import lru_cache
 from typing import NamedTuple
 
+from coinflight.core.impact import CONTACT_DURATION
+
 ROCKING_ENDING = 0.0
 """``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
 CONTACT_ENDING = 1.0
@@ -87,6 +89,13 @@ class Contact(NamedTuple):
         :mod:`coinflight.core.drag`), with or without air; and the planar rocking ending
         (:func:`coinflight.core.bounce.rock`: the section rocks on round corners, its pivot
         rolling). 0: sharp corners, to the last bit what the kernels gave before they took a.
+    contact_duration : float
+        t_c ≥ 0, how long one impact of the coin's rim on the table lasts, s (a physical
+        parameter of the surface, not measured for coins:
+        :data:`coinflight.core.impact.CONTACT_DURATION`, the default, gives its source): a
+        second rim point meeting the table within it makes one simultaneous impact
+        (:func:`coinflight.core.impact.simultaneous_point`), with or without air. Not the
+        compliant model's ``contact_time``, a numerical softness of the contact ending.
     """
 
     radius: float
@@ -109,6 +118,7 @@ class Contact(NamedTuple):
     damping_restitution: float = -1.0
     ending: float = ROCKING_ENDING
     corner_radius: float = 0.0
+    contact_duration: float = CONTACT_DURATION
 
     @classmethod
     def build(
@@ -129,6 +139,7 @@ class Contact(NamedTuple):
         contact_time: float | None = None,
         ending: float = ROCKING_ENDING,
         corner_radius: float = 0.0,
+        contact_duration: float | None = None,
     ) -> Contact:
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
@@ -137,11 +148,15 @@ class Contact(NamedTuple):
         defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
         the contact model is computed here, once (numba). ``ending`` is :data:`ROCKING_ENDING`
         or :data:`CONTACT_ENDING` (:class:`~coinflight.model.surface.Surface` ``ending``).
+        ``contact_duration`` (the impact's t_c) defaults to
+        :data:`coinflight.core.impact.CONTACT_DURATION`.
         """
         from coinflight.core import contact_phase
 
         if contact_time is None:
             contact_time = contact_phase.CONTACT_TIME
+        if contact_duration is None:
+            contact_duration = CONTACT_DURATION
         hh = 0.5 * float(thickness)
         # sqrt(r² + hh²) as the bounce kernel always computed it (hypot can differ by an ulp).
         reach = math.sqrt(float(radius) * float(radius) + hh * hh)
@@ -169,6 +184,7 @@ class Contact(NamedTuple):
             damping_restitution=float(restitution),
             ending=float(ending),
             corner_radius=a,
+            contact_duration=float(contact_duration),
         )
 
 

@@ -212,8 +212,9 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh, corner):
 def table_impact(v, lm, n, c):
     """:func:`coinflight.core.impact.impact` of the coin touching the table with normal n,
     velocity v and angular momentum L, with the coin, e, μ and corner radius of the contact
-    record c (:class:`coinflight.core.contact.Contact`): (v, L, rebound speed of the contact
-    point) after it."""
+    record c (:class:`coinflight.core.contact.Contact`), and its contact duration t_c, which
+    decides when two rim points strike as one (:func:`coinflight.core.impact.
+    simultaneous_point`): (v, L, rebound speed of the contact point) after it."""
     return impact(
         v,
         lm,
@@ -226,6 +227,7 @@ def table_impact(v, lm, n, c):
         c.restitution,
         c.friction,
         c.corner_radius,
+        c.contact_duration,
     )
 
 

@@ -106,7 +106,11 @@ E* is 0.5-10 GPa (wood across and along the grain) gives 5e-5 to 3e-4 s; a stone
 (E* ≈ 50-70 GPa) 2e-5 to 4e-5 s. Two contacts of the coin that would meet the table less than
 t_c apart overlap in time: one simultaneous impact (:func:`simultaneous_point`). Not measured
 for coins; it decides only landings that meet the table within about
-v t_c / 2r (≈ 0.7° for a nickel at 2.6 m/s) of flat or of upright."""
+v t_c / 2r (≈ 0.7° for a nickel at 2.6 m/s) of flat or of upright. The default of a table's
+``contact_duration`` (:class:`coinflight.model.surface.Surface`, 1 μs to 10 ms), which every
+landing's impacts take from their contact record (:func:`coinflight.core.flight.table_impact`),
+so that an answer is quoted as a band over it, as over the restitution and friction; here only
+the default of :func:`impact` called alone."""
 
 
 @njit(cache=True)

@@ -37,7 +37,13 @@ PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 NO_SPIN = Fixed(0.0)
 """Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
 UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
-CONTACT = ("restitution", "friction", "rolling_resistance", "pivoting_resistance")
+CONTACT = (
+    "restitution",
+    "friction",
+    "rolling_resistance",
+    "pivoting_resistance",
+    "contact_duration",
+)
 """Contact parameters a distribution of tosses may spread (table landings); when set they
 replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`): the
 rolling and pivoting resistances with the 3-D contact ending only, the only one they act in
@@ -81,6 +87,9 @@ class TossDistribution:
         The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of
         the 3-D contact ending, drawn toss by toss with that ending; the rocking ending, which
         has no resistance, refuses a distribution of them (one line) rather than ignore it.
+    contact_duration : Distribution or float, keyword only
+        The same for the contact duration t_c of an impact (s, in [1 μs, 10 ms],
+        :data:`coinflight.model.surface.CONTACT_DURATION`), with every ending.
 
     Notes
     -----
@@ -102,6 +111,7 @@ class TossDistribution:
     friction: Distribution | None = None
     rolling_resistance: Distribution | None = None
     pivoting_resistance: Distribution | None = None
+    contact_duration: Distribution | None = None
 
     if TYPE_CHECKING:  # what callers may pass (numbers become Fixed); the dataclass builds it
 
@@ -120,6 +130,7 @@ class TossDistribution:
             friction: Distribution | float | None = None,
             rolling_resistance: Distribution | float | None = None,
             pivoting_resistance: Distribution | float | None = None,
+            contact_duration: Distribution | float | None = None,
         ) -> None: ...
 
     def __post_init__(self) -> None:
@@ -206,11 +217,12 @@ class TossDistribution:
         friction: Distribution | float | None = None,
         rolling_resistance: Distribution | float | None = None,
         pivoting_resistance: Distribution | float | None = None,
+        contact_duration: Distribution | float | None = None,
     ) -> TossDistribution:
         """The same tosses with these contact distributions (:data:`CONTACT`; None: keep)."""
         import dataclasses
 
-        given = (restitution, friction, rolling_resistance, pivoting_resistance)
+        given = (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration)
         changes = {
             name: value for name, value in zip(CONTACT, given, strict=True) if value is not None
         }

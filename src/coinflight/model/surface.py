@@ -60,6 +60,14 @@ DEFAULT_PIVOTING_RESISTANCE = 1e-4
 spread over the contact arc: an assumption, as the rolling resistance (band 1e-5 to 1e-3 m;
 MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
+DEFAULT_CONTACT_DURATION = 1e-4
+"""Contact duration t_c of one impact of a coin's rim on a table, s: how far apart in time two
+rim points may strike and still make one simultaneous impact
+(:data:`coinflight.core.impact.CONTACT_DURATION`, the same number, where its derivation is;
+a literal here so that ``import coinflight`` stays free of numba; Hertz's
+contact time, Johnson 1985 §11.4, for a coin's rim on wood 5e-5 to 3e-4 s, on stone or glass
+2e-5 to 4e-5 s); not measured for coins."""
+
 ROCKING_HAS_NO_RESISTANCE = (
     "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
     "and pivoting resistance, which the rocking ending would ignore"
@@ -85,14 +93,15 @@ TABLE_PARAMETERS = (
     "friction",
     "rolling_resistance",
     "pivoting_resistance",
+    "contact_duration",
     "corner_radius",
     "max_bounces",
 )
 """What a surface kind may take beyond its name, in the order a refusal names them: the
 :class:`Surface` fields ``ending``, ``drop_height``, ``restitution``, ``friction``,
-``rolling_resistance`` and ``pivoting_resistance``, the coin's rounded rim ``corner_radius``
-(the command line's --corner-radius) and ``max_bounces`` (--bounces). A table takes them all, a
-catch in the hand none; an outcome model declares those it reads
+``rolling_resistance``, ``pivoting_resistance`` and ``contact_duration``, the coin's rounded
+rim ``corner_radius`` (the command line's --corner-radius) and ``max_bounces`` (--bounces). A
+table takes them all, a catch in the hand none; an outcome model declares those it reads
 (:attr:`coinflight.outcomes.base.OutcomeModel.surface_parameters`), and a :class:`Surface` of
 its kind refuses any other given."""
 
@@ -176,11 +185,19 @@ _UNSET_RESTITUTION = _Unset(DEFAULT_RESTITUTION)
 _UNSET_FRICTION = _Unset(DEFAULT_FRICTION)
 _UNSET_ROLLING = _Unset(DEFAULT_ROLLING_RESISTANCE)
 _UNSET_PIVOTING = _Unset(DEFAULT_PIVOTING_RESISTANCE)
+_UNSET_DURATION = _Unset(DEFAULT_CONTACT_DURATION)
 
 ROLLING_RESISTANCE = v.Quantity("rolling resistance", "m", 0.0, 0.01)
 """ℓ_r: 0 to 1 cm (a coin's radius: a torque ℓ F_n above that stops any rolling at once)."""
 PIVOTING_RESISTANCE = v.Quantity("pivoting resistance", "m", 0.0, 0.01)
 """ℓ_p: 0 to 1 cm, as the rolling resistance."""
+CONTACT_DURATION = v.Quantity("contact duration", "s", 1e-6, 1e-2)
+"""t_c of an impact (:data:`DEFAULT_CONTACT_DURATION`): 1 μs to 10 ms. Hertz's contact time of
+a coin's rim is 2e-5 s on stone or glass and 3e-4 s on soft wood; 1 μs is twenty times
+shorter than the stiffest table's (and a positive t_c keeps the simultaneous impact: 0 would be
+the sequential rigid law and its falling-rod paradox), 10 ms thirty times longer than the
+softest's (beyond it, the fall the simultaneous impact leaves out over t_c, g t_c² / 2 ≈ 0.5
+mm at 10 ms, is a quarter of a coin's thickness)."""
 CONTACT_TIME = v.Quantity("contact time", "s", 1e-5, 1e-2)
 """t_c of the compliant contact (:mod:`coinflight.core.contact_phase`): 10 μs to 10 ms (shorter
 steps cost time in proportion; longer would let the coin sink by g (t_c/π)² ≈ 0.1 mm)."""
@@ -252,6 +269,14 @@ class Surface:
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
         Used only with ``ending="contact"``.
+    contact_duration : float
+        t_c of one impact of the coin's rim on the table, s (1 μs to 10 ms,
+        :data:`CONTACT_DURATION`; default :data:`DEFAULT_CONTACT_DURATION`, Hertz's contact
+        time, not measured for coins): a second rim point that meets the table within it makes
+        one simultaneous impact with the first (:func:`coinflight.core.impact.
+        simultaneous_point`). A physical parameter, with every ending; it decides the
+        landings that meet the table within about v t_c / 2r of flat or upright. For
+        ``"table"`` only (a catch in the hand refuses one given, :data:`TABLE_ONLY`).
     ending : {"rocking", "contact", "rigid"}
         How a table landing ends once its bounces die out (a rebound slower than the rest
         speed). ``"rigid"``: the rigid, event-driven 3-D ending of
@@ -294,6 +319,7 @@ class Surface:
     pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
     ending: Literal["rocking", "contact", "rigid"] = "rocking"
+    contact_duration: float = _UNSET_DURATION
 
     def __post_init__(self) -> None:
         kind = surface_kind(self.kind)
@@ -317,6 +343,10 @@ class Surface:
                 object.__setattr__(self, name, checked)
                 given[name] = f"{name} {checked:g}"
         object.__setattr__(self, "contact_time", CONTACT_TIME.check(self.contact_time))
+        duration = CONTACT_DURATION.check(self.contact_duration)  # a default too
+        if not isinstance(self.contact_duration, _Unset):  # given: kept as a plain float
+            object.__setattr__(self, "contact_duration", duration)
+            given["contact_duration"] = CONTACT_DURATION.describe(duration)
         v.choice("ending", self.ending, ENDINGS)
         if self.ending != "rocking":
             given["ending"] = f"ending {self.ending!r}"
@@ -338,10 +368,11 @@ class Surface:
     def __repr__(self) -> str:
         """The call that rebuilds this surface: every field but the defaults not given.
 
-        A default marked as not given (drop height, restitution, friction, the resistances) is
-        left out, as the caller left it out: shown as a number it would be given back, and
-        refused by a catch in the hand or the rocking ending. ``eval(repr(s))`` equals ``s``
-        and refuses what ``s`` refuses (in :func:`dataclasses.replace`), no more.
+        A default marked as not given (drop height, restitution, friction, the resistances, the
+        contact duration) is left out, as the caller left it out: shown as a number it would be
+        given back, and refused by a catch in the hand or the rocking ending.
+        ``eval(repr(s))`` equals ``s`` and refuses what ``s`` refuses (in
+        :func:`dataclasses.replace`), no more.
 
         >>> Surface("hand")
         Surface(kind='hand', contact_time=0.001, ending='rocking')
@@ -366,12 +397,14 @@ CONTACT_RANGES = {
     "friction": (0.0, MAX_FRICTION),
     "rolling_resistance": (ROLLING_RESISTANCE.low, ROLLING_RESISTANCE.high),
     "pivoting_resistance": (PIVOTING_RESISTANCE.low, PIVOTING_RESISTANCE.high),
+    "contact_duration": (CONTACT_DURATION.low, CONTACT_DURATION.high),
 }
 """The physical range of each contact parameter a distribution of tosses may spread: e in [0, 1] (no
 contact gives energy back beyond elastic), μ in [0, :data:`MAX_FRICTION`], the rolling and pivoting
-resistances ℓ_r, ℓ_p in [0, 1 cm] (m; :data:`ROLLING_RESISTANCE`)."""
+resistances ℓ_r, ℓ_p in [0, 1 cm] (m; :data:`ROLLING_RESISTANCE`), the contact duration t_c of an
+impact in [1 μs, 10 ms] (s; :data:`CONTACT_DURATION`)."""
 
-CONTACT_UNITS = {"rolling_resistance": "m", "pivoting_resistance": "m"}
+CONTACT_UNITS = {"rolling_resistance": "m", "pivoting_resistance": "m", "contact_duration": "s"}
 """Units of the contact parameters that have one (for messages and descriptions)."""
 
 
@@ -463,8 +496,10 @@ class Drag:
 
 __all__ = [
     "AIR_DENSITY",
+    "CONTACT_DURATION",
     "CONTACT_RANGES",
     "CONTACT_UNITS",
+    "DEFAULT_CONTACT_DURATION",
     "DROP_HEIGHT",
     "MAX_FRICTION",
     "ROCKING_HAS_NO_RESISTANCE",

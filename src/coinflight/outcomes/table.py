@@ -93,16 +93,24 @@ C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: 2 thre
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
-    "contact parameter distributions (restitution, friction, rolling and pivoting resistance) "
+    "contact parameter distributions (restitution, friction, rolling and pivoting resistance, "
+    "contact duration) "
     "are not yet taken by a table landing through air (--drag, --spin-damping): give single "
     "values, or drop the air"
 )
 """The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
 
-PER_TOSS = ("restitution", "friction", "rolling_resistance", "pivoting_resistance")
+PER_TOSS = (
+    "restitution",
+    "friction",
+    "rolling_resistance",
+    "pivoting_resistance",
+    "contact_duration",
+)
 """The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
-``restitution``, ``friction``, ``rolling_resistance`` and ``pivoting_resistance`` arrays; the
-resistances act in the contact ending only, :data:`RESISTANCES`)."""
+``restitution``, ``friction``, ``rolling_resistance``, ``pivoting_resistance`` and
+``contact_duration`` arrays; the resistances act in the 3-D endings only, :data:`RESISTANCES`;
+the contact duration of an impact, with every ending)."""
 
 RESISTANCES = ("rolling_resistance", "pivoting_resistance")
 """The contact parameters only the 3-D endings (``Surface(ending="contact")`` and
@@ -186,9 +194,9 @@ def contact_record(
 
     The :class:`coinflight.core.contact.Contact` record of ``coin`` (radius, thickness, mass,
     moments, corner radius) on ``surface`` (drop height, e, μ, resistances, contact time,
-    ending) under gravity ``g``, m/s²; ``rest_speed`` (m/s) defaults to
-    :data:`coinflight.core.bounce.REST_SPEED`. Nothing is checked here beyond what ``Coin`` and
-    ``Surface`` checked on construction (``g`` is the caller's).
+    ending, the impact's contact duration) under gravity ``g``, m/s²; ``rest_speed`` (m/s)
+    defaults to :data:`coinflight.core.bounce.REST_SPEED`. Nothing is checked here beyond
+    what ``Coin`` and ``Surface`` checked on construction (``g`` is the caller's).
     """
     from coinflight.core import bounce
     from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
@@ -207,6 +215,7 @@ def contact_record(
         contact_time=surface.contact_time,
         ending=endings[surface.ending],
         corner_radius=coin.corner_radius,
+        contact_duration=surface.contact_duration,
     )
 
 
@@ -227,7 +236,8 @@ def land(
     Without drag this is the parallel event-driven kernel :func:`coinflight.core.bounce.land`;
     with drag the compiled integrator :func:`coinflight.core.drag.land` (the same impacts and
     endings). ``contact`` gives tosses their own ``restitution``, ``friction``,
-    ``rolling_resistance`` and/or ``pivoting_resistance`` (:data:`PER_TOSS`; arrays of shape
+    ``rolling_resistance``, ``pivoting_resistance`` and/or ``contact_duration``
+    (:data:`PER_TOSS`; arrays of shape
     (n,), checked by the caller; :meth:`~coinflight.model.ensemble.TossDistribution.
     contact_values`) in place of the surface's; not with drag.
     """
@@ -273,6 +283,7 @@ def land(
         friction=per_toss.get("friction"),
         rolling_resistance=per_toss.get("rolling_resistance"),
         pivoting_resistance=per_toss.get("pivoting_resistance"),
+        contact_duration=per_toss.get("contact_duration"),
     )
     return LandingOutcome(face, bounces, first, settle, status)
 
@@ -651,9 +662,9 @@ class TableLanding(OutcomeModel):
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
-        """Restitution and friction may vary toss by toss, and with the contact ending the
-        rolling and pivoting resistances too (:data:`PER_TOSS`); none through air (not yet:
-        :attr:`contact_refusal`)."""
+        """Restitution, friction and the contact duration may vary toss by toss, and with the
+        3-D endings the rolling and pivoting resistances too (:data:`PER_TOSS`); none through
+        air (not yet: :attr:`contact_refusal`)."""
         if self.drag is not None:
             return ()
         if self.surface.ending != "rocking":  # the 3-D endings take the resistances
@@ -755,8 +766,9 @@ class TableLanding(OutcomeModel):
         """One line: the table, its contact parameters and the air. ``contact`` gives
         distributions in place of the surface's values (the tosses' own, drawn toss by toss:
         :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The experimental contact
-        ending is named, with its resistances, and a rounded rim when ``corner_radius`` (the
-        coin's, m) is not 0."""
+        ending is named, with its resistances, a contact duration of an impact other than the
+        default (:data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`) or spread, and a
+        rounded rim when ``corner_radius`` (the coin's, m) is not 0."""
         s = self.surface
         spread = {} if contact is None else contact
 
@@ -771,6 +783,8 @@ class TableLanding(OutcomeModel):
                 f", {s.ending} ending: rolling resistance {text('rolling_resistance', 'm')}, "
                 f"pivoting resistance {text('pivoting_resistance', 'm')}"
             )
+        if _duration_shown(s, spread):
+            ending += f", contact duration {text('contact_duration', 's')}"
         if corner_radius:
             ending += f", rim corner radius {corner_radius:g} m"
         return (
@@ -784,9 +798,11 @@ class TableLanding(OutcomeModel):
     ) -> dict[str, Any]:
         """JSON settings; ``contact``'s distributions, if any, as objects (``{"kind":
         "uniform", ...}``) in place of the surface's numbers. The contact ending, its
-        resistances (m) and the coin's rim ``corner_radius`` (m) are reported when not the
-        defaults (the rocking ending, sharp corners), so that every other JSON object, and the
-        random stream of a sweep row keyed on it, stays as it was."""
+        resistances (m), the impact's ``contact_duration`` (s) and the coin's rim
+        ``corner_radius`` (m) are reported when not the defaults (the rocking ending,
+        :data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`, sharp corners), so that
+        every other JSON object, and the random stream of a sweep row keyed on it, stays as it
+        was."""
         s = self.surface
         spread = {} if contact is None else contact
 
@@ -806,9 +822,19 @@ class TableLanding(OutcomeModel):
             out["ending"] = s.ending
             out["rolling_resistance"] = value("rolling_resistance")
             out["pivoting_resistance"] = value("pivoting_resistance")
+        if _duration_shown(s, spread):
+            out["contact_duration"] = value("contact_duration")
         if corner_radius:
             out["corner_radius"] = corner_radius
         return out
+
+
+def _duration_shown(surface: Surface, spread: Mapping[str, Distribution]) -> bool:
+    """Whether a landing's description names its contact duration: spread over the tosses, or a
+    single value other than the default (which every other description leaves implied)."""
+    from coinflight.model.surface import DEFAULT_CONTACT_DURATION
+
+    return "contact_duration" in spread or surface.contact_duration != DEFAULT_CONTACT_DURATION
 
 
 __all__ = [

@@ -1,7 +1,7 @@
 """The landing surface and the air, from the options as typed: built, checked, described
 (the command line's and the web application's one reading of --surface, --drop-height,
 --restitution, --friction, --ending, --rolling-resistance, --pivoting-resistance,
---corner-radius, --drag, --spin-damping and --bounces)."""
+--contact-duration, --corner-radius, --drag, --spin-damping and --bounces)."""
 
 from __future__ import annotations
 
@@ -25,6 +25,7 @@ CONTACT_FLAGS = {
     "friction": "--friction",
     "rolling_resistance": "--rolling-resistance",
     "pivoting_resistance": "--pivoting-resistance",
+    "contact_duration": "--contact-duration",
 }
 """The contact parameters a command line may spread, and their options."""
 
@@ -32,11 +33,12 @@ TAKES = {
     "--drop-height": ("drop_height",),
     "--restitution": ("restitution",),
     "--friction": ("friction",),
-    "--surface-preset": ("restitution", "friction"),
+    "--surface-preset": ("restitution", "friction", "contact_duration"),
     "--ending": ("ending",),
     "--rolling-resistance": ("rolling_resistance",),
     "--pivoting-resistance": ("pivoting_resistance",),
     "--corner-radius": ("corner_radius",),
+    "--contact-duration": ("contact_duration",),
 }
 """The table's options and what each sets (:data:`coinflight.model.surface.TABLE_PARAMETERS`):
 a surface kind that does not take it refuses the option given."""
@@ -48,8 +50,10 @@ def contact_spread(
     surface_preset: str | None = None,
     rolling_resistance: str | float | None = None,
     pivoting_resistance: str | float | None = None,
+    contact_duration: str | float | None = None,
 ) -> dict[str, Distribution]:
-    """The --restitution, --friction, --rolling-resistance and --pivoting-resistance texts (or
+    """The --restitution, --friction, --rolling-resistance, --pivoting-resistance and
+    --contact-duration texts (or
     numbers, a sweep's values: fixed) as distributions (only those given), each checked against
     its physical range (:func:`coinflight.model.surface.contact_distribution`: a normal one
     truncated to it, the rest refused outside it); ValueError naming the option. With
@@ -63,7 +67,7 @@ def contact_spread(
         from coinflight.studies.presets import surface_preset as lookup
 
         out.update(lookup(surface_preset).contact)
-    texts = (restitution, friction, rolling_resistance, pivoting_resistance)
+    texts = (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration)
     for name, text in zip(CONTACT_FLAGS, texts, strict=True):
         if text is None:
             continue
@@ -112,17 +116,18 @@ def build_surface(
     rolling_resistance: str | float | None = None,
     pivoting_resistance: str | float | None = None,
     corner_radius: float | None = None,
+    contact_duration: str | float | None = None,
 ) -> Surface:
     """The :class:`~coinflight.model.surface.Surface` for the options (table options: a table;
     the contact parameters as typed, or a sweep's numbers).
 
-    --restitution, --friction, --rolling-resistance and --pivoting-resistance must be single
-    numbers, and --surface-preset (ranges) is refused, unless ``ranged`` (the command then
-    reads their distributions with :func:`contact_spread` and passes them with the tosses; the
-    surface keeps its defaults for them). --ending is rocking (default) or contact; the two
-    resistances apply to --ending contact only (the surface refuses them with the rocking
-    ending, in its words). ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is
-    only checked here to belong to a table.
+    --restitution, --friction, --rolling-resistance, --pivoting-resistance and
+    --contact-duration must be single numbers, and --surface-preset (ranges) is refused,
+    unless ``ranged`` (the command then reads their distributions with :func:`contact_spread`
+    and passes them with the tosses; the surface keeps its defaults for them). --ending is
+    rocking (default) or contact; the two resistances apply to --ending contact only (the
+    surface refuses them with the rocking ending, in its words). ``corner_radius`` (the
+    coin's, applied by :func:`landing_coin`) is only checked here to belong to a table.
     """
     from coinflight.model.surface import ENDINGS, Surface, surface_kind
 
@@ -136,6 +141,7 @@ def build_surface(
         "--rolling-resistance": rolling_resistance,
         "--pivoting-resistance": pivoting_resistance,
         "--corner-radius": corner_radius,
+        "--contact-duration": contact_duration,
     }
     extra = [
         flag
@@ -152,12 +158,18 @@ def build_surface(
     if surface_preset is not None and not ranged:
         contact_spread(None, None, surface_preset)  # an unknown name first
         raise ValueError(
-            f"--surface-preset {surface_preset} spreads restitution and friction over the "
-            "literature's ranges: this command takes single values (--restitution, --friction); "
+            f"--surface-preset {surface_preset} spreads restitution, friction and contact "
+            "duration over the literature's ranges: this command takes single values "
+            "(--restitution, --friction, --contact-duration); "
             "coinflight probability --method monte-carlo, qmc or grid integrates over a preset"
         )
     spread = contact_spread(
-        restitution, friction, surface_preset, rolling_resistance, pivoting_resistance
+        restitution,
+        friction,
+        surface_preset,
+        rolling_resistance,
+        pivoting_resistance,
+        contact_duration,
     )
     fixed = (
         {name: d.mean for name, d in spread.items() if d.is_fixed}
@@ -194,6 +206,7 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
         rolling_resistance=table.rolling_resistance,
         pivoting_resistance=table.pivoting_resistance,
         corner_radius=table.corner_radius,
+        contact_duration=table.contact_duration,
     )
     v.no_dead_contact(surface.ending, surface.restitution)
     return surface
@@ -211,6 +224,7 @@ def table_spread(table: TableArgs) -> dict[str, Distribution]:
         table.surface_preset,
         table.rolling_resistance,
         table.pivoting_resistance,
+        table.contact_duration,
     )
     return {name: d for name, d in given.items() if not d.is_fixed}
 
@@ -281,10 +295,10 @@ def surfaces_payload(kinds: Iterable[SurfaceKind] | None = None) -> dict[str, An
 
 
 def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:
-    """JSON description of the landing surface and the air (the model's ``to_dict``)."""
+    """JSON description of the landing surface and the air (:func:`settings_for` its model)."""
     from coinflight.outcomes import outcome_model
 
-    return outcome_model(surface, drag).to_dict()
+    return settings_for(outcome_model(surface, drag))
 
 
 def describe_landing(surface: Surface, drag: Drag | None) -> str:
@@ -308,12 +322,16 @@ def describe_for(model: OutcomeModel, dist: TossDistribution | None = None) -> s
 
 def settings_for(model: OutcomeModel, dist: TossDistribution | None = None) -> dict[str, Any]:
     """JSON settings of ``model`` for the tosses ``dist``, as :func:`describe_for` (a table
-    landing's contact distributions as objects, ``{"kind": "uniform", ...}``)."""
+    landing's contact distributions as objects, ``{"kind": "uniform", ...}``). A table landing
+    reports its impact's ``contact_duration`` (s) always, as its restitution and friction: its
+    model's own settings leave the default out (a sweep row's random stream is keyed on them)."""
     from coinflight.outcomes.table import TableLanding
 
-    if isinstance(model, TableLanding) and dist is not None:
-        return model.to_dict(dist.contact, dist.coin.corner_radius)
-    return model.to_dict()
+    if not isinstance(model, TableLanding):
+        return model.to_dict()
+    out = model.to_dict() if dist is None else model.to_dict(dist.contact, dist.coin.corner_radius)
+    out.setdefault("contact_duration", float(model.surface.contact_duration))
+    return out
 
 
 @dataclass(frozen=True)

@@ -133,6 +133,7 @@ class SweepLandings(NamedTuple):
     rolling_resistance: str | None = None
     pivoting_resistance: str | None = None
     corner_radius: str | None = None
+    contact_duration: str | None = None
 
 
 def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
@@ -143,7 +144,10 @@ def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
 
     kinds = _kinds(landings.surface)
     bounces, ending = landings.bounces, landings.ending
-    table = {flag(k): getattr(landings, k) for k in ("drop_height", "restitution", "friction")}
+    table = {
+        flag(k): getattr(landings, k)
+        for k in ("drop_height", "restitution", "friction", "contact_duration")
+    }
     contact = {flag(k): getattr(landings, k) for k in ("rolling_resistance", "pivoting_resistance")}
     given = [option for option, text in {**table, "--ending": ending, **contact}.items()
              if text is not None]  # fmt: skip
@@ -167,10 +171,11 @@ def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
             # the rocking rows get them, and the surface refuses them in its words
             swept = the_ending == "contact" or "contact" not in endings
             ells = resistances if swept else [[None], [None]]
-            for d, e, mu, rolling, pivoting in itertools.product(*lists, *ells):
+            for d, e, mu, t_c, rolling, pivoting in itertools.product(*lists, *ells):
                 surface = build_surface(
                     "table", d, e, mu, ending=the_ending,
                     rolling_resistance=rolling, pivoting_resistance=pivoting,
+                    contact_duration=t_c,
                 )  # fmt: skip
                 check_bounces(surface, bounces)
                 models.append(build_model(surface, None, bounces))

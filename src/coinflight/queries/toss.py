@@ -7,7 +7,13 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from coinflight.queries.landing import build_drag, check_bounces, landing_coin, surface_from
+from coinflight.queries.landing import (
+    build_drag,
+    check_bounces,
+    landing_coin,
+    settings_for,
+    surface_from,
+)
 from coinflight.queries.values import AirArgs, TableArgs, TossArgs, build_toss
 
 if TYPE_CHECKING:
@@ -158,7 +164,7 @@ def landing_report(
         payload, line = air_catch(coin, toss, model.drag)
     else:  # a model registered from outside: its own report
         payload, line = model.report(coin, toss)
-    payload.update(model.to_dict())
+    payload.update(settings_for(model))
     payload.update(
         omega=[float(w) for w in toss.omega],
         start=toss.start,

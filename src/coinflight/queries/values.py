@@ -109,8 +109,8 @@ class DistArgs(NamedTuple):
 class TableArgs(NamedTuple):
     """Where the toss ends, as typed: --surface and the table's options (None: not given),
     --surface-preset, then the contact ending's options: --ending, --rolling-resistance,
-    --pivoting-resistance (texts: a distribution where a probability takes one) and the coin's
-    --corner-radius (m)."""
+    --pivoting-resistance (texts: a distribution where a probability takes one), the coin's
+    --corner-radius (m) and the impact's --contact-duration (s; a text, as the resistances)."""
 
     surface: str
     drop_height: float | None
@@ -121,6 +121,7 @@ class TableArgs(NamedTuple):
     rolling_resistance: str | None = None
     pivoting_resistance: str | None = None
     corner_radius: float | None = None
+    contact_duration: str | None = None
 
 
 class AirArgs(NamedTuple):

@@ -30,9 +30,9 @@ values are not published and barely matter (the bias depends on ψ alone). The s
 
 Surface presets: what a coin meets on wood or on a table top
 -------------------------------------------------------------
-No source measures the restitution or the friction of a coin on a table; the literature gives
-ranges (below). A surface preset spreads each parameter *uniformly* over its range (our choice:
-no source gives a distribution), so that a probability integrates over it
+No source measures the restitution, the friction or the contact duration of a coin on a table;
+the literature gives ranges (below). A surface preset spreads each parameter *uniformly* over
+its range (our choice: no source gives a distribution), so that a probability integrates over it
 (:meth:`coinflight.model.ensemble.TossDistribution.with_contact`) and quotes a band, not a
 point.
 
@@ -52,6 +52,15 @@ coin-on-table   0.3–0.6      0.05–0.5      e: as above. μ: from the 0.05 Pl
                                            an upper bound (no source we found measures a coin
                                            on a laminate or varnished top).
 ==============  ===========  ============  =========================================================
+
+The contact duration t_c of an impact (how far apart two rim points may strike and still make
+one simultaneous impact, :data:`coinflight.core.impact.CONTACT_DURATION`) is spread too:
+5e-5 to 3e-4 s on wood (coin-on-wood) and 2e-5 to 3e-4 s on a table top, which may be wood,
+laminate, stone or glass (coin-on-table). Both are Hertz's contact time t_c = 2.87 (m*² /
+(R E*² v))^(1/5) (Johnson, *Contact Mechanics*, 1985, §11.4) of a coin's rim (corner radius
+≈ 0.3 mm, effective mass m/5, m = 2.3-11 g) striking at 1-3 m/s a surface of modulus E*
+0.5-10 GPa (wood across and along the grain: 5e-5 to 3e-4 s) or 50-70 GPa (stone, glass:
+2e-5 to 4e-5 s); not measured for coins.
 """
 
 from __future__ import annotations
@@ -178,7 +187,8 @@ def preset(
 
 @dataclasses.dataclass(frozen=True)
 class SurfacePreset:
-    """A named surface: the ranges of its restitution and friction, and their sources.
+    """A named surface: the ranges of its restitution, friction and contact duration, and their
+    sources.
 
     Attributes
     ----------
@@ -186,33 +196,44 @@ class SurfacePreset:
     restitution, friction : Distribution
         Uniform over the literature's range (see the module notes).
     sources : dict
-        {"restitution": ..., "friction": ...}: where each range comes from.
+        {"restitution": ..., "friction": ..., "contact_duration": ...}: where each range
+        comes from.
+    contact_duration : Distribution
+        t_c of an impact, s: uniform over Hertz's contact times for the surface (see the
+        module notes).
     """
 
     name: str
     restitution: Distribution
     friction: Distribution
     sources: MappingProxyType[str, str]
+    contact_duration: Distribution
 
     @property
     def contact(self) -> dict[str, Distribution]:
-        """{"restitution": ..., "friction": ...}, for
+        """{"restitution": ..., "friction": ..., "contact_duration": ...}, for
         :meth:`~coinflight.model.ensemble.TossDistribution.with_contact`."""
-        return {"restitution": self.restitution, "friction": self.friction}
+        return {
+            "restitution": self.restitution,
+            "friction": self.friction,
+            "contact_duration": self.contact_duration,
+        }
 
     def describe(self) -> str:
-        """One line: the name and the two ranges."""
+        """One line: the name and the three ranges."""
         return (
             f"{self.name}: restitution {self.restitution.describe()}, friction "
-            f"{self.friction.describe()} (uniform over the literature's ranges)"
+            f"{self.friction.describe()}, contact duration {self.contact_duration.describe('s')}"
+            " (uniform over the literature's ranges)"
         )
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON: name, the two distributions and the sources."""
+        """JSON: name, the three distributions and the sources."""
         return {
             "name": self.name,
             "restitution": self.restitution.to_dict(),
             "friction": self.friction.to_dict(),
+            "contact_duration": self.contact_duration.to_dict(),
             "sources": dict(self.sources),
         }
 
@@ -221,6 +242,12 @@ _RESTITUTION_SOURCE = (
     "0.3-0.6: our band around e = 0.5, the value Pletser (2022, Foundations, "
     "doi:10.3390/foundations2030039, §2.2) assumes for a 50-eurocent coin; "
     "not measured for coins"
+)
+
+_DURATION_SOURCE = (
+    "{} s: Hertz's contact time (Johnson, Contact Mechanics, 1985, §11.4) of a coin's rim "
+    "(corner radius 0.3 mm, effective mass m/5, m = 2.3-11 g) at 1-3 m/s on {}; not measured "
+    "for coins"
 )
 
 SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
@@ -235,8 +262,12 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
                     "friction": "0.2-0.6: wood on metal, clean and dry, static "
                     "(Engineering ToolBox, 'Friction and Friction Coefficients', "
                     "engineeringtoolbox.com/friction-coefficients-d_778.html)",
+                    "contact_duration": _DURATION_SOURCE.format(
+                        "5e-05-0.0003", "wood (E* 0.5-10 GPa, across and along the grain)"
+                    ),
                 }
             ),
+            Uniform(5e-5, 3e-4),
         ),
         "coin-on-table": SurfacePreset(
             "coin-on-table",
@@ -248,8 +279,14 @@ SURFACE_PRESETS: MappingProxyType[str, SurfacePreset] = MappingProxyType(
                     "friction": "0.05-0.5: from the 0.05 Pletser (2022, Foundations, "
                     "doi:10.3390/foundations2030039, §2.2) assumes for a 50-eurocent coin "
                     "to 0.5, our upper bound; not measured for coins",
+                    "contact_duration": _DURATION_SOURCE.format(
+                        "2e-05-0.0003",
+                        "a table top of wood (5e-5 to 3e-4 s), laminate, stone or glass "
+                        "(E* 50-70 GPa: 2e-5 to 4e-5 s)",
+                    ),
                 }
             ),
+            Uniform(2e-5, 3e-4),
         ),
     }
 )
@@ -262,8 +299,8 @@ def surface_preset(name: str) -> SurfacePreset:
 
     Examples
     --------
-    >>> print(surface_preset("coin-on-wood").describe())
-    coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6 (uniform over the literature's ranges)
+    >>> print(surface_preset("coin-on-wood").describe())  # doctest: +ELLIPSIS
+    coin-on-wood: restitution 0.3–0.6, friction 0.2–0.6, contact duration 5e-05–0.0003 s (...)
     """
     return v.known("surface preset", name, SURFACE_PRESETS)
 

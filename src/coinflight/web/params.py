@@ -143,6 +143,15 @@ CornerRadius = Annotated[
         "--corner-radius."
     ),
 ]
+ContactDuration = Annotated[
+    str | None,
+    _q(
+        "table: contact duration t_c of one impact of the coin's rim, s, 1e-6 to 0.01 (default "
+        "1e-4; Hertz: 5e-5 to 3e-4 on wood, 2e-5 to 4e-5 on stone or glass): rim points "
+        "meeting the table less than t_c apart strike as one; not measured for coins, quote a "
+        "band. As --contact-duration."
+    ),
+]
 Drag = Annotated[float | None, _q("Air drag coefficient C_d ≥ 0 (integrated numerically).")]
 SpinDamping = Annotated[float | None, _q("Damping torque −K ω on the spin, N m s ≥ 0.")]
 Bounces = Annotated[int | None, _q("table: stop at the contact after K bounces.")]
@@ -165,6 +174,7 @@ def table_args(
     rolling_resistance: RollingResistance = None,
     pivoting_resistance: PivotingResistance = None,
     corner_radius: CornerRadius = None,
+    contact_duration: ContactDuration = None,
 ) -> TableArgs:
     """--surface and the table's options (as typed, parsed as the command line parses them);
     no --surface-preset."""
