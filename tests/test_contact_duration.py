@@ -219,8 +219,9 @@ def test_near_flat_drops_scale_with_the_duration():
 def test_the_wrong_face_fraction_over_a_grid_of_tilts_changes_with_the_duration():
     """Tilts 0.05° to 3°, a nickel from 0.35 m (e 0.45, μ 0.3): the fraction that lands on the
     other face differs across the plausible range of t_c (3e-5 to 3e-4 s) and the allowed
-    one: at 1 μs every one of them turns over (the sequential impacts' falling rod), at 10 ms
-    none (every one a simultaneous impact)."""
+    one: at 1 μs every one of them turns over (the sequential impacts' falling rod, whose face
+    is set by the drop speed and e, not by the tilt: at this speed the other one), at 10 ms none
+    (every one a simultaneous impact)."""
     tilts = np.radians(np.linspace(0.05, 3.0, 60))
 
     def wrong(t_c):
@@ -268,7 +269,8 @@ def _p_tails(duration):
 
 
 def test_a_probability_integrates_over_a_range_of_durations():
-    """Quarters barely spun (0 to 0.3 rad/s) land near flat, where t_c decides: P(tails) at
+    """Quarters barely spun (0 to 0.3 rad/s: tilts 0-9° at the first impact, where t_c decides
+    the first or the second rim's strike and the later slow bounces): P(tails) at
     t_c = 3e-5 s and at 3e-4 s differ by many standard errors, and over the range 3e-5:3e-4
     (drawn toss by toss) it lies between the two, apart from both (not one end's value)."""
     low, se_low, _ = _p_tails("3e-5")

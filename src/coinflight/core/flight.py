@@ -213,8 +213,9 @@ def table_impact(v, lm, n, c):
     """:func:`coinflight.core.impact.impact` of the coin touching the table with normal n,
     velocity v and angular momentum L, with the coin, e, μ and corner radius of the contact
     record c (:class:`coinflight.core.contact.Contact`), and its contact duration t_c, which
-    decides when two rim points strike as one (:func:`coinflight.core.impact.
-    simultaneous_point`): (v, L, rebound speed of the contact point) after it."""
+    decides when two rim points strike as one
+    (:func:`coinflight.core.impact.simultaneous_point`): (v, L, rebound speed of the contact
+    point) after it."""
     return impact(
         v,
         lm,
