@@ -449,7 +449,8 @@ def rigid_landings(
         if rim not in records:
             table = Surface("table", DROP_HEIGHT, ending="rigid")
             records[rim] = contact_record(coin.with_corner_radius(rim), table, g)
-        c = bounce.with_surface(records[rim], e[k], mu[k], ell[k], ell[k])
+        record = records[rim]
+        c = bounce.with_surface(record, e[k], mu[k], ell[k], ell[k], record.contact_duration)
         w = (float(omega[k, 0]), float(omega[k, 1]), float(omega[k, 2]))
         f, _, _, _, status, z, v, normal, lm = bounce.bounce_loop(
             w, 1.0, float(v0[k]), c, bounce.MAX_IMPACTS
@@ -544,7 +545,9 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
     tosses in every cell; ``integrated`` tosses (default
     4 ``n``) with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform); and the ``n``
     tosses once more with the corners rounded to h/2. Each edge is counted by how it ended
-    (:data:`RIGID_PATHS`, :func:`rigid_landings`).
+    (:data:`RIGID_PATHS`, :func:`rigid_landings`). The contact duration is held at the
+    surface's default (it decides only landings within a fraction of a degree of flat or
+    upright).
 
     Cost: 2 × (16 ``n`` + ``integrated``) + ``n`` rigid landings (the report's 100 and 400:
     about 4,100, half a minute on 2 cores), bounded before anything runs at
