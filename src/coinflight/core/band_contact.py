@@ -337,12 +337,19 @@ def _sticks(q, c, sigma, d):
     force inside its cone; if not, its slide's starting direction is put in ``d``."""
     if _feasible(q, c, sigma, d):
         return True
+    _slide_from(q, c, sigma, d)
+    return False
+
+
+@njit(cache=True)
+def _slide_from(q, c, sigma, d):
+    """Put in ``d`` the starting direction of the slide of the point ``sigma`` whose force
+    would leave its cone (against that force)."""
     dn, dt = _start_direction(q, c, sigma, d)
     if sigma == STICK_PLUS:
         d[0], d[1] = dn, dt
     else:
         d[2], d[3] = dn, dt
-    return False
 
 
 @njit(cache=True)
@@ -553,11 +560,7 @@ def _switch(q, c, mode, d, ev):
         stuck_event = ev[3] < 0.0 if mode == STICK_PLUS else ev[4] < 0.0
         if stuck_event:
             # The sticking point's force has left its cone: it slips, against that force.
-            dn, dt = _start_direction(q, c, mode, d)
-            if mode == STICK_PLUS:
-                d[0], d[1] = dn, dt
-            else:
-                d[2], d[3] = dn, dt
+            _slide_from(q, c, mode, d)
             return SLIDE
         # The other point's slip (2 H |ω_z|) has stopped: both stick.
         if _feasible(q, c, ROLL, d):
