@@ -9,7 +9,7 @@ import typer
 
 from coinflight.cli.command import Group
 from coinflight.cli.groups import _dist
-from coinflight.cli.landing_help import CORNER_HELP, ENDING_HELP, PIVOTING_HELP, ROLLING_HELP
+from coinflight.cli.landing_help import CORNER_HELP, PIVOTING_HELP, ROLLING_HELP
 from coinflight.cli.options import (
     CONTACT_PANEL,
     OUTPUT_PANEL,
@@ -103,22 +103,17 @@ DropHeight = Annotated[
         _ONLY + "how far the table lies below the launch height, m (default 0.5).",
     ),
 ]
-Ending = Annotated[
-    str | None,
-    typer.Option(
-        "--ending",
-        metavar="rocking|contact|rigid",
-        rich_help_panel=CONTACT_PANEL,
-        help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
-    ),
-]
 RollingResistance = Annotated[
     float | None,
     number_option(
         "--rolling-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + ROLLING_HELP + _BAND + "1e-5–1e-3 m, "
+        _ONLY
+        + "landings that bounce (--restitution > 0): "
+        + ROLLING_HELP
+        + _BAND
+        + "1e-5–1e-3 m, "
         "both resistances alike.",
     ),
 ]
@@ -128,7 +123,11 @@ PivotingResistance = Annotated[
         "--pivoting-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP + _BAND + "1e-5–1e-3 m, "
+        _ONLY
+        + "landings that bounce (--restitution > 0): "
+        + PIVOTING_HELP
+        + _BAND
+        + "1e-5–1e-3 m, "
         "both resistances alike.",
     ),
 ]
@@ -166,7 +165,6 @@ SETTING = Group(
             ("restitution", Restitution),
             ("friction", Friction),
             ("drop_height", DropHeight),
-            ("ending", Ending),
             ("rolling_resistance", RollingResistance),
             ("pivoting_resistance", PivotingResistance),
             ("corner_radius", CornerRadius),

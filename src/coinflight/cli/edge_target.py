@@ -67,8 +67,7 @@ def run_target(query: Any, cluster: Any, json: bool) -> None:
         else f"tosses wobbling on a cone ψ {'≈ 82° (human)' if psi == 'human' else f'{psi:g}°'}"
     )
     typer.echo(
-        f"  {answer['ending']} ending, {tosses}, {answer['n']:,} per ratio tried, the same at "
-        f"every ratio and cell; {over}"
+        f"  {tosses}, {answer['n']:,} per ratio tried, the same at every ratio and cell; {over}"
     )
     if len(answer["cells"]) > 1:
         typer.echo(f"  band  {_root(band['low'])} – {_root(band['high'])} (± statistical error)")

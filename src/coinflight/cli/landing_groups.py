@@ -9,7 +9,6 @@ from coinflight.cli.command import Group
 from coinflight.cli.landing_help import (
     CORNER_HELP,
     DURATION_HELP,
-    ENDING_HELP,
     PIVOTING_HELP,
     ROLLING_HELP,
     SPREAD,
@@ -86,25 +85,13 @@ TABLE = Group(
             ],
             None,
         ),
-        "ending": (
-            Annotated[
-                str | None,
-                option(
-                    "--ending",
-                    metavar="rocking|contact|rigid",
-                    panel=CONTACT_PANEL,
-                    help=_TABLE + ENDING_HELP,
-                ),
-            ],
-            None,
-        ),
         "rolling_resistance": (
             Annotated[
                 str | None,
                 resistance_option(
                     "rolling",
                     "L",
-                    "table, --ending contact or rigid: " + ROLLING_HELP + SPREAD_RESISTANCE,
+                    _TABLE + ROLLING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -115,7 +102,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact or rigid: " + PIVOTING_HELP + SPREAD_RESISTANCE,
+                    _TABLE + PIVOTING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -144,8 +131,8 @@ TABLE = Group(
 )
 TableOptions = Annotated[TableArgs, TABLE]
 """--surface and the table's --drop-height, --restitution, --friction, --surface-preset,
---ending, --rolling-resistance, --pivoting-resistance, --corner-radius and --contact-duration,
-as typed."""
+--rolling-resistance, --pivoting-resistance, --corner-radius and --contact-duration, as
+typed."""
 AIR = Group(
     {
         "drag": (

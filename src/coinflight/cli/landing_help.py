@@ -13,16 +13,6 @@ SPREAD = (
     " probability: also a distribution over the tosses, LOW:HIGH or normal:MEAN,SD (a normal "
     "one truncated to the physical range)."
 )
-ENDING_HELP = (
-    "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
-    "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
-    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
-    "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
-    "corner radius. rigid: the rigid, event-driven 3-D ending (rolling without slip, exact "
-    "Coulomb sliding, hops flown in closed form, rim impacts, rest on the edge band); about "
-    "200 times slower than rocking."
-)
-"""--ending's help (command line and sweep)."""
 
 
 def _resistance_tail(ell: str, against: str) -> str:
@@ -52,8 +42,8 @@ def resistance_option(which: str, metavar: str, help: str) -> Any:
 CORNER_HELP = (
     "radius of the coin's rounded rim corners, m, 0 to half the thickness (or the radius if "
     "smaller; default 0: sharp). "
-    "Used by the flight's contacts, the impacts, both endings (the rocking section rolls on "
-    "its round corners) and every ending's face/edge wells. Not measured for coins (worn coins "
+    "Used by the flight's contacts, the impacts, the rigid ending and the face/edge wells. "
+    "Not measured for coins (worn coins "
     "are rounder): quote a band, not a value."
 )
 """--corner-radius's help."""

@@ -9,7 +9,6 @@ from coinflight.cli.command import Group
 from coinflight.cli.landing_help import (
     CORNER_HELP,
     DURATION_LIST_HELP,
-    ENDING_HELP,
     PIVOTING_TAIL,
     ROLLING_TAIL,
     resistance_option,
@@ -100,17 +99,11 @@ LANDINGS = Group(
             "table: the face at the contact after K bounces (default: at rest).",
             int | None,
         ),
-        "ending": _surface_option(
-            "--ending",
-            "rocking,contact",
-            "table, comma-separated endings: " + ENDING_HELP,
-            panel=CONTACT_PANEL,
-        ),
         "rolling_resistance": (
             Annotated[
                 str | None,
                 resistance_option(
-                    "rolling", "LIST", "table, contact ending rows: lengths ℓ_r, " + ROLLING_TAIL
+                    "rolling", "LIST", "table: rolling resistance lengths ℓ_r, " + ROLLING_TAIL
                 ),
             ],
             None,
@@ -119,7 +112,7 @@ LANDINGS = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "pivoting", "LIST", "table, contact ending rows: lengths ℓ_p, " + PIVOTING_TAIL
+                    "pivoting", "LIST", "table: pivoting resistance lengths ℓ_p, " + PIVOTING_TAIL
                 ),
             ],
             None,

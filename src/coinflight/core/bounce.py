@@ -23,20 +23,15 @@ of the exact and the air landings). The coin has settled when it can no longer c
 potential barrier between a face and its edge, m g sqrt(r² + h²/4), the height of its centre
 of mass when balanced on the corner of rim and face (m g (a + sqrt((r − a)² + (h/2 − a)²))
 over a corner rounded to radius a) (Vulović & Prange 1986; Yong & Mahadevan
-2011; REFERENCES §4-5): with the rocking ending, when the energy that can turn it over
-(:func:`coinflight.core.flight.tumbling_energy`) is below it; with the contact ending, when
-its whole energy (:func:`coinflight.core.flight.mechanical_energy`) is, which is rigorous, as
-no impact or contact force adds energy (:func:`coinflight.core.impact.impact` is tested for
-it). Its outcome is then the well it is in (:func:`coinflight.core.impact.resting_face`).
-When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
-one rim point while it tips), the end is chosen by the record's ``ending`` flag
-(:class:`coinflight.model.surface.Surface` ``ending``): by default the planar rocking of
-:func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
-contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
-and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
-cannot leave its well (status SETTLED_CONTACT, or DECIDED_UPRIGHT for a coin rolling upright
-that :func:`coinflight.core.contact_phase.upright_decided` ends on edge, a measured predictor;
-slow, and its edge rates are not yet credible: see :mod:`coinflight.core.contact_phase`).
+2011; REFERENCES §4-5): when its whole energy
+(:func:`coinflight.core.flight.mechanical_energy`) is below it, which is rigorous, as no impact
+or contact force adds energy (:func:`coinflight.core.impact.impact` is tested for it). Its
+outcome is then the well it is in (:func:`coinflight.core.impact.resting_face`). When the
+bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on one rim
+point while it tips), the rigid, event-driven ending of
+:func:`coinflight.core.rigid_ending.settle` carries it on in 3-D (rolling, sliding, pivoting,
+hopping and rocking on its rims, with Coulomb friction and rolling and pivoting resistance)
+until it cannot leave its well (status SETTLED_CONTACT).
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 
@@ -48,8 +43,8 @@ flights in closed form, :func:`fly`; after the bounces, what the ending follows,
 
 Every part of a landing meets the same rim: the cylinder (r − a, h/2 − a) swept by a ball of
 the corner radius a (``Contact.corner_radius``; :func:`coinflight.core.impact.lowest_depth`):
-the flight's contact search, the impacts, the barrier and the edge angle of the wells, the
-contact phase and the rocking of :func:`rock`. With a = 0 (sharp corners) each is, to the bit,
+the flight's contact search, the impacts, the barrier and the edge angle of the wells and the
+rigid ending. With a = 0 (sharp corners) each is, to the bit,
 what it was before it took a.
 """
 
@@ -63,8 +58,7 @@ from numpy.typing import NDArray
 
 from coinflight.core import rigid_ending
 from coinflight.core._jit import njit, prange
-from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
-from coinflight.core.contact_phase import settle
+from coinflight.core.contact import Contact
 from coinflight.core.flight import (
     CA_TOLERANCE,
     GRAZE_SKIP,
@@ -74,7 +68,6 @@ from coinflight.core.flight import (
     mechanical_energy,
     next_contact,
     table_impact,
-    tumbling_energy,
 )
 from coinflight.core.impact import (
     angular_velocity,
@@ -91,126 +84,6 @@ from coinflight.core.outcome import Status
 MAX_IMPACTS = 2_000
 REST_SPEED = 0.01
 """Default rebound speed of the contact point below which the bounces have died out, m/s."""
-
-
-@njit(cache=True)
-def rock(n, omega, c):
-    """Face the coin ends on when it rocks on its corners in the plane in which it tips.
-
-    The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
-    alternative is :func:`coinflight.core.contact_phase.settle`.
-
-    Parameters
-    ----------
-    n, omega : tuple of 3 floats
-        Heads normal and angular velocity (lab) when the bounces have died out.
-    c : Contact
-        The contact record (:class:`coinflight.core.contact.Contact`): the coin (r, h/2, m,
-        I1), gravity, the rim's corner radius a, 0 ≤ a ≤ min(h/2, r) (0: sharp corners,
-        Housner's block), and the barrier m g (a + ρ′) between the wells, read from the
-        record (computed once, by :meth:`Contact.build <coinflight.core.contact.Contact>`).
-
-    Notes
-    -----
-    The rocking block of Housner (1963, *Bull. Seismol. Soc. Am.* 53:403): the coin's section
-    in the vertical plane through its normal pivots, without slipping or bouncing, about one
-    corner at a time. With rounded corners the section is the rectangle 2r′ × 2h′ swept by a
-    disc of radius a (r′ = r − a, h′ = h/2 − a: the section of the coin of
-    :func:`coinflight.core.impact.lowest_depth`), flat bands 2r′ (faces) and 2h′ (edge)
-    joined by quarter circles, and the sharp block is a = 0. Its tilt φ
-    (n = sin φ ê + cos φ Z) sees the potential U = m g (a + r′ |sin φ| + h′ |cos φ|) (the
-    height of the centre of mass over the section's lowest point): wells at heads (φ = 0),
-    edge (±π/2) and tails (π), separated by the corners, the centre of mass balanced over a
-    corner's centre, U = m g (a + ρ′), ρ′ = sqrt(r′² + h′²) (:attr:`Contact.barrier
-    <coinflight.core.contact.Contact>`).
-    Between wells the coin rolls without slipping on one corner's arc: the contact point P,
-    below the arc's centre, is the instantaneous centre of rotation, so the kinetic energy is
-    ½ I_P φ̇², I_P = I1 + m |CM − P|² = I1 + m (ρ′² + a² + 2 a (U/(m g) − a)) (the centre of
-    mass lies U/(m g) − a above the arc's centre, which lies a above P: the kinetic energy of a
-    body rolling without slip on its convex contour, rotation about the instantaneous centre;
-    the rocking bodies of Glaschke 2016, arXiv:1604.03021),
-    and ½ I_P φ̇² + U is conserved: the coin crosses a barrier when this energy exceeds
-    U there, whatever I_P. At the bottom of a well the section lies on its flat band (faces:
-    half-length r′, the centre of mass h/2 above it; edge: h′ and r) and the next corner's arc
-    lands: the pivot jumps from one end of the band to the other, and angular momentum about
-    the new pivot P₂ is conserved (Housner 1963) while the old one P₁ lifts, so φ̇ is
-    multiplied by (I1 + m (CM − P₁)·(CM − P₂)) / (I1 + m |CM − P₂|²) =
-    (I1 + m b² cos γ) / (I1 + m b²), b² = r′² + (h/2)² with cos γ = ((h/2)² − r′²)/b² at a
-    face, b² = r² + h′² with cos γ = (r² − h′²)/b² at the edge (γ the angle between the band's
-    ends seen from the centre of mass; Housner's corners at a = 0). The kinetic energy, the
-    same I_P just before and after, goes by the ratio's square. When that ratio is ≤ 0 (a
-    thin coin slapping flat) the coin stops there. The coin ends in the first well whose
-    barrier its energy cannot pass. At a = h/2 the edge band has shrunk to a point
-    (h′ = 0): the edge is the top of the barrier (ratio 1, no well), and the coin never ends
-    on its edge.
-    """
-    radius, hh, mass, i1, g = c.radius, c.half_thickness, c.mass, c.i1, c.g
-    corner = c.corner_radius
-    barrier = c.barrier  # m g (a + ρ′), the record's
-    # The section's inner rectangle (r′, h′) and the corner's centre seen from the centre of
-    # mass; a = 0 leaves every expression as Housner's sharp block computed it, to the bit.
-    r_in = radius - corner
-    h_in = hh - corner
-    rho_in2 = r_in * r_in + h_in * h_in
-    angle = math.atan2(r_in, h_in)  # the face/edge barriers at |φ| = angle, π − angle
-    horizontal = math.hypot(n[0], n[1])
-    ndot = cross(omega, n)
-    if horizontal > 1e-12:
-        ex, ey = n[0] / horizontal, n[1] / horizontal
-    else:
-        h2 = math.hypot(ndot[0], ndot[1])
-        if h2 == 0.0:
-            return 1 if n[2] > 0.0 else 0
-        ex, ey = ndot[0] / h2, ndot[1] / h2
-    phi = math.atan2(horizontal, n[2])  # in [0, π]
-    # dφ/dt = ṅ · ∂n/∂φ with ∂n/∂φ = cos φ ê − sin φ Z.
-    phidot = (ndot[0] * ex + ndot[1] * ey) * math.cos(phi) - ndot[2] * math.sin(phi)
-    lift = r_in * abs(math.sin(phi)) + h_in * abs(math.cos(phi))  # CM above the arc's centre
-    inertia = i1 + mass * (rho_in2 + corner * corner + 2.0 * corner * lift)  # about P
-    energy = 0.5 * inertia * phidot * phidot + mass * g * (corner + lift)
-    # Wells k = 0 heads (φ = 0), 1 edge (π/2), 2 tails (π), 3 edge (−π/2), in order of φ.
-    if phi < angle:
-        k = 0
-    elif phi > math.pi - angle:
-        k = 2
-    elif h_in > 0.0:
-        k = 1
-    else:  # a = h/2: no edge well, φ = π/2 is the top of the barrier
-        k = 0 if phi < 0.5 * math.pi else 2
-    direction = 1 if phidot >= 0.0 else -1
-    towards_centre = (phi - 0.5 * math.pi * k) * phidot < 0.0
-    if not towards_centre:
-        if energy < barrier:
-            return _well_face(k)
-        k = (k + direction) % 4
-    # The band's ends seen from the centre of mass at the bottom of a face and of the edge well.
-    face2 = r_in * r_in + hh * hh
-    cos_face = (hh * hh - r_in * r_in) / face2
-    edge2 = radius * radius + h_in * h_in
-    cos_edge = (radius * radius - h_in * h_in) / edge2
-    for _ in range(10_000):
-        if k % 2 == 0:
-            bottom = mass * g * hh
-            ratio = (i1 + mass * face2 * cos_face) / (i1 + mass * face2)
-        else:
-            bottom = mass * g * radius
-            ratio = (i1 + mass * edge2 * cos_edge) / (i1 + mass * edge2)
-        if ratio <= 0.0:
-            return _well_face(k)
-        energy = bottom + (energy - bottom) * ratio * ratio
-        if energy < barrier:
-            return _well_face(k)
-        k = (k + direction) % 4
-    return _well_face(k)
-
-
-@njit(cache=True)
-def _well_face(k):
-    if k == 0:
-        return 1
-    if k == 2:
-        return 0
-    return 2
 
 
 DIED_OUT = -2
@@ -392,21 +265,16 @@ def after_impact(z, v, lm, n, rebound, c):
 def impact_verdict(z, v, lm, n, rebound, c):
     """(face, status) after an impact, in this order:
 
-    * the coin is trapped in its well: with the 3-D contact ending, its whole energy
-      (:func:`coinflight.core.flight.mechanical_energy`, rigorous: nothing adds energy
-      afterwards) is below the barrier of ``c.barrier``; with the rocking ending, its
-      tumbling energy (:func:`coinflight.core.flight.tumbling_energy`) is (status
+    * the coin is trapped in its well: its whole energy
+      (:func:`coinflight.core.flight.mechanical_energy`) is below the barrier ``c.barrier``,
+      which is rigorous, as no impact or contact force adds energy afterwards (status
       SETTLED_ENERGY);
     * e = 0 and the rebound below ``rest_speed``: the surface absorbed it (SETTLED_DEAD);
     * the bounces died out (rebound below ``rest_speed``): :data:`DIED_OUT` (face −1), for
       :func:`died_out`;
     * else the coin flies on: status −1, face −1.
     """
-    if c.ending != ROCKING_ENDING:  # the 3-D endings (contact, rigid)
-        free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
-    else:
-        free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
-    if free < c.barrier:
+    if mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z) < c.barrier:
         return resting_face(n[2], c.edge_sine), Status.SETTLED_ENERGY
     if rebound < c.rest_speed:
         if c.restitution == 0.0:
@@ -417,17 +285,10 @@ def impact_verdict(z, v, lm, n, rebound, c):
 
 @njit(cache=True)
 def died_out(z, v, n, lm, c):
-    """The end of a landing whose bounces died out: (face, status, duration, s), by
-    ``c.ending``: the 3-D contact phase (:func:`coinflight.core.contact_phase.settle`,
-    SETTLED_CONTACT, DECIDED_UPRIGHT or UNSETTLED, its duration) or the planar rocking of
-    :func:`rock` (SETTLED_ROCKING, 0)."""
-    if c.ending == CONTACT_ENDING:
-        return settle(z, v, n, lm, c)
-    if c.ending == RIGID_ENDING:
-        return rigid_ending.settle(z, v, n, lm, c)
-    omega = angular_velocity(lm, n, c.i1, c.i3)
-    face = rock(n, omega, c)
-    return face, Status.SETTLED_ROCKING, 0.0
+    """The end of a landing whose bounces died out: (face, status, duration, s), the rigid,
+    event-driven ending of :func:`coinflight.core.rigid_ending.settle` (SETTLED_CONTACT or
+    UNSETTLED, its duration)."""
+    return rigid_ending.settle(z, v, n, lm, c)
 
 
 CONTACT_GAP = CA_TOLERANCE
@@ -465,15 +326,11 @@ def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
     ``status``, the coin at (z, xy, v, n, lm)), written into ``states[k:]``: (the index of the
     first time not followed, the latest time the ending follows, s).
 
-    The hook through which an ending that follows the coin in time hands :func:`follow` its
-    motion (any status: a coin trapped in its well still moves). Neither of today's endings
-    does (the rocking hand-off decides the face from the state alone; the contact phase keeps
-    no trajectory), so nothing after t is followed: (k, t). The rigid ending does
-    (:func:`coinflight.core.rigid_ending.states`), to the time it settled or gave up.
+    The rigid ending's motion (:func:`coinflight.core.rigid_ending.states`), to the time it
+    settled or gave up, after bounces that died out; after a landing that ended at an impact
+    (below the barrier, dead, the bounce limit) nothing after t is followed: (k, t).
     """
-    if c.ending == RIGID_ENDING and (
-        status == Status.SETTLED_CONTACT or status == Status.UNSETTLED
-    ):
+    if status == Status.SETTLED_CONTACT or status == Status.UNSETTLED:
         return rigid_ending.states(t, z, xy, v, n, lm, c, times, k, states)
     return k, t
 
@@ -590,7 +447,6 @@ def with_surface(
         c.contact_time,
         c.damping_ratio,
         c.damping_restitution,
-        c.ending,
         c.corner_radius,
         contact_duration,
     )
@@ -679,7 +535,7 @@ def land(
         Each toss's own coefficient of restitution and of friction (distributions of what is
         not measured); by default the contact's single values.
     rolling_resistance, pivoting_resistance : ndarray, shape (n,), optional
-        Each toss's own rolling and pivoting resistance, m (used by the contact ending only);
+        Each toss's own rolling and pivoting resistance, m (used by the rigid ending);
         by default the contact's single values.
     contact_duration : ndarray, shape (n,), optional
         Each toss's own contact duration t_c of an impact, s (when two rim points strike as

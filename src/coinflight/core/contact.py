@@ -15,14 +15,6 @@ from typing import NamedTuple
 
 from coinflight.core.impact import CONTACT_DURATION
 
-ROCKING_ENDING = 0.0
-"""``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
-CONTACT_ENDING = 1.0
-"""``Contact.ending`` of the experimental end of a landing: the 3-D contact phase."""
-RIGID_ENDING = 2.0
-"""``Contact.ending`` of the rigid, event-driven end of a landing
-(:func:`coinflight.core.rigid_ending.settle`)."""
-
 
 class Contact(NamedTuple):
     """A coin, a horizontal surface and gravity, as the landing kernels read them.
@@ -66,29 +58,21 @@ class Contact(NamedTuple):
     damping_restitution : float
         The restitution ``damping_ratio`` was set for (the contact phase recomputes ζ when the
         record's ``restitution`` differs, e.g. a per-toss value).
-    ending : float
-        How a landing ends once the bounces die out: :data:`ROCKING_ENDING` (0, the planar
-        rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
-        :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
-        :func:`coinflight.core.contact_phase.settle`) or :data:`RIGID_ENDING` (2, the rigid,
-        event-driven ending of :func:`coinflight.core.rigid_ending.settle`); a float so the
-        record stays all floats.
     corner_radius : float
         a ≥ 0, the radius of the rounded corners of the coin's rim, m
         (:attr:`coinflight.model.coin.Coin.corner_radius`): the coin is a cylinder of radius
         r − a and half-thickness h/2 − a swept by a ball of radius a. ``barrier`` and
         ``edge_sine`` are the rounded coin's wells' (m g (a + ρ′) and (h/2 − a)/ρ′,
-        ρ′ = sqrt((r − a)² + (h/2 − a)²)). So the corner radius reaches: the contact phase
-        (:func:`coinflight.core.contact_phase.settle`, which touches the table with the rounded
-        rim); the end of every landing through these two fields
+        ρ′ = sqrt((r − a)² + (h/2 − a)²)). So the corner radius reaches: the rigid ending
+        (:mod:`coinflight.core.rigid_ending`, which touches the table with the rounded rim);
+        the end of every landing through these two fields
         (:func:`coinflight.core.bounce.after_impact`'s energy test and every
         :func:`coinflight.core.impact.resting_face`, with or without air); the impact law
         (:func:`coinflight.core.impact.impact`, whose contact point is the rounded rim's lowest
         point) and the search for the next contact in flight
         (:func:`coinflight.core.bounce.next_contact` and the air kernel of
-        :mod:`coinflight.core.drag`), with or without air; and the planar rocking ending
-        (:func:`coinflight.core.bounce.rock`: the section rocks on round corners, its pivot
-        rolling). 0: sharp corners, to the last bit what the kernels gave before they took a.
+        :mod:`coinflight.core.drag`), with or without air. 0: sharp corners, to the last bit
+        what the kernels gave before they took a.
     contact_duration : float
         t_c ≥ 0, how long one impact of the coin's rim on the table lasts, s (a physical
         parameter of the surface, not measured for coins:
@@ -116,7 +100,6 @@ class Contact(NamedTuple):
     contact_time: float = 1e-3
     damping_ratio: float = -1.0
     damping_restitution: float = -1.0
-    ending: float = ROCKING_ENDING
     corner_radius: float = 0.0
     contact_duration: float = CONTACT_DURATION
 
@@ -137,7 +120,6 @@ class Contact(NamedTuple):
         rolling_resistance: float = 0.0,
         pivoting_resistance: float = 0.0,
         contact_time: float | None = None,
-        ending: float = ROCKING_ENDING,
         corner_radius: float = 0.0,
         contact_duration: float | None = None,
     ) -> Contact:
@@ -146,8 +128,7 @@ class Contact(NamedTuple):
         No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
         :class:`~coinflight.model.surface.Surface`) has checked every value. ``contact_time``
         defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
-        the contact model is computed here, once (numba). ``ending`` is :data:`ROCKING_ENDING`
-        or :data:`CONTACT_ENDING` (:class:`~coinflight.model.surface.Surface` ``ending``).
+        the contact model is computed here, once (numba).
         ``contact_duration`` (the impact's t_c) defaults to
         :data:`coinflight.core.impact.CONTACT_DURATION`.
         """
@@ -182,7 +163,6 @@ class Contact(NamedTuple):
             contact_time=float(contact_time),
             damping_ratio=_damping_ratio(float(restitution)),
             damping_restitution=float(restitution),
-            ending=float(ending),
             corner_radius=a,
             contact_duration=float(contact_duration),
         )
@@ -195,4 +175,4 @@ def _damping_ratio(restitution: float) -> float:
     return float(contact_phase.damping_ratio(restitution))
 
 
-__all__ = ["CONTACT_ENDING", "RIGID_ENDING", "ROCKING_ENDING", "Contact"]
+__all__ = ["Contact"]

@@ -40,15 +40,13 @@ class Status(IntEnum):
     UNSETTLED = 3
     """Still bouncing after the safety limit of impacts; the outcome is the well it is in."""
     SETTLED_ROCKING = 4
-    """The bounces died out (rebound below the rest speed); the coin rocked on its corners until
-    it was trapped in a well (the planar hand-off of :func:`coinflight.core.bounce.rock`, the
-    default ending)."""
+    """Retired: the planar rocking hand-off that once ended landings whose bounces died out. No
+    landing reports it now (the rigid ending, :attr:`SETTLED_CONTACT`, replaced it); the code
+    keeps its integer so that saved outputs read the same."""
     SETTLED_CONTACT = 5
-    """The bounces died out; the coin then rolled, slid, pivoted and rocked in contact with the
-    surface, in 3-D (:mod:`coinflight.core.contact_phase`, the experimental ending
-    ``Surface(ending="contact")``, or :mod:`coinflight.core.rigid_ending`,
-    ``Surface(ending="rigid")``), until it was at rest or its energy could no longer take it
-    out of its well (a coin ended by the upright decision is :attr:`DECIDED_UPRIGHT`)."""
+    """The bounces died out; the coin then rolled, slid, pivoted, hopped and rocked in contact
+    with the surface, in 3-D (the rigid ending of :mod:`coinflight.core.rigid_ending`), until
+    it was at rest or its energy could no longer take it out of its well."""
     DECIDED_UPRIGHT = 6
     """The bounces died out; the coin then rolled in contact with the surface in 3-D (as
     :attr:`SETTLED_CONTACT`) until it rolled upright in its edge band within the limits of

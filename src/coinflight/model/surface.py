@@ -6,7 +6,7 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, fields
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Any
 
 from coinflight import _validation as v
 from coinflight.model.distributions import (
@@ -16,9 +16,6 @@ from coinflight.model.distributions import (
     TruncatedNormal,
     as_distribution,
 )
-
-ENDINGS = ("rocking", "contact", "rigid")
-"""How a table landing ends once its bounces die out (:class:`Surface` ``ending``)."""
 
 AIR_DENSITY = 1.2
 """Density of air at 20 °C and sea level, kg/m³ (ISO 2533 standard atmosphere: 1.204)."""
@@ -68,26 +65,16 @@ a literal here so that ``import coinflight`` stays free of numba; Hertz's
 contact time, Johnson 1985 §11.4, for a coin's rim on wood 5e-5 to 3e-4 s, on stone or glass
 2e-5 to 4e-5 s); not measured for coins."""
 
-ROCKING_HAS_NO_RESISTANCE = (
-    "only the 3-D endings (ending='contact' or 'rigid', --ending contact or rigid) have rolling "
-    "and pivoting resistance, which the rocking ending would ignore"
-)
-"""The one refusal of a rolling or pivoting resistance given with the rocking ending, after
-what was given (``rolling resistance 0.0002 m: …``; a distribution of them drawn toss by toss
-too, :data:`coinflight.outcomes.table.NO_RESISTANCE_DISTRIBUTIONS`): library, command line
-and web alike."""
-
 TABLE_ONLY = (
     "applies to --surface table only (Surface(kind='table') in Python), not to a catch in the "
     "hand (--surface hand, the default): the hand catches the coin at the launch height, with "
     "no bounce, rocking or contact phase"
 )
 """The one refusal of a table's option given to a catch in the hand, after what was given
-(``--ending applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5 applies
-to …`` from :class:`Surface`)."""
+(``--restitution applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5
+applies to …`` from :class:`Surface`)."""
 
 TABLE_PARAMETERS = (
-    "ending",
     "drop_height",
     "restitution",
     "friction",
@@ -98,7 +85,7 @@ TABLE_PARAMETERS = (
     "max_bounces",
 )
 """What a surface kind may take beyond its name, in the order a refusal names them: the
-:class:`Surface` fields ``ending``, ``drop_height``, ``restitution``, ``friction``,
+:class:`Surface` fields ``drop_height``, ``restitution``, ``friction``,
 ``rolling_resistance``, ``pivoting_resistance`` and ``contact_duration``, the coin's rounded
 rim ``corner_radius`` (the command line's --corner-radius) and ``max_bounces`` (--bounces). A
 table takes them all, a catch in the hand none; an outcome model declares those it reads
@@ -168,9 +155,8 @@ def remove_surface_kind(name: str) -> None:
 class _Unset(float):
     """A contact parameter the caller did not give: its default value, marked as such.
 
-    The rocking ending refuses a resistance given to it (:data:`ROCKING_HAS_NO_RESISTANCE`),
-    and a catch in the hand a drop height, restitution, friction or resistance given to it
-    (:data:`TABLE_ONLY`), but both keep the defaults. The mark is a float (the kernels and JSON
+    A catch in the hand refuses a drop height, restitution, friction or resistance given to it
+    (:data:`TABLE_ONLY`), but keeps the defaults. The mark is a float (the kernels and JSON
     see the plain default) that :func:`dataclasses.replace`, pickling and
     :func:`dataclasses.asdict` (its deep copy keeps the subclass) pass back unchanged, so a copy
     of a surface, or one rebuilt from its fields, is not refused; ``repr`` leaves the marked
@@ -255,16 +241,13 @@ class Surface:
     rolling_resistance, pivoting_resistance : float
         Lengths ℓ_r, ℓ_p (m, 0 to 1 cm) of the torques ℓ F_n that resist the coin's rolling and
         its pivoting about the vertical while it touches the table
-        (:mod:`coinflight.core.contact_phase`); assumptions, see
-        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). With ``ending="contact"`` or
-        ``ending="rigid"`` only: the rocking ending has none, and refuses one given to it
-        (ValueError, :data:`ROCKING_HAS_NO_RESISTANCE`) rather than keep it unused, as a catch
-        in the hand (``"hand"``) refuses one, and ``ending="contact"`` (:data:`TABLE_ONLY`). A
-        default is range-checked as a given value is, but marked as not given: ``Surface("table",
-        ending="contact")`` equals ``Surface("table", rolling_resistance=1e-4,
-        ending="contact")``, yet ``dataclasses.replace(..., ending="rocking")`` accepts the
-        first (its resistances are defaults, which the rocking ending keeps unused) and refuses
-        the second (a resistance given).
+        (the rigid ending, :mod:`coinflight.core.rigid_contact`); assumptions, see
+        :data:`DEFAULT_ROLLING_RESISTANCE` (the default of both). For ``"table"`` only: a catch
+        in the hand refuses one given to it (ValueError, :data:`TABLE_ONLY`). A default is
+        range-checked as a given value is, but marked as not given: ``Surface("table")`` equals
+        ``Surface("table", rolling_resistance=1e-4)``, yet ``dataclasses.replace(...,
+        kind="hand")`` accepts the first (its resistances are defaults) and refuses the second
+        (a resistance given).
     contact_time : float
         Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
         softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
@@ -274,24 +257,15 @@ class Surface:
         :data:`CONTACT_DURATION`; default :data:`DEFAULT_CONTACT_DURATION`, Hertz's contact
         time, not measured for coins): a second rim point that meets the table within it makes
         one simultaneous impact with the first (:func:`coinflight.core.impact.
-        simultaneous_point`). A physical parameter, with every ending; it decides the
+        simultaneous_point`). A physical parameter; it decides the
         landings that meet the table within about v t_c / 2r of flat or upright. For
         ``"table"`` only (a catch in the hand refuses one given, :data:`TABLE_ONLY`).
-    ending : {"rocking", "contact", "rigid"}
-        How a table landing ends once its bounces die out (a rebound slower than the rest
-        speed). ``"rigid"``: the rigid, event-driven 3-D ending of
-        :mod:`coinflight.core.rigid_ending` (rolling, sliding and pivoting on one rim point
-        with the contact force of the constraint, exact Coulomb friction, the rolling and
-        pivoting resistances, hops flown in closed form, impacts of the other rim; status
-        "settled in contact"); it takes the resistances as the contact ending does.
-        ``"rocking"`` (default): the planar Housner rocking hand-off of
-        :func:`coinflight.core.bounce.rock`, fast, but it discards the spin and precession once
-        the bounces die (status "settled rocking"). ``"contact"``: the 3-D compliant contact
-        phase of :mod:`coinflight.core.contact_phase` (status "settled in contact", or
-        "decided upright" for a coin its upright decision ended on edge);
-        **experimental**: slow (about thirty times the rocking ending's cost), and its edge
-        rates are not yet credible (coins that roll upright on a sharp-cornered rim stop
-        upright; see :mod:`coinflight.core.contact_phase`).
+
+    A table landing whose bounces die out (a rebound slower than the rest speed) ends in the
+    rigid, event-driven 3-D ending of :mod:`coinflight.core.rigid_ending`: rolling, sliding and
+    pivoting on one rim point with the contact force of the constraint, exact Coulomb friction,
+    the rolling and pivoting resistances, hops flown in closed form, impacts of the other rim,
+    the coin on both rims of its band (status "settled in contact").
 
     Examples
     --------
@@ -305,10 +279,8 @@ class Surface:
     Traceback (most recent call last):
     ...
     ValueError: restitution 0.7 applies to --surface table only (Surface(kind='table') in ...
-    >>> Surface("table", rolling_resistance=2e-4)  # doctest: +ELLIPSIS
-    Traceback (most recent call last):
-    ...
-    ValueError: rolling resistance 0.0002 m: only the 3-D endings (ending='contact' or 'rigid', ...
+    >>> Surface("table", rolling_resistance=2e-4).rolling_resistance
+    0.0002
     """
 
     kind: str = "hand"
@@ -318,7 +290,6 @@ class Surface:
     rolling_resistance: float = _UNSET_ROLLING
     pivoting_resistance: float = _UNSET_PIVOTING
     contact_time: float = 1e-3
-    ending: Literal["rocking", "contact", "rigid"] = "rocking"
     contact_duration: float = _UNSET_DURATION
 
     def __post_init__(self) -> None:
@@ -347,10 +318,6 @@ class Surface:
         if not isinstance(self.contact_duration, _Unset):  # given: kept as a plain float
             object.__setattr__(self, "contact_duration", duration)
             given["contact_duration"] = CONTACT_DURATION.describe(duration)
-        v.choice("ending", self.ending, ENDINGS)
-        if self.ending != "rocking":
-            given["ending"] = f"ending {self.ending!r}"
-        resistances = []
         for quantity in (ROLLING_RESISTANCE, PIVOTING_RESISTANCE):
             name = quantity.name.replace(" ", "_")
             value = getattr(self, name)
@@ -358,26 +325,23 @@ class Surface:
             if not isinstance(value, _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
                 given[name] = quantity.describe(checked)
-                resistances.append(given[name])
         refused = [given[n] for n in TABLE_PARAMETERS if n in given and n not in kind.takes]
         if refused:
             raise ValueError(f"{', '.join(refused)} {kind.refusal}")
-        if resistances and self.ending == "rocking":
-            raise ValueError(f"{', '.join(resistances)}: {ROCKING_HAS_NO_RESISTANCE}")
 
     def __repr__(self) -> str:
         """The call that rebuilds this surface: every field but the defaults not given.
 
         A default marked as not given (drop height, restitution, friction, the resistances, the
         contact duration) is left out, as the caller left it out: shown as a number it would be
-        given back, and refused by a catch in the hand or the rocking ending.
+        given back, and refused by a catch in the hand.
         ``eval(repr(s))`` equals ``s`` and refuses what ``s`` refuses (in
         :func:`dataclasses.replace`), no more.
 
         >>> Surface("hand")
-        Surface(kind='hand', contact_time=0.001, ending='rocking')
+        Surface(kind='hand', contact_time=0.001)
         >>> Surface("table", 0.8, friction=0.2)
-        Surface(kind='table', drop_height=0.8, friction=0.2, contact_time=0.001, ending='rocking')
+        Surface(kind='table', drop_height=0.8, friction=0.2, contact_time=0.001)
         """
         given = (
             f"{field.name}={getattr(self, field.name)!r}"
@@ -502,7 +466,6 @@ __all__ = [
     "DEFAULT_CONTACT_DURATION",
     "DROP_HEIGHT",
     "MAX_FRICTION",
-    "ROCKING_HAS_NO_RESISTANCE",
     "TABLE_ONLY",
     "TABLE_PARAMETERS",
     "Drag",

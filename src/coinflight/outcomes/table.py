@@ -21,7 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES, STATUS_NAMES, Status
 from coinflight.model.coin import Coin
-from coinflight.model.surface import ROCKING_HAS_NO_RESISTANCE, TABLE_PARAMETERS, Drag, Surface
+from coinflight.model.surface import TABLE_PARAMETERS, Drag, Surface
 from coinflight.model.toss import STANDARD_GRAVITY, Toss, check_gravity
 from coinflight.outcomes.air import check_air, drag_model
 from coinflight.outcomes.base import (
@@ -57,39 +57,24 @@ def check_max_bounces(value: object, name: str = "max_bounces") -> int:
 
 
 BOUNCING_TOSSES_PER_SECOND = 2e4
-"""Drag-free table landings carried to rest a second with the default ending (the planar
-rocking hand-off), for the work bounds: vigorous nickel tosses, e = 0.5, μ = 0.3, on 2 threads
-of a busy 2-core machine (a quiet one runs about five times as many; ``python
-benchmarks/bench_bounce.py`` measures it), so that an estimated time is never too short."""
-
-CONTACT_TOSSES_PER_SECOND = 150.0
-"""Drag-free table landings carried to rest a second with the experimental 3-D contact phase
-(``Surface(ending="contact")``, e > 0), all on one surface, for the work bounds: vigorous
-nickel tosses, e = 0.5, μ = 0.3, on 2 threads of a busy 2-core machine (a quiet one runs about
-five times as many; ``python benchmarks/bench_bounce.py --contact-rates N``)."""
+"""Drag-free table landings a second that end without the rigid ending (e = 0, or stopped
+after ``max_bounces`` bounces: the bounces alone), for the work bounds: vigorous nickel
+tosses, e = 0.5, μ = 0.3, on 2 threads of a busy 2-core machine (a quiet one runs about five
+times as many; ``python benchmarks/bench_bounce.py`` measures it), so that an estimated time
+is never too short."""
 
 RIGID_TOSSES_PER_SECOND = 70.0
-"""Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
-e > 0), drag-free or through air, for the work bounds: US nickel, e = 0.5, μ = 0.3,
+"""Table landings carried to rest a second (the rigid ending, e > 0), drag-free or through air,
+for the work bounds: US nickel, e = 0.5, μ = 0.3,
 resistances 1e-4 m, on 2 threads of a busy 2-core machine, about half what it measures there
 (``python benchmarks/bench_bounce.py --rigid-rates N``: human and vigorous tosses; the coins
 roll for a median 1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
 
-CONTACT_PER_TOSS_PER_SECOND = 75.0
-"""The same landings when every toss has its own contact parameters (a distribution of e, μ
-or the resistances, drawn toss by toss: each landing then builds its own contact record and
-the contact phase its damping), for the work bounds: about half of
-:data:`CONTACT_TOSSES_PER_SECOND` (``python benchmarks/bench_bounce.py --contact-rates N``)."""
-
-CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
-"""Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
-e = 0.5, μ = 0.3, C_d = 1.17, vigorous nickel tosses, 2 threads of a busy 2-core machine), for
-the work bounds."""
-
 AIR_LANDINGS_PER_SECOND = 1e4
-"""Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,
-C_d = 1.17, rocking ending, vigorous nickel tosses), for the work bounds: 2 threads of a busy
-2-core machine (a quiet one runs about five times as many; ``python benchmarks/bench_air.py``)."""
+"""Table landings through air a second that end without the rigid ending (e = 0, or a bounce
+limit; 0.8 m drop, μ = 0.3, C_d = 1.17, vigorous nickel tosses), for the work bounds: 2
+threads of a busy 2-core machine (a quiet one runs about five times as many; ``python
+benchmarks/bench_air.py``)."""
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
@@ -109,23 +94,7 @@ PER_TOSS = (
 )
 """The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
 ``restitution``, ``friction``, ``rolling_resistance``, ``pivoting_resistance`` and
-``contact_duration`` arrays; the resistances act in the 3-D endings only, :data:`RESISTANCES`;
-the contact duration of an impact, with every ending)."""
-
-RESISTANCES = ("rolling_resistance", "pivoting_resistance")
-"""The contact parameters only the 3-D endings (``Surface(ending="contact")`` and
-``Surface(ending="rigid")``) use."""
-
-NO_RESISTANCE_DISTRIBUTIONS = ROCKING_HAS_NO_RESISTANCE
-"""The refusal of per-toss rolling and pivoting resistances with the rocking ending (one line,
-CLI and library): the surface's own wording for a single one."""
-
-
-DECIDED_UPRIGHT_TALLY = "decided_upright"
-"""The tally (:attr:`TableLanding.tallies`, the estimators' ``details``) of the tosses the
-contact ending ended on edge by its upright decision (status DECIDED_UPRIGHT,
-:class:`coinflight.core.outcome.Status`: a measured predictor, not a proof); counted in the
-edge count as well. Only with ``Surface(ending="contact")``, the one ending that decides so."""
+``contact_duration`` arrays)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -141,13 +110,10 @@ class LandingOutcome:
     first_contact : ndarray
         Time of the first contact with the surface since launch, s.
     settle_time : ndarray
-        Time since launch at which the landing ended, s: the last impact for the bounce and
-        rocking endings; for the contact ending, the time the outcome was decided (the coin at
-        rest or its energy below its well's barrier, status "settled in contact"; or a coin
-        rolling upright in its edge band decided on edge by
-        :func:`coinflight.core.contact_phase.upright_decided`, which may still roll at up to
-        about 1 m/s then, status "decided upright"); for an unsettled toss, when it was
-        stopped.
+        Time since launch at which the landing ended, s: the last impact for a landing that
+        ended at one; after the rigid ending, the time the outcome was settled (the coin at
+        rest, or its energy below its well's barrier, status "settled in contact"); for an
+        unsettled toss, when it was stopped.
     status : ndarray of int8
         Why the landing ended (:class:`coinflight.core.outcome.Status`; its names
         :data:`~coinflight.core.outcome.STATUS_NAMES`).
@@ -193,15 +159,13 @@ def contact_record(
     """The coin, the surface and gravity as every landing kernel reads them, built once.
 
     The :class:`coinflight.core.contact.Contact` record of ``coin`` (radius, thickness, mass,
-    moments, corner radius) on ``surface`` (drop height, e, μ, resistances, contact time,
-    ending, the impact's contact duration) under gravity ``g``, m/s²; ``rest_speed`` (m/s)
+    moments, corner radius) on ``surface`` (drop height, e, μ, resistances, contact time, the
+    impact's contact duration) under gravity ``g``, m/s²; ``rest_speed`` (m/s)
     defaults to :data:`coinflight.core.bounce.REST_SPEED`. Nothing is checked here beyond
     what ``Coin`` and ``Surface`` checked on construction (``g`` is the caller's).
     """
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
-
-    endings = {"rocking": ROCKING_ENDING, "contact": CONTACT_ENDING, "rigid": RIGID_ENDING}
+    from coinflight.core.contact import Contact
 
     return Contact.build(
         **coin_body(coin),
@@ -213,7 +177,6 @@ def contact_record(
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
         contact_time=surface.contact_time,
-        ending=endings[surface.ending],
         corner_radius=coin.corner_radius,
         contact_duration=surface.contact_duration,
     )
@@ -486,8 +449,8 @@ class Landing:
         ----------
         coin : Coin
         surface : Surface
-            Kind ``"table"``: e, μ and the ending (its drop height is not used: the state
-            gives the height).
+            Kind ``"table"``: e, μ, the resistances and the contact duration (its drop height
+            is not used: the state gives the height).
         position : array_like, shape (3,)
             Centre of mass, lab frame, m; the table is the plane z = 0, gravity along −z.
         orientation : scipy.spatial.transform.Rotation
@@ -539,8 +502,8 @@ class Landing:
         the impacts, then what the landing's ending follows.
 
         Only a landing from a state (:meth:`from_state`). ValueError for a time the landing
-        does not follow: after the bounces end (:attr:`followed_until`) when the ending keeps
-        no motion (today's endings decide from the state where the bounces end).
+        does not follow: after it ended at an impact (below the barrier, dead, at the bounce
+        limit), or after the rigid ending settled or gave up (:attr:`followed_until`).
         """
         if self.start is None:
             raise TypeError("Landing.at follows a landing from a state: use Landing.from_state")
@@ -550,8 +513,8 @@ class Landing:
         until = self.followed_until
         if flat.size and float(flat[order][-1]) > until:
             raise ValueError(
-                f"times must be at most {until:.6g} s (the end of the bounces: the "
-                f"{self.surface.ending} ending keeps no motion after), got "
+                f"times must be at most {until:.6g} s (where the landing ended: no motion is "
+                f"followed after), got "
                 f"{float(flat[order][-1]):.6g} s"
             )
         found, info = self._follow(flat[order])
@@ -641,10 +604,8 @@ class TableLanding(OutcomeModel):
     """Outcome model for the probability estimators: the tosses land on ``surface``.
 
     Plugs into :func:`coinflight.probability.estimate` (``model=TableLanding(surface)``);
-    counts (tails, heads, edge) and, as extra tallies, the tosses that had not settled when the
-    simulation stopped (counted by the face they showed then) and, with the contact ending, the
-    tosses it ended on edge by its upright decision (:data:`DECIDED_UPRIGHT_TALLY`, counted as
-    edge too).
+    counts (tails, heads, edge) and, as an extra tally, the tosses that had not settled when the
+    simulation stopped (counted by the face they showed then).
     """
 
     name = "table landing"
@@ -652,61 +613,39 @@ class TableLanding(OutcomeModel):
     surface_parameters = TABLE_PARAMETERS
     can_end_on_edge = True
 
-    @property
-    def tallies(self) -> tuple[str, ...]:  # type: ignore[override]
-        """``("unsettled",)``, and ``"decided_upright"`` (:data:`DECIDED_UPRIGHT_TALLY`) with the
-        contact ending: the estimators report each in ``details`` (count and fraction)."""
-        if self.surface.ending == "contact":
-            return ("unsettled", DECIDED_UPRIGHT_TALLY)
-        return ("unsettled",)
+    tallies = ("unsettled",)
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
-        """Restitution, friction and the contact duration may vary toss by toss, and with the
-        3-D endings the rolling and pivoting resistances too (:data:`PER_TOSS`); none through
-        air (not yet: :attr:`contact_refusal`)."""
-        if self.drag is not None:
-            return ()
-        if self.surface.ending != "rocking":  # the 3-D endings take the resistances
-            return PER_TOSS
-        return tuple(name for name in PER_TOSS if name not in RESISTANCES)
+        """Restitution, friction, the rolling and pivoting resistances and the contact duration
+        may vary toss by toss (:data:`PER_TOSS`); none through air (not yet:
+        :attr:`contact_refusal`)."""
+        return () if self.drag is not None else PER_TOSS
 
     @property
     def contact_refusal(self) -> str:  # type: ignore[override]
-        if self.drag is not None:
-            return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG
-        return NO_RESISTANCE_DISTRIBUTIONS
+        return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG
 
     @property
     def rate(self) -> float:  # type: ignore[override]
-        """Tosses a second for the work bounds: :data:`BOUNCING_TOSSES_PER_SECOND`, or with
-        air drag :data:`AIR_LANDINGS_PER_SECOND`; with the experimental ``ending="contact"``
-        (landings carried to rest: e > 0, no bounce limit) :data:`CONTACT_TOSSES_PER_SECOND`,
-        through air :data:`CONTACT_AIR_LANDINGS_PER_SECOND`; with ``ending="rigid"``
-        :data:`RIGID_TOSSES_PER_SECOND`."""
-        ended = self.surface.restitution > 0.0 and self.max_bounces is None
-        if ended and self.surface.ending == "rigid":
+        """Tosses a second for the work bounds: landings carried to rest (e > 0, no bounce
+        limit) :data:`RIGID_TOSSES_PER_SECOND`; else (the bounces alone)
+        :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag :data:`AIR_LANDINGS_PER_SECOND`."""
+        if self.surface.restitution > 0.0 and self.max_bounces is None:
             return RIGID_TOSSES_PER_SECOND
-        contact = self.surface.ending == "contact" and ended
-        if contact:
-            return (
-                CONTACT_TOSSES_PER_SECOND if self.drag is None else CONTACT_AIR_LANDINGS_PER_SECOND
-            )
         if self.drag is not None:
             return AIR_LANDINGS_PER_SECOND
         return BOUNCING_TOSSES_PER_SECOND
 
     def rate_for(self, dist: TossDistribution | None) -> float:
-        """:attr:`rate`, or :data:`CONTACT_PER_TOSS_PER_SECOND` for contact-ending landings
-        whose tosses bring their own contact parameters (``dist.contact``, drawn toss by toss:
-        about half as fast), unless every toss lands dead (e = 0 for all)."""
+        """:attr:`rate`, or :data:`RIGID_TOSSES_PER_SECOND` for landings whose tosses bring
+        their own restitution (``dist.contact``, drawn toss by toss) if any may bounce."""
         spread = {} if dist is None else dist.contact
-        if not spread or self.drag is not None:  # (air takes no distributions)
-            return self.rate
         e = spread.get("restitution")
-        bounces = self.surface.restitution > 0.0 if e is None else e.bounds[1] > 0.0
-        if self.surface.ending == "contact" and self.max_bounces is None and bounces:
-            return CONTACT_PER_TOSS_PER_SECOND
+        if e is None or self.drag is not None:  # (air takes no distributions)
+            return self.rate
+        if self.max_bounces is None and e.bounds[1] > 0.0:
+            return RIGID_TOSSES_PER_SECOND
         return self.rate
 
     def __init__(
@@ -739,8 +678,8 @@ class TableLanding(OutcomeModel):
         return out.face.reshape(shape)
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge, unsettled[, decided upright]) counts for unit-cube points
-        ``u``, (len(ranged), n): :attr:`tallies`."""
+        """(tails, heads, edge, unsettled) counts for unit-cube points ``u``, (len(ranged), n):
+        :attr:`tallies`."""
         omega, t = initial_conditions(dist, u)
         out = land(
             dist.coin,
@@ -755,20 +694,17 @@ class TableLanding(OutcomeModel):
             contact=dist.contact_values(u) if dist.contact else None,
         )
         faces = np.bincount(out.face, minlength=3).astype(np.int64)
-        tallies = [np.count_nonzero(out.status == Status.UNSETTLED)]
-        if self.surface.ending == "contact":
-            tallies.append(np.count_nonzero(out.status == Status.DECIDED_UPRIGHT))
-        return np.append(faces, tallies)
+        return np.append(faces, np.count_nonzero(out.status == Status.UNSETTLED))
 
     def describe(
         self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
     ) -> str:
         """One line: the table, its contact parameters and the air. ``contact`` gives
         distributions in place of the surface's values (the tosses' own, drawn toss by toss:
-        :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The experimental contact
-        ending is named, with its resistances, a contact duration of an impact other than the
-        default (:data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`) or spread, and a
-        rounded rim when ``corner_radius`` (the coin's, m) is not 0."""
+        :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The rolling and pivoting
+        resistances are named, a contact duration of an impact other than the default
+        (:data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`) or spread, and a rounded rim
+        when ``corner_radius`` (the coin's, m) is not 0."""
         s = self.surface
         spread = {} if contact is None else contact
 
@@ -777,12 +713,10 @@ class TableLanding(OutcomeModel):
                 return spread[name].describe(unit)
             return f"{getattr(s, name):g}{' ' + unit if unit else ''}"
 
-        ending = ""
-        if s.ending != "rocking":
-            ending = (
-                f", {s.ending} ending: rolling resistance {text('rolling_resistance', 'm')}, "
-                f"pivoting resistance {text('pivoting_resistance', 'm')}"
-            )
+        ending = (
+            f", rolling resistance {text('rolling_resistance', 'm')}, "
+            f"pivoting resistance {text('pivoting_resistance', 'm')}"
+        )
         if _duration_shown(s, spread):
             ending += f", contact duration {text('contact_duration', 's')}"
         if corner_radius:
@@ -797,12 +731,10 @@ class TableLanding(OutcomeModel):
         self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
     ) -> dict[str, Any]:
         """JSON settings; ``contact``'s distributions, if any, as objects (``{"kind":
-        "uniform", ...}``) in place of the surface's numbers. The contact ending, its
-        resistances (m), the impact's ``contact_duration`` (s) and the coin's rim
-        ``corner_radius`` (m) are reported when not the defaults (the rocking ending,
-        :data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`, sharp corners), so that
-        every other JSON object, and the random stream of a sweep row keyed on it, stays as it
-        was."""
+        "uniform", ...}``) in place of the surface's numbers; the rolling and pivoting
+        resistances (m) always; the impact's ``contact_duration`` (s) and the coin's rim
+        ``corner_radius`` (m) when not the defaults
+        (:data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`, sharp corners)."""
         s = self.surface
         spread = {} if contact is None else contact
 
@@ -818,10 +750,8 @@ class TableLanding(OutcomeModel):
         }
         if self.max_bounces is not None:
             out["max_bounces"] = self.max_bounces
-        if s.ending != "rocking":  # the experimental ending, reported; the default unchanged
-            out["ending"] = s.ending
-            out["rolling_resistance"] = value("rolling_resistance")
-            out["pivoting_resistance"] = value("pivoting_resistance")
+        out["rolling_resistance"] = value("rolling_resistance")
+        out["pivoting_resistance"] = value("pivoting_resistance")
         if _duration_shown(s, spread):
             out["contact_duration"] = value("contact_duration")
         if corner_radius:
@@ -840,14 +770,8 @@ def _duration_shown(surface: Surface, spread: Mapping[str, Distribution]) -> boo
 __all__ = [
     "AIR_LANDINGS_PER_SECOND",
     "BOUNCING_TOSSES_PER_SECOND",
-    "CONTACT_AIR_LANDINGS_PER_SECOND",
-    "CONTACT_PER_TOSS_PER_SECOND",
-    "CONTACT_TOSSES_PER_SECOND",
-    "DECIDED_UPRIGHT_TALLY",
     "MAX_BOUNCES",
-    "NO_RESISTANCE_DISTRIBUTIONS",
     "PER_TOSS",
-    "RESISTANCES",
     "STATUS_NAMES",
     "Landing",
     "LandingOutcome",

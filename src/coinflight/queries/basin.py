@@ -66,8 +66,9 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
 
 MAP_SECONDS = 60.0
 """Longest map of table landings a command asks for, s of estimated work at the outcome
-model's rate (a minute, as the grid method's: a 500×500 map at the rocking ending's 20,000
-landings a second is 12.5 s; with the 3-D contact ending, 150 a second, 9,000 cells). The
+model's rate (a minute, as the grid method's: landings carried to rest through the rigid
+ending, about 70 a second for the work bounds, make about 4,000 cells; stopped after K bounces
+with --bounces, 20,000 a second, a 500×500 map takes 12.5 s). The
 library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
 waits for its figure or its page gets a minute."""
 
@@ -108,7 +109,7 @@ def basin_query(
             n_t * n_w / outcome["outcome"].rate,
             MAP_SECONDS,
             "s of work",
-            "use a coarser resolution (e.g. 100x100 with --ending contact)",
+            "use a coarser resolution (e.g. 60x60), or --bounces K for the face after K bounces",
         )
     return basin_map(
         landing_coin(coin, table),

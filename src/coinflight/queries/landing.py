@@ -1,6 +1,6 @@
 """The landing surface and the air, from the options as typed: built, checked, described
 (the command line's and the web application's one reading of --surface, --drop-height,
---restitution, --friction, --ending, --rolling-resistance, --pivoting-resistance,
+--restitution, --friction, --rolling-resistance, --pivoting-resistance,
 --contact-duration, --corner-radius, --drag, --spin-damping and --bounces)."""
 
 from __future__ import annotations
@@ -8,7 +8,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from coinflight import _validation as v
 from coinflight.queries.values import AirArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -34,7 +33,6 @@ TAKES = {
     "--restitution": ("restitution",),
     "--friction": ("friction",),
     "--surface-preset": ("restitution", "friction", "contact_duration"),
-    "--ending": ("ending",),
     "--rolling-resistance": ("rolling_resistance",),
     "--pivoting-resistance": ("pivoting_resistance",),
     "--corner-radius": ("corner_radius",),
@@ -112,7 +110,6 @@ def build_surface(
     surface_preset: str | None = None,
     ranged: bool = False,
     *,
-    ending: str | None = None,
     rolling_resistance: str | float | None = None,
     pivoting_resistance: str | float | None = None,
     corner_radius: float | None = None,
@@ -124,12 +121,11 @@ def build_surface(
     --restitution, --friction, --rolling-resistance, --pivoting-resistance and
     --contact-duration must be single numbers, and --surface-preset (ranges) is refused,
     unless ``ranged`` (the command then reads their distributions with :func:`contact_spread`
-    and passes them with the tosses; the surface keeps its defaults for them). --ending is
-    rocking (default) or contact; the two resistances apply to --ending contact only (the
-    surface refuses them with the rocking ending, in its words). ``corner_radius`` (the
-    coin's, applied by :func:`landing_coin`) is only checked here to belong to a table.
+    and passes them with the tosses; the surface keeps its defaults for them).
+    ``corner_radius`` (the coin's, applied by :func:`landing_coin`) is only checked here to
+    belong to a table.
     """
-    from coinflight.model.surface import ENDINGS, Surface, surface_kind
+    from coinflight.model.surface import Surface, surface_kind
 
     the_kind = surface_kind(kind)
     given = {
@@ -137,7 +133,6 @@ def build_surface(
         "--restitution": restitution,
         "--friction": friction,
         "--surface-preset": surface_preset,
-        "--ending": ending,
         "--rolling-resistance": rolling_resistance,
         "--pivoting-resistance": pivoting_resistance,
         "--corner-radius": corner_radius,
@@ -150,11 +145,6 @@ def build_surface(
     ]
     if extra:
         raise ValueError(f"{', '.join(extra)} {the_kind.refusal}")
-    if ending is not None and ending not in ENDINGS:
-        raise ValueError(
-            f"--ending must be {', '.join(ENDINGS[:-1])} or {ENDINGS[-1]} (how a table landing "
-            f"ends once its bounces die out), got {ending!r}"
-        )
     if surface_preset is not None and not ranged:
         contact_spread(None, None, surface_preset)  # an unknown name first
         raise ValueError(
@@ -179,45 +169,33 @@ def build_surface(
     from coinflight.outcomes.table import PER_TOSS
 
     # only the contact parameters given: the surface keeps its defaults marked as not given
-    # (a catch in the hand refuses a given one; the rocking ending a given resistance)
+    # (a catch in the hand refuses a given one)
     given_values = {name: fixed[name] for name in PER_TOSS if name in fixed}
     if drop_height is not None:  # else the default, marked as not given (0 m below launch)
         given_values["drop_height"] = drop_height
-    return Surface(
-        kind,
-        ending="rocking" if ending is None else ending,  # type: ignore[arg-type]
-        **given_values,
-    )
+    return Surface(kind, **given_values)
 
 
 def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
-    """:func:`build_surface` for the table options as typed (every one of them); ValueError
-    (:data:`coinflight._validation.DEAD_CONTACT`) for the contact ending on a dead surface,
-    which it would never reach (a sweep's grid may hold such a row: it is then a dead
-    landing)."""
-    surface = build_surface(
+    """:func:`build_surface` for the table options as typed (every one of them)."""
+    return build_surface(
         table.surface,
         table.drop_height,
         table.restitution,
         table.friction,
         table.surface_preset,
         ranged,
-        ending=table.ending,
         rolling_resistance=table.rolling_resistance,
         pivoting_resistance=table.pivoting_resistance,
         corner_radius=table.corner_radius,
         contact_duration=table.contact_duration,
     )
-    v.no_dead_contact(surface.ending, surface.restitution)
-    return surface
 
 
 def table_spread(table: TableArgs) -> dict[str, Distribution]:
     """The contact parameters the table options spread over the tosses (distributions only;
     single values are in the surface): :func:`contact_spread` of every one of them. The
-    landing draws them toss by toss (:data:`coinflight.outcomes.table.PER_TOSS`; the rolling
-    and pivoting resistances with --ending contact only, checked by :func:`build_surface` and by
-    the outcome model)."""
+    landing draws them toss by toss (:data:`coinflight.outcomes.table.PER_TOSS`)."""
     given = contact_spread(
         table.restitution,
         table.friction,
@@ -254,8 +232,8 @@ def build_drag(coefficient: float | None, spin_damping: float | None) -> Drag | 
 
 
 def check_bounces(surface: Surface, bounces: int | None) -> None:
-    """--bounces needs a surface kind that takes it (a table), the default ending (it stops a
-    landing before any ending) and a count between 0 and landing.MAX_BOUNCES."""
+    """--bounces needs a surface kind that takes it (a table) and a count between 0 and
+    landing.MAX_BOUNCES."""
     if bounces is None:
         return
     from coinflight.model.surface import surface_kind
@@ -263,11 +241,6 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     kind = surface_kind(surface.kind)
     if "max_bounces" not in kind.takes:
         raise ValueError(f"--bounces {kind.refusal}")
-    if surface.ending == "contact":
-        raise ValueError(
-            "--bounces stops each landing at a bounce, before its ending, so --ending contact "
-            "would do nothing: give one of them"
-        )
     from coinflight.outcomes.table import check_max_bounces
 
     check_max_bounces(bounces, "--bounces")

@@ -12,9 +12,8 @@ The grammar (also in the command's help and the sweeps guide):
   product of their lists of numbers (:func:`~coinflight.queries.values.parse_numbers_list`);
   an sd of 0 is a fixed value;
 - ``--coin``, ``--start``, ``--surface`` take comma-separated names; ``--drop-height``,
-  ``--restitution`` and ``--friction`` lists of numbers, swept for the table rows only;
-  ``--ending`` comma-separated endings (rocking, contact), and ``--rolling-resistance`` and
-  ``--pivoting-resistance`` lists of numbers swept for the contact ending's rows only;
+  ``--restitution``, ``--friction``, ``--rolling-resistance``, ``--pivoting-resistance`` and
+  ``--contact-duration`` lists of numbers, swept for the table rows only;
   ``--corner-radius`` a list of numbers (m) swept over the coins (--surface table only).
 """
 
@@ -129,7 +128,6 @@ class SweepLandings(NamedTuple):
     restitution: str | None = None
     friction: str | None = None
     bounces: int | None = None
-    ending: str | None = None
     rolling_resistance: str | None = None
     pivoting_resistance: str | None = None
     corner_radius: str | None = None
@@ -137,27 +135,28 @@ class SweepLandings(NamedTuple):
 
 
 def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
-    """The outcome models of --surface and the table's lists (swept for the table only; the
-    rolling and pivoting resistances for the contact ending's rows only)."""
+    """The outcome models of --surface and the table's lists (swept for the table only)."""
     from coinflight.outcomes import outcome_model as build_model
     from coinflight.queries.landing import build_surface, check_bounces
 
     kinds = _kinds(landings.surface)
-    bounces, ending = landings.bounces, landings.ending
+    bounces = landings.bounces
     table = {
         flag(k): getattr(landings, k)
-        for k in ("drop_height", "restitution", "friction", "contact_duration")
+        for k in (
+            "drop_height",
+            "restitution",
+            "friction",
+            "contact_duration",
+            "rolling_resistance",
+            "pivoting_resistance",
+        )
     }
-    contact = {flag(k): getattr(landings, k) for k in ("rolling_resistance", "pivoting_resistance")}
-    given = [option for option, text in {**table, "--ending": ending, **contact}.items()
-             if text is not None]  # fmt: skip
+    given = [option for option, text in table.items() if text is not None]
     if given and "table" not in kinds:
         from coinflight.model.surface import TABLE_ONLY
 
         raise ValueError(f"{', '.join(given)} {TABLE_ONLY}")
-    endings = ["rocking"] if ending is None else names(ending, "--ending")
-    resistances = [[None] if text is None else parse_numbers_list(text, option)
-                   for option, text in contact.items()]  # fmt: skip
     models: list[OutcomeModel] = []
     for kind in dict.fromkeys(kinds):
         if kind != "table":
@@ -166,19 +165,13 @@ def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
             continue
         lists = [[None] if text is None else parse_numbers_list(text, option)
                  for option, text in table.items()]  # fmt: skip
-        for the_ending in dict.fromkeys(endings):
-            # the resistances are swept over the contact ending's rows only; without such rows
-            # the rocking rows get them, and the surface refuses them in its words
-            swept = the_ending == "contact" or "contact" not in endings
-            ells = resistances if swept else [[None], [None]]
-            for d, e, mu, t_c, rolling, pivoting in itertools.product(*lists, *ells):
-                surface = build_surface(
-                    "table", d, e, mu, ending=the_ending,
-                    rolling_resistance=rolling, pivoting_resistance=pivoting,
-                    contact_duration=t_c,
-                )  # fmt: skip
-                check_bounces(surface, bounces)
-                models.append(build_model(surface, None, bounces))
+        for d, e, mu, t_c, rolling, pivoting in itertools.product(*lists):
+            surface = build_surface(
+                "table", d, e, mu,
+                rolling_resistance=rolling, pivoting_resistance=pivoting, contact_duration=t_c,
+            )  # fmt: skip
+            check_bounces(surface, bounces)
+            models.append(build_model(surface, None, bounces))
     return models
 
 
@@ -204,16 +197,17 @@ def corner_coins(coins: list[Coin], corner_radius: str | None, surfaces: str) ->
 
 
 def _check_slow(models: list[OutcomeModel], method: str, n: int | None) -> None:
-    """--n must be given when a row reaches the 3-D contact phase (a dead or bounce-limited row
-    never does) and the method has a default size; exact handles the hand only."""
-    from coinflight.outcomes.table import CONTACT_TOSSES_PER_SECOND
+    """--n must be given when a row's landings are carried to rest through the rigid ending (a
+    dead or bounce-limited row's never are) and the method has a default size; exact handles
+    the hand only."""
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
     from coinflight.probability import registry
 
     estimator = registry.get(method)
-    slow = [m for m in models if m.rate <= CONTACT_TOSSES_PER_SECOND]
+    slow = [m for m in models if m.rate <= RIGID_TOSSES_PER_SECOND]
     if slow and n is None and estimator.default_n is not None:
         raise ValueError(
-            f"with --ending contact each landing is carried through the 3-D contact phase "
+            f"on a table each landing is carried to rest through the rigid 3-D ending "
             f"(about {min(m.rate for m in slow):,.0f} tosses per second), so the default size of "
             f"--method {method} would run for about an hour a row; give --n explicitly "
             "(e.g. --n 1000)"

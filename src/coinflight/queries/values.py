@@ -108,7 +108,7 @@ class DistArgs(NamedTuple):
 
 class TableArgs(NamedTuple):
     """Where the toss ends, as typed: --surface and the table's options (None: not given),
-    --surface-preset, then the contact ending's options: --ending, --rolling-resistance,
+    --surface-preset, then the rigid ending's options: --rolling-resistance,
     --pivoting-resistance (texts: a distribution where a probability takes one), the coin's
     --corner-radius (m) and the impact's --contact-duration (s; a text, as the resistances)."""
 
@@ -117,7 +117,6 @@ class TableArgs(NamedTuple):
     restitution: str | None
     friction: str | None
     surface_preset: str | None
-    ending: str | None = None
     rolling_resistance: str | None = None
     pivoting_resistance: str | None = None
     corner_radius: float | None = None

@@ -112,25 +112,17 @@ Restitution = Annotated[
 Friction = Annotated[
     str | None, _q("table: Coulomb friction coefficient 0-3 (probability: also a distribution).")
 ]
-Ending = Annotated[
-    str | None,
-    _q(
-        "table: how a landing ends once its bounces die out: rocking (default; a planar "
-        "hand-off, fast) or contact (the coin in 3-D contact until it cannot leave its well; "
-        "experimental, about 3,000 landings a second on 2 cores). As --ending."
-    ),
-]
 RollingResistance = Annotated[
     str | None,
     _q(
-        "table, ending=contact: rolling resistance length, m, 0 to 0.01 (default 1e-4); not "
+        "table: rolling resistance length of the rigid ending, m, 0 to 0.01 (default 1e-4); not "
         "measured for coins, quote a band over 1e-5 to 1e-3. As --rolling-resistance."
     ),
 ]
 PivotingResistance = Annotated[
     str | None,
     _q(
-        "table, ending=contact: pivoting (drilling) resistance length, m, 0 to 0.01 (default "
+        "table: pivoting (drilling) resistance length of the rigid ending, m, 0 to 0.01 (default "
         "1e-4); not measured for coins, quote a band over 1e-5 to 1e-3. As "
         "--pivoting-resistance."
     ),
@@ -170,7 +162,6 @@ def table_args(
     drop_height: DropHeight = None,
     restitution: Restitution = None,
     friction: Friction = None,
-    ending: Ending = None,
     rolling_resistance: RollingResistance = None,
     pivoting_resistance: PivotingResistance = None,
     corner_radius: CornerRadius = None,
