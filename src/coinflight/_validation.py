@@ -476,23 +476,3 @@ MAX_RUN_SECONDS = 3600.0
 """Longest run a size may ask for, s on the reference 2-core machine: Monte Carlo and QMC
 tosses, table landings, convergence series (the grid keeps its own minute,
 :data:`coinflight.probability.grid.MAX_WORK`)."""
-
-
-DEAD_CONTACT = (
-    "the 3-D contact ending (ending='contact', --ending contact) acts on landings that bounce: "
-    "with restitution 0 (given, or coinflight edge's default) every landing ends dead at its "
-    "first contact and never reaches it; give a restitution above 0 (restitution=, "
-    "--restitution) or drop the ending"
-)
-"""The one refusal of the contact ending on a dead surface (restitution 0), library, command
-line and web alike (:func:`no_dead_contact`)."""
-
-
-def no_dead_contact(ending: str, restitution: float) -> None:
-    """ValueError (:data:`DEAD_CONTACT`) for the contact ending with restitution 0, which no
-    landing would reach. Not a check of the surface itself: a sweep's or a distribution's dead
-    rows are dead landings, allowed; only a request for the contact ending on one surface that
-    is dead is refused (``coinflight toss``, ``probability``, ``basin``, ``edge`` and
-    :func:`coinflight.studies.edge.simulate_edge`)."""
-    if ending == "contact" and restitution == 0.0:
-        raise ValueError(DEAD_CONTACT)

@@ -56,11 +56,8 @@ def edge(
         return
     width = max(13, 2 * len(f"{simulate or 0:,}") + 3)  # "edge / tosses", right-aligned
     header = f"{'h/d':>8}  {'geometric':>9}  {'dynamic':>9}"
-    contact = simulate is not None and setting["ending"] == "contact"
     if simulate is not None:
         header += f"  {'simulated':>9}  {'± s.e.':>7}  {'edge / tosses':>{width}}"
-    if contact:
-        header += f"  {'decided upright':>15}"
     typer.echo(header)
     for row in rows:
         line = f"{row['ratio']:>8g}  {row['p_edge_geometric']:>9.4f}  {row['p_edge_dynamic']:>9.4f}"
@@ -68,15 +65,8 @@ def edge(
             s = row["simulated"]
             count = f"{s['successes']:,} / {s['n']:,}"
             line += f"  {s['p_edge']:>9.4f}  {s['stderr']:>7.4f}  {count:>{width}}"
-            if contact:
-                line += f"  {s['decided_upright']:>15,}"
         typer.echo(line)
     if simulate is not None:
-        if contact:  # the edges predicted, not carried to rest: said apart
-            typer.echo(
-                "decided upright: edges the contact ending's upright decision ended while the "
-                "coin still rolled (a measured predictor of ending on edge, not a proof)"
-            )
         if setting["corner_radius"]:  # rounded rims: said, as the JSON rows say it
             typer.echo(f"corner radius {setting['corner_radius']:g} m")
         typer.echo(f"seed {rows[0]['simulated']['seed']}")

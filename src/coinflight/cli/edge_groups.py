@@ -68,7 +68,7 @@ TargetOption = Annotated[
         rich_help_panel=SIM_PANEL,
         help="Find the ratio h/d at which simulated tosses land on edge with probability P "
         "(1/3 or 0.333: the three-sided coin), with its band over the table's unmeasured "
-        "restitution, friction and (3-D endings) resistances, beside Yong & Mahadevan's "
+        "restitution, friction and (rigid ending) resistances, beside Yong & Mahadevan's "
         "closed forms and the measured rows (coinflight.studies.edge_target).",
     ),
 ]
@@ -107,7 +107,7 @@ Ending = Annotated[
     str | None,
     typer.Option(
         "--ending",
-        metavar="rocking|contact|rigid",
+        metavar="rocking|rigid",
         rich_help_panel=CONTACT_PANEL,
         help=_ONLY + ENDING_HELP + " Only landings that bounce (--restitution > 0) reach it.",
     ),
@@ -118,8 +118,7 @@ RollingResistance = Annotated[
         "--rolling-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + ROLLING_HELP + _BAND + "1e-5–1e-3 m, "
-        "both resistances alike.",
+        _ONLY + "--ending rigid: " + ROLLING_HELP + _BAND + "1e-5–1e-3 m, both resistances alike.",
     ),
 ]
 PivotingResistance = Annotated[
@@ -128,8 +127,7 @@ PivotingResistance = Annotated[
         "--pivoting-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY + "--ending contact or rigid: " + PIVOTING_HELP + _BAND + "1e-5–1e-3 m, "
-        "both resistances alike.",
+        _ONLY + "--ending rigid: " + PIVOTING_HELP + _BAND + "1e-5–1e-3 m, both resistances alike.",
     ),
 ]
 CornerRadius = Annotated[

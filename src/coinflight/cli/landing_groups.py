@@ -91,7 +91,7 @@ TABLE = Group(
                 str | None,
                 option(
                     "--ending",
-                    metavar="rocking|contact|rigid",
+                    metavar="rocking|rigid",
                     panel=CONTACT_PANEL,
                     help=_TABLE + ENDING_HELP,
                 ),
@@ -104,7 +104,7 @@ TABLE = Group(
                 resistance_option(
                     "rolling",
                     "L",
-                    "table, --ending contact or rigid: " + ROLLING_HELP + SPREAD_RESISTANCE,
+                    "table, --ending rigid: " + ROLLING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,
@@ -115,7 +115,7 @@ TABLE = Group(
                 resistance_option(
                     "pivoting",
                     "L",
-                    "table, --ending contact or rigid: " + PIVOTING_HELP + SPREAD_RESISTANCE,
+                    "table, --ending rigid: " + PIVOTING_HELP + SPREAD_RESISTANCE,
                 ),
             ],
             None,

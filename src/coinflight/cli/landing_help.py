@@ -15,12 +15,9 @@ SPREAD = (
 )
 ENDING_HELP = (
     "how a landing ends once its bounces die out. rocking (default): a planar rocking hand-off, "
-    "fast, but it discards the spin and precession. contact: the coin in persistent 3-D contact "
-    "(rolling, sliding, pivoting) until it cannot leave its well; experimental, about 30 "
-    "times slower than rocking, and its edge rates depend on the unmeasured resistances and "
-    "corner radius. rigid: the rigid, event-driven 3-D ending (rolling without slip, exact "
-    "Coulomb sliding, hops flown in closed form, rim impacts, rest on the edge band); about "
-    "200 times slower than rocking."
+    "fast, but it discards the spin and precession. rigid: the rigid, event-driven 3-D ending "
+    "(rolling without slip, exact Coulomb sliding, hops flown in closed form, rim impacts, "
+    "rest on the edge band); about 200 times slower than rocking."
 )
 """--ending's help (command line and sweep)."""
 

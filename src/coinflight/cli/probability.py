@@ -24,7 +24,7 @@ from coinflight.cli.presets import given_toss_options
 from coinflight.cli.progress import progress_bar
 from coinflight.probability import registry
 from coinflight.queries.landing import describe_for
-from coinflight.queries.probability import result_notes, result_warnings
+from coinflight.queries.probability import result_warnings
 
 if TYPE_CHECKING:
     from coinflight.model.ensemble import TossDistribution
@@ -156,8 +156,6 @@ def _report(
     if landing is not None and landing.model.can_end_on_edge:
         line += f", P(edge) = {result.p_edge:.6g}"
     typer.echo(line)
-    for note in result_notes(result):
-        typer.echo(note)
     for warning in result_warnings(result):
         typer.echo(f"warning: {warning}")
     typer.echo(_method_line(result))

@@ -102,7 +102,7 @@ LANDINGS = Group(
         ),
         "ending": _surface_option(
             "--ending",
-            "rocking,contact",
+            "rocking,rigid",
             "table, comma-separated endings: " + ENDING_HELP,
             panel=CONTACT_PANEL,
         ),
@@ -110,7 +110,7 @@ LANDINGS = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "rolling", "LIST", "table, contact ending rows: lengths ℓ_r, " + ROLLING_TAIL
+                    "rolling", "LIST", "table, rigid ending rows: lengths ℓ_r, " + ROLLING_TAIL
                 ),
             ],
             None,
@@ -119,7 +119,7 @@ LANDINGS = Group(
             Annotated[
                 str | None,
                 resistance_option(
-                    "pivoting", "LIST", "table, contact ending rows: lengths ℓ_p, " + PIVOTING_TAIL
+                    "pivoting", "LIST", "table, rigid ending rows: lengths ℓ_p, " + PIVOTING_TAIL
                 ),
             ],
             None,

@@ -24,19 +24,17 @@ potential barrier between a face and its edge, m g sqrt(r² + h²/4), the height
 of mass when balanced on the corner of rim and face (m g (a + sqrt((r − a)² + (h/2 − a)²))
 over a corner rounded to radius a) (Vulović & Prange 1986; Yong & Mahadevan
 2011; REFERENCES §4-5): with the rocking ending, when the energy that can turn it over
-(:func:`coinflight.core.flight.tumbling_energy`) is below it; with the contact ending, when
+(:func:`coinflight.core.flight.tumbling_energy`) is below it; with the rigid ending, when
 its whole energy (:func:`coinflight.core.flight.mechanical_energy`) is, which is rigorous, as
 no impact or contact force adds energy (:func:`coinflight.core.impact.impact` is tested for
 it). Its outcome is then the well it is in (:func:`coinflight.core.impact.resting_face`).
 When the bounces die out instead (a rebound slower than ``rest_speed``: the coin chatters on
 one rim point while it tips), the end is chosen by the record's ``ending`` flag
 (:class:`coinflight.model.surface.Surface` ``ending``): by default the planar rocking of
-:func:`rock` (status SETTLED_ROCKING), or, experimental, the coin carried on in persistent
-contact, in 3-D, by :func:`coinflight.core.contact_phase.settle` (rolling, sliding, pivoting
-and rocking on its rim, with Coulomb friction and rolling and pivoting resistance) until it
-cannot leave its well (status SETTLED_CONTACT, or DECIDED_UPRIGHT for a coin rolling upright
-that :func:`coinflight.core.contact_phase.upright_decided` ends on edge, a measured predictor;
-slow, and its edge rates are not yet credible: see :mod:`coinflight.core.contact_phase`).
+:func:`rock` (status SETTLED_ROCKING), or the coin carried on in 3-D by the rigid,
+event-driven ending of :func:`coinflight.core.rigid_ending.settle` (rolling, sliding and
+rocking on its rim or its band, with Coulomb friction and rolling and pivoting resistance)
+until it cannot leave its well (status SETTLED_CONTACT).
 With e = 0 the surface absorbs the coin at its first contact and the well it touches in is the
 outcome, as in Yong & Mahadevan's model of a landing without bounce.
 
@@ -49,7 +47,7 @@ flights in closed form, :func:`fly`; after the bounces, what the ending follows,
 Every part of a landing meets the same rim: the cylinder (r − a, h/2 − a) swept by a ball of
 the corner radius a (``Contact.corner_radius``; :func:`coinflight.core.impact.lowest_depth`):
 the flight's contact search, the impacts, the barrier and the edge angle of the wells, the
-contact phase and the rocking of :func:`rock`. With a = 0 (sharp corners) each is, to the bit,
+rigid ending and the rocking of :func:`rock`. With a = 0 (sharp corners) each is, to the bit,
 what it was before it took a.
 """
 
@@ -63,8 +61,7 @@ from numpy.typing import NDArray
 
 from coinflight.core import rigid_ending
 from coinflight.core._jit import njit, prange
-from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
-from coinflight.core.contact_phase import settle
+from coinflight.core.contact import RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.flight import (
     CA_TOLERANCE,
     GRAZE_SKIP,
@@ -97,8 +94,8 @@ REST_SPEED = 0.01
 def rock(n, omega, c):
     """Face the coin ends on when it rocks on its corners in the plane in which it tips.
 
-    The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the experimental
-    alternative is :func:`coinflight.core.contact_phase.settle`.
+    The default end of :func:`land` (and of :mod:`coinflight.core.drag`); the 3-D alternative
+    is :func:`coinflight.core.rigid_ending.settle`.
 
     Parameters
     ----------
@@ -392,7 +389,7 @@ def after_impact(z, v, lm, n, rebound, c):
 def impact_verdict(z, v, lm, n, rebound, c):
     """(face, status) after an impact, in this order:
 
-    * the coin is trapped in its well: with the 3-D contact ending, its whole energy
+    * the coin is trapped in its well: with the rigid 3-D ending, its whole energy
       (:func:`coinflight.core.flight.mechanical_energy`, rigorous: nothing adds energy
       afterwards) is below the barrier of ``c.barrier``; with the rocking ending, its
       tumbling energy (:func:`coinflight.core.flight.tumbling_energy`) is (status
@@ -402,7 +399,7 @@ def impact_verdict(z, v, lm, n, rebound, c):
       :func:`died_out`;
     * else the coin flies on: status −1, face −1.
     """
-    if c.ending != ROCKING_ENDING:  # the 3-D endings (contact, rigid)
+    if c.ending != ROCKING_ENDING:  # the rigid 3-D ending
         free = mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, z)
     else:
         free = tumbling_energy(v, lm, n, c.mass, c.i1, c.g, z)
@@ -418,11 +415,9 @@ def impact_verdict(z, v, lm, n, rebound, c):
 @njit(cache=True)
 def died_out(z, v, n, lm, c):
     """The end of a landing whose bounces died out: (face, status, duration, s), by
-    ``c.ending``: the 3-D contact phase (:func:`coinflight.core.contact_phase.settle`,
-    SETTLED_CONTACT, DECIDED_UPRIGHT or UNSETTLED, its duration) or the planar rocking of
-    :func:`rock` (SETTLED_ROCKING, 0)."""
-    if c.ending == CONTACT_ENDING:
-        return settle(z, v, n, lm, c)
+    ``c.ending``: the rigid 3-D ending (:func:`coinflight.core.rigid_ending.settle`,
+    SETTLED_CONTACT or UNSETTLED, its duration) or the planar rocking of :func:`rock`
+    (SETTLED_ROCKING, 0)."""
     if c.ending == RIGID_ENDING:
         return rigid_ending.settle(z, v, n, lm, c)
     omega = angular_velocity(lm, n, c.i1, c.i3)
@@ -466,10 +461,10 @@ def ending_states(t, z, xy, v, n, lm, status, c, times, k, states):
     first time not followed, the latest time the ending follows, s).
 
     The hook through which an ending that follows the coin in time hands :func:`follow` its
-    motion (any status: a coin trapped in its well still moves). Neither of today's endings
-    does (the rocking hand-off decides the face from the state alone; the contact phase keeps
-    no trajectory), so nothing after t is followed: (k, t). The rigid ending does
-    (:func:`coinflight.core.rigid_ending.states`), to the time it settled or gave up.
+    motion (any status: a coin trapped in its well still moves). The rocking ending does not
+    (its hand-off decides the face from the state alone), so nothing after t is followed:
+    (k, t). The rigid ending does (:func:`coinflight.core.rigid_ending.states`), to the time
+    it settled or gave up.
     """
     if c.ending == RIGID_ENDING and (
         status == Status.SETTLED_CONTACT or status == Status.UNSETTLED
@@ -568,9 +563,7 @@ def with_surface(
 ):
     """The contact record ``c`` with this toss's restitution, friction, rolling and pivoting
     resistance and contact duration (the other fields as they are): a per-toss surface for
-    distributions of what is not measured. The damping ratio of the
-    contact phase stays that of the surface's e, with ``damping_restitution`` telling
-    :func:`coinflight.core.contact_phase.settle` to recompute it for another e."""
+    distributions of what is not measured."""
     return Contact(
         c.radius,
         c.half_thickness,
@@ -587,9 +580,6 @@ def with_surface(
         c.barrier,
         rolling_resistance,
         pivoting_resistance,
-        c.contact_time,
-        c.damping_ratio,
-        c.damping_restitution,
         c.ending,
         c.corner_radius,
         contact_duration,
@@ -679,7 +669,7 @@ def land(
         Each toss's own coefficient of restitution and of friction (distributions of what is
         not measured); by default the contact's single values.
     rolling_resistance, pivoting_resistance : ndarray, shape (n,), optional
-        Each toss's own rolling and pivoting resistance, m (used by the contact ending only);
+        Each toss's own rolling and pivoting resistance, m (used by the rigid ending only);
         by default the contact's single values.
     contact_duration : ndarray, shape (n,), optional
         Each toss's own contact duration t_c of an impact, s (when two rim points strike as

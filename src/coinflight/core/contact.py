@@ -10,15 +10,12 @@ barrier) are computed there, once, for every kernel.
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 from typing import NamedTuple
 
 from coinflight.core.impact import CONTACT_DURATION
 
 ROCKING_ENDING = 0.0
 """``Contact.ending`` of the default end of a landing: the planar rocking hand-off."""
-CONTACT_ENDING = 1.0
-"""``Contact.ending`` of the experimental end of a landing: the 3-D contact phase."""
 RIGID_ENDING = 2.0
 """``Contact.ending`` of the rigid, event-driven end of a landing
 (:func:`coinflight.core.rigid_ending.settle`)."""
@@ -56,30 +53,20 @@ class Contact(NamedTuple):
     rolling_resistance, pivoting_resistance : float
         Lengths ℓ_r, ℓ_p ≥ 0 of the rolling and pivoting (drilling) resistance of the coin's rim
         on the surface, m: torques ℓ F_n against the horizontal and the vertical part of the
-        angular velocity in contact (:mod:`coinflight.core.contact_phase`).
-    contact_time : float
-        t_c > 0, the duration of a flat contact of the compliant contact model, s: its
-        stiffness (:mod:`coinflight.core.contact_phase`).
-    damping_ratio : float
-        ζ of the contact model's damping, set from ``restitution`` by
-        :func:`coinflight.core.contact_phase.damping_ratio` (−1: not set).
-    damping_restitution : float
-        The restitution ``damping_ratio`` was set for (the contact phase recomputes ζ when the
-        record's ``restitution`` differs, e.g. a per-toss value).
+        angular velocity in contact, regularised below a slow spin
+        (:mod:`coinflight.core.rigid_contact`; only the rigid ending has them).
     ending : float
         How a landing ends once the bounces die out: :data:`ROCKING_ENDING` (0, the planar
         rocking hand-off of :func:`coinflight.core.bounce.rock`, the default) or
-        :data:`CONTACT_ENDING` (1, the experimental 3-D contact phase of
-        :func:`coinflight.core.contact_phase.settle`) or :data:`RIGID_ENDING` (2, the rigid,
-        event-driven ending of :func:`coinflight.core.rigid_ending.settle`); a float so the
-        record stays all floats.
+        :data:`RIGID_ENDING` (2, the rigid, event-driven ending of
+        :func:`coinflight.core.rigid_ending.settle`); a float so the record stays all floats.
     corner_radius : float
         a ≥ 0, the radius of the rounded corners of the coin's rim, m
         (:attr:`coinflight.model.coin.Coin.corner_radius`): the coin is a cylinder of radius
         r − a and half-thickness h/2 − a swept by a ball of radius a. ``barrier`` and
         ``edge_sine`` are the rounded coin's wells' (m g (a + ρ′) and (h/2 − a)/ρ′,
-        ρ′ = sqrt((r − a)² + (h/2 − a)²)). So the corner radius reaches: the contact phase
-        (:func:`coinflight.core.contact_phase.settle`, which touches the table with the rounded
+        ρ′ = sqrt((r − a)² + (h/2 − a)²)). So the corner radius reaches: the rigid ending
+        (:func:`coinflight.core.rigid_ending.settle`, which touches the table with the rounded
         rim); the end of every landing through these two fields
         (:func:`coinflight.core.bounce.after_impact`'s energy test and every
         :func:`coinflight.core.impact.resting_face`, with or without air); the impact law
@@ -94,8 +81,7 @@ class Contact(NamedTuple):
         parameter of the surface, not measured for coins:
         :data:`coinflight.core.impact.CONTACT_DURATION`, the default, gives its source): a
         second rim point meeting the table within it makes one simultaneous impact
-        (:func:`coinflight.core.impact.simultaneous_point`), with or without air. Not the
-        compliant model's ``contact_time``, a numerical softness of the contact ending.
+        (:func:`coinflight.core.impact.simultaneous_point`), with or without air.
     """
 
     radius: float
@@ -113,9 +99,6 @@ class Contact(NamedTuple):
     barrier: float
     rolling_resistance: float = 0.0
     pivoting_resistance: float = 0.0
-    contact_time: float = 1e-3
-    damping_ratio: float = -1.0
-    damping_restitution: float = -1.0
     ending: float = ROCKING_ENDING
     corner_radius: float = 0.0
     contact_duration: float = CONTACT_DURATION
@@ -136,7 +119,6 @@ class Contact(NamedTuple):
         rest_speed: float,
         rolling_resistance: float = 0.0,
         pivoting_resistance: float = 0.0,
-        contact_time: float | None = None,
         ending: float = ROCKING_ENDING,
         corner_radius: float = 0.0,
         contact_duration: float | None = None,
@@ -144,17 +126,12 @@ class Contact(NamedTuple):
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
         No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
-        :class:`~coinflight.model.surface.Surface`) has checked every value. ``contact_time``
-        defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
-        the contact model is computed here, once (numba). ``ending`` is :data:`ROCKING_ENDING`
-        or :data:`CONTACT_ENDING` (:class:`~coinflight.model.surface.Surface` ``ending``).
+        :class:`~coinflight.model.surface.Surface`) has checked every value. ``ending`` is
+        :data:`ROCKING_ENDING` or :data:`RIGID_ENDING`
+        (:class:`~coinflight.model.surface.Surface` ``ending``).
         ``contact_duration`` (the impact's t_c) defaults to
         :data:`coinflight.core.impact.CONTACT_DURATION`.
         """
-        from coinflight.core import contact_phase
-
-        if contact_time is None:
-            contact_time = contact_phase.CONTACT_TIME
         if contact_duration is None:
             contact_duration = CONTACT_DURATION
         hh = 0.5 * float(thickness)
@@ -179,20 +156,10 @@ class Contact(NamedTuple):
             barrier=float(mass) * float(g) * (a + inner),
             rolling_resistance=float(rolling_resistance),
             pivoting_resistance=float(pivoting_resistance),
-            contact_time=float(contact_time),
-            damping_ratio=_damping_ratio(float(restitution)),
-            damping_restitution=float(restitution),
             ending=float(ending),
             corner_radius=a,
             contact_duration=float(contact_duration),
         )
 
 
-@lru_cache(maxsize=256)
-def _damping_ratio(restitution: float) -> float:
-    from coinflight.core import contact_phase
-
-    return float(contact_phase.damping_ratio(restitution))
-
-
-__all__ = ["CONTACT_ENDING", "RIGID_ENDING", "ROCKING_ENDING", "Contact"]
+__all__ = ["RIGID_ENDING", "ROCKING_ENDING", "Contact"]

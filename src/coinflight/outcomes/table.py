@@ -62,29 +62,12 @@ rocking hand-off), for the work bounds: vigorous nickel tosses, e = 0.5, μ = 0.
 of a busy 2-core machine (a quiet one runs about five times as many; ``python
 benchmarks/bench_bounce.py`` measures it), so that an estimated time is never too short."""
 
-CONTACT_TOSSES_PER_SECOND = 150.0
-"""Drag-free table landings carried to rest a second with the experimental 3-D contact phase
-(``Surface(ending="contact")``, e > 0), all on one surface, for the work bounds: vigorous
-nickel tosses, e = 0.5, μ = 0.3, on 2 threads of a busy 2-core machine (a quiet one runs about
-five times as many; ``python benchmarks/bench_bounce.py --contact-rates N``)."""
-
 RIGID_TOSSES_PER_SECOND = 70.0
 """Table landings carried to rest a second with the rigid ending (``Surface(ending="rigid")``,
 e > 0), drag-free or through air, for the work bounds: US nickel, e = 0.5, μ = 0.3,
 resistances 1e-4 m, on 2 threads of a busy 2-core machine, about half what it measures there
 (``python benchmarks/bench_bounce.py --rigid-rates N``: human and vigorous tosses; the coins
 roll for a median 1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
-
-CONTACT_PER_TOSS_PER_SECOND = 75.0
-"""The same landings when every toss has its own contact parameters (a distribution of e, μ
-or the resistances, drawn toss by toss: each landing then builds its own contact record and
-the contact phase its damping), for the work bounds: about half of
-:data:`CONTACT_TOSSES_PER_SECOND` (``python benchmarks/bench_bounce.py --contact-rates N``)."""
-
-CONTACT_AIR_LANDINGS_PER_SECOND = 150.0
-"""Table landings through air carried to rest a second with the 3-D contact ending (0.8 m drop,
-e = 0.5, μ = 0.3, C_d = 1.17, vigorous nickel tosses, 2 threads of a busy 2-core machine), for
-the work bounds."""
 
 AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air carried to rest a second (0.8 m drop, e = 0.5, μ = 0.3,
@@ -109,23 +92,15 @@ PER_TOSS = (
 )
 """The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
 ``restitution``, ``friction``, ``rolling_resistance``, ``pivoting_resistance`` and
-``contact_duration`` arrays; the resistances act in the 3-D endings only, :data:`RESISTANCES`;
+``contact_duration`` arrays; the resistances act in the rigid ending only, :data:`RESISTANCES`;
 the contact duration of an impact, with every ending)."""
 
 RESISTANCES = ("rolling_resistance", "pivoting_resistance")
-"""The contact parameters only the 3-D endings (``Surface(ending="contact")`` and
-``Surface(ending="rigid")``) use."""
+"""The contact parameters only the rigid 3-D ending (``Surface(ending="rigid")``) uses."""
 
 NO_RESISTANCE_DISTRIBUTIONS = ROCKING_HAS_NO_RESISTANCE
 """The refusal of per-toss rolling and pivoting resistances with the rocking ending (one line,
 CLI and library): the surface's own wording for a single one."""
-
-
-DECIDED_UPRIGHT_TALLY = "decided_upright"
-"""The tally (:attr:`TableLanding.tallies`, the estimators' ``details``) of the tosses the
-contact ending ended on edge by its upright decision (status DECIDED_UPRIGHT,
-:class:`coinflight.core.outcome.Status`: a measured predictor, not a proof); counted in the
-edge count as well. Only with ``Surface(ending="contact")``, the one ending that decides so."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,12 +117,9 @@ class LandingOutcome:
         Time of the first contact with the surface since launch, s.
     settle_time : ndarray
         Time since launch at which the landing ended, s: the last impact for the bounce and
-        rocking endings; for the contact ending, the time the outcome was decided (the coin at
-        rest or its energy below its well's barrier, status "settled in contact"; or a coin
-        rolling upright in its edge band decided on edge by
-        :func:`coinflight.core.contact_phase.upright_decided`, which may still roll at up to
-        about 1 m/s then, status "decided upright"); for an unsettled toss, when it was
-        stopped.
+        rocking endings; for the rigid ending, the time the outcome was decided (the coin at
+        rest or its energy below its well's barrier, status "settled in contact"); for an
+        unsettled toss, when it was stopped.
     status : ndarray of int8
         Why the landing ended (:class:`coinflight.core.outcome.Status`; its names
         :data:`~coinflight.core.outcome.STATUS_NAMES`).
@@ -193,15 +165,15 @@ def contact_record(
     """The coin, the surface and gravity as every landing kernel reads them, built once.
 
     The :class:`coinflight.core.contact.Contact` record of ``coin`` (radius, thickness, mass,
-    moments, corner radius) on ``surface`` (drop height, e, μ, resistances, contact time,
-    ending, the impact's contact duration) under gravity ``g``, m/s²; ``rest_speed`` (m/s)
+    moments, corner radius) on ``surface`` (drop height, e, μ, resistances, ending, the
+    impact's contact duration) under gravity ``g``, m/s²; ``rest_speed`` (m/s)
     defaults to :data:`coinflight.core.bounce.REST_SPEED`. Nothing is checked here beyond
     what ``Coin`` and ``Surface`` checked on construction (``g`` is the caller's).
     """
     from coinflight.core import bounce
-    from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
+    from coinflight.core.contact import RIGID_ENDING, ROCKING_ENDING, Contact
 
-    endings = {"rocking": ROCKING_ENDING, "contact": CONTACT_ENDING, "rigid": RIGID_ENDING}
+    endings = {"rocking": ROCKING_ENDING, "rigid": RIGID_ENDING}
 
     return Contact.build(
         **coin_body(coin),
@@ -212,7 +184,6 @@ def contact_record(
         rest_speed=bounce.REST_SPEED if rest_speed is None else rest_speed,
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
-        contact_time=surface.contact_time,
         ending=endings[surface.ending],
         corner_radius=coin.corner_radius,
         contact_duration=surface.contact_duration,
@@ -642,9 +613,7 @@ class TableLanding(OutcomeModel):
 
     Plugs into :func:`coinflight.probability.estimate` (``model=TableLanding(surface)``);
     counts (tails, heads, edge) and, as extra tallies, the tosses that had not settled when the
-    simulation stopped (counted by the face they showed then) and, with the contact ending, the
-    tosses it ended on edge by its upright decision (:data:`DECIDED_UPRIGHT_TALLY`, counted as
-    edge too).
+    simulation stopped (counted by the face they showed then).
     """
 
     name = "table landing"
@@ -654,20 +623,17 @@ class TableLanding(OutcomeModel):
 
     @property
     def tallies(self) -> tuple[str, ...]:  # type: ignore[override]
-        """``("unsettled",)``, and ``"decided_upright"`` (:data:`DECIDED_UPRIGHT_TALLY`) with the
-        contact ending: the estimators report each in ``details`` (count and fraction)."""
-        if self.surface.ending == "contact":
-            return ("unsettled", DECIDED_UPRIGHT_TALLY)
+        """``("unsettled",)``: the estimators report it in ``details`` (count and fraction)."""
         return ("unsettled",)
 
     @property
     def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
         """Restitution, friction and the contact duration may vary toss by toss, and with the
-        3-D endings the rolling and pivoting resistances too (:data:`PER_TOSS`); none through
+        rigid ending the rolling and pivoting resistances too (:data:`PER_TOSS`); none through
         air (not yet: :attr:`contact_refusal`)."""
         if self.drag is not None:
             return ()
-        if self.surface.ending != "rocking":  # the 3-D endings take the resistances
+        if self.surface.ending != "rocking":  # the rigid ending takes the resistances
             return PER_TOSS
         return tuple(name for name in PER_TOSS if name not in RESISTANCES)
 
@@ -680,34 +646,14 @@ class TableLanding(OutcomeModel):
     @property
     def rate(self) -> float:  # type: ignore[override]
         """Tosses a second for the work bounds: :data:`BOUNCING_TOSSES_PER_SECOND`, or with
-        air drag :data:`AIR_LANDINGS_PER_SECOND`; with the experimental ``ending="contact"``
-        (landings carried to rest: e > 0, no bounce limit) :data:`CONTACT_TOSSES_PER_SECOND`,
-        through air :data:`CONTACT_AIR_LANDINGS_PER_SECOND`; with ``ending="rigid"``
-        :data:`RIGID_TOSSES_PER_SECOND`."""
+        air drag :data:`AIR_LANDINGS_PER_SECOND`; with ``ending="rigid"`` (landings carried to
+        rest: e > 0, no bounce limit) :data:`RIGID_TOSSES_PER_SECOND`."""
         ended = self.surface.restitution > 0.0 and self.max_bounces is None
         if ended and self.surface.ending == "rigid":
             return RIGID_TOSSES_PER_SECOND
-        contact = self.surface.ending == "contact" and ended
-        if contact:
-            return (
-                CONTACT_TOSSES_PER_SECOND if self.drag is None else CONTACT_AIR_LANDINGS_PER_SECOND
-            )
         if self.drag is not None:
             return AIR_LANDINGS_PER_SECOND
         return BOUNCING_TOSSES_PER_SECOND
-
-    def rate_for(self, dist: TossDistribution | None) -> float:
-        """:attr:`rate`, or :data:`CONTACT_PER_TOSS_PER_SECOND` for contact-ending landings
-        whose tosses bring their own contact parameters (``dist.contact``, drawn toss by toss:
-        about half as fast), unless every toss lands dead (e = 0 for all)."""
-        spread = {} if dist is None else dist.contact
-        if not spread or self.drag is not None:  # (air takes no distributions)
-            return self.rate
-        e = spread.get("restitution")
-        bounces = self.surface.restitution > 0.0 if e is None else e.bounds[1] > 0.0
-        if self.surface.ending == "contact" and self.max_bounces is None and bounces:
-            return CONTACT_PER_TOSS_PER_SECOND
-        return self.rate
 
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None
@@ -739,7 +685,7 @@ class TableLanding(OutcomeModel):
         return out.face.reshape(shape)
 
     def count(self, dist: TossDistribution, u: FloatArray) -> NDArray[np.int64]:
-        """(tails, heads, edge, unsettled[, decided upright]) counts for unit-cube points
+        """(tails, heads, edge, unsettled) counts for unit-cube points
         ``u``, (len(ranged), n): :attr:`tallies`."""
         omega, t = initial_conditions(dist, u)
         out = land(
@@ -755,18 +701,15 @@ class TableLanding(OutcomeModel):
             contact=dist.contact_values(u) if dist.contact else None,
         )
         faces = np.bincount(out.face, minlength=3).astype(np.int64)
-        tallies = [np.count_nonzero(out.status == Status.UNSETTLED)]
-        if self.surface.ending == "contact":
-            tallies.append(np.count_nonzero(out.status == Status.DECIDED_UPRIGHT))
-        return np.append(faces, tallies)
+        return np.append(faces, np.count_nonzero(out.status == Status.UNSETTLED))
 
     def describe(
         self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
     ) -> str:
         """One line: the table, its contact parameters and the air. ``contact`` gives
         distributions in place of the surface's values (the tosses' own, drawn toss by toss:
-        :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The experimental contact
-        ending is named, with its resistances, a contact duration of an impact other than the
+        :attr:`~coinflight.model.ensemble.TossDistribution.contact`). The rigid ending is
+        named, with its resistances, a contact duration of an impact other than the
         default (:data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`) or spread, and a
         rounded rim when ``corner_radius`` (the coin's, m) is not 0."""
         s = self.surface
@@ -797,7 +740,7 @@ class TableLanding(OutcomeModel):
         self, contact: Mapping[str, Distribution] | None = None, corner_radius: float = 0.0
     ) -> dict[str, Any]:
         """JSON settings; ``contact``'s distributions, if any, as objects (``{"kind":
-        "uniform", ...}``) in place of the surface's numbers. The contact ending, its
+        "uniform", ...}``) in place of the surface's numbers. The rigid ending, its
         resistances (m), the impact's ``contact_duration`` (s) and the coin's rim
         ``corner_radius`` (m) are reported when not the defaults (the rocking ending,
         :data:`coinflight.model.surface.DEFAULT_CONTACT_DURATION`, sharp corners), so that
@@ -818,7 +761,7 @@ class TableLanding(OutcomeModel):
         }
         if self.max_bounces is not None:
             out["max_bounces"] = self.max_bounces
-        if s.ending != "rocking":  # the experimental ending, reported; the default unchanged
+        if s.ending != "rocking":  # the rigid ending, reported; the default unchanged
             out["ending"] = s.ending
             out["rolling_resistance"] = value("rolling_resistance")
             out["pivoting_resistance"] = value("pivoting_resistance")
@@ -840,10 +783,6 @@ def _duration_shown(surface: Surface, spread: Mapping[str, Distribution]) -> boo
 __all__ = [
     "AIR_LANDINGS_PER_SECOND",
     "BOUNCING_TOSSES_PER_SECOND",
-    "CONTACT_AIR_LANDINGS_PER_SECOND",
-    "CONTACT_PER_TOSS_PER_SECOND",
-    "CONTACT_TOSSES_PER_SECOND",
-    "DECIDED_UPRIGHT_TALLY",
     "MAX_BOUNCES",
     "NO_RESISTANCE_DISTRIBUTIONS",
     "PER_TOSS",

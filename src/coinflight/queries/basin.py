@@ -67,7 +67,7 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
 MAP_SECONDS = 60.0
 """Longest map of table landings a command asks for, s of estimated work at the outcome
 model's rate (a minute, as the grid method's: a 500×500 map at the rocking ending's 20,000
-landings a second is 12.5 s; with the 3-D contact ending, 150 a second, 9,000 cells). The
+landings a second is 12.5 s; with the rigid 3-D ending, 70 a second, 4,200 cells). The
 library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
 waits for its figure or its page gets a minute."""
 
@@ -108,7 +108,7 @@ def basin_query(
             n_t * n_w / outcome["outcome"].rate,
             MAP_SECONDS,
             "s of work",
-            "use a coarser resolution (e.g. 100x100 with --ending contact)",
+            "use a coarser resolution (e.g. 60x60 with --ending rigid)",
         )
     return basin_map(
         landing_coin(coin, table),

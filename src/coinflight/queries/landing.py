@@ -8,7 +8,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from coinflight import _validation as v
 from coinflight.queries.values import AirArgs, TableArgs
 
 if TYPE_CHECKING:
@@ -125,7 +124,7 @@ def build_surface(
     --contact-duration must be single numbers, and --surface-preset (ranges) is refused,
     unless ``ranged`` (the command then reads their distributions with :func:`contact_spread`
     and passes them with the tosses; the surface keeps its defaults for them). --ending is
-    rocking (default) or contact; the two resistances apply to --ending contact only (the
+    rocking (default) or rigid; the two resistances apply to --ending rigid only (the
     surface refuses them with the rocking ending, in its words). ``corner_radius`` (the
     coin's, applied by :func:`landing_coin`) is only checked here to belong to a table.
     """
@@ -191,11 +190,8 @@ def build_surface(
 
 
 def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
-    """:func:`build_surface` for the table options as typed (every one of them); ValueError
-    (:data:`coinflight._validation.DEAD_CONTACT`) for the contact ending on a dead surface,
-    which it would never reach (a sweep's grid may hold such a row: it is then a dead
-    landing)."""
-    surface = build_surface(
+    """:func:`build_surface` for the table options as typed (every one of them)."""
+    return build_surface(
         table.surface,
         table.drop_height,
         table.restitution,
@@ -208,15 +204,13 @@ def surface_from(table: TableArgs, ranged: bool = False) -> Surface:
         corner_radius=table.corner_radius,
         contact_duration=table.contact_duration,
     )
-    v.no_dead_contact(surface.ending, surface.restitution)
-    return surface
 
 
 def table_spread(table: TableArgs) -> dict[str, Distribution]:
     """The contact parameters the table options spread over the tosses (distributions only;
     single values are in the surface): :func:`contact_spread` of every one of them. The
     landing draws them toss by toss (:data:`coinflight.outcomes.table.PER_TOSS`; the rolling
-    and pivoting resistances with --ending contact only, checked by :func:`build_surface` and by
+    and pivoting resistances with --ending rigid only, checked by :func:`build_surface` and by
     the outcome model)."""
     given = contact_spread(
         table.restitution,
@@ -263,11 +257,6 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     kind = surface_kind(surface.kind)
     if "max_bounces" not in kind.takes:
         raise ValueError(f"--bounces {kind.refusal}")
-    if surface.ending == "contact":
-        raise ValueError(
-            "--bounces stops each landing at a bounce, before its ending, so --ending contact "
-            "would do nothing: give one of them"
-        )
     from coinflight.outcomes.table import check_max_bounces
 
     check_max_bounces(bounces, "--bounces")

@@ -238,22 +238,8 @@ def result_warnings(result: Any) -> list[str]:
     ]
 
 
-def result_notes(result: Any) -> list[str]:
-    """What the text output says beside the result: the tosses the contact ending ended on
-    edge by its upright decision (``details["decided_upright"]``, status "decided upright"),
-    when there are any; the JSON carries the count and fraction in ``details``."""
-    decided = _share(result, "decided_upright")
-    if not decided:
-        return []
-    return [
-        f"decided upright: {decided} were ended on edge by the contact ending's upright "
-        "decision while still rolling (status 'decided upright', a measured predictor of "
-        "ending on edge, not a proof); they are counted in P(edge)"
-    ]
-
-
 _DRAG_DEFAULT_SECONDS = 60.0
-"""With air or the contact ending, the default size must run within this many seconds, else
+"""With air, the default size must run within this many seconds, else
 --n must be given."""
 _SLOW_NEEDS_N = (
     "with {why} (about {rate} tosses per second), so the default size of --method {method} "
@@ -262,9 +248,7 @@ _SLOW_NEEDS_N = (
 
 
 def _slow_landing(landing: LandingChoice) -> str:
-    """Why each toss of ``landing`` is slow (air, the 3-D contact ending), or "" if not."""
-    if landing.surface.ending == "contact":
-        return "--ending contact each landing is carried through the 3-D contact phase"
+    """Why each toss of ``landing`` is slow (air), or "" if not."""
     if landing.drag is not None:
         return "--drag each toss is integrated through air"
     return ""
@@ -302,7 +286,6 @@ __all__ = [
     "preset_tosses",
     "probability_payload",
     "probability_query",
-    "result_notes",
     "result_warnings",
     "run",
 ]

@@ -13,8 +13,8 @@ The grammar (also in the command's help and the sweeps guide):
   an sd of 0 is a fixed value;
 - ``--coin``, ``--start``, ``--surface`` take comma-separated names; ``--drop-height``,
   ``--restitution`` and ``--friction`` lists of numbers, swept for the table rows only;
-  ``--ending`` comma-separated endings (rocking, contact), and ``--rolling-resistance`` and
-  ``--pivoting-resistance`` lists of numbers swept for the contact ending's rows only;
+  ``--ending`` comma-separated endings (rocking, rigid), and ``--rolling-resistance`` and
+  ``--pivoting-resistance`` lists of numbers swept for the rigid ending's rows only;
   ``--corner-radius`` a list of numbers (m) swept over the coins (--surface table only).
 """
 
@@ -138,7 +138,7 @@ class SweepLandings(NamedTuple):
 
 def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
     """The outcome models of --surface and the table's lists (swept for the table only; the
-    rolling and pivoting resistances for the contact ending's rows only)."""
+    rolling and pivoting resistances for the rigid ending's rows only)."""
     from coinflight.outcomes import outcome_model as build_model
     from coinflight.queries.landing import build_surface, check_bounces
 
@@ -167,9 +167,9 @@ def outcome_models(landings: SweepLandings) -> list[OutcomeModel]:
         lists = [[None] if text is None else parse_numbers_list(text, option)
                  for option, text in table.items()]  # fmt: skip
         for the_ending in dict.fromkeys(endings):
-            # the resistances are swept over the contact ending's rows only; without such rows
+            # the resistances are swept over the rigid ending's rows only; without such rows
             # the rocking rows get them, and the surface refuses them in its words
-            swept = the_ending == "contact" or "contact" not in endings
+            swept = the_ending == "rigid" or "rigid" not in endings
             ells = resistances if swept else [[None], [None]]
             for d, e, mu, t_c, rolling, pivoting in itertools.product(*lists, *ells):
                 surface = build_surface(
@@ -204,16 +204,16 @@ def corner_coins(coins: list[Coin], corner_radius: str | None, surfaces: str) ->
 
 
 def _check_slow(models: list[OutcomeModel], method: str, n: int | None) -> None:
-    """--n must be given when a row reaches the 3-D contact phase (a dead or bounce-limited row
+    """--n must be given when a row reaches the rigid 3-D ending (a dead or bounce-limited row
     never does) and the method has a default size; exact handles the hand only."""
-    from coinflight.outcomes.table import CONTACT_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
     from coinflight.probability import registry
 
     estimator = registry.get(method)
-    slow = [m for m in models if m.rate <= CONTACT_TOSSES_PER_SECOND]
+    slow = [m for m in models if m.rate <= RIGID_TOSSES_PER_SECOND]
     if slow and n is None and estimator.default_n is not None:
         raise ValueError(
-            f"with --ending contact each landing is carried through the 3-D contact phase "
+            f"with --ending rigid each landing is carried through the rigid 3-D ending "
             f"(about {min(m.rate for m in slow):,.0f} tosses per second), so the default size of "
             f"--method {method} would run for about an hour a row; give --n explicitly "
             "(e.g. --n 1000)"

@@ -114,16 +114,9 @@ def landing_line(out: LandingOutcome) -> str:
         )
     start = f"lands on the table at t = {first:.4f} s, bounces {bounces} times and ends {face}"
     if status == "settled in contact":
-        # The contact ending's time is the decision's: at rest or below the barrier.
+        # The rigid ending's time is the decision's: at rest or below the barrier.
         return (
             f"{start} (decided at t = {settle:.4f} s: at rest or below its well's barrier; "
-            f"{status})"
-        )
-    if status == "decided upright":
-        # An upright roller ended on edge by contact_phase.upright_decided, still rolling.
-        return (
-            f"{start} (decided at t = {settle:.4f} s while rolling upright in its edge band, by "
-            "the upright decision: a measured predictor of ending on edge, not a proof; "
             f"{status})"
         )
     return f"{start} (at t = {settle:.4f} s; {status})"

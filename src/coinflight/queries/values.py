@@ -108,7 +108,7 @@ class DistArgs(NamedTuple):
 
 class TableArgs(NamedTuple):
     """Where the toss ends, as typed: --surface and the table's options (None: not given),
-    --surface-preset, then the contact ending's options: --ending, --rolling-resistance,
+    --surface-preset, then the 3-D ending's options: --ending, --rolling-resistance,
     --pivoting-resistance (texts: a distribution where a probability takes one), the coin's
     --corner-radius (m) and the impact's --contact-duration (s; a text, as the resistances)."""
 

@@ -116,21 +116,21 @@ Ending = Annotated[
     str | None,
     _q(
         "table: how a landing ends once its bounces die out: rocking (default; a planar "
-        "hand-off, fast) or contact (the coin in 3-D contact until it cannot leave its well; "
-        "experimental, about 3,000 landings a second on 2 cores). As --ending."
+        "hand-off, fast) or rigid (the rigid, event-driven 3-D ending until the coin cannot "
+        "leave its well; about 200 times slower). As --ending."
     ),
 ]
 RollingResistance = Annotated[
     str | None,
     _q(
-        "table, ending=contact: rolling resistance length, m, 0 to 0.01 (default 1e-4); not "
+        "table, ending=rigid: rolling resistance length, m, 0 to 0.01 (default 1e-4); not "
         "measured for coins, quote a band over 1e-5 to 1e-3. As --rolling-resistance."
     ),
 ]
 PivotingResistance = Annotated[
     str | None,
     _q(
-        "table, ending=contact: pivoting (drilling) resistance length, m, 0 to 0.01 (default "
+        "table, ending=rigid: pivoting (drilling) resistance length, m, 0 to 0.01 (default "
         "1e-4); not measured for coins, quote a band over 1e-5 to 1e-3. As "
         "--pivoting-resistance."
     ),
