@@ -1,8 +1,8 @@
 """A coin's kernel records for the tests of core's landing and air kernels: the contact record
 through the library's :func:`coinflight.outcomes.table.contact_record` (as every landing builds
 it), ``Air.build``'s keyword list filled from a :class:`coinflight.Coin` once, here, and the
-contact phase's state y = (z, v, n, L) of a coin touching the table (one builder for the tests
-of the contact phase, its friction and the benchmarks' face predictors)."""
+contact state y = (z, v, n, L) of a coin touching the table (one builder for the tests of the
+rigid ending's contact and the benchmarks' face predictors)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ import numpy as np
 
 from coinflight import Coin
 from coinflight.core import bounce, drag
-from coinflight.core.contact import CONTACT_ENDING, RIGID_ENDING, ROCKING_ENDING, Contact
+from coinflight.core.contact import RIGID_ENDING, ROCKING_ENDING, Contact
 from coinflight.core.impact import lowest_depth
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record
@@ -32,19 +32,15 @@ def coin_contact(
     rest_speed: float = bounce.REST_SPEED,
     rolling_resistance: float = 0.0,
     pivoting_resistance: float = 0.0,
-    contact_time: float = 1e-3,
     ending: float = ROCKING_ENDING,
     corner_radius: float | None = None,
 ) -> Contact:
     """The contact record of ``coin`` on a table with these values (``ending`` the kernel's
-    code, :data:`~coinflight.core.contact.ROCKING_ENDING`,
-    :data:`~coinflight.core.contact.CONTACT_ENDING` or
+    code, :data:`~coinflight.core.contact.ROCKING_ENDING` or
     :data:`~coinflight.core.contact.RIGID_ENDING`; ``corner_radius``, when given, replaces
     the coin's), built by :func:`coinflight.outcomes.table.contact_record`."""
-    if ending not in (ROCKING_ENDING, CONTACT_ENDING, RIGID_ENDING):
-        raise ValueError(
-            f"ending must be ROCKING_ENDING, CONTACT_ENDING or RIGID_ENDING, got {ending}"
-        )
+    if ending not in (ROCKING_ENDING, RIGID_ENDING):
+        raise ValueError(f"ending must be ROCKING_ENDING or RIGID_ENDING, got {ending}")
     if corner_radius is not None:
         coin = coin.with_corner_radius(corner_radius)
     surface = Surface(
@@ -54,8 +50,7 @@ def coin_contact(
         friction,
         rolling_resistance,
         pivoting_resistance,
-        contact_time=contact_time,
-        ending="contact",  # the rocking Surface refuses resistances: the code is set below
+        ending="rigid",  # the rocking Surface refuses resistances: the code is set below
     )
     return contact_record(coin, surface, g, rest_speed=rest_speed)._replace(ending=float(ending))
 

@@ -25,7 +25,6 @@ from typing import Any
 KERNEL_MODULES = {
     "coinflight.core.band_contact": ("the table landing's", 20),
     "coinflight.core.bounce": ("the table landing's", 20),
-    "coinflight.core.contact_phase": ("the table landing's", 20),
     "coinflight.core.impact": ("the table landing's", 20),
     "coinflight.core.rigid_contact": ("the table landing's", 20),
     "coinflight.core.rigid_ending": ("the table landing's", 20),

@@ -68,7 +68,7 @@ TargetOption = Annotated[
         rich_help_panel=SIM_PANEL,
         help="Find the ratio h/d at which simulated tosses land on edge with probability P "
         "(1/3 or 0.333: the three-sided coin), with its band over the table's unmeasured "
-        "restitution, friction and (3-D endings) resistances, beside Yong & Mahadevan's "
+        "restitution, friction and (rigid ending) resistances, beside Yong & Mahadevan's "
         "closed forms and the measured rows (coinflight.studies.edge_target).",
     ),
 ]

@@ -90,7 +90,7 @@ import numpy as np
 from coinflight.core import dormand_prince as dp
 from coinflight.core import rigid_contact as rc
 from coinflight.core._jit import njit
-from coinflight.core.contact_phase import (
+from coinflight.core.flight import (
     SLIP_SPEED,
 )
 from coinflight.core.impact import angular_velocity, lowest_depth

@@ -425,9 +425,7 @@ def with_surface(
 ):
     """The contact record ``c`` with this toss's restitution, friction, rolling and pivoting
     resistance and contact duration (the other fields as they are): a per-toss surface for
-    distributions of what is not measured. The damping ratio of the
-    contact phase stays that of the surface's e, with ``damping_restitution`` telling
-    :func:`coinflight.core.contact_phase.settle` to recompute it for another e."""
+    distributions of what is not measured."""
     return Contact(
         c.radius,
         c.half_thickness,
@@ -444,9 +442,6 @@ def with_surface(
         c.barrier,
         rolling_resistance,
         pivoting_resistance,
-        c.contact_time,
-        c.damping_ratio,
-        c.damping_restitution,
         c.corner_radius,
         contact_duration,
     )

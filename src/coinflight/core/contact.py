@@ -10,7 +10,6 @@ barrier) are computed there, once, for every kernel.
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 from typing import NamedTuple
 
 from coinflight.core.impact import CONTACT_DURATION
@@ -48,16 +47,8 @@ class Contact(NamedTuple):
     rolling_resistance, pivoting_resistance : float
         Lengths ℓ_r, ℓ_p ≥ 0 of the rolling and pivoting (drilling) resistance of the coin's rim
         on the surface, m: torques ℓ F_n against the horizontal and the vertical part of the
-        angular velocity in contact (:mod:`coinflight.core.contact_phase`).
-    contact_time : float
-        t_c > 0, the duration of a flat contact of the compliant contact model, s: its
-        stiffness (:mod:`coinflight.core.contact_phase`).
-    damping_ratio : float
-        ζ of the contact model's damping, set from ``restitution`` by
-        :func:`coinflight.core.contact_phase.damping_ratio` (−1: not set).
-    damping_restitution : float
-        The restitution ``damping_ratio`` was set for (the contact phase recomputes ζ when the
-        record's ``restitution`` differs, e.g. a per-toss value).
+        angular velocity in contact, regularised below a slow spin
+        (:mod:`coinflight.core.rigid_contact`).
     corner_radius : float
         a ≥ 0, the radius of the rounded corners of the coin's rim, m
         (:attr:`coinflight.model.coin.Coin.corner_radius`): the coin is a cylinder of radius
@@ -78,8 +69,7 @@ class Contact(NamedTuple):
         parameter of the surface, not measured for coins:
         :data:`coinflight.core.impact.CONTACT_DURATION`, the default, gives its source): a
         second rim point meeting the table within it makes one simultaneous impact
-        (:func:`coinflight.core.impact.simultaneous_point`), with or without air. Not the
-        compliant model's ``contact_time``, a numerical softness of the contact ending.
+        (:func:`coinflight.core.impact.simultaneous_point`), with or without air.
     """
 
     radius: float
@@ -97,9 +87,6 @@ class Contact(NamedTuple):
     barrier: float
     rolling_resistance: float = 0.0
     pivoting_resistance: float = 0.0
-    contact_time: float = 1e-3
-    damping_ratio: float = -1.0
-    damping_restitution: float = -1.0
     corner_radius: float = 0.0
     contact_duration: float = CONTACT_DURATION
 
@@ -119,23 +106,16 @@ class Contact(NamedTuple):
         rest_speed: float,
         rolling_resistance: float = 0.0,
         pivoting_resistance: float = 0.0,
-        contact_time: float | None = None,
         corner_radius: float = 0.0,
         contact_duration: float | None = None,
     ) -> Contact:
         """The record for a coin of ``thickness`` h (m); the derived fields computed here.
 
         No validation: the value layer (:class:`~coinflight.model.coin.Coin`,
-        :class:`~coinflight.model.surface.Surface`) has checked every value. ``contact_time``
-        defaults to :data:`coinflight.core.contact_phase.CONTACT_TIME`; the damping ratio of
-        the contact model is computed here, once (numba).
+        :class:`~coinflight.model.surface.Surface`) has checked every value.
         ``contact_duration`` (the impact's t_c) defaults to
         :data:`coinflight.core.impact.CONTACT_DURATION`.
         """
-        from coinflight.core import contact_phase
-
-        if contact_time is None:
-            contact_time = contact_phase.CONTACT_TIME
         if contact_duration is None:
             contact_duration = CONTACT_DURATION
         hh = 0.5 * float(thickness)
@@ -160,19 +140,9 @@ class Contact(NamedTuple):
             barrier=float(mass) * float(g) * (a + inner),
             rolling_resistance=float(rolling_resistance),
             pivoting_resistance=float(pivoting_resistance),
-            contact_time=float(contact_time),
-            damping_ratio=_damping_ratio(float(restitution)),
-            damping_restitution=float(restitution),
             corner_radius=a,
             contact_duration=float(contact_duration),
         )
-
-
-@lru_cache(maxsize=256)
-def _damping_ratio(restitution: float) -> float:
-    from coinflight.core import contact_phase
-
-    return float(contact_phase.damping_ratio(restitution))
 
 
 __all__ = ["Contact"]

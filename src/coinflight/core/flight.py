@@ -40,6 +40,11 @@ GAP_TOLERANCE = 1e-13
 """Newton stops within this distance of the surface, m."""
 GRAZE_SKIP = 1e-6
 """After a graze (closest approach within CA_TOLERANCE, no impact), fly on from this time, s."""
+SLIP_SPEED = 5e-3
+"""v_ε, m/s: the speed below which the rolling and pivoting resistance of the rigid ending's
+contacts (:mod:`coinflight.core.rigid_contact`, :mod:`coinflight.core.band_contact`) are
+regularised, as torques ∝ ω / sqrt(ω² + ω_ε²) with ω_ε = v_ε / r (the rim moving at v_ε;
+0.47 rad/s for a nickel)."""
 
 
 @njit(cache=True)
@@ -82,6 +87,65 @@ def mechanical_energy(v, angular_momentum, n, mass, i1, i3, g, z):
     """
     omega = angular_velocity(angular_momentum, n, i1, i3)
     return 0.5 * mass * dot(v, v) + 0.5 * dot(angular_momentum, omega) + mass * g * z
+
+
+@njit(cache=True, inline="always")
+def _motion_energy(y, c):
+    """:func:`mechanical_energy` of a contact state y = (z, v, n, L) (lab frame, SI) with the
+    contact record ``c`` (:class:`coinflight.core.contact.Contact`): ½ m v² + ½ L·ω + m g z, J."""
+    v = (y[1], y[2], y[3])
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    return mechanical_energy(v, lm, n, c.mass, c.i1, c.i3, c.g, y[0])
+
+
+@njit(cache=True, inline="always")
+def _dissipative(c):
+    """Whether anything dissipates the coin's energy in contact but the impacts (friction or a
+    rolling or pivoting resistance)."""
+    return c.friction > 0.0 or c.rolling_resistance > 0.0 or c.pivoting_resistance > 0.0
+
+
+@njit(cache=True, inline="always")
+def _motion_free_energy(y, c):
+    """(e, f): :func:`_motion_energy` of y and its part that can lift the coin over the barrier
+    of its well (:func:`_barrier`): all of it with friction or resistances, else less the
+    horizontal kinetic energy (conserved, not free). Used by
+    :func:`coinflight.core.rigid_contact.below_barrier`."""
+    e = _motion_energy(y, c)
+    if _dissipative(c):
+        return e, e
+    return e, e - 0.5 * c.mass * (y[1] * y[1] + y[2] * y[2])
+
+
+@njit(cache=True)
+def _corner_energy(ln, lz, nz, c):
+    """Least energy of the coin balanced on a corner at n_z = nz with L·n = ln and L_z = lz, J:
+    the barrier m g ρ plus the least rotational energy with those L·n and L_z there,
+    (L·n)²/2I3 + (L_z − (L·n) n_z)² / (2 I1 (1 − n_z²))."""
+    return c.barrier + 0.5 * ln * ln / c.i3 + 0.5 * (lz - ln * nz) ** 2 / (c.i1 * (1.0 - nz * nz))
+
+
+@njit(cache=True, inline="always")
+def _barrier(y, c):
+    """The barrier of the well the coin of state y is in, J, which no force of a contact can
+    lift it over once its free energy (:func:`_motion_free_energy`) is below it: with friction
+    or resistances m g ρ (``c.barrier``: Vulović & Prange 1986), as nothing but the impacts and
+    those forces act and none of them adds energy; frictionless and without resistances, the
+    horizontal momentum, L_z and L·n are conserved, so the least energy on the corners of the
+    well (n_z = ±sin(edge)) at the conserved L·n, L_z (:func:`_corner_energy`; the nearer
+    corner's for a face, the lower of the two on the edge)."""
+    if _dissipative(c):
+        return c.barrier
+    ln = y[4] * y[7] + y[5] * y[8] + y[6] * y[9]
+    lz = y[9]
+    nz = y[6]
+    corner = c.edge_sine
+    up = _corner_energy(ln, lz, corner, c)
+    down = _corner_energy(ln, lz, -corner, c)
+    if abs(nz) < corner:
+        return min(up, down)
+    return up if nz > 0.0 else down
 
 
 @njit(cache=True)
@@ -236,6 +300,7 @@ __all__ = [
     "CA_TOLERANCE",
     "GAP_TOLERANCE",
     "GRAZE_SKIP",
+    "SLIP_SPEED",
     "mechanical_energy",
     "next_contact",
     "precess",

@@ -28,7 +28,11 @@ class Face(IntEnum):
 
 
 class Status(IntEnum):
-    """Why a landing on a surface ended (``status`` arrays of the landing kernels)."""
+    """Why a landing on a surface ended (``status`` arrays of the landing kernels).
+
+    The values are the codes of the outputs (``status`` in JSON and arrays); 6 is no longer
+    used (it was the upright decision of a 3-D ending since removed), nor is 4
+    (:attr:`SETTLED_ROCKING`)."""
 
     SETTLED_ENERGY = 0
     """Energy below the face/edge barrier: the outcome is certain."""
@@ -44,22 +48,14 @@ class Status(IntEnum):
     landing reports it now (the rigid ending, :attr:`SETTLED_CONTACT`, replaced it); the code
     keeps its integer so that saved outputs read the same."""
     SETTLED_CONTACT = 5
-    """The bounces died out; the coin then rolled, slid, pivoted, hopped and rocked in contact
-    with the surface, in 3-D (the rigid ending of :mod:`coinflight.core.rigid_ending`), until
-    it was at rest or its energy could no longer take it out of its well."""
-    DECIDED_UPRIGHT = 6
-    """The bounces died out; the coin then rolled in contact with the surface in 3-D (as
-    :attr:`SETTLED_CONTACT`) until it rolled upright in its edge band within the limits of
-    :func:`coinflight.core.contact_phase.upright_decided`, and was ended there on edge. That
-    decision is a predictor of ending on edge, checked by carrying the same coins on to rest
-    (:mod:`coinflight.core.contact_phase`, "Upright rollers"), not a proof: the coin
-    may still be rolling then (at up to about 1 m/s), and its settle time is the decision's."""
+    """The bounces died out; the coin then rolled, slid, pivoted and rocked in contact with the
+    surface, in 3-D (the rigid ending of :mod:`coinflight.core.rigid_ending`), until it was at
+    rest or its energy could no longer take it out of its well."""
 
     @property
     def label(self) -> str:
         """What reports print: ``"settled"``, ``"landed dead"``, ``"bounce limit"``,
-        ``"unsettled"``, ``"settled rocking"``, ``"settled in contact"`` or
-        ``"decided upright"``."""
+        ``"unsettled"``, ``"settled rocking"`` or ``"settled in contact"``."""
         return _STATUS_LABELS[self]
 
 
@@ -70,7 +66,6 @@ _STATUS_LABELS = {
     Status.UNSETTLED: "unsettled",
     Status.SETTLED_ROCKING: "settled rocking",
     Status.SETTLED_CONTACT: "settled in contact",
-    Status.DECIDED_UPRIGHT: "decided upright",
 }
 
 TAILS = Face.TAILS
@@ -79,8 +74,8 @@ EDGE = Face.EDGE
 FACE_NAMES = tuple(face.label for face in Face)
 """("tails", "heads", "edge"), indexed by face code."""
 STATUS_NAMES = tuple(status.label for status in Status)
-"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking", "settled in contact",
-"decided upright"), by status code."""
+"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking", "settled in contact"),
+by status code."""
 
 
 def same_side(alignment: ArrayLike) -> NDArray[np.bool_]:

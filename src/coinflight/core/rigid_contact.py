@@ -125,7 +125,7 @@ import numpy as np
 
 from coinflight.core import dormand_prince as dp
 from coinflight.core._jit import njit
-from coinflight.core.contact_phase import (
+from coinflight.core.flight import (
     SLIP_SPEED,
     _barrier,
     _motion_energy,

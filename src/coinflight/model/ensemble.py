@@ -45,9 +45,8 @@ CONTACT = (
     "contact_duration",
 )
 """Contact parameters a distribution of tosses may spread (table landings); when set they
-replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`): the
-rolling and pivoting resistances with the 3-D contact ending only, the only one they act in
-(:attr:`coinflight.outcomes.table.TableLanding.contact_parameters`)."""
+replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`;
+:attr:`coinflight.outcomes.table.TableLanding.contact_parameters`)."""
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
 # below anything an estimate can resolve, so such draws can never occur in practice.
@@ -85,11 +84,10 @@ class TossDistribution:
         Only table landings take them (the estimators refuse them for other outcome models).
     rolling_resistance, pivoting_resistance : Distribution or float, keyword only
         The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of
-        the 3-D contact ending, drawn toss by toss with that ending; the rocking ending, which
-        has no resistance, refuses a distribution of them (one line) rather than ignore it.
+        the rigid ending, drawn toss by toss.
     contact_duration : Distribution or float, keyword only
         The same for the contact duration t_c of an impact (s, in [1 μs, 10 ms],
-        :data:`coinflight.model.surface.CONTACT_DURATION`), with every ending.
+        :data:`coinflight.model.surface.CONTACT_DURATION`).
 
     Notes
     -----

@@ -30,19 +30,9 @@ for wood on metal, clean and dry (Engineering ToolBox); not measured for coins."
 
 MAX_FRICTION = 3.0
 """Largest Coulomb friction coefficient μ a surface takes, far above what a coin meets (0.2-0.6,
-metal on wood: :data:`DEFAULT_FRICTION`). The limit is the step budget of the contact ending,
-not the physics: the contact phase integrates at most ``MAX_STEPS`` (400,000) steps, and its
-upright decision (``core.contact_phase.upright_decided``) takes each step left to cover
-``BUDGET_STEP`` (0.1 ms), while an upright roller's mean step falls as 1/μ (its regularised
-friction's time constant m v_ε / (μ F_n)): 0.966, 0.337, 0.113, 0.034 ms at μ 0.3, 1, 3, 10
-(207, 593, 1,765, 5,875 steps per 0.2 s of upright rolling; a nickel rolling at 0.3 m/s,
-e 0.5, resistances 1e-4 m). At μ 3 the step still covers BUDGET_STEP, so
-a roller decided upright, carried on undecided, settles (tests/test_contact_friction.py); at
-μ 10 rollers decided upright at 0.9-2 m/s run out of steps carried on (UNSETTLED), so the
-decision would turn unsettled tosses into decided ones. Raising the cap needs BUDGET_STEP
-scaled with that 1/μ step. Up to it the landing models are validated (tests/test_impact.py's
-impact-law properties and the contact phase's energy, friction-cone and upright-roller tests
-draw μ up to it). Far beyond, the impact law's cone |P_t| ≤ μ P_n can no longer be told from
+metal on wood: :data:`DEFAULT_FRICTION`): the range the landing models are validated over
+(tests/test_impact.py's impact-law properties draw μ up to it), not a physical limit. Far
+beyond, the impact law's cone |P_t| ≤ μ P_n can no longer be told from
 the rounding of P_n (μ ≳ 1e11), and near the largest float μ P_n overflows (the contact point
 left moving into the table)."""
 
@@ -53,9 +43,9 @@ for a coin (REFERENCES §5); 1e-4 m is MuJoCo's default rolling friction (XML re
 sinking into a varnish or a cloth)."""
 
 DEFAULT_PIVOTING_RESISTANCE = 1e-4
-"""Pivoting (drilling) resistance ℓ_p of a coin's rim on a table, m, beyond the Coulomb friction
-spread over the contact arc: an assumption, as the rolling resistance (band 1e-5 to 1e-3 m;
-MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
+"""Pivoting (drilling) resistance ℓ_p of a coin's rim on a table, m (the rigid ending's contact
+is a point, with no drilling friction of its own): an assumption, as the rolling resistance
+(band 1e-5 to 1e-3 m; MuJoCo's default torsional friction, 5e-3 m, is half a coin's radius)."""
 
 DEFAULT_CONTACT_DURATION = 1e-4
 """Contact duration t_c of one impact of a coin's rim on a table, s: how far apart in time two
@@ -68,7 +58,7 @@ contact time, Johnson 1985 §11.4, for a coin's rim on wood 5e-5 to 3e-4 s, on s
 TABLE_ONLY = (
     "applies to --surface table only (Surface(kind='table') in Python), not to a catch in the "
     "hand (--surface hand, the default): the hand catches the coin at the launch height, with "
-    "no bounce, rocking or contact phase"
+    "no bounce or ending"
 )
 """The one refusal of a table's option given to a catch in the hand, after what was given
 (``--restitution applies to …`` on the command line, ``drop height 0.8 m, restitution 0.5
@@ -184,9 +174,6 @@ shorter than the stiffest table's (and a positive t_c keeps the simultaneous imp
 the sequential rigid law and its falling-rod paradox), 10 ms thirty times longer than the
 softest's (beyond it, the fall the simultaneous impact leaves out over t_c, g t_c² / 2 ≈ 0.5
 mm at 10 ms, is a quarter of a coin's thickness)."""
-CONTACT_TIME = v.Quantity("contact time", "s", 1e-5, 1e-2)
-"""t_c of the compliant contact (:mod:`coinflight.core.contact_phase`): 10 μs to 10 ms (shorter
-steps cost time in proportion; longer would let the coin sink by g (t_c/π)² ≈ 0.1 mm)."""
 
 
 DROP_HEIGHT = v.Quantity("drop height", "m", 0.0, 1e3)
@@ -248,10 +235,6 @@ class Surface:
         ``Surface("table", rolling_resistance=1e-4)``, yet ``dataclasses.replace(...,
         kind="hand")`` accepts the first (its resistances are defaults) and refuses the second
         (a resistance given).
-    contact_time : float
-        Duration t_c of a flat contact in the compliant model of the last phase, s (a numerical
-        softness, 10 μs to 10 ms; default :data:`coinflight.core.contact_phase.CONTACT_TIME`).
-        Used only with ``ending="contact"``.
     contact_duration : float
         t_c of one impact of the coin's rim on the table, s (1 μs to 10 ms,
         :data:`CONTACT_DURATION`; default :data:`DEFAULT_CONTACT_DURATION`, Hertz's contact
@@ -289,7 +272,6 @@ class Surface:
     friction: float = _UNSET_FRICTION
     rolling_resistance: float = _UNSET_ROLLING
     pivoting_resistance: float = _UNSET_PIVOTING
-    contact_time: float = 1e-3
     contact_duration: float = _UNSET_DURATION
 
     def __post_init__(self) -> None:
@@ -313,7 +295,6 @@ class Surface:
             if not isinstance(getattr(self, name), _Unset):  # given: kept as a plain float
                 object.__setattr__(self, name, checked)
                 given[name] = f"{name} {checked:g}"
-        object.__setattr__(self, "contact_time", CONTACT_TIME.check(self.contact_time))
         duration = CONTACT_DURATION.check(self.contact_duration)  # a default too
         if not isinstance(self.contact_duration, _Unset):  # given: kept as a plain float
             object.__setattr__(self, "contact_duration", duration)
@@ -339,9 +320,9 @@ class Surface:
         :func:`dataclasses.replace`), no more.
 
         >>> Surface("hand")
-        Surface(kind='hand', contact_time=0.001)
+        Surface(kind='hand')
         >>> Surface("table", 0.8, friction=0.2)
-        Surface(kind='table', drop_height=0.8, friction=0.2, contact_time=0.001)
+        Surface(kind='table', drop_height=0.8, friction=0.2)
         """
         given = (
             f"{field.name}={getattr(self, field.name)!r}"

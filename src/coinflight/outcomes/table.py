@@ -176,7 +176,6 @@ def contact_record(
         rest_speed=bounce.REST_SPEED if rest_speed is None else rest_speed,
         rolling_resistance=surface.rolling_resistance,
         pivoting_resistance=surface.pivoting_resistance,
-        contact_time=surface.contact_time,
         corner_radius=coin.corner_radius,
         contact_duration=surface.contact_duration,
     )

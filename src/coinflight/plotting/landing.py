@@ -243,17 +243,16 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
 
 def plot_mujoco(c: MujocoComparison) -> Figure:
     """P(tails, heads, edge) of the same tosses in coinflight and MuJoCo, at the first contact
-    and at rest (bars, ±2 s.e.); at rest, coinflight with each of its endings (rocking, and
-    the 3-D contact ending when it ran)."""
+    and at rest (bars, ±2 s.e.; coinflight with its default, rocking, ending)."""
     fig = new_figure(figsize=(9.0, 4.2))
     axes = fig.subplots(1, 2, sharey=True)
     names = ("tails", "heads", "edge")
     colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
     Series = list[tuple[NDArray[np.int8], str | None, str]]
-    at_rest: Series = [(c.rocking.rest, None, "coinflight, rocking ending")]
-    if c.contact is not None:
-        at_rest.append((c.contact.rest, "..", "coinflight, 3-D contact ending"))
-    at_rest.append((c.mujoco_rest, "//", "MuJoCo"))
+    at_rest: Series = [
+        (c.rocking.rest, None, "coinflight, rocking ending"),
+        (c.mujoco_rest, "//", "MuJoCo"),
+    ]
     first: Series = [(c.first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]
     panels: tuple[tuple[str, Series], ...] = (("first contact", first), ("at rest", at_rest))
     for ax, (title, series) in zip(axes, panels, strict=True):
@@ -279,15 +278,9 @@ def plot_mujoco(c: MujocoComparison) -> Figure:
     top = max(float(np.max(c.fractions(f))) for _, series in panels for f, _, _ in series)
     axes[0].set_ylim(0.0, 1.3 * top + 0.02)  # shared: room for the legends above the bars
     axes[0].set_ylabel("fraction of tosses (±2 s.e.)")
-    resist = (
-        ""
-        if c.contact is None
-        else f"\ncontact ending ℓ_r = {c.contact.rolling_resistance:g} m, ℓ_p = "
-        f"{c.contact.pivoting_resistance:g} m (MuJoCo's rolling, torsional friction)"
-    )
     fig.suptitle(
         f"{c.n:,} identical tosses (seed {c.seed}), e = {c.restitution:g}, μ = "
-        f"{c.friction:g}; bars left to right as in the legends{resist}",
+        f"{c.friction:g}; bars left to right as in the legends",
         fontsize="small",
     )
     return fig

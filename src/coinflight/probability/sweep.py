@@ -302,8 +302,8 @@ class SweepResults(ProbabilityResults):
         dimensions, the outcome model's fields (``surface``, ``restitution``, …), the row's
         ``stream`` (seeded methods) and ``key``. ``p_edge`` is empty where the surface cannot
         leave a coin on its edge (the hand). Of the method's details only the outcome model's
-        tallies are kept (:attr:`coinflight.outcomes.base.OutcomeModel.tallies`: ``unsettled``,
-        with the contact ending ``decided_upright``, each with its ``_fraction``), as columns
+        tallies are kept (:attr:`coinflight.outcomes.base.OutcomeModel.tallies`: ``unsettled``
+        with its ``_fraction``), as columns
         of their own, empty in the table for rows whose model has none."""
         rows = []
         seeded = registry.get(self.method).seeded

@@ -74,21 +74,14 @@ class Sizes:
     """The same: tosses with the four drawn toss by toss, per preset."""
     mujoco: int = 10_000
     """Identical tosses in coinflight and MuJoCo (0: skip)."""
-    mujoco_edges: int = 1_000
-    """Vigorous tosses (axial spin) of the edge check in both engines, per (e, μ) of
-    :data:`coinflight.studies.landing.EDGE_PAIRS` (0: skip; skipped too with ``mujoco`` 0;
-    MuJoCo with RK4)."""
     experiments: int = 20_000
     """Thick cylinders against experiments: rocking-ending tosses per cell of each measured
     point's box (0: skip the section)."""
-    experiments_contact: int = 500
-    """The same with the 3-D contact ending, per cell (corners and centre; 0: rocking only)."""
     experiments_points: int = 3
     """Values per unmeasured parameter of the rocking ending's box (2: corners and centre)."""
     experiments_rigid: int = 100
-    """The same with the rigid 3-D ending, per cell (corners and centre; 0: none). The human
-    tosses' section lands its wobbling cylinders with the rocking and rigid endings only: a
-    wobbling cylinder rolls on its rim for long at low resistance, slow in both 3-D endings."""
+    """The same with the rigid 3-D ending, per cell (corners and centre; 0: none), in both
+    sections (planar and human tosses)."""
 
     def to_dict(self) -> dict[str, int]:
         from dataclasses import asdict
@@ -108,9 +101,7 @@ QUICK = Sizes(
     rigid_band=4,
     rigid_band_integrated=8,
     mujoco=4,
-    mujoco_edges=4,
     experiments=400,
-    experiments_contact=4,
     experiments_points=2,
     experiments_rigid=4,
 )
@@ -131,7 +122,6 @@ class LandingReport:
     files: tuple[Path, ...]
     timings: dict[str, float] = field(default_factory=dict)
     bouncing: study.BouncingEdges | None = None
-    edges: study.EdgeCheck | None = None
     experiments: EdgeExperiments | None = None
     experiments_left: tuple[str, ...] = ()
     experiments_human: EdgeExperiments | None = None
@@ -196,7 +186,6 @@ class LandingReport:
             "nickel_rigid": None if self.rigid is None else _rigid_numbers(self.rigid),
             "mujoco": None if self.mujoco is None else _mujoco_numbers(self.mujoco),
             "mujoco_note": self.mujoco_note,
-            "mujoco_edges": None if self.edges is None else _edge_numbers(self.edges),
             "edge_experiments": None
             if self.experiments is None
             else {**self.experiments.to_dict(), "left_out": list(self.experiments_left)},
@@ -262,7 +251,6 @@ def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
 
 
 def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str, Any]:
-    contact = run.ending == "contact"  # only it has the upright decision and the resistances
     return {
         "ending": run.ending,
         "rest": c.fractions(run.rest).tolist(),
@@ -270,12 +258,8 @@ def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str
         "rest_agreement": c.agreement(run),
         "unsettled": run.unsettled,
         "ended_at_impact": run.at_impact,
-        "decided_upright": run.decided_upright if contact else None,
-        "decided_upright_fraction": run.decided_upright / c.n if contact else None,
         "seconds": run.seconds,
         "speed_ratio": c.ratio(run),
-        "rolling_resistance": run.rolling_resistance if contact else None,
-        "pivoting_resistance": run.pivoting_resistance if contact else None,
     }
 
 
@@ -312,51 +296,6 @@ def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
         "mujoco_rest_stderr": c.stderrs(c.mujoco_rest).tolist(),
         "endings": [_ending_numbers(c, run) for run in c.endings],
         "settings": c.settings,
-    }
-
-
-def _edge_numbers(check: study.EdgeCheck) -> dict[str, Any]:
-    cells = []
-    for cell in check.cells:
-        r = cell.mujoco
-        h = cell.handed
-        both, ours, theirs = cell.edges
-        cells.append(
-            {
-                "restitution": cell.restitution,
-                "friction": cell.friction,
-                "handed": int(h.sum()),
-                "coinflight_rest": [x.tolist() for x in cell.fractions(cell.coinflight.rest)],
-                "coinflight_rest_handed": [
-                    x.tolist() for x in cell.fractions(cell.coinflight.rest, h)
-                ],
-                "mujoco_rest": [x.tolist() for x in cell.fractions(r.rest)],
-                "mujoco_rest_handed": [x.tolist() for x in cell.fractions(r.rest, h)],
-                "mujoco_rest_settled_only": [x.tolist() for x in cell.fractions(r.rest, ~r.moving)],
-                "mujoco_moving": r.unsettled,
-                "mujoco_moving_on_edge": int(np.count_nonzero(r.moving & (r.rest == 2))),
-                "coinflight_unsettled": cell.coinflight.unsettled,
-                "coinflight_decided_upright": cell.coinflight.decided_upright,
-                "edges_both_coinflight_only_mujoco_only": [both, ours, theirs],
-                "first_agreement": cell.first_agreement,
-                "rest_agreement": cell.rest_agreement,
-                "mujoco_upright_seconds": _quartiles(r.edge_time[r.edge_time > 0]),
-                "mujoco_time_to_rest_edges": _quartiles(r.rest_time[(r.rest == 2) & ~r.moving]),
-                "mujoco_seconds": r.elapsed,
-                "mujoco_steps": r.steps,
-                "coinflight_seconds": cell.coinflight.seconds,
-                "settings": r.settings(cell.friction),
-            }
-        )
-    return {
-        "tosses": check.tosses,
-        "n": check.n,
-        "seed": check.seed,
-        "rolling_resistance": check.rolling_resistance,
-        "pivoting_resistance": check.pivoting_resistance,
-        "settle_limit": check.limit,
-        "integrator": check.integrator,
-        "cells": cells,
     }
 
 
@@ -448,9 +387,6 @@ def landing_report(
     else:
         mujoco = timed("MuJoCo", lambda: study.mujoco_comparison(sizes.mujoco, seed))
         note = ""
-    edges: study.EdgeCheck | None = None
-    if mujoco is not None and sizes.mujoco_edges > 0:  # MuJoCo installed and asked for
-        edges = timed("edges in both engines", lambda: study.edge_check(sizes.mujoco_edges, seed))
     experiments: EdgeExperiments | None = None
     human: EdgeExperiments | None = None
     left: tuple[str, ...] = ()
@@ -461,7 +397,6 @@ def landing_report(
                 return study.thick_experiments(
                     sizes.experiments,
                     seed,
-                    0 if psi else sizes.experiments_contact,
                     sizes.experiments_points,
                     sizes.experiments_rigid,
                     "human" if psi else None,
@@ -474,7 +409,6 @@ def landing_report(
     files: list[Path] = []
     more = {
         "bouncing": bouncing,
-        "edges": edges,
         "experiments": experiments,
         "experiments_human": human,
         "rigid": rigid,
@@ -545,8 +479,6 @@ def build_document(r: LandingReport) -> Document:
     if r.rigid is not None:
         doc.add(*_rigid_section(r.rigid))
     doc.add(*_mujoco_section(r.mujoco, r.mujoco_note))
-    if r.edges is not None:
-        doc.add(*_edges_section(r.edges))
     if r.experiments is not None:
         doc.add(*_experiments_section(r.experiments, r.experiments_left))
     if r.experiments_human is not None:
@@ -962,30 +894,22 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
     all_edges = int(np.count_nonzero(c.mujoco_rest == 2))
     settled_edge = (c.mujoco_rest == 2) & ~c.mujoco_moving
     settled_face = (c.mujoco_rest != 2) & ~c.mujoco_moving
-    contact = c.contact
     rows = [
         row("coinflight, first contact", c.first),
         row("MuJoCo, first contact", c.mujoco_first),
         row("coinflight, rocking ending, at rest", c.rocking.rest),
-    ]
-    if contact is not None:
-        rows.append(row("coinflight, 3-D contact ending, at rest", contact.rest))
-    rows += [
         row("MuJoCo, at rest", c.mujoco_rest),
         row(
             f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
             c.mujoco_rest[~c.mujoco_moving],
         ),
     ]
-    label = {"rocking": "rocking ending (default)", "contact": "3-D contact ending"}
+    label = {"rocking": "rocking ending (default)"}
     agreement = tuple(
         (
             label[run.ending],
             f"{c.agreement(run):.1%}",
             f"{run.unsettled:,}",
-            f"{run.decided_upright:,} ({run.decided_upright / c.n:.1%})"
-            if run.ending == "contact"
-            else "-",
             ", ".join(f"{z:+.1f}" for z in _z_against_mujoco(c, run.rest)),
             f"{c.n / run.seconds:,.0f}",
             f"{c.ratio(run):,.0f}",
@@ -993,42 +917,6 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
         for run in c.endings
     )
     theirs_rate = c.n / c.mujoco_seconds
-    by_speed = s.get("flat_drop_restitution_by_speed", [])
-    speeds_text = ", ".join(f"{e:.2f} at {v:.2g} m/s" for v, e in by_speed)
-    impacts = (
-        ""
-        if contact is None
-        else (
-            f"coinflight's two endings give the same face at rest on "
-            f"{float(np.mean(contact.rest == c.rocking.rest)):.1%} of the tosses: "
-            f"{contact.at_impact:,} of the {c.n:,} ({contact.at_impact / c.n:.0%}) are decided "
-            "at an impact, before the contact ending starts, by its rigorous test (the coin's "
-            "whole energy below the barrier of its well: nothing can take it out again), so "
-            "the rolling and pivoting resistance never act on them. A difference from MuJoCo "
-            "that both endings share therefore comes from the impacts and the flights between "
-            "them, not from how the landing ends. There the engines differ: coinflight's "
-            f"impacts are instantaneous and restitute with e = {c.restitution:g} at every "
-            "speed, with friction acting only during the impact; MuJoCo's soft contact lasts "
-            "milliseconds, its friction creeps, and its flat-drop restitution, calibrated at "
-            f"the landing speed, is {speeds_text}."
-        )
-    )
-    contact_text = (
-        ""
-        if contact is None
-        else (
-            " The same tosses also end in coinflight's experimental 3-D contact phase "
-            '(Surface(ending="contact"): rolling, sliding, pivoting and rocking on the rim, a '
-            "compliant contact, coinflight.core.contact_phase) with rolling resistance ℓ_r = "
-            f"{contact.rolling_resistance:g} m and pivoting resistance ℓ_p = "
-            f"{contact.pivoting_resistance:g} m: MuJoCo's rolling and torsional friction "
-            "coefficients. Both engines bound those torques by a length times the normal force, "
-            "so the lengths carry over one to one; coinflight adds the Coulomb friction spread "
-            "over its contact arc to the pivoting torque (MuJoCo gets it from its several contact "
-            "points), MuJoCo's pyramidal cone lets sliding and torsion share one budget, and "
-            "MuJoCo's friction creeps as a soft constraint (coinflight.studies.mujoco_compare)."
-        )
-    )
     return (
         head,
         Paragraph(
@@ -1049,7 +937,7 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
             f"({moving_edges:,} of them on their edge) were still moving then and are counted "
             "by the well they were in, and shown apart in the settled-only row. No axial spin: "
             "MuJoCo's Euler integrator drifts in the precession phase over a 0.8 m fall (RK4 "
-            "does not, at four times the cost)." + contact_text
+            "does not, at four times the cost)."
         ),
         Table(
             ("engine, moment", *names),
@@ -1061,7 +949,6 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "coinflight ending",
                 "same face at rest as MuJoCo",
                 "unsettled",
-                "decided upright (predicted on edge)",
                 "at rest − MuJoCo, in s.e. (tails, heads, edge)",
                 "tosses/s",
                 "speed ratio to MuJoCo",
@@ -1089,107 +976,21 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "Same face at rest: after several bounces the face at rest depends on every "
                 "detail of each impact, so two contact models agree on single tosses little "
                 "more than chance; the comparison is of the fractions.",
-                *((impacts,) if impacts else ()),
                 "Why the fractions at rest may differ: MuJoCo's contact is soft (a "
                 "spring-damper whose rebound depends on the impact speed and that lets the rim "
                 "sink fractions of a millimetre, so an impact lasts milliseconds and friction "
                 "acts throughout it), its friction creeps, and every contact of a landing is "
                 "the same law from the first impact on; coinflight's impacts are instantaneous "
-                "with one restitution and one friction, and only its last phase differs between "
-                "the endings: the rocking ending hands the coin to a planar rocking block that "
-                "discards spin and precession; the contact ending keeps them and resists "
-                "rolling and pivoting as MuJoCo does. Agreement of the contact ending's "
-                "fractions with MuJoCo's, where the rocking ending's differ, would point at the "
-                "hand-off; a difference both endings share points at the impacts.",
+                "with one restitution and one friction, and its rocking ending hands the coin to "
+                "a planar rocking block that discards spin and precession.",
                 "Edges: a coin rolling on its rim stays up while its spin lasts (Euler's disk); "
                 "both engines give the nickel's rim sharp corners, hence a static edge well "
                 "arctan(h/d) = 5.3° wide, which holds a coin that stops rolling upright. Neither "
                 "engine's edge rate is a prediction: it moves with the rolling and pivoting "
-                "resistance and the corner radius, none measured for a coin "
-                "(coinflight.core.contact_phase).",
+                "resistance and the corner radius, none measured for a coin.",
             )
         ),
-        Image("mujoco.png", "The same tosses in coinflight (both endings) and MuJoCo."),
-    )
-
-
-def _edge_row(
-    cell: study.EdgeCell, label: str, faces: np.ndarray, among: np.ndarray
-) -> tuple[str, ...]:
-    p, se = cell.fractions(faces, among)
-    k = int(np.count_nonzero(among))
-    return (label, f"{k:,}", *(_pm(float(x), float(e)) for x, e in zip(p, se, strict=True)))
-
-
-def _edges_section(check: study.EdgeCheck) -> tuple[Block, ...]:
-    rows = []
-    bullets = []
-    for cell in check.cells:
-        r = cell.mujoco
-        h = cell.handed
-        tag = f"e {cell.restitution:g}, μ {cell.friction:g}"
-        everyone = np.ones(cell.n, dtype=bool)
-        rows += [
-            _edge_row(cell, f"{tag}: {label}", faces, among)
-            for label, faces, among in (
-                ("coinflight, all", cell.coinflight.rest, everyone),
-                ("MuJoCo, all", r.rest, everyone),
-                ("coinflight, handed to its contact phase", cell.coinflight.rest, h),
-                ("MuJoCo, the same tosses", r.rest, h),
-                ("MuJoCo, settled only", r.rest, ~r.moving),
-            )
-        ]
-        both, ours, theirs = cell.edges
-        moving_edge = int(np.count_nonzero(r.moving & (r.rest == 2)))
-        up = r.edge_time
-        bullets.append(
-            f"{tag}: on edge at the end in both engines {both}, in coinflight only {ours}, in "
-            f"MuJoCo only {theirs}; of coinflight's edges "
-            f"{cell.coinflight.decided_upright:,} decided upright (ended while still rolling by "
-            "its upright decision, a measured predictor, not carried to rest); same well at "
-            f"the first contact {cell.first_agreement:.1%}, "
-            f"same face at the end {cell.rest_agreement:.1%}. MuJoCo: {r.unsettled:,} tosses "
-            f"still moving {r.limit:g} s after their first contact ({moving_edge:,} on edge); "
-            f"{int(np.count_nonzero(up > 1.0)):,} spent more than 1 s upright on the rim, "
-            f"{int(np.count_nonzero((up > 1.0) & (r.rest == 2))):,} of them ending on edge; "
-            f"time upright on the rim {_times_text(up[up > 0])}. MuJoCo {r.elapsed:,.0f} s "
-            f"({r.steps:,} steps), coinflight {cell.coinflight.seconds:.2f} s."
-        )
-    return (
-        Heading("Edges in both engines"),
-        Paragraph(
-            f"Are the 3-D contact ending's edges coinflight's alone? {check.n:,} vigorous tosses "
-            f"with an axial spin (seed {check.seed}; ωx ~ U{study.SPIN}, ωy, ωz ~ "
-            f"U{study.EDGE_SPIN} rad/s, v0 ~ U{study.LAUNCH_SPEED} m/s, the US nickel "
-            f"{study.DROP_HEIGHT:g} m above the table): the axial spin keeps coins rolling on "
-            "their rim after the bounces. In coinflight with the contact ending (sharp corners, "
-            f"rolling and pivoting resistance {check.rolling_resistance:g} m) and in MuJoCo (a "
-            f"sharp cylinder, condim 6, rolling and torsional friction "
-            f"{check.rolling_resistance:g} m: the same lengths, torques bounded by a length "
-            f"times the normal force; integrator {check.integrator}, since the default Euler "
-            "drifts in the precession; contact damping calibrated to e; each toss carried "
-            f"until it settles or {check.limit:g} s past its first contact). 'Handed' are the "
-            "tosses coinflight hands to its contact phase (the others end at an impact)."
-        ),
-        Table(
-            ("engine, tosses", "n", "tails", "heads", "edge"),
-            tuple(rows),
-            caption="Fractions at the end (± s.e.)",
-        ),
-        Bullets(
-            (
-                *bullets,
-                "Both engines give the rim sharp corners, hence a flat band and a static edge "
-                "well arctan(h/d) = 5.3° wide for the nickel. Where MuJoCo leaves as many "
-                "coins on edge as coinflight, the edge rate is the sharp rim's (both engines'); "
-                "where it leaves fewer, the difference lies in the engines' contact laws: "
-                "MuJoCo's soft contact lifts a coin sliding on its rim off the table, where "
-                "coinflight's stays pressed on it and may roll up (the documentation's physics "
-                "page, 'Beside a general rigid-body engine'). Neither is a prediction: the "
-                "rolling and pivoting resistance and the corner radius are not measured for a "
-                "coin.",
-            )
-        ),
+        Image("mujoco.png", "The same tosses in coinflight and MuJoCo."),
     )
 
 
@@ -1243,11 +1044,7 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
         if wobble
         else "planar tosses (spin about a diameter only, no axial spin)"
     )
-    three_d = [
-        f"{name} ending: {size:,} tosses per cell, corners and centre"
-        for name, size in (("contact", x.contact_n), ("rigid", x.rigid_n))
-        if size
-    ]
+    rigid = f"rigid ending: {x.rigid_n:,} tosses per cell, corners and centre" if x.rigid_n else ""
     return (
         Heading(
             "Thick cylinders against experiments"
@@ -1261,20 +1058,17 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             f"from child {study.EXPERIMENTS_CHILD} of seed {x.seed}: coinflight.studies.landing."
             "thick_experiments with this seed reproduces them). Setting: "
             + "; ".join(settings)
-            + f". Unmeasured, carried as a band: {ranges} (the resistance only with the 3-D "
-            f"endings). Rocking ending: {x.n:,} tosses per cell, {x.points} values per "
+            + f". Unmeasured, carried as a band: {ranges} (the resistance only with the rigid "
+            f"ending). Rocking ending: {x.n:,} tosses per cell, {x.points} values per "
             "parameter (every combination and the box's centre); "
-            + ("; ".join(three_d) if three_d else "no 3-D ending")
+            + (rigid or "no 3-D ending")
             + ". The same tosses in every cell; cylinders of diameter other than "
             f"{SIM_DIAMETER * 1000:g} mm simulated at their size. "
             "A measured 95 % (Wilson) interval wholly above the highest cell + 2 s.e. is "
             "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. The band's ends "
             "are its extreme cells, so their noise widens it (the highest of tens of noisy "
             "cells lies a few s.e. above their mean): read it at the full report's sizes, "
-            "not --quick's. No parameter was tuned to the data. 'Decided upright of edges' "
-            "counts, in the contact band's lowest, highest and centre cells, the edges its "
-            "upright decision ended while the cylinder still rolled (a measured predictor of "
-            "ending on edge, not carried to rest; every cell's count is in numbers.json)."
+            "not --quick's. No parameter was tuned to the data."
         ),
         Table(x.HEADER, tuple(x.table())),
         Bullets(tuple(findings)),

@@ -9,14 +9,13 @@ The simulated P(edge) of real bounces comes from :mod:`coinflight.outcomes.table
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
-from coinflight.core.outcome import EDGE, Status
+from coinflight.core.outcome import EDGE
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 
@@ -26,18 +25,6 @@ if TYPE_CHECKING:
 
 EdgeModel = Literal["geometric", "dynamic"]
 MODELS: tuple[EdgeModel, ...] = ("geometric", "dynamic")
-
-
-@dataclass(frozen=True)
-class EdgeEstimate(BinomialEstimate):
-    """The tosses on edge of one ratio (:func:`simulate_edge`): a
-    :class:`~coinflight.probability.result.BinomialEstimate` whose ``decided_upright`` counts
-    the edges the experimental contact ending ended by its upright decision (status
-    DECIDED_UPRIGHT, :class:`coinflight.core.outcome.Status`: a measured predictor of ending on
-    edge, not a proof; the coin may still be rolling); 0 with the rocking ending, which has no
-    such decision."""
-
-    decided_upright: int = 0
 
 
 def edge_probability(ratio: ArrayLike, model: EdgeModel = "dynamic") -> NDArray[np.float64]:
@@ -138,7 +125,7 @@ def simulate_edge(
     axial_spin: Distribution | None = None,
     executor: Any = None,
     progress: Callable[[int], None] | None = None,
-) -> list[tuple[float, EdgeEstimate]]:
+) -> list[tuple[float, BinomialEstimate]]:
     """P(edge) from the full flight and landing (:func:`coinflight.outcomes.table.land`), per ratio.
 
     Each ratio gets ``n`` tosses of a coin of diameter :data:`SIM_DIAMETER` and thickness
@@ -147,9 +134,9 @@ def simulate_edge(
     table :data:`SIM_DROP` m below: the setting of Yong & Mahadevan's dynamic model, which the
     points should follow.
 
-    Returns (ratio, estimate) pairs, the estimate (:class:`EdgeEstimate`) counting the tosses
-    on edge and, with the contact ending, those of them its upright decision ended
-    (``decided_upright``). Ratio i draws
+    Returns (ratio, estimate) pairs, the estimate
+    (:class:`~coinflight.probability.result.BinomialEstimate`) counting the tosses on edge.
+    Ratio i draws
     from child i of the seed's ``SeedSequence`` through
     :func:`coinflight.probability.streams.unit_cube` (spin and launch speed each from its own
     stream), so the points are independent, a run of n tosses is the first n of a longer run,
@@ -160,12 +147,12 @@ def simulate_edge(
     ``friction`` and ``drop_height`` of the table (:class:`coinflight.model.surface.Surface`);
     ``spin`` (ωx, rad/s) and ``launch_speed`` (v0, m/s) as distributions
     (:mod:`coinflight.model.distributions`, drawn through their ``ppf`` from the same streams);
-    the launch speed must be positive with certainty; ``ending`` ("rocking" or the experimental
-    3-D "contact") and, with the contact ending only, its ``rolling_resistance`` and
+    the launch speed must be positive with certainty; ``ending`` ("rocking" or "rigid", the
+    rigid 3-D ending) and, with the rigid ending only, its ``rolling_resistance`` and
     ``pivoting_resistance`` (m; :class:`coinflight.model.surface.Surface`), which act only on
     landings that bounce (``restitution`` > 0); ``corner_radius`` a (m, default 0: sharp), the
     rounded rim corners of every ratio's coin (:attr:`coinflight.model.coin.Coin.corner_radius`:
-    the impacts, the contact ending and the face/edge wells take it), at most half the thinnest
+    the impacts, the endings and the face/edge wells take it), at most half the thinnest
     coin's thickness; ``diameter`` (m, default :data:`SIM_DIAMETER`) the coins' diameter d
     (each ratio's thickness is ratio × d); ``axial_spin`` (ωz, rad/s, a distribution; default
     none: ωz = 0, planar tosses) a spin about the coin's axis as well, so that the normal
@@ -197,7 +184,6 @@ def simulate_edge(
         )
         if value is not None
     }
-    v.no_dead_contact(ending, restitution)
     surface = Surface(
         "table",
         drop_height=drop_height,
@@ -247,8 +233,7 @@ def simulate_edge(
     out = []
     for i, ratio in enumerate(x):
         part = np.asarray(counts[i * per_ratio : (i + 1) * per_ratio]).sum(axis=0)
-        edges, decided = int(part[0]), int(part[1])
-        estimate = EdgeEstimate(edges, n, streams.reported_seed(root), decided)
+        estimate = BinomialEstimate(int(part[0]), n, streams.reported_seed(root))
         out.append((float(ratio), estimate))
     return out
 
@@ -307,12 +292,11 @@ def _corner_radius(value: object, thinnest: float, diameter: float = SIM_DIAMETE
 
 
 def _edge_task(args: tuple[Any, ...]) -> NDArray[np.int64]:
-    """(tosses on edge, of them decided upright) among blocks ``first`` to ``last`` of one
-    ratio's stream."""
+    """(tosses on edge,) among blocks ``first`` to ``last`` of one ratio's stream."""
     from coinflight.outcomes.table import land
 
     coin, stream, n, first, last, wx, v0, wz, g, surface, parallel = args
-    counts = np.zeros(2, dtype=np.int64)
+    counts = np.zeros(1, dtype=np.int64)
     # Row r of each block comes from its own generator (streams.block_generators): a third
     # row for ωz leaves the rows of ωx and v0 as they are.
     k = 2 if wz is None else 3
@@ -324,7 +308,6 @@ def _edge_task(args: tuple[Any, ...]) -> NDArray[np.int64]:
         speed = v0.ppf(u[1])
         out = land(coin, omega, speed, 1.0, g, surface, parallel=parallel)
         counts[0] += int(np.sum(out.face == EDGE))
-        counts[1] += int(np.sum(out.status == Status.DECIDED_UPRIGHT))
     return counts
 
 
@@ -345,9 +328,7 @@ def edge_table(
     keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
     rolling and pivoting resistance, corner radius, diameter, axial spin) and, for rounded
     coins, ``corner_radius`` (m; left out for sharp corners, so that every other row is as it
-    was) and, with the contact ending (``ending="contact"``), ``decided_upright`` and
-    ``decided_upright_fraction``: the edges its upright decision ended (status "decided
-    upright", a measured predictor, not a proof), counted and as a share of ``n``. Ratios
+    was). Ratios
     must lie in :data:`SIM_RATIOS` (a coin of no thickness is not a coin); ``setting`` needs
     ``n``. ``executor`` and ``progress``: as for :func:`simulate_edge`.
 
@@ -378,16 +359,11 @@ def edge_table(
             }
             if setting.get("corner_radius"):
                 row["simulated"]["corner_radius"] = float(setting["corner_radius"])
-            if setting.get("ending") == "contact":
-                decided = s.decided_upright
-                row["simulated"]["decided_upright"] = decided
-                row["simulated"]["decided_upright_fraction"] = decided / s.n
     return rows
 
 
 __all__ = [
     "MODELS",
-    "EdgeEstimate",
     "check_diameter",
     "check_ratios",
     "edge_probability",

@@ -6,7 +6,7 @@ describes) the study simulates that setting with
 the endings) and returns P(edge) as a **band** over what nobody measured: the restitution e
 and friction μ over the surface presets' box (:func:`coinflight.studies.presets.
 bouncing_box`), the cylinder's diameter and the table's drop when the source does not give
-them, and, for the 3-D endings, the rolling and pivoting resistance. The band's cells are the
+them, and, for the rigid 3-D ending, the rolling and pivoting resistance. The band's cells are the
 box's corners and its centre; each reports p, s.e. and n. The measured fraction with its 95 %
 (Wilson) interval is then *inside*, *above* or *below* that band. No parameter is tuned to the
 data: the result is whatever it is.
@@ -31,9 +31,8 @@ angle ψ about the angular momentum, cot ψ = I3 ωz / (I1 ωx) (Diaconis, Holme
 ("volumetric" rotation, Gaek & Sukhov 2024, arXiv:2401.03557). ``psi="human"`` takes the human
 toss preset's relation (ωz ~ Normal(μ, μ/2), μ at ψ0 = 82.05°, fitted there to *coins'*
 same-side rate); a number is one ψ at the median ωx. **A cylinder's ψ is not measured**: the
-sweep states ψ, it does not fit it. Caveats of the endings with a wobble: the rocking ending
-discards the spin and the precession at its hand-off (planar rocking); the contact ending is
-experimental.
+sweep states ψ, it does not fit it. Caveat of the rocking ending with a wobble: it discards
+the spin and the precession at its hand-off (planar rocking).
 
 What it finds, with the figures and their caveats, is on the documentation's physics page
 ("Published edge experiments"), and ``coinflight landing-report`` recomputes it ("Thick
@@ -43,7 +42,7 @@ beyond any restitution or friction; a slight wobble such as the human preset's l
 bands to hold both measured points, while a larger one (ψ 45–70°) lowers P(edge) again. The
 wobble is a sufficient explanation of the miss, not a demonstrated one: what would settle it
 is ψ read from the filmed flips. Cost: the rocking ending lands about 10⁴ tosses a second, the
-3-D endings a hundred times fewer; a run whose estimated time exceeds the work bound
+rigid 3-D ending a hundred times fewer; a run whose estimated time exceeds the work bound
 (:data:`coinflight._validation.MAX_RUN_SECONDS`) is refused before it starts.
 """
 
@@ -78,7 +77,7 @@ HAND_DROP = (0.2, 0.5)
 HAND_DIAMETER = (0.02, 0.05)
 """Diameter of a hand-flipped cylinder when the source does not give it, m (our assumption)."""
 RESISTANCE = (1e-5, 1e-3)
-"""Rolling and pivoting resistance of the contact ending, m, both the same value in a cell
+"""Rolling and pivoting resistance of the rigid ending, m, both the same value in a cell
 (nobody measured them for a coin; :class:`coinflight.model.surface.Surface`); the band's centre
 is their geometric mean."""
 MAX_TOSSES = 10**7
@@ -240,13 +239,6 @@ class Cell:
     def n(self) -> int:
         return self.estimate.n
 
-    @property
-    def decided_upright(self) -> int:
-        """Of the edges, those the contact ending's upright decision ended (status "decided
-        upright": a measured predictor of ending on edge, not carried to rest;
-        :class:`coinflight.studies.edge.EdgeEstimate`); 0 for an estimate without the count."""
-        return int(getattr(self.estimate, "decided_upright", 0))
-
 
 @dataclass(frozen=True)
 class Band:
@@ -292,20 +284,18 @@ class Band:
 
 @dataclass(frozen=True)
 class Comparison:
-    """One experiment beside its simulated bands (``contact``, ``rigid`` None when not
-    simulated)."""
+    """One experiment beside its simulated bands (``rigid`` None when not simulated)."""
 
     experiment: Experiment
     setting: Setting
     rocking: Band
-    contact: Band | None
     box: Mapping[str, tuple[float, float]] = field(default_factory=dict)
-    """The ranges of the widest box simulated (a 3-D ending's when one ran)."""
+    """The ranges of the widest box simulated (the rigid ending's when it ran)."""
     rigid: Band | None = None
 
     @property
     def bands(self) -> tuple[Band, ...]:
-        return tuple(b for b in (self.rocking, self.contact, self.rigid) if b is not None)
+        return tuple(b for b in (self.rocking, self.rigid) if b is not None)
 
 
 @dataclass(frozen=True)
@@ -314,7 +304,6 @@ class EdgeExperiments:
 
     comparisons: tuple[Comparison, ...]
     n: int
-    contact_n: int
     seed: int
     elapsed: float
     points: int = 2
@@ -330,7 +319,6 @@ class EdgeExperiments:
         "model band: low – high (± s.e.)",
         "centre ± s.e.",
         "cells × n",
-        "decided upright of edges (low, high, centre)",
         "measured vs band",
         "gap",
     )
@@ -356,12 +344,6 @@ class EdgeExperiments:
                         f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
                         f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
                         f"{len(b.cells)} × {b.centre.n:,}",
-                        ", ".join(
-                            f"{cell.decided_upright:,}/{cell.estimate.successes:,}"
-                            for cell in (b.low, b.high, b.centre)
-                        )
-                        if b.ending == "contact"
-                        else "-",
                         b.verdict(obs),
                         f"{b.gap(obs):+.3f}",
                     )
@@ -372,7 +354,6 @@ class EdgeExperiments:
         """JSON-ready: every cell of every band, the measured fractions and the verdicts."""
 
         def band(b: Band, obs: BinomialEstimate) -> dict[str, Any]:
-            contact = b.ending == "contact"  # only it has the upright decision
             return {
                 "ending": b.ending,
                 "low": b.low.p,
@@ -387,7 +368,6 @@ class EdgeExperiments:
                         "p_edge": c.p,
                         "stderr": c.stderr,
                         "n": c.n,
-                        "decided_upright": c.decided_upright if contact else None,
                     }
                     for c in b.cells
                 ],
@@ -396,7 +376,6 @@ class EdgeExperiments:
         return {
             "seed": self.seed,
             "n": self.n,
-            "contact_n": self.contact_n,
             "rigid_n": self.rigid_n,
             "psi": self.psi,
             "points": self.points,
@@ -464,8 +443,8 @@ def experiment_box(
 ) -> dict[str, tuple[float, float]]:
     """The unmeasured parameters' ranges for one experiment and ending: e and μ (default the
     surface presets' box, :func:`coinflight.studies.presets.bouncing_box`), the diameter and
-    the drop (the record's when it gives them, else the setting's), and with a 3-D ending
-    ("contact", "rigid") the resistance (:data:`RESISTANCE`)."""
+    the drop (the record's when it gives them, else the setting's), and with the rigid 3-D
+    ending the resistance (:data:`RESISTANCE`)."""
     from coinflight.studies.presets import bouncing_box
 
     e_box, mu_box = bouncing_box()
@@ -477,31 +456,30 @@ def experiment_box(
         "diameter": the_setting.diameter if d is None else (d, d),
         "drop_height": the_setting.drop_height if h is None else (h, h),
     }
-    if ending in ("contact", "rigid"):
+    if ending == "rigid":
         out["resistance"] = RESISTANCE
     return out
 
 
 def _checked(
-    experiments: Sequence[Experiment], n: int, contact: int, seed: streams.SeedLike
-) -> tuple[tuple[Experiment, ...], int, int, dict[str, Setting]]:
+    experiments: Sequence[Experiment], n: int, seed: streams.SeedLike
+) -> tuple[tuple[Experiment, ...], int, dict[str, Setting]]:
     """The arguments :func:`edge_experiments` and :func:`wobble_sweep` share, checked: the
-    experiments (at least one), tosses per cell, contact-ending tosses, the seed; and the
-    experiments' settings by name."""
+    experiments (at least one), tosses per cell, the seed; and the experiments' settings by
+    name."""
     items = tuple(experiments)
     if not items:
         raise ValueError("give at least one experiment")
     for item in items:
         v.instance("experiment", item, Experiment, "an Experiment")
     n = v.count("tosses per cell", n, 1, MAX_TOSSES)
-    contact = v.count("contact-ending tosses per cell", contact, 0, n)
     streams.check_seed(seed)
-    return items, n, contact, {name: setting(name) for name in {x.setting for x in items}}
+    return items, n, {name: setting(name) for name in {x.setting for x in items}}
 
 
 def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
     """One cell's landing checked as :func:`~coinflight.studies.edge.simulate_edge` will check
-    it (g, diameter, the table's e, μ, drop and resistances, no dead contact), so that a refusal
+    it (g, diameter, the table's e, μ, drop and resistances), so that a refusal
     comes before ``progress`` is first called and any toss runs."""
     from coinflight.model.surface import Surface
     from coinflight.model.toss import check_gravity
@@ -509,7 +487,6 @@ def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
 
     check_gravity(g)
     check_diameter(point["diameter"])
-    v.no_dead_contact(ending, point["restitution"])
     resist = point.get("resistance")
     extra = {} if resist is None else {"rolling_resistance": resist, "pivoting_resistance": resist}
     Surface(
@@ -517,7 +494,7 @@ def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
         drop_height=point["drop_height"],
         restitution=point["restitution"],
         friction=point["friction"],
-        ending=ending,  # type: ignore[arg-type]  # "rocking", "contact" or "rigid"
+        ending=ending,  # type: ignore[arg-type]  # "rocking" or "rigid"
         **extra,
     )
 
@@ -563,7 +540,6 @@ def edge_experiments(
     n: int,
     seed: streams.SeedLike = None,
     *,
-    contact: int = 0,
     points: int = 2,
     rigid: int = 0,
     restitution: tuple[float, float] | None = None,
@@ -583,20 +559,18 @@ def edge_experiments(
         :func:`experiment_box`).
     seed : int, optional
         Every draw: experiment i takes child i, the same tosses in every cell and both endings
-        (common random numbers; the contact ending's ``contact`` tosses are the first of the
+        (common random numbers; the rigid ending's ``rigid`` tosses are the first of the
         rocking ending's, :func:`~coinflight.studies.edge.simulate_edge`'s prefix property).
-    contact : int
-        Tosses per cell with the 3-D contact ending (0: not simulated).
     rigid : int
         Tosses per cell with the rigid, event-driven 3-D ending (0: not simulated; corners
-        and centre of the same box as the contact ending's, resistance included).
+        and centre of the box, resistance included).
     points : int
         Values per parameter of the rocking ending's box (2: corners and centre, as the
-        contact ending's always; 3: a 3 × 3 × … grid). The landing's P(edge) is not monotonic
+        rigid ending's always; 3: a 3 × 3 × … grid). The landing's P(edge) is not monotonic
         in e and μ (module notes), so more points widen the band towards its true extent.
     restitution, friction : (float, float), optional
         Replace the surface presets' ranges (e.g. (0, 0) and a sticking friction for the
-        dead-landing check; the contact ending needs restitution above 0).
+        dead-landing check).
     g : float
         Gravitational acceleration of the real throws, m/s².
     psi : float or "human", optional
@@ -615,44 +589,33 @@ def edge_experiments(
         work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at the landing rates of
         :mod:`coinflight.outcomes.table`).
     """
-    from coinflight.outcomes.table import (
-        BOUNCING_TOSSES_PER_SECOND,
-        CONTACT_TOSSES_PER_SECOND,
-        RIGID_TOSSES_PER_SECOND,
-    )
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, RIGID_TOSSES_PER_SECOND
 
-    items, n, contact, settings = _checked(experiments, n, contact, seed)
+    items, n, settings = _checked(experiments, n, seed)
     rigid = v.count("rigid-ending tosses per cell", rigid, 0, MAX_TOSSES)
-    if (contact or rigid) and restitution is not None:
-        v.no_dead_contact("contact" if contact else "rigid", float(min(restitution)))
     boxes = [
         {
             ending: experiment_box(x, settings[x.setting], ending, restitution, friction)
-            for ending in ("rocking", "contact", "rigid")
+            for ending in ("rocking", "rigid")
         }
         for x in items
     ]
     points = v.count("points per parameter", points, 2, 9)
     if psi is not None:
         axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
-    runs = (("rocking", n, points), ("contact", contact, 2), ("rigid", rigid, 2))
+    runs = (("rocking", n, points), ("rigid", rigid, 2))
     for box in boxes:
         for ending, size, k in runs:
             for point in box_cells(box[ending], k) if size else ():
                 _cell_checked(point, ending, g)
     rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
-    contact_tosses = sum(len(box_cells(b["contact"])) for b in boxes) * contact
     rigid_tosses = sum(len(box_cells(b["rigid"])) for b in boxes) * rigid
-    seconds = (
-        rocking_tosses / BOUNCING_TOSSES_PER_SECOND
-        + contact_tosses / CONTACT_TOSSES_PER_SECOND
-        + rigid_tosses / RIGID_TOSSES_PER_SECOND
-    )
+    seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + rigid_tosses / RIGID_TOSSES_PER_SECOND
     what = (
-        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking, "
-        f"{contact_tosses:,} contact-ending and {rigid_tosses:,} rigid-ending tosses"
+        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking and "
+        f"{rigid_tosses:,} rigid-ending tosses"
     )
-    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, contact)")
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, rigid)")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
     t0 = time.perf_counter()
@@ -677,13 +640,12 @@ def edge_experiments(
             bands[ending] = Band(ending, tuple(cells))
             if progress is not None:
                 progress(f"{x.label}: {ending}")
-        widest = box["contact" if contact or rigid else "rocking"]
+        widest = box["rigid" if rigid else "rocking"]
         comparisons.append(
             Comparison(
                 x,
                 the_setting,
                 bands["rocking"],
-                bands.get("contact"),
                 MappingProxyType(widest),
                 bands.get("rigid"),
             )
@@ -691,7 +653,6 @@ def edge_experiments(
     return EdgeExperiments(
         tuple(comparisons),
         n,
-        contact,
         streams.reported_seed(root),
         time.perf_counter() - t0,
         points,
@@ -772,39 +733,33 @@ def wobble_sweep(
     n: int,
     seed: streams.SeedLike = None,
     *,
-    contact: int = 0,
     psis: Sequence[float | str] = WOBBLE_PSI,
     cells: Sequence[Mapping[str, float]] = WOBBLE_CELLS,
-    resistance: float = 1e-4,
     g: float = 9.81,
     progress: Callable[[str], None] | None = None,
 ) -> list[WobbleRow]:
     """P(edge) of each experiment's setting with a wobble: for each cone angle ψ of ``psis``
     (:func:`axial_spin`) and each cell of ``cells`` (restitution, friction, diameter,
-    drop_height), ``n`` tosses with the rocking ending and ``contact`` (0: none) with the 3-D
-    contact ending (rolling and pivoting resistance ``resistance`` m).
+    drop_height), ``n`` tosses with the rocking ending.
 
     Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
     cell lands the same ωx and v0 (common random numbers; ψ changes ωz only), and ψ = 90 with
     the rocking ending gives that function's counts at the same cell. Work bounded before it
     runs, as :func:`edge_experiments`; ``progress`` is called first once every input is checked,
-    before any toss (the run's size), then after each cell and ending.
+    before any toss (the run's size), then after each cell.
     """
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, CONTACT_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
 
-    items, n, contact, settings = _checked(experiments, n, contact, seed)
+    items, n, settings = _checked(experiments, n, seed)
     spins = {
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
     }
     for cell in cells:
-        for ending, size in (("rocking", n), ("contact", contact)):
-            if size:
-                extra = {"resistance": resistance} if ending == "contact" else {}
-                _cell_checked({**cell, **extra}, ending, g)
+        _cell_checked(cell, "rocking", g)
     runs = len(items) * len(psis) * len(cells)
-    what = f"wobble sweep: {runs} cells × ({n:,} rocking + {contact:,} contact-ending tosses)"
-    seconds = runs * (n / BOUNCING_TOSSES_PER_SECOND + contact / CONTACT_TOSSES_PER_SECOND)
-    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, contact)")
+    what = f"wobble sweep: {runs} cells × {n:,} rocking-ending tosses"
+    seconds = runs * n / BOUNCING_TOSSES_PER_SECOND
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n)")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
     root = streams.seed_sequence(seed)
@@ -813,43 +768,26 @@ def wobble_sweep(
         the_setting = settings[x.setting]
         for psi, wz in zip(psis, spins[x.label], strict=True):
             for cell in cells:
-                for ending, size in (("rocking", n), ("contact", contact)):
-                    if size == 0:
-                        continue
-                    resist = resistance if ending == "contact" else None
-                    estimate = _cell_edge(
-                        x.ratio,
-                        size,
-                        streams.child(root, i),
-                        g,
-                        cell,
-                        the_setting,
-                        wz,
-                        ending,
-                        resist,
-                    )
-                    rows.append(WobbleRow(x.label, x.ratio, psi, ending, cell, estimate))
-                    if progress is not None:
-                        progress(f"{x.label} ψ {psi} {ending} {dict(cell)}: {estimate.p:.4f}")
+                child = streams.child(root, i)
+                estimate = _cell_edge(x.ratio, n, child, g, cell, the_setting, wz, "rocking", None)
+                rows.append(WobbleRow(x.label, x.ratio, psi, "rocking", cell, estimate))
+                if progress is not None:
+                    progress(f"{x.label} ψ {psi} rocking {dict(cell)}: {estimate.p:.4f}")
     return rows
 
 
 @dataclass(frozen=True)
 class EngineCheck:
-    """The same ``n`` tosses of one setting at one point of the box in coinflight (both
-    endings) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
-    MuJoCo's tosses still moving at its limit, the point (``parameters``) and, of the contact
-    ending's edges, those its upright decision ended (``contact_decided_upright``: status
-    "decided upright", a measured predictor of ending on edge, not carried to rest)."""
+    """The same ``n`` tosses of one setting at one point of the box in coinflight (the rocking
+    ending) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
+    MuJoCo's tosses still moving at its limit and the point (``parameters``)."""
 
     label: str
     parameters: Mapping[str, float]
     rocking: BinomialEstimate
-    contact: BinomialEstimate
     mujoco: BinomialEstimate
     mujoco_moving: int
     mujoco_seconds: float
-    contact_decided_upright: int = 0
 
 
 def mujoco_check(
@@ -868,16 +806,16 @@ def mujoco_check(
     """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
     :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
     from the seed's child 0, release ``drop_height``, default the middle of the setting's
-    range) landed on one table (e, μ; rolling and pivoting, MuJoCo's rolling and torsional,
-    resistance ``resistance`` m) by coinflight's two endings and by MuJoCo (its defaults
+    range) landed on one table (e, μ; MuJoCo's rolling and torsional resistance ``resistance``
+    m) by coinflight's rocking ending and by MuJoCo (its defaults
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
     past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
     row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
-    same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work (both
-    endings at their landing rates, MuJoCo by :func:`coinflight.studies.mujoco_compare.
+    same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work (the
+    rocking ending at its landing rate, MuJoCo by :func:`coinflight.studies.mujoco_compare.
     seconds_estimate`) bounded before anything runs; ``progress``, if given, is called once
     every input is checked and the work bounded, before any toss (the check's size)."""
-    from coinflight.core.outcome import EDGE, Status
+    from coinflight.core.outcome import EDGE
     from coinflight.model.surface import Surface
     from coinflight.model.toss import check_gravity
     from coinflight.outcomes.table import TableLanding, land
@@ -888,22 +826,14 @@ def mujoco_check(
     n = v.count("tosses of the MuJoCo check", n, 1, 100_000)
     the_setting = setting(experiment.setting)
     drop = float(np.mean(the_setting.drop_height)) if drop_height is None else drop_height
-    v.no_dead_contact("contact", restitution)  # the contact ending runs here
     check_gravity(g)
     streams.check_seed(seed)
     wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
-    tables = {}
-    for ending in ("rocking", "contact"):
-        extra = (
-            {"rolling_resistance": resistance, "pivoting_resistance": resistance}
-            if ending == "contact"
-            else {}
-        )
-        tables[ending] = Surface("table", drop, restitution, friction, ending=ending, **extra)
-    # Bounded before anything runs: both endings' landings at their rates, and MuJoCo's.
-    seconds = sum(n / TableLanding(t).rate for t in tables.values())
+    table = Surface("table", drop, restitution, friction)
+    # Bounded before anything runs: the landings at their rate, and MuJoCo's.
+    seconds = n / TableLanding(table).rate
     seconds += mujoco_compare.seconds_estimate(n, mujoco_compare.SETTLE)
-    what = f"the MuJoCo check: {n} tosses in both endings and in MuJoCo"
+    what = f"the MuJoCo check: {n} tosses in coinflight and in MuJoCo"
     v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
@@ -921,9 +851,7 @@ def mujoco_check(
     def edges(faces: Any) -> BinomialEstimate:
         return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
 
-    landed = {ending: land(coin, omega, v0, 1.0, g, t) for ending, t in tables.items()}
-    ours = {ending: edges(out.face) for ending, out in landed.items()}
-    decided = int(np.count_nonzero(landed["contact"].status == Status.DECIDED_UPRIGHT))
+    rocking = edges(land(coin, omega, v0, 1.0, g, table).face)
     engine = mujoco_compare.Engine(torsional=resistance, rolling=resistance)
     run = mujoco_compare.run(coin, omega, v0, drop, restitution, friction, g, engine=engine)
     return EngineCheck(
@@ -938,12 +866,10 @@ def mujoco_check(
                 **({} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}),
             }
         ),
-        ours["rocking"],
-        ours["contact"],
+        rocking,
         edges(run.rest),
         int(np.count_nonzero(run.moving)),
         float(run.elapsed),
-        decided,
     )
 
 

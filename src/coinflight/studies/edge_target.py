@@ -25,7 +25,7 @@ rate (:attr:`coinflight.outcomes.table.TableLanding.rate`).
 
 The band
 --------
-Each of restitution e, friction μ and, with a 3-D ending ("contact", "rigid"), the rolling and
+Each of restitution e, friction μ and, with the rigid 3-D ending ("rigid"), the rolling and
 pivoting resistance not given is spread over its plausible range: e 0.3–0.6 and μ 0.05–0.6,
 the union of the surface presets' ranges (:func:`coinflight.studies.presets.bouncing_box`),
 the resistances 1e-5–1e-3 m, both the same value in a cell
@@ -320,7 +320,7 @@ def target_ratio(
     """
     from scipy.optimize import bisect
 
-    from coinflight.model.surface import Surface
+    from coinflight.model.surface import ENDINGS, Surface
     from coinflight.outcomes.table import TableLanding
     from coinflight.studies.edge import (
         SIM_DIAMETER,
@@ -333,7 +333,7 @@ def target_ratio(
     p = check_probability(probability)
     n = v.count("tosses per ratio", n, 1, 10**7)
     streams.check_seed(seed)
-    v.choice("ending", ending, ("rocking", "contact", "rigid"))
+    v.choice("ending", ending, ENDINGS)
     drop = SIM_DROP if drop_height is None else drop_height
     corner = 0.0 if corner_radius is None else corner_radius
     low = SIM_RATIOS[0]
@@ -372,7 +372,6 @@ def target_ratio(
     rates = []
     for cell in cells:  # each cell checked as simulate_edge will check it, before any toss
         kw = kwargs(cell)
-        v.no_dead_contact(ending, kw["restitution"])
         resist = {k: kw[k] for k in ("rolling_resistance", "pivoting_resistance") if k in kw}
         surface = Surface("table", drop, kw["restitution"], kw["friction"], ending=ending,  # type: ignore[arg-type]
                           **resist)  # fmt: skip

@@ -1,6 +1,6 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Six questions, each a function returning plain values with their seeds:
+Five questions, each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
@@ -18,17 +18,12 @@ Six questions, each a function returning plain values with their seeds:
   by toss) — a band, not a point, beside Murray & Teare's extrapolated 1 in 6000;
 * :func:`mujoco_comparison`: identical tosses in coinflight and in MuJoCo
   (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
-  of each; coinflight's at-rest faces with both of its endings (the planar rocking hand-off and
-  the experimental 3-D contact phase with MuJoCo's rolling and torsional friction as its
-  rolling and pivoting resistance);
-* :func:`edge_check`: are the 3-D contact ending's edges coinflight's alone? The same vigorous
-  tosses (axial spin) in the contact ending and in MuJoCo (sharp rims, the same resistances),
-  P(tails, heads, edge) at rest, which tosses end on edge in each, how long they stand
-  (MuJoCo leaves far fewer on edge: why is in the documentation's physics page, "Beside a
-  general rigid-body engine").
+  of each (coinflight's default ending, the planar rocking hand-off);
+* :func:`rigid_nickel`: the US nickel's P(edge) in the rigid 3-D ending, a band over its
+  unmeasured parameters, and how the edges ended.
 
 These are validation runs, not predictions: every table number they give depends on the
-restitution and friction (and, for the contact ending, on the rolling and pivoting resistance
+restitution and friction (and, for the rigid ending, on the rolling and pivoting resistance
 and the rim's corner radius), none measured for a coin. A number quoted from here goes with
 its band over those parameters (:func:`contact_maps`, :func:`nickel_band`).
 
@@ -649,33 +644,25 @@ class EndingRun:
     """coinflight's faces at rest of the compared tosses with one ending of the landing."""
 
     ending: str
-    """``"rocking"`` or ``"contact"`` (:class:`~coinflight.model.surface.Surface` ``ending``)."""
+    """``"rocking"`` (:class:`~coinflight.model.surface.Surface` ``ending``)."""
     rest: NDArray[np.int8]
     unsettled: int
     """Tosses that had not settled when the simulation stopped (counted by their well)."""
     seconds: float
     """Wall time of the landings (compiled before timing), s."""
-    rolling_resistance: float = 0.0
-    pivoting_resistance: float = 0.0
-    """ℓ_r, ℓ_p (m); used by the contact ending only."""
     at_impact: int = 0
     """Tosses ended at an impact by the energy test (status SETTLED_ENERGY), before the
-    ending proper starts: with the contact ending, rigorously (the whole energy below the
-    barrier of the coin's well)."""
-    decided_upright: int = 0
-    """Tosses the contact ending ended on edge by its upright decision (status DECIDED_UPRIGHT:
-    a measured predictor, not a proof; the coin may still be rolling); 0 with the rocking
-    ending."""
+    ending proper starts."""
 
 
 @dataclass(frozen=True)
 class MujocoComparison:
     """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`.
 
-    ``rocking`` and ``contact`` are coinflight's two endings of the same tosses, one shape
-    (:class:`EndingRun`; ``contact`` None when not run); ``first`` coinflight's wells at the
-    first contact; ``mujoco`` MuJoCo's run (faces at the first contact and at the end, the
-    tosses still moving at its limit, how long each took to settle).
+    ``rocking`` is coinflight's landing of the tosses with its default ending
+    (:class:`EndingRun`); ``first`` coinflight's wells at the first contact; ``mujoco``
+    MuJoCo's run (faces at the first contact and at the end, the tosses still moving at its
+    limit, how long each took to settle).
     """
 
     n: int
@@ -686,12 +673,11 @@ class MujocoComparison:
     rocking: EndingRun
     mujoco: Any  # mujoco_compare.MujocoRun (a module importable without MuJoCo)
     settings: dict[str, Any]
-    contact: EndingRun | None = None
 
     @property
     def endings(self) -> tuple[EndingRun, ...]:
-        """coinflight's runs: rocking, then contact when it ran."""
-        return (self.rocking,) if self.contact is None else (self.rocking, self.contact)
+        """coinflight's runs: the rocking ending's."""
+        return (self.rocking,)
 
     @property
     def mujoco_first(self) -> NDArray[np.int8]:
@@ -747,7 +733,6 @@ def mujoco_comparison(
     restitution: float = DEFAULT_RESTITUTION,
     friction: float = DEFAULT_FRICTION,
     threads: int | None = None,
-    contact: bool = True,
     limit: float | None = None,
 ) -> MujocoComparison:
     """``n`` tosses of :func:`mujoco_tosses` on a table :data:`DROP_HEIGHT` below launch, in
@@ -756,16 +741,9 @@ def mujoco_comparison(
     ``limit`` s past its first contact, default
     :data:`~coinflight.studies.mujoco_compare.SETTLE`); ImportError without MuJoCo.
 
-    coinflight lands them twice: with its default ending (planar rocking) and, unless
-    ``contact`` is False, with the 3-D contact ending (``Surface(ending="contact")``) whose
-    rolling and pivoting resistances are MuJoCo's rolling and torsional friction coefficients
-    (:data:`~coinflight.studies.mujoco_compare.ROLLING` = 1e-4 m,
-    :data:`~coinflight.studies.mujoco_compare.TORSIONAL` = 5e-3 m). Both are torques bounded
-    by a length times the normal force, so the lengths carry over one to one; what does not
-    (coinflight's Coulomb friction spread over the contact arc, MuJoCo's pyramidal cone and
-    soft, creeping friction, instantaneous against soft impacts) is listed in
-    :mod:`coinflight.studies.mujoco_compare`. MuJoCo runs with contact dimension
-    :data:`~coinflight.studies.mujoco_compare.CONDIM` (6), without which it ignores both.
+    coinflight lands them with its default ending (planar rocking). How the two contact models
+    differ (MuJoCo's pyramidal cone and soft, creeping friction, instantaneous against soft
+    impacts) is listed in :mod:`coinflight.studies.mujoco_compare`.
     """
     from coinflight.studies import mujoco_compare
 
@@ -778,18 +756,6 @@ def mujoco_comparison(
     omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
     surface = Surface("table", DROP_HEIGHT, restitution, friction)
     rocking, first, _ = _ending_run(dist, omega, v0, surface)
-    contact_run = None
-    if contact:
-        resisted = Surface(
-            "table",
-            DROP_HEIGHT,
-            restitution,
-            friction,
-            rolling_resistance=mujoco_compare.ROLLING,
-            pivoting_resistance=mujoco_compare.TORSIONAL,
-            ending="contact",
-        )
-        contact_run, _, _ = _ending_run(dist, omega, v0, resisted)
     engine = mujoco_compare.Engine(limit=limit)
     theirs = mujoco_compare.run(
         dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads, engine
@@ -803,222 +769,6 @@ def mujoco_comparison(
         rocking,
         theirs,
         theirs.settings(friction),
-        contact_run,
-    )
-
-
-# --- edges in both engines -----------------------------------------------------------------------
-EDGE_SPIN = (-30.0, 30.0)
-"""Spin about the second diameter and about the normal of the edge check's vigorous tosses,
-rad/s, uniform (the axial spin keeps coins rolling on their rim after the bounces)."""
-EDGE_PAIRS = ((0.5, 0.3),)
-"""(e, μ) of the edge check by default (MuJoCo's contact damping is calibrated per e)."""
-EDGE_RESISTANCE = 1e-4
-"""Rolling and pivoting resistance of the edge check, m: coinflight's defaults
-(:data:`coinflight.model.surface.DEFAULT_ROLLING_RESISTANCE`, ``DEFAULT_PIVOTING_RESISTANCE``),
-MuJoCo's rolling and torsional friction coefficients (mapped one to one,
-:mod:`coinflight.studies.mujoco_compare`)."""
-EDGE_INTEGRATOR = "RK4"
-"""MuJoCo's integrator of the edge check: with an axial spin the coin precesses in flight, and
-MuJoCo's default semi-implicit Euler drifts there (200 vigorous tosses, seed 7: the same well
-at the first contact as coinflight's exact flight for 68 % with Euler, 73 % with implicit or
-implicitfast, 98 % with RK4, at 3.5 times Euler's cost a step)."""
-
-
-def edge_tosses(coin: Coin | None = None) -> TossDistribution:
-    """The edge check's vigorous tosses: ωx ~ U(:data:`SPIN`),
-    ωy, ωz ~ U(:data:`EDGE_SPIN`), v0 ~ U(:data:`LAUNCH_SPEED`), heads up."""
-    return TossDistribution(
-        Uniform(*SPIN),
-        Uniform(*EDGE_SPIN),
-        Uniform(*EDGE_SPIN),
-        coin=coin if coin is not None else Coin.preset(COIN),
-        launch_speed=Uniform(*LAUNCH_SPEED),
-    )
-
-
-EDGE_TOSSES = {"vigorous": edge_tosses, "report": mujoco_tosses}
-"""The edge check's toss sets: ``"vigorous"`` (:func:`edge_tosses`, axial spin) and
-``"report"`` (:func:`mujoco_tosses`, the landing report's, no axial spin)."""
-
-
-@dataclass(frozen=True)
-class EdgeCell:
-    """One (e, μ) of :func:`edge_check`: the same tosses in both engines.
-
-    Attributes
-    ----------
-    restitution, friction : float
-    coinflight : EndingRun
-        coinflight's contact ending (sharp corners), faces at rest.
-    handed : ndarray of bool
-        coinflight's tosses handed to the contact phase (the rest ended at an impact, their
-        whole energy below the barrier of their well).
-    first : ndarray of int8
-        coinflight's wells at the first contact.
-    mujoco : MujocoRun
-        The same tosses in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`).
-    """
-
-    restitution: float
-    friction: float
-    coinflight: EndingRun
-    handed: NDArray[np.bool_]
-    first: NDArray[np.int8]
-    mujoco: Any  # mujoco_compare.MujocoRun
-
-    @property
-    def n(self) -> int:
-        return len(self.handed)
-
-    def fractions(
-        self, faces: NDArray[np.int8], among: NDArray[np.bool_] | None = None
-    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """(tails, heads, edge) fractions of ``faces`` (among the tosses ``among``, default
-        all) and their binomial standard errors."""
-        chosen = faces if among is None else faces[among]
-        k = max(len(chosen), 1)
-        p = np.bincount(chosen, minlength=3) / k
-        return p, np.sqrt(p * (1.0 - p) / k)
-
-    @property
-    def edges(self) -> tuple[int, int, int]:
-        """Tosses on edge at the end in both engines, in coinflight only, in MuJoCo only."""
-        ours, theirs = self.coinflight.rest == EDGE, self.mujoco.rest == EDGE
-        return (
-            int(np.count_nonzero(ours & theirs)),
-            int(np.count_nonzero(ours & ~theirs)),
-            int(np.count_nonzero(~ours & theirs)),
-        )
-
-    @property
-    def first_agreement(self) -> float:
-        """Fraction of tosses in the same well at the first contact in both engines."""
-        return float(np.mean(self.first == self.mujoco.first))
-
-    @property
-    def rest_agreement(self) -> float:
-        """Fraction of tosses with the same face at the end in both engines."""
-        return float(np.mean(self.coinflight.rest == self.mujoco.rest))
-
-
-@dataclass(frozen=True)
-class EdgeCheck:
-    """P(tails, heads, edge) at rest of the same tosses in coinflight's contact ending and in
-    MuJoCo, per (e, μ); see :func:`edge_check`."""
-
-    tosses: str
-    n: int
-    seed: int
-    rolling_resistance: float
-    pivoting_resistance: float
-    limit: float
-    integrator: str
-    cells: tuple[EdgeCell, ...]
-    seconds: float
-
-
-def edge_draw(
-    n: int, seed: streams.SeedLike, tosses: str = "vigorous"
-) -> tuple[TossDistribution, NDArray[np.float64], NDArray[np.float64]]:
-    """The edge check's ``n`` tosses of kind ``tosses`` (:data:`EDGE_TOSSES`) from ``seed`` (an
-    integer, or the root SeedSequence itself, so that a fresh seed is drawn once): (distribution,
-    ω (n, 3) rad/s, v0 (n,) m/s), the same stream :func:`edge_check` draws (benchmarks that
-    start from these tosses call this, not a copy of the stream's number)."""
-    dist = EDGE_TOSSES[tosses]()
-    omega, v0 = _draw(dist, n, streams.child(streams.seed_sequence(seed), _EDGES))
-    return dist, omega, v0
-
-
-def edge_surface(e: float, mu: float, resistance: float = EDGE_RESISTANCE) -> Surface:
-    """The edge check's table: restitution ``e``, friction ``mu``, rolling and pivoting
-    resistance ``resistance`` (m), the 3-D contact ending, dropped from :data:`DROP_HEIGHT`."""
-    return Surface(
-        "table",
-        DROP_HEIGHT,
-        e,
-        mu,
-        rolling_resistance=resistance,
-        pivoting_resistance=resistance,
-        ending="contact",
-    )
-
-
-def edge_check(
-    n: int,
-    seed: streams.SeedLike,
-    pairs: tuple[tuple[float, float], ...] = EDGE_PAIRS,
-    *,
-    tosses: str = "vigorous",
-    limit: float | None = None,
-    resistance: float = EDGE_RESISTANCE,
-    integrator: str = EDGE_INTEGRATOR,
-    threads: int | None = None,
-) -> EdgeCheck:
-    """Are the contact ending's edges coinflight's, or does an independent engine give them too?
-
-    ``n`` tosses (:data:`EDGE_TOSSES` ``[tosses]``, from ``seed``), for each (e, μ) of
-    ``pairs``: in coinflight with the 3-D contact ending (``Surface(ending="contact")``, the
-    nickel's sharp corners, rolling and pivoting resistance ``resistance``) and in MuJoCo (a
-    sharp cylinder, condim 6, rolling and torsional friction ``resistance``, the contact
-    damping calibrated to e, ``integrator``, each toss carried until it settles or ``limit`` s
-    past its first contact, default :data:`~coinflight.studies.mujoco_compare.SETTLE`; the
-    tosses still moving then are counted, :attr:`MujocoRun.moving`). The work is bounded before
-    anything runs. ImportError without MuJoCo.
-    """
-    from coinflight.core.outcome import Status
-    from coinflight.studies import mujoco_compare
-
-    t0 = time.perf_counter()
-    n = v.count("edge-check tosses", n, 1, 10**6)
-    if tosses not in EDGE_TOSSES:
-        raise ValueError(f"tosses must be one of {', '.join(EDGE_TOSSES)}, got {tosses!r}")
-    pairs = tuple((float(e), float(mu)) for e, mu in pairs)
-    if not pairs:
-        raise ValueError("the edge check needs at least one (restitution, friction) pair")
-    for e, mu in pairs:
-        Surface("table", DROP_HEIGHT, e, mu)  # the surface's own checks of e and μ
-        if e <= 0.0:
-            raise ValueError(f"the edge check needs restitution > 0 (MuJoCo's contact), got {e}")
-    resistance = float(resistance)
-    if not (math.isfinite(resistance) and resistance >= 0.0):
-        raise ValueError(f"resistance must be a length ≥ 0 m, got {resistance!r}")
-    limit = mujoco_compare.SETTLE if limit is None else limit
-    mujoco_compare.check_limit(limit)
-    mujoco_compare.bound([n] * len(pairs), limit, integrator)
-    root = streams.seed_sequence(seed)
-    dist, omega, v0 = edge_draw(n, root, tosses)
-    if dist.coin.corner_radius != 0.0:  # pragma: no cover - the preset is sharp
-        raise ValueError("the edge check compares sharp rims")
-    cells = []
-    for e, mu in pairs:
-        surface = edge_surface(e, mu, resistance)
-        ours, first, status = _ending_run(dist, omega, v0, surface)
-        handed = status != Status.SETTLED_ENERGY
-        theirs = mujoco_compare.run(
-            dist.coin,
-            omega,
-            v0,
-            DROP_HEIGHT,
-            e,
-            mu,
-            dist.g,
-            threads,
-            mujoco_compare.Engine(
-                torsional=resistance, rolling=resistance, integrator=integrator, limit=limit
-            ),
-        )
-        cells.append(EdgeCell(e, mu, ours, handed, first, theirs))
-    return EdgeCheck(
-        tosses,
-        n,
-        streams.reported_seed(root),
-        resistance,
-        resistance,
-        limit,
-        integrator,
-        tuple(cells),
-        time.perf_counter() - t0,
     )
 
 
@@ -1032,12 +782,6 @@ def _at_impact(status: NDArray[np.int8]) -> int:
     from coinflight.core.outcome import Status
 
     return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
-
-
-def _decided_upright(status: NDArray[np.int8]) -> int:
-    from coinflight.core.outcome import Status
-
-    return int(np.count_nonzero(status == Status.DECIDED_UPRIGHT))
 
 
 def _ending_run(
@@ -1055,16 +799,8 @@ def _ending_run(
     out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
     seconds = time.perf_counter() - t0
     first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
-    contact = surface.ending == "contact"
     run = EndingRun(
-        surface.ending,
-        out.face,
-        _unsettled(out.status),
-        seconds,
-        surface.rolling_resistance if contact else 0.0,
-        surface.pivoting_resistance if contact else 0.0,
-        _at_impact(out.status),
-        _decided_upright(out.status),
+        surface.ending, out.face, _unsettled(out.status), seconds, _at_impact(out.status)
     )
     return run, first, out.status
 
@@ -1073,7 +809,6 @@ def _ending_run(
 def thick_experiments(
     n: int,
     seed: streams.SeedLike,
-    contact: int = 0,
     points: int = 2,
     rigid: int = 0,
     psi: float | Literal["human"] | None = None,
@@ -1082,9 +817,9 @@ def thick_experiments(
     (:func:`coinflight.datasets.edge_experiments`, those a setting simulates:
     :func:`coinflight.studies.edge_experiments.from_dataset`) beside the model's band
     (:func:`coinflight.studies.edge_experiments.edge_experiments`: ``n`` rocking tosses per
-    cell, ``points`` values per parameter, ``contact`` contact-ending and ``rigid``
-    rigid-ending tosses per cell; ``psi`` a wobble, "human" the toss preset's), from the seed's
-    child for this question. Returns (EdgeExperiments, the records left out and why)."""
+    cell, ``points`` values per parameter, ``rigid`` rigid-ending tosses per cell; ``psi`` a
+    wobble, "human" the toss preset's), from the seed's child for this question.
+    Returns (EdgeExperiments, the records left out and why)."""
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset
 
@@ -1094,7 +829,6 @@ def thick_experiments(
         records,
         n,
         streams.child(root, _EXPERIMENTS),
-        contact=contact,
         points=points,
         rigid=rigid,
         psi=psi,
@@ -1105,8 +839,6 @@ def thick_experiments(
 __all__ = [
     "COIN",
     "DROP_HEIGHT",
-    "EDGE_PAIRS",
-    "EDGE_TOSSES",
     "EXPERIMENTS_CHILD",
     "MURRAY_TEARE",
     "RATIOS",
@@ -1117,8 +849,6 @@ __all__ = [
     "BouncingEdges",
     "ContactMaps",
     "DeadLanding",
-    "EdgeCell",
-    "EdgeCheck",
     "EndingRun",
     "MujocoComparison",
     "RigidBand",
@@ -1126,10 +856,6 @@ __all__ = [
     "bouncing_edges",
     "contact_maps",
     "dead_landings",
-    "edge_check",
-    "edge_draw",
-    "edge_surface",
-    "edge_tosses",
     "map_tosses",
     "mujoco_comparison",
     "mujoco_tosses",

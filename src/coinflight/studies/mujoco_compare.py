@@ -7,8 +7,8 @@ with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documen
 sliding, torsional and rolling coefficients. coinflight flies the coin exactly between
 impacts and resolves each impact with its restitution and friction
 (:mod:`coinflight.core.bounce`); the bounces end in one of two ways (``Surface(ending=...)``):
-the planar rocking hand-off (default) or the 3-D compliant contact phase
-(:mod:`coinflight.core.contact_phase`, with rolling and pivoting resistance). What is
+the planar rocking hand-off (default) or the rigid 3-D ending
+(:mod:`coinflight.core.rigid_ending`, with rolling and pivoting resistance). What is
 compared:
 
 * the well the coin is in at its **first contact** (geometry and free flight only: the two
@@ -30,23 +30,21 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
   regular frictional contact", 4 adds torsional friction, 6 adds rolling friction).
 
-How MuJoCo's coefficients map onto coinflight's contact ending. In MuJoCo's friction cone
+How MuJoCo's coefficients map onto coinflight's rigid ending. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
 torque by μ_rolling f_n (elliptic cone: f_1² ≥ Σ f_i²/μ_(i−1)²; the pyramidal cone used here
 by default bounds the same torques along its edges), both coefficients "have units of
 length" ("the diameter of the surface contact patch" and "the depth of the local
-deformation within which energy is dissipated"). coinflight's contact phase resists rolling
-with a torque ℓ_r F_n and pivoting with (μ r_t + ℓ_p) F_n, ℓ_r, ℓ_p lengths
-(:mod:`coinflight.core.contact_phase`): the same form, so ℓ_r = μ_rolling = 1e-4 m and
+deformation within which energy is dissipated"). coinflight's rigid ending resists rolling
+with a torque ℓ_r F_n and pivoting with ℓ_p F_n at its point contact, ℓ_r, ℓ_p lengths
+(:mod:`coinflight.core.rigid_contact`): the same form, so ℓ_r = μ_rolling = 1e-4 m and
 ℓ_p = μ_torsional = 5e-3 m (:data:`ROLLING`, :data:`TORSIONAL`). The map is one to one in
-the bound only: (i) coinflight adds the Coulomb friction spread over the contact arc, μ r_t,
-which MuJoCo gets from its several contact points of a cylinder on a plane; (ii) MuJoCo's
-cone is pyramidal, so sliding and torsion share one budget along its edges, where
-coinflight bounds them separately; (iii) MuJoCo's friction is a soft constraint that creeps
-at a rate set by ``solref``, coinflight's a regularised Coulomb law (slip speed
-:data:`coinflight.core.contact_phase.SLIP_SPEED`); (iv) coinflight's impacts are
-instantaneous, MuJoCo's are the same soft contact, and only the last phase of coinflight's
-landing has the resistances at all.
+the bound only: (i) MuJoCo's cone is pyramidal, so sliding and torsion share one budget
+along its edges, where coinflight bounds them separately; (ii) MuJoCo's friction is a soft
+constraint that creeps at a rate set by ``solref``, coinflight's is Coulomb's set-valued law
+(its resistances regularised below :data:`coinflight.core.flight.SLIP_SPEED`); (iii)
+coinflight's impacts are instantaneous, MuJoCo's are the same soft contact, and only the
+last phase of coinflight's landing has the resistances at all.
 
 Carried to rest. Each toss runs until its face can no longer change (:func:`_settled`: at rest
 now and :data:`REST_CHECK` s before, or in a face's well with less energy than the corner),
@@ -65,14 +63,13 @@ to make it harder than the normal direction without changing μ: the elliptic co
 
 Integrator. MuJoCo's default semi-implicit Euler drifts in a precessing flight, RK4 does not
 (at several times Euler's cost a step): the landing report's comparison has no axial spin and
-keeps Euler; the edge check (:func:`coinflight.studies.landing.edge_check`), whose tosses
-precess, runs RK4.
+keeps Euler; tosses that precess should run RK4 (``Engine(integrator="RK4")``).
 
 What the comparison found, and why the two engines part on edges, is in the documentation
 (:ref:`physics-mujoco`); the landing report
 (:mod:`coinflight.report.landing`) computes it through
 :func:`coinflight.studies.landing.mujoco_comparison` and
-:func:`coinflight.studies.landing.edge_check`.
+:func:`coinflight.studies.edge_experiments.mujoco_check`.
 """
 
 from __future__ import annotations
@@ -100,10 +97,10 @@ TIMECONST = 1e-3
 rule) and short enough for a millimetre-thin coin."""
 TORSIONAL = 0.005
 """MuJoCo's default torsional friction coefficient, m (``friction="μ 0.005 0.0001"``); the
-pivoting resistance ℓ_p of coinflight's contact ending in the comparison (module notes)."""
+pivoting resistance ℓ_p of coinflight's rigid ending (module notes)."""
 ROLLING = 0.0001
 """MuJoCo's default rolling friction coefficient, m; the rolling resistance ℓ_r of
-coinflight's contact ending in the comparison (module notes)."""
+coinflight's rigid ending (module notes)."""
 CONDIM = 6
 """MuJoCo's contact dimension: 6 = normal, two sliding, torsional and two rolling directions, so
 that :data:`TORSIONAL` and :data:`ROLLING` act (MuJoCo's default, 3, ignores them)."""
