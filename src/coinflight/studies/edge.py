@@ -117,7 +117,6 @@ def simulate_edge(
     drop_height: float = SIM_DROP,
     spin: Distribution | None = None,
     launch_speed: Distribution | None = None,
-    ending: str = "rocking",
     rolling_resistance: float | None = None,
     pivoting_resistance: float | None = None,
     corner_radius: float = 0.0,
@@ -147,10 +146,10 @@ def simulate_edge(
     ``friction`` and ``drop_height`` of the table (:class:`coinflight.model.surface.Surface`);
     ``spin`` (ωx, rad/s) and ``launch_speed`` (v0, m/s) as distributions
     (:mod:`coinflight.model.distributions`, drawn through their ``ppf`` from the same streams);
-    the launch speed must be positive with certainty; ``ending`` ("rocking" or "rigid", the
-    rigid 3-D ending) and, with the rigid ending only, its ``rolling_resistance`` and
-    ``pivoting_resistance`` (m; :class:`coinflight.model.surface.Surface`), which act only on
-    landings that bounce (``restitution`` > 0); ``corner_radius`` a (m, default 0: sharp), the
+    the launch speed must be positive with certainty; the rigid ending's
+    ``rolling_resistance`` and ``pivoting_resistance`` (m;
+    :class:`coinflight.model.surface.Surface`), which act only on landings that bounce
+    (``restitution`` > 0); ``corner_radius`` a (m, default 0: sharp), the
     rounded rim corners of every ratio's coin (:attr:`coinflight.model.coin.Coin.corner_radius`:
     the impacts, the endings and the face/edge wells take it), at most half the thinnest
     coin's thickness; ``diameter`` (m, default :data:`SIM_DIAMETER`) the coins' diameter d
@@ -189,8 +188,7 @@ def simulate_edge(
         drop_height=drop_height,
         restitution=restitution,
         friction=friction,
-        ending=ending,  # type: ignore[arg-type]  # checked by Surface
-        **resistances,  # refused by Surface with the rocking ending, which has none
+        **resistances,
     )
     rate = TableLanding(surface).rate
     v.work_bound(
@@ -325,7 +323,7 @@ def edge_table(
     Each dict has ``ratio``, ``p_edge_geometric`` and ``p_edge_dynamic``
     (:func:`edge_probability`) and, when ``n`` is given, ``simulated``: ``p_edge``, ``stderr``,
     ``n``, ``successes`` and ``seed`` of :func:`simulate_edge` (``n`` tosses per ratio, its
-    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g, ending,
+    keyword ``setting``: restitution, friction, drop height, spin, launch speed, g,
     rolling and pivoting resistance, corner radius, diameter, axial spin) and, for rounded
     coins, ``corner_radius`` (m; left out for sharp corners, so that every other row is as it
     was). Ratios

@@ -6,7 +6,8 @@ forms (:func:`coinflight.studies.edge.ratio_for`): h/d = 1/(2√2) ≈ 0.354 if 
 rest in a uniformly random orientation (geometric), 1/√3 ≈ 0.577 if it lands dead at a random
 angle in its plane of spin (dynamic). :func:`target_ratio` answers it for simulated tosses
 landing on a table (:func:`coinflight.studies.edge.simulate_edge`: the flight, the impacts and
-the table's ending), for each cell of the box of what nobody measured, and returns the roots.
+the table's rigid ending), for each cell of the box of what nobody measured, and returns the
+roots.
 
 Method
 ------
@@ -20,13 +21,12 @@ error of P at the root over the slope: σ(h/d) = sqrt(p(1 − p)/n) / (dP/dx), t
 same tosses at x·e^(±:data:`SLOPE_STEP`) (a central difference; its error is stated, bounded
 as if the two fractions were independent, which common random numbers only make smaller).
 Every cell's number of evaluations is bounded before anything runs: at most 1 + the bracket's
-steps + the bisection's ⌈log2(ln 2 / XTOL)⌉ + 2, each of ``n`` tosses at the ending's landing
+steps + the bisection's ⌈log2(ln 2 / XTOL)⌉ + 2, each of ``n`` tosses at the landing
 rate (:attr:`coinflight.outcomes.table.TableLanding.rate`).
 
 The band
 --------
-Each of restitution e, friction μ and, with the rigid 3-D ending ("rigid"), the rolling and
-pivoting resistance not given is spread over its plausible range: e 0.3–0.6 and μ 0.05–0.6,
+Each of restitution e, friction μ and the rolling and pivoting resistance not given is spread over its plausible range: e 0.3–0.6 and μ 0.05–0.6,
 the union of the surface presets' ranges (:func:`coinflight.studies.presets.bouncing_box`),
 the resistances 1e-5–1e-3 m, both the same value in a cell
 (:data:`coinflight.studies.edge_experiments.RESISTANCE`,
@@ -38,7 +38,7 @@ the model's spread. A given value is one point of its dimension (all given: one 
 The toss matters more than the box: with the human toss preset's wobble (``psi="human"``: an
 axial spin putting the normal on a cone of about 82°, fitted to coins, not measured for
 cylinders) more thick cylinders stay on edge, and the root moves further than across the
-whole box with the rocking ending. Its error is the statistical one only: the band's ends are
+whole box. Its error is the statistical one only: the band's ends are
 single cells, and the model's own limits (:mod:`coinflight.studies.edge_experiments`) are not
 in it.
 """
@@ -126,7 +126,6 @@ class EdgeTarget:
     probability: float
     n: int
     seed: int
-    ending: str
     setting: Mapping[str, Any]
     box: Mapping[str, tuple[float, float]]
     cells: tuple[TargetCell, ...]
@@ -172,7 +171,6 @@ class EdgeTarget:
             "measured": [dict(m) for m in self.measured],
             "box": {k: list(r) for k, r in self.box.items()},
             "cells": [c.to_dict() for c in self.cells],
-            "ending": self.ending,
             "setting": dict(self.setting),
             "n": self.n,
             "seed": self.seed,
@@ -191,16 +189,15 @@ def check_probability(value: object) -> float:
 
 
 def target_box(
-    ending: str,
     restitution: float | None = None,
     friction: float | None = None,
     rolling_resistance: float | None = None,
     pivoting_resistance: float | None = None,
 ) -> dict[str, tuple[float, float]]:
     """The box of the band: each parameter given is one point (low = high), each not given its
-    plausible range (module notes); ``resistance`` (both resistances, the same value) only with a
-    3-D ending, and only when neither resistance is given; a single one given keeps the other at
-    its range under its own name."""
+    plausible range (module notes); ``resistance`` (both resistances, the same value) only when
+    neither resistance is given; a single one given keeps the other at its range under its own
+    name."""
     from coinflight.studies.edge_experiments import RESISTANCE
     from coinflight.studies.presets import bouncing_box
 
@@ -209,15 +206,14 @@ def target_box(
         "restitution": e_box if restitution is None else (restitution, restitution),
         "friction": mu_box if friction is None else (friction, friction),
     }
-    if ending != "rocking":
-        if rolling_resistance is None and pivoting_resistance is None:
-            box["resistance"] = RESISTANCE
-        else:
-            for name, value in (
-                ("rolling_resistance", rolling_resistance),
-                ("pivoting_resistance", pivoting_resistance),
-            ):
-                box[name] = RESISTANCE if value is None else (value, value)
+    if rolling_resistance is None and pivoting_resistance is None:
+        box["resistance"] = RESISTANCE
+    else:
+        for name, value in (
+            ("rolling_resistance", rolling_resistance),
+            ("pivoting_resistance", pivoting_resistance),
+        ):
+            box[name] = RESISTANCE if value is None else (value, value)
     return box
 
 
@@ -272,7 +268,6 @@ def target_ratio(
     friction: float | None = None,
     rolling_resistance: float | None = None,
     pivoting_resistance: float | None = None,
-    ending: str = "rocking",
     drop_height: float | None = None,
     spin: Distribution | None = None,
     launch_speed: Distribution | None = None,
@@ -294,12 +289,12 @@ def target_ratio(
     seed : int, optional
         Every draw (reported; fresh from the OS when not given).
     restitution, friction, rolling_resistance, pivoting_resistance : float, optional
-        The table's; each one not given is spread over its plausible range (:func:`target_box`;
-        the resistances only with a 3-D ending). Restitution 0 (dead landings) is the setting of
+        The table's; each one not given is spread over its plausible range (:func:`target_box`).
+        Restitution 0 (dead landings) is the setting of
         Yong & Mahadevan's dynamic model, whose root is tan(πp/2).
-    ending, drop_height, spin, launch_speed, corner_radius, g
+    drop_height, spin, launch_speed, corner_radius, g
         As :func:`coinflight.studies.edge.simulate_edge` takes them (defaults: its vigorous
-        planar tosses, the table 0.5 m below, sharp corners, the rocking ending).
+        planar tosses, the table 0.5 m below, sharp corners).
     psi : float or "human", optional
         A wobble as well: the precession cone angle ψ in degrees (0 < ψ ≤ 90), or "human",
         the human toss preset's spread of ψ about 82° (:func:`coinflight.studies.
@@ -320,7 +315,7 @@ def target_ratio(
     """
     from scipy.optimize import bisect
 
-    from coinflight.model.surface import ENDINGS, Surface
+    from coinflight.model.surface import Surface
     from coinflight.outcomes.table import TableLanding
     from coinflight.studies.edge import (
         SIM_DIAMETER,
@@ -333,19 +328,18 @@ def target_ratio(
     p = check_probability(probability)
     n = v.count("tosses per ratio", n, 1, 10**7)
     streams.check_seed(seed)
-    v.choice("ending", ending, ENDINGS)
     drop = SIM_DROP if drop_height is None else drop_height
     corner = 0.0 if corner_radius is None else corner_radius
     low = SIM_RATIOS[0]
     if corner:  # every coin landed needs h/2 ≥ the corner radius: the search starts there
         simulated_corner_radius(corner, [SIM_RATIOS[1]])  # at most the radius, not negative
         low = max(low, 2.0 * corner / SIM_DIAMETER * (1 + 1e-9))
-    box = target_box(ending, restitution, friction, rolling_resistance, pivoting_resistance)
+    box = target_box(restitution, friction, rolling_resistance, pivoting_resistance)
     from coinflight.studies.edge_experiments import box_cells
 
     cells = box_cells(box)
     fixed = {"g": g, "drop_height": drop, "spin": spin, "launch_speed": launch_speed,
-             "corner_radius": corner, "ending": ending}  # fmt: skip
+             "corner_radius": corner}  # fmt: skip
 
     def kwargs(cell: Mapping[str, float]) -> dict[str, Any]:
         out = {**fixed, "restitution": cell["restitution"], "friction": cell["friction"]}
@@ -373,8 +367,7 @@ def target_ratio(
     for cell in cells:  # each cell checked as simulate_edge will check it, before any toss
         kw = kwargs(cell)
         resist = {k: kw[k] for k in ("rolling_resistance", "pivoting_resistance") if k in kw}
-        surface = Surface("table", drop, kw["restitution"], kw["friction"], ending=ending,  # type: ignore[arg-type]
-                          **resist)  # fmt: skip
+        surface = Surface("table", drop, kw["restitution"], kw["friction"], **resist)
         rates.append(TableLanding(surface).rate)
     with warnings.catch_warnings():  # the toss setting refused now, if bad (one toss)
         warnings.simplefilter("ignore", v.PlausibilityWarning)
@@ -450,7 +443,6 @@ def target_ratio(
         p,
         n,
         streams.reported_seed(root),
-        ending,
         MappingProxyType(setting),
         MappingProxyType(box),
         tuple(found),
