@@ -26,9 +26,10 @@ rate (:attr:`coinflight.outcomes.table.TableLanding.rate`).
 
 The band
 --------
-Each of restitution e, friction μ and the rolling and pivoting resistance not given is spread over its plausible range: e 0.3–0.6 and μ 0.05–0.6,
-the union of the surface presets' ranges (:func:`coinflight.studies.presets.bouncing_box`),
-the resistances 1e-5–1e-3 m, both the same value in a cell
+Each of restitution e, friction μ and the rolling and pivoting resistance not given is spread
+over its plausible range: e 0.3–0.6 and μ 0.05–0.6, the union of the surface presets' ranges
+(:func:`coinflight.studies.presets.bouncing_box`), the resistances 1e-5–1e-3 m, both the same
+value in a cell
 (:data:`coinflight.studies.edge_experiments.RESISTANCE`,
 :data:`coinflight.model.surface.DEFAULT_ROLLING_RESISTANCE`). The cells are the box's corners
 and its centre (:func:`coinflight.studies.edge_experiments.box_cells`); the band is the lowest
