@@ -73,8 +73,8 @@ EDGE = Face.EDGE
 FACE_NAMES = tuple(face.label for face in Face)
 """("tails", "heads", "edge"), indexed by face code."""
 STATUS_NAMES = tuple(status.label for status in Status)
-"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking", "settled in contact",
-"decided upright"), by status code."""
+"""("settled", "landed dead", "bounce limit", "unsettled", "settled rocking", "settled in contact"),
+by status code."""
 
 
 def same_side(alignment: ArrayLike) -> NDArray[np.bool_]:

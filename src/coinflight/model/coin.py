@@ -29,7 +29,7 @@ class Coin:
         ball of radius a. Not measured for any coin (worn coins are rounder than new ones): carry a
         band, not a value. Only a table landing reads it
         (:meth:`coinflight.core.contact.Contact.build`): the flight's contacts, the impacts
-        and the 3-D contact ending touch the table with the rounded rim, and every landing's
+        and the rigid 3-D ending touch the table with the rounded rim, and every landing's
         face/edge wells (the energy barrier and the edge angle) are the rounded coin's, and
         the planar rocking ending rocks its section on the round corners (see
         :class:`coinflight.core.contact.Contact`).

@@ -46,7 +46,7 @@ CONTACT = (
 )
 """Contact parameters a distribution of tosses may spread (table landings); when set they
 replace the surface's single value, toss by toss (:mod:`coinflight.outcomes.table`): the
-rolling and pivoting resistances with the 3-D contact ending only, the only one they act in
+rolling and pivoting resistances with the rigid 3-D ending only, the only one they act in
 (:attr:`coinflight.outcomes.table.TableLanding.contact_parameters`)."""
 
 # A normal flight time must stay positive: below mean − 8 sd lies a probability 6e-16, far
@@ -85,7 +85,7 @@ class TossDistribution:
         Only table landings take them (the estimators refuse them for other outcome models).
     rolling_resistance, pivoting_resistance : Distribution or float, keyword only
         The same for the rolling and pivoting resistance lengths ℓ_r, ℓ_p (m, in [0, 1 cm]) of
-        the 3-D contact ending, drawn toss by toss with that ending; the rocking ending, which
+        the rigid 3-D ending, drawn toss by toss with that ending; the rocking ending, which
         has no resistance, refuses a distribution of them (one line) rather than ignore it.
     contact_duration : Distribution or float, keyword only
         The same for the contact duration t_c of an impact (s, in [1 μs, 10 ms],
