@@ -7,24 +7,24 @@
     python benchmarks/bench_targets.py --rounds 7 --seed 11 --n 2000   # every case on 2,000
     python benchmarks/bench_targets.py --cpu           # + each case in one thread, per CPU s
 
-The targets, on 2 cores: ≥ 50,000 tosses a second carried to rest by the 3-D contact ending (no
-planar hand-off), first contact ≥ 2 M a second, tosses through air ≥ 100,000 a second, and the
-speed ratio against MuJoCo on the same tosses (no target). Every case runs in one process on 2
-of numba's threads (fewer when numba has fewer; said in the output), the rounds interleaved
-(one of each case in turn, so the machine's other load falls on all alike), the rate of each
-case the median of its rounds. The cases (default tosses; ``--quick`` a tenth):
+The targets, on 2 cores: ≥ 50,000 tosses a second carried to rest by the 3-D ending (no
+planar hand-off: the rigid ending), first contact ≥ 2 M a second, tosses through air ≥ 100,000
+a second, and the speed ratio against MuJoCo on the same tosses (no target). Every case runs in
+one process on 2 of numba's threads (fewer when numba has fewer; said in the output), the
+rounds interleaved (one of each case in turn, so the machine's other load falls on all alike),
+the rate of each case the median of its rounds. The cases (default tosses; ``--quick`` a tenth):
 
 - first contact with the table 0.8 m below launch, e 0.5, μ 0.3 (1,000,000 tosses);
-- carried to rest with the 3-D contact ending (``ending="contact"``) at e 0.5, μ 0.3 and with
-  each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (6,000 tosses), and as references without
+- carried to rest with the rigid 3-D ending (``ending="rigid"``) at e 0.5, μ 0.3 and with
+  each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (1,000 tosses), and as references without
   a target, marked "(planar)", the same with the default rocking ending (200,000 tosses);
 - through air (C_d 1.17, no spin damping): the hand catch and the table's first contact
-  (100,000 tosses each), the table carried to rest with the 3-D contact ending (6,000), and as
+  (100,000 tosses each), the table carried to rest with the rigid ending (1,000), and as
   a reference with the rocking ending (100,000);
 - with ``--mujoco N`` (the optional extra; one line and skipped when not installed): MuJoCo
   (:func:`coinflight.studies.mujoco_compare.run`, its settings, ``threads`` 2, its wall time
-  including its calibration) on the first N of the contact rows' tosses, and coinflight's
-  contact ending on the same N with MuJoCo's rolling and torsional lengths as resistances
+  including its calibration) on the first N of the rigid rows' tosses, and coinflight's
+  rigid ending on the same N with MuJoCo's rolling and torsional lengths as resistances
   (medians of the rounds): the speed ratio coinflight / MuJoCo. The ratio depends on the
   tosses (with axial spin, as here, both engines are slower than on the landing report's).
 
@@ -92,19 +92,19 @@ PLANAR = "(planar)"
 PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not the 3-D ending: a reference"
 """The rocking ending's rows are references, marked :data:`PLANAR` in their labels and
 explained by :data:`PLANAR_NOTE` under the table: the 50,000 a second is for the 3-D
-contact phase ("no planar hand-off"), which the contact ending's rows time."""
+ending ("no planar hand-off"), which the rigid ending's rows time."""
 
 CASES = (
     Case("first_contact", "first contact (table, 0.8 m drop, e 0.5 μ 0.3)", FIRST_CONTACT,
          1_000_000, 2.0e6),
     Case("rest_rocking", f"to rest, rocking ending {PLANAR}, e 0.5 μ 0.3", None, 200_000, 1.0e5),
     Case("rest_rocking_own", f"to rest, rocking ending {PLANAR}, own e, μ", None, 200_000, 1.0e5),
-    Case("rest_contact", "to rest, 3-D contact ending, e 0.5 μ 0.3", TO_REST, 6_000, 3.0e3),
-    Case("rest_contact_own", "to rest, 3-D contact ending, own e, μ", TO_REST, 6_000, 2.7e3),
+    Case("rest_rigid", "to rest, rigid 3-D ending, e 0.5 μ 0.3", TO_REST, 1_000, 300.0),
+    Case("rest_rigid_own", "to rest, rigid 3-D ending, own e, μ", TO_REST, 1_000, 300.0),
     Case("air_hand", "air: hand catch", IN_AIR, 100_000, 2.5e5),
     Case("air_first_contact", "air: table first contact", IN_AIR, 100_000, 1.7e5),
     Case("air_rest", f"air: table to rest, rocking ending {PLANAR}", None, 100_000, 5.0e4),
-    Case("air_rest_contact", "air: table to rest, 3-D contact ending", IN_AIR, 6_000, 3.0e3),
+    Case("air_rest_rigid", "air: table to rest, rigid 3-D ending", IN_AIR, 1_000, 200.0),
 )  # fmt: skip
 """Every timed case, in the order of the table."""
 
@@ -155,17 +155,17 @@ def calls(
     def air(key: str, name: str) -> Callable[[], Any]:
         return bench_air.cases_in_air(*toss(key), DRAG, parallel)[name]
 
-    own = {k: B.own_rates(size[k]) for k in ("rest_rocking_own", "rest_contact_own")}
+    own = {k: B.own_rates(size[k]) for k in ("rest_rocking_own", "rest_rigid_own")}
     out = {
         "first_contact": case("first_contact", B.SURFACE, max_bounces=0),
         "rest_rocking": case("rest_rocking", B.SURFACE),
         "rest_rocking_own": case("rest_rocking_own", B.SURFACE, contact=own["rest_rocking_own"]),
-        "rest_contact": case("rest_contact", B.CONTACT),
-        "rest_contact_own": case("rest_contact_own", B.CONTACT, contact=own["rest_contact_own"]),
+        "rest_rigid": case("rest_rigid", B.RIGID),
+        "rest_rigid_own": case("rest_rigid_own", B.RIGID, contact=own["rest_rigid_own"]),
         "air_hand": air("air_hand", "hand"),
         "air_first_contact": air("air_first_contact", "table first contact"),
         "air_rest": air("air_rest", "table to rest"),
-        "air_rest_contact": case("air_rest_contact", B.CONTACT, drag=DRAG),
+        "air_rest_rigid": case("air_rest_rigid", B.RIGID, drag=DRAG),
     }
     assert list(out) == [c.key for c in CASES]
     return out
@@ -286,10 +286,10 @@ def mujoco_version() -> dict[str, str | None]:
 
 
 def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> dict[str, Any]:
-    """MuJoCo on the first ``m`` of the contact rows' tosses (one run, its settings, 2 threads)
-    and coinflight's contact ending on the same with MuJoCo's rolling and torsional lengths as
+    """MuJoCo on the first ``m`` of the rigid rows' tosses (one run, its settings, 2 threads)
+    and coinflight's rigid ending on the same with MuJoCo's rolling and torsional lengths as
     resistances (median of ``rounds``): rates and the ratio coinflight / MuJoCo. The tosses are
-    the contact rows' first ``m`` when ``m`` ≤ ``size["rest_contact"]``; a larger ``m`` draws
+    the rigid rows' first ``m`` when ``m`` ≤ ``size["rest_rigid"]``; a larger ``m`` draws
     ``m`` tosses of the same seed (:func:`bench_bounce.tosses` draws its columns in turn, so
     their first ones differ). {"skipped": reason} when MuJoCo is not installed."""
     from coinflight.studies import mujoco_compare as mc
@@ -297,17 +297,17 @@ def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> d
     if not mc.available():
         return {"skipped": "MuJoCo not installed (pip install 'coinflight[mujoco]')"}
     B = bench_bounce
-    omega, v0 = B.tosses(max(m, size["rest_contact"]), seed)
+    omega, v0 = B.tosses(max(m, size["rest_rigid"]), seed)
     omega, v0 = omega[:m], v0[:m]
-    e, mu = B.CONTACT.restitution, B.CONTACT.friction
+    e, mu = B.RIGID.restitution, B.RIGID.friction
     resisted = Surface(
         "table", B.DROP, e, mu, rolling_resistance=mc.ROLLING, pivoting_resistance=mc.TORSIONAL,
-        ending="contact",
+        ending="rigid",
     )  # fmt: skip
     land(B.COIN, omega[:20], v0[:20], 1.0, B.G, resisted)  # compile or load the cache
     ours = interleaved(
-        {"contact": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"contact": m}, rounds
-    )[0]["contact"]
+        {"rigid": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"rigid": m}, rounds
+    )[0]["rigid"]
     run = mc.run(B.COIN, omega, v0, B.DROP, e, mu, B.G, threads=THREADS)
     theirs = m / float(run.elapsed)
     rate = statistics.median(ours)
@@ -394,7 +394,7 @@ def text(rep: Mapping[str, Any]) -> str:
         lines.append(
             f"MuJoCo {mj['mujoco']}, {mj['n']:,} of the same tosses: {mj['mujoco_rate']:,.1f} "
             f"tosses/s ({mj['mujoco_moving']} still moving at {mj['limit']:g} s); coinflight's "
-            f"contact ending (ℓ_r {mj['rolling_resistance']:g} m, ℓ_p "
+            f"rigid ending (ℓ_r {mj['rolling_resistance']:g} m, ℓ_p "
             f"{mj['pivoting_resistance']:g} m) {mj['coinflight_rate']:,.0f} tosses/s: ratio "
             f"{mj['ratio']:,.0f}"
         )

@@ -65,8 +65,8 @@ def test_the_record_holds_the_figures_and_the_provenance(monkeypatch):
     assert own["versions"]["mujoco"] is None and own["versions"]["scipy"] == scipy.__version__
     assert json.loads(recorder.json({"μ": 0.3}))["figures"] == {"μ": 0.3}
     assert "μ" in recorder.json({"μ": 0.3})  # non-ASCII kept
-    assert _record.key("contact ending, each toss its own e, μ") == (
-        "contact_ending_each_toss_its_own_e_mu"
+    assert _record.key("rigid ending, each toss its own e, μ") == (
+        "rigid_ending_each_toss_its_own_e_mu"
     )
 
 
@@ -113,11 +113,6 @@ def _positive(x: object) -> bool:
             ["--rigid-rates", "30", "--rounds", "1", "--json"],
             "human_rigid_ending_tosses_per_s",
         ),
-        (
-            "bench_bounce",
-            ["--contact-rates", "30", "--rounds", "1", "--json"],
-            "contact_ending_each_toss_its_own_e_mu_tosses_per_s",
-        ),
         ("bench_targets", ["--json", "--n", "20", "--rounds", "1"], None),
         pytest.param("bench_figures", ["--quick", "--json"], "paper_s", marks=pytest.mark.slow),
         ("bench_probability", ["--accuracy", "--json"], "warm_up_s"),
@@ -145,8 +140,7 @@ def test_each_script_prints_its_record(name, args, figure):
 
 def test_json_is_refused_in_one_line_where_no_record_is_made():
     env = dict(os.environ, NUMBA_NUM_THREADS="2")
-    for name, args in (("bench_air", ["--profile", "10", "--json"]),
-                       ("bench_bounce", ["--upright", "10", "--json"])):  # fmt: skip
+    for name, args in (("bench_air", ["--profile", "10", "--json"]),):  # fmt: skip
         done = subprocess.run(
             [sys.executable, str(bench_script(name)), *args],
             capture_output=True,

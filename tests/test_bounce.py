@@ -227,9 +227,9 @@ import numpy as np
 from _kernels import coin_contact
 from coinflight import Coin
 from coinflight.core import bounce
-from coinflight.core.contact import CONTACT_ENDING
+from coinflight.core.contact import RIGID_ENDING
 
-c = coin_contact(Coin.preset("us-nickel"), drop_height=0.3, ending=CONTACT_ENDING)
+c = coin_contact(Coin.preset("us-nickel"), drop_height=0.3, ending=RIGID_ENDING)
 rng = np.random.default_rng(3)
 omega = np.column_stack([rng.uniform(150, 300, 8), rng.uniform(-5, 5, 8), np.full(8, 20.0)])
 speed = rng.uniform(2.0, 3.0, 8)
@@ -260,18 +260,3 @@ def test_parallel_landing_in_a_child_forked_after_a_serial_one():
         check=False,
     )
     assert run.returncode == 0, (run.returncode, run.stderr[-2000:])
-
-
-def test_bench_bounce_compares_statuses_with_decided_coins_as_settled_in_contact():
-    # bench_bounce.py --old-src and --upright compare statuses with runs whose decided coins
-    # are SETTLED_CONTACT: only DECIDED_UPRIGHT is mapped, every other status kept.
-    import numpy as np
-    from benchmarks.bench_bounce import as_undecided
-
-    from coinflight.core.outcome import Status
-
-    status = np.array([int(s) for s in Status], dtype=np.int8)
-    mapped = as_undecided(status)
-    assert mapped.dtype == status.dtype
-    expected = [Status.SETTLED_CONTACT if s == Status.DECIDED_UPRIGHT else s for s in Status]
-    assert mapped.tolist() == [int(s) for s in expected]

@@ -9,7 +9,6 @@ import pytest
 from typer.testing import CliRunner
 
 from _cli import answer
-from coinflight._validation import DEAD_CONTACT
 from coinflight.cli import app
 from coinflight.studies.edge import edge_probability
 
@@ -89,94 +88,22 @@ def test_setting_options_reach_the_simulation():
     assert json.loads(out)[0]["simulated"]["successes"] == expected.successes
 
 
-def test_the_contact_ending_reaches_the_simulation():
-    """--ending contact and its resistances reach simulate_edge (on bouncing landings: dead
-    ones never reach an ending, so the pair is refused)."""
+def test_the_rigid_ending_reaches_the_simulation():
+    """--ending rigid and its resistances reach simulate_edge (on bouncing landings: dead ones
+    never reach an ending)."""
     from coinflight.studies.edge import simulate_edge
 
     args = ["--ratios", "0.1,0.577", "--simulate", "200", "--seed", "4", "--json"]
-    contact = ["--restitution", "0.5", "--ending", "contact", "--rolling-resistance", "1e-3",
-               "--pivoting-resistance", "1e-3"]  # fmt: skip
-    code, out, _ = _run(*args, *contact)
+    rigid = ["--restitution", "0.5", "--ending", "rigid", "--rolling-resistance", "1e-3",
+             "--pivoting-resistance", "1e-3"]  # fmt: skip
+    code, out, _ = _run(*args, *rigid)
     assert code == 0
-    expected = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5, ending="contact",
+    expected = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5, ending="rigid",
                              rolling_resistance=1e-3, pivoting_resistance=1e-3)  # fmt: skip
     got = [row["simulated"]["successes"] for row in json.loads(out)]
     assert got == [e.successes for _, e in expected]
     rocking = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5)
     assert rocking != expected  # the endings differ on bouncing landings
-
-
-def test_the_edges_decided_upright_are_counted_apart():
-    """With the contact ending each simulated row also counts the edges its upright decision
-    ended (status "decided upright": a measured predictor, not a proof), count and share of n,
-    in --json and as a text column; rocking rows have no such key. The count is the status
-    counted among the same tosses (the simulation's own draws: ratio i from child i of the
-    seed, ωx, v0, ωz from the rows of its unit cube), landed directly; with an axial spin
-    (library only), nickel-thin coins at μ 0.6 stand on edge a third of the time, most of them
-    decided upright (measured: 102 of 102 of 300 tosses)."""
-    import numpy as np
-
-    from coinflight.core.outcome import Status
-    from coinflight.model.distributions import Uniform
-    from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import land
-    from coinflight.probability import streams
-    from coinflight.studies.edge import SIM_DROP, SIM_LAUNCH_SPEED, cylinder, edge_table
-
-    setting = dict(restitution=0.5, friction=0.6, ending="contact", spin=Uniform(150.0, 300.0),
-                   axial_spin=Uniform(-40.0, 40.0))  # fmt: skip
-    rows = edge_table([0.092], 120, 4, **setting)
-    simulated = rows[0]["simulated"]
-    decided = simulated["decided_upright"]
-    assert 0 < decided <= simulated["successes"]
-    assert simulated["decided_upright_fraction"] == decided / 120
-    (u,) = streams.unit_cube(streams.child(streams.seed_sequence(4), 0), 120, 3)
-    omega = np.column_stack([Uniform(150.0, 300.0).ppf(u[0]), np.zeros(120),
-                             Uniform(-40.0, 40.0).ppf(u[2])])  # fmt: skip
-    v0 = Uniform(*SIM_LAUNCH_SPEED).ppf(u[1])
-    surface = Surface("table", SIM_DROP, 0.5, 0.6, ending="contact")
-    out = land(cylinder(0.092), omega, v0, 1.0, 9.81, surface)
-    assert int(np.sum(out.face == 2)) == simulated["successes"]
-    assert int(np.sum(out.status == Status.DECIDED_UPRIGHT)) == decided
-    args = ["--ratios", "0.1,0.3", "--simulate", "50", "--seed", "4", "--restitution", "0.5"]
-    _, js, _ = _run(*args, "--json")
-    assert not any("decided_upright" in row["simulated"] for row in json.loads(js))
-
-
-def test_the_decided_upright_column_and_json_are_the_librarys_count(monkeypatch):
-    """The command's decided-upright count (--json and the text column) is simulate_edge's for
-    the same tosses, on a case where it is not 0. The command has no axial-spin option and
-    planar spins decide no coin upright (measured: 0 of 6 x 300 tosses, e 0.3-0.8, mu
-    0.05-1), so simulate_edge is wrapped to add test_cli_edge's axial spin draws."""
-    import coinflight.studies.edge as edge_study
-    from coinflight.model.distributions import Uniform
-
-    real = edge_study.simulate_edge
-    spin = dict(spin=Uniform(150.0, 300.0), axial_spin=Uniform(-40.0, 40.0))
-
-    def wobbling(*args, **kw):
-        return real(*args, **{**kw, **spin})
-
-    monkeypatch.setattr(edge_study, "simulate_edge", wobbling)
-    args = ["--ratios", "0.092,0.2", "--simulate", "60", "--seed", "4", "--restitution", "0.5",
-            "--friction", "0.6", "--ending", "contact"]  # fmt: skip
-    expected = real([0.092, 0.2], 60, 4, restitution=0.5, friction=0.6, ending="contact",
-                    **spin)  # fmt: skip
-    counts = [e.decided_upright for _, e in expected]
-    assert all(c > 0 for c in counts)
-    code, js, _ = _run(*args, "--json")
-    assert code == 0
-    rows = json.loads(js)
-    assert [row["simulated"]["decided_upright"] for row in rows] == counts
-    fractions = [row["simulated"]["decided_upright_fraction"] for row in rows]
-    assert fractions == [c / 60 for c in counts]
-    code, out, _ = _run(*args)
-    assert code == 0
-    lines = out.splitlines()
-    assert lines[0].endswith("decided upright")
-    assert [int(line.split()[-1].replace(",", "")) for line in lines[1:3]] == counts
-    assert lines[-2].startswith("decided upright: edges the contact ending's")
 
 
 def test_the_corner_radius_reaches_the_simulated_coins():
@@ -234,7 +161,7 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
-        (["--ending", "contact"], "--ending needs --target P or --simulate N"),
+        (["--ending", "rigid"], "--ending needs --target P or --simulate N"),
         (["--corner-radius", "1e-4"], "--corner-radius needs --target P or --simulate N"),
         (
             ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
@@ -252,16 +179,11 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             "most the radius r "
             "(a coin thicker than wide) of the thinnest coin (h/d = 2, h = 0.048 m)",
         ),
-        (
-            ["--simulate", "10", "--ending", "contact"],
-            DEAD_CONTACT,
-        ),
-        (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, contact"),
+        (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, rigid"),
         (
             ["--simulate", "10", "--rolling-resistance", "1e-4"],
-            "rolling resistance 0.0001 m: only the 3-D endings (ending='contact' or 'rigid', "
-            "--ending contact or rigid) have rolling and pivoting resistance, which the rocking "
-            "ending would ignore",
+            "rolling resistance 0.0001 m: only the rigid 3-D ending (ending='rigid', --ending "
+            "rigid) has rolling and pivoting resistance, which the rocking ending would ignore",
         ),
         (
             [
@@ -270,7 +192,7 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
                 "--restitution",
                 "0.5",
                 "--ending",
-                "contact",
+                "rigid",
                 "--pivoting-resistance",
                 "0.5",
             ],
@@ -294,10 +216,6 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             for text in ("0", "95", "abc", "nan")
         ),
         (["--simulate", "10", "--psi", "human"], "--psi applies with --target"),
-        (
-            ["--target", "1/3", "--simulate", "10", "--ending", "contact", "--restitution", "0"],
-            DEAD_CONTACT,
-        ),
         (
             ["--target", "1/3", "--corner-radius", "0.02"],
             "--corner-radius: corner radius must be between 0 and 0.012",

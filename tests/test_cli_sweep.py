@@ -116,29 +116,21 @@ def test_table_rows_have_p_edge_and_the_surface(tmp_path):
 
 
 def test_table_rows_keep_the_outcome_models_tallies(tmp_path):
-    """The tallies of each row's outcome model (unsettled; with the contact ending decided
-    upright; each with its fraction) are columns of the table, empty where the model has none
-    (the hand: neither; the rocking ending: no decided_upright). Thin quarters at μ 0.6 with
-    an axial spin stand on edge in the contact ending, most of them decided upright
-    (measured: 40 of 40 edges of 200 tosses, seed 1)."""
+    """The tallies of each row's outcome model (unsettled, with its fraction) are columns of
+    the table, empty where the model has none (the hand)."""
     out = tmp_path / "t.csv"
     result = _cli(
         "sweep", "--omega-x", "150:300", "--omega-z=-40:40", "--launch-speed", "1.5:3",
         "--surface", "hand,table", "--restitution", "0.5", "--friction", "0.6",
-        "--ending", "rocking,contact", "--method", "monte-carlo", "--n", "200", "--seed", "1",
-        "--out", out,
+        "--method", "monte-carlo", "--n", "200", "--seed", "1", "--out", out,
     )  # fmt: skip
     assert result.exit_code == 0, result.output
     rows, _ = read_table(out)
-    hand, rocking, contact = rows
-    tallies = ("unsettled", "unsettled_fraction", "decided_upright", "decided_upright_fraction")
+    hand, rocking = rows
+    tallies = ("unsettled", "unsettled_fraction")
     assert all(hand[k] in ("", None) for k in tallies)
-    assert rocking["unsettled"] not in ("", None)
-    assert rocking["decided_upright"] in ("", None)
-    decided = int(contact["decided_upright"])
-    assert 0 < decided <= int(contact["edge"])
-    assert float(contact["decided_upright_fraction"]) == decided / 200
-    assert int(contact["unsettled"]) >= 0
+    unsettled = int(rocking["unsettled"])
+    assert float(rocking["unsettled_fraction"]) == unsettled / 200
 
 
 def test_sweep_rows_carry_the_results_tallies():
@@ -146,18 +138,17 @@ def test_sweep_rows_carry_the_results_tallies():
     left out."""
     from coinflight.model.surface import Surface
 
-    surface = Surface("table", 0.5, 0.5, 0.6, ending="contact")
+    surface = Surface("table", 0.5, 0.5, 0.6)
     dist = TossDistribution(omega_x=Uniform(150.0, 300.0), omega_z=Uniform(-40.0, 40.0),
                             launch_speed=Uniform(1.5, 3.0))  # fmt: skip
     cases = [Case(dist), Case(dist, outcome_model(surface))]
     result = sweep(cases, "monte-carlo", 200, 1)
-    hand, contact = result.to_dicts()
-    assert "unsettled" not in hand and "decided_upright" not in hand
+    hand, table = result.to_dicts()
+    assert "unsettled" not in hand
     details = result[1].details
-    for k in ("unsettled", "unsettled_fraction", "decided_upright", "decided_upright_fraction"):
-        assert contact[k] == details[k]
-    assert contact["decided_upright"] > 0
-    assert not any(k.startswith("details.") for k in contact)
+    for k in ("unsettled", "unsettled_fraction"):
+        assert table[k] == details[k]
+    assert not any(k.startswith("details.") for k in table)
 
 
 def _cases(k=6):

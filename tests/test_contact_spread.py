@@ -121,9 +121,9 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
 
 
 def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
-    # The 3-D contact ending (the only one the resistances act in): tosses given their own
+    # The rigid 3-D ending (the only one the resistances act in): tosses given their own
     # rolling and pivoting resistance land exactly as each on its own surface.
-    from coinflight.core.contact import CONTACT_ENDING
+    from coinflight.core.contact import RIGID_ENDING
 
     coin = Coin.preset("us-nickel")
     rng = np.random.default_rng(8)
@@ -134,7 +134,7 @@ def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
     pivoting = rng.uniform(1e-5, 1e-3, n)
 
     def record(lr, lp):
-        return _contact_ending(coin, CONTACT_ENDING, lr, lp)
+        return _contact_ending(coin, RIGID_ENDING, lr, lp)
 
     base = record(1e-4, 1e-4)
     together = bounce.land(

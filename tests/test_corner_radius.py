@@ -1,7 +1,7 @@
 """The rounded rim in flight and at impact: the coin is the cylinder (r − a, h/2 − a) swept by a
-ball of radius a (the geometry of core.contact_phase, its module notes and rim_contact), and
-core.impact.lowest_depth / contact_point, core.bounce.next_contact and core.impact.impact use
-its lowest point. The impact law's invariants at any a are in tests/test_impact.py."""
+ball of radius a, and core.impact.lowest_depth / contact_point, core.bounce.next_contact and
+core.impact.impact use its lowest point. The impact law's invariants at any a are in
+tests/test_impact.py."""
 
 from __future__ import annotations
 

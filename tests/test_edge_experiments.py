@@ -31,19 +31,19 @@ ALL_EDGE = Experiment("made-up, every throw on edge", 0.3, 200, 200, "hand-table
 
 
 def _run(seed=7, **kw):
-    kw.setdefault("contact", 4)
+    kw.setdefault("rigid", 4)
     return edge_experiments([THIN, ALL_EDGE], 40, seed, **kw)
 
 
 def test_structure_cells_and_box():
     r = _run()
-    assert r.n == 40 and r.contact_n == 4 and r.seed == 7 and r.points == 2
+    assert r.n == 40 and r.rigid_n == 4 and r.seed == 7 and r.points == 2
     (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
     for c in r.comparisons:
-        assert c.contact is not None
+        assert c.rigid is not None
         # unmeasured: e, μ, diameter, drop (+ resistance): corners and the centre
         assert len(c.rocking.cells) == 2**4 + 1
-        assert len(c.contact.cells) == 2**5 + 1
+        assert len(c.rigid.cells) == 2**5 + 1
         assert dict(c.box) == {
             "restitution": (e_lo, e_hi),
             "friction": (mu_lo, mu_hi),
@@ -51,7 +51,7 @@ def test_structure_cells_and_box():
             "drop_height": HAND_DROP,
             "resistance": RESISTANCE,
         }
-        for band, size in ((c.rocking, 40), (c.contact, 4)):
+        for band, size in ((c.rocking, 40), (c.rigid, 4)):
             assert all(cell.n == size for cell in band.cells)
             centre = band.centre.parameters
             assert centre["restitution"] == pytest.approx(0.5 * (e_lo + e_hi))
@@ -60,7 +60,7 @@ def test_structure_cells_and_box():
                 for name, value in cell.parameters.items():
                     lo, hi = c.box[name]
                     assert lo <= value <= hi
-        assert math.isclose(c.contact.centre.parameters["resistance"], math.sqrt(1e-5 * 1e-3))
+        assert math.isclose(c.rigid.centre.parameters["resistance"], math.sqrt(1e-5 * 1e-3))
     rows = r.table()
     assert len(rows) == 4 and all(len(row) == len(r.HEADER) for row in rows)
     data = json.loads(json.dumps(r.to_dict()))
@@ -76,7 +76,7 @@ def test_reproducible_from_the_seed_and_prefix():
     for d in (one, two):
         d.pop("elapsed")
     assert one == two
-    # experiment i draws from child i alone: alone, without the contact ending, the same band
+    # experiment i draws from child i alone: alone, without the rigid ending, the same band
     alone = edge_experiments([THIN], 40, 11)
     assert alone.comparisons[0].rocking == _run(seed=11).comparisons[0].rocking
     assert alone.comparisons[0].rocking.cells[0].estimate.seed == 11
@@ -116,18 +116,18 @@ def test_verdict_and_gap():
 
 
 def test_a_band_of_a_few_tosses_per_cell_does_not_judge_a_point_inside_it():
-    """--quick's contact band, four tosses a cell: 0.000 to 0.500 spans a measured 0.41 by its
+    """--quick's rigid band, four tosses a cell: 0.000 to 0.500 spans a measured 0.41 by its
     noise alone; it says so instead of "inside". A point it lies wholly below is still above."""
     few = Band(
-        "contact",
+        "rigid",
         tuple(Cell({"restitution": 0.5}, BinomialEstimate(k, 4)) for k in (0, 2, 1)),
     )
     assert (few.low.p, few.high.p) == (0.0, 0.5)
     assert few.verdict(BinomialEstimate(410, 1000)) == "too few tosses to judge"
-    lower = Band("contact", (Cell({"restitution": 0.5}, BinomialEstimate(1, 4)),))
+    lower = Band("rigid", (Cell({"restitution": 0.5}, BinomialEstimate(1, 4)),))
     assert lower.verdict(BinomialEstimate(1000, 1000)) == "above"  # > 0.25 + 2 × 0.217
     enough = Band(  # the same fractions at MIN_TOSSES_TO_JUDGE tosses a cell judge it
-        "contact",
+        "rigid",
         tuple(
             Cell(
                 {"restitution": 0.5},
@@ -163,16 +163,10 @@ def test_record_gives_size_and_drop():
     [
         ({"n": 10**7, "points": 3}, ValueError, "more than the limit"),
         ({"n": 10**9}, ValueError, "tosses per cell must be between 1 and"),
-        ({"n": 10**6, "contact": 10**6}, ValueError, "more than the limit"),
+        ({"n": 10**6, "rigid": 10**6}, ValueError, "more than the limit"),
         ({"n": 0}, ValueError, "tosses per cell must be between 1"),
-        ({"n": 10, "contact": 11}, ValueError, "contact-ending tosses per cell"),
         ({"n": 2.5}, TypeError, "tosses per cell must be an integer"),
         ({"n": 10, "points": 10}, ValueError, "points per parameter"),
-        (
-            {"n": 10, "contact": 2, "restitution": (0.0, 0.5)},
-            ValueError,
-            "contact ending .* acts on landings that bounce",
-        ),
         ({"n": 10, "seed": -1}, ValueError, "seed must be a non-negative integer"),
     ],
 )
@@ -212,7 +206,7 @@ def test_dead_landing_reproduces_the_dynamic_model(diameter):
         assert abs(cell.p - model) <= 3 * math.sqrt(model * (1 - model) / cell.n)
 
 
-def test_mujoco_check_same_tosses_in_three_engines():
+def test_mujoco_check_same_tosses_in_both_engines():
     from coinflight.studies import mujoco_compare
 
     if not mujoco_compare.available():
@@ -221,7 +215,7 @@ def test_mujoco_check_same_tosses_in_three_engines():
 
     check = mujoco_check(THIN, 3, 5)
     assert check.parameters["drop_height"] == pytest.approx(sum(HAND_DROP) / 2)
-    for est in (check.rocking, check.contact, check.mujoco):
+    for est in (check.rocking, check.mujoco):
         assert est.n == 3 and est.seed == 5
     assert 0 <= check.mujoco_moving <= 3
     with pytest.raises(ValueError, match="tosses of the MuJoCo check"):
@@ -283,7 +277,7 @@ def test_progress_is_called_first_once_checked_and_before_any_toss(monkeypatch):
     monkeypatch.setattr(edge, "simulate_edge", no_toss)
     monkeypatch.setattr(table, "land", no_toss)
     runs = [
-        lambda said: edge_experiments([THIN], 10, 1, contact=2, progress=said.append),
+        lambda said: edge_experiments([THIN], 10, 1, rigid=2, progress=said.append),
         lambda said: wobble_sweep([THIN], 10, 1, progress=said.append),
     ]
     if mujoco_compare.available():
@@ -311,7 +305,6 @@ def test_progress_is_called_first_once_checked_and_before_any_toss(monkeypatch):
         (lambda p: edge_experiments([THIN], 10, progress=p, restitution=(2, 3)), "restitution"),
         (lambda p: edge_experiments([THIN], 10, progress=p, friction=(-1, 5)), "friction"),
         (lambda p: _wobble([THIN], 10, progress=p, g=float("nan")), "g must be"),
-        (lambda p: _wobble([THIN], 2, contact=1, progress=p, resistance=-1.0), "resistance"),
         (
             lambda p: _wobble(
                 [THIN],
@@ -344,7 +337,7 @@ def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
     # that cell, toss for toss; a wobble changes it; every row names its ψ and cell.
     from coinflight.studies.edge_experiments import wobble_sweep
 
-    band = edge_experiments([THIN], 3000, 9, contact=0)
+    band = edge_experiments([THIN], 3000, 9)
     centre = band.comparisons[0].rocking.centre
     cell = dict(centre.parameters)
     assert cell == pytest.approx(
@@ -357,7 +350,7 @@ def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
     ]
     assert rows[0].estimate.successes == centre.estimate.successes
     assert rows[1].estimate.successes != rows[0].estimate.successes
-    wobbling = edge_experiments([THIN], 3000, 9, contact=0, psi=60.0).comparisons[0].rocking
+    wobbling = edge_experiments([THIN], 3000, 9, psi=60.0).comparisons[0].rocking
     assert wobbling.centre.parameters["psi"] == 60.0
     assert wobbling.centre.estimate.successes == rows[1].estimate.successes
 
@@ -374,23 +367,14 @@ def test_from_dataset_marks_counts_derived_from_a_fraction():
     assert left  # the nickel's extrapolation is not a measurement
     given = Experiment("counted", 0.3, 200, 20, "hand-table", "test record")
     assert not given.edges_derived
-    r = edge_experiments(kept[:1], 20, 3, contact=0)
+    r = edge_experiments(kept[:1], 20, 3)
     assert r.table()[0][2].endswith(f"≈{kept[0].edges}/{kept[0].n}")
     assert r.to_dict()["experiments"][0]["edges_derived"] is True
 
 
-def test_contact_with_a_dead_restitution_range_is_refused_in_the_one_wording():
-    from coinflight._validation import DEAD_CONTACT
-
-    with pytest.raises(ValueError) as err:
-        edge_experiments([THIN], 10, 1, contact=2, restitution=(0.0, 0.5))
-    assert str(err.value) == DEAD_CONTACT
-
-
-def test_mujoco_check_is_bounded_and_refuses_a_dead_contact_before_any_landing(monkeypatch):
-    """Both endings' landings and MuJoCo's run counted before anything runs (a landing that
-    started would fail this test), and the contact ending on a dead table refused."""
-    from coinflight._validation import DEAD_CONTACT
+def test_mujoco_check_is_bounded_before_any_landing(monkeypatch):
+    """coinflight's landings and MuJoCo's run counted before anything runs (a landing that
+    started would fail this test)."""
     from coinflight.outcomes import table
     from coinflight.studies.edge_experiments import mujoco_check
 
@@ -400,92 +384,14 @@ def test_mujoco_check_is_bounded_and_refuses_a_dead_contact_before_any_landing(m
     monkeypatch.setattr(table, "land", never)
     with pytest.raises(ValueError, match="more than the limit"):
         mujoco_check(THIN, 100_000, 1)
-    with pytest.raises(ValueError) as err:
-        mujoco_check(THIN, 10, 1, restitution=0.0)
-    assert str(err.value) == DEAD_CONTACT
-
-
-def test_contact_cells_count_the_edges_decided_upright():
-    """Each contact-band cell carries, of its edges, those the upright decision ended
-    (simulate_edge's EdgeEstimate for that cell and the seed's child 0), in the JSON (None for
-    the rocking ending, which has no decision) and in the table's column (low, high, centre
-    cells). With a wobble (ψ 80°) most contact-ending edges are decided (measured: 52 of 96
-    edges of 33 cells x 10 tosses, seed 7), so the count is not 0 here."""
-    from coinflight.probability import streams
-    from coinflight.studies.edge import simulate_edge
-    from coinflight.studies.edge_experiments import axial_spin
-
-    r = edge_experiments([THIN], 10, 7, contact=10, psi=80.0)
-    (c,) = r.comparisons
-    assert c.contact is not None
-    decided = [cell.decided_upright for cell in c.contact.cells]
-    assert sum(decided) > 0
-    cells = c.contact.cells
-    assert all(0 <= d <= x.estimate.successes for d, x in zip(decided, cells, strict=True))
-    the_setting = setting("hand-table")
-    wz = axial_spin(THIN.ratio, the_setting.spin, 80.0)
-    child = streams.child(streams.seed_sequence(7), 0)
-    for cell in (c.contact.centre, max(c.contact.cells, key=lambda x: x.decided_upright)):
-        p = cell.parameters
-        ((_, again),) = simulate_edge([THIN.ratio], 10, child, restitution=p["restitution"],
-                                      friction=p["friction"], drop_height=p["drop_height"],
-                                      spin=the_setting.spin, launch_speed=the_setting.launch_speed,
-                                      ending="contact", rolling_resistance=p["resistance"],
-                                      pivoting_resistance=p["resistance"], diameter=p["diameter"],
-                                      axial_spin=wz)  # fmt: skip
-        assert again.decided_upright == cell.decided_upright
-    bands = r.to_dict()["experiments"][0]["bands"]
-    assert [x["decided_upright"] for x in bands[1]["cells"]] == decided
-    assert {x["decided_upright"] for x in bands[0]["cells"]} == {None}
-    column = r.HEADER.index("decided upright of edges (low, high, centre)")
-    rocking, contact = r.table()
-    assert rocking[column] == "-"
-    b = c.contact
-    assert contact[column] == ", ".join(
-        f"{x.decided_upright}/{x.estimate.successes}" for x in (b.low, b.high, b.centre)
-    )
-
-
-def test_mujoco_check_counts_the_contact_endings_decided_edges():
-    """EngineCheck's contact_decided_upright is the status counted among the contact ending's
-    landings of the same tosses; with ψ 80° at μ 0.6 it is not 0 (measured: 4 of 4 edges of 12
-    tosses, seed 5)."""
-    from coinflight.studies import mujoco_compare
-
-    if not mujoco_compare.available():
-        pytest.skip("MuJoCo (the optional extra) is not installed")
-    from coinflight.studies.edge_experiments import mujoco_check
-
-    check = mujoco_check(THIN, 12, 5, psi=80.0, friction=0.6)
-    assert 0 < check.contact_decided_upright <= check.contact.successes
-    # the same tosses landed directly (mujoco_check's draws: child 0, rows ωx, v0, ωz)
-    import numpy as np
-
-    from coinflight.core.outcome import Status
-    from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import land
-    from coinflight.probability import streams
-    from coinflight.studies.edge import cylinder
-    from coinflight.studies.edge_experiments import axial_spin
-
-    the_setting = setting("hand-table")
-    (u,) = streams.unit_cube(streams.child(streams.seed_sequence(5), 0), 12, 3)
-    omega = np.zeros((12, 3))
-    omega[:, 0] = the_setting.spin.ppf(u[0])
-    omega[:, 2] = axial_spin(THIN.ratio, the_setting.spin, 80.0).ppf(u[2])
-    v0 = the_setting.launch_speed.ppf(u[1])
-    table = Surface("table", sum(HAND_DROP) / 2, 0.45, 0.6, ending="contact",
-                    rolling_resistance=1e-4, pivoting_resistance=1e-4)  # fmt: skip
-    out = land(cylinder(THIN.ratio), omega, v0, 1.0, 9.81, table)
-    assert int(np.sum(out.status == Status.DECIDED_UPRIGHT)) == check.contact_decided_upright
 
 
 def test_the_rigid_ending_is_a_band_of_its_own_over_the_3d_box():
-    # The rigid ending's band: the same box as the contact ending's (resistance included),
+    # The rigid ending's band: the 3-D box (the resistance included),
     # the same tosses as the rocking band's cells (common random numbers), its own ending name.
     r = edge_experiments([THIN], 20, 5, rigid=6, psi="human")
     (c,) = r.comparisons
-    assert c.contact is None and c.rigid is not None
+    assert c.rigid is not None
     assert c.bands == (c.rocking, c.rigid) and c.rigid.ending == "rigid"
     assert len(c.rigid.cells) == 2**5 + 1 and all(cell.n == 6 for cell in c.rigid.cells)
     assert "resistance" in c.box and r.rigid_n == 6 and r.psi == "human"

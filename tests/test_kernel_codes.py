@@ -26,12 +26,12 @@ from coinflight.core.outcome import (
 def test_codes_keep_their_integers_and_names():
     # The integers stored in every face/status array since the first release (core/bounce.py,
     # core/impact.py, outcomes/table.py before issue 9); code 5, "settled in contact", is the
-    # experimental 3-D contact phase (issue 11, Surface(ending="contact")), code 6, "decided
-    # upright", the same phase's upright roller ended on edge by its measured predictor.
+    # 3-D ending's (Surface(ending="rigid")). Code 6 ("decided upright", the upright decision
+    # of the compliant contact ending since removed) is no longer used and no member has it.
     assert [int(f) for f in Face] == [0, 1, 2]
     assert (TAILS, HEADS, EDGE) == (0, 1, 2)
     assert FACE_NAMES == ("tails", "heads", "edge")
-    assert [int(s) for s in Status] == [0, 1, 2, 3, 4, 5, 6]
+    assert [int(s) for s in Status] == [0, 1, 2, 3, 4, 5]
     assert [s.name for s in Status] == [
         "SETTLED_ENERGY",
         "SETTLED_DEAD",
@@ -39,10 +39,9 @@ def test_codes_keep_their_integers_and_names():
         "UNSETTLED",
         "SETTLED_ROCKING",
         "SETTLED_CONTACT",
-        "DECIDED_UPRIGHT",
     ]
     released = ("settled", "landed dead", "bounce limit", "unsettled", "settled rocking")
-    assert (*released, "settled in contact", "decided upright") == STATUS_NAMES
+    assert (*released, "settled in contact") == STATUS_NAMES
     assert FACE_NAMES[Face.EDGE] == Face.EDGE.label == "edge"
     assert STATUS_NAMES.index("unsettled") == Status.UNSETTLED
     faces = face_from_alignment([0.5, -0.5], [1.0, 1.0])
@@ -71,31 +70,6 @@ def test_numba_compiles_members_as_their_integers():
     assert out.tolist() == [1, 0, 2]
     assert status.tolist() == [0, 0, 3]
     assert _well(0.05, 0.1) is Face.EDGE  # a member comes back to Python as the member
-
-
-@numba.njit(cache=False)
-def _ending(decided: bool, settled: bool) -> Status:
-    # As contact_phase.settle picks its status (a member returned from every branch).
-    if decided:
-        return Status.DECIDED_UPRIGHT
-    if settled:
-        return Status.SETTLED_CONTACT
-    return Status.UNSETTLED
-
-
-def test_numba_compiles_the_decided_upright_member():
-    # Code 6 compiles like the others: returned as the member, stored as its integer.
-    assert _ending(True, True) is Status.DECIDED_UPRIGHT
-    assert _ending(False, True) is Status.SETTLED_CONTACT
-    assert _ending(False, False) is Status.UNSETTLED
-    status = np.empty(1, dtype=np.int8)
-    _store(status)
-    assert status.tolist() == [6] and Status(int(status[0])).label == "decided upright"
-
-
-@numba.njit(cache=False)
-def _store(status: np.ndarray) -> None:
-    status[0] = _ending(True, False)
 
 
 def test_never_turns_over_is_the_sign_of_the_alignment():

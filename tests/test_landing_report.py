@@ -18,7 +18,7 @@ from coinflight.model.surface import Surface
 from coinflight.outcomes.table import TableLanding, land
 from coinflight.probability import monte_carlo, streams
 from coinflight.report import landing as report
-from coinflight.report.document import Bullets, Paragraph
+from coinflight.report.document import Paragraph
 from coinflight.studies import landing as study
 from coinflight.studies import mujoco_compare
 from coinflight.studies.edge import edge_table
@@ -36,9 +36,7 @@ TINY = report.Sizes(
     rigid_band=3,
     rigid_band_integrated=6,
     mujoco=3,
-    mujoco_edges=2,
     experiments=60,
-    experiments_contact=2,
     experiments_points=2,
     experiments_rigid=2,
 )
@@ -76,7 +74,6 @@ def test_thick_cylinders_section_is_the_studys(written):
     again, left = study.thick_experiments(
         TINY.experiments,
         SEED,
-        TINY.experiments_contact,
         TINY.experiments_points,
         TINY.experiments_rigid,
     )
@@ -98,7 +95,7 @@ def test_measured_edges_beside_the_human_tosses_band_of_every_ending(written):
     out, _ = written
     numbers = json.loads((out / "numbers.json").read_text())["edge_experiments_human"]
     again, _ = study.thick_experiments(
-        TINY.experiments, SEED, 0, TINY.experiments_points, TINY.experiments_rigid, "human"
+        TINY.experiments, SEED, TINY.experiments_points, TINY.experiments_rigid, "human"
     )
     expected = json.loads(json.dumps(again.to_dict()))
     numbers.pop("elapsed"), expected.pop("elapsed")
@@ -121,7 +118,7 @@ def test_the_thick_cylinders_seed_printed_reproduces_the_numbers():
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset
 
-    x, left = study.thick_experiments(60, SEED, 0, 2)
+    x, left = study.thick_experiments(60, SEED, 2)
     blocks = report._experiments_section(x, tuple(left))
     text = " ".join(b.text for b in blocks if isinstance(b, Paragraph))
     found = re.search(r"child (\d+) of seed (\d+)", text)
@@ -311,32 +308,15 @@ def test_mujoco_agrees_with_coinflight_at_the_first_contact():
         land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface).face, c.rocking.rest
     )
     assert c.ratio(c.rocking) > 1.0
-    # The 3-D contact ending lands the same tosses with MuJoCo's torsional and rolling friction
-    # as its pivoting and rolling resistance.
-    assert c.contact is not None and c.contact.ending == "contact"
-    assert c.contact.rolling_resistance == mujoco_compare.ROLLING == 1e-4
-    assert c.contact.pivoting_resistance == mujoco_compare.TORSIONAL == 5e-3
-    resisted = Surface(
-        "table",
-        study.DROP_HEIGHT,
-        c.restitution,
-        c.friction,
-        rolling_resistance=1e-4,
-        pivoting_resistance=5e-3,
-        ending="contact",
-    )
-    out = land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, resisted)
-    np.testing.assert_array_equal(out.face, c.contact.rest)
-    assert c.contact.at_impact == np.count_nonzero(out.status == Status.SETTLED_ENERGY)
-    assert c.contact.decided_upright == np.count_nonzero(out.status == Status.DECIDED_UPRIGHT)
-    assert c.rocking.decided_upright == 0
+    out = land(study.mujoco_tosses().coin, omega, v0, 1.0, 9.81, surface)
+    assert c.rocking.at_impact == np.count_nonzero(out.status == Status.SETTLED_ENERGY)
     # MuJoCo's restitution is reported at the probe speeds and at the landing speed.
     by_speed = dict(c.settings["flat_drop_restitution_by_speed"])
     assert set(mujoco_compare.PROBE_SPEEDS) < set(by_speed) and len(by_speed) == 4
     landing = max(by_speed)
     assert by_speed[landing] == c.settings["flat_drop_restitution"]
-    assert [r.ending for r in c.endings] == ["rocking", "contact"]
-    assert c.agreement(c.contact) == np.mean(c.contact.rest == c.mujoco_rest)
+    assert [r.ending for r in c.endings] == ["rocking"]
+    assert c.agreement(c.rocking) == np.mean(c.rocking.rest == c.mujoco_rest)
     assert c.ratio(c.rocking) == c.mujoco_seconds / c.rocking.seconds
     assert c.mujoco_unsettled == int(c.mujoco.moving.sum()) and c.mujoco.limit == 20.0
     assert c.settings["condim"] == 6 and c.settings["friction"][1:] == [5e-3, 1e-4]
@@ -357,67 +337,19 @@ def test_mujoco_contacts_carry_torsional_and_rolling_friction():
         mujoco_compare.Engine(condim=5)
 
 
-def test_the_report_compares_both_endings_with_mujoco(written):
+def test_the_report_compares_the_rocking_ending_with_mujoco(written):
     out, r = written
     if r.mujoco is None:
         pytest.skip("MuJoCo not run")
     numbers = json.loads((out / "numbers.json").read_text())["mujoco"]
-    rocking, contact = numbers["endings"]
-    assert (rocking["ending"], contact["ending"]) == ("rocking", "contact")
-    assert contact["rolling_resistance"] == 1e-4 and contact["pivoting_resistance"] == 5e-3
+    (rocking,) = numbers["endings"]
+    assert rocking["ending"] == "rocking"
     assert rocking["rest"] == numbers["coinflight_rest"]
     c = r.mujoco
-    assert contact["rest"] == c.fractions(c.contact.rest).tolist()
-    p = np.array(contact["rest"])
-    np.testing.assert_allclose(contact["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
-    assert contact["speed_ratio"] == c.mujoco_seconds / c.contact.seconds
-    assert contact["ended_at_impact"] == c.contact.at_impact
-    assert contact["decided_upright"] == c.contact.decided_upright
-    assert contact["decided_upright_fraction"] == c.contact.decided_upright / c.n
-    # the rocking ending has no upright decision: no count, as it has no resistances
-    assert rocking["decided_upright"] is None and rocking["decided_upright_fraction"] is None
+    p = np.array(rocking["rest"])
+    np.testing.assert_allclose(rocking["rest_stderr"], np.sqrt(p * (1 - p) / c.n))
+    assert rocking["speed_ratio"] == c.mujoco_seconds / c.rocking.seconds
+    assert rocking["ended_at_impact"] == c.rocking.at_impact
     md = (out / "report.md").read_text()
-    assert "coinflight, 3-D contact ending, at rest" in md
-    assert "decided upright (predicted on edge)" in md
-    share = c.contact.decided_upright / c.n
-    assert f"{c.contact.decided_upright:,} ({share:.1%})" in md
-    assert f"{c.agreement(c.contact):.1%}" in md
-
-
-def test_the_report_shows_the_edge_check_in_both_engines(written):
-    out, r = written
-    if r.edges is None:
-        pytest.skip("MuJoCo not run")
-    numbers = json.loads((out / "numbers.json").read_text())["mujoco_edges"]
-    (cell,) = r.edges.cells
-    (written_cell,) = numbers["cells"]
-    assert numbers["n"] == TINY.mujoco_edges == cell.n and numbers["integrator"] == "RK4"
-    assert written_cell["handed"] == int(cell.handed.sum())
-    assert written_cell["mujoco_rest"][0] == cell.fractions(cell.mujoco.rest)[0].tolist()
-    assert sum(written_cell["edges_both_coinflight_only_mujoco_only"]) <= cell.n
-    assert written_cell["mujoco_moving"] == int(cell.mujoco.moving.sum())
-    assert written_cell["coinflight_decided_upright"] == cell.coinflight.decided_upright
-    md = (out / "report.md").read_text()
-    assert f"of coinflight's edges {cell.coinflight.decided_upright:,} decided upright" in md
-    assert "## Edges in both engines" in md and "MuJoCo, settled only" in md
-
-
-def test_the_edge_checks_decided_upright_is_the_status_count_where_it_is_not_0():
-    """With TINY at seed 11 no coin is decided upright, so this case decides some: the edge
-    check's vigorous tosses (axial spin) at μ 0.6 (measured: 2 of 4 tosses, seed 3, both on
-    edge). The count of the run, of numbers.json's cell and of the text is the status counted
-    among the same tosses landed directly."""
-    if not mujoco_compare.available():
-        pytest.skip("MuJoCo (the optional extra) is not installed")
-    check = study.edge_check(4, 3, ((0.5, 0.6),), limit=2.0)
-    (cell,) = check.cells
-    dist, omega, v0 = study.edge_draw(4, streams.seed_sequence(3))
-    out = land(dist.coin, omega, v0, 1.0, dist.g, study.edge_surface(0.5, 0.6))
-    decided = int(np.count_nonzero(out.status == Status.DECIDED_UPRIGHT))
-    assert decided > 0
-    assert cell.coinflight.decided_upright == decided
-    (written_cell,) = report._edge_numbers(check)["cells"]
-    assert written_cell["coinflight_decided_upright"] == decided
-    blocks = report._edges_section(check)
-    text = " ".join(x for b in blocks if isinstance(b, Bullets) for x in b.items)
-    assert f"of coinflight's edges {decided:,} decided upright" in text
+    assert "coinflight, rocking ending, at rest" in md
+    assert f"{c.agreement(c.rocking):.1%}" in md

@@ -775,7 +775,7 @@ ENDPOINTS = {
         "flight_time": ["0.7", "0.3", "1e4"], "launch_speed": ["3"], "start": ["heads", "tails"],
         "g": ["9.81", "1.62"], "coin": ["eur-1", "us-dime"], "surface": ["hand", "table"],
         "drop_height": ["0.3"], "bounces": ["0", "3"], "trajectory": ["2", "50", "2000"],
-        "ending": ["rocking", "contact"], "corner_radius": ["0.0003", "0.001"],
+        "ending": ["rocking", "rigid"], "corner_radius": ["0.0003", "0.001"],
         "rolling_resistance": ["1e-4", "1e-5:1e-3"],
     },
     "probability": {
@@ -783,7 +783,7 @@ ENDPOINTS = {
         "omega_z": ["0", "0:5"], "flight_time": ["0.6:0.9", "normal:0.5,0.05", "0.7"],
         "method": ["exact", "grid", "monte-carlo", "qmc"], "n": ["50", "2000", "10000000000000"],
         "seed": ["1", "-5"], "preset": ["human"], "grid_cells": ["10"],
-        "surface": ["table"], "ending": ["contact"], "corner_radius": ["0.0003"],
+        "surface": ["table"], "ending": ["rigid"], "corner_radius": ["0.0003"],
     },
     "basin": {
         "omega_x": ["60:90", "100:200"], "flight_time": ["0.6:0.9"], "omega_z": ["0", "20"],

@@ -96,7 +96,7 @@ for psi, tosses, rigid in ((None, "planar tosses", 100), ("human", "human tosses
     x = edge_experiments(records, 1000, seed=2018, rigid=rigid, psi=psi)
     print(tosses)
     for row in x.table():  # experiment, measured ± s.e. (95 % CI), ending, band, verdict
-        print(f"  h/d {float(row[1]):.3f}: {row[2]}; {row[3]} band {row[4]}: {row[8]}")
+        print(f"  h/d {float(row[1]):.3f}: {row[2]}; {row[3]} band {row[4]}: {row[7]}")
 
 # %%
 # With planar tosses the measured 0.410 at h/d = 0.577 lies above the band of every ending, and

@@ -44,7 +44,7 @@ def landing_report(
     """Validate the table landing: figures, numbers and a report.
 
     Dead and bouncing landings against Yong & Mahadevan, maps over (e, μ), the US nickel's
-    P(edge) band, MuJoCo against both endings.
+    P(edge) band and its band in the rigid ending, MuJoCo against the rocking ending.
 
     Example: coinflight landing-report --out landing/ --quick
     """

@@ -952,8 +952,7 @@ def bound_search(z, v, n, lm, tmin, h, air, c):
 def _gap(z, v, n, lm, air, hh, corner):
     """(gap under the lowest point, its rate): z − depth(n_z), v_z + (ω × r_c)_z, for the rim
     rounded with corner radius ``corner`` (the cylinder (r − a, h/2 − a) swept by a ball of
-    radius a, the geometry of :mod:`coinflight.core.contact_phase`;
-    :func:`coinflight.core.impact.lowest_depth` and
+    radius a: :func:`coinflight.core.impact.lowest_depth` and
     :func:`~coinflight.core.impact.contact_point`)."""
     gap = z - lowest_depth(n[2], air.radius, hh, corner)
     omega = angular_velocity(lm, n, air.i1, air.i3)
@@ -963,9 +962,9 @@ def _gap(z, v, n, lm, air, hh, corner):
 
 @njit(cache=True)
 def ending(v, lm, n, rebound, c):
-    """(face, status, duration of a contact phase) if the coin has settled after this impact,
+    """(face, status, duration of the 3-D ending) if the coin has settled after this impact,
     else (−1, −1, 0): :func:`coinflight.core.bounce.after_impact`, the one ending of every
-    landing kernel (below the barrier; dead; the bounces died out: rocking or contact phase)."""
+    landing kernel (below the barrier; dead; the bounces died out: rocking or rigid ending)."""
     z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
     return after_impact(z, v, lm, n, rebound, c)
 

@@ -80,10 +80,10 @@ def mechanical_energy(v, angular_momentum, n, mass, i1, i3, g, z):
     """All the coin's energy: ½ m v² + ½ L·ω + m g z (translation, rotation, height), J.
 
     No force of a landing adds energy (the impact law of :func:`coinflight.core.impact.impact`
-    and the contact phase only store or dissipate it), so once this is below the barrier of the
-    coin's well, m g sqrt(r² + h²/4), the coin can never leave that well: the well is the
-    outcome, whatever friction later does with the horizontal motion and the spin (which
-    :func:`tumbling_energy` leaves out, and which friction can turn into tumbling).
+    and the rigid ending's contact forces only store or dissipate it), so once this is below
+    the barrier of the coin's well, m g sqrt(r² + h²/4), the coin can never leave that well:
+    the well is the outcome, whatever friction later does with the horizontal motion and the
+    spin (which :func:`tumbling_energy` leaves out, and which friction can turn into tumbling).
     """
     omega = angular_velocity(angular_momentum, n, i1, i3)
     return 0.5 * mass * dot(v, v) + 0.5 * dot(angular_momentum, omega) + mass * g * z
@@ -152,8 +152,7 @@ def _barrier(y, c):
 def _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner):
     """(height of the coin's lowest point above the surface, normal) at tau: z − depth(n_z), the
     depth of the rounded rim (:func:`coinflight.core.impact.lowest_depth`: the cylinder
-    (r − a, h/2 − a) swept by a ball of radius a = ``corner``, as in
-    :mod:`coinflight.core.contact_phase`)."""
+    (r − a, h/2 − a) swept by a ball of radius a = ``corner``)."""
     n = precess(n0, lhat, rate, tau)
     z = z0 + vz0 * tau - 0.5 * g * tau * tau
     return z - lowest_depth(n[2], radius, hh, corner), n
@@ -162,8 +161,7 @@ def _gap(tau, z0, vz0, g, n0, lhat, rate, radius, hh, corner):
 @njit(cache=True)
 def _gap_rate(tau, vz0, g, n, angular_momentum, i1, i3, radius, hh, corner):
     """d(gap)/dt: vertical velocity of the lowest material point (envelope theorem), the
-    lowest point of the rounded rim (:func:`coinflight.core.impact.contact_point`; the swept
-    ball of :mod:`coinflight.core.contact_phase`)."""
+    lowest point of the rounded rim (:func:`coinflight.core.impact.contact_point`)."""
     omega = angular_velocity(angular_momentum, n, i1, i3)
     rc = contact_point(n, radius, hh, corner)
     return vz0 - g * tau + cross(omega, rc)[2]
@@ -177,8 +175,7 @@ def next_contact(tau, z0, vz0, g, n0, angular_momentum, i1, i3, radius, hh, corn
     normal n0, angular momentum L) is given at time 0. Returns (time, normal then, vertical
     velocity of the lowest point then); time is −1 if no contact was found within the step
     limit. ``corner`` is the rim's corner radius a (0: sharp): the coin is the cylinder
-    (r − a, h/2 − a) swept by a ball of radius a, the geometry of
-    :mod:`coinflight.core.contact_phase` (its lowest point:
+    (r − a, h/2 − a) swept by a ball of radius a (its lowest point:
     :func:`coinflight.core.impact.lowest_depth`). It lies inside the sharp cylinder, so the
     bounds below, written with the sharp cylinder's reach sqrt(r² + h²/4), hold for it.
 

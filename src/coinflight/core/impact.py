@@ -6,8 +6,7 @@ so that numba compiles the same functions for the event-driven simulation of
 hh = h/2 whose state is its heads normal n, the velocity v of its centre of mass and its
 angular momentum L about the centre of mass (all lab frame). Its rim's corners may be rounded
 with a radius a (0 ≤ a ≤ min(h/2, r)): the coin is then the cylinder (r − a, h/2 − a) swept
-by a ball of radius a, the geometry of :mod:`coinflight.core.contact_phase`
-(:func:`~coinflight.core.contact_phase.rim_contact`); :func:`lowest_depth`,
+by a ball of radius a; :func:`lowest_depth`,
 :func:`contact_point` and :func:`impact` take a (0 by default: the sharp cylinder, bit for
 bit).
 
@@ -136,11 +135,10 @@ def lowest_depth(nz: float, radius: float, half_thickness: float, corner: float 
     Yong & Mahadevan 2011, §III; REFERENCES §5.
 
     With rounded rim corners of radius a = ``corner`` (0 ≤ a ≤ min(h/2, r)), the coin is the
-    cylinder (r − a, h/2 − a) swept by a ball of radius a (the geometry of
-    :mod:`coinflight.core.contact_phase`, :func:`~coinflight.core.contact_phase.rim_contact`);
-    the support function of a Minkowski sum is the sum of the support functions, so the depth
-    is (r − a) sqrt(1 − n_z²) + (h/2 − a)|n_z| + a. With a = 0 it is the sharp cylinder's,
-    to the last bit (subtracting and adding 0.0 is exact).
+    cylinder (r − a, h/2 − a) swept by a ball of radius a; the support function of a Minkowski
+    sum is the sum of the support functions, so the depth is
+    (r − a) sqrt(1 − n_z²) + (h/2 − a)|n_z| + a. With a = 0 it is the sharp cylinder's, to the
+    last bit (subtracting and adding 0.0 is exact).
     """
     s2 = 1.0 - nz * nz
     return (
@@ -159,10 +157,9 @@ def contact_point(n: Vec, radius: float, half_thickness: float, corner: float = 
     lower face.
 
     With rounded rim corners of radius a = ``corner``, the lowest point of the cylinder
-    (r − a, h/2 − a) swept by a ball of radius a (the geometry of
-    :mod:`coinflight.core.contact_phase`, :func:`~coinflight.core.contact_phase.rim_contact`):
-    the core cylinder's lowest rim point, (r − a) ŵ − sign(n_z)(h/2 − a) n, moved down by a,
-    − a Z (the ball's lowest point). Exactly the sharp coin's point for a = 0.
+    (r − a, h/2 − a) swept by a ball of radius a: the core cylinder's lowest rim point,
+    (r − a) ŵ − sign(n_z)(h/2 − a) n, moved down by a, − a Z (the ball's lowest point).
+    Exactly the sharp coin's point for a = 0.
     """
     nz = n[2]
     s2 = 1.0 - nz * nz
@@ -885,7 +882,7 @@ def impact(
     corner : float
         a, the radius of the rim's rounded corners, m (0 ≤ a ≤ min(h/2, r); 0: sharp): the
         impulse acts at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of
-        radius a (:func:`contact_point`; the geometry of :mod:`coinflight.core.contact_phase`).
+        radius a (:func:`contact_point`).
     duration : float
         t_c, the duration of one contact, s (:data:`CONTACT_DURATION`): a second rim point
         that meets the table within it makes the impact a simultaneous one

@@ -280,8 +280,8 @@ def basin_map(
     ValueError
         Beyond 25 million cells, or, for an outcome model, more tosses than its measured
         :attr:`~coinflight.outcomes.base.OutcomeModel.rate` lands in
-        :data:`coinflight._validation.MAX_RUN_SECONDS` (an hour: 1.08 million cells with the
-        3-D contact ending), or, with ``boundaries``, beyond :data:`MAX_BOUNDARIES` curves,
+        :data:`coinflight._validation.MAX_RUN_SECONDS` (an hour: 252,000 cells with the
+        rigid 3-D ending), or, with ``boundaries``, beyond :data:`MAX_BOUNDARIES` curves,
         before anything is allocated.
     """
     from coinflight.model.toss import Toss
