@@ -23,7 +23,6 @@ from coinflight import Coin
 from coinflight.core import band_contact as bc
 from coinflight.core import rigid_contact as rc
 from coinflight.core import rigid_ending as re
-from coinflight.core.contact import RIGID_ENDING
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")
@@ -55,7 +54,7 @@ def test_pivoting_coin_yaw_falls_linearly_and_stops_when_friction_says(corner):
     # rests on its band) at T = I1 ω0 / (μ m g H), within the time the last SLIP_FLOOR of slip
     # takes at that deceleration. (The energy test is set off, barrier 0: the yaw's energy
     # falls below the edge well's barrier on the way, which ends a run there.)
-    c = coin_contact(NICKEL, friction=0.3, ending=RIGID_ENDING, corner_radius=corner)
+    c = coin_contact(NICKEL, friction=0.3, corner_radius=corner)
     c = c._replace(barrier=0.0)
     m, mu = c.mass, c.friction
     big_h = c.half_thickness - corner
@@ -80,7 +79,7 @@ def test_coin_rolling_upright_and_straight_stays_on_its_band():
     # Rolling straight (v_t = r ω_a, no yaw, no lateral slip): both points stick at once, the
     # loads are equal and nothing turns the coin: the band run hands it to the straight roll
     # at t = 0, state unchanged (to 1e-15 of its speed).
-    c = coin_contact(NICKEL, friction=0.3, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, friction=0.3, rolling_resistance=1e-4)
     spin = 25.0
     y = _upright(c, 1.1, 0.0, c.radius * spin, spin, 0.0)
     before = y.copy()
@@ -99,7 +98,7 @@ def test_turning_roll_leaves_its_band_beyond_the_restoring_moment(ratio):
     # (Newton–Euler about the contact line). Set to ratio × m g H: at 0.9 the band holds it (it
     # pivots on, its yaw stopped by friction, and rolls straight); at 1.1 no band state exists
     # (its + rim's normal force would be negative) and the run refuses it (NOT_BAND).
-    c = coin_contact(NICKEL, friction=0.5, ending=RIGID_ENDING)._replace(barrier=0.0)
+    c = coin_contact(NICKEL, friction=0.5)._replace(barrier=0.0)
     m, r, big_h = c.mass, c.radius, c.half_thickness
     yaw = 1.0
     spin = ratio * m * G * big_h / ((c.i3 + m * r * r) * yaw)
@@ -122,7 +121,6 @@ def test_band_mirror_is_exact_and_energy_never_grows():
     # of 2 ms is never above that of the piece before (beyond 1e-12 of it, rounding).
     c = coin_contact(
         NICKEL, friction=0.3, rolling_resistance=1e-4, pivoting_resistance=1e-4,
-        ending=RIGID_ENDING,
     )  # fmt: skip
     rng = np.random.default_rng(7)
     for _ in range(6):
@@ -161,7 +159,7 @@ def test_a_rim_lifting_off_the_band_hands_over_without_looping():
 
     c = coin_contact(
         NICKEL, restitution=0.5, friction=0.3, rolling_resistance=1e-4,
-        pivoting_resistance=1e-4, ending=RIGID_ENDING,
+        pivoting_resistance=1e-4,
     )  # fmt: skip
     wx, wy, wz, flight = preset("human", coin=NICKEL).sample(np.random.default_rng(2026), 200)
     handed = 0

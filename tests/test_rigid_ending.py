@@ -8,7 +8,7 @@ validations against references written here, not the package's kernels.
 * Convergence as the step tolerance tightens; energy never grows; the frictionless invariants.
 * The straight roll on the band (angular momentum about the contact line kept, energy taken;
   the band's two-rim contact is tests/test_band_contact.py's); dead landings
-  decided before any ending; the library's landings through ``Surface(ending="rigid")``.
+  decided before any ending; the library's landings through ``Surface("table")``.
 """
 
 from __future__ import annotations
@@ -24,7 +24,6 @@ from coinflight import Coin
 from coinflight.core import bounce
 from coinflight.core import rigid_contact as rc
 from coinflight.core import rigid_ending as re
-from coinflight.core.contact import RIGID_ENDING
 from coinflight.core.impact import contact_point
 from coinflight.core.outcome import Status
 
@@ -36,7 +35,7 @@ NICKEL = Coin.preset("us-nickel")
 def _disc(friction=1.0, rolling_resistance=0.0):
     """The ideal thin disc: no thickness (one rim, no band), I1 = m r²/4, I3 = m r²/2, on a
     table whose friction ``friction`` (1e3: no slip in practice) and rolling resistance."""
-    c = coin_contact(DISC, friction=1.0, ending=RIGID_ENDING)
+    c = coin_contact(DISC, friction=1.0)
     return c._replace(
         half_thickness=0.0,
         i1=0.25 * c.mass * c.radius**2,
@@ -172,10 +171,8 @@ def test_rolling_coin_from_state_matches_newton_euler(ratio):
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import Landing
 
-    table = Surface(
-        "table", friction=3.0, rolling_resistance=0.0, pivoting_resistance=0.0, ending="rigid"
-    )
-    c = coin_contact(DISC, friction=3.0, ending=RIGID_ENDING)
+    table = Surface("table", friction=3.0, rolling_resistance=0.0, pivoting_resistance=0.0)
+    c = coin_contact(DISC, friction=3.0)
     n0, w0 = _upright(c, ratio)
     # The coin's z axis onto n0: a quarter turn about y, then the 2° tilt back about it.
     orientation = Rotation.from_euler("y", 90.0 - math.degrees(TILT), degrees=True)
@@ -288,7 +285,7 @@ def _handed(count, **surface):
         "pivoting_resistance": 1e-4,
         **surface,
     }
-    c = coin_contact(NICKEL, ending=RIGID_ENDING, **values)
+    c = coin_contact(NICKEL, **values)
     rng = np.random.default_rng(2026)
     n = 4 * count
     omega = np.column_stack(
@@ -352,7 +349,7 @@ def test_band_rest_keeps_the_angular_momentum_about_the_contact_line_and_takes_e
     # m r (n × Z)·v + L·n, and a projection takes energy, never adds it. Checked on a nickel
     # upright with some slip, yaw and rocking, more than a band run leaves (the band's ω_a
     # against that momentum over I3 + m r², within 1e-12; the energy after below that before).
-    c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, rolling_resistance=1e-4)
     n = np.array([0.6, 0.8, 0.0])
     w = 30.0 * n + np.array([0.0, 0.0, 2.0]) + 0.5 * np.array([0.8, -0.6, 0.0])
     rho = np.array(contact_point(tuple(n), c.radius, c.half_thickness, c.corner_radius))
@@ -372,7 +369,7 @@ def test_frictionless_ending_keeps_horizontal_momentum_lz_and_l_dot_n():
     # of n and Z, so the horizontal momentum, L_z and L·n are conserved through sliding, hops
     # and impacts (e 0.5); over 0.3 s in pieces of 10 ms, within 1e-9 of their scale (measured:
     # 0 and 3e-15).
-    c = coin_contact(NICKEL, restitution=0.5, friction=0.0, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, restitution=0.5, friction=0.0)
     n = np.array([math.sin(0.8), 0.0, math.cos(0.8)])
     w = np.array([150.0, 50.0, -40.0])  # tumbling enough to hop and bounce
     rho = np.array(contact_point(tuple(n), c.radius, c.half_thickness, c.corner_radius))
@@ -399,7 +396,7 @@ def test_coin_rolling_upright_on_its_band_settles_on_edge_and_without_resistance
     # once its energy is below the barrier; without resistance it rolls on: unsettled at the
     # ending's time limit, on edge.
     for ell, status in ((1e-4, Status.SETTLED_CONTACT), (0.0, Status.UNSETTLED)):
-        c = coin_contact(NICKEL, rolling_resistance=ell, ending=RIGID_ENDING)
+        c = coin_contact(NICKEL, rolling_resistance=ell)
         spin = 0.3 / c.radius
         y = _rolling_state(c, (1.0, 0.0, 0.0), (spin, 0.0, 0.0))
         face, got, t = re.run(y, c, re.RTOL, re.DURATION, np.zeros(8))
@@ -412,7 +409,7 @@ def test_coin_rolling_upright_on_its_band_settles_on_edge_and_without_resistance
 
 
 def test_rigid_surface_lands_tosses_to_rest():
-    # Surface(ending="rigid") through the library's landing (outcomes.table.land): vigorous
+    # Surface("table") through the library's landing (outcomes.table.land): vigorous
     # nickel tosses all end settled (by energy at an impact, or by the ending), none unsettled,
     # and the heads/tails mirror holds: the same tosses launched tails up (the coin turned
     # over, its normal reversed: the same body) end mirrored, every one (measured 60 of 60).
@@ -424,7 +421,7 @@ def test_rigid_surface_lands_tosses_to_rest():
         [rng.uniform(150, 300, 60), rng.uniform(-30, 30, 60), rng.uniform(-30, 30, 60)]
     )
     speed = rng.uniform(1.5, 3.0, 60)
-    surface = Surface("table", 0.8, 0.5, 0.3, ending="rigid")
+    surface = Surface("table", 0.8, 0.5, 0.3)
     heads = land(NICKEL, omega, speed, 1.0, G, surface)
     assert set(np.unique(heads.status)) <= {Status.SETTLED_ENERGY, Status.SETTLED_CONTACT}
     assert np.count_nonzero(heads.status == Status.SETTLED_CONTACT) > 10
@@ -447,7 +444,7 @@ def test_planar_tosses_are_fair_at_rest():
     omega = np.zeros((n, 3))
     omega[:, 0] = rng.uniform(150.0, 300.0, n)
     speed = rng.uniform(1.5, 3.0, n)
-    out = land(NICKEL, omega, speed, 1.0, G, Surface("table", 0.8, 0.5, 0.3, ending="rigid"))
+    out = land(NICKEL, omega, speed, 1.0, G, Surface("table", 0.8, 0.5, 0.3))
     assert not np.any(out.status == Status.UNSETTLED)
     tails, heads, _ = np.bincount(out.face, minlength=3)
     assert abs(int(heads) - int(tails)) < 3.0 * math.sqrt(heads + tails)
@@ -457,9 +454,9 @@ def test_planar_tosses_are_fair_at_rest():
 def test_dead_landings_are_decided_before_the_ending(ratio):
     # e = 0: the surface absorbs the coin at its first contact and the well it touches in is
     # the outcome (Yong & Mahadevan 2011's dead landing; tests/test_edge.py checks it against
-    # their P = 2 arctan(h/d)/π); no landing reaches an ending, so the rigid ending gives, toss
-    # for toss, the faces of the rocking one (2·10⁴ vigorous planar tosses, simulate_edge's
-    # ranges).
+    # their P = 2 arctan(h/d)/π); no landing reaches the ending, so every face is the well the
+    # coin is in at its first contact, as the landing stopped there (max_bounces=0) gives it,
+    # toss for toss (2·10⁴ vigorous planar tosses, simulate_edge's ranges).
     from coinflight.model.coin import Coin as _Coin
     from coinflight.model.distributions import Uniform
     from coinflight.model.surface import Surface
@@ -473,17 +470,16 @@ def test_dead_landings_are_decided_before_the_ending(ratio):
     speed = Uniform(*SIM_LAUNCH_SPEED).ppf(rng.random(n))
     r, h = 0.012, ratio * 0.024
     coin = _Coin(radius=r, thickness=h, mass=7800.0 * np.pi * r * r * h)
-    faces = {}
-    for ending in ("rocking", "rigid"):
-        out = land(coin, omega, speed, 1.0, G, Surface("table", 0.5, 0.0, 0.3, ending=ending))
-        assert set(np.unique(out.status)) <= {Status.SETTLED_ENERGY, Status.SETTLED_DEAD}
-        faces[ending] = out.face
-    assert np.array_equal(faces["rocking"], faces["rigid"])
-    assert 0 < np.count_nonzero(faces["rigid"] == 2) < n
+    table = Surface("table", 0.5, 0.0, 0.3)
+    out = land(coin, omega, speed, 1.0, G, table)
+    assert set(np.unique(out.status)) <= {Status.SETTLED_ENERGY, Status.SETTLED_DEAD}
+    first = land(coin, omega, speed, 1.0, G, table, max_bounces=0)
+    assert np.array_equal(out.face, first.face)
+    assert 0 < np.count_nonzero(out.face == 2) < n
 
 
 def test_landing_from_state_runs_the_rigid_ending():
-    # Landing.from_state with Surface(ending="rigid"): a nickel set upright on its band, rolling
+    # Landing.from_state with Surface("table"): a nickel set upright on its band, rolling
     # straight at 0.3 m/s, rests on edge at the time its rolling resistance takes to bring its
     # energy below the barrier, (I3 + m r²)(ω − ω_b)/(ℓ m g), ω_b² = 2 (barrier − m g r)/(I3 +
     # m r²) (the band's closed form, within 1e-9); a nickel dropped flat from 0.35 m lands on
@@ -493,7 +489,7 @@ def test_landing_from_state_runs_the_rigid_ending():
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import Landing
 
-    table = Surface("table", restitution=0.5, friction=0.3, ending="rigid")
+    table = Surface("table", restitution=0.5, friction=0.3)
     upright = Rotation.from_euler("x", 90, degrees=True)  # heads normal along −y
     n = upright.apply([0.0, 0.0, 1.0])
     r = NICKEL.radius
@@ -510,7 +506,7 @@ def test_landing_from_state_runs_the_rigid_ending():
     )
     out = landing.outcome
     assert (out.face_name, out.status_name) == ("edge", "settled in contact")
-    c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, rolling_resistance=1e-4)
     inertia = c.i3 + c.mass * r * r
     settled = math.sqrt(2.0 * (c.barrier - c.mass * G * r) / inertia)
     expected = (spin - settled) * inertia / (1e-4 * c.mass * G)
@@ -535,7 +531,7 @@ def test_landing_at_follows_the_rigid_ending_to_rest():
     from coinflight.model.surface import Surface
     from coinflight.outcomes.table import Landing
 
-    table = Surface("table", restitution=0.5, friction=0.3, ending="rigid")
+    table = Surface("table", restitution=0.5, friction=0.3)
     upright = Rotation.from_euler("x", 90, degrees=True)
     n = upright.apply([0.0, 0.0, 1.0])
     r = NICKEL.radius
@@ -550,7 +546,7 @@ def test_landing_at_follows_the_rigid_ending_to_rest():
     )
     end = float(landing.outcome.settle_time)
     assert landing.followed_until == pytest.approx(end, rel=1e-12)
-    c = coin_contact(NICKEL, rolling_resistance=1e-4, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, rolling_resistance=1e-4)
     slowing = 1e-4 * c.mass * G / (c.i3 + c.mass * r * r)
     times = np.array([0.0, 0.5, 1.0, 0.9 * end])
     states = landing.at(times)
@@ -567,7 +563,7 @@ def test_carried_position_follows_steady_rolling_on_its_circle():
     # motion): a nickel rolling steadily at tilt 0.5 rad, precessing at Ω = 8 rad/s (O'Reilly
     # 1996, §5), moves its centre of mass on a circle at constant speed |v|: after T its
     # displacement is the chord 2 (|v|/Ω) sin(Ω T/2) (within 1e-9 m).
-    c = coin_contact(NICKEL, friction=2.0, ending=RIGID_ENDING)
+    c = coin_contact(NICKEL, friction=2.0)
     tilt, precession = 0.5, 8.0
     n = np.array([math.sin(tilt), 0.0, math.cos(tilt)])
     omega = precession * np.array([0.0, 0.0, 1.0]) + rc.steady_spin(tilt, precession, c) * n
