@@ -12,7 +12,6 @@ from _kernels import coin_contact, critical_spin
 from coinflight import Coin
 from coinflight.core import flight
 from coinflight.core import rigid_contact as rc
-from coinflight.core.flight import SLIP_SPEED
 from coinflight.core.impact import collision_matrix, contact_point
 
 G = 9.81
