@@ -94,16 +94,20 @@ def face_fractions(face: np.ndarray) -> str:
     return f"P(heads, tails, edge) = ({share[HEADS]:.4f}, {share[TAILS]:.4f}, {share[EDGE]:.2e})"
 
 
-def interleaved(cases: dict[str, tuple[int, Callable[[], Any]]], rounds: int) -> dict[str, float]:
+def interleaved(
+    cases: dict[str, tuple[int, Callable[[], Any]]], rounds: int
+) -> tuple[dict[str, float], dict[str, Any]]:
     """Tosses a second of each case ({name: (tosses, call)}), the median of ``rounds`` rounds
-    with one of each case in turn (so that the machine's other load falls on all alike)."""
+    with one of each case in turn (so that the machine's other load falls on all alike), and
+    what each call returned in the last round."""
     times: dict[str, list[float]] = {name: [] for name in cases}
+    last: dict[str, Any] = {}
     for _ in range(rounds):
         for name, (_, fn) in cases.items():
             t0 = time.perf_counter()
-            fn()
+            last[name] = fn()
             times[name].append(time.perf_counter() - t0)
-    return {name: n / statistics.median(times[name]) for name, (n, _) in cases.items()}
+    return {name: n / statistics.median(times[name]) for name, (n, _) in cases.items()}, last
 
 
 def mujoco(
@@ -174,10 +178,10 @@ def timed(n: int, first_n: int, m: int, rounds: int) -> dict[str, Any]:
             ),
         }
         load = os.getloadavg()[0]
-        rates = interleaved(cases, rounds)
+        rates, last = interleaved(cases, rounds)
         figures[f"{name}_to_rest_tosses_per_s"] = rates["to rest"]
         figures[f"{name}_first_contact_tosses_per_s"] = rates["first contact"]
-        out = land(COIN, w, s, 1.0, G, SURFACE)
+        out = last["to rest"]
         statuses = {st.label: int(np.count_nonzero(out.status == st)) for st in Status}
         print(
             f"{name} tosses, {numba.get_num_threads()} threads, median of {rounds}, load "
