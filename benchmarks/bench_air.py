@@ -2,10 +2,10 @@
 
     python benchmarks/bench_air.py                          # air vs vacuum + SciPy reference
     python benchmarks/bench_air.py --old-src /path/to/src   # + another implementation
-    python benchmarks/bench_air.py --quick
+    python benchmarks/bench_air.py --quick                  # about a minute
     python benchmarks/bench_air.py --quick --json           # the record as JSON
     python benchmarks/bench_air.py --accuracy 40 [--old-src DIR]   # times against DOP853
-    python benchmarks/bench_air.py --profile 20000          # where a landing's time goes
+    python benchmarks/bench_air.py --profile 200            # where a landing's time goes
     python benchmarks/bench_air.py --ab 7 --old-src DIR     # one-thread A/B, 7 rounds
 
 The tosses are those of ``bench_bounce.py`` (a US nickel, ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30)
@@ -17,14 +17,17 @@ and each air case is given as a ratio to its vacuum model timed in the same roun
 - hand catch (:func:`coinflight.outcomes.air.catch_with_drag`) against the closed-form hand
   catch (:data:`coinflight.outcomes.hand.HAND_CATCH`),
 - table landing 0.8 m below launch (e = 0.5, μ = 0.3) to the first contact and carried to rest
-  (:func:`coinflight.outcomes.table.land` with and without drag),
+  (the bounces, then the rigid 3-D ending; :func:`coinflight.outcomes.table.land` with and
+  without drag); the landings carried to rest on the first ``--rest`` tosses (default 1,000,
+  ``--quick`` 100: a few ms each), the other cases on ``--n`` (default 100,000, ``--quick``
+  20,000),
 - the air kernels in one thread, per second of CPU time (the machine's other load excluded),
 - the SciPy reference (:func:`coinflight.core.numerical.air_catch`, DOP853 at rtol 1e-12, one
   toss at a time: the previous product path's method and tolerance) on the first tosses,
 - with ``--old-src DIR``: another implementation (``coinflight`` imported from DIR in a
   subprocess with its own numba cache folder, after a few tosses of each to compile) on the
-  same tosses and cases, one round of it in each round of these; e.g. ``--old-src
-  /path/to/main/src`` for the before/after ratios.
+  same tosses and cases (with its default ending), one round of it in each round of these;
+  e.g. ``--old-src /path/to/main/src`` for the before/after ratios.
 
 The load average is printed before and after: absolute rates on a shared machine vary with it.
 
@@ -43,8 +46,10 @@ printed (:func:`accuracy`): the catch, the first contact, a bounce flight from t
 the reference's first impact, and the second contact; with ``--old-src`` the other
 implementation's on the same tosses.
 
-Target: tosses through air ≥ 100,000 a second on 2 cores. ``--json`` (the default run only)
-prints the record: the rates, the ratios and the provenance (the text on stderr).
+Target: the hand catch and the table's first contact through air ≥ 100,000 a second on 2 cores
+(none for the landings carried to rest, which the rigid ending's cost sets: ``bench_bounce.py``).
+``--json`` (the default run only) prints the record: the rates, the ratios and the provenance
+(the text on stderr).
 """
 
 from __future__ import annotations
@@ -82,7 +87,7 @@ from coinflight.outcomes.table import land
 a = json.loads(sys.argv[1])
 given = np.load(a["inputs"])
 omega, v0 = given["omega"], given["v0"]
-n = len(v0)
+n, r = len(v0), a["rest"]
 coin, g = Coin.preset(a["coin"]), a["g"]
 drag = Drag(coefficient=a["cd"], spin_damping=a["k"])
 surface = Surface("table", drop_height=a["drop"], restitution=a["e"], friction=a["mu"])
@@ -91,26 +96,30 @@ cases = {
     "table first contact": lambda p: land(
         coin, omega, v0, 1.0, g, surface, drag, max_bounces=0, parallel=p
     ),
-    "table to rest": lambda p: land(coin, omega, v0, 1.0, g, surface, drag, parallel=p),
+    "table to rest": lambda p: land(coin, omega[:r], v0[:r], 1.0, g, surface, drag, parallel=p),
 }
+size = {"hand": n, "table first contact": n, "table to rest": r}
 for p in (True, False):  # compile or load the cache
     catch_with_drag(coin, omega[:10], v0[:10], 1.0, g, drag, parallel=p)
     land(coin, omega[:10], v0[:10], 1.0, g, surface, drag, parallel=p)
 out = {}
 for k, f in cases.items():
     if a["cpu"]:
-        t0 = time.process_time(); f(False); out[k] = n / (time.process_time() - t0)
+        t0 = time.process_time(); f(False); out[k] = size[k] / (time.process_time() - t0)
     else:
-        t0 = time.perf_counter(); f(True); out[k] = n / (time.perf_counter() - t0)
+        t0 = time.perf_counter(); f(True); out[k] = size[k] / (time.perf_counter() - t0)
 print(json.dumps(out))
 """
 
 
-def _other(args: argparse.Namespace, n: int, cache: str, *, cpu: bool) -> dict[str, float]:
+def _other(
+    args: argparse.Namespace, n: int, rest: int, cache: str, *, cpu: bool
+) -> dict[str, float]:
     """One round of the other implementation's cases (``--old-src``) in a subprocess, its numba
     cache in ``cache`` (not in its sources), on the first ``n`` of :func:`bench_bounce.tosses`
-    (seed 2026, written to an .npz in ``cache``: one definition of the tosses): rates a second
-    of wall time, or with ``cpu`` of CPU time in one thread."""
+    (seed 2026, written to an .npz in ``cache``: one definition of the tosses; the landings
+    carried to rest on the first ``rest`` of them): rates a second of wall time, or with ``cpu``
+    of CPU time in one thread."""
     inputs = os.path.join(cache, f"tosses-{n}.npz")
     if not os.path.exists(inputs):
         omega, v0 = tosses(n)
@@ -126,6 +135,7 @@ def _other(args: argparse.Namespace, n: int, cache: str, *, cpu: bool) -> dict[s
             "cd": args.drag,
             "k": args.spin_damping,
             "cpu": cpu,
+            "rest": rest,
         }
     )
     env = dict(os.environ, PYTHONPATH=args.old_src, NUMBA_CACHE_DIR=cache)
@@ -285,7 +295,7 @@ def profile(n: int, drag: Drag, runs: int) -> None:
 
     from coinflight.core import drag as d
     from coinflight.core.bounce import GRAZE_SKIP, MAX_IMPACTS
-    from coinflight.core.impact import impact, lowest_depth
+    from coinflight.core.impact import lowest_depth
     from coinflight.outcomes.table import contact_record
 
     unsettled = int(Status.UNSETTLED)
@@ -331,10 +341,7 @@ def profile(n: int, drag: Drag, runs: int) -> None:
             impacts += 1
             z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
             t0 = cycles()
-            v, lm, rebound = impact(
-                v, lm, n, c.radius, c.half_thickness, c.mass, c.i1, c.i3, c.restitution,
-                c.friction, c.corner_radius,
-            )  # fmt: skip
+            v, lm, rebound = d.table_impact(v, lm, n, c)
             t1 = cycles()
             status = d.ending(v, lm, n, rebound, c)[1]
             t2 = cycles()
@@ -443,21 +450,23 @@ def cpu_rate(fn, n: int) -> float:  # type: ignore[no-untyped-def]
     return n / (time.process_time() - t0)
 
 
-def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
+def ab(args: argparse.Namespace, n: int, rest: int, drag: Drag, rounds: int) -> None:
     """Interleaved A/B in one thread against ``--old-src``: in each of ``rounds`` rounds this
     implementation's three cases, then the other's (:func:`_other`, a subprocess), as tosses per
-    CPU second of one thread (the machine's other load excluded as far as CPU time does);
-    prints each case's ratio, this one / other, median and range over the rounds."""
+    CPU second of one thread (the machine's other load excluded as far as CPU time does), on
+    ``n`` tosses (carried to rest: the first ``rest``); prints each case's ratio, this one /
+    other, median and range over the rounds."""
     omega, v0 = tosses(n)
-    cases = cases_in_air(omega, v0, drag, parallel=False)
+    cases = cases_in_air(omega, v0, drag, parallel=False, rest=rest)
+    size = {"hand": n, "table first contact": n, "table to rest": min(rest, n)}
     catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=False)  # compile
     land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=False)
     load = os.getloadavg()[0]
     ratios: dict[str, list[float]] = {name: [] for name in cases}
     with tempfile.TemporaryDirectory() as cache:
         for _ in range(rounds):
-            mine = {name: cpu_rate(fn, n) for name, fn in cases.items()}
-            other = _other(args, n, cache, cpu=True)
+            mine = {name: cpu_rate(fn, size[name]) for name, fn in cases.items()}
+            other = _other(args, n, size["table to rest"], cache, cpu=True)
             for name in cases:
                 ratios[name].append(mine[name] / other[name])
     print(
@@ -470,18 +479,24 @@ def ab(args: argparse.Namespace, n: int, drag: Drag, rounds: int) -> None:
 
 
 def cases_in_air(
-    omega: np.ndarray, v0: np.ndarray, drag: Drag, parallel: bool = True
+    omega: np.ndarray,
+    v0: np.ndarray,
+    drag: Drag,
+    parallel: bool = True,
+    rest: int | None = None,
 ) -> dict[str, Callable[[], Any]]:
     """The timed cases through air on the tosses (ω, v0), all of numba's threads (one without
     ``parallel``): the hand catch, the table's first contact and the landing carried to rest
-    (:data:`SURFACE`); each a call of no arguments (also ``bench_targets.py``'s)."""
+    (:data:`SURFACE`; on the first ``rest`` tosses, all when None); each a call of no
+    arguments (also ``bench_targets.py``'s)."""
     p = parallel
+    wr, sr = omega[:rest], v0[:rest]
     return {
         "hand": lambda: catch_with_drag(COIN, omega, v0, 1.0, G, drag, parallel=p),
         "table first contact": lambda: land(
             COIN, omega, v0, 1.0, G, SURFACE, drag, max_bounces=0, parallel=p
         ),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, drag, parallel=p),
+        "table to rest": lambda: land(COIN, wr, sr, 1.0, G, SURFACE, drag, parallel=p),
     }
 
 
@@ -489,6 +504,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="fewer tosses")
     parser.add_argument("--n", type=int, default=None, help="tosses for the compiled kernels")
+    parser.add_argument("--rest", type=int, default=None, help="of them carried to rest")
     parser.add_argument("--repeats", type=int, default=5, help="rounds (runs of --profile)")
     parser.add_argument("--reference", type=int, default=None, help="tosses for SciPy")
     parser.add_argument("--spin-damping", type=float, default=0.0, help="K, N m s")
@@ -523,50 +539,56 @@ def main() -> None:
         ("--profile", args.profile),
         ("--repeats", args.repeats),
         ("--ab", args.ab),
+        ("--n", args.n),
+        ("--rest", args.rest),
     ):
         if value is not None and value < 1:  # one line, exit code 2
             print(f"bench_air.py: {name} must be a positive integer, got {value}", file=sys.stderr)
             sys.exit(2)
     n = args.n or (20_000 if args.quick else 100_000)
+    rest = min(n, args.rest or (100 if args.quick else 1_000))
     m = args.reference or (10 if args.quick else 40)
     drag = Drag(coefficient=args.drag, spin_damping=args.spin_damping)
     if args.profile is not None:
         profile(args.profile, drag, args.repeats)
         return
     if args.ab is not None:
-        ab(args, args.n or 10_000, drag, args.ab)
+        ab(args, args.n or 10_000, args.rest or 100, drag, args.ab)
         return
     if args.accuracy:
         accuracy(args, args.accuracy, drag)
         return
     recorder = Recorder("bench_air")
     with recorder.text_to_stderr(args.json):
-        figures = rates_in_air(args, n, m, drag)
+        figures = rates_in_air(args, n, rest, m, drag)
     if args.json:
         print(recorder.json(figures))
 
 
-def rates_in_air(args: argparse.Namespace, n: int, m: int, drag: Drag) -> dict[str, Any]:
-    """The default run: the air cases against their vacuum models, one thread per CPU second,
-    the SciPy reference, with ``--old-src`` the other implementation; prints them and returns
-    the figures of the record."""
+def rates_in_air(args: argparse.Namespace, n: int, rest: int, m: int, drag: Drag) -> dict[str, Any]:
+    """The default run on ``n`` tosses (``rest`` of them carried to rest): the air cases against
+    their vacuum models, one thread per CPU second, the SciPy reference on ``m``, with
+    ``--old-src`` the other implementation; prints them and returns the figures of the
+    record."""
     import numba
 
     omega, v0 = tosses(n)
     load_before = f"{os.getloadavg()[0]:.2f}"
     print(
-        f"{n:,} tosses of a US nickel, C_d = {drag.coefficient:g}, K = {drag.spin_damping:g} N m s,"
-        f" {numba.get_num_threads()} threads, {os.cpu_count()} CPUs, median of {args.repeats}"
+        f"{n:,} tosses of a US nickel ({rest:,} carried to rest), C_d = {drag.coefficient:g}, "
+        f"K = {drag.spin_damping:g} N m s, {numba.get_num_threads()} threads, {os.cpu_count()} "
+        f"CPUs, median of {args.repeats}"
     )
     for parallel in (True, False):  # compile or load the cache
         catch_with_drag(COIN, omega[:10], v0[:10], 1.0, G, drag, parallel=parallel)
         land(COIN, omega[:10], v0[:10], 1.0, G, SURFACE, drag, parallel=parallel)
     flight = 2.0 * v0 / G
-    air_cases = cases_in_air(omega, v0, drag)
+    air_cases = cases_in_air(omega, v0, drag, rest=rest)
+    size = {"hand": n, "table first contact": n, "table to rest": rest}
     vacuum_cases = {
         "hand": lambda: HAND_CATCH.faces(COIN, omega, flight, 1.0, G),
         "table first contact": lambda: land(COIN, omega, v0, 1.0, G, SURFACE, max_bounces=0),
-        "table to rest": lambda: land(COIN, omega, v0, 1.0, G, SURFACE),
+        "table to rest": lambda: land(COIN, omega[:rest], v0[:rest], 1.0, G, SURFACE),
     }
     for fn in [*vacuum_cases.values()]:  # compile or load the cache
         fn()
@@ -581,12 +603,13 @@ def rates_in_air(args: argparse.Namespace, n: int, m: int, drag: Drag) -> dict[s
                 fn()
                 times[key].append(time.perf_counter() - t0)
             if args.old_src:  # one round of the other implementation in each round of these
-                for name, rate in _other(args, n, cache, cpu=False).items():
+                for name, rate in _other(args, n, rest, cache, cpu=False).items():
                     old_rates[name].append(rate)
-        old_cpu = _other(args, n, cache, cpu=True) if args.old_src else {}
-    rates = {key: n / statistics.median(ts) for key, ts in times.items()}
+        old_cpu = _other(args, n, rest, cache, cpu=True) if args.old_src else {}
+    rates = {key: size[key[1]] / statistics.median(ts) for key, ts in times.items()}
     figures: dict[str, Any] = {
         "tosses": n,
+        "rest_tosses": rest,
         "repeats": args.repeats,
         "threads": numba.get_num_threads(),
         "drag_coefficient": drag.coefficient,
@@ -604,8 +627,8 @@ def rates_in_air(args: argparse.Namespace, n: int, m: int, drag: Drag) -> dict[s
         )
     # On a shared machine the wall clock counts the time other processes hold the cores: the
     # serial kernels' CPU time gives the rate of one core (times the cores for a quiet machine).
-    serial = cases_in_air(omega, v0, drag, parallel=False)
-    cpu = {name: cpu_rate(fn, n) for name, fn in serial.items()}
+    serial = cases_in_air(omega, v0, drag, parallel=False, rest=rest)
+    cpu = {name: cpu_rate(fn, size[name]) for name, fn in serial.items()}
     for name, rate in cpu.items():
         figures[f"air_{name.replace(' ', '_')}_one_thread_tosses_per_cpu_s"] = rate
         print(f"  air, {name}, one thread: {rate:,.0f} tosses per CPU second")

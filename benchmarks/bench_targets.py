@@ -7,39 +7,39 @@
     python benchmarks/bench_targets.py --rounds 7 --seed 11 --n 2000   # every case on 2,000
     python benchmarks/bench_targets.py --cpu           # + each case in one thread, per CPU s
 
-The targets, on 2 cores: ≥ 50,000 tosses a second carried to rest by the 3-D ending (no
-planar hand-off: the rigid ending), first contact ≥ 2 M a second, tosses through air ≥ 100,000
-a second, and the speed ratio against MuJoCo on the same tosses (no target). Every case runs in
-one process on 2 of numba's threads (fewer when numba has fewer; said in the output), the
-rounds interleaved (one of each case in turn, so the machine's other load falls on all alike),
-the rate of each case the median of its rounds. The cases (default tosses; ``--quick`` a tenth):
+The targets, on 2 cores: ≥ 20,000 human or vigorous tosses a second carried to rest (the
+bounces, then the rigid 3-D ending), first contact ≥ 2 M a second, the hand catch and the
+table's first contact through air ≥ 100,000 a second, and the speed ratio against MuJoCo on
+the same tosses (no target). Every case runs in one process on 2 of numba's threads (fewer when
+numba has fewer; said in the output), the rounds interleaved (one of each case in turn, so the
+machine's other load falls on all alike), the rate of each case the median of its rounds. The
+cases (default tosses; ``--quick`` a tenth):
 
 - first contact with the table 0.8 m below launch, e 0.5, μ 0.3 (1,000,000 tosses);
-- carried to rest with the rigid 3-D ending (``ending="rigid"``) at e 0.5, μ 0.3 and with
-  each toss its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (1,000 tosses), and as references without
-  a target, marked "(planar)", the same with the default rocking ending (200,000 tosses);
+- carried to rest at e 0.5, μ 0.3, vigorous and human tosses, and vigorous ones with each toss
+  its own e ~ U(0.2, 0.8), μ ~ U(0.1, 0.6) (1,000 tosses each);
 - through air (C_d 1.17, no spin damping): the hand catch and the table's first contact
-  (100,000 tosses each), the table carried to rest with the rigid ending (1,000), and as
-  a reference with the rocking ending (100,000);
+  (100,000 tosses each), and, as a reference without a target (marked "(ref)"), the table
+  carried to rest (1,000);
 - with ``--mujoco N`` (the optional extra; one line and skipped when not installed): MuJoCo
   (:func:`coinflight.studies.mujoco_compare.run`, its settings, ``threads`` 2, its wall time
-  including its calibration) on the first N of the rigid rows' tosses, and coinflight's
-  rigid ending on the same N with MuJoCo's rolling and torsional lengths as resistances
-  (medians of the rounds): the speed ratio coinflight / MuJoCo. The ratio depends on the
-  tosses (with axial spin, as here, both engines are slower than on the landing report's).
+  including its calibration) on the first N of the vigorous rows' tosses, and coinflight on
+  the same N with MuJoCo's rolling and torsional lengths as resistances (medians of the
+  rounds): the speed ratio coinflight / MuJoCo. The ratio depends on the tosses.
 
 With ``--cpu`` each case also runs in one thread (``parallel=False``) right after its timing
 in each round, timed by the thread's CPU clock: a second table gives the one-thread rate per CPU
 second and twice that over the target (what 2 cores would give if they scaled perfectly and
 nothing else ran: an upper estimate beside the measured rate, not the target's measure).
 
-The tosses are ``bench_bounce.py``'s (:func:`bench_bounce.tosses`: a US nickel, ωx ~ U(150,
-300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~ U(1.5, 3) m/s, heads up; seed ``--seed``, default 2026),
-each toss's own e, μ :func:`bench_bounce.own_rates` (seed ``bench_bounce.OWN_RATES_SEED``, 7);
-the air cases are ``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled
-(or loaded from numba's cache) on 20 tosses before the timing. The work is bounded before
-anything runs (:func:`seconds_estimate`). The record (``--json``) holds the rows, the seeds,
-the threads, MuJoCo's part and the provenance (command, date, versions, machine, load).
+The tosses are ``bench_bounce.py``'s (a US nickel, heads up, seed ``--seed``, default 2026):
+vigorous (:func:`bench_bounce.tosses`: ωx ~ U(150, 300), ωy, ωz ~ U(−30, 30) rad/s, v0 ~
+U(1.5, 3) m/s) and human (:func:`bench_bounce.human_tosses`), each toss's own e, μ
+:func:`bench_bounce.own_rates` (seed ``bench_bounce.OWN_RATES_SEED``, 7); the air cases are
+``bench_air.py``'s (:func:`bench_air.cases_in_air`). Every case is compiled (or loaded from
+numba's cache) on 20 tosses before the timing. The work is bounded before anything runs
+(:func:`seconds_estimate`). The record (``--json``) holds the rows, the seeds, the threads,
+MuJoCo's part and the provenance (command, date, versions, machine, load).
 """
 
 from __future__ import annotations
@@ -66,8 +66,8 @@ THREADS = 2
 """The targets are "on 2 cores": numba's threads for every case (fewer if numba has
 fewer)."""
 
-TO_REST = 50_000.0
-FIRST_CONTACT = 2_000_000.0
+TO_REST = bench_bounce.TO_REST_TARGET
+FIRST_CONTACT = bench_bounce.FIRST_CONTACT_TARGET
 IN_AIR = 100_000.0
 """The targets, tosses a second on 2 cores."""
 
@@ -88,23 +88,20 @@ class Case(NamedTuple):
     quiet_rate: float
 
 
-PLANAR = "(planar)"
-PLANAR_NOTE = "(planar): the rocking ending's planar hand-off, not the 3-D ending: a reference"
-"""The rocking ending's rows are references, marked :data:`PLANAR` in their labels and
-explained by :data:`PLANAR_NOTE` under the table: the 50,000 a second is for the 3-D
-ending ("no planar hand-off"), which the rigid ending's rows time."""
+REF = "(ref)"
+REF_NOTE = "(ref): a reference, no target (20,000/s is for landings in vacuum)"
+"""A reference row times something no target asks for: marked :data:`REF` in its label and
+explained by :data:`REF_NOTE` under the table."""
 
 CASES = (
     Case("first_contact", "first contact (table, 0.8 m drop, e 0.5 μ 0.3)", FIRST_CONTACT,
          1_000_000, 2.0e6),
-    Case("rest_rocking", f"to rest, rocking ending {PLANAR}, e 0.5 μ 0.3", None, 200_000, 1.0e5),
-    Case("rest_rocking_own", f"to rest, rocking ending {PLANAR}, own e, μ", None, 200_000, 1.0e5),
-    Case("rest_rigid", "to rest, rigid 3-D ending, e 0.5 μ 0.3", TO_REST, 1_000, 300.0),
-    Case("rest_rigid_own", "to rest, rigid 3-D ending, own e, μ", TO_REST, 1_000, 300.0),
+    Case("rest", "to rest, vigorous, e 0.5 μ 0.3", TO_REST, 1_000, 300.0),
+    Case("rest_human", "to rest, human, e 0.5 μ 0.3", TO_REST, 1_000, 300.0),
+    Case("rest_own", "to rest, vigorous, own e, μ", TO_REST, 1_000, 300.0),
     Case("air_hand", "air: hand catch", IN_AIR, 100_000, 2.5e5),
     Case("air_first_contact", "air: table first contact", IN_AIR, 100_000, 1.7e5),
-    Case("air_rest", f"air: table to rest, rocking ending {PLANAR}", None, 100_000, 5.0e4),
-    Case("air_rest_rigid", "air: table to rest, rigid 3-D ending", IN_AIR, 1_000, 200.0),
+    Case("air_rest", f"air: table to rest {REF}", None, 1_000, 200.0),
 )  # fmt: skip
 """Every timed case, in the order of the table."""
 
@@ -137,35 +134,32 @@ def calls(
     size: Mapping[str, int], seed: int, parallel: bool = True
 ) -> dict[str, Callable[[], Any]]:
     """Each case of :data:`CASES` as a call of no arguments on its tosses (``bench_bounce``'s,
-    seed ``seed``; cases of one size share them), on numba's threads (one without
-    ``parallel``)."""
+    seed ``seed``; cases of one size and kind of toss share them), on numba's threads (one
+    without ``parallel``)."""
     B = bench_bounce
-    drawn: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    drawn: dict[tuple[str, int], tuple[np.ndarray, np.ndarray]] = {}
 
-    def toss(key: str) -> tuple[np.ndarray, np.ndarray]:
+    def toss(key: str, kind: str = "vigorous") -> tuple[np.ndarray, np.ndarray]:
         n = size[key]
-        if n not in drawn:
-            drawn[n] = B.tosses(n, seed)
-        return drawn[n]
+        if (kind, n) not in drawn:
+            drawn[kind, n] = B.SETS[kind](n, seed)
+        return drawn[kind, n]
 
-    def case(key: str, surface: Surface, **kw: Any) -> Callable[[], Any]:
-        omega, v0 = toss(key)
-        return lambda: land(B.COIN, omega, v0, 1.0, B.G, surface, parallel=parallel, **kw)
+    def case(key: str, kind: str = "vigorous", **kw: Any) -> Callable[[], Any]:
+        omega, v0 = toss(key, kind)
+        return lambda: land(B.COIN, omega, v0, 1.0, B.G, B.SURFACE, parallel=parallel, **kw)
 
     def air(key: str, name: str) -> Callable[[], Any]:
         return bench_air.cases_in_air(*toss(key), DRAG, parallel)[name]
 
-    own = {k: B.own_rates(size[k]) for k in ("rest_rocking_own", "rest_rigid_own")}
     out = {
-        "first_contact": case("first_contact", B.SURFACE, max_bounces=0),
-        "rest_rocking": case("rest_rocking", B.SURFACE),
-        "rest_rocking_own": case("rest_rocking_own", B.SURFACE, contact=own["rest_rocking_own"]),
-        "rest_rigid": case("rest_rigid", B.RIGID),
-        "rest_rigid_own": case("rest_rigid_own", B.RIGID, contact=own["rest_rigid_own"]),
+        "first_contact": case("first_contact", max_bounces=0),
+        "rest": case("rest"),
+        "rest_human": case("rest_human", "human"),
+        "rest_own": case("rest_own", contact=B.own_rates(size["rest_own"])),
         "air_hand": air("air_hand", "hand"),
         "air_first_contact": air("air_first_contact", "table first contact"),
         "air_rest": air("air_rest", "table to rest"),
-        "air_rest_rigid": case("air_rest_rigid", B.RIGID, drag=DRAG),
     }
     assert list(out) == [c.key for c in CASES]
     return out
@@ -244,7 +238,7 @@ def rows(
 
 def table(found: Sequence[Mapping[str, Any]]) -> str:
     """:func:`rows` as a text table, the first column as wide as the longest label; a reference
-    row's target, ratio and met "ref", "-", "-" and :data:`PLANAR_NOTE` under the table; when
+    row's target, ratio and met "ref", "-", "-" and :data:`REF_NOTE` under the table; when
     the one-thread rates were measured, a second table of them."""
     w = max(len("target"), *(len(r["target_name"]) for r in found))
 
@@ -261,7 +255,7 @@ def table(found: Sequence[Mapping[str, Any]]) -> str:
             f"{ratio(r['ratio']):>7}  {met}"
         )
     if any(r["target"] is None for r in found):
-        lines.append(PLANAR_NOTE)
+        lines.append(REF_NOTE)
     if any(r["one_thread"] is not None for r in found):
         lines.append(
             f"{'one thread (parallel=False)':<{w}} {'per CPU s':>13} {'2 × that / target':>19}"
@@ -286,10 +280,10 @@ def mujoco_version() -> dict[str, str | None]:
 
 
 def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> dict[str, Any]:
-    """MuJoCo on the first ``m`` of the rigid rows' tosses (one run, its settings, 2 threads)
-    and coinflight's rigid ending on the same with MuJoCo's rolling and torsional lengths as
+    """MuJoCo on the first ``m`` of the vigorous rows' tosses (one run, its settings, 2
+    threads) and coinflight on the same with MuJoCo's rolling and torsional lengths as
     resistances (median of ``rounds``): rates and the ratio coinflight / MuJoCo. The tosses are
-    the rigid rows' first ``m`` when ``m`` ≤ ``size["rest_rigid"]``; a larger ``m`` draws
+    the first ``m`` of the ``rest`` row's when ``m`` ≤ ``size["rest"]``; a larger ``m`` draws
     ``m`` tosses of the same seed (:func:`bench_bounce.tosses` draws its columns in turn, so
     their first ones differ). {"skipped": reason} when MuJoCo is not installed."""
     from coinflight.studies import mujoco_compare as mc
@@ -297,17 +291,16 @@ def against_mujoco(m: int, size: Mapping[str, int], seed: int, rounds: int) -> d
     if not mc.available():
         return {"skipped": "MuJoCo not installed (pip install 'coinflight[mujoco]')"}
     B = bench_bounce
-    omega, v0 = B.tosses(max(m, size["rest_rigid"]), seed)
+    omega, v0 = B.tosses(max(m, size["rest"]), seed)
     omega, v0 = omega[:m], v0[:m]
-    e, mu = B.RIGID.restitution, B.RIGID.friction
+    e, mu = B.SURFACE.restitution, B.SURFACE.friction
     resisted = Surface(
-        "table", B.DROP, e, mu, rolling_resistance=mc.ROLLING, pivoting_resistance=mc.TORSIONAL,
-        ending="rigid",
-    )  # fmt: skip
+        "table", B.DROP, e, mu, rolling_resistance=mc.ROLLING, pivoting_resistance=mc.TORSIONAL
+    )
     land(B.COIN, omega[:20], v0[:20], 1.0, B.G, resisted)  # compile or load the cache
     ours = interleaved(
-        {"rigid": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"rigid": m}, rounds
-    )[0]["rigid"]
+        {"rest": lambda: land(B.COIN, omega, v0, 1.0, B.G, resisted)}, {"rest": m}, rounds
+    )[0]["rest"]
     run = mc.run(B.COIN, omega, v0, B.DROP, e, mu, B.G, threads=THREADS)
     theirs = m / float(run.elapsed)
     rate = statistics.median(ours)
@@ -393,8 +386,8 @@ def text(rep: Mapping[str, Any]) -> str:
     elif mj is not None:
         lines.append(
             f"MuJoCo {mj['mujoco']}, {mj['n']:,} of the same tosses: {mj['mujoco_rate']:,.1f} "
-            f"tosses/s ({mj['mujoco_moving']} still moving at {mj['limit']:g} s); coinflight's "
-            f"rigid ending (ℓ_r {mj['rolling_resistance']:g} m, ℓ_p "
+            f"tosses/s ({mj['mujoco_moving']} still moving at {mj['limit']:g} s); coinflight "
+            f"(ℓ_r {mj['rolling_resistance']:g} m, ℓ_p "
             f"{mj['pivoting_resistance']:g} m) {mj['coinflight_rate']:,.0f} tosses/s: ratio "
             f"{mj['ratio']:,.0f}"
         )

@@ -105,13 +105,13 @@ def _positive(x: object) -> bool:
         ("bench_flippers", ["--quick", "--json", "--repeats", "2"], "analyse_s"),
         (
             "bench_air",
-            ["--json", "--n", "200", "--repeats", "1", "--reference", "1"],
+            ["--json", "--n", "200", "--rest", "20", "--repeats", "1", "--reference", "1"],
             "air_table_to_rest_tosses_per_s",
         ),
         (
             "bench_bounce",
-            ["--rigid-rates", "30", "--rounds", "1", "--json"],
-            "human_rigid_ending_tosses_per_s",
+            ["--quick", "--n", "24", "--rounds", "1", "--json"],
+            "human_to_rest_tosses_per_s",
         ),
         ("bench_targets", ["--json", "--n", "20", "--rounds", "1"], None),
         pytest.param("bench_figures", ["--quick", "--json"], "paper_s", marks=pytest.mark.slow),
@@ -125,12 +125,27 @@ def test_each_script_prints_its_record(name, args, figure):
     if figure is not None:
         assert _positive(figures[figure]), figures
     if name == "bench_targets":
-        assert [r["n"] for r in figures["targets"]] == [20] * 9
+        assert [r["n"] for r in figures["targets"]] == [20] * 7
         assert all(_positive(r["measured"]) for r in figures["targets"])
         assert set(rec["versions"]) >= {"mujoco"}
-    if name == "bench_bounce" and "--rigid-rates" in args:
+    if name == "bench_bounce":
+        from coinflight.studies import mujoco_compare
+
         assert figures["to_rest_target_tosses_per_s"] == 20_000.0
-        assert figures["tosses"] == 30
+        assert figures["first_contact_target_tosses_per_s"] == 2e6
+        assert figures["tosses"] == 24 and figures["first_contact_tosses"] == 200_000
+        for kind in ("vigorous", "human"):
+            assert _positive(figures[f"{kind}_first_contact_tosses_per_s"])
+            if mujoco_compare.available():  # on 16 of the same tosses
+                assert figures[f"{kind}_mujoco_tosses"] == 16
+                assert _positive(figures[f"{kind}_speed_ratio"])
+                assert figures[f"{kind}_speed_ratio"] == pytest.approx(
+                    figures[f"{kind}_to_rest_tosses_per_s"]
+                    / figures[f"{kind}_mujoco_tosses_per_s"],
+                    rel=1e-12,
+                )
+    if name == "bench_air":
+        assert figures["tosses"] == 200 and figures["rest_tosses"] == 20
     if name == "bench_probability":
         acc = figures["time_to_accuracy"]
         assert len(acc) == 5 and all(_positive(row["exact_ms"]) for row in acc.values())
