@@ -67,7 +67,7 @@ RIGID_TOSSES_PER_SECOND = 70.0
 """Table landings carried to rest a second (the rigid ending, e > 0), drag-free or through air,
 for the work bounds: US nickel, e = 0.5, μ = 0.3,
 resistances 1e-4 m, on 2 threads of a busy 2-core machine, about half what it measures there
-(``python benchmarks/bench_bounce.py --rigid-rates N``: human and vigorous tosses; the coins
+(``python benchmarks/bench_bounce.py``: human and vigorous tosses; the coins
 roll for a median 1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
 
 AIR_LANDINGS_PER_SECOND = 1e4
