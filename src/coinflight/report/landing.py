@@ -14,7 +14,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
@@ -72,9 +72,13 @@ class Sizes:
     """The same: tosses with the four drawn toss by toss, per preset."""
     mujoco: int = 1_000
     """Identical tosses in coinflight and MuJoCo (0: skip; MuJoCo takes about 0.2 s a toss)."""
-    experiments: int = 200
-    """Thick cylinders against experiments: tosses per cell of each measured point's box (0:
-    skip the section), in both sections (planar and human tosses)."""
+    experiments: int = 500
+    """Thick cylinders against experiments, planar tosses: tosses per cell of each measured
+    point's box (0: skip both sections; planar tosses fall flat soon, a millisecond a toss)."""
+    experiments_human: int = 100
+    """The same with human tosses (the preset's wobble), which roll for long on their rims
+    (tens of milliseconds a toss; 100: the least :data:`~coinflight.studies.edge_experiments.
+    MIN_TOSSES_TO_JUDGE` judges)."""
     experiments_points: int = 2
     """Values per unmeasured parameter of that box (2: corners and centre)."""
 
@@ -95,6 +99,7 @@ QUICK = Sizes(
     band_integrated=8,
     mujoco=4,
     experiments=10,
+    experiments_human=4,
     experiments_points=2,
 )
 """A report in a minute or two (tests, a first look): the same sections, small samples."""
@@ -348,17 +353,22 @@ def landing_report(
     experiments: EdgeExperiments | None = None
     human: EdgeExperiments | None = None
     left: tuple[str, ...] = ()
-    if sizes.experiments > 0:
-        for psi in (None, "human"):
+    runs: tuple[tuple[Literal["human"] | None, int], ...] = (
+        (None, sizes.experiments),
+        ("human", sizes.experiments_human),
+    )
+    for psi, size in runs if sizes.experiments > 0 else ():
+        if size <= 0:
+            continue
 
-            def compare(psi: str | None = psi) -> tuple[EdgeExperiments, list[str]]:
-                return study.thick_experiments(
-                    sizes.experiments, seed, sizes.experiments_points, "human" if psi else None
-                )
+        def compare(
+            psi: Literal["human"] | None = psi, size: int = size
+        ) -> tuple[EdgeExperiments, list[str]]:
+            return study.thick_experiments(size, seed, sizes.experiments_points, psi)
 
-            name = "thick cylinders against experiments" + (", human tosses" if psi else "")
-            x, left_out = timed(name, compare)
-            experiments, human = (x, human) if psi is None else (experiments, x)
+        name = "thick cylinders against experiments" + (", human tosses" if psi else "")
+        x, left_out = timed(name, compare)
+        experiments, human = (x, human) if psi is None else (experiments, x)
         left = tuple(left_out)
     files: list[Path] = []
     more = {
