@@ -239,25 +239,12 @@ def _flat_slide_in_mujoco(friction):
     return on / 300, up
 
 
-def test_a_sliding_contact_lifts_in_mujoco_not_in_the_contact_phase():
-    # The module notes' explanation of the engines' edge gap: MuJoCo's convex soft contact
-    # moves a sliding contact apart ("the only way to initiate slip is to generate some motion
-    # in the normal direction", its documentation), coinflight's contact phase keeps it pressed.
-    # Measured: MuJoCo in contact 7 % of the steps, rising at up to 32 mm/s with μ 0.3, 89 %
-    # frictionless; coinflight 100 % and no rise.
-    from coinflight.core import contact_phase as cp
-    from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import contact_record
-
+def test_a_sliding_contact_lifts_in_mujoco():
+    # MuJoCo's convex soft contact moves a sliding contact apart ("the only way to initiate
+    # slip is to generate some motion in the normal direction", its documentation); without
+    # friction it stays pressed. Measured: in contact 7 % of the steps, rising at up to
+    # 32 mm/s with μ 0.3, 89 % frictionless.
     share, up = _flat_slide_in_mujoco(0.3)
     assert share < 0.3 and up > 0.01
     share0, up0 = _flat_slide_in_mujoco(0.0)
     assert share0 > 0.8 and up0 < 0.002
-    c = contact_record(NICKEL, Surface("table", 0.8, 0.5, 0.3, ending="contact"), 9.81)
-    z = c.half_thickness - c.mass * c.g / (2.0 * math.pi * cp.stiffness_of(c))
-    y = np.array([z, 0.5, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0])
-    for _ in range(300):
-        cp.advance(y, 1e-4, c)
-        assert cp.contact_mode(y, c) == cp.MODES.index("face") and y[3] < 1e-4
-    # Both decelerate as Coulomb's law: 0.5 − μ g t = 0.412 m/s after 30 ms.
-    assert y[1] == pytest.approx(0.5 - 0.3 * 9.81 * 0.03, abs=2e-3)

@@ -53,8 +53,8 @@ fig = plot_edge(simulated)
 # Real tosses bounce. :func:`~coinflight.studies.edge_target.target_ratio` (``coinflight edge
 # --target 1/3``) finds the ratio at which simulated tosses land on edge one time in three, for
 # every corner and the centre of the box of what nobody measured (restitution 0.3–0.6 and
-# friction 0.05–0.6: the surface presets' ranges; with a 3-D ending also the rolling and
-# pivoting resistance 1e-5–1e-3 m). The same tosses land at every ratio and in every cell, and
+# friction 0.05–0.6: the surface presets' ranges; and the rolling and pivoting resistance
+# 1e-5–1e-3 m). The same tosses land at every ratio and in every cell, and
 # each root carries its statistical error: the binomial error of P(edge) over its slope.
 from coinflight.studies.edge_target import target_ratio
 
@@ -82,21 +82,21 @@ print(f"wobbling: {low.ratio:.3f} ± {low.stderr:.3f} to {high.ratio:.3f} ± {hi
 # Stand-up Maths 2018, read from a secondary table), each with its binomial standard error,
 # beside the model's band for hand flips onto a table (the human toss preset's spin and launch
 # speed; e, μ, the cylinder's diameter 20–50 mm and the release 0.2–0.5 m above the table
-# unmeasured, and with the rigid 3-D ending the resistances too). Nothing is tuned to the
+# unmeasured, and the rolling and pivoting resistance too). Nothing is tuned to the
 # measurements. Planar tosses spin about a diameter only; human tosses also carry the
 # preset's axial spin (a wobble of the normal on a cone of about 82°, fitted to coins, not
-# measured for cylinders). Small samples keep this page quick: the rigid ending lands only
-# the planar tosses here (a wobbling cylinder rolls on its rim for long at low resistance);
-# ``coinflight landing-report`` computes both with more tosses.
+# measured for cylinders). Small samples keep this page quick, the human tosses' smallest (a
+# wobbling cylinder rolls on its rim for long at low resistance, so too few to judge a
+# measurement by); ``coinflight landing-report`` computes both with more tosses.
 from coinflight.datasets import edge_experiments as measured_edges
 from coinflight.studies.edge_experiments import edge_experiments, from_dataset
 
 records, _ = from_dataset(measured_edges())
-for psi, tosses, rigid in ((None, "planar tosses", 100), ("human", "human tosses", 0)):
-    x = edge_experiments(records, 1000, seed=2018, rigid=rigid, psi=psi)
-    print(tosses)
-    for row in x.table():  # experiment, measured ± s.e. (95 % CI), ending, band, verdict
-        print(f"  h/d {float(row[1]):.3f}: {row[2]}; {row[3]} band {row[4]}: {row[8]}")
+for psi, tosses, n in ((None, "planar tosses", 200), ("human", "human tosses", 10)):
+    x = edge_experiments(records, n, seed=2018, psi=psi)
+    print(f"{tosses}, {n} a cell")
+    for row in x.table():  # experiment, h/d, measured ± s.e. (95 % CI), band, ..., verdict
+        print(f"  h/d {float(row[1]):.3f}: {row[2]}; band {row[3]}: {row[6]}")
 
 # %%
 # With planar tosses the measured 0.410 at h/d = 0.577 lies above the band of every ending, and

@@ -683,7 +683,8 @@ def wobble_sweep(
 ) -> list[WobbleRow]:
     """P(edge) of each experiment's setting with a wobble: for each cone angle ψ of ``psis``
     (:func:`axial_spin`) and each cell of ``cells`` (restitution, friction, diameter,
-    drop_height; the resistances at the surface's default), ``n`` tosses each.
+    drop_height; and ``resistance``, m, the rolling and pivoting resistance, else the
+    surface's default), ``n`` tosses each.
 
     Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
     cell lands the same ωx and v0 (common random numbers; ψ changes ωz only). Work bounded before it
@@ -711,7 +712,8 @@ def wobble_sweep(
         for psi, wz in zip(psis, spins[x.label], strict=True):
             for cell in cells:
                 child = streams.child(root, i)
-                estimate = _cell_edge(x.ratio, n, child, g, cell, the_setting, wz, None)
+                resistance = cell.get("resistance")
+                estimate = _cell_edge(x.ratio, n, child, g, cell, the_setting, wz, resistance)
                 rows.append(WobbleRow(x.label, x.ratio, psi, cell, estimate))
                 if progress is not None:
                     progress(f"{x.label} ψ {psi} {dict(cell)}: {estimate.p:.4f}")

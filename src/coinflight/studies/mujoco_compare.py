@@ -852,7 +852,7 @@ def run_from(
 ) -> MujocoRun:
     """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
     heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
-    (coinflight's state at its hand-off to the contact phase, for example), carried as in
+    (coinflight's state when its bounces die out, for example), carried as in
     :func:`run` with ``engine``'s settings (the first contact is their first touch of the
     plane; the contact damping calibrated at ``calibration_speed``, m/s)."""
     z = np.asarray(height, dtype=float).reshape(-1)
