@@ -3,7 +3,7 @@
 For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
 describes) the study simulates that setting with
 :func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then the
-rigid 3-D ending carries the coin to rest) and returns P(edge) as a **band** over what nobody
+rigid 3-D phase carries the coin to rest) and returns P(edge) as a **band** over what nobody
 measured: the restitution e and friction μ over the surface presets' box
 (:func:`coinflight.studies.presets.bouncing_box`), the cylinder's diameter and the table's
 drop when the source does not give them, and the rolling and pivoting resistance. The band's

@@ -25,7 +25,7 @@ Six questions, each a function returning plain values with their seeds:
   landing's band (:mod:`coinflight.studies.edge_experiments`).
 
 The landing is :func:`coinflight.outcomes.table.land`'s: Stronge's impacts while the coin
-bounces, then the rigid event-driven 3-D ending (:mod:`coinflight.core.rigid_ending`) carries
+bounces, then the rigid, event-driven 3-D phase (:mod:`coinflight.core.rigid_ending`) carries
 it to rest. These are validation runs, not predictions: every table number they give depends
 on the restitution, friction, rolling and pivoting resistance and the rim's corner radius,
 none measured for a coin. A number quoted from here goes with its band over those parameters

@@ -6,7 +6,7 @@ with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documen
 "Computation", solver parameters ``solref``), a pyramidal friction cone (its default) with
 sliding, torsional and rolling coefficients. coinflight flies the coin exactly between
 impacts and resolves each impact with its restitution and friction
-(:mod:`coinflight.core.bounce`); when the bounces die out, the rigid 3-D ending carries it to
+(:mod:`coinflight.core.bounce`); when the bounces die out, the rigid 3-D phase carries it to
 rest (:mod:`coinflight.core.rigid_ending`, with rolling and pivoting resistance). What is
 compared:
 
