@@ -109,16 +109,16 @@ for psi, tosses, n in ((None, "planar tosses", 200), ("human", "human tosses", 1
         print(f"  h/d {float(row[1]):.3f}: {row[2]}; band {row[3]}: {row[6]}")
 
 # %%
-# With planar tosses the measured 0.410 at h/d = 0.577 lies above the band of every ending, and
-# no restitution or friction brings it in: over e 0–0.8 and μ 0.05–2, far beyond the presets'
-# ranges, with every size and release of the box, planar tosses stay below 0.3 when they
-# bounce and reach a third only when they land dead. The wobble of a human toss raises
-# P(edge) at 0.577 enough to bring the measurement within the rocking band; but nobody has
-# measured a flipped cylinder's wobble, so this explains the miss without proving the
-# explanation (:doc:`../physics`, "Published edge experiments").
+# The human tosses' samples here are too small to judge by (their band is mostly noise). At the
+# landing report's sizes (``coinflight landing-report``, "Thick cylinders against experiments"),
+# planar tosses leave the measured 0.410 at h/d = 0.577 above their band, and the wobble of a
+# human toss raises P(edge) enough to bring it within theirs, a wide band over what is not
+# measured; but nobody has measured a flipped cylinder's wobble, so this explains the miss
+# without proving the explanation (:doc:`../physics`, "Published edge experiments").
 
 # %%
 # On a hard table a coin also bounces, and bouncing changes the answer (see
 # :doc:`plot_06_table_landing`): Murray & Teare's extrapolation from their model for a US
 # nickel is about one edge in 6,000 tosses; coinflight's answer depends on the unmeasured
-# restitution and friction, so it is a band over them (``coinflight landing-report``).
+# restitution, friction, rolling and pivoting resistance and the rim's corner radius, so it is
+# a band over them (``coinflight landing-report``).
