@@ -882,6 +882,10 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 f"Same well at the first contact: {c.first_agreement:.1%} of the tosses "
                 "(geometry and free flight only; the rest are within a time step of a "
                 "boundary).",
+                f"{c.coinflight.at_impact:,} of coinflight's {c.n:,} landings ended at an impact "
+                "of the bounces (the energy test: too little energy left to leave the well it was "
+                "in, so the outcome is certain), before the rigid 3-D phase; MuJoCo has no such "
+                "test and follows every toss until it settles.",
                 f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
                 f"their edge {s['settle_limit']:g} s after their first contact; the settled-only "
                 f"row leaves them out. Time from the first contact to rest in MuJoCo: "
