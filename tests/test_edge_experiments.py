@@ -31,19 +31,16 @@ ALL_EDGE = Experiment("made-up, every throw on edge", 0.3, 200, 200, "hand-table
 
 
 def _run(seed=7, **kw):
-    kw.setdefault("rigid", 4)
-    return edge_experiments([THIN, ALL_EDGE], 40, seed, **kw)
+    return edge_experiments([THIN, ALL_EDGE], 20, seed, **kw)
 
 
 def test_structure_cells_and_box():
     r = _run()
-    assert r.n == 40 and r.rigid_n == 4 and r.seed == 7 and r.points == 2
+    assert r.n == 20 and r.seed == 7 and r.points == 2 and r.psi is None
     (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
     for c in r.comparisons:
-        assert c.rigid is not None
-        # unmeasured: e, μ, diameter, drop (+ resistance): corners and the centre
-        assert len(c.rocking.cells) == 2**4 + 1
-        assert len(c.rigid.cells) == 2**5 + 1
+        # unmeasured: e, μ, diameter, drop, resistance: the corners and the centre
+        assert len(c.band.cells) == 2**5 + 1
         assert dict(c.box) == {
             "restitution": (e_lo, e_hi),
             "friction": (mu_lo, mu_hi),
@@ -51,23 +48,22 @@ def test_structure_cells_and_box():
             "drop_height": HAND_DROP,
             "resistance": RESISTANCE,
         }
-        for band, size in ((c.rocking, 40), (c.rigid, 4)):
-            assert all(cell.n == size for cell in band.cells)
-            centre = band.centre.parameters
-            assert centre["restitution"] == pytest.approx(0.5 * (e_lo + e_hi))
-            assert centre["diameter"] == pytest.approx(sum(HAND_DIAMETER) / 2)
-            for cell in band.cells:
-                for name, value in cell.parameters.items():
-                    lo, hi = c.box[name]
-                    assert lo <= value <= hi
-        assert math.isclose(c.rigid.centre.parameters["resistance"], math.sqrt(1e-5 * 1e-3))
+        assert all(cell.n == 20 for cell in c.band.cells)
+        centre = c.band.centre.parameters
+        assert centre["restitution"] == pytest.approx(0.5 * (e_lo + e_hi))
+        assert centre["diameter"] == pytest.approx(sum(HAND_DIAMETER) / 2)
+        assert math.isclose(centre["resistance"], math.sqrt(1e-5 * 1e-3))
+        for cell in c.band.cells:
+            for name, value in cell.parameters.items():
+                lo, hi = c.box[name]
+                assert lo <= value <= hi
     rows = r.table()
-    assert len(rows) == 4 and all(len(row) == len(r.HEADER) for row in rows)
+    assert len(rows) == 2 and all(len(row) == len(r.HEADER) for row in rows)
     data = json.loads(json.dumps(r.to_dict()))
     assert [x["edges"] for x in data["experiments"]] == [20, 200]
-    assert len(data["experiments"][0]["bands"][1]["cells"]) == 33
+    assert len(data["experiments"][0]["band"]["cells"]) == 33
     # A measured fraction of 1 lies above any band of a cylinder of h/d 0.3 (P(edge) < 1).
-    assert {b.verdict(ALL_EDGE.observed) for b in r.comparisons[1].bands} == {"above"}
+    assert r.comparisons[1].band.verdict(ALL_EDGE.observed) == "above"
 
 
 def test_reproducible_from_the_seed_and_prefix():
@@ -76,30 +72,29 @@ def test_reproducible_from_the_seed_and_prefix():
     for d in (one, two):
         d.pop("elapsed")
     assert one == two
-    # experiment i draws from child i alone: alone, without the rigid ending, the same band
-    alone = edge_experiments([THIN], 40, 11)
-    assert alone.comparisons[0].rocking == _run(seed=11).comparisons[0].rocking
-    assert alone.comparisons[0].rocking.cells[0].estimate.seed == 11
+    # experiment i draws from child i alone: alone, the same band
+    alone = edge_experiments([THIN], 20, 11)
+    assert alone.comparisons[0].band == _run(seed=11).comparisons[0].band
+    assert alone.comparisons[0].band.cells[0].estimate.seed == 11
     other = _run(seed=12).to_dict()
     other.pop("elapsed")
     assert other != one
 
 
 def test_band_ordering_and_points():
-    r = edge_experiments([THIN], 60, 3, points=3)
-    band = r.comparisons[0].rocking
-    assert len(band.cells) == 3**4  # the centre is a grid cell with 3 points
+    r = edge_experiments([THIN], 8, 3, points=3)
+    band = r.comparisons[0].band
+    assert len(band.cells) == 3**5  # the centre is a grid cell with 3 points
     assert band.low.p <= band.centre.p <= band.high.p
     assert all(band.low.p <= c.p <= band.high.p for c in band.cells)
-    assert band.cells[-1].parameters == {
-        k: pytest.approx((lo + hi) / 2) for k, (lo, hi) in r.comparisons[0].box.items()
-    }
+    box = r.comparisons[0].box
+    centre = {k: (lo + hi) / 2 for k, (lo, hi) in box.items()}
+    centre["resistance"] = math.sqrt(box["resistance"][0] * box["resistance"][1])  # geometric
+    assert band.cells[-1].parameters == {k: pytest.approx(x) for k, x in centre.items()}
 
 
 def _band(*fractions):
-    return Band(
-        "rocking", tuple(Cell({"restitution": 0.5}, BinomialEstimate(k, 1000)) for k in fractions)
-    )
+    return Band(tuple(Cell({"restitution": 0.5}, BinomialEstimate(k, 1000)) for k in fractions))
 
 
 def test_verdict_and_gap():
@@ -116,18 +111,16 @@ def test_verdict_and_gap():
 
 
 def test_a_band_of_a_few_tosses_per_cell_does_not_judge_a_point_inside_it():
-    """--quick's rigid band, four tosses a cell: 0.000 to 0.500 spans a measured 0.41 by its
+    """--quick's band, four tosses a cell: 0.000 to 0.500 spans a measured 0.41 by its
     noise alone; it says so instead of "inside". A point it lies wholly below is still above."""
     few = Band(
-        "rigid",
         tuple(Cell({"restitution": 0.5}, BinomialEstimate(k, 4)) for k in (0, 2, 1)),
     )
     assert (few.low.p, few.high.p) == (0.0, 0.5)
     assert few.verdict(BinomialEstimate(410, 1000)) == "too few tosses to judge"
-    lower = Band("rigid", (Cell({"restitution": 0.5}, BinomialEstimate(1, 4)),))
+    lower = Band((Cell({"restitution": 0.5}, BinomialEstimate(1, 4)),))
     assert lower.verdict(BinomialEstimate(1000, 1000)) == "above"  # > 0.25 + 2 × 0.217
     enough = Band(  # the same fractions at MIN_TOSSES_TO_JUDGE tosses a cell judge it
-        "rigid",
         tuple(
             Cell(
                 {"restitution": 0.5},
@@ -153,9 +146,9 @@ def test_box_cells():
 
 def test_record_gives_size_and_drop():
     x = Experiment("made-up", 0.5, 10, 1, "hand-table", diameter=0.03, drop_height=0.4)
-    box = experiment_box(x, setting("hand-table"), "rocking")
+    box = experiment_box(x, setting("hand-table"))
     assert box["diameter"] == (0.03, 0.03) and box["drop_height"] == (0.4, 0.4)
-    assert len(box_cells(box)) == 2**2 + 1
+    assert len(box_cells(box)) == 2**3 + 1  # e, μ and the resistance
 
 
 @pytest.mark.parametrize(
@@ -163,7 +156,7 @@ def test_record_gives_size_and_drop():
     [
         ({"n": 10**7, "points": 3}, ValueError, "more than the limit"),
         ({"n": 10**9}, ValueError, "tosses per cell must be between 1 and"),
-        ({"n": 10**6, "rigid": 10**6}, ValueError, "more than the limit"),
+        ({"n": 10**4}, ValueError, "more than the limit"),
         ({"n": 0}, ValueError, "tosses per cell must be between 1"),
         ({"n": 2.5}, TypeError, "tosses per cell must be an integer"),
         ({"n": 10, "points": 10}, ValueError, "points per parameter"),
@@ -192,16 +185,18 @@ def test_bad_records():
 
 # Yong & Mahadevan 2011 (REFERENCES §5): a vigorous planar toss landing dead lands on edge with
 # P = 2 arctan(h/d)/π. The hand-table setting with restitution 0 and sticking friction is such a
-# toss, for a cylinder of any size (simulate_edge's diameter): within 3 s.e.
+# toss, for a cylinder of any size (simulate_edge's diameter): within 3 s.e. A dead landing
+# ends at its first impact, so the resistance (the box's one other axis) changes nothing.
 @pytest.mark.parametrize("diameter", [0.02, 0.05])
 def test_dead_landing_reproduces_the_dynamic_model(diameter):
     records = [
         Experiment(f"h/d {r}", r, 10, 1, "hand-table", diameter=diameter, drop_height=0.3)
         for r in (0.3, 0.577)
     ]
-    r = edge_experiments(records, 20_000, 2011, restitution=(0.0, 0.0), friction=(0.5, 0.5))
+    r = edge_experiments(records, 10_000, 2011, restitution=(0.0, 0.0), friction=(0.5, 0.5))
     for c in r.comparisons:
-        (cell,) = c.rocking.cells
+        cell, *others = c.band.cells
+        assert len(others) == 2 and all(x.estimate == cell.estimate for x in others)
         model = float(edge_probability(c.experiment.ratio))
         assert abs(cell.p - model) <= 3 * math.sqrt(model * (1 - model) / cell.n)
 
@@ -215,7 +210,7 @@ def test_mujoco_check_same_tosses_in_both_engines():
 
     check = mujoco_check(THIN, 3, 5)
     assert check.parameters["drop_height"] == pytest.approx(sum(HAND_DROP) / 2)
-    for est in (check.rocking, check.mujoco):
+    for est in (check.coinflight, check.mujoco):
         assert est.n == 3 and est.seed == 5
     assert 0 <= check.mujoco_moving <= 3
     with pytest.raises(ValueError, match="tosses of the MuJoCo check"):
@@ -277,7 +272,7 @@ def test_progress_is_called_first_once_checked_and_before_any_toss(monkeypatch):
     monkeypatch.setattr(edge, "simulate_edge", no_toss)
     monkeypatch.setattr(table, "land", no_toss)
     runs = [
-        lambda said: edge_experiments([THIN], 10, 1, rigid=2, progress=said.append),
+        lambda said: edge_experiments([THIN], 10, 1, progress=said.append),
         lambda said: wobble_sweep([THIN], 10, 1, progress=said.append),
     ]
     if mujoco_compare.available():
@@ -308,6 +303,23 @@ def test_progress_is_called_first_once_checked_and_before_any_toss(monkeypatch):
         (
             lambda p: _wobble(
                 [THIN],
+                2,
+                progress=p,
+                cells=[
+                    {
+                        "restitution": 0.5,
+                        "friction": 0.3,
+                        "diameter": 0.02,
+                        "drop_height": 0.3,
+                        "resistance": -1.0,
+                    }
+                ],
+            ),
+            "resistance",
+        ),
+        (
+            lambda p: _wobble(
+                [THIN],
                 10,
                 progress=p,
                 cells=[{"restitution": 0.5, "friction": 0.3, "diameter": -1, "drop_height": 0.3}],
@@ -334,23 +346,29 @@ def _wobble(*args, **kwargs):
 
 def test_wobble_sweep_shares_the_tosses_of_the_planar_band():
     # Common random numbers: ψ = 90 (no axial spin) at a cell gives edge_experiments' count at
-    # that cell, toss for toss; a wobble changes it; every row names its ψ and cell.
+    # that cell, toss for toss, and ψ = 60 its count with that wobble; every row names its ψ
+    # and cell. A box of the resistance alone (the record gives size and drop; e and μ fixed)
+    # keeps the wobbling tosses, which roll for long, few.
     from coinflight.studies.edge_experiments import wobble_sweep
 
-    band = edge_experiments([THIN], 3000, 9)
-    centre = band.comparisons[0].rocking.centre
+    x = Experiment("made-up", 0.3, 200, 20, "hand-table", diameter=0.035, drop_height=0.35)
+    fixed = {"restitution": (0.45, 0.45), "friction": (0.325, 0.325)}
+    band = edge_experiments([x], 50, 9, **fixed)
+    centre = band.comparisons[0].band.centre
     cell = dict(centre.parameters)
     assert cell == pytest.approx(
-        {"restitution": 0.45, "friction": 0.325, "diameter": 0.035, "drop_height": 0.35}
+        {
+            "restitution": 0.45,
+            "friction": 0.325,
+            "diameter": 0.035,
+            "drop_height": 0.35,
+            "resistance": 1e-4,
+        }
     )
-    rows = wobble_sweep([THIN], 3000, 9, psis=[90.0, 60.0], cells=[cell])
-    assert [(r.psi, r.ending, dict(r.parameters)) for r in rows] == [
-        (90.0, "rocking", cell),
-        (60.0, "rocking", cell),
-    ]
+    rows = wobble_sweep([x], 50, 9, psis=[90.0, 60.0], cells=[cell])
+    assert [(r.psi, dict(r.parameters)) for r in rows] == [(90.0, cell), (60.0, cell)]
     assert rows[0].estimate.successes == centre.estimate.successes
-    assert rows[1].estimate.successes != rows[0].estimate.successes
-    wobbling = edge_experiments([THIN], 3000, 9, psi=60.0).comparisons[0].rocking
+    wobbling = edge_experiments([x], 50, 9, psi=60.0, **fixed).comparisons[0].band
     assert wobbling.centre.parameters["psi"] == 60.0
     assert wobbling.centre.estimate.successes == rows[1].estimate.successes
 
@@ -373,8 +391,8 @@ def test_from_dataset_marks_counts_derived_from_a_fraction():
 
 
 def test_mujoco_check_is_bounded_before_any_landing(monkeypatch):
-    """coinflight's landings and MuJoCo's run counted before anything runs (a landing that
-    started would fail this test)."""
+    """The landings and MuJoCo's run counted before anything runs (a landing that started
+    would fail this test)."""
     from coinflight.outcomes import table
     from coinflight.studies.edge_experiments import mujoco_check
 
@@ -386,18 +404,19 @@ def test_mujoco_check_is_bounded_before_any_landing(monkeypatch):
         mujoco_check(THIN, 100_000, 1)
 
 
-def test_the_rigid_ending_is_a_band_of_its_own_over_the_3d_box():
-    # The rigid ending's band: the 3-D box (the resistance included),
-    # the same tosses as the rocking band's cells (common random numbers), its own ending name.
-    r = edge_experiments([THIN], 20, 5, rigid=6, psi="human")
+def test_the_band_with_the_human_wobble_is_over_the_whole_box():
+    # Human tosses (the preset's wobble): the same box, resistance included, and the
+    # measurement beside it with its binomial error.
+    r = edge_experiments([THIN], 4, 5, psi="human")
     (c,) = r.comparisons
-    assert c.rigid is not None
-    assert c.bands == (c.rocking, c.rigid) and c.rigid.ending == "rigid"
-    assert len(c.rigid.cells) == 2**5 + 1 and all(cell.n == 6 for cell in c.rigid.cells)
-    assert "resistance" in c.box and r.rigid_n == 6 and r.psi == "human"
+    assert len(c.band.cells) == 2**5 + 1 and all(cell.n == 4 for cell in c.band.cells)
+    assert "resistance" in c.box and r.psi == "human"
+    assert all("psi" in cell.parameters for cell in c.band.cells)
     data = r.to_dict()
-    assert [b["ending"] for b in data["experiments"][0]["bands"]] == ["rocking", "rigid"]
     assert data["experiments"][0]["stderr"] == pytest.approx(math.sqrt(0.1 * 0.9 / 200))
+    assert data["experiments"][0]["band"]["verdict"] in {
+        "above",
+        "below",
+        "too few tosses to judge",
+    }
     assert r.table()[0][2].startswith("0.100 ± 0.021 (")  # the measurement's binomial error
-    with pytest.raises(ValueError, match="rigid-ending tosses per cell"):
-        edge_experiments([THIN], 20, 5, rigid=-1)

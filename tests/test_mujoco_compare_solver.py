@@ -240,11 +240,10 @@ def _flat_slide_in_mujoco(friction):
 
 
 def test_a_sliding_contact_lifts_in_mujoco():
-    # The documentation's explanation of the engines' edge gap (physics, "Beside a general
-    # rigid-body engine"): MuJoCo's convex soft contact moves a sliding contact apart ("the only
-    # way to initiate slip is to generate some motion in the normal direction", its
-    # documentation), where a rigid coin sliding flat stays pressed to the table. Measured:
-    # MuJoCo in contact 7 % of the steps, rising at up to 32 mm/s with μ 0.3, 89 % frictionless.
+    # MuJoCo's convex soft contact moves a sliding contact apart ("the only way to initiate
+    # slip is to generate some motion in the normal direction", its documentation); without
+    # friction it stays pressed. Measured: in contact 7 % of the steps, rising at up to
+    # 32 mm/s with μ 0.3, 89 % frictionless.
     share, up = _flat_slide_in_mujoco(0.3)
     assert share < 0.3 and up > 0.01
     share0, up0 = _flat_slide_in_mujoco(0.0)

@@ -80,7 +80,13 @@ def test_a_rocking_coin_at_its_turning_point_is_not_at_rest():
     assert mujoco_compare._settled(state[None], *args, state[None]).tolist() == [True]
 
 
-def test_mujoco_work_is_bounded_before_it_starts():
+def test_mujoco_work_is_bounded_before_it_starts(monkeypatch):
+    from coinflight.outcomes import table
+
+    def never(*args, **kwargs):
+        raise AssertionError("a landing ran before the work bound")
+
+    monkeypatch.setattr(table, "land", never)
     with pytest.raises(ValueError, match="MuJoCo tosses carried up to 20 s past their first"):
         study.mujoco_comparison(10**6, seed=1)
     with pytest.raises(ValueError, match="settle limit must be a positive number of s, got 0"):

@@ -14,7 +14,7 @@ QuickFlag = Annotated[
     bool,
     typer.Option(
         "--quick",
-        help="Small samples (seconds, not the full report's tens of minutes): the same "
+        help="Small samples (a minute or two, not the full report's ten or so): the same "
         "sections and figures, wider error bars.",
     ),
 ]
@@ -24,7 +24,7 @@ MujocoTosses = Annotated[
         "--mujoco",
         metavar="N",
         min=0,
-        help="Identical tosses compared with MuJoCo (default 10000, 4 with --quick; 0 skips; "
+        help="Identical tosses compared with MuJoCo (default 1000, 4 with --quick; 0 skips; "
         "skipped anyway when MuJoCo, the optional extra 'mujoco', is not installed).",
     ),
 ]
@@ -44,7 +44,7 @@ def landing_report(
     """Validate the table landing: figures, numbers and a report.
 
     Dead and bouncing landings against Yong & Mahadevan, maps over (e, μ), the US nickel's
-    P(edge) band and its band in the rigid ending, MuJoCo against the rocking ending.
+    P(edge) band, the same tosses in MuJoCo, thick cylinders against experiments.
 
     Example: coinflight landing-report --out landing/ --quick
     """
@@ -57,7 +57,8 @@ def landing_report(
     if mujoco is not None:
         sizes = dataclasses.replace(sizes, mujoco=mujoco)
     report_files(out)  # before minutes of computing, not after
-    with progress_bar(5, "landing report", quiet) as advance:
+    sections = 4 + (sizes.mujoco > 0) + 2 * (sizes.experiments > 0)
+    with progress_bar(sections, "landing report", quiet) as advance:
 
         def step(_name: str) -> None:
             if advance is not None:
@@ -72,20 +73,24 @@ def landing_report(
             f"dead landings h/d = {d.ratio:g}: P(edge) {d.simulated.p:.4f} ± "
             f"{d.simulated.stderr:.4f}, Yong & Mahadevan {d.dynamic:.4f} ({d.z:+.1f} s.e.)"
         )
-    for b in report.bands:
+    for b in report.band.bands:
+        (lo, lo_se), (hi, hi_se) = b.low, b.high
         typer.echo(
-            f"US nickel on {b.preset}: P(edge) {b.low[0]:.2e} to {b.high[0]:.2e} over the "
-            f"literature's (e, μ); integrated {b.integrated.p:.2e} ± {b.integrated.stderr:.1e}"
+            f"US nickel on {b.preset}: P(edge) {lo:.3f} ± {lo_se:.3f} to {hi:.3f} ± {hi_se:.3f} "
+            f"over e, μ, the resistances and the corner radius; integrated "
+            f"{b.integrated.p:.3f} ± {b.integrated.stderr:.3f}"
         )
-    if report.experiments is not None:
-        for point in report.experiments.comparisons:
-            obs = point.experiment.observed
-            for band in point.bands:
-                typer.echo(
-                    f"{point.experiment.label}: measured {obs.p:.3f}, {band.ending} ending "
-                    f"{band.low.p:.3f} to {band.high.p:.3f} over the unmeasured parameters: "
-                    f"{band.verdict(obs)}"
-                )
+    for x in (report.experiments, report.experiments_human):
+        if x is None:
+            continue
+        tosses = "human tosses" if x.psi == "human" else "planar tosses"
+        for point in x.comparisons:
+            obs, band = point.experiment.observed, point.band
+            typer.echo(
+                f"{point.experiment.label}: measured {obs.p:.3f} ± {obs.stderr:.3f}, {tosses} "
+                f"{band.low.p:.3f} ± {band.low.stderr:.3f} to {band.high.p:.3f} ± "
+                f"{band.high.stderr:.3f} over the unmeasured parameters: {band.verdict(obs)}"
+            )
     if report.mujoco is None:
         typer.echo(report.mujoco_note)
     else:
@@ -93,13 +98,12 @@ def landing_report(
         typer.echo(
             f"MuJoCo, {c.n:,} identical tosses: same well at first contact {c.first_agreement:.1%}"
         )
-        for run in c.endings:
-            p, se = c.fractions(run.rest), c.stderrs(run.rest)
-            typer.echo(
-                f"  {run.ending} ending: same face at rest {c.agreement(run):.1%}; tails, heads, "
-                f"edge {', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}; "
-                f"{c.ratio(run):,.0f}× MuJoCo's speed"
-            )
+        p, se = c.fractions(c.coinflight.rest), c.stderrs(c.coinflight.rest)
+        typer.echo(
+            f"  coinflight: same face at rest {c.rest_agreement:.1%}; tails, heads, edge "
+            f"{', '.join(f'{x:.3f} ± {e:.3f}' for x, e in zip(p, se, strict=True))}; "
+            f"{c.speed_ratio:,.1f}× MuJoCo's speed"
+        )
         p, se = c.fractions(c.mujoco_rest), c.stderrs(c.mujoco_rest)
         typer.echo(
             f"  MuJoCo: tails, heads, edge "

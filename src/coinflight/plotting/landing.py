@@ -1,7 +1,6 @@
 """Figures of the landing report (:mod:`coinflight.studies.landing`): the (e, μ) maps, the
-nickel's P(edge) band (the rocking ending's and the rigid ending's), and coinflight beside
-MuJoCo. The dead landings reuse
-:func:`coinflight.plotting.edge.plot_edge`."""
+nickel's P(edge) band over what is not measured, and coinflight beside MuJoCo. The dead
+landings reuse :func:`coinflight.plotting.edge.plot_edge`."""
 
 from __future__ import annotations
 
@@ -21,14 +20,14 @@ from coinflight.plotting.style import (
 )
 from coinflight.studies.landing import (
     DROP_HEIGHT,
+    EDGE_PATHS,
     MURRAY_TEARE,
-    RIGID_PATHS,
     Band,
     BouncingEdges,
     ContactMaps,
     DeadLanding,
     MujocoComparison,
-    RigidNickel,
+    NickelBand,
 )
 
 if TYPE_CHECKING:
@@ -40,7 +39,8 @@ def plot_dead_and_bouncing(
 ) -> Figure:
     """Yong & Mahadevan's models with the simulated dead landings
     (:func:`coinflight.plotting.edge.plot_edge`) and, when given, the same tosses bouncing:
-    at each ratio a bar from the lowest to the highest (e, μ) cell, ±2 s.e. at its ends."""
+    at each ratio a bar from the lowest to the highest cell of the box of e, μ and the
+    resistances, ±2 s.e. at its ends."""
     from coinflight.plotting.edge import plot_edge
 
     fig = plot_edge([(d.ratio, d.simulated) for d in dead])
@@ -57,9 +57,12 @@ def plot_dead_and_bouncing(
             alpha=0.7,
             solid_capstyle="butt",
             label=(
-                f"bouncing, e {bouncing.restitution[0]:g}–{bouncing.restitution[-1]:g}, "
-                f"μ {bouncing.friction[0]:g}–{bouncing.friction[-1]:g} (lowest to highest "
-                f"cell ±2 s.e., {bouncing.n:,} tosses a cell)"
+                "bouncing, e {:g}–{:g}, μ {:g}–{:g}, ℓ {:g}–{:g} m (lowest to highest ".format(
+                    *bouncing.ranges("restitution"),
+                    *bouncing.ranges("friction"),
+                    *bouncing.ranges("resistance"),
+                )
+                + f"cell ±2 s.e., {bouncing.n:,} tosses a cell)"
                 if k == 0
                 else None
             ),
@@ -130,12 +133,14 @@ def _ink(rgba: tuple[float, ...]) -> str:
     return "white" if 0.2126 * r + 0.7152 * g + 0.0722 * b < 0.179 else "black"
 
 
-def _band_row(ax: Any, k: int, band: Any, words: tuple[str, str, str]) -> None:
+def _band_row(ax: Any, k: int, band: Band, words: tuple[str, str, str]) -> None:
     """Row ``k`` of a nickel band figure: the band's cells (points, ±2 s.e.), the band from
     the lowest to the highest (shaded) and the value integrated over its box (diamond, ±2
     s.e.); ``words``: what the cells are, one cell, the box (the legend's, first row only)."""
     y = float(k)
     cells = band.edge.ravel()
+    if not np.isnan(band.centre):
+        cells = np.append(cells, band.centre)
     se = np.sqrt(cells * (1 - cells) / band.n)
     ax.errorbar(
         cells,
@@ -166,7 +171,7 @@ def _band_row(ax: Any, k: int, band: Any, words: tuple[str, str, str]) -> None:
     )
 
 
-def _nickel_axes(ax: Any, bands: Sequence[Any]) -> None:
+def _nickel_axes(ax: Any, bands: Sequence[Band]) -> None:
     """Murray & Teare's 1 in 6000 (line) and the presets' rows of a nickel band figure."""
     ax.axvline(
         MURRAY_TEARE,
@@ -180,41 +185,21 @@ def _nickel_axes(ax: Any, bands: Sequence[Any]) -> None:
     ax.set_ylim(-0.6, len(bands) - 0.4 + 0.2)
 
 
-def plot_nickel_band(bands: Sequence[Band]) -> Figure:
-    """The nickel's P(edge) per surface preset: every cell of the grid over the preset's
-    ranges (points, ±2 s.e.), the band from the lowest to the highest cell, the probability
-    integrated over the preset (diamond, ±2 s.e.), and Murray & Teare's 1 in 6000 (line)."""
-    fig = new_figure(figsize=(7.0, 1.6 + 1.1 * len(bands)))
-    ax = fig.add_subplot()
-    for k, band in enumerate(bands):
-        _band_row(ax, k, band, ("grid cells over the ranges", "cell", "the ranges"))
-    _nickel_axes(ax, bands)
-    ax.set_xlabel("P(edge) of a US nickel")
-    ax.set_xlim(left=0.0)
-    ax.legend(fontsize="x-small", loc="upper right")
-    ax.set_title(
-        f"US nickel landing on a table {DROP_HEIGHT:g} m below launch: P(edge) over the "
-        "literature's (e, μ)",
-        fontsize="medium",
-    )
-    return fig
-
-
-def plot_rigid_nickel(r: RigidNickel) -> Figure:
-    """The nickel's P(edge) in the rigid ending per surface preset (left): the 16 corners of
-    the box of e, μ, resistance and corner radius (points, ±2 s.e.), the band from the lowest
-    to the highest, the value integrated over the box (diamond, ±2 s.e.), Murray & Teare's
-    1 in 6000 (line); and (right) the integrated tosses' edges by how they ended
-    (:data:`~coinflight.studies.landing.RIGID_PATHS`, shares of the edges)."""
+def plot_nickel_band(r: NickelBand) -> Figure:
+    """The nickel's P(edge) per surface preset (left): the 16 corners and the centre of the box
+    of e, μ, resistance and corner radius (points, ±2 s.e.), the band from the lowest to the
+    highest, the value integrated over the box (diamond, ±2 s.e.), Murray & Teare's 1 in 6000
+    (line); and (right) the integrated tosses' edges by how they ended
+    (:data:`~coinflight.studies.landing.EDGE_PATHS`, shares of the edges)."""
     bands = r.bands
     fig = new_figure(figsize=(9.0, 2.8 + 1.1 * len(bands)))
     ax, shares = fig.subplots(1, 2, sharey=True, gridspec_kw={"width_ratios": (3, 2)})
     for k, band in enumerate(bands):
         y = float(k)
-        _band_row(ax, k, band, ("corners of the box", "corner", "the box"))
+        _band_row(ax, k, band, ("corners and centre of the box", "cell", "the box"))
         edges = band.integrated_paths
         left = 0.0
-        for j, (name, count) in enumerate(zip(RIGID_PATHS, edges, strict=True)):
+        for j, (name, count) in enumerate(zip(EDGE_PATHS, edges, strict=True)):
             width = count / edges.sum() if edges.sum() else 0.0
             shares.barh(
                 y,
@@ -226,7 +211,7 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
             )
             left += width
     _nickel_axes(ax, bands)
-    ax.set_xlabel("P(edge) of a US nickel, rigid ending")
+    ax.set_xlabel("P(edge) of a US nickel")
     ax.set_xlim(left=0.0)
     below = {"fontsize": "x-small", "loc": "upper center", "bbox_to_anchor": (0.5, -0.2)}
     ax.legend(ncol=2, **below)
@@ -234,8 +219,8 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
     shares.set_xlabel("share of the integrated tosses' edges")
     shares.legend(ncol=2, **below)
     fig.suptitle(
-        "US nickel, rigid ending: P(edge) over e, μ, resistance and corner radius, and how the "
-        "edges ended",
+        f"US nickel landing on a table {DROP_HEIGHT:g} m below launch: P(edge) over e, μ, "
+        "resistance and corner radius, and how the edges ended",
         fontsize="medium",
     )
     return fig
@@ -243,14 +228,14 @@ def plot_rigid_nickel(r: RigidNickel) -> Figure:
 
 def plot_mujoco(c: MujocoComparison) -> Figure:
     """P(tails, heads, edge) of the same tosses in coinflight and MuJoCo, at the first contact
-    and at rest (bars, ±2 s.e.; coinflight with its default, rocking, ending)."""
+    and at rest (bars, ±2 s.e.)."""
     fig = new_figure(figsize=(9.0, 4.2))
     axes = fig.subplots(1, 2, sharey=True)
     names = ("tails", "heads", "edge")
     colours = (TAILS_COLOR, HEADS_COLOR, EDGE_COLOR)
     Series = list[tuple[NDArray[np.int8], str | None, str]]
     at_rest: Series = [
-        (c.rocking.rest, None, "coinflight, rocking ending"),
+        (c.coinflight.rest, None, "coinflight"),
         (c.mujoco_rest, "//", "MuJoCo"),
     ]
     first: Series = [(c.first, None, "coinflight"), (c.mujoco_first, "//", "MuJoCo")]

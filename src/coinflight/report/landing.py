@@ -14,7 +14,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
@@ -36,7 +36,7 @@ from coinflight.studies.edge_experiments import EdgeExperiments
 
 DEFAULT_SEED = 20261123
 """The report's documented seed, so that it is the same on every machine (reported)."""
-FIGURES = ("dead_landings", "contact_maps", "nickel_band", "nickel_rigid", "mujoco")
+FIGURES = ("dead_landings", "contact_maps", "nickel_band", "mujoco")
 REPORTS = ("report.md", "report.html", "numbers.json")
 Step = Callable[[str], None]
 HNP_NOTE = (
@@ -49,39 +49,38 @@ HNP_NOTE = (
 
 @dataclass(frozen=True)
 class Sizes:
-    """How much the report computes (the defaults are the full report; :data:`QUICK`)."""
+    """How much the report computes (the defaults are the full report, about ten minutes on 2
+    cores; :data:`QUICK`). Every landing with e > 0 is carried to rest (about 10² landings a
+    second, planar tosses far more); dead landings end at their first impact."""
 
     dead: int = 100_000
     """Dead landings per ratio h/d (10⁵: P(edge) to about ±0.0015)."""
-    bouncing: int = 20_000
-    """The same tosses bouncing: tosses per ratio and (e, μ) cell."""
-    bouncing_cells: int = 3
-    """Cells per parameter over the presets' (e, μ) box for the bouncing edges."""
-    map_tosses: int = 20_000
-    """Tosses per (e, μ) cell of the maps."""
-    map_restitution: int = 10
-    map_friction: int = 11
+    bouncing: int = 2_000
+    """The same tosses bouncing: tosses per ratio and cell of the box of e, μ and ℓ."""
+    bouncing_points: int = 2
+    """Values per parameter of that box (2: its 8 corners and its centre)."""
+    map_tosses: int = 400
+    """Tosses per (e, μ) cell of the maps (P to about ±0.025)."""
+    map_restitution: int = 5
+    map_friction: int = 6
     """Cells of the maps along e ∈ [0, 0.9] and μ ∈ [0, 1]."""
-    band_tosses: int = 200_000
-    """Nickel tosses per cell of each preset's grid, and integrated over it."""
-    band_cells: int = 3
-    """Cells per parameter over each preset's box."""
-    rigid_band: int = 100
-    """The nickel in the rigid ending: tosses per corner of each preset's box of e, μ, the
-    resistances and the corner radius (:func:`coinflight.studies.landing.rigid_nickel`; 0:
-    skip the section). At 100: about 4,100 rigid landings, half a minute on 2 cores."""
-    rigid_band_integrated: int = 400
+    band_tosses: int = 100
+    """The nickel's band: tosses per cell (the 16 corners and the centre of each preset's box
+    of e, μ, the resistances and the corner radius; :func:`coinflight.studies.landing.
+    nickel_band`)."""
+    band_integrated: int = 400
     """The same: tosses with the four drawn toss by toss, per preset."""
-    mujoco: int = 10_000
-    """Identical tosses in coinflight and MuJoCo (0: skip)."""
-    experiments: int = 20_000
-    """Thick cylinders against experiments: rocking-ending tosses per cell of each measured
-    point's box (0: skip the section)."""
-    experiments_points: int = 3
-    """Values per unmeasured parameter of the rocking ending's box (2: corners and centre)."""
-    experiments_rigid: int = 100
-    """The same with the rigid 3-D ending, per cell (corners and centre; 0: none), in both
-    sections (planar and human tosses)."""
+    mujoco: int = 1_000
+    """Identical tosses in coinflight and MuJoCo (0: skip; MuJoCo takes about 0.2 s a toss)."""
+    experiments: int = 500
+    """Thick cylinders against experiments, planar tosses: tosses per cell of each measured
+    point's box (0: skip both sections; planar tosses fall flat soon, a millisecond a toss)."""
+    experiments_human: int = 100
+    """The same with human tosses (the preset's wobble), which roll for long on their rims
+    (tens of milliseconds a toss; 100: the least :data:`~coinflight.studies.edge_experiments.
+    MIN_TOSSES_TO_JUDGE` judges)."""
+    experiments_points: int = 2
+    """Values per unmeasured parameter of that box (2: corners and centre)."""
 
     def to_dict(self) -> dict[str, int]:
         from dataclasses import asdict
@@ -91,21 +90,19 @@ class Sizes:
 
 QUICK = Sizes(
     dead=2_000,
-    bouncing=500,
-    bouncing_cells=2,
-    map_tosses=400,
+    bouncing=100,
+    bouncing_points=2,
+    map_tosses=40,
     map_restitution=3,
     map_friction=3,
-    band_tosses=4_000,
-    band_cells=2,
-    rigid_band=4,
-    rigid_band_integrated=8,
+    band_tosses=4,
+    band_integrated=8,
     mujoco=4,
-    experiments=400,
+    experiments=10,
+    experiments_human=4,
     experiments_points=2,
-    experiments_rigid=4,
 )
-"""A report in seconds (tests, a first look): the same sections, small samples."""
+"""A report in a minute or two (tests, a first look): the same sections, small samples."""
 
 
 @dataclass(frozen=True)
@@ -114,7 +111,7 @@ class LandingReport:
 
     dead: list[study.DeadLanding]
     maps: study.ContactMaps
-    bands: list[study.Band]
+    band: study.NickelBand
     mujoco: study.MujocoComparison | None
     mujoco_note: str
     sizes: Sizes
@@ -126,8 +123,6 @@ class LandingReport:
     experiments_left: tuple[str, ...] = ()
     experiments_human: EdgeExperiments | None = None
     """The same measured points beside human tosses as the preset makes them (its wobble)."""
-    rigid: study.RigidNickel | None = None
-    """The nickel's P(edge) in the rigid ending (None: not asked for)."""
 
     def numbers(self) -> dict[str, Any]:
         """Every number of the report, JSON-ready (``numbers.json``)."""
@@ -151,8 +146,7 @@ class LandingReport:
             if self.bouncing is None
             else {
                 "ratios": list(self.bouncing.ratios),
-                "restitution": self.bouncing.restitution.tolist(),
-                "friction": self.bouncing.friction.tolist(),
+                "cells": [dict(c) for c in self.bouncing.cells],
                 "p_edge_cells": self.bouncing.edge.tolist(),
                 "low": [self.bouncing.low(k)[0] for k in range(len(self.bouncing.ratios))],
                 "high": [self.bouncing.high(k)[0] for k in range(len(self.bouncing.ratios))],
@@ -167,23 +161,7 @@ class LandingReport:
                 "unsettled": self.maps.unsettled.tolist(),
                 "n": self.maps.n,
             },
-            "nickel_band": [
-                {
-                    "preset": b.preset,
-                    "restitution": b.restitution.tolist(),
-                    "friction": b.friction.tolist(),
-                    "p_edge_cells": b.edge.tolist(),
-                    "low": b.low[0],
-                    "high": b.high[0],
-                    "integrated": b.integrated.p,
-                    "integrated_stderr": b.integrated.stderr,
-                    "n": b.n,
-                    "sources": b.sources,
-                }
-                for b in self.bands
-            ],
-            "murray_teare": study.MURRAY_TEARE,
-            "nickel_rigid": None if self.rigid is None else _rigid_numbers(self.rigid),
+            "nickel_band": _band_numbers(self.band),
             "mujoco": None if self.mujoco is None else _mujoco_numbers(self.mujoco),
             "mujoco_note": self.mujoco_note,
             "edge_experiments": None
@@ -197,12 +175,12 @@ class LandingReport:
         return out
 
 
-def _rigid_numbers(r: study.RigidNickel) -> dict[str, Any]:
-    """numbers.json's ``nickel_rigid``: the rigid ending's band per preset, its axes, the
-    edges by how they ended, the fully rounded rim."""
+def _band_numbers(r: study.NickelBand) -> dict[str, Any]:
+    """numbers.json's ``nickel_band``: the band per preset, its axes, the edges by how they
+    ended, the fully rounded rim."""
     axes = ("corner_radius", "resistance", "friction", "restitution")
     return {
-        "paths": list(study.RIGID_PATHS),
+        "paths": list(study.EDGE_PATHS),
         "bands": [
             {
                 "preset": b.preset,
@@ -213,6 +191,7 @@ def _rigid_numbers(r: study.RigidNickel) -> dict[str, Any]:
                 "p_edge_cells": b.edge.tolist(),
                 "cells_axes": list(axes),
                 "edges_by_path_cells": b.paths.tolist(),
+                "p_edge_centre": b.centre,
                 "low": b.low[0],
                 "low_stderr": b.low[1],
                 "high": b.high[0],
@@ -225,7 +204,7 @@ def _rigid_numbers(r: study.RigidNickel) -> dict[str, Any]:
                 "integrated_stderr": b.integrated.stderr,
                 "integrated_n": b.integrated.n,
                 "integrated_edges_by_path": dict(
-                    zip(study.RIGID_PATHS, b.integrated_paths.tolist(), strict=True)
+                    zip(study.EDGE_PATHS, b.integrated_paths.tolist(), strict=True)
                 ),
                 "n": b.n,
                 "sources": b.sources,
@@ -250,19 +229,6 @@ def _settled_fractions(c: study.MujocoComparison) -> list[float] | None:
     return (np.bincount(settled, minlength=3) / len(settled)).tolist()
 
 
-def _ending_numbers(c: study.MujocoComparison, run: study.EndingRun) -> dict[str, Any]:
-    return {
-        "ending": run.ending,
-        "rest": c.fractions(run.rest).tolist(),
-        "rest_stderr": c.stderrs(run.rest).tolist(),
-        "rest_agreement": c.agreement(run),
-        "unsettled": run.unsettled,
-        "ended_at_impact": run.at_impact,
-        "seconds": run.seconds,
-        "speed_ratio": c.ratio(run),
-    }
-
-
 def _quartiles(t: np.ndarray) -> list[float] | None:
     """(25, 50, 75 %, largest) of the finite values (None if none)."""
     t = t[np.isfinite(t)]
@@ -270,31 +236,34 @@ def _quartiles(t: np.ndarray) -> list[float] | None:
 
 
 def _mujoco_numbers(c: study.MujocoComparison) -> dict[str, Any]:
-    rocking = c.rocking
+    ours = c.coinflight
     edge = c.mujoco_rest == 2
     return {
         "n": c.n,
         "restitution": c.restitution,
         "friction": c.friction,
+        "rolling_resistance": c.rolling_resistance,
+        "pivoting_resistance": c.pivoting_resistance,
         "coinflight_first": c.fractions(c.first).tolist(),
         "mujoco_first": c.fractions(c.mujoco_first).tolist(),
-        "coinflight_rest": c.fractions(rocking.rest).tolist(),
+        "coinflight_rest": c.fractions(ours.rest).tolist(),
+        "coinflight_rest_stderr": c.stderrs(ours.rest).tolist(),
         "mujoco_rest": c.fractions(c.mujoco_rest).tolist(),
+        "mujoco_rest_stderr": c.stderrs(c.mujoco_rest).tolist(),
         "first_agreement": c.first_agreement,
-        "rest_agreement": c.agreement(rocking),
-        "coinflight_unsettled": rocking.unsettled,
+        "rest_agreement": c.rest_agreement,
+        "coinflight_unsettled": ours.unsettled,
+        "coinflight_ended_at_impact": ours.at_impact,
         "mujoco_unsettled": c.mujoco_unsettled,
         "mujoco_unsettled_on_edge": int(np.count_nonzero(c.mujoco_moving & edge)),
         "mujoco_settle_limit": c.mujoco.limit,
         "mujoco_rest_settled_only": _settled_fractions(c),
         "mujoco_time_to_rest_edges": _quartiles(c.mujoco.rest_time[edge & ~c.mujoco_moving]),
         "mujoco_time_to_rest_faces": _quartiles(c.mujoco.rest_time[~edge & ~c.mujoco_moving]),
-        "coinflight_seconds": rocking.seconds,
+        "coinflight_seconds": ours.seconds,
         "mujoco_seconds": c.mujoco_seconds,
         "mujoco_steps": c.mujoco.steps,
-        "speed_ratio": c.ratio(rocking),
-        "mujoco_rest_stderr": c.stderrs(c.mujoco_rest).tolist(),
-        "endings": [_ending_numbers(c, run) for run in c.endings],
+        "speed_ratio": c.speed_ratio,
         "settings": c.settings,
     }
 
@@ -334,7 +303,6 @@ def landing_report(
         plot_dead_and_bouncing,
         plot_mujoco,
         plot_nickel_band,
-        plot_rigid_nickel,
     )
     from coinflight.plotting.style import save_figure
     from coinflight.studies import mujoco_compare
@@ -356,7 +324,7 @@ def landing_report(
     dead = timed("dead landings", lambda: study.dead_landings(sizes.dead, seed))
     bouncing = timed(
         "bouncing edges",
-        lambda: study.bouncing_edges(sizes.bouncing, seed, cells=sizes.bouncing_cells),
+        lambda: study.bouncing_edges(sizes.bouncing, seed, points=sizes.bouncing_points),
     )
     maps = timed(
         "maps over (e, μ)",
@@ -367,15 +335,10 @@ def landing_report(
             np.linspace(0.0, 1.0, sizes.map_friction),
         ),
     )
-    bands = timed(
-        "nickel band", lambda: study.nickel_band(sizes.band_tosses, seed, sizes.band_cells)
+    band = timed(
+        "nickel band",
+        lambda: study.nickel_band(sizes.band_tosses, seed, sizes.band_integrated),
     )
-    rigid: study.RigidNickel | None = None
-    if sizes.rigid_band > 0:
-        rigid = timed(
-            "nickel band, rigid ending",
-            lambda: study.rigid_nickel(sizes.rigid_band, seed, sizes.rigid_band_integrated),
-        )
     mujoco: study.MujocoComparison | None = None
     if sizes.mujoco <= 0:
         note = "MuJoCo comparison not asked for (size 0)."
@@ -390,40 +353,38 @@ def landing_report(
     experiments: EdgeExperiments | None = None
     human: EdgeExperiments | None = None
     left: tuple[str, ...] = ()
-    if sizes.experiments > 0:
-        for psi in (None, "human"):
+    runs: tuple[tuple[Literal["human"] | None, int], ...] = (
+        (None, sizes.experiments),
+        ("human", sizes.experiments_human),
+    )
+    for psi, size in runs if sizes.experiments > 0 else ():
+        if size <= 0:
+            continue
 
-            def compare(psi: str | None = psi) -> tuple[EdgeExperiments, list[str]]:
-                return study.thick_experiments(
-                    sizes.experiments,
-                    seed,
-                    sizes.experiments_points,
-                    sizes.experiments_rigid,
-                    "human" if psi else None,
-                )
+        def compare(
+            psi: Literal["human"] | None = psi, size: int = size
+        ) -> tuple[EdgeExperiments, list[str]]:
+            return study.thick_experiments(size, seed, sizes.experiments_points, psi)
 
-            name = "thick cylinders against experiments" + (", human tosses" if psi else "")
-            x, left_out = timed(name, compare)
-            experiments, human = (x, human) if psi is None else (experiments, x)
+        name = "thick cylinders against experiments" + (", human tosses" if psi else "")
+        x, left_out = timed(name, compare)
+        experiments, human = (x, human) if psi is None else (experiments, x)
         left = tuple(left_out)
     files: list[Path] = []
     more = {
         "bouncing": bouncing,
         "experiments": experiments,
         "experiments_human": human,
-        "rigid": rigid,
     }
     report = LandingReport(
-        dead, maps, bands, mujoco, note, sizes, seed, (), timings, **more, experiments_left=left
+        dead, maps, band, mujoco, note, sizes, seed, (), timings, **more, experiments_left=left
     )
     with staged_folder(out) as stage:
         figures = {
             "dead_landings": plot_dead_and_bouncing(dead, bouncing),
             "contact_maps": plot_contact_maps(maps),
-            "nickel_band": plot_nickel_band(bands),
+            "nickel_band": plot_nickel_band(band),
         }
-        if rigid is not None:
-            figures["nickel_rigid"] = plot_rigid_nickel(rigid)
         if mujoco is not None:
             figures["mujoco"] = plot_mujoco(mujoco)
         for name, fig in figures.items():
@@ -440,7 +401,7 @@ def landing_report(
     return LandingReport(
         dead,
         maps,
-        bands,
+        band,
         mujoco,
         note,
         sizes,
@@ -475,9 +436,7 @@ def build_document(r: LandingReport) -> Document:
     if r.bouncing is not None:
         doc.add(*_bouncing_section(r.dead, r.bouncing))
     doc.add(*_maps_section(r.maps))
-    doc.add(*_band_section(r.bands))
-    if r.rigid is not None:
-        doc.add(*_rigid_section(r.rigid))
+    doc.add(*_band_section(r.band))
     doc.add(*_mujoco_section(r.mujoco, r.mujoco_note))
     if r.experiments is not None:
         doc.add(*_experiments_section(r.experiments, r.experiments_left))
@@ -563,17 +522,18 @@ def _bouncing_section(dead: list[study.DeadLanding], b: study.BouncingEdges) -> 
                 "below" if below else "above" if above else "overlaps",
             )
         )
-    n_cells = b.edge.shape[1] * b.edge.shape[2]
+    (e_lo, e_hi), (mu_lo, mu_hi) = b.ranges("restitution"), b.ranges("friction")
+    ell_lo, ell_hi = b.ranges("resistance")
     return (
         Heading("Bouncing edges, and Hernández-Navarro & Piñero"),
         Paragraph(
             f"The same tosses as the dead landings ({b.n:,} per ratio and cell, seed {b.seed}, "
-            f"one child stream for every cell), now bouncing: restitution e ∈ "
-            f"[{b.restitution[0]:g}, {b.restitution[-1]:g}] and friction μ ∈ "
-            f"[{b.friction[0]:g}, {b.friction[-1]:g}] (the union of the surface presets' "
-            f"ranges), a {b.edge.shape[2]} × {b.edge.shape[1]} grid ({n_cells} cells). The "
-            "tosses are planar (spin about a diameter only), so the rocking ending loses no "
-            "spin or precession. The band runs from the lowest to the highest cell; a band "
+            f"one child stream for every cell), now bouncing and carried to rest: restitution "
+            f"e ∈ [{e_lo:g}, {e_hi:g}] and friction μ ∈ [{mu_lo:g}, {mu_hi:g}] (the union of "
+            f"the surface presets' ranges) and the rolling and pivoting resistance ℓ_r = ℓ_p ∈ "
+            f"[{ell_lo:g}, {ell_hi:g}] m, {len(b.cells)} cells (every combination of the "
+            "values per parameter and the box's centre). The tosses are planar (spin about a "
+            "diameter only). The band runs from the lowest to the highest cell; a band "
             "entirely below or above the dynamic model (each end ±2 s.e.) is marked."
         ),
         Table(
@@ -625,7 +585,9 @@ def _maps_section(m: study.ContactMaps) -> tuple[Block, ...]:
             f"{m.restitution[l_]:g}, μ = {m.friction[k]:g}), each ± {se:.3f} (s.e.); P(edge) "
             f"reaches {m.edge[a, b]:.4f} at e = {m.restitution[b]:g}, μ = {m.friction[a]:g}. "
             "Neither restitution nor friction of a coin on a table is measured, so a same-side "
-            "bias of a table landing is this whole range, not one cell. "
+            "bias of a table landing is this whole range, not one cell (the rolling and "
+            "pivoting resistance and the rim's sharp corners are held at their defaults here; "
+            "the nickel's band below varies them too). "
             f"{unsettled:,} of the {m.n * m.same.size:,} landings had not settled when the "
             "simulation stopped (counted by the face they showed)."
         ),
@@ -633,55 +595,10 @@ def _maps_section(m: study.ContactMaps) -> tuple[Block, ...]:
     )
 
 
-def _preset_ranges(b: study.Band | study.RigidBand) -> tuple[str, str, str]:
+def _preset_ranges(b: study.Band) -> tuple[str, str, str]:
     """A nickel band's preset and its ranges of e and μ, as a table row begins."""
     e, mu = b.restitution, b.friction
     return b.preset, f"{e[0]:g}–{e[-1]:g}", f"{mu[0]:g}–{mu[-1]:g}"
-
-
-def _band_section(bands: list[study.Band]) -> tuple[Block, ...]:
-    rows = []
-    for b in bands:
-        (lo, lo_se), (hi, hi_se) = b.low, b.high
-        p = b.integrated
-        rows.append(
-            (
-                *_preset_ranges(b),
-                f"{lo:.2e} ± {lo_se:.1e} – {hi:.2e} ± {hi_se:.1e}",
-                f"{_one_in(hi)} – {_one_in(lo)}",
-                f"{p.p:.2e} ± {p.stderr:.1e} ({_one_in(p.p)})",
-                "yes" if lo - 2 * lo_se <= study.MURRAY_TEARE <= hi + 2 * hi_se else "no",
-            )
-        )
-    sources = [f"{b.preset}, {k}: {s}" for b in bands for k, s in b.sources.items()]
-    n = bands[0].n
-    return (
-        Heading("The US nickel's P(edge): a band over the literature's ranges"),
-        Paragraph(
-            f"The nickel tossed as for the maps, {n:,} tosses per cell of a "
-            f"{len(bands[0].restitution)} × {len(bands[0].friction)} grid over each surface "
-            "preset's ranges of e and μ (the same tosses in every cell), and "
-            f"{n:,} tosses with e and μ drawn toss by toss from the preset (integrated). The "
-            "band runs from the lowest to the highest cell. Murray & Teare (1993) extrapolated "
-            f"1 in {1 / study.MURRAY_TEARE:,.0f} from their own model; it is a reference, not a "
-            "target: no parameter here was tuned to it."
-        ),
-        Table(
-            (
-                "surface preset",
-                "e",
-                "μ",
-                "band of P(edge) (± s.e.)",
-                "as 1 in N",
-                "integrated (± s.e.)",
-                "1 in 6000 inside (±2 s.e.)",
-            ),
-            tuple(rows),
-        ),
-        Paragraph("Sources of the ranges (coinflight.studies.presets):"),
-        Bullets(tuple(sources)),
-        Image("nickel_band.png", "The US nickel's P(edge) over each preset's ranges."),
-    )
 
 
 def _trend(low: tuple[float, float], high: tuple[float, float]) -> str:
@@ -693,7 +610,7 @@ def _trend(low: tuple[float, float], high: tuple[float, float]) -> str:
     return "rises" if d > 0 else "falls"
 
 
-def _shift(b: study.RigidBand) -> str:
+def _shift(b: study.Band) -> str:
     """How the edges of ``b``'s cells ended at its least and at its most friction, in words."""
     parts = []
     for end in (0, 1):
@@ -707,7 +624,7 @@ def _shift(b: study.RigidBand) -> str:
     return "".join(f"; {part}" for part in parts)
 
 
-def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
+def _band_section(r: study.NickelBand) -> tuple[Block, ...]:
     from coinflight.model.coin import Coin
 
     bands = r.bands
@@ -800,7 +717,7 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
         why += (
             f"Murray & Teare's 1 in {1 / mt:,.0f} lies "
             + " and ".join(f"{p.p / mt:,.0f}" for p in integrated)
-            + " times below the integrated values: in this rigid model the rims' impacts calm "
+            + " times below the integrated values: in this rigid-body model the rims' impacts calm "
             "a coin's rocking on its band faster than anything tips it over, and what would (a "
             "real table's roughness and give, the coin's imperfections) is not in the model. "
             "Read these as what rigid bodies do, not as what a nickel on a real table does."
@@ -811,17 +728,17 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
             "than twice its standard error at these sizes."
         )
     return (
-        Heading("The US nickel's P(edge) in the rigid ending: a band, and why"),
+        Heading("The US nickel's P(edge): a band over what is not measured, and why"),
         Paragraph(
-            "The nickel tossed as for the maps, landing with the rigid, event-driven ending "
-            '(Surface(ending="rigid"): rolling, sliding and pivoting on a rim, hops, the '
-            "other rim's impacts, both rims on the flat band; coinflight.core.rigid_ending), "
-            f"{n:,} tosses in each of the 16 corners of a box over each surface preset's e and "
-            f"μ, the rolling and pivoting resistance ℓ_r = ℓ_p from {study.RIGID_RESISTANCES[0]:g} "
-            f"to {study.RIGID_RESISTANCES[1]:g} m (the band coinflight.model.surface carries; no "
-            "source measures it) and the rim's corner radius a from 0 to "
-            f"{study.RIGID_CORNER * 1e3:g} mm (an assumption: no source gives the nickel's), "
-            "the same tosses in every cell; and, per preset, "
+            "The nickel tossed as for the maps, its landing carried to rest by the rigid, "
+            "event-driven 3-D phase once the bounces die out (rolling, sliding and pivoting on "
+            "a rim, hops, the other rim's impacts, both rims on the flat band; "
+            f"coinflight.core.rigid_ending), {n:,} tosses in each of the 16 corners and at the "
+            "centre of a box over each surface preset's e and μ, the rolling and pivoting "
+            f"resistance ℓ_r = ℓ_p from {study.RESISTANCES[0]:g} to {study.RESISTANCES[1]:g} m "
+            "(the band coinflight.model.surface carries; no source measures it) and the rim's "
+            f"corner radius a from 0 to {study.CORNER_RADIUS * 1e3:g} mm (an assumption: no "
+            "source gives the nickel's), the same tosses in every cell; and, per preset, "
             "tosses with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform: "
             "integrated). The band runs from the lowest to the highest cell; Murray & Teare's "
             f"1 in {1 / mt:,.0f} ({mt:.1e}, their extrapolation) beside it is a reference, not "
@@ -854,12 +771,14 @@ def _rigid_section(r: study.RigidNickel) -> tuple[Block, ...]:
             f"{par['resistance']:g} m (those of the first preset's highest cell) end on edge "
             f"{r.round_rim.successes} times in {r.round_rim.n:,}."
         ),
-        Paragraph("The edges by how they ended (coinflight.studies.landing.RIGID_PATHS):"),
-        Table(("tosses", "edges", *study.RIGID_PATHS), tuple(path_rows)),
+        Paragraph("The edges by how they ended (coinflight.studies.landing.EDGE_PATHS):"),
+        Table(("tosses", "edges", *study.EDGE_PATHS), tuple(path_rows)),
+        Paragraph("Sources of the ranges of e and μ (coinflight.studies.presets):"),
+        Bullets(tuple(f"{b.preset}, {k}: {s}" for b in bands for k, s in b.sources.items())),
         Paragraph(why),
         Image(
-            "nickel_rigid.png",
-            "The US nickel's P(edge) in the rigid ending, and how the edges ended.",
+            "nickel_band.png",
+            "The US nickel's P(edge) over what is not measured, and how the edges ended.",
         ),
     )
 
@@ -897,24 +816,22 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
     rows = [
         row("coinflight, first contact", c.first),
         row("MuJoCo, first contact", c.mujoco_first),
-        row("coinflight, rocking ending, at rest", c.rocking.rest),
+        row("coinflight, at rest", c.coinflight.rest),
         row("MuJoCo, at rest", c.mujoco_rest),
         row(
             f"MuJoCo, at rest, the {c.n - c.mujoco_unsettled:,} settled only",
             c.mujoco_rest[~c.mujoco_moving],
         ),
     ]
-    label = {"rocking": "rocking ending (default)"}
-    agreement = tuple(
+    ours = c.coinflight
+    agreement = (
         (
-            label[run.ending],
-            f"{c.agreement(run):.1%}",
-            f"{run.unsettled:,}",
-            ", ".join(f"{z:+.1f}" for z in _z_against_mujoco(c, run.rest)),
-            f"{c.n / run.seconds:,.0f}",
-            f"{c.ratio(run):,.0f}",
-        )
-        for run in c.endings
+            f"{c.rest_agreement:.1%}",
+            f"{ours.unsettled:,}",
+            ", ".join(f"{z:+.1f}" for z in _z_against_mujoco(c, ours.rest)),
+            f"{c.n / ours.seconds:,.0f}",
+            f"{c.speed_ratio:,.1f}",
+        ),
     )
     theirs_rate = c.n / c.mujoco_seconds
     return (
@@ -923,7 +840,9 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
             f"{c.n:,} identical tosses (seed {c.seed}): the US nickel with ωx ~ U{study.SPIN}, "
             f"ωy ~ U{study.WOBBLE}, ωz = 0 rad/s, v0 ~ U{study.LAUNCH_SPEED} m/s, heads up, "
             f"onto a table {study.DROP_HEIGHT:g} m below, e = {c.restitution:g}, μ = "
-            f"{c.friction:g}. coinflight: coinflight.outcomes.table.land. MuJoCo "
+            f"{c.friction:g}. coinflight: coinflight.outcomes.table.land, with MuJoCo's rolling "
+            f"and torsional friction as its rolling and pivoting resistance (ℓ_r = "
+            f"{c.rolling_resistance:g} m, ℓ_p = {c.pivoting_resistance:g} m). MuJoCo "
             f"{s['mujoco']}: a free cylinder over a plane, integrator {s['integrator']}, time step "
             f"{s['timestep']:g} s, contact solref = ({s['solref'][0]:g} s, damping ratio "
             f"{s['solref'][1]:.3f}: calibrated so that a flat drop at the landing speed rebounds "
@@ -946,8 +865,7 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
         ),
         Table(
             (
-                "coinflight ending",
-                "same face at rest as MuJoCo",
+                "coinflight: same face at rest as MuJoCo",
                 "unsettled",
                 "at rest − MuJoCo, in s.e. (tails, heads, edge)",
                 "tosses/s",
@@ -964,6 +882,10 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 f"Same well at the first contact: {c.first_agreement:.1%} of the tosses "
                 "(geometry and free flight only; the rest are within a time step of a "
                 "boundary).",
+                f"{c.coinflight.at_impact:,} of coinflight's {c.n:,} landings ended at an impact "
+                "of the bounces (the energy test: too little energy left to leave the well it was "
+                "in, so the outcome is certain), before the rigid 3-D phase; MuJoCo has no such "
+                "test and follows every toss until it settles.",
                 f"{moving_edges:,} of MuJoCo's {all_edges:,} edges are coins still rolling on "
                 f"their edge {s['settle_limit']:g} s after their first contact; the settled-only "
                 f"row leaves them out. Time from the first contact to rest in MuJoCo: "
@@ -981,8 +903,10 @@ def _mujoco_section(c: study.MujocoComparison | None, note: str) -> tuple[Block,
                 "sink fractions of a millimetre, so an impact lasts milliseconds and friction "
                 "acts throughout it), its friction creeps, and every contact of a landing is "
                 "the same law from the first impact on; coinflight's impacts are instantaneous "
-                "with one restitution and one friction, and its rocking ending hands the coin to "
-                "a planar rocking block that discards spin and precession.",
+                "with one restitution and one friction, and once the bounces die out its rigid "
+                "3-D phase rolls the coin on a point contact, its resistances bounding the "
+                "torques as MuJoCo's coefficients do (coinflight.studies.mujoco_compare lists "
+                "where the two laws still differ).",
                 "Edges: a coin rolling on its rim stays up while its spin lasts (Euler's disk); "
                 "both engines give the nickel's rim sharp corners, hence a static edge well "
                 "arctan(h/d) = 5.3° wide, which holds a coin that stops rolling upright. Neither "
@@ -1018,16 +942,16 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             f"no-bounce models: dynamic {float(edge_probability(c.experiment.ratio)):.3f}, "
             f"geometric {float(edge_probability(c.experiment.ratio, 'geometric')):.3f}"
         )
-        for b in c.bands:
-            word = b.verdict(obs)
-            by = "" if word == "inside" else f" by {abs(b.gap(obs)):.3f} (to the band's end)"
-            findings.append(
-                f"{c.experiment.label}: measured {obs.p:.3f} ± {obs.stderr:.3f} (95 % "
-                f"{lo:.3f}–{hi:.3f}) is {_AGAINST[word]}{by} with the {b.ending} ending, "
-                f"{b.low.p:.3f} ± {b.low.stderr:.3f} to {b.high.p:.3f} ± {b.high.stderr:.3f} "
-                f"over {len(b.cells)} cells ({models})."
-            )
-    verdicts = {b.verdict(c.experiment.observed) for c in x.comparisons for b in c.bands}
+        b = c.band
+        word = b.verdict(obs)
+        by = "" if word == "inside" else f" by {abs(b.gap(obs)):.3f} (to the band's end)"
+        findings.append(
+            f"{c.experiment.label}: measured {obs.p:.3f} ± {obs.stderr:.3f} (95 % "
+            f"{lo:.3f}–{hi:.3f}) is {_AGAINST[word]}{by}, "
+            f"{b.low.p:.3f} ± {b.low.stderr:.3f} to {b.high.p:.3f} ± {b.high.stderr:.3f} "
+            f"over {len(b.cells)} cells ({models})."
+        )
+    verdicts = {c.band.verdict(c.experiment.observed) for c in x.comparisons}
     missed = bool(verdicts & {"above", "below"})
     unjudged = "too few tosses to judge" in verdicts
     settings = sorted({c.setting.description for c in x.comparisons})
@@ -1044,7 +968,6 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
         if wobble
         else "planar tosses (spin about a diameter only, no axial spin)"
     )
-    rigid = f"rigid ending: {x.rigid_n:,} tosses per cell, corners and centre" if x.rigid_n else ""
     return (
         Heading(
             "Thick cylinders against experiments"
@@ -1058,11 +981,9 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
             f"from child {study.EXPERIMENTS_CHILD} of seed {x.seed}: coinflight.studies.landing."
             "thick_experiments with this seed reproduces them). Setting: "
             + "; ".join(settings)
-            + f". Unmeasured, carried as a band: {ranges} (the resistance only with the rigid "
-            f"ending). Rocking ending: {x.n:,} tosses per cell, {x.points} values per "
-            "parameter (every combination and the box's centre); "
-            + (rigid or "no 3-D ending")
-            + ". The same tosses in every cell; cylinders of diameter other than "
+            + f". Unmeasured, carried as a band: {ranges}. {x.n:,} tosses per cell, "
+            f"{x.points} values per parameter (every combination and the box's centre), the "
+            "same tosses in every cell; cylinders of diameter other than "
             f"{SIM_DIAMETER * 1000:g} mm simulated at their size. "
             "A measured 95 % (Wilson) interval wholly above the highest cell + 2 s.e. is "
             "'above', wholly below the lowest − 2 s.e. 'below', else 'inside'. The band's ends "
@@ -1086,8 +1007,8 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 )
                 + f"), the unmeasured parameters (e, μ, the resistance {RESISTANCE[0]:g}–"
                 f"{RESISTANCE[1]:g} m and a rounded rim, not varied here, may lie outside the "
-                "ranges taken), and the model (the rocking ending's planar hand-off discards "
-                "the spin and precession; rigid bodies with Coulomb friction)."
+                "ranges taken), and the model (rigid bodies with Coulomb friction, "
+                "instantaneous impacts and point-contact resistances)."
             )
             if missed
             else (
@@ -1096,7 +1017,7 @@ def _experiments_section(x: EdgeExperiments, left: tuple[str, ...]) -> tuple[Blo
                 "agreement; the full report's sizes judge it."
             )
             if unjudged
-            else "Every measured point lies within the model's band with every ending; the "
+            else "Every measured point lies within the model's band; the "
             "band is wide, so this is agreement within what is not measured, not a "
             "confirmation."
         ),

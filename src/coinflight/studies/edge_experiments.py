@@ -2,14 +2,14 @@
 
 For each experiment (a record: h/d, throws ``n``, ``edges`` on edge, the setting the source
 describes) the study simulates that setting with
-:func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then one of
-the endings) and returns P(edge) as a **band** over what nobody measured: the restitution e
-and friction μ over the surface presets' box (:func:`coinflight.studies.presets.
-bouncing_box`), the cylinder's diameter and the table's drop when the source does not give
-them, and, for the rigid 3-D ending, the rolling and pivoting resistance. The band's cells are the
-box's corners and its centre; each reports p, s.e. and n. The measured fraction with its 95 %
-(Wilson) interval is then *inside*, *above* or *below* that band. No parameter is tuned to the
-data: the result is whatever it is.
+:func:`coinflight.studies.edge.simulate_edge` (the full flight, Stronge's impacts, then the
+rigid 3-D phase carries the coin to rest) and returns P(edge) as a **band** over what nobody
+measured: the restitution e and friction μ over the surface presets' box
+(:func:`coinflight.studies.presets.bouncing_box`), the cylinder's diameter and the table's
+drop when the source does not give them, and the rolling and pivoting resistance. The band's
+cells are the box's corners and its centre (or a finer grid, ``points``); each reports p, s.e.
+and n. The measured fraction with its 95 % (Wilson) interval is then *inside*, *above* or
+*below* that band. No parameter is tuned to the data: the result is whatever it is.
 
 Settings (:data:`SETTINGS`; the models of *how* the throws were made, not data):
 
@@ -31,18 +31,14 @@ angle ψ about the angular momentum, cot ψ = I3 ωz / (I1 ωx) (Diaconis, Holme
 ("volumetric" rotation, Gaek & Sukhov 2024, arXiv:2401.03557). ``psi="human"`` takes the human
 toss preset's relation (ωz ~ Normal(μ, μ/2), μ at ψ0 = 82.05°, fitted there to *coins'*
 same-side rate); a number is one ψ at the median ωx. **A cylinder's ψ is not measured**: the
-sweep states ψ, it does not fit it. Caveat of the rocking ending with a wobble: it discards
-the spin and the precession at its hand-off (planar rocking).
+sweep states ψ, it does not fit it.
 
-What it finds, with the figures and their caveats, is on the documentation's physics page
-("Published edge experiments"), and ``coinflight landing-report`` recomputes it ("Thick
-cylinders against experiments"): planar tosses that bounce put fewer thick cylinders on edge
-than the measured hand flips, in every ending and in MuJoCo alike (:func:`mujoco_check`),
-beyond any restitution or friction; a slight wobble such as the human preset's lifts the
-bands to hold both measured points, while a larger one (ψ 45–70°) lowers P(edge) again. The
-wobble is a sufficient explanation of the miss, not a demonstrated one: what would settle it
-is ψ read from the filmed flips. Cost: the rocking ending lands about 10⁴ tosses a second, the
-rigid 3-D ending a hundred times fewer; a run whose estimated time exceeds the work bound
+What it finds is recomputed by ``coinflight landing-report`` ("Thick cylinders against
+experiments", planar tosses and the human preset's wobble), with its caveats; the
+documentation's physics page ("Published edge experiments") discusses it. Cost: a landing
+carried to rest is slow (:data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`, the rate
+the work bound takes; planar tosses, which fall flat soon, run far faster, tosses with a
+wobble roll longer); a run whose estimated time exceeds the work bound
 (:data:`coinflight._validation.MAX_RUN_SECONDS`) is refused before it starts.
 """
 
@@ -77,7 +73,7 @@ HAND_DROP = (0.2, 0.5)
 HAND_DIAMETER = (0.02, 0.05)
 """Diameter of a hand-flipped cylinder when the source does not give it, m (our assumption)."""
 RESISTANCE = (1e-5, 1e-3)
-"""Rolling and pivoting resistance of the rigid ending, m, both the same value in a cell
+"""Rolling and pivoting resistance of the landing, m, both the same value in a cell
 (nobody measured them for a coin; :class:`coinflight.model.surface.Surface`); the band's centre
 is their geometric mean."""
 MAX_TOSSES = 10**7
@@ -242,9 +238,8 @@ class Cell:
 
 @dataclass(frozen=True)
 class Band:
-    """P(edge) of one ending over the box: its cells (corners first, the centre last)."""
+    """P(edge) over the box: its cells (corners first, the centre last)."""
 
-    ending: str
     cells: tuple[Cell, ...]
 
     @property
@@ -284,18 +279,13 @@ class Band:
 
 @dataclass(frozen=True)
 class Comparison:
-    """One experiment beside its simulated bands (``rigid`` None when not simulated)."""
+    """One experiment beside its simulated band over the box ``box``."""
 
     experiment: Experiment
     setting: Setting
-    rocking: Band
+    band: Band
     box: Mapping[str, tuple[float, float]] = field(default_factory=dict)
-    """The ranges of the widest box simulated (the rigid ending's when it ran)."""
-    rigid: Band | None = None
-
-    @property
-    def bands(self) -> tuple[Band, ...]:
-        return tuple(b for b in (self.rocking, self.rigid) if b is not None)
+    """The ranges of the unmeasured parameters (:func:`experiment_box`)."""
 
 
 @dataclass(frozen=True)
@@ -307,7 +297,6 @@ class EdgeExperiments:
     seed: int
     elapsed: float
     points: int = 2
-    rigid_n: int = 0
     psi: float | str | None = None
     """The wobble of every toss (:func:`axial_spin`; None: planar tosses)."""
 
@@ -315,7 +304,6 @@ class EdgeExperiments:
         "experiment",
         "h/d",
         "measured ± s.e. (95 % CI)",
-        "ending",
         "model band: low – high (± s.e.)",
         "centre ± s.e.",
         "cells × n",
@@ -325,29 +313,27 @@ class EdgeExperiments:
     """Column names of :meth:`table`."""
 
     def table(self) -> list[tuple[str, ...]]:
-        """One row per experiment and ending (columns :attr:`HEADER`), as text: the driver's
-        and the landing report's table."""
+        """One row per experiment (columns :attr:`HEADER`), as text: the driver's and the
+        landing report's table."""
         rows: list[tuple[str, ...]] = []
         for c in self.comparisons:
             obs = c.experiment.observed
             lo, hi = obs.ci95
-            for b in c.bands:
-                rows.append(
-                    (
-                        c.experiment.label,
-                        f"{c.experiment.ratio:g}",
-                        f"{obs.p:.3f} ± {obs.stderr:.3f} ({lo:.3f}–{hi:.3f}), "
-                        f"{'≈' if c.experiment.edges_derived else ''}"
-                        f"{c.experiment.edges}/{c.experiment.n}",
-                        b.ending,
-                        f"{b.low.p:.3f} ± {b.low.stderr:.3f} – "
-                        f"{b.high.p:.3f} ± {b.high.stderr:.3f}",
-                        f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
-                        f"{len(b.cells)} × {b.centre.n:,}",
-                        b.verdict(obs),
-                        f"{b.gap(obs):+.3f}",
-                    )
+            b = c.band
+            rows.append(
+                (
+                    c.experiment.label,
+                    f"{c.experiment.ratio:g}",
+                    f"{obs.p:.3f} ± {obs.stderr:.3f} ({lo:.3f}–{hi:.3f}), "
+                    f"{'≈' if c.experiment.edges_derived else ''}"
+                    f"{c.experiment.edges}/{c.experiment.n}",
+                    f"{b.low.p:.3f} ± {b.low.stderr:.3f} – {b.high.p:.3f} ± {b.high.stderr:.3f}",
+                    f"{b.centre.p:.3f} ± {b.centre.stderr:.3f}",
+                    f"{len(b.cells)} × {b.centre.n:,}",
+                    b.verdict(obs),
+                    f"{b.gap(obs):+.3f}",
                 )
+            )
         return rows
 
     def to_dict(self) -> dict[str, Any]:
@@ -355,7 +341,6 @@ class EdgeExperiments:
 
         def band(b: Band, obs: BinomialEstimate) -> dict[str, Any]:
             return {
-                "ending": b.ending,
                 "low": b.low.p,
                 "low_stderr": b.low.stderr,
                 "high": b.high.p,
@@ -376,7 +361,6 @@ class EdgeExperiments:
         return {
             "seed": self.seed,
             "n": self.n,
-            "rigid_n": self.rigid_n,
             "psi": self.psi,
             "points": self.points,
             "elapsed": self.elapsed,
@@ -394,7 +378,7 @@ class EdgeExperiments:
                     "setting": c.setting.name,
                     "setting_description": c.setting.description,
                     "box": {k: list(r) for k, r in c.box.items()},
-                    "bands": [band(b, c.experiment.observed) for b in c.bands],
+                    "band": band(c.band, c.experiment.observed),
                 }
                 for c in self.comparisons
             ],
@@ -437,14 +421,13 @@ def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> lis
 def experiment_box(
     experiment: Experiment,
     the_setting: Setting,
-    ending: str,
     restitution: tuple[float, float] | None = None,
     friction: tuple[float, float] | None = None,
 ) -> dict[str, tuple[float, float]]:
-    """The unmeasured parameters' ranges for one experiment and ending: e and μ (default the
-    surface presets' box, :func:`coinflight.studies.presets.bouncing_box`), the diameter and
-    the drop (the record's when it gives them, else the setting's), and with the rigid 3-D
-    ending the resistance (:data:`RESISTANCE`)."""
+    """The unmeasured parameters' ranges for one experiment: e and μ (default the surface
+    presets' box, :func:`coinflight.studies.presets.bouncing_box`), the diameter and the drop
+    (the record's when it gives them, else the setting's), and the rolling and pivoting
+    resistance (:data:`RESISTANCE`)."""
     from coinflight.studies.presets import bouncing_box
 
     e_box, mu_box = bouncing_box()
@@ -455,9 +438,8 @@ def experiment_box(
         "friction": mu_box if friction is None else friction,
         "diameter": the_setting.diameter if d is None else (d, d),
         "drop_height": the_setting.drop_height if h is None else (h, h),
+        "resistance": RESISTANCE,
     }
-    if ending == "rigid":
-        out["resistance"] = RESISTANCE
     return out
 
 
@@ -477,7 +459,7 @@ def _checked(
     return items, n, {name: setting(name) for name in {x.setting for x in items}}
 
 
-def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
+def _cell_checked(point: Mapping[str, float], g: float) -> None:
     """One cell's landing checked as :func:`~coinflight.studies.edge.simulate_edge` will check
     it (g, diameter, the table's e, μ, drop and resistances), so that a refusal
     comes before ``progress`` is first called and any toss runs."""
@@ -494,7 +476,6 @@ def _cell_checked(point: Mapping[str, float], ending: str, g: float) -> None:
         drop_height=point["drop_height"],
         restitution=point["restitution"],
         friction=point["friction"],
-        ending=ending,  # type: ignore[arg-type]  # "rocking" or "rigid"
         **extra,
     )
 
@@ -507,13 +488,12 @@ def _cell_edge(
     cell: Mapping[str, float],
     the_setting: Setting,
     axial: Distribution | None,
-    ending: str,
     resistance: float | None,
 ) -> BinomialEstimate:
     """P(edge) of ``n`` tosses of h/d ``ratio`` (:func:`~coinflight.studies.edge.simulate_edge`)
     at one ``cell`` of a box (restitution, friction, drop_height, diameter), thrown as
     ``the_setting`` says, ωz drawn from ``axial`` (None: none), rolling and pivoting resistance
-    ``resistance`` m (None: the ending's default)."""
+    ``resistance`` m (None: the surface's default)."""
     from coinflight.studies.edge import simulate_edge
 
     ((_, estimate),) = simulate_edge(
@@ -528,7 +508,6 @@ def _cell_edge(
         spin=the_setting.spin,
         launch_speed=the_setting.launch_speed,
         axial_spin=axial,
-        ending=ending,
         rolling_resistance=resistance,
         pivoting_resistance=resistance,
     )
@@ -541,33 +520,27 @@ def edge_experiments(
     seed: streams.SeedLike = None,
     *,
     points: int = 2,
-    rigid: int = 0,
     restitution: tuple[float, float] | None = None,
     friction: tuple[float, float] | None = None,
     g: float = 9.81,
     psi: float | Literal["human"] | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> EdgeExperiments:
-    """Each experiment's setting simulated over the unmeasured parameters' box, both endings.
+    """Each experiment's setting simulated over the unmeasured parameters' box.
 
     Parameters
     ----------
     experiments : sequence of Experiment
         The measured points (data are an argument: none is written in this module).
     n : int
-        Tosses per cell with the rocking ending (corners and centre of
-        :func:`experiment_box`).
+        Tosses per cell of :func:`experiment_box`.
     seed : int, optional
-        Every draw: experiment i takes child i, the same tosses in every cell and both endings
-        (common random numbers; the rigid ending's ``rigid`` tosses are the first of the
-        rocking ending's, :func:`~coinflight.studies.edge.simulate_edge`'s prefix property).
-    rigid : int
-        Tosses per cell with the rigid, event-driven 3-D ending (0: not simulated; corners
-        and centre of the box, resistance included).
+        Every draw: experiment i takes child i, the same tosses in every cell (common random
+        numbers).
     points : int
-        Values per parameter of the rocking ending's box (2: corners and centre, as the
-        rigid ending's always; 3: a 3 × 3 × … grid). The landing's P(edge) is not monotonic
-        in e and μ (module notes), so more points widen the band towards its true extent.
+        Values per parameter of the box (2: corners and centre; 3: a 3 × 3 × … grid). The
+        landing's P(edge) is not monotonic in e and μ, so more points widen the band towards
+        its true extent, at points⁵ cells.
     restitution, friction : (float, float), optional
         Replace the surface presets' ranges (e.g. (0, 0) and a sticking friction for the
         dead-landing check).
@@ -586,36 +559,23 @@ def edge_experiments(
     ------
     ValueError
         Before anything runs: no experiments, sizes out of range, or the whole run above the
-        work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at the landing rates of
-        :mod:`coinflight.outcomes.table`).
+        work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at
+        :data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`).
     """
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, RIGID_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
 
     items, n, settings = _checked(experiments, n, seed)
-    rigid = v.count("rigid-ending tosses per cell", rigid, 0, MAX_TOSSES)
-    boxes = [
-        {
-            ending: experiment_box(x, settings[x.setting], ending, restitution, friction)
-            for ending in ("rocking", "rigid")
-        }
-        for x in items
-    ]
+    boxes = [experiment_box(x, settings[x.setting], restitution, friction) for x in items]
     points = v.count("points per parameter", points, 2, 9)
     if psi is not None:
         axial_spin(items[0].ratio, settings[items[0].setting].spin, psi)  # refuse a bad ψ now
-    runs = (("rocking", n, points), ("rigid", rigid, 2))
     for box in boxes:
-        for ending, size, k in runs:
-            for point in box_cells(box[ending], k) if size else ():
-                _cell_checked(point, ending, g)
-    rocking_tosses = sum(len(box_cells(b["rocking"], points)) for b in boxes) * n
-    rigid_tosses = sum(len(box_cells(b["rigid"])) for b in boxes) * rigid
-    seconds = rocking_tosses / BOUNCING_TOSSES_PER_SECOND + rigid_tosses / RIGID_TOSSES_PER_SECOND
-    what = (
-        f"edge experiments: {len(items)} experiments, {rocking_tosses:,} rocking and "
-        f"{rigid_tosses:,} rigid-ending tosses"
-    )
-    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n, rigid)")
+        for point in box_cells(box, points):
+            _cell_checked(point, g)
+    tosses = sum(len(box_cells(b, points)) for b in boxes) * n
+    seconds = tosses / RIGID_TOSSES_PER_SECOND
+    what = f"edge experiments: {len(items)} experiments, {tosses:,} tosses"
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n)")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
     t0 = time.perf_counter()
@@ -626,37 +586,21 @@ def edge_experiments(
         child = streams.child(root, i)
         wz = None if psi is None else axial_spin(x.ratio, the_setting.spin, psi)
         extra = {} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}
-        bands: dict[str, Band] = {}
-        for ending, size, _ in runs:
-            if size == 0:
-                continue
-            cells = []
-            for point in box_cells(box[ending], points if ending == "rocking" else 2):
-                resist = point.get("resistance")
-                estimate = _cell_edge(
-                    x.ratio, size, child, g, point, the_setting, wz, ending, resist
-                )
-                cells.append(Cell(MappingProxyType({**point, **extra}), estimate))
-            bands[ending] = Band(ending, tuple(cells))
-            if progress is not None:
-                progress(f"{x.label}: {ending}")
-        widest = box["rigid" if rigid else "rocking"]
-        comparisons.append(
-            Comparison(
-                x,
-                the_setting,
-                bands["rocking"],
-                MappingProxyType(widest),
-                bands.get("rigid"),
+        cells = []
+        for point in box_cells(box, points):
+            estimate = _cell_edge(
+                x.ratio, n, child, g, point, the_setting, wz, point.get("resistance")
             )
-        )
+            cells.append(Cell(MappingProxyType({**point, **extra}), estimate))
+        if progress is not None:
+            progress(x.label)
+        comparisons.append(Comparison(x, the_setting, Band(tuple(cells)), MappingProxyType(box)))
     return EdgeExperiments(
         tuple(comparisons),
         n,
         streams.reported_seed(root),
         time.perf_counter() - t0,
         points,
-        rigid,
         psi,
     )
 
@@ -718,12 +662,11 @@ planar band's highest P(edge) and the one facing it."""
 @dataclass(frozen=True)
 class WobbleRow:
     """P(edge) of one experiment's setting with cone angle ``psi`` (degrees or "human") at
-    ``parameters``, by ``ending``."""
+    ``parameters``."""
 
     label: str
     ratio: float
     psi: float | str
-    ending: str
     parameters: Mapping[str, float]
     estimate: BinomialEstimate
 
@@ -740,25 +683,25 @@ def wobble_sweep(
 ) -> list[WobbleRow]:
     """P(edge) of each experiment's setting with a wobble: for each cone angle ψ of ``psis``
     (:func:`axial_spin`) and each cell of ``cells`` (restitution, friction, diameter,
-    drop_height), ``n`` tosses with the rocking ending.
+    drop_height; and ``resistance``, m, the rolling and pivoting resistance, else the
+    surface's default), ``n`` tosses each.
 
     Experiment i draws from the seed's child i, as in :func:`edge_experiments`: every ψ and
-    cell lands the same ωx and v0 (common random numbers; ψ changes ωz only), and ψ = 90 with
-    the rocking ending gives that function's counts at the same cell. Work bounded before it
+    cell lands the same ωx and v0 (common random numbers; ψ changes ωz only). Work bounded before it
     runs, as :func:`edge_experiments`; ``progress`` is called first once every input is checked,
     before any toss (the run's size), then after each cell.
     """
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
 
     items, n, settings = _checked(experiments, n, seed)
     spins = {
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
     }
     for cell in cells:
-        _cell_checked(cell, "rocking", g)
+        _cell_checked(cell, g)
     runs = len(items) * len(psis) * len(cells)
-    what = f"wobble sweep: {runs} cells × {n:,} rocking-ending tosses"
-    seconds = runs * n / BOUNCING_TOSSES_PER_SECOND
+    what = f"wobble sweep: {runs} cells × {n:,} tosses"
+    seconds = runs * n / RIGID_TOSSES_PER_SECOND
     v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n)")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
@@ -769,22 +712,23 @@ def wobble_sweep(
         for psi, wz in zip(psis, spins[x.label], strict=True):
             for cell in cells:
                 child = streams.child(root, i)
-                estimate = _cell_edge(x.ratio, n, child, g, cell, the_setting, wz, "rocking", None)
-                rows.append(WobbleRow(x.label, x.ratio, psi, "rocking", cell, estimate))
+                resistance = cell.get("resistance")
+                estimate = _cell_edge(x.ratio, n, child, g, cell, the_setting, wz, resistance)
+                rows.append(WobbleRow(x.label, x.ratio, psi, cell, estimate))
                 if progress is not None:
-                    progress(f"{x.label} ψ {psi} rocking {dict(cell)}: {estimate.p:.4f}")
+                    progress(f"{x.label} ψ {psi} {dict(cell)}: {estimate.p:.4f}")
     return rows
 
 
 @dataclass(frozen=True)
 class EngineCheck:
-    """The same ``n`` tosses of one setting at one point of the box in coinflight (the rocking
-    ending) and in MuJoCo (:func:`coinflight.studies.mujoco_compare.run`): edges of each,
-    MuJoCo's tosses still moving at its limit and the point (``parameters``)."""
+    """The same ``n`` tosses of one setting at one point of the box in coinflight and in MuJoCo
+    (:func:`coinflight.studies.mujoco_compare.run`): edges of each, MuJoCo's tosses still
+    moving at its limit and the point (``parameters``)."""
 
     label: str
     parameters: Mapping[str, float]
-    rocking: BinomialEstimate
+    coinflight: BinomialEstimate
     mujoco: BinomialEstimate
     mujoco_moving: int
     mujoco_seconds: float
@@ -806,13 +750,13 @@ def mujoco_check(
     """``n`` tosses of ``experiment``'s setting (a cylinder of diameter
     :data:`coinflight.studies.edge.SIM_DIAMETER`, so no scaling; spin and launch speed drawn
     from the seed's child 0, release ``drop_height``, default the middle of the setting's
-    range) landed on one table (e, μ; MuJoCo's rolling and torsional resistance ``resistance``
-    m) by coinflight's rocking ending and by MuJoCo (its defaults
+    range) landed on one table (e, μ; the rolling and pivoting resistance, MuJoCo's rolling and
+    torsional friction, ``resistance`` m) by coinflight and by MuJoCo (its defaults
     otherwise: condim 6, Euler, damping calibrated to e, each toss carried to rest or 20 s
     past its first contact). ``psi``: a wobble (:func:`axial_spin`; ωz drawn from the third
     row of the same stream, as :func:`~coinflight.studies.edge.simulate_edge` draws it: the
-    same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work (the
-    rocking ending at its landing rate, MuJoCo by :func:`coinflight.studies.mujoco_compare.
+    same ωx and v0 as without it). ImportError without MuJoCo; the whole check's work
+    (coinflight at its landing rate, MuJoCo by :func:`coinflight.studies.mujoco_compare.
     seconds_estimate`) bounded before anything runs; ``progress``, if given, is called once
     every input is checked and the work bounded, before any toss (the check's size)."""
     from coinflight.core.outcome import EDGE
@@ -829,7 +773,14 @@ def mujoco_check(
     check_gravity(g)
     streams.check_seed(seed)
     wz = None if psi is None else axial_spin(experiment.ratio, the_setting.spin, psi)
-    table = Surface("table", drop, restitution, friction)
+    table = Surface(
+        "table",
+        drop,
+        restitution,
+        friction,
+        rolling_resistance=resistance,
+        pivoting_resistance=resistance,
+    )
     # Bounded before anything runs: the landings at their rate, and MuJoCo's.
     seconds = n / TableLanding(table).rate
     seconds += mujoco_compare.seconds_estimate(n, mujoco_compare.SETTLE)
@@ -851,7 +802,7 @@ def mujoco_check(
     def edges(faces: Any) -> BinomialEstimate:
         return BinomialEstimate(int(np.count_nonzero(faces == EDGE)), n, seed_int)
 
-    rocking = edges(land(coin, omega, v0, 1.0, g, table).face)
+    ours = edges(land(coin, omega, v0, 1.0, g, table).face)
     engine = mujoco_compare.Engine(torsional=resistance, rolling=resistance)
     run = mujoco_compare.run(coin, omega, v0, drop, restitution, friction, g, engine=engine)
     return EngineCheck(
@@ -866,7 +817,7 @@ def mujoco_check(
                 **({} if psi is None else {"psi": HUMAN_PSI_DEGREES if psi == "human" else psi}),
             }
         ),
-        rocking,
+        ours,
         edges(run.rest),
         int(np.count_nonzero(run.moving)),
         float(run.elapsed),

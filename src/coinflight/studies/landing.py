@@ -1,31 +1,38 @@
 """Validation of the table landing: every number of the landing report, computed by the library.
 
-Five questions, each a function returning plain values with their seeds:
+Six questions, each a function returning plain values with their seeds:
 
 * :func:`dead_landings`: tosses landing dead (e = 0) against Yong & Mahadevan's dynamic model
   P(edge) = 2 arctan(h/d)/π (:func:`coinflight.studies.edge.edge_table`);
-* :func:`bouncing_edges`: the same tosses bouncing (e and μ over the surface presets' ranges),
-  P(edge) per ratio as a band beside the dead landings and the models. Hernández-Navarro &
-  Piñero (2021, arXiv:2103.10927) derive P(edge) of a partially inelastic bouncing coin in
-  closed form; only their abstract could be read for this project, so their curve is not
-  drawn (see the report's words on what it predicts and whether ours agrees);
+* :func:`bouncing_edges`: the same tosses bouncing (e, μ and the rolling and pivoting
+  resistance over their ranges), P(edge) per ratio as a band beside the dead landings and the
+  models. Hernández-Navarro & Piñero (2021, arXiv:2103.10927) derive P(edge) of a partially
+  inelastic bouncing coin in closed form; only their abstract could be read for this project,
+  so their curve is not drawn (see the report's words on what it predicts and whether ours
+  agrees);
 * :func:`contact_maps`: P(same side at rest) and P(edge) over a grid of restitution e and
   friction μ, the same tosses in every cell (common random numbers: the maps show the effect
   of e and μ, not noise);
-* :func:`nickel_band`: the US nickel's P(edge) over the literature's ranges of e and μ
-  (:data:`coinflight.studies.presets.SURFACE_PRESETS`): the lowest and highest cell of a grid
-  over each preset's box, and the probability integrated over the preset (e and μ drawn toss
-  by toss) — a band, not a point, beside Murray & Teare's extrapolated 1 in 6000;
+* :func:`nickel_band`: the US nickel's P(edge) as a band over what is not measured (e and μ
+  over each surface preset's ranges, :data:`coinflight.studies.presets.SURFACE_PRESETS`, the
+  resistances and the rim's corner radius): the corners of that box, the probability
+  integrated over it (the four drawn toss by toss) and how the edges ended, beside Murray &
+  Teare's extrapolated 1 in 6000;
 * :func:`mujoco_comparison`: identical tosses in coinflight and in MuJoCo
   (:mod:`coinflight.studies.mujoco_compare`), at the first contact and at rest, with the speed
-  of each (coinflight's default ending, the planar rocking hand-off);
-* :func:`rigid_nickel`: the US nickel's P(edge) in the rigid 3-D ending, a band over its
-  unmeasured parameters, and how the edges ended.
+  of each;
+* :func:`thick_experiments`: the measured edge fractions of thick cylinders beside the
+  landing's band (:mod:`coinflight.studies.edge_experiments`).
 
-These are validation runs, not predictions: every table number they give depends on the
-restitution and friction (and, for the rigid ending, on the rolling and pivoting resistance
-and the rim's corner radius), none measured for a coin. A number quoted from here goes with
-its band over those parameters (:func:`contact_maps`, :func:`nickel_band`).
+The landing is :func:`coinflight.outcomes.table.land`'s: Stronge's impacts while the coin
+bounces, then the rigid, event-driven 3-D phase (:mod:`coinflight.core.rigid_ending`) carries
+it to rest. These are validation runs, not predictions: every table number they give depends
+on the restitution, friction, rolling and pivoting resistance and the rim's corner radius,
+none measured for a coin. A number quoted from here goes with its band over those parameters
+(:func:`contact_maps`, :func:`nickel_band`). Cost: a landing carried to rest is slow (the
+coin may roll for seconds; :data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND` is the
+rate the work bounds take), a dead landing (e = 0) ends at its first impact, a hundred times
+faster; every function bounds its work before it starts.
 
 Nothing here is a hard-coded result: re-running after a change of the contact physics gives
 the new numbers. Every random draw comes from the seed through
@@ -75,7 +82,8 @@ MURRAY_TEARE = 1.0 / 6000.0
 6000 tosses", extrapolated from their model (REFERENCES §5): a reference, not a target."""
 
 # Children of the report's seed, one per question (streams.child(root, PART)).
-_DEAD, _MAPS, _BAND, _MUJOCO, _BOUNCING, _EDGES, _EXPERIMENTS, _RIGID = 0, 1, 2, 3, 4, 5, 6, 7
+# (2 and 5 belonged to questions since retired; the others keep their children, so their draws.)
+_DEAD, _MAPS, _MUJOCO, _BOUNCING, _EXPERIMENTS, _BAND = 0, 1, 3, 4, 6, 7
 EXPERIMENTS_CHILD = _EXPERIMENTS
 """The child of the report's seed the thick-cylinder comparison (:func:`thick_experiments`)
 draws its tosses from."""
@@ -163,18 +171,26 @@ def dead_landings(
 # --- bouncing edges ---------------------------------------------------------------------------
 @dataclass(frozen=True)
 class BouncingEdges:
-    """Simulated P(edge) of the dead-landing tosses when they bounce, over a grid of e and μ.
+    """Simulated P(edge) of the dead-landing tosses when they bounce, over the box of e, μ and
+    the rolling and pivoting resistance ℓ_r = ℓ_p.
 
-    ``edge`` has shape (len(ratios), len(friction), len(restitution)); ``n`` tosses per ratio,
-    the same tosses in every cell (one seed child for all cells).
+    ``cells`` are the box's points (parameter name → value: ``restitution``, ``friction``,
+    ``resistance`` in m; :func:`coinflight.studies.edge_experiments.box_cells`: every
+    combination of ``points`` values per parameter, the centre last); ``edge`` has shape
+    (len(ratios), len(cells)); ``n`` tosses per ratio, the same tosses in every cell (one seed
+    child for all cells).
     """
 
     ratios: tuple[float, ...]
-    restitution: NDArray[np.float64]
-    friction: NDArray[np.float64]
+    cells: tuple[dict[str, float], ...]
     edge: NDArray[np.float64]
     n: int
     seed: int
+
+    def ranges(self, name: str) -> tuple[float, float]:
+        """The lowest and highest value of parameter ``name`` over the cells."""
+        values = [c[name] for c in self.cells]
+        return min(values), max(values)
 
     def low(self, k: int) -> tuple[float, float]:
         """(P, s.e.) of ratio ``k``'s lowest cell."""
@@ -188,32 +204,44 @@ class BouncingEdges:
 
 
 def bouncing_edges(
-    n: int, seed: streams.SeedLike, ratios: tuple[float, ...] = RATIOS, cells: int = 2
+    n: int, seed: streams.SeedLike, ratios: tuple[float, ...] = RATIOS, points: int = 2
 ) -> BouncingEdges:
     """P(edge) of ``n`` tosses per ratio in the dead-landing setting
     (:func:`coinflight.studies.edge.simulate_edge`: vigorous planar spins, table
-    :data:`coinflight.studies.edge.SIM_DROP` below), bouncing with restitution and friction
-    on a ``cells`` × ``cells`` grid over :func:`bouncing_box` (ends included), the same
-    tosses in every cell. Planar tosses: the rocking ending discards no spin or precession."""
+    :data:`coinflight.studies.edge.SIM_DROP` below), bouncing, at ``points`` values per
+    parameter of the box of restitution and friction (:func:`bouncing_box`, the surface
+    presets' union) and the rolling and pivoting resistance ℓ_r = ℓ_p (:data:`RESISTANCES`,
+    geometric), every combination and the box's centre, the same tosses in every cell.
+
+    Cost: len(ratios) × (points³, + 1 for even ``points``) × ``n`` landings carried to rest,
+    bounded before anything runs."""
     from coinflight.studies.edge import simulate_edge
+    from coinflight.studies.edge_experiments import box_cells
 
     n = v.count("tosses per ratio", n, 1, 10**7)
-    cells = v.count("cells per parameter", cells, 2, 20)
+    points = v.count("points per parameter", points, 2, 9)
+    (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
+    box = {"restitution": (e_lo, e_hi), "friction": (mu_lo, mu_hi), "resistance": RESISTANCES}
+    cells = box_cells(box, points)
     _bound(
-        f"bouncing edges: {len(ratios)} ratios × {cells}² cells × {n} tosses",
-        len(ratios) * cells * cells * n,
+        f"bouncing edges: {len(ratios)} ratios × {len(cells)} cells × {n} tosses",
+        len(ratios) * len(cells) * n,
     )
     root = streams.seed_sequence(seed)
-    (e_lo, e_hi), (mu_lo, mu_hi) = bouncing_box()
-    e = np.linspace(e_lo, e_hi, cells)
-    mu = np.linspace(mu_lo, mu_hi, cells)
-    edge = np.empty((len(ratios), cells, cells))
+    edge = np.empty((len(ratios), len(cells)))
     child = streams.child(root, _BOUNCING)
-    for i, m in enumerate(mu):
-        for j, r in enumerate(e):
-            rows = simulate_edge(list(ratios), n, child, restitution=float(r), friction=float(m))
-            edge[:, i, j] = [s.p for _, s in rows]
-    return BouncingEdges(tuple(ratios), e, mu, edge, n, streams.reported_seed(root))
+    for j, cell in enumerate(cells):
+        rows = simulate_edge(
+            list(ratios),
+            n,
+            child,
+            restitution=cell["restitution"],
+            friction=cell["friction"],
+            rolling_resistance=cell["resistance"],
+            pivoting_resistance=cell["resistance"],
+        )
+        edge[:, j] = [s.p for _, s in rows]
+    return BouncingEdges(tuple(ratios), tuple(cells), edge, n, streams.reported_seed(root))
 
 
 # --- maps over (e, μ) ---------------------------------------------------------------------------
@@ -256,7 +284,12 @@ def contact_maps(
     friction: NDArray[np.float64] | None = None,
 ) -> ContactMaps:
     """The maps over e ∈ [0, 0.9] × μ ∈ [0, 1] (default 10 × 11 cells), ``n`` tosses of
-    :func:`map_tosses` per cell, landing on a table :data:`DROP_HEIGHT` below launch."""
+    :func:`map_tosses` per cell, landing on a table :data:`DROP_HEIGHT` below launch (the
+    rolling and pivoting resistance, the contact duration and the rim's sharp corners at
+    :class:`~coinflight.model.surface.Surface`'s defaults: :func:`nickel_band` varies them).
+
+    Cost: cells × ``n`` landings carried to rest (those at e = 0 end at their first impact),
+    bounded before anything runs."""
     from coinflight.core.outcome import EDGE, HEADS
     from coinflight.outcomes.table import STATUS_NAMES
 
@@ -282,125 +315,43 @@ def contact_maps(
     )
 
 
-def _bound(what: str, tosses: int, rigid: bool = False) -> None:
-    """Refuse ``tosses`` landings beyond the run limit, at the bouncing rate (or the rigid
-    ending's, ``rigid``)."""
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, RIGID_TOSSES_PER_SECOND
+def _bound(what: str, tosses: int) -> None:
+    """Refuse ``tosses`` landings beyond the run limit, at the rate of landings carried to rest
+    (:data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; dead landings are faster)."""
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
 
-    rate = RIGID_TOSSES_PER_SECOND if rigid else BOUNCING_TOSSES_PER_SECOND
     v.work_bound(
         what,
         tosses,
-        rate * v.MAX_RUN_SECONDS,
+        RIGID_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
         "tosses",
         "use fewer cells or tosses (--quick)",
-        rate,
+        RIGID_TOSSES_PER_SECOND,
     )
 
 
 # --- the nickel's P(edge) band ----------------------------------------------------------------
-class _CellExtremes:
-    """The lowest and the highest cell of a band of edge fractions (``edge``, ``n`` tosses a
-    cell), each as (P, s.e.)."""
-
-    edge: NDArray[np.float64]
-    n: int
-
-    @property
-    def low(self) -> tuple[float, float]:
-        """(P, s.e.) of the lowest cell."""
-        p = float(self.edge.min())
-        return p, math.sqrt(p * (1 - p) / self.n)
-
-    @property
-    def high(self) -> tuple[float, float]:
-        """(P, s.e.) of the highest cell."""
-        p = float(self.edge.max())
-        return p, math.sqrt(p * (1 - p) / self.n)
-
-
-@dataclass(frozen=True)
-class Band(_CellExtremes):
-    """The nickel's P(edge) over one surface preset's ranges of e and μ.
-
-    Attributes
-    ----------
-    preset : str
-    restitution, friction : ndarray
-        The grid over the preset's box (its ends and interior points).
-    edge : ndarray, shape (len(friction), len(restitution))
-        P(edge) per cell, the same ``n`` tosses in every cell.
-    integrated : BinomialEstimate
-        Edges of ``n`` tosses with e and μ drawn toss by toss from the preset
-        (:meth:`~coinflight.model.ensemble.TossDistribution.with_contact`, Monte Carlo).
-    """
-
-    preset: str
-    restitution: NDArray[np.float64]
-    friction: NDArray[np.float64]
-    edge: NDArray[np.float64]
-    n: int
-    integrated: BinomialEstimate
-    sources: dict[str, str] = field(default_factory=dict)
-
-
-def nickel_band(n: int, seed: streams.SeedLike, cells: int = 3) -> list[Band]:
-    """P(edge) of the US nickel over each surface preset's box (``cells`` × ``cells`` grid,
-    ``n`` tosses of :func:`map_tosses` per cell) and integrated over it (``n`` tosses)."""
-    from coinflight.core.outcome import EDGE
-    from coinflight.outcomes.table import TableLanding
-    from coinflight.probability import monte_carlo
-    from coinflight.studies.presets import SURFACE_PRESETS
-
-    n = v.count("tosses per cell", n, 1, 10**8)
-    cells = v.count("cells per parameter", cells, 2, 50)
-    _bound(
-        f"the nickel band: {len(SURFACE_PRESETS)} presets × ({cells}² cells + 1) × {n} tosses",
-        len(SURFACE_PRESETS) * (cells * cells + 1) * n,
-    )
-    root = streams.seed_sequence(seed)
-    dist = map_tosses()
-    omega, v0 = _draw(dist, n, streams.child(root, _BAND, 0))
-    out = []
-    for k, preset in enumerate(SURFACE_PRESETS.values()):
-        e = np.linspace(*preset.restitution.bounds, cells)
-        mu = np.linspace(*preset.friction.bounds, cells)
-        edge = np.empty((cells, cells))
-        for i, m in enumerate(mu):
-            for j, r in enumerate(e):
-                face, _ = _faces(dist.coin, omega, v0, float(r), float(m))
-                edge[i, j] = np.count_nonzero(face == EDGE) / n
-        spread = dist.with_contact(**preset.contact)
-        model = TableLanding(Surface("table", drop_height=DROP_HEIGHT))
-        result = monte_carlo.estimate(spread, n, streams.child(root, _BAND, 1 + k), model=model)
-        assert result.counts is not None  # Monte Carlo counts its tosses
-        integrated = BinomialEstimate(int(result.counts[2]), n, streams.reported_seed(root))
-        out.append(Band(preset.name, e, mu, edge, n, integrated, dict(preset.sources)))
-    return out
-
-
-# --- the nickel's P(edge) band in the rigid ending ---------------------------------------------
-RIGID_RESISTANCES = (1e-5, 1e-3)
-"""Rolling and pivoting resistance ℓ_r = ℓ_p of the rigid band, m: the ends of the band
+RESISTANCES = (1e-5, 1e-3)
+"""Rolling and pivoting resistance ℓ_r = ℓ_p of the bands, m: the ends of the range
 :mod:`coinflight.model.surface` carries (an assumption there: no source measures it for a
 coin; a hard rim on hard wood to a rim on a soft cloth). Integrated log-uniformly."""
-RIGID_CORNER = 2.5e-4
-"""The most rounded rim corner of the rigid band, m: an assumption. No source gives the corner
+CORNER_RADIUS = 2.5e-4
+"""The most rounded rim corner of the nickel's band, m: an assumption. No source gives the corner
 radius of a nickel's rim; 0.25 mm (about a quarter of its half-thickness, 0.975 mm), our
 choice of a clearly rounded corner, leaves a flat band 1.45 mm wide. Integrated uniformly from
 0 (sharp)."""
-RIGID_PATHS = ("at an impact", "rolled on its band", "upright, below the barrier", "not settled")
-"""How a rigid-ending landing that ends on edge ended (:func:`rigid_landings`): at an impact of
+EDGE_PATHS = ("at an impact", "rolled on its band", "upright, below the barrier", "not settled")
+"""How a landing that ends on edge ended (:func:`traced_landings`): at an impact of
 the bounces, its whole energy below the edge well's barrier; rolling straight on its band to
 rest (:data:`coinflight.core.rigid_ending.ENDED_BAND`); upright on its band (spinning about the
 vertical or rocking) until its energy fell below the edge well's barrier
-(:data:`~coinflight.core.rigid_ending.ENDED_BARRIER`); or not settled within the ending's
+(:data:`~coinflight.core.rigid_ending.ENDED_BARRIER`); or not settled within the landing's
 limits (counted by the well it was in)."""
 _AT_IMPACT, _BAND_ROLL, _UPRIGHT, _NOT_SETTLED = range(4)
 _FACE_DOWN = -1  # ended lying on a face (not an edge: no path)
 
 
-def rigid_landings(
+def traced_landings(
     coin: Coin,
     omega: NDArray[np.float64],
     v0: NDArray[np.float64],
@@ -411,15 +362,15 @@ def rigid_landings(
     g: float = 9.81,
 ) -> tuple[NDArray[np.int8], NDArray[np.int8]]:
     """Land tosses (ω (n, 3) rad/s, v0 (n,) m/s, heads up) on a table :data:`DROP_HEIGHT`
-    below with the rigid ending, each with its own e, μ, ℓ_r = ℓ_p (m) and ``coin``'s rim
+    below, each with its own e, μ, ℓ_r = ℓ_p (m) and ``coin``'s rim
     corners rounded to ``corner`` (m; scalars or arrays of shape (n,)): (faces at rest, how
-    each ended: an index of :data:`RIGID_PATHS`, −1 for a coin ended flat on a face).
+    each ended: an index of :data:`EDGE_PATHS`, −1 for a coin ended flat on a face).
 
     The same kernels as :func:`coinflight.outcomes.table.land` (the bounces of
     :func:`coinflight.core.bounce.bounce_loop`, then :func:`coinflight.core.rigid_ending.run`),
-    called toss by toss from here to read how each ending stopped, which ``land`` does not
+    called toss by toss from here to read how each landing stopped, which ``land`` does not
     return; the faces are ``land``'s (tests/test_landing_rigid_band.py). One thread; its work
-    is not bounded here (:func:`rigid_nickel` bounds its own)."""
+    is not bounded here (:func:`nickel_band` bounds its own)."""
     from coinflight.core import bounce, rigid_ending
     from coinflight.core.outcome import Status
     from coinflight.outcomes.table import contact_record
@@ -442,7 +393,7 @@ def rigid_landings(
     for k in range(n):
         rim = float(a[k])
         if rim not in records:
-            table = Surface("table", DROP_HEIGHT, ending="rigid")
+            table = Surface("table", DROP_HEIGHT)
             records[rim] = contact_record(coin.with_corner_radius(rim), table, g)
         record = records[rim]
         c = bounce.with_surface(record, e[k], mu[k], ell[k], ell[k], record.contact_duration)
@@ -466,14 +417,15 @@ def rigid_landings(
 
 
 def _path_counts(face: NDArray[np.int8], path: NDArray[np.int8]) -> NDArray[np.int64]:
-    """Edges by how they ended (:data:`RIGID_PATHS`)."""
-    return np.bincount(path[face == EDGE], minlength=len(RIGID_PATHS)).astype(np.int64)
+    """Edges by how they ended (:data:`EDGE_PATHS`)."""
+    return np.bincount(path[face == EDGE], minlength=len(EDGE_PATHS)).astype(np.int64)
 
 
 @dataclass(frozen=True)
-class RigidBand(_CellExtremes):
-    """The nickel's P(edge) in the rigid ending over one surface preset's e and μ, the
-    resistances :data:`RIGID_RESISTANCES` and the corner radius 0 to :data:`RIGID_CORNER`.
+class Band:
+    """The nickel's P(edge) over one surface preset's e and μ, the
+    resistances :data:`RESISTANCES` and the corner radius 0 to :data:`CORNER_RADIUS`: the
+    box's 16 corners and its centre.
 
     Attributes
     ----------
@@ -483,12 +435,15 @@ class RigidBand(_CellExtremes):
     edge : ndarray, shape (2, 2, 2, 2)
         P(edge) at the corners of the box, indexed [corner radius, resistance, friction,
         restitution] (low end 0, high end 1), the same ``n`` tosses in every cell.
-    paths : ndarray, shape (2, 2, 2, 2, len(RIGID_PATHS))
-        The cells' edges by how they ended (:data:`RIGID_PATHS`).
+    paths : ndarray, shape (2, 2, 2, 2, len(EDGE_PATHS))
+        The cells' edges by how they ended (:data:`EDGE_PATHS`).
+    centre : float
+        P(edge) at the box's centre (e and μ mid-range, ℓ the geometric mean of its ends, a
+        half the most rounded corner), the same tosses.
     integrated : BinomialEstimate
         Edges of ``integrated.n`` tosses with e and μ uniform over the preset, ℓ log-uniform
         and a uniform over their ranges, drawn toss by toss.
-    integrated_paths : ndarray, shape (len(RIGID_PATHS),)
+    integrated_paths : ndarray, shape (len(EDGE_PATHS),)
         Those edges by how they ended.
     """
 
@@ -502,7 +457,24 @@ class RigidBand(_CellExtremes):
     n: int
     integrated: BinomialEstimate
     integrated_paths: NDArray[np.int64]
+    centre: float = math.nan
     sources: dict[str, str] = field(default_factory=dict)
+
+    def _cells(self) -> NDArray[np.float64]:
+        cells = self.edge.ravel()
+        return cells if math.isnan(self.centre) else np.append(cells, self.centre)
+
+    @property
+    def low(self) -> tuple[float, float]:
+        """(P, s.e.) of the lowest cell (corners and centre)."""
+        p = float(self._cells().min())
+        return p, math.sqrt(p * (1 - p) / self.n)
+
+    @property
+    def high(self) -> tuple[float, float]:
+        """(P, s.e.) of the highest cell (corners and centre)."""
+        p = float(self._cells().max())
+        return p, math.sqrt(p * (1 - p) / self.n)
 
     def axis(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
         """(P, s.e.) of the cells at the low and at the high end of axis ``k`` (0 corner
@@ -518,11 +490,11 @@ class RigidBand(_CellExtremes):
 
 
 @dataclass(frozen=True)
-class RigidNickel:
-    """The nickel's P(edge) in the rigid ending: one :class:`RigidBand` per surface preset, and
+class NickelBand:
+    """The nickel's P(edge): one :class:`Band` per surface preset, and
     the limit of a fully rounded rim (a = h/2: no flat band) that must leave none on edge."""
 
-    bands: tuple[RigidBand, ...]
+    bands: tuple[Band, ...]
     round_rim: BinomialEstimate
     """Edges of the cell tosses with the parameters of the first preset's highest cell and the
     corners rounded to half the thickness (a = h/2)."""
@@ -531,23 +503,21 @@ class RigidNickel:
     seconds: float
 
 
-def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) -> RigidNickel:
-    """The US nickel's P(edge) with the rigid ending (``Surface(ending="rigid")``), a band over
-    what is not measured: for each surface preset
+def nickel_band(n: int, seed: streams.SeedLike, integrated: int | None = None) -> NickelBand:
+    """The US nickel's P(edge) as a band over what is not measured: for each surface preset
     (:data:`coinflight.studies.presets.SURFACE_PRESETS`), ``n`` tosses of :func:`map_tosses`
     in each of the 16 corners of the box of e, μ (the preset's), ℓ_r = ℓ_p
-    (:data:`RIGID_RESISTANCES`) and the corner radius (0 to :data:`RIGID_CORNER`), the same
-    tosses in every cell; ``integrated`` tosses (default
+    (:data:`RESISTANCES`) and the corner radius (0 to :data:`CORNER_RADIUS`), and at its
+    centre (:attr:`Band.centre`), the same tosses in every cell; ``integrated`` tosses (default
     4 ``n``) with the four drawn toss by toss (e, μ, a uniform, ℓ log-uniform); and the ``n``
     tosses once more with the corners rounded to h/2. Each edge is counted by how it ended
-    (:data:`RIGID_PATHS`, :func:`rigid_landings`). The contact duration is held at the
+    (:data:`EDGE_PATHS`, :func:`traced_landings`). The contact duration is held at the
     surface's default (it decides only landings within a fraction of a degree of flat or
     upright).
 
-    Cost: 2 × (16 ``n`` + ``integrated``) + ``n`` rigid landings (the report's 100 and 400:
-    about 4,100, half a minute on 2 cores), bounded before anything runs at
-    :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at ℓ = 1e-5 m
-    (coins rolling long on their rims) take most of it.
+    Cost: 2 × (17 ``n`` + ``integrated``) + ``n`` landings carried to rest, bounded before
+    anything runs at :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at
+    ℓ = 1e-5 m (coins rolling long on their rims) take most of it.
     """
     from coinflight.studies.presets import SURFACE_PRESETS
 
@@ -555,60 +525,67 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
     n = v.count("tosses per cell", n, 1, 10**6)
     integrated = v.count("integrated tosses", 4 * n if integrated is None else integrated, 1, 10**7)
     presets = list(SURFACE_PRESETS.values())
-    total = len(presets) * (16 * n + integrated) + n
+    total = len(presets) * (17 * n + integrated) + n
     _bound(
-        f"the nickel's rigid band: {len(presets)} presets × (16 cells × {n} + {integrated}) "
-        f"+ {n} tosses",
+        f"the nickel's band: {len(presets)} presets × (17 cells × {n} + {integrated}) + {n} tosses",
         total,
-        rigid=True,
     )
     root = streams.seed_sequence(seed)
     dist = map_tosses()
     coin = dist.coin
-    omega, v0 = _draw(dist, n, streams.child(root, _RIGID, 0))
-    corners = (0.0, RIGID_CORNER)
+    omega, v0 = _draw(dist, n, streams.child(root, _BAND, 0))
+    corners = (0.0, CORNER_RADIUS)
     bands = []
     for k, preset in enumerate(presets):
         e_ends = preset.restitution.bounds
         mu_ends = preset.friction.bounds
         edge = np.empty((2, 2, 2, 2))
-        paths = np.empty((2, 2, 2, 2, len(RIGID_PATHS)), dtype=np.int64)
+        paths = np.empty((2, 2, 2, 2, len(EDGE_PATHS)), dtype=np.int64)
         for ia, a in enumerate(corners):
-            for il, ell in enumerate(RIGID_RESISTANCES):
+            for il, ell in enumerate(RESISTANCES):
                 for im, mu in enumerate(mu_ends):
                     for ie, e in enumerate(e_ends):
-                        face, path = rigid_landings(coin, omega, v0, e, mu, ell, a, dist.g)
+                        face, path = traced_landings(coin, omega, v0, e, mu, ell, a, dist.g)
                         edge[ia, il, im, ie] = np.count_nonzero(face == EDGE) / n
                         paths[ia, il, im, ie] = _path_counts(face, path)
-        w, v_int = _draw(dist, integrated, streams.child(root, _RIGID, 1 + k, 0))
-        cube = streams.unit_cube(streams.child(root, _RIGID, 1 + k, 1), integrated, 4)
+        mid = (
+            float(np.mean(e_ends)),
+            float(np.mean(mu_ends)),
+            math.sqrt(RESISTANCES[0] * RESISTANCES[1]),
+            CORNER_RADIUS / 2.0,
+        )
+        face, _ = traced_landings(coin, omega, v0, *mid, dist.g)
+        centre = np.count_nonzero(face == EDGE) / n
+        w, v_int = _draw(dist, integrated, streams.child(root, _BAND, 1 + k, 0))
+        cube = streams.unit_cube(streams.child(root, _BAND, 1 + k, 1), integrated, 4)
         u = np.concatenate(list(cube), axis=1)  # (4, integrated): e, μ, ℓ, a
-        log_lo, log_hi = (math.log(x) for x in RIGID_RESISTANCES)
-        face, path = rigid_landings(
+        log_lo, log_hi = (math.log(x) for x in RESISTANCES)
+        face, path = traced_landings(
             coin,
             w,
             v_int,
             preset.restitution.ppf(u[0]),
             preset.friction.ppf(u[1]),
             np.exp(log_lo + (log_hi - log_lo) * u[2]),
-            RIGID_CORNER * u[3],
+            CORNER_RADIUS * u[3],
             dist.g,
         )
         estimate = BinomialEstimate(
             int(np.count_nonzero(face == EDGE)), integrated, streams.reported_seed(root)
         )
         bands.append(
-            RigidBand(
+            Band(
                 preset.name,
                 (float(e_ends[0]), float(e_ends[1])),
                 (float(mu_ends[0]), float(mu_ends[1])),
-                RIGID_RESISTANCES,
+                RESISTANCES,
                 corners,
                 edge,
                 paths,
                 n,
                 estimate,
                 _path_counts(face, path),
+                centre,
                 dict(preset.sources),
             )
         )
@@ -620,7 +597,7 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
         "resistance": first.resistance[il],
         "corner_radius": coin.thickness / 2.0,
     }
-    face, _ = rigid_landings(
+    face, _ = traced_landings(
         coin,
         omega,
         v0,
@@ -633,18 +610,16 @@ def rigid_nickel(n: int, seed: streams.SeedLike, integrated: int | None = None) 
     round_rim = BinomialEstimate(
         int(np.count_nonzero(face == EDGE)), n, streams.reported_seed(root)
     )
-    return RigidNickel(
+    return NickelBand(
         tuple(bands), round_rim, worst, streams.reported_seed(root), time.perf_counter() - t0
     )
 
 
 # --- MuJoCo --------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class EndingRun:
-    """coinflight's faces at rest of the compared tosses with one ending of the landing."""
+class LandingRun:
+    """coinflight's landing of the compared tosses: faces at rest, what did not settle, time."""
 
-    ending: str
-    """``"rocking"`` (:class:`~coinflight.model.surface.Surface` ``ending``)."""
     rest: NDArray[np.int8]
     unsettled: int
     """Tosses that had not settled when the simulation stopped (counted by their well)."""
@@ -652,17 +627,18 @@ class EndingRun:
     """Wall time of the landings (compiled before timing), s."""
     at_impact: int = 0
     """Tosses ended at an impact by the energy test (status SETTLED_ENERGY), before the
-    ending proper starts."""
+    rigid 3-D phase of the landing starts."""
 
 
 @dataclass(frozen=True)
 class MujocoComparison:
     """Identical tosses in coinflight and MuJoCo; see :func:`mujoco_comparison`.
 
-    ``rocking`` is coinflight's landing of the tosses with its default ending
-    (:class:`EndingRun`); ``first`` coinflight's wells at the first contact; ``mujoco``
-    MuJoCo's run (faces at the first contact and at the end, the tosses still moving at its
-    limit, how long each took to settle).
+    ``coinflight`` is coinflight's landing of the tosses (:class:`LandingRun`), with MuJoCo's
+    torsional and rolling friction as its pivoting and rolling resistance; ``first``
+    coinflight's wells at the first contact; ``mujoco`` MuJoCo's run (faces at the first
+    contact and at the end, the tosses still moving at its limit, how long each took to
+    settle).
     """
 
     n: int
@@ -670,14 +646,13 @@ class MujocoComparison:
     restitution: float
     friction: float
     first: NDArray[np.int8]
-    rocking: EndingRun
+    coinflight: LandingRun
     mujoco: Any  # mujoco_compare.MujocoRun (a module importable without MuJoCo)
     settings: dict[str, Any]
-
-    @property
-    def endings(self) -> tuple[EndingRun, ...]:
-        """coinflight's runs: the rocking ending's."""
-        return (self.rocking,)
+    rolling_resistance: float = 0.0
+    """coinflight's rolling resistance ℓ_r, m (MuJoCo's rolling friction)."""
+    pivoting_resistance: float = 0.0
+    """coinflight's pivoting resistance ℓ_p, m (MuJoCo's torsional friction)."""
 
     @property
     def mujoco_first(self) -> NDArray[np.int8]:
@@ -699,13 +674,15 @@ class MujocoComparison:
         """MuJoCo's wall time, s."""
         return float(self.mujoco.elapsed)
 
-    def agreement(self, run: EndingRun) -> float:
-        """Fraction of tosses with the same face at rest in ``run`` and in MuJoCo."""
-        return float(np.mean(run.rest == self.mujoco_rest))
+    @property
+    def rest_agreement(self) -> float:
+        """Fraction of tosses with the same face at rest in coinflight and in MuJoCo."""
+        return float(np.mean(self.coinflight.rest == self.mujoco_rest))
 
-    def ratio(self, run: EndingRun) -> float:
-        """``run``'s tosses a second over MuJoCo's (same tosses, same machine, one run)."""
-        return self.mujoco_seconds / run.seconds
+    @property
+    def speed_ratio(self) -> float:
+        """coinflight's tosses a second over MuJoCo's (same tosses, same machine, one run)."""
+        return self.mujoco_seconds / self.coinflight.seconds
 
     @property
     def first_agreement(self) -> float:
@@ -741,9 +718,13 @@ def mujoco_comparison(
     ``limit`` s past its first contact, default
     :data:`~coinflight.studies.mujoco_compare.SETTLE`); ImportError without MuJoCo.
 
-    coinflight lands them with its default ending (planar rocking). How the two contact models
+    coinflight's landing is given MuJoCo's rolling and torsional friction as its rolling and
+    pivoting resistance (:data:`~coinflight.studies.mujoco_compare.ROLLING`,
+    :data:`~coinflight.studies.mujoco_compare.TORSIONAL`). How the two contact models still
     differ (MuJoCo's pyramidal cone and soft, creeping friction, instantaneous against soft
-    impacts) is listed in :mod:`coinflight.studies.mujoco_compare`.
+    impacts) is listed in :mod:`coinflight.studies.mujoco_compare`. Cost: ``n`` landings
+    carried to rest in coinflight, and MuJoCo's
+    (:func:`~coinflight.studies.mujoco_compare.seconds_estimate`, bounded before it runs).
     """
     from coinflight.studies import mujoco_compare
 
@@ -751,11 +732,20 @@ def mujoco_comparison(
     limit = mujoco_compare.SETTLE if limit is None else limit
     mujoco_compare.check_limit(limit)
     mujoco_compare.bound([n], limit)
+    _bound(f"the MuJoCo comparison: {n} tosses in coinflight", n)
     root = streams.seed_sequence(seed)
     dist = mujoco_tosses()
     omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
-    surface = Surface("table", DROP_HEIGHT, restitution, friction)
-    rocking, first, _ = _ending_run(dist, omega, v0, surface)
+    rolling, pivoting = mujoco_compare.ROLLING, mujoco_compare.TORSIONAL
+    surface = Surface(
+        "table",
+        DROP_HEIGHT,
+        restitution,
+        friction,
+        rolling_resistance=rolling,
+        pivoting_resistance=pivoting,
+    )
+    ours, first, _ = _landing_run(dist, omega, v0, surface)
     engine = mujoco_compare.Engine(limit=limit)
     theirs = mujoco_compare.run(
         dist.coin, omega, v0, DROP_HEIGHT, restitution, friction, dist.g, threads, engine
@@ -766,9 +756,11 @@ def mujoco_comparison(
         restitution,
         friction,
         first,
-        rocking,
+        ours,
         theirs,
         theirs.settings(friction),
+        rolling,
+        pivoting,
     )
 
 
@@ -784,12 +776,12 @@ def _at_impact(status: NDArray[np.int8]) -> int:
     return int(np.count_nonzero(status == Status.SETTLED_ENERGY))
 
 
-def _ending_run(
+def _landing_run(
     dist: TossDistribution,
     omega: NDArray[np.float64],
     v0: NDArray[np.float64],
     surface: Surface,
-) -> tuple[EndingRun, NDArray[np.int8], NDArray[np.int8]]:
+) -> tuple[LandingRun, NDArray[np.int8], NDArray[np.int8]]:
     """(coinflight's run of the tosses on ``surface``, wells at the first contact, statuses);
     the landings compiled on two tosses before the timing."""
     from coinflight.outcomes.table import land
@@ -799,9 +791,7 @@ def _ending_run(
     out = land(dist.coin, omega, v0, 1.0, dist.g, surface)
     seconds = time.perf_counter() - t0
     first = land(dist.coin, omega, v0, 1.0, dist.g, surface, max_bounces=0).face
-    run = EndingRun(
-        surface.ending, out.face, _unsettled(out.status), seconds, _at_impact(out.status)
-    )
+    run = LandingRun(out.face, _unsettled(out.status), seconds, _at_impact(out.status))
     return run, first, out.status
 
 
@@ -810,49 +800,39 @@ def thick_experiments(
     n: int,
     seed: streams.SeedLike,
     points: int = 2,
-    rigid: int = 0,
     psi: float | Literal["human"] | None = None,
 ) -> tuple[EdgeExperiments, list[str]]:
     """The measured thick-cylinder edge fractions shipped with coinflight
     (:func:`coinflight.datasets.edge_experiments`, those a setting simulates:
     :func:`coinflight.studies.edge_experiments.from_dataset`) beside the model's band
-    (:func:`coinflight.studies.edge_experiments.edge_experiments`: ``n`` rocking tosses per
-    cell, ``points`` values per parameter, ``rigid`` rigid-ending tosses per cell; ``psi`` a
-    wobble, "human" the toss preset's), from the seed's child for this question.
-    Returns (EdgeExperiments, the records left out and why)."""
+    (:func:`coinflight.studies.edge_experiments.edge_experiments`: ``n`` tosses per cell,
+    ``points`` values per parameter; ``psi`` a wobble, "human" the toss preset's), from the
+    seed's child for this question. Returns (EdgeExperiments, the records left out and why)."""
     from coinflight.datasets import edge_experiments as dataset
     from coinflight.studies.edge_experiments import edge_experiments, from_dataset
 
     records, left = from_dataset(dataset())
     root = streams.seed_sequence(seed)
-    result = edge_experiments(
-        records,
-        n,
-        streams.child(root, _EXPERIMENTS),
-        points=points,
-        rigid=rigid,
-        psi=psi,
-    )
+    result = edge_experiments(records, n, streams.child(root, _EXPERIMENTS), points=points, psi=psi)
     return result, left
 
 
 __all__ = [
     "COIN",
+    "CORNER_RADIUS",
     "DROP_HEIGHT",
+    "EDGE_PATHS",
     "EXPERIMENTS_CHILD",
     "MURRAY_TEARE",
     "RATIOS",
-    "RIGID_CORNER",
-    "RIGID_PATHS",
-    "RIGID_RESISTANCES",
+    "RESISTANCES",
     "Band",
     "BouncingEdges",
     "ContactMaps",
     "DeadLanding",
-    "EndingRun",
+    "LandingRun",
     "MujocoComparison",
-    "RigidBand",
-    "RigidNickel",
+    "NickelBand",
     "bouncing_edges",
     "contact_maps",
     "dead_landings",
@@ -860,7 +840,6 @@ __all__ = [
     "mujoco_comparison",
     "mujoco_tosses",
     "nickel_band",
-    "rigid_landings",
-    "rigid_nickel",
     "thick_experiments",
+    "traced_landings",
 ]

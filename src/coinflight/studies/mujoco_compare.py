@@ -6,9 +6,8 @@ with time constant ``timeconst`` and damping ratio ``dampratio`` (MuJoCo documen
 "Computation", solver parameters ``solref``), a pyramidal friction cone (its default) with
 sliding, torsional and rolling coefficients. coinflight flies the coin exactly between
 impacts and resolves each impact with its restitution and friction
-(:mod:`coinflight.core.bounce`); the bounces end in one of two ways (``Surface(ending=...)``):
-the planar rocking hand-off (default) or the rigid 3-D ending
-(:mod:`coinflight.core.rigid_ending`, with rolling and pivoting resistance). What is
+(:mod:`coinflight.core.bounce`); when the bounces die out, the rigid 3-D phase carries it to
+rest (:mod:`coinflight.core.rigid_ending`, with rolling and pivoting resistance). What is
 compared:
 
 * the well the coin is in at its **first contact** (geometry and free flight only: the two
@@ -30,12 +29,12 @@ Settings, chosen to make the two engines' contacts as alike as MuJoCo allows:
   coefficients are ignored (documentation, "Computation", Contact, ``condim``: 3 is "a
   regular frictional contact", 4 adds torsional friction, 6 adds rolling friction).
 
-How MuJoCo's coefficients map onto coinflight's rigid ending. In MuJoCo's friction cone
+How MuJoCo's coefficients map onto coinflight's landing. In MuJoCo's friction cone
 the torsional torque about the contact normal is bounded by μ_torsional f_n and each rolling
 torque by μ_rolling f_n (elliptic cone: f_1² ≥ Σ f_i²/μ_(i−1)²; the pyramidal cone used here
 by default bounds the same torques along its edges), both coefficients "have units of
 length" ("the diameter of the surface contact patch" and "the depth of the local
-deformation within which energy is dissipated"). coinflight's rigid ending resists rolling
+deformation within which energy is dissipated"). coinflight's landing resists rolling
 with a torque ℓ_r F_n and pivoting with ℓ_p F_n at its point contact, ℓ_r, ℓ_p lengths
 (:mod:`coinflight.core.rigid_contact`): the same form, so ℓ_r = μ_rolling = 1e-4 m and
 ℓ_p = μ_torsional = 5e-3 m (:data:`ROLLING`, :data:`TORSIONAL`). The map is one to one in
@@ -97,10 +96,10 @@ TIMECONST = 1e-3
 rule) and short enough for a millimetre-thin coin."""
 TORSIONAL = 0.005
 """MuJoCo's default torsional friction coefficient, m (``friction="μ 0.005 0.0001"``); the
-pivoting resistance ℓ_p of coinflight's rigid ending (module notes)."""
+pivoting resistance ℓ_p coinflight's landing is given when compared (module notes)."""
 ROLLING = 0.0001
 """MuJoCo's default rolling friction coefficient, m; the rolling resistance ℓ_r of
-coinflight's rigid ending (module notes)."""
+coinflight's landing when compared (module notes)."""
 CONDIM = 6
 """MuJoCo's contact dimension: 6 = normal, two sliding, torsional and two rolling directions, so
 that :data:`TORSIONAL` and :data:`ROLLING` act (MuJoCo's default, 3, ignores them)."""
@@ -853,7 +852,7 @@ def run_from(
 ) -> MujocoRun:
     """Coins already at the table in MuJoCo: centre ``height`` (k,) m, ``velocity`` (k, 3) m/s,
     heads ``normal`` (k, 3) and angular velocity ``omega`` (k, 3) rad/s, all in the lab frame
-    (coinflight's state at its hand-off to the 3-D ending, for example), carried as in
+    (coinflight's state when its bounces die out, for example), carried as in
     :func:`run` with ``engine``'s settings (the first contact is their first touch of the
     plane; the contact damping calibrated at ``calibration_speed``, m/s)."""
     z = np.asarray(height, dtype=float).reshape(-1)
