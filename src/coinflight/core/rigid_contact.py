@@ -219,6 +219,9 @@ a slide starting on the friction cone's boundary that the stop event ends as it 
 again and again (a rounding-level loop, seen once in 84 hand-off landings)."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
+ENERGY_MOVE = 1e-4
+"""The largest relative change of the velocities by which a step is put back on its energy
+(:func:`_keep_energy`); a step's energy error is ~RTOL of it, far below."""
 
 
 @njit(cache=True, inline="always")
@@ -450,7 +453,9 @@ def _derivative(y, out, c, mode, dx, dy):
 
 @njit(cache=True)
 def _flow(y, out, c, mode, dx, dy, side):
-    """:func:`_derivative` on the rim ``side`` (:func:`_basis`)."""
+    """:func:`_derivative` on the rim ``side`` (:func:`_basis`); returns the power of the
+    contact (the rate of the mechanical energy, W: ≤ 0, Coulomb friction and the
+    resistances)."""
     w, b, rho, omega, tau, u = _terms(y, c, side)
     f, _, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
     n = (y[4], y[5], y[6])
@@ -470,6 +475,14 @@ def _flow(y, out, c, mode, dx, dy, side):
     if y.shape[0] > 10:  # the horizontal position, carried along (not in the error control)
         out[10] = y[1]
         out[11] = y[2]
+    # The power of the contact force and the resistance torques: F·u + F_z τ·ω (the rate of
+    # the energy ½ m v² + ½ L·ω + m g z: m v·a + ω·L̇ + m g v_z with L̇ = ρ × F + F_z τ), on the
+    # constraints: u = 0 rolling, u_z = 0 sliding (a stage point's drift off them does no
+    # physical work).
+    power = f[2] * (tau[0] * omega[0] + tau[1] * omega[1] + tau[2] * omega[2])
+    if mode == SLIDING:
+        power += f[0] * u[0] + f[1] * u[1]
+    return power
 
 
 @njit(cache=True)
@@ -513,12 +526,52 @@ def _first_crossed(e):
 
 
 @njit(cache=True)
-def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new):
-    """One Dormand-Prince step of h from y (k1 = f(y) given) on the rim ``side``: ``new`` and
-    the error estimate (k7 = f(new))."""
+def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power):
+    """One Dormand-Prince step of h from y (k1 = f(y) given, its power in power[1]) on the rim
+    ``side``: ``new`` and the error estimate (k7 = f(new)); the stages' powers in power[2:8].
+    Returns the work of the contact over the step, J: the power's quadrature by the pair's
+    fifth-order weights (the energy's change on the exact flow; the quadrature of an extra
+    component dW/dt = P, Hairer, Lubich & Wanner, *Geometric Numerical Integration*, IV.4)."""
     for s in range(2, 8):
         point = dp.stage(s, y, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
-        _flow(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, dx, dy, side)
+        power[s] = _flow(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, dx, dy, side)
+    return h * (
+        dp.B1 * power[1] + dp.B3 * power[3] + dp.B4 * power[4] + dp.B5 * power[5] + dp.B6 * power[6]
+    )
+
+
+@njit(cache=True)
+def _keep_energy(y, c, target):
+    """Put y on its energy, ``target`` (J): the velocities v and L scaled by one factor λ so
+    that ½ m v² + ½ L·ω + m g z = target (Hairer, Lubich & Wanner, *Geometric Numerical
+    Integration*, IV.4, projection onto an invariant; here the energy at the run's start less
+    the work of friction and the resistances since, :func:`_step`). Scaling is the orthogonal
+    projection onto the energy's level set in the kinetic-energy metric (the energy's gradient
+    in the velocities is the velocity itself there), and it keeps the contact's constraints
+    on the velocity (u = 0 rolling, u_z = 0 sliding: u is linear in (v, L)). Applied only for a
+    change below :data:`ENERGY_MOVE` (the drift of the steps); else y is left as it is. Not
+    applied without friction: the contact force is then vertical, at a point in the plane of n
+    and Z, so that the horizontal momentum, L_z and L·n are conserved, linear invariants that
+    the Runge–Kutta steps keep to rounding (Hairer, Lubich & Wanner, IV.1) and a scaling would
+    not. Returns the energy of y after."""
+    m = c.mass
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    kinetic = 0.5 * m * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3]) + 0.5 * dot(lm, omega)
+    potential = m * c.g * y[0]
+    want = target - potential
+    if kinetic > 0.0 and want > 0.0 and c.friction > 0.0:
+        scale = math.sqrt(want / kinetic)
+        if abs(scale - 1.0) < ENERGY_MOVE:
+            y[1] *= scale
+            y[2] *= scale
+            y[3] *= scale
+            y[7] *= scale
+            y[8] *= scale
+            y[9] *= scale
+            return target
+    return kinetic + potential
 
 
 @njit(cache=True)
@@ -666,7 +719,11 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         scale[i + 6] = c.i1 * speed / reach
     t = 0.0
     h = 1e-4
-    _flow(y, k1, c, mode, dx, dy, side)
+    power = np.empty(8)
+    power[1] = _flow(y, k1, c, mode, dx, dy, side)
+    # The energy the flow should have: the start's, less the work of the contact since
+    # (:func:`_step`); each accepted step is put back on it (:func:`_keep_energy`).
+    target = _motion_energy(y, c)
     accepted = 0
     stalled = 0
     while True:
@@ -690,7 +747,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 floor = SLIP_FLOOR
         err = math.inf
         for _ in range(60):
-            _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+            work = _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power)
             err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
             if err <= 1.0:
                 break
@@ -716,6 +773,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             bisect = False
             for i in range(size):
                 trial[i] = new[i]
+            trial_work = work
             while hi - lo > EVENT_TIME and hi - lo > 1e-15 * hi:
                 width = hi - lo
                 j = _first_crossed(e_hi)
@@ -729,7 +787,9 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     margin = 0.25 * EVENT_TIME
                     mid = lo + width * (f_lo / (f_lo - f_hi))
                     mid = min(max(mid, lo + margin), hi - margin)
-                _step(y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+                mid_work = _step(
+                    y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power
+                )
                 counts[2] += 1.0
                 e_mid = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
                 if _crossed(e_mid):
@@ -738,6 +798,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     f_hi = e_mid[which]
                     for i in range(size):
                         trial[i] = new[i]
+                    trial_work = mid_work
                     f_lo = 0.5 * f_lo if kept == 1 else f_lo
                     kept = 1
                 else:
@@ -765,6 +826,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             gap, drift = _project_on(y, c, SLIDING, side)
             counts[4] = max(counts[4], gap)
             counts[5] = max(counts[5], drift)
+            target = _keep_energy(y, c, target + trial_work)
             if ev[4] < 0.0:
                 return t, mode, FACE
             if ev[2] <= 0.0:
@@ -800,7 +862,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 if f[2] < 0.0:
                     return t, FREE, LIFT_OFF
             counts[3] += 1.0
-            _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side)
+            target = _motion_energy(y, c)  # after the stick's impulse, if any
             h = max(h, 1e-7)
             continue
         t += h
@@ -811,11 +874,13 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         gap, drift = _project_on(y, c, mode, side)
         counts[4] = max(counts[4], gap)
         counts[5] = max(counts[5], drift)
+        target = _keep_energy(y, c, target + work)
         # First same as last: k7, the derivative at the step's end before the projection (which
         # moves the state by the drift reported, ≲1e-11 m and 1e-9 m/s, measured: far below the
         # step's tolerance), as contact_phase keeps it across n's renormalisation.
         for i in range(size):
             k1[i] = k7[i]
+        power[1] = power[7]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
         if mode == SLIDING and _sticks(y, c, side):
             # A slide below SLIP_FLOOR whose rolling force is back inside the cone has stopped
@@ -825,7 +890,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             mode = ROLLING
             _project_on(y, c, ROLLING, side)
             counts[3] += 1.0
-            _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side)
+            target = _motion_energy(y, c)
 
 
 class RigidRun(NamedTuple):

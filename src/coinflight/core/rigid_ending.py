@@ -93,7 +93,7 @@ from coinflight.core.impact import (
 )
 from coinflight.core.outcome import Face, Status
 
-RTOL = 1e-9
+RTOL = 1e-7
 """Relative tolerance of the one-rim contact's step control in the ending (Dormand–Prince 5(4),
 :func:`coinflight.core.rigid_contact.advance_rigid`): Euler's disk rolling 5 s without
 resistances keeps its energy to 2e-7 of it (the drift is the stepper's, ∝ the tolerance: 2e-6
