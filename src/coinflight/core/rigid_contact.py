@@ -448,16 +448,20 @@ def _contact_force(w, b, u, mu, mode, dx, dy):
 def _derivative(y, out, c, mode, dx, dy):
     """dy/dt of y = (z, v, n, L) in ``mode`` (ROLLING or SLIDING along the slip, or (dx, dy) at a
     slip below :data:`STICK_SPEED`), on the lower rim."""
-    _flow(y, out, c, mode, dx, dy, _side(y[6]))
+    _flow(y, out, c, mode, dx, dy, _side(y[6]), np.empty(6))
 
 
 @njit(cache=True)
-def _flow(y, out, c, mode, dx, dy, side):
+def _flow(y, out, c, mode, dx, dy, side, seen):
     """:func:`_derivative` on the rim ``side`` (:func:`_basis`); returns the power of the
     contact (the rate of the mechanical energy, W: ≤ 0, Coulomb friction and the
-    resistances)."""
+    resistances). ``seen`` receives (F, c_N, u_x, u_y) at y, from which
+    :func:`_event_values` finds the events there without evaluating the terms again."""
     w, b, rho, omega, tau, u = _terms(y, c, side)
-    f, _, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
+    f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
+    seen[0], seen[1], seen[2] = f
+    seen[3] = coef
+    seen[4], seen[5] = u[0], u[1]
     n = (y[4], y[5], y[6])
     torque = cross(rho, f)
     nd = cross(omega, n)
@@ -494,14 +498,20 @@ def _events(y, c, mode, dx, dy, sx, sy, floor, band, side):
     the start (0: no band, no second-rim event); ``side``: the run's rim (:func:`_basis`)."""
     w, b, _, _, _, u = _terms(y, c, side)
     f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
-    nz = y[6]
+    return _event_values(f, coef, u[0], u[1], y[6], c.friction, mode, sx, sy, floor, band)
+
+
+@njit(cache=True)
+def _event_values(f, coef, ux, uy, nz, mu, mode, sx, sy, floor, band):
+    """:func:`_events` from the contact force F, c_N and the slip (u_x, u_y) at the point and
+    its n_z (as :func:`_flow` leaves them in ``seen``)."""
     second = nz * band if band != 0.0 else 1.0
     face = math.sqrt(max(0.0, 1.0 - nz * nz)) - FACE_SINE
     if mode == ROLLING:
-        cone = c.friction * f[2] - math.sqrt(f[0] * f[0] + f[1] * f[1])
+        cone = mu * f[2] - math.sqrt(f[0] * f[0] + f[1] * f[1])
         return f[2], cone, 1.0, second, face
-    along = u[0] * sx + u[1] * sy
-    slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
+    along = ux * sx + uy * sy
+    slip = math.sqrt(ux * ux + uy * uy)
     stop = min(along, slip - floor)
     return (f[2] if coef > 0.0 else 1.0), stop, coef, second, face
 
@@ -526,15 +536,27 @@ def _first_crossed(e):
 
 
 @njit(cache=True)
-def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power):
+def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen):
     """One Dormand-Prince step of h from y (k1 = f(y) given, its power in power[1]) on the rim
-    ``side``: ``new`` and the error estimate (k7 = f(new)); the stages' powers in power[2:8].
+    ``side``: ``new`` and the error estimate (k7 = f(new)); the stages' powers in power[2:8],
+    and ``seen`` at ``new`` (:func:`_flow`).
     Returns the work of the contact over the step, J: the power's quadrature by the pair's
     fifth-order weights (the energy's change on the exact flow; the quadrature of an extra
     component dW/dt = P, Hairer, Lubich & Wanner, *Geometric Numerical Integration*, IV.4)."""
-    for s in range(2, 8):
-        point = dp.stage(s, y, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
-        power[s] = _flow(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, dx, dy, side)
+    # The stages written out: a loop over them, picking each one's arrays at run time, takes
+    # about as long again as the six rate evaluations themselves.
+    dp.stage(2, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[2] = _flow(tmp, k2, c, mode, dx, dy, side, seen)
+    dp.stage(3, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[3] = _flow(tmp, k3, c, mode, dx, dy, side, seen)
+    dp.stage(4, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[4] = _flow(tmp, k4, c, mode, dx, dy, side, seen)
+    dp.stage(5, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[5] = _flow(tmp, k5, c, mode, dx, dy, side, seen)
+    dp.stage(6, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[6] = _flow(tmp, k6, c, mode, dx, dy, side, seen)
+    dp.stage(7, y, h, k1, k2, k3, k4, k5, k6, new)
+    power[7] = _flow(new, k7, c, mode, dx, dy, side, seen)
     return h * (
         dp.B1 * power[1] + dp.B3 * power[3] + dp.B4 * power[4] + dp.B5 * power[5] + dp.B6 * power[6]
     )
@@ -663,13 +685,24 @@ def _classify_on(y, c, side):
 
 
 @njit(cache=True)
+def _slip_velocity(y, c, side):
+    """u = v + ω × ρ, the velocity of the material point at the contact on the rim ``side``,
+    m/s (as :func:`_terms` finds it)."""
+    n = (y[4], y[5], y[6])
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    rho, _, _, _, _, _ = _basis(n, c, side)
+    wr = cross(omega, rho)
+    return (y[1] + wr[0], y[2] + wr[1], y[3] + wr[2])
+
+
+@njit(cache=True)
 def _sticks(y, c, side):
     """Whether a sliding contact on the rim ``side`` has stopped: its slip below
     :data:`SLIP_FLOOR` and the rolling force inside the friction cone (and pressing)."""
-    _, _, _, _, _, u = _terms(y, c, side)
+    w, b, _, _, _, u = _terms(y, c, side)
     if u[0] * u[0] + u[1] * u[1] > SLIP_FLOOR * SLIP_FLOOR:
         return False
-    f = _rolling(y, c, side)
+    f = _solve3(w, (-b[0], -b[1], -b[2]))
     return f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]
 
 
@@ -720,7 +753,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
     t = 0.0
     h = 1e-4
     power = np.empty(8)
-    power[1] = _flow(y, k1, c, mode, dx, dy, side)
+    seen = np.empty(6)
+    power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
     # The energy the flow should have: the start's, less the work of the contact since
     # (:func:`_step`); each accepted step is put back on it (:func:`_keep_energy`).
     target = _motion_energy(y, c)
@@ -739,7 +773,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # The slip's direction at the step's start (SLIDING), for its stop event.
         sx, sy, floor = dx, dy, 0.0
         if mode == SLIDING:
-            _, _, _, _, _, u = _terms(y, c, side)
+            u = _slip_velocity(y, c, side)
             slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
             if slip > STICK_SPEED:
                 sx, sy = u[0] / slip, u[1] / slip
@@ -747,7 +781,9 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 floor = SLIP_FLOOR
         err = math.inf
         for _ in range(60):
-            work = _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power)
+            work = _step(
+                y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
+            )
             err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
             if err <= 1.0:
                 break
@@ -757,7 +793,20 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             return t, mode, STEP_FAILED
         accepted += 1
         counts[0] += 1.0
-        ev = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
+        mu = c.friction
+        ev = _event_values(
+            (seen[0], seen[1], seen[2]),
+            seen[3],
+            seen[4],
+            seen[5],
+            new[6],
+            mu,
+            mode,
+            sx,
+            sy,
+            floor,
+            band,
+        )
         if _crossed(ev):
             # Locate the first time an event function crosses: regula falsi on the function
             # that has crossed, Illinois-modified (Dowell & Jarratt 1971, BIT 11:168: the end
@@ -788,10 +837,22 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     mid = lo + width * (f_lo / (f_lo - f_hi))
                     mid = min(max(mid, lo + margin), hi - margin)
                 mid_work = _step(
-                    y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power
+                    y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
                 )
                 counts[2] += 1.0
-                e_mid = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
+                e_mid = _event_values(
+                    (seen[0], seen[1], seen[2]),
+                    seen[3],
+                    seen[4],
+                    seen[5],
+                    new[6],
+                    mu,
+                    mode,
+                    sx,
+                    sy,
+                    floor,
+                    band,
+                )
                 if _crossed(e_mid):
                     hi = mid
                     e_hi = e_mid
@@ -862,7 +923,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 if f[2] < 0.0:
                     return t, FREE, LIFT_OFF
             counts[3] += 1.0
-            power[1] = _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
             target = _motion_energy(y, c)  # after the stick's impulse, if any
             h = max(h, 1e-7)
             continue
@@ -890,7 +951,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             mode = ROLLING
             _project_on(y, c, ROLLING, side)
             counts[3] += 1.0
-            power[1] = _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
             target = _motion_energy(y, c)
 
 
