@@ -99,7 +99,19 @@ at events, and projects after every step. The projection keeps the flow on its c
 renormalised; z set so the gap is 0; u_z (SLIDING) or u (ROLLING) set to 0 by the impulse at the
 contact point that does it with least kinetic energy (P = −u_z/K_zz Z or P = −K⁻¹ u: Gauss's
 principle). The largest gap and constraint speed removed are reported (the drift; tests bound
-it).
+it). Then the energy: the work of the contact over the step, the quadrature of its power
+P = F·u + F_z τ·ω on the constraints (friction while sliding, the resistances) by the pair's
+fifth-order weights (an extra component dW/dt = P), is added to the energy the flow should
+have, and the velocities v and L are scaled by the one factor that puts the step on it: the
+projection onto an invariant of Hairer, Lubich & Wanner, *Geometric Numerical Integration*
+(2nd ed.), IV.4, orthogonal in the kinetic-energy metric, in which the energy's gradient in the
+velocities is the velocity itself; it keeps u = 0 or u_z = 0 (u is linear in v and L), and it
+neither adds nor removes the physical dissipation, which is the quadrature's. A rolling coin
+without resistances keeps its energy to rounding, whatever the tolerance. Without friction it
+is not applied: the flow then keeps the horizontal momentum and L_z, linear invariants that
+the steps keep to rounding and a scaling would not. A stick's impulse (the slip's remainder
+removed, dissipative) starts the energy afresh. In a slide the steps' error estimate in the
+slip is held below :data:`SLIP_ERROR` besides the tolerance.
 
 The ending: with ``settle``, the run stops when the coin's energy (no springs here: kinetic
 plus m g z) is below its well's barrier, as :func:`coinflight.core.contact_phase.below_barrier`
@@ -107,12 +119,12 @@ decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
 
 Speed
 -----
-A landing's contact takes about 2,000-3,000 accepted steps a simulated second at the ending's
-tolerance (1e-9), a few μs each: the coins the bounces hand over spin (one precessing at
-~100 rad/s takes steps of ~0.5 ms), switch between sticking and slipping at the cone's
-boundary (steps of ~15 μs while a small slip turns: near its stop the slip's direction turns at
-~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`, ~20 of them
-a stop), and lift off within milliseconds (events located in ~8 trial steps).
+A landing's contact takes about 1,000 accepted steps a simulated second at the ending's tolerance
+(1e-7), a few μs each (six rate evaluations; the stages written out): the coins the bounces hand
+over spin (one precessing at ~100 rad/s takes steps of ~0.5 ms), switch between sticking and
+slipping at the cone's boundary (steps of ~15 μs while a small slip turns: near its stop the slip's
+direction turns at ~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`,
+~20 of them a stop), and lift off within milliseconds (events located in ~8 trial steps).
 ``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a second.
 """
 
@@ -219,6 +231,12 @@ a slide starting on the friction cone's boundary that the stop event ends as it 
 again and again (a rounding-level loop, seen once in 84 hand-off landings)."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
+SLIP_ERROR = 0.1 * SLIP_FLOOR
+"""The largest error estimate of a sliding step in the slip u_h, m/s (besides the tolerance):
+a stopping slip is followed down to :data:`SLIP_FLOOR` only if the steps' error in it is
+well below it. Without it, at tolerances from about 1e-6, a slip that friction has stopped
+hovers above the floor at the size of the steps' error, its direction u_h/|u_h| (and the
+friction's) swinging from step to step, on thousands of short steps."""
 ENERGY_MOVE = 1e-4
 """The largest relative change of the velocities by which a step is put back on its energy
 (:func:`_keep_energy`); a step's energy error is ~RTOL of it, far below."""
@@ -685,6 +703,27 @@ def _classify_on(y, c, side):
 
 
 @njit(cache=True)
+def _slip_error(y, h, c, side, k1, k3, k4, k5, k6, k7):
+    """The error estimate of a step of h from y in the slip u_h (m/s): δu = δv + (I⁻¹ δL) × ρ
+    from the estimates δv, δL of :func:`coinflight.core.dormand_prince.error_ratio`."""
+    e = np.empty(10)
+    for i in (1, 2, 7, 8, 9):
+        e[i] = h * (
+            dp.E1 * k1[i]
+            + dp.E3 * k3[i]
+            + dp.E4 * k4[i]
+            + dp.E5 * k5[i]
+            + dp.E6 * k6[i]
+            + dp.E7 * k7[i]
+        )
+    n = (y[4], y[5], y[6])
+    rho, _, _, _, _, _ = _basis(n, c, side)
+    dw = angular_velocity((e[7], e[8], e[9]), n, c.i1, c.i3)
+    wr = cross(dw, rho)
+    return math.sqrt((e[1] + wr[0]) ** 2 + (e[2] + wr[1]) ** 2)
+
+
+@njit(cache=True)
 def _slip_velocity(y, c, side):
     """u = v + ω × ρ, the velocity of the material point at the contact on the rim ``side``,
     m/s (as :func:`_terms` finds it)."""
@@ -785,6 +824,10 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
             )
             err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
+            if mode == SLIDING:
+                slip_err = _slip_error(y, h, c, side, k1, k3, k4, k5, k6, k7) / SLIP_ERROR
+                if not slip_err <= err:
+                    err = slip_err
             if err <= 1.0:
                 break
             counts[1] += 1.0
