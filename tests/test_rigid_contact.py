@@ -550,3 +550,37 @@ def test_coin_falling_flat_stops_when_its_face_comes_down(tilt):
     assert run.reason == rc.FACE and 0.0 < run.time < 1.0
     assert run.event_steps <= 20
     assert math.sqrt(1.0 - y[6] ** 2) == pytest.approx(rc.FACE_SINE, abs=1e-10)
+
+
+def test_a_slide_that_friction_stops_sticks_at_a_loose_tolerance():
+    # A nickel sliding on its rim, spinning at 112 rad/s about the vertical, its slip 10 mm/s
+    # (the state 1.6 s into the rigid ending of a human toss; μ 0.3, resistances 1e-4 m): over
+    # the next 0.3 s friction stops its slip, and it sticks and slips again at the cone's
+    # boundary, rolling 0.14305 s of them at RTOL 1e-9. At 1e-5 the steps' error in the slip,
+    # were it left to the tolerance alone, reaches SLIP_FLOOR: a slip that friction has stopped
+    # would hover above the floor on that error, sliding on (rolling 0.011 s, measured before
+    # the slip's own error bound). Held below SLIP_ERROR, it is followed down to the stick: the
+    # rolling time within 2 % of 1e-9's (measured 1.2 %), and at 1e-7 within 1e-4 (2e-5).
+    c = coin_contact(NICKEL, friction=0.3, rolling_resistance=1e-4, pivoting_resistance=1e-4)
+    start = np.array(
+        [
+            1.0623688660938260e-02,
+            4.4132162119864572e-02,
+            -5.1537521713186839e-02,
+            9.3582236559775118e-04,
+            9.1675902553557498e-01,
+            3.6559324328693710e-01,
+            1.6091758624215555e-01,
+            1.6230093659677345e-06,
+            8.3969257126256987e-07,
+            1.6287760074119476e-05,
+        ]
+    )
+    rolled = {}
+    for rtol in (1e-9, 1e-7, 1e-5):
+        run = rc.advance_rigid(start.copy(), c, 0.3, rtol=rtol)
+        assert run.reason == rc.DURATION
+        rolled[rtol] = run.rolling_time
+    assert 0.1 < rolled[1e-9] < 0.2
+    assert rolled[1e-7] == pytest.approx(rolled[1e-9], rel=1e-4)
+    assert rolled[1e-5] == pytest.approx(rolled[1e-9], rel=0.02)
