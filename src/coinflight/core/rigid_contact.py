@@ -146,7 +146,6 @@ from coinflight.core.contact_phase import (
 from coinflight.core.impact import (
     _ray_direction,
     angular_velocity,
-    collision_matrix,
     contact_point,
     cross,
     dot,
@@ -287,6 +286,12 @@ def geometric_rate(n, omega, c):
 def _rate(n, omega, c, side):
     """:func:`geometric_rate` on the rim ``side`` (:func:`_basis`)."""
     _, w, s, sign, big_r, big_h = _basis(n, c, side)
+    return _rate_of(n, omega, w, s, sign, big_r, big_h)
+
+
+@njit(cache=True, inline="always")
+def _rate_of(n, omega, w, s, sign, big_r, big_h):
+    """:func:`_rate` from the basis of :func:`_basis` (ŵ, s, side, R, H)."""
     nd = cross(omega, n)
     nz, ndz = n[2], nd[2]
     k = nz * ndz / (s * s)
@@ -330,8 +335,8 @@ def _terms(y, c, side):
     lm = (y[7], y[8], y[9])
     i1, i3 = c.i1, c.i3
     omega = angular_velocity(lm, n, i1, i3)
-    rho, _, _, _, _, _ = _basis(n, c, side)
-    k = collision_matrix(rho, n, c.mass, i1, i3)
+    rho, wh, s, sign, big_r, big_h = _basis(n, c, side)
+    k = _collision(rho, n, c)
     tau = _resistance(omega, c)
     col = cross(inverse_inertia_apply(tau, n, i1, i3), rho)
     w = (k[0], k[1], k[2] + col[0], k[1], k[3], k[4] + col[1], k[2], k[4], k[5] + col[2])
@@ -339,13 +344,36 @@ def _terms(y, c, side):
     q = (1.0 / i3 - 1.0 / i1) * dot(nd, lm)
     p = (1.0 / i3 - 1.0 / i1) * dot(n, lm)
     gamma = (q * n[0] + p * nd[0], q * n[1] + p * nd[1], q * n[2] + p * nd[2])
-    rd = _rate(n, omega, c, side)
+    rd = _rate_of(n, omega, wh, s, sign, big_r, big_h)
     t1 = cross(gamma, rho)
     t2 = cross(omega, rd)
     b = (t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2] - c.g)
     wr = cross(omega, rho)
     u = (v[0] + wr[0], v[1] + wr[1], v[2] + wr[2])
     return w, b, rho, omega, tau, u
+
+
+@njit(cache=True, inline="always")
+def _collision(rho, n, c):
+    """The collision matrix K of the contact point ρ as
+    :func:`coinflight.core.impact.collision_matrix` gives it (Stronge 2000, eq 5.7), in closed
+    form: K = E/m + (|ρ|² E − ρ ρᵀ)/I1 + (1/I3 − 1/I1) q qᵀ, q = ρ × n (I⁻¹ = E/I1 +
+    (1/I3 − 1/I1) n nᵀ and (ρ × a)·(ρ × b) = |ρ|² a·b − (ρ·a)(ρ·b)). The same six entries,
+    to rounding."""
+    a = 1.0 / c.i1
+    d = 1.0 / c.i3 - a
+    mi = 1.0 / c.mass
+    rr = rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2]
+    q = cross(rho, n)
+    diag = mi + a * rr
+    return (
+        diag - a * rho[0] * rho[0] + d * q[0] * q[0],
+        -a * rho[0] * rho[1] + d * q[0] * q[1],
+        -a * rho[0] * rho[2] + d * q[0] * q[2],
+        diag - a * rho[1] * rho[1] + d * q[1] * q[1],
+        -a * rho[1] * rho[2] + d * q[1] * q[2],
+        diag - a * rho[2] * rho[2] + d * q[2] * q[2],
+    )
 
 
 @njit(cache=True)
@@ -637,7 +665,7 @@ def _project_on(y, c, mode, side):
     omega = angular_velocity(lm, n, c.i1, c.i3)
     wr = cross(omega, rho)
     u = (y[1] + wr[0], y[2] + wr[1], y[3] + wr[2])
-    k = collision_matrix(rho, n, c.mass, c.i1, c.i3)
+    k = _collision(rho, n, c)
     if mode == ROLLING:
         kk = (k[0], k[1], k[2], k[1], k[3], k[4], k[2], k[4], k[5])
         p = _solve3(kk, (-u[0], -u[1], -u[2]))

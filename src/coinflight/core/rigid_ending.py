@@ -99,10 +99,11 @@ RTOL = 1e-7
 is put back on the energy the flow should have (the start's less the work of friction and the
 resistances; :mod:`coinflight.core.rigid_contact`, Integration), so that Euler's disk rolling
 5 s without resistances keeps its energy to rounding at any tolerance. Chosen by the answers:
-over 1,504 human tosses of a nickel carried to rest (e 0.5, μ 0.3), the face fractions at 1e-7
-and at 1e-9 differ by 0.3, 0.1 and 0.2 points (tails, heads, edge), within one binomial
-standard error (1.3, 1.3 and 0.9 points); 25 of the landings (1.7 %) end on another face,
-long chaotic rolls (tests/test_rigid_ending.py compares the ending at RTOL and RTOL/10).
+over the 1,504 landings of 2,000 human tosses of a nickel carried to rest (e 0.5, μ 0.3), the
+face fractions at 1e-7 and at 1e-9 differ by 0.07, 0.07 and 0.13 points (tails, heads, edge),
+far within one binomial standard error (1.3, 1.3 and 0.9 points); 31 of the landings (2.1 %)
+end on another face, long chaotic rolls (14 between 1e-9 and 1e-10;
+tests/test_rigid_ending.py compares the ending at RTOL and RTOL/10).
 Half the steps of 1e-9. Looser is not faster: from ~1e-6 the steps' error in the contact's
 slip and friction cone nears :data:`coinflight.core.rigid_contact.SLIP_FLOOR`, and a coin
 near the cone's boundary switches between sticking and slipping on the noise, on more
