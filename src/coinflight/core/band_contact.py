@@ -407,10 +407,20 @@ def _crossed(e):
 
 @njit(cache=True)
 def _step(q, h, c, mode, d, k1, k2, k3, k4, k5, k6, k7, tmp, new):
-    """One Dormand–Prince step of h from q (k1 = f(q) given): ``new``, k7 = f(new)."""
-    for s in range(2, 8):
-        point = dp.stage(s, q, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
-        _rates(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, d)
+    """One Dormand–Prince step of h from q (k1 = f(q) given): ``new``, k7 = f(new). The stages
+    written out (a loop picking each one's arrays at run time is markedly slower)."""
+    dp.stage(2, q, h, k1, k2, k3, k4, k5, k6, tmp)
+    _rates(tmp, k2, c, mode, d)
+    dp.stage(3, q, h, k1, k2, k3, k4, k5, k6, tmp)
+    _rates(tmp, k3, c, mode, d)
+    dp.stage(4, q, h, k1, k2, k3, k4, k5, k6, tmp)
+    _rates(tmp, k4, c, mode, d)
+    dp.stage(5, q, h, k1, k2, k3, k4, k5, k6, tmp)
+    _rates(tmp, k5, c, mode, d)
+    dp.stage(6, q, h, k1, k2, k3, k4, k5, k6, tmp)
+    _rates(tmp, k6, c, mode, d)
+    dp.stage(7, q, h, k1, k2, k3, k4, k5, k6, new)
+    _rates(new, k7, c, mode, d)
 
 
 @njit(cache=True)

@@ -99,7 +99,19 @@ at events, and projects after every step. The projection keeps the flow on its c
 renormalised; z set so the gap is 0; u_z (SLIDING) or u (ROLLING) set to 0 by the impulse at the
 contact point that does it with least kinetic energy (P = −u_z/K_zz Z or P = −K⁻¹ u: Gauss's
 principle). The largest gap and constraint speed removed are reported (the drift; tests bound
-it).
+it). Then the energy: the work of the contact over the step, the quadrature of its power
+P = F·u + F_z τ·ω on the constraints (friction while sliding, the resistances) by the pair's
+fifth-order weights (an extra component dW/dt = P), is added to the energy the flow should
+have, and the velocities v and L are scaled by the one factor that puts the step on it: the
+projection onto an invariant of Hairer, Lubich & Wanner, *Geometric Numerical Integration*
+(2nd ed.), IV.4, orthogonal in the kinetic-energy metric, in which the energy's gradient in the
+velocities is the velocity itself; it keeps u = 0 or u_z = 0 (u is linear in v and L), and it
+neither adds nor removes the physical dissipation, which is the quadrature's. A rolling coin
+without resistances keeps its energy to rounding, whatever the tolerance. Without friction it
+is not applied: the flow then keeps the horizontal momentum and L_z, linear invariants that
+the steps keep to rounding and a scaling would not. A stick's impulse (the slip's remainder
+removed, dissipative) starts the energy afresh. In a slide the steps' error estimate in the
+slip is held below :data:`SLIP_ERROR` besides the tolerance.
 
 The ending: with ``settle``, the run stops when the coin's energy (no springs here: kinetic
 plus m g z) is below its well's barrier, as :func:`coinflight.core.contact_phase.below_barrier`
@@ -107,12 +119,12 @@ decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
 
 Speed
 -----
-A landing's contact takes about 2,000-3,000 accepted steps a simulated second at the ending's
-tolerance (1e-9), a few μs each: the coins the bounces hand over spin (one precessing at
-~100 rad/s takes steps of ~0.5 ms), switch between sticking and slipping at the cone's
-boundary (steps of ~15 μs while a small slip turns: near its stop the slip's direction turns at
-~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`, ~20 of them
-a stop), and lift off within milliseconds (events located in ~8 trial steps).
+A landing's contact takes about 1,000 accepted steps a simulated second at the ending's tolerance
+(1e-7), a few μs each (six rate evaluations; the stages written out): the coins the bounces hand
+over spin (one precessing at ~100 rad/s takes steps of ~0.5 ms), switch between sticking and
+slipping at the cone's boundary (steps of ~15 μs while a small slip turns: near its stop the slip's
+direction turns at ~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`,
+~20 of them a stop), and lift off within milliseconds (events located in ~8 trial steps).
 ``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a second.
 """
 
@@ -134,7 +146,6 @@ from coinflight.core.flight import (
 from coinflight.core.impact import (
     _ray_direction,
     angular_velocity,
-    collision_matrix,
     contact_point,
     cross,
     dot,
@@ -219,6 +230,15 @@ a slide starting on the friction cone's boundary that the stop event ends as it 
 again and again (a rounding-level loop, seen once in 84 hand-off landings)."""
 APPROACH = 1e-6
 """Default ``approach`` of :func:`advance_rigid`, m/s."""
+SLIP_ERROR = 0.1 * SLIP_FLOOR
+"""The largest error estimate of a sliding step in the slip u_h, m/s (besides the tolerance):
+a stopping slip is followed down to :data:`SLIP_FLOOR` only if the steps' error in it is
+well below it. Without it, at tolerances from about 1e-6, a slip that friction has stopped
+hovers above the floor at the size of the steps' error, its direction u_h/|u_h| (and the
+friction's) swinging from step to step, on thousands of short steps."""
+ENERGY_MOVE = 1e-4
+"""The largest relative change of the velocities by which a step is put back on its energy
+(:func:`_keep_energy`); a step's energy error is ~RTOL of it, far below."""
 
 
 @njit(cache=True, inline="always")
@@ -266,6 +286,12 @@ def geometric_rate(n, omega, c):
 def _rate(n, omega, c, side):
     """:func:`geometric_rate` on the rim ``side`` (:func:`_basis`)."""
     _, w, s, sign, big_r, big_h = _basis(n, c, side)
+    return _rate_of(n, omega, w, s, sign, big_r, big_h)
+
+
+@njit(cache=True, inline="always")
+def _rate_of(n, omega, w, s, sign, big_r, big_h):
+    """:func:`_rate` from the basis of :func:`_basis` (ŵ, s, side, R, H)."""
     nd = cross(omega, n)
     nz, ndz = n[2], nd[2]
     k = nz * ndz / (s * s)
@@ -309,8 +335,8 @@ def _terms(y, c, side):
     lm = (y[7], y[8], y[9])
     i1, i3 = c.i1, c.i3
     omega = angular_velocity(lm, n, i1, i3)
-    rho, _, _, _, _, _ = _basis(n, c, side)
-    k = collision_matrix(rho, n, c.mass, i1, i3)
+    rho, wh, s, sign, big_r, big_h = _basis(n, c, side)
+    k = _collision(rho, n, c)
     tau = _resistance(omega, c)
     col = cross(inverse_inertia_apply(tau, n, i1, i3), rho)
     w = (k[0], k[1], k[2] + col[0], k[1], k[3], k[4] + col[1], k[2], k[4], k[5] + col[2])
@@ -318,13 +344,36 @@ def _terms(y, c, side):
     q = (1.0 / i3 - 1.0 / i1) * dot(nd, lm)
     p = (1.0 / i3 - 1.0 / i1) * dot(n, lm)
     gamma = (q * n[0] + p * nd[0], q * n[1] + p * nd[1], q * n[2] + p * nd[2])
-    rd = _rate(n, omega, c, side)
+    rd = _rate_of(n, omega, wh, s, sign, big_r, big_h)
     t1 = cross(gamma, rho)
     t2 = cross(omega, rd)
     b = (t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2] - c.g)
     wr = cross(omega, rho)
     u = (v[0] + wr[0], v[1] + wr[1], v[2] + wr[2])
     return w, b, rho, omega, tau, u
+
+
+@njit(cache=True, inline="always")
+def _collision(rho, n, c):
+    """The collision matrix K of the contact point ρ as
+    :func:`coinflight.core.impact.collision_matrix` gives it (Stronge 2000, eq 5.7), in closed
+    form: K = E/m + (|ρ|² E − ρ ρᵀ)/I1 + (1/I3 − 1/I1) q qᵀ, q = ρ × n (I⁻¹ = E/I1 +
+    (1/I3 − 1/I1) n nᵀ and (ρ × a)·(ρ × b) = |ρ|² a·b − (ρ·a)(ρ·b)). The same six entries,
+    to rounding."""
+    a = 1.0 / c.i1
+    d = 1.0 / c.i3 - a
+    mi = 1.0 / c.mass
+    rr = rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2]
+    q = cross(rho, n)
+    diag = mi + a * rr
+    return (
+        diag - a * rho[0] * rho[0] + d * q[0] * q[0],
+        -a * rho[0] * rho[1] + d * q[0] * q[1],
+        -a * rho[0] * rho[2] + d * q[0] * q[2],
+        diag - a * rho[1] * rho[1] + d * q[1] * q[1],
+        -a * rho[1] * rho[2] + d * q[1] * q[2],
+        diag - a * rho[2] * rho[2] + d * q[2] * q[2],
+    )
 
 
 @njit(cache=True)
@@ -445,14 +494,20 @@ def _contact_force(w, b, u, mu, mode, dx, dy):
 def _derivative(y, out, c, mode, dx, dy):
     """dy/dt of y = (z, v, n, L) in ``mode`` (ROLLING or SLIDING along the slip, or (dx, dy) at a
     slip below :data:`STICK_SPEED`), on the lower rim."""
-    _flow(y, out, c, mode, dx, dy, _side(y[6]))
+    _flow(y, out, c, mode, dx, dy, _side(y[6]), np.empty(6))
 
 
 @njit(cache=True)
-def _flow(y, out, c, mode, dx, dy, side):
-    """:func:`_derivative` on the rim ``side`` (:func:`_basis`)."""
+def _flow(y, out, c, mode, dx, dy, side, seen):
+    """:func:`_derivative` on the rim ``side`` (:func:`_basis`); returns the power of the
+    contact (the rate of the mechanical energy, W: ≤ 0, Coulomb friction and the
+    resistances). ``seen`` receives (F, c_N, u_x, u_y) at y, from which
+    :func:`_event_values` finds the events there without evaluating the terms again."""
     w, b, rho, omega, tau, u = _terms(y, c, side)
-    f, _, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
+    f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
+    seen[0], seen[1], seen[2] = f
+    seen[3] = coef
+    seen[4], seen[5] = u[0], u[1]
     n = (y[4], y[5], y[6])
     torque = cross(rho, f)
     nd = cross(omega, n)
@@ -470,6 +525,14 @@ def _flow(y, out, c, mode, dx, dy, side):
     if y.shape[0] > 10:  # the horizontal position, carried along (not in the error control)
         out[10] = y[1]
         out[11] = y[2]
+    # The power of the contact force and the resistance torques: F·u + F_z τ·ω (the rate of
+    # the energy ½ m v² + ½ L·ω + m g z: m v·a + ω·L̇ + m g v_z with L̇ = ρ × F + F_z τ), on the
+    # constraints: u = 0 rolling, u_z = 0 sliding (a stage point's drift off them does no
+    # physical work).
+    power = f[2] * (tau[0] * omega[0] + tau[1] * omega[1] + tau[2] * omega[2])
+    if mode == SLIDING:
+        power += f[0] * u[0] + f[1] * u[1]
+    return power
 
 
 @njit(cache=True)
@@ -481,14 +544,20 @@ def _events(y, c, mode, dx, dy, sx, sy, floor, band, side):
     the start (0: no band, no second-rim event); ``side``: the run's rim (:func:`_basis`)."""
     w, b, _, _, _, u = _terms(y, c, side)
     f, coef, _, _ = _contact_force(w, b, u, c.friction, mode, dx, dy)
-    nz = y[6]
+    return _event_values(f, coef, u[0], u[1], y[6], c.friction, mode, sx, sy, floor, band)
+
+
+@njit(cache=True)
+def _event_values(f, coef, ux, uy, nz, mu, mode, sx, sy, floor, band):
+    """:func:`_events` from the contact force F, c_N and the slip (u_x, u_y) at the point and
+    its n_z (as :func:`_flow` leaves them in ``seen``)."""
     second = nz * band if band != 0.0 else 1.0
     face = math.sqrt(max(0.0, 1.0 - nz * nz)) - FACE_SINE
     if mode == ROLLING:
-        cone = c.friction * f[2] - math.sqrt(f[0] * f[0] + f[1] * f[1])
+        cone = mu * f[2] - math.sqrt(f[0] * f[0] + f[1] * f[1])
         return f[2], cone, 1.0, second, face
-    along = u[0] * sx + u[1] * sy
-    slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
+    along = ux * sx + uy * sy
+    slip = math.sqrt(ux * ux + uy * uy)
     stop = min(along, slip - floor)
     return (f[2] if coef > 0.0 else 1.0), stop, coef, second, face
 
@@ -513,12 +582,64 @@ def _first_crossed(e):
 
 
 @njit(cache=True)
-def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new):
-    """One Dormand-Prince step of h from y (k1 = f(y) given) on the rim ``side``: ``new`` and
-    the error estimate (k7 = f(new))."""
-    for s in range(2, 8):
-        point = dp.stage(s, y, h, k1, k2, k3, k4, k5, k6, new if s == 7 else tmp)
-        _flow(point, dp.rate(s, k2, k3, k4, k5, k6, k7), c, mode, dx, dy, side)
+def _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen):
+    """One Dormand-Prince step of h from y (k1 = f(y) given, its power in power[1]) on the rim
+    ``side``: ``new`` and the error estimate (k7 = f(new)); the stages' powers in power[2:8],
+    and ``seen`` at ``new`` (:func:`_flow`).
+    Returns the work of the contact over the step, J: the power's quadrature by the pair's
+    fifth-order weights (the energy's change on the exact flow; the quadrature of an extra
+    component dW/dt = P, Hairer, Lubich & Wanner, *Geometric Numerical Integration*, IV.4)."""
+    # The stages written out: a loop over them, picking each one's arrays at run time, takes
+    # about as long again as the six rate evaluations themselves.
+    dp.stage(2, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[2] = _flow(tmp, k2, c, mode, dx, dy, side, seen)
+    dp.stage(3, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[3] = _flow(tmp, k3, c, mode, dx, dy, side, seen)
+    dp.stage(4, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[4] = _flow(tmp, k4, c, mode, dx, dy, side, seen)
+    dp.stage(5, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[5] = _flow(tmp, k5, c, mode, dx, dy, side, seen)
+    dp.stage(6, y, h, k1, k2, k3, k4, k5, k6, tmp)
+    power[6] = _flow(tmp, k6, c, mode, dx, dy, side, seen)
+    dp.stage(7, y, h, k1, k2, k3, k4, k5, k6, new)
+    power[7] = _flow(new, k7, c, mode, dx, dy, side, seen)
+    return h * (
+        dp.B1 * power[1] + dp.B3 * power[3] + dp.B4 * power[4] + dp.B5 * power[5] + dp.B6 * power[6]
+    )
+
+
+@njit(cache=True)
+def _keep_energy(y, c, target):
+    """Put y on its energy, ``target`` (J): the velocities v and L scaled by one factor λ so
+    that ½ m v² + ½ L·ω + m g z = target (Hairer, Lubich & Wanner, *Geometric Numerical
+    Integration*, IV.4, projection onto an invariant; here the energy at the run's start less
+    the work of friction and the resistances since, :func:`_step`). Scaling is the orthogonal
+    projection onto the energy's level set in the kinetic-energy metric (the energy's gradient
+    in the velocities is the velocity itself there), and it keeps the contact's constraints
+    on the velocity (u = 0 rolling, u_z = 0 sliding: u is linear in (v, L)). Applied only for a
+    change below :data:`ENERGY_MOVE` (the drift of the steps); else y is left as it is. Not
+    applied without friction: the contact force is then vertical, at a point in the plane of n
+    and Z, so that the horizontal momentum, L_z and L·n are conserved, linear invariants that
+    the Runge–Kutta steps keep to rounding (Hairer, Lubich & Wanner, IV.1) and a scaling would
+    not. Returns the energy of y after."""
+    m = c.mass
+    n = (y[4], y[5], y[6])
+    lm = (y[7], y[8], y[9])
+    omega = angular_velocity(lm, n, c.i1, c.i3)
+    kinetic = 0.5 * m * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3]) + 0.5 * dot(lm, omega)
+    potential = m * c.g * y[0]
+    want = target - potential
+    if kinetic > 0.0 and want > 0.0 and c.friction > 0.0:
+        scale = math.sqrt(want / kinetic)
+        if abs(scale - 1.0) < ENERGY_MOVE:
+            y[1] *= scale
+            y[2] *= scale
+            y[3] *= scale
+            y[7] *= scale
+            y[8] *= scale
+            y[9] *= scale
+            return target
+    return kinetic + potential
 
 
 @njit(cache=True)
@@ -544,7 +665,7 @@ def _project_on(y, c, mode, side):
     omega = angular_velocity(lm, n, c.i1, c.i3)
     wr = cross(omega, rho)
     u = (y[1] + wr[0], y[2] + wr[1], y[3] + wr[2])
-    k = collision_matrix(rho, n, c.mass, c.i1, c.i3)
+    k = _collision(rho, n, c)
     if mode == ROLLING:
         kk = (k[0], k[1], k[2], k[1], k[3], k[4], k[2], k[4], k[5])
         p = _solve3(kk, (-u[0], -u[1], -u[2]))
@@ -610,13 +731,55 @@ def _classify_on(y, c, side):
 
 
 @njit(cache=True)
+def _slip_error(y, h, c, side, k1, k3, k4, k5, k6, k7):
+    """The error estimate of a step of h from y in the slip u_h (m/s): δu = δv + (I⁻¹ δL) × ρ
+    from the estimates δv, δL of :func:`coinflight.core.dormand_prince.error_ratio`."""
+    ex = _estimate(1, h, k1, k3, k4, k5, k6, k7)
+    ey = _estimate(2, h, k1, k3, k4, k5, k6, k7)
+    dl = (
+        _estimate(7, h, k1, k3, k4, k5, k6, k7),
+        _estimate(8, h, k1, k3, k4, k5, k6, k7),
+        _estimate(9, h, k1, k3, k4, k5, k6, k7),
+    )
+    n = (y[4], y[5], y[6])
+    rho, _, _, _, _, _ = _basis(n, c, side)
+    wr = cross(angular_velocity(dl, n, c.i1, c.i3), rho)
+    return math.sqrt((ex + wr[0]) ** 2 + (ey + wr[1]) ** 2)
+
+
+@njit(cache=True, inline="always")
+def _estimate(i, h, k1, k3, k4, k5, k6, k7):
+    """The error estimate of a step's component i (as
+    :func:`coinflight.core.dormand_prince.error_ratio` forms it)."""
+    return h * (
+        dp.E1 * k1[i]
+        + dp.E3 * k3[i]
+        + dp.E4 * k4[i]
+        + dp.E5 * k5[i]
+        + dp.E6 * k6[i]
+        + dp.E7 * k7[i]
+    )
+
+
+@njit(cache=True)
+def _slip_velocity(y, c, side):
+    """u = v + ω × ρ, the velocity of the material point at the contact on the rim ``side``,
+    m/s (as :func:`_terms` finds it)."""
+    n = (y[4], y[5], y[6])
+    omega = angular_velocity((y[7], y[8], y[9]), n, c.i1, c.i3)
+    rho, _, _, _, _, _ = _basis(n, c, side)
+    wr = cross(omega, rho)
+    return (y[1] + wr[0], y[2] + wr[1], y[3] + wr[2])
+
+
+@njit(cache=True)
 def _sticks(y, c, side):
     """Whether a sliding contact on the rim ``side`` has stopped: its slip below
     :data:`SLIP_FLOOR` and the rolling force inside the friction cone (and pressing)."""
-    _, _, _, _, _, u = _terms(y, c, side)
+    w, b, _, _, _, u = _terms(y, c, side)
     if u[0] * u[0] + u[1] * u[1] > SLIP_FLOOR * SLIP_FLOOR:
         return False
-    f = _rolling(y, c, side)
+    f = _solve3(w, (-b[0], -b[1], -b[2]))
     return f[2] >= 0.0 and math.sqrt(f[0] * f[0] + f[1] * f[1]) <= c.friction * f[2]
 
 
@@ -666,7 +829,12 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         scale[i + 6] = c.i1 * speed / reach
     t = 0.0
     h = 1e-4
-    _flow(y, k1, c, mode, dx, dy, side)
+    power = np.empty(8)
+    seen = np.empty(6)
+    power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
+    # The energy the flow should have: the start's, less the work of the contact since
+    # (:func:`_step`); each accepted step is put back on it (:func:`_keep_energy`).
+    target = _motion_energy(y, c)
     accepted = 0
     stalled = 0
     while True:
@@ -682,7 +850,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         # The slip's direction at the step's start (SLIDING), for its stop event.
         sx, sy, floor = dx, dy, 0.0
         if mode == SLIDING:
-            _, _, _, _, _, u = _terms(y, c, side)
+            u = _slip_velocity(y, c, side)
             slip = math.sqrt(u[0] * u[0] + u[1] * u[1])
             if slip > STICK_SPEED:
                 sx, sy = u[0] / slip, u[1] / slip
@@ -690,8 +858,14 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 floor = SLIP_FLOOR
         err = math.inf
         for _ in range(60):
-            _step(y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+            work = _step(
+                y, h, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
+            )
             err = dp.error_ratio(y, new, h, k1, k3, k4, k5, k6, k7, rtol, scale, 10)
+            if mode == SLIDING:
+                slip_err = _slip_error(y, h, c, side, k1, k3, k4, k5, k6, k7) / SLIP_ERROR
+                if not slip_err <= err:
+                    err = slip_err
             if err <= 1.0:
                 break
             counts[1] += 1.0
@@ -700,7 +874,20 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             return t, mode, STEP_FAILED
         accepted += 1
         counts[0] += 1.0
-        ev = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
+        mu = c.friction
+        ev = _event_values(
+            (seen[0], seen[1], seen[2]),
+            seen[3],
+            seen[4],
+            seen[5],
+            new[6],
+            mu,
+            mode,
+            sx,
+            sy,
+            floor,
+            band,
+        )
         if _crossed(ev):
             # Locate the first time an event function crosses: regula falsi on the function
             # that has crossed, Illinois-modified (Dowell & Jarratt 1971, BIT 11:168: the end
@@ -716,6 +903,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             bisect = False
             for i in range(size):
                 trial[i] = new[i]
+            trial_work = work
             while hi - lo > EVENT_TIME and hi - lo > 1e-15 * hi:
                 width = hi - lo
                 j = _first_crossed(e_hi)
@@ -729,15 +917,30 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     margin = 0.25 * EVENT_TIME
                     mid = lo + width * (f_lo / (f_lo - f_hi))
                     mid = min(max(mid, lo + margin), hi - margin)
-                _step(y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new)
+                mid_work = _step(
+                    y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
+                )
                 counts[2] += 1.0
-                e_mid = _events(new, c, mode, dx, dy, sx, sy, floor, band, side)
+                e_mid = _event_values(
+                    (seen[0], seen[1], seen[2]),
+                    seen[3],
+                    seen[4],
+                    seen[5],
+                    new[6],
+                    mu,
+                    mode,
+                    sx,
+                    sy,
+                    floor,
+                    band,
+                )
                 if _crossed(e_mid):
                     hi = mid
                     e_hi = e_mid
                     f_hi = e_mid[which]
                     for i in range(size):
                         trial[i] = new[i]
+                    trial_work = mid_work
                     f_lo = 0.5 * f_lo if kept == 1 else f_lo
                     kept = 1
                 else:
@@ -765,6 +968,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             gap, drift = _project_on(y, c, SLIDING, side)
             counts[4] = max(counts[4], gap)
             counts[5] = max(counts[5], drift)
+            target = _keep_energy(y, c, target + trial_work)
             if ev[4] < 0.0:
                 return t, mode, FACE
             if ev[2] <= 0.0:
@@ -800,7 +1004,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                 if f[2] < 0.0:
                     return t, FREE, LIFT_OFF
             counts[3] += 1.0
-            _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
+            target = _motion_energy(y, c)  # after the stick's impulse, if any
             h = max(h, 1e-7)
             continue
         t += h
@@ -811,11 +1016,13 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         gap, drift = _project_on(y, c, mode, side)
         counts[4] = max(counts[4], gap)
         counts[5] = max(counts[5], drift)
+        target = _keep_energy(y, c, target + work)
         # First same as last: k7, the derivative at the step's end before the projection (which
         # moves the state by the drift reported, ≲1e-11 m and 1e-9 m/s, measured: far below the
         # step's tolerance), as contact_phase keeps it across n's renormalisation.
         for i in range(size):
             k1[i] = k7[i]
+        power[1] = power[7]
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
         if mode == SLIDING and _sticks(y, c, side):
             # A slide below SLIP_FLOOR whose rolling force is back inside the cone has stopped
@@ -825,7 +1032,8 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             mode = ROLLING
             _project_on(y, c, ROLLING, side)
             counts[3] += 1.0
-            _flow(y, k1, c, mode, dx, dy, side)
+            power[1] = _flow(y, k1, c, mode, dx, dy, side, seen)
+            target = _motion_energy(y, c)
 
 
 class RigidRun(NamedTuple):
