@@ -121,10 +121,8 @@ def test_per_toss_contact_is_the_same_as_one_surface_per_toss():
 
 
 def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
-    # The rigid 3-D ending (the only one the resistances act in): tosses given their own
-    # rolling and pivoting resistance land exactly as each on its own surface.
-    from coinflight.core.contact import RIGID_ENDING
-
+    # The rigid 3-D ending (where the resistances act): tosses given their own rolling and
+    # pivoting resistance land exactly as each on its own surface.
     coin = Coin.preset("us-nickel")
     rng = np.random.default_rng(8)
     n = 24
@@ -134,7 +132,7 @@ def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
     pivoting = rng.uniform(1e-5, 1e-3, n)
 
     def record(lr, lp):
-        return _contact_ending(coin, RIGID_ENDING, lr, lp)
+        return _resisting(coin, lr, lp)
 
     base = record(1e-4, 1e-4)
     together = bounce.land(
@@ -152,11 +150,10 @@ def test_per_toss_resistances_are_the_same_as_one_surface_per_toss():
     assert settle_differs > 0  # the resistances did reach the kernel (they change settle times)
 
 
-def _contact_ending(coin, ending, rolling, pivoting):
+def _resisting(coin, rolling, pivoting):
     return coin_contact(
         coin,
         drop_height=0.3,
-        ending=ending,
         rolling_resistance=float(rolling),
         pivoting_resistance=float(pivoting),
     )
