@@ -14,7 +14,7 @@ import numpy as np
 
 from coinflight import Coin
 from coinflight.core import bounce, drag
-from coinflight.core.contact import RIGID_ENDING, ROCKING_ENDING, Contact
+from coinflight.core.contact import Contact
 from coinflight.core.impact import lowest_depth
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record
@@ -32,15 +32,10 @@ def coin_contact(
     rest_speed: float = bounce.REST_SPEED,
     rolling_resistance: float = 0.0,
     pivoting_resistance: float = 0.0,
-    ending: float = ROCKING_ENDING,
     corner_radius: float | None = None,
 ) -> Contact:
-    """The contact record of ``coin`` on a table with these values (``ending`` the kernel's
-    code, :data:`~coinflight.core.contact.ROCKING_ENDING` or
-    :data:`~coinflight.core.contact.RIGID_ENDING`; ``corner_radius``, when given, replaces
-    the coin's), built by :func:`coinflight.outcomes.table.contact_record`."""
-    if ending not in (ROCKING_ENDING, RIGID_ENDING):
-        raise ValueError(f"ending must be ROCKING_ENDING or RIGID_ENDING, got {ending}")
+    """The contact record of ``coin`` on a table with these values (``corner_radius``, when
+    given, replaces the coin's), built by :func:`coinflight.outcomes.table.contact_record`."""
     if corner_radius is not None:
         coin = coin.with_corner_radius(corner_radius)
     surface = Surface(
@@ -50,9 +45,8 @@ def coin_contact(
         friction,
         rolling_resistance,
         pivoting_resistance,
-        ending="rigid",  # the rocking Surface refuses resistances: the code is set below
     )
-    return contact_record(coin, surface, g, rest_speed=rest_speed)._replace(ending=float(ending))
+    return contact_record(coin, surface, g, rest_speed=rest_speed)
 
 
 def coin_air(
@@ -83,7 +77,7 @@ def coin_air(
 def critical_spin(coin: Coin, g: float = G) -> float:
     """Ω_c of a disc rolling upright on a knife edge: upright rolling is stable for Ω > Ω_c,
     Ω_c² = m g r I1 / (I3 (I3 + m r²)) (Routh; O'Reilly, Nonlinear Dyn. 10:287, 1996;
-    g / 3r for a thin uniform disc). Shared by the compliant and the rigid contact's tests."""
+    g / 3r for a thin uniform disc). Shared by the rigid contact's tests."""
     i1, i3 = (float(x) for x in coin.moments)
     m, r = coin.mass, coin.radius
     return math.sqrt(m * g * r * i1 / (i3 * (i3 + m * r * r)))

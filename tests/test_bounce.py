@@ -11,9 +11,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from _kernels import coin_contact
 from coinflight import Coin, Flight, Toss
-from coinflight.core import bounce
 from coinflight.core.outcome import EDGE, HEADS, TAILS, Status
 from coinflight.model.surface import Drag, Surface
 from coinflight.outcomes.table import Landing, TableLanding, land
@@ -74,10 +72,14 @@ def test_restitution_zero_no_friction_is_first_contact_outcome(coin):
 
 
 def test_bouncing_coin_settles():
-    omega, v0 = _tosses(20_000, 11)
+    """Every vigorous landing settles: below the face/edge barrier after a bounce, or carried
+    to rest by the rigid ending (200 landings carried to rest; none stops at the safety limit,
+    none is reported rocking, the retired code)."""
+    omega, v0 = _tosses(200, 11)
     out = land(NICKEL, omega, v0, 1.0, G, Surface("table", 0.8, 0.5, 0.3))
-    settled = np.isin(out.status, [Status.SETTLED_ENERGY, Status.SETTLED_ROCKING])
+    settled = np.isin(out.status, [Status.SETTLED_ENERGY, Status.SETTLED_CONTACT])
     assert settled.all()
+    assert np.any(out.status == Status.SETTLED_CONTACT)
     assert (out.bounces >= 1).mean() > 0.9
     assert np.all(out.settle_time >= out.first_contact)
     assert set(np.unique(out.face)) <= {0, 1, 2}
@@ -91,8 +93,14 @@ def test_heads_tails_symmetry(coin, restitution, friction):
     # A half turn about a diameter swaps the faces and leaves the cylinder as it was: started
     # tails with ω = (ωx, −ωy, −ωz) is the mirror toss of started heads with (ωx, ωy, ωz). The
     # lab-frame state is the same with n → −n, on which the contact point, the collision matrix
-    # and the impact law depend only through sign-symmetric terms: exactly the same tosses.
-    omega, v0 = _tosses(5_000, 13)
+    # and the impact law depend only through sign-symmetric terms: exactly the same tosses,
+    # the same faces and statuses through the rigid ending too (60 tosses: landings carried to
+    # rest cost milliseconds; e = 1, which never dies out, stops at the 2,000 impacts' safety
+    # limit, a millisecond a toss: 500; a dead landing, e = 0, is fast: 5,000). The bounces'
+    # times are the same to the bit; the rigid ending's integration is not bit-symmetric (its
+    # rounding differs in the mirror: measured up to 1e-15 relative, grown by its events to
+    # 5e-4 relative on one in sixty), so its settle times are not compared to the bit.
+    omega, v0 = _tosses({0.0: 5_000, 1.0: 500}.get(restitution, 60), 13)
     surface = Surface("table", 0.5, restitution, friction)
     heads = land(coin, omega, v0, 1.0, G, surface)
     tails = land(coin, omega * [1.0, -1.0, -1.0], v0, -1.0, G, surface)
@@ -101,7 +109,10 @@ def test_heads_tails_symmetry(coin, restitution, friction):
     np.testing.assert_array_equal(tails.bounces, heads.bounces)
     np.testing.assert_array_equal(tails.status, heads.status)
     np.testing.assert_array_equal(tails.first_contact, heads.first_contact)
-    np.testing.assert_array_equal(tails.settle_time, heads.settle_time)
+    bounces_only = heads.status != Status.SETTLED_CONTACT
+    if restitution in (0.5, 0.6):
+        assert 0 < np.sum(bounces_only) < len(v0)  # both kinds of landing are compared
+    np.testing.assert_array_equal(tails.settle_time[bounces_only], heads.settle_time[bounces_only])
 
 
 @pytest.mark.parametrize("friction", [0.0, 0.3, 1.0, 2.0])
@@ -172,30 +183,6 @@ def test_bad_input(call, match):
         call()
 
 
-def _rock(coin, phi, phidot):
-    n = (math.sin(phi), 0.0, math.cos(phi))
-    return bounce.rock(n, (0.0, phidot, 0.0), coin_contact(coin, g=G))
-
-
-def test_rocking_ends_in_the_well_it_cannot_leave():
-    # At rest the coin stays in the well it is in: heads, edge (standing up) or tails.
-    assert _rock(NICKEL, 0.1, 0.0) == 1
-    assert _rock(NICKEL, math.pi / 2, 0.0) == 2
-    assert _rock(NICKEL, math.pi - 0.1, 0.0) == 0
-    # Tipping slowly towards the edge: not enough energy to pass the corner.
-    assert _rock(NICKEL, 0.1, 1.0) == 1
-    # Tipping hard: over the corner, across the narrow edge well (its slap costs almost
-    # nothing), and a thin coin slapping flat on the far face stops there (Housner's ratio ≤ 0).
-    assert _rock(NICKEL, 0.1, 60.0) == 0
-    assert _rock(NICKEL, math.pi - 0.1, -60.0) == 1
-    # A thick coin rocking gently on its edge stays there; mirror images swap heads and tails.
-    assert _rock(THICK, math.pi / 2, 1.0) == 2
-    for phi, phidot in [(0.3, 25.0), (1.2, -8.0), (2.0, 14.0)]:
-        face = _rock(THICK, phi, phidot)
-        mirror = _rock(THICK, math.pi - phi, -phidot)
-        assert mirror == {0: 1, 1: 0, 2: 2}[face]
-
-
 @pytest.mark.parametrize("spin_z", [0.0, 50.0])
 def test_flat_drop_bounces_straight_and_stays_up(spin_z):
     # No tumbling: the coin falls flat, hits with its whole face (contact at the centre), bounces
@@ -227,9 +214,8 @@ import numpy as np
 from _kernels import coin_contact
 from coinflight import Coin
 from coinflight.core import bounce
-from coinflight.core.contact import RIGID_ENDING
 
-c = coin_contact(Coin.preset("us-nickel"), drop_height=0.3, ending=RIGID_ENDING)
+c = coin_contact(Coin.preset("us-nickel"), drop_height=0.3)
 rng = np.random.default_rng(3)
 omega = np.column_stack([rng.uniform(150, 300, 8), rng.uniform(-5, 5, 8), np.full(8, 20.0)])
 speed = rng.uniform(2.0, 3.0, 8)

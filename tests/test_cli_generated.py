@@ -44,9 +44,10 @@ SURVEY = bool(LOG and os.environ.get("COINFLIGHT_GENERATED_SURVEY"))
 SECONDS_PER_RUN = int(os.environ.get("COINFLIGHT_GENERATED_SECONDS", "60"))
 # Most work a generated line may ask for, s on the reference machine by the package's own
 # estimates: a third of the time limit, for a machine busier than the reference. The library
-# accepts up to an hour (``MAX_RUN_SECONDS``): `sweep --method grid` over hand,table with two
-# restitutions is 5,000² table landings a row, ~1,250 s a row at the table's 2e4/s, accepted
-# and far beyond any test. Such lines are discarded (hypothesis' ``reject``) before any work.
+# accepts up to an hour (``MAX_RUN_SECONDS``): `sweep --method monte-carlo --n 20000` over
+# hand,table with two restitutions is 20,000 landings carried to rest a row, ~290 s a row at
+# the rigid ending's 70/s, accepted and far beyond any test. Such lines are discarded
+# (hypothesis' ``reject``) before any work.
 BUDGET_SECONDS = SECONDS_PER_RUN / 3
 
 # Texts no number option should accept, or should accept only with a correct answer.
@@ -118,7 +119,6 @@ TABLE = {
     "--drop-height": _number(0, 1.5),
     "--restitution": _number(0, 1),
     "--friction": _number(0, 1),
-    "--ending": st.sampled_from(["rocking", "rigid", "foo", ""]),
     "--rolling-resistance": _number(0, 0.01),
     "--pivoting-resistance": _dist(0, 0.01),
     "--corner-radius": _number(0, 0.001),
@@ -177,7 +177,6 @@ OPTIONS: dict[str, dict[str, st.SearchStrategy]] = {
         "--start": st.sampled_from(["heads,tails", "tails", "edge", ""]),
         "--surface": st.sampled_from(["hand", "hand,table", "table", "sand", ""]),
         "--restitution": st.sampled_from(["0.3,0.6", "0.5", "2", "nan", ""]),
-        "--ending": st.sampled_from(["rocking,rigid", "rigid", "foo", ""]),
         "--rolling-resistance": st.sampled_from(["1e-5,1e-3", "1e-4", "-1", "0.02", ""]),
         "--corner-radius": st.sampled_from(["0,3e-4", "1e-4", "0.001", "-1", ""]),
         "--method": st.sampled_from(["monte-carlo", "qmc", "grid", "exact", ""]),
@@ -404,24 +403,24 @@ def _numbers(payload, key: str = "") -> Iterator[tuple[str, float]]:
 
 
 def test_a_line_over_the_work_budget_is_stopped_before_its_work(tmp_path):
-    # The line that ran past its 60 s limit: the sweep's own bound accepts it (a grid of 5,000²
-    # table landings a row, ~1,250 s at the table's 2e4/s, under the hour); the test's budget
-    # stops it at the first estimate over budget, the row's, before any row runs (what would
-    # run it fails the test if called; not timed: the machine is shared).
-    line = ["sweep", "--surface", "hand,table", "--restitution", "0.3,0.6", "--method", "grid",
-            "--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # fmt: skip
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND
+    # A line the sweep's own bound accepts (20,000 landings carried to rest a row, ~290 s at
+    # the rigid ending's rate, under the hour); the test's budget stops it at the first
+    # estimate over budget, the row's, before any row runs (what would run it fails the test
+    # if called; not timed: the machine is shared).
+    line = ["sweep", "--surface", "hand,table", "--restitution", "0.3,0.6", "--method",
+            "monte-carlo", "--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # fmt: skip
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
 
-    seconds = f"{5000**2 / BOUNCING_TOSSES_PER_SECOND:.3g}"  # the row's estimate, at the rate
-    said = rf"a grid of 5000\^2 .* about {re.escape(seconds)} s of work, over 20 s"
+    seconds = f"{20000 / RIGID_TOSSES_PER_SECOND:.3g}"  # the row's estimate, at the rate
+    said = rf"^monte-carlo with n = 20000: about {re.escape(seconds)} s of work, over 20 s$"
     with pytest.MonkeyPatch.context() as patch:
         never_run(patch, command_work())
         with pytest.raises(_OverBudget, match=said):
-            _run([*line, "--out", str(tmp_path / "s.csv")])
+            _run([*line, "--n", "20000", "--out", str(tmp_path / "s.csv")])
     assert not (tmp_path / "s.csv").exists()
-    # Within the budget the same line runs as before (a small n), and beyond the library's
-    # own limit it is still the library's one-line refusal (exit 2), not a budget stop.
-    assert _run([*line, "--n", "20", "--out", str(tmp_path / "t.csv")]).exit_code == 0
+    # Within the budget the same line runs (a small n), and beyond the library's own limit it
+    # is still the library's one-line refusal (exit 2), not a budget stop.
+    assert _run([*line, "--n", "5", "--out", str(tmp_path / "t.csv")]).exit_code == 0
     huge = _run([*line, "--n", "99999999999", "--out", str(tmp_path / "u.csv")])
     assert huge.exit_code == 2 and "more than the limit" in huge.stderr
 

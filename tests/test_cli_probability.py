@@ -17,7 +17,8 @@ from coinflight.probability import estimate
 
 runner = CliRunner()
 FIG2A = ["--omega-x", "60:90", "--flight-time", "0.6:0.9"]  # Stefan & Cheche Fig 2a
-TABLE_AIR = ["--surface", "table", "--drag", "1.17"]
+TABLE_AIR = ["--surface", "table", "--drag", "1.17", "--restitution", "0"]  # dead: no ending
+TABLE = ["--surface", "table"]  # landings carried to rest through the rigid ending
 THREE_SPINS = ["--omega-x", "60:90", "--omega-y", "0:20", "--omega-z", "0:5"]
 
 
@@ -178,12 +179,18 @@ def test_launch_speed_and_normal():
         (["--omega-x", "60:90"], "exactly one of --flight-time and --launch-speed"),
         ([*FIG2A, "--launch-speed", "3"], "exactly one of"),
         ([*FIG2A, "--n", "abc"], "--n"),
-        # A table landing through air (~10,000 tosses/s, AIR_LANDINGS_PER_SECOND) would run the
-        # default sizes for minutes: --n must be given (the hand catch through air runs them in
-        # about a minute).
+        # A dead table landing through air (~10,000 tosses/s, AIR_LANDINGS_PER_SECOND) would
+        # run the default sizes for minutes: --n must be given (the hand catch through air runs
+        # them in about a minute); the sizes suggested run for about a minute at that rate
+        # (774² ≤ 6e5 < 775²).
         ([*FIG2A, *TABLE_AIR, "-m", "monte-carlo"], "give --n explicitly, e.g. --n 100000"),
         ([*FIG2A, *TABLE_AIR, "-m", "grid"], "--n 774 (774^2 = 599,076 tosses"),
         ([*FIG2A, *TABLE_AIR, "-m", "qmc"], "about 10,000 tosses per second"),
+        # Landings carried to rest (RIGID_TOSSES_PER_SECOND, 70/s), drag-free or through air:
+        # the same, at that rate (64² ≤ 4,200 < 65², 2^12 ≤ 4,200 < 2^13).
+        ([*FIG2A, *TABLE, "-m", "monte-carlo"], "rigid 3-D ending (about 70 tosses per second)"),
+        ([*FIG2A, *TABLE, "-m", "grid"], "--n 64 (64^2 = 4,096 tosses"),
+        ([*FIG2A, *TABLE, "--drag", "1.17", "-m", "qmc"], "e.g. --n 4096 (about a minute)"),
         (
             ["--omega-x", "60:90", "--launch-speed", "normal:0.1,1"],
             "--launch-speed normal(0.1, sd 1) m/s reaches speeds ≤ 0 m/s",

@@ -98,12 +98,17 @@ def test_zero_air_landing_is_the_vacuum_landing():
         np.testing.assert_array_equal(got[4], want[4])  # status
         np.testing.assert_allclose(got[2], want[2], rtol=0, atol=1e-9)  # first contact
         np.testing.assert_allclose(got[3], want[3], rtol=0, atol=atol)  # last contact
-    # Carried to rest (13 impacts on average) a few tosses of the batch end in another well
-    # (4 of 4,000 when measured); nearly all end alike and with the same status.
-    want = bounce.land(omega, v0, sign, contact)
-    got = air_kernels.land(omega, v0, sign, vacuum, contact)
-    assert np.mean(got[0] == want[0]) >= 0.99
-    assert np.mean(got[4] == want[4]) >= 0.99
+    # Carried to rest through the rigid ending (13 impacts on average, then a few ms a toss
+    # rolling: 100 tosses, with the default resistances 1e-4 m, which stop the rolling) a few
+    # tosses may end in another well (4 of 4,000 when measured with the former ending's hand-off,
+    # which follows the same bounces); nearly all end alike and with the same status: at most 3
+    # of 100 differ.
+    resisting = coin_contact(NICKEL, rolling_resistance=1e-4, pivoting_resistance=1e-4)
+    k = slice(0, 100)
+    want = bounce.land(omega[k], v0[k], sign[k], resisting)
+    got = air_kernels.land(omega[k], v0[k], sign[k], vacuum, resisting)
+    assert np.sum(got[0] != want[0]) <= 3
+    assert np.sum(got[4] != want[4]) <= 3
 
 
 # --- against the SciPy integration of the same equations -----------------------------------------

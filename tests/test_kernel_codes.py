@@ -26,8 +26,10 @@ from coinflight.core.outcome import (
 def test_codes_keep_their_integers_and_names():
     # The integers stored in every face/status array since the first release (core/bounce.py,
     # core/impact.py, outcomes/table.py before issue 9); code 5, "settled in contact", is the
-    # 3-D ending's (Surface(ending="rigid")). Code 6 ("decided upright", the upright decision
-    # of the compliant contact ending since removed) is no longer used and no member has it.
+    # rigid ending's, the one ending of a table landing. Code 4 ("settled rocking", the planar
+    # rocking hand-off since removed) is retired but keeps its member and name, so that saved
+    # outputs read the same; code 6 ("decided upright", the upright decision of the compliant
+    # contact ending since removed) is no longer used and no member has it.
     assert [int(f) for f in Face] == [0, 1, 2]
     assert (TAILS, HEADS, EDGE) == (0, 1, 2)
     assert FACE_NAMES == ("tails", "heads", "edge")

@@ -25,6 +25,7 @@ from scipy.spatial.transform import Rotation
 
 from coinflight import Coin
 from coinflight.core import bounce, impact
+from coinflight.core.outcome import Status
 from coinflight.model.coin import PRESETS
 from coinflight.model.surface import CONTACT_DURATION, Surface
 from coinflight.outcomes.table import Landing, contact_record, land
@@ -277,14 +278,15 @@ def test_a_simultaneous_impact_never_makes_energy(near, tilt, azimuth, v, w, e, 
 def test_heads_and_tails_mirror_bit_for_bit():
     """A coin is the same body turned over: started tails up with the same angular momentum
     in the lab (body ω (ωx, −ωy, −ωz) under the half turn about X), every landing is the
-    heads one with the faces swapped, to the bit."""
+    heads one with the faces swapped, to the bit, through the bounces and the rigid ending
+    (400 near-flat drops; 60 tossed coins, most carried to rest at a few ms each)."""
     rng = np.random.default_rng(21)
-    n = 400
+    n, m = 400, 60
     flat = rng.normal(size=(n, 3)) * 1e-6
     tossed = np.column_stack(
-        [rng.uniform(20, 200, n), rng.uniform(-20, 20, n), rng.uniform(-20, 20, n)]
+        [rng.uniform(20, 200, m), rng.uniform(-20, 20, m), rng.uniform(-20, 20, m)]
     )
-    speed = np.concatenate([np.zeros(n), rng.uniform(0.5, 3.0, n)])
+    speed = np.concatenate([np.zeros(n), rng.uniform(0.5, 3.0, m)])
     omega = np.concatenate([flat, tossed])
     for coin, e, mu in ((NICKEL, 0.45, 0.3), (Coin.preset("gbp-1"), 0.8, 0.1)):
         table = Surface("table", drop_height=0.35, restitution=e, friction=mu)
@@ -294,8 +296,13 @@ def test_heads_and_tails_mirror_bit_for_bit():
         np.testing.assert_array_equal(tails.face, swap[heads.face])
         np.testing.assert_array_equal(tails.bounces, heads.bounces)
         np.testing.assert_array_equal(tails.first_contact, heads.first_contact)
-        np.testing.assert_array_equal(tails.settle_time, heads.settle_time)
         np.testing.assert_array_equal(tails.status, heads.status)
+        # the rigid ending's integration is not bit-symmetric (tests/test_bounce.py): its
+        # settle times are not compared to the bit, the bounces' are
+        bounces_only = heads.status != Status.SETTLED_CONTACT
+        np.testing.assert_array_equal(
+            tails.settle_time[bounces_only], heads.settle_time[bounces_only]
+        )
 
 
 def test_heads_and_tails_mirror_bit_for_bit_followed_in_time():

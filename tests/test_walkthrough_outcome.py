@@ -101,8 +101,10 @@ def test_the_soft_mat_is_built_by_the_factory_with_one_line():
         given = "restitution 0.3, friction 0.2"
         with pytest.raises(ValueError, match=re.escape(f"{given} {MAT_REFUSAL}")):
             Surface("soft-mat", restitution=0.3, friction=0.2)
-        with pytest.raises(ValueError, match=re.escape(f"ending 'rigid' {MAT_REFUSAL}")):
-            Surface("soft-mat", ending="rigid")
+        with pytest.raises(
+            ValueError, match=re.escape(f"rolling resistance 0.0002 m {MAT_REFUSAL}")
+        ):
+            Surface("soft-mat", rolling_resistance=2e-4)
         with pytest.raises(ValueError, match=r"^air drag C_d = 1.17: the soft mat takes no air"):
             outcomes.outcome_model("soft-mat", Drag(coefficient=1.17))
         with pytest.raises(ValueError, match=r"^max_bounces applies to a table surface only, no"):

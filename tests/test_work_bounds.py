@@ -251,14 +251,14 @@ def test_grid_work_check_is_constant_memory():
 
 def test_grid_brute_force_with_table_landings_is_bounded_by_their_rate():
     from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import BOUNCING_TOSSES_PER_SECOND, TableLanding
+    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND, TableLanding
 
     model = TableLanding(Surface("table", drop_height=0.3))
     message = refused_cheaply(
         lambda: estimate(FIG_2A, "grid", n=10**5, model=model), "configurations", RUNS_TASKS
     )
     cells = float(10**5) ** 2  # n per axis, two axes
-    rate = BOUNCING_TOSSES_PER_SECOND  # the time quoted at the rocking landings' rate
+    rate = RIGID_TOSSES_PER_SECOND  # the time quoted at the rate of landings carried to rest
     took = f"about {v.duration(cells / rate)} at {v.estimate(rate)} configurations/s"
     assert f"{v.quantity(cells)} configurations ({took})" in message
 
@@ -282,17 +282,25 @@ def test_monte_carlo_counts_are_bounded_by_time(n):
     assert v.duration(v.MAX_RUN_SECONDS) == "60 min"  # the limit the users are told: an hour
 
 
-def test_monte_carlo_limit_follows_the_outcome_model():
+@pytest.mark.parametrize("restitution", [0.0, 0.5])
+def test_monte_carlo_limit_follows_the_outcome_model(restitution):
     from coinflight.model.surface import Drag, Surface
-    from coinflight.outcomes.table import AIR_LANDINGS_PER_SECOND, TableLanding
+    from coinflight.outcomes.table import (
+        AIR_LANDINGS_PER_SECOND,
+        RIGID_TOSSES_PER_SECOND,
+        TableLanding,
+    )
 
-    model = TableLanding(Surface("table", drop_height=0.3), Drag(coefficient=1.0))
+    surface = Surface("table", drop_height=0.3, restitution=restitution)
+    model = TableLanding(surface, Drag(coefficient=1.0))
     message = refused_cheaply(
         lambda: estimate(FIG_2A, "monte-carlo", n=10**8, seed=1, model=model),
         "tosses",
         RUNS_TASKS,
     )
-    rate = AIR_LANDINGS_PER_SECOND  # the limit and time follow the landings through air
+    # the limit and time follow the landings through air: dead ones (e = 0) at the air's
+    # rate, those carried to rest at the rigid ending's
+    rate = AIR_LANDINGS_PER_SECOND if restitution == 0.0 else RIGID_TOSSES_PER_SECOND
     took = f"(about {v.duration(1e8 / rate)} at {v.estimate(rate)} tosses/s)"
     limit = v.quantity(rate * v.MAX_RUN_SECONDS)
     assert f"is 100,000,000 tosses {took}, more than the limit of {limit} tosses" in message
