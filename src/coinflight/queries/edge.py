@@ -115,7 +115,7 @@ def edge_query(
         "spin": ("--omega-x", omega_x, "rad/s"),
         "launch_speed": ("--launch-speed", launch_speed, "m/s"),
     }
-    given = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
+    given: list[tuple[str, object]] = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
     given += [(option, text) for option, text, _ in texts.values()] + [("--g", g)]
     the_seed = simulation_seed(simulate, seed, *given, run_flag="--target P or --simulate")
     setting: dict[str, Any] = {k: x for k, x in {**numbers, "g": g}.items() if x is not None}
