@@ -239,6 +239,16 @@ def test_help():
     assert "(restitution 0, friction 0.3) on a table 0.5 m below" in out
     for flag in ("--ratios", "--simulate", "--seed", "--restitution", "--friction", "--json"):
         assert flag in out
+    # The resistances act on every landing that bounces (the rigid ending carries it to rest),
+    # on none that lands dead: each option says so.
+    text = " ".join(out.replace("│", " ").split())
+    bouncing = (
+        "It acts on every landing that bounces (--restitution above 0), which the rigid ending "
+        "carries to rest; dead landings (restitution 0, the default of --simulate) never reach "
+        "that ending, and refuse the option."
+    )
+    assert text.count(bouncing) == 2  # --rolling-resistance and --pivoting-resistance
+    assert "--ending" not in out
 
 
 def test_target_json_carries_the_band_the_closed_forms_the_measured_rows_and_the_run():
