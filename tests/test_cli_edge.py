@@ -88,22 +88,20 @@ def test_setting_options_reach_the_simulation():
     assert json.loads(out)[0]["simulated"]["successes"] == expected.successes
 
 
-def test_the_rigid_ending_reaches_the_simulation():
-    """--ending rigid and its resistances reach simulate_edge (on bouncing landings: dead ones
-    never reach an ending)."""
+def test_the_resistances_reach_the_simulation():
+    """--rolling-resistance and --pivoting-resistance reach simulate_edge: the rigid ending,
+    which carries every bouncing landing (--restitution > 0) to rest, takes them."""
     from coinflight.studies.edge import simulate_edge
 
     args = ["--ratios", "0.1,0.577", "--simulate", "200", "--seed", "4", "--json"]
-    rigid = ["--restitution", "0.5", "--ending", "rigid", "--rolling-resistance", "1e-3",
-             "--pivoting-resistance", "1e-3"]  # fmt: skip
-    code, out, _ = _run(*args, *rigid)
+    resist = ["--restitution", "0.5", "--rolling-resistance", "1e-3",
+              "--pivoting-resistance", "1e-3"]  # fmt: skip
+    code, out, _ = _run(*args, *resist)
     assert code == 0
-    expected = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5, ending="rigid",
+    expected = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5,
                              rolling_resistance=1e-3, pivoting_resistance=1e-3)  # fmt: skip
     got = [row["simulated"]["successes"] for row in json.loads(out)]
     assert got == [e.successes for _, e in expected]
-    rocking = simulate_edge([0.1, 0.577], 200, 4, restitution=0.5)
-    assert rocking != expected  # the endings differ on bouncing landings
 
 
 def test_the_corner_radius_reaches_the_simulated_coins():
@@ -161,7 +159,7 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
         (["--simulate", "10", "--restitution", "2"], "restitution must be between 0 and 1"),
         (["--simulate", "10", "--omega-x", "x"], "--omega-x 'x'"),
         (["--simulate", "10", "--launch-speed", "-1:2"], "it must be positive"),
-        (["--ending", "rigid"], "--ending needs --target P or --simulate N"),
+        (["--rolling-resistance", "1e-4"], "--rolling-resistance needs --target P or --simulate N"),
         (["--corner-radius", "1e-4"], "--corner-radius needs --target P or --simulate N"),
         (
             ["--ratios", "0.577,0.1,1", "--simulate", "10", "--corner-radius", "0.002"],
@@ -179,24 +177,19 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             "most the radius r "
             "(a coin thicker than wide) of the thinnest coin (h/d = 2, h = 0.048 m)",
         ),
-        (["--simulate", "10", "--ending", "foo"], "ending must be one of rocking, rigid"),
         (
-            ["--simulate", "10", "--rolling-resistance", "1e-4"],
-            "rolling resistance 0.0001 m: only the rigid 3-D ending (ending='rigid', --ending "
-            "rigid) has rolling and pivoting resistance, which the rocking ending would ignore",
-        ),
-        (
-            [
-                "--simulate",
-                "10",
-                "--restitution",
-                "0.5",
-                "--ending",
-                "rigid",
-                "--pivoting-resistance",
-                "0.5",
-            ],
+            ["--simulate", "10", "--restitution", "0.5", "--pivoting-resistance", "0.5"],
             "pivoting resistance must be between 0 and 0.01",
+        ),
+        *(  # dead landings (e = 0) never reach the rigid ending: a resistance would be ignored
+            (
+                [*run, *e, f"--{which}-resistance", "1e-4"],
+                f"--{which}-resistance acts on landings that bounce (--restitution above 0)",
+            )
+            for run in (["--simulate", "10"], ["--target", "1/3"])
+            for e in ([], ["--restitution", "0"])
+            if run[0] == "--simulate" or e
+            for which in ("rolling", "pivoting")
         ),
         *(
             (
@@ -221,7 +214,7 @@ def test_text_table_says_the_corner_radius_as_the_json_does():
             "--corner-radius: corner radius must be between 0 and 0.012",
         ),
         (
-            ["--target", "1/3", "--simulate", "1000000", "--ending", "rigid"],
+            ["--target", "1/3", "--simulate", "1000000"],
             "more than the limit of 3,600 s; use fewer tosses per ratio",
         ),
     ],
@@ -246,6 +239,16 @@ def test_help():
     assert "(restitution 0, friction 0.3) on a table 0.5 m below" in out
     for flag in ("--ratios", "--simulate", "--seed", "--restitution", "--friction", "--json"):
         assert flag in out
+    # The resistances act on every landing that bounces (the rigid ending carries it to rest),
+    # on none that lands dead: each option says so.
+    text = " ".join(out.replace("│", " ").split())
+    bouncing = (
+        "It acts on every landing that bounces (--restitution above 0), which the rigid ending "
+        "carries to rest; dead landings (restitution 0, the default of --simulate) never reach "
+        "that ending, and refuse the option."
+    )
+    assert text.count(bouncing) == 2  # --rolling-resistance and --pivoting-resistance
+    assert "--ending" not in out
 
 
 def test_target_json_carries_the_band_the_closed_forms_the_measured_rows_and_the_run():
@@ -263,9 +266,14 @@ def test_target_json_carries_the_band_the_closed_forms_the_measured_rows_and_the
     assert ym["geometric"] == pytest.approx(1 / (2 * math.sqrt(2)), rel=1e-12)
     assert ym["dynamic"] == pytest.approx(1 / math.sqrt(3), rel=1e-12)
     assert [round(m["ratio"], 3) for m in first["measured"]] == [0.354, 0.577]
-    assert first["box"] == {"restitution": [0.3, 0.6], "friction": [0.05, 0.6]}
+    assert first["box"] == {
+        "restitution": [0.3, 0.6],
+        "friction": [0.05, 0.6],
+        "resistance": [1e-5, 1e-3],
+    }
+    assert "ending" not in first  # one ending: the rigid one carries every bounce to rest
     roots = [c["ratio"] for c in first["cells"]]
-    assert len(roots) == 5 and first["band"]["low"]["ratio"] == min(roots)
+    assert len(roots) == 9 and first["band"]["low"]["ratio"] == min(roots)
     assert first["band"]["high"]["ratio"] == max(roots)
     for c in first["cells"]:
         b = c["bracket"]
@@ -290,24 +298,29 @@ def test_target_text_dead_landing_is_the_dynamic_root():
     assert abs(float(ratio) - 1 / math.sqrt(3)) < 4 * float(se)
 
 
-def test_target_with_the_rigid_ending_and_few_tosses():
+def test_target_with_bouncing_landings_and_few_tosses():
+    # e and μ given, neither resistance: the resistances alone spread (bouncing landings reach
+    # the rigid ending, where they act).
     code, out, _ = _run(
-        "--target", "1/3", "--simulate", "30", "--seed", "1", "--ending", "rigid",
+        "--target", "1/3", "--simulate", "30", "--seed", "1",
         "--restitution", "0.45", "--friction", "0.3", "--json",
     )  # fmt: skip
     assert code == 0
     obj = json.loads(out)
-    assert obj["ending"] == "rigid" and obj["box"]["resistance"] == [1e-5, 1e-3]
+    assert "ending" not in obj and obj["box"]["resistance"] == [1e-5, 1e-3]
     assert len(obj["cells"]) == 3  # the resistance's two ends and its geometric centre
     assert obj["cells"][-1]["resistance"] == pytest.approx(1e-4)
 
 
 def test_target_with_a_wobble_says_it():
+    # every parameter given (one cell); the resistances high: a wobbling cylinder rolls long
+    one_cell = ["--restitution", "0.45", "--friction", "0.3", "--rolling-resistance", "1e-3",
+                "--pivoting-resistance", "1e-3"]  # fmt: skip
     code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "human",
-                        "--restitution", "0.45", "--friction", "0.3", "--json")  # fmt: skip
+                        *one_cell, "--json")  # fmt: skip
     assert code == 0
     obj = json.loads(out)
     assert obj["setting"]["psi"] == "human" and len(obj["cells"]) == 1
     code, out, _ = _run("--target", "1/3", "--simulate", "300", "--seed", "1", "--psi", "80",
-                        "--restitution", "0.45", "--friction", "0.3")  # fmt: skip
+                        *one_cell)  # fmt: skip
     assert code == 0 and "tosses wobbling on a cone ψ 80°" in out

@@ -166,10 +166,16 @@ def _tosses_of(ratio, n, seed, *, diameter=0.024, axial_spin=None, start=1.0, **
 
 
 @pytest.mark.parametrize(
-    "kwargs",
-    [{}, {"restitution": 0.45, "drop_height": 0.35}, {"diameter": 0.04, "restitution": 0.3}],
+    ("kwargs", "n"),
+    [
+        ({}, 3000),
+        # bouncing landings, each carried to rest by the rigid ending: wobbling ones roll on
+        # their rims for seconds, so fewer tosses (the identities hold toss by toss)
+        ({"restitution": 0.45, "drop_height": 0.35}, 200),
+        ({"diameter": 0.04, "restitution": 0.3}, 200),
+    ],
 )
-def test_simulate_edge_tosses_are_its_documented_streams(kwargs):
+def test_simulate_edge_tosses_are_its_documented_streams(kwargs, n):
     # Without axial_spin the tosses are the two-row streams simulate_edge drew before the
     # keyword existed (so every earlier result is the same, bit for bit); with it, the same ωx
     # and v0 and a third row for ωz.
@@ -180,12 +186,13 @@ def test_simulate_edge_tosses_are_its_documented_streams(kwargs):
     surface = {k: val for k, val in kwargs.items() if k != "diameter"}
     d = kwargs.get("diameter", 0.024)
     for wz in (None, Normal(20.0, 10.0)):
-        ((_, est),) = simulate_edge([0.5], 3000, 11, axial_spin=wz, **kwargs)
-        faces = _tosses_of(0.5, 3000, 11, diameter=d, axial_spin=wz, **surface)
+        ((_, est),) = simulate_edge([0.5], n, 11, axial_spin=wz, **kwargs)
+        faces = _tosses_of(0.5, n, 11, diameter=d, axial_spin=wz, **surface)
         assert est.successes == int(np.count_nonzero(faces == EDGE))
-    planar = simulate_edge([0.3, 0.5], 2000, 4, **kwargs)
-    assert simulate_edge([0.3, 0.5], 2000, 4, axial_spin=Fixed(0.0), **kwargs) == planar
-    assert simulate_edge([0.3, 0.5], 2000, 4, axial_spin=Fixed(40.0), **kwargs) != planar
+    m = 2 * n // 3
+    planar = simulate_edge([0.3, 0.5], m, 4, **kwargs)
+    assert simulate_edge([0.3, 0.5], m, 4, axial_spin=Fixed(0.0), **kwargs) == planar
+    assert simulate_edge([0.3, 0.5], m, 4, axial_spin=Fixed(40.0), **kwargs) != planar
 
 
 def test_dead_landing_heads_tails_symmetry_with_and_without_axial_spin():

@@ -33,7 +33,9 @@ def edge(
     landing dead (restitution 0, friction 0.3) on a table 0.5 m below.
 
     With --target P: the ratio h/d at which those tosses land on edge with probability P,
-    as a band over the table's unmeasured parameters not given.
+    as a band over the table's unmeasured parameters not given: restitution 0.3–0.6 (landings
+    that bounce, each carried to rest by the rigid ending), friction 0.05–0.6 and the rolling
+    and pivoting resistances 1e-5–1e-3 m.
 
     Example: coinflight edge --ratios 0.1,0.577,1 --simulate 4000 --seed 1 --json
 

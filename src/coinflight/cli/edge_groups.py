@@ -68,7 +68,7 @@ TargetOption = Annotated[
         rich_help_panel=SIM_PANEL,
         help="Find the ratio h/d at which simulated tosses land on edge with probability P "
         "(1/3 or 0.333: the three-sided coin), with its band over the table's unmeasured "
-        "restitution, friction and (rigid ending) resistances, beside Yong & Mahadevan's "
+        "restitution, friction and rolling and pivoting resistances, beside Yong & Mahadevan's "
         "closed forms and the measured rows (coinflight.studies.edge_target).",
     ),
 ]
@@ -103,18 +103,19 @@ DropHeight = Annotated[
         _ONLY + "how far the table lies below the launch height, m (default 0.5).",
     ),
 ]
+_BOUNCING = (
+    " It acts on every landing that bounces (--restitution above 0), which the rigid ending "
+    "carries to rest; dead landings (restitution 0, the default of --simulate) never reach "
+    "that ending, and refuse the option."
+)
+_BOTH_ALIKE = _BAND + "1e-5–1e-3 m, both resistances alike."
 RollingResistance = Annotated[
     float | None,
     number_option(
         "--rolling-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY
-        + "landings that bounce (--restitution > 0): "
-        + ROLLING_HELP
-        + _BAND
-        + "1e-5–1e-3 m, "
-        "both resistances alike.",
+        _ONLY + "the table's " + ROLLING_HELP + _BOUNCING + _BOTH_ALIKE,
     ),
 ]
 PivotingResistance = Annotated[
@@ -123,12 +124,7 @@ PivotingResistance = Annotated[
         "--pivoting-resistance",
         "L",
         CONTACT_PANEL,
-        _ONLY
-        + "landings that bounce (--restitution > 0): "
-        + PIVOTING_HELP
-        + _BAND
-        + "1e-5–1e-3 m, "
-        "both resistances alike.",
+        _ONLY + "the table's " + PIVOTING_HELP + _BOUNCING + _BOTH_ALIKE,
     ),
 ]
 CornerRadius = Annotated[

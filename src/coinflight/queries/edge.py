@@ -88,7 +88,8 @@ def edge_query(
     g: float | None = None,
 ) -> EdgeQuery:
     """The options of ``coinflight edge`` checked in its order: --target and --ratios apart; the
-    simulation's options need --simulate or --target, so does --scheduler; the ratios;
+    simulation's options need --simulate or --target, so does --scheduler; a resistance needs
+    landings that bounce (restitution above 0: given, or --target's band); the ratios;
     --corner-radius against the thinnest coin (with --target, against the coin's radius: the
     search starts at the thinnest coin that takes it)."""
     from coinflight.model.distributions import parse_distribution
@@ -115,7 +116,7 @@ def edge_query(
         "spin": ("--omega-x", omega_x, "rad/s"),
         "launch_speed": ("--launch-speed", launch_speed, "m/s"),
     }
-    given = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
+    given: list[tuple[str, object]] = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
     given += [(option, text) for option, text, _ in texts.values()] + [("--g", g)]
     the_seed = simulation_seed(simulate, seed, *given, run_flag="--target P or --simulate")
     setting: dict[str, Any] = {k: x for k, x in {**numbers, "g": g}.items() if x is not None}
@@ -124,6 +125,14 @@ def edge_query(
             setting[key] = parse_distribution(text, option, unit)
     if simulate is None and scheduler is not None:
         raise ValueError("--scheduler applies with --simulate (the closed forms are one task)")
+    dead = restitution == 0.0 or (restitution is None and p is None)  # --target spreads e > 0
+    for which in ("rolling", "pivoting"):
+        if dead and numbers[f"{which}_resistance"] is not None:
+            raise ValueError(
+                f"--{which}-resistance acts on landings that bounce (--restitution above 0): "
+                f"dead ones (restitution 0{', the default' if restitution is None else ''}) "
+                "never reach the rigid ending, where the resistances act"
+            )
     if psi is not None:
         if p is None:
             raise ValueError(

@@ -22,7 +22,7 @@ same tosses at x·e^(±:data:`SLOPE_STEP`) (a central difference; its error is s
 as if the two fractions were independent, which common random numbers only make smaller).
 Every cell's number of evaluations is bounded before anything runs: at most 1 + the bracket's
 steps + the bisection's ⌈log2(ln 2 / XTOL)⌉ + 2, each of ``n`` tosses at the landing
-rate (:attr:`coinflight.outcomes.table.TableLanding.rate`).
+rate (:func:`coinflight.studies.edge.landing_rate`).
 
 The band
 --------
@@ -198,7 +198,8 @@ def target_box(
     """The box of the band: each parameter given is one point (low = high), each not given its
     plausible range (module notes); ``resistance`` (both resistances, the same value) only when
     neither resistance is given; a single one given keeps the other at its range under its own
-    name."""
+    name. Restitution 0 (dead landings, which never reach the rigid ending where alone the
+    resistances act) has no resistance in its box, and refuses one given (ValueError)."""
     from coinflight.studies.edge_experiments import RESISTANCE
     from coinflight.studies.presets import bouncing_box
 
@@ -207,6 +208,15 @@ def target_box(
         "restitution": e_box if restitution is None else (restitution, restitution),
         "friction": mu_box if friction is None else (friction, friction),
     }
+    if restitution == 0.0:
+        for name, value in (("rolling", rolling_resistance), ("pivoting", pivoting_resistance)):
+            if value is not None:
+                raise ValueError(
+                    f"{name} resistance acts on landings that bounce (restitution above 0): "
+                    "dead ones (restitution 0) never reach the rigid ending, where the "
+                    "resistances act"
+                )
+        return box
     if rolling_resistance is None and pivoting_resistance is None:
         box["resistance"] = RESISTANCE
     else:
@@ -317,11 +327,11 @@ def target_ratio(
     from scipy.optimize import bisect
 
     from coinflight.model.surface import Surface
-    from coinflight.outcomes.table import TableLanding
     from coinflight.studies.edge import (
         SIM_DIAMETER,
         SIM_DROP,
         SIM_RATIOS,
+        landing_rate,
         simulate_edge,
         simulated_corner_radius,
     )
@@ -369,7 +379,8 @@ def target_ratio(
         kw = kwargs(cell)
         resist = {k: kw[k] for k in ("rolling_resistance", "pivoting_resistance") if k in kw}
         surface = Surface("table", drop, kw["restitution"], kw["friction"], **resist)
-        rates.append(TableLanding(surface).rate)
+        own = spin is None and launch_speed is None and psi is None  # simulate_edge's tosses
+        rates.append(landing_rate(surface, own))
     with warnings.catch_warnings():  # the toss setting refused now, if bad (one toss)
         warnings.simplefilter("ignore", v.PlausibilityWarning)
         simulate_edge([low], 1, 0, **kwargs(cells[0]), axial_spin=wobble(low))
