@@ -77,7 +77,7 @@ one-rim contact); the Painlevé case ends the band run on the rim loaded more.
 The state is the reduced q = (θ, v_n, v_t, ω_a, ω_z[, x, y]); :func:`to_state` and
 :func:`from_state` convert from and to the state y = (z, v, n, L[, x, y]) of
 :mod:`coinflight.core.rigid_contact`. Integration: Dormand–Prince 5(4) with error control
-(the coefficients of :mod:`coinflight.core.contact_phase`), the sticking constraints restored
+(the coefficients of :mod:`coinflight.core.dormand_prince`), the sticking constraints restored
 after each step by the least-energy projection.
 """
 

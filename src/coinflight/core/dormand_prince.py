@@ -5,7 +5,7 @@ Hairer, Nørsett & Wanner, *Solving Ordinary Differential Equations I* (2nd ed.)
 the error measured component by component against ``rtol (scale_i + max(|y_i|, |y_new_i|))``
 and the step accepted when the largest ratio is at most 1 (ibid., II.4). The kernels that
 integrate a contact mode (:mod:`coinflight.core.rigid_contact`,
-:mod:`coinflight.core.band_contact`, :mod:`coinflight.core.contact_phase`) evaluate their own
+:mod:`coinflight.core.band_contact`) evaluate their own
 rates; these functions form the points at which they evaluate them and the error of a step, so
 the arithmetic of the pair is written once.
 """

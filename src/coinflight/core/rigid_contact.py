@@ -2,20 +2,20 @@
 
 The coin and the table are rigid: while the coin touches at one rim point the gap there stays
 0, the contact force is whatever keeps it so (and, rolling, keeps the point from slipping), and
-the steps are set by the motion's own time scales, not by a stiffness (set against the
-compliant contact of :mod:`coinflight.core.contact_phase`, whose springs and regularised
-friction hold its steps to ~0.4 ms whatever the motion).
+the steps are set by the motion's own time scales, not by a stiffness (a compliant contact's
+springs and regularised friction would hold its steps to ~0.4 ms whatever the motion, and its
+answers would depend on that stiffness: the physics page, "Why the 3-D ending is rigid").
 
 This module is the one-rim contact: the modes ROLLING and SLIDING, their transitions located as
 events, lift-off, Painlevé's paradox detected, and the stops where the other rim or the face
 comes down. :func:`advance_rigid` stops and says why at each of them;
-:mod:`coinflight.core.rigid_ending` builds the end of a landing on these modes
-(``Surface(ending="rigid")``) and carries the coin through the stops (hops, rim and face
+:mod:`coinflight.core.rigid_ending` builds the end of a landing on these modes (every table
+landing whose bounces die out) and carries the coin through the stops (hops, rim and face
 impacts, the band).
 
-The state is that of :mod:`coinflight.core.contact_phase`, y = (z, v, n, L): the height of the
-centre of mass, its velocity, the heads normal and the angular momentum about the centre of
-mass (lab frame, SI), so states pass between the two models unchanged.
+The state is y = (z, v, n, L): the height of the centre of mass, its velocity, the heads
+normal and the angular momentum about the centre of mass (lab frame, SI), as the bounces of
+:mod:`coinflight.core.bounce` hand it over.
 
 The contact point and its kinematics
 ------------------------------------
@@ -75,27 +75,22 @@ straddle n_z = 0 would see a jump in the force (its error rejected step after st
 crossing: ~30 rejected steps at each of the thousands of rim changes of a coin rocking across
 its band).
 
-Rolling and pivoting resistance are those of :func:`coinflight.core.contact_phase._derivative`
-at a point contact (its arc's radius of gyration r_t is 0): torques −ℓ_r F_z ω_h /
-sqrt(|ω_h|² + ω_ε²) and −ℓ_p F_z ω_z / sqrt(ω_z² + ω_ε²) Z, ω_ε = SLIP_SPEED / r, with the
-same regularisation. **Regularised, not set-valued**, for two reasons: it keeps the two models
-comparable term for term (the test of convergence as t_c → 0 compares them), and set-valued
-rolling and drilling stick adds two more stick conditions and their events (a coin that stops
-rolling but keeps sliding, and the reverse), not built. Below ω_ε (0.47 rad/s for a nickel:
-its rim moving at 5 mm/s) the torque is a viscous one, time scale I1 ω_ε/(ℓ F_z) (~14 ms for a
-nickel at ℓ = 1e-4 m and F_z = m g); it matters only to a coin already nearly at rest, which
-the energy test of the ending has settled first in the landings measured.
+Rolling and pivoting resistance at the point contact are torques −ℓ_r F_z ω_h / sqrt(|ω_h|² + ω_ε²)
+and −ℓ_p F_z ω_z / sqrt(ω_z² + ω_ε²) Z, ω_ε = SLIP_SPEED / r, with the regularisation ω_ε.
+**Regularised, not set-valued**: set-valued rolling and drilling stick adds two more stick
+conditions and their events (a coin that stops rolling but keeps sliding, and the reverse), not
+built. Below ω_ε (0.47 rad/s for a nickel: its rim moving at 5 mm/s) the torque is a viscous one,
+time scale I1 ω_ε/(ℓ F_z) (~14 ms for a nickel at ℓ = 1e-4 m and F_z = m g); it matters only to a
+coin already nearly at rest, which the energy test of the ending has settled first in the landings
+measured.
 
 Integration
 -----------
 Dormand-Prince 5(4) with adaptive steps (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.5; the
-coefficients of :mod:`coinflight.core.contact_phase`). A second copy of that stepper, on
-purpose, not shared with :func:`coinflight.core.contact_phase._integrate`: that loop is
-specialised to its derivative (numba compiles it per function), and sharing it would mean
-passing the derivative as a first-class function, which numba compiles differently (and does not
-keep in its on-disk cache, ``cache=True``, which both modules rely on to start fast), with no
-promise that the compliant phase stays the same to the bit. This stepper also differs: it stops
-at events, and projects after every step. The projection keeps the flow on its constraints: n
+coefficients of :mod:`coinflight.core.dormand_prince`), its stages written out for this
+module's rates (passing the rates as a first-class function would keep it out of numba's
+on-disk cache, ``cache=True``, on which a fast start relies). It stops at events, and projects
+after every step. The projection keeps the flow on its constraints: n
 renormalised; z set so the gap is 0; u_z (SLIDING) or u (ROLLING) set to 0 by the impulse at the
 contact point that does it with least kinetic energy (P = −u_z/K_zz Z or P = −K⁻¹ u: Gauss's
 principle). The largest gap and constraint speed removed are reported (the drift; tests bound
@@ -114,8 +109,7 @@ removed, dissipative) starts the energy afresh. In a slide the steps' error esti
 slip is held below :data:`SLIP_ERROR` besides the tolerance.
 
 The ending: with ``settle``, the run stops when the coin's energy (no springs here: kinetic
-plus m g z) is below its well's barrier, as :func:`coinflight.core.contact_phase.below_barrier`
-decides (:func:`coinflight.core.contact_phase.free_energy` without springs).
+plus m g z) is below its well's barrier (:func:`below_barrier`).
 
 Speed
 -----
@@ -125,7 +119,7 @@ over spin (one precessing at ~100 rad/s takes steps of ~0.5 ms), switch between 
 slipping at the cone's boundary (steps of ~15 μs while a small slip turns: near its stop the slip's
 direction turns at ~|u̇_h|/|u_h|, so that the steps shrink with the slip down to :data:`SLIP_FLOOR`,
 ~20 of them a stop), and lift off within milliseconds (events located in ~8 trial steps).
-``benchmarks/bench_bounce.py --rigid-rates`` measures the landings a second.
+``benchmarks/bench_bounce.py`` measures the landings a second.
 """
 
 from __future__ import annotations
@@ -693,7 +687,7 @@ def energy(y, c):
 @njit(cache=True)
 def below_barrier(y, c):
     """Whether the coin's energy is below its well's barrier: the test of
-    :func:`coinflight.core.contact_phase.below_barrier` with no springs (frictionless and
+    the well's barrier (frictionless and
     without resistances, the horizontal kinetic energy is not free and the barrier is the least
     corner energy at the conserved L·n, L_z)."""
     _, free = _motion_free_energy(y, c)
@@ -844,7 +838,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
             return t, mode, DURATION
         if accepted >= max_steps:
             return t, mode, MAX_STEPS_REACHED
-        # No limit by the turn (as contact_phase's): the state has no body-fixed angle to resolve
+        # No limit by the turn: the state has no body-fixed angle to resolve
         # (an axisymmetric coin), and the tumbling is the step control's.
         h = min(h, MAX_STEP, duration - t)
         # The slip's direction at the step's start (SLIDING), for its stop event.
@@ -1019,7 +1013,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         target = _keep_energy(y, c, target + work)
         # First same as last: k7, the derivative at the step's end before the projection (which
         # moves the state by the drift reported, ≲1e-11 m and 1e-9 m/s, measured: far below the
-        # step's tolerance), as contact_phase keeps it across n's renormalisation.
+        # step's tolerance), kept across n's renormalisation.
         for i in range(size):
             k1[i] = k7[i]
         power[1] = power[7]
@@ -1082,7 +1076,7 @@ def advance_rigid(
     approach: float = APPROACH,
 ) -> RigidRun:
     """Advance the coin in state ``y`` = (z, vx, vy, vz, nx, ny, nz, Lx, Ly, Lz) (modified in
-    place; the state of :func:`coinflight.core.contact_phase.advance`) touching the table at one
+    place) touching the table at one
     rim point, rigid, for ``duration`` s or until an event it cannot carry on through.
 
     Parameters
