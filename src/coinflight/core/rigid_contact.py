@@ -557,6 +557,15 @@ def _event_values(f, coef, ux, uy, nz, mu, mode, sx, sy, floor, band):
 
 
 @njit(cache=True)
+def _seen_events(seen, nz, mu, mode, sx, sy, floor, band):
+    """:func:`_event_values` from what the last rate evaluation left in ``seen`` (F, c_N,
+    u_x, u_y) and the state's n_z."""
+    return _event_values(
+        (seen[0], seen[1], seen[2]), seen[3], seen[4], seen[5], nz, mu, mode, sx, sy, floor, band
+    )
+
+
+@njit(cache=True)
 def _crossed(e):
     return e[0] < 0.0 or e[1] < 0.0 or e[2] <= 0.0 or e[3] < 0.0 or e[4] < 0.0
 
@@ -869,19 +878,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
         accepted += 1
         counts[0] += 1.0
         mu = c.friction
-        ev = _event_values(
-            (seen[0], seen[1], seen[2]),
-            seen[3],
-            seen[4],
-            seen[5],
-            new[6],
-            mu,
-            mode,
-            sx,
-            sy,
-            floor,
-            band,
-        )
+        ev = _seen_events(seen, new[6], mu, mode, sx, sy, floor, band)
         if _crossed(ev):
             # Locate the first time an event function crosses: regula falsi on the function
             # that has crossed, Illinois-modified (Dowell & Jarratt 1971, BIT 11:168: the end
@@ -915,19 +912,7 @@ def _run(y, c, duration, settle, max_steps, rtol, approach, counts):
                     y, mid, c, mode, dx, dy, side, k1, k2, k3, k4, k5, k6, k7, tmp, new, power, seen
                 )
                 counts[2] += 1.0
-                e_mid = _event_values(
-                    (seen[0], seen[1], seen[2]),
-                    seen[3],
-                    seen[4],
-                    seen[5],
-                    new[6],
-                    mu,
-                    mode,
-                    sx,
-                    sy,
-                    floor,
-                    band,
-                )
+                e_mid = _seen_events(seen, new[6], mu, mode, sx, sy, floor, band)
                 if _crossed(e_mid):
                     hi = mid
                     e_hi = e_mid
