@@ -162,8 +162,8 @@ def outcome_model(
     >>> outcome_model().name
     'hand catch'
     >>> from coinflight.model.surface import Surface
-    >>> outcome_model(Surface("table", drop_height=0.8)).describe()
-    'landing on a table 0.8 m below launch (restitution 0.5, friction 0.3), no air drag'
+    >>> outcome_model(Surface("table", drop_height=0.8)).describe()  # doctest: +ELLIPSIS
+    'landing on a table 0.8 m below launch (restitution 0.5, friction 0.3, rolling ...), no air ...'
     """
     from coinflight import _validation as v
     from coinflight.model.surface import Drag, Surface

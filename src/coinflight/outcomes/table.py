@@ -402,8 +402,8 @@ class Landing:
     --------
     >>> surface = Surface("table", drop_height=0.8, restitution=0.5, friction=0.3)
     >>> landing = Landing(Coin.preset("us-nickel"), Toss((240.0, 5.0, 3.0), 0.49), surface)
-    >>> landing.outcome.face_name, int(landing.outcome.bounces)  # as in the README
-    ('heads', 13)
+    >>> landing.outcome.face_name, int(landing.outcome.bounces)  # rolls upright to rest
+    ('edge', 13)
     """
 
     coin: Coin
@@ -535,8 +535,11 @@ class Landing:
 
     @property
     def followed_until(self) -> float:
-        """The latest time :meth:`at` answers for, s since the start state (∞ when the ending
-        follows the coin to the end)."""
+        """The time the landing's motion is followed to, s since the start state: the end of
+        the bounces, or where the rigid ending settled the coin, run without a stop. :meth:`at`
+        stops the run at each time asked for, and a chaotic roll so stopped parts from the
+        uninterrupted one by the steps' tolerance and may settle earlier: times after that
+        raise ValueError naming the time reached."""
         if self.start is None:
             raise TypeError("followed_until is a landing's from a state (Landing.from_state)")
         return float(self._follow(np.empty(0))[1][7])
