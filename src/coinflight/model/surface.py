@@ -42,6 +42,10 @@ for a coin (REFERENCES §5); 1e-4 m is MuJoCo's default rolling friction (XML re
 ``geom/@friction``), and 1e-5 to 1e-3 m the band to carry (a hard rim on hard wood to a rim
 sinking into a varnish or a cloth)."""
 
+RESISTANCE_BAND = (1e-5, 1e-3)
+"""The plausible range of the rolling and pivoting resistance of a coin's rim on a table, m
+(:data:`DEFAULT_ROLLING_RESISTANCE` gives why): the band a table result is quoted over."""
+
 DEFAULT_PIVOTING_RESISTANCE = 1e-4
 """Pivoting (drilling) resistance ℓ_p of a coin's rim on a table, m (the rigid ending's contact
 is a point, with no drilling friction of its own): an assumption, as the rolling resistance

@@ -56,6 +56,7 @@ import numpy as np
 
 from coinflight import _validation as v
 from coinflight.model.distributions import Distribution
+from coinflight.model.surface import RESISTANCE_BAND
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 from coinflight.studies.presets import HUMAN_PSI
@@ -72,7 +73,7 @@ HAND_DROP = (0.2, 0.5)
 """Height of the releasing hand above the table, m (our assumption, no source gives it)."""
 HAND_DIAMETER = (0.02, 0.05)
 """Diameter of a hand-flipped cylinder when the source does not give it, m (our assumption)."""
-RESISTANCE = (1e-5, 1e-3)
+RESISTANCE = RESISTANCE_BAND
 """Rolling and pivoting resistance of the landing, m, both the same value in a cell
 (nobody measured them for a coin; :class:`coinflight.model.surface.Surface`); the band's centre
 is their geometric mean."""

@@ -55,7 +55,7 @@ from coinflight.core.outcome import EDGE
 from coinflight.model.coin import Coin
 from coinflight.model.distributions import Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, Surface
+from coinflight.model.surface import DEFAULT_FRICTION, DEFAULT_RESTITUTION, RESISTANCE_BAND, Surface
 from coinflight.probability import streams
 from coinflight.probability.result import BinomialEstimate
 from coinflight.studies.presets import bouncing_box
@@ -331,7 +331,7 @@ def _bound(what: str, tosses: int) -> None:
 
 
 # --- the nickel's P(edge) band ----------------------------------------------------------------
-RESISTANCES = (1e-5, 1e-3)
+RESISTANCES = RESISTANCE_BAND
 """Rolling and pivoting resistance ℓ_r = ℓ_p of the bands, m: the ends of the range
 :mod:`coinflight.model.surface` carries (an assumption there: no source measures it for a
 coin; a hard rim on hard wood to a rim on a soft cloth). Integrated log-uniformly."""
