@@ -161,8 +161,18 @@ def test_the_corner_radius_is_bounded_by_the_smaller_of_half_thickness_and_radiu
 ):
     """The rounded coin is the cylinder (r − a, h/2 − a) swept by a ball of radius a: both must
     be ≥ 0, so a ≤ min(h/2, r). At the bound the coin is accepted (a = r = h/2 would be a
-    sphere); just above it, refused with a line naming the value, the range and the reason."""
+    sphere, refused: test_a_ball_is_refused); just above it, refused with a line naming the
+    value, the range and the reason."""
     coin = Coin(radius=radius, thickness=thickness, mass=0.005, corner_radius=bound)
     assert coin.corner_radius == bound
     with pytest.raises(ValueError, match=rf"got {1.01 * bound:g}: {re.escape(why)}"):
         Coin(radius=radius, thickness=thickness, mass=0.005, corner_radius=1.01 * bound)
+
+
+def test_a_ball_is_refused():
+    """a = r = h/2 rounds the coin into a ball: no faces, no edge, no well to end in (its
+    contact record would divide by ρ′ = 0). Refused with a line naming the value and why; a
+    hair below it the coin is accepted."""
+    with pytest.raises(ValueError, match=r"below 0\.005 m .* got 0\.005: .* a ball"):
+        Coin(radius=0.005, thickness=0.01, mass=0.004, corner_radius=0.005)
+    assert Coin(radius=0.005, thickness=0.01, mass=0.004, corner_radius=0.00499).corner_radius

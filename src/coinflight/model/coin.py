@@ -157,17 +157,23 @@ def check_corner_radius(
 ) -> float:
     """``value`` (m) as a float between 0 and the smaller of half the ``thickness`` and the
     ``radius`` (a rim corner rounded by a is the cylinder (r − a, h/2 − a) swept by a ball of
-    radius a, which needs both to be ≥ 0; a = r = h/2 is a sphere), else TypeError or a
-    ValueError naming ``name``, the value and the range."""
+    radius a, which needs both to be ≥ 0), but not a = r = h/2, a ball, which has no faces nor
+    edge to land on; else TypeError or a ValueError naming ``name``, the value and the range."""
     arr = v.as_float_array(name, value)  # type: ignore[arg-type]
     if arr.ndim:
         raise TypeError(f"{name} must be a single number, got an array of shape {arr.shape}")
     half = 0.5 * thickness
     why = "half the thickness h/2" if half <= radius else "the radius r (a coin thicker than wide)"
     try:
-        return float(v.in_range(name, arr, 0.0, min(half, radius), "m"))
+        corner = float(v.in_range(name, arr, 0.0, min(half, radius), "m"))
     except ValueError as exc:
         raise ValueError(f"{exc}: at most {why}") from None
+    if corner > 0.0 and corner == half == radius:
+        raise ValueError(
+            f"{name} must be below {corner:g} m for a coin as thick as it is wide, got "
+            f"{corner:g}: a = r = h/2 is a ball, which has no faces"
+        )
+    return corner
 
 
 def _unusual_coin(odd: list[tuple[v.Quantity, float]]) -> str:
