@@ -341,7 +341,7 @@ def profile(n: int, drag: Drag, runs: int) -> None:
             impacts += 1
             z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
             t0 = cycles()
-            v, lm, rebound = d.table_impact(v, lm, n, c)
+            v, lm, rebound = d.impact(v, lm, n, c)
             t1 = cycles()
             status = d.ending(v, lm, n, rebound, c)[1]
             t2 = cycles()

@@ -15,7 +15,7 @@ import numpy as np
 from coinflight import Coin
 from coinflight.core import bounce, drag
 from coinflight.core.contact import Contact
-from coinflight.core.impact import lowest_depth
+from coinflight.core.impact import CONTACT_DURATION, lowest_depth
 from coinflight.model.surface import Surface
 from coinflight.outcomes.table import contact_record
 
@@ -47,6 +47,39 @@ def coin_contact(
         pivoting_resistance,
     )
     return contact_record(coin, surface, g, rest_speed=rest_speed)
+
+
+def impact_record(
+    coin: Coin,
+    restitution: float,
+    friction: float,
+    *,
+    corner_radius: float = 0.0,
+    contact_duration: float | None = None,
+) -> Contact:
+    """The contact record one impact reads (:func:`coinflight.core.impact.impact`): ``coin``'s
+    r, h/2, m, I1, I3, e, μ, the corner radius (0, sharp, by default, whatever the coin's) and
+    t_c (:data:`coinflight.core.impact.CONTACT_DURATION` by default; 0: the lowest point
+    alone). Built directly, not through a Surface nor ``Contact.build``: the impact law's tests
+    take values a table refuses (μ = 10, t_c = 0, a corner rounding the coin into a ball)."""
+    i1, i3 = coin.moments
+    return Contact(
+        radius=coin.radius,
+        half_thickness=0.5 * coin.thickness,
+        mass=coin.mass,
+        i1=float(i1),
+        i3=float(i3),
+        restitution=float(restitution),
+        friction=float(friction),
+        drop_height=0.0,
+        g=G,
+        rest_speed=bounce.REST_SPEED,
+        reach=math.nan,  # the wells' fields, which no impact reads (a ball has none)
+        edge_sine=math.nan,
+        barrier=math.nan,
+        corner_radius=float(corner_radius),
+        contact_duration=CONTACT_DURATION if contact_duration is None else contact_duration,
+    )
 
 
 def coin_air(

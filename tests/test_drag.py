@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from _kernels import coin_air, coin_contact
+from _kernels import coin_air, coin_contact, impact_record
 from _work import counted_catch
 from coinflight import Coin, Flight, Toss
 from coinflight.core import ballistics, bounce, numerical
@@ -666,7 +666,7 @@ def test_bounce_flight_agrees_with_dop853(omega, v0, start):
     n = tuple(rot.apply([0.0, 0.0, 1.0]))
     z = lowest_depth(n[2], r, hh)
     v1, lm1, rebound = impact(
-        tuple(y[3:6]), tuple(rot.apply(inertia * y[6:9])), n, r, hh, NICKEL.mass, i1, i3, 0.5, 0.3
+        tuple(y[3:6]), tuple(rot.apply(inertia * y[6:9])), n, impact_record(NICKEL, 0.5, 0.3)
     )
     assert air_kernels.ending(v1, lm1, n, rebound, contact)[1] < 0  # it bounces
     y1 = np.concatenate([[0.0, 0.0, 0.0], v1, rot.inv().apply(np.array(lm1)) / inertia, y[9:13]])

@@ -10,6 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _kernels import impact_record
 from coinflight import Coin
 from coinflight.core import impact
 from coinflight.model.surface import MAX_FRICTION
@@ -65,7 +66,7 @@ def test_lowest_point_is_lowest_point_of_the_cylinder(nz):
 def test_kinetic_energy_never_grows(n, v, w, e, mu):
     n, v, lm = _state(n, v, w)
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
-    v2, lm2, rebound = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu)
+    v2, lm2, rebound = impact.impact(v, lm, n, impact_record(COIN, e, mu))
     after = impact.kinetic_energy(v2, lm2, n, M, I1, I3)
     assert after <= before * (1 + 1e-12) + 1e-18
     # The contact point never ends moving into the surface.
@@ -80,7 +81,7 @@ def test_elastic_frictionless_keeps_energy_and_reverses_normal_velocity(n, v, w)
     n, v, lm = _state(n, v, w)
     rc = impact.contact_point(n, R, HH)
     u = impact.contact_velocity(v, impact.angular_velocity(lm, n, I1, I3), rc)
-    v2, lm2, rebound = impact.impact(v, lm, n, R, HH, M, I1, I3, 1.0, 0.0, 0.0, 0.0)
+    v2, lm2, rebound = impact.impact(v, lm, n, impact_record(COIN, 1.0, 0.0, contact_duration=0.0))
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
     after = impact.kinetic_energy(v2, lm2, n, M, I1, I3)
     assert after == pytest.approx(before, rel=1e-12, abs=1e-18)
@@ -93,7 +94,7 @@ def test_restitution_sets_rebound_of_flat_drop():
     # A coin falling flat at 2 m/s without spin: the rebound is e times the impact speed.
     for e in (0.0, 0.3, 0.8):
         v2, _lm2, rebound = impact.impact(
-            (0.0, 0.0, -2.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), R, HH, M, I1, I3, e, 0.5
+            (0.0, 0.0, -2.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), impact_record(COIN, e, 0.5)
         )
         assert v2 == pytest.approx((0.0, 0.0, 2.0 * e), abs=1e-12)
         assert rebound == pytest.approx(2.0 * e, abs=1e-12)
@@ -103,7 +104,7 @@ def test_sticking_friction_stops_the_slip():
     # Tilted coin, sliding fast sideways onto the table with large μ: the contact point sticks.
     n = _unit((0.5, 0.0, 0.8))
     n, v, lm = _state(n, (1.0, 0.5, -2.0), (0.0, 0.0, 0.0))
-    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, 0.0, 10.0)
+    v2, lm2, _ = impact.impact(v, lm, n, impact_record(COIN, 0.0, 10.0))
     rc = impact.contact_point(n, R, HH)
     u = impact.contact_velocity(v2, impact.angular_velocity(lm2, n, I1, I3), rc)
     # The slip is brought exactly to rest (its last part by one straight segment in impulse
@@ -135,7 +136,7 @@ def test_impulse_acts_through_the_contact_point(n, v, w, e, mu):
     tests/test_simultaneous_impact.py.)"""
     n, v, lm = _state(n, v, w)
     rc = np.array(impact.contact_point(n, R, HH))
-    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu, 0.0, 0.0)
+    v2, lm2, _ = impact.impact(v, lm, n, impact_record(COIN, e, mu, contact_duration=0.0))
     before = np.array(lm) - np.cross(rc, M * np.array(v))
     after = np.array(lm2) - np.cross(rc, M * np.array(v2))
     np.testing.assert_allclose(after, before, rtol=0, atol=1e-12 * (np.abs(before).max() + 1e-9))
@@ -147,7 +148,7 @@ def test_frictionless_impact_is_vertical(n, v, w, e):
     """μ = 0: the impulse is vertical, so the horizontal momentum and the vertical component of
     the angular momentum about the centre of mass do not change."""
     n, v, lm = _state(n, v, w)
-    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, 0.0)
+    v2, lm2, _ = impact.impact(v, lm, n, impact_record(COIN, e, 0.0))
     assert v2[0] == v[0] and v2[1] == v[1]
     assert lm2[2] == pytest.approx(lm[2], rel=1e-12, abs=1e-18)
 
@@ -170,7 +171,7 @@ def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0, duration=0
     default (``duration`` 0: no second contact joins it; the simultaneous impact of a coin
     landing nearly flat or upright is tested in tests/test_simultaneous_impact.py)."""
     i1, i3 = coin.moments
-    r, hh, m = coin.radius, 0.5 * coin.thickness, coin.mass
+    r, hh = coin.radius, 0.5 * coin.thickness
     a = corner * hh
     n = _unit(n)
     wn = sum(a * b for a, b in zip(w, n, strict=True))
@@ -179,7 +180,9 @@ def _impulse_and_state(coin, n, v, w, e, mu, kernel=None, corner=0.0, duration=0
     rc = impact.contact_point(n, r, hh, a)
     u = impact.contact_velocity(v, impact.angular_velocity(lm, n, i1, i3), rc)
     law = impact.impact if kernel is None else kernel
-    v2, lm2, rebound = law(v, lm, n, r, hh, m, i1, i3, e, mu, a, duration)
+    v2, lm2, rebound = law(
+        v, lm, n, impact_record(coin, e, mu, corner_radius=a, contact_duration=duration)
+    )
     return (v, lm), (v2, lm2), rc, u, rebound
 
 

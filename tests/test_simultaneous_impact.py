@@ -23,6 +23,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
+from _kernels import impact_record
 from coinflight import Coin
 from coinflight.core import bounce, impact
 from coinflight.core.outcome import Status
@@ -112,7 +113,7 @@ def test_a_flat_impact_bounces_flat(name):
     e times the approach speed, and no spin is made (Stronge 2000 §4.2: a central impact)."""
     coin = Coin.preset(name)
     i1, i3 = coin.moments
-    r, hh, m = coin.radius, 0.5 * coin.thickness, coin.mass
+    r = coin.radius
     rng = np.random.default_rng(7 + len(name))
     for _ in range(200):
         speed = rng.uniform(0.3, 5.0)
@@ -125,7 +126,7 @@ def test_a_flat_impact_bounces_flat(name):
         w *= rng.uniform(0.0, 1e-4) * speed / r / np.linalg.norm(w)
         lm = _lm(n, w, i1, i3)
         v2, lm2, rebound = impact.impact(
-            (0.0, 0.0, -speed), lm, n, r, hh, m, i1, i3, e, mu, coin.corner_radius
+            (0.0, 0.0, -speed), lm, n, impact_record(coin, e, mu, corner_radius=coin.corner_radius)
         )
         assert v2[2] == pytest.approx(e * speed, rel=1e-3, abs=1e-9 * speed)
         assert math.hypot(v2[0], v2[1]) <= 1e-3 * speed
@@ -142,7 +143,7 @@ def test_without_spin_a_flat_impact_is_central_to_rounding():
         for theta in (0.0, 1e-12, 1e-9, 1e-6, 1e-4, 1e-3):
             n = _tilted(theta, 0.3)
             v2, lm2, rebound = impact.impact(
-                (0.0, 0.0, -2.6), (0.0,) * 3, n, R, HH, M, I1, I3, e, mu
+                (0.0, 0.0, -2.6), (0.0,) * 3, n, impact_record(NICKEL, e, mu)
             )
             assert v2[2] == pytest.approx(2.6 * e, rel=1e-12, abs=1e-12)
             # Spin made: below 1e-9 V/r (the impulse's moment about the centre of mass is
@@ -206,7 +207,7 @@ def test_frictionless_flat_impact_is_the_two_point_newton_impact(theta, azimuth,
     if max(u) >= 0.0:
         return
     expected = _newton_lcp(rc_a, rc_b, n, v, lm, e)
-    v2, lm2, _ = impact.impact(v, lm, n, R, HH, M, I1, I3, e, 0.0)
+    v2, lm2, _ = impact.impact(v, lm, n, impact_record(NICKEL, e, 0.0))
     omega2 = np.array(impact.angular_velocity(lm2, n, I1, I3))
     got = [v2[2] + np.cross(omega2, r)[2] for r in (rc_a, rc_b)]
     np.testing.assert_allclose(got, expected, atol=1e-9 * speed)
@@ -220,8 +221,8 @@ def test_far_from_flat_it_is_the_single_impact_bit_for_bit():
         v = tuple(rng.uniform(-3, 3, 3))
         lm = _lm(n, rng.uniform(-100, 100, 3))
         e, mu = rng.uniform(), rng.uniform(0, 1)
-        assert impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu) == impact.impact(
-            v, lm, n, R, HH, M, I1, I3, e, mu, 0.0, 0.0
+        assert impact.impact(v, lm, n, impact_record(NICKEL, e, mu)) == impact.impact(
+            v, lm, n, impact_record(NICKEL, e, mu, contact_duration=0.0)
         )
 
 
@@ -246,7 +247,7 @@ def test_a_simultaneous_impact_never_makes_energy(near, tilt, azimuth, v, w, e, 
     a = corner * HH
     lm = _lm(n, w)
     before = impact.kinetic_energy(v, lm, n, M, I1, I3)
-    v2, lm2, rebound = impact.impact(v, lm, n, R, HH, M, I1, I3, e, mu, a)
+    v2, lm2, rebound = impact.impact(v, lm, n, impact_record(NICKEL, e, mu, corner_radius=a))
     after = impact.kinetic_energy(v2, lm2, n, M, I1, I3)
     assert after <= before * (1 + 1e-12) + 1e-18
     impulse = M * (np.array(v2) - np.array(v))
@@ -341,7 +342,7 @@ def _first_impact(thetas, e=0.45, mu=0.3, speed=2.6):
     rows = []
     for theta in thetas:
         v2, lm2, rebound = impact.impact(
-            (0.0, 0.0, -speed), (0.0,) * 3, _tilted(theta), R, HH, M, I1, I3, e, mu
+            (0.0, 0.0, -speed), (0.0,) * 3, _tilted(theta), impact_record(NICKEL, e, mu)
         )
         rows.append((*v2, *(x / (M * R) for x in lm2), rebound))
     return np.array(rows)

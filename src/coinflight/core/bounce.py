@@ -67,13 +67,13 @@ from coinflight.core.flight import (
     _precess_from,
     mechanical_energy,
     next_contact,
-    table_impact,
 )
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
     cross,
     dot,
+    impact,
     lowest_depth,
     resting_face,
 )
@@ -224,7 +224,7 @@ def impact_step(z, v, n, lm, c):
     the simultaneous impact of a coin meeting the table nearly flat or upright), the verdict
     :func:`impact_verdict`; status −1 (face −1) if the coin flies on, its next contact looked
     for from ``tau`` into the flight (:func:`leave`)."""
-    v, lm, rebound = table_impact(v, lm, n, c)
+    v, lm, rebound = impact(v, lm, n, c)
     face, status = impact_verdict(z, v, lm, n, rebound, c)
     if status != -1:
         return v, lm, face, status, 0.0

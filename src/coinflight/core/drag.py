@@ -122,13 +122,13 @@ from coinflight.core.flight import (
     GAP_TOLERANCE,
     GRAZE_SKIP,
     precess,
-    table_impact,
 )
 from coinflight.core.impact import (
     angular_velocity,
     contact_point,
     cross,
     dot,
+    impact,
     lowest_depth,
     resting_face,
 )
@@ -1164,7 +1164,7 @@ def land_one(omega_body, start_sign, launch_speed, air, c, max_bounces):
         if bounces >= max_bounces:
             return resting_face(n[2], c.edge_sine), bounces, first, t, _LIMIT
         z = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
-        v, lm, rebound = table_impact(v, lm, n, c)
+        v, lm, rebound = impact(v, lm, n, c)
         face, status, duration = ending(v, lm, n, rebound, c)
         if status >= 0:
             return face, bounces, first, t + duration, status

@@ -11,8 +11,7 @@ flight that starts at an impact needs). Contacts are located exactly, not by a t
 conservative advancement (Mirtich, *Impulse-based dynamic simulation of rigid body systems*,
 PhD thesis, Berkeley 1996, §3.4), accelerated by a second-order bound on the gap, then a
 safeguarded Newton iteration on the gap (:func:`next_contact`). With the energies that decide
-whether a coin can still leave its well (:func:`tumbling_energy`, :func:`mechanical_energy`),
-and the impact that ends a flight, with a landing's contact record (:func:`table_impact`).
+whether a coin can still leave its well (:func:`tumbling_energy`, :func:`mechanical_energy`).
 
 The one flight of the table landing's bounces (:mod:`coinflight.core.bounce`) and of the hops of
 its rigid ending (:mod:`coinflight.core.rigid_ending`), both of which import it from here.
@@ -28,7 +27,6 @@ from coinflight.core.impact import (
     contact_point,
     cross,
     dot,
-    impact,
     lowest_depth,
 )
 
@@ -269,30 +267,6 @@ def _first_positive(tau, z, vz, g, n, lm, i1, radius, hh, corner):
     return tau
 
 
-@njit(cache=True)
-def table_impact(v, lm, n, c):
-    """:func:`coinflight.core.impact.impact` of the coin touching the table with normal n,
-    velocity v and angular momentum L, with the coin, e, μ and corner radius of the contact
-    record c (:class:`coinflight.core.contact.Contact`), and its contact duration t_c, which
-    decides when two rim points strike as one
-    (:func:`coinflight.core.impact.simultaneous_point`): (v, L, rebound speed of the contact
-    point) after it."""
-    return impact(
-        v,
-        lm,
-        n,
-        c.radius,
-        c.half_thickness,
-        c.mass,
-        c.i1,
-        c.i3,
-        c.restitution,
-        c.friction,
-        c.corner_radius,
-        c.contact_duration,
-    )
-
-
 __all__ = [
     "CA_TOLERANCE",
     "GAP_TOLERANCE",
@@ -301,6 +275,5 @@ __all__ = [
     "mechanical_energy",
     "next_contact",
     "precess",
-    "table_impact",
     "tumbling_energy",
 ]

@@ -7,8 +7,9 @@ hh = h/2 whose state is its heads normal n, the velocity v of its centre of mass
 angular momentum L about the centre of mass (all lab frame). Its rim's corners may be rounded
 with a radius a (0 ≤ a ≤ min(h/2, r)): the coin is then the cylinder (r − a, h/2 − a) swept
 by a ball of radius a; :func:`lowest_depth`,
-:func:`contact_point` and :func:`impact` take a (0 by default: the sharp cylinder, bit for
-bit).
+:func:`contact_point` take a (0 by default: the sharp cylinder, bit for bit) and
+:func:`impact` reads it, with the coin, e, μ and the contact duration, from the landing's
+contact record (:class:`coinflight.core.contact.Contact`).
 
 The impact law
 --------------
@@ -76,8 +77,12 @@ and μ = 0 the kinetic energy is conserved.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from coinflight.core._jit import njit
+
+if TYPE_CHECKING:
+    from coinflight.core.contact import Contact
 
 Vec = tuple[float, float, float]
 _Matrix = tuple[float, float, float, float, float, float]
@@ -106,10 +111,9 @@ E* is 0.5-10 GPa (wood across and along the grain) gives 5e-5 to 3e-4 s; a stone
 t_c apart overlap in time: one simultaneous impact (:func:`simultaneous_point`). Not measured
 for coins; it decides only landings that meet the table within about
 v t_c / 2r (≈ 0.7° for a nickel at 2.6 m/s) of flat or of upright. The default of a table's
-``contact_duration`` (:class:`coinflight.model.surface.Surface`, 1 μs to 10 ms), which every
-landing's impacts take from their contact record (:func:`coinflight.core.flight.table_impact`),
-so that an answer is quoted as a band over it, as over the restitution and friction; here only
-the default of :func:`impact` called alone."""
+``contact_duration`` (:class:`coinflight.model.surface.Surface`, 1 μs to 10 ms) and of the
+contact record's (:class:`coinflight.core.contact.Contact`), from which every landing's impacts
+take it, so that an answer is quoted as a band over it, as over the restitution and friction."""
 
 
 @njit(cache=True)
@@ -675,19 +679,7 @@ def simultaneity(delay: float) -> float:
 
 
 @njit(cache=True)
-def _flat_point(
-    rc: Vec,
-    v: Vec,
-    omega: Vec,
-    n: Vec,
-    radius: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    corner: float,
-    offset: float,
-) -> Vec:
+def _flat_point(rc: Vec, v: Vec, omega: Vec, n: Vec, c: Contact, offset: float) -> Vec:
     """:func:`simultaneous_point` of a coin flat to rounding (|n_z| = 1, ``rc`` the centre of
     its lower face): its whole face touches at once (w = 1). The face is represented by the
     diameter along which its points approach at the most different speeds (any one without a
@@ -704,16 +696,17 @@ def _flat_point(
     # In the face plane (n is vertical to rounding): d − (d·n) n, of length r − a.
     along = dx * n[0] + dy * n[1]
     ex, ey, ez = dx - along * n[0], dy - along * n[1], -along * n[2]
-    scale = (radius - corner) / math.sqrt(ex * ex + ey * ey + ez * ez)
+    corner = c.corner_radius
+    scale = (c.radius - corner) / math.sqrt(ex * ex + ey * ey + ez * ez)
     ex, ey, ez = scale * ex, scale * ey, scale * ez
     base = (-offset * n[0], -offset * n[1], -offset * n[2] - corner)
     ra = (base[0] - ex, base[1] - ey, base[2] - ez)  # the end approaching faster
     rb = (base[0] + ex, base[1] + ey, base[2] + ez)
     ua = contact_velocity(v, omega, ra)[2]
     ub = contact_velocity(v, omega, rb)[2]
-    if ua >= 0.0 or (ra[0] - rb[0]) ** 2 + (ra[1] - rb[1]) ** 2 <= 1e-24 * radius * radius:
+    if ua >= 0.0 or (ra[0] - rb[0]) ** 2 + (ra[1] - rb[1]) ** 2 <= 1e-24 * c.radius * c.radius:
         return rc
-    lam = newton_share(ra, rb, ua, ub, n, mass, i1, i3, restitution)
+    lam = newton_share(ra, rb, ua, ub, n, c.mass, c.i1, c.i3, c.restitution)
     return (
         ra[0] + lam * (rb[0] - ra[0]),
         ra[1] + lam * (rb[1] - ra[1]),
@@ -723,20 +716,7 @@ def _flat_point(
 
 @njit(cache=True)
 def simultaneous_point(
-    rc: Vec,
-    v: Vec,
-    omega: Vec,
-    v_after: Vec,
-    omega_after: Vec,
-    n: Vec,
-    radius: float,
-    half_thickness: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    corner: float,
-    duration: float,
+    rc: Vec, v: Vec, omega: Vec, v_after: Vec, omega_after: Vec, n: Vec, c: Contact
 ) -> Vec:
     """Where the impulse of an impact that starts at the lowest point ``rc`` acts, m (relative
     to the centre of mass): ``rc`` itself, or, when a second point of the rim would meet the
@@ -752,11 +732,9 @@ def simultaneous_point(
         The same after the impact at ``rc`` alone (:func:`_strike`): the sequential law's.
     n : tuple of 3 floats
         Heads normal (lab).
-    radius, half_thickness, mass, i1, i3, restitution, corner : float
-        The coin, e and the corner radius, as :func:`impact`.
-    duration : float
-        t_c, the duration of one contact, s (:data:`CONTACT_DURATION`; 0: every impact at the
-        lowest point alone).
+    c : Contact
+        The coin, e, the corner radius a and the contact duration t_c, s (0: every impact at
+        the lowest point alone), as :func:`impact` reads them.
 
     Notes
     -----
@@ -811,14 +789,16 @@ def simultaneous_point(
     """
     nz = n[2]
     s2 = 1.0 - nz * nz
+    duration = c.contact_duration
     if not duration > 0.0:
         return rc
+    corner = c.corner_radius
     sign = 1.0 if nz >= 0.0 else -1.0
-    offset = sign * (half_thickness - corner)
+    offset = sign * (c.half_thickness - corner)
     fx, fy, fz = offset * n[0], offset * n[1], offset * n[2]
     if s2 <= 1e-24:
-        return _flat_point(rc, v, omega, n, radius, mass, i1, i3, restitution, corner, offset)
-    k = (radius - corner) / math.sqrt(s2)
+        return _flat_point(rc, v, omega, n, c, offset)
+    k = (c.radius - corner) / math.sqrt(s2)
     # (r − a) ŵ, the core rim's radius towards the lowest point, and the core face's offset.
     wx, wy, wz = k * nz * n[0], k * nz * n[1], k * (nz * nz - 1.0)
     best = 0.0
@@ -830,7 +810,7 @@ def simultaneous_point(
             cx, cy, cz = wx + fx, wy + fy, wz + fz - corner
         apart = (cx - rc[0]) ** 2 + (cy - rc[1]) ** 2 + (cz - rc[2]) ** 2
         closing = contact_velocity(v_after, omega_after, (cx, cy, cz))[2]
-        if closing >= 0.0 or apart <= 1e-24 * radius * radius:
+        if closing >= 0.0 or apart <= 1e-24 * c.radius * c.radius:
             continue  # not approaching, or no second point (a rim rounded to a = h/2 or r)
         reach = -closing * duration  # how far it closes in one contact duration
         gap = cz - rc[2]
@@ -843,27 +823,14 @@ def simultaneous_point(
         return rc
     ua = contact_velocity(v, omega, rc)[2]
     ub = contact_velocity(v, omega, (bx, by, bz))[2]
-    lam = best * newton_share(rc, (bx, by, bz), ua, ub, n, mass, i1, i3, restitution)
+    lam = best * newton_share(rc, (bx, by, bz), ua, ub, n, c.mass, c.i1, c.i3, c.restitution)
     if lam <= 0.0:
         return rc
     return (rc[0] + lam * (bx - rc[0]), rc[1] + lam * (by - rc[1]), rc[2] + lam * (bz - rc[2]))
 
 
 @njit(cache=True)
-def impact(
-    v: Vec,
-    angular_momentum: Vec,
-    n: Vec,
-    radius: float,
-    half_thickness: float,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    friction: float,
-    corner: float = 0.0,
-    duration: float = CONTACT_DURATION,
-) -> tuple[Vec, Vec, float]:
+def impact(v: Vec, angular_momentum: Vec, n: Vec, c: Contact) -> tuple[Vec, Vec, float]:
     """State just after the coin hits the surface z = const with its lowest point.
 
     Parameters
@@ -874,19 +841,16 @@ def impact(
         Angular momentum about the centre of mass before the impact, kg m²/s.
     n : tuple of 3 floats
         Heads normal (unit), lab frame.
-    radius, half_thickness, mass, i1, i3 : float
-        The coin (m, m, kg, kg m², kg m²).
-    restitution, friction : float
-        Stronge's energetic coefficient of restitution e in [0, 1] and Coulomb's μ ≥ 0 (its
-        properties tested for μ up to 3, :data:`coinflight.model.surface.MAX_FRICTION`).
-    corner : float
-        a, the radius of the rim's rounded corners, m (0 ≤ a ≤ min(h/2, r); 0: sharp): the
-        impulse acts at the lowest point of the cylinder (r − a, h/2 − a) swept by a ball of
-        radius a (:func:`contact_point`).
-    duration : float
-        t_c, the duration of one contact, s (:data:`CONTACT_DURATION`): a second rim point
-        that meets the table within it makes the impact a simultaneous one
-        (:func:`simultaneous_point`); 0: always the lowest point alone.
+    c : Contact
+        The record (:class:`coinflight.core.contact.Contact`) of the coin (r, h/2, m, I1, I3)
+        and the surface, of which the impact reads: Stronge's energetic coefficient of
+        restitution e in [0, 1] and Coulomb's μ ≥ 0 (its properties tested for μ up to 3,
+        :data:`coinflight.model.surface.MAX_FRICTION`); the corner radius a, m
+        (0 ≤ a ≤ min(h/2, r); 0: sharp), the impulse acting at the lowest point of the cylinder
+        (r − a, h/2 − a) swept by a ball of radius a (:func:`contact_point`); and the contact
+        duration t_c, s (:data:`CONTACT_DURATION`): a second rim point that meets the table
+        within it makes the impact a simultaneous one (:func:`simultaneous_point`); 0: always
+        the lowest point alone.
 
     Returns
     -------
@@ -905,53 +869,28 @@ def impact(
     of the simultaneous impact (:func:`simultaneous_point`); see the module notes for the law
     and why the kinetic energy never grows.
     """
-    rc = contact_point(n, radius, half_thickness, corner)
-    omega = angular_velocity(angular_momentum, n, i1, i3)
+    rc = contact_point(n, c.radius, c.half_thickness, c.corner_radius)
+    omega = angular_velocity(angular_momentum, n, c.i1, c.i3)
     u = contact_velocity(v, omega, rc)
     if u[2] >= 0.0:
         return v, angular_momentum, u[2]
-    after = _strike(v, angular_momentum, n, rc, u, mass, i1, i3, restitution, friction)
-    if not duration > 0.0:
+    after = _strike(v, angular_momentum, n, rc, u, c)
+    if not c.contact_duration > 0.0:
         return after
-    both = simultaneous_point(
-        rc,
-        v,
-        omega,
-        after[0],
-        angular_velocity(after[1], n, i1, i3),
-        n,
-        radius,
-        half_thickness,
-        mass,
-        i1,
-        i3,
-        restitution,
-        corner,
-        duration,
-    )
+    omega_after = angular_velocity(after[1], n, c.i1, c.i3)
+    both = simultaneous_point(rc, v, omega, after[0], omega_after, n, c)
     if both == rc:
         return after  # the impact at the lowest point alone
     v, angular_momentum, leaving = _strike(
-        v,
-        angular_momentum,
-        n,
-        both,
-        contact_velocity(v, omega, both),
-        mass,
-        i1,
-        i3,
-        restitution,
-        friction,
+        v, angular_momentum, n, both, contact_velocity(v, omega, both), c
     )
     # The lowest point must not be left moving into the table (the impulse acted beside it,
     # and friction or a partial share may leave it so): if it is, it strikes in turn.
-    u = contact_velocity(v, angular_velocity(angular_momentum, n, i1, i3), rc)
+    u = contact_velocity(v, angular_velocity(angular_momentum, n, c.i1, c.i3), rc)
     lowest = u[2]
     if lowest < 0.0:
-        v, angular_momentum, lowest = _strike(
-            v, angular_momentum, n, rc, u, mass, i1, i3, restitution, friction
-        )
-        omega = angular_velocity(angular_momentum, n, i1, i3)
+        v, angular_momentum, lowest = _strike(v, angular_momentum, n, rc, u, c)
+        omega = angular_velocity(angular_momentum, n, c.i1, c.i3)
         leaving = contact_velocity(v, omega, both)[2]
     # The coin leaves the table as fast as the slower of the two points where it struck.
     return v, angular_momentum, min(lowest, leaving)
@@ -959,23 +898,16 @@ def impact(
 
 @njit(cache=True)
 def _strike(
-    v: Vec,
-    angular_momentum: Vec,
-    n: Vec,
-    rc: Vec,
-    u: Vec,
-    mass: float,
-    i1: float,
-    i3: float,
-    restitution: float,
-    friction: float,
+    v: Vec, angular_momentum: Vec, n: Vec, rc: Vec, u: Vec, c: Contact
 ) -> tuple[Vec, Vec, float]:
     """Stronge's impact at the point rc of the coin, approaching at u (:func:`contact_impulse`):
     (v, angular momentum, normal velocity of rc) after it."""
-    k = collision_matrix(rc, n, mass, i1, i3)
-    impulse, _ = contact_impulse(u, k, restitution, friction, TURN_STEP, SLIP_TOLERANCE, MAX_STEPS)
-    v, angular_momentum = _apply(impulse, v, angular_momentum, rc, mass)
-    omega = angular_velocity(angular_momentum, n, i1, i3)
+    k = collision_matrix(rc, n, c.mass, c.i1, c.i3)
+    impulse, _ = contact_impulse(
+        u, k, c.restitution, c.friction, TURN_STEP, SLIP_TOLERANCE, MAX_STEPS
+    )
+    v, angular_momentum = _apply(impulse, v, angular_momentum, rc, c.mass)
+    omega = angular_velocity(angular_momentum, n, c.i1, c.i3)
     return v, angular_momentum, contact_velocity(v, omega, rc)[2]
 
 

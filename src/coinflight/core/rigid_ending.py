@@ -88,6 +88,7 @@ from coinflight.core.impact import (
     contact_point,
     contact_velocity,
     cross,
+    impact,
     lowest_depth,
     resting_face,
 )
@@ -210,7 +211,7 @@ def _impact(y, c):
     v = (y[1], y[2], y[3])
     lm = (y[7], y[8], y[9])
     n = (y[4], y[5], y[6])
-    v, lm, rebound = flight.table_impact(v, lm, n, c)
+    v, lm, rebound = impact(v, lm, n, c)
     y[0] = lowest_depth(n[2], c.radius, c.half_thickness, c.corner_radius)
     y[1], y[2], y[3] = v
     y[7], y[8], y[9] = lm
