@@ -736,32 +736,18 @@ def _classify_on(y, c, side):
 @njit(cache=True)
 def _slip_error(y, h, c, side, k1, k3, k4, k5, k6, k7):
     """The error estimate of a step of h from y in the slip u_h (m/s): δu = δv + (I⁻¹ δL) × ρ
-    from the estimates δv, δL of :func:`coinflight.core.dormand_prince.error_ratio`."""
-    ex = _estimate(1, h, k1, k3, k4, k5, k6, k7)
-    ey = _estimate(2, h, k1, k3, k4, k5, k6, k7)
+    from the estimates δv, δL (:func:`coinflight.core.dormand_prince.estimate`)."""
+    ex = dp.estimate(1, h, k1, k3, k4, k5, k6, k7)
+    ey = dp.estimate(2, h, k1, k3, k4, k5, k6, k7)
     dl = (
-        _estimate(7, h, k1, k3, k4, k5, k6, k7),
-        _estimate(8, h, k1, k3, k4, k5, k6, k7),
-        _estimate(9, h, k1, k3, k4, k5, k6, k7),
+        dp.estimate(7, h, k1, k3, k4, k5, k6, k7),
+        dp.estimate(8, h, k1, k3, k4, k5, k6, k7),
+        dp.estimate(9, h, k1, k3, k4, k5, k6, k7),
     )
     n = (y[4], y[5], y[6])
     rho, _, _, _, _, _ = _basis(n, c, side)
     wr = cross(angular_velocity(dl, n, c.i1, c.i3), rho)
     return math.sqrt((ex + wr[0]) ** 2 + (ey + wr[1]) ** 2)
-
-
-@njit(cache=True, inline="always")
-def _estimate(i, h, k1, k3, k4, k5, k6, k7):
-    """The error estimate of a step's component i (as
-    :func:`coinflight.core.dormand_prince.error_ratio` forms it)."""
-    return h * (
-        dp.E1 * k1[i]
-        + dp.E3 * k3[i]
-        + dp.E4 * k4[i]
-        + dp.E5 * k5[i]
-        + dp.E6 * k6[i]
-        + dp.E7 * k7[i]
-    )
 
 
 @njit(cache=True)
