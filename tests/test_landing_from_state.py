@@ -14,10 +14,12 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from coinflight.core.bounce import CONTACT_GAP
+from coinflight.core.impact import resting_face
+from coinflight.core.outcome import Status
 from coinflight.model.coin import Coin
 from coinflight.model.surface import Surface
 from coinflight.model.toss import Flight, Toss
-from coinflight.outcomes.table import Landing
+from coinflight.outcomes.table import Landing, contact_record
 
 G = 9.81
 NICKEL = Coin.preset("us-nickel")
@@ -95,17 +97,44 @@ def test_energy_never_grows_along_a_landing():
             velocity=rng.normal(0.0, 0.5, 3),
             angular_velocity=w,
         )
-        # Every time the landing follows when stopped at these times: a roll stopped at each
-        # time parts from the uninterrupted one (followed_until) by the steps' tolerance and,
-        # chaotic, may settle earlier (Landing.followed_until says so); the times it follows
-        # are a prefix of those asked for, and the same stops give the same run.
         t = np.linspace(0.0, landing.followed_until, 400)
-        t = t[: int(landing._follow(t)[1][6])]
-        assert t.size > 100
         energy = _energy(landing.at(t), NICKEL)
         assert np.all(np.diff(energy) <= 1e-12 * energy[0]), np.max(np.diff(energy))
         # In flight it is conserved (no contact between two samples most of the time).
         assert np.isclose(energy[1], energy[0], rtol=1e-12) or landing.outcome.first_contact < t[1]
+
+
+def test_every_time_lies_on_the_one_motion_the_outcome_comes_from():
+    """Landing.at reaches each time by the ending's run from its start stopped there, the
+    uninterrupted run's steps up to the last: the state at a time is the same bit for bit
+    whatever other times are asked for, every time up to followed_until is followed (a roll
+    stopped and carried on at each time would part from the run, chaotic, and settle at
+    another time), and at followed_until the coin is in the well of the outcome's face."""
+    rng = np.random.default_rng(8)
+    checked = 0
+    for _ in range(12):
+        landing = Landing.from_state(
+            NICKEL,
+            TABLE,
+            position=(0.0, 0.0, 0.15),
+            orientation=Rotation.random(random_state=rng),
+            velocity=rng.normal(0.0, 0.5, 3),
+            angular_velocity=rng.normal(0.0, 40.0, 3),
+        )
+        out = landing.outcome
+        until = landing.followed_until
+        t = np.linspace(0.0, until, 40)
+        states = landing.at(t)
+        for i in (13, 29, 39):
+            one = landing.at(t[i])
+            np.testing.assert_array_equal(one.position, states.position[i])
+            np.testing.assert_array_equal(one.normal, states.normal[i])
+            np.testing.assert_array_equal(one.angular_momentum, states.angular_momentum[i])
+        if int(out.status) == Status.SETTLED_CONTACT:
+            nz = float(states.normal[-1, 2])
+            assert resting_face(nz, contact_record(NICKEL, TABLE, G).edge_sine) == int(out.face)
+            checked += 1
+    assert checked >= 6
 
 
 def test_times_keep_their_order_and_shape():

@@ -135,11 +135,12 @@ ENDED_BAND = 3
 
 
 @njit(cache=True)
-def _hop(y, c):
+def _hop(y, c, left):
     """Fly the coin in state y (just left the table, or rebounded) to its next contact, closed
     form (:func:`coinflight.core.flight.next_contact`); y is set to the state at that contact
-    (or left unchanged for a hop too small to open the gap). Returns (time, approach speed of
-    the contact point there; ≥ 0 for no flight or a graze)."""
+    (or left unchanged for a hop too small to open the gap), or, for a contact more than
+    ``left`` s away, to the state in flight ``left`` s on. Returns (time, approach speed of the
+    contact point there; ≥ 0 for no flight or a graze, ∞ for a flight stopped at ``left``)."""
     z, vz = y[0], y[3]
     n = (y[4], y[5], y[6])
     lm = (y[7], y[8], y[9])
@@ -180,6 +181,16 @@ def _hop(y, c):
         tc, m, approach = flight.next_contact(tau, z, vz, g, n, lm, i1, i3, r, hh, corner)
         if tc < 0.0:
             return -1.0, 0.0
+        if total + tc > left:
+            # Stopped in the air: the closed-form flight (ballistic centre, precessing normal).
+            s = left - total
+            m = flight._precess_from(n, lm, i1, s)
+            size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
+            y[0] = z + vz * s - 0.5 * g * s * s
+            y[3] = vz - g * s
+            y[4], y[5], y[6] = m[0] / size, m[1] / size, m[2] / size
+            _carry(y, left)
+            return left, math.inf
         size = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
         m = (m[0] / size, m[1] / size, m[2] / size)
         total += tc
@@ -340,21 +351,24 @@ def _tumbling(y, c):
 
 
 @njit(cache=True)
-def _hops(y, c, counts):
+def _hops(y, c, counts, left):
     """Hops and their impacts, from a coin leaving the table, until it stays in contact: each
     hop flown in closed form (:func:`_hop`) to its impact (:func:`_impact`), until a rebound is
     slower than ``rest_speed``, the energy is below the barrier, or no flight opens the gap
     (the contact goes on, its normal speed removed by the frictionless normal impulse of least
     energy: a plastic touch). ``y`` is advanced in place and ``counts`` updated (impacts in
-    [2], flight time in [5]). Returns (time flown, landed): landed False when a hop found no
-    contact (the landing is then unsettled)."""
+    [2], flight time in [5]). A flight still in the air ``left`` s after the first hop began
+    stops there (y the state in flight). Returns (time flown, landed): landed False when a hop
+    found no contact (the landing is then unsettled)."""
     total = 0.0
     for _ in range(MAX_PHASES):
-        flown, approach = _hop(y, c)
+        flown, approach = _hop(y, c, left - total)
         if flown < 0.0:
             return total, False
         total += flown
         counts[5] += flown
+        if approach == math.inf:
+            break  # stopped in the air at the time asked for
         if approach >= 0.0:
             rc._project(y, c, rc.SLIDING)
             break
@@ -366,14 +380,15 @@ def _hops(y, c, counts):
 
 
 @njit(cache=True)
-def run(y, c, rtol, duration, counts):
+def run(y, c, rtol, duration, counts, stop=False):
     """:func:`settle` on the state y (modified in place), with the step tolerance ``rtol`` and
     at most ``duration`` s (a coin that comes to rest on its band returns with the state it
     entered it in and the time its closed-form roll ends, which may be later, and without
-    rolling resistance is UNSETTLED there). ``counts`` (8 floats) receives (one-rim runs,
-    hops, impacts, rim changes, time rolling, time sliding or in flight, accepted steps, how
-    it ended: :data:`ENDED_BARRIER`, :data:`ENDED_FACE`, :data:`ENDED_BAND`,
-    :data:`ENDED_LIMIT`). Returns (face, status, time)."""
+    rolling resistance is UNSETTLED there; with ``stop``, ``duration`` is a time asked for:
+    the band's roll stops there too, y the state then). ``counts`` (8 floats) receives
+    (one-rim runs, hops, impacts, rim changes, time rolling, time sliding or in flight,
+    accepted steps, how it ended: :data:`ENDED_BARRIER`, :data:`ENDED_FACE`,
+    :data:`ENDED_BAND`, :data:`ENDED_LIMIT`). Returns (face, status, time)."""
     for i in range(8):
         counts[i] = 0.0
     inner = np.zeros(7)
@@ -425,7 +440,11 @@ def run(y, c, rtol, duration, counts):
                             # The band's straight roll is closed form: not capped, unless it never
                             # ends.
                             cap = math.inf if c.rolling_resistance > 0.0 else DURATION - t
+                            if stop:
+                                cap = min(cap, duration - t)
                             face, status, rolled = _band(y, c, cap)
+                            if stop:
+                                _roll(y, c, rolled)  # the state at the time asked for
                             counts[4] += rolled
                             counts[7] = (
                                 ENDED_BAND if status == Status.SETTLED_CONTACT else ENDED_LIMIT
@@ -446,7 +465,7 @@ def run(y, c, rtol, duration, counts):
         else:
             break  # duration, step budget, a failed step
         if hop:
-            flown, landed = _hops(y, c, counts)
+            flown, landed = _hops(y, c, counts, duration - t)
             t += flown
             if not landed:
                 return resting_face(y[6], c.edge_sine), Status.UNSETTLED, t
@@ -455,8 +474,9 @@ def run(y, c, rtol, duration, counts):
 
 
 @njit(cache=True)
-def _band_state(y, c, s, out, k):
-    """Row k of ``out``: the coin rolling on its band (entered in state y) s seconds later."""
+def _roll(y, c, s):
+    """The coin rolling straight on its band (y as :func:`_band` left it) s seconds on, in
+    place: slowed by the rolling resistance, to rest at most."""
     m, r, i3 = c.mass, c.radius, c.i3
     nx, ny = y[4], y[5]
     tx, ty = ny, -nx
@@ -466,22 +486,11 @@ def _band_state(y, c, s, out, k):
     s = min(s, abs(rate) / slowing) if slowing > 0.0 else s
     now = rate - sign * slowing * s
     rolled = r * (rate * s - 0.5 * sign * slowing * s * s)
-    row = (
-        y[10] + rolled * tx,
-        y[11] + rolled * ty,
-        y[0],
-        nx,
-        ny,
-        0.0,
-        r * now * tx,
-        r * now * ty,
-        0.0,
-        i3 * now * nx,
-        i3 * now * ny,
-        0.0,
-    )
-    for j in range(12):
-        out[k, j] = row[j]
+    if y.shape[0] > 10:
+        y[10] += rolled * tx
+        y[11] += rolled * ty
+    y[1], y[2], y[3] = r * now * tx, r * now * ty, 0.0
+    y[7], y[8], y[9] = i3 * now * nx, i3 * now * ny, 0.0
 
 
 @njit(cache=True)
@@ -489,49 +498,36 @@ def states(t0, z, xy, v, n, lm, c, times, k, out):
     """The motion of the ending from the state (z, xy, v, n, lm) at t0 (the end of the
     bounces) at ``times[k:]`` (sorted, s), into the rows of ``out`` (position, normal,
     velocity, angular momentum: :data:`coinflight.core.bounce.STATE_COLUMNS`), up to the time
-    the coin settled: (the index of the first time not followed, that time). The run is
-    stopped and carried on at each time asked for, so a chaotic roll may part from the
-    uninterrupted run of :func:`settle` by its tolerance."""
-    y = np.empty(12)
-    y[0] = z
-    y[1], y[2], y[3] = v
-    y[4], y[5], y[6] = n
-    y[7], y[8], y[9] = lm
-    y[10], y[11] = xy
+    the coin settled: (the index of the first time not followed, that time).
+
+    Each time is reached by a run of the ending from t0 stopped there: the same steps as the
+    uninterrupted run of :func:`settle` up to the last one, which ends at the time, so every
+    state lies on the one motion the outcome comes from (a run stopped and carried on at each
+    time would restart its step control, and a chaotic roll would part from it). m times cost
+    up to m runs of the ending."""
+    start = np.empty(12)
+    start[0] = z
+    start[1], start[2], start[3] = v
+    start[4], start[5], start[6] = n
+    start[7], start[8], start[9] = lm
+    start[10], start[11] = xy
+    y = start.copy()
     counts = np.empty(8)
-    t = t0
+    _, _, elapsed = run(y, c, RTOL, DURATION, counts)
+    end = t0 + elapsed
     m = times.shape[0]
-    while k < m:
-        if times[k] > t:
-            _, status, elapsed = run(y, c, RTOL, times[k] - t, counts)
-            if counts[7] != ENDED_LIMIT or status != Status.UNSETTLED:
-                break  # settled before times[k]
-            t += elapsed
+    while k < m and times[k] <= end:
+        for j in range(12):
+            y[j] = start[j]
+        if times[k] > t0:
+            run(y, c, RTOL, times[k] - t0, counts, True)
         for j in range(3):
             out[k, j] = (y[10], y[11], y[0])[j]
             out[k, 3 + j] = y[4 + j]
             out[k, 6 + j] = y[1 + j]
             out[k, 9 + j] = y[7 + j]
         k += 1
-    else:
-        # Every time asked for followed: the end, where the coin settled.
-        _, status, elapsed = run(y, c, RTOL, DURATION - (t - t0), counts)
-    if counts[7] == ENDED_BAND:
-        # Settled on its band at t + elapsed, entered at y: the rest of the roll, closed form.
-        rate = abs(y[7] * y[4] + y[8] * y[5]) / c.i3
-        inertia = c.i3 + c.mass * c.radius * c.radius
-        excess = 2.0 * (c.barrier - c.mass * c.g * y[0]) / inertia
-        settled = math.sqrt(excess) if excess > 0.0 else 0.0
-        rolled = 0.0
-        if rate > settled:
-            rolled = (rate - settled) * inertia / (c.rolling_resistance * c.mass * c.g)
-        end = t + elapsed
-        entered = end - rolled
-        while k < m and times[k] <= end:
-            _band_state(y, c, times[k] - entered, out, k)
-            k += 1
-        return k, end
-    return k, t + elapsed
+    return k, end
 
 
 @njit(cache=True)

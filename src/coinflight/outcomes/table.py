@@ -498,7 +498,10 @@ class Landing:
 
     def at(self, times: ArrayLike) -> LandingStates:
         """The state at ``times`` (s since the start state; ≥ 0): the flights in closed form,
-        the impacts, then what the landing's ending follows.
+        the impacts, then what the landing's ending follows. Each time in the ending is reached
+        by its run from the end of the bounces, stopped there (the uninterrupted run's steps
+        up to the last), so the states do not depend on which other times are asked for; m
+        times in the ending cost up to m runs of it (a few ms each for a tossed coin).
 
         Only a landing from a state (:meth:`from_state`). ValueError for a time the landing
         does not follow: after it ended at an impact (below the barrier, dead, at the bounce
@@ -536,10 +539,8 @@ class Landing:
     @property
     def followed_until(self) -> float:
         """The time the landing's motion is followed to, s since the start state: the end of
-        the bounces, or where the rigid ending settled the coin, run without a stop. :meth:`at`
-        stops the run at each time asked for, and a chaotic roll so stopped parts from the
-        uninterrupted one by the steps' tolerance and may settle earlier: times after that
-        raise ValueError naming the time reached."""
+        the bounces, or where the rigid ending settled the coin (or gave up). :meth:`at`
+        follows every time up to it, each on the one motion the outcome comes from."""
         if self.start is None:
             raise TypeError("followed_until is a landing's from a state (Landing.from_state)")
         return float(self._follow(np.empty(0))[1][7])
