@@ -12,10 +12,13 @@ and human ones (the ``human`` preset of :mod:`coinflight.studies.presets`), seed
 each set: the landings carried to rest (the bounces, then the rigid 3-D ending) on ``--n``
 tosses, and how they ended; the first contact alone (``max_bounces=0``) on 1,000,000 tosses
 (``--quick`` 200,000); MuJoCo (optional: ``pip install coinflight[mujoco]``, skipped when not
-installed; :func:`coinflight.studies.mujoco_compare.run`, its settings, the surface's
-resistances as its rolling and torsional friction) on the first 100 of the ``--n`` tosses
-(``--quick`` 16): its tosses a second, coinflight's speed ratio to it and the agreement of the
-faces at the first contact and at rest.
+installed; :func:`coinflight.studies.mujoco_compare.run`, its settings with the RK4
+integrator, which these precessing tosses need, the surface's resistances as its rolling and
+torsional friction) on the first 100 of the ``--n`` tosses (``--quick`` 16): its tosses a
+second, coinflight's speed ratio to it and the agreement of the faces at the first contact and
+at rest (the first contact compares the two models' flights and impacts; the roll after the
+bounces is chaotic, so the faces at rest agree less often, and that agreement is no check of
+either engine).
 
 Targets on 2 cores: ≥ 20,000 human or vigorous tosses carried to rest a second, first contact
 ≥ 2 M a second, and the speed ratio against MuJoCo on the same tosses (no target).
@@ -125,7 +128,13 @@ def mujoco(
         print("  MuJoCo: not installed (pip install 'coinflight[mujoco]'), skipped")
         return {}
     w, s = w[:m], s[:m]
-    engine = mc.Engine(torsional=SURFACE.pivoting_resistance, rolling=SURFACE.rolling_resistance)
+    # RK4: these tosses precess (axial spin, wobble), and MuJoCo's default Euler integrator
+    # drifts in the precession over the fall (mujoco_compare's notes).
+    engine = mc.Engine(
+        torsional=SURFACE.pivoting_resistance,
+        rolling=SURFACE.rolling_resistance,
+        integrator="RK4",
+    )
     e, mu = SURFACE.restitution, SURFACE.friction
     run = mc.run(COIN, w, s, DROP, e, mu, G, engine=engine)
     theirs = m / float(run.elapsed)
