@@ -12,7 +12,7 @@ import json
 import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Literal
 
@@ -398,19 +398,7 @@ def landing_report(
         ):
             files.append(write_text(stage / name, text))
         files = [out / f.relative_to(stage) for f in files]
-    return LandingReport(
-        dead,
-        maps,
-        band,
-        mujoco,
-        note,
-        sizes,
-        seed,
-        tuple(files),
-        timings,
-        **more,
-        experiments_left=left,
-    )
+    return replace(report, files=tuple(files))  # the report as computed, and where it went
 
 
 def _pm(p: float, se: float, digits: int = 4) -> str:

@@ -7,7 +7,6 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -33,9 +32,6 @@ from coinflight.report.paper import (
     RotationRow,
     paper_numbers,
 )
-
-if TYPE_CHECKING:
-    pass
 
 Step = Callable[[str], None]
 
@@ -216,28 +212,26 @@ def _captions(numbers: PaperNumbers) -> dict[str, str]:
 
     colour_a, colour_b = _method_colours()
 
-    def box(fig: str) -> str:
+    def plotted(fig: str, form: str, what: str, b_note: str, scale: str) -> str:
+        """The opening both forms of a probability figure's caption share: what is plotted
+        against what, for which tosses."""
         c = prob[fig].case
         return (
+            f"Fig {fig}, the {form} form: {what} method A ({colour_a}) and method B "
+            f"({colour_b}{b_note}) against the number of configurations or events{scale} for "
             f"ωx0 ∈ [{c.omega_x[0]:g}, {c.omega_x[1]:g}] rad/s, ωy0 = {c.omega_y:g} rad/s, T ∈ "
-            f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s"
+            f"[{c.flight_time[0]:g}, {c.flight_time[1]:g}] s; "
         )
 
     def paper_caption(fig: str) -> str:
-        r = prob[fig]
-        return (
-            f"Fig {fig}, the paper's form: P(heads) by method A ({colour_a}) and method B "
-            f"({colour_b}, with 95 % intervals) against the number of configurations or events "
-            f"(log scale) for {box(fig)}; the exact value {r.exact.p_heads:.6f} as a black "
-            f"line, method B's limit (its {METHOD_B_INTERVALS}-cell grid's exact count) dashed."
+        return plotted(fig, "paper's", "P(heads) by", ", with 95 % intervals", " (log scale)") + (
+            f"the exact value {prob[fig].exact.p_heads:.6f} as a black line, method B's limit "
+            f"(its {METHOD_B_INTERVALS}-cell grid's exact count) dashed."
         )
 
     def p_caption(fig: str) -> str:
-        r = prob[fig]
-        return (
-            f"Fig {fig}, the error form: |P(heads) − exact| of method A ({colour_a}) and method "
-            f"B ({colour_b}) against the number of configurations or events, log–log, for "
-            f"{box(fig)}; exact value {r.exact.p_heads:.6f}. Shaded: method B's 95 % interval "
+        return plotted(fig, "error", "|P(heads) − exact| of", "", ", log–log,") + (
+            f"exact value {prob[fig].exact.p_heads:.6f}. Shaded: method B's 95 % interval "
             f"half-width (1.96 s.e.), with its expected slope −1/2 dotted; method A's observed "
             f"slope dashed; method B's floor, its {METHOD_B_INTERVALS}-cell grid's distance "
             "from exact, dashed across."

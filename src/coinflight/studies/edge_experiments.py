@@ -50,7 +50,7 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Any, Generic, Literal, TypeVar
 
 import numpy as np
 
@@ -237,26 +237,45 @@ class Cell:
         return self.estimate.n
 
 
+CellT = TypeVar("CellT")
+
+
+class BoxCells(Generic[CellT]):
+    """Results over the cells of a box (:func:`box_cells`: corners first, the centre last),
+    each cell with one value the box spans (:meth:`value`): its lowest and highest cell and
+    its centre."""
+
+    cells: tuple[CellT, ...]
+
+    def value(self, cell: CellT) -> float:
+        """The value by which the cells are ordered."""
+        raise NotImplementedError
+
+    @property
+    def low(self) -> CellT:
+        """The cell of lowest :meth:`value`."""
+        return min(self.cells, key=self.value)
+
+    @property
+    def high(self) -> CellT:
+        """The cell of highest :meth:`value`."""
+        return max(self.cells, key=self.value)
+
+    @property
+    def centre(self) -> CellT:
+        """The box's centre (the only cell when every parameter was given)."""
+        return self.cells[-1]
+
+
 @dataclass(frozen=True)
-class Band:
+class Band(BoxCells[Cell]):
     """P(edge) over the box: its cells (corners first, the centre last)."""
 
     cells: tuple[Cell, ...]
 
-    @property
-    def low(self) -> Cell:
-        """The cell of lowest P(edge)."""
-        return min(self.cells, key=lambda c: c.p)
-
-    @property
-    def high(self) -> Cell:
-        """The cell of highest P(edge)."""
-        return max(self.cells, key=lambda c: c.p)
-
-    @property
-    def centre(self) -> Cell:
-        """The box's centre."""
-        return self.cells[-1]
+    def value(self, cell: Cell) -> float:
+        """P(edge) of the cell."""
+        return cell.p
 
     def verdict(self, observed: BinomialEstimate) -> Verdict:
         """``"above"`` when the measured 95 % interval lies above the band's top (its highest
@@ -835,6 +854,7 @@ __all__ = [
     "WOBBLE_CELLS",
     "WOBBLE_PSI",
     "Band",
+    "BoxCells",
     "Cell",
     "Comparison",
     "EdgeExperiments",

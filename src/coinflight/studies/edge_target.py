@@ -59,6 +59,7 @@ import numpy as np
 from coinflight import _validation as v
 from coinflight.model.distributions import Distribution
 from coinflight.probability import streams
+from coinflight.studies.edge_experiments import RESISTANCE, BoxCells, axial_spin, box_cells
 
 XTOL = 2e-3
 """Bisection tolerance in ln(h/d): 0.2 % of the ratio, below the statistical error of any
@@ -121,7 +122,7 @@ class TargetCell:
 
 
 @dataclass(frozen=True)
-class EdgeTarget:
+class EdgeTarget(BoxCells[TargetCell]):
     """What :func:`target_ratio` found: the root in each cell (corners first, centre last)."""
 
     probability: float
@@ -135,20 +136,9 @@ class EdgeTarget:
     method: str = METHOD
     measured: tuple[Mapping[str, Any], ...] = field(default_factory=tuple)
 
-    @property
-    def low(self) -> TargetCell:
-        """The cell of smallest root."""
-        return min(self.cells, key=lambda c: c.ratio)
-
-    @property
-    def high(self) -> TargetCell:
-        """The cell of largest root."""
-        return max(self.cells, key=lambda c: c.ratio)
-
-    @property
-    def centre(self) -> TargetCell:
-        """The box's centre (the only cell when every parameter was given)."""
-        return self.cells[-1]
+    def value(self, cell: TargetCell) -> float:
+        """The cell's root h/d."""
+        return cell.ratio
 
     @property
     def yong_mahadevan(self) -> dict[str, float]:
@@ -200,7 +190,6 @@ def target_box(
     neither resistance is given; a single one given keeps the other at its range under its own
     name. Restitution 0 (dead landings, which never reach the rigid ending where alone the
     resistances act) has no resistance in its box, and refuses one given (ValueError)."""
-    from coinflight.studies.edge_experiments import RESISTANCE
     from coinflight.studies.presets import bouncing_box
 
     e_box, mu_box = bouncing_box()
@@ -346,7 +335,6 @@ def target_ratio(
         simulated_corner_radius(corner, [SIM_RATIOS[1]])  # at most the radius, not negative
         low = max(low, 2.0 * corner / SIM_DIAMETER * (1 + 1e-9))
     box = target_box(restitution, friction, rolling_resistance, pivoting_resistance)
-    from coinflight.studies.edge_experiments import box_cells
 
     cells = box_cells(box)
     fixed = {"g": g, "drop_height": drop, "spin": spin, "launch_speed": launch_speed,
@@ -367,7 +355,6 @@ def target_ratio(
             return None
         from coinflight.model.distributions import Uniform
         from coinflight.studies.edge import SIM_SPIN
-        from coinflight.studies.edge_experiments import axial_spin
 
         return axial_spin(x, Uniform(*SIM_SPIN) if spin is None else spin, psi)
 

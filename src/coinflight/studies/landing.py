@@ -125,6 +125,11 @@ def _draw(
     return omega, np.asarray(ballistics.launch_speed(t, dist.g), dtype=float)
 
 
+def _with_stderr(p: float, n: int) -> tuple[float, float]:
+    """(P, its binomial standard error sqrt(P (1 − P) / n)) of a fraction of ``n`` tosses."""
+    return p, math.sqrt(p * (1 - p) / n)
+
+
 # --- dead landings -------------------------------------------------------------------------------
 RATIOS = (0.1, 0.3, 0.577, 1.0)
 """Thickness / diameter ratios of the dead-landing check (the issue's)."""
@@ -194,13 +199,11 @@ class BouncingEdges:
 
     def low(self, k: int) -> tuple[float, float]:
         """(P, s.e.) of ratio ``k``'s lowest cell."""
-        p = float(self.edge[k].min())
-        return p, math.sqrt(p * (1 - p) / self.n)
+        return _with_stderr(float(self.edge[k].min()), self.n)
 
     def high(self, k: int) -> tuple[float, float]:
         """(P, s.e.) of ratio ``k``'s highest cell."""
-        p = float(self.edge[k].max())
-        return p, math.sqrt(p * (1 - p) / self.n)
+        return _with_stderr(float(self.edge[k].max()), self.n)
 
 
 def bouncing_edges(
@@ -467,26 +470,21 @@ class Band:
     @property
     def low(self) -> tuple[float, float]:
         """(P, s.e.) of the lowest cell (corners and centre)."""
-        p = float(self._cells().min())
-        return p, math.sqrt(p * (1 - p) / self.n)
+        return _with_stderr(float(self._cells().min()), self.n)
 
     @property
     def high(self) -> tuple[float, float]:
         """(P, s.e.) of the highest cell (corners and centre)."""
-        p = float(self._cells().max())
-        return p, math.sqrt(p * (1 - p) / self.n)
+        return _with_stderr(float(self._cells().max()), self.n)
 
     def axis(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
         """(P, s.e.) of the cells at the low and at the high end of axis ``k`` (0 corner
         radius, 1 resistance, 2 friction, 3 restitution), pooled over the other axes (the
         s.e. binomial over the 8 ``n`` landings; the cells share their tosses, so it is a
         scale rather than an exact error)."""
-        out = []
-        for end in (0, 1):
-            p = float(np.take(self.edge, end, axis=k).mean())
-            tosses = self.n * self.edge.size // 2
-            out.append((p, math.sqrt(p * (1 - p) / tosses)))
-        return out[0], out[1]
+        tosses = self.n * self.edge.size // 2
+        low, high = (float(np.take(self.edge, end, axis=k).mean()) for end in (0, 1))
+        return _with_stderr(low, tosses), _with_stderr(high, tosses)
 
 
 @dataclass(frozen=True)

@@ -624,25 +624,6 @@ def bound(
     )
 
 
-def _launch_states(
-    m: Any, data: Any, omega: NDArray[np.float64], v0: NDArray[np.float64], drop_height: float
-) -> NDArray[np.float64]:
-    """MuJoCo states (mjSTATE_FULLPHYSICS) of the tosses at launch: heads up, ``drop_height``
-    above the plane, ω in the body frame."""
-    import mujoco
-
-    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
-    states = np.empty((len(v0), mujoco.mj_stateSize(m, spec)))
-    for k in range(len(v0)):
-        mujoco.mj_resetData(m, data)
-        data.qpos[:3] = (0.0, 0.0, drop_height)
-        data.qpos[3:7] = (1.0, 0.0, 0.0, 0.0)  # heads up (scalar first)
-        data.qvel[:3] = (0.0, 0.0, v0[k])
-        data.qvel[3:6] = omega[k]  # free joint: angular velocity in the body frame
-        mujoco.mj_getState(m, data, states[k], spec)
-    return states
-
-
 @dataclass
 class _Carried:
     first: NDArray[np.int8]
@@ -821,9 +802,13 @@ def run(
     flight = vmax / g + math.sqrt(2.0 * (drop_height + vmax * vmax / (2.0 * g)) / g)
     mean = float(np.mean(v0)) if n else 0.0
     landing_speed = math.sqrt(mean**2 + 2.0 * g * drop_height)
+    z = np.full(n, drop_height)
+    vel = np.zeros((n, 3))
+    vel[:, 2] = v0
+    heads_up = np.tile((0.0, 0.0, 1.0), (n, 1))  # so the body frame of ω is the lab's
     return _rollout(
         coin, n, restitution, friction, landing_speed, g, threads, engine,
-        lambda m, data: _launch_states(m, data, omega, v0, drop_height), v0 / g, flight + 0.5,
+        lambda m, data: _placed_states(m, data, z, vel, heads_up, omega), v0 / g, flight + 0.5,
     )  # fmt: skip
 
 
@@ -875,7 +860,8 @@ def _placed_states(
     w_lab: NDArray[np.float64],
 ) -> NDArray[np.float64]:
     """MuJoCo states (mjSTATE_FULLPHYSICS) of coins placed as :func:`run_from` gives them
-    (centre height, lab velocity, unit heads normal, lab angular velocity)."""
+    (centre height, lab velocity, unit heads normal, lab angular velocity); :func:`run`'s
+    tosses are such coins, heads up at launch."""
     import mujoco
 
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
