@@ -35,3 +35,9 @@ def _support(d: Distribution) -> tuple[float, float]:
         return d.low, d.high
     assert isinstance(d, Normal)
     return d.mean - _NORMAL_SPAN * d.sd, d.mean + _NORMAL_SPAN * d.sd
+
+
+def _normal_marks(d: Normal) -> np.ndarray:
+    """Where a normal spin's density changes pace: its support's ends (mean ± 9 sd), mean ± 3
+    sd and its mean, in increasing order."""
+    return d.mean + d.sd * np.array([-_NORMAL_SPAN, -3.0, 0.0, 3.0, _NORMAL_SPAN])
