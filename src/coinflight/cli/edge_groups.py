@@ -17,6 +17,7 @@ from coinflight.cli.options import (
     Gravity,
     number_option,
 )
+from coinflight.queries.values import flag
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
@@ -111,11 +112,9 @@ _TABLE_NUMBERS = {
 
 
 def _table_number(name: str) -> Any:
-    """The option of one of :data:`_TABLE_NUMBERS` (``--`` and the name with dashes; None: not
-    given)."""
+    """The option of one of :data:`_TABLE_NUMBERS`, named after it (None: not given)."""
     metavar, panel, help = _TABLE_NUMBERS[name]
-    flag = "--" + name.replace("_", "-")
-    return Annotated[float | None, number_option(flag, metavar, panel, _ONLY + help)]
+    return Annotated[float | None, number_option(flag(name), metavar, panel, _ONLY + help)]
 
 
 _BOTH = "With --simulate or --target: "

@@ -11,12 +11,14 @@ from typing import Annotated, Any
 
 from fastapi import Depends, Query
 
-from coinflight.queries.values import COIN_NAMES, AirArgs, CoinArgs, TableArgs, TossArgs
-
-
-def flag(name: str) -> str:
-    """The command-line option of the API parameter ``name`` (``omega_x`` → ``--omega-x``)."""
-    return "--" + name.replace("_", "-")
+from coinflight.queries.values import (
+    COIN_NAMES,
+    AirArgs,
+    CoinArgs,
+    TableArgs,
+    TossArgs,
+    flag,
+)
 
 
 def invalid(name: str, text: object, what: str) -> str:
