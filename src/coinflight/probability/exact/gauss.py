@@ -11,7 +11,6 @@ import math
 
 import numpy as np
 
-from coinflight import _validation as v
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
@@ -410,41 +409,14 @@ def _gauss_spins(
             total += math.fsum(w * same(x * x + c * c, np.full_like(x, axial0**2)))
         return total
 
-    previous, previous_n, change = math.nan, 0, math.nan
-    # No answer without two orders (their difference is the error estimate): both bounded
-    # before anything is computed, each later order before its nodes are allocated.
-    v.work_bound(
-        f"the exact Gauss quadrature over {len(ranged)} ranged spins",
-        sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2]),
-        MAX_SPIN_POINTS,
+    return common._by_orders(
+        "the exact Gauss quadrature",
+        len(ranged),
+        GAUSS_ORDERS,
+        lambda n: _gauss_points(dist, ranged, h, n),
+        integral,
+        (MAX_SPIN_POINTS, MAX_SPIN_POINTS),
         "spin points",
-        common._USE_INSTEAD,
-        rate=SPIN_POINTS_PER_SECOND,
-    )
-    used = 0
-    for n in GAUSS_ORDERS:
-        points = _gauss_points(dist, ranged, h, n)
-        where = f"the exact Gauss quadrature over {len(ranged)} ranged spins" + (
-            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
-            f"to {n} nodes a panel,"
-            if math.isfinite(change)
-            else ""
-        )
-        # Bounded before the order's nodes are allocated: refused rather than loosened.
-        v.work_bound(
-            where, used + points, MAX_SPIN_POINTS, "spin points", common._USE_INSTEAD,
-            rate=SPIN_POINTS_PER_SECOND,
-        )  # fmt: skip
-        used += points
-        value = integral(n)
-        change = abs(value - previous)
-        if change <= common.TOLERANCE:
-            details["nodes per panel"] = n
-            details["spin points"] = used
-            # The difference of the last two orders, not below the rounding of the sums.
-            return value, max(change, 4e-16 * math.sqrt(points))
-        previous, previous_n = value, n
-    raise ValueError(
-        f"the exact Gauss quadrature did not reach its tolerance {common.TOLERANCE:g} with "
-        f"{GAUSS_ORDERS[-1]} nodes per panel (last change {change:.2g}); {common._USE_INSTEAD}"
+        SPIN_POINTS_PER_SECOND,
+        details,
     )

@@ -747,36 +747,14 @@ def _omega_psi(
     _check_widths(dist)
     plan = _PolarPlan(dist)
     details["spin integral"] = plan.kind
-    previous, previous_n, change, used = math.nan, 0, math.nan, 0
-    v.work_bound(
-        f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins",
-        sum(plan.points(n) for n in POLAR_ORDERS[:2]),
-        MAX_POLAR_POINTS,
+    return common._by_orders(
+        "the exact (Ω, ψ) rule",
+        len(ranged),
+        POLAR_ORDERS,
+        plan.points,
+        lambda n: 1.0 - plan.integral(n),
+        (MAX_POLAR_POINTS, 2 * MAX_POLAR_POINTS),
         "integrand points",
-        common._USE_INSTEAD,
-        rate=POLAR_POINTS_PER_SECOND,
-    )
-    for n in POLAR_ORDERS:
-        points = plan.points(n)
-        where = f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins" + (
-            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
-            f"to {n} nodes a panel,"
-            if math.isfinite(change)
-            else ""
-        )
-        v.work_bound(
-            where, used + points, 2 * MAX_POLAR_POINTS, "integrand points", common._USE_INSTEAD,
-            rate=POLAR_POINTS_PER_SECOND,
-        )  # fmt: skip
-        used += points
-        value = 1.0 - plan.integral(n)
-        change = abs(value - previous)
-        if change <= common.TOLERANCE:
-            details["nodes per panel"] = n
-            details["integrand points"] = used
-            return value, max(change, 4e-16 * math.sqrt(max(points, 1)))
-        previous, previous_n = value, n
-    raise ValueError(
-        f"the exact (Ω, ψ) rule did not reach its tolerance {common.TOLERANCE:g} with "
-        f"{POLAR_ORDERS[-1]} nodes per panel (last change {change:.2g}); {common._USE_INSTEAD}"
+        POLAR_POINTS_PER_SECOND,
+        details,
     )
