@@ -50,15 +50,9 @@ EdgeRatios = Annotated[
 ]
 EdgeSimulate = Annotated[
     int | None,
-    typer.Option(
-        "--simulate",
-        min=1,
-        max=10**7,
-        metavar="N",
-        rich_help_panel=SIM_PANEL,
-        help=f"Also land N simulated tosses per ratio ({_SETTING}) and report their edge "
-        "fraction with its standard error. With --target: the tosses per ratio tried "
-        "(default 2,000).",
+    _simulate(
+        "report their edge fraction with its standard error. With --target: the tosses per "
+        "ratio tried (default 2,000)"
     ),
 ]
 TargetOption = Annotated[
