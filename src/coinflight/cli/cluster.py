@@ -14,21 +14,23 @@ from typing import Annotated, Any, NamedTuple
 import typer
 
 from coinflight.cli.command import Group
-from coinflight.cli.options import PARALLEL_PANEL
+from coinflight.cli.options import PARALLEL_PANEL, Threads
 
 CLUSTER_PANEL = PARALLEL_PANEL
 
 
 class ClusterArgs(NamedTuple):
-    """--scheduler and --workers as typed (checked when the command runs)."""
+    """--scheduler and --workers as typed (checked when the command runs), and --threads where
+    the command takes it (:data:`ParallelOptions`; None otherwise)."""
 
     scheduler: str | None
     workers: int | None
+    threads: int | None = None
 
     @contextmanager
-    def executor(self, threads: int | None = None) -> Iterator[Any]:
-        """None (the library's thread pool) without --scheduler; else the Dask executor, its
-        cluster started or joined here and closed at the end."""
+    def executor(self) -> Iterator[Any]:
+        """None (the library's thread pool, of --threads threads) without --scheduler; else the
+        Dask executor, its cluster started or joined here and closed at the end."""
         if self.scheduler is None:
             if self.workers is not None:
                 raise ValueError(
@@ -36,7 +38,7 @@ class ClusterArgs(NamedTuple):
                 )
             yield None
             return
-        if threads is not None:
+        if self.threads is not None:
             raise ValueError(
                 "--threads applies without --scheduler; on a Dask cluster each worker is "
                 "one process with one thread (--workers with --scheduler local)"
@@ -90,3 +92,7 @@ CLUSTER = Group(
 )
 ClusterOptions = Annotated[ClusterArgs, CLUSTER]
 """--scheduler and --workers, as typed."""
+PARALLEL = Group({"threads": (Threads, None), **CLUSTER.params}, ClusterArgs)
+ParallelOptions = Annotated[ClusterArgs, PARALLEL]
+"""--threads, --scheduler and --workers, as typed: the commands whose estimators take a
+number of threads on this machine."""

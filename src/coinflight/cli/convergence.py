@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coinflight.cli.cluster import ClusterOptions
+from coinflight.cli.cluster import ParallelOptions
 from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions, ConvergenceTossesOptions
 from coinflight.cli.options import (
@@ -16,7 +16,6 @@ from coinflight.cli.options import (
     JsonFlag,
     Quiet,
     Seed,
-    Threads,
     print_json,
 )
 from coinflight.cli.parsers import output_prefix
@@ -97,8 +96,7 @@ def convergence(
     sizes: Annotated[dict[str, str | None], SIZES],
     grid_cells: Cells = None,
     seed: Seed = None,
-    threads: Threads = None,
-    cluster: ClusterOptions,
+    cluster: ParallelOptions,
     out: Out = Path("convergence"),
     quiet: Quiet = False,
     json_output: JsonFlag = False,
@@ -121,14 +119,14 @@ def convergence(
     targets = [prefix.with_name(f"{prefix.name}.{ext}") for ext in ("csv", "json", "png", "svg")]
     check_all_writable(targets)  # before computing, not after
     total = work_total(dist, plan.methods, **plan.sizes)
-    with cluster.executor(threads) as executor, progress_bar(total, "convergence", quiet) as bar:
+    with cluster.executor() as executor, progress_bar(total, "convergence", quiet) as bar:
         result = run(
             dist,
             plan.methods,
             seed=plan.seed,
             grid_cells=plan.grid_cells or None,
             executor=executor,
-            threads=threads,
+            threads=cluster.threads,
             progress=bar,
             **plan.sizes,
         )

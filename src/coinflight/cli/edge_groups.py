@@ -17,6 +17,7 @@ from coinflight.cli.options import (
     Gravity,
     number_option,
 )
+from coinflight.queries.values import flag
 
 SIM_PANEL = "Simulation"
 RATIOS = "0.1,0.2,0.3,0.4,0.5,0.6,0.8,1"
@@ -49,15 +50,9 @@ EdgeRatios = Annotated[
 ]
 EdgeSimulate = Annotated[
     int | None,
-    typer.Option(
-        "--simulate",
-        min=1,
-        max=10**7,
-        metavar="N",
-        rich_help_panel=SIM_PANEL,
-        help=f"Also land N simulated tosses per ratio ({_SETTING}) and report their edge "
-        "fraction with its standard error. With --target: the tosses per ratio tried "
-        "(default 2,000).",
+    _simulate(
+        "report their edge fraction with its standard error. With --target: the tosses per "
+        "ratio tried (default 2,000)"
     ),
 ]
 TargetOption = Annotated[
@@ -72,71 +67,50 @@ TargetOption = Annotated[
         "closed forms and the measured rows (coinflight.studies.edge_target).",
     ),
 ]
-Restitution = Annotated[
-    float | None,
-    number_option(
-        "--restitution",
-        "E",
-        SURFACE_PANEL,
-        _ONLY + "the table's coefficient of restitution in [0, 1] (default 0: lands dead, "
-        "as in the dynamic model)." + _BAND + "0.3–0.6 (the surface presets').",
-    ),
-]
-Friction = Annotated[
-    float | None,
-    number_option(
-        "--friction",
-        "MU",
-        SURFACE_PANEL,
-        _ONLY
-        + "the table's Coulomb friction coefficient, 0 to 3 (default 0.3)."
-        + _BAND
-        + "0.05–0.6 (the surface presets').",
-    ),
-]
-DropHeight = Annotated[
-    float | None,
-    number_option(
-        "--drop-height",
-        "D",
-        SURFACE_PANEL,
-        _ONLY + "how far the table lies below the launch height, m (default 0.5).",
-    ),
-]
 _BOUNCING = (
     " It acts on every landing that bounces (--restitution above 0), which the rigid ending "
     "carries to rest; dead landings (restitution 0, the default of --simulate) never reach "
     "that ending, and refuse the option."
 )
-_BOTH_ALIKE = _BAND + "1e-5–1e-3 m, both resistances alike."
-RollingResistance = Annotated[
-    float | None,
-    number_option(
-        "--rolling-resistance",
-        "L",
-        CONTACT_PANEL,
-        _ONLY + "the table's " + ROLLING_HELP + _BOUNCING + _BOTH_ALIKE,
+_RESISTANCE = _BOUNCING + _BAND + "1e-5–1e-3 m, both resistances alike."
+_TABLE_NUMBERS = {
+    "restitution": (
+        "E",
+        SURFACE_PANEL,
+        "the table's coefficient of restitution in [0, 1] (default 0: lands dead, as in the "
+        "dynamic model)." + _BAND + "0.3–0.6 (the surface presets').",
     ),
-]
-PivotingResistance = Annotated[
-    float | None,
-    number_option(
-        "--pivoting-resistance",
-        "L",
-        CONTACT_PANEL,
-        _ONLY + "the table's " + PIVOTING_HELP + _BOUNCING + _BOTH_ALIKE,
+    "friction": (
+        "MU",
+        SURFACE_PANEL,
+        "the table's Coulomb friction coefficient, 0 to 3 (default 0.3)."
+        + _BAND
+        + "0.05–0.6 (the surface presets').",
     ),
-]
-CornerRadius = Annotated[
-    float | None,
-    number_option(
-        "--corner-radius",
+    "drop_height": (
+        "D",
+        SURFACE_PANEL,
+        "how far the table lies below the launch height, m (default 0.5).",
+    ),
+    "rolling_resistance": ("L", CONTACT_PANEL, "the table's " + ROLLING_HELP + _RESISTANCE),
+    "pivoting_resistance": ("L", CONTACT_PANEL, "the table's " + PIVOTING_HELP + _RESISTANCE),
+    "corner_radius": (
         "A",
         CONTACT_PANEL,
-        _ONLY + CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's "
-        "thickness (h/d × 24 mm / 2).",
+        CORNER_HELP + " Every ratio's coin takes it: at most half the thinnest one's thickness "
+        "(h/d × 24 mm / 2).",
     ),
-]
+}
+"""The simulated table's numbers: parameter name → (metavar, panel, help after
+"with --simulate or --target: ")."""
+
+
+def _table_number(name: str) -> Any:
+    """The option of one of :data:`_TABLE_NUMBERS`, named after it (None: not given)."""
+    metavar, panel, help = _TABLE_NUMBERS[name]
+    return Annotated[float | None, number_option(flag(name), metavar, panel, _ONLY + help)]
+
+
 _BOTH = "With --simulate or --target: "
 SpinX = Annotated[str | None, _dist("--omega-x", _BOTH + "spin about the x diameter", "rad/s")]
 LaunchSpeed = Annotated[
@@ -154,22 +128,10 @@ Psi = Annotated[
     ),
 ]
 EdgeGravity = Annotated[float | None, *Gravity.__metadata__]
+_TOSS = {"omega_x": SpinX, "launch_speed": LaunchSpeed, "psi": Psi, "g": EdgeGravity}
 SETTING = Group(
-    {
-        name: (kind, None)
-        for name, kind in (
-            ("restitution", Restitution),
-            ("friction", Friction),
-            ("drop_height", DropHeight),
-            ("rolling_resistance", RollingResistance),
-            ("pivoting_resistance", PivotingResistance),
-            ("corner_radius", CornerRadius),
-            ("omega_x", SpinX),
-            ("launch_speed", LaunchSpeed),
-            ("psi", Psi),
-            ("g", EdgeGravity),
-        )
-    },
+    {name: (_table_number(name), None) for name in _TABLE_NUMBERS}
+    | {name: (kind, None) for name, kind in _TOSS.items()},
     dict,
 )
 """The simulated landings' options: the command receives them as keywords of

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coinflight.cli.cluster import ClusterOptions
+from coinflight.cli.cluster import ParallelOptions
 from coinflight.cli.command import Group, command
 from coinflight.cli.groups import CoinOptions, TossesOptions
 from coinflight.cli.landing_groups import AirOptions, TableOptions
@@ -16,7 +16,6 @@ from coinflight.cli.options import (
     JsonFlag,
     Quiet,
     Seed,
-    Threads,
     TossPreset,
     print_json,
 )
@@ -100,8 +99,7 @@ def probability(
     table: TableOptions,
     air: AirOptions,
     how: Annotated[dict[str, Any], HOW],
-    threads: Threads = None,
-    cluster: ClusterOptions,
+    cluster: ParallelOptions,
     quiet: Quiet = False,
     json_output: JsonFlag = False,
 ) -> None:
@@ -118,7 +116,7 @@ def probability(
         table,
         air,
         **how,
-        threads=threads,
+        threads=cluster.threads,
         preset=preset,
         overrides=given_toss_options(ctx) if preset is not None else None,
         inputs={name: ctx.params.get(name) for name in q.INPUT_NAMES},
@@ -126,7 +124,7 @@ def probability(
     if cluster.scheduler is not None and not query.estimator.parallel:
         raise ValueError(f"--scheduler does not apply to the {query.method} method (one task)")
     with (
-        cluster.executor(threads) as executor,
+        cluster.executor() as executor,
         progress_bar(query.work_units(), query.method, quiet) as bar,
     ):
         result = q.run(query, bar, executor=executor)

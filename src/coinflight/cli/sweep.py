@@ -11,7 +11,7 @@ from typing import Annotated, Any
 
 import typer
 
-from coinflight.cli.cluster import ClusterOptions
+from coinflight.cli.cluster import ParallelOptions
 from coinflight.cli.command import command
 from coinflight.cli.options import (
     METHOD_PANEL,
@@ -22,7 +22,6 @@ from coinflight.cli.options import (
     JsonFlag,
     Quiet,
     Seed,
-    Threads,
     coin_option,
     option,
     print_json,
@@ -98,8 +97,7 @@ def sweep(
     method: Method = "exact",
     n: Size = None,
     seed: Seed = None,
-    threads: Threads = None,
-    cluster: ClusterOptions,
+    cluster: ParallelOptions,
     out: Out,
     fresh: Fresh = False,
     quiet: Quiet = False,
@@ -126,12 +124,12 @@ def sweep(
         inputs=ctx.params,
     )  # fmt: skip
     with (
-        cluster.executor(threads) as executor,
+        cluster.executor() as executor,
         progress_bar(len(query.cases), "sweep", quiet) as bar,
     ):
         results, files = run_sweep(
             query.cases, out, method, n, seed, inputs=query.inputs, fresh=fresh,
-            executor=executor, threads=threads, progress=bar,
+            executor=executor, threads=cluster.threads, progress=bar,
         )  # fmt: skip
     if json_output:
         print_json(sweep_summary(query, results, files, time.perf_counter() - t0))

@@ -16,7 +16,8 @@ from coinflight.cli.landing_help import (
 from coinflight.cli.options import CONTACT_PANEL, SURFACE_PANEL, TOSS_PANEL, option
 from coinflight.model.surface import surface_kinds
 from coinflight.queries.probability import PRESET_OPTIONS
-from coinflight.queries.sweep import TOSS_PARAMETERS, SweepLandings, flag
+from coinflight.queries.sweep import TOSS_PARAMETERS, SweepLandings
+from coinflight.queries.values import flag
 
 _WHAT = {
     "omega_x": "Spin about the x diameter",

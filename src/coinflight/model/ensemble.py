@@ -36,7 +36,15 @@ PARAMETERS = ("omega_x", "omega_y", "omega_z", "flight_time")
 """Initial conditions in the order used by every estimator (rad/s, rad/s, rad/s, s)."""
 NO_SPIN = Fixed(0.0)
 """Default of ``omega_y`` and ``omega_z``: no spin about that axis (as on the command line)."""
-UNITS = {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s", "flight_time": "s"}
+UNITS = {
+    "omega_x": "rad/s",
+    "omega_y": "rad/s",
+    "omega_z": "rad/s",
+    "flight_time": "s",
+    "launch_speed": "m/s",
+}
+"""The unit of each toss parameter (:data:`PARAMETERS` and the launch speed that may give the
+flight time)."""
 CONTACT = (
     "restitution",
     "friction",

@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from coinflight.queries.values import parse_numbers, simulation_seed
+from coinflight.queries.values import flag, parse_numbers, simulation_seed
 
 TABLE_RATIOS = "0.1,0.3,0.577,1"
 """The ratios h/d of ``coinflight edge`` by default."""
@@ -116,7 +116,7 @@ def edge_query(
         "spin": ("--omega-x", omega_x, "rad/s"),
         "launch_speed": ("--launch-speed", launch_speed, "m/s"),
     }
-    given: list[tuple[str, object]] = [("--" + k.replace("_", "-"), x) for k, x in numbers.items()]
+    given: list[tuple[str, object]] = [(flag(k), x) for k, x in numbers.items()]
     given += [(option, text) for option, text, _ in texts.values()] + [("--g", g)]
     the_seed = simulation_seed(simulate, seed, *given, run_flag="--target P or --simulate")
     setting: dict[str, Any] = {k: x for k, x in {**numbers, "g": g}.items() if x is not None}

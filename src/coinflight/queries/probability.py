@@ -8,6 +8,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from coinflight.model.ensemble import UNITS
 from coinflight.queries.landing import (
     LandingChoice,
     landing_coin,
@@ -15,7 +16,7 @@ from coinflight.queries.landing import (
     settings_for,
     table_spread,
 )
-from coinflight.queries.values import AirArgs, DistArgs, TableArgs
+from coinflight.queries.values import AirArgs, DistArgs, TableArgs, flag
 
 if TYPE_CHECKING:
     from coinflight.model.coin import Coin
@@ -26,13 +27,7 @@ if TYPE_CHECKING:
 INPUT_NAMES = ("omega_x", "omega_y", "omega_z", "flight_time", "launch_speed", "g", "preset")
 """The toss options whose typed values the JSON repeats under ``inputs`` (by option name)."""
 
-PRESET_OPTIONS = {
-    "omega_x": ("--omega-x", "rad/s"),
-    "omega_y": ("--omega-y", "rad/s"),
-    "omega_z": ("--omega-z", "rad/s"),
-    "flight_time": ("--flight-time", "s"),
-    "launch_speed": ("--launch-speed", "m/s"),
-}
+PRESET_OPTIONS = {name: (flag(name), unit) for name, unit in UNITS.items()}
 """Parameter name → (option, unit) of the toss options a preset supplies and a typed option
 replaces."""
 

@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 from coinflight import _validation as v
 from coinflight.queries.probability import PRESET_OPTIONS, check_method_options
-from coinflight.queries.values import names, parse_numbers_list
+from coinflight.queries.values import flag, names, parse_numbers_list
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -42,11 +42,6 @@ TOSS_PARAMETERS = tuple(PRESET_OPTIONS)
 NOT_INPUTS = ("quiet", "json_output", "out", "fresh", "scheduler", "workers")
 """Options that say where and how a sweep runs, not what it computes: left out of the inputs
 its table records (and of what a resumed run must match)."""
-
-
-def flag(name: str) -> str:
-    """The option of a parameter: ``omega_x`` → ``--omega-x``."""
-    return "--" + name.replace("_", "-")
 
 
 def parse_dists(texts: Sequence[str], option_name: str, unit: str) -> list[Distribution]:

@@ -16,6 +16,11 @@ COIN_NAMES = ", ".join(PRESETS)
 """The coins a --coin (``coin=``) names: the presets of :mod:`coinflight.model.coin`."""
 
 
+def flag(name: str) -> str:
+    """The command-line option of a parameter (or API parameter): ``omega_x`` → ``--omega-x``."""
+    return "--" + name.replace("_", "-")
+
+
 def resolve_coin(
     coin: str | None, radius: float | None, thickness: float | None, mass: float | None
 ) -> Coin:

@@ -11,12 +11,14 @@ from typing import Annotated, Any
 
 from fastapi import Depends, Query
 
-from coinflight.queries.values import COIN_NAMES, AirArgs, CoinArgs, TableArgs, TossArgs
-
-
-def flag(name: str) -> str:
-    """The command-line option of the API parameter ``name`` (``omega_x`` → ``--omega-x``)."""
-    return "--" + name.replace("_", "-")
+from coinflight.queries.values import (
+    COIN_NAMES,
+    AirArgs,
+    CoinArgs,
+    TableArgs,
+    TossArgs,
+    flag,
+)
 
 
 def invalid(name: str, text: object, what: str) -> str:
@@ -26,18 +28,11 @@ def invalid(name: str, text: object, what: str) -> str:
 
 def numbers(text: str, name: str, count: int, metavar: str) -> tuple[float, ...]:
     """``count`` comma-separated numbers (``omega=80,0,0`` for ``--omega 80 0 0``)."""
-    parts = text.split(",")
-    if len(parts) != count:
+    if len(text.split(",")) != count:
         raise ValueError(
             f"{flag(name)} takes {count} comma-separated numbers {metavar}; got {text!r}"
         )
-    values = []
-    for part in parts:
-        try:
-            values.append(float(part))
-        except ValueError:
-            raise ValueError(invalid(name, part, "is not a number")) from None
-    return tuple(values)
+    return number_list(text, name)
 
 
 def number_list(text: str, name: str) -> tuple[float, ...]:

@@ -11,22 +11,14 @@ import math
 
 import numpy as np
 
-from coinflight import _validation as v
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability.exact.common import (
-    _SPINS,
-    _USE_INSTEAD,
-    TOLERANCE,
-    _Details,
-    _pdf,
-    _support,
-)
+from coinflight.probability.exact import common
 
 GAUSS_ORDERS = (12, 16, 24, 32, 48, 64)
 """Gauss–Legendre nodes per panel tried in turn by the Gauss product rule over the spins; the
-result is the first whose change from the previous order is within :data:`TOLERANCE`."""
+result is the first whose change from the previous order is within :data:`~.common.TOLERANCE`."""
 MAX_SPIN_POINTS = 6e7
 """Most spin points (each a few wrapped-normal terms) the Gauss product rule may evaluate over
 all its orders, bounded before anything is allocated (about a minute on the 2-core machine)."""
@@ -57,12 +49,9 @@ def _breaks(d: Distribution, h: float) -> np.ndarray:
     """Panel ends of the composite rule for one spin: its support cut at the mean, ±3 sd and
     at 0 (where the spin's sign flips), then each panel halved until it is at most ``h`` wide
     (at most :data:`MAX_PANELS` panels in all)."""
-    lo, hi = _support(d)
+    lo, hi = common._support(d)
     h = min(h, _scale(d))
-    if isinstance(d, Normal):
-        pts = d.mean + d.sd * np.array([-9.0, -3.0, 0.0, 3.0, 9.0])
-    else:
-        pts = np.linspace(lo, hi, 3)
+    pts = common._normal_marks(d) if isinstance(d, Normal) else np.linspace(lo, hi, 3)
     if pts[0] < 0.0 < pts[-1]:
         pts = np.unique(np.append(pts, 0.0))
     return _refine(pts, h)
@@ -110,7 +99,7 @@ def _resolution(dist: TossDistribution, ranged: list[str]) -> float:
     h = math.inf
     i1, i3 = dist.moments
     nearest = {}
-    for name in _SPINS:
+    for name in common._SPINS:
         d = getattr(dist, name)
         lo, hi = (float(d.ppf(5e-5)), float(d.ppf(1 - 5e-5))) if name in ranged else (d.mean,) * 2
         nearest[name] = 0.0 if lo <= 0.0 <= hi else min(abs(lo), abs(hi))
@@ -124,7 +113,7 @@ def _polar_plan(
     dx: Distribution, dy: Distribution, h: float, kink: float | None, rims: tuple[float, ...] = ()
 ) -> tuple[np.ndarray, int]:
     """The angular panel ends and the radial pieces per segment of :func:`_polar`."""
-    (x1, x2), (y1, y2) = _support(dx), _support(dy)
+    (x1, x2), (y1, y2) = common._support(dx), common._support(dy)
     h = min(h, _scale(dx), _scale(dy))
     corners = [(x, y) for x in (x1, x2) for y in (y1, y2)]
     if x1 <= 0.0 <= x2 and y1 <= 0.0 <= y2:
@@ -215,7 +204,7 @@ def _polar(
     integrand: Gauss–Legendre with ``n`` nodes a panel, panels at most ``h`` wide (arc length
     at the far corner).
     """
-    (x1, x2), (y1, y2) = _support(dx), _support(dy)
+    (x1, x2), (y1, y2) = common._support(dx), common._support(dy)
     ends, pieces = _polar_plan(dx, dy, h, kink, rims)
     phi, wphi = _edge_angles(ends, n, (x1, x2), (y1, y2))
     cos, sin = np.cos(phi), np.sin(phi)
@@ -260,7 +249,7 @@ def _polar(
         x, y = r * cos[:, None], r * sin[:, None]
         xs.append(x.ravel())
         ys.append(y.ravel())
-        ws.append((wphi[:, None] * ws_ * r * _pdf(dx, x) * _pdf(dy, y)).ravel())
+        ws.append((wphi[:, None] * ws_ * r * common._pdf(dx, x) * common._pdf(dy, y)).ravel())
     return np.concatenate(xs), np.concatenate(ys), np.concatenate(ws)
 
 
@@ -272,7 +261,7 @@ def _use_polar(dist: TossDistribution, ranged: list[str]) -> bool:
     and the polar rule converges poorly there)."""
     if "omega_z" not in ranged:
         return dist.omega_z.mean != 0.0
-    (x1, x2), (y1, y2) = _support(dist.omega_x), _support(dist.omega_y)
+    (x1, x2), (y1, y2) = common._support(dist.omega_x), common._support(dist.omega_y)
     return not (x1 <= 0.0 <= x2 and y1 <= 0.0 <= y2) and bool(_rims(dist, ranged))
 
 
@@ -289,7 +278,7 @@ def _rims(dist: TossDistribution, ranged: list[str]) -> tuple[float, ...]:
 
 def _gauss_points(dist: TossDistribution, ranged: list[str], h: float, n: int) -> int:
     """The spin points of one order of :func:`_gauss_spins`, counted before any allocation."""
-    spins = {d: getattr(dist, d) for d in _SPINS}
+    spins = {d: getattr(dist, d) for d in common._SPINS}
     plane = [d for d in ("omega_x", "omega_y") if d in ranged]
     if len(plane) == 2 and _use_polar(dist, ranged):
         kink = None if "omega_z" in ranged else abs(spins["omega_z"].mean) or None
@@ -311,9 +300,9 @@ def _check_blur(dist: TossDistribution, ranged: list[str]) -> None:
     assert isinstance(t, Normal)
     i1, i3 = dist.moments
     nearest = []
-    for name in _SPINS:
+    for name in common._SPINS:
         d = getattr(dist, name)
-        lo, hi = _support(d) if name in ranged else (d.mean, d.mean)
+        lo, hi = common._support(d) if name in ranged else (d.mean, d.mean)
         near = 0.0 if lo <= 0.0 <= hi else min(abs(lo), abs(hi))
         nearest.append(near * (i3 / i1 if name == "omega_z" else 1.0))
     first_edge = max(math.hypot(*nearest), 0.5 * math.pi / (t.mean + 9.0 * t.sd))
@@ -321,12 +310,12 @@ def _check_blur(dist: TossDistribution, ranged: list[str]) -> None:
         raise ValueError(
             f"the exact Gauss rule cannot resolve a flight time of sd {t.sd:g} s: it blurs "
             f"each band edge over {first_edge * t.sd:.2g} rad of phase, less than "
-            f"{NARROWEST_BLUR:g}; {_USE_INSTEAD}"
+            f"{NARROWEST_BLUR:g}; {common._USE_INSTEAD}"
         )
 
 
 def _gauss_spins(
-    dist: TossDistribution, ranged: list[str], details: _Details
+    dist: TossDistribution, ranged: list[str], details: common._Details
 ) -> tuple[float, float]:
     """Wrapped-normal closed form in T, Gauss–Legendre product rule over the spins, split at
     ψ = 45°.
@@ -348,14 +337,14 @@ def _gauss_spins(
 
     Each variable takes a composite Gauss–Legendre rule (panels from :func:`_breaks`, at most
     :func:`_resolution` wide); orders :data:`GAUSS_ORDERS` are tried until two in a row agree
-    within :data:`TOLERANCE`, their difference being the error estimate.
+    within :data:`~.common.TOLERANCE`, their difference being the error estimate.
     """
     i1, i3 = dist.moments
     ratio = i3 / i1
     t = dist.flight_time
     assert isinstance(t, Normal)
     _check_blur(dist, ranged)
-    spins: dict[str, Distribution] = {n: getattr(dist, n) for n in _SPINS}
+    spins: dict[str, Distribution] = {n: getattr(dist, n) for n in common._SPINS}
     plane = [n for n in ("omega_x", "omega_y") if n in ranged]
     z_ranged = "omega_z" in ranged
     axial0 = ratio * spins["omega_z"].mean
@@ -375,14 +364,14 @@ def _gauss_spins(
             return _polar(spins["omega_x"], spins["omega_y"], n, h, kink, rims)
         if len(plane) == 2:  # the apex outside the box: a tensor product of the two
             (x, wx_), (y, wy_) = (_composite(_breaks(spins[d], h), n) for d in plane)
-            wx_, wy_ = wx_ * _pdf(spins[plane[0]], x), wy_ * _pdf(spins[plane[1]], y)
+            wx_, wy_ = wx_ * common._pdf(spins[plane[0]], x), wy_ * common._pdf(spins[plane[1]], y)
             return np.repeat(x, y.size), np.tile(y, x.size), np.outer(wx_, wy_).ravel()
         if not plane:
             return (np.array([spins["omega_x"].mean]), np.array([spins["omega_y"].mean]),
                     np.ones(1))  # fmt: skip
         d = spins[plane[0]]
         x, w = _composite(_breaks(d, h), n)
-        w = w * _pdf(d, x)
+        w = w * common._pdf(d, x)
         fixed = np.full_like(x, spins["omega_y" if plane[0] == "omega_x" else "omega_x"].mean)
         return (x, fixed, w) if plane[0] == "omega_x" else (fixed, x, w)
 
@@ -397,7 +386,7 @@ def _gauss_spins(
             ends = np.where(k[:, None] > 0.0, np.arcsin(np.clip(cuts, -safe, safe) / safe), 0.0)
             theta, w = _composite(ends, n)
             z = safe * np.sin(theta)
-            w = w * safe * np.cos(theta) * _pdf(d, z)
+            w = w * safe * np.cos(theta) * common._pdf(d, z)
             perp2 = np.broadcast_to((wx * wx + wy * wy)[:, None], z.shape)
             p = same(perp2.ravel(), ((ratio * z) ** 2).ravel()).reshape(z.shape)
             return math.fsum(weight * sure) + math.fsum((weight[:, None] * w * p).ravel())
@@ -416,45 +405,18 @@ def _gauss_spins(
             ends = np.sort(np.sqrt(np.maximum(side * side - k * k, 0.0)))
             s, w = _composite(ends, n)
             x = np.sqrt(k * k + s * s)
-            w = w * np.where(x > 0.0, s / np.where(x > 0.0, x, 1.0), 1.0) * _pdf(d, sign * x)
+            w = w * np.where(x > 0.0, s / np.where(x > 0.0, x, 1.0), 1.0) * common._pdf(d, sign * x)
             total += math.fsum(w * same(x * x + c * c, np.full_like(x, axial0**2)))
         return total
 
-    previous, previous_n, change = math.nan, 0, math.nan
-    # No answer without two orders (their difference is the error estimate): both bounded
-    # before anything is computed, each later order before its nodes are allocated.
-    v.work_bound(
-        f"the exact Gauss quadrature over {len(ranged)} ranged spins",
-        sum(_gauss_points(dist, ranged, h, n) for n in GAUSS_ORDERS[:2]),
-        MAX_SPIN_POINTS,
+    return common._by_orders(
+        "the exact Gauss quadrature",
+        len(ranged),
+        GAUSS_ORDERS,
+        lambda n: _gauss_points(dist, ranged, h, n),
+        integral,
+        (MAX_SPIN_POINTS, MAX_SPIN_POINTS),
         "spin points",
-        _USE_INSTEAD,
-        rate=SPIN_POINTS_PER_SECOND,
-    )
-    used = 0
-    for n in GAUSS_ORDERS:
-        points = _gauss_points(dist, ranged, h, n)
-        where = f"the exact Gauss quadrature over {len(ranged)} ranged spins" + (
-            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
-            f"to {n} nodes a panel,"
-            if math.isfinite(change)
-            else ""
-        )
-        # Bounded before the order's nodes are allocated: refused rather than loosened.
-        v.work_bound(
-            where, used + points, MAX_SPIN_POINTS, "spin points", _USE_INSTEAD,
-            rate=SPIN_POINTS_PER_SECOND,
-        )  # fmt: skip
-        used += points
-        value = integral(n)
-        change = abs(value - previous)
-        if change <= TOLERANCE:
-            details["nodes per panel"] = n
-            details["spin points"] = used
-            # The difference of the last two orders, not below the rounding of the sums.
-            return value, max(change, 4e-16 * math.sqrt(points))
-        previous, previous_n = value, n
-    raise ValueError(
-        f"the exact Gauss quadrature did not reach its tolerance {TOLERANCE:g} with "
-        f"{GAUSS_ORDERS[-1]} nodes per panel (last change {change:.2g}); {_USE_INSTEAD}"
+        SPIN_POINTS_PER_SECOND,
+        details,
     )

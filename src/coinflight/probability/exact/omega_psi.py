@@ -19,19 +19,11 @@ from coinflight import _validation as v
 from coinflight.core import bands
 from coinflight.model.distributions import Distribution, Fixed, Normal, Uniform
 from coinflight.model.ensemble import TossDistribution
-from coinflight.probability.exact.common import (
-    _NORMAL_SPAN,
-    _SPINS,
-    _USE_INSTEAD,
-    TOLERANCE,
-    _Details,
-    _pdf,
-    _support,
-)
+from coinflight.probability.exact import common
 
 POLAR_ORDERS = (8, 12, 16, 24, 32)
 """Gauss–Legendre nodes per panel tried in turn by the (Ω, ψ) rule (:func:`_omega_psi`); the
-result is the first whose change from the previous order is within :data:`TOLERANCE`."""
+result is the first whose change from the previous order is within :data:`~.common.TOLERANCE`."""
 MAX_POLAR_POINTS = 4e7
 """Most integrand points the (Ω, ψ) rule may evaluate over its first two orders and each later
 one, bounded before its nodes are allocated (about half a minute on the 2-core machine)."""
@@ -131,11 +123,11 @@ def _folded(d: Distribution) -> tuple[list[float], list[float]]:
     support folded onto [0, ∞): a uniform's ends and 0 inside its range are breaks; a
     normal's 0 inside its support is a break (the fold), its mean, ±3 sd and its support's
     ends (±9 sd, density below 1e-17) soft points."""
-    s1, s2 = _support(d)
+    s1, s2 = common._support(d)
     zero = [0.0] if s1 < 0.0 < s2 else []
     lo = [0.0 if s1 <= 0.0 <= s2 else min(abs(s1), abs(s2)), max(abs(s1), abs(s2))]
     if isinstance(d, Normal):
-        pts = d.mean + d.sd * np.array([-_NORMAL_SPAN, -3.0, 0.0, 3.0, _NORMAL_SPAN])
+        pts = common._normal_marks(d)
         return zero, [*lo, *(abs(float(p)) for p in pts)]
     return [*zero, *lo, abs(s1), abs(s2)], []
 
@@ -148,7 +140,7 @@ def _axial(dz: Distribution, ratio: float) -> _Radial:
 
     def density(a: np.ndarray) -> np.ndarray:
         z = a / ratio
-        return (_pdf(dz, z) + _pdf(dz, -z)) / ratio
+        return (common._pdf(dz, z) + common._pdf(dz, -z)) / ratio
 
     return _Radial(density, [ratio * f for f in hard], [ratio * f for f in soft])
 
@@ -169,12 +161,12 @@ def _plane(dx: Distribution, dy: Distribution) -> _Radial:
         def one(rho: np.ndarray) -> np.ndarray:
             s = np.sqrt(np.maximum(rho * rho - c * c, 0.0))
             safe = np.where(s > 0.0, s, 1.0)
-            return np.where(s > 0.0, (_pdf(d, s) + _pdf(d, -s)) * rho / safe, 0.0)
+            return np.where(s > 0.0, (common._pdf(d, s) + common._pdf(d, -s)) * rho / safe, 0.0)
 
         # ρ = |c| (s = 0) holds the inverse square root: a break whatever y's kind.
-        hard = [*hard, 0.0] if _support(d)[0] <= 0.0 <= _support(d)[1] else hard
+        hard = [*hard, 0.0] if common._support(d)[0] <= 0.0 <= common._support(d)[1] else hard
         return _Radial(one, [math.hypot(c, f) for f in hard], [math.hypot(c, f) for f in soft])
-    (x1, x2), (y1, y2) = _support(dx), _support(dy)
+    (x1, x2), (y1, y2) = common._support(dx), common._support(dy)
     near = math.hypot(
         0.0 if x1 <= 0.0 <= x2 else min(abs(x1), abs(x2)),
         0.0 if y1 <= 0.0 <= y2 else min(abs(y1), abs(y2)),
@@ -213,7 +205,7 @@ class _PlaneInterpolant:
 
     def __init__(self, dx: Distribution, dy: Distribution, breaks: list[float]) -> None:
         self.dx, self.dy = dx, dy
-        self.box = (*_support(dx), *_support(dy))
+        self.box = (*common._support(dx), *common._support(dy))
         self.sd = min(d.sd for d in (dx, dy) if isinstance(d, Normal))
         self.breaks = np.asarray(breaks, dtype=float)
         self.coefs = np.empty((0, 0))  # built on first use (:meth:`_build`)
@@ -225,7 +217,7 @@ class _PlaneInterpolant:
             self.pieces(),
             self.MAX_PIECES,
             "pieces",
-            _USE_INSTEAD,
+            common._USE_INSTEAD,
             rate=PLANE_PIECES_PER_SECOND,
         )
 
@@ -266,7 +258,9 @@ class _PlaneInterpolant:
             phi = lo[:, None] + width * (k[:, None] + 0.5 * (g + 1.0)).ravel()[None, :]
             w = (0.5 * width) * np.tile(gw, panels)[None, :]
             r = rho[:, None]
-            val = _pdf(self.dx, sx * r * np.cos(phi)) * _pdf(self.dy, sy * r * np.sin(phi))
+            val = common._pdf(self.dx, sx * r * np.cos(phi)) * common._pdf(
+                self.dy, sy * r * np.sin(phi)
+            )
             out += rho * np.sum(w * val, axis=1)
         return out
 
@@ -484,7 +478,7 @@ class _PolarPlan:
         self.plane = _plane(dist.omega_x, dist.omega_y)
         self.axial = _axial(dist.omega_z, self.ratio)
         p, ax = self.plane, self.axial
-        self.ranged = sum(not getattr(dist, name).is_fixed for name in _SPINS)
+        self.ranged = sum(not getattr(dist, name).is_fixed for name in common._SPINS)
         self.empty = False
         if p.density is None and ax.density is None:  # pragma: no cover - closed form in T
             raise AssertionError("both atoms: the closed form in T")
@@ -573,7 +567,7 @@ class _PolarPlan:
             edges * per_edge,
             MAX_POLAR_POINTS,
             "integrand points",
-            _USE_INSTEAD,
+            common._USE_INSTEAD,
             rate=POLAR_POINTS_PER_SECOND,
         )
 
@@ -583,7 +577,7 @@ class _PolarPlan:
             float(pairs) * 2 * _CROSSING_SAMPLES,
             MAX_CROSSING_SAMPLES,
             "curve samples",
-            _USE_INSTEAD,
+            common._USE_INSTEAD,
             rate=POLAR_POINTS_PER_SECOND * 10,
         )
 
@@ -691,11 +685,11 @@ def _check_widths(dist: TossDistribution) -> None:
     """Refuse at once (ValueError) a ranged spin narrower than :data:`NARROWEST` of its size:
     the (Ω, ψ) rule's densities lose those digits (a normal spin's width is its support's,
     mean ± 9 sd)."""
-    for name in _SPINS:
+    for name in common._SPINS:
         d = getattr(dist, name)
         if d.is_fixed:
             continue
-        lo, hi = _support(d)
+        lo, hi = common._support(d)
         size = max(abs(lo), abs(hi))
         if hi - lo < NARROWEST * size:
             shown = (
@@ -706,7 +700,7 @@ def _check_widths(dist: TossDistribution) -> None:
             raise ValueError(
                 f"the exact (Ω, ψ) rule cannot resolve {name} = {shown} rad/s: {hi - lo:.3g} "
                 f"rad/s wide, less than {NARROWEST:g} of its size {size:.6g} rad/s; give "
-                f"{name} one value, or {_USE_INSTEAD}"
+                f"{name} one value, or {common._USE_INSTEAD}"
             )
 
 
@@ -721,7 +715,9 @@ def _omega_psi_applies(dist: TossDistribution, ranged: list[str]) -> bool:
     )
 
 
-def _omega_psi(dist: TossDistribution, ranged: list[str], details: _Details) -> tuple[float, float]:
+def _omega_psi(
+    dist: TossDistribution, ranged: list[str], details: common._Details
+) -> tuple[float, float]:
     """Band measure over T in closed form, Gauss–Legendre over the spins in (Ω, ψ).
 
     P(same side | spins) depends on the spins through Ω = √(Ω⊥² + A²) and ψ with
@@ -745,41 +741,20 @@ def _omega_psi(dist: TossDistribution, ranged: list[str], details: _Details) -> 
     (:func:`_smooth_rule`), which makes the square roots at ψ = 45° and at a tangent circle
     smooth. With one of Ω⊥, A fixed the integral is along one curve, over A (Ω⊥ fixed) or
     over Ω⊥ (A fixed); an axial spin below :data:`NEGLIGIBLE_AXIAL` of Ω⊥ is ω_z = 0.
-    Orders :data:`POLAR_ORDERS` are tried until two in a row agree within :data:`TOLERANCE`.
+    Orders :data:`POLAR_ORDERS` are tried until two in a row agree within
+    :data:`~.common.TOLERANCE`.
     """
     _check_widths(dist)
     plan = _PolarPlan(dist)
     details["spin integral"] = plan.kind
-    previous, previous_n, change, used = math.nan, 0, math.nan, 0
-    v.work_bound(
-        f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins",
-        sum(plan.points(n) for n in POLAR_ORDERS[:2]),
-        MAX_POLAR_POINTS,
+    return common._by_orders(
+        "the exact (Ω, ψ) rule",
+        len(ranged),
+        POLAR_ORDERS,
+        plan.points,
+        lambda n: 1.0 - plan.integral(n),
+        (MAX_POLAR_POINTS, 2 * MAX_POLAR_POINTS),
         "integrand points",
-        _USE_INSTEAD,
-        rate=POLAR_POINTS_PER_SECOND,
-    )
-    for n in POLAR_ORDERS:
-        points = plan.points(n)
-        where = f"the exact (Ω, ψ) rule over {len(ranged)} ranged spins" + (
-            f" (at {previous_n} nodes a panel {change:.2g} from the order before), "
-            f"to {n} nodes a panel,"
-            if math.isfinite(change)
-            else ""
-        )
-        v.work_bound(
-            where, used + points, 2 * MAX_POLAR_POINTS, "integrand points", _USE_INSTEAD,
-            rate=POLAR_POINTS_PER_SECOND,
-        )  # fmt: skip
-        used += points
-        value = 1.0 - plan.integral(n)
-        change = abs(value - previous)
-        if change <= TOLERANCE:
-            details["nodes per panel"] = n
-            details["integrand points"] = used
-            return value, max(change, 4e-16 * math.sqrt(max(points, 1)))
-        previous, previous_n = value, n
-    raise ValueError(
-        f"the exact (Ω, ψ) rule did not reach its tolerance {TOLERANCE:g} with "
-        f"{POLAR_ORDERS[-1]} nodes per panel (last change {change:.2g}); {_USE_INSTEAD}"
+        POLAR_POINTS_PER_SECOND,
+        details,
     )
