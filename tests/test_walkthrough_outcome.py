@@ -219,6 +219,7 @@ def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
     # in /api/surfaces (the page's menu), and refuses it once unregistered.
     from fastapi.testclient import TestClient
 
+    from coinflight.queries.landing import SUGGESTED_MOST
     from coinflight.web import create_app
 
     query = "omega_x=60:90&flight_time=0.6:0.9&surface=soft-mat&method=monte-carlo&n=20000&seed=11"
@@ -233,6 +234,8 @@ def test_the_web_api_reaches_the_mat_with_no_other_edit(registry):
             "takes": ["drop_height"],
             "can_end_on_edge": False,
             "closed_form_bands": False,
+            # The tosses the page proposes, from the mat's rate (the base's 1e5 a second).
+            "suggested_n": SUGGESTED_MOST,
         }
         by_api = api_answer(client.get(f"/api/probability?{query}&drop_height=0.5"))
         assert {**by_api, "elapsed": 0} == {**by_cli, "elapsed": 0}

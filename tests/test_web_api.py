@@ -870,3 +870,22 @@ def test_generated_requests_are_answered_or_refused_in_one_line(quick_client, en
             assert 0.0 <= p <= 1.0, f"{context}\n{key} = {p}"
 
     run()
+
+
+def test_each_surface_proposes_tosses_its_server_answers(client):
+    """/api/surfaces gives each kind the number of random tosses the page proposes there
+    (suggested_n): the hand's page default, a table's far fewer (a landing carried to rest
+    takes thousands of times as long as a catch). The table's is answered by Monte Carlo (the
+    work bound counts it within the budget), ten times as many are refused with the way on."""
+    from coinflight.queries.landing import SUGGESTED_MOST
+
+    kinds = {k["name"]: k for k in api_json(client.get("/api/surfaces"))["surfaces"]}
+    assert kinds["hand"]["suggested_n"] == SUGGESTED_MOST
+    n = kinds["table"]["suggested_n"]
+    assert 10 <= n < SUGGESTED_MOST
+    query = "/api/probability?omega_x=150:300&flight_time=0.4:0.6&surface=table&method=monte-carlo"
+    answer = api_json(client.get(f"{query}&n={n}&seed=3"))
+    assert answer["n"] == n and 0.0 <= answer["p_edge"] <= 1.0
+    refused = client.get(f"{query}&n={10 * n}&seed=3")
+    assert refused.status_code == 422
+    assert "use a smaller n" in refused.json()["detail"]

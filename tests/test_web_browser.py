@@ -217,6 +217,30 @@ def test_the_surface_menu_is_the_servers_registry(page: Any, server: str) -> Non
     assert page.problems.messages == []
 
 
+def test_a_table_proposes_the_tosses_the_server_answers(page: Any, server: str) -> None:
+    """Choosing the table puts its suggested number of tosses (/api/surfaces) in the tosses
+    field in place of the hand's 100,000, which the server would refuse there, and the answer
+    comes; back in the hand, the hand's number returns. A number typed by hand is kept."""
+    ready(page, "probability")
+    kinds = {kind["name"]: kind for kind in api(server, "/api/surfaces")["surfaces"]}
+    page.select_option("#prob-method", "monte-carlo")
+    assert page.input_value("#prob-n") == str(kinds["hand"]["suggested_n"])
+    page.select_option("#prob-surface", "table")  # asks at once
+    assert page.input_value("#prob-n") == str(kinds["table"]["suggested_n"])
+    page.wait_for_function(
+        "() => document.querySelector('#prob-text').textContent.includes('P(edge)')"
+    )
+    page.select_option("#prob-surface", "hand")
+    assert page.input_value("#prob-n") == str(kinds["hand"]["suggested_n"])
+    page.fill("#prob-n", "300")
+    page.select_option("#prob-surface", "table")
+    assert page.input_value("#prob-n") == "300"
+    page.wait_for_function(
+        "() => document.querySelector('#prob-text').textContent.includes('P(edge)')"
+    )
+    assert page.problems.messages == []
+
+
 def test_toss_face_and_rotations_are_the_command_lines(page: Any, server: str) -> None:
     """The paper's first toss (ω = (80, 0, 0) rad/s, T = 0.7 s): the page prints what
     ``coinflight toss`` prints, character for character."""

@@ -246,25 +246,53 @@ def check_bounces(surface: Surface, bounces: int | None) -> None:
     check_max_bounces(bounces, "--bounces")
 
 
-def surfaces_payload(kinds: Iterable[SurfaceKind] | None = None) -> dict[str, Any]:
+def surfaces_payload(
+    kinds: Iterable[SurfaceKind] | None = None, seconds: float | None = None
+) -> dict[str, Any]:
     """``GET /api/surfaces``: the surface ``kinds`` (default: every registered one,
     :func:`coinflight.outcomes.register`) in order, each its ``name``, ``summary``, the table's
     parameters it ``takes`` and its model's declarations the page asks: ``can_end_on_edge``
-    (P(edge) is printed) and ``closed_form_bands`` (the exact method applies)."""
+    (P(edge) is printed) and ``closed_form_bands`` (the exact method applies). With
+    ``seconds``, the work a request may take, each kind also has ``suggested_n``, the number of
+    random tosses the page proposes on it (:func:`suggested_tosses`)."""
     from coinflight.model.surface import surface_kinds
+    from coinflight.outcomes import outcome_model
 
-    return {
-        "surfaces": [
-            {
-                "name": k.name,
-                "summary": k.summary,
-                "takes": list(k.takes),
-                "can_end_on_edge": bool(k.model.can_end_on_edge),
-                "closed_form_bands": bool(k.model.closed_form_bands),
-            }
-            for k in (surface_kinds().values() if kinds is None else kinds)
-        ]
-    }
+    listed = []
+    for k in surface_kinds().values() if kinds is None else kinds:
+        entry: dict[str, Any] = {
+            "name": k.name,
+            "summary": k.summary,
+            "takes": list(k.takes),
+            "can_end_on_edge": bool(k.model.can_end_on_edge),
+            "closed_form_bands": bool(k.model.closed_form_bands),
+        }
+        if seconds is not None:
+            entry["suggested_n"] = suggested_tosses(outcome_model(k.name).rate, seconds)
+        listed.append(entry)
+    return {"surfaces": listed}
+
+
+SUGGESTED_MOST = 100_000
+"""The most tosses :func:`suggested_tosses` proposes (the page's default n in the hand)."""
+
+
+def suggested_tosses(rate: float, seconds: float) -> int:
+    """The number of random tosses to propose for a request that may take ``seconds`` of work,
+    on a surface whose tosses run at ``rate`` a second (its model's work-bound rate): the
+    largest 1, 2 or 5 times a power of ten, from 10 to :data:`SUGGESTED_MOST`, whose tosses
+    take at most half of ``seconds`` (a table landing carried to rest takes thousands of times
+    as long as a catch in the hand).
+
+    >>> suggested_tosses(70.0, 7.5), suggested_tosses(1e8, 7.5)
+    (200, 100000)
+    """
+    fits = 0.5 * rate * seconds
+    best = 10
+    for n in (10 * 10**k * f for k in range(5) for f in (1, 2, 5)):
+        if n <= min(fits, SUGGESTED_MOST):
+            best = max(best, n)
+    return best
 
 
 def surface_payload(surface: Surface, drag: Drag | None) -> dict[str, object]:

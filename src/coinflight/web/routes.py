@@ -150,15 +150,18 @@ async def page(request: Request) -> FileResponse:
 
 
 @router.get("/api/surfaces", tags=["toss"], response_class=Response, responses=ANSWERS)
-async def surfaces() -> Response:
+async def surfaces(server: Server) -> Response:
     """The surface kinds a toss may end on (the `surface` parameter, --surface): each one's
-    name, one line on how a toss ends there, the table's parameters it takes, and whether a
-    toss may end on edge there and the exact method applies. Those the server's workers can
-    receive: a kind registered with a lambda is not listed, and refused."""
+    name, one line on how a toss ends there, the table's parameters it takes, whether a toss
+    may end on edge there and the exact method applies, and the number of random tosses
+    this server answers there within its time limit (``suggested_n``). Those the server's
+    workers can receive: a kind registered with a lambda is not listed, and refused."""
     from coinflight.queries.landing import surfaces_payload
 
+    seconds = endpoints.BUDGET_SHARE * server.time_limit
     with invoked(_REQUEST.get()):
-        return Response(json_text(surfaces_payload(_portable_kinds())), media_type=JSON)
+        payload = surfaces_payload(_portable_kinds(), seconds)
+        return Response(json_text(payload), media_type=JSON)
 
 
 @router.get("/api/toss", tags=["toss"], response_class=Response, responses=ANSWERS)

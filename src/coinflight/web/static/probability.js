@@ -25,7 +25,10 @@ export class Probability {
       this.update();
     });
     this.el("prob-method").addEventListener("change", () => this.syncMethod());
-    this.el("prob-surface").addEventListener("change", () => this.update());
+    this.el("prob-surface").addEventListener("change", () => {
+      this.proposeTosses();
+      this.update();
+    });
     this.surfaces = this.loadSurfaces();
     new ResizeObserver(() => this.drawBuildUp()).observe(this.el("buildup-canvas"));
     this.syncMethod();
@@ -55,9 +58,25 @@ export class Probability {
     }
     select.value = "hand";
     select.title = this.kind().summary ?? "";
+    this.proposeTosses();
     select.addEventListener("change", () => {
       select.title = this.kind().summary ?? "";
     });
+  }
+
+  /**
+   * The number of random tosses the server answers on the chosen surface within its time
+   * limit (its suggested_n: a landing on a table, carried to rest, takes thousands of times as
+   * long as a catch), put in the tosses field unless a number of one's own was typed there.
+   */
+  proposeTosses() {
+    const field = this.el("prob-n");
+    const n = this.kind().suggested_n;
+    if (n == null) return;
+    if (this.proposed === undefined || field.value.trim() === String(this.proposed)) {
+      field.value = String(n);
+    }
+    this.proposed = n;
   }
 
   /** The chosen surface kind's declarations (the hand's while the menu is not yet filled). */
