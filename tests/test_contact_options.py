@@ -480,6 +480,35 @@ def test_the_work_bounds_know_the_rigid_endings_rate():
     assert TableLanding(dead, drag).rate == AIR_LANDINGS_PER_SECOND
 
 
+def test_less_resistance_bounds_the_rigid_ending_at_a_lower_rate():
+    """A coin with less rolling and pivoting resistance rolls and spins longer: the rigid
+    ending's rate for the work bounds is RIGID_TOSSES_PER_SECOND at the default 1e-4 m and
+    above, falls as the square root of the larger resistance below it, and bottoms out at
+    RIGID_SLOWEST without any (table.rigid_rate); tosses that draw their resistances are
+    bounded at the harmonic mean over the draws (the expected time a landing)."""
+    from coinflight.model.distributions import Uniform
+    from coinflight.model.ensemble import TossDistribution
+    from coinflight.outcomes.table import RIGID_SLOWEST, rigid_rate
+
+    def rate(rolling, pivoting):
+        return TableLanding(Surface("table", 0.8, 0.5, 0.3, rolling, pivoting)).rate
+
+    assert rate(1e-3, 1e-3) == rate(1e-4, 1e-4) == rate(0.0, 1e-4) == RIGID_TOSSES_PER_SECOND
+    assert rate(1e-5, 1e-5) == pytest.approx(RIGID_TOSSES_PER_SECOND * math.sqrt(0.1))
+    assert rate(1e-5, 1e-5) > rate(1e-6, 0.0) > rate(1e-9, 1e-9) == rate(0.0, 0.0)
+    assert rate(0.0, 0.0) == RIGID_SLOWEST
+    dist = TossDistribution(omega_x=Uniform(150.0, 300.0), flight_time=Uniform(0.4, 0.6))
+    drawn = dist.with_contact(rolling_resistance=Uniform(0.0, 2e-4))
+    model = TableLanding(Surface("table", 0.8))
+    # The expected time of a landing over ℓ_r ~ U(0, 2e-4) (ℓ_p = 1e-4 m: the rate from it).
+    assert model.rate_for(drawn) == pytest.approx(RIGID_TOSSES_PER_SECOND, rel=1e-12)
+    both = drawn.with_contact(pivoting_resistance=Uniform(0.0, 2e-4))
+    u = (np.arange(4000) + 0.5) / 4000 * 2e-4
+    expected = 1.0 / np.mean(1.0 / rigid_rate(u[:, None], u[None, :]))
+    assert model.rate_for(both) == pytest.approx(expected, rel=0.02)
+    assert RIGID_SLOWEST < model.rate_for(both) < RIGID_TOSSES_PER_SECOND
+
+
 def test_a_map_of_rigid_landings_is_bounded_by_its_rate(tmp_path):
     said = one_line_error(
         "plot", "basin", *TABLE, "--out", tmp_path / "map.png"

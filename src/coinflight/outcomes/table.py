@@ -70,11 +70,45 @@ resistances 1e-4 m, on 2 threads of a busy 2-core machine, about half what it me
 (``python benchmarks/bench_bounce.py``: human and vigorous tosses; the coins
 roll for a median 1.5 s, up to 22 s: about 3,000 steps of the one-rim contact a landing)."""
 
+RIGID_RESISTANCE = 1e-4
+"""The rolling and pivoting resistance, m, at which :data:`RIGID_TOSSES_PER_SECOND` holds (the
+surfaces' default); with less, a coin rolls and spins longer and its landing costs more
+(:func:`rigid_rate`)."""
+
+RIGID_SLOWEST = 2.0
+"""Table landings carried to rest a second without rolling or pivoting resistance, for the work
+bounds: coins that roll on until the ending's limit (60 s of motion,
+:data:`coinflight.core.rigid_ending.DURATION`); about half of what human nickel tosses measure
+on 2 threads of a 2-core machine."""
+
+
+def rigid_rate(
+    rolling_resistance: ArrayLike, pivoting_resistance: ArrayLike
+) -> NDArray[np.float64]:
+    """Table landings carried to rest a second, for the work bounds, at these resistances (m;
+    arrays broadcast): :data:`RIGID_TOSSES_PER_SECOND` from :data:`RIGID_RESISTANCE` up, and
+    below it that times the square root of the larger resistance over it, at least
+    :data:`RIGID_SLOWEST`. The landings' cost is set by how long the coins roll and spin after
+    their bounces, which the resistances set (the time scales as 1/ℓ for a rolling coin,
+    less for the rest of a landing, and one of the two at 1e-4 m is enough): human tosses of
+    a US nickel and of thick cylinders, e from 0.2 to 0.9 and μ from 0.1 to 1, land faster
+    than this at every resistance (``python benchmarks/bench_bounce.py`` measures the default
+    surface)."""
+    ell = np.maximum(np.asarray(rolling_resistance, float), np.asarray(pivoting_resistance, float))
+    scaled = RIGID_TOSSES_PER_SECOND * np.sqrt(np.minimum(ell, RIGID_RESISTANCE) / RIGID_RESISTANCE)
+    return np.maximum(scaled, RIGID_SLOWEST)
+
+
 AIR_LANDINGS_PER_SECOND = 1e4
 """Table landings through air a second that end without the rigid ending (e = 0, or a bounce
 limit; 0.8 m drop, μ = 0.3, C_d = 1.17, vigorous nickel tosses), for the work bounds: 2
 threads of a busy 2-core machine (a quiet one runs about five times as many; ``python
 benchmarks/bench_air.py``)."""
+
+
+RATE_QUANTILES = 64
+"""Quantiles of each distributed resistance over which :meth:`TableLanding.rate_for`
+averages the time of a landing."""
 
 
 NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
@@ -632,24 +666,35 @@ class TableLanding(OutcomeModel):
     @property
     def rate(self) -> float:  # type: ignore[override]
         """Tosses a second for the work bounds: landings carried to rest (e > 0, no bounce
-        limit) :data:`RIGID_TOSSES_PER_SECOND`; else (the bounces alone)
+        limit) :func:`rigid_rate` at the surface's resistances; else (the bounces alone)
         :data:`BOUNCING_TOSSES_PER_SECOND`, or with air drag :data:`AIR_LANDINGS_PER_SECOND`."""
         if self.surface.restitution > 0.0 and self.max_bounces is None:
-            return RIGID_TOSSES_PER_SECOND
+            s = self.surface
+            return float(rigid_rate(s.rolling_resistance, s.pivoting_resistance))
         if self.drag is not None:
             return AIR_LANDINGS_PER_SECOND
         return BOUNCING_TOSSES_PER_SECOND
 
     def rate_for(self, dist: TossDistribution | None) -> float:
-        """:attr:`rate`, or :data:`RIGID_TOSSES_PER_SECOND` for landings whose tosses bring
-        their own restitution (``dist.contact``, drawn toss by toss) if any may bounce."""
+        """:attr:`rate` for tosses that bring their own restitution or resistances
+        (``dist.contact``, drawn toss by toss): landings carried to rest if any may bounce, at
+        the harmonic mean of :func:`rigid_rate` over the resistances' distributions (the
+        expected time a landing, on a grid of each one's quantiles, the two independent)."""
         spread = {} if dist is None else dist.contact
+        if not spread or self.drag is not None or self.max_bounces is not None:
+            return self.rate  # (air takes no distributions)
         e = spread.get("restitution")
-        if e is None or self.drag is not None:  # (air takes no distributions)
+        if (self.surface.restitution if e is None else e.bounds[1]) <= 0.0:
             return self.rate
-        if self.max_bounces is None and e.bounds[1] > 0.0:
-            return RIGID_TOSSES_PER_SECOND
-        return self.rate
+        u = (np.arange(RATE_QUANTILES) + 0.5) / RATE_QUANTILES
+
+        def quantiles(name: str, own: float) -> NDArray[np.float64]:
+            return spread[name].ppf(u) if name in spread else np.full(u.size, own)
+
+        rolling = quantiles("rolling_resistance", self.surface.rolling_resistance)
+        pivoting = quantiles("pivoting_resistance", self.surface.pivoting_resistance)
+        rates = rigid_rate(rolling[:, None], pivoting[None, :])
+        return float(1.0 / np.mean(1.0 / rates))
 
     def __init__(
         self, surface: Surface, drag: Drag | None = None, max_bounces: int | None = None

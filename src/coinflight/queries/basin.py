@@ -67,9 +67,9 @@ def time_range(flight_time: str | None, launch_speed: str | None, g: float) -> t
 MAP_SECONDS = 60.0
 """Longest map of table landings a command asks for, s of estimated work at the outcome
 model's rate (a minute, as the grid method's: landings carried to rest through the rigid
-ending, about 70 a second for the work bounds, make about 4,000 cells; stopped after K bounces
-with --bounces, 20,000 a second, a 500×500 map takes 12.5 s). The
-library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
+ending, about 70 a second for the work bounds at the default resistances, make about 4,000
+cells; stopped after K bounces with --bounces, 20,000 a second, a 500×500 map takes 12.5 s).
+The library's own bound is an hour (:func:`coinflight.studies.basin.basin_map`); a command that
 waits for its figure or its page gets a minute."""
 
 
