@@ -36,8 +36,8 @@ sweep states ψ, it does not fit it.
 What it finds is recomputed by ``coinflight landing-report`` ("Thick cylinders against
 experiments", planar tosses and the human preset's wobble), with its caveats; the
 documentation's physics page ("Published edge experiments") discusses it. Cost: a landing
-carried to rest is slow (:data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`, the rate
-the work bound takes; planar tosses, which fall flat soon, run far faster, tosses with a
+carried to rest is slow (:func:`coinflight.outcomes.table.rigid_rate` at each cell's
+resistance, the rate the work bound takes; planar tosses, which fall flat soon, run far faster, tosses with a
 wobble roll longer); a run whose estimated time exceeds the work bound
 (:data:`coinflight._validation.MAX_RUN_SECONDS`) is refused before it starts.
 """
@@ -405,6 +405,16 @@ class EdgeExperiments:
         }
 
 
+def _landing_seconds(cells: Sequence[Mapping[str, float]], n: int) -> float:
+    """Seconds of ``n`` landings carried to rest in each of ``cells``, for the work bounds: at
+    each cell's ``resistance`` (m; the surfaces' default where it has none), the rate of
+    :func:`coinflight.outcomes.table.rigid_rate`."""
+    from coinflight.outcomes.table import RIGID_RESISTANCE, rigid_rate
+
+    ell = np.array([cell.get("resistance", RIGID_RESISTANCE) for cell in cells], dtype=float)
+    return float(np.sum(n / rigid_rate(ell, ell)))
+
+
 def box_cells(ranges: Mapping[str, tuple[float, float]], points: int = 2) -> list[dict[str, float]]:
     """The cells of the box ``ranges`` (name → (low, high)): ``points`` values per parameter,
     ends included (2: the corners), every combination, and the box's centre last when it is
@@ -580,10 +590,8 @@ def edge_experiments(
     ValueError
         Before anything runs: no experiments, sizes out of range, or the whole run above the
         work bound (:data:`coinflight._validation.MAX_RUN_SECONDS` at
-        :data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`).
+        :func:`coinflight.outcomes.table.rigid_rate` at each cell's resistance).
     """
-    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
-
     items, n, settings = _checked(experiments, n, seed)
     boxes = [experiment_box(x, settings[x.setting], restitution, friction) for x in items]
     points = v.count("points per parameter", points, 2, 9)
@@ -593,7 +601,7 @@ def edge_experiments(
         for point in box_cells(box, points):
             _cell_checked(point, g)
     tosses = sum(len(box_cells(b, points)) for b in boxes) * n
-    seconds = tosses / RIGID_TOSSES_PER_SECOND
+    seconds = sum(_landing_seconds(box_cells(b, points), n) for b in boxes)
     what = f"edge experiments: {len(items)} experiments, {tosses:,} tosses"
     v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n)")
     if progress is not None:
@@ -711,8 +719,6 @@ def wobble_sweep(
     runs, as :func:`edge_experiments`; ``progress`` is called first once every input is checked,
     before any toss (the run's size), then after each cell.
     """
-    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
-
     items, n, settings = _checked(experiments, n, seed)
     spins = {
         x.label: [axial_spin(x.ratio, settings[x.setting].spin, p) for p in psis] for x in items
@@ -721,7 +727,7 @@ def wobble_sweep(
         _cell_checked(cell, g)
     runs = len(items) * len(psis) * len(cells)
     what = f"wobble sweep: {runs} cells × {n:,} tosses"
-    seconds = runs * n / RIGID_TOSSES_PER_SECOND
+    seconds = len(items) * len(psis) * _landing_seconds(cells, n)
     v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer tosses per cell (n)")
     if progress is not None:
         progress(f"{what}, about {v.duration(seconds)}")
