@@ -250,3 +250,37 @@ def test_times_outside_what_is_followed_are_refused():
             velocity=(0.0, 0.0, 0.0),
             angular_velocity=(0.0, 0.0, 0.0),
         )
+
+
+@pytest.mark.parametrize("resistance", [0.0, 1e-4])
+def test_a_coin_rolling_upright_on_its_band_is_followed_along_its_roll(resistance):
+    """A nickel upright on its edge band, rolling straight at ω_a = 20 rad/s: Landing.at gives
+    the closed-form roll at every time (the state at a time inside the band's roll is that
+    roll's, not the state it entered it in). Without rolling resistance it rolls at r ω_a to
+    the ending's limit (unsettled, on edge); with ℓ it slows at ℓ m g r / (I3 + m r²)
+    (d/dt of (I3 + m r²) ω_a = −ℓ m g, a rigid wheel's rolling resistance) and settles on
+    edge."""
+    r, m = NICKEL.radius, NICKEL.mass
+    i3 = float(NICKEL.moments[1])
+    table = Surface("table", 0.3, 0.5, 0.3, resistance, resistance)
+    rate = 20.0
+    landing = Landing.from_state(
+        NICKEL,
+        table,
+        position=(0.0, 0.0, r),
+        orientation=Rotation.from_euler("y", 90.0, degrees=True),  # heads normal along +x
+        velocity=(0.0, -r * rate, 0.0),  # rolling along n × z
+        angular_velocity=(rate, 0.0, 0.0),
+    )
+    assert landing.outcome.face_name == "edge"
+    t = np.array([0.0, 0.5, 1.0, 2.0])
+    slowing = resistance * m * G * r / (i3 + m * r * r)  # m/s², along the roll
+    expected = r * rate * t - 0.5 * slowing * t**2
+    states = landing.at(t)
+    np.testing.assert_allclose(-states.position[:, 1], expected, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(states.position[:, 0], 0.0, atol=1e-12)
+    np.testing.assert_allclose(states.normal[:, 2], 0.0, atol=1e-12)
+    if resistance == 0.0:
+        assert int(landing.outcome.status) == Status.UNSETTLED
+    else:
+        assert int(landing.outcome.status) == Status.SETTLED_CONTACT

@@ -577,3 +577,31 @@ def test_carried_position_follows_steady_rolling_on_its_circle():
     assert (run.reason, run.mode) == (rc.DURATION, rc.ROLLING)
     chord = 2.0 * speed / precession * math.sin(0.5 * precession * duration)
     assert math.hypot(y[10], y[11]) == pytest.approx(chord, abs=1e-9)
+
+
+def test_a_hop_stopped_at_a_time_is_the_closed_form_flight_there():
+    """A hop of the ending stopped ``left`` s into its flight (a time Landing.at asks for
+    inside a hop, rigid_ending.run with a duration): the time flown is ``left`` and the state
+    is the closed-form flight there (bounce.fly: the ballistic centre of mass, the torque-free
+    normal), the horizontal position carried; a hop given the time lands as before."""
+    from coinflight.core.impact import lowest_depth
+
+    c = coin_contact(NICKEL)
+    i1, i3 = (float(x) for x in NICKEL.moments)
+    n = np.array([math.sin(0.5), 0.0, math.cos(0.5)])
+    w = np.array([3.0, 40.0, 5.0])
+    lm = i1 * w + (i3 - i1) * (w @ n) * n
+    z = lowest_depth(n[2], NICKEL.radius, 0.5 * NICKEL.thickness)
+    v = (0.2, -0.1, 1.2)  # leaving the table: about 0.24 s of flight
+    start = np.array([z, *v, *n, *lm, 0.01, -0.02])
+    y = start.copy()
+    flown, approach = re._hop(y, c, 0.05)
+    assert (flown, approach) == (0.05, math.inf)
+    position, velocity, normal = bounce.fly(0.05, z, (0.01, -0.02), v, tuple(n), tuple(lm), c)
+    np.testing.assert_allclose(y[[10, 11, 0]], position, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(y[1:4], velocity, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(y[4:7], normal, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(y[7:10], lm)
+    landed = start.copy()
+    flown, approach = re._hop(landed, c, math.inf)
+    assert 0.05 < flown < 0.3 and approach < 0.0  # it came down onto the table
