@@ -37,8 +37,8 @@ What it finds is recomputed by ``coinflight landing-report`` ("Thick cylinders a
 experiments", planar tosses and the human preset's wobble), with its caveats; the
 documentation's physics page ("Published edge experiments") discusses it. Cost: a landing
 carried to rest is slow (:func:`coinflight.outcomes.table.rigid_rate` at each cell's
-resistance, the rate the work bound takes; planar tosses, which fall flat soon, run far faster, tosses with a
-wobble roll longer); a run whose estimated time exceeds the work bound
+resistance, the rate the work bound takes; planar tosses, which fall flat soon, run far faster,
+tosses with a wobble roll longer); a run whose estimated time exceeds the work bound
 (:data:`coinflight._validation.MAX_RUN_SECONDS`) is refused before it starts.
 """
 

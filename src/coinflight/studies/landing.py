@@ -30,9 +30,9 @@ it to rest. These are validation runs, not predictions: every table number they 
 on the restitution, friction, rolling and pivoting resistance and the rim's corner radius,
 none measured for a coin. A number quoted from here goes with its band over those parameters
 (:func:`contact_maps`, :func:`nickel_band`). Cost: a landing carried to rest is slow (the
-coin may roll for seconds; :data:`coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND` is the
-rate the work bounds take), a dead landing (e = 0) ends at its first impact, a hundred times
-faster; every function bounds its work before it starts.
+coin may roll for seconds; :func:`coinflight.outcomes.table.rigid_rate`, at each cell's
+resistance, is the rate the work bounds take), a dead landing (e = 0) ends at its first
+impact, a hundred times faster; every function bounds its work before it starts.
 
 Nothing here is a hard-coded result: re-running after a change of the contact physics gives
 the new numbers. Every random draw comes from the seed through
@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from coinflight import _validation as v
 from coinflight.core.outcome import EDGE
@@ -228,7 +228,7 @@ def bouncing_edges(
     cells = box_cells(box, points)
     _bound(
         f"bouncing edges: {len(ratios)} ratios × {len(cells)} cells × {n} tosses",
-        len(ratios) * len(cells) * n,
+        *((len(ratios) * n, cell["resistance"]) for cell in cells),
     )
     root = streams.seed_sequence(seed)
     edge = np.empty((len(ratios), len(cells)))
@@ -299,7 +299,10 @@ def contact_maps(
     e = np.linspace(0.0, 0.9, 10) if restitution is None else np.asarray(restitution, float)
     mu = np.linspace(0.0, 1.0, 11) if friction is None else np.asarray(friction, float)
     n = v.count("tosses per cell", n, 1, 10**7)
-    _bound(f"maps of {len(mu)} × {len(e)} cells × {n} tosses", len(e) * len(mu) * n)
+    _bound(
+        f"maps of {len(mu)} × {len(e)} cells × {n} tosses",
+        (len(e) * len(mu) * n, Surface("table").rolling_resistance),
+    )
     t0 = time.perf_counter()
     root = streams.seed_sequence(seed)
     dist = map_tosses()
@@ -318,19 +321,19 @@ def contact_maps(
     )
 
 
-def _bound(what: str, tosses: int) -> None:
-    """Refuse ``tosses`` landings beyond the run limit, at the rate of landings carried to rest
-    (:data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; dead landings are faster)."""
-    from coinflight.outcomes.table import RIGID_TOSSES_PER_SECOND
+def _bound(what: str, *parts: tuple[int, ArrayLike]) -> None:
+    """Refuse landings carried to rest beyond the run limit
+    (:data:`coinflight._validation.MAX_RUN_SECONDS`): ``parts`` are (tosses, their rolling and
+    pivoting resistance ℓ_r = ℓ_p, m; an array of them for tosses that draw it, each value as
+    likely), each timed at :func:`coinflight.outcomes.table.rigid_rate` (dead landings are
+    faster)."""
+    from coinflight.outcomes.table import rigid_rate
 
-    v.work_bound(
-        what,
-        tosses,
-        RIGID_TOSSES_PER_SECOND * v.MAX_RUN_SECONDS,
-        "tosses",
-        "use fewer cells or tosses (--quick)",
-        RIGID_TOSSES_PER_SECOND,
-    )
+    seconds = 0.0
+    for tosses, resistance in parts:
+        ell = np.atleast_1d(np.asarray(resistance, dtype=float))
+        seconds += tosses * float(np.mean(1.0 / rigid_rate(ell, ell)))
+    v.work_bound(what, seconds, v.MAX_RUN_SECONDS, "s", "use fewer cells or tosses (--quick)")
 
 
 # --- the nickel's P(edge) band ----------------------------------------------------------------
@@ -514,8 +517,8 @@ def nickel_band(n: int, seed: streams.SeedLike, integrated: int | None = None) -
     upright).
 
     Cost: 2 × (17 ``n`` + ``integrated``) + ``n`` landings carried to rest, bounded before
-    anything runs at :data:`~coinflight.outcomes.table.RIGID_TOSSES_PER_SECOND`; the cells at
-    ℓ = 1e-5 m (coins rolling long on their rims) take most of it.
+    anything runs at :func:`~coinflight.outcomes.table.rigid_rate` of each cell's resistance;
+    the cells at ℓ = 1e-5 m (coins rolling long on their rims) take most of it.
     """
     from coinflight.studies.presets import SURFACE_PRESETS
 
@@ -523,10 +526,13 @@ def nickel_band(n: int, seed: streams.SeedLike, integrated: int | None = None) -
     n = v.count("tosses per cell", n, 1, 10**6)
     integrated = v.count("integrated tosses", 4 * n if integrated is None else integrated, 1, 10**7)
     presets = list(SURFACE_PRESETS.values())
-    total = len(presets) * (17 * n + integrated) + n
+    lo, hi = RESISTANCES
+    drawn = np.exp(np.linspace(math.log(lo), math.log(hi), 64))  # log-uniform, integrated
+    per_preset = ((8 * n, lo), (8 * n, hi), (n, math.sqrt(lo * hi)), (integrated, drawn))
     _bound(
         f"the nickel's band: {len(presets)} presets × (17 cells × {n} + {integrated}) + {n} tosses",
-        total,
+        *(per_preset * len(presets)),
+        (n, lo),  # the rounded rim, in the cell of the highest P(edge): at most the slowest
     )
     root = streams.seed_sequence(seed)
     dist = map_tosses()
@@ -730,7 +736,10 @@ def mujoco_comparison(
     limit = mujoco_compare.SETTLE if limit is None else limit
     mujoco_compare.check_limit(limit)
     mujoco_compare.bound([n], limit)
-    _bound(f"the MuJoCo comparison: {n} tosses in coinflight", n)
+    _bound(
+        f"the MuJoCo comparison: {n} tosses in coinflight",
+        (n, max(mujoco_compare.ROLLING, mujoco_compare.TORSIONAL)),
+    )
     root = streams.seed_sequence(seed)
     dist = mujoco_tosses()
     omega, v0 = _draw(dist, n, streams.child(root, _MUJOCO))
