@@ -54,7 +54,7 @@ import math
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from coinflight.core import rigid_ending
 from coinflight.core._jit import njit, prange
@@ -80,6 +80,13 @@ from coinflight.core.impact import (
 from coinflight.core.outcome import Status
 
 # Why a toss ended (the ``status`` array): :class:`coinflight.core.outcome.Status`.
+
+Tosses = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+"""A batch's ω (n, 3), v0 (n,) and start sign (n,) (:func:`batch_inputs`)."""
+Landed = tuple[
+    NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
+]
+"""A batch's face, bounces, first contact, settle time and status, each of shape (n,)."""
 
 MAX_IMPACTS = 2_000
 REST_SPEED = 0.01
@@ -504,9 +511,7 @@ def land(
     rolling_resistance: NDArray[np.float64] | None = None,
     pivoting_resistance: NDArray[np.float64] | None = None,
     contact_duration: NDArray[np.float64] | None = None,
-) -> tuple[
-    NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
-]:
+) -> Landed:
     """Land a batch of tosses on a table, in parallel over the tosses.
 
     Parameters
@@ -547,40 +552,60 @@ def land(
     status : ndarray of int8, shape (n,)
         Why the toss ended (:class:`coinflight.core.outcome.Status`).
     """
+    tosses, surface, out = batch_arrays(
+        omega,
+        launch_speed,
+        start_sign,
+        contact,
+        (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration),
+    )
+    kernel = _land_batch if parallel else _land_batch_serial
+    omega, speed, sign = tosses
+    kernel(omega, sign, speed, contact, *surface, int(max_bounces), *out)
+    return out
+
+
+def batch_inputs(omega: ArrayLike, launch_speed: ArrayLike, start_sign: ArrayLike) -> Tosses:
+    """A batch's tosses as the kernels read them: ω (n, 3), v0 (n,) and the start sign (n,),
+    contiguous float64 (v0 and the sign broadcast to n)."""
     omega = np.ascontiguousarray(omega, dtype=np.float64).reshape(-1, 3)
     n = omega.shape[0]
     speed = np.ascontiguousarray(np.broadcast_to(launch_speed, (n,)), dtype=np.float64)
     sign = np.ascontiguousarray(np.broadcast_to(start_sign, (n,)), dtype=np.float64)
-    face = np.empty(n, dtype=np.int8)
-    bounces = np.empty(n, dtype=np.int32)
-    first = np.empty(n)
-    settle = np.empty(n)
-    status = np.empty(n, dtype=np.int8)
-    e = _per_toss(contact.restitution if restitution is None else restitution, n)
-    mu = _per_toss(contact.friction if friction is None else friction, n)
-    rolling = contact.rolling_resistance if rolling_resistance is None else rolling_resistance
-    pivoting = contact.pivoting_resistance if pivoting_resistance is None else pivoting_resistance
-    duration = contact.contact_duration if contact_duration is None else contact_duration
-    kernel = _land_batch if parallel else _land_batch_serial
-    kernel(
-        omega,
-        sign,
-        speed,
-        contact,
-        e,
-        mu,
-        _per_toss(rolling, n),
-        _per_toss(pivoting, n),
-        _per_toss(duration, n),
-        int(max_bounces),
-        face,
-        bounces,
-        first,
-        settle,
-        status,
+    return omega, speed, sign
+
+
+def batch_arrays(
+    omega: ArrayLike,
+    launch_speed: ArrayLike,
+    start_sign: ArrayLike,
+    contact: Contact,
+    per_toss: tuple[ArrayLike | None, ...],
+) -> tuple[Tosses, tuple[NDArray[np.float64], ...], Landed]:
+    """The arrays of a batch of landings (this module's and :func:`coinflight.core.drag.land`'s):
+    the tosses (:func:`batch_inputs`), each toss's restitution, friction, rolling and pivoting
+    resistance and contact duration (``per_toss``, in that order; None: the contact's), and
+    the outputs (face, bounces, first contact, settle time, status), each of shape (n,)."""
+    tosses = batch_inputs(omega, launch_speed, start_sign)
+    n = tosses[0].shape[0]
+    own = (
+        contact.restitution,
+        contact.friction,
+        contact.rolling_resistance,
+        contact.pivoting_resistance,
+        contact.contact_duration,
     )
-    return face, bounces, first, settle, status
-
-
-def _per_toss(value: float | NDArray[np.float64], n: int) -> NDArray[np.float64]:
-    return np.ascontiguousarray(np.broadcast_to(np.asarray(value, dtype=np.float64), (n,)))
+    surface = tuple(
+        np.ascontiguousarray(
+            np.broadcast_to(np.asarray(base if given is None else given, dtype=np.float64), (n,))
+        )
+        for given, base in zip(per_toss, own, strict=True)
+    )
+    out = (
+        np.empty(n, dtype=np.int8),
+        np.empty(n, dtype=np.int32),
+        np.empty(n),
+        np.empty(n),
+        np.empty(n, dtype=np.int8),
+    )
+    return tosses, surface, out

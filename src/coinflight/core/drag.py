@@ -115,7 +115,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coinflight.core._jit import njit, prange
-from coinflight.core.bounce import MAX_IMPACTS, after_impact
+from coinflight.core.bounce import (
+    MAX_IMPACTS,
+    Landed,
+    after_impact,
+    batch_arrays,
+    batch_inputs,
+    with_surface,
+)
 from coinflight.core.contact import Contact
 from coinflight.core.flight import (
     CA_TOLERANCE,
@@ -1195,6 +1202,11 @@ def _batch_kernels(parallel: bool) -> tuple[Any, Any]:
         launch_speed,
         air,
         contact,
+        restitution,
+        friction,
+        rolling,
+        pivoting,
+        duration,
         max_bounces,
         face,
         bounces,
@@ -1208,7 +1220,9 @@ def _batch_kernels(parallel: bool) -> tuple[Any, Any]:
                 start_sign[k],
                 launch_speed[k],
                 air,
-                contact,
+                with_surface(
+                    contact, restitution[k], friction[k], rolling[k], pivoting[k], duration[k]
+                ),
                 max_bounces,
             )
 
@@ -1220,14 +1234,6 @@ _catch_parallel, _land_parallel = _batch_kernels(parallel=True)
 _catch_serial, _land_serial = _batch_kernels(parallel=False)
 
 
-def _batch(omega: Any, launch_speed: Any, start_sign: Any) -> tuple[FloatArray, ...]:
-    omega = np.ascontiguousarray(omega, dtype=np.float64).reshape(-1, 3)
-    n = omega.shape[0]
-    speed = np.ascontiguousarray(np.broadcast_to(launch_speed, (n,)), dtype=np.float64)
-    sign = np.ascontiguousarray(np.broadcast_to(start_sign, (n,)), dtype=np.float64)
-    return omega, speed, sign
-
-
 def catch(
     omega: Any, launch_speed: Any, start_sign: Any, air: Air, *, parallel: bool = True
 ) -> tuple[NDArray[np.int8], FloatArray, FloatArray]:
@@ -1237,7 +1243,7 @@ def catch(
     ``start_sign`` (n,) +1 heads up, −1 tails up. A catch time of −1 marks a toss that needed
     more than :data:`MAX_STEPS` steps (refused beforehand by :func:`check_air`).
     """
-    omega, speed, sign = _batch(omega, launch_speed, start_sign)
+    omega, speed, sign = batch_inputs(omega, launch_speed, start_sign)
     n = omega.shape[0]
     face = np.empty(n, dtype=np.int8)
     when = np.empty(n)
@@ -1256,19 +1262,26 @@ def land(
     *,
     max_bounces: int = MAX_IMPACTS,
     parallel: bool = True,
-) -> tuple[NDArray[np.int8], NDArray[np.int32], FloatArray, FloatArray, NDArray[np.int8]]:
+    restitution: Any = None,
+    friction: Any = None,
+    rolling_resistance: Any = None,
+    pivoting_resistance: Any = None,
+    contact_duration: Any = None,
+) -> Landed:
     """Land a batch through air on a table: as :func:`coinflight.core.bounce.land` (face,
-    bounces, first contact, settle time, status), with the flights of this module."""
-    omega, speed, sign = _batch(omega, launch_speed, start_sign)
-    n = omega.shape[0]
-    face = np.empty(n, dtype=np.int8)
-    bounces = np.empty(n, dtype=np.int32)
-    first = np.empty(n)
-    settle = np.empty(n)
-    status = np.empty(n, dtype=np.int8)
+    bounces, first contact, settle time, status; each toss's own restitution, friction,
+    resistances and contact duration when given), with the flights of this module."""
+    tosses, surface, out = batch_arrays(
+        omega,
+        launch_speed,
+        start_sign,
+        contact,
+        (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration),
+    )
+    omega, speed, sign = tosses
     kernel = _land_parallel if parallel else _land_serial
-    kernel(omega, sign, speed, air, contact, int(max_bounces), face, bounces, first, settle, status)
-    return face, bounces, first, settle, status
+    kernel(omega, sign, speed, air, contact, *surface, int(max_bounces), *out)
+    return out
 
 
 def states(omega: Any, launch_speed: float, start_sign: float, air: Air, times: Any) -> FloatArray:

@@ -140,8 +140,8 @@ class OutcomeModel:
 def check_contact(dist: TossDistribution, model: OutcomeModel) -> None:
     """ValueError (one line) when ``dist`` sets contact parameters ``model`` cannot take.
 
-    A hand catch has no contact; a table landing through air takes single values only (for
-    now): the distribution would be silently ignored, so it is refused.
+    A hand catch has no contact: the distribution would be silently ignored, so it is refused
+    (as by any model whose :attr:`OutcomeModel.contact_parameters` leave it out).
     """
     extra = [name for name in dist.contact if name not in model.contact_parameters]
     if not extra:

@@ -111,14 +111,6 @@ RATE_QUANTILES = 64
 averages the time of a landing."""
 
 
-NO_CONTACT_DISTRIBUTIONS_WITH_DRAG = (
-    "contact parameter distributions (restitution, friction, rolling and pivoting resistance, "
-    "contact duration) "
-    "are not yet taken by a table landing through air (--drag, --spin-damping): give single "
-    "values, or drop the air"
-)
-"""The refusal of per-toss contact parameters with air drag (one line, CLI and library)."""
-
 PER_TOSS = (
     "restitution",
     "friction",
@@ -235,7 +227,7 @@ def land(
     ``rolling_resistance``, ``pivoting_resistance`` and/or ``contact_duration``
     (:data:`PER_TOSS`; arrays of shape
     (n,), checked by the caller; :meth:`~coinflight.model.ensemble.TossDistribution.
-    contact_values`) in place of the surface's; not with drag.
+    contact_values`) in place of the surface's, with or without drag.
     """
     if not isinstance(surface, Surface):
         raise TypeError(f"surface must be a Surface, got {type(surface).__name__}")
@@ -253,35 +245,18 @@ def land(
     limit = bounce.MAX_IMPACTS if max_bounces is None else int(max_bounces)
     per_toss = {} if contact is None else contact
     if drag is not None and not drag.is_zero:
-        if per_toss:
-            raise ValueError(NO_CONTACT_DISTRIBUTIONS_WITH_DRAG)
         from coinflight.core import drag as drag_kernels
 
         check_air(coin, drag, g, speed, surface.drop_height, omega)
-        face, bounces, first, settle, status = drag_kernels.land(
-            omega,
-            speed,
-            sign,
-            drag_model(coin, drag, g),
-            record,
-            max_bounces=limit,
-            parallel=parallel,
+        air = drag_model(coin, drag, g)
+        return LandingOutcome(
+            *drag_kernels.land(
+                omega, speed, sign, air, record, max_bounces=limit, parallel=parallel, **per_toss
+            )
         )
-        return LandingOutcome(face, bounces, first, settle, status)
-    face, bounces, first, settle, status = bounce.land(
-        omega,
-        speed,
-        sign,
-        record,
-        max_bounces=limit,
-        parallel=parallel,
-        restitution=per_toss.get("restitution"),
-        friction=per_toss.get("friction"),
-        rolling_resistance=per_toss.get("rolling_resistance"),
-        pivoting_resistance=per_toss.get("pivoting_resistance"),
-        contact_duration=per_toss.get("contact_duration"),
+    return LandingOutcome(
+        *bounce.land(omega, speed, sign, record, max_bounces=limit, parallel=parallel, **per_toss)
     )
-    return LandingOutcome(face, bounces, first, settle, status)
 
 
 @dataclass(frozen=True, eq=False)
@@ -652,16 +627,9 @@ class TableLanding(OutcomeModel):
 
     tallies = ("unsettled",)
 
-    @property
-    def contact_parameters(self) -> tuple[str, ...]:  # type: ignore[override]
-        """Restitution, friction, the rolling and pivoting resistances and the contact duration
-        may vary toss by toss (:data:`PER_TOSS`); none through air (not yet:
-        :attr:`contact_refusal`)."""
-        return () if self.drag is not None else PER_TOSS
-
-    @property
-    def contact_refusal(self) -> str:  # type: ignore[override]
-        return NO_CONTACT_DISTRIBUTIONS_WITH_DRAG
+    contact_parameters = PER_TOSS
+    """Restitution, friction, the rolling and pivoting resistances and the contact duration
+    may vary toss by toss, with or without air."""
 
     @property
     def rate(self) -> float:  # type: ignore[override]
@@ -681,8 +649,8 @@ class TableLanding(OutcomeModel):
         the harmonic mean of :func:`rigid_rate` over the resistances' distributions (the
         expected time a landing, on a grid of each one's quantiles, the two independent)."""
         spread = {} if dist is None else dist.contact
-        if not spread or self.drag is not None or self.max_bounces is not None:
-            return self.rate  # (air takes no distributions)
+        if not spread or self.max_bounces is not None:
+            return self.rate
         e = spread.get("restitution")
         if (self.surface.restitution if e is None else e.bounds[1]) <= 0.0:
             return self.rate
