@@ -421,3 +421,15 @@ def test_cli_surface_preset_integrates_over_the_ranges_and_is_replaced_by_given_
 )
 def test_cli_surface_preset_refusals(args, words):
     assert words in one_line_error(*args)
+
+
+def test_the_kernels_take_per_toss_what_a_distribution_spreads():
+    """The landing kernels' per-toss arguments (core.bounce.PER_TOSS, in their order) are the
+    contact parameters a distribution of tosses spreads (model.ensemble.CONTACT), and a name
+    the kernels do not take is a TypeError naming it."""
+    from coinflight.model.ensemble import CONTACT
+
+    assert bounce.PER_TOSS == CONTACT
+    contact = coin_contact(Coin.preset("us-nickel"))
+    with pytest.raises(TypeError, match="unexpected per-toss values stiffness"):
+        bounce.land(np.array([[200.0, 0.0, 0.0]]), 2.0, 1.0, contact, stiffness=np.ones(1))

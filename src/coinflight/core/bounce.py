@@ -51,6 +51,7 @@ what it was before it took a.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -506,11 +507,7 @@ def land(
     *,
     max_bounces: int = MAX_IMPACTS,
     parallel: bool = True,
-    restitution: NDArray[np.float64] | None = None,
-    friction: NDArray[np.float64] | None = None,
-    rolling_resistance: NDArray[np.float64] | None = None,
-    pivoting_resistance: NDArray[np.float64] | None = None,
-    contact_duration: NDArray[np.float64] | None = None,
+    **per_toss: ArrayLike,
 ) -> Landed:
     """Land a batch of tosses on a table, in parallel over the tosses.
 
@@ -531,15 +528,12 @@ def land(
     parallel : bool
         Spread the tosses over numba's threads (True), or run them in the calling thread with
         the GIL released (False: for callers that run several batches in their own threads).
-    restitution, friction : ndarray, shape (n,), optional
-        Each toss's own coefficient of restitution and of friction (distributions of what is
-        not measured); by default the contact's single values.
-    rolling_resistance, pivoting_resistance : ndarray, shape (n,), optional
-        Each toss's own rolling and pivoting resistance, m (used by the rigid ending);
-        by default the contact's single values.
-    contact_duration : ndarray, shape (n,), optional
-        Each toss's own contact duration t_c of an impact, s (when two rim points strike as
-        one, :func:`coinflight.core.impact.simultaneous_point`); by default the contact's.
+    **per_toss : ndarray, shape (n,), optional
+        Each toss's own value of any of :data:`PER_TOSS` (distributions of what is not
+        measured): ``restitution`` and ``friction``, ``rolling_resistance`` and
+        ``pivoting_resistance`` (m, used by the rigid ending), ``contact_duration`` (t_c of an
+        impact, s: when two rim points strike as one,
+        :func:`coinflight.core.impact.simultaneous_point`); by default the contact's.
 
     Returns
     -------
@@ -552,16 +546,55 @@ def land(
     status : ndarray of int8, shape (n,)
         Why the toss ended (:class:`coinflight.core.outcome.Status`).
     """
-    tosses, surface, out = batch_arrays(
-        omega,
-        launch_speed,
-        start_sign,
-        contact,
-        (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration),
-    )
     kernel = _land_batch if parallel else _land_batch_serial
-    omega, speed, sign = tosses
-    kernel(omega, sign, speed, contact, *surface, int(max_bounces), *out)
+    return run_batch(kernel, (), omega, launch_speed, start_sign, contact, max_bounces, per_toss)
+
+
+PER_TOSS = (
+    "restitution",
+    "friction",
+    "rolling_resistance",
+    "pivoting_resistance",
+    "contact_duration",
+)
+"""The contact record's fields a batch of landings may give each toss its own value of (the
+arguments of the batch kernels, in this order, after the contact record)."""
+
+
+def run_batch(
+    kernel: Any,
+    before: tuple[Any, ...],
+    omega: ArrayLike,
+    launch_speed: ArrayLike,
+    start_sign: ArrayLike,
+    contact: Contact,
+    max_bounces: int,
+    per_toss: Mapping[str, ArrayLike],
+) -> Landed:
+    """Run a batch landing ``kernel`` (this module's or :func:`coinflight.core.drag.land`'s) on
+    the tosses (:func:`batch_inputs`): its arguments ``before`` the contact record (the air,
+    for drag's), each toss's values of :data:`PER_TOSS` (``per_toss``; the contact's where
+    not given; TypeError for another name); the outputs (face, bounces, first contact,
+    settle time, status), each of shape (n,)."""
+    unknown = sorted(set(per_toss) - set(PER_TOSS))
+    if unknown:
+        raise TypeError(f"unexpected per-toss values {', '.join(unknown)}; allowed: {PER_TOSS}")
+    omega, speed, sign = batch_inputs(omega, launch_speed, start_sign)
+    n = omega.shape[0]
+    surface = [
+        np.ascontiguousarray(
+            np.broadcast_to(np.asarray(per_toss.get(name, getattr(contact, name)), float), (n,))
+        )
+        for name in PER_TOSS
+    ]
+    out: Landed = (
+        np.empty(n, dtype=np.int8),
+        np.empty(n, dtype=np.int32),
+        np.empty(n),
+        np.empty(n),
+        np.empty(n, dtype=np.int8),
+    )
+    kernel(omega, sign, speed, *before, contact, *surface, int(max_bounces), *out)
     return out
 
 
@@ -573,39 +606,3 @@ def batch_inputs(omega: ArrayLike, launch_speed: ArrayLike, start_sign: ArrayLik
     speed = np.ascontiguousarray(np.broadcast_to(launch_speed, (n,)), dtype=np.float64)
     sign = np.ascontiguousarray(np.broadcast_to(start_sign, (n,)), dtype=np.float64)
     return omega, speed, sign
-
-
-def batch_arrays(
-    omega: ArrayLike,
-    launch_speed: ArrayLike,
-    start_sign: ArrayLike,
-    contact: Contact,
-    per_toss: tuple[ArrayLike | None, ...],
-) -> tuple[Tosses, tuple[NDArray[np.float64], ...], Landed]:
-    """The arrays of a batch of landings (this module's and :func:`coinflight.core.drag.land`'s):
-    the tosses (:func:`batch_inputs`), each toss's restitution, friction, rolling and pivoting
-    resistance and contact duration (``per_toss``, in that order; None: the contact's), and
-    the outputs (face, bounces, first contact, settle time, status), each of shape (n,)."""
-    tosses = batch_inputs(omega, launch_speed, start_sign)
-    n = tosses[0].shape[0]
-    own = (
-        contact.restitution,
-        contact.friction,
-        contact.rolling_resistance,
-        contact.pivoting_resistance,
-        contact.contact_duration,
-    )
-    surface = tuple(
-        np.ascontiguousarray(
-            np.broadcast_to(np.asarray(base if given is None else given, dtype=np.float64), (n,))
-        )
-        for given, base in zip(per_toss, own, strict=True)
-    )
-    out = (
-        np.empty(n, dtype=np.int8),
-        np.empty(n, dtype=np.int32),
-        np.empty(n),
-        np.empty(n),
-        np.empty(n, dtype=np.int8),
-    )
-    return tosses, surface, out

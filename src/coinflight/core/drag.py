@@ -119,8 +119,8 @@ from coinflight.core.bounce import (
     MAX_IMPACTS,
     Landed,
     after_impact,
-    batch_arrays,
     batch_inputs,
+    run_batch,
     with_surface,
 )
 from coinflight.core.contact import Contact
@@ -1262,26 +1262,15 @@ def land(
     *,
     max_bounces: int = MAX_IMPACTS,
     parallel: bool = True,
-    restitution: Any = None,
-    friction: Any = None,
-    rolling_resistance: Any = None,
-    pivoting_resistance: Any = None,
-    contact_duration: Any = None,
+    **per_toss: Any,
 ) -> Landed:
     """Land a batch through air on a table: as :func:`coinflight.core.bounce.land` (face,
     bounces, first contact, settle time, status; each toss's own restitution, friction,
     resistances and contact duration when given), with the flights of this module."""
-    tosses, surface, out = batch_arrays(
-        omega,
-        launch_speed,
-        start_sign,
-        contact,
-        (restitution, friction, rolling_resistance, pivoting_resistance, contact_duration),
-    )
-    omega, speed, sign = tosses
     kernel = _land_parallel if parallel else _land_serial
-    kernel(omega, sign, speed, air, contact, *surface, int(max_bounces), *out)
-    return out
+    return run_batch(
+        kernel, (air,), omega, launch_speed, start_sign, contact, max_bounces, per_toss
+    )
 
 
 def states(omega: Any, launch_speed: float, start_sign: float, air: Air, times: Any) -> FloatArray:

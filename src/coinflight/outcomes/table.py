@@ -21,6 +21,7 @@ from coinflight import _validation as v
 from coinflight.core import ballistics
 from coinflight.core.outcome import FACE_NAMES, STATUS_NAMES, Status
 from coinflight.model.coin import Coin
+from coinflight.model.ensemble import CONTACT
 from coinflight.model.surface import TABLE_PARAMETERS, Drag, Surface
 from coinflight.model.toss import STANDARD_GRAVITY, Toss, check_gravity
 from coinflight.outcomes.air import check_air, drag_model
@@ -111,16 +112,9 @@ RATE_QUANTILES = 64
 averages the time of a landing."""
 
 
-PER_TOSS = (
-    "restitution",
-    "friction",
-    "rolling_resistance",
-    "pivoting_resistance",
-    "contact_duration",
-)
-"""The contact parameters the landing kernel takes toss by toss (``core.bounce.land``'s
-``restitution``, ``friction``, ``rolling_resistance``, ``pivoting_resistance`` and
-``contact_duration`` arrays)."""
+PER_TOSS = CONTACT
+"""The contact parameters a landing takes toss by toss (:data:`coinflight.model.ensemble.
+CONTACT`, the landing kernels' :data:`coinflight.core.bounce.PER_TOSS`)."""
 
 
 @dataclass(frozen=True, eq=False)
