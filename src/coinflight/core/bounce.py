@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -82,12 +82,17 @@ from coinflight.core.outcome import Status
 
 # Why a toss ended (the ``status`` array): :class:`coinflight.core.outcome.Status`.
 
-Tosses = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
-"""A batch's ω (n, 3), v0 (n,) and start sign (n,) (:func:`batch_inputs`)."""
-Landed = tuple[
-    NDArray[np.int8], NDArray[np.int32], NDArray[np.float64], NDArray[np.float64], NDArray[np.int8]
-]
-"""A batch's face, bounces, first contact, settle time and status, each of shape (n,)."""
+if TYPE_CHECKING:
+    # A batch's ω (n, 3), v0 (n,) and start sign (n,) (batch_inputs); its face, bounces,
+    # first contact, settle time and status, each of shape (n,).
+    Tosses = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+    Landed = tuple[
+        NDArray[np.int8],
+        NDArray[np.int32],
+        NDArray[np.float64],
+        NDArray[np.float64],
+        NDArray[np.int8],
+    ]
 
 MAX_IMPACTS = 2_000
 REST_SPEED = 0.01

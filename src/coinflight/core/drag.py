@@ -109,7 +109,7 @@ through the impact) 1.9e-6 s (median) and 3e-4 s (largest).
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -117,7 +117,6 @@ from numpy.typing import NDArray
 from coinflight.core._jit import njit, prange
 from coinflight.core.bounce import (
     MAX_IMPACTS,
-    Landed,
     after_impact,
     batch_inputs,
     run_batch,
@@ -140,6 +139,9 @@ from coinflight.core.impact import (
     resting_face,
 )
 from coinflight.core.outcome import Status
+
+if TYPE_CHECKING:
+    from coinflight.core.bounce import Landed
 
 FloatArray = NDArray[np.float64]
 

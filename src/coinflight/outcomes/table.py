@@ -113,8 +113,9 @@ averages the time of a landing."""
 
 
 PER_TOSS = CONTACT
-"""The contact parameters a landing takes toss by toss (:data:`coinflight.model.ensemble.
-CONTACT`, the landing kernels' :data:`coinflight.core.bounce.PER_TOSS`)."""
+"""The contact parameters a landing takes toss by toss
+(:data:`coinflight.model.ensemble.CONTACT`; the landing kernels'
+:data:`coinflight.core.bounce.PER_TOSS`)."""
 
 
 @dataclass(frozen=True, eq=False)
