@@ -85,18 +85,24 @@ def test_the_first_flight_is_the_closed_form_one(wx, wy, wz, flight_time):
     np.testing.assert_allclose(got.angular_velocity, lab, atol=1e-9)
 
 
+def _tumbling_landing(rng: np.random.Generator, height: float) -> Landing:
+    """A nickel started ``height`` m up (its centre), at a random attitude, tumbling at about
+    40 rad/s and moving at about 0.5 m/s, drawn from ``rng``."""
+    w = rng.normal(0.0, 40.0, 3)
+    return Landing.from_state(
+        NICKEL,
+        TABLE,
+        position=(0.0, 0.0, height),
+        orientation=Rotation.random(random_state=rng),
+        velocity=rng.normal(0.0, 0.5, 3),
+        angular_velocity=w,
+    )
+
+
 def test_energy_never_grows_along_a_landing():
     rng = np.random.default_rng(5)
     for _ in range(20):
-        w = rng.normal(0.0, 40.0, 3)
-        landing = Landing.from_state(
-            NICKEL,
-            TABLE,
-            position=(0.0, 0.0, 0.2),
-            orientation=Rotation.random(random_state=rng),
-            velocity=rng.normal(0.0, 0.5, 3),
-            angular_velocity=w,
-        )
+        landing = _tumbling_landing(rng, 0.2)
         t = np.linspace(0.0, landing.followed_until, 400)
         energy = _energy(landing.at(t), NICKEL)
         assert np.all(np.diff(energy) <= 1e-12 * energy[0]), np.max(np.diff(energy))
@@ -113,14 +119,7 @@ def test_every_time_lies_on_the_one_motion_the_outcome_comes_from():
     rng = np.random.default_rng(8)
     checked = 0
     for _ in range(12):
-        landing = Landing.from_state(
-            NICKEL,
-            TABLE,
-            position=(0.0, 0.0, 0.15),
-            orientation=Rotation.random(random_state=rng),
-            velocity=rng.normal(0.0, 0.5, 3),
-            angular_velocity=rng.normal(0.0, 40.0, 3),
-        )
+        landing = _tumbling_landing(rng, 0.15)
         out = landing.outcome
         until = landing.followed_until
         t = np.linspace(0.0, until, 40)
